@@ -1,0 +1,74 @@
+//! The command line, declared with clap derive; doc comments are the help.
+
+use crate::report::Products;
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+const EXIT_STATUS: &str = "\
+Exit status:
+  0  success
+  1  a check failed (reserved for `check` and `diff`)
+  2  an error: bad input, unreadable file, bad flag (nothing is printed on stdout)";
+
+/// Mass properties of composite rigid bodies described by TOML part files.
+#[derive(Parser, Debug)]
+#[command(name = "massprop", version, after_help = EXIT_STATUS)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
+    Report(ReportArgs),
+}
+
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Format {
+    /// Tables for people, in the file's units.
+    #[default]
+    Table,
+    /// One JSON object in SI units (see docs/json.md).
+    Json,
+}
+
+#[derive(Args, Debug)]
+pub struct ReportArgs {
+    /// The part file (`-` reads standard input).
+    #[arg(value_name = "FILE")]
+    pub file: String,
+
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
+
+    /// Sign convention of products of inertia in the output.
+    #[arg(long, value_enum, default_value_t)]
+    pub products: Products,
+
+    /// Reference point, overriding `[analysis].about`: x,y,z in the file's
+    /// length unit, or with units, e.g. "0,0,10 mm".
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub about: Option<String>,
+
+    /// Angular velocity ω, overriding `[analysis].omega`: x,y,z in rad/s, or
+    /// with units, e.g. "0,0,3000 rpm".
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub omega: Option<String>,
+
+    /// Angular acceleration α, overriding `[analysis].alpha`: x,y,z in
+    /// rad/s², or with units, e.g. "0,0,90 deg/s^2". Needs ω.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub alpha: Option<String>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

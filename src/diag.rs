@@ -1,0 +1,210 @@
+//! One diagnostic type for every user-facing error: `path:line:col: error:
+//! message`, the offending source line with carets under the span, and an
+//! optional help line, the way compilers print them so editors and CI can
+//! jump to the place.
+
+use std::fmt;
+use std::ops::Range;
+
+/// A part file's text and the name it is reported under (`<stdin>` for `-`).
+#[derive(Debug, Clone)]
+pub struct Source {
+    pub name: String,
+    pub text: String,
+}
+
+impl Source {
+    pub fn new(name: impl Into<String>, text: impl Into<String>) -> Source {
+        Source {
+            name: name.into(),
+            text: text.into(),
+        }
+    }
+
+    /// 1-based line and column (in characters) of a byte offset.
+    pub fn line_col(&self, offset: usize) -> (usize, usize) {
+        let offset = floor_char_boundary(&self.text, offset.min(self.text.len()));
+        let before = &self.text[..offset];
+        let line = before.matches('\n').count() + 1;
+        let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+        let col = self.text[line_start..offset].chars().count() + 1;
+        (line, col)
+    }
+
+    /// An error at `span` of this source.
+    pub fn error(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
+        let (line, col) = self.line_col(span.start);
+        let start = floor_char_boundary(&self.text, span.start.min(self.text.len()));
+        let line_start = self.text[..start].rfind('\n').map_or(0, |i| i + 1);
+        let line_end = self.text[start..]
+            .find('\n')
+            .map_or(self.text.len(), |i| start + i);
+        let line_text = self.text[line_start..line_end].trim_end_matches('\r');
+        // Underline the span's part on its first line, at least one caret.
+        let end = span.end.clamp(start, line_end.max(start));
+        let end = floor_char_boundary(&self.text, end);
+        let width = self.text[start..end].chars().count().max(1);
+        Diagnostic(Box::new(Inner {
+            location: Some(format!("{}:{line}:{col}", self.name)),
+            message: message.into(),
+            snippet: Some(Snippet {
+                line,
+                text: line_text.to_string(),
+                col,
+                width,
+                label: None,
+            }),
+            help: None,
+        }))
+    }
+}
+
+fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+    while i > 0 && !s.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+#[derive(Debug, Clone, PartialEq)]
+struct Snippet {
+    line: usize,
+    text: String,
+    col: usize,
+    width: usize,
+    label: Option<String>,
+}
+
+/// A user-facing error. `Display` renders it completely, ending in a newline.
+/// Boxed so that `Result<T, Diagnostic>` stays small on the happy path.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnostic(Box<Inner>);
+
+#[derive(Debug, Clone, PartialEq)]
+struct Inner {
+    /// `path:line:col`, `path`, or none for errors about flags.
+    location: Option<String>,
+    message: String,
+    snippet: Option<Snippet>,
+    help: Option<String>,
+}
+
+impl Diagnostic {
+    /// An error about a whole file (unreadable, say): `path: error: …`.
+    pub fn file(path: &str, message: impl Into<String>) -> Diagnostic {
+        Diagnostic(Box::new(Inner {
+            location: Some(path.to_string()),
+            message: message.into(),
+            snippet: None,
+            help: None,
+        }))
+    }
+
+    /// An error with no place in a file (a command-line flag, say).
+    pub fn plain(message: impl Into<String>) -> Diagnostic {
+        Diagnostic(Box::new(Inner {
+            location: None,
+            message: message.into(),
+            snippet: None,
+            help: None,
+        }))
+    }
+
+    /// Text printed after the carets on the source line.
+    pub fn label(mut self, label: impl Into<String>) -> Diagnostic {
+        if let Some(s) = &mut self.0.snippet {
+            s.label = Some(label.into());
+        }
+        self
+    }
+
+    pub fn help(mut self, help: impl Into<String>) -> Diagnostic {
+        self.0.help = Some(help.into());
+        self
+    }
+
+    /// A "did you mean" help line when there is a suggestion.
+    pub fn suggest(self, suggestion: Option<&str>) -> Diagnostic {
+        match suggestion {
+            Some(s) => self.help(format!("did you mean `{s}`?")),
+            None => self,
+        }
+    }
+
+    pub fn message(&self) -> &str {
+        &self.0.message
+    }
+
+    /// `path:line:col`, when the error has a place.
+    pub fn location(&self) -> Option<&str> {
+        self.0.location.as_deref()
+    }
+}
+
+impl fmt::Display for Diagnostic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let d = &self.0;
+        match &d.location {
+            Some(loc) => writeln!(f, "{loc}: error: {}", d.message)?,
+            None => writeln!(f, "error: {}", d.message)?,
+        }
+        if let Some(s) = &d.snippet {
+            let num = s.line.to_string();
+            let pad = " ".repeat(num.len());
+            writeln!(f, "{pad} |")?;
+            writeln!(f, "{num} | {}", s.text)?;
+            // Tabs before the caret keep their width so the caret lines up.
+            let lead: String = s
+                .text
+                .chars()
+                .take(s.col - 1)
+                .map(|c| if c == '\t' { '\t' } else { ' ' })
+                .collect();
+            let carets = "^".repeat(s.width);
+            match &s.label {
+                Some(label) => writeln!(f, "{pad} | {lead}{carets} {label}")?,
+                None => writeln!(f, "{pad} | {lead}{carets}")?,
+            }
+        }
+        if let Some(help) = &d.help {
+            writeln!(f, "  = help: {help}")?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for Diagnostic {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_and_column_are_one_based_and_count_characters() {
+        let s = Source::new("f.toml", "a = 1\nbé = 2\n");
+        assert_eq!(s.line_col(0), (1, 1));
+        assert_eq!(s.line_col(6), (2, 1));
+        // 'é' is two bytes but one column.
+        assert_eq!(s.line_col(9), (2, 3));
+    }
+
+    #[test]
+    fn rendering_shows_location_source_line_and_carets() {
+        let s = Source::new("f.toml", "x = 1\nsizee = [1]\n");
+        let d = s
+            .error(6..11, "unknown key `sizee`")
+            .label("here")
+            .suggest(Some("size"));
+        assert_eq!(
+            d.to_string(),
+            "f.toml:2:1: error: unknown key `sizee`\n  |\n2 | sizee = [1]\n  | ^^^^^ here\n  = help: did you mean `size`?\n"
+        );
+    }
+
+    #[test]
+    fn an_empty_span_at_end_of_file_still_gets_one_caret() {
+        let s = Source::new("f.toml", "x = [");
+        let d = s.error(5..5, "unclosed array");
+        assert!(d.to_string().contains("1 | x = [\n  |      ^\n"));
+    }
+}

@@ -1,0 +1,83 @@
+//! massprop: mass properties of composite rigid bodies from TOML part files.
+//!
+//! raw TOML (`model::raw`) → validated model (`model`) → per-shape closed
+//! forms (`shapes`) → composed body (`compose`, `mass`) → summary and
+//! renderers (`report`). Only `main.rs` knows about processes and exit codes.
+
+pub mod cli;
+pub mod compose;
+pub mod diag;
+pub mod mass;
+pub mod model;
+pub mod report;
+pub mod shapes;
+pub mod units;
+
+use cli::{Cli, Command, Format, ReportArgs};
+use diag::{Diagnostic, Source};
+use model::Model;
+use std::io::Read;
+use units::Dim;
+
+/// What a successful run prints and the exit status it ends with.
+pub struct Output {
+    pub stdout: String,
+    pub status: u8,
+}
+
+/// Read a part file, or standard input for `-`.
+pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
+    if path == "-" {
+        let mut text = String::new();
+        std::io::stdin()
+            .read_to_string(&mut text)
+            .map_err(|e| Diagnostic::file("<stdin>", format!("cannot read standard input: {e}")))?;
+        return Ok(Source::new("<stdin>", text));
+    }
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
+    Ok(Source::new(path, text))
+}
+
+/// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
+pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
+    match &cli.command {
+        Command::Report(args) => report(args),
+    }
+}
+
+fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
+    let source = read_source(&args.file)?;
+    let model = Model::parse(&source)?;
+    let mut analysis = model.analysis.clone();
+    let flag = |text: &Option<String>, name: &str, dim: Dim| {
+        text.as_deref()
+            .map(|t| {
+                model::parse_flag_vector(t, model.units, dim).map_err(|e| {
+                    Diagnostic::plain(format!("invalid value {t:?} for `--{name}`: {e}"))
+                })
+            })
+            .transpose()
+    };
+    if let Some(v) = flag(&args.about, "about", Dim::LENGTH)? {
+        analysis.about = Some(v);
+    }
+    if let Some(v) = flag(&args.omega, "omega", Dim::ANGULAR_VELOCITY)? {
+        analysis.omega = Some(v);
+    }
+    if let Some(v) = flag(&args.alpha, "alpha", Dim::ANGULAR_ACCELERATION)? {
+        analysis.alpha = Some(v);
+    }
+    if analysis.alpha.is_some() && analysis.omega.is_none() {
+        return Err(Diagnostic::plain(
+            "`--alpha` needs ω: give `--omega` or `[analysis].omega`",
+        ));
+    }
+    let summary = report::summarize(&model, &analysis, args.products)
+        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+    let stdout = match args.format {
+        Format::Table => report::table::render(&summary, &source.name),
+        Format::Json => report::json::render(&summary),
+    };
+    Ok(Output { stdout, status: 0 })
+}

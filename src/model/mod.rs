@@ -1,0 +1,605 @@
+//! The validated part file: every part reduced to mass, centroid, local axes
+//! and local second moments, all in SI. This module owns every check on the
+//! input; a `Model` that exists is valid.
+
+pub mod raw;
+pub mod rotation;
+
+use crate::diag::{Diagnostic, Source};
+use crate::shapes::Shape;
+use crate::units::{self, Dim, FileUnits, UnitError};
+use nalgebra::{Matrix3, Vector3};
+use raw::{Quantity, RawAnalysis, RawFile, RawPart, Vector};
+use std::ops::Range;
+use toml::Spanned;
+
+/// Edges given as `corner` + `edges` must be perpendicular to this relative
+/// tolerance: |eᵢ·eⱼ| ≤ 1e-9 |eᵢ||eⱼ|.
+pub const PERPENDICULAR_TOLERANCE: f64 = 1e-9;
+
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// The file's `name`, if given.
+    pub name: Option<String>,
+    pub units: FileUnits,
+    pub parts: Vec<Part>,
+    pub analysis: Analysis,
+}
+
+/// One primitive, reduced to what composition needs. SI throughout.
+#[derive(Debug, Clone)]
+pub struct Part {
+    /// The part's `name`, or `part N` (1-based position in the file).
+    pub name: String,
+    pub shape: Shape,
+    /// kg
+    pub mass: f64,
+    /// Centroid in the file's frame, m.
+    pub center: Vector3<f64>,
+    /// Columns are the local x, y, z axes in the file's frame.
+    pub axes: Matrix3<f64>,
+    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid along the local axes, kg·m².
+    pub local_second_moment: Vector3<f64>,
+}
+
+impl Part {
+    /// ∫ρρᵀ dm about the centroid in the file's axes: A diag(s) Aᵀ.
+    pub fn second_moment(&self) -> Matrix3<f64> {
+        let a = &self.axes;
+        a * Matrix3::from_diagonal(&self.local_second_moment) * a.transpose()
+    }
+}
+
+/// Where a part sits: centroid (m), local axes (columns), edge lengths (m).
+type Placement = (Vector3<f64>, Matrix3<f64>, Vec<f64>);
+
+/// `[analysis]`, SI: reference point (m), ω (rad/s), α (rad/s²).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Analysis {
+    pub about: Option<Vector3<f64>>,
+    pub omega: Option<Vector3<f64>>,
+    pub alpha: Option<Vector3<f64>>,
+}
+
+impl Model {
+    /// Parse and validate a part file.
+    pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
+        let raw: RawFile = toml::from_str(&source.text).map_err(|e| toml_error(source, &e))?;
+        let ctx = Ctx {
+            source,
+            units: FileUnits::default(),
+        };
+        let units = match &raw.units {
+            Some(u) => ctx.file_units(u)?,
+            None => FileUnits::default(),
+        };
+        let ctx = Ctx { source, units };
+        let raw_parts = match &raw.part {
+            Some(p) if !p.get_ref().is_empty() => p.get_ref(),
+            Some(p) => {
+                return Err(ctx.err(
+                    p.span(),
+                    "`part` is empty: a part file needs at least one part",
+                ));
+            }
+            None => {
+                return Err(ctx
+                    .err(0..0, "the file has no parts")
+                    .help("add at least one `[[part]]` table with a `shape`"));
+            }
+        };
+        let parts = raw_parts
+            .iter()
+            .enumerate()
+            .map(|(i, p)| ctx.part(i, p))
+            .collect::<Result<Vec<_>, _>>()?;
+        let analysis = match &raw.analysis {
+            Some(a) => ctx.analysis(a)?,
+            None => Analysis::default(),
+        };
+        Ok(Model {
+            name: raw.name.map(|n| n.into_inner()),
+            units,
+            parts,
+            analysis,
+        })
+    }
+}
+
+/// Turn a toml error into a diagnostic; unknown keys get a "did you mean"
+/// drawn from the key list in serde's own message.
+fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
+    let span = e.span().unwrap_or(0..0);
+    let msg = e.message().trim_end();
+    if let Some(rest) = msg.strip_prefix("unknown field ") {
+        // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
+        let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
+        if let Some((key, valid)) = quoted.split_first() {
+            let suggestion = units::suggest(key, valid.iter().copied());
+            let d = source.error(span, format!("unknown key `{key}`"));
+            return match suggestion {
+                Some(s) => d.label(format!("did you mean `{s}`?")),
+                None => d.help(format!(
+                    "valid keys here: {}",
+                    valid
+                        .iter()
+                        .map(|k| format!("`{k}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            };
+        }
+    }
+    source.error(span, msg.to_string())
+}
+
+/// What the conversion step needs to read values: the source (for spans)
+/// and the file's units.
+pub(crate) struct Ctx<'a> {
+    source: &'a Source,
+    units: FileUnits,
+}
+
+impl Ctx<'_> {
+    fn err(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
+        self.source.error(span, message)
+    }
+
+    fn file_units(&self, u: &Spanned<raw::RawUnits>) -> Result<FileUnits, Diagnostic> {
+        let pick = |v: &Option<Spanned<String>>,
+                    allowed: &'static [&'static str],
+                    key: &str,
+                    default: &'static str| {
+            let Some(v) = v else { return Ok(default) };
+            allowed
+                .iter()
+                .copied()
+                .find(|a| *a == v.get_ref())
+                .ok_or_else(|| {
+                    self.err(
+                        v.span(),
+                        format!("unknown {key} unit {:?} in `units`", v.get_ref()),
+                    )
+                    .label(
+                        match units::suggest(v.get_ref(), allowed.iter().copied()) {
+                            Some(s) => format!("did you mean \"{s}\"?"),
+                            None => format!("expected one of {}", allowed.join(", ")),
+                        },
+                    )
+                })
+        };
+        Ok(FileUnits {
+            length: pick(&u.get_ref().length, units::LENGTH_UNITS, "length", "m")?,
+            mass: pick(&u.get_ref().mass, units::MASS_UNITS, "mass", "kg")?,
+        })
+    }
+
+    /// A scalar of dimension `dim` in SI: a plain number in file units, or a
+    /// string with its own unit. Always finite.
+    fn quantity(&self, q: &Spanned<Quantity>, key: &str, dim: Dim) -> Result<f64, Diagnostic> {
+        let value = match q.get_ref() {
+            Quantity::Number(x) => {
+                if !x.is_finite() {
+                    return Err(self.err(
+                        q.span(),
+                        format!("`{key}` must be a finite number, got {x}"),
+                    ));
+                }
+                self.units.factor(dim).apply(*x)
+            }
+            Quantity::Text(t) => units::parse_quantity(t, dim).map_err(|e| {
+                let d = self.err(q.span(), format!("`{key}`: {e}"));
+                match e {
+                    UnitError::Unknown {
+                        suggestion: Some(s),
+                        ..
+                    } => d.suggest(Some(s)),
+                    _ => d.help(format!(
+                        "`{key}` is {}, e.g. {}",
+                        dim.describe(),
+                        dim.example()
+                    )),
+                }
+            })?,
+        };
+        if !value.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows when converted to SI units"),
+            ));
+        }
+        Ok(value)
+    }
+
+    fn positive(&self, q: &Spanned<Quantity>, key: &str, dim: Dim) -> Result<f64, Diagnostic> {
+        let v = self.quantity(q, key, dim)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.err(q.span(), format!("`{key}` must be positive")))
+        }
+    }
+
+    /// A vector of exactly `n` quantities of dimension `dim`, in SI.
+    fn vector(&self, v: &Vector, key: &str, dim: Dim, n: usize) -> Result<Vec<f64>, Diagnostic> {
+        if v.get_ref().len() != n {
+            return Err(self.err(
+                v.span(),
+                format!("`{key}` needs {n} components, got {}", v.get_ref().len()),
+            ));
+        }
+        v.get_ref()
+            .iter()
+            .map(|q| self.quantity(q, key, dim))
+            .collect()
+    }
+
+    fn vec3(&self, v: &Vector, key: &str, dim: Dim) -> Result<Vector3<f64>, Diagnostic> {
+        let c = self.vector(v, key, dim, 3)?;
+        Ok(Vector3::new(c[0], c[1], c[2]))
+    }
+
+    fn part(&self, index: usize, raw: &Spanned<RawPart>) -> Result<Part, Diagnostic> {
+        let p = raw.get_ref();
+        let shape = Shape::from_name(p.shape.get_ref()).ok_or_else(|| {
+            let names = Shape::ALL.map(Shape::name);
+            self.err(
+                p.shape.span(),
+                format!("unknown shape {:?}", p.shape.get_ref()),
+            )
+            .label(match units::suggest(p.shape.get_ref(), names) {
+                Some(s) => format!("did you mean \"{s}\"?"),
+                None => format!("expected one of {}", names.join(", ")),
+            })
+        })?;
+        let s = shape.name();
+
+        // Keys that exist in part files but do not apply to this shape.
+        let keys: [(&str, Option<Range<usize>>); 12] = [
+            ("density", p.density.as_ref().map(Spanned::span)),
+            ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
+            (
+                "linear_density",
+                p.linear_density.as_ref().map(Spanned::span),
+            ),
+            ("size", p.size.as_ref().map(Spanned::span)),
+            ("length", p.length.as_ref().map(Spanned::span)),
+            ("center", p.center.as_ref().map(Spanned::span)),
+            ("rotation", p.rotation.as_ref().map(Spanned::span)),
+            ("corner", p.corner.as_ref().map(Spanned::span)),
+            ("edges", p.edges.as_ref().map(Spanned::span)),
+            ("from", p.from.as_ref().map(Spanned::span)),
+            ("to", p.to.as_ref().map(Spanned::span)),
+            ("mass", p.mass.as_ref().map(Spanned::span)),
+        ];
+        let accepted: &[&str] = match shape {
+            Shape::Box => &[
+                "density", "size", "center", "rotation", "corner", "edges", "mass",
+            ],
+            Shape::Plate => &[
+                "areal_density",
+                "size",
+                "center",
+                "rotation",
+                "corner",
+                "edges",
+                "mass",
+            ],
+            Shape::Rod => &[
+                "linear_density",
+                "length",
+                "center",
+                "rotation",
+                "from",
+                "to",
+                "mass",
+            ],
+            Shape::Point => &["center", "mass"],
+        };
+        if let Some((key, span)) = keys
+            .iter()
+            .filter(|(k, _)| !accepted.contains(k))
+            .find_map(|(k, s)| s.clone().map(|s| (*k, s)))
+        {
+            return Err(self
+                .err(span, format!("`{key}` does not apply to a {s}"))
+                .help(shape_help(shape)));
+        }
+
+        // Placement: canonical (size/length, center, rotation) or by edges.
+        let by_edges: &[(&str, Option<Range<usize>>)] = match shape {
+            Shape::Box | Shape::Plate => &keys[7..9],
+            Shape::Rod => &keys[9..11],
+            Shape::Point => &[],
+        };
+        let canonical: &[(&str, Option<Range<usize>>)] = match shape {
+            Shape::Box | Shape::Plate => &[keys[3].clone(), keys[5].clone(), keys[6].clone()],
+            Shape::Rod => &keys[4..7],
+            Shape::Point => &keys[5..6],
+        };
+        let (center, axes, dims) = match (first(canonical), first(by_edges)) {
+            (Some((a, sa)), Some((b, sb))) => {
+                let (later, earlier, span) = if sa.start > sb.start {
+                    (a, b, sa)
+                } else {
+                    (b, a, sb)
+                };
+                return Err(self
+                    .err(span, format!("`{later}` conflicts with `{earlier}`: a {s} is placed one way or the other"))
+                    .help(shape_help(shape)));
+            }
+            (_, Some(_)) => self.placement_by_edges(shape, p, raw.span())?,
+            _ => self.placement_canonical(shape, p, raw.span())?,
+        };
+
+        // Mass: exactly one of `mass` and the shape's density.
+        let density = match shape {
+            Shape::Box => &p.density,
+            Shape::Plate => &p.areal_density,
+            Shape::Rod => &p.linear_density,
+            Shape::Point => &None,
+        };
+        let mass = match (&p.mass, density, shape.density_key()) {
+            (Some(m), Some(d), Some(dk)) => {
+                let (span, later, earlier) = if d.span().start > m.span().start {
+                    (d.span(), dk, "mass")
+                } else {
+                    (m.span(), "mass", dk)
+                };
+                return Err(self.err(
+                    span,
+                    format!("`{later}` conflicts with `{earlier}`: give exactly one"),
+                ));
+            }
+            (Some(m), _, _) => self.positive(m, "mass", Dim::MASS)?,
+            (None, Some(d), Some(dk)) => {
+                let dim = match shape {
+                    Shape::Box => Dim::DENSITY,
+                    Shape::Plate => Dim::AREAL_DENSITY,
+                    _ => Dim::LINEAR_DENSITY,
+                };
+                let rho = self.positive(d, dk, dim)?;
+                rho * shape.measure(&dims)
+            }
+            (None, _, Some(dk)) => {
+                return Err(self.err(raw.span(), format!("this {s} needs `mass` or `{dk}`")));
+            }
+            (None, _, None) => return Err(self.err(raw.span(), format!("this {s} needs `mass`"))),
+        };
+        let name = match &p.name {
+            Some(n) => n.get_ref().clone(),
+            None => format!("part {}", index + 1),
+        };
+        let local_second_moment = shape.local_second_moment(mass, &dims);
+        if !(mass.is_finite() && local_second_moment.iter().all(|x| x.is_finite())) {
+            return Err(self.err(
+                raw.span(),
+                format!("the mass properties of `{name}` overflow the range of f64"),
+            ));
+        }
+        Ok(Part {
+            name,
+            shape,
+            mass,
+            center,
+            axes,
+            local_second_moment,
+        })
+    }
+
+    fn placement_canonical(
+        &self,
+        shape: Shape,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<Placement, Diagnostic> {
+        let s = shape.name();
+        let missing = |key: &str| {
+            self.err(span.clone(), format!("this {s} needs `{key}`"))
+                .help(shape_help(shape))
+        };
+        let dims = match shape {
+            Shape::Box | Shape::Plate => {
+                let size = p.size.as_ref().ok_or_else(|| missing("size"))?;
+                let dims = self.vector(size, "size", Dim::LENGTH, shape.edge_count())?;
+                if let Some(i) = dims.iter().position(|d| !(*d > 0.0)) {
+                    return Err(self.err(size.get_ref()[i].span(), "`size` must be positive"));
+                }
+                dims
+            }
+            Shape::Rod => {
+                let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
+                vec![self.positive(l, "length", Dim::LENGTH)?]
+            }
+            Shape::Point => vec![],
+        };
+        let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
+        let center = self.vec3(center, "center", Dim::LENGTH)?;
+        let axes = match &p.rotation {
+            Some(r) => self.rotation(r)?,
+            None => Matrix3::identity(),
+        };
+        Ok((center, axes, dims))
+    }
+
+    fn placement_by_edges(
+        &self,
+        shape: Shape,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<Placement, Diagnostic> {
+        let s = shape.name();
+        let missing = |key: &str| {
+            self.err(span.clone(), format!("this {s} needs `{key}`"))
+                .help(shape_help(shape))
+        };
+        let (origin, edges) = if shape == Shape::Rod {
+            let from = self.vec3(
+                p.from.as_ref().ok_or_else(|| missing("from"))?,
+                "from",
+                Dim::LENGTH,
+            )?;
+            let to_raw = p.to.as_ref().ok_or_else(|| missing("to"))?;
+            let to = self.vec3(to_raw, "to", Dim::LENGTH)?;
+            let e = to - from;
+            if !(e.norm() > 0.0) {
+                return Err(self.err(
+                    to_raw.span(),
+                    "`to` must differ from `from`: the rod has no length",
+                ));
+            }
+            (from, vec![(e, to_raw.span())])
+        } else {
+            let corner = p.corner.as_ref().ok_or_else(|| missing("corner"))?;
+            let corner = self.vec3(corner, "corner", Dim::LENGTH)?;
+            let edges_raw = p.edges.as_ref().ok_or_else(|| missing("edges"))?;
+            let n = shape.edge_count();
+            if edges_raw.get_ref().len() != n {
+                return Err(self.err(
+                    edges_raw.span(),
+                    format!("a {s} needs {n} `edges`, got {}", edges_raw.get_ref().len()),
+                ));
+            }
+            let mut edges = Vec::with_capacity(n);
+            for e in edges_raw.get_ref() {
+                let v = self.vec3(e, "edges", Dim::LENGTH)?;
+                if !(v.norm() > 0.0) {
+                    return Err(self.err(e.span(), "an edge must not be zero"));
+                }
+                edges.push((v, e.span()));
+            }
+            for i in 0..n {
+                for j in i + 1..n {
+                    let (a, b) = (edges[i].0, edges[j].0);
+                    let cos = a.dot(&b) / (a.norm() * b.norm());
+                    if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
+                        return Err(self
+                            .err(
+                                edges[j].1.clone(),
+                                format!(
+                                    "edges {} and {} are not perpendicular (angle {:.6}°)",
+                                    i + 1,
+                                    j + 1,
+                                    cos.clamp(-1.0, 1.0).acos().to_degrees()
+                                ),
+                            )
+                            .help(format!("edges must be perpendicular to a relative {PERPENDICULAR_TOLERANCE:e}")));
+                    }
+                }
+            }
+            (corner, edges)
+        };
+        let half_sum = edges.iter().fold(Vector3::zeros(), |acc, (e, _)| acc + e) * 0.5;
+        let center = origin + half_sum;
+        let dims: Vec<f64> = edges.iter().map(|(e, _)| e.norm()).collect();
+        let units: Vec<Vector3<f64>> = edges.iter().map(|(e, _)| e.normalize()).collect();
+        let axes = match units[..] {
+            // The rod's axis is local z; x and y complete a right-handed set
+            // (their second moments are zero, so which pair does not matter).
+            [u] => {
+                let helper = if u.x.abs() <= u.y.abs() && u.x.abs() <= u.z.abs() {
+                    Vector3::x()
+                } else if u.y.abs() <= u.z.abs() {
+                    Vector3::y()
+                } else {
+                    Vector3::z()
+                };
+                let a = helper.cross(&u).normalize();
+                Matrix3::from_columns(&[a, u.cross(&a), u])
+            }
+            [a, b] => Matrix3::from_columns(&[a, b, a.cross(&b).normalize()]),
+            // A box spanned by a left-handed triple is the same box: flip the
+            // third local axis to keep the frame right-handed.
+            [a, b, c] => {
+                Matrix3::from_columns(&[a, b, if a.cross(&b).dot(&c) < 0.0 { -c } else { c }])
+            }
+            _ => unreachable!("box, plate and rod have 1 to 3 edges"),
+        };
+        Ok((center, axes, dims))
+    }
+
+    fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
+        let r = a.get_ref();
+        let about = r
+            .about
+            .as_ref()
+            .map(|v| self.vec3(v, "about", Dim::LENGTH))
+            .transpose()?;
+        let omega = r
+            .omega
+            .as_ref()
+            .map(|v| self.vec3(v, "omega", Dim::ANGULAR_VELOCITY))
+            .transpose()?;
+        let alpha = r
+            .alpha
+            .as_ref()
+            .map(|v| self.vec3(v, "alpha", Dim::ANGULAR_ACCELERATION))
+            .transpose()?;
+        if let (Some(al), None) = (&r.alpha, &omega) {
+            return Err(self
+                .err(
+                    al.span(),
+                    "`alpha` needs `omega`: the Euler moment depends on both",
+                )
+                .help("for a body starting from rest, write `omega = [0, 0, 0]`"));
+        }
+        Ok(Analysis {
+            about,
+            omega,
+            alpha,
+        })
+    }
+}
+
+/// The earliest present key of a set, with its span.
+fn first<'k>(set: &[(&'k str, Option<Range<usize>>)]) -> Option<(&'k str, Range<usize>)> {
+    set.iter()
+        .filter_map(|(k, s)| s.clone().map(|s| (*k, s)))
+        .min_by_key(|(_, s)| s.start)
+}
+
+fn shape_help(shape: Shape) -> &'static str {
+    match shape {
+        Shape::Box => {
+            "a box takes `mass` or `density`, and `size` with `center` (and optional `rotation`), or `corner` with three `edges`"
+        }
+        Shape::Plate => {
+            "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`"
+        }
+        Shape::Rod => {
+            "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`"
+        }
+        Shape::Point => "a point takes `mass` and `center`",
+    }
+}
+
+/// Parse a command-line vector such as `0,0,30` or `0,0,3000 rpm`: three
+/// comma-separated components, each a number in the file's units (rad/s for
+/// ω, rad/s² for α) or a quantity with its own unit.
+pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vector3<f64>, String> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    if parts.len() != 3 {
+        return Err(format!(
+            "expected three comma-separated components, got {}",
+            parts.len()
+        ));
+    }
+    let mut out = Vector3::zeros();
+    for (i, p) in parts.iter().enumerate() {
+        let v = match p.parse::<f64>() {
+            Ok(x) if x.is_finite() => units.factor(dim).apply(x),
+            Ok(_) => return Err(format!("component {} must be finite", i + 1)),
+            Err(_) => {
+                units::parse_quantity(p, dim).map_err(|e| format!("component {}: {e}", i + 1))?
+            }
+        };
+        if !v.is_finite() {
+            return Err(format!(
+                "component {} overflows when converted to SI units",
+                i + 1
+            ));
+        }
+        out[i] = v;
+    }
+    Ok(out)
+}

@@ -1,0 +1,331 @@
+//! The rotation forms of a part's local axes, each turned into the matrix R
+//! whose columns are the local x, y, z axes in the file's frame: a point p in
+//! local coordinates lies at `center + R·p`.
+//!
+//! All forms are active rotations. Euler angles name their meaning
+//! explicitly: `intrinsic = "zyx"` turns about z, then about the *new* y, then
+//! the newest x (R = Rz·Ry·Rx); `extrinsic = "xyz"` turns about the fixed x,
+//! then fixed y, then fixed z (also R = Rz·Ry·Rx).
+
+use super::Ctx;
+use super::raw::{Angles, Floats, RawRotation};
+use crate::diag::Diagnostic;
+use nalgebra::{Matrix3, Vector3};
+use toml::Spanned;
+
+/// A rotation matrix must be orthonormal to this (max-norm of RᵀR − E).
+pub const MATRIX_TOLERANCE: f64 = 1e-9;
+/// A quaternion's norm may differ from 1 by this much: rounding in printed
+/// values, not a typo. Its direction is used either way.
+pub const QUATERNION_TOLERANCE: f64 = 1e-6;
+
+/// sin and cos of an angle in degrees, exact at multiples of 90°.
+pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
+    // NOTE: `%` is exact, and so is `r - 90 q` (both are multiples of r's
+    // ulp and |r - 90 q| <= 45), so only the final sin/cos rounds.
+    let r = deg % 360.0;
+    let q = (r / 90.0).round();
+    let x = r - 90.0 * q;
+    let (s, c) = x.to_radians().sin_cos();
+    match (q as i64).rem_euclid(4) {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
+fn elementary(axis: usize, deg: f64) -> Matrix3<f64> {
+    let (s, c) = sin_cos_deg(deg);
+    match axis {
+        0 => Matrix3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c),
+        1 => Matrix3::new(c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c),
+        _ => Matrix3::new(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0),
+    }
+}
+
+/// Rodrigues' formula for a unit axis `k`: R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ.
+pub fn axis_angle(k: Vector3<f64>, deg: f64) -> Matrix3<f64> {
+    let (s, c) = sin_cos_deg(deg);
+    Matrix3::identity() * c + k.cross_matrix() * s + k * k.transpose() * (1.0 - c)
+}
+
+/// R of a quaternion [w, x, y, z], dividing by |q|² instead of normalising
+/// first, which keeps e.g. [1, 0, 0, 1] exact.
+pub fn quaternion(q: [f64; 4]) -> Matrix3<f64> {
+    let [w, x, y, z] = q;
+    let n = w * w + x * x + y * y + z * z;
+    Matrix3::new(
+        w * w + x * x - y * y - z * z,
+        2.0 * (x * y - w * z),
+        2.0 * (x * z + w * y),
+        2.0 * (x * y + w * z),
+        w * w - x * x + y * y - z * z,
+        2.0 * (y * z - w * x),
+        2.0 * (x * z - w * y),
+        2.0 * (y * z + w * x),
+        w * w - x * x - y * y + z * z,
+    ) / n
+}
+
+/// R of Euler angles: `seq` like "zyx", intrinsic or extrinsic.
+pub fn euler(seq: [usize; 3], deg: [f64; 3], intrinsic: bool) -> Matrix3<f64> {
+    let r = [0, 1, 2].map(|i| elementary(seq[i], deg[i]));
+    if intrinsic {
+        r[0] * r[1] * r[2]
+    } else {
+        r[2] * r[1] * r[0]
+    }
+}
+
+impl Ctx<'_> {
+    pub(super) fn rotation(&self, raw: &Spanned<RawRotation>) -> Result<Matrix3<f64>, Diagnostic> {
+        let r = raw.get_ref();
+        // The form keys present, in file order, so the message names the second.
+        let mut forms: Vec<(&str, std::ops::Range<usize>)> = [
+            ("quaternion", r.quaternion.as_ref().map(|v| v.span())),
+            ("axis", r.axis.as_ref().map(|v| v.span())),
+            ("matrix", r.matrix.as_ref().map(|v| v.span())),
+            ("intrinsic", r.intrinsic.as_ref().map(|v| v.span())),
+            ("extrinsic", r.extrinsic.as_ref().map(|v| v.span())),
+        ]
+        .into_iter()
+        .filter_map(|(k, s)| s.map(|s| (k, s)))
+        .collect();
+        forms.sort_by_key(|(_, s)| s.start);
+        let (form, _) = match forms.as_slice() {
+            [] => {
+                return Err(self
+                    .err(raw.span(), "`rotation` needs one form")
+                    .help("write `{ quaternion = [w, x, y, z] }`, `{ axis = [x, y, z], degrees = θ }`, `{ matrix = [[..], [..], [..]] }`, or `{ intrinsic = \"zyx\", degrees = [a, b, c] }` (or `extrinsic`)"));
+            }
+            [one] => one.clone(),
+            [first, second, ..] => {
+                return Err(self
+                    .err(
+                        second.1.clone(),
+                        format!(
+                            "`rotation` takes one form: `{}` conflicts with `{}`",
+                            second.0, first.0
+                        ),
+                    )
+                    .label("second form"));
+            }
+        };
+        let takes_degrees = matches!(form, "axis" | "intrinsic" | "extrinsic");
+        if let (false, Some(d)) = (takes_degrees, &r.degrees) {
+            return Err(self.err(
+                d.span(),
+                format!("`degrees` does not go with `{form}`; it goes with `axis`, `intrinsic` or `extrinsic`"),
+            ));
+        }
+        let degrees = || {
+            r.degrees.as_ref().ok_or_else(|| {
+                self.err(
+                    raw.span(),
+                    format!("`rotation` with `{form}` needs `degrees`"),
+                )
+            })
+        };
+        match form {
+            "quaternion" => {
+                let q = r.quaternion.as_ref().expect("form is quaternion");
+                let v = self.floats(q, "quaternion", 4)?;
+                let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+                if !((norm - 1.0).abs() <= QUATERNION_TOLERANCE) {
+                    return Err(self
+                        .err(q.span(), format!("`quaternion` must have unit length, got length {norm}"))
+                        .help(format!("only rounding is tolerated (|‖q‖ − 1| ≤ {QUATERNION_TOLERANCE:e}); the order is [w, x, y, z]")));
+                }
+                Ok(quaternion([v[0], v[1], v[2], v[3]]))
+            }
+            "axis" => {
+                let a = r.axis.as_ref().expect("form is axis");
+                let v = self.floats(a, "axis", 3)?;
+                let k = Vector3::new(v[0], v[1], v[2]);
+                let n = k.norm();
+                if !(n > 0.0 && n.is_finite()) {
+                    return Err(self.err(a.span(), "`axis` must be a non-zero vector"));
+                }
+                let d = degrees()?;
+                match d.get_ref() {
+                    Angles::One(deg) if deg.is_finite() => Ok(axis_angle(k / n, *deg)),
+                    Angles::One(_) => Err(self.err(d.span(), "`degrees` must be finite")),
+                    Angles::Three(_) => Err(self.err(
+                        d.span(),
+                        "with `axis`, `degrees` is one angle, not an array",
+                    )),
+                }
+            }
+            "matrix" => {
+                let m = r.matrix.as_ref().expect("form is matrix");
+                let rows = m.get_ref();
+                if rows.len() != 3 {
+                    return Err(self.err(
+                        m.span(),
+                        format!("`matrix` needs 3 rows, got {}", rows.len()),
+                    ));
+                }
+                let mut out = Matrix3::zeros();
+                for (i, row) in rows.iter().enumerate() {
+                    let v = self.floats(row, "matrix row", 3)?;
+                    for j in 0..3 {
+                        out[(i, j)] = v[j];
+                    }
+                }
+                let defect = (out.transpose() * out - Matrix3::identity()).amax();
+                if !(defect <= MATRIX_TOLERANCE) {
+                    return Err(self
+                        .err(m.span(), format!("`matrix` is not orthonormal (RᵀR differs from the identity by {defect:.3e})"))
+                        .help(format!("rows must be orthonormal to {MATRIX_TOLERANCE:e}; give the rotation as a quaternion or axis and angle if its entries are rounded")));
+                }
+                if out.determinant() < 0.0 {
+                    return Err(self
+                        .err(
+                            m.span(),
+                            "`matrix` has determinant −1: it is a reflection, not a rotation",
+                        )
+                        .help("negate one row or column to make the axes right-handed"));
+                }
+                // One Newton–Schulz step, R ← R (3E − RᵀR) / 2, takes a 1e-9
+                // defect to about 1e-18 and leaves an exact rotation exact.
+                Ok(out * (Matrix3::identity() * 3.0 - out.transpose() * out) * 0.5)
+            }
+            _ => {
+                let intrinsic = form == "intrinsic";
+                let s = if intrinsic {
+                    &r.intrinsic
+                } else {
+                    &r.extrinsic
+                };
+                let s = s.as_ref().expect("form is intrinsic or extrinsic");
+                let seq = parse_sequence(s.get_ref()).ok_or_else(|| {
+                    self.err(s.span(), format!("`{form}` must be three axes such as \"zyx\" or \"zxz\", no axis twice in a row, got {:?}", s.get_ref()))
+                })?;
+                let d = degrees()?;
+                match d.get_ref() {
+                    Angles::Three(a) if a.len() == 3 && a.iter().all(|x| x.is_finite()) => {
+                        Ok(euler(seq, [a[0], a[1], a[2]], intrinsic))
+                    }
+                    Angles::Three(a) if a.len() == 3 => {
+                        Err(self.err(d.span(), "`degrees` must be finite"))
+                    }
+                    _ => Err(self.err(
+                        d.span(),
+                        format!("with `{form}`, `degrees` is an array of three angles, one for each axis of the sequence"),
+                    )),
+                }
+            }
+        }
+    }
+
+    /// A plain array of `n` finite numbers (rotation parameters carry no unit).
+    fn floats(&self, v: &Floats, key: &str, n: usize) -> Result<Vec<f64>, Diagnostic> {
+        if v.get_ref().len() != n {
+            return Err(self.err(
+                v.span(),
+                format!("`{key}` needs {n} numbers, got {}", v.get_ref().len()),
+            ));
+        }
+        v.get_ref()
+            .iter()
+            .map(|x| {
+                if x.get_ref().is_finite() {
+                    Ok(*x.get_ref())
+                } else {
+                    Err(self.err(x.span(), format!("`{key}` must be finite")))
+                }
+            })
+            .collect()
+    }
+}
+
+fn parse_sequence(s: &str) -> Option<[usize; 3]> {
+    let axes: Vec<usize> = s
+        .chars()
+        .map(|c| match c.to_ascii_lowercase() {
+            'x' => Some(0),
+            'y' => Some(1),
+            'z' => Some(2),
+            _ => None,
+        })
+        .collect::<Option<_>>()?;
+    match axes[..] {
+        [a, b, c] if a != b && b != c => Some([a, b, c]),
+        _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: &Matrix3<f64>, b: &Matrix3<f64>, tol: f64) -> bool {
+        (a - b).amax() <= tol
+    }
+
+    #[test]
+    fn multiples_of_ninety_degrees_are_exact() {
+        assert_eq!(sin_cos_deg(0.0), (0.0, 1.0));
+        assert_eq!(sin_cos_deg(90.0), (1.0, 0.0));
+        assert_eq!(sin_cos_deg(180.0), (0.0, -1.0));
+        assert_eq!(sin_cos_deg(-90.0), (-1.0, 0.0));
+        assert_eq!(sin_cos_deg(450.0), (1.0, 0.0));
+    }
+
+    #[test]
+    fn degree_sin_cos_matches_radians_elsewhere() {
+        for d in [1.0, 29.0, 44.9, 45.0, 91.0, 200.0, -377.5, 1e6 + 0.25] {
+            let (s, c) = sin_cos_deg(d);
+            let (s2, c2) = (d.to_radians()).sin_cos();
+            assert!((s - s2).abs() < 1e-9 && (c - c2).abs() < 1e-9, "{d}");
+        }
+    }
+
+    #[test]
+    fn quarter_turn_about_z_is_the_same_in_every_form() {
+        let expect = Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);
+        assert_eq!(axis_angle(Vector3::z(), 90.0), expect);
+        assert_eq!(quaternion([1.0, 0.0, 0.0, 1.0]), expect);
+        assert_eq!(euler([2, 1, 0], [90.0, 0.0, 0.0], true), expect);
+        assert_eq!(euler([0, 1, 2], [0.0, 0.0, 90.0], false), expect);
+    }
+
+    #[test]
+    fn intrinsic_sequence_equals_reversed_extrinsic_sequence() {
+        let a = euler([2, 1, 0], [30.0, 20.0, 10.0], true);
+        let b = euler([0, 1, 2], [10.0, 20.0, 30.0], false);
+        assert!(close(&a, &b, 1e-15));
+    }
+
+    #[test]
+    fn intrinsic_rotation_turns_about_the_new_axes() {
+        // Intrinsic zy by 90° and 90°: Ry takes e_z to e_x, then Rz takes
+        // e_x to e_y. (Extrinsic zy would give Ry Rz e_z = e_x instead.)
+        let r = euler([2, 1, 0], [90.0, 90.0, 0.0], true);
+        assert_eq!(r * Vector3::z(), Vector3::y());
+        let e = euler([2, 1, 0], [90.0, 90.0, 0.0], false);
+        assert_eq!(e * Vector3::z(), Vector3::x());
+    }
+
+    #[test]
+    fn quaternion_and_axis_angle_agree_for_a_general_rotation() {
+        let k = Vector3::new(1.0, -2.0, 0.5).normalize();
+        let t = 37.0_f64;
+        let (s, c) = (t / 2.0).to_radians().sin_cos();
+        let q = [c, s * k.x, s * k.y, s * k.z];
+        assert!(close(&quaternion(q), &axis_angle(k, t), 1e-15));
+        let r = axis_angle(k, t);
+        assert!(close(&(r.transpose() * r), &Matrix3::identity(), 1e-15));
+        assert!((r.determinant() - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn sequences_parse_and_reject_repeats() {
+        assert_eq!(parse_sequence("ZYX"), Some([2, 1, 0]));
+        assert_eq!(parse_sequence("zxz"), Some([2, 0, 2]));
+        assert_eq!(parse_sequence("zzx"), None);
+        assert_eq!(parse_sequence("zy"), None);
+        assert_eq!(parse_sequence("abc"), None);
+    }
+}

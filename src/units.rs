@@ -1,0 +1,499 @@
+//! Units at the edge: the file's default units and quantity strings such as
+//! `"3 mm"` or `"7.85 g/cm^3"`, converted to SI exactly once.
+//!
+//! Every factor is kept as an exact rational (times a power of π for angle
+//! units) until the single conversion of a value, so `"7.85 g/cm^3"` becomes
+//! `7850.0` kg/m³ rather than `7849.999999999999`. The inch and the pound are
+//! the exact defined ones (0.0254 m, 0.45359237 kg).
+
+use std::fmt;
+
+/// Physical dimension as exponents of (mass, length, time). Angles are
+/// dimensionless (radians), as in SI.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Dim {
+    pub mass: i32,
+    pub length: i32,
+    pub time: i32,
+}
+
+impl Dim {
+    const fn new(mass: i32, length: i32, time: i32) -> Dim {
+        Dim { mass, length, time }
+    }
+    pub const LENGTH: Dim = Dim::new(0, 1, 0);
+    pub const MASS: Dim = Dim::new(1, 0, 0);
+    pub const DENSITY: Dim = Dim::new(1, -3, 0);
+    pub const AREAL_DENSITY: Dim = Dim::new(1, -2, 0);
+    pub const LINEAR_DENSITY: Dim = Dim::new(1, -1, 0);
+    pub const ANGULAR_VELOCITY: Dim = Dim::new(0, 0, -1);
+    pub const ANGULAR_ACCELERATION: Dim = Dim::new(0, 0, -2);
+
+    fn add(self, o: Dim, sign: i32) -> Dim {
+        Dim::new(
+            self.mass + sign * o.mass,
+            self.length + sign * o.length,
+            self.time + sign * o.time,
+        )
+    }
+
+    /// What the quantity is called in messages.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Dim::LENGTH => "a length",
+            Dim::MASS => "a mass",
+            Dim::DENSITY => "a density (mass per volume)",
+            Dim::AREAL_DENSITY => "an areal density (mass per area)",
+            Dim::LINEAR_DENSITY => "a linear density (mass per length)",
+            Dim::ANGULAR_VELOCITY => "an angular velocity",
+            Dim::ANGULAR_ACCELERATION => "an angular acceleration",
+            _ => "a quantity of another kind",
+        }
+    }
+
+    /// An example unit, for "expected" hints.
+    pub fn example(self) -> &'static str {
+        match self {
+            Dim::LENGTH => "\"3 mm\"",
+            Dim::MASS => "\"2 lb\"",
+            Dim::DENSITY => "\"7.85 g/cm^3\"",
+            Dim::AREAL_DENSITY => "\"70 kg/m^2\"",
+            Dim::LINEAR_DENSITY => "\"0.4 kg/m\"",
+            Dim::ANGULAR_VELOCITY => "\"3000 rpm\"",
+            Dim::ANGULAR_ACCELERATION => "\"2 rad/s^2\"",
+            _ => "\"1 m\"",
+        }
+    }
+}
+
+/// An exact conversion factor to SI: `num / den · π^pi`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Factor {
+    num: i128,
+    den: i128,
+    pi: i32,
+}
+
+impl Factor {
+    pub const ONE: Factor = Factor::ratio(1, 1);
+
+    const fn ratio(num: i128, den: i128) -> Factor {
+        Factor { num, den, pi: 0 }
+    }
+
+    fn mul(self, o: Factor) -> Option<Factor> {
+        Factor {
+            num: self.num.checked_mul(o.num)?,
+            den: self.den.checked_mul(o.den)?,
+            pi: self.pi + o.pi,
+        }
+        .reduced()
+    }
+
+    fn inv(self) -> Factor {
+        Factor {
+            num: self.den,
+            den: self.num,
+            pi: -self.pi,
+        }
+    }
+
+    fn pow(self, n: i32) -> Option<Factor> {
+        let base = if n < 0 { self.inv() } else { self };
+        let mut out = Factor::ONE;
+        for _ in 0..n.unsigned_abs() {
+            out = out.mul(base)?;
+        }
+        Some(out)
+    }
+
+    fn reduced(self) -> Option<Factor> {
+        let g = gcd(self.num, self.den);
+        Some(Factor {
+            num: self.num / g,
+            den: self.den / g,
+            pi: self.pi,
+        })
+    }
+
+    /// `x` in SI. One multiplication and one correctly rounded division for
+    /// the common units (`x / 1000` for millimetres, not `x * 0.001`).
+    pub fn apply(self, x: f64) -> f64 {
+        let mut v = if self.num == 1 {
+            x / self.den as f64
+        } else {
+            x * self.num as f64 / self.den as f64
+        };
+        if self.pi != 0 {
+            v *= std::f64::consts::PI.powi(self.pi);
+        }
+        v
+    }
+
+    /// The SI value of one unit: `apply(1.0)`.
+    pub fn value(self) -> f64 {
+        self.apply(1.0)
+    }
+}
+
+fn gcd(mut a: i128, mut b: i128) -> i128 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a.abs().max(1)
+}
+
+/// A unit symbol, its dimension and its exact factor to SI.
+struct Symbol {
+    name: &'static str,
+    dim: Dim,
+    factor: Factor,
+}
+
+const fn sym(name: &'static str, dim: Dim, num: i128, den: i128, pi: i32) -> Symbol {
+    Symbol {
+        name,
+        dim,
+        factor: Factor { num, den, pi },
+    }
+}
+
+const NONE: Dim = Dim::new(0, 0, 0);
+const TIME: Dim = Dim::new(0, 0, 1);
+
+/// Every unit symbol a quantity string may use.
+const SYMBOLS: &[Symbol] = &[
+    sym("m", Dim::LENGTH, 1, 1, 0),
+    sym("cm", Dim::LENGTH, 1, 100, 0),
+    sym("mm", Dim::LENGTH, 1, 1000, 0),
+    sym("in", Dim::LENGTH, 254, 10_000, 0),
+    sym("ft", Dim::LENGTH, 3048, 10_000, 0),
+    sym("kg", Dim::MASS, 1, 1, 0),
+    sym("g", Dim::MASS, 1, 1000, 0),
+    sym("lb", Dim::MASS, 45_359_237, 100_000_000, 0),
+    sym("s", TIME, 1, 1, 0),
+    sym("min", TIME, 60, 1, 0),
+    sym("rad", NONE, 1, 1, 0),
+    sym("deg", NONE, 1, 180, 1),
+    sym("rev", NONE, 2, 1, 1),
+    // Revolutions per minute: 2π/60 rad/s.
+    sym("rpm", Dim::new(0, 0, -1), 1, 30, 1),
+];
+
+/// Length units allowed as a file's default (`units.length`).
+pub const LENGTH_UNITS: &[&str] = &["m", "cm", "mm", "in", "ft"];
+/// Mass units allowed as a file's default (`units.mass`).
+pub const MASS_UNITS: &[&str] = &["kg", "g", "lb"];
+
+/// A unit expression: its dimension and factor to SI.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Unit {
+    pub dim: Dim,
+    pub factor: Factor,
+}
+
+/// Why a quantity string could not be read. `Display` gives the message;
+/// `suggestion` a near symbol for an unknown one.
+#[derive(Debug, PartialEq)]
+pub enum UnitError {
+    NoNumber,
+    NotFinite,
+    NoUnit,
+    Unknown {
+        symbol: String,
+        suggestion: Option<&'static str>,
+    },
+    Syntax(String),
+    Overflow,
+    WrongDim {
+        unit: String,
+        expected: Dim,
+    },
+}
+
+impl fmt::Display for UnitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            UnitError::NoNumber => write!(f, "a quantity string must start with a number"),
+            UnitError::NotFinite => write!(f, "the number must be finite"),
+            UnitError::NoUnit => write!(
+                f,
+                "a quantity string needs a unit (write a plain number, without quotes, for the file's units)"
+            ),
+            UnitError::Unknown { symbol, .. } => write!(f, "unknown unit `{symbol}`"),
+            UnitError::Syntax(s) => write!(f, "cannot read unit `{s}`"),
+            UnitError::Overflow => write!(f, "unit exponent too large"),
+            UnitError::WrongDim { unit, expected } => {
+                write!(f, "`{unit}` is not {}", expected.describe())
+            }
+        }
+    }
+}
+
+/// Parse a unit expression such as `kg/m^2`, `g/cm³`, `rad/s` or `rpm`:
+/// symbols joined by `*` or `·`, at most one `/`, exponents as `^n`, `²`, `³`.
+pub fn parse_unit(text: &str) -> Result<Unit, UnitError> {
+    let text = text.trim();
+    let (numer, denom) = match text.split_once('/') {
+        Some((n, d)) => (n.trim(), Some(d.trim())),
+        None => (text, None),
+    };
+    if numer.is_empty() {
+        return Err(UnitError::Syntax(text.to_string()));
+    }
+    let mut unit = Unit {
+        dim: NONE,
+        factor: Factor::ONE,
+    };
+    // A leading "1/s" is a pure denominator.
+    if numer != "1" {
+        unit = product(unit, numer, 1)?;
+    }
+    if let Some(d) = denom {
+        if d.is_empty() || d.contains('/') {
+            return Err(UnitError::Syntax(text.to_string()));
+        }
+        unit = product(unit, d, -1)?;
+    }
+    Ok(unit)
+}
+
+fn product(mut unit: Unit, terms: &str, sign: i32) -> Result<Unit, UnitError> {
+    for term in terms.split(['*', '·']) {
+        let term = term.trim();
+        let (name, exp) = split_exponent(term)?;
+        let symbol = SYMBOLS
+            .iter()
+            .find(|s| s.name == name)
+            .ok_or_else(|| UnitError::Unknown {
+                symbol: name.to_string(),
+                suggestion: suggest(name, SYMBOLS.iter().map(|s| s.name)),
+            })?;
+        let power = sign * exp;
+        let dim = Dim::new(
+            symbol.dim.mass * power,
+            symbol.dim.length * power,
+            symbol.dim.time * power,
+        );
+        unit.dim = unit.dim.add(dim, 1);
+        unit.factor = symbol
+            .factor
+            .pow(power)
+            .and_then(|f| unit.factor.mul(f))
+            .ok_or(UnitError::Overflow)?;
+    }
+    Ok(unit)
+}
+
+fn split_exponent(term: &str) -> Result<(&str, i32), UnitError> {
+    let bad = || UnitError::Syntax(term.to_string());
+    if let Some(base) = term.strip_suffix('²') {
+        return Ok((base, 2));
+    }
+    if let Some(base) = term.strip_suffix('³') {
+        return Ok((base, 3));
+    }
+    match term.split_once('^') {
+        Some((base, exp)) => {
+            let exp: i32 = exp.trim().parse().map_err(|_| bad())?;
+            if exp == 0 || exp.abs() > 4 {
+                return Err(bad());
+            }
+            Ok((base.trim(), exp))
+        }
+        None if term.is_empty() => Err(bad()),
+        None => Ok((term, 1)),
+    }
+}
+
+/// Split `"7.85 g/cm^3"` into the number and the unit text.
+fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
+    let t = text.trim_start();
+    let b = t.as_bytes();
+    let mut i = 0;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let digits_start = i;
+    while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.' || b[i] == b'_') {
+        i += 1;
+    }
+    if i == digits_start {
+        return Err(UnitError::NoNumber);
+    }
+    // An exponent only if digits follow it, so "3 m" is not read as "3 e…".
+    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+        let mut j = i + 1;
+        if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
+            j += 1;
+        }
+        if j < b.len() && b[j].is_ascii_digit() {
+            while j < b.len() && b[j].is_ascii_digit() {
+                j += 1;
+            }
+            i = j;
+        }
+    }
+    let number: f64 = t[..i]
+        .replace('_', "")
+        .parse()
+        .map_err(|_| UnitError::NoNumber)?;
+    if !number.is_finite() {
+        return Err(UnitError::NotFinite);
+    }
+    Ok((number, t[i..].trim()))
+}
+
+/// Read a quantity string of the expected dimension and return it in SI.
+pub fn parse_quantity(text: &str, expected: Dim) -> Result<f64, UnitError> {
+    let (number, unit_text) = split_number(text)?;
+    if unit_text.is_empty() {
+        return Err(UnitError::NoUnit);
+    }
+    let unit = parse_unit(unit_text)?;
+    if unit.dim != expected {
+        return Err(UnitError::WrongDim {
+            unit: unit_text.to_string(),
+            expected,
+        });
+    }
+    Ok(unit.factor.apply(number))
+}
+
+/// The nearest of `candidates` to a misspelt `word`, if one is close enough
+/// to be a likely typo.
+pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    candidates
+        .into_iter()
+        .map(|c| (strsim::damerau_levenshtein(word, c), c))
+        .filter(|&(d, c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
+        .min_by_key(|&(d, _)| d)
+        .map(|(_, c)| c)
+}
+
+/// The file's default units: plain numbers are in these.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FileUnits {
+    pub length: &'static str,
+    pub mass: &'static str,
+}
+
+impl Default for FileUnits {
+    fn default() -> Self {
+        FileUnits {
+            length: "m",
+            mass: "kg",
+        }
+    }
+}
+
+impl FileUnits {
+    fn symbol(name: &str) -> Factor {
+        SYMBOLS
+            .iter()
+            .find(|s| s.name == name)
+            .map(|s| s.factor)
+            .expect("file units are validated against LENGTH_UNITS and MASS_UNITS")
+    }
+
+    /// Factor from a plain number in file units of dimension `dim` to SI.
+    /// Angular quantities are always rad/s and rad/s².
+    pub fn factor(&self, dim: Dim) -> Factor {
+        let l = Self::symbol(self.length);
+        let m = Self::symbol(self.mass);
+        m.pow(dim.mass)
+            .and_then(|f| l.pow(dim.length).and_then(|g| f.mul(g)))
+            .expect("file-unit factors are small rationals")
+    }
+
+    /// How the inertia unit is written, e.g. `kg·mm²`.
+    pub fn inertia_label(&self) -> String {
+        format!("{}·{}²", self.mass, self.length)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn grams_per_cubic_centimetre_is_exactly_one_thousand_si() {
+        assert_eq!(parse_quantity("7.85 g/cm^3", Dim::DENSITY), Ok(7850.0));
+        assert_eq!(parse_quantity("1 g/cm³", Dim::DENSITY), Ok(1000.0));
+    }
+
+    #[test]
+    fn inch_and_pound_are_the_defined_ones() {
+        assert_eq!(parse_quantity("1 in", Dim::LENGTH), Ok(0.0254));
+        assert_eq!(parse_quantity("1 ft", Dim::LENGTH), Ok(0.3048));
+        assert_eq!(parse_quantity("1 lb", Dim::MASS), Ok(0.45359237));
+        // 1 lb/in³ = 0.45359237 / 0.0254³ kg/m³, to one rounding.
+        let v = parse_quantity("1 lb/in^3", Dim::DENSITY).unwrap();
+        let exact = 0.45359237 / (0.0254f64 * 0.0254 * 0.0254);
+        assert!((v - exact).abs() <= 4.0 * f64::EPSILON * exact);
+    }
+
+    #[test]
+    fn millimetres_divide_rather_than_multiply_by_a_rounded_thousandth() {
+        assert_eq!(parse_quantity("3 mm", Dim::LENGTH), Ok(3.0 / 1000.0));
+        assert_eq!(parse_quantity("-2.5e3 mm", Dim::LENGTH), Ok(-2.5));
+        assert_eq!(parse_quantity("3mm", Dim::LENGTH), Ok(0.003));
+    }
+
+    #[test]
+    fn angular_units_convert_through_pi() {
+        let rpm = parse_quantity("60 rpm", Dim::ANGULAR_VELOCITY).unwrap();
+        assert!((rpm - 2.0 * std::f64::consts::PI).abs() < 1e-15);
+        let deg = parse_quantity("180 deg/s", Dim::ANGULAR_VELOCITY).unwrap();
+        assert!((deg - std::f64::consts::PI).abs() < 1e-15);
+        assert_eq!(
+            parse_quantity("2 rad/s^2", Dim::ANGULAR_ACCELERATION),
+            Ok(2.0)
+        );
+        assert_eq!(parse_quantity("2 1/s", Dim::ANGULAR_VELOCITY), Ok(2.0));
+    }
+
+    #[test]
+    fn wrong_dimension_is_rejected() {
+        assert!(matches!(
+            parse_quantity("3 kg", Dim::LENGTH),
+            Err(UnitError::WrongDim { .. })
+        ));
+    }
+
+    #[test]
+    fn unknown_unit_suggests_the_nearest() {
+        match parse_quantity("3 mmm", Dim::LENGTH) {
+            Err(UnitError::Unknown { suggestion, .. }) => assert_eq!(suggestion, Some("mm")),
+            other => panic!("unexpected {other:?}"),
+        }
+    }
+
+    #[test]
+    fn malformed_strings_are_rejected() {
+        assert_eq!(parse_quantity("mm", Dim::LENGTH), Err(UnitError::NoNumber));
+        assert_eq!(parse_quantity("3", Dim::LENGTH), Err(UnitError::NoUnit));
+        assert_eq!(
+            parse_quantity("inf m", Dim::LENGTH),
+            Err(UnitError::NoNumber)
+        );
+        assert_eq!(
+            parse_quantity("1e999 m", Dim::LENGTH),
+            Err(UnitError::NotFinite)
+        );
+        assert!(parse_quantity("3 kg/m/m", Dim::AREAL_DENSITY).is_err());
+        assert!(parse_quantity("3 kg/m^", Dim::AREAL_DENSITY).is_err());
+    }
+
+    #[test]
+    fn file_units_scale_plain_numbers() {
+        let u = FileUnits {
+            length: "mm",
+            mass: "g",
+        };
+        // 1 g/mm³ = 1e-3 kg / 1e-9 m³ = 1e6 kg/m³.
+        assert_eq!(u.factor(Dim::DENSITY).value(), 1e6);
+        assert_eq!(u.factor(Dim::LENGTH).apply(5.0), 0.005);
+        assert_eq!(u.factor(Dim::ANGULAR_VELOCITY), Factor::ONE);
+    }
+}
