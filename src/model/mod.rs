@@ -110,7 +110,11 @@ impl Model {
 /// drawn from the key list in serde's own message.
 fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     let span = e.span().unwrap_or(0..0);
-    let msg = e.message().trim_end();
+    let msg = e
+        .message()
+        .trim_end()
+        .replace("expected f64", "expected a number");
+    let msg = msg.as_str();
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
         let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
@@ -130,7 +134,36 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
             };
         }
     }
+    if let Some(rest) = msg.strip_prefix("missing field ") {
+        let key = rest.trim_matches('`');
+        let d = source.error(span, format!("missing key `{key}`"));
+        return if key == "shape" {
+            d.help(format!(
+                "every part needs `shape`, one of {}",
+                Shape::ALL.map(|s| format!("\"{}\"", s.name())).join(", ")
+            ))
+        } else {
+            d
+        };
+    }
+    if let Some(rest) = msg.strip_prefix("invalid type: ")
+        && let Some(key) = key_before(&source.text, span.start)
+    {
+        return source.error(span, format!("`{key}` has the wrong type: {rest}"));
+    }
     source.error(span, msg.to_string())
+}
+
+/// The key whose value starts at `offset`: the name before the last `=` on
+/// that line (`mass = true`, `{ matrix = [..] }`), if there is one.
+fn key_before(text: &str, offset: usize) -> Option<&str> {
+    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let before = text[line_start..offset].rsplit_once('=')?.0.trim_end();
+    let start = before
+        .rfind(|c: char| !(c.is_alphanumeric() || c == '_' || c == '-'))
+        .map_or(0, |i| i + 1);
+    let key = &before[start..];
+    (!key.is_empty()).then_some(key)
 }
 
 /// What the conversion step needs to read values: the source (for spans)

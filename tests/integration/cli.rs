@@ -1,0 +1,285 @@
+//! The command line as users and scripts see it.
+
+use crate::common::{massprop, massprop_stdin};
+use serde_json::Value;
+
+const BENT_PLATE: &str = "shapes/bent-plate.toml";
+
+#[test]
+fn bad_input_cases() {
+    // Every case in tests/cmd/*.md: exit status and full output pinned.
+    trycmd::TestCases::new().case("tests/cmd/*.md");
+}
+
+fn json(args: &[&str]) -> Value {
+    let out = massprop(args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stderr.is_empty());
+    serde_json::from_slice(&out.stdout).expect("stdout is one JSON document")
+}
+
+fn vec3(v: &Value) -> [f64; 3] {
+    let a = v.as_array().expect("a 3-vector is an array");
+    assert_eq!(a.len(), 3);
+    [0, 1, 2].map(|i| a[i].as_f64().expect("numbers"))
+}
+
+/// The worked example by hand. Plate A (x = 0, y ∈ [0, .125], z ∈ [0, .1])
+/// and plate B (y = .125, x ∈ [0, .075], z ∈ [0, .15]), 70 kg/m². For a
+/// uniform rectangle ∫uv dm = m ū v̄ and ∫u² dm = m a²/3 from an edge, so
+/// about O with ω = 30 k: H = ω (−∫xz, −∫yz, ∫(x² + y²)) dm.
+fn bent_plate_by_hand() -> ([f64; 3], f64, f64) {
+    let (ma, mb) = (70.0 * 0.125 * 0.1, 70.0 * 0.075 * 0.15);
+    let ixz = mb * 0.0375 * 0.075;
+    let iyz = ma * 0.0625 * 0.05 + mb * 0.125 * 0.075;
+    let izz = ma * 0.125 * 0.125 / 3.0 + mb * (0.075 * 0.075 / 3.0 + 0.125 * 0.125);
+    let h = [-30.0 * ixz, -30.0 * iyz, 30.0 * izz];
+    (h, 0.5 * 30.0 * h[2], ma + mb)
+}
+
+#[test]
+fn bent_plate_json_matches_the_hand_derivation_and_the_published_answer() {
+    let v = json(&["report", BENT_PLATE, "--format", "json"]);
+    let (h, t, m) = bent_plate_by_hand();
+    let got_h = vec3(&v["angular_momentum"]);
+    for i in 0..3 {
+        assert!(
+            (got_h[i] - h[i]).abs() <= 1e-15,
+            "H[{i}] {} vs {}",
+            got_h[i],
+            h[i]
+        );
+    }
+    let got_t = v["kinetic_energy"].as_f64().unwrap();
+    assert!((got_t - t).abs() <= 1e-14 * t);
+    assert!((v["mass"].as_f64().unwrap() - m).abs() <= 1e-15);
+    // Published (rounded, with m_B rounded to 0.788 kg): m_A = 0.875 kg,
+    // H_O ≈ −0.0665 i − 0.3034 j + 0.5502 k N·m·s, T ≈ 8.25 J.
+    let parts = v["parts"].as_array().unwrap();
+    assert_eq!(parts[0]["mass"].as_f64().unwrap(), 0.875);
+    assert!((parts[1]["mass"].as_f64().unwrap() - 0.7875).abs() < 1e-15);
+    for (g, p) in got_h.iter().zip([-0.0665, -0.3034, 0.5502]) {
+        assert!((g - p).abs() <= 2e-4, "{g} vs published {p}");
+    }
+    assert!((got_t - 8.25).abs() <= 0.005);
+}
+
+#[test]
+fn bent_plate_table_shows_the_results_with_units() {
+    let out = massprop(&["report", BENT_PLATE]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    // Six significant digits of the hand values: m = 1.6625 kg,
+    // T = 15 · 0.55015625 = 8.25234375 J, H = (−0.06644531, −0.30351563, 0.55015625).
+    for want in [
+        "mass: 1.6625 kg",
+        "kinetic energy T: 8.25234 J",
+        "-0.0664453",
+        "-0.303516",
+        "0.550156",
+        "N·m·s",
+        "tensor convention, Ixy = −∫xy dm",
+        "inertia about the reference point (0, 0, 0) mm (kg·mm²)",
+        "principal moments and axes about the reference point",
+    ] {
+        assert!(text.contains(want), "missing {want:?} in\n{text}");
+    }
+}
+
+#[test]
+fn json_carries_every_documented_key() {
+    let v = json(&["report", BENT_PLATE, "--format", "json", "--alpha", "0,0,2"]);
+    for key in ["mass", "kinetic_energy"] {
+        assert!(v[key].is_f64(), "{key}");
+    }
+    for key in [
+        "center_of_mass",
+        "reference_point",
+        "principal_moments",
+        "radii_of_gyration",
+        "principal_moments_ref",
+        "omega",
+        "angular_momentum",
+        "alpha",
+        "euler_moment",
+    ] {
+        vec3(&v[key]);
+    }
+    for key in [
+        "inertia_com",
+        "inertia_ref",
+        "principal_axes",
+        "principal_axes_ref",
+    ] {
+        let rows = v[key].as_array().unwrap_or_else(|| panic!("{key}"));
+        assert_eq!(rows.len(), 3);
+        for r in rows {
+            vec3(r); // asserts three numbers
+        }
+    }
+    for key in ["equal_moments", "equal_moments_ref", "parts"] {
+        assert!(v[key].is_array(), "{key}");
+    }
+    for p in v["parts"].as_array().unwrap() {
+        assert!(p["name"].is_string() && p["shape"].is_string() && p["mass"].is_f64());
+        vec3(&p["center_of_mass"]);
+        assert!(p["mass_fraction"].is_f64());
+    }
+    assert_eq!(v["products_convention"], "tensor");
+    assert_eq!(v["format_version"], 1);
+    assert_eq!(v["name"], "bent plate");
+    let units = &v["units"];
+    for (k, u) in [
+        ("mass", "kg"),
+        ("length", "m"),
+        ("inertia", "kg*m^2"),
+        ("angular_velocity", "rad/s"),
+        ("angular_momentum", "N*m*s"),
+        ("energy", "J"),
+        ("moment", "N*m"),
+    ] {
+        assert_eq!(units[k], u);
+    }
+}
+
+#[test]
+fn dynamics_keys_appear_only_when_asked_for() {
+    let out = massprop_stdin(
+        &["report", "-", "--format", "json"],
+        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [1, 0, 0]\n",
+    );
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in [
+        "omega",
+        "angular_momentum",
+        "kinetic_energy",
+        "alpha",
+        "euler_moment",
+    ] {
+        assert!(v.get(key).is_none(), "{key} without ω");
+    }
+    // No reference point given: it is the centre of mass.
+    assert_eq!(v["reference_point"], v["center_of_mass"]);
+    assert_eq!(v["inertia_ref"], v["inertia_com"]);
+}
+
+#[test]
+fn standard_input_gives_the_same_report_as_the_file() {
+    let text = std::fs::read_to_string(BENT_PLATE).unwrap();
+    let from_stdin = massprop_stdin(&["report", "-", "--format", "json"], &text);
+    let from_file = massprop(&["report", BENT_PLATE, "--format", "json"]);
+    assert!(from_stdin.status.success());
+    assert_eq!(from_stdin.stdout, from_file.stdout);
+}
+
+#[test]
+fn flags_override_the_file_analysis() {
+    let base = json(&["report", BENT_PLATE, "--format", "json"]);
+    // Twice the angular velocity, as a quantity string: twice H, four times T.
+    let v = json(&[
+        "report",
+        BENT_PLATE,
+        "--format",
+        "json",
+        "--omega",
+        "0,0,60 rad/s",
+    ]);
+    let (h0, h) = (
+        vec3(&base["angular_momentum"]),
+        vec3(&v["angular_momentum"]),
+    );
+    for i in 0..3 {
+        assert!((h[i] - 2.0 * h0[i]).abs() <= 1e-15);
+    }
+    let t0 = base["kinetic_energy"].as_f64().unwrap();
+    assert!((v["kinetic_energy"].as_f64().unwrap() - 4.0 * t0).abs() <= 1e-14 * t0);
+    // 60 rpm is one revolution a second, 2π rad/s.
+    let rpm = json(&[
+        "report",
+        BENT_PLATE,
+        "--format",
+        "json",
+        "--omega",
+        "0,0,60 rpm",
+    ]);
+    assert!((vec3(&rpm["omega"])[2] - 2.0 * std::f64::consts::PI).abs() < 1e-15);
+    // --about moves the reference point; in the file's units (mm).
+    let v = json(&[
+        "report", BENT_PLATE, "--format", "json", "--about", "0,125,0",
+    ]);
+    assert_eq!(vec3(&v["reference_point"]), [0.0, 0.125, 0.0]);
+}
+
+#[test]
+fn alpha_on_the_command_line_gives_the_euler_moment() {
+    // With ω along z and α = 2 k about O: M = I α + ω × (I ω), and
+    // I α = (2/30) H, ω × H = 30 (−H_y, H_x, 0).
+    let v = json(&["report", BENT_PLATE, "--format", "json", "--alpha", "0,0,2"]);
+    let (h, _, _) = bent_plate_by_hand();
+    let want = [
+        h[0] * 2.0 / 30.0 - 30.0 * h[1],
+        h[1] * 2.0 / 30.0 + 30.0 * h[0],
+        h[2] * 2.0 / 30.0,
+    ];
+    let got = vec3(&v["euler_moment"]);
+    for i in 0..3 {
+        assert!(
+            (got[i] - want[i]).abs() <= 1e-14,
+            "M[{i}] {} vs {}",
+            got[i],
+            want[i]
+        );
+    }
+}
+
+#[test]
+fn positive_products_are_stated_and_flip_the_off_diagonals() {
+    let t = json(&["report", BENT_PLATE, "--format", "json"]);
+    let p = json(&[
+        "report",
+        BENT_PLATE,
+        "--format",
+        "json",
+        "--products",
+        "positive",
+    ]);
+    assert_eq!(p["products_convention"], "positive");
+    let (ti, pi) = (&t["inertia_ref"], &p["inertia_ref"]);
+    assert_eq!(pi[0][0], ti[0][0]);
+    assert_eq!(pi[0][2].as_f64().unwrap(), -ti[0][2].as_f64().unwrap());
+    // +∫xz dm of plate B about O is positive (x, z ≥ 0).
+    assert!(pi[0][2].as_f64().unwrap() > 0.0);
+    let table =
+        String::from_utf8(massprop(&["report", BENT_PLATE, "--products", "positive"]).stdout)
+            .unwrap();
+    assert!(table.contains("positive convention (CAD, Meriam), Ixy = +∫xy dm"));
+}
+
+#[test]
+fn every_shape_file_reports_in_both_formats() {
+    for entry in std::fs::read_dir("shapes").unwrap() {
+        let path = entry.unwrap().path();
+        let path = path.to_str().unwrap();
+        for format in ["table", "json"] {
+            let out = massprop(&["report", path, "--format", format]);
+            assert!(
+                out.status.success(),
+                "{path}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            assert!(out.stderr.is_empty());
+        }
+    }
+}
+
+#[test]
+fn help_documents_exit_statuses() {
+    let out = massprop(&["--help"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("Exit status:") && text.contains("2  an error"));
+}

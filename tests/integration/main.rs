@@ -1,0 +1,6 @@
+//! massprop's integration tests, in one binary: each extra test binary is
+//! another link on a 2-core machine.
+
+mod cli;
+mod common;
+mod physics;

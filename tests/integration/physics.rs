@@ -1,0 +1,542 @@
+//! The physics, against derivations independent of the code under test:
+//! quadrature of the definitions, point-mass sums, hand-derived closed
+//! results, and invariances. Tolerances are multiples of f64::EPSILON scaled
+//! by the size of the quantity compared.
+
+use massprop::diag::Source;
+use massprop::model::{Analysis, Model};
+use massprop::report::{Products, Summary, summarize};
+use nalgebra::{Matrix3, Vector3};
+
+const EPS: f64 = f64::EPSILON;
+
+fn summary_with(text: &str, products: Products) -> Summary {
+    let source = Source::new("test.toml", text);
+    let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
+    summarize(&model, &model.analysis, products).expect("summary")
+}
+
+fn summary(text: &str) -> Summary {
+    summary_with(text, Products::Tensor)
+}
+
+fn m3(rows: &[[f64; 3]; 3]) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| rows[i][j])
+}
+
+fn v3(a: &[f64; 3]) -> Vector3<f64> {
+    Vector3::new(a[0], a[1], a[2])
+}
+
+/// Relative Frobenius distance.
+fn rel(a: &Matrix3<f64>, b: &Matrix3<f64>) -> f64 {
+    (a - b).norm() / b.norm()
+}
+
+/// Full-precision TOML array of a vector.
+fn arr(v: &Vector3<f64>) -> String {
+    format!("[{:?}, {:?}, {:?}]", v.x, v.y, v.z)
+}
+
+/// Gauss–Legendre nodes and weights on [0, 1], 3 points: exact for
+/// polynomials of degree ≤ 5, so for the quadratic integrands of inertia.
+fn gauss3() -> [(f64, f64); 3] {
+    let a = (0.6f64).sqrt() / 2.0;
+    [
+        (0.5 - a, 5.0 / 18.0),
+        (0.5, 8.0 / 18.0),
+        (0.5 + a, 5.0 / 18.0),
+    ]
+}
+
+/// Weighted sample points (x, dm) of a uniform parallelepiped of `mass`
+/// spanned by `edges` from `corner`: a quadrature rule for ∫ f dm.
+fn samples(mass: f64, corner: Vector3<f64>, edges: &[Vector3<f64>]) -> Vec<(Vector3<f64>, f64)> {
+    let g = gauss3();
+    let mut out = vec![(corner, mass)];
+    for e in edges {
+        out = out
+            .into_iter()
+            .flat_map(|(x, w)| g.iter().map(move |&(t, wt)| (x + e * t, w * wt)))
+            .collect();
+    }
+    out
+}
+
+/// The inertia tensor about `p` straight from its definition,
+/// I = ∫(|r|² E − r rᵀ) dm with r = x − p.
+fn inertia_by_definition(points: &[(Vector3<f64>, f64)], p: Vector3<f64>) -> Matrix3<f64> {
+    points.iter().fold(Matrix3::zeros(), |acc, (x, w)| {
+        let r = x - p;
+        acc + (Matrix3::identity() * r.norm_squared() - r * r.transpose()) * *w
+    })
+}
+
+/// Mutually perpendicular integer edges, all of length 3 and oblique to the
+/// file axes: (2,1,2), (1,2,−2), (2,−2,−1).
+fn oblique() -> [Vector3<f64>; 3] {
+    [
+        Vector3::new(2.0, 1.0, 2.0),
+        Vector3::new(1.0, 2.0, -2.0),
+        Vector3::new(2.0, -2.0, -1.0),
+    ]
+}
+
+#[test]
+fn two_cubes_touching_at_a_corner_have_dominant_products() {
+    // Hand derivation: each cube contributes m/12 = 0.5 to each diagonal of
+    // C about its centre, and m d dᵀ = 6 · 0.25 = 1.5 to every entry, so
+    // C = [[4,3,3],[3,4,3],[3,3,4]], I = tr(C) E − C = diag 8, products −3;
+    // eigenvalues 8 − 6 = 2 along (1,1,1) and 8 + 3 = 11 twice.
+    let s = summary(
+        r#"
+        [[part]]
+        shape = "box"
+        mass = 6
+        size = [1, 1, 1]
+        center = [0.5, 0.5, 0.5]
+        [[part]]
+        shape = "box"
+        mass = 6
+        size = [1, 1, 1]
+        center = [-0.5, -0.5, -0.5]
+        "#,
+    );
+    let expect = Matrix3::new(8.0, -3.0, -3.0, -3.0, 8.0, -3.0, -3.0, -3.0, 8.0);
+    assert!(rel(&m3(&s.inertia_com), &expect) <= 4.0 * EPS);
+    for (m, e) in s.principal_moments.iter().zip([2.0, 11.0, 11.0]) {
+        assert!((m - e).abs() <= 16.0 * EPS * 11.0, "{m} vs {e}");
+    }
+    assert_eq!(s.equal_moments, vec![1, 2]);
+    let a0 = v3(&s.principal_axes[0]);
+    assert!((a0 - Vector3::new(1.0, 1.0, 1.0).normalize()).amax() <= 8.0 * EPS);
+}
+
+#[test]
+fn box_plate_and_rod_match_quadrature_of_the_definition() {
+    let [e1, e2, e3] = oblique();
+    let (e1, e2, e3) = (e1 * 0.1, e2 * 0.5, e3 * 2.0); // a 0.3 × 1.5 × 6 box
+    let corner = Vector3::new(1.25, -2.5, 0.75);
+    let about = Vector3::new(-0.5, 3.0, 2.0);
+    let cases: Vec<(&str, Vec<Vector3<f64>>, String)> = vec![
+        (
+            "box",
+            vec![e1, e2, e3],
+            format!(
+                "shape = \"box\"\nmass = 2.5\ncorner = {}\nedges = [{}, {}, {}]",
+                arr(&corner),
+                arr(&e1),
+                arr(&e2),
+                arr(&e3)
+            ),
+        ),
+        (
+            "plate",
+            vec![e1, e3],
+            format!(
+                "shape = \"plate\"\nmass = 2.5\ncorner = {}\nedges = [{}, {}]",
+                arr(&corner),
+                arr(&e1),
+                arr(&e3)
+            ),
+        ),
+        (
+            "rod",
+            vec![e3],
+            format!(
+                "shape = \"rod\"\nmass = 2.5\nfrom = {}\nto = {}",
+                arr(&corner),
+                arr(&(corner + e3))
+            ),
+        ),
+    ];
+    for (name, edges, part) in cases {
+        let s = summary(&format!(
+            "[[part]]\n{part}\n[analysis]\nabout = {}\n",
+            arr(&about)
+        ));
+        let pts = samples(2.5, corner, &edges);
+        let want_ref = inertia_by_definition(&pts, about);
+        let com: Vector3<f64> = pts.iter().map(|(x, w)| x * *w).sum::<Vector3<f64>>() / 2.5;
+        let want_com = inertia_by_definition(&pts, com);
+        assert!(
+            rel(&m3(&s.inertia_ref), &want_ref) <= 64.0 * EPS,
+            "{name} about the reference point"
+        );
+        assert!(
+            rel(&m3(&s.inertia_com), &want_com) <= 64.0 * EPS,
+            "{name} about its centre"
+        );
+        assert!(
+            (v3(&s.center_of_mass) - com).amax() <= 8.0 * EPS * com.amax(),
+            "{name} centre"
+        );
+    }
+}
+
+#[test]
+fn densities_give_mass_from_volume_area_and_length() {
+    let s = summary(
+        r#"
+        [[part]]
+        shape = "box"
+        density = "7.85 g/cm^3"
+        size = ["20 mm", "30 mm", "40 mm"]
+        center = [0, 0, 0]
+        [[part]]
+        shape = "plate"
+        areal_density = "70 kg/m^2"
+        size = [0.2, 0.5]
+        center = [0, 0, 0]
+        [[part]]
+        shape = "rod"
+        linear_density = "0.5 kg/m"
+        length = "2 ft"
+        center = [0, 0, 0]
+        "#,
+    );
+    // 7850 kg/m³ · 24e-6 m³, 70 kg/m² · 0.1 m², 0.5 kg/m · 0.6096 m.
+    let masses = [7850.0 * 24e-6, 70.0 * 0.1, 0.5 * 0.6096];
+    for (p, m) in s.parts.iter().zip(masses) {
+        assert!(
+            (p.mass - m).abs() <= 4.0 * EPS * m,
+            "{} {} vs {m}",
+            p.name,
+            p.mass
+        );
+    }
+}
+
+#[test]
+fn every_rotation_form_gives_the_same_box() {
+    // A general rotation: 40° about (1, 2, 3)/√14.
+    let k = Vector3::new(1.0, 2.0, 3.0).normalize();
+    let (s, c) = 20f64.to_radians().sin_cos();
+    let (w, v) = (c, k * s);
+    // R from the quaternion by the vector form (w² − |v|²) E + 2 v vᵀ + 2 w [v]×,
+    // a different formula from the one the code uses.
+    let r = Matrix3::identity() * (w * w - v.norm_squared())
+        + v * v.transpose() * 2.0
+        + v.cross_matrix() * (2.0 * w);
+    // Intrinsic z-y-x angles of R = Rz(ψ) Ry(θ) Rx(φ).
+    let yaw = r[(1, 0)].atan2(r[(0, 0)]).to_degrees();
+    let pitch = (-r[(2, 0)]).asin().to_degrees();
+    let roll = r[(2, 1)].atan2(r[(2, 2)]).to_degrees();
+    let size = [0.5, 1.25, 3.0];
+    let center = Vector3::new(0.1, -0.2, 0.3);
+    let rows = |i: usize| arr(&Vector3::new(r[(i, 0)], r[(i, 1)], r[(i, 2)]));
+    let forms = [
+        format!(
+            "{{ quaternion = [{w:?}, {:?}, {:?}, {:?}] }}",
+            v.x, v.y, v.z
+        ),
+        "{ axis = [1, 2, 3], degrees = 40 }".to_string(),
+        format!("{{ matrix = [{}, {}, {}] }}", rows(0), rows(1), rows(2)),
+        format!("{{ intrinsic = \"zyx\", degrees = [{yaw:?}, {pitch:?}, {roll:?}] }}"),
+        format!("{{ extrinsic = \"xyz\", degrees = [{roll:?}, {pitch:?}, {yaw:?}] }}"),
+    ];
+    // Reference: the same box by corner and edges, edges = R's columns × size.
+    let edges: Vec<Vector3<f64>> = (0..3).map(|j| r.column(j) * size[j]).collect();
+    let corner = center - (edges[0] + edges[1] + edges[2]) * 0.5;
+    let want = inertia_by_definition(&samples(3.0, corner, &edges), center);
+    for form in forms {
+        let s = summary(&format!(
+            "[[part]]\nshape = \"box\"\nmass = 3\nsize = [0.5, 1.25, 3]\ncenter = {}\nrotation = {form}\n",
+            arr(&center)
+        ));
+        assert!(
+            rel(&m3(&s.inertia_com), &want) <= 64.0 * EPS,
+            "{form}: {}",
+            rel(&m3(&s.inertia_com), &want)
+        );
+    }
+}
+
+#[test]
+fn a_quarter_turn_about_z_swaps_ixx_and_iyy() {
+    let part = |rot: &str| {
+        summary(&format!(
+            "[[part]]\nshape = \"box\"\nmass = 2\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n{rot}\n"
+        ))
+    };
+    let a = part("");
+    let b = part("rotation = { axis = [0, 0, 1], degrees = 90 }");
+    assert_eq!(b.inertia_com[0][0], a.inertia_com[1][1]);
+    assert_eq!(b.inertia_com[1][1], a.inertia_com[0][0]);
+    assert_eq!(b.inertia_com[2][2], a.inertia_com[2][2]);
+}
+
+#[test]
+fn three_stacked_unit_cubes_equal_one_long_box() {
+    let cubes = summary(
+        r#"
+        [[part]]
+        shape = "box"
+        mass = 1
+        size = [1, 1, 1]
+        center = [0, -1, 0]
+        [[part]]
+        shape = "box"
+        mass = 1
+        size = [1, 1, 1]
+        center = [0, 0, 0]
+        [[part]]
+        shape = "box"
+        mass = 1
+        size = [1, 1, 1]
+        center = [0, 1, 0]
+        "#,
+    );
+    let long =
+        summary("[[part]]\nshape = \"box\"\nmass = 3\nsize = [1, 3, 1]\ncenter = [0, 0, 0]\n");
+    assert!(rel(&m3(&cubes.inertia_com), &m3(&long.inertia_com)) <= 4.0 * EPS);
+    assert_eq!(cubes.mass, long.mass);
+}
+
+/// A mixed assembly of every shape, in oblique orientations, shifted by `t`.
+/// All coordinates are dyadic, so shifting by an integer is exact in f64.
+fn assembly(t: Vector3<f64>, reverse: bool) -> String {
+    let [e1, e2, e3] = oblique();
+    let mut parts = [
+        format!(
+            "shape = \"box\"\nmass = 4\ncorner = {}\nedges = [{}, {}, {}]",
+            arr(&(Vector3::new(0.25, -0.5, 1.0) + t)),
+            arr(&(e1 * 0.5)),
+            arr(&(e2 * 0.25)),
+            arr(&e3)
+        ),
+        format!(
+            "shape = \"plate\"\nmass = 1.5\ncorner = {}\nedges = [{}, {}]",
+            arr(&(Vector3::new(-1.0, 0.5, 0.0) + t)),
+            arr(&e2),
+            arr(&(e3 * 0.5))
+        ),
+        format!(
+            "shape = \"rod\"\nmass = 0.75\nfrom = {}\nto = {}",
+            arr(&(Vector3::new(0.0, 0.0, -2.0) + t)),
+            arr(&(Vector3::new(3.0, 1.0, -1.0) + t))
+        ),
+        format!(
+            "shape = \"point\"\nmass = 0.5\ncenter = {}",
+            arr(&(Vector3::new(-2.0, 1.5, 0.5) + t))
+        ),
+    ];
+    if reverse {
+        parts.reverse();
+    }
+    parts.iter().map(|p| format!("[[part]]\n{p}\n")).collect()
+}
+
+#[test]
+fn translating_the_assembly_leaves_the_inertia_about_its_centre_unchanged() {
+    let base = summary(&assembly(Vector3::zeros(), false));
+    let i0 = m3(&base.inertia_com);
+    for k in 0..=9 {
+        let t = Vector3::new(1.0, -2.0, 3.0) * 10f64.powi(k);
+        let s = summary(&assembly(t, false));
+        let err = rel(&m3(&s.inertia_com), &i0);
+        // The shift is exact in f64 here, so only the composer's own
+        // rounding counts: a few roundings per entry. Without the correction
+        // for the rounded centre of mass this is ~30 eps at 10⁹.
+        assert!(err <= 8.0 * EPS, "offset 1e{k}: relative error {err:e}");
+        for (a, b) in s.principal_moments.iter().zip(base.principal_moments) {
+            assert!((a - b).abs() <= 16.0 * EPS * base.principal_moments[2]);
+        }
+    }
+}
+
+#[test]
+fn the_far_offset_scene_defeats_summing_about_the_origin() {
+    // The scene above is hard: summing about the origin and shifting back
+    // (I_origin − m |c|² E + m c cᵀ) loses every digit at 10⁹. This checks
+    // the test scene is sensitive enough for the previous test to mean
+    // something.
+    let t = Vector3::new(1.0, -2.0, 3.0) * 1e9;
+    let model = Model::parse(&Source::new("t.toml", assembly(t, false))).unwrap();
+    let body = massprop::compose::compose(&model.parts);
+    let naive: Matrix3<f64> =
+        model.parts.iter().fold(Matrix3::zeros(), |acc, p| {
+            acc + p.second_moment() + p.center * p.center.transpose() * p.mass
+        }) - body.center_of_mass * body.center_of_mass.transpose() * body.mass;
+    let exact = summary(&assembly(Vector3::zeros(), false));
+    let naive_i = massprop::mass::inertia_of(&naive);
+    assert!(rel(&naive_i, &m3(&exact.inertia_com)) > 1e-3);
+}
+
+#[test]
+fn the_order_of_parts_does_not_matter() {
+    let a = summary(&assembly(Vector3::new(10.0, 20.0, 30.0), false));
+    let b = summary(&assembly(Vector3::new(10.0, 20.0, 30.0), true));
+    assert!(rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= 16.0 * EPS);
+    assert!((v3(&a.center_of_mass) - v3(&b.center_of_mass)).amax() <= 16.0 * EPS * 30.0);
+}
+
+#[test]
+fn rotating_the_assembly_rotates_the_tensor_and_keeps_the_moments() {
+    // A rational rotation: rows (2,1,2)/3, (1,2,−2)/3, (−2,2,1)/3, det +1.
+    let q: Matrix3<f64> = Matrix3::new(2.0, 1.0, 2.0, 1.0, 2.0, -2.0, -2.0, 2.0, 1.0) / 3.0;
+    assert!((q.determinant() - 1.0).abs() < 1e-15);
+    let base = summary(&assembly(Vector3::zeros(), false));
+    // Rotate every part's placement about the origin by Q.
+    let [e1, e2, e3] = oblique().map(|e| q * e);
+    let pt = |x: f64, y: f64, z: f64| arr(&(q * Vector3::new(x, y, z)));
+    let rotated = format!(
+        "[[part]]\nshape = \"box\"\nmass = 4\ncorner = {}\nedges = [{}, {}, {}]\n\
+         [[part]]\nshape = \"plate\"\nmass = 1.5\ncorner = {}\nedges = [{}, {}]\n\
+         [[part]]\nshape = \"rod\"\nmass = 0.75\nfrom = {}\nto = {}\n\
+         [[part]]\nshape = \"point\"\nmass = 0.5\ncenter = {}\n",
+        pt(0.25, -0.5, 1.0),
+        arr(&(e1 * 0.5)),
+        arr(&(e2 * 0.25)),
+        arr(&e3),
+        pt(-1.0, 0.5, 0.0),
+        arr(&e2),
+        arr(&(e3 * 0.5)),
+        pt(0.0, 0.0, -2.0),
+        pt(3.0, 1.0, -1.0),
+        pt(-2.0, 1.5, 0.5),
+    );
+    let s = summary(&rotated);
+    let want = q * m3(&base.inertia_com) * q.transpose();
+    assert!(rel(&m3(&s.inertia_com), &want) <= 64.0 * EPS);
+    for (a, b) in s.principal_moments.iter().zip(base.principal_moments) {
+        assert!((a - b).abs() <= 64.0 * EPS * base.principal_moments[2]);
+    }
+    // Principal axes rotate with the body (up to the sign rule).
+    for k in 0..3 {
+        let a = v3(&s.principal_axes[k]);
+        let b = q * v3(&base.principal_axes[k]);
+        assert!((a.dot(&b).abs() - 1.0).abs() <= 1e-12, "axis {k}");
+    }
+}
+
+#[test]
+fn file_units_and_unit_strings_agree_with_si() {
+    let si = summary(
+        "[[part]]\nshape = \"box\"\nmass = 0.25\nsize = [0.02, 0.03, 0.05]\ncenter = [0.1, 0, 0]\n",
+    );
+    let mm_g = summary(
+        "units = { length = \"mm\", mass = \"g\" }\n[[part]]\nshape = \"box\"\nmass = 250\nsize = [20, 30, 50]\ncenter = [100, 0, 0]\n",
+    );
+    let strings = summary(
+        "[[part]]\nshape = \"box\"\nmass = \"250 g\"\nsize = [\"2 cm\", \"30 mm\", 0.05]\ncenter = [\"100 mm\", 0, 0]\n",
+    );
+    for s in [&mm_g, &strings] {
+        assert!(rel(&m3(&s.inertia_com), &m3(&si.inertia_com)) <= 8.0 * EPS);
+        assert!((s.mass - si.mass).abs() <= 2.0 * EPS * si.mass);
+        assert!((v3(&s.center_of_mass) - v3(&si.center_of_mass)).amax() <= 2.0 * EPS * 0.1);
+    }
+    // Inches and pounds, exactly defined: a 1 lb, 1 in cube.
+    let imperial = summary(
+        "units = { length = \"in\", mass = \"lb\" }\n[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n",
+    );
+    let want = 0.45359237 * 0.0254 * 0.0254 / 6.0;
+    assert!((imperial.inertia_com[0][0] - want).abs() <= 8.0 * EPS * want);
+}
+
+#[test]
+fn dynamics_match_sums_over_the_mass_distribution() {
+    // H, T and M from their definitions over quadrature points of an oblique
+    // box and a point mass, about a fixed point O:
+    // H = Σ r × (ω × r) dm, T = ½ Σ |ω × r|² dm,
+    // M = Σ r × (α × r + ω × (ω × r)) dm.
+    let [e1, e2, e3] = oblique();
+    let (e1, e2, e3) = (e1 * 0.5, e2 * 0.25, e3);
+    let corner = Vector3::new(0.25, -0.5, 1.0);
+    let point = Vector3::new(-2.0, 1.5, 0.5);
+    let o = Vector3::new(0.5, 0.25, -0.75);
+    let omega = Vector3::new(1.5, -2.0, 30.0);
+    let alpha = Vector3::new(-3.0, 0.5, 2.0);
+    let s = summary(&format!(
+        "[[part]]\nshape = \"box\"\nmass = 4\ncorner = {}\nedges = [{}, {}, {}]\n\
+         [[part]]\nshape = \"point\"\nmass = 0.5\ncenter = {}\n\
+         [analysis]\nabout = {}\nomega = {}\nalpha = {}\n",
+        arr(&corner),
+        arr(&e1),
+        arr(&e2),
+        arr(&e3),
+        arr(&point),
+        arr(&o),
+        arr(&omega),
+        arr(&alpha)
+    ));
+    let mut pts = samples(4.0, corner, &[e1, e2, e3]);
+    pts.push((point, 0.5));
+    let (mut h, mut t, mut m) = (Vector3::zeros(), 0.0, Vector3::zeros());
+    for (x, dm) in &pts {
+        let r = x - o;
+        let v = omega.cross(&r);
+        h += r.cross(&v) * *dm;
+        t += 0.5 * v.norm_squared() * dm;
+        m += r.cross(&(alpha.cross(&r) + omega.cross(&v))) * *dm;
+    }
+    let got_h = v3(&s.angular_momentum.expect("H with ω"));
+    let got_m = v3(&s.euler_moment.expect("M with α"));
+    assert!((got_h - h).norm() <= 256.0 * EPS * h.norm());
+    assert!((s.kinetic_energy.expect("T with ω") - t).abs() <= 256.0 * EPS * t);
+    assert!((got_m - m).norm() <= 256.0 * EPS * m.norm());
+}
+
+#[test]
+fn positive_products_flip_only_the_off_diagonals() {
+    let text = assembly(Vector3::new(0.5, 0.25, 0.0), false);
+    let t = summary_with(&text, Products::Tensor);
+    let p = summary_with(&text, Products::Positive);
+    for i in 0..3 {
+        for j in 0..3 {
+            let sign = if i == j { 1.0 } else { -1.0 };
+            assert_eq!(p.inertia_com[i][j], sign * t.inertia_com[i][j]);
+            assert_eq!(p.inertia_ref[i][j], sign * t.inertia_ref[i][j]);
+        }
+    }
+    assert_eq!(p.principal_moments, t.principal_moments);
+    assert_eq!(p.principal_axes, t.principal_axes);
+    assert!(
+        t.inertia_com[0][1] != 0.0,
+        "the scene must have products to flip"
+    );
+}
+
+#[test]
+fn principal_axes_are_unit_right_handed_and_diagonalise_the_tensor() {
+    let s = summary(&assembly(Vector3::new(0.5, 0.25, 0.0), false));
+    let i = m3(&s.inertia_com);
+    let a: Vec<Vector3<f64>> = s.principal_axes.iter().map(v3).collect();
+    assert!((a[0].cross(&a[1]) - a[2]).amax() <= 8.0 * EPS);
+    for (a, m) in a.iter().zip(s.principal_moments) {
+        assert!((a.norm() - 1.0).abs() <= 4.0 * EPS);
+        assert!((i * a - a * m).norm() <= 64.0 * EPS * i.norm());
+    }
+    assert!(
+        s.principal_moments[0] <= s.principal_moments[1]
+            && s.principal_moments[1] <= s.principal_moments[2]
+    );
+    // Radii of gyration: k = √(I/m).
+    for k in 0..3 {
+        let r = s.radii_of_gyration[k];
+        assert!(
+            (r * r * s.mass - s.principal_moments[k]).abs() <= 8.0 * EPS * s.principal_moments[k]
+        );
+    }
+}
+
+#[test]
+fn overrides_replace_the_file_analysis() {
+    let source = Source::new("t.toml", assembly(Vector3::zeros(), false));
+    let model = Model::parse(&source).unwrap();
+    let w = Vector3::new(0.0, 0.0, 2.0);
+    let a = summarize(
+        &model,
+        &Analysis {
+            about: Some(Vector3::new(1.0, 0.0, 0.0)),
+            omega: Some(w),
+            alpha: None,
+        },
+        Products::Tensor,
+    )
+    .unwrap();
+    assert_eq!(a.reference_point, [1.0, 0.0, 0.0]);
+    let h = m3(&a.inertia_ref) * w;
+    assert_eq!(a.angular_momentum, Some([h.x, h.y, h.z]));
+    assert!(a.euler_moment.is_none() && a.alpha.is_none());
+}
