@@ -278,6 +278,42 @@ fn every_shape_file_reports_in_both_formats() {
 }
 
 #[test]
+fn the_documented_full_example_is_the_bent_plate() {
+    // docs/part-file.md places plate B by size, center and a quarter turn
+    // about x instead of by corner and edges: the same body.
+    let doc = std::fs::read_to_string("docs/part-file.md").unwrap();
+    let example = doc
+        .split("```toml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("docs/part-file.md opens with a toml example");
+    let out = massprop_stdin(
+        &["report", "-", "--format", "json", "--alpha", "0,0,2"],
+        example,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let doc_json: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let file_json = json(&["report", BENT_PLATE, "--format", "json", "--alpha", "0,0,2"]);
+    for key in ["inertia_ref", "inertia_com"] {
+        for i in 0..3 {
+            let (a, b) = (vec3(&doc_json[key][i]), vec3(&file_json[key][i]));
+            for j in 0..3 {
+                assert!(
+                    (a[j] - b[j]).abs() <= 1e-17,
+                    "{key}[{i}][{j}] {} vs {}",
+                    a[j],
+                    b[j]
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn help_documents_exit_statuses() {
     let out = massprop(&["--help"]);
     let text = String::from_utf8(out.stdout).unwrap();
