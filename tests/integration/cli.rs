@@ -319,3 +319,41 @@ fn help_documents_exit_statuses() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("Exit status:") && text.contains("2  an error"));
 }
+
+#[test]
+fn equal_principal_moments_are_flagged_in_both_formats() {
+    // A cube: all three moments m a²/6. A square plate: I1 = I2 = m a²/12,
+    // I3 = m a²/6 about its normal.
+    let cube = "[[part]]\nshape = \"box\"\nmass = 6\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\nrotation = { axis = [1, 2, 3], degrees = 17 }\n";
+    let plate = "[[part]]\nshape = \"plate\"\nmass = 12\nsize = [1, 1]\ncenter = [0, 0, 0]\n";
+    for (text, equal, moments, note) in [
+        (
+            cube,
+            vec![0, 1, 2],
+            [1.0, 1.0, 1.0],
+            "note: I1 = I2 = I3 are equal",
+        ),
+        (
+            plate,
+            vec![0, 1],
+            [1.0, 1.0, 2.0],
+            "note: I1 = I2 are equal",
+        ),
+    ] {
+        let out = massprop_stdin(&["report", "-", "--format", "json"], text);
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let got: Vec<u64> = v["equal_moments"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap())
+            .collect();
+        assert_eq!(got, equal.iter().map(|&i| i as u64).collect::<Vec<_>>());
+        let m = vec3(&v["principal_moments"]);
+        for i in 0..3 {
+            assert!((m[i] - moments[i]).abs() <= 8.0 * f64::EPSILON, "{m:?}");
+        }
+        let table = String::from_utf8(massprop_stdin(&["report", "-"], text).stdout).unwrap();
+        assert!(table.contains(note), "{table}");
+    }
+}
