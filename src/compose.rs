@@ -30,13 +30,15 @@ pub fn compose(parts: &[Part]) -> MassProps {
     let mut s = Vector3::zeros();
     for p in parts {
         let d = p.center - com;
-        c += p.second_moment() + d * d.transpose() * p.mass;
+        // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
+        c += p.second_moment() + (d * p.mass) * d.transpose();
         s += d * p.mass;
     }
     MassProps {
         mass,
         center_of_mass: com + s / mass,
-        second_moment: c - s * s.transpose() / mass,
+        // s (s/m)ᵀ, not s sᵀ/m: the square of s may overflow when m is huge.
+        second_moment: c - s * (s / mass).transpose(),
     }
 }
 
@@ -60,14 +62,15 @@ pub struct Principal {
 /// I₁ = λ₂ + λ₃ and so on, so moments are never negative and always satisfy
 /// the triangle inequality, with no cancellation in forming them.
 ///
-/// Sign rule, deterministic: for the first two axes, the component of largest
-/// magnitude is positive (among components tied to within 1e-9, the first);
-/// the third axis is the cross product of the first two. Where moments are
-/// equal, the axes are not unique and are chosen from the file's axes: when
-/// all three are equal, x, y, z; when two are, the axis of the distinct
-/// moment follows the sign rule, one axis of the equal pair is the file axis
-/// most nearly perpendicular to it projected into their plane, and the last
-/// completes a right-handed set.
+/// Sign rule, deterministic. When all three moments differ: for the first
+/// two axes, the component of largest magnitude is positive (among
+/// components tied to within 1e-9, the first); the third axis is the cross
+/// product of the first two. Where moments are equal, the axes are not
+/// unique and are chosen from the file's axes instead: when all three are
+/// equal, x, y, z; when two are, the axis of the distinct moment follows the
+/// sign rule, the first axis of the equal pair is the file axis most nearly
+/// perpendicular to it projected into their plane, and the other completes
+/// a right-handed set (whatever the sign of its largest component).
 ///
 /// Returns `None` only if the eigen solver fails to converge, which finite
 /// input does not cause.

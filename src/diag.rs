@@ -5,6 +5,7 @@
 
 use std::fmt;
 use std::ops::Range;
+use unicode_width::{UnicodeWidthChar, UnicodeWidthStr};
 
 /// A part file's text and the name it is reported under (`<stdin>` for `-`).
 #[derive(Debug, Clone)]
@@ -43,7 +44,8 @@ impl Source {
         // Underline the span's part on its first line, at least one caret.
         let end = span.end.clamp(start, line_end.max(start));
         let end = floor_char_boundary(&self.text, end);
-        let width = self.text[start..end].chars().count().max(1);
+        // Carets count display columns, so wide characters line up.
+        let width = UnicodeWidthStr::width(&self.text[start..end]).max(1);
         Diagnostic(Box::new(Inner {
             location: Some(format!("{}:{line}:{col}", self.name)),
             message: message.into(),
@@ -154,11 +156,16 @@ impl fmt::Display for Diagnostic {
             writeln!(f, "{pad} |")?;
             writeln!(f, "{num} | {}", s.text)?;
             // Tabs before the caret keep their width so the caret lines up.
+            // Pad to the caret in display columns; tabs stay tabs so the
+            // caret lines up whatever the terminal's tab width.
             let lead: String = s
                 .text
                 .chars()
                 .take(s.col - 1)
-                .map(|c| if c == '\t' { '\t' } else { ' ' })
+                .map(|c| match c {
+                    '\t' => "\t".to_string(),
+                    c => " ".repeat(c.width().unwrap_or(0)),
+                })
                 .collect();
             let carets = "^".repeat(s.width);
             match &s.label {
@@ -199,6 +206,18 @@ mod tests {
             d.to_string(),
             "f.toml:2:1: error: unknown key `sizee`\n  |\n2 | sizee = [1]\n  | ^^^^^ here\n  = help: did you mean `size`?\n"
         );
+    }
+
+    #[test]
+    fn carets_line_up_under_wide_characters() {
+        // 部 and 品 are two columns wide each: `;` is the 12th character but
+        // stands in display column 14, after 13 columns of text.
+        let text = "name = \"部品\"; x\n";
+        let s = Source::new("f.toml", text);
+        let semicolon = text.find(';').unwrap();
+        let d = s.error(semicolon..semicolon + 1, "bad").to_string();
+        assert!(d.starts_with("f.toml:1:12:"), "{d}");
+        assert!(d.contains(&format!("  | {}^\n", " ".repeat(13))), "{d}");
     }
 
     #[test]

@@ -68,13 +68,24 @@ fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
     if let Some(v) = flag(&args.alpha, "alpha", Dim::ANGULAR_ACCELERATION)? {
         analysis.alpha = Some(v);
     }
+    // α without ω: point at the file's `alpha` unless it came from the flag.
     if analysis.alpha.is_some() && analysis.omega.is_none() {
-        return Err(Diagnostic::plain(
-            "`--alpha` needs ω: give `--omega` or `[analysis].omega`",
-        ));
+        return Err(match (&model.analysis.alpha_span, &args.alpha) {
+            (Some(span), None) => source
+                .error(span.clone(), "`alpha` needs `omega`: the Euler moment depends on both")
+                .help("give `omega` here or `--omega`; for a body starting from rest, `omega = [0, 0, 0]`"),
+            _ => Diagnostic::plain("`--alpha` needs ω: give `--omega` or `[analysis].omega`"),
+        });
     }
-    let summary = report::summarize(&model, &analysis, args.products)
-        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+    let flags_given = args.about.is_some() || args.omega.is_some() || args.alpha.is_some();
+    let summary = report::summarize(&model, &analysis, args.products).map_err(|e| {
+        let with = if flags_given {
+            " (with the values given on the command line)"
+        } else {
+            ""
+        };
+        Diagnostic::file(&source.name, format!("{e}{with}"))
+    })?;
     let stdout = match args.format {
         Format::Table => report::table::render(&summary, &source.name),
         Format::Json => report::json::render(&summary),

@@ -22,7 +22,8 @@ impl MassProps {
     /// ∫ρρᵀ dm about `point`: the parallel-axis shift C + m d dᵀ, d = c − point.
     pub fn second_moment_about(&self, point: &Vector3<f64>) -> Matrix3<f64> {
         let d = self.center_of_mass - point;
-        self.second_moment + d * d.transpose() * self.mass
+        // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
+        self.second_moment + (d * self.mass) * d.transpose()
     }
 }
 

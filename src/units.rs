@@ -119,10 +119,16 @@ impl Factor {
     /// `x` in SI. One multiplication and one correctly rounded division for
     /// the common units (`x / 1000` for millimetres, not `x * 0.001`).
     pub fn apply(self, x: f64) -> f64 {
+        let (num, den) = (self.num as f64, self.den as f64);
         let mut v = if self.num == 1 {
-            x / self.den as f64
+            x / den
         } else {
-            x * self.num as f64 / self.den as f64
+            // Multiply first (exact for small numerators), unless that
+            // overflows where the result itself would not.
+            match x * num {
+                p if p.is_finite() => p / den,
+                _ => x / den * num,
+            }
         };
         if self.pi != 0 {
             v *= std::f64::consts::PI.powi(self.pi);
@@ -307,7 +313,7 @@ fn split_exponent(term: &str) -> Result<(&str, i32), UnitError> {
 }
 
 /// Split `"7.85 g/cm^3"` into the number and the unit text.
-fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
+pub fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
     let t = text.trim_start();
     let b = t.as_bytes();
     let mut i = 0;

@@ -59,6 +59,8 @@ pub struct Analysis {
     pub about: Option<Vector3<f64>>,
     pub omega: Option<Vector3<f64>>,
     pub alpha: Option<Vector3<f64>>,
+    /// Where the file gave `alpha`, to point at it if ω is missing.
+    pub alpha_span: Option<Range<usize>>,
 }
 
 impl Model {
@@ -106,15 +108,18 @@ impl Model {
     }
 }
 
-/// Turn a toml error into a diagnostic; unknown keys get a "did you mean"
-/// drawn from the key list in serde's own message.
+/// Turn a toml error into a diagnostic that names the key: unknown keys get
+/// a "did you mean" drawn from the key list in serde's own message, and
+/// type errors name the key that holds the offending value.
 fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     let span = e.span().unwrap_or(0..0);
+    // serde's words for TOML's: a "map" is a table, a "sequence" an array.
     let msg = e
         .message()
         .trim_end()
-        .replace("expected f64", "expected a number");
-    let msg = msg.as_str();
+        .replace("expected f64", "expected a number")
+        .replace("invalid type: map", "invalid type: table")
+        .replace("a sequence", "an array");
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
         let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
@@ -146,24 +151,69 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
             d
         };
     }
-    if let Some(rest) = msg.strip_prefix("invalid type: ")
-        && let Some(key) = key_before(&source.text, span.start)
-    {
-        return source.error(span, format!("`{key}` has the wrong type: {rest}"));
+    if msg.starts_with("duplicate key") {
+        let key = source.text.get(span.clone()).unwrap_or("").trim();
+        return source.error(span, format!("duplicate key `{key}`"));
     }
-    source.error(span, msg.to_string())
+    let key = key_at(&source.text, span.start).or_else(|| key_before(&source.text, span.start));
+    let d = match (key.as_deref(), msg.strip_prefix("invalid type: ")) {
+        (Some(k), Some(rest)) => source.error(span, format!("`{k}` has the wrong type: {rest}")),
+        (Some(k), None) => source.error(span, format!("`{k}`: {msg}")),
+        (None, _) => source.error(span, msg),
+    };
+    if key.as_deref() == Some("part") {
+        d.help("write each part as a `[[part]]` table (two brackets)")
+    } else {
+        d
+    }
 }
 
-/// The key whose value starts at `offset`: the name before the last `=` on
-/// that line (`mass = true`, `{ matrix = [..] }`), if there is one.
-fn key_before(text: &str, offset: usize) -> Option<&str> {
+/// The innermost key whose value contains byte `offset`, from a spanned
+/// parse of the whole file. Only used on the error path.
+fn key_at(text: &str, offset: usize) -> Option<String> {
+    use toml::de::{DeTable, DeValue};
+    type Best = Option<(String, usize)>;
+    fn consider(best: &mut Best, k: &str, span: Range<usize>, offset: usize) {
+        if span.contains(&offset) && best.as_ref().is_none_or(|(_, len)| span.len() <= *len) {
+            *best = Some((k.to_string(), span.len()));
+        }
+    }
+    fn visit(v: &DeValue<'_>, key: Option<&str>, offset: usize, best: &mut Best) {
+        match v {
+            DeValue::Table(t) => {
+                for (k, v) in t.iter() {
+                    consider(best, k.get_ref(), k.span(), offset);
+                    consider(best, k.get_ref(), v.span(), offset);
+                    visit(v.get_ref(), Some(k.get_ref()), offset, best);
+                }
+            }
+            DeValue::Array(a) => {
+                for v in a.iter() {
+                    if let Some(k) = key {
+                        consider(best, k, v.span(), offset);
+                    }
+                    visit(v.get_ref(), key, offset, best);
+                }
+            }
+            _ => {}
+        }
+    }
+    let root = DeTable::parse(text).ok()?;
+    let mut best = None;
+    visit(&DeValue::Table(root.into_inner()), None, offset, &mut best);
+    best.map(|(k, _)| k)
+}
+
+/// The key on the line of `offset`: the name before the last `=` (`mass =
+/// 1e400`), for syntax errors where no spanned parse is possible.
+fn key_before(text: &str, offset: usize) -> Option<String> {
     let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
     let before = text[line_start..offset].rsplit_once('=')?.0.trim_end();
     let start = before
         .rfind(|c: char| !(c.is_alphanumeric() || c == '_' || c == '-'))
         .map_or(0, |i| i + 1);
     let key = &before[start..];
-    (!key.is_empty()).then_some(key)
+    (!key.is_empty()).then(|| key.to_string())
 }
 
 /// What the conversion step needs to read values: the source (for spans)
@@ -244,10 +294,20 @@ impl Ctx<'_> {
         Ok(value)
     }
 
+    /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
+    /// refused too: they carry too few digits to compute with.
     fn positive(&self, q: &Spanned<Quantity>, key: &str, dim: Dim) -> Result<f64, Diagnostic> {
         let v = self.quantity(q, key, dim)?;
-        if v > 0.0 {
+        if v >= f64::MIN_POSITIVE {
             Ok(v)
+        } else if v > 0.0 {
+            Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too small: below {:e} in SI units, f64 loses precision",
+                    f64::MIN_POSITIVE
+                ),
+            ))
         } else {
             Err(self.err(q.span(), format!("`{key}` must be positive")))
         }
@@ -392,7 +452,19 @@ impl Ctx<'_> {
                     _ => Dim::LINEAR_DENSITY,
                 };
                 let rho = self.positive(d, dk, dim)?;
-                rho * shape.measure(&dims)
+                let m = rho * shape.measure(&dims);
+                if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
+                    let what = if m.is_finite() {
+                        "too small"
+                    } else {
+                        "too large"
+                    };
+                    return Err(self.err(
+                        d.span(),
+                        format!("`{dk}` times the size gives a mass {what} for f64"),
+                    ));
+                }
+                m
             }
             (None, _, Some(dk)) => {
                 return Err(self.err(raw.span(), format!("this {s} needs `mass` or `{dk}`")));
@@ -404,10 +476,22 @@ impl Ctx<'_> {
             None => format!("part {}", index + 1),
         };
         let local_second_moment = shape.local_second_moment(mass, &dims);
-        if !(mass.is_finite() && local_second_moment.iter().all(|x| x.is_finite())) {
+        // Each edge contributes m a²/12: it must neither overflow nor vanish.
+        let expected_nonzero = shape.edge_count();
+        let nonzero = local_second_moment
+            .iter()
+            .filter(|x| **x >= f64::MIN_POSITIVE)
+            .count();
+        if !local_second_moment.iter().all(|x| x.is_finite()) {
             return Err(self.err(
                 raw.span(),
-                format!("the mass properties of `{name}` overflow the range of f64"),
+                format!("the second moments of `{name}` overflow the range of f64"),
+            ));
+        }
+        if nonzero < expected_nonzero {
+            return Err(self.err(
+                raw.span(),
+                format!("the second moments of `{name}` underflow the range of f64"),
             ));
         }
         Ok(Part {
@@ -435,8 +519,8 @@ impl Ctx<'_> {
             Shape::Box | Shape::Plate => {
                 let size = p.size.as_ref().ok_or_else(|| missing("size"))?;
                 let dims = self.vector(size, "size", Dim::LENGTH, shape.edge_count())?;
-                if let Some(i) = dims.iter().position(|d| !(*d > 0.0)) {
-                    return Err(self.err(size.get_ref()[i].span(), "`size` must be positive"));
+                for q in size.get_ref() {
+                    self.positive(q, "size", Dim::LENGTH)?;
                 }
                 dims
             }
@@ -475,10 +559,16 @@ impl Ctx<'_> {
             let to_raw = p.to.as_ref().ok_or_else(|| missing("to"))?;
             let to = self.vec3(to_raw, "to", Dim::LENGTH)?;
             let e = to - from;
-            if !(e.norm() > 0.0) {
+            if e.amax() == 0.0 {
                 return Err(self.err(
                     to_raw.span(),
                     "`to` must differ from `from`: the rod has no length",
+                ));
+            }
+            if !e.amax().is_finite() {
+                return Err(self.err(
+                    to_raw.span(),
+                    "the rod from `from` to `to` is too long for f64",
                 ));
             }
             (from, vec![(e, to_raw.span())])
@@ -496,15 +586,14 @@ impl Ctx<'_> {
             let mut edges = Vec::with_capacity(n);
             for e in edges_raw.get_ref() {
                 let v = self.vec3(e, "edges", Dim::LENGTH)?;
-                if !(v.norm() > 0.0) {
+                if v.amax() == 0.0 {
                     return Err(self.err(e.span(), "an edge must not be zero"));
                 }
                 edges.push((v, e.span()));
             }
             for i in 0..n {
                 for j in i + 1..n {
-                    let (a, b) = (edges[i].0, edges[j].0);
-                    let cos = a.dot(&b) / (a.norm() * b.norm());
+                    let cos = unit(&edges[i].0).dot(&unit(&edges[j].0));
                     if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
                         return Err(self
                             .err(
@@ -524,8 +613,8 @@ impl Ctx<'_> {
         };
         let half_sum = edges.iter().fold(Vector3::zeros(), |acc, (e, _)| acc + e) * 0.5;
         let center = origin + half_sum;
-        let dims: Vec<f64> = edges.iter().map(|(e, _)| e.norm()).collect();
-        let units: Vec<Vector3<f64>> = edges.iter().map(|(e, _)| e.normalize()).collect();
+        let dims: Vec<f64> = edges.iter().map(|(e, _)| norm(e)).collect();
+        let units: Vec<Vector3<f64>> = edges.iter().map(|(e, _)| unit(e)).collect();
         let axes = match units[..] {
             // The rod's axis is local z; x and y complete a right-handed set
             // (their second moments are zero, so which pair does not matter).
@@ -568,20 +657,28 @@ impl Ctx<'_> {
             .as_ref()
             .map(|v| self.vec3(v, "alpha", Dim::ANGULAR_ACCELERATION))
             .transpose()?;
-        if let (Some(al), None) = (&r.alpha, &omega) {
-            return Err(self
-                .err(
-                    al.span(),
-                    "`alpha` needs `omega`: the Euler moment depends on both",
-                )
-                .help("for a body starting from rest, write `omega = [0, 0, 0]`"));
-        }
         Ok(Analysis {
             about,
             omega,
             alpha,
+            alpha_span: r.alpha.as_ref().map(Spanned::span),
         })
     }
+}
+
+/// |v| without overflow or underflow in the squares: scaled by max |vᵢ|.
+pub(crate) fn norm(v: &Vector3<f64>) -> f64 {
+    let s = v.amax();
+    if s == 0.0 || !s.is_finite() {
+        s
+    } else {
+        s * (v / s).norm()
+    }
+}
+
+/// v / |v| for a non-zero finite v, robust to extreme magnitudes.
+pub(crate) fn unit(v: &Vector3<f64>) -> Vector3<f64> {
+    (v / v.amax()).normalize()
 }
 
 /// The earliest present key of a set, with its span.
@@ -606,9 +703,10 @@ fn shape_help(shape: Shape) -> &'static str {
     }
 }
 
-/// Parse a command-line vector such as `0,0,30` or `0,0,3000 rpm`: three
-/// comma-separated components, each a number in the file's units (rad/s for
-/// ω, rad/s² for α) or a quantity with its own unit.
+/// Parse a command-line vector: three comma-separated components. Plain
+/// numbers are in the file's units (rad/s for ω, rad/s² for α). A unit on
+/// the last component only applies to all three (`0,0,10 mm`); otherwise
+/// each component carries its own unit (`1 mm,2 in,0 m`) or none does.
 pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vector3<f64>, String> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     if parts.len() != 3 {
@@ -617,12 +715,32 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
             parts.len()
         ));
     }
+    let plain: Vec<Option<f64>> = parts.iter().map(|p| p.parse::<f64>().ok()).collect();
+    let shared_unit = match (plain[0], plain[1], plain[2]) {
+        (Some(_), Some(_), None) => {
+            let (_, unit) =
+                units::split_number(parts[2]).map_err(|e| format!("component 3: {e}"))?;
+            Some(unit)
+        }
+        (Some(_), Some(_), Some(_)) => None,
+        _ if plain.iter().all(Option::is_none) => None,
+        _ => {
+            return Err(
+                "give a unit on every component, on none, or on the last one only (for all three)"
+                    .to_string(),
+            );
+        }
+    };
     let mut out = Vector3::zeros();
     for (i, p) in parts.iter().enumerate() {
-        let v = match p.parse::<f64>() {
-            Ok(x) if x.is_finite() => units.factor(dim).apply(x),
-            Ok(_) => return Err(format!("component {} must be finite", i + 1)),
-            Err(_) => {
+        let v = match (plain[i], shared_unit) {
+            (Some(x), _) if !x.is_finite() => {
+                return Err(format!("component {} must be finite", i + 1));
+            }
+            (Some(x), None) => units.factor(dim).apply(x),
+            (Some(x), Some(u)) => units::parse_quantity(&format!("{x:?} {u}"), dim)
+                .map_err(|e| format!("component {}: {e}", i + 1))?,
+            (None, _) => {
                 units::parse_quantity(p, dim).map_err(|e| format!("component {}: {e}", i + 1))?
             }
         };

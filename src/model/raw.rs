@@ -17,7 +17,7 @@ pub type Vector = Spanned<Vec<Spanned<Quantity>>>;
 pub type Floats = Spanned<Vec<Spanned<f64>>>;
 
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, expecting = "a part file")]
 pub struct RawFile {
     pub name: Option<Spanned<String>>,
     pub units: Option<Spanned<RawUnits>>,
@@ -26,14 +26,17 @@ pub struct RawFile {
 }
 
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table such as { length = \"mm\", mass = \"kg\" }"
+)]
 pub struct RawUnits {
     pub length: Option<Spanned<String>>,
     pub mass: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
+#[serde(deny_unknown_fields, expecting = "a part table with `shape`")]
 pub struct RawPart {
     pub name: Option<Spanned<String>>,
     pub shape: Spanned<String>,
@@ -52,7 +55,10 @@ pub struct RawPart {
 }
 
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
+)]
 pub struct RawRotation {
     pub quaternion: Option<Floats>,
     pub axis: Option<Floats>,
@@ -63,7 +69,10 @@ pub struct RawRotation {
 }
 
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table with `about`, `omega` or `alpha`"
+)]
 pub struct RawAnalysis {
     pub about: Option<Vector>,
     pub omega: Option<Vector>,

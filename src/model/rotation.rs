@@ -143,13 +143,12 @@ impl Ctx<'_> {
                 let a = r.axis.as_ref().expect("form is axis");
                 let v = self.floats(a, "axis", 3)?;
                 let k = Vector3::new(v[0], v[1], v[2]);
-                let n = k.norm();
-                if !(n > 0.0 && n.is_finite()) {
+                if k.amax() == 0.0 {
                     return Err(self.err(a.span(), "`axis` must be a non-zero vector"));
                 }
                 let d = degrees()?;
                 match d.get_ref() {
-                    Angles::One(deg) if deg.is_finite() => Ok(axis_angle(k / n, *deg)),
+                    Angles::One(deg) if deg.is_finite() => Ok(axis_angle(super::unit(&k), *deg)),
                     Angles::One(_) => Err(self.err(d.span(), "`degrees` must be finite")),
                     Angles::Three(_) => Err(self.err(
                         d.span(),

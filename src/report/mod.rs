@@ -117,7 +117,7 @@ impl std::fmt::Display for SummaryError {
             SummaryError::NotFinite(what) => {
                 write!(
                     f,
-                    "the {what} overflows the range of f64; are the sizes or offsets in the wrong units?"
+                    "the {what} overflows the range of f64; are sizes, masses or offsets in the wrong units?"
                 )
             }
             SummaryError::NoConvergence => write!(f, "the principal-axis solver did not converge"),
@@ -158,17 +158,21 @@ pub fn summarize(
     let body = compose::compose(&model.parts);
     finite(&[body.mass], "total mass")?;
     finite(body.center_of_mass.as_slice(), "centre of mass")?;
-    finite(
-        body.second_moment.as_slice(),
-        "inertia about the centre of mass",
-    )?;
     let reference = analysis.about.unwrap_or(body.center_of_mass);
     let c_ref = body.second_moment_about(&reference);
-    finite(c_ref.as_slice(), "inertia about the reference point")?;
     let i_com = inertia_of(&body.second_moment);
     let i_ref = inertia_of(&c_ref);
+    finite(i_com.as_slice(), "inertia about the centre of mass")?;
+    finite(i_ref.as_slice(), "inertia about the reference point")?;
     let p_com = compose::principal(&body.second_moment).ok_or(SummaryError::NoConvergence)?;
     let p_ref = compose::principal(&c_ref).ok_or(SummaryError::NoConvergence)?;
+    finite(&p_com.moments, "principal moments about the centre of mass")?;
+    finite(
+        &p_ref.moments,
+        "principal moments about the reference point",
+    )?;
+    let radii = p_com.moments.map(|i| (i / body.mass).sqrt());
+    finite(&radii, "radii of gyration")?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
 
     let h = analysis.omega.map(|w| i_ref * w);
@@ -177,10 +181,13 @@ pub fn summarize(
         .alpha
         .zip(analysis.omega.zip(h))
         .map(|(a, (w, h))| i_ref * a + w.cross(&h));
-    for v in [h, m].iter().flatten() {
-        finite(v.as_slice(), "angular momentum or Euler moment")?;
+    if let Some(h) = &h {
+        finite(h.as_slice(), "angular momentum")?;
     }
     finite(&[t.unwrap_or(0.0)], "kinetic energy")?;
+    if let Some(m) = &m {
+        finite(m.as_slice(), "Euler moment")?;
+    }
 
     Ok(Summary {
         format_version: FORMAT_VERSION,
@@ -198,7 +205,7 @@ pub fn summarize(
         principal_moments_ref: p_ref.moments,
         principal_axes_ref: axes(&p_ref),
         equal_moments_ref: p_ref.equal.clone(),
-        radii_of_gyration: p_com.moments.map(|i| (i / body.mass).sqrt()),
+        radii_of_gyration: radii,
         parts: model
             .parts
             .iter()

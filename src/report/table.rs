@@ -13,6 +13,11 @@ pub fn fmt_num(x: f64) -> String {
     if x == 0.0 {
         return "0".to_string();
     }
+    if !x.is_finite() {
+        // Unreachable through `summarize`, which refuses non-finite
+        // results; printed honestly rather than panicking if it ever is.
+        return x.to_string();
+    }
     let sci = format!("{x:.5e}");
     let (mantissa, exp) = sci.split_once('e').expect("{:e} always has an exponent");
     let exp: i32 = exp.parse().expect("{:e} exponent is an integer");

@@ -357,3 +357,39 @@ fn equal_principal_moments_are_flagged_in_both_formats() {
         assert!(table.contains(note), "{table}");
     }
 }
+
+#[test]
+fn flag_omega_completes_a_file_alpha() {
+    let file = "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [1, 0, 0]\n[analysis]\nalpha = [0, 0, 3]\n";
+    let out = massprop_stdin(
+        &["report", "-", "--format", "json", "--omega", "0,0,0"],
+        file,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    // About the centre of mass (the point itself) the inertia is zero.
+    assert_eq!(vec3(&v["euler_moment"]), [0.0, 0.0, 0.0]);
+    assert_eq!(vec3(&v["alpha"]), [0.0, 0.0, 3.0]);
+}
+
+#[test]
+fn a_unit_on_the_last_flag_component_applies_to_all_three() {
+    let file = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+    let run = |about: &str| {
+        let out = massprop_stdin(&["report", "-", "--format", "json", "--about", about], file);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+        vec3(&v["reference_point"])
+    };
+    assert_eq!(run("5,0,10 mm"), [0.005, 0.0, 0.01]);
+    assert_eq!(run("5 mm,0 mm,1 in"), [0.005, 0.0, 0.0254]);
+    assert_eq!(run("5,0,10"), [5.0, 0.0, 10.0]);
+}

@@ -531,6 +531,7 @@ fn overrides_replace_the_file_analysis() {
             about: Some(Vector3::new(1.0, 0.0, 0.0)),
             omega: Some(w),
             alpha: None,
+            alpha_span: None,
         },
         Products::Tensor,
     )
@@ -539,4 +540,70 @@ fn overrides_replace_the_file_analysis() {
     let h = m3(&a.inertia_ref) * w;
     assert_eq!(a.angular_momentum, Some([h.x, h.y, h.z]));
     assert!(a.euler_moment.is_none() && a.alpha.is_none());
+}
+
+#[test]
+fn extreme_masses_and_lengths_scale_exactly() {
+    // Scaling every mass by M and every length by L, both powers of two, is
+    // exact in f64, so inertia must scale by exactly M L² and the centre by
+    // L, right up to the edges of the f64 range. Squares of huge or tiny
+    // intermediate values (|v|², s sᵀ) must not overflow or underflow.
+    let base = summary(&assembly(Vector3::new(0.5, 0.25, 0.0), false));
+    let p = |e: i32| 2f64.powi(e);
+    for (me, le) in [
+        (560, 0),
+        (-500, 0),
+        (660, -560),
+        (0, 330),
+        (-1000, 500),
+        (900, -150),
+    ] {
+        let (m, l) = (p(me), p(le));
+        let text = assembly(Vector3::new(0.5, 0.25, 0.0), false);
+        let mut scaled = String::new();
+        for line in text.lines() {
+            let out = match line.split_once(" = ") {
+                Some(("mass", v)) => format!("mass = {:?}", v.parse::<f64>().unwrap() * m),
+                Some((k @ ("corner" | "from" | "to" | "center" | "edges"), v)) => {
+                    let v: toml::Value = toml::from_str(&format!("x = {v}")).unwrap();
+                    let scale = |x: &toml::Value| {
+                        toml::Value::Float(
+                            x.as_float().or(x.as_integer().map(|i| i as f64)).unwrap() * l,
+                        )
+                    };
+                    let v = match &v["x"] {
+                        toml::Value::Array(a) if a[0].is_array() => toml::Value::Array(
+                            a.iter()
+                                .map(|r| {
+                                    toml::Value::Array(
+                                        r.as_array().unwrap().iter().map(scale).collect(),
+                                    )
+                                })
+                                .collect(),
+                        ),
+                        toml::Value::Array(a) => toml::Value::Array(a.iter().map(scale).collect()),
+                        _ => unreachable!(),
+                    };
+                    format!("{k} = {v}")
+                }
+                _ => line.to_string(),
+            };
+            scaled.push_str(&out);
+            scaled.push('\n');
+        }
+        let s = summary(&scaled);
+        let want = m3(&base.inertia_com) * (m * l * l);
+        assert!(
+            rel(&m3(&s.inertia_com), &want) <= EPS,
+            "2^{me} kg, 2^{le} m"
+        );
+        assert!((s.mass - base.mass * m).abs() <= EPS * s.mass);
+        assert!((v3(&s.center_of_mass) - v3(&base.center_of_mass) * l).amax() <= EPS * l);
+        for (a, b) in s.principal_moments.iter().zip(base.principal_moments) {
+            assert!(
+                (a - b * m * l * l).abs() <= 2.0 * EPS * a,
+                "2^{me} kg, 2^{le} m"
+            );
+        }
+    }
 }
