@@ -21,6 +21,28 @@ pub struct Cli {
 pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
     Report(ReportArgs),
+    /// Compare the mass properties of two part files (or two versions of one).
+    Diff(DiffArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct DiffArgs {
+    /// The old part file (`-` reads standard input).
+    #[arg(value_name = "OLD")]
+    pub old: String,
+
+    /// The new part file (`-` reads standard input; not both).
+    #[arg(value_name = "NEW")]
+    pub new: String,
+
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
+
+    /// Relative tolerance: a value counts as changed when it moves by more
+    /// than this fraction of its scale.
+    #[arg(long, value_name = "REL", default_value_t = 1e-9)]
+    pub tol: f64,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -7,6 +7,7 @@
 pub mod cli;
 pub mod compose;
 pub mod diag;
+pub mod diff;
 pub mod mass;
 pub mod model;
 pub mod report;
@@ -43,6 +44,7 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
 pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
     match &cli.command {
         Command::Report(args) => report(args),
+        Command::Diff(args) => diff::run(args),
     }
 }
 
