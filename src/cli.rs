@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 const EXIT_STATUS: &str = "\
 Exit status:
   0  success
-  1  a check failed (reserved for `check` and `diff`)
+  1  `check`: an expectation or validity check failed; `diff`: something changed
   2  an error: bad input, unreadable file, bad flag (nothing is printed on stdout)";
 
 /// Mass properties of composite rigid bodies described by TOML part files.
@@ -21,8 +21,21 @@ pub struct Cli {
 pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
     Report(ReportArgs),
+    /// Check part files' `[expect]` blocks and physical validity (for CI).
+    Check(CheckArgs),
     /// Compare the mass properties of two part files (or two versions of one).
     Diff(DiffArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// Part files, and directories searched recursively for `*.toml`.
+    #[arg(value_name = "PATH", required = true)]
+    pub paths: Vec<String>,
+
+    /// Output format: one line per file or failure, or one JSON document.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
 }
 
 #[derive(Args, Debug)]

@@ -4,6 +4,7 @@
 //! forms (`shapes`) → composed body (`compose`, `mass`) → summary and
 //! renderers (`report`). Only `main.rs` knows about processes and exit codes.
 
+pub mod check;
 pub mod cli;
 pub mod compose;
 pub mod diag;
@@ -20,9 +21,11 @@ use model::Model;
 use std::io::Read;
 use units::Dim;
 
-/// What a successful run prints and the exit status it ends with.
+/// What a run that completed prints and the exit status it ends with
+/// (`check` reports invalid files on stderr and still checks the rest).
 pub struct Output {
     pub stdout: String,
+    pub stderr: String,
     pub status: u8,
 }
 
@@ -44,6 +47,7 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
 pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
     match &cli.command {
         Command::Report(args) => report(args),
+        Command::Check(args) => check::run(args),
         Command::Diff(args) => diff::run(args),
     }
 }
@@ -92,5 +96,9 @@ fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
         Format::Table => report::table::render(&summary, &source.name),
         Format::Json => report::json::render(&summary),
     };
-    Ok(Output { stdout, status: 0 })
+    Ok(Output {
+        stdout,
+        stderr: String::new(),
+        status: 0,
+    })
 }

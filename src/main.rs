@@ -9,6 +9,7 @@ fn main() -> ExitCode {
     let cli = massprop::cli::Cli::parse();
     match massprop::run(&cli) {
         Ok(out) => {
+            eprint!("{}", out.stderr);
             let mut stdout = std::io::stdout().lock();
             match stdout
                 .write_all(out.stdout.as_bytes())

@@ -28,6 +28,9 @@ impl Dim {
     pub const LINEAR_DENSITY: Dim = Dim::new(1, -1, 0);
     pub const ANGULAR_VELOCITY: Dim = Dim::new(0, 0, -1);
     pub const ANGULAR_ACCELERATION: Dim = Dim::new(0, 0, -2);
+    pub const INERTIA: Dim = Dim::new(1, 2, 0);
+    pub const ANGULAR_MOMENTUM: Dim = Dim::new(1, 2, -1);
+    pub const ENERGY: Dim = Dim::new(1, 2, -2);
 
     fn add(self, o: Dim, sign: i32) -> Dim {
         Dim::new(
@@ -47,6 +50,9 @@ impl Dim {
             Dim::LINEAR_DENSITY => "a linear density (mass per length)",
             Dim::ANGULAR_VELOCITY => "an angular velocity",
             Dim::ANGULAR_ACCELERATION => "an angular acceleration",
+            Dim::INERTIA => "a moment of inertia",
+            Dim::ANGULAR_MOMENTUM => "an angular momentum",
+            Dim::ENERGY => "an energy",
             _ => "a quantity of another kind",
         }
     }
@@ -61,6 +67,9 @@ impl Dim {
             Dim::LINEAR_DENSITY => "\"0.4 kg/m\"",
             Dim::ANGULAR_VELOCITY => "\"3000 rpm\"",
             Dim::ANGULAR_ACCELERATION => "\"2 rad/s^2\"",
+            Dim::INERTIA => "\"1.2 kg*m^2\"",
+            Dim::ANGULAR_MOMENTUM => "\"0.5 N*m*s\"",
+            Dim::ENERGY => "\"8.25 J\"",
             _ => "\"1 m\"",
         }
     }
@@ -177,6 +186,8 @@ const SYMBOLS: &[Symbol] = &[
     sym("kg", Dim::MASS, 1, 1, 0),
     sym("g", Dim::MASS, 1, 1000, 0),
     sym("lb", Dim::MASS, 45_359_237, 100_000_000, 0),
+    sym("N", Dim::new(1, 1, -2), 1, 1, 0),
+    sym("J", Dim::ENERGY, 1, 1, 0),
     sym("s", TIME, 1, 1, 0),
     sym("min", TIME, 60, 1, 0),
     sym("rad", NONE, 1, 1, 0),
@@ -403,8 +414,12 @@ impl FileUnits {
     }
 
     /// Factor from a plain number in file units of dimension `dim` to SI.
-    /// Angular quantities are always rad/s and rad/s².
+    /// Quantities involving time (ω in rad/s, α in rad/s², H in N·m·s, T in
+    /// J) are always SI: the file's units name no unit of time.
     pub fn factor(&self, dim: Dim) -> Factor {
+        if dim.time != 0 {
+            return Factor::ONE;
+        }
         let l = Self::symbol(self.length);
         let m = Self::symbol(self.mass);
         m.pow(dim.mass)
@@ -501,5 +516,7 @@ mod tests {
         assert_eq!(u.factor(Dim::DENSITY).value(), 1e6);
         assert_eq!(u.factor(Dim::LENGTH).apply(5.0), 0.005);
         assert_eq!(u.factor(Dim::ANGULAR_VELOCITY), Factor::ONE);
+        assert_eq!(u.factor(Dim::ENERGY), Factor::ONE);
+        assert_eq!(u.factor(Dim::INERTIA).value(), 1e-9);
     }
 }

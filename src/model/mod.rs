@@ -2,6 +2,7 @@
 //! and local second moments, all in SI. This module owns every check on the
 //! input; a `Model` that exists is valid.
 
+pub mod expect;
 pub mod raw;
 pub mod rotation;
 
@@ -24,6 +25,8 @@ pub struct Model {
     pub units: FileUnits,
     pub parts: Vec<Part>,
     pub analysis: Analysis,
+    /// `[expect]`, one scalar check per component.
+    pub expect: Vec<expect::Check>,
 }
 
 /// One primitive, reduced to what composition needs. SI throughout.
@@ -99,11 +102,16 @@ impl Model {
             Some(a) => ctx.analysis(a)?,
             None => Analysis::default(),
         };
+        let expect = match &raw.expect {
+            Some(e) => ctx.expectations(e, analysis.omega.is_some())?,
+            None => Vec::new(),
+        };
         Ok(Model {
             name: raw.name.map(|n| n.into_inner()),
             units,
             parts,
             analysis,
+            expect,
         })
     }
 }

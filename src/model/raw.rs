@@ -23,6 +23,7 @@ pub struct RawFile {
     pub units: Option<Spanned<RawUnits>>,
     pub part: Option<Spanned<Vec<Spanned<RawPart>>>>,
     pub analysis: Option<Spanned<RawAnalysis>>,
+    pub expect: Option<Spanned<RawExpect>>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -141,6 +142,101 @@ impl<'de> Deserialize<'de> for Angles {
                     out.push(x);
                 }
                 Ok(Angles::Three(out))
+            }
+        }
+        d.deserialize_any(V)
+    }
+}
+
+/// `[expect]`: the quantities a check compares, each optional.
+#[derive(Deserialize, Debug)]
+#[serde(deny_unknown_fields, expecting = "a table of expected quantities")]
+pub struct RawExpect {
+    pub mass: Option<Spanned<RawExpectation>>,
+    pub center_of_mass: Option<Spanned<RawExpectation>>,
+    pub principal_moments: Option<Spanned<RawExpectation>>,
+    pub inertia_com: Option<Spanned<RawExpectation>>,
+    pub inertia_ref: Option<Spanned<RawExpectation>>,
+    pub radii_of_gyration: Option<Spanned<RawExpectation>>,
+    pub angular_momentum: Option<Spanned<RawExpectation>>,
+    pub kinetic_energy: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Ixx")]
+    pub ixx: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Iyy")]
+    pub iyy: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Izz")]
+    pub izz: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Ixy")]
+    pub ixy: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Ixz")]
+    pub ixz: Option<Spanned<RawExpectation>>,
+    #[serde(rename = "Iyz")]
+    pub iyz: Option<Spanned<RawExpectation>>,
+}
+
+/// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
+/// vector or matrix, expectations on its components (`center_of_mass.z`,
+/// `inertia_com.xy`, `principal_moments.1`).
+#[derive(Deserialize, Debug, Default)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
+)]
+pub struct RawExpectation {
+    pub value: Option<Spanned<ExpectValue>>,
+    pub tol: Option<Spanned<Quantity>>,
+    pub min: Option<Spanned<ExpectValue>>,
+    pub max: Option<Spanned<ExpectValue>>,
+    pub x: Option<Box<Spanned<RawExpectation>>>,
+    pub y: Option<Box<Spanned<RawExpectation>>>,
+    pub z: Option<Box<Spanned<RawExpectation>>>,
+    pub xx: Option<Box<Spanned<RawExpectation>>>,
+    pub yy: Option<Box<Spanned<RawExpectation>>>,
+    pub zz: Option<Box<Spanned<RawExpectation>>>,
+    pub xy: Option<Box<Spanned<RawExpectation>>>,
+    pub xz: Option<Box<Spanned<RawExpectation>>>,
+    pub yz: Option<Box<Spanned<RawExpectation>>>,
+    #[serde(rename = "1")]
+    pub c1: Option<Box<Spanned<RawExpectation>>>,
+    #[serde(rename = "2")]
+    pub c2: Option<Box<Spanned<RawExpectation>>>,
+    #[serde(rename = "3")]
+    pub c3: Option<Box<Spanned<RawExpectation>>>,
+}
+
+/// An expected value: a quantity, or an array (of arrays) of quantities.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExpectValue {
+    One(Quantity),
+    Many(Vec<ExpectValue>),
+}
+
+impl<'de> Deserialize<'de> for ExpectValue {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = ExpectValue;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number, a string with a unit, or an array of them")
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<ExpectValue, E> {
+                Ok(ExpectValue::One(Quantity::Number(v)))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<ExpectValue, E> {
+                Ok(ExpectValue::One(Quantity::Number(v as f64)))
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<ExpectValue, E> {
+                Ok(ExpectValue::One(Quantity::Number(v as f64)))
+            }
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<ExpectValue, E> {
+                Ok(ExpectValue::One(Quantity::Text(v.to_string())))
+            }
+            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<ExpectValue, A::Error> {
+                let mut out = Vec::new();
+                while let Some(x) = seq.next_element::<ExpectValue>()? {
+                    out.push(x);
+                }
+                Ok(ExpectValue::Many(out))
             }
         }
         d.deserialize_any(V)

@@ -1,0 +1,246 @@
+//! `massprop check`: expectations, validity, exit statuses, locations.
+//!
+//! The body: one 12 kg box, 1 × 2 × 3 m, centred at (1, 2, 3) m, turning
+//! at ω = 2 rad/s about z. By hand: I = m/12 (b² + c², a² + c², a² + b²) =
+//! (13, 10, 5) kg·m², no products; principal moments (5, 10, 13); radii
+//! √(I/m); about the origin I_ref,xy = −m x y = −24; H = (0, 0, 10) N·m·s
+//! about the centre of mass and T = ½ ω·H = 10 J.
+
+use crate::common::massprop;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+
+const BODY: &str = "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncenter = [1, 2, 3]\n\n[analysis]\nomega = [0, 0, 2]\n\n[expect]\n";
+
+/// A scratch directory for one test, emptied first.
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("check")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write(dir: &Path, file: &str, expect: &str) -> String {
+    let path = dir.join(file);
+    std::fs::write(&path, format!("{BODY}{expect}\n")).unwrap();
+    path.display().to_string()
+}
+
+fn check(paths: &[&str]) -> (i32, String, String) {
+    let mut args = vec!["check"];
+    args.extend_from_slice(paths);
+    let out = massprop(&args);
+    (
+        out.status.code().expect("exit status"),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// Each expectation true by the hand derivation, and a wrong twin.
+const CASES: &[(&str, &str)] = &[
+    // 12.01 ± 0.1 % holds only if the tolerance is 0.1 % of 12.01 (0.012).
+    (
+        "mass = { value = 12.01, tol = \"0.1%\" }",
+        "mass = { value = 12.5, tol = \"0.1%\" }",
+    ),
+    (
+        "mass = { value = 12.001, tol = 0.01 }",
+        "mass = { value = 12.1, tol = 0.01 }",
+    ),
+    (
+        "mass = { value = \"12.005 kg\", tol = \"10 g\" }",
+        "mass = { value = \"12.02 kg\", tol = \"10 g\" }",
+    ),
+    (
+        "mass = { min = 11, max = 13 }",
+        "mass = { max = \"11.9 kg\" }",
+    ),
+    ("mass = { min = \"26 lb\" }", "mass = { min = \"27 lb\" }"),
+    (
+        "center_of_mass = { value = [1, 2, 3], tol = 1e-9 }",
+        "center_of_mass = { value = [1, 2, 3.1], tol = 1e-9 }",
+    ),
+    (
+        "center_of_mass = { min = [0, 0, 0], max = [2, 3, 4] }",
+        "center_of_mass = { min = [0, 0, 0], max = [2, 3, 2.9] }",
+    ),
+    (
+        "center_of_mass.z = { value = \"3000 mm\", tol = \"1 mm\" }",
+        "center_of_mass.z = { value = \"3002 mm\", tol = \"1 mm\" }",
+    ),
+    (
+        "principal_moments = { value = [5, 10, 13], tol = \"1e-9%\" }",
+        "principal_moments = { value = [5, 13, 10], tol = \"1e-9%\" }",
+    ),
+    (
+        "principal_moments.1 = { max = 5.0000001 }",
+        "principal_moments.1 = { max = 4.9999 }",
+    ),
+    (
+        "inertia_com = { value = [[13, 0, 0], [0, 10, 0], [0, 0, 5]], tol = 1e-12 }",
+        "inertia_com = { value = [[13, 0, 0], [0, 10, 0], [0, 0, 6]], tol = 1e-12 }",
+    ),
+    (
+        "Ixx = { value = 13, tol = \"0.001%\" }",
+        "Ixx = { value = 12.9, tol = \"0.001%\" }",
+    ),
+    (
+        "Ixy = { min = -1e-12, max = 1e-12 }",
+        "Ixy = { min = 1e-6 }",
+    ),
+    (
+        "inertia_com.yy = { value = 10, tol = 1e-12 }",
+        "inertia_com.yy = { value = 10.1, tol = 1e-12 }",
+    ),
+    (
+        "radii_of_gyration.3 = { value = 1.0408329997330663, tol = 1e-12 }",
+        "radii_of_gyration.3 = { value = 1.05, tol = 1e-12 }",
+    ),
+    (
+        "angular_momentum = { value = [0, 0, 10], tol = 1e-12 }",
+        "angular_momentum = { value = [0, 0, 10.5], tol = 1e-12 }",
+    ),
+    (
+        "kinetic_energy = { value = \"10 J\", tol = \"0.1%\" }",
+        "kinetic_energy = { value = 9, tol = \"0.1%\" }",
+    ),
+];
+
+#[test]
+fn each_kind_of_expectation_passes_when_true_and_fails_when_not() {
+    let dir = scratch("kinds");
+    for (i, (good, bad)) in CASES.iter().enumerate() {
+        let ok = write(&dir, &format!("good{i}.toml"), good);
+        let (code, stdout, stderr) = check(&[&ok]);
+        assert_eq!(code, 0, "{good}: {stdout}{stderr}");
+        assert_eq!(
+            stdout,
+            format!("{ok}: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid\n")
+        );
+
+        let fail = write(&dir, &format!("bad{i}.toml"), bad);
+        let (code, stdout, stderr) = check(&[&fail]);
+        assert_eq!(code, 1, "{bad}: {stdout}{stderr}");
+        // The failure points at the expectation's line: the last of the file.
+        let line = BODY.lines().count() + 1;
+        assert!(
+            stdout.starts_with(&format!("{fail}:{line}:")),
+            "{bad}: {stdout}"
+        );
+        assert!(stdout.contains(": error: "), "{stdout}");
+        assert!(stderr.is_empty());
+    }
+}
+
+#[test]
+fn inertia_about_the_reference_point_uses_the_parallel_axis_shift() {
+    // About the origin: I_xy = −m x y = −12 · 1 · 2 = −24.
+    let dir = scratch("ref");
+    let text = "[analysis]\nabout = [0, 0, 0]\n";
+    let body = BODY.replace("[analysis]\nomega = [0, 0, 2]\n", text);
+    let path = dir.join("ref.toml");
+    std::fs::write(
+        &path,
+        format!("{body}inertia_ref.xy = {{ value = -24, tol = 1e-12 }}\n"),
+    )
+    .unwrap();
+    let (code, stdout, _) = check(&[path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}");
+}
+
+#[test]
+fn failure_messages_give_measured_expected_and_offset() {
+    let dir = scratch("message");
+    let f = write(&dir, "m.toml", "mass = { value = 12.5, tol = \"0.5%\" }");
+    let (_, stdout, _) = check(&[&f]);
+    // 12 against 12.5: off by −4 %.
+    assert!(
+        stdout.contains("error: mass 12 kg is outside 12.5 kg ± 0.5 % (off by -4.000 %)"),
+        "{stdout}"
+    );
+    let f = write(&dir, "b.toml", "center_of_mass.z = { max = 2.5 }");
+    let (_, stdout, _) = check(&[&f]);
+    assert!(
+        stdout.contains("error: center_of_mass.z 3 m is above the maximum 2.5 m (by 0.5 m)"),
+        "{stdout}"
+    );
+}
+
+#[test]
+fn mixed_inputs_exit_two_and_every_file_is_still_checked() {
+    let dir = scratch("mixed");
+    let sub = dir.join("sub");
+    std::fs::create_dir_all(&sub).unwrap();
+    write(&dir, "a-ok.toml", CASES[0].0);
+    write(&sub, "b-fails.toml", CASES[0].1);
+    std::fs::write(dir.join("c-invalid.toml"), "[[part]]\nshape = \"cube\"\n").unwrap();
+    std::fs::write(dir.join("notes.txt"), "not a part file").unwrap();
+    let d = dir.display().to_string();
+    let (code, stdout, stderr) = check(&[&d]);
+    assert_eq!(code, 2);
+    // Sorted, recursive, *.toml only: a-ok, c-invalid, sub/b-fails.
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert_eq!(lines[0], format!("{d}/a-ok.toml: ok"));
+    assert_eq!(
+        lines[1],
+        format!("{d}/c-invalid.toml: invalid (see the error above)")
+    );
+    assert!(lines[2].starts_with(&format!("{d}/sub/b-fails.toml:")));
+    assert_eq!(lines[3], "checked 3 files: 1 ok, 1 failed, 1 invalid");
+    assert!(
+        stderr.contains("c-invalid.toml:2:9: error: unknown shape \"cube\""),
+        "{stderr}"
+    );
+
+    // Without the invalid file: status 1.
+    std::fs::remove_file(dir.join("c-invalid.toml")).unwrap();
+    assert_eq!(check(&[&d]).0, 1);
+    // Only the passing file: status 0.
+    assert_eq!(check(&[&format!("{d}/a-ok.toml")]).0, 0);
+}
+
+#[test]
+fn json_lists_every_file_and_expectation() {
+    let dir = scratch("json");
+    let good = write(
+        &dir,
+        "good.toml",
+        &format!("{}\n{}", CASES[0].0, CASES[7].0),
+    );
+    let bad = write(&dir, "bad.toml", CASES[3].1);
+    let out = massprop(&["check", &good, &bad, "--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
+    assert_eq!(v["format_version"], 1);
+    assert_eq!(v["summary"]["files"], 2);
+    assert_eq!(v["summary"]["failed"], 1);
+    let files = v["files"].as_array().unwrap();
+    assert_eq!(files[0]["status"], "ok");
+    let checks = files[0]["checks"].as_array().unwrap();
+    assert_eq!(checks.len(), 2);
+    assert_eq!(checks[0]["quantity"], "mass");
+    assert_eq!(checks[0]["value"], 12.01);
+    assert_eq!(checks[0]["tol_relative"], 0.001);
+    assert_eq!(checks[1]["quantity"], "center_of_mass.z");
+    assert_eq!(checks[1]["measured"], 3.0);
+    assert_eq!(checks[1]["tol"], 0.001); // "1 mm" in SI
+    let bad_check = &files[1]["checks"][0];
+    assert_eq!(bad_check["pass"], false);
+    assert_eq!(bad_check["max"], 11.9);
+    assert_eq!(bad_check["line"], BODY.lines().count() + 1);
+    assert_eq!(bad_check["column"], 8);
+}
+
+#[test]
+fn the_example_files_hold_their_expectations() {
+    let (code, stdout, stderr) = check(&["shapes"]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    let n = std::fs::read_dir("shapes").unwrap().count();
+    assert!(
+        stdout.ends_with(&format!("checked {n} files: {n} ok, 0 failed, 0 invalid\n")),
+        "{stdout}"
+    );
+}
