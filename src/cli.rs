@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 const EXIT_STATUS: &str = "\
 Exit status:
   0  success
-  1  `check`: an expectation or validity check failed; `diff`: something changed
+  1  `check`: an expectation or validity check failed; `diff`: something changed beyond --tol
   2  an error: bad input, unreadable file, bad flag (nothing is printed on stdout)";
 
 /// Mass properties of composite rigid bodies described by TOML part files.
@@ -54,7 +54,12 @@ pub struct DiffArgs {
 
     /// Relative tolerance: a value counts as changed when it moves by more
     /// than this fraction of its scale.
-    #[arg(long, value_name = "REL", default_value_t = 1e-9)]
+    #[arg(
+        long,
+        value_name = "REL",
+        default_value_t = 1e-9,
+        allow_negative_numbers = true
+    )]
     pub tol: f64,
 }
 

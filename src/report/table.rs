@@ -38,7 +38,8 @@ fn trim_zeros(s: &str) -> String {
     }
 }
 
-fn new_table() -> Table {
+/// A table in the style every massprop table uses.
+pub(crate) fn new_table() -> Table {
     let mut t = Table::new();
     t.load_style(presets::UTF8_FULL_CONDENSED);
     t
@@ -103,17 +104,17 @@ fn principal_table(
 }
 
 /// Display scale factors (SI per file unit) and their labels.
-struct Units {
-    mass: f64,
-    length: f64,
-    inertia: f64,
-    mass_label: &'static str,
-    length_label: &'static str,
-    inertia_label: String,
+pub(crate) struct Units {
+    pub mass: f64,
+    pub length: f64,
+    pub inertia: f64,
+    pub mass_label: &'static str,
+    pub length_label: &'static str,
+    pub inertia_label: String,
 }
 
 impl Units {
-    fn of(f: FileUnits) -> Units {
+    pub(crate) fn of(f: FileUnits) -> Units {
         Units {
             mass: f.factor(Dim::MASS).value(),
             length: f.factor(Dim::LENGTH).value(),
