@@ -33,6 +33,12 @@ pub struct CheckArgs {
     #[arg(value_name = "PATH", required = true)]
     pub paths: Vec<String>,
 
+    /// Write the computed values into each file's `[expect]` entries first,
+    /// keeping tolerances (adding defaults where missing), bounds, comments
+    /// and formatting; files that cannot be parsed are left untouched.
+    #[arg(long)]
+    pub bless: bool,
+
     /// Output format: one line per file or failure, or one JSON document.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,

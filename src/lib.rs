@@ -4,6 +4,7 @@
 //! forms (`shapes`) → composed body (`compose`, `mass`) → summary and
 //! renderers (`report`). Only `main.rs` knows about processes and exit codes.
 
+pub mod bless;
 pub mod check;
 pub mod cli;
 pub mod compose;

@@ -244,3 +244,90 @@ fn the_example_files_hold_their_expectations() {
         "{stdout}"
     );
 }
+
+#[test]
+fn bless_writes_values_keeps_everything_else_and_then_check_passes() {
+    let dir = scratch("bless");
+    // Hand values as in the module doc: mass 12, centre (1, 2, 3) in mm
+    // here, principal moments (5, 10, 13) kg·m² = (5e6, 1e7, 1.3e7) kg·mm².
+    let text = "# A comment that must survive.\n\
+        units = { length = \"mm\" }   # trailing comment\n\n\
+        [[part]]\nshape = \"box\"\nmass = 12\nsize = [1000, 2000, 3000]\ncenter = [1000, 2000, 3000]\n\n\
+        [expect]\n\
+        mass = { value = 11, tol = \"1%\" }   # kept\n\
+        center_of_mass.z = { value = 2500 }\n\
+        principal_moments = { value = [1, 2, 3], tol = 10 }\n\
+        Izz = { max = 1 }   # a limit: never blessed\n";
+    let path = dir.join("part.toml");
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    // A `value` without `tol` is invalid until blessed.
+    assert_eq!(check(&[p]).0, 2);
+
+    let (code, _, stderr) = check(&["--bless", p]);
+    assert!(stderr.contains("part.toml: blessed"), "{stderr}");
+    // The limit on Izz (5e6 > 1) still fails: bless never moves a limit.
+    assert_eq!(code, 1);
+    let blessed = std::fs::read_to_string(&path).unwrap();
+    let want = "# A comment that must survive.\n\
+        units = { length = \"mm\" }   # trailing comment\n\n\
+        [[part]]\nshape = \"box\"\nmass = 12\nsize = [1000, 2000, 3000]\ncenter = [1000, 2000, 3000]\n\n\
+        [expect]\n\
+        mass = { value = 12.0, tol = \"1%\" }   # kept\n\
+        center_of_mass.z = { value = 3000.0, tol = \"0.0001%\" }\n\
+        principal_moments = { value = [5000000.0, 10000000.0, 13000000.0], tol = 10 }\n\
+        Izz = { max = 1 }   # a limit: never blessed\n";
+    assert_eq!(blessed, want);
+
+    // Without the limit, the blessed file passes.
+    std::fs::write(
+        &path,
+        blessed.replace("Izz = { max = 1 }", "Izz = { max = 5000001 }"),
+    )
+    .unwrap();
+    assert_eq!(check(&[p]).0, 0);
+    // Blessing again changes nothing.
+    let before = std::fs::read_to_string(&path).unwrap();
+    let (_, _, stderr) = check(&["--bless", p]);
+    assert!(stderr.contains("unchanged"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), before);
+}
+
+#[test]
+fn bless_adds_an_expect_block_and_leaves_invalid_files_untouched() {
+    let dir = scratch("bless-new");
+    let body = BODY.replace("\n[expect]\n", "");
+    let good = dir.join("good.toml");
+    std::fs::write(&good, &body).unwrap();
+    let bad = dir.join("bad.toml");
+    let bad_text = "[[part]]\nshape = \"cube\"   # a typo\n";
+    std::fs::write(&bad, bad_text).unwrap();
+    let d = dir.display().to_string();
+    let (code, _, stderr) = check(&["--bless", &d]);
+    assert_eq!(code, 2, "{stderr}");
+    assert_eq!(std::fs::read_to_string(&bad).unwrap(), bad_text);
+    let blessed = std::fs::read_to_string(&good).unwrap();
+    assert!(
+        blessed.starts_with(&body),
+        "everything before [expect] is kept"
+    );
+    assert!(
+        blessed.contains("mass = { value = 12.0, tol = \"0.0001%\" }"),
+        "{blessed}"
+    );
+    assert!(
+        blessed.contains("center_of_mass = { value = [1.0, 2.0, 3.0], tol = 0.000003 }"),
+        "{blessed}"
+    );
+    assert!(
+        blessed.contains("principal_moments = { value = [5.0"),
+        "{blessed}"
+    );
+    assert_eq!(check(&[good.to_str().unwrap()]).0, 0);
+    // No temporary files are left behind.
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+}

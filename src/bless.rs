@@ -1,0 +1,258 @@
+//! `massprop check --bless`: write the computed values into a part file's
+//! `[expect]` entries, keeping everything else byte for byte (toml_edit).
+//!
+//! - An entry with `value` gets the measured value, in the file's units
+//!   (SI for H and T); its `tol` is kept, or a default one is added.
+//! - Entries with only `min`/`max` are design limits and are never changed.
+//! - A file without `[expect]` gets one for its mass, centre of mass and
+//!   principal moments.
+//! - A file that cannot be parsed, or whose edit would not parse, is left
+//!   untouched. The file is replaced atomically (temporary file + rename).
+
+use crate::check::display_unit;
+use crate::diag::{Diagnostic, Source};
+use crate::model::Model;
+use crate::model::expect::{Bound, Check};
+use crate::report::{self, Products, Summary};
+use std::collections::BTreeMap;
+use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
+
+/// Default relative tolerance for a blessed scalar: 1e-6, far above the
+/// rounding differences between machines and far below a design change.
+pub const DEFAULT_RELATIVE_TOL: &str = "0.0001%";
+/// Default absolute tolerance of a blessed vector or matrix, as a fraction
+/// of its largest component (a relative tolerance per component would fail
+/// on rounding noise in components that are zero).
+pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;
+
+/// Bless one file: returns whether it changed. Errors leave it untouched.
+pub fn bless_file(path: &str) -> Result<bool, Diagnostic> {
+    let source = crate::read_source(path)?;
+    if path == "-" {
+        return Err(Diagnostic::plain(
+            "`--bless` writes files; it cannot bless standard input",
+        ));
+    }
+    let mut doc: DocumentMut = match source.text.parse() {
+        Ok(d) => d,
+        // Let the model report the syntax error with its usual diagnostic.
+        Err(_) => {
+            return Err(Model::parse(&source)
+                .err()
+                .unwrap_or_else(|| Diagnostic::file(path, "cannot parse")));
+        }
+    };
+    // Entries with `value` but no `tol` get the default tolerance first, so
+    // that the file parses as a model.
+    let added_tol = add_default_tols(&mut doc);
+    let staged = Source::new(source.name.clone(), doc.to_string());
+    let model = Model::parse(&staged)?;
+    let summary = report::summarize(&model, &model.analysis, Products::Tensor)
+        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+
+    let mut changed = added_tol;
+    if doc.get("expect").is_none() {
+        add_default_expect(&mut doc, &summary);
+        changed = true;
+    } else {
+        changed |= write_values(&mut doc, &model.expect, &summary);
+    }
+    let text = doc.to_string();
+    if text == source.text {
+        return Ok(false);
+    }
+    // The result must parse before it replaces the file.
+    Model::parse(&Source::new(source.name.clone(), text.clone()))?;
+    write_atomically(path, &text)?;
+    Ok(changed)
+}
+
+fn tables_mut(item: &mut Item) -> Vec<&mut Item> {
+    // Every expectation entry: top-level entries and their components.
+    let mut out = Vec::new();
+    if let Some(t) = item.as_table_like_mut() {
+        for (_, entry) in t.iter_mut() {
+            out.push(entry);
+        }
+    }
+    out
+}
+
+/// Add `tol` to entries (and component entries) with a `value` but none.
+fn add_default_tols(doc: &mut DocumentMut) -> bool {
+    let Some(expect) = doc.get_mut("expect") else {
+        return false;
+    };
+    let mut changed = false;
+    fn visit(entry: &mut Item, changed: &mut bool) {
+        let Some(t) = entry.as_table_like_mut() else {
+            return;
+        };
+        let has_value = t.get("value").is_some();
+        if has_value && t.get("tol").is_none() {
+            let tol = match t.get("value").and_then(Item::as_value) {
+                Some(Value::Array(a)) => {
+                    let max = a
+                        .iter()
+                        .flat_map(|v| match v {
+                            Value::Array(r) => r.iter().filter_map(as_f64).collect::<Vec<_>>(),
+                            v => as_f64(v).into_iter().collect(),
+                        })
+                        .fold(0.0f64, |m, x| m.max(x.abs()));
+                    Value::from(round1(max * DEFAULT_VECTOR_TOL))
+                }
+                _ => Value::from(DEFAULT_RELATIVE_TOL),
+            };
+            // In an inline table the space before `}` trails the last value;
+            // move it after the new `tol`.
+            let mut tol = tol;
+            if let Some(Item::Value(v)) = t.get_mut("value") {
+                let suffix = v.decor().suffix().cloned();
+                if let Some(sfx) = suffix {
+                    v.decor_mut().set_suffix("");
+                    tol.decor_mut().set_suffix(sfx);
+                }
+            }
+            t.insert("tol", Item::Value(tol));
+            *changed = true;
+        }
+        for key in [
+            "x", "y", "z", "xx", "yy", "zz", "xy", "xz", "yz", "1", "2", "3",
+        ] {
+            if let Some(c) = t.get_mut(key) {
+                visit(c, changed);
+            }
+        }
+    }
+    for entry in tables_mut(expect) {
+        visit(entry, &mut changed);
+    }
+    changed
+}
+
+/// `x` to one significant digit, so a default tolerance reads `6e-5`.
+fn round1(x: f64) -> f64 {
+    format!("{x:.0e}").parse().unwrap_or(x)
+}
+
+fn as_f64(v: &Value) -> Option<f64> {
+    v.as_float().or_else(|| v.as_integer().map(|i| i as f64))
+}
+
+/// Write measured values into every entry that has a `value`.
+fn write_values(doc: &mut DocumentMut, checks: &[Check], s: &Summary) -> bool {
+    // Checks of one entry share its span; group them in order.
+    let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
+    for c in checks
+        .iter()
+        .filter(|c| matches!(c.bound, Bound::Value { .. }))
+    {
+        entries.entry(c.span.start).or_default().push(c);
+    }
+    let mut changed = false;
+    for group in entries.values() {
+        let first = group[0];
+        let (scale, _) = display_unit(first.dim, s.file_units);
+        let measured: Vec<f64> = group
+            .iter()
+            .map(|c| crate::check::measured(s, c.target) / scale)
+            .collect();
+        // The entry's key path: `center_of_mass.z` for a component, the
+        // quantity itself for a whole vector or matrix.
+        let mut path: Vec<&str> = first.name.split('.').collect();
+        if group.len() > 1 {
+            path.pop();
+        }
+        let value = match measured.len() {
+            1 => Value::from(measured[0]),
+            3 => Value::Array(measured.iter().copied().collect::<Array>()),
+            _ => Value::Array(
+                measured
+                    .chunks(3)
+                    .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
+                    .collect::<Array>(),
+            ),
+        };
+        if let Some(t) = entry_mut(doc, &path).and_then(Item::as_table_like_mut)
+            && let Some(old) = t.get_mut("value")
+        {
+            let decor = old.as_value().map(|v| v.decor().clone());
+            let mut new = value;
+            if let Some(d) = decor {
+                *new.decor_mut() = d;
+            }
+            if old.as_value().map(|v| v.to_string()) != Some(new.to_string()) {
+                *old = Item::Value(new);
+                changed = true;
+            }
+        }
+    }
+    changed
+}
+
+/// The `[expect]` entry at `path` (`["center_of_mass", "z"]`).
+fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item> {
+    let mut item = doc.get_mut("expect")?;
+    for key in path {
+        item = item.get_mut(*key)?;
+    }
+    Some(item)
+}
+
+/// A new `[expect]` with the mass, centre of mass and principal moments.
+fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
+    let (m, _) = display_unit(crate::units::Dim::MASS, s.file_units);
+    let (l, _) = display_unit(crate::units::Dim::LENGTH, s.file_units);
+    let (i, _) = display_unit(crate::units::Dim::INERTIA, s.file_units);
+    let entry = |value: Value, tol: Value| {
+        let mut t = InlineTable::new();
+        t.insert("value", value);
+        t.insert("tol", tol);
+        Item::Value(Value::InlineTable(t))
+    };
+    let vector = |v: [f64; 3], scale: f64| {
+        let v = v.map(|x| x / scale);
+        let max = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        (
+            Value::Array(v.into_iter().collect()),
+            Value::from(round1(max * DEFAULT_VECTOR_TOL)),
+        )
+    };
+    let mut t = toml_edit::Table::new();
+    t.decor_mut()
+        .set_prefix("\n# Expected mass properties, written by `massprop check --bless`.\n");
+    t.insert(
+        "mass",
+        entry(Value::from(s.mass / m), Value::from(DEFAULT_RELATIVE_TOL)),
+    );
+    let (c, ct) = vector(s.center_of_mass, l);
+    t.insert("center_of_mass", entry(c, ct));
+    let (p, pt) = vector(s.principal_moments, i);
+    t.insert("principal_moments", entry(p, pt));
+    doc.insert("expect", Item::Table(t));
+}
+
+/// Replace `path` by `text` through a temporary file in the same directory
+/// and a rename, so an interrupted run never leaves half a file.
+fn write_atomically(path: &str, text: &str) -> Result<(), Diagnostic> {
+    let target = std::path::Path::new(path);
+    let dir = target
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let name = target
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.massprop-bless.{}", std::process::id()));
+    let fail =
+        |e: std::io::Error| Diagnostic::file(path, format!("cannot write the blessed file: {e}"));
+    std::fs::write(&tmp, text).map_err(fail)?;
+    if let Ok(meta) = std::fs::metadata(target) {
+        let _ = std::fs::set_permissions(&tmp, meta.permissions());
+    }
+    std::fs::rename(&tmp, target).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        fail(e)
+    })
+}
