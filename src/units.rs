@@ -181,10 +181,18 @@ const SYMBOLS: &[Symbol] = &[
     sym("m", Dim::LENGTH, 1, 1, 0),
     sym("cm", Dim::LENGTH, 1, 100, 0),
     sym("mm", Dim::LENGTH, 1, 1000, 0),
+    // Micrometre: ASCII `um`, the micro sign U+00B5 and the Greek mu U+03BC.
+    sym("um", Dim::LENGTH, 1, 1_000_000, 0),
+    sym("\u{b5}m", Dim::LENGTH, 1, 1_000_000, 0),
+    sym("\u{3bc}m", Dim::LENGTH, 1, 1_000_000, 0),
+    sym("km", Dim::LENGTH, 1000, 1, 0),
     sym("in", Dim::LENGTH, 254, 10_000, 0),
     sym("ft", Dim::LENGTH, 3048, 10_000, 0),
     sym("kg", Dim::MASS, 1, 1, 0),
     sym("g", Dim::MASS, 1, 1000, 0),
+    sym("mg", Dim::MASS, 1, 1_000_000, 0),
+    // Tonne (metric ton), 1000 kg.
+    sym("t", Dim::MASS, 1000, 1, 0),
     sym("lb", Dim::MASS, 45_359_237, 100_000_000, 0),
     sym("N", Dim::new(1, 1, -2), 1, 1, 0),
     sym("J", Dim::ENERGY, 1, 1, 0),
@@ -198,9 +206,9 @@ const SYMBOLS: &[Symbol] = &[
 ];
 
 /// Length units allowed as a file's default (`units.length`).
-pub const LENGTH_UNITS: &[&str] = &["m", "cm", "mm", "in", "ft"];
+pub const LENGTH_UNITS: &[&str] = &["m", "cm", "mm", "um", "\u{b5}m", "\u{3bc}m", "km", "in", "ft"];
 /// Mass units allowed as a file's default (`units.mass`).
-pub const MASS_UNITS: &[&str] = &["kg", "g", "lb"];
+pub const MASS_UNITS: &[&str] = &["kg", "g", "mg", "t", "lb"];
 
 /// A unit expression: its dimension and factor to SI.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
