@@ -26,7 +26,7 @@ pub const DEFAULT_RELATIVE_TOL: &str = "0.0001%";
 pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;
 
 /// Bless one file: returns whether it changed. Errors leave it untouched.
-pub fn bless_file(path: &str) -> Result<bool, Diagnostic> {
+pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bool, Diagnostic> {
     let source = crate::read_source(path)?;
     if path == "-" {
         return Err(Diagnostic::plain(
@@ -47,7 +47,7 @@ pub fn bless_file(path: &str) -> Result<bool, Diagnostic> {
     let added_tol = add_default_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
     let model = Model::parse(&staged)?;
-    let summary = report::summarize(&model, &model.analysis, Products::Tensor)
+    let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
         .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
 
     let mut changed = added_tol;

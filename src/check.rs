@@ -7,6 +7,7 @@
 
 use crate::Output;
 use crate::cli::{CheckArgs, Format};
+use crate::compose::Precision;
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target, Tol};
@@ -197,10 +198,10 @@ pub fn validity(s: &Summary) -> Vec<String> {
 }
 
 /// Check one file; `Err` when it cannot be read or is invalid.
-pub fn check_file(path: &str) -> Result<FileResult, Diagnostic> {
+pub fn check_file(path: &str, precision: Precision) -> Result<FileResult, Diagnostic> {
     let source = crate::read_source(path)?;
     let model = Model::parse(&source)?;
-    let summary = report::summarize(&model, &model.analysis, Products::Tensor)
+    let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
         .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
     let validity = validity(&summary);
     let checks: Vec<CheckResult> = model
@@ -285,13 +286,13 @@ pub fn run(args: &CheckArgs) -> Result<Output, Diagnostic> {
         if args.bless {
             // A file that cannot be blessed is left untouched; the check
             // below reports it as invalid.
-            match crate::bless::bless_file(f) {
+            match crate::bless::bless_file(f, args.precision) {
                 Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
                 Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
                 Err(_) => stderr.push_str(&format!("{f}: not blessed (invalid; left untouched)\n")),
             }
         }
-        match check_file(f) {
+        match check_file(f, args.precision) {
             Ok(r) => {
                 if r.status == "ok" {
                     counts.ok += 1;
@@ -378,7 +379,13 @@ mod tests {
             "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n",
         );
         let model = Model::parse(&source).unwrap();
-        report::summarize(&model, &model.analysis, Products::Tensor).unwrap()
+        report::summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            Precision::Standard,
+        )
+        .unwrap()
     }
 
     #[test]

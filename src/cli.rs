@@ -1,5 +1,6 @@
 //! The command line, declared with clap derive; doc comments are the help.
 
+use crate::compose::Precision;
 use crate::report::Products;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
@@ -39,6 +40,12 @@ pub struct CheckArgs {
     #[arg(long)]
     pub bless: bool,
 
+    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
+    /// (double-double, ~32 digits; for the smallest moments of very slender
+    /// or flat bodies). See docs/accuracy.md.
+    #[arg(long, value_enum, default_value_t)]
+    pub precision: Precision,
+
     /// Output format: one line per file or failure, or one JSON document.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
@@ -67,6 +74,12 @@ pub struct DiffArgs {
         allow_negative_numbers = true
     )]
     pub tol: f64,
+
+    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
+    /// (double-double, ~32 digits; for the smallest moments of very slender
+    /// or flat bodies). See docs/accuracy.md.
+    #[arg(long, value_enum, default_value_t)]
+    pub precision: Precision,
 }
 
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -91,6 +104,12 @@ pub struct ReportArgs {
     /// Sign convention of products of inertia in the output.
     #[arg(long, value_enum, default_value_t)]
     pub products: Products,
+
+    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
+    /// (double-double, ~32 digits; for the smallest moments of very slender
+    /// or flat bodies). See docs/accuracy.md.
+    #[arg(long, value_enum, default_value_t)]
+    pub precision: Precision,
 
     /// Reference point, overriding `[analysis].about`: x,y,z in the file's
     /// length unit, or with units, e.g. "0,0,10 mm".

@@ -29,7 +29,7 @@ struct Side {
     summary: Summary,
 }
 
-fn load(path: &str) -> Result<Side, Diagnostic> {
+fn load(path: &str, precision: crate::compose::Precision) -> Result<Side, Diagnostic> {
     let source = crate::read_source(path)?;
     let model = Model::parse(&source)?;
     // A file `report` rejects is invalid here too, although diff does not
@@ -42,7 +42,7 @@ fn load(path: &str) -> Result<Side, Diagnostic> {
             )
             .help("give `omega` here; for a body starting from rest, `omega = [0, 0, 0]`"));
     }
-    let summary = report::summarize(&model, &model.analysis, Products::Tensor)
+    let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
         .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
     Ok(Side {
         source,
@@ -120,8 +120,8 @@ pub fn run(args: &DiffArgs) -> Result<Output, Diagnostic> {
             "OLD and NEW cannot both be `-`: standard input can be read only once",
         ));
     }
-    let old = load(&args.old)?;
-    let new = load(&args.new)?;
+    let old = load(&args.old, args.precision)?;
+    let new = load(&args.new, args.precision)?;
     let length = length_scale(&old.summary, &new.summary);
     let quantities = quantities(&old.summary, &new.summary, length, tol)?;
     let parts = part_diff(&old.model.parts, &new.model.parts, length, tol);

@@ -10,8 +10,10 @@ pub mod cli;
 pub mod compose;
 pub mod diag;
 pub mod diff;
+pub mod eigen;
 pub mod mass;
 pub mod model;
+pub mod numeric;
 pub mod report;
 pub mod shapes;
 pub mod units;
@@ -85,14 +87,15 @@ fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
         });
     }
     let flags_given = args.about.is_some() || args.omega.is_some() || args.alpha.is_some();
-    let summary = report::summarize(&model, &analysis, args.products).map_err(|e| {
-        let with = if flags_given {
-            " (with the values given on the command line)"
-        } else {
-            ""
-        };
-        Diagnostic::file(&source.name, format!("{e}{with}"))
-    })?;
+    let summary =
+        report::summarize(&model, &analysis, args.products, args.precision).map_err(|e| {
+            let with = if flags_given {
+                " (with the values given on the command line)"
+            } else {
+                ""
+            };
+            Diagnostic::file(&source.name, format!("{e}{with}"))
+        })?;
     let stdout = match args.format {
         Format::Table => report::table::render(&summary, &source.name),
         Format::Json => report::json::render(&summary),

@@ -1,4 +1,4 @@
-//! The mass-properties value and the one parallel-axis shift.
+//! The composed body and the one parallel-axis shift.
 //!
 //! NOTE: we keep the second moment C = ∫ρρᵀ dm rather than the inertia
 //! tensor I = tr(C)·E − C. C shifts to a point at offset d as C + m d dᵀ,
@@ -6,41 +6,58 @@
 //! shipped a wrong-sign product in their I-form shift); I is formed only for
 //! output.
 
-use nalgebra::{Matrix3, Vector3};
+use crate::numeric::{DD, M3, Real};
+use nalgebra::Matrix3;
 
+/// A composed body in the file's units and axes, held in double-double so
+/// that the `extended` mode loses nothing before output (the `standard`
+/// composer stores f64 values in it).
 #[derive(Debug, Clone, PartialEq)]
-pub struct MassProps {
-    /// kg
-    pub mass: f64,
-    /// Centre of mass in the file's frame, m.
-    pub center_of_mass: Vector3<f64>,
-    /// ∫ρρᵀ dm about the centre of mass, file axes, kg·m².
-    pub second_moment: Matrix3<f64>,
+pub struct Body {
+    pub mass: DD,
+    /// Centre of mass in the file's frame.
+    pub center_of_mass: [DD; 3],
+    /// ∫ρρᵀ dm about the centre of mass, file axes.
+    pub second_moment: M3<DD>,
 }
 
-impl MassProps {
+impl Body {
     /// ∫ρρᵀ dm about `point`: the parallel-axis shift C + m d dᵀ, d = c − point.
-    pub fn second_moment_about(&self, point: &Vector3<f64>) -> Matrix3<f64> {
-        let d = self.center_of_mass - point;
-        // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
-        self.second_moment + (d * self.mass) * d.transpose()
+    pub fn second_moment_about(&self, point: &[DD; 3]) -> M3<DD> {
+        let d: [DD; 3] = std::array::from_fn(|i| self.center_of_mass[i] - point[i]);
+        std::array::from_fn(|i| {
+            // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
+            std::array::from_fn(|j| self.second_moment[i][j] + (self.mass * d[i]) * d[j])
+        })
     }
 }
 
 /// The inertia tensor (tensor convention: off-diagonals −∫xy dm) of a second
 /// moment C. Diagonals are formed as sums, I_xx = C_yy + C_zz, rather than
 /// tr(C) − C_xx, so a small moment is not the difference of large ones.
+pub fn inertia_of_rows<T: Real>(c: &M3<T>) -> M3<T> {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if i == j {
+                c[(i + 1) % 3][(i + 1) % 3] + c[(i + 2) % 3][(i + 2) % 3]
+            } else {
+                -c[i][j]
+            }
+        })
+    })
+}
+
+/// `inertia_of_rows` for an nalgebra matrix.
 pub fn inertia_of(c: &Matrix3<f64>) -> Matrix3<f64> {
-    let mut i = -c;
-    i[(0, 0)] = c[(1, 1)] + c[(2, 2)];
-    i[(1, 1)] = c[(0, 0)] + c[(2, 2)];
-    i[(2, 2)] = c[(0, 0)] + c[(1, 1)];
-    i
+    let rows: M3<f64> = std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)]));
+    let i = inertia_of_rows(&rows);
+    Matrix3::from_fn(|r, k| i[r][k])
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Vector3;
 
     #[test]
     fn inertia_of_a_point_mass_matches_the_textbook_form() {
@@ -55,15 +72,18 @@ mod tests {
 
     #[test]
     fn shift_adds_m_d_dt() {
-        let p = MassProps {
-            mass: 3.0,
-            center_of_mass: Vector3::new(1.0, 0.0, 2.0),
-            second_moment: Matrix3::identity(),
+        let eye: M3<DD> = std::array::from_fn(|i| {
+            std::array::from_fn(|j| DD::of(if i == j { 1.0 } else { 0.0 }))
+        });
+        let p = Body {
+            mass: DD::of(3.0),
+            center_of_mass: [1.0, 0.0, 2.0].map(DD::of),
+            second_moment: eye,
         };
-        let c = p.second_moment_about(&Vector3::zeros());
-        assert_eq!(c[(0, 2)], 6.0);
-        assert_eq!(c[(2, 2)], 13.0);
-        assert_eq!(c[(1, 1)], 1.0);
+        let c = p.second_moment_about(&[DD::of(0.0); 3]);
+        assert_eq!(c[0][2], DD::of(6.0));
+        assert_eq!(c[2][2], DD::of(13.0));
+        assert_eq!(c[1][1], DD::of(1.0));
         assert_eq!(p.second_moment_about(&p.center_of_mass), p.second_moment);
     }
 }

@@ -145,6 +145,21 @@ impl Factor {
         v
     }
 
+    /// self / o, exactly, or `None` if the fraction outgrows i128.
+    pub fn per(self, o: Factor) -> Option<Factor> {
+        self.mul(o.inv())
+    }
+
+    /// The factor as a double-double (π to double-double precision).
+    pub fn dd(self) -> crate::numeric::DD {
+        use crate::numeric::DD;
+        let mut v = DD::of_i128(self.num) / DD::of_i128(self.den);
+        for _ in 0..self.pi.unsigned_abs() {
+            v = if self.pi > 0 { v * DD::PI } else { v / DD::PI };
+        }
+        v
+    }
+
     /// The SI value of one unit: `apply(1.0)`.
     pub fn value(self) -> f64 {
         self.apply(1.0)
@@ -206,7 +221,9 @@ const SYMBOLS: &[Symbol] = &[
 ];
 
 /// Length units allowed as a file's default (`units.length`).
-pub const LENGTH_UNITS: &[&str] = &["m", "cm", "mm", "um", "\u{b5}m", "\u{3bc}m", "km", "in", "ft"];
+pub const LENGTH_UNITS: &[&str] = &[
+    "m", "cm", "mm", "um", "\u{b5}m", "\u{3bc}m", "km", "in", "ft",
+];
 /// Mass units allowed as a file's default (`units.mass`).
 pub const MASS_UNITS: &[&str] = &["kg", "g", "mg", "t", "lb"];
 
@@ -383,6 +400,28 @@ pub fn parse_quantity(text: &str, expected: Dim) -> Result<f64, UnitError> {
         });
     }
     Ok(unit.factor.apply(number))
+}
+
+/// Read a quantity string of the expected dimension and return it in the
+/// file's units: one conversion by the exact ratio of the two factors, so
+/// `"2 m"` in a millimetre file is exactly 2000.
+pub fn parse_quantity_in(text: &str, expected: Dim, file: FileUnits) -> Result<f64, UnitError> {
+    let (number, unit_text) = split_number(text)?;
+    if unit_text.is_empty() {
+        return Err(UnitError::NoUnit);
+    }
+    let unit = parse_unit(unit_text)?;
+    if unit.dim != expected {
+        return Err(UnitError::WrongDim {
+            unit: unit_text.to_string(),
+            expected,
+        });
+    }
+    match unit.factor.per(file.factor(expected)) {
+        Some(f) => Ok(f.apply(number)),
+        // A ratio too large for i128: two roundings instead of one.
+        None => Ok(unit.factor.apply(number) / file.factor(expected).value()),
+    }
 }
 
 /// The nearest of `candidates` to a misspelt `word`, if one is close enough

@@ -1,6 +1,8 @@
 //! The validated part file: every part reduced to mass, centroid, local axes
-//! and local second moments, all in SI. This module owns every check on the
-//! input; a `Model` that exists is valid.
+//! and local second moments in SI, and to the numbers the file gave in the
+//! file's own units (`Spec`), from which the composer works in the precision
+//! asked for. This module owns every check on the input; a `Model` that
+//! exists is valid.
 
 pub mod expect;
 pub mod raw;
@@ -11,6 +13,7 @@ use crate::shapes::Shape;
 use crate::units::{self, Dim, FileUnits, UnitError};
 use nalgebra::{Matrix3, Vector3};
 use raw::{Quantity, RawAnalysis, RawFile, RawPart, Vector};
+use rotation::Orientation;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -43,6 +46,47 @@ pub struct Part {
     pub axes: Matrix3<f64>,
     /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid along the local axes, kg·m².
     pub local_second_moment: Vector3<f64>,
+    /// The part as the file gave it, in the file's units.
+    pub spec: Spec,
+}
+
+/// A part's numbers as the file gave them, in the file's units (a quantity
+/// written with its own unit converted once, by an exact ratio).
+///
+/// NOTE: the composer works from these, not from the SI values above, and
+/// converts only its results to SI. Converting every input first would
+/// round each coordinate on its own: for parts 10⁹ sizes from the origin in
+/// a millimetre file that alone moves them relative to each other by 1e-7
+/// of their size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spec {
+    pub mass: MassSpec,
+    pub place: Place,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassSpec {
+    Given(f64),
+    /// Density per volume, area or length, times the shape's measure.
+    Density(f64),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Place {
+    /// `center`, extents along local x, y, z (a plate's z and a rod's x, y
+    /// are 0; a point's are all 0) and the turn of the local axes.
+    Centered {
+        center: [f64; 3],
+        extent: [f64; 3],
+        orientation: Orientation,
+    },
+    /// `corner` and the shape's edges (a plate uses the first two).
+    Edges {
+        corner: [f64; 3],
+        edges: [[f64; 3]; 3],
+    },
+    /// A rod `from` → `to`.
+    FromTo { from: [f64; 3], to: [f64; 3] },
 }
 
 impl Part {
@@ -54,9 +98,10 @@ impl Part {
 }
 
 /// Where a part sits: centroid (m), local axes (columns), edge lengths (m).
-type Placement = (Vector3<f64>, Matrix3<f64>, Vec<f64>);
+type Placement = (Vector3<f64>, Orientation, Vec<f64>);
 
-/// `[analysis]`, SI: reference point (m), ω (rad/s), α (rad/s²).
+/// `[analysis]` in the file's units: reference point (file length), ω
+/// (rad/s), α (rad/s²) — the file's units name no time, so ω and α are SI.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Analysis {
     pub about: Option<Vector3<f64>>,
@@ -302,6 +347,98 @@ impl Ctx<'_> {
         Ok(value)
     }
 
+    /// A scalar of dimension `dim` in the file's units (see `Spec`).
+    fn file_quantity(&self, q: &Spanned<Quantity>, key: &str, dim: Dim) -> Result<f64, Diagnostic> {
+        let value = match q.get_ref() {
+            Quantity::Number(x) => *x,
+            Quantity::Text(t) => units::parse_quantity_in(t, dim, self.units)
+                .map_err(|e| self.err(q.span(), format!("`{key}`: {e}")))?,
+        };
+        if !value.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows when converted to the file's units"),
+            ));
+        }
+        Ok(value)
+    }
+
+    fn file_vec3(&self, v: &Vector, key: &str, dim: Dim) -> Result<[f64; 3], Diagnostic> {
+        let mut out = [0.0; 3];
+        for (o, q) in out.iter_mut().zip(v.get_ref()) {
+            *o = self.file_quantity(q, key, dim)?;
+        }
+        Ok(out)
+    }
+
+    /// The part's numbers in the file's units, read after `part` has
+    /// validated them (so only a conversion overflow can fail here).
+    fn spec(
+        &self,
+        shape: Shape,
+        p: &RawPart,
+        by_edges: bool,
+        orientation: Orientation,
+    ) -> Result<Spec, Diagnostic> {
+        let density = match shape {
+            Shape::Box => (&p.density, Dim::DENSITY),
+            Shape::Plate => (&p.areal_density, Dim::AREAL_DENSITY),
+            Shape::Rod => (&p.linear_density, Dim::LINEAR_DENSITY),
+            Shape::Point => (&None, Dim::MASS),
+        };
+        let mass = match (&p.mass, density) {
+            (Some(m), _) => MassSpec::Given(self.file_quantity(m, "mass", Dim::MASS)?),
+            (None, (Some(d), dim)) => MassSpec::Density(self.file_quantity(
+                d,
+                shape.density_key().unwrap_or("density"),
+                dim,
+            )?),
+            (None, (None, _)) => unreachable!("`part` checked that a mass is given"),
+        };
+        fn req(v: &Option<Vector>) -> &Vector {
+            v.as_ref().expect("`part` checked the placement keys")
+        }
+        let place = match (shape, by_edges) {
+            (Shape::Rod, true) => Place::FromTo {
+                from: self.file_vec3(req(&p.from), "from", Dim::LENGTH)?,
+                to: self.file_vec3(req(&p.to), "to", Dim::LENGTH)?,
+            },
+            (_, true) => {
+                let mut edges = [[0.0; 3]; 3];
+                let raw = p.edges.as_ref().expect("`part` checked the placement keys");
+                for (e, r) in edges.iter_mut().zip(raw.get_ref()) {
+                    *e = self.file_vec3(r, "edges", Dim::LENGTH)?;
+                }
+                Place::Edges {
+                    corner: self.file_vec3(req(&p.corner), "corner", Dim::LENGTH)?,
+                    edges,
+                }
+            }
+            _ => {
+                let mut extent = [0.0; 3];
+                match shape {
+                    Shape::Box | Shape::Plate => {
+                        let size = p.size.as_ref().expect("`part` checked the size");
+                        for (e, q) in extent.iter_mut().zip(size.get_ref()) {
+                            *e = self.file_quantity(q, "size", Dim::LENGTH)?;
+                        }
+                    }
+                    Shape::Rod => {
+                        let l = p.length.as_ref().expect("`part` checked the length");
+                        extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
+                    }
+                    Shape::Point => {}
+                }
+                Place::Centered {
+                    center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
+                    extent,
+                    orientation,
+                }
+            }
+        };
+        Ok(Spec { mass, place })
+    }
+
     /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
     /// refused too: they carry too few digits to compute with.
     fn positive(&self, q: &Spanned<Quantity>, key: &str, dim: Dim) -> Result<f64, Diagnostic> {
@@ -418,7 +555,8 @@ impl Ctx<'_> {
             Shape::Rod => &keys[4..7],
             Shape::Point => &keys[5..6],
         };
-        let (center, axes, dims) = match (first(canonical), first(by_edges)) {
+        let edges_given = first(by_edges).is_some();
+        let (center, orientation, dims) = match (first(canonical), first(by_edges)) {
             (Some((a, sa)), Some((b, sb))) => {
                 let (later, earlier, span) = if sa.start > sb.start {
                     (a, b, sa)
@@ -502,13 +640,15 @@ impl Ctx<'_> {
                 format!("the second moments of `{name}` underflow the range of f64"),
             ));
         }
+        let spec = self.spec(shape, p, edges_given, orientation.clone())?;
         Ok(Part {
             name,
             shape,
             mass,
             center,
-            axes,
+            axes: rotation::to_matrix3(&orientation.matrix()),
             local_second_moment,
+            spec,
         })
     }
 
@@ -540,11 +680,11 @@ impl Ctx<'_> {
         };
         let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
         let center = self.vec3(center, "center", Dim::LENGTH)?;
-        let axes = match &p.rotation {
+        let orientation = match &p.rotation {
             Some(r) => self.rotation(r)?,
-            None => Matrix3::identity(),
+            None => Orientation::Identity,
         };
-        Ok((center, axes, dims))
+        Ok((center, orientation, dims))
     }
 
     fn placement_by_edges(
@@ -645,7 +785,10 @@ impl Ctx<'_> {
             }
             _ => unreachable!("box, plate and rod have 1 to 3 edges"),
         };
-        Ok((center, axes, dims))
+        let m = axes;
+        let orientation =
+            Orientation::Matrix(std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)])));
+        Ok((center, orientation, dims))
     }
 
     fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
@@ -653,17 +796,23 @@ impl Ctx<'_> {
         let about = r
             .about
             .as_ref()
-            .map(|v| self.vec3(v, "about", Dim::LENGTH))
+            .map(|v| self.file_vec3(v, "about", Dim::LENGTH).map(Vector3::from))
             .transpose()?;
         let omega = r
             .omega
             .as_ref()
-            .map(|v| self.vec3(v, "omega", Dim::ANGULAR_VELOCITY))
+            .map(|v| {
+                self.file_vec3(v, "omega", Dim::ANGULAR_VELOCITY)
+                    .map(Vector3::from)
+            })
             .transpose()?;
         let alpha = r
             .alpha
             .as_ref()
-            .map(|v| self.vec3(v, "alpha", Dim::ANGULAR_ACCELERATION))
+            .map(|v| {
+                self.file_vec3(v, "alpha", Dim::ANGULAR_ACCELERATION)
+                    .map(Vector3::from)
+            })
             .transpose()?;
         Ok(Analysis {
             about,
@@ -711,8 +860,9 @@ fn shape_help(shape: Shape) -> &'static str {
     }
 }
 
-/// Parse a command-line vector: three comma-separated components. Plain
-/// numbers are in the file's units (rad/s for ω, rad/s² for α). A unit on
+/// Parse a command-line vector into the file's units (rad/s for ω, rad/s²
+/// for α): three comma-separated components. Plain numbers are in the
+/// file's units. A unit on
 /// the last component only applies to all three (`0,0,10 mm`); otherwise
 /// each component carries its own unit (`1 mm,2 in,0 m`) or none does.
 pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vector3<f64>, String> {
@@ -745,16 +895,15 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
             (Some(x), _) if !x.is_finite() => {
                 return Err(format!("component {} must be finite", i + 1));
             }
-            (Some(x), None) => units.factor(dim).apply(x),
-            (Some(x), Some(u)) => units::parse_quantity(&format!("{x:?} {u}"), dim)
+            (Some(x), None) => x,
+            (Some(x), Some(u)) => units::parse_quantity_in(&format!("{x:?} {u}"), dim, units)
                 .map_err(|e| format!("component {}: {e}", i + 1))?,
-            (None, _) => {
-                units::parse_quantity(p, dim).map_err(|e| format!("component {}: {e}", i + 1))?
-            }
+            (None, _) => units::parse_quantity_in(p, dim, units)
+                .map_err(|e| format!("component {}: {e}", i + 1))?,
         };
         if !v.is_finite() {
             return Err(format!(
-                "component {} overflows when converted to SI units",
+                "component {} overflows when converted to the file's units",
                 i + 1
             ));
         }

@@ -10,7 +10,8 @@
 use super::Ctx;
 use super::raw::{Angles, Floats, RawRotation};
 use crate::diag::Diagnostic;
-use nalgebra::{Matrix3, Vector3};
+use crate::numeric::{M3, Real};
+use nalgebra::Matrix3;
 use toml::Spanned;
 
 /// A rotation matrix must be orthonormal to this (max-norm of RᵀR − E).
@@ -19,67 +20,145 @@ pub const MATRIX_TOLERANCE: f64 = 1e-9;
 /// values, not a typo. Its direction is used either way.
 pub const QUATERNION_TOLERANCE: f64 = 1e-6;
 
+/// How a part's local axes are turned, as the file gave it, so that the
+/// matrix can be formed in the precision the composer works in.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Orientation {
+    Identity,
+    /// [w, x, y, z], within `QUATERNION_TOLERANCE` of unit length.
+    Quaternion([f64; 4]),
+    /// A non-zero axis (any length) and an angle in degrees.
+    AxisAngle([f64; 3], f64),
+    /// Axis sequence (0 = x), angles in degrees, intrinsic or not.
+    Euler([usize; 3], [f64; 3], bool),
+    /// Rows as given, orthonormal to `MATRIX_TOLERANCE`, determinant +1.
+    Matrix(M3<f64>),
+}
+
+impl Orientation {
+    /// R, whose columns are the local axes in the file's frame.
+    pub fn matrix<T: Real>(&self) -> M3<T> {
+        match self {
+            Orientation::Identity => identity(),
+            Orientation::Quaternion(q) => quaternion(*q),
+            Orientation::AxisAngle(k, deg) => axis_angle(*k, *deg),
+            Orientation::Euler(seq, deg, intrinsic) => euler(*seq, *deg, *intrinsic),
+            Orientation::Matrix(m) => orthonormalised(m),
+        }
+    }
+}
+
 /// sin and cos of an angle in degrees, exact at multiples of 90°.
 pub fn sin_cos_deg(deg: f64) -> (f64, f64) {
-    // NOTE: `%` is exact, and so is `r - 90 q` (both are multiples of r's
-    // ulp and |r - 90 q| <= 45), so only the final sin/cos rounds.
-    let r = deg % 360.0;
-    let q = (r / 90.0).round();
-    let x = r - 90.0 * q;
-    let (s, c) = x.to_radians().sin_cos();
-    match (q as i64).rem_euclid(4) {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    f64::sin_cos_deg(deg)
 }
 
-fn elementary(axis: usize, deg: f64) -> Matrix3<f64> {
-    let (s, c) = sin_cos_deg(deg);
+fn identity<T: Real>() -> M3<T> {
+    std::array::from_fn(|i| std::array::from_fn(|j| T::of(if i == j { 1.0 } else { 0.0 })))
+}
+
+fn mul<T: Real>(a: &M3<T>, b: &M3<T>) -> M3<T> {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j])
+    })
+}
+
+fn elementary<T: Real>(axis: usize, deg: f64) -> M3<T> {
+    let (s, c) = T::sin_cos_deg(deg);
+    let (o, z) = (T::of(1.0), T::of(0.0));
     match axis {
-        0 => Matrix3::new(1.0, 0.0, 0.0, 0.0, c, -s, 0.0, s, c),
-        1 => Matrix3::new(c, 0.0, s, 0.0, 1.0, 0.0, -s, 0.0, c),
-        _ => Matrix3::new(c, -s, 0.0, s, c, 0.0, 0.0, 0.0, 1.0),
+        0 => [[o, z, z], [z, c, -s], [z, s, c]],
+        1 => [[c, z, s], [z, o, z], [-s, z, c]],
+        _ => [[c, -s, z], [s, c, z], [z, z, o]],
     }
 }
 
-/// Rodrigues' formula for a unit axis `k`: R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ.
-pub fn axis_angle(k: Vector3<f64>, deg: f64) -> Matrix3<f64> {
-    let (s, c) = sin_cos_deg(deg);
-    Matrix3::identity() * c + k.cross_matrix() * s + k * k.transpose() * (1.0 - c)
+/// Rodrigues' formula for the axis `k` (normalised here, in T):
+/// R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ.
+pub fn axis_angle<T: Real>(k: [f64; 3], deg: f64) -> M3<T> {
+    // Scale by the largest component first so the squares cannot overflow.
+    let big = k.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let k = k.map(|x| T::of(x / big));
+    let n = (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]).sqrt();
+    let k = k.map(|x| x / n);
+    let (s, c) = T::sin_cos_deg(deg);
+    let one_c = T::of(1.0) - c;
+    let cross = [
+        [T::of(0.0), -k[2], k[1]],
+        [k[2], T::of(0.0), -k[0]],
+        [-k[1], k[0], T::of(0.0)],
+    ];
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let d = if i == j { c } else { T::of(0.0) };
+            d + s * cross[i][j] + one_c * k[i] * k[j]
+        })
+    })
 }
 
 /// R of a quaternion [w, x, y, z], dividing by |q|² instead of normalising
 /// first, which keeps e.g. [1, 0, 0, 1] exact.
-pub fn quaternion(q: [f64; 4]) -> Matrix3<f64> {
-    let [w, x, y, z] = q;
+pub fn quaternion<T: Real>(q: [f64; 4]) -> M3<T> {
+    let [w, x, y, z] = q.map(T::of);
+    let two = T::of(2.0);
     let n = w * w + x * x + y * y + z * z;
-    Matrix3::new(
-        w * w + x * x - y * y - z * z,
-        2.0 * (x * y - w * z),
-        2.0 * (x * z + w * y),
-        2.0 * (x * y + w * z),
-        w * w - x * x + y * y - z * z,
-        2.0 * (y * z - w * x),
-        2.0 * (x * z - w * y),
-        2.0 * (y * z + w * x),
-        w * w - x * x - y * y + z * z,
-    ) / n
+    [
+        [
+            w * w + x * x - y * y - z * z,
+            two * (x * y - w * z),
+            two * (x * z + w * y),
+        ],
+        [
+            two * (x * y + w * z),
+            w * w - x * x + y * y - z * z,
+            two * (y * z - w * x),
+        ],
+        [
+            two * (x * z - w * y),
+            two * (y * z + w * x),
+            w * w - x * x - y * y + z * z,
+        ],
+    ]
+    .map(|r| r.map(|v| v / n))
 }
 
 /// R of Euler angles: `seq` like "zyx", intrinsic or extrinsic.
-pub fn euler(seq: [usize; 3], deg: [f64; 3], intrinsic: bool) -> Matrix3<f64> {
-    let r = [0, 1, 2].map(|i| elementary(seq[i], deg[i]));
+pub fn euler<T: Real>(seq: [usize; 3], deg: [f64; 3], intrinsic: bool) -> M3<T> {
+    let r: [M3<T>; 3] = [0, 1, 2].map(|i| elementary(seq[i], deg[i]));
     if intrinsic {
-        r[0] * r[1] * r[2]
+        mul(&mul(&r[0], &r[1]), &r[2])
     } else {
-        r[2] * r[1] * r[0]
+        mul(&mul(&r[2], &r[1]), &r[0])
     }
 }
 
+/// A nearly orthonormal matrix made orthonormal: Newton–Schulz iterations
+/// R ← R (3E − RᵀR) / 2, each squaring the defect (1e-9 → 1e-18 → 1e-36),
+/// leaving an exact rotation exact.
+pub fn orthonormalised<T: Real>(m: &M3<f64>) -> M3<T> {
+    let mut r: M3<T> = m.map(|row| row.map(T::of));
+    let steps = if T::EPS < 1e-20 { 2 } else { 1 };
+    for _ in 0..steps {
+        let rt: M3<T> = std::array::from_fn(|i| std::array::from_fn(|j| r[j][i]));
+        let rtr = mul(&rt, &r);
+        let k: M3<T> = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                let e = if i == j { T::of(3.0) } else { T::of(0.0) };
+                (e - rtr[i][j]) / T::of(2.0)
+            })
+        });
+        r = mul(&r, &k);
+    }
+    r
+}
+
+/// An f64 matrix of rows as an nalgebra matrix.
+pub fn to_matrix3(m: &M3<f64>) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[i][j])
+}
+
 impl Ctx<'_> {
-    pub(super) fn rotation(&self, raw: &Spanned<RawRotation>) -> Result<Matrix3<f64>, Diagnostic> {
+    pub(super) fn rotation(&self, raw: &Spanned<RawRotation>) -> Result<Orientation, Diagnostic> {
         let r = raw.get_ref();
         // The form keys present, in file order, so the message names the second.
         let mut forms: Vec<(&str, std::ops::Range<usize>)> = [
@@ -137,18 +216,18 @@ impl Ctx<'_> {
                         .err(q.span(), format!("`quaternion` must have unit length, got length {norm}"))
                         .help(format!("only rounding is tolerated (|‖q‖ − 1| ≤ {QUATERNION_TOLERANCE:e}); the order is [w, x, y, z]")));
                 }
-                Ok(quaternion([v[0], v[1], v[2], v[3]]))
+                Ok(Orientation::Quaternion([v[0], v[1], v[2], v[3]]))
             }
             "axis" => {
                 let a = r.axis.as_ref().expect("form is axis");
                 let v = self.floats(a, "axis", 3)?;
-                let k = Vector3::new(v[0], v[1], v[2]);
-                if k.amax() == 0.0 {
+                let k = [v[0], v[1], v[2]];
+                if k.iter().all(|x| *x == 0.0) {
                     return Err(self.err(a.span(), "`axis` must be a non-zero vector"));
                 }
                 let d = degrees()?;
                 match d.get_ref() {
-                    Angles::One(deg) if deg.is_finite() => Ok(axis_angle(super::unit(&k), *deg)),
+                    Angles::One(deg) if deg.is_finite() => Ok(Orientation::AxisAngle(k, *deg)),
                     Angles::One(_) => Err(self.err(d.span(), "`degrees` must be finite")),
                     Angles::Three(_) => Err(self.err(
                         d.span(),
@@ -186,9 +265,9 @@ impl Ctx<'_> {
                         )
                         .help("negate one row or column to make the axes right-handed"));
                 }
-                // One Newton–Schulz step, R ← R (3E − RᵀR) / 2, takes a 1e-9
-                // defect to about 1e-18 and leaves an exact rotation exact.
-                Ok(out * (Matrix3::identity() * 3.0 - out.transpose() * out) * 0.5)
+                Ok(Orientation::Matrix(std::array::from_fn(|i| {
+                    std::array::from_fn(|j| out[(i, j)])
+                })))
             }
             _ => {
                 let intrinsic = form == "intrinsic";
@@ -204,7 +283,7 @@ impl Ctx<'_> {
                 let d = degrees()?;
                 match d.get_ref() {
                     Angles::Three(a) if a.len() == 3 && a.iter().all(|x| x.is_finite()) => {
-                        Ok(euler(seq, [a[0], a[1], a[2]], intrinsic))
+                        Ok(Orientation::Euler(seq, [a[0], a[1], a[2]], intrinsic))
                     }
                     Angles::Three(a) if a.len() == 3 => {
                         Err(self.err(d.span(), "`degrees` must be finite"))
@@ -258,6 +337,17 @@ fn parse_sequence(s: &str) -> Option<[usize; 3]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use nalgebra::Vector3;
+
+    fn q(x: [f64; 4]) -> Matrix3<f64> {
+        to_matrix3(&quaternion(x))
+    }
+    fn aa(k: Vector3<f64>, deg: f64) -> Matrix3<f64> {
+        to_matrix3(&axis_angle([k.x, k.y, k.z], deg))
+    }
+    fn eu(seq: [usize; 3], deg: [f64; 3], intrinsic: bool) -> Matrix3<f64> {
+        to_matrix3(&euler(seq, deg, intrinsic))
+    }
 
     fn close(a: &Matrix3<f64>, b: &Matrix3<f64>, tol: f64) -> bool {
         (a - b).amax() <= tol
@@ -284,16 +374,16 @@ mod tests {
     #[test]
     fn quarter_turn_about_z_is_the_same_in_every_form() {
         let expect = Matrix3::new(0.0, -1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0);
-        assert_eq!(axis_angle(Vector3::z(), 90.0), expect);
-        assert_eq!(quaternion([1.0, 0.0, 0.0, 1.0]), expect);
-        assert_eq!(euler([2, 1, 0], [90.0, 0.0, 0.0], true), expect);
-        assert_eq!(euler([0, 1, 2], [0.0, 0.0, 90.0], false), expect);
+        assert_eq!(aa(Vector3::z(), 90.0), expect);
+        assert_eq!(q([1.0, 0.0, 0.0, 1.0]), expect);
+        assert_eq!(eu([2, 1, 0], [90.0, 0.0, 0.0], true), expect);
+        assert_eq!(eu([0, 1, 2], [0.0, 0.0, 90.0], false), expect);
     }
 
     #[test]
     fn intrinsic_sequence_equals_reversed_extrinsic_sequence() {
-        let a = euler([2, 1, 0], [30.0, 20.0, 10.0], true);
-        let b = euler([0, 1, 2], [10.0, 20.0, 30.0], false);
+        let a = eu([2, 1, 0], [30.0, 20.0, 10.0], true);
+        let b = eu([0, 1, 2], [10.0, 20.0, 30.0], false);
         assert!(close(&a, &b, 1e-15));
     }
 
@@ -301,9 +391,9 @@ mod tests {
     fn intrinsic_rotation_turns_about_the_new_axes() {
         // Intrinsic zy by 90° and 90°: Ry takes e_z to e_x, then Rz takes
         // e_x to e_y. (Extrinsic zy would give Ry Rz e_z = e_x instead.)
-        let r = euler([2, 1, 0], [90.0, 90.0, 0.0], true);
+        let r = eu([2, 1, 0], [90.0, 90.0, 0.0], true);
         assert_eq!(r * Vector3::z(), Vector3::y());
-        let e = euler([2, 1, 0], [90.0, 90.0, 0.0], false);
+        let e = eu([2, 1, 0], [90.0, 90.0, 0.0], false);
         assert_eq!(e * Vector3::z(), Vector3::x());
     }
 
@@ -312,9 +402,9 @@ mod tests {
         let k = Vector3::new(1.0, -2.0, 0.5).normalize();
         let t = 37.0_f64;
         let (s, c) = (t / 2.0).to_radians().sin_cos();
-        let q = [c, s * k.x, s * k.y, s * k.z];
-        assert!(close(&quaternion(q), &axis_angle(k, t), 1e-15));
-        let r = axis_angle(k, t);
+        let quat = [c, s * k.x, s * k.y, s * k.z];
+        assert!(close(&q(quat), &aa(k, t), 1e-15));
+        let r = aa(k, t);
         assert!(close(&(r.transpose() * r), &Matrix3::identity(), 1e-15));
         assert!((r.determinant() - 1.0).abs() < 1e-15);
     }

@@ -5,11 +5,13 @@
 pub mod json;
 pub mod table;
 
-use crate::compose::{self, Principal};
-use crate::mass::inertia_of;
+use crate::compose::{self, Precision, Principal};
+use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
+use crate::numeric::{DD, M3, Real};
+use crate::units::Dim;
 use crate::units::FileUnits;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use serde::Serialize;
 
 /// Version of the JSON contract: bumped only if a key changes meaning.
@@ -67,6 +69,8 @@ pub struct Summary {
     pub format_version: u32,
     pub name: Option<String>,
     pub products_convention: Products,
+    /// The arithmetic used (`--precision`).
+    pub precision: Precision,
     pub units: SiUnits,
     pub mass: f64,
     pub center_of_mass: [f64; 3],
@@ -125,14 +129,12 @@ impl std::fmt::Display for SummaryError {
     }
 }
 
-fn rows(m: &Matrix3<f64>, products: Products) -> [[f64; 3]; 3] {
+fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
     let sign = match products {
         Products::Tensor => 1.0,
         Products::Positive => -1.0,
     };
-    std::array::from_fn(|i| {
-        std::array::from_fn(|j| if i == j { m[(i, j)] } else { sign * m[(i, j)] })
-    })
+    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { m[i][j] } else { sign * m[i][j] }))
 }
 
 fn arr(v: &Vector3<f64>) -> [f64; 3] {
@@ -148,45 +150,85 @@ fn finite(v: &[f64], what: &'static str) -> Result<(), SummaryError> {
 }
 
 /// Compose the model's parts and derive everything reported. `analysis`
-/// (the file's, with command-line overrides applied) gives the reference
-/// point and ω, α.
+/// (the file's, with command-line overrides applied; file units) gives the
+/// reference point and ω, α.
+///
+/// NOTE: everything after composition (the shift to the reference point, the
+/// conversion to SI by exact factors, H, T and M) is done in double-double
+/// from the composed body and rounded once, whatever the precision: it costs
+/// nothing next to reading the file, and T = ½ ωᵀIω of a body spinning about
+/// its slender axis would otherwise be a difference of large numbers.
 pub fn summarize(
     model: &Model,
     analysis: &Analysis,
     products: Products,
+    precision: Precision,
 ) -> Result<Summary, SummaryError> {
-    let body = compose::compose(&model.parts);
-    finite(&[body.mass], "total mass")?;
-    finite(body.center_of_mass.as_slice(), "centre of mass")?;
-    let reference = analysis.about.unwrap_or(body.center_of_mass);
-    let c_ref = body.second_moment_about(&reference);
-    let i_com = inertia_of(&body.second_moment);
-    let i_ref = inertia_of(&c_ref);
-    finite(i_com.as_slice(), "inertia about the centre of mass")?;
-    finite(i_ref.as_slice(), "inertia about the reference point")?;
-    let p_com = compose::principal(&body.second_moment).ok_or(SummaryError::NoConvergence)?;
-    let p_ref = compose::principal(&c_ref).ok_or(SummaryError::NoConvergence)?;
-    finite(&p_com.moments, "principal moments about the centre of mass")?;
-    finite(
-        &p_ref.moments,
-        "principal moments about the reference point",
-    )?;
-    let radii = p_com.moments.map(|i| (i / body.mass).sqrt());
+    let body = compose::compose(&model.parts, precision);
+    let u = model.units;
+    let f_mass = u.factor(Dim::MASS).dd();
+    let f_length = u.factor(Dim::LENGTH).dd();
+    let f_inertia = u.factor(Dim::INERTIA).dd();
+    let mass_dd = body.mass * f_mass;
+    let mass = mass_dd.f64();
+    finite(&[mass], "total mass")?;
+    let com = body.center_of_mass.map(|c| (c * f_length).f64());
+    finite(&com, "centre of mass")?;
+    let about: [DD; 3] = match analysis.about {
+        Some(a) => [a.x, a.y, a.z].map(DD::of),
+        None => body.center_of_mass,
+    };
+    let reference = about.map(|c| (c * f_length).f64());
+    finite(&reference, "reference point")?;
+    let c_ref = body.second_moment_about(&about);
+    let si = |c: &M3<DD>| inertia_of_rows(c).map(|r| r.map(|x| x * f_inertia));
+    let (i_com, i_ref) = (si(&body.second_moment), si(&c_ref));
+    let round = |m: &M3<DD>| m.map(|r| r.map(DD::f64));
+    let (i_com_f, i_ref_f) = (round(&i_com), round(&i_ref));
+    finite(i_com_f.as_flattened(), "inertia about the centre of mass")?;
+    finite(i_ref_f.as_flattened(), "inertia about the reference point")?;
+    let p_com =
+        compose::principal(&body.second_moment, precision).ok_or(SummaryError::NoConvergence)?;
+    let p_ref = compose::principal(&c_ref, precision).ok_or(SummaryError::NoConvergence)?;
+    let moments = |p: &Principal| p.moments.map(|m| (m * f_inertia).f64());
+    let (m_com, m_ref) = (moments(&p_com), moments(&p_ref));
+    finite(&m_com, "principal moments about the centre of mass")?;
+    finite(&m_ref, "principal moments about the reference point")?;
+    let radii = p_com
+        .moments
+        .map(|i| ((i * f_inertia) / mass_dd).sqrt().f64());
     finite(&radii, "radii of gyration")?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
 
-    let h = analysis.omega.map(|w| i_ref * w);
-    let t = analysis.omega.zip(h).map(|(w, h)| 0.5 * w.dot(&h));
+    let times = |m: &M3<DD>, v: &Vector3<f64>| -> [DD; 3] {
+        std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
+    };
+    let h = analysis.omega.map(|w| times(&i_ref, &w));
+    let t = analysis.omega.zip(h).map(|(w, h)| {
+        (0..3)
+            .fold(DD::of(0.0), |acc, i| acc + h[i].mul_f64(w[i]))
+            .mul_f64(0.5)
+            .f64()
+    });
     let m = analysis
         .alpha
         .zip(analysis.omega.zip(h))
-        .map(|(a, (w, h))| i_ref * a + w.cross(&h));
+        .map(|(a, (w, h))| {
+            let ia = times(&i_ref, &a);
+            // ω × H
+            let cross = |i: usize| {
+                let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+                h[k].mul_f64(w[j]) - h[j].mul_f64(w[k])
+            };
+            std::array::from_fn::<f64, 3, _>(|i| (ia[i] + cross(i)).f64())
+        });
+    let h = h.map(|h| h.map(DD::f64));
     if let Some(h) = &h {
-        finite(h.as_slice(), "angular momentum")?;
+        finite(h, "angular momentum")?;
     }
     finite(&[t.unwrap_or(0.0)], "kinetic energy")?;
     if let Some(m) = &m {
-        finite(m.as_slice(), "Euler moment")?;
+        finite(m, "Euler moment")?;
     }
 
     Ok(Summary {
@@ -194,15 +236,16 @@ pub fn summarize(
         name: model.name.clone(),
         products_convention: products,
         units: SI_UNITS,
-        mass: body.mass,
-        center_of_mass: arr(&body.center_of_mass),
-        reference_point: arr(&reference),
-        inertia_com: rows(&i_com, products),
-        inertia_ref: rows(&i_ref, products),
-        principal_moments: p_com.moments,
+        precision,
+        mass,
+        center_of_mass: com,
+        reference_point: reference,
+        inertia_com: rows(&i_com_f, products),
+        inertia_ref: rows(&i_ref_f, products),
+        principal_moments: m_com,
         principal_axes: axes(&p_com),
         equal_moments: p_com.equal.clone(),
-        principal_moments_ref: p_ref.moments,
+        principal_moments_ref: m_ref,
         principal_axes_ref: axes(&p_ref),
         equal_moments_ref: p_ref.equal.clone(),
         radii_of_gyration: radii,
@@ -213,15 +256,15 @@ pub fn summarize(
                 name: p.name.clone(),
                 shape: p.shape,
                 mass: p.mass,
-                mass_fraction: p.mass / body.mass,
+                mass_fraction: p.mass / mass,
                 center_of_mass: arr(&p.center),
             })
             .collect(),
         omega: analysis.omega.as_ref().map(arr),
-        angular_momentum: h.as_ref().map(arr),
+        angular_momentum: h,
         kinetic_energy: t,
         alpha: analysis.alpha.as_ref().map(arr),
-        euler_moment: m.as_ref().map(arr),
+        euler_moment: m,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
     })

@@ -3,6 +3,7 @@
 //! SI, six significant digits. Full precision is in the JSON.
 
 use super::{Products, Summary};
+use crate::compose::Precision;
 use crate::units::{Dim, FileUnits};
 use comfy_table::{CellAlignment, Table, presets};
 use std::fmt::Write;
@@ -149,6 +150,14 @@ pub fn render(s: &Summary, source: &str) -> String {
         match s.products_convention {
             Products::Tensor => "tensor convention, Ixy = −∫xy dm",
             Products::Positive => "positive convention (CAD, Meriam), Ixy = +∫xy dm",
+        }
+    );
+    let _ = writeln!(
+        out,
+        "precision: {}",
+        match s.precision {
+            Precision::Standard => "standard (f64, compensated sums)",
+            Precision::Extended => "extended (double-double, ~32 digits)",
         }
     );
     let _ = writeln!(out, "\nmass: {} {}", fmt_num(s.mass / u.mass), u.mass_label);

@@ -266,30 +266,32 @@ fn rel_change_is_null_only_for_a_quantity_zero_in_both_files() {
 }
 
 #[test]
-fn a_symmetric_body_with_its_parts_reordered_is_unchanged() {
-    // Centre of mass at the origin up to rounding, which depends on the
-    // order of the parts. Relative to the distance of the centre of mass
-    // from the origin that rounding would be a 50 % change; relative to
-    // the body's size it is ~1e-16.
+fn a_centre_of_mass_near_the_origin_is_compared_at_the_bodys_scale() {
+    // Centre of mass at the origin up to the last bit of one coordinate,
+    // and the parts reordered. Relative to the distance of the centre of
+    // mass from the origin, moving `c` by one ulp is a change of over 100 %;
+    // relative to the body's size it is ~1e-16, no change at all.
     let (a, b, c) = (
         point(Some("a"), 1.0, [0.1, 0.0, 0.0]),
         point(Some("b"), 1.0, [0.2, 0.0, 0.0]),
         point(Some("c"), 1.0, [-0.3, 0.0, 0.0]),
     );
+    let c_ulp = point(Some("c"), 1.0, [-0.30000000000000004, 0.0, 0.0]);
     let paths = files(
-        "reordered",
+        "near-origin",
         &[
             ("old.toml", &format!("{a}{b}{c}")),
-            ("new.toml", &format!("{a}{c}{b}")),
+            ("new.toml", &format!("{a}{c_ulp}{b}")),
         ],
     );
     let (status, v) = diff_json(&paths[0], &paths[1], &[]);
     let x = q(&v, "center_of_mass.x");
-    assert_ne!(
-        x["old"], x["new"],
-        "the rounding differs: the case is a test"
+    let (old, new) = (num(&x["old"]), num(&x["new"]));
+    assert!(
+        (old - new).abs() > old.abs().max(new.abs()),
+        "the change is large relative to the centre's distance: the case is a test ({old:e} vs {new:e})"
     );
-    assert!(num(&x["old"]).abs() < 1e-16);
+    assert!(old.abs() < 1e-16 && new.abs() < 1e-16);
     assert_eq!(status, 0, "{v}");
     assert_eq!(v["changed"], false);
 }
