@@ -10,6 +10,10 @@
 //! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; each
 //! shape is a product of such segments, so its second moments are diagonal
 //! in local axes and need no products of inertia.
+//!
+//! A plate's real `thickness` and a rod's `diameter` never enter these: the
+//! composition is the idealised one, and `report::ideal` compares it with
+//! the solid box and cylinder they describe.
 
 use nalgebra::Vector3;
 use serde::Serialize;

@@ -14,6 +14,7 @@ use crate::units::{self, Dim, FileUnits, UnitError};
 use nalgebra::{Matrix3, Vector3};
 use raw::{Quantity, RawAnalysis, RawFile, RawPart, Vector};
 use rotation::Orientation;
+use serde::Serialize;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -30,6 +31,42 @@ pub struct Model {
     pub analysis: Analysis,
     /// `[expect]`, one scalar check per component.
     pub expect: Vec<expect::Check>,
+    /// The real thickness of plates and diameter of rods that give one, in
+    /// file order; empty when none does.
+    ///
+    /// NOTE: kept beside the parts, not in `Spec`, so that the composer
+    /// cannot see them: the composition is the idealised one whatever these
+    /// say, and only the report compares it with the solids.
+    pub real_sizes: Vec<RealSize>,
+}
+
+/// The solid that a thin plate or slender rod idealises.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Solid {
+    /// A plate a × b of thickness t: the box a × b × t.
+    Box,
+    /// A rod of length L and diameter d: the solid circular cylinder.
+    Cylinder,
+}
+
+impl Solid {
+    pub fn name(self) -> &'static str {
+        match self {
+            Solid::Box => "box",
+            Solid::Cylinder => "cylinder",
+        }
+    }
+}
+
+/// A plate's `thickness` or a rod's `diameter`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RealSize {
+    /// Index of the part in `Model::parts`.
+    pub part: usize,
+    pub solid: Solid,
+    /// Thickness (box) or diameter (cylinder), in the file's length unit.
+    pub size: f64,
 }
 
 /// One primitive, reduced to what composition needs. SI throughout.
@@ -138,11 +175,19 @@ impl Model {
                     .help("add at least one `[[part]]` table with a `shape`"));
             }
         };
-        let parts = raw_parts
-            .iter()
-            .enumerate()
-            .map(|(i, p)| ctx.part(i, p))
-            .collect::<Result<Vec<_>, _>>()?;
+        let mut parts = Vec::with_capacity(raw_parts.len());
+        let mut real_sizes = Vec::new();
+        for (i, p) in raw_parts.iter().enumerate() {
+            let (part, real) = ctx.part(i, p)?;
+            parts.push(part);
+            if let Some((solid, size)) = real {
+                real_sizes.push(RealSize {
+                    part: i,
+                    solid,
+                    size,
+                });
+            }
+        }
         let analysis = match &raw.analysis {
             Some(a) => ctx.analysis(a)?,
             None => Analysis::default(),
@@ -157,6 +202,7 @@ impl Model {
             parts,
             analysis,
             expect,
+            real_sizes,
         })
     }
 }
@@ -477,7 +523,14 @@ impl Ctx<'_> {
         Ok(Vector3::new(c[0], c[1], c[2]))
     }
 
-    fn part(&self, index: usize, raw: &Spanned<RawPart>) -> Result<Part, Diagnostic> {
+    /// One part, and the solid it idealises with its real size (file
+    /// units) when the file gives a plate's `thickness` or a rod's
+    /// `diameter`.
+    fn part(
+        &self,
+        index: usize,
+        raw: &Spanned<RawPart>,
+    ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
         let p = raw.get_ref();
         let shape = Shape::from_name(p.shape.get_ref()).ok_or_else(|| {
             let names = Shape::ALL.map(Shape::name);
@@ -493,7 +546,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 12] = [
+        let keys: [(&str, Option<Range<usize>>); 14] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -509,6 +562,8 @@ impl Ctx<'_> {
             ("from", p.from.as_ref().map(Spanned::span)),
             ("to", p.to.as_ref().map(Spanned::span)),
             ("mass", p.mass.as_ref().map(Spanned::span)),
+            ("thickness", p.thickness.as_ref().map(Spanned::span)),
+            ("diameter", p.diameter.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
@@ -522,6 +577,7 @@ impl Ctx<'_> {
                 "corner",
                 "edges",
                 "mass",
+                "thickness",
             ],
             Shape::Rod => &[
                 "linear_density",
@@ -531,6 +587,7 @@ impl Ctx<'_> {
                 "from",
                 "to",
                 "mass",
+                "diameter",
             ],
             Shape::Point => &["center", "mass"],
         };
@@ -640,8 +697,15 @@ impl Ctx<'_> {
                 format!("the second moments of `{name}` underflow the range of f64"),
             ));
         }
+        let real = match (shape, &p.thickness, &p.diameter) {
+            (Shape::Plate, Some(q), _) => Some(self.real_size(Solid::Box, q, "thickness", mass)?),
+            (Shape::Rod, _, Some(q)) => {
+                Some(self.real_size(Solid::Cylinder, q, "diameter", mass)?)
+            }
+            _ => None,
+        };
         let spec = self.spec(shape, p, edges_given, orientation.clone())?;
-        Ok(Part {
+        let part = Part {
             name,
             shape,
             mass,
@@ -649,7 +713,35 @@ impl Ctx<'_> {
             axes: rotation::to_matrix3(&orientation.matrix()),
             local_second_moment,
             spec,
-        })
+        };
+        Ok((part, real))
+    }
+
+    /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
+    /// file's length unit. `mass` (kg) checks that the second moment it
+    /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
+    /// = m (d/2)²/4 for the cylinder.
+    fn real_size(
+        &self,
+        solid: Solid,
+        q: &Spanned<Quantity>,
+        key: &str,
+        mass: f64,
+    ) -> Result<(Solid, f64), Diagnostic> {
+        let si = self.positive(q, key, Dim::LENGTH)?;
+        let extra = match solid {
+            Solid::Box => mass * si * si / 12.0,
+            Solid::Cylinder => mass * si * si / 16.0,
+        };
+        if !extra.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too large: the solid's second moment overflows the range of f64"
+                ),
+            ));
+        }
+        Ok((solid, self.file_quantity(q, key, Dim::LENGTH)?))
     }
 
     fn placement_canonical(
@@ -851,10 +943,10 @@ fn shape_help(shape: Shape) -> &'static str {
             "a box takes `mass` or `density`, and `size` with `center` (and optional `rotation`), or `corner` with three `edges`"
         }
         Shape::Plate => {
-            "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`"
+            "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`; optionally its real `thickness`"
         }
         Shape::Rod => {
-            "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`"
+            "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`; optionally its real `diameter`"
         }
         Shape::Point => "a point takes `mass` and `center`",
     }

@@ -53,6 +53,10 @@ pub struct RawPart {
     pub edges: Option<Spanned<Vec<Vector>>>,
     pub from: Option<Vector>,
     pub to: Option<Vector>,
+    /// A plate's real thickness: reported against, never composed.
+    pub thickness: Option<Spanned<Quantity>>,
+    /// A rod's real diameter: reported against, never composed.
+    pub diameter: Option<Spanned<Quantity>>,
 }
 
 #[derive(Deserialize, Debug)]

@@ -2,6 +2,7 @@
 //! renders. `json` serializes it as the documented contract; `table` prints
 //! it for people in the file's units.
 
+pub mod ideal;
 pub mod json;
 pub mod table;
 
@@ -61,6 +62,10 @@ pub struct PartSummary {
     /// Fraction of the total mass, 0 to 1.
     pub mass_fraction: f64,
     pub center_of_mass: [f64; 3],
+    /// The part's share of each principal moment about the centre of mass
+    /// (0 to 1; the shares of all parts sum to 1); `None` (null) where the
+    /// moment is zero. See `ideal::shares`.
+    pub principal_moment_share: [Option<f64>; 3],
 }
 
 /// Everything `report` prints, in SI. Field names are the JSON keys.
@@ -99,6 +104,10 @@ pub struct Summary {
     pub alpha: Option<[f64; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub euler_moment: Option<[f64; 3]>,
+    /// The principal moments with thin plates and slender rods made solid;
+    /// present only when a part gives its `thickness` or `diameter`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub idealisation: Option<ideal::Idealisation>,
     /// Whether a reference point was given (else it is the centre of mass).
     #[serde(skip)]
     pub reference_given: bool,
@@ -199,6 +208,8 @@ pub fn summarize(
         .map(|i| ((i * f_inertia) / mass_dd).sqrt().f64());
     finite(&radii, "radii of gyration")?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
+    let shares = ideal::shares(&model.parts, &body, &p_com);
+    let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;
 
     let times = |m: &M3<DD>, v: &Vector3<f64>| -> [DD; 3] {
         std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
@@ -252,12 +263,14 @@ pub fn summarize(
         parts: model
             .parts
             .iter()
-            .map(|p| PartSummary {
+            .zip(shares)
+            .map(|(p, share)| PartSummary {
                 name: p.name.clone(),
                 shape: p.shape,
                 mass: p.mass,
                 mass_fraction: p.mass / mass,
                 center_of_mass: arr(&p.center),
+                principal_moment_share: share,
             })
             .collect(),
         omega: analysis.omega.as_ref().map(arr),
@@ -265,6 +278,7 @@ pub fn summarize(
         kinetic_energy: t,
         alpha: analysis.alpha.as_ref().map(arr),
         euler_moment: m,
+        idealisation,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
     })

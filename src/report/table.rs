@@ -2,6 +2,7 @@
 //! (what the engineer wrote and would compare with a CAD dialog), dynamics in
 //! SI, six significant digits. Full precision is in the JSON.
 
+use super::ideal::Idealisation;
 use super::{Products, Summary};
 use crate::compose::Precision;
 use crate::units::{Dim, FileUnits};
@@ -11,6 +12,21 @@ use std::fmt::Write;
 /// `x` to six significant digits: fixed notation for moderate magnitudes,
 /// scientific otherwise, trailing zeros dropped.
 pub fn fmt_num(x: f64) -> String {
+    fmt_sig(x, 6)
+}
+
+/// A fraction as a percentage to three significant digits (shares and
+/// relative changes are read as orders of magnitude, not to six digits);
+/// `None`, an undefined ratio, as "—".
+pub fn fmt_percent(fraction: Option<f64>) -> String {
+    match fraction {
+        Some(f) => format!("{} %", fmt_sig(f * 100.0, 3)),
+        None => "—".to_string(),
+    }
+}
+
+/// `x` to `digits` significant digits (1 or more), as `fmt_num`.
+fn fmt_sig(x: f64, digits: usize) -> String {
     if x == 0.0 {
         return "0".to_string();
     }
@@ -19,11 +35,12 @@ pub fn fmt_num(x: f64) -> String {
         // results; printed honestly rather than panicking if it ever is.
         return x.to_string();
     }
-    let sci = format!("{x:.5e}");
+    let places = digits.max(1) - 1;
+    let sci = format!("{x:.places$e}");
     let (mantissa, exp) = sci.split_once('e').expect("{:e} always has an exponent");
     let exp: i32 = exp.parse().expect("{:e} exponent is an integer");
     if (-4..6).contains(&exp) {
-        let decimals = (5 - exp).max(0) as usize;
+        let decimals = (places as i32 - exp).max(0) as usize;
         let s = format!("{x:.decimals$}");
         trim_zeros(&s)
     } else {
@@ -256,10 +273,13 @@ pub fn render(s: &Summary, source: &str) -> String {
         "name".to_string(),
         "shape".to_string(),
         format!("mass ({})", u.mass_label),
-        "share".to_string(),
+        "mass share".to_string(),
         format!("centroid x ({})", u.length_label),
         "y".to_string(),
         "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
     ]);
     for (i, p) in s.parts.iter().enumerate() {
         let mut cells = vec![
@@ -270,6 +290,7 @@ pub fn render(s: &Summary, source: &str) -> String {
             format!("{:.1} %", p.mass_fraction * 100.0),
         ];
         cells.extend(p.center_of_mass.iter().map(|x| fmt_num(x / u.length)));
+        cells.extend(p.principal_moment_share.map(fmt_percent));
         parts.add_row(cells);
     }
     right_align(&mut parts, 3);
@@ -277,7 +298,67 @@ pub fn render(s: &Summary, source: &str) -> String {
         c.set_cell_alignment(CellAlignment::Right);
     }
     let _ = writeln!(out, "{parts}");
+    let _ = writeln!(
+        out,
+        "I1–I3 share: each part's share of each principal moment about the centre of mass"
+    );
+    if s.parts
+        .iter()
+        .any(|p| p.principal_moment_share.contains(&None))
+    {
+        let _ = writeln!(
+            out,
+            "note: — marks a principal moment that is zero (a lone rod's axial moment): it has no shares"
+        );
+    }
+    if let Some(i) = &s.idealisation {
+        idealisation(&mut out, i, &u);
+    }
     out
+}
+
+/// The idealisation section: the change of each principal moment with the
+/// plates and rods that give their real size made solid.
+fn idealisation(out: &mut String, i: &Idealisation, u: &Units) {
+    let _ = writeln!(
+        out,
+        "\nidealisation (thin plates and slender rods as solids)"
+    );
+    let m = i.principal_moments_solid.map(|x| fmt_num(x / u.inertia));
+    let _ = writeln!(
+        out,
+        "principal moments with the parts below solid ({}): {}, {}, {}",
+        u.inertia_label, m[0], m[1], m[2]
+    );
+    let mut t = new_table();
+    t.set_header(vec![
+        "made solid",
+        "as",
+        "I1 change",
+        "I2 change",
+        "I3 change",
+    ]);
+    let mut row = |name: &str, solid: &str, change: &[Option<f64>; 3]| {
+        let mut cells = vec![name.to_string(), solid.to_string()];
+        cells.extend(change.map(fmt_percent));
+        t.add_row(cells);
+    };
+    row("all together", "", &i.relative_change);
+    for p in &i.parts {
+        row(&p.name, p.solid.name(), &p.relative_change);
+    }
+    right_align(&mut t, 2);
+    let _ = writeln!(out, "{t}");
+    let _ = writeln!(
+        out,
+        "change: (solid − idealised) / idealised of each principal moment, ascending"
+    );
+    if i.relative_change.contains(&None) {
+        let _ = writeln!(
+            out,
+            "note: — marks a principal moment that is zero when idealised (a lone rod's axial moment); compare the moments"
+        );
+    }
 }
 
 #[cfg(test)]
@@ -294,5 +375,16 @@ mod tests {
         assert_eq!(fmt_num(0.00001234567), "1.23457e-5");
         assert_eq!(fmt_num(0.0), "0");
         assert_eq!(fmt_num(2.0), "2");
+    }
+
+    #[test]
+    fn percentages_show_three_significant_digits_and_a_dash_for_none() {
+        use super::fmt_percent;
+        assert_eq!(fmt_percent(Some(1.0 / 3.0)), "33.3 %");
+        assert_eq!(fmt_percent(Some(1e-6)), "0.0001 %");
+        assert_eq!(fmt_percent(Some(1.234_567e-9)), "1.23e-7 %");
+        assert_eq!(fmt_percent(Some(1.0)), "100 %");
+        assert_eq!(fmt_percent(Some(0.0)), "0 %");
+        assert_eq!(fmt_percent(None), "—");
     }
 }

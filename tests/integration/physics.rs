@@ -611,3 +611,266 @@ fn extreme_masses_and_lengths_scale_exactly() {
         }
     }
 }
+
+// Idealisation: a plate's `thickness` and a rod's `diameter`; shares of the
+// principal moments.
+
+fn summary_in(text: &str, precision: Precision) -> Summary {
+    let source = Source::new("test.toml", text);
+    let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
+    summarize(&model, &model.analysis, Products::Tensor, precision).expect("summary")
+}
+
+fn idealisation(s: &Summary) -> &massprop::report::ideal::Idealisation {
+    s.idealisation.as_ref().expect("the file gives a real size")
+}
+
+/// A plate in an oblique orientation with a box beside it, once with the
+/// plate's `thickness` and once with the plate replaced by the solid box it
+/// stands for (same mass, centre and rotation).
+fn plate_and_box(t: f64) -> (String, String) {
+    let other =
+        "[[part]]\nshape = \"box\"\nmass = 2\nsize = [0.5, 0.25, 1]\ncenter = [1, -0.5, 0.25]\n";
+    let place = "center = [-0.25, 0.5, 0.125]\nrotation = { axis = [1, 2, -0.5], degrees = 33 }";
+    let plate = format!(
+        "{other}[[part]]\nshape = \"plate\"\nmass = 3\nsize = [1.5, 0.75]\n{place}\nthickness = {t:?}\n"
+    );
+    let solid =
+        format!("{other}[[part]]\nshape = \"box\"\nmass = 3\nsize = [1.5, 0.75, {t:?}]\n{place}\n");
+    (plate, solid)
+}
+
+#[test]
+fn a_plate_with_thickness_reports_the_moments_of_the_solid_box() {
+    for t in [0.1, 0.01, 0.6] {
+        let (plate, solid) = plate_and_box(t);
+        let (p, b) = (summary(&plate), summary(&solid));
+        let i = idealisation(&p);
+        for (k, (got, want)) in i
+            .principal_moments_solid
+            .iter()
+            .zip(b.principal_moments)
+            .enumerate()
+        {
+            // Both sides composed and diagonalised in f64: a few roundings
+            // of the largest moment each.
+            assert!(
+                (got - want).abs() <= 32.0 * EPS * b.principal_moments[2],
+                "t = {t}, I{}: {got} vs box {want}",
+                k + 1,
+            );
+        }
+        // Making a part solid adds a positive semi-definite term to the
+        // inertia, so no moment decreases; each change is the box's moment
+        // over the plate's, minus one.
+        for (k, c) in i.relative_change.iter().enumerate() {
+            let want = b.principal_moments[k] / p.principal_moments[k] - 1.0;
+            let c = c.expect("no moment is zero");
+            assert!(c >= 0.0);
+            assert!(
+                (c - want).abs() <= 64.0 * EPS * p.principal_moments[2] / p.principal_moments[k],
+                "t = {t}: {c:e} vs {want:e}"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_plate_by_corner_and_edges_reports_the_solid_box_too() {
+    // Oblique edges of length 3 and 1.5; the box is the plate spread over
+    // t/2 either side of it along the unit normal.
+    let [e1, e2, e3] = oblique();
+    let (e1, e2, n) = (e1, e2 * 0.5, e3 / 3.0);
+    let (corner, t) = (Vector3::new(1e6, -2e6, 0.5), 0.25);
+    let plate = format!(
+        "[[part]]\nshape = \"plate\"\nmass = 5\ncorner = {}\nedges = [{}, {}]\nthickness = {t:?}\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = {}\n",
+        arr(&corner),
+        arr(&e1),
+        arr(&e2),
+        arr(&(corner + Vector3::new(2.0, 1.0, 0.5)))
+    );
+    let solid = format!(
+        "[[part]]\nshape = \"box\"\nmass = 5\ncorner = {}\nedges = [{}, {}, {}]\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = {}\n",
+        arr(&(corner - n * (t / 2.0))),
+        arr(&e1),
+        arr(&e2),
+        arr(&(n * t)),
+        arr(&(corner + Vector3::new(2.0, 1.0, 0.5)))
+    );
+    let (p, b) = (summary(&plate), summary(&solid));
+    let got = idealisation(&p).principal_moments_solid;
+    for (got, want) in got.iter().zip(b.principal_moments) {
+        // The box's corner 1e6 from the origin rounds to 1e6 ε ≈ 2e-10 of
+        // the edges: the moments agree to that.
+        assert!(
+            (got - want).abs() <= 1e-9 * b.principal_moments[2],
+            "{got} vs box {want}"
+        );
+    }
+}
+
+#[test]
+fn a_rod_with_diameter_reports_the_moments_of_the_solid_cylinder() {
+    // Axis (1, 2, 2)/3, length 3: I_axial = m r²/2, I_across = m(3r² + L²)/12.
+    let (m, l, d) = (4.0, 3.0, 0.2);
+    let r = d / 2.0;
+    let s = summary(&format!(
+        "[[part]]\nshape = \"rod\"\nmass = {m:?}\nfrom = [1, -1, 2]\nto = [2, 1, 4]\ndiameter = {d:?}\n"
+    ));
+    let i = idealisation(&s);
+    let want = [
+        m * r * r / 2.0,
+        m * (3.0 * r * r + l * l) / 12.0,
+        m * (3.0 * r * r + l * l) / 12.0,
+    ];
+    for k in 0..3 {
+        assert!(
+            (i.principal_moments_solid[k] - want[k]).abs() <= 32.0 * EPS * want[2],
+            "I{}: {} vs {}",
+            k + 1,
+            i.principal_moments_solid[k],
+            want[k]
+        );
+    }
+    // The idealised axial moment is 0: its change is not a number.
+    assert_eq!(i.relative_change[0], None);
+    assert_eq!(s.parts[0].principal_moment_share[0], None);
+    let across = 3.0 * r * r / (l * l);
+    for c in &i.relative_change[1..] {
+        let c = c.expect("the moments across the rod are not zero");
+        assert!((c - across).abs() <= 64.0 * EPS, "{c:e} vs {across:e}");
+    }
+    assert_eq!(i.parts[0].relative_change, i.relative_change);
+}
+
+#[test]
+fn a_thin_plate_changes_its_moments_by_the_square_of_its_thinness() {
+    // Square plate a × a, t = 1e-3 a: in-plane moments m(a² + t²)/12 against
+    // m a²/12, a change of (t/a)² = 1e-6; the moment about the normal is
+    // m a²/6 either way.
+    let text = "[[part]]\nshape = \"plate\"\nmass = 2\nsize = [0.5, 0.5]\ncenter = [1, 2, 3]\nthickness = 5e-4\n";
+    let c = idealisation(&summary(text))
+        .relative_change
+        .map(Option::unwrap);
+    for c in &c[..2] {
+        // Error: a few ε of I3 = 2 I1, relative to I1.
+        assert!((c - 1e-6).abs() <= 16.0 * EPS, "{c:e}");
+    }
+    assert!(c[2].abs() <= 16.0 * EPS, "{:e}", c[2]);
+}
+
+#[test]
+fn extended_precision_resolves_a_change_below_f64() {
+    // t/a = 1e-9 in an oblique orientation: a change of 1e-18, beneath the
+    // rounding of an f64 composition, is resolved in double-double.
+    let text = "[[part]]\nshape = \"plate\"\nmass = 2\nsize = [0.5, 0.5]\ncenter = [1, 2, 3]\nrotation = { axis = [1, 2, 3], degrees = 40 }\nthickness = 5e-10\n";
+    let s = summary_in(text, Precision::Extended);
+    let c = idealisation(&s).relative_change.map(Option::unwrap);
+    let dd = <massprop::numeric::DD as Real>::EPS;
+    for c in &c[..2] {
+        assert!((c - 1e-18).abs() <= 1e-18 * 1e-9 + 64.0 * dd, "{c:e}");
+    }
+    assert!(c[2].abs() <= 64.0 * dd, "{:e}", c[2]);
+}
+
+#[test]
+fn thickness_and_diameter_change_nothing_in_the_composition() {
+    let with = "[[part]]\nshape = \"plate\"\nmass = 3\nsize = [2, 1]\ncenter = [0, 1, 0]\nthickness = \"1 cm\"\n[[part]]\nshape = \"rod\"\nmass = 1\nfrom = [0, 0, 0]\nto = [1, 1, 0]\ndiameter = 0.05\n";
+    let without = with
+        .replace("thickness = \"1 cm\"\n", "")
+        .replace("diameter = 0.05\n", "");
+    let (a, b) = (summary(with), summary(&without));
+    assert!(a.idealisation.is_some() && b.idealisation.is_none());
+    let json = |s: &Summary| {
+        let mut v: serde_json::Value =
+            serde_json::from_str(&massprop::report::json::render(s)).unwrap();
+        v.as_object_mut().unwrap().remove("idealisation");
+        v
+    };
+    assert_eq!(json(&a), json(&b));
+}
+
+#[test]
+fn idealisation_is_absent_from_json_without_real_sizes() {
+    let s = summary(&assembly(Vector3::zeros(), false));
+    let v: serde_json::Value = serde_json::from_str(&massprop::report::json::render(&s)).unwrap();
+    assert!(v.get("idealisation").is_none());
+    assert!(v["parts"][0]["principal_moment_share"].is_array());
+}
+
+#[test]
+fn shares_of_every_principal_moment_sum_to_one() {
+    for k in [0, 3, 9] {
+        let t = Vector3::new(1.0, -2.0, 3.0) * 10f64.powi(k);
+        let s = summary(&assembly(t, false));
+        for m in 0..3 {
+            let sum: f64 = s
+                .parts
+                .iter()
+                .map(|p| p.principal_moment_share[m].unwrap())
+                .sum();
+            // Each share carries a few ε of I3 / I_m; four parts.
+            let bound = 32.0 * EPS * s.principal_moments[2] / s.principal_moments[m];
+            assert!(
+                (sum - 1.0).abs() <= bound,
+                "offset 1e{k}, I{}: {sum}",
+                m + 1
+            );
+            assert!(
+                s.parts
+                    .iter()
+                    .all(|p| p.principal_moment_share[m] >= Some(0.0))
+            );
+        }
+        // Far from the origin the shares are those of the same assembly at
+        // the origin: offsets come from the centre of mass.
+        let base = summary(&assembly(Vector3::zeros(), false));
+        for (p, q) in s.parts.iter().zip(&base.parts) {
+            for m in 0..3 {
+                let (a, b) = (p.principal_moment_share[m], q.principal_moment_share[m]);
+                assert!(
+                    (a.unwrap() - b.unwrap()).abs()
+                        <= 64.0 * EPS * base.principal_moments[2] / base.principal_moments[m],
+                    "offset 1e{k}: {a:?} vs {b:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_gram_at_the_centre_of_mass_has_no_share_and_one_a_metre_away_a_small_one() {
+    // A 10 kg unit cube and a 1 g point at its centre: the point adds
+    // nothing to any moment.
+    let cube = "[[part]]\nshape = \"box\"\nmass = 10\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n";
+    let s = summary(&format!(
+        "{cube}[[part]]\nshape = \"point\"\nmass = 0.001\ncenter = [0, 0, 0]\n"
+    ));
+    for m in 0..3 {
+        assert!(s.parts[1].principal_moment_share[m].unwrap() <= EPS);
+        assert!((s.parts[0].principal_moment_share[m].unwrap() - 1.0).abs() <= 8.0 * EPS);
+    }
+    // One metre away along x: the centre moves by δ = 0.001/10.001; about
+    // an axis across x the point contributes 0.001 (1 − δ)² of
+    // I = 10/6 + 10 δ² + 0.001 (1 − δ)²; along x, nothing.
+    let s = summary(&format!(
+        "{cube}[[part]]\nshape = \"point\"\nmass = 0.001\ncenter = [1, 0, 0]\n"
+    ));
+    let delta = 0.001 / 10.001;
+    let point = 0.001 * (1.0 - delta) * (1.0 - delta);
+    let want = point / (10.0 / 6.0 + 10.0 * delta * delta + point);
+    let axial = (0..3)
+        .find(|&m| s.principal_axes[m][0].abs() > 0.5)
+        .expect("one principal axis is x");
+    for m in 0..3 {
+        let share = s.parts[1].principal_moment_share[m].unwrap();
+        if m == axial {
+            assert!(share <= EPS, "{share:e}");
+        } else {
+            assert!(
+                (share - want).abs() <= 16.0 * EPS * want,
+                "{share:e} vs {want:e}"
+            );
+        }
+    }
+}
