@@ -5,4 +5,7 @@ mod check;
 mod cli;
 mod common;
 mod diff;
+mod invariants;
 mod physics;
+mod reference;
+mod stress;

@@ -1,0 +1,1581 @@
+//! An exact reference composer, for the accuracy tests only (issue 4).
+//!
+//! Every finite f64 is a dyadic rational, so a scene's inputs are taken
+//! *exactly*, and every unit factor is an exact fraction (0.0254 m, 0.45359237
+//! kg, …). The "true answer" of a scene is the exact result for those f64
+//! inputs: mass, centre of mass, C = ∫ρρᵀ dm about it and the inertia tensor
+//! I = tr(C)·E − C, all as `BigRational`s with no rounding at all. The only
+//! inexact steps are square roots (measures of parts placed by edges with a
+//! density: relative 2⁻²⁰⁰) and eigenvalues (relative 2⁻¹⁴¹, ≈ 43 digits).
+//!
+//! The derivation is independent of massprop's code: rotations come from the
+//! quaternion sandwich product q v q̄ / |q|², shapes from the textbook
+//! segment ∫x² dm = m a²/12 over the edge vectors, and composition sums
+//! exact first and second moments. Eigenvalues come from the exact
+//! characteristic polynomial (see [`CharPoly`]), never from an iterative
+//! solver.
+//!
+//! The module also holds the scene description the stress and property
+//! tests share, and [`to_toml`], which writes a scene as a part file whose
+//! numbers parse back to exactly the same f64 values.
+
+use num_bigint::{BigInt, Sign};
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use std::fmt::Write as _;
+
+/// An exact rational number.
+pub type Q = BigRational;
+pub type V3 = [Q; 3];
+/// Rows of a 3×3 matrix.
+pub type M3 = [[Q; 3]; 3];
+
+// ---------------------------------------------------------------------------
+// Rational helpers
+
+/// The exact value of a finite f64.
+pub fn q(x: f64) -> Q {
+    Q::from_float(x).expect("reference inputs are finite")
+}
+
+pub fn int(n: i64) -> Q {
+    Q::from_integer(BigInt::from(n))
+}
+
+pub fn frac(n: i64, d: i64) -> Q {
+    Q::new(BigInt::from(n), BigInt::from(d))
+}
+
+/// The f64 nearest to `x` (correctly rounded by num-rational).
+pub fn f(x: &Q) -> f64 {
+    x.to_f64().expect("a rational converts to f64")
+}
+
+pub fn fv(v: &V3) -> [f64; 3] {
+    [f(&v[0]), f(&v[1]), f(&v[2])]
+}
+
+pub fn fm(m: &M3) -> [[f64; 3]; 3] {
+    [fv(&m[0]), fv(&m[1]), fv(&m[2])]
+}
+
+pub fn qv(v: [f64; 3]) -> V3 {
+    v.map(q)
+}
+
+fn add(a: &V3, b: &V3) -> V3 {
+    std::array::from_fn(|i| &a[i] + &b[i])
+}
+
+fn sub(a: &V3, b: &V3) -> V3 {
+    std::array::from_fn(|i| &a[i] - &b[i])
+}
+
+fn scale(a: &V3, s: &Q) -> V3 {
+    std::array::from_fn(|i| &a[i] * s)
+}
+
+pub fn dot(a: &V3, b: &V3) -> Q {
+    &a[0] * &b[0] + &a[1] * &b[1] + &a[2] * &b[2]
+}
+
+pub fn cross(a: &V3, b: &V3) -> V3 {
+    [
+        &a[1] * &b[2] - &a[2] * &b[1],
+        &a[2] * &b[0] - &a[0] * &b[2],
+        &a[0] * &b[1] - &a[1] * &b[0],
+    ]
+}
+
+fn zero_v() -> V3 {
+    std::array::from_fn(|_| Q::zero())
+}
+
+fn zero_m() -> M3 {
+    std::array::from_fn(|_| zero_v())
+}
+
+/// a bᵀ
+fn outer(a: &V3, b: &V3) -> M3 {
+    std::array::from_fn(|i| std::array::from_fn(|j| &a[i] * &b[j]))
+}
+
+fn madd(a: &M3, b: &M3) -> M3 {
+    std::array::from_fn(|i| add(&a[i], &b[i]))
+}
+
+fn mscale(a: &M3, s: &Q) -> M3 {
+    std::array::from_fn(|i| scale(&a[i], s))
+}
+
+pub fn mmul(a: &M3, b: &M3) -> M3 {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| &a[i][0] * &b[0][j] + &a[i][1] * &b[1][j] + &a[i][2] * &b[2][j])
+    })
+}
+
+pub fn transpose(a: &M3) -> M3 {
+    std::array::from_fn(|i| std::array::from_fn(|j| a[j][i].clone()))
+}
+
+pub fn mvec(a: &M3, v: &V3) -> V3 {
+    std::array::from_fn(|i| dot(&a[i], v))
+}
+
+/// I = tr(C)·E − C: tensor convention, off-diagonals −∫xy dm.
+pub fn inertia_of(c: &M3) -> M3 {
+    let tr = &c[0][0] + &c[1][1] + &c[2][2];
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if i == j {
+                &tr - &c[i][j]
+            } else {
+                -c[i][j].clone()
+            }
+        })
+    })
+}
+
+/// √x for x ≥ 0, to relative 2⁻²⁰⁰ (a lower bound): √(n/d) = √(n·d)/d, with
+/// the integer square root of n·d·4ᵏ for a k that makes it at least 2⁴⁰⁰,
+/// so the floor loses less than 1 part in 2²⁰⁰.
+pub fn sqrt(x: &Q) -> Q {
+    assert!(!x.is_negative(), "sqrt of a negative number");
+    if x.is_zero() {
+        return Q::zero();
+    }
+    let nd = x.numer() * x.denom();
+    let k = (400u64.saturating_sub(nd.bits()) / 2 + 1) as usize;
+    let root = (nd << (2 * k)).sqrt();
+    Q::new(root, x.denom() << k)
+}
+
+/// Hamilton product of quaternions [w, x, y, z].
+fn qmul(a: &[Q; 4], b: &[Q; 4]) -> [Q; 4] {
+    let [aw, ax, ay, az] = a;
+    let [bw, bx, by, bz] = b;
+    [
+        aw * bw - ax * bx - ay * by - az * bz,
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+    ]
+}
+
+/// The rotation of a quaternion of any non-zero length, exactly: column k
+/// is q eₖ q̄ / |q|² (the sandwich product, not a closed-form matrix).
+pub fn rotation(qn: &[Q; 4]) -> M3 {
+    let n2: Q = qn.iter().map(|x| x * x).sum();
+    let conj = [
+        qn[0].clone(),
+        -qn[1].clone(),
+        -qn[2].clone(),
+        -qn[3].clone(),
+    ];
+    let mut r = zero_m();
+    for k in 0..3 {
+        let mut e: [Q; 4] = std::array::from_fn(|_| Q::zero());
+        e[k + 1] = Q::one();
+        let v = qmul(&qmul(qn, &e), &conj);
+        for i in 0..3 {
+            r[i][k] = &v[i + 1] / &n2;
+        }
+    }
+    r
+}
+
+// ---------------------------------------------------------------------------
+// Scenes
+
+/// File length units, with their exact size in metres.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Length {
+    M,
+    Cm,
+    Mm,
+    Um,
+    Km,
+    In,
+    Ft,
+}
+
+impl Length {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Length::M => "m",
+            Length::Cm => "cm",
+            Length::Mm => "mm",
+            Length::Um => "um",
+            Length::Km => "km",
+            Length::In => "in",
+            Length::Ft => "ft",
+        }
+    }
+
+    /// Metres per unit, exactly.
+    pub fn si(self) -> Q {
+        match self {
+            Length::M => int(1),
+            Length::Cm => frac(1, 100),
+            Length::Mm => frac(1, 1000),
+            Length::Um => frac(1, 1_000_000),
+            Length::Km => int(1000),
+            Length::In => frac(254, 10_000),
+            Length::Ft => frac(3048, 10_000),
+        }
+    }
+}
+
+/// File mass units, with their exact size in kilograms.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mass {
+    Kg,
+    G,
+    Mg,
+    T,
+    Lb,
+}
+
+impl Mass {
+    pub fn symbol(self) -> &'static str {
+        match self {
+            Mass::Kg => "kg",
+            Mass::G => "g",
+            Mass::Mg => "mg",
+            Mass::T => "t",
+            Mass::Lb => "lb",
+        }
+    }
+
+    /// Kilograms per unit, exactly.
+    pub fn si(self) -> Q {
+        match self {
+            Mass::Kg => int(1),
+            Mass::G => frac(1, 1000),
+            Mass::Mg => frac(1, 1_000_000),
+            Mass::T => int(1000),
+            Mass::Lb => frac(45_359_237, 100_000_000),
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shape {
+    Box,
+    Plate,
+    Rod,
+    Point,
+}
+
+impl Shape {
+    fn name(self) -> &'static str {
+        match self {
+            Shape::Box => "box",
+            Shape::Plate => "plate",
+            Shape::Rod => "rod",
+            Shape::Point => "point",
+        }
+    }
+
+    fn density_key(self) -> &'static str {
+        match self {
+            Shape::Box => "density",
+            Shape::Plate => "areal_density",
+            Shape::Rod => "linear_density",
+            Shape::Point => panic!("a point takes only a mass"),
+        }
+    }
+
+    /// Volume, area, length: the power of length a density is per.
+    fn dim(self) -> i32 {
+        match self {
+            Shape::Box => 3,
+            Shape::Plate => 2,
+            Shape::Rod => 1,
+            Shape::Point => 0,
+        }
+    }
+}
+
+/// A part's mass, in file units: `mass`, or the shape's density.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Amount {
+    Mass(f64),
+    Density(f64),
+}
+
+/// Where a part sits, in file units.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Place {
+    /// `size` (box [a, b, c], plate [a, b], rod [L] written as `length`,
+    /// point []), `center`, optional `rotation = { quaternion = [w, x, y, z] }`.
+    Center {
+        size: Vec<f64>,
+        center: [f64; 3],
+        quaternion: Option<[f64; 4]>,
+    },
+    /// Box or plate: `corner` and 3 or 2 perpendicular `edges`.
+    Edges {
+        corner: [f64; 3],
+        edges: Vec<[f64; 3]>,
+    },
+    /// Rod: `from` and `to`.
+    FromTo { from: [f64; 3], to: [f64; 3] },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Part {
+    pub shape: Shape,
+    pub amount: Amount,
+    pub place: Place,
+}
+
+impl Part {
+    pub fn cuboid(
+        size: [f64; 3],
+        center: [f64; 3],
+        quaternion: Option<[f64; 4]>,
+        amount: Amount,
+    ) -> Part {
+        Part {
+            shape: Shape::Box,
+            amount,
+            place: Place::Center {
+                size: size.to_vec(),
+                center,
+                quaternion,
+            },
+        }
+    }
+
+    pub fn plate(
+        size: [f64; 2],
+        center: [f64; 3],
+        quaternion: Option<[f64; 4]>,
+        amount: Amount,
+    ) -> Part {
+        Part {
+            shape: Shape::Plate,
+            amount,
+            place: Place::Center {
+                size: size.to_vec(),
+                center,
+                quaternion,
+            },
+        }
+    }
+
+    pub fn rod(
+        length: f64,
+        center: [f64; 3],
+        quaternion: Option<[f64; 4]>,
+        amount: Amount,
+    ) -> Part {
+        Part {
+            shape: Shape::Rod,
+            amount,
+            place: Place::Center {
+                size: vec![length],
+                center,
+                quaternion,
+            },
+        }
+    }
+
+    pub fn point(mass: f64, center: [f64; 3]) -> Part {
+        Part {
+            shape: Shape::Point,
+            amount: Amount::Mass(mass),
+            place: Place::Center {
+                size: vec![],
+                center,
+                quaternion: None,
+            },
+        }
+    }
+
+    pub fn box_edges(corner: [f64; 3], edges: [[f64; 3]; 3], amount: Amount) -> Part {
+        Part {
+            shape: Shape::Box,
+            amount,
+            place: Place::Edges {
+                corner,
+                edges: edges.to_vec(),
+            },
+        }
+    }
+
+    pub fn plate_edges(corner: [f64; 3], edges: [[f64; 3]; 2], amount: Amount) -> Part {
+        Part {
+            shape: Shape::Plate,
+            amount,
+            place: Place::Edges {
+                corner,
+                edges: edges.to_vec(),
+            },
+        }
+    }
+
+    pub fn rod_from_to(from: [f64; 3], to: [f64; 3], amount: Amount) -> Part {
+        Part {
+            shape: Shape::Rod,
+            amount,
+            place: Place::FromTo { from, to },
+        }
+    }
+}
+
+/// A part file: units, parts, and an optional reference point (`about`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    pub length: Length,
+    pub mass: Mass,
+    pub parts: Vec<Part>,
+    pub about: Option<[f64; 3]>,
+}
+
+impl Scene {
+    /// A scene in metres and kilograms.
+    pub fn si(parts: Vec<Part>) -> Scene {
+        Scene {
+            length: Length::M,
+            mass: Mass::Kg,
+            parts,
+            about: None,
+        }
+    }
+
+    /// Every position (centre, corner, rod end, reference point) mapped by
+    /// `point` and every direction (edge) by `dir`; canonical rotations by
+    /// `quat`. Sizes, masses and densities are unchanged.
+    pub fn map(
+        &self,
+        point: impl Fn([f64; 3]) -> [f64; 3],
+        dir: impl Fn([f64; 3]) -> [f64; 3],
+        quat: impl Fn(Option<[f64; 4]>, &Part) -> Option<[f64; 4]>,
+    ) -> Scene {
+        let parts = self
+            .parts
+            .iter()
+            .map(|p| {
+                let place = match &p.place {
+                    Place::Center {
+                        size,
+                        center,
+                        quaternion,
+                    } => Place::Center {
+                        size: size.clone(),
+                        center: point(*center),
+                        quaternion: quat(*quaternion, p),
+                    },
+                    Place::Edges { corner, edges } => Place::Edges {
+                        corner: point(*corner),
+                        edges: edges.iter().map(|e| dir(*e)).collect(),
+                    },
+                    Place::FromTo { from, to } => Place::FromTo {
+                        from: point(*from),
+                        to: point(*to),
+                    },
+                };
+                Part { place, ..p.clone() }
+            })
+            .collect();
+        Scene {
+            parts,
+            about: self.about.map(&point),
+            ..self.clone()
+        }
+    }
+
+    /// The scene moved by `t` (each coordinate rounded to f64; check
+    /// [`Scene::translation_is_exact`] when the test needs it exact).
+    pub fn translated(&self, t: [f64; 3]) -> Scene {
+        self.map(|p| std::array::from_fn(|i| p[i] + t[i]), |e| e, |q, _| q)
+    }
+
+    /// Whether every position plus `t` is exact in f64.
+    pub fn translation_is_exact(&self, t: [f64; 3]) -> bool {
+        let exact = std::cell::Cell::new(true);
+        self.map(
+            |p| {
+                for i in 0..3 {
+                    let s = p[i] + t[i];
+                    if q(s) != q(p[i]) + q(t[i]) {
+                        exact.set(false);
+                    }
+                }
+                p
+            },
+            |e| e,
+            |q, _| q,
+        );
+        exact.get()
+    }
+
+    /// The scene turned a quarter turn about file axis `axis` (0, 1, 2),
+    /// exactly: (x, y, z) → (x, −z, y) about x, and so on. Parts placed by
+    /// `center` with a rotation cannot be turned exactly (the composed
+    /// quaternion rounds) and are refused; unrotated boxes swap sizes.
+    pub fn quarter_turn(&self, axis: usize) -> Scene {
+        let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
+        let turn = move |p: [f64; 3]| {
+            let mut r = p;
+            r[i] = -p[j];
+            r[j] = p[i];
+            r
+        };
+        let mut out = self.map(turn, turn, |q, part| {
+            assert!(
+                q.is_none() && part.shape != Shape::Plate,
+                "quarter_turn: canonical rotated parts and plates cannot turn exactly"
+            );
+            None
+        });
+        for p in &mut out.parts {
+            if let (Shape::Box, Place::Center { size, .. }) = (p.shape, &mut p.place) {
+                size.swap(i, j);
+            }
+        }
+        out
+    }
+
+    /// The scene turned by the rotation of the integer quaternion `r`
+    /// (exactly rational, e.g. [2, 1, 0, 0] has entries 3/5 and 4/5): every
+    /// position and edge is rotated exactly and rounded to f64, and each
+    /// part's quaternion is composed and rounded. The reference takes the
+    /// rounded values, so the rotated scene is a scene of its own.
+    pub fn rotated(&self, r: [i64; 4]) -> Scene {
+        let rq = r.map(int);
+        let rot = rotation(&rq);
+        let turn = |p: [f64; 3]| fv(&mvec(&rot, &qv(p)));
+        let norm = r.iter().map(|x| (x * x) as f64).sum::<f64>().sqrt();
+        self.map(turn, turn, |quat, part| {
+            // An unrotated part gains the rotation itself; a point none.
+            (part.shape != Shape::Point).then(|| {
+                let qq = quat.unwrap_or([1.0, 0.0, 0.0, 0.0]);
+                let prod = qmul(&rq, &qq.map(q));
+                std::array::from_fn(|k| f(&prod[k]) / norm)
+            })
+        })
+    }
+
+    /// The same parts in the order of `order` (indices into `parts`).
+    pub fn reordered(&self, order: &[usize]) -> Scene {
+        Scene {
+            parts: order.iter().map(|&i| self.parts[i].clone()).collect(),
+            ..self.clone()
+        }
+    }
+
+    /// This scene (in m and kg) written in other units: every number is
+    /// converted exactly and rounded once to f64. The reference then takes
+    /// those rounded numbers with the new units' exact factors.
+    pub fn in_units(&self, length: Length, mass: Mass) -> Scene {
+        assert_eq!((self.length, self.mass), (Length::M, Mass::Kg));
+        let l = length.si();
+        let m = mass.si();
+        let len = |x: f64| f(&(q(x) / &l));
+        let pos = |p: [f64; 3]| p.map(len);
+        let parts = self
+            .parts
+            .iter()
+            .map(|p| {
+                let amount = match p.amount {
+                    Amount::Mass(x) => Amount::Mass(f(&(q(x) / &m))),
+                    // kg/m^k → (mass unit)/(length unit)^k
+                    Amount::Density(x) => Amount::Density(f(&(q(x) * pow(&l, p.shape.dim()) / &m))),
+                };
+                let place = match &p.place {
+                    Place::Center {
+                        size,
+                        center,
+                        quaternion,
+                    } => Place::Center {
+                        size: size.iter().map(|&s| len(s)).collect(),
+                        center: pos(*center),
+                        quaternion: *quaternion,
+                    },
+                    Place::Edges { corner, edges } => Place::Edges {
+                        corner: pos(*corner),
+                        edges: edges.iter().map(|e| pos(*e)).collect(),
+                    },
+                    Place::FromTo { from, to } => Place::FromTo {
+                        from: pos(*from),
+                        to: pos(*to),
+                    },
+                };
+                Part {
+                    shape: p.shape,
+                    amount,
+                    place,
+                }
+            })
+            .collect();
+        Scene {
+            length,
+            mass,
+            parts,
+            about: self.about.map(pos),
+        }
+    }
+}
+
+fn pow(x: &Q, k: i32) -> Q {
+    (0..k).fold(Q::one(), |acc, _| acc * x)
+}
+
+// ---------------------------------------------------------------------------
+// The exact composition
+
+/// One part in SI: mass, centroid and ∫ρρᵀ dm about the centroid.
+#[derive(Clone, Debug)]
+pub struct ExactPart {
+    pub mass: Q,
+    pub center: V3,
+    pub second_moment: M3,
+}
+
+/// A scene's exact mass properties, SI.
+#[derive(Clone, Debug)]
+pub struct Exact {
+    pub mass: Q,
+    pub com: V3,
+    /// ∫ρρᵀ dm about the centre of mass.
+    pub second_moment: M3,
+    /// Inertia tensor about the centre of mass (tensor convention).
+    pub inertia: M3,
+    pub parts: Vec<ExactPart>,
+    /// The scene's `about` in SI, if any.
+    pub about: Option<V3>,
+}
+
+/// The second moment of a uniform parallelepiped (or parallelogram, or
+/// segment) of mass m spanned by `edges` about its centroid. With
+/// ρ = Σ tₖ eₖ, tₖ uniform on [−½, ½] and independent, the cross terms
+/// vanish and ∫tₖ² = 1/12: C = (m/12) Σ eₖ eₖᵀ.
+fn spanned(mass: &Q, edges: &[V3]) -> M3 {
+    let twelfth = mass / int(12);
+    edges.iter().fold(zero_m(), |acc, e| {
+        madd(&acc, &mscale(&outer(e, e), &twelfth))
+    })
+}
+
+/// One part reduced to SI, exactly.
+pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
+    let l = length.si();
+    let mu = mass_unit.si();
+    let pos = |p: &[f64; 3]| scale(&qv(*p), &l);
+    // The part's centroid and spanning edges, SI.
+    let (center, edges): (V3, Vec<V3>) = match &part.place {
+        Place::Center {
+            size,
+            center,
+            quaternion,
+        } => {
+            let r = match quaternion {
+                Some(qq) => rotation(&qq.map(q)),
+                None => rotation(&[int(1), int(0), int(0), int(0)]),
+            };
+            let column = |k: usize| -> V3 { std::array::from_fn(|i| r[i][k].clone()) };
+            // Local axes carrying the sizes: box x, y, z; plate x, y; rod z.
+            let axes: &[usize] = match part.shape {
+                Shape::Box => &[0, 1, 2],
+                Shape::Plate => &[0, 1],
+                Shape::Rod => &[2],
+                Shape::Point => &[],
+            };
+            assert_eq!(size.len(), axes.len(), "size entries for the shape");
+            let edges = axes
+                .iter()
+                .zip(size)
+                .map(|(&k, &s)| scale(&column(k), &(q(s) * &l)))
+                .collect();
+            (pos(center), edges)
+        }
+        Place::Edges { corner, edges } => {
+            let e: Vec<V3> = edges.iter().map(&pos).collect();
+            let half = e
+                .iter()
+                .fold(zero_v(), |acc, x| add(&acc, &scale(x, &frac(1, 2))));
+            (add(&pos(corner), &half), e)
+        }
+        Place::FromTo { from, to } => {
+            let (a, b) = (pos(from), pos(to));
+            let e = sub(&b, &a);
+            (scale(&add(&a, &b), &frac(1, 2)), vec![e])
+        }
+    };
+    let mass = match part.amount {
+        Amount::Mass(m) => q(m) * &mu,
+        Amount::Density(rho) => {
+            let rho = q(rho) * &mu / pow(&l, part.shape.dim());
+            // Volume, area or length: the product of the edge lengths
+            // (edges are perpendicular), exact for `size`, else a square root.
+            let measure = match &part.place {
+                Place::Center { size, .. } => size.iter().map(|&s| q(s) * &l).product(),
+                _ => sqrt(&edges.iter().map(|e| dot(e, e)).product()),
+            };
+            rho * measure
+        }
+    };
+    ExactPart {
+        second_moment: spanned(&mass, &edges),
+        mass,
+        center,
+    }
+}
+
+/// Compose a scene exactly.
+pub fn compose(scene: &Scene) -> Exact {
+    let parts: Vec<ExactPart> = scene
+        .parts
+        .iter()
+        .map(|p| exact_part(p, scene.length, scene.mass))
+        .collect();
+    let mass: Q = parts.iter().map(|p| p.mass.clone()).sum();
+    let first = parts
+        .iter()
+        .fold(zero_v(), |acc, p| add(&acc, &scale(&p.center, &p.mass)));
+    let com = scale(&first, &(Q::one() / &mass));
+    let second_moment = parts.iter().fold(zero_m(), |acc, p| {
+        let d = sub(&p.center, &com);
+        madd(
+            &madd(&acc, &p.second_moment),
+            &mscale(&outer(&d, &d), &p.mass),
+        )
+    });
+    let l = scene.length.si();
+    Exact {
+        inertia: inertia_of(&second_moment),
+        about: scene.about.map(|a| scale(&qv(a), &l)),
+        mass,
+        com,
+        second_moment,
+        parts,
+    }
+}
+
+impl Exact {
+    /// Inertia tensor about `point` (SI): the shift C + m d dᵀ, d = c − point.
+    pub fn inertia_about(&self, point: &V3) -> M3 {
+        let d = sub(&self.com, point);
+        inertia_of(&madd(
+            &self.second_moment,
+            &mscale(&outer(&d, &d), &self.mass),
+        ))
+    }
+
+    /// Σ mᵢ|cᵢ| / m, the scale of the centre of mass that rounding in the
+    /// first moments is relative to (|c| itself can be tiny by cancellation).
+    pub fn com_scale(&self) -> f64 {
+        self.parts
+            .iter()
+            .map(|p| f(&p.mass) * norm(&p.center))
+            .sum::<f64>()
+            / f(&self.mass)
+    }
+
+    pub fn principal(&self) -> Principal {
+        principal(&self.inertia)
+    }
+}
+
+/// |v| in f64 (for scales, not for comparisons).
+pub fn norm(v: &V3) -> f64 {
+    f(&dot(v, v)).sqrt()
+}
+
+// ---------------------------------------------------------------------------
+// Eigenvalues
+
+/// The characteristic polynomial p(λ) = det(λE − A) = λ³ − tλ² + c₁λ − det A
+/// of a rational symmetric matrix, times the least common denominator D of
+/// its coefficients, so that it has integer coefficients.
+///
+/// NOTE: the roots are located by counting, not by sign changes of p alone,
+/// so equal and nearly equal eigenvalues need no special care. Shifted to a
+/// point x, p(x + μ) = μ³ + ½p″(x) μ² + p′(x) μ + p(x). A polynomial whose
+/// roots are all real (A is symmetric) has exactly as many positive roots as
+/// its coefficients have sign changes (Descartes' rule is exact then), so
+/// the sign changes of (1, ½p″(x), p′(x), p(x)) count the eigenvalues above
+/// x, and the trailing zeros among them the eigenvalues equal to x. Those
+/// counts, at dyadic x, drive a bisection for each eigenvalue in turn.
+pub struct CharPoly {
+    /// [D, −tD, c₁D, −det·D]
+    coeffs: [BigInt; 4],
+}
+
+impl CharPoly {
+    pub fn new(a: &M3) -> CharPoly {
+        let t = &a[0][0] + &a[1][1] + &a[2][2];
+        let minor = |i: usize, j: usize| &a[i][i] * &a[j][j] - &a[i][j] * &a[j][i];
+        let c1 = minor(0, 1) + minor(0, 2) + minor(1, 2);
+        let det = dot(&a[0], &cross(&a[1], &a[2]));
+        let raw = [Q::one(), -t, c1, -det];
+        let lcm = raw
+            .iter()
+            .fold(BigInt::one(), |acc, c| num_integer_lcm(&acc, c.denom()));
+        let coeffs = raw.map(|c| (c * Q::from_integer(lcm.clone())).to_integer());
+        CharPoly { coeffs }
+    }
+
+    /// (number of roots below x, number equal to x) for x = n·2⁻ᵏ.
+    pub fn locate(&self, n: &BigInt, k: i64) -> (usize, usize) {
+        // Scale to an integer numerator over 2^k with k ≥ 0.
+        let (n, k) = if k < 0 {
+            (n << (-k) as usize, 0usize)
+        } else {
+            (n.clone(), k as usize)
+        };
+        let [d, a, b, c] = &self.coeffs;
+        let s = BigInt::one() << k;
+        let s2 = &s * &s;
+        let n2 = &n * &n;
+        // 8ᵏ·D·p(x), 4ᵏ·D·p′(x), 2ᵏ·D·½p″(x): positive multiples, same signs.
+        let p0 = d * &n2 * &n + a * &n2 * &s + b * &n * &s2 + c * &s2 * &s;
+        let (two, three) = (BigInt::from(2), BigInt::from(3));
+        let p1 = d * &n2 * &three + a * &n * &s * &two + b * &s2;
+        let p2 = d * &n * &three + a * &s;
+        let multiplicity = if !p0.is_zero() {
+            0
+        } else if !p1.is_zero() {
+            1
+        } else if !p2.is_zero() {
+            2
+        } else {
+            3
+        };
+        let signs: Vec<Sign> = [d, &p2, &p1, &p0]
+            .into_iter()
+            .map(BigInt::sign)
+            .filter(|s| *s != Sign::NoSign)
+            .collect();
+        let above = signs.windows(2).filter(|w| w[0] != w[1]).count();
+        (3 - above - multiplicity, multiplicity)
+    }
+
+    /// The k-th smallest root (k = 0, 1, 2), within relative 2⁻¹⁴¹ (exact
+    /// when a bisection point hits it: always for 0, and for dyadic roots
+    /// with few bits). All roots lie in (−2ᵉ, 2ᵉ).
+    fn root(&self, k: usize, e: i64) -> Q {
+        let dyadic = |n: &BigInt, k: i64| -> Q {
+            if k >= 0 {
+                Q::new(n.clone(), BigInt::one() << k as usize)
+            } else {
+                Q::from_integer(n << (-k) as usize)
+            }
+        };
+        let (below, equal) = self.locate(&BigInt::zero(), 0);
+        if (below..below + equal).contains(&k) {
+            return Q::zero();
+        }
+        // The root lies in [lo, lo + 1]·2⁻ˢ: [0, 2ᵉ] or [−2ᵉ, 0].
+        let mut scale = -e;
+        let mut lo = if k >= below + equal {
+            BigInt::zero()
+        } else {
+            BigInt::from(-1)
+        };
+        let fine = BigInt::one() << 141usize;
+        loop {
+            // Narrow enough when the interval is within 2⁻¹⁴¹ of its ends.
+            let hi: BigInt = &lo + 1;
+            if lo >= fine || -&hi >= fine {
+                return dyadic(&(&lo * 2 + 1), scale + 1);
+            }
+            let mid = &lo * 2 + 1;
+            scale += 1;
+            let (below, equal) = self.locate(&mid, scale);
+            if k < below {
+                lo = &lo * 2;
+            } else if k < below + equal {
+                return dyadic(&mid, scale);
+            } else {
+                lo = mid;
+            }
+        }
+    }
+}
+
+fn num_integer_lcm(a: &BigInt, b: &BigInt) -> BigInt {
+    let g = gcd(a.clone(), b.clone());
+    (a / g * b).abs()
+}
+
+fn gcd(mut a: BigInt, mut b: BigInt) -> BigInt {
+    while !b.is_zero() {
+        let r = &a % &b;
+        a = b;
+        b = r;
+    }
+    a.abs()
+}
+
+/// The eigenvalues of a rational symmetric matrix, ascending, each within
+/// relative 2⁻¹⁴¹ (≈ 3.5e-43), equal ones equal.
+pub fn eigenvalues(a: &M3) -> [Q; 3] {
+    // Gershgorin: every eigenvalue is within the largest absolute row sum.
+    let g: Q = a
+        .iter()
+        .map(|row| row.iter().map(|x| x.abs()).sum::<Q>())
+        .max()
+        .expect("three rows");
+    if g.is_zero() {
+        return std::array::from_fn(|_| Q::zero());
+    }
+    let mut e = g.numer().bits() as i64 - g.denom().bits() as i64 + 1;
+    let two_to = |e: i64| {
+        if e >= 0 {
+            Q::from_integer(BigInt::one() << e as usize)
+        } else {
+            Q::new(BigInt::one(), BigInt::one() << (-e) as usize)
+        }
+    };
+    // 2ᵉ > G strictly, so a dyadic eigenvalue ±G is a bisection point.
+    while two_to(e - 1) > g {
+        e -= 1;
+    }
+    while two_to(e) <= g {
+        e += 1;
+    }
+    let p = CharPoly::new(a);
+    std::array::from_fn(|k| p.root(k, e))
+}
+
+/// Principal moments (ascending) and, where a moment is separated from the
+/// others, its axis (not normalised).
+#[derive(Clone, Debug)]
+pub struct Principal {
+    pub moments: [Q; 3],
+    /// `None` where the moment equals another within relative 2⁻¹²⁰: the
+    /// axis is not unique.
+    pub axes: [Option<V3>; 3],
+}
+
+impl Principal {
+    /// Relative gap of moment k to its nearest neighbour, over the largest
+    /// moment.
+    pub fn gap(&self, k: usize) -> f64 {
+        let top = f(&self.moments[2]);
+        (0..3)
+            .filter(|&j| j != k)
+            .map(|j| f(&(&self.moments[j] - &self.moments[k]).abs()) / top)
+            .fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// Eigenvalues and axes of a symmetric rational matrix. An axis of a simple
+/// eigenvalue λ is the largest of the cross products of pairs of rows of
+/// A − λE (rows span the plane perpendicular to it); with λ accurate to
+/// 2⁻¹⁴¹, the axis is accurate to about 2⁻¹⁴¹‖A‖/gap.
+pub fn principal(a: &M3) -> Principal {
+    let moments = eigenvalues(a);
+    let top = moments.iter().map(|m| m.abs()).max().expect("three");
+    let tiny = &top * Q::new(BigInt::one(), BigInt::one() << 120usize);
+    let axes = std::array::from_fn(|k| {
+        let separated = (0..3)
+            .filter(|&j| j != k)
+            .all(|j| (&moments[j] - &moments[k]).abs() > tiny);
+        separated.then(|| {
+            let m: M3 = std::array::from_fn(|i| {
+                std::array::from_fn(|j| {
+                    if i == j {
+                        &a[i][j] - &moments[k]
+                    } else {
+                        a[i][j].clone()
+                    }
+                })
+            });
+            [(0, 1), (1, 2), (2, 0)]
+                .map(|(i, j)| cross(&m[i], &m[j]))
+                .into_iter()
+                .max_by(|x, y| dot(x, x).cmp(&dot(y, y)))
+                .expect("three candidates")
+        })
+    });
+    Principal { moments, axes }
+}
+
+// ---------------------------------------------------------------------------
+// Comparisons, computed exactly and returned as f64
+
+/// ‖a − b‖_F / ‖b‖_F for a computed f64 matrix `a` and an exact `b`.
+pub fn rel_frobenius(a: &[[f64; 3]; 3], b: &M3) -> f64 {
+    let mut num = Q::zero();
+    let mut den = Q::zero();
+    for i in 0..3 {
+        for j in 0..3 {
+            let d = q(a[i][j]) - &b[i][j];
+            num += &d * &d;
+            den += &b[i][j] * &b[i][j];
+        }
+    }
+    ratio_sqrt(&num, &den)
+}
+
+/// ‖a − b‖_F / ‖b‖_F for two exact matrices.
+pub fn rel_frobenius_exact(a: &M3, b: &M3) -> f64 {
+    let mut num = Q::zero();
+    let mut den = Q::zero();
+    for i in 0..3 {
+        for j in 0..3 {
+            let d = &a[i][j] - &b[i][j];
+            num += &d * &d;
+            den += &b[i][j] * &b[i][j];
+        }
+    }
+    ratio_sqrt(&num, &den)
+}
+
+/// ‖a − b‖_F / ‖c‖_F, all f64 computed matrices (differences taken exactly).
+pub fn rel_frobenius_f64(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3], c: &[[f64; 3]; 3]) -> f64 {
+    rel_frobenius(a, &b.map(qv)) * norm_f(c) / norm_f(b)
+}
+
+fn norm_f(m: &[[f64; 3]; 3]) -> f64 {
+    m.iter().flatten().map(|x| x * x).sum::<f64>().sqrt()
+}
+
+/// √(num/den), ∞ for x/0 with x ≠ 0 and 0 for 0/0.
+fn ratio_sqrt(num: &Q, den: &Q) -> f64 {
+    match (num.is_zero(), den.is_zero()) {
+        (true, _) => 0.0,
+        (false, true) => f64::INFINITY,
+        _ => f(&(num / den)).sqrt(),
+    }
+}
+
+/// |a − b| / |b|.
+pub fn rel(a: f64, b: &Q) -> f64 {
+    let d = (q(a) - b).abs();
+    ratio_sqrt(&(&d * &d), &(b * b))
+}
+
+/// |a − b| / scale.
+pub fn err_over(a: f64, b: &Q, scale: f64) -> f64 {
+    f(&(q(a) - b).abs()) / scale
+}
+
+/// |a − b| / |b| for vectors.
+pub fn rel_vec(a: &[f64; 3], b: &V3) -> f64 {
+    let d = sub(&qv(*a), b);
+    ratio_sqrt(&dot(&d, &d), &dot(b, b))
+}
+
+/// |a − b| / scale for vectors.
+pub fn vec_err_over(a: &[f64; 3], b: &V3, scale: f64) -> f64 {
+    let d = sub(&qv(*a), b);
+    f(&dot(&d, &d)).sqrt() / scale
+}
+
+/// sin of the angle between the lines of `a` (computed) and `b` (exact, any
+/// length): √(1 − (a·b)²/(|a|²|b|²)), with the difference taken exactly.
+pub fn axis_sin(a: &[f64; 3], b: &V3) -> f64 {
+    let a = qv(*a);
+    let ab = dot(&a, b);
+    let s2 = Q::one() - &ab * &ab / (dot(&a, &a) * dot(b, b));
+    f(&s2).max(0.0).sqrt()
+}
+
+// ---------------------------------------------------------------------------
+// Writing a scene as a part file
+
+/// An f64 as TOML text that parses back to exactly the same value: Rust's
+/// `{:?}` is the shortest round-trip form, and always a TOML float (`1.0`,
+/// `0.1`, `1e-9`, `1.5e16`, `-0.0`: TOML allows an exponent on an integer
+/// part, and Rust never writes `inf`, `NaN` or a bare `1.` for finite values).
+pub fn number(x: f64) -> String {
+    assert!(x.is_finite(), "part files hold finite numbers");
+    let s = format!("{x:?}");
+    debug_assert_eq!(s.parse::<f64>().map(f64::to_bits), Ok(x.to_bits()));
+    s
+}
+
+fn array(v: &[f64]) -> String {
+    let items: Vec<String> = v.iter().map(|&x| number(x)).collect();
+    format!("[{}]", items.join(", "))
+}
+
+/// The scene as a part file.
+pub fn to_toml(scene: &Scene) -> String {
+    let mut s = String::new();
+    writeln!(
+        s,
+        "units = {{ length = \"{}\", mass = \"{}\" }}",
+        scene.length.symbol(),
+        scene.mass.symbol()
+    )
+    .unwrap();
+    for p in &scene.parts {
+        writeln!(s, "\n[[part]]\nshape = \"{}\"", p.shape.name()).unwrap();
+        match p.amount {
+            Amount::Mass(m) => writeln!(s, "mass = {}", number(m)).unwrap(),
+            Amount::Density(d) => writeln!(s, "{} = {}", p.shape.density_key(), number(d)).unwrap(),
+        }
+        match &p.place {
+            Place::Center {
+                size,
+                center,
+                quaternion,
+            } => {
+                match p.shape {
+                    Shape::Box | Shape::Plate => writeln!(s, "size = {}", array(size)).unwrap(),
+                    Shape::Rod => writeln!(s, "length = {}", number(size[0])).unwrap(),
+                    Shape::Point => {}
+                }
+                writeln!(s, "center = {}", array(center)).unwrap();
+                if let Some(qq) = quaternion {
+                    writeln!(s, "rotation = {{ quaternion = {} }}", array(qq)).unwrap();
+                }
+            }
+            Place::Edges { corner, edges } => {
+                let e: Vec<String> = edges.iter().map(|e| array(e)).collect();
+                writeln!(s, "corner = {}\nedges = [{}]", array(corner), e.join(", ")).unwrap();
+            }
+            Place::FromTo { from, to } => {
+                writeln!(s, "from = {}\nto = {}", array(from), array(to)).unwrap();
+            }
+        }
+    }
+    if let Some(a) = scene.about {
+        writeln!(s, "\n[analysis]\nabout = {}", array(&a)).unwrap();
+    }
+    s
+}
+
+// ---------------------------------------------------------------------------
+// Self-tests: the reference must be able to fail.
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn diag(a: i64, b: i64, c: i64) -> M3 {
+        let mut m = zero_m();
+        m[0][0] = int(a);
+        m[1][1] = int(b);
+        m[2][2] = int(c);
+        m
+    }
+
+    fn rel_q(a: &Q, b: &Q) -> f64 {
+        f(&((a - b) / b).abs())
+    }
+
+    /// The rotation of a Pythagorean quadruple: [[3,−2,6],[6,3,−2],[−2,6,3]]/7.
+    fn pythagorean() -> M3 {
+        [[3, -2, 6], [6, 3, -2], [-2, 6, 3]].map(|row| row.map(|x| frac(x, 7)))
+    }
+
+    #[test]
+    fn a_unit_cube_has_moments_of_a_sixth_of_its_mass() {
+        let s = Scene::si(vec![Part::cuboid(
+            [1.0, 1.0, 1.0],
+            [0.5, -2.0, 7.0],
+            None,
+            Amount::Mass(3.0),
+        )]);
+        let e = compose(&s);
+        assert_eq!(e.inertia, mscale(&diag(1, 1, 1), &frac(3, 6)));
+        assert_eq!(e.principal().moments, std::array::from_fn(|_| frac(1, 2)));
+    }
+
+    #[test]
+    fn a_rotated_cube_by_density_is_still_isotropic() {
+        // A non-unit quaternion: R = poly(q)/|q|² is still exactly a rotation.
+        let s = Scene::si(vec![Part::cuboid(
+            [2.0, 2.0, 2.0],
+            [0.0; 3],
+            Some([0.9, 0.1, -0.3, 0.2]),
+            Amount::Density(0.5),
+        )]);
+        let e = compose(&s);
+        assert_eq!(e.mass, int(4));
+        assert_eq!(e.inertia, mscale(&diag(1, 1, 1), &(int(4) * frac(8, 12))));
+    }
+
+    #[test]
+    fn quaternion_rotations_are_exactly_orthonormal() {
+        let r = rotation(&[0.9, 0.1, -0.3, 0.2].map(q));
+        assert_eq!(mmul(&r, &transpose(&r)), diag(1, 1, 1));
+        assert_eq!(dot(&r[0], &cross(&r[1], &r[2])), int(1));
+        // A quarter turn about z takes x to y.
+        let h = q(0.5f64.sqrt());
+        let z = rotation(&[h.clone(), int(0), int(0), h]);
+        assert_eq!(
+            mvec(&z, &[int(1), int(0), int(0)]),
+            [int(0), int(1), int(0)]
+        );
+    }
+
+    #[test]
+    fn rod_and_plate_match_their_closed_forms() {
+        // Rod of mass m, length L about its middle: m L²/12 perpendicular.
+        let rod = compose(&Scene::si(vec![Part::rod_from_to(
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 4.0],
+            Amount::Density(2.0),
+        )]));
+        assert_eq!(rod.mass, int(6));
+        assert_eq!(rod.com, [int(0), int(0), frac(5, 2)]);
+        assert_eq!(rod.inertia, mscale(&diag(1, 1, 0), &frac(6 * 9, 12)));
+        // Plate a × b: m(a² + b²)/12 about its normal, m b²/12 about x.
+        let plate = compose(&Scene::si(vec![Part::plate(
+            [3.0, 4.0],
+            [1.0, 1.0, 1.0],
+            None,
+            Amount::Mass(12.0),
+        )]));
+        assert_eq!(plate.inertia, diag(16, 9, 25));
+    }
+
+    #[test]
+    fn a_rod_by_density_from_an_irrational_length_uses_the_square_root() {
+        // From (0,0,0) to (1,1,0): length √2, mass √2·3.
+        let rod = compose(&Scene::si(vec![Part::rod_from_to(
+            [0.0; 3],
+            [1.0, 1.0, 0.0],
+            Amount::Density(3.0),
+        )]));
+        let exact = 3.0 * 2f64.sqrt();
+        assert!(rel(exact, &rod.mass) < 2e-16);
+        assert!(rel_q(&(&rod.mass * &rod.mass), &int(18)) < 1e-59);
+    }
+
+    #[test]
+    fn edges_and_size_placements_agree_exactly() {
+        let a = compose(&Scene::si(vec![Part::cuboid(
+            [2.0, 4.0, 6.0],
+            [1.0, 2.0, 3.0],
+            None,
+            Amount::Density(0.25),
+        )]));
+        let b = compose(&Scene::si(vec![Part::box_edges(
+            [0.0; 3],
+            [[0.0, 4.0, 0.0], [2.0, 0.0, 0.0], [0.0, 0.0, 6.0]],
+            Amount::Density(0.25),
+        )]));
+        assert_eq!((a.mass, a.com, a.inertia), (b.mass, b.com, b.inertia));
+    }
+
+    #[test]
+    fn splitting_a_box_in_exact_halves_changes_nothing() {
+        let whole = compose(&Scene::si(vec![Part::box_edges(
+            [1.0, 2.0, 3.0],
+            [[2.0, 1.0, 2.0], [1.0, 2.0, -2.0], [2.0, -2.0, -1.0]],
+            Amount::Mass(2.0),
+        )]));
+        let halves = compose(&Scene::si(vec![
+            Part::box_edges(
+                [1.0, 2.0, 3.0],
+                [[1.0, 0.5, 1.0], [1.0, 2.0, -2.0], [2.0, -2.0, -1.0]],
+                Amount::Mass(1.0),
+            ),
+            Part::box_edges(
+                [2.0, 2.5, 4.0],
+                [[1.0, 0.5, 1.0], [1.0, 2.0, -2.0], [2.0, -2.0, -1.0]],
+                Amount::Mass(1.0),
+            ),
+        ]));
+        assert_eq!(whole.com, halves.com);
+        assert_eq!(whole.inertia, halves.inertia);
+    }
+
+    #[test]
+    fn units_convert_with_exact_factors() {
+        let p = Part::cuboid([10.0, 20.0, 30.0], [1.0, 2.0, 3.0], None, Amount::Mass(2.0));
+        let s = Scene {
+            length: Length::In,
+            mass: Mass::Lb,
+            parts: vec![p],
+            about: None,
+        };
+        let e = compose(&s);
+        assert_eq!(e.mass, frac(2 * 45_359_237, 100_000_000));
+        assert_eq!(e.com[2], frac(3 * 254, 10_000));
+        // I_zz = m (a² + b²)/12, exactly in SI.
+        let l = Length::In.si();
+        assert_eq!(e.inertia[2][2], &e.mass * int(500) * &l * &l / int(12));
+    }
+
+    #[test]
+    fn the_roots_of_a_diagonal_matrix_are_its_entries() {
+        let ev = eigenvalues(&diag(3, -1, 2));
+        assert_eq!(ev, [int(-1), int(2), int(3)]);
+        let ev = eigenvalues(&mscale(&diag(1, 7, 5), &frac(1, 3)));
+        for (e, x) in ev.iter().zip([frac(1, 3), frac(5, 3), frac(7, 3)]) {
+            assert!(rel_q(e, &x) < 1e-42, "{e} vs {x}");
+        }
+    }
+
+    #[test]
+    fn roots_of_a_rotated_diagonal_matrix_and_its_axes() {
+        let r = pythagorean();
+        let a = mmul(
+            &mmul(&transpose(&r), &mscale(&diag(11, 2, 5), &frac(1, 10))),
+            &r,
+        );
+        assert!(a[0][1] != int(0), "the test matrix is not diagonal");
+        let p = principal(&a);
+        for (e, x) in p
+            .moments
+            .iter()
+            .zip([frac(2, 10), frac(5, 10), frac(11, 10)])
+        {
+            assert!(rel_q(e, &x) < 1e-42, "{e} vs {x}");
+        }
+        // Aᵀ diag A: the eigenvector of diagonal entry k is row k of R.
+        for (k, row) in [1, 2, 0].into_iter().enumerate() {
+            let axis = fv(p.axes[k].as_ref().expect("distinct"));
+            assert!(axis_sin(&axis, &r[row]) < 1e-15);
+            let wrong = fv(&r[(row + 1) % 3]);
+            assert!(axis_sin(&wrong, p.axes[k].as_ref().unwrap()) > 0.99);
+        }
+    }
+
+    #[test]
+    fn equal_and_nearly_equal_roots_are_separated() {
+        let r = pythagorean();
+        let rotate = |d: M3| mmul(&mmul(&transpose(&r), &d), &r);
+        let p = principal(&rotate(diag(2, 2, 5)));
+        assert_eq!(p.moments[0], p.moments[1]);
+        assert!(rel_q(&p.moments[0], &int(2)) < 1e-42);
+        assert!(p.axes[0].is_none() && p.axes[1].is_none() && p.axes[2].is_some());
+        // Triple and zero roots come out exact.
+        assert_eq!(
+            eigenvalues(&rotate(diag(4, 4, 4))),
+            std::array::from_fn(|_| int(4))
+        );
+        assert_eq!(eigenvalues(&rotate(diag(0, 0, 1)))[1], int(0));
+        // Nearly equal: 1 and 1 + 10⁻³⁰ are told apart.
+        let mut d = diag(1, 1, 3);
+        d[1][1] = int(1) + Q::new(BigInt::one(), BigInt::from(10).pow(30));
+        let p = principal(&rotate(d.clone()));
+        assert!(p.moments[1] > p.moments[0]);
+        assert!(rel_q(&(&p.moments[1] - &p.moments[0]), &(&d[1][1] - int(1))) < 1e-10);
+        assert!(axis_sin(&fv(&r[1]), p.axes[1].as_ref().unwrap()) < 1e-9);
+    }
+
+    #[test]
+    fn a_turned_slender_box_has_its_closed_form_moments() {
+        // R(q) is exactly orthogonal for any q, so the moments of a turned
+        // 1 × a × a box are exactly m(a² + a²)/12 and m(1 + a²)/12 (twice).
+        let a = 1e-6;
+        let s = Scene::si(vec![Part::cuboid(
+            [a, 1.0, a],
+            [0.25, -0.5, 3.0],
+            Some([0.3, -0.7, 0.2, 0.9]),
+            Amount::Mass(1.5),
+        )]);
+        let p = compose(&s).principal();
+        let (m, a) = (q(1.5), q(a));
+        let small = &m * int(2) * &a * &a / int(12);
+        let large = &m * (int(1) + &a * &a) / int(12);
+        assert!(rel_q(&p.moments[0], &small) < 1e-42);
+        assert_eq!(p.moments[1], p.moments[2]);
+        assert!(rel_q(&p.moments[2], &large) < 1e-42);
+        // The long axis is the local y axis, turned.
+        let r = rotation(&[0.3, -0.7, 0.2, 0.9].map(q));
+        let y = [r[0][1].clone(), r[1][1].clone(), r[2][1].clone()];
+        let axis = p.axes[0].as_ref().expect("distinct");
+        assert!(
+            f(&(int(1) - dot(axis, &y) * dot(axis, &y) / (dot(axis, axis) * dot(&y, &y)))) < 1e-60
+        );
+    }
+
+    #[test]
+    fn a_wrong_product_sign_is_caught() {
+        let s = Scene::si(vec![
+            Part::cuboid([1.0, 2.0, 3.0], [1.0, 2.0, 0.5], None, Amount::Mass(1.0)),
+            Part::point(2.0, [-1.0, 0.25, 2.0]),
+        ]);
+        let e = compose(&s);
+        let good = fm(&e.inertia);
+        assert!(rel_frobenius(&good, &e.inertia) < 1e-16);
+        // Both parts' x and y offsets from the centre of mass have the same
+        // sign, so ∫xy dm > 0 and the tensor entry I_xy = −∫xy dm < 0.
+        assert!(good[0][1] < 0.0);
+        let mut bad = good;
+        bad[0][1] = -bad[0][1];
+        bad[1][0] = -bad[1][0];
+        assert!(rel_frobenius(&bad, &e.inertia) > 0.1);
+    }
+
+    #[test]
+    fn axis_and_error_helpers_measure_what_they_say() {
+        let b = [int(3), int(4), int(0)];
+        // −0.6 and −0.8 round in f64 by up to 1.1e-16 relative.
+        assert!(axis_sin(&[-0.6, -0.8, 0.0], &b) < 1e-16);
+        assert!((axis_sin(&[0.0, 0.0, 1.0], &b) - 1.0).abs() < 1e-16);
+        assert!((axis_sin(&[1e-10, 0.0, 1.0], &[int(1), int(0), int(0)]) - 1.0).abs() < 1e-16);
+        assert!((axis_sin(&[1.0, 1e-10, 0.0], &[int(1), int(0), int(0)]) - 1e-10).abs() < 1e-20);
+        assert_eq!(rel(1.5, &int(1)), 0.5);
+        assert!((rel_vec(&[3.0, 4.0, 1.0], &[int(3), int(4), int(0)]) - 0.2).abs() < 1e-16);
+    }
+
+    /// A plain f64 composition about the origin, shifted back: fine for a
+    /// benign scene near the origin, so the two must agree to rounding.
+    #[test]
+    fn agrees_with_a_naive_f64_composition_on_a_benign_scene() {
+        let h = 0.5f64.sqrt();
+        let quats = [[h, 0.0, 0.0, h], [0.5, 0.5, 0.5, 0.5], [0.8, 0.6, 0.0, 0.0]];
+        let mut parts = Vec::new();
+        for (k, qq) in quats.iter().enumerate() {
+            let x = k as f64;
+            parts.push(Part::cuboid(
+                [0.3 + x, 0.7, 1.1],
+                [x, 1.0 - x, 0.5],
+                Some(*qq),
+                Amount::Mass(1.0 + x),
+            ));
+        }
+        parts.push(Part::rod(
+            2.0,
+            [0.2, 0.1, -1.0],
+            Some(quats[1]),
+            Amount::Mass(0.7),
+        ));
+        parts.push(Part::plate(
+            [0.4, 0.9],
+            [-0.3, 0.2, 0.1],
+            Some(quats[2]),
+            Amount::Density(5.0),
+        ));
+        parts.push(Part::point(0.3, [1.0, -1.0, 2.0]));
+        let e = compose(&Scene::si(parts.clone()));
+
+        // Naive: rotation matrix from the textbook closed form, I about the
+        // origin summed, then shifted back with the parallel-axis theorem.
+        let mut mass = 0.0;
+        let mut first = [0.0; 3];
+        let mut i_origin = [[0.0; 3]; 3];
+        for p in &parts {
+            let Place::Center {
+                size,
+                center,
+                quaternion,
+            } = &p.place
+            else {
+                unreachable!()
+            };
+            let [w, x, y, z] = quaternion.unwrap_or([1.0, 0.0, 0.0, 0.0]);
+            let r = [
+                [
+                    w * w + x * x - y * y - z * z,
+                    2.0 * (x * y - w * z),
+                    2.0 * (x * z + w * y),
+                ],
+                [
+                    2.0 * (x * y + w * z),
+                    w * w - x * x + y * y - z * z,
+                    2.0 * (y * z - w * x),
+                ],
+                [
+                    2.0 * (x * z - w * y),
+                    2.0 * (y * z + w * x),
+                    w * w - x * x - y * y + z * z,
+                ],
+            ];
+            let dims: Vec<f64> = size.clone();
+            let m = match p.amount {
+                Amount::Mass(m) => m,
+                Amount::Density(d) => d * dims.iter().product::<f64>(),
+            };
+            let local: [f64; 3] = match p.shape {
+                Shape::Box => dims.clone().try_into().unwrap(),
+                Shape::Plate => [dims[0], dims[1], 0.0],
+                Shape::Rod => [0.0, 0.0, dims[0]],
+                Shape::Point => [0.0; 3],
+            };
+            let s = local.map(|a| m * a * a / 12.0);
+            let c = center;
+            mass += m;
+            let r2 = c.iter().map(|v| v * v).sum::<f64>();
+            for a in 0..3 {
+                first[a] += m * c[a];
+                for b in 0..3 {
+                    let cab: f64 = (0..3).map(|k| r[a][k] * s[k] * r[b][k]).sum();
+                    let tr: f64 = s.iter().sum();
+                    let delta = if a == b { 1.0 } else { 0.0 };
+                    i_origin[a][b] += tr * delta - cab + m * (r2 * delta - c[a] * c[b]);
+                }
+            }
+        }
+        let com = first.map(|v| v / mass);
+        let d2 = com.iter().map(|v| v * v).sum::<f64>();
+        let i_com: [[f64; 3]; 3] = std::array::from_fn(|a| {
+            std::array::from_fn(|b| {
+                let delta = if a == b { 1.0 } else { 0.0 };
+                i_origin[a][b] - mass * (d2 * delta - com[a] * com[b])
+            })
+        });
+        assert!(rel(mass, &e.mass) < 1e-15);
+        assert!(rel_vec(&com, &e.com) < 1e-14);
+        let err = rel_frobenius(&i_com, &e.inertia);
+        assert!(err < 1e-13, "naive vs exact: {err:e}");
+        // And the comparison is not vacuous: a 1e-6 change is seen.
+        let mut off = i_com;
+        off[2][2] *= 1.0 + 1e-6;
+        assert!(rel_frobenius(&off, &e.inertia) > 1e-7);
+    }
+
+    #[test]
+    fn the_part_file_writer_round_trips_every_number() {
+        for x in [
+            1.0,
+            0.1,
+            1e-9,
+            1.5e16,
+            -2.5e-300,
+            123456.789,
+            1e22,
+            5e-324,
+            f64::MAX,
+        ] {
+            let v: toml::Value = toml::from_str(&format!("x = {}", number(x))).unwrap();
+            assert_eq!(
+                v["x"].as_float().map(f64::to_bits),
+                Some(x.to_bits()),
+                "{x:?}"
+            );
+        }
+        let s = Scene {
+            length: Length::Um,
+            mass: Mass::Mg,
+            parts: vec![
+                Part::cuboid(
+                    [1e-9, 2.0, 3.0],
+                    [0.1, 0.2, 0.3],
+                    Some([0.5, 0.5, 0.5, 0.5]),
+                    Amount::Density(7.85e-9),
+                ),
+                Part::plate_edges(
+                    [0.0; 3],
+                    [[1.0, 0.0, 0.0], [0.0, 1e20, 0.0]],
+                    Amount::Mass(1.0),
+                ),
+                Part::rod_from_to([0.0; 3], [1.0, 2.0, 3.0], Amount::Density(4.0)),
+                Part::rod(2.0, [1.0; 3], None, Amount::Mass(1.0)),
+                Part::point(1.0 / 3.0, [1.0; 3]),
+            ],
+            about: Some([1.0, 2.0, 3.0]),
+        };
+        let text = to_toml(&s);
+        let v: toml::Value = toml::from_str(&text).unwrap();
+        let part = &v["part"][0];
+        assert_eq!(part["size"][0].as_float(), Some(1e-9));
+        assert_eq!(part["density"].as_float(), Some(7.85e-9));
+        assert_eq!(v["part"][1]["edges"][1][1].as_float(), Some(1e20));
+        assert_eq!(v["part"][4]["mass"].as_float(), Some(1.0 / 3.0));
+        assert_eq!(v["units"]["length"].as_str(), Some("um"));
+    }
+
+    #[test]
+    fn square_roots_are_accurate_to_two_hundred_bits() {
+        let x = frac(2, 3);
+        let r = sqrt(&x);
+        let err = (&r * &r - &x).abs() / &x;
+        assert!(err < Q::new(BigInt::one(), BigInt::one() << 198usize));
+        assert_eq!(sqrt(&int(49)), int(7));
+    }
+}
