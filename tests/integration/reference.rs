@@ -755,6 +755,71 @@ pub fn compose(scene: &Scene) -> Exact {
     }
 }
 
+/// `x` rounded to the nearest multiple of 2⁻ᵇⁱᵗˢ, as the integer x·2ᵇⁱᵗˢ.
+fn fixed(x: &Q, bits: usize) -> BigInt {
+    (x * Q::from_integer(BigInt::one() << bits))
+        .round()
+        .to_integer()
+}
+
+/// `compose` for scenes of very many parts: each part's exact mass, first
+/// moment and second moment about the (rounded) centre are rounded to
+/// multiples of 2⁻ᵇⁱᵗˢ (SI) before they are summed.
+///
+/// NOTE: exact sums of thousands of quaternion-turned parts are out of
+/// reach: every R(q) divides by its own |q|², and the denominator of the sum
+/// becomes the product of all of them. Rounded to a common power of two the
+/// sums stay integers. The centre is rounded too, and its rounding removed
+/// exactly (C = Σ(Cᵢ + mᵢdᵢdᵢᵀ) − s sᵀ/m with s = Σ mᵢdᵢ), so the result is
+/// within N·2⁻ᵇⁱᵗˢ of the exact one in every entry: with 400 bits, 1e-115
+/// for a million parts.
+pub fn compose_rounded(scene: &Scene, bits: usize) -> Exact {
+    let one = Q::from_integer(BigInt::one() << bits);
+    let part = |p: &Part| exact_part(p, scene.length, scene.mass);
+    let mut mass = BigInt::zero();
+    let mut first: [BigInt; 3] = std::array::from_fn(|_| BigInt::zero());
+    for p in &scene.parts {
+        let e = part(p);
+        mass += fixed(&e.mass, bits);
+        for (f, c) in first.iter_mut().zip(&e.center) {
+            *f += fixed(&(&e.mass * c), bits);
+        }
+    }
+    let m = Q::from_integer(mass.clone()) / &one;
+    let com: V3 = std::array::from_fn(|i| {
+        Q::from_integer(fixed(
+            &(Q::from_integer(first[i].clone()) / Q::from_integer(mass.clone())),
+            bits,
+        )) / &one
+    });
+    let mut c: [[BigInt; 3]; 3] = std::array::from_fn(|_| std::array::from_fn(|_| BigInt::zero()));
+    let mut s: [BigInt; 3] = std::array::from_fn(|_| BigInt::zero());
+    for p in &scene.parts {
+        let e = part(p);
+        let d = sub(&e.center, &com);
+        let md = scale(&d, &e.mass);
+        for i in 0..3 {
+            s[i] += fixed(&md[i], bits);
+            for j in 0..3 {
+                c[i][j] += fixed(&(&e.second_moment[i][j] + &md[i] * &d[j]), bits);
+            }
+        }
+    }
+    let s: V3 = std::array::from_fn(|i| Q::from_integer(s[i].clone()) / &one);
+    let second_moment: M3 = std::array::from_fn(|i| {
+        std::array::from_fn(|j| Q::from_integer(c[i][j].clone()) / &one - &s[i] * &s[j] / &m)
+    });
+    let l = scene.length.si();
+    Exact {
+        inertia: inertia_of(&second_moment),
+        about: scene.about.map(|a| scale(&qv(a), &l)),
+        com: add(&com, &scale(&s, &(Q::one() / &m))),
+        mass: m,
+        second_moment,
+        parts: Vec::new(),
+    }
+}
+
 impl Exact {
     /// Inertia tensor about `point` (SI): the shift C + m d dᵀ, d = c − point.
     pub fn inertia_about(&self, point: &V3) -> M3 {
@@ -1577,5 +1642,42 @@ mod tests {
         let err = (&r * &r - &x).abs() / &x;
         assert!(err < Q::new(BigInt::one(), BigInt::one() << 198usize));
         assert_eq!(sqrt(&int(49)), int(7));
+    }
+
+    #[test]
+    fn rounded_composition_agrees_with_the_exact_one() {
+        // Quaternion-turned boxes far from the origin, and a plate by edges.
+        let q = |a: f64, b: f64, c: f64, d: f64| {
+            let n = (a * a + b * b + c * c + d * d).sqrt();
+            Some([a / n, b / n, c / n, d / n])
+        };
+        let scene = Scene::si(vec![
+            Part::cuboid(
+                [0.3, 0.7, 1.1],
+                [1e6, 2.5, -3.0],
+                q(0.1, 0.7, -0.2, 0.3),
+                Amount::Mass(2.5),
+            ),
+            Part::cuboid(
+                [0.2, 0.2, 0.9],
+                [1e6 + 1.0, 0.5, 1.0],
+                q(0.9, 0.1, 0.2, -0.4),
+                Amount::Density(7850.0),
+            ),
+            Part::plate_edges(
+                [1e6, 0.0, 0.0],
+                [[0.0, 0.5, 0.0], [0.0, 0.0, 0.25]],
+                Amount::Mass(0.75),
+            ),
+        ]);
+        let exact = compose(&scene);
+        let rounded = compose_rounded(&scene, 200);
+        // N·2⁻²⁰⁰ absolute in each entry; the entries are ~1e12 here.
+        let d = rel_frobenius_exact(&rounded.inertia, &exact.inertia);
+        assert!(d < 1e-45, "{d:e}");
+        assert_eq!(rounded.mass, exact.mass);
+        for k in 0..3 {
+            assert!(f(&(&rounded.com[k] - &exact.com[k]).abs()) < 1e-45);
+        }
     }
 }
