@@ -8,6 +8,7 @@ use crate::compose::Precision;
 use crate::units::{Dim, FileUnits};
 use comfy_table::{CellAlignment, Table, presets};
 use std::fmt::Write;
+use unicode_width::UnicodeWidthStr;
 
 /// `x` to six significant digits: fixed notation for moderate magnitudes,
 /// scientific otherwise, trailing zeros dropped.
@@ -19,40 +20,127 @@ pub fn fmt_num(x: f64) -> String {
 /// relative changes are read as orders of magnitude, not to six digits);
 /// `None`, an undefined ratio, as "—".
 pub fn fmt_percent(fraction: Option<f64>) -> String {
+    let mut s = String::new();
+    push_percent(&mut s, fraction);
+    s
+}
+
+/// Append `fmt_percent(fraction)` to `out`.
+fn push_percent(out: &mut String, fraction: Option<f64>) {
     match fraction {
-        Some(f) => format!("{} %", fmt_sig(f * 100.0, 3)),
-        None => "—".to_string(),
+        Some(f) => {
+            push_sig(out, f * 100.0, 3);
+            out.push_str(" %");
+        }
+        None => out.push('—'),
     }
 }
 
-/// `x` to `digits` significant digits (1 or more), as `fmt_num`.
+/// `x` to `digits` significant digits (1 to 40), as `fmt_num`.
 fn fmt_sig(x: f64, digits: usize) -> String {
+    let mut s = String::new();
+    push_sig(&mut s, x, digits);
+    s
+}
+
+/// Append `fmt_sig(x, digits)` to `out`, without allocating.
+///
+/// NOTE: one `{:.N$e}` formatting gives the digits of both notations where
+/// the fixed one keeps `digits` significant digits (exponent ≤ digits − 1,
+/// always so for six): both round at the same decimal place. Above that the
+/// fixed notation rounds to a whole number, a second formatting. The table
+/// of 100,000 parts formats ~800,000 numbers.
+fn push_sig(out: &mut String, x: f64, digits: usize) {
+    debug_assert!((1..=40).contains(&digits), "the buffers hold 40 digits");
     if x == 0.0 {
-        return "0".to_string();
+        out.push('0');
+        return;
     }
     if !x.is_finite() {
         // Unreachable through `summarize`, which refuses non-finite
         // results; printed honestly rather than panicking if it ever is.
-        return x.to_string();
+        let _ = write!(out, "{x}");
+        return;
     }
     let places = digits.max(1) - 1;
-    let sci = format!("{x:.places$e}");
+    let mut sci = Ascii::<64>::new();
+    let _ = write!(sci, "{x:.places$e}");
+    let sci = sci.as_str();
     let (mantissa, exp) = sci.split_once('e').expect("{:e} always has an exponent");
     let exp: i32 = exp.parse().expect("{:e} exponent is an integer");
-    if (-4..6).contains(&exp) {
-        let decimals = (places as i32 - exp).max(0) as usize;
-        let s = format!("{x:.decimals$}");
-        trim_zeros(&s)
+    if !(-4..6).contains(&exp) {
+        out.push_str(trim_zeros(mantissa));
+        let _ = write!(out, "e{exp}");
+        return;
+    }
+    let mut fixed = Ascii::<64>::new();
+    if exp > places as i32 {
+        let _ = write!(fixed, "{x:.0}");
     } else {
-        format!("{}e{exp}", trim_zeros(mantissa))
+        let (sign, m) = match mantissa.strip_prefix('-') {
+            Some(m) => ("-", m),
+            None => ("", mantissa),
+        };
+        // m is "d" or "d.ddd…": `digits` digits.
+        let (first, rest) = m.split_at(1);
+        let rest = rest.strip_prefix('.').unwrap_or(rest);
+        let _ = fixed.write_str(sign);
+        if exp >= 0 {
+            let e = exp as usize;
+            let _ = fixed.write_str(first);
+            let _ = fixed.write_str(&rest[..e]);
+            if e < places {
+                let _ = fixed.write_str(".");
+                let _ = fixed.write_str(&rest[e..]);
+            }
+        } else {
+            let _ = fixed.write_str("0.");
+            for _ in 0..(-exp - 1) {
+                let _ = fixed.write_str("0");
+            }
+            let _ = fixed.write_str(first);
+            let _ = fixed.write_str(rest);
+        }
+    }
+    out.push_str(trim_zeros(fixed.as_str()));
+}
+
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
     }
 }
 
-fn trim_zeros(s: &str) -> String {
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s.to_string()
+/// A fixed-size ASCII buffer on the stack for `write!`.
+struct Ascii<const N: usize> {
+    bytes: [u8; N],
+    len: usize,
+}
+
+impl<const N: usize> Ascii<N> {
+    fn new() -> Self {
+        Ascii {
+            bytes: [0; N],
+            len: 0,
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.bytes[..self.len]).expect("only str is written")
+    }
+}
+
+impl<const N: usize> Write for Ascii<N> {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let end = self.len + s.len();
+        self.bytes
+            .get_mut(self.len..end)
+            .ok_or(std::fmt::Error)?
+            .copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
     }
 }
 
@@ -267,8 +355,7 @@ pub fn render(s: &Summary, source: &str) -> String {
     }
 
     let _ = writeln!(out, "\nparts");
-    let mut parts = new_table();
-    parts.set_header(vec![
+    let header = [
         "#".to_string(),
         "name".to_string(),
         "shape".to_string(),
@@ -280,24 +367,31 @@ pub fn render(s: &Summary, source: &str) -> String {
         "I1 share".to_string(),
         "I2 share".to_string(),
         "I3 share".to_string(),
-    ]);
+    ];
+    let mut cells = Cells::with_capacity(s.parts.len() * header.len());
     for (i, p) in s.parts.iter().enumerate() {
-        let mut cells = vec![
-            (i + 1).to_string(),
-            p.name.clone(),
-            p.shape.name().to_string(),
-            fmt_num(p.mass / u.mass),
-            format!("{:.1} %", p.mass_fraction * 100.0),
-        ];
-        cells.extend(p.center_of_mass.iter().map(|x| fmt_num(x / u.length)));
-        cells.extend(p.principal_moment_share.map(fmt_percent));
-        parts.add_row(cells);
+        let _ = write!(cells.text, "{}", i + 1);
+        cells.end();
+        cells.text.push_str(&p.name);
+        cells.end();
+        cells.text.push_str(p.shape.name());
+        cells.end();
+        push_sig(&mut cells.text, p.mass / u.mass, 6);
+        cells.end();
+        let _ = write!(cells.text, "{:.1} %", p.mass_fraction * 100.0);
+        cells.end();
+        for x in &p.center_of_mass {
+            push_sig(&mut cells.text, x / u.length, 6);
+            cells.end();
+        }
+        for share in p.principal_moment_share {
+            push_percent(&mut cells.text, share);
+            cells.end();
+        }
     }
-    right_align(&mut parts, 3);
-    if let Some(c) = parts.column_mut(0) {
-        c.set_cell_alignment(CellAlignment::Right);
-    }
-    let _ = writeln!(out, "{parts}");
+    // Left-aligned: name and shape.
+    let right: Vec<bool> = (0..header.len()).map(|i| !(1..3).contains(&i)).collect();
+    write_table(&mut out, &header, &cells, &right);
     let _ = writeln!(
         out,
         "I1–I3 share: each part's share of each principal moment about the centre of mass"
@@ -330,25 +424,23 @@ fn idealisation(out: &mut String, i: &Idealisation, u: &Units) {
         "principal moments with the parts below solid ({}): {}, {}, {}",
         u.inertia_label, m[0], m[1], m[2]
     );
-    let mut t = new_table();
-    t.set_header(vec![
-        "made solid",
-        "as",
-        "I1 change",
-        "I2 change",
-        "I3 change",
-    ]);
+    let header = ["made solid", "as", "I1 change", "I2 change", "I3 change"].map(String::from);
+    let mut cells = Cells::with_capacity((i.parts.len() + 1) * header.len());
     let mut row = |name: &str, solid: &str, change: &[Option<f64>; 3]| {
-        let mut cells = vec![name.to_string(), solid.to_string()];
-        cells.extend(change.map(fmt_percent));
-        t.add_row(cells);
+        cells.text.push_str(name);
+        cells.end();
+        cells.text.push_str(solid);
+        cells.end();
+        for c in change {
+            push_percent(&mut cells.text, *c);
+            cells.end();
+        }
     };
     row("all together", "", &i.relative_change);
     for p in &i.parts {
         row(&p.name, p.solid.name(), &p.relative_change);
     }
-    right_align(&mut t, 2);
-    let _ = writeln!(out, "{t}");
+    write_table(out, &header, &cells, &[false, false, true, true, true]);
     let _ = writeln!(
         out,
         "change: (solid − idealised) / idealised of each principal moment, ascending"
@@ -359,6 +451,104 @@ fn idealisation(out: &mut String, i: &Idealisation, u: &Units) {
             "note: — marks a principal moment that is zero when idealised (a lone rod's axial moment); compare the moments"
         );
     }
+}
+
+/// The text of a table's cells, row after row, in one buffer.
+struct Cells {
+    text: String,
+    ends: Vec<usize>,
+}
+
+impl Cells {
+    fn with_capacity(n: usize) -> Cells {
+        Cells {
+            text: String::with_capacity(n * 12),
+            ends: Vec::with_capacity(n),
+        }
+    }
+
+    /// Close the cell written since the last call.
+    fn end(&mut self) {
+        self.ends.push(self.text.len());
+    }
+
+    fn iter(&self) -> impl Iterator<Item = &str> {
+        let starts = std::iter::once(0).chain(self.ends.iter().copied());
+        starts.zip(&self.ends).map(|(a, b)| &self.text[a..*b])
+    }
+}
+
+/// Write a table exactly as comfy-table prints it in `new_table`'s style
+/// (columns as wide as their widest cell, one space of padding, no row
+/// separators; `right[i]` aligns column i right), then a newline.
+///
+/// NOTE: the parts table has a row per part, 100,000 and more: through
+/// comfy-table (a `String` and several `Vec`s per cell and per line) it
+/// took 0.44 s for 100,000 parts, more than the rest of `report` after
+/// parsing; written here, 0.1 s. Tables with a line break in a cell
+/// (comfy-table splits those into lines) or a column wider than comfy-table
+/// measures (u16) still go through comfy-table.
+fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
+    let n = header.len();
+    let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
+    let mut multiline = false;
+    for (i, c) in cells.iter().enumerate() {
+        multiline |= c.contains('\n');
+        let w = &mut widths[i % n];
+        *w = (*w).max(c.width());
+    }
+    if multiline || widths.iter().any(|w| *w > usize::from(u16::MAX)) {
+        let mut t = new_table();
+        t.set_header(header.to_vec());
+        let all: Vec<&str> = cells.iter().collect();
+        for row in all.chunks(n) {
+            t.add_row(row.to_vec());
+        }
+        for (c, r) in t.column_iter_mut().zip(right) {
+            if *r {
+                c.set_cell_alignment(CellAlignment::Right);
+            }
+        }
+        let _ = writeln!(out, "{t}");
+        return;
+    }
+    let rule = |out: &mut String, [left, fill, junction, end]: [char; 4]| {
+        out.push(left);
+        for (i, w) in widths.iter().enumerate() {
+            if i > 0 {
+                out.push(junction);
+            }
+            out.extend(std::iter::repeat_n(fill, w + 2));
+        }
+        out.push(end);
+        out.push('\n');
+    };
+    let row = |out: &mut String, row: &mut dyn Iterator<Item = &str>| {
+        out.push('│');
+        for (i, c) in row.enumerate() {
+            let pad = widths[i] - c.width();
+            out.push(' ');
+            if right[i] {
+                out.extend(std::iter::repeat_n(' ', pad));
+                out.push_str(c);
+            } else {
+                out.push_str(c);
+                out.extend(std::iter::repeat_n(' ', pad));
+            }
+            out.push(' ');
+            out.push(if i + 1 < n { '┆' } else { '│' });
+        }
+        out.push('\n');
+    };
+    out.reserve(cells.text.len() + cells.ends.len() * 8);
+    rule(out, ['┌', '─', '┬', '┐']);
+    row(out, &mut header.iter().map(String::as_str));
+    rule(out, ['╞', '═', '╪', '╡']);
+    let mut it = cells.iter();
+    for _ in 0..cells.ends.len() / n {
+        row(out, &mut it.by_ref().take(n));
+    }
+    rule(out, ['└', '─', '┴', '┘']);
 }
 
 #[cfg(test)]
@@ -386,5 +576,73 @@ mod tests {
         assert_eq!(fmt_percent(Some(1.0)), "100 %");
         assert_eq!(fmt_percent(Some(0.0)), "0 %");
         assert_eq!(fmt_percent(None), "—");
+    }
+
+    /// `fmt_sig` formats once where it can; this reference, as it was,
+    /// twice (`{:.N$e}`, then fixed). Rounding that bumps the exponent
+    /// (9.999996 → 10.0000) and decimal ties (123456.5) included.
+    #[test]
+    fn one_formatting_gives_the_digits_of_two() {
+        fn reference(x: f64, digits: usize) -> String {
+            let trim = |s: &str| {
+                if s.contains('.') {
+                    s.trim_end_matches('0').trim_end_matches('.').to_string()
+                } else {
+                    s.to_string()
+                }
+            };
+            if x == 0.0 {
+                return "0".to_string();
+            }
+            let places = digits.max(1) - 1;
+            let sci = format!("{x:.places$e}");
+            let (mantissa, exp) = sci.split_once('e').unwrap();
+            let exp: i32 = exp.parse().unwrap();
+            if (-4..6).contains(&exp) {
+                let decimals = (places as i32 - exp).max(0) as usize;
+                trim(&format!("{x:.decimals$}"))
+            } else {
+                format!("{}e{exp}", trim(mantissa))
+            }
+        }
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut xs = vec![
+            9.999995,
+            9.999996,
+            99999.95,
+            999999.5,
+            0.000099999995,
+            123456.5,
+            2.5,
+            99.95,
+            0.5,
+        ];
+        for _ in 0..50_000 {
+            xs.push(f64::from_bits(next()));
+            // Uniform in [0, 10) times 1e-6 … 1e7: the fixed range and its edges.
+            let m = (next() >> 11) as f64 / (1u64 << 53) as f64 * 10.0;
+            xs.push(m * 10f64.powi((next() % 14) as i32 - 6));
+        }
+        for x in xs.into_iter().filter(|x| x.is_finite()) {
+            for digits in [1, 3, 6, 17] {
+                assert_eq!(
+                    super::fmt_sig(x, digits),
+                    reference(x, digits),
+                    "{x:e}, {digits}"
+                );
+                assert_eq!(
+                    super::fmt_sig(-x, digits),
+                    reference(-x, digits),
+                    "{:e}, {digits}",
+                    -x
+                );
+            }
+        }
     }
 }
