@@ -5,6 +5,7 @@
 //! exists is valid.
 
 pub mod expect;
+pub mod fast;
 pub mod raw;
 pub mod rotation;
 
@@ -151,7 +152,12 @@ pub struct Analysis {
 impl Model {
     /// Parse and validate a part file.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
-        let raw: RawFile = toml::from_str(&source.text).map_err(|e| toml_error(source, &e))?;
+        // The fast path where it can (most part files); else, and for every
+        // error in the TOML, serde via the toml crate's value tree.
+        let raw: RawFile = match fast::parse(&source.text) {
+            Some(raw) => raw,
+            None => toml::from_str(&source.text).map_err(|e| toml_error(source, &e))?,
+        };
         let ctx = Ctx {
             source,
             units: FileUnits::default(),

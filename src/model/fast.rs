@@ -1,0 +1,616 @@
+//! A fast path from a part file's text to `RawFile`, straight from the toml
+//! crate's own lexer and event parser (`toml_parser`), with no value tree
+//! in between.
+//!
+//! NOTE: `toml::from_str` parses the whole document into a generic tree
+//! (`toml::de::DeTable`: every key, value and span as a node, ~22 bytes of
+//! memory per input byte with the lexer's tokens and the parser's events)
+//! and only then deserializes `RawFile` from it. Here the parser's events
+//! fill `RawFile` as they come: only the tokens and the result are ever in
+//! memory. It covers what part files are made of (top-level `name` and
+//! `units`, `[[part]]` tables, `[analysis]`, inline tables and arrays of
+//! strings and numbers) and gives up — `None` — on anything else (`[expect]`,
+//! dotted keys, other tables, booleans, dates), on any syntax error, any
+//! duplicate or unknown key and any value of the wrong type. The caller then
+//! takes the serde path, which accepts or rejects the file and words every
+//! error as before. When this returns `Some`, the result equals what
+//! `toml::from_str::<RawFile>` gives, values and spans alike (tested in
+//! `tests`).
+//!
+//! NOTE: a key added to `RawPart` must be added to `Builder::assign` too
+//! (`close_part` does not compile without the field; a key missing from
+//! `assign` only sends files that use it down the serde path).
+
+use super::raw::{
+    Angles, Floats, Quantity, RawAnalysis, RawFile, RawPart, RawRotation, RawUnits, Vector,
+};
+use std::borrow::Cow;
+use std::ops::Range;
+use toml::Spanned;
+use toml_parser::decoder::{Encoding, ScalarKind};
+use toml_parser::parser::{EventReceiver, RecursionGuard, ValidateWhitespace};
+use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
+
+/// The toml crate's own nesting limit (`toml::de::parser::LIMIT`).
+const RECURSION_LIMIT: u32 = 80;
+
+/// `RawFile` from `text`, or `None` where the serde path must decide.
+pub fn parse(text: &str) -> Option<RawFile> {
+    // `[expect]` is serde's: decline now, not after reading every part
+    // before it (a file of 100,000 parts would be read twice). A name with
+    // "expect" in it only costs the fast path.
+    if text.contains("expect") {
+        return None;
+    }
+    let source = Source::new(text);
+    let tokens = source.lex().into_vec();
+    let mut builder = Builder::new(source);
+    let mut error = Failed(false);
+    {
+        let mut ws = ValidateWhitespace::new(&mut builder, source);
+        let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
+        toml_parser::parser::parse_document(&tokens, &mut guarded, &mut error);
+    }
+    drop(tokens);
+    if error.0 {
+        return None;
+    }
+    builder.finish()
+}
+
+/// Records that the parser reported an error.
+struct Failed(bool);
+
+impl ErrorSink for Failed {
+    fn report_error(&mut self, _error: ParseError) {
+        self.0 = true;
+    }
+}
+
+/// A value being read: only what part files contain.
+enum Node<'i> {
+    Str(Cow<'i, str>, Range<usize>),
+    Num(f64, Range<usize>),
+    Array(Vec<Node<'i>>, Range<usize>),
+    Table(Vec<(Cow<'i, str>, Node<'i>)>, Range<usize>),
+}
+
+impl Node<'_> {
+    fn span(&self) -> Range<usize> {
+        match self {
+            Node::Str(_, s) | Node::Num(_, s) | Node::Array(_, s) | Node::Table(_, s) => s.clone(),
+        }
+    }
+}
+
+/// An array or inline table still open.
+enum Frame<'i> {
+    Array(usize, Vec<Node<'i>>),
+    Table(usize, Vec<(Cow<'i, str>, Node<'i>)>, Option<Cow<'i, str>>),
+}
+
+/// Which table key/value pairs go to.
+#[derive(Clone, Copy, PartialEq)]
+enum Current {
+    Root,
+    Units,
+    Part,
+    Analysis,
+}
+
+#[derive(Default)]
+struct Part {
+    name: Option<Spanned<String>>,
+    shape: Option<Spanned<String>>,
+    mass: Option<Spanned<Quantity>>,
+    density: Option<Spanned<Quantity>>,
+    areal_density: Option<Spanned<Quantity>>,
+    linear_density: Option<Spanned<Quantity>>,
+    size: Option<Vector>,
+    length: Option<Spanned<Quantity>>,
+    center: Option<Vector>,
+    rotation: Option<Spanned<RawRotation>>,
+    corner: Option<Vector>,
+    edges: Option<Spanned<Vec<Vector>>>,
+    from: Option<Vector>,
+    to: Option<Vector>,
+    thickness: Option<Spanned<Quantity>>,
+    diameter: Option<Spanned<Quantity>>,
+}
+
+struct Builder<'i> {
+    source: Source<'i>,
+    failed: bool,
+    current: Current,
+    /// Inside `[..]` or `[[..]]`: where it opened, whether an array table,
+    /// and its keys.
+    header: Option<(usize, bool, Vec<Cow<'i, str>>)>,
+    /// The key of the key/value pair being read (document level).
+    key: Option<Cow<'i, str>>,
+    stack: Vec<Frame<'i>>,
+    name: Option<Spanned<String>>,
+    units: Option<Spanned<RawUnits>>,
+    parts: Option<(Range<usize>, Vec<Spanned<RawPart>>)>,
+    part: Option<(Range<usize>, Part)>,
+    analysis: Option<Spanned<RawAnalysis>>,
+}
+
+impl<'i> Builder<'i> {
+    fn new(source: Source<'i>) -> Self {
+        Builder {
+            source,
+            failed: false,
+            current: Current::Root,
+            header: None,
+            key: None,
+            stack: Vec::new(),
+            name: None,
+            units: None,
+            parts: None,
+            part: None,
+            analysis: None,
+        }
+    }
+
+    fn fail(&mut self) {
+        self.failed = true;
+    }
+
+    fn raw(&self, span: Span, kind: Option<Encoding>) -> Raw<'i> {
+        let text = &self.source.input()[span.start()..span.end()];
+        Raw::new_unchecked(text, kind, span)
+    }
+
+    fn finish(mut self) -> Option<RawFile> {
+        self.close_part();
+        if self.failed || self.header.is_some() || !self.stack.is_empty() || self.key.is_some() {
+            return None;
+        }
+        Some(RawFile {
+            name: self.name,
+            units: self.units,
+            part: self.parts.map(|(span, v)| Spanned::new(span, v)),
+            analysis: self.analysis,
+            expect: None,
+        })
+    }
+
+    /// The `[[part]]` being read is complete.
+    fn close_part(&mut self) {
+        let Some((span, p)) = self.part.take() else {
+            return;
+        };
+        let Some(shape) = p.shape else {
+            return self.fail();
+        };
+        let part = RawPart {
+            name: p.name,
+            shape,
+            mass: p.mass,
+            density: p.density,
+            areal_density: p.areal_density,
+            linear_density: p.linear_density,
+            size: p.size,
+            length: p.length,
+            center: p.center,
+            rotation: p.rotation,
+            corner: p.corner,
+            edges: p.edges,
+            from: p.from,
+            to: p.to,
+            thickness: p.thickness,
+            diameter: p.diameter,
+        };
+        match &mut self.parts {
+            Some((_, v)) => v.push(Spanned::new(span, part)),
+            None => self.fail(),
+        }
+    }
+
+    /// A table header `[path]` or `[[path]]` from `span`.
+    fn open_table(&mut self, span: Range<usize>, is_array: bool, path: Vec<Cow<'i, str>>) {
+        self.close_part();
+        match (is_array, path.as_slice()) {
+            (true, [k]) if k == "part" => {
+                self.parts.get_or_insert_with(|| (span.clone(), Vec::new()));
+                self.part = Some((span, Part::default()));
+                self.current = Current::Part;
+            }
+            (false, [k]) if k == "analysis" && self.analysis.is_none() => {
+                let empty = RawAnalysis {
+                    about: None,
+                    omega: None,
+                    alpha: None,
+                };
+                self.analysis = Some(Spanned::new(span, empty));
+                self.current = Current::Analysis;
+            }
+            (false, [k]) if k == "units" && self.units.is_none() => {
+                let empty = RawUnits {
+                    length: None,
+                    mass: None,
+                };
+                self.units = Some(Spanned::new(span, empty));
+                self.current = Current::Units;
+            }
+            _ => self.fail(),
+        }
+    }
+
+    /// A complete value: into the open array or inline table, or to the
+    /// current key.
+    fn value(&mut self, node: Node<'i>) {
+        match self.stack.last_mut() {
+            Some(Frame::Array(_, items)) => items.push(node),
+            Some(Frame::Table(_, entries, key)) => match key.take() {
+                Some(k) if !entries.iter().any(|(e, _)| *e == k) => entries.push((k, node)),
+                _ => self.fail(),
+            },
+            None => match self.key.take() {
+                Some(k) => {
+                    if self.assign(&k, node).is_none() {
+                        self.fail();
+                    }
+                }
+                None => self.fail(),
+            },
+        }
+    }
+
+    /// `key = node` in the current table; `None` if the key is unknown,
+    /// repeated, or the value of the wrong type.
+    fn assign(&mut self, key: &str, node: Node<'i>) -> Option<()> {
+        match self.current {
+            Current::Root => match key {
+                "name" => set(&mut self.name, string(node)?),
+                "units" => {
+                    let span = node.span();
+                    let Node::Table(entries, _) = node else {
+                        return None;
+                    };
+                    let mut u = RawUnits {
+                        length: None,
+                        mass: None,
+                    };
+                    for (k, v) in entries {
+                        units_key(&mut u, &k, v)?;
+                    }
+                    set(&mut self.units, Spanned::new(span, u))
+                }
+                _ => None,
+            },
+            Current::Units => {
+                let u = self.units.as_mut()?.get_mut();
+                units_key(u, key, node)
+            }
+            Current::Analysis => {
+                let a = self.analysis.as_mut()?.get_mut();
+                match key {
+                    "about" => set(&mut a.about, vector(node)?),
+                    "omega" => set(&mut a.omega, vector(node)?),
+                    "alpha" => set(&mut a.alpha, vector(node)?),
+                    _ => None,
+                }
+            }
+            Current::Part => {
+                let p = &mut self.part.as_mut()?.1;
+                match key {
+                    "name" => set(&mut p.name, string(node)?),
+                    "shape" => set(&mut p.shape, string(node)?),
+                    "mass" => set(&mut p.mass, quantity(node)?),
+                    "density" => set(&mut p.density, quantity(node)?),
+                    "areal_density" => set(&mut p.areal_density, quantity(node)?),
+                    "linear_density" => set(&mut p.linear_density, quantity(node)?),
+                    "length" => set(&mut p.length, quantity(node)?),
+                    "thickness" => set(&mut p.thickness, quantity(node)?),
+                    "diameter" => set(&mut p.diameter, quantity(node)?),
+                    "size" => set(&mut p.size, vector(node)?),
+                    "center" => set(&mut p.center, vector(node)?),
+                    "corner" => set(&mut p.corner, vector(node)?),
+                    "from" => set(&mut p.from, vector(node)?),
+                    "to" => set(&mut p.to, vector(node)?),
+                    "edges" => {
+                        let Node::Array(items, span) = node else {
+                            return None;
+                        };
+                        let edges = items.into_iter().map(vector).collect::<Option<_>>()?;
+                        set(&mut p.edges, Spanned::new(span, edges))
+                    }
+                    "rotation" => set(&mut p.rotation, rotation(node)?),
+                    _ => None,
+                }
+            }
+        }
+    }
+}
+
+/// Set a field once: a second value is a duplicate key.
+fn set<T>(field: &mut Option<T>, value: T) -> Option<()> {
+    match field {
+        Some(_) => None,
+        None => {
+            *field = Some(value);
+            Some(())
+        }
+    }
+}
+
+fn units_key(u: &mut RawUnits, key: &str, node: Node<'_>) -> Option<()> {
+    match key {
+        "length" => set(&mut u.length, string(node)?),
+        "mass" => set(&mut u.mass, string(node)?),
+        _ => None,
+    }
+}
+
+fn string(node: Node<'_>) -> Option<Spanned<String>> {
+    match node {
+        Node::Str(s, span) => Some(Spanned::new(span, s.into_owned())),
+        _ => None,
+    }
+}
+
+fn quantity(node: Node<'_>) -> Option<Spanned<Quantity>> {
+    match node {
+        Node::Num(x, span) => Some(Spanned::new(span, Quantity::Number(x))),
+        Node::Str(s, span) => Some(Spanned::new(span, Quantity::Text(s.into_owned()))),
+        _ => None,
+    }
+}
+
+fn vector(node: Node<'_>) -> Option<Vector> {
+    match node {
+        Node::Array(items, span) => {
+            let v = items.into_iter().map(quantity).collect::<Option<_>>()?;
+            Some(Spanned::new(span, v))
+        }
+        _ => None,
+    }
+}
+
+fn number(node: Node<'_>) -> Option<Spanned<f64>> {
+    match node {
+        Node::Num(x, span) => Some(Spanned::new(span, x)),
+        _ => None,
+    }
+}
+
+fn floats(node: Node<'_>) -> Option<Floats> {
+    match node {
+        Node::Array(items, span) => {
+            let v = items.into_iter().map(number).collect::<Option<_>>()?;
+            Some(Spanned::new(span, v))
+        }
+        _ => None,
+    }
+}
+
+fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
+    let Node::Table(entries, span) = node else {
+        return None;
+    };
+    let mut r = RawRotation {
+        quaternion: None,
+        axis: None,
+        degrees: None,
+        matrix: None,
+        intrinsic: None,
+        extrinsic: None,
+    };
+    for (k, v) in entries {
+        match &*k {
+            "quaternion" => set(&mut r.quaternion, floats(v)?),
+            "axis" => set(&mut r.axis, floats(v)?),
+            "degrees" => {
+                let degrees = match v {
+                    Node::Num(x, s) => Spanned::new(s, Angles::One(x)),
+                    Node::Array(items, s) => {
+                        let xs = items
+                            .into_iter()
+                            .map(|n| match n {
+                                Node::Num(x, _) => Some(x),
+                                _ => None,
+                            })
+                            .collect::<Option<_>>()?;
+                        Spanned::new(s, Angles::Three(xs))
+                    }
+                    _ => return None,
+                };
+                set(&mut r.degrees, degrees)
+            }
+            "matrix" => {
+                let Node::Array(rows, s) = v else {
+                    return None;
+                };
+                let rows = rows.into_iter().map(floats).collect::<Option<_>>()?;
+                set(&mut r.matrix, Spanned::new(s, rows))
+            }
+            "intrinsic" => set(&mut r.intrinsic, string(v)?),
+            "extrinsic" => set(&mut r.extrinsic, string(v)?),
+            _ => None,
+        }?;
+    }
+    Some(Spanned::new(span, r))
+}
+
+impl<'i> EventReceiver for Builder<'i> {
+    fn std_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        if self.header.is_some() || self.key.is_some() || !self.stack.is_empty() {
+            return self.fail();
+        }
+        self.header = Some((span.start(), false, Vec::new()));
+    }
+
+    fn std_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        match self.header.take() {
+            Some((start, false, path)) => self.open_table(start..span.end(), false, path),
+            _ => self.fail(),
+        }
+    }
+
+    fn array_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        if self.header.is_some() || self.key.is_some() || !self.stack.is_empty() {
+            return self.fail();
+        }
+        self.header = Some((span.start(), true, Vec::new()));
+    }
+
+    fn array_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        match self.header.take() {
+            Some((start, true, path)) => self.open_table(start..span.end(), true, path),
+            _ => self.fail(),
+        }
+    }
+
+    fn inline_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
+        self.stack
+            .push(Frame::Table(span.start(), Vec::new(), None));
+        true
+    }
+
+    fn inline_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        match self.stack.pop() {
+            Some(Frame::Table(start, entries, None)) => {
+                self.value(Node::Table(entries, start..span.end()))
+            }
+            _ => self.fail(),
+        }
+    }
+
+    fn array_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
+        self.stack.push(Frame::Array(span.start(), Vec::new()));
+        true
+    }
+
+    fn array_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        match self.stack.pop() {
+            Some(Frame::Array(start, items)) => self.value(Node::Array(items, start..span.end())),
+            _ => self.fail(),
+        }
+    }
+
+    fn simple_key(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
+        let mut key = Cow::Borrowed("");
+        self.raw(span, kind).decode_key(&mut key, error);
+        if let Some((_, _, path)) = &mut self.header {
+            path.push(key);
+            return;
+        }
+        let slot = match self.stack.last_mut() {
+            Some(Frame::Table(_, _, k)) => k,
+            Some(Frame::Array(..)) => return self.fail(),
+            None => &mut self.key,
+        };
+        // A second key before a value: a dotted key.
+        match slot {
+            Some(_) => self.fail(),
+            None => *slot = Some(key),
+        }
+    }
+
+    fn key_sep(&mut self, _span: Span, _error: &mut dyn ErrorSink) {
+        // Dotted keys outside headers: left to the serde path.
+        if self.header.is_none() {
+            self.fail();
+        }
+    }
+
+    fn scalar(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
+        let mut text = Cow::Borrowed("");
+        let range = span.start()..span.end();
+        let node = match self.raw(span, kind).decode_scalar(&mut text, error) {
+            ScalarKind::String => Node::Str(text, range),
+            // As `toml::de::DeFloat::to_f64`: an overflow to infinity is an
+            // error, an explicit `inf` is not.
+            ScalarKind::Float => match text.parse::<f64>() {
+                Ok(x) if !x.is_infinite() || text.contains("inf") => Node::Num(x, range),
+                _ => return self.fail(),
+            },
+            // As the toml deserializer: i64 if it fits, else u64; either
+            // becomes f64 in every field that takes a number.
+            ScalarKind::Integer(radix) => {
+                let r = radix.value();
+                if let Ok(i) = i64::from_str_radix(&text, r) {
+                    Node::Num(i as f64, range)
+                } else if let Ok(u) = u64::from_str_radix(&text, r) {
+                    Node::Num(u as f64, range)
+                } else {
+                    return self.fail();
+                }
+            }
+            ScalarKind::Boolean(_) | ScalarKind::DateTime => return self.fail(),
+        };
+        self.value(node);
+    }
+
+    fn error(&mut self, _span: Span, _error: &mut dyn ErrorSink) {
+        self.fail();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The fast path gives what serde gives, spans included.
+    fn same(text: &str) {
+        let fast = parse(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
+        let serde: RawFile = toml::from_str(text).unwrap();
+        assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
+    }
+
+    /// The fast path leaves the file to serde.
+    fn declines(text: &str) {
+        assert!(parse(text).is_none(), "fast path accepted:\n{text}");
+    }
+
+    #[test]
+    fn part_files_read_as_serde_reads_them() {
+        same(
+            "# comment\nname = \"bent plate\"  # trailing\nunits = { length = \"mm\", mass = \"kg\" }\n\n\
+             [[part]]\nname = \"A\"\nshape = \"plate\"\nareal_density = \"70 kg/m^2\"\n\
+             corner = [0, 0, 0]\nedges = [[0, 125, 0], [0, 0, 100]]\n\n\
+             [[ part ]]\n'name' = \"B \\u00e9\\n\"\nshape = 'box'\nmass = 1_000.5\nsize = [0x10, 0o7, 0b1]\n\
+             center = [ -0.0, +1e-3, \"5 mm\" , ]\nrotation = { quaternion = [1, 0, 0, 0] }\n\n\
+             [analysis]\nabout = [0, 0, 0]\nomega = [0, 0, \"30 rpm\"]\nalpha = [0, 0, 2]\n",
+        );
+        same(
+            "[units]\nlength = \"in\"\n[[part]]\nshape = \"rod\"\nlinear_density = 2\nlength = 3\n\
+             center = [1, 2, 3]\nrotation = { axis = [0, 1, 0], degrees = 90.0 }\n\
+             [[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n\
+             rotation = { intrinsic = \"zyx\", degrees = [10, 20, 30] }\n\
+             [[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n\
+             rotation = { matrix = [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }\n\
+             [[part]]\nshape = \"rod\"\nmass = 1\nfrom = [0, 0, 0]\nto = [1, 1, 1]\ndiameter = 0.1\n\
+             [[part]]\nshape = \"plate\"\nmass = 1\nsize = [1, 2]\ncenter = [0, 0, 0]\nthickness = \"2 mm\"\n",
+        );
+        // Values the model rejects are still read: the same errors follow.
+        same("[[part]]\nshape = \"sphere\"\nmass = nan\ncenter = [inf, -inf, 1e300]\nsize = []\n");
+        same("[[part]]\r\nshape = \"point\"\r\nmass = -1\r\ncenter = [1, 2]\r\n");
+        same("name = \"no parts\"\n");
+        same("");
+    }
+
+    #[test]
+    fn anything_else_is_left_to_serde() {
+        // Not covered: [expect], dotted keys, inline `part`, other tables.
+        declines(
+            "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n[expect]\nmass = { value = 1, tol = \"1%\" }\n",
+        );
+        declines("units.length = \"mm\"\n");
+        declines("part = [{ shape = \"point\", mass = 1, center = [0, 0, 0] }]\n");
+        declines("[[part]]\nshape = \"box\"\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = 90\n");
+        // Errors: syntax, duplicates, unknown keys, wrong types, missing shape.
+        declines("[[part]\nshape = \"point\"\n");
+        declines("[[part]]\nshape = \"point\"\nshape = \"box\"\n");
+        declines("[[part]]\nshape = \"point\"\nmasss = 1\n");
+        declines("[[part]]\nshape = \"point\"\nmass = [1]\n");
+        declines("[[part]]\nshape = \"point\"\nmass = true\n");
+        declines("[[part]]\nmass = 1\n");
+        declines("[[part]]\nshape = \"box\"\nrotation = { axis = [0, 0, 1], axis = [1, 0, 0] }\n");
+        declines("[analysis]\n[analysis]\n");
+        declines("units = { length = \"mm\" }\n[units]\nmass = \"kg\"\n");
+        declines("[[part]]\nshape = \"point\"\nmass = 99999999999999999999999\n");
+        declines("[[part]]\nshape = \"point\"\nmass = 1e999\n");
+    }
+}
