@@ -185,11 +185,10 @@ pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
         MassSpec::Given(m) => T::of(m),
         MassSpec::Density(rho) => {
             let measure = match (&spec.place, shape) {
-                (Place::Centered { extent: e, .. }, Shape::Box) => {
-                    T::of(e[0]) * T::of(e[1]) * T::of(e[2])
+                (Place::Centered { extent: e, .. }, _) => {
+                    let e: [T; 3] = e.map(T::of);
+                    shape.measure_of(&e[..shape.dim_count()])
                 }
-                (Place::Centered { extent: e, .. }, Shape::Plate) => T::of(e[0]) * T::of(e[1]),
-                (Place::Centered { extent: e, .. }, _) => T::of(e[2]),
                 (Place::Edges { edges, .. }, _) => edges[..shape.edge_count()]
                     .iter()
                     .fold(T::of(1.0), |acc, e| acc * norm(e.map(T::of))),
@@ -240,7 +239,8 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
             orientation,
             ..
         } => {
-            let d = extent.map(|a| twelfth * T::of(a) * T::of(a));
+            let dims: [T; 3] = extent.map(T::of);
+            let d = shape.second_moments(m, &dims[..shape.dim_count()]);
             if let Orientation::Identity = orientation {
                 return std::array::from_fn(|a| {
                     std::array::from_fn(|b| if a == b { d[a] } else { zero })

@@ -43,6 +43,8 @@ pub trait Real:
     }
     /// sin and cos of an angle in degrees, exact at multiples of 90°.
     fn sin_cos_deg(deg: f64) -> (Self, Self);
+    /// π to the type's precision.
+    fn pi() -> Self;
 }
 
 /// Reduce degrees to x in [−45°, 45°] and a quarter-turn count q: both steps
@@ -77,6 +79,9 @@ impl Real for f64 {
         let (x, q) = reduce_degrees(deg);
         let (s, c) = x.to_radians().sin_cos();
         quarter(q, s, c)
+    }
+    fn pi() -> f64 {
+        std::f64::consts::PI
     }
 }
 
@@ -260,6 +265,9 @@ impl Real for DD {
         let (p, e) = two_prod(s, s);
         let r = (self - DD::new(p, e)).hi;
         DD::renorm(s, r / (2.0 * s))
+    }
+    fn pi() -> DD {
+        DD::PI
     }
     fn sin_cos_deg(deg: f64) -> (DD, DD) {
         let (x, q) = reduce_degrees(deg);

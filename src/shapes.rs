@@ -5,16 +5,24 @@
 //! - box: edges `a, b, c` along local x, y, z, centred on the origin;
 //! - plate: thin rectangle `a × b` in the local x–y plane, zero thickness;
 //! - rod: slender segment of length `L` along local z, zero radius;
+//! - cylinder: radius `R`, length `L` along local z, centred on the origin;
+//!   with an inner radius `r` a tube;
+//! - disk: thin circular plate of radius `R` in the local x–y plane; with
+//!   an inner radius an annulus;
+//! - sphere: radius `R` about the origin; with an inner radius a hollow
+//!   sphere, and with r = R a thin shell;
 //! - point: a point mass at the origin.
 //!
-//! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; each
-//! shape is a product of such segments, so its second moments are diagonal
-//! in local axes and need no products of inertia.
+//! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; box,
+//! plate and rod are products of such segments. Every shape is symmetric
+//! about its local planes, so its second moments are diagonal in local axes
+//! and need no products of inertia.
 //!
 //! A plate's real `thickness` and a rod's `diameter` never enter these: the
 //! composition is the idealised one, and `report::ideal` compares it with
 //! the solid box and cylinder they describe.
 
+use crate::numeric::Real;
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -24,17 +32,31 @@ pub enum Shape {
     Box,
     Plate,
     Rod,
+    Cylinder,
+    Disk,
+    Sphere,
     Point,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 4] = [Shape::Box, Shape::Plate, Shape::Rod, Shape::Point];
+    pub const ALL: [Shape; 7] = [
+        Shape::Box,
+        Shape::Plate,
+        Shape::Rod,
+        Shape::Cylinder,
+        Shape::Disk,
+        Shape::Sphere,
+        Shape::Point,
+    ];
 
     pub fn name(self) -> &'static str {
         match self {
             Shape::Box => "box",
             Shape::Plate => "plate",
             Shape::Rod => "rod",
+            Shape::Cylinder => "cylinder",
+            Shape::Disk => "disk",
+            Shape::Sphere => "sphere",
             Shape::Point => "point",
         }
     }
@@ -43,11 +65,33 @@ impl Shape {
         Shape::ALL.into_iter().find(|s| s.name() == name)
     }
 
-    /// Number of edge vectors that span the shape (and of `size` entries).
+    /// Number of edge vectors that span the shape when it is placed by
+    /// `corner`/`edges` or `from`/`to` (and of a box's or plate's `size`
+    /// entries); 0 for shapes that are only placed by `center`.
     pub fn edge_count(self) -> usize {
         match self {
             Shape::Box => 3,
             Shape::Plate => 2,
+            Shape::Rod => 1,
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => 0,
+        }
+    }
+
+    /// Number of dimensions the closed forms take (see `second_moments`).
+    pub fn dim_count(self) -> usize {
+        match self {
+            Shape::Box | Shape::Cylinder => 3,
+            Shape::Plate | Shape::Disk | Shape::Sphere => 2,
+            Shape::Rod => 1,
+            Shape::Point => 0,
+        }
+    }
+
+    /// How many of the three local second moments are non-zero.
+    pub fn nonzero_moments(self) -> usize {
+        match self {
+            Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
+            Shape::Plate | Shape::Disk => 2,
             Shape::Rod => 1,
             Shape::Point => 0,
         }
@@ -56,30 +100,85 @@ impl Shape {
     /// The key of the density that this shape takes instead of `mass`.
     pub fn density_key(self) -> Option<&'static str> {
         match self {
-            Shape::Box => Some("density"),
-            Shape::Plate => Some("areal_density"),
+            Shape::Box | Shape::Cylinder | Shape::Sphere => Some("density"),
+            Shape::Plate | Shape::Disk => Some("areal_density"),
             Shape::Rod => Some("linear_density"),
             Shape::Point => None,
         }
     }
 
-    /// Volume, area or length (m³, m², m) of the given edge lengths, the
-    /// measure that the density multiplies.
-    pub fn measure(self, dims: &[f64]) -> f64 {
-        dims.iter().product()
+    /// Volume, area or length of a shape of dimensions `d` (see
+    /// `second_moments`), the measure that the density multiplies.
+    /// R² − r² is formed as (R − r)(R + r) and R³ − r³ as
+    /// (R − r)(R² + Rr + r²), so a thin wall is not a difference of large
+    /// numbers.
+    pub fn measure_of<T: Real>(self, d: &[T]) -> T {
+        let ring = |d: &[T]| T::pi() * (d[0] - d[1]) * (d[0] + d[1]);
+        match self {
+            Shape::Box | Shape::Plate | Shape::Rod => d.iter().fold(T::of(1.0), |a, &x| a * x),
+            Shape::Cylinder => ring(d) * d[2],
+            Shape::Disk => ring(d),
+            Shape::Sphere => {
+                let (r_out, r_in) = (d[0], d[1]);
+                T::of(4.0) / T::of(3.0)
+                    * T::pi()
+                    * (r_out - r_in)
+                    * (r_out * r_out + r_out * r_in + r_in * r_in)
+            }
+            Shape::Point => T::of(1.0),
+        }
     }
 
-    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, for edge
-    /// lengths `dims` (box: a, b, c; plate: a, b; rod: L; point: none).
-    pub fn local_second_moment(self, mass: f64, dims: &[f64]) -> Vector3<f64> {
-        let seg = |a: f64| mass * a * a / 12.0;
-        match (self, dims) {
-            (Shape::Box, &[a, b, c]) => Vector3::new(seg(a), seg(b), seg(c)),
-            (Shape::Plate, &[a, b]) => Vector3::new(seg(a), seg(b), 0.0),
-            (Shape::Rod, &[l]) => Vector3::new(0.0, 0.0, seg(l)),
-            (Shape::Point, &[]) => Vector3::zeros(),
-            _ => unreachable!("the model passes each shape its edge_count() dimensions"),
+    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
+    /// `m` and dimensions `d`: box [a, b, c]; plate [a, b]; rod [L];
+    /// cylinder [R, r, L]; disk [R, r]; sphere [R, r] (outer and inner
+    /// radius, r = 0 for a solid, r = R for a thin shell); point [].
+    ///
+    /// - segment of length a: m a²/12;
+    /// - cylinder or tube, about a diameter in its mid-plane: m (R² + r²)/4
+    ///   (half the axial m (R² + r²)/2), and m L²/12 along the axis; a disk
+    ///   or annulus is the same with L = 0;
+    /// - sphere or hollow sphere: m/5 · (R⁵ − r⁵)/(R³ − r³) along every
+    ///   axis, written as m R²/5 · (1 + ρ + ρ² + ρ³ + ρ⁴)/(1 + ρ + ρ²) with
+    ///   ρ = r/R: no cancellation for thin walls, no overflow in R⁵, and
+    ///   m R²/3 for a thin shell.
+    pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
+        let zero = T::of(0.0);
+        let seg = |a: T| m * a * a / T::of(12.0);
+        let ring = |r_out: T, r_in: T| m * (r_out * r_out + r_in * r_in) / T::of(4.0);
+        match (self, d) {
+            (Shape::Box, &[a, b, c]) => [seg(a), seg(b), seg(c)],
+            (Shape::Plate, &[a, b]) => [seg(a), seg(b), zero],
+            (Shape::Rod, &[l]) => [zero, zero, seg(l)],
+            (Shape::Cylinder, &[r_out, r_in, l]) => {
+                let q = ring(r_out, r_in);
+                [q, q, seg(l)]
+            }
+            (Shape::Disk, &[r_out, r_in]) => {
+                let q = ring(r_out, r_in);
+                [q, q, zero]
+            }
+            (Shape::Sphere, &[r_out, r_in]) => {
+                let one = T::of(1.0);
+                let rho = r_in / r_out;
+                let rho2 = rho * rho;
+                let ratio = (one + rho + rho2 + rho2 * rho + rho2 * rho2) / (one + rho + rho2);
+                let q = m * r_out * r_out / T::of(5.0) * ratio;
+                [q, q, q]
+            }
+            (Shape::Point, &[]) => [zero; 3],
+            _ => unreachable!("the model passes each shape its dim_count() dimensions"),
         }
+    }
+
+    /// `measure_of` in f64.
+    pub fn measure(self, dims: &[f64]) -> f64 {
+        self.measure_of(dims)
+    }
+
+    /// `second_moments` in f64, as a vector.
+    pub fn local_second_moment(self, mass: f64, dims: &[f64]) -> Vector3<f64> {
+        Vector3::from(self.second_moments(mass, dims))
     }
 }
 
@@ -174,5 +273,172 @@ mod tests {
         assert_eq!(Shape::Box.measure(&[2.0, 3.0, 4.0]), 24.0);
         assert_eq!(Shape::Plate.measure(&[2.0, 3.0]), 6.0);
         assert_eq!(Shape::Rod.measure(&[2.0]), 2.0);
+    }
+
+    /// Gauss–Legendre on [lo, hi] (5 nodes, exact to degree 9).
+    fn gauss(lo: f64, hi: f64) -> Vec<(f64, f64)> {
+        gauss5()
+            .iter()
+            .map(|(x, w)| (lo + (hi - lo) * (x + 0.5), w * (hi - lo)))
+            .collect()
+    }
+
+    /// The trapezoid rule on a full turn, exact for trigonometric
+    /// polynomials of degree below `n`.
+    fn turn(n: usize) -> Vec<(f64, f64)> {
+        let h = 2.0 * std::f64::consts::PI / n as f64;
+        (0..n).map(|k| (k as f64 * h, h)).collect()
+    }
+
+    /// Mass-weighted ∫x², ∫y², ∫z² over the region `points` (x, y, z,
+    /// weight) samples, for a total mass m: m · ∫x² dV / ∫dV. Independent of
+    /// the closed forms, the measure included.
+    fn moments(m: f64, points: impl Iterator<Item = ([f64; 3], f64)>) -> Vector3<f64> {
+        let (mut vol, mut acc) = (0.0, Vector3::zeros());
+        for (p, w) in points {
+            vol += w;
+            acc += Vector3::new(p[0] * p[0], p[1] * p[1], p[2] * p[2]) * w;
+        }
+        acc * (m / vol)
+    }
+
+    /// Cylinder or tube by quadrature in cylindrical coordinates.
+    fn cylinder_quadrature(m: f64, r_out: f64, r_in: f64, l: f64) -> Vector3<f64> {
+        let mut pts = Vec::new();
+        for (r, wr) in gauss(r_in, r_out) {
+            for (t, wt) in turn(8) {
+                for (z, wz) in gauss(-l / 2.0, l / 2.0) {
+                    pts.push(([r * t.cos(), r * t.sin(), z], r * wr * wt * wz));
+                }
+            }
+        }
+        moments(m, pts.into_iter())
+    }
+
+    fn disk_quadrature(m: f64, r_out: f64, r_in: f64) -> Vector3<f64> {
+        let mut pts = Vec::new();
+        for (r, wr) in gauss(r_in, r_out) {
+            for (t, wt) in turn(8) {
+                pts.push(([r * t.cos(), r * t.sin(), 0.0], r * wr * wt));
+            }
+        }
+        moments(m, pts.into_iter())
+    }
+
+    /// Sphere or hollow sphere, in r, u = cos φ and θ (dV = r² dr du dθ).
+    fn sphere_quadrature(m: f64, r_out: f64, r_in: f64) -> Vector3<f64> {
+        let mut pts = Vec::new();
+        for (r, wr) in gauss(r_in, r_out) {
+            for (u, wu) in gauss(-1.0, 1.0) {
+                for (t, wt) in turn(8) {
+                    let s = (1.0 - u * u).sqrt();
+                    pts.push((
+                        [r * s * t.cos(), r * s * t.sin(), r * u],
+                        r * r * wr * wu * wt,
+                    ));
+                }
+            }
+        }
+        moments(m, pts.into_iter())
+    }
+
+    fn assert_rel(a: Vector3<f64>, b: Vector3<f64>, what: &str) {
+        let tol = 16.0 * f64::EPSILON * b.amax();
+        assert!((a - b).amax() <= tol, "{what}: {a} vs {b}");
+    }
+
+    #[test]
+    fn cylinder_and_tube_closed_forms_match_quadrature() {
+        for (r_in, what) in [(0.0, "solid"), (0.3, "tube"), (0.69, "thin tube")] {
+            assert_rel(
+                Shape::Cylinder.local_second_moment(2.5, &[0.7, r_in, 1.9]),
+                cylinder_quadrature(2.5, 0.7, r_in, 1.9),
+                what,
+            );
+        }
+    }
+
+    #[test]
+    fn disk_and_annulus_closed_forms_match_quadrature() {
+        for r_in in [0.0, 0.05, 0.1249] {
+            assert_rel(
+                Shape::Disk.local_second_moment(0.8, &[0.125, r_in]),
+                disk_quadrature(0.8, 0.125, r_in),
+                "disk",
+            );
+        }
+    }
+
+    #[test]
+    fn sphere_and_hollow_sphere_closed_forms_match_quadrature() {
+        for r_in in [0.0, 0.2, 0.39] {
+            assert_rel(
+                Shape::Sphere.local_second_moment(3.0, &[0.4, r_in]),
+                sphere_quadrature(3.0, 0.4, r_in),
+                "sphere",
+            );
+        }
+    }
+
+    #[test]
+    fn a_thin_spherical_shell_is_the_surface_average() {
+        // r = R: ∫x² dA / A over the sphere, by quadrature in u and θ.
+        let mut pts = Vec::new();
+        for (u, wu) in gauss(-1.0, 1.0) {
+            for (t, wt) in turn(8) {
+                let s = (1.0 - u * u).sqrt();
+                pts.push(([1.5 * s * t.cos(), 1.5 * s * t.sin(), 1.5 * u], wu * wt));
+            }
+        }
+        assert_rel(
+            Shape::Sphere.local_second_moment(2.0, &[1.5, 1.5]),
+            moments(2.0, pts.into_iter()),
+            "shell",
+        );
+    }
+
+    #[test]
+    fn hollow_shapes_are_the_solid_minus_the_core() {
+        // Same density: (m I)_hollow = (m I)_outer − (m I)_inner, with each
+        // mass from the measure.
+        let rho = 7850.0;
+        for (shape, outer, inner, hollow) in [
+            (
+                Shape::Cylinder,
+                vec![0.5, 0.0, 2.0],
+                vec![0.3, 0.0, 2.0],
+                vec![0.5, 0.3, 2.0],
+            ),
+            (Shape::Disk, vec![0.5, 0.0], vec![0.3, 0.0], vec![0.5, 0.3]),
+            (
+                Shape::Sphere,
+                vec![0.5, 0.0],
+                vec![0.3, 0.0],
+                vec![0.5, 0.3],
+            ),
+        ] {
+            let (mo, mi, mh) = (
+                rho * shape.measure(&outer),
+                rho * shape.measure(&inner),
+                rho * shape.measure(&hollow),
+            );
+            assert!(
+                (mo - mi - mh).abs() <= 8.0 * f64::EPSILON * mo,
+                "{shape:?} mass"
+            );
+            let diff =
+                shape.local_second_moment(mo, &outer) - shape.local_second_moment(mi, &inner);
+            assert_rel(shape.local_second_moment(mh, &hollow), diff, shape.name());
+        }
+    }
+
+    #[test]
+    fn measures_are_the_textbook_volumes_and_areas() {
+        use std::f64::consts::PI;
+        let close = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b;
+        assert!(close(Shape::Cylinder.measure(&[2.0, 0.0, 3.0]), 12.0 * PI));
+        assert!(close(Shape::Disk.measure(&[2.0, 1.0]), 3.0 * PI));
+        assert!(close(Shape::Sphere.measure(&[3.0, 0.0]), 36.0 * PI));
+        assert_eq!(Shape::Sphere.measure(&[3.0, 3.0]), 0.0);
     }
 }

@@ -116,6 +116,8 @@ struct Part {
     to: Option<Vector>,
     thickness: Option<Spanned<Quantity>>,
     diameter: Option<Spanned<Quantity>>,
+    radius: Option<Spanned<Quantity>>,
+    inner_radius: Option<Spanned<Quantity>>,
 }
 
 struct Builder<'i> {
@@ -200,6 +202,8 @@ impl<'i> Builder<'i> {
             to: p.to,
             thickness: p.thickness,
             diameter: p.diameter,
+            radius: p.radius,
+            inner_radius: p.inner_radius,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),
@@ -304,6 +308,8 @@ impl<'i> Builder<'i> {
                     "length" => set(&mut p.length, quantity(node)?),
                     "thickness" => set(&mut p.thickness, quantity(node)?),
                     "diameter" => set(&mut p.diameter, quantity(node)?),
+                    "radius" => set(&mut p.radius, quantity(node)?),
+                    "inner_radius" => set(&mut p.inner_radius, quantity(node)?),
                     "size" => set(&mut p.size, vector(node)?),
                     "center" => set(&mut p.center, vector(node)?),
                     "corner" => set(&mut p.corner, vector(node)?),
@@ -583,6 +589,11 @@ mod tests {
              rotation = { matrix = [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }\n\
              [[part]]\nshape = \"rod\"\nmass = 1\nfrom = [0, 0, 0]\nto = [1, 1, 1]\ndiameter = 0.1\n\
              [[part]]\nshape = \"plate\"\nmass = 1\nsize = [1, 2]\ncenter = [0, 0, 0]\nthickness = \"2 mm\"\n",
+        );
+        same(
+            "[[part]]\nshape = \"cylinder\"\ndensity = \"7850 kg/m^3\"\nradius = 0.25\n\
+             inner_radius = \"210 mm\"\nlength = 0.06\ncenter = [0, 0, 0]\n\
+             [[part]]\nshape = \"sphere\"\nmass = 1\nradius = 2\ncenter = [1, 0, 0]\n",
         );
         // Values the model rejects are still read: the same errors follow.
         same("[[part]]\nshape = \"sphere\"\nmass = nan\ncenter = [inf, -inf, 1e300]\nsize = []\n");

@@ -111,8 +111,9 @@ pub enum MassSpec {
 
 #[derive(Debug, Clone, PartialEq)]
 pub enum Place {
-    /// `center`, extents along local x, y, z (a plate's z and a rod's x, y
-    /// are 0; a point's are all 0) and the turn of the local axes.
+    /// `center`, the shape's dimensions as `Shape::second_moments` takes
+    /// them (box [a, b, c], plate [a, b], rod [L], cylinder [R, r, L], disk
+    /// and sphere [R, r]), padded with 0, and the turn of the local axes.
     Centered {
         center: [f64; 3],
         extent: [f64; 3],
@@ -433,8 +434,8 @@ impl Ctx<'_> {
         orientation: Orientation,
     ) -> Result<Spec, Diagnostic> {
         let density = match shape {
-            Shape::Box => (&p.density, Dim::DENSITY),
-            Shape::Plate => (&p.areal_density, Dim::AREAL_DENSITY),
+            Shape::Box | Shape::Cylinder | Shape::Sphere => (&p.density, Dim::DENSITY),
+            Shape::Plate | Shape::Disk => (&p.areal_density, Dim::AREAL_DENSITY),
             Shape::Rod => (&p.linear_density, Dim::LINEAR_DENSITY),
             Shape::Point => (&None, Dim::MASS),
         };
@@ -477,7 +478,17 @@ impl Ctx<'_> {
                     }
                     Shape::Rod => {
                         let l = p.length.as_ref().expect("`part` checked the length");
-                        extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
+                        extent[0] = self.file_quantity(l, "length", Dim::LENGTH)?;
+                    }
+                    Shape::Cylinder | Shape::Disk | Shape::Sphere => {
+                        let r = p.radius.as_ref().expect("`part` checked the radius");
+                        extent[0] = self.file_quantity(r, "radius", Dim::LENGTH)?;
+                        if let Some(q) = &p.inner_radius {
+                            extent[1] = self.file_quantity(q, "inner_radius", Dim::LENGTH)?;
+                        }
+                        if let (Shape::Cylinder, Some(l)) = (shape, &p.length) {
+                            extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
+                        }
                     }
                     Shape::Point => {}
                 }
@@ -552,7 +563,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 14] = [
+        let keys: [(&str, Option<Range<usize>>); 16] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -570,6 +581,8 @@ impl Ctx<'_> {
             ("mass", p.mass.as_ref().map(Spanned::span)),
             ("thickness", p.thickness.as_ref().map(Spanned::span)),
             ("diameter", p.diameter.as_ref().map(Spanned::span)),
+            ("radius", p.radius.as_ref().map(Spanned::span)),
+            ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
@@ -595,6 +608,31 @@ impl Ctx<'_> {
                 "mass",
                 "diameter",
             ],
+            Shape::Cylinder => &[
+                "density",
+                "radius",
+                "inner_radius",
+                "length",
+                "center",
+                "rotation",
+                "mass",
+            ],
+            Shape::Disk => &[
+                "areal_density",
+                "radius",
+                "inner_radius",
+                "center",
+                "rotation",
+                "mass",
+            ],
+            Shape::Sphere => &[
+                "density",
+                "radius",
+                "inner_radius",
+                "center",
+                "rotation",
+                "mass",
+            ],
             Shape::Point => &["center", "mass"],
         };
         if let Some((key, span)) = keys
@@ -611,12 +649,12 @@ impl Ctx<'_> {
         let by_edges: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &keys[7..9],
             Shape::Rod => &keys[9..11],
-            Shape::Point => &[],
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => &[],
         };
         let canonical: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &[keys[3].clone(), keys[5].clone(), keys[6].clone()],
             Shape::Rod => &keys[4..7],
-            Shape::Point => &keys[5..6],
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => &keys[5..6],
         };
         let edges_given = first(by_edges).is_some();
         let (center, orientation, dims) = match (first(canonical), first(by_edges)) {
@@ -636,8 +674,8 @@ impl Ctx<'_> {
 
         // Mass: exactly one of `mass` and the shape's density.
         let density = match shape {
-            Shape::Box => &p.density,
-            Shape::Plate => &p.areal_density,
+            Shape::Box | Shape::Cylinder | Shape::Sphere => &p.density,
+            Shape::Plate | Shape::Disk => &p.areal_density,
             Shape::Rod => &p.linear_density,
             Shape::Point => &None,
         };
@@ -656,8 +694,8 @@ impl Ctx<'_> {
             (Some(m), _, _) => self.positive(m, "mass", Dim::MASS)?,
             (None, Some(d), Some(dk)) => {
                 let dim = match shape {
-                    Shape::Box => Dim::DENSITY,
-                    Shape::Plate => Dim::AREAL_DENSITY,
+                    Shape::Box | Shape::Cylinder | Shape::Sphere => Dim::DENSITY,
+                    Shape::Plate | Shape::Disk => Dim::AREAL_DENSITY,
                     _ => Dim::LINEAR_DENSITY,
                 };
                 let rho = self.positive(d, dk, dim)?;
@@ -686,7 +724,7 @@ impl Ctx<'_> {
         };
         let local_second_moment = shape.local_second_moment(mass, &dims);
         // Each edge contributes m a²/12: it must neither overflow nor vanish.
-        let expected_nonzero = shape.edge_count();
+        let expected_nonzero = shape.nonzero_moments();
         let nonzero = local_second_moment
             .iter()
             .filter(|x| **x >= f64::MIN_POSITIVE)
@@ -773,6 +811,28 @@ impl Ctx<'_> {
             Shape::Rod => {
                 let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
                 vec![self.positive(l, "length", Dim::LENGTH)?]
+            }
+            Shape::Cylinder | Shape::Disk | Shape::Sphere => {
+                let r = p.radius.as_ref().ok_or_else(|| missing("radius"))?;
+                let outer = self.positive(r, "radius", Dim::LENGTH)?;
+                let inner = match &p.inner_radius {
+                    None => 0.0,
+                    Some(q) => {
+                        let v = self.quantity(q, "inner_radius", Dim::LENGTH)?;
+                        if !(v >= 0.0 && v <= outer) {
+                            return Err(self
+                                .err(q.span(), "`inner_radius` must be from 0 to `radius`")
+                                .help("0 (or leaving it out) is a solid; equal to `radius`, a thin shell"));
+                        }
+                        v
+                    }
+                };
+                let mut dims = vec![outer, inner];
+                if shape == Shape::Cylinder {
+                    let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
+                    dims.push(self.positive(l, "length", Dim::LENGTH)?);
+                }
+                dims
             }
             Shape::Point => vec![],
         };
@@ -953,6 +1013,15 @@ fn shape_help(shape: Shape) -> &'static str {
         }
         Shape::Rod => {
             "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`; optionally its real `diameter`"
+        }
+        Shape::Cylinder => {
+            "a cylinder takes `mass` or `density`, `radius` and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube"
+        }
+        Shape::Disk => {
+            "a disk takes `mass` or `areal_density`, and `radius` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus"
+        }
+        Shape::Sphere => {
+            "a sphere takes `mass` or `density`, and `radius` with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)"
         }
         Shape::Point => "a point takes `mass` and `center`",
     }

@@ -57,6 +57,9 @@ pub struct RawPart {
     pub thickness: Option<Spanned<Quantity>>,
     /// A rod's real diameter: reported against, never composed.
     pub diameter: Option<Spanned<Quantity>>,
+    /// Cylinder, disk and sphere: outer radius, and the optional inner one.
+    pub radius: Option<Spanned<Quantity>>,
+    pub inner_radius: Option<Spanned<Quantity>>,
 }
 
 #[derive(Deserialize, Debug)]

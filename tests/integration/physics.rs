@@ -874,3 +874,35 @@ fn a_gram_at_the_centre_of_mass_has_no_share_and_one_a_metre_away_a_small_one() 
         }
     }
 }
+
+#[test]
+fn round_shapes_match_their_textbook_moments_in_both_precisions() {
+    // A tube turned a quarter turn about x (its axis, local z, along −y),
+    // and a hollow sphere: I about the centre of mass from the closed forms
+    // written out here, I_axis = m(R² + r²)/2, I_diam = m((R² + r²)/4 + L²/12),
+    // I_sphere = 2/5 m (R⁵ − r⁵)/(R³ − r³).
+    let text = "[[part]]\nshape = \"cylinder\"\nmass = 3\nradius = 0.5\ninner_radius = 0.25\n\
+                length = 2\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }\n\
+                [[part]]\nshape = \"sphere\"\nmass = 2\nradius = 0.5\ninner_radius = 0.25\n\
+                center = [0, 0, 0]\n";
+    let (r2, rr2) = (0.25 + 0.0625, 0.25 + 0.0625);
+    let axis = 3.0 * r2 / 2.0;
+    let diam = 3.0 * (rr2 / 4.0 + 4.0 / 12.0);
+    let sphere =
+        0.4 * 2.0 * (0.5f64.powi(5) - 0.25f64.powi(5)) / (0.5f64.powi(3) - 0.25f64.powi(3));
+    let want = [diam + sphere, axis + sphere, diam + sphere];
+    for precision in [Precision::Standard, Precision::Extended] {
+        let source = Source::new("t.toml", text);
+        let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
+        let s = summarize(&model, &model.analysis, Products::Tensor, precision).unwrap();
+        for (k, w) in want.iter().enumerate() {
+            let got = s.inertia_com[k][k];
+            assert!(
+                (got - w).abs() <= 8.0 * EPS * w,
+                "{precision:?} {k}: {got} vs {w}"
+            );
+        }
+        assert!(s.inertia_com[0][1].abs() <= 8.0 * EPS * want[0]);
+        assert!(s.inertia_com[1][2].abs() <= 8.0 * EPS * want[0]);
+    }
+}
