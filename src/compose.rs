@@ -179,8 +179,13 @@ fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
 }
 
 /// Mass of a part (file units): given, or density times volume, area or
-/// length.
+/// length; negative for a cut-out.
 pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
+    let m: T = unsigned_mass_of(shape, spec);
+    if spec.removed { -m } else { m }
+}
+
+fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
     match spec.mass {
         MassSpec::Given(m) => T::of(m),
         MassSpec::Density(rho) => {
@@ -542,6 +547,7 @@ mod tests {
                                 extent: [a; 3],
                                 orientation: Orientation::Quaternion(q.map(|x| x / norm)),
                             },
+                            removed: false,
                         },
                     });
                 }

@@ -204,6 +204,8 @@ impl<'i> Builder<'i> {
             diameter: p.diameter,
             radius: p.radius,
             inner_radius: p.inner_radius,
+            // Booleans are serde's: a file with `remove` never gets here.
+            remove: None,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),

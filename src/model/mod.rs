@@ -76,7 +76,7 @@ pub struct Part {
     /// The part's `name`, or `part N` (1-based position in the file).
     pub name: String,
     pub shape: Shape,
-    /// kg
+    /// kg; negative for a cut-out (`remove = true`).
     pub mass: f64,
     /// Centroid in the file's frame, m.
     pub center: Vector3<f64>,
@@ -100,6 +100,8 @@ pub struct Part {
 pub struct Spec {
     pub mass: MassSpec,
     pub place: Place,
+    /// `remove = true`: a cut-out, composed with negative mass.
+    pub removed: bool,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -499,7 +501,11 @@ impl Ctx<'_> {
                 }
             }
         };
-        Ok(Spec { mass, place })
+        Ok(Spec {
+            mass,
+            place,
+            removed: matches!(&p.remove, Some(r) if *r.get_ref()),
+        })
     }
 
     /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
@@ -563,7 +569,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 16] = [
+        let keys: [(&str, Option<Range<usize>>); 17] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -583,10 +589,11 @@ impl Ctx<'_> {
             ("diameter", p.diameter.as_ref().map(Spanned::span)),
             ("radius", p.radius.as_ref().map(Spanned::span)),
             ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
+            ("remove", p.remove.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
-                "density", "size", "center", "rotation", "corner", "edges", "mass",
+                "density", "size", "center", "rotation", "corner", "edges", "mass", "remove",
             ],
             Shape::Plate => &[
                 "areal_density",
@@ -596,6 +603,7 @@ impl Ctx<'_> {
                 "corner",
                 "edges",
                 "mass",
+                "remove",
                 "thickness",
             ],
             Shape::Rod => &[
@@ -606,6 +614,7 @@ impl Ctx<'_> {
                 "from",
                 "to",
                 "mass",
+                "remove",
                 "diameter",
             ],
             Shape::Cylinder => &[
@@ -616,6 +625,7 @@ impl Ctx<'_> {
                 "center",
                 "rotation",
                 "mass",
+                "remove",
             ],
             Shape::Disk => &[
                 "areal_density",
@@ -624,6 +634,7 @@ impl Ctx<'_> {
                 "center",
                 "rotation",
                 "mass",
+                "remove",
             ],
             Shape::Sphere => &[
                 "density",
@@ -632,6 +643,7 @@ impl Ctx<'_> {
                 "center",
                 "rotation",
                 "mass",
+                "remove",
             ],
             Shape::Point => &["center", "mass"],
         };
@@ -749,13 +761,14 @@ impl Ctx<'_> {
             _ => None,
         };
         let spec = self.spec(shape, p, edges_given, orientation.clone())?;
+        let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
             name,
             shape,
-            mass,
+            mass: sign * mass,
             center,
             axes: rotation::to_matrix3(&orientation.matrix()),
-            local_second_moment,
+            local_second_moment: local_second_moment * sign,
             spec,
         };
         Ok((part, real))

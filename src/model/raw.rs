@@ -60,6 +60,8 @@ pub struct RawPart {
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
     pub radius: Option<Spanned<Quantity>>,
     pub inner_radius: Option<Spanned<Quantity>>,
+    /// A cut-out: subtracted from the body.
+    pub remove: Option<Spanned<bool>>,
 }
 
 #[derive(Deserialize, Debug)]

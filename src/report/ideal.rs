@@ -23,6 +23,10 @@ use serde::Serialize;
 /// a ratio is below ~1e-3 of it, hence 2¹².
 const NEGLIGIBLE_ROUNDOFFS: f64 = 4096.0;
 
+/// A relative change this small and negative is the rounding of two
+/// solutions of nearly the same tensor, not a decrease.
+const ROUNDING_CHANGE: f64 = 64.0 * f64::EPSILON;
+
 /// The fraction of the largest principal moment below which a moment counts
 /// as zero, for the arithmetic that produced it.
 fn negligible(precision: Precision) -> f64 {
@@ -140,12 +144,21 @@ fn plus(a: &M3<DD>, b: &M3<DD>) -> M3<DD> {
 ///
 /// NOTE: the solid adds a positive semi-definite term to the inertia
 /// tensor (tr(X)E − X for a PSD second moment X), so by Weyl's inequality no
-/// sorted moment decreases; a negative change is rounding, shown as 0.
+/// sorted moment decreases, and a small negative change is rounding, shown
+/// as 0. (A cut-out made solid removes such a term: its changes are
+/// negative, and shown.)
 fn relative_change(solid: &Principal, ideal: &Principal, zero: f64) -> [Option<f64>; 3] {
     let top = ideal.moments[2].f64();
     std::array::from_fn(|k| {
         let i = ideal.moments[k];
-        (i.f64() > zero * top).then(|| ((solid.moments[k] - i) / i).f64().max(0.0))
+        (i.f64() > zero * top).then(|| {
+            let change = ((solid.moments[k] - i) / i).f64();
+            if change < 0.0 && change > -ROUNDING_CHANGE {
+                0.0
+            } else {
+                change
+            }
+        })
     })
 }
 
@@ -228,8 +241,10 @@ pub fn shares(parts: &[Part], body: &Body, principal: &Principal) -> Vec<[Option
                     }
                 }
                 let ad = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
-                // Exactly non-negative; rounding may leave a trace below 0.
-                q.max(0.0) + (m * ad) * ad
+                // Exactly of the sign of m (negative for a cut-out);
+                // rounding may leave a trace of the other sign.
+                let q = if m >= 0.0 { q.max(0.0) } else { q.min(0.0) };
+                q + (m * ad) * ad
             });
             std::array::from_fn(|k| {
                 (moments[k] > zero).then(|| (along[(k + 1) % 3] + along[(k + 2) % 3]) / moments[k])

@@ -122,6 +122,8 @@ pub enum SummaryError {
     /// A result overflowed f64 (parts or offsets too large).
     NotFinite(&'static str),
     NoConvergence,
+    /// Cut-outs left a body that is not physical; the message names them.
+    NotPhysical(String),
 }
 
 impl std::fmt::Display for SummaryError {
@@ -134,6 +136,7 @@ impl std::fmt::Display for SummaryError {
                 )
             }
             SummaryError::NoConvergence => write!(f, "the principal-axis solver did not converge"),
+            SummaryError::NotPhysical(why) => f.write_str(why),
         }
     }
 }
@@ -156,6 +159,50 @@ fn finite(v: &[f64], what: &'static str) -> Result<(), SummaryError> {
     } else {
         Err(SummaryError::NotFinite(what))
     }
+}
+
+/// A second-moment eigenvalue below this fraction of the largest makes a
+/// body with cut-outs unphysical: far above rounding (1e-16 relative), far
+/// below any real body's thinnest direction.
+pub const NEGATIVE_MOMENT_RTOL: f64 = 1e-12;
+
+/// With cut-outs (`remove = true`) the composed body can be impossible: no
+/// mass left, or a second moment that is negative along some direction (a
+/// cut-out reaching beyond the material it is cut from). Say so, naming the
+/// cut-outs, rather than report it.
+fn cut_outs_leave_a_body(
+    model: &Model,
+    body: &crate::mass::Body,
+    mass: f64,
+) -> Result<(), SummaryError> {
+    let cut: Vec<String> = model
+        .parts
+        .iter()
+        .filter(|p| p.spec.removed)
+        .map(|p| format!("`{}`", p.name))
+        .collect();
+    if cut.is_empty() {
+        return Ok(());
+    }
+    let (them, verb) = match cut.len() {
+        1 => (format!("the cut-out {}", cut[0]), "removes"),
+        _ => (format!("the cut-outs {}", cut.join(", ")), "remove"),
+    };
+    if !(mass > 0.0) {
+        return Err(SummaryError::NotPhysical(format!(
+            "the total mass is {mass:.4e} kg: {them} {verb} all of the material and more"
+        )));
+    }
+    let c = body.second_moment.map(|r| r.map(|x| x.f64()));
+    let (lam, _) = crate::eigen::jacobi(c).ok_or(SummaryError::NoConvergence)?;
+    let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    let low = lam.iter().fold(f64::INFINITY, |a, &x| a.min(x));
+    if low < -NEGATIVE_MOMENT_RTOL * top {
+        return Err(SummaryError::NotPhysical(format!(
+            "the body is not physical: its second moment is negative along one direction ({low:.3e}, the largest being {top:.3e}, in file units); {them} {verb} more material along it than the body has"
+        )));
+    }
+    Ok(())
 }
 
 /// Compose the model's parts and derive everything reported. `analysis`
@@ -181,6 +228,7 @@ pub fn summarize(
     let mass_dd = body.mass * f_mass;
     let mass = mass_dd.f64();
     finite(&[mass], "total mass")?;
+    cut_outs_leave_a_body(model, &body, mass)?;
     let com = body.center_of_mass.map(|c| (c * f_length).f64());
     finite(&com, "centre of mass")?;
     let about: [DD; 3] = match analysis.about {

@@ -906,3 +906,64 @@ fn round_shapes_match_their_textbook_moments_in_both_precisions() {
         assert!(s.inertia_com[1][2].abs() <= 8.0 * EPS * want[0]);
     }
 }
+
+#[test]
+fn a_disk_with_a_disk_cut_out_is_an_annulus() {
+    let cut = "[[part]]\nshape = \"disk\"\nareal_density = 40\nradius = 0.3\ncenter = [1, 2, 3]\n\
+               [[part]]\nshape = \"disk\"\nareal_density = 40\nradius = 0.1\ncenter = [1, 2, 3]\n\
+               remove = true\n";
+    let ring = "[[part]]\nshape = \"disk\"\nareal_density = 40\nradius = 0.3\ninner_radius = 0.1\n\
+                center = [1, 2, 3]\n";
+    for precision in [Precision::Standard, Precision::Extended] {
+        let (a, b) = (summary_in(cut, precision), summary_in(ring, precision));
+        assert!((a.mass - b.mass).abs() <= 8.0 * EPS * b.mass);
+        // The cut-out's mass is 1/9 of the disk's: rounding grows by 9/8.
+        assert!(rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= 16.0 * EPS);
+        assert_eq!(
+            a.parts[1].mass.signum(),
+            -1.0,
+            "a cut-out's mass is negative"
+        );
+    }
+}
+
+#[test]
+fn a_box_less_a_nearly_equal_box_keeps_its_digits_in_extended_precision() {
+    // A closed box with walls t = 1e-6 of its size: a unit cube less a cube
+    // of side b = 1 − 2t, both of density 1000. By hand, about the centre:
+    // m = ρ(1 − b³), I_xx = ρ(1 − b⁵)/6. Each difference loses ~5 digits:
+    // the cancellation factor κ = 1/(1 − b⁵) ≈ 1e5. Here in double-double
+    // from the closed forms (b is an exact f64: 1 − 2⁻¹⁹·…, b⁵ exact in DD
+    // to 1e-32).
+    use massprop::numeric::DD;
+    let b = 1.0 - 2.0 * 1e-6;
+    let text = format!(
+        "[[part]]\nshape = \"box\"\ndensity = 1000\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n\
+         [[part]]\nshape = \"box\"\ndensity = 1000\nsize = [{b:?}, {b:?}, {b:?}]\ncenter = [0, 0, 0]\n\
+         remove = true\n"
+    );
+    let bd = DD::of(b);
+    let b3 = bd * bd * bd;
+    let b5 = b3 * bd * bd;
+    let mass = (DD::of(1000.0) * (DD::of(1.0) - b3)).f64();
+    let ixx = (DD::of(1000.0) * (DD::of(1.0) - b5) / DD::of(6.0)).f64();
+    let kappa = 1.0 / (1.0 - b.powi(5));
+    for (precision, bound) in [
+        // Standard: each term is rounded before the difference, ~κ ε.
+        (Precision::Standard, 8.0 * EPS * kappa),
+        // Extended: the difference is taken in double-double.
+        (Precision::Extended, 4.0 * EPS),
+    ] {
+        let s = summary_in(&text, precision);
+        let err_m = (s.mass - mass).abs() / mass;
+        let err_i = (s.inertia_com[0][0] - ixx).abs() / ixx;
+        eprintln!("{precision:?}: mass {err_m:e}, Ixx {err_i:e} (bound {bound:e})");
+        assert!(
+            err_m <= bound && err_i <= bound,
+            "{precision:?}: {err_m:e} {err_i:e}"
+        );
+        for k in 0..3 {
+            assert!((s.principal_moments[k] - ixx).abs() <= bound * ixx);
+        }
+    }
+}
