@@ -198,6 +198,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     .iter()
                     .fold(T::of(1.0), |acc, e| acc * norm(e.map(T::of))),
                 (Place::FromTo { from, to }, _) => norm(sub::<T>(*to, *from)),
+                (Place::Given { .. }, _) => T::of(1.0),
             };
             T::of(rho) * measure
         }
@@ -209,7 +210,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
 /// would move the part relative to its neighbours.
 pub fn centroid(place: &Place) -> [DD; 3] {
     match place {
-        Place::Centered { center, .. } => center.map(DD::of),
+        Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
         Place::Edges { corner, edges } => std::array::from_fn(|i| {
             edges
                 .iter()
@@ -267,6 +268,38 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
             }
         }
         Place::FromTo { from, to } => add_outer(sub(*to, *from)),
+        Place::Given {
+            inertia,
+            orientation,
+            ..
+        } => {
+            // ∫ρρᵀ dm = tr(I)/2 E − I; a cut-out's is subtracted.
+            let i: M3<T> = inertia.map(|r| r.map(T::of));
+            let half_trace = (i[0][0] + i[1][1] + i[2][2]) / T::of(2.0);
+            let sign = T::of(if m < zero { -1.0 } else { 1.0 });
+            let local: M3<T> = std::array::from_fn(|a| {
+                std::array::from_fn(|b| {
+                    sign * if a == b {
+                        half_trace - i[a][a]
+                    } else {
+                        -i[a][b]
+                    }
+                })
+            });
+            let r: M3<T> = orientation.matrix();
+            for a in 0..3 {
+                for b in a..3 {
+                    let mut v = zero;
+                    for k in 0..3 {
+                        for l in 0..3 {
+                            v = v + r[a][k] * local[k][l] * r[b][l];
+                        }
+                    }
+                    j[a][b] = v;
+                    j[b][a] = v;
+                }
+            }
+        }
     }
     j
 }
@@ -538,8 +571,7 @@ mod tests {
                         shape: Shape::Box,
                         mass: m,
                         center: Vector3::from(center),
-                        axes: Matrix3::identity(),
-                        local_second_moment: Vector3::zeros(),
+                        own_second_moment: Matrix3::zeros(),
                         spec: Spec {
                             mass: MassSpec::Given(m),
                             place: Place::Centered {

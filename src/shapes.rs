@@ -36,10 +36,13 @@ pub enum Shape {
     Disk,
     Sphere,
     Point,
+    /// A bought or previously computed component: mass, centre and inertia
+    /// tensor given (no closed form here; see `model::Place::Given`).
+    Inertia,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 7] = [
+    pub const ALL: [Shape; 8] = [
         Shape::Box,
         Shape::Plate,
         Shape::Rod,
@@ -47,6 +50,7 @@ impl Shape {
         Shape::Disk,
         Shape::Sphere,
         Shape::Point,
+        Shape::Inertia,
     ];
 
     pub fn name(self) -> &'static str {
@@ -58,6 +62,7 @@ impl Shape {
             Shape::Disk => "disk",
             Shape::Sphere => "sphere",
             Shape::Point => "point",
+            Shape::Inertia => "inertia",
         }
     }
 
@@ -73,7 +78,7 @@ impl Shape {
             Shape::Box => 3,
             Shape::Plate => 2,
             Shape::Rod => 1,
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => 0,
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => 0,
         }
     }
 
@@ -83,7 +88,7 @@ impl Shape {
             Shape::Box | Shape::Cylinder => 3,
             Shape::Plate | Shape::Disk | Shape::Sphere => 2,
             Shape::Rod => 1,
-            Shape::Point => 0,
+            Shape::Point | Shape::Inertia => 0,
         }
     }
 
@@ -93,7 +98,8 @@ impl Shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
             Shape::Plate | Shape::Disk => 2,
             Shape::Rod => 1,
-            Shape::Point => 0,
+            // A given tensor may be anything valid, a point mass included.
+            Shape::Point | Shape::Inertia => 0,
         }
     }
 
@@ -103,7 +109,7 @@ impl Shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => Some("density"),
             Shape::Plate | Shape::Disk => Some("areal_density"),
             Shape::Rod => Some("linear_density"),
-            Shape::Point => None,
+            Shape::Point | Shape::Inertia => None,
         }
     }
 
@@ -125,7 +131,7 @@ impl Shape {
                     * (r_out - r_in)
                     * (r_out * r_out + r_out * r_in + r_in * r_in)
             }
-            Shape::Point => T::of(1.0),
+            Shape::Point | Shape::Inertia => T::of(1.0),
         }
     }
 
@@ -166,7 +172,8 @@ impl Shape {
                 let q = m * r_out * r_out / T::of(5.0) * ratio;
                 [q, q, q]
             }
-            (Shape::Point, &[]) => [zero; 3],
+            // A given inertia is composed from `Place::Given` instead.
+            (Shape::Point | Shape::Inertia, &[]) => [zero; 3],
             _ => unreachable!("the model passes each shape its dim_count() dimensions"),
         }
     }

@@ -206,6 +206,9 @@ impl<'i> Builder<'i> {
             inner_radius: p.inner_radius,
             // Booleans are serde's: a file with `remove` never gets here.
             remove: None,
+            // Given inertia tensors are serde's too (a rare, small part).
+            inertia: None,
+            products: None,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),

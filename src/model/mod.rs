@@ -19,6 +19,14 @@ use serde::Serialize;
 use std::ops::Range;
 use toml::Spanned;
 
+/// A given `inertia` must be symmetric to this fraction of its largest entry
+/// (rounding in a datasheet, not a typo); it is then symmetrised.
+pub const SYMMETRY_TOLERANCE: f64 = 1e-9;
+
+/// A given `inertia` may break positivity or the triangle inequality by this
+/// fraction of its largest second moment (rounding), no more.
+pub const VALIDITY_TOLERANCE: f64 = 1e-12;
+
 /// Edges given as `corner` + `edges` must be perpendicular to this relative
 /// tolerance: |eᵢ·eⱼ| ≤ 1e-9 |eᵢ||eⱼ|.
 pub const PERPENDICULAR_TOLERANCE: f64 = 1e-9;
@@ -80,10 +88,9 @@ pub struct Part {
     pub mass: f64,
     /// Centroid in the file's frame, m.
     pub center: Vector3<f64>,
-    /// Columns are the local x, y, z axes in the file's frame.
-    pub axes: Matrix3<f64>,
-    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid along the local axes, kg·m².
-    pub local_second_moment: Vector3<f64>,
+    /// ∫ρρᵀ dm about the centroid in the file's axes, kg·m² (for the
+    /// per-part comparison of `diff`; the composer uses `spec`).
+    pub own_second_moment: Matrix3<f64>,
     /// The part as the file gave it, in the file's units.
     pub spec: Spec,
 }
@@ -128,13 +135,19 @@ pub enum Place {
     },
     /// A rod `from` → `to`.
     FromTo { from: [f64; 3], to: [f64; 3] },
+    /// A given inertia tensor (tensor convention, symmetric, local axes,
+    /// file units) about the centroid `center`, turned by `orientation`.
+    Given {
+        center: [f64; 3],
+        inertia: [[f64; 3]; 3],
+        orientation: Orientation,
+    },
 }
 
 impl Part {
-    /// ∫ρρᵀ dm about the centroid in the file's axes: A diag(s) Aᵀ.
+    /// ∫ρρᵀ dm about the centroid in the file's axes, kg·m².
     pub fn second_moment(&self) -> Matrix3<f64> {
-        let a = &self.axes;
-        a * Matrix3::from_diagonal(&self.local_second_moment) * a.transpose()
+        self.own_second_moment
     }
 }
 
@@ -439,7 +452,7 @@ impl Ctx<'_> {
             Shape::Box | Shape::Cylinder | Shape::Sphere => (&p.density, Dim::DENSITY),
             Shape::Plate | Shape::Disk => (&p.areal_density, Dim::AREAL_DENSITY),
             Shape::Rod => (&p.linear_density, Dim::LINEAR_DENSITY),
-            Shape::Point => (&None, Dim::MASS),
+            Shape::Point | Shape::Inertia => (&None, Dim::MASS),
         };
         let mass = match (&p.mass, density) {
             (Some(m), _) => MassSpec::Given(self.file_quantity(m, "mass", Dim::MASS)?),
@@ -454,6 +467,18 @@ impl Ctx<'_> {
             v.as_ref().expect("`part` checked the placement keys")
         }
         let place = match (shape, by_edges) {
+            (Shape::Inertia, _) => {
+                let rows = p.inertia.as_ref().expect("`part` checked the inertia");
+                let mut m = [[0.0; 3]; 3];
+                for (r, raw) in m.iter_mut().zip(rows.get_ref()) {
+                    *r = self.file_vec3(raw, "inertia", Dim::INERTIA)?;
+                }
+                Place::Given {
+                    center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
+                    inertia: tensor_convention(m, positive_products(p)),
+                    orientation,
+                }
+            }
             (Shape::Rod, true) => Place::FromTo {
                 from: self.file_vec3(req(&p.from), "from", Dim::LENGTH)?,
                 to: self.file_vec3(req(&p.to), "to", Dim::LENGTH)?,
@@ -492,7 +517,7 @@ impl Ctx<'_> {
                             extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
                         }
                     }
-                    Shape::Point => {}
+                    Shape::Point | Shape::Inertia => {}
                 }
                 Place::Centered {
                     center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
@@ -569,7 +594,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 17] = [
+        let keys: [(&str, Option<Range<usize>>); 19] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -590,6 +615,8 @@ impl Ctx<'_> {
             ("radius", p.radius.as_ref().map(Spanned::span)),
             ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
             ("remove", p.remove.as_ref().map(Spanned::span)),
+            ("inertia", p.inertia.as_ref().map(Spanned::span)),
+            ("products", p.products.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
@@ -646,6 +673,9 @@ impl Ctx<'_> {
                 "remove",
             ],
             Shape::Point => &["center", "mass"],
+            Shape::Inertia => &[
+                "mass", "center", "rotation", "inertia", "products", "remove",
+            ],
         };
         if let Some((key, span)) = keys
             .iter()
@@ -661,12 +691,14 @@ impl Ctx<'_> {
         let by_edges: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &keys[7..9],
             Shape::Rod => &keys[9..11],
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => &[],
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => &[],
         };
         let canonical: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &[keys[3].clone(), keys[5].clone(), keys[6].clone()],
             Shape::Rod => &keys[4..7],
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point => &keys[5..6],
+            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => {
+                &keys[5..6]
+            }
         };
         let edges_given = first(by_edges).is_some();
         let (center, orientation, dims) = match (first(canonical), first(by_edges)) {
@@ -689,7 +721,7 @@ impl Ctx<'_> {
             Shape::Box | Shape::Cylinder | Shape::Sphere => &p.density,
             Shape::Plate | Shape::Disk => &p.areal_density,
             Shape::Rod => &p.linear_density,
-            Shape::Point => &None,
+            Shape::Point | Shape::Inertia => &None,
         };
         let mass = match (&p.mass, density, shape.density_key()) {
             (Some(m), Some(d), Some(dk)) => {
@@ -760,6 +792,10 @@ impl Ctx<'_> {
             }
             _ => None,
         };
+        let given = match shape {
+            Shape::Inertia => Some(self.given_inertia(p)?),
+            _ => None,
+        };
         let spec = self.spec(shape, p, edges_given, orientation.clone())?;
         let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
@@ -767,11 +803,72 @@ impl Ctx<'_> {
             shape,
             mass: sign * mass,
             center,
-            axes: rotation::to_matrix3(&orientation.matrix()),
-            local_second_moment: local_second_moment * sign,
+            own_second_moment: {
+                let a = rotation::to_matrix3(&orientation.matrix());
+                let local = match given {
+                    Some(c) => c * sign,
+                    None => Matrix3::from_diagonal(&(local_second_moment * sign)),
+                };
+                a * local * a.transpose()
+            },
             spec,
         };
         Ok((part, real))
+    }
+
+    /// A given `inertia` (SI), checked: 3 × 3, symmetric to
+    /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
+    /// tr(I)/2 E − I positive semi-definite (no principal moment negative,
+    /// I₁ + I₂ ≥ I₃) to `VALIDITY_TOLERANCE` of the largest. Returns that
+    /// second moment, local axes.
+    fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
+        let raw = p.inertia.as_ref().expect("`part` checked the inertia");
+        if let Some(pr) = &p.products
+            && !matches!(pr.get_ref().as_str(), "tensor" | "positive")
+        {
+            return Err(self
+                .err(pr.span(), format!("unknown `products` convention {:?}", pr.get_ref()))
+                .help("\"tensor\" (off-diagonals −∫xy dm, the default) or \"positive\" (+∫xy dm, CAD and Meriam)"));
+        }
+        if raw.get_ref().len() != 3 {
+            return Err(self.err(
+                raw.span(),
+                format!("`inertia` needs 3 rows, got {}", raw.get_ref().len()),
+            ));
+        }
+        let mut m = [[0.0; 3]; 3];
+        for (row, r) in m.iter_mut().zip(raw.get_ref()) {
+            let v = self.vec3(r, "inertia", Dim::INERTIA)?;
+            *row = [v.x, v.y, v.z];
+        }
+        let big = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+        for (i, j) in [(0, 1), (0, 2), (1, 2)] {
+            if !((m[i][j] - m[j][i]).abs() <= SYMMETRY_TOLERANCE * big) {
+                return Err(self
+                    .err(raw.span(), format!("`inertia` is not symmetric: row {}, column {} is {:e} but row {}, column {} is {:e}", i + 1, j + 1, m[i][j], j + 1, i + 1, m[j][i]))
+                    .help(format!("an inertia tensor is symmetric (to {SYMMETRY_TOLERANCE:e} of its largest entry)")));
+            }
+        }
+        let t = tensor_convention(m, positive_products(p));
+        let half = (t[0][0] + t[1][1] + t[2][2]) / 2.0;
+        let c: crate::numeric::M3<f64> = std::array::from_fn(|i| {
+            std::array::from_fn(|j| if i == j { half - t[i][i] } else { -t[i][j] })
+        });
+        let (lam, _) = crate::eigen::jacobi(c)
+            .ok_or_else(|| self.err(raw.span(), "`inertia`: the eigen solver did not converge"))?;
+        let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+        if lam.iter().any(|&l| l < -VALIDITY_TOLERANCE * top) {
+            let mut moments = [lam[1] + lam[2], lam[0] + lam[2], lam[0] + lam[1]];
+            moments.sort_by(f64::total_cmp);
+            return Err(self
+                .err(raw.span(), format!(
+                    "`inertia` is not physically valid: its principal moments {:.6e}, {:.6e}, {:.6e} kg·m² {}",
+                    moments[0], moments[1], moments[2],
+                    if moments[0] < -VALIDITY_TOLERANCE * moments[2] { "include a negative one" } else { "break the triangle inequality I1 + I2 ≥ I3" }
+                ))
+                .help("check the signs of the products (`products = \"positive\"` if they are +∫xy dm, as CAD reports them) and the units"));
+        }
+        Ok(Matrix3::from_fn(|i, j| c[i][j]))
     }
 
     /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
@@ -848,6 +945,10 @@ impl Ctx<'_> {
                 dims
             }
             Shape::Point => vec![],
+            Shape::Inertia => {
+                p.inertia.as_ref().ok_or_else(|| missing("inertia"))?;
+                vec![]
+            }
         };
         let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
         let center = self.vec3(center, "center", Dim::LENGTH)?;
@@ -1037,7 +1138,30 @@ fn shape_help(shape: Shape) -> &'static str {
             "a sphere takes `mass` or `density`, and `radius` with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)"
         }
         Shape::Point => "a point takes `mass` and `center`",
+        Shape::Inertia => {
+            "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`"
+        }
     }
+}
+
+/// Whether a part's `products = "positive"` (checked in `part`).
+fn positive_products(p: &RawPart) -> bool {
+    matches!(&p.products, Some(s) if s.get_ref() == "positive")
+}
+
+/// A given inertia matrix in the tensor convention (off-diagonals −∫xy dm),
+/// symmetrised: the average of the two entries each product appears in.
+fn tensor_convention(m: [[f64; 3]; 3], positive: bool) -> [[f64; 3]; 3] {
+    let sign = if positive { -1.0 } else { 1.0 };
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            if i == j {
+                m[i][i]
+            } else {
+                sign * (m[i][j] * 0.5 + m[j][i] * 0.5)
+            }
+        })
+    })
 }
 
 /// Parse a command-line vector into the file's units (rad/s for ω, rad/s²

@@ -60,6 +60,10 @@ pub struct RawPart {
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
     pub radius: Option<Spanned<Quantity>>,
     pub inner_radius: Option<Spanned<Quantity>>,
+    /// A given inertia tensor (rows) about the centroid, local axes.
+    pub inertia: Option<Spanned<Vec<Vector>>>,
+    /// Sign convention of `inertia`'s products: "tensor" or "positive".
+    pub products: Option<Spanned<String>>,
     /// A cut-out: subtracted from the body.
     pub remove: Option<Spanned<bool>>,
 }

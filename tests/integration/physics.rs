@@ -967,3 +967,38 @@ fn a_box_less_a_nearly_equal_box_keeps_its_digits_in_extended_precision() {
         }
     }
 }
+
+#[test]
+fn a_given_inertia_composes_like_the_shape_it_describes() {
+    // A 2 × 1 × 0.5 box of 6 kg, turned, as a box and as its inertia
+    // tensor written by hand: I = m/12 diag(b² + c², a² + c², a² + b²).
+    let rot = "rotation = { axis = [1, 2, 2], degrees = 40 }";
+    let as_box = format!(
+        "[[part]]\nshape = \"box\"\nmass = 6\nsize = [2, 1, 0.5]\ncenter = [1, 0, 0]\n{rot}\n\
+         [[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 3, 0]\n"
+    );
+    let given = format!(
+        "[[part]]\nshape = \"inertia\"\nmass = 6\ncenter = [1, 0, 0]\n{rot}\n\
+         inertia = [[0.625, 0, 0], [0, 2.125, 0], [0, 0, 2.5]]\n\
+         [[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 3, 0]\n"
+    );
+    for precision in [Precision::Standard, Precision::Extended] {
+        let (a, b) = (
+            summary_in(&as_box, precision),
+            summary_in(&given, precision),
+        );
+        assert!(
+            rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= 16.0 * EPS,
+            "{precision:?}"
+        );
+    }
+    // Products: the same off-diagonal written +∫xy dm with `products =
+    // "positive"` is the tensor entry with its sign flipped.
+    let tensor = "[[part]]\nshape = \"inertia\"\nmass = 1\ncenter = [0, 0, 0]\n\
+                  inertia = [[2, -0.5, 0], [-0.5, 3, 0], [0, 0, 4]]\n";
+    let positive = "[[part]]\nshape = \"inertia\"\nmass = 1\ncenter = [0, 0, 0]\n\
+                    inertia = [[2, 0.5, 0], [0.5, 3, 0], [0, 0, 4]]\nproducts = \"positive\"\n";
+    let (a, b) = (summary(tensor), summary(positive));
+    assert_eq!(a.inertia_com, b.inertia_com);
+    assert_eq!(a.inertia_com[0][1], -0.5);
+}
