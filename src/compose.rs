@@ -199,6 +199,16 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     .fold(T::of(1.0), |acc, e| acc * norm(e.map(T::of))),
                 (Place::FromTo { from, to }, _) => norm(sub::<T>(*to, *from)),
                 (Place::Given { .. }, _) => T::of(1.0),
+                (Place::Vertices(v), _) => {
+                    let d = triangle_offsets::<T>(v);
+                    let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
+                    let c = [
+                        a[1] * b[2] - a[2] * b[1],
+                        a[2] * b[0] - a[0] * b[2],
+                        a[0] * b[1] - a[1] * b[0],
+                    ];
+                    norm(c) / T::of(2.0)
+                }
             };
             T::of(rho) * measure
         }
@@ -211,6 +221,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
 pub fn centroid(place: &Place) -> [DD; 3] {
     match place {
         Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
+        Place::Vertices(v) => triangle_centroid(v),
         Place::Edges { corner, edges } => std::array::from_fn(|i| {
             edges
                 .iter()
@@ -220,6 +231,21 @@ pub fn centroid(place: &Place) -> [DD; 3] {
             std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
         }
     }
+}
+
+fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
+    std::array::from_fn(|i| (DD::of(v[0][i]) + DD::of(v[1][i]) + DD::of(v[2][i])) / DD::of(3.0))
+}
+
+/// A triangle's vertices less its centroid, in double-double before the
+/// rounding to T: far from the origin the offsets keep their digits.
+fn triangle_offsets<T: Real>(v: &[[f64; 3]; 3]) -> [[T; 3]; 3] {
+    let g = triangle_centroid(v);
+    v.map(|p| std::array::from_fn(|i| T::of_dd(DD::of(p[i]) - g[i])))
+}
+
+fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    std::array::from_fn(|i| a[i] - b[i])
 }
 
 /// ∫ρρᵀ dm of a part about its own centroid, in the file's axes and units.
@@ -268,6 +294,14 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
             }
         }
         Place::FromTo { from, to } => add_outer(sub(*to, *from)),
+        // ∫ρρᵀ dm of a uniform triangle about its centroid g is
+        // (m/12) Σ dᵢdᵢᵀ with dᵢ = vᵢ − g (from ∫ρρᵀ dA = (A/12)(Σ vᵢvᵢᵀ + s sᵀ),
+        // s = Σ vᵢ, about any origin).
+        Place::Vertices(v) => {
+            for d in triangle_offsets::<T>(v) {
+                add_outer(d);
+            }
+        }
         Place::Given {
             inertia,
             orientation,

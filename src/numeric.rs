@@ -45,6 +45,8 @@ pub trait Real:
     fn sin_cos_deg(deg: f64) -> (Self, Self);
     /// π to the type's precision.
     fn pi() -> Self;
+    /// A double-double rounded to the type.
+    fn of_dd(x: DD) -> Self;
 }
 
 /// Reduce degrees to x in [−45°, 45°] and a quarter-turn count q: both steps
@@ -82,6 +84,9 @@ impl Real for f64 {
     }
     fn pi() -> f64 {
         std::f64::consts::PI
+    }
+    fn of_dd(x: DD) -> f64 {
+        x.f64()
     }
 }
 
@@ -268,6 +273,9 @@ impl Real for DD {
     }
     fn pi() -> DD {
         DD::PI
+    }
+    fn of_dd(x: DD) -> DD {
+        x
     }
     fn sin_cos_deg(deg: f64) -> (DD, DD) {
         let (x, q) = reduce_degrees(deg);

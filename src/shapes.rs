@@ -35,6 +35,8 @@ pub enum Shape {
     Cylinder,
     Disk,
     Sphere,
+    /// A thin triangular plate given by its three vertices.
+    Triangle,
     Point,
     /// A bought or previously computed component: mass, centre and inertia
     /// tensor given (no closed form here; see `model::Place::Given`).
@@ -42,13 +44,14 @@ pub enum Shape {
 }
 
 impl Shape {
-    pub const ALL: [Shape; 8] = [
+    pub const ALL: [Shape; 9] = [
         Shape::Box,
         Shape::Plate,
         Shape::Rod,
         Shape::Cylinder,
         Shape::Disk,
         Shape::Sphere,
+        Shape::Triangle,
         Shape::Point,
         Shape::Inertia,
     ];
@@ -61,6 +64,7 @@ impl Shape {
             Shape::Cylinder => "cylinder",
             Shape::Disk => "disk",
             Shape::Sphere => "sphere",
+            Shape::Triangle => "triangle",
             Shape::Point => "point",
             Shape::Inertia => "inertia",
         }
@@ -78,7 +82,12 @@ impl Shape {
             Shape::Box => 3,
             Shape::Plate => 2,
             Shape::Rod => 1,
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => 0,
+            Shape::Cylinder
+            | Shape::Disk
+            | Shape::Sphere
+            | Shape::Triangle
+            | Shape::Point
+            | Shape::Inertia => 0,
         }
     }
 
@@ -87,7 +96,8 @@ impl Shape {
         match self {
             Shape::Box | Shape::Cylinder => 3,
             Shape::Plate | Shape::Disk | Shape::Sphere => 2,
-            Shape::Rod => 1,
+            // A triangle's one "dimension" is its area (see `measure_of`).
+            Shape::Rod | Shape::Triangle => 1,
             Shape::Point | Shape::Inertia => 0,
         }
     }
@@ -98,8 +108,10 @@ impl Shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
             Shape::Plate | Shape::Disk => 2,
             Shape::Rod => 1,
-            // A given tensor may be anything valid, a point mass included.
-            Shape::Point | Shape::Inertia => 0,
+            // A given tensor may be anything valid, a point mass included;
+            // a triangle's moments are not along its local axes (checked
+            // in the model instead).
+            Shape::Point | Shape::Inertia | Shape::Triangle => 0,
         }
     }
 
@@ -107,7 +119,7 @@ impl Shape {
     pub fn density_key(self) -> Option<&'static str> {
         match self {
             Shape::Box | Shape::Cylinder | Shape::Sphere => Some("density"),
-            Shape::Plate | Shape::Disk => Some("areal_density"),
+            Shape::Plate | Shape::Disk | Shape::Triangle => Some("areal_density"),
             Shape::Rod => Some("linear_density"),
             Shape::Point | Shape::Inertia => None,
         }
@@ -121,7 +133,9 @@ impl Shape {
     pub fn measure_of<T: Real>(self, d: &[T]) -> T {
         let ring = |d: &[T]| T::pi() * (d[0] - d[1]) * (d[0] + d[1]);
         match self {
-            Shape::Box | Shape::Plate | Shape::Rod => d.iter().fold(T::of(1.0), |a, &x| a * x),
+            Shape::Box | Shape::Plate | Shape::Rod | Shape::Triangle => {
+                d.iter().fold(T::of(1.0), |a, &x| a * x)
+            }
             Shape::Cylinder => ring(d) * d[2],
             Shape::Disk => ring(d),
             Shape::Sphere => {
@@ -174,6 +188,8 @@ impl Shape {
             }
             // A given inertia is composed from `Place::Given` instead.
             (Shape::Point | Shape::Inertia, &[]) => [zero; 3],
+            // A triangle is composed from `Place::Vertices` instead.
+            (Shape::Triangle, &[_]) => [zero; 3],
             _ => unreachable!("the model passes each shape its dim_count() dimensions"),
         }
     }

@@ -209,6 +209,9 @@ impl<'i> Builder<'i> {
             // Given inertia tensors are serde's too (a rare, small part).
             inertia: None,
             products: None,
+            // Triangles too: a key the fast path does not take sends the
+            // file down the serde path.
+            vertices: None,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),

@@ -19,6 +19,9 @@ use serde::Serialize;
 use std::ops::Range;
 use toml::Spanned;
 
+/// A triangle's area must exceed this fraction of its longest edge squared.
+pub const COLLINEAR_TOLERANCE: f64 = 1e-9;
+
 /// A given `inertia` must be symmetric to this fraction of its largest entry
 /// (rounding in a datasheet, not a typo); it is then symmetrised.
 pub const SYMMETRY_TOLERANCE: f64 = 1e-9;
@@ -135,6 +138,8 @@ pub enum Place {
     },
     /// A rod `from` → `to`.
     FromTo { from: [f64; 3], to: [f64; 3] },
+    /// A thin triangular plate's three vertices in the file's frame.
+    Vertices([[f64; 3]; 3]),
     /// A given inertia tensor (tensor convention, symmetric, local axes,
     /// file units) about the centroid `center`, turned by `orientation`.
     Given {
@@ -450,7 +455,7 @@ impl Ctx<'_> {
     ) -> Result<Spec, Diagnostic> {
         let density = match shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => (&p.density, Dim::DENSITY),
-            Shape::Plate | Shape::Disk => (&p.areal_density, Dim::AREAL_DENSITY),
+            Shape::Plate | Shape::Disk | Shape::Triangle => (&p.areal_density, Dim::AREAL_DENSITY),
             Shape::Rod => (&p.linear_density, Dim::LINEAR_DENSITY),
             Shape::Point | Shape::Inertia => (&None, Dim::MASS),
         };
@@ -467,6 +472,14 @@ impl Ctx<'_> {
             v.as_ref().expect("`part` checked the placement keys")
         }
         let place = match (shape, by_edges) {
+            (Shape::Triangle, _) => {
+                let rows = p.vertices.as_ref().expect("`part` checked the vertices");
+                let mut vertices = [[0.0; 3]; 3];
+                for (v, raw) in vertices.iter_mut().zip(rows.get_ref()) {
+                    *v = self.file_vec3(raw, "vertices", Dim::LENGTH)?;
+                }
+                Place::Vertices(vertices)
+            }
             (Shape::Inertia, _) => {
                 let rows = p.inertia.as_ref().expect("`part` checked the inertia");
                 let mut m = [[0.0; 3]; 3];
@@ -517,7 +530,7 @@ impl Ctx<'_> {
                             extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
                         }
                     }
-                    Shape::Point | Shape::Inertia => {}
+                    Shape::Point | Shape::Inertia | Shape::Triangle => {}
                 }
                 Place::Centered {
                     center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
@@ -594,7 +607,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 19] = [
+        let keys: [(&str, Option<Range<usize>>); 20] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -617,6 +630,7 @@ impl Ctx<'_> {
             ("remove", p.remove.as_ref().map(Spanned::span)),
             ("inertia", p.inertia.as_ref().map(Spanned::span)),
             ("products", p.products.as_ref().map(Spanned::span)),
+            ("vertices", p.vertices.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
@@ -676,6 +690,7 @@ impl Ctx<'_> {
             Shape::Inertia => &[
                 "mass", "center", "rotation", "inertia", "products", "remove",
             ],
+            Shape::Triangle => &["areal_density", "vertices", "mass", "remove"],
         };
         if let Some((key, span)) = keys
             .iter()
@@ -691,14 +706,22 @@ impl Ctx<'_> {
         let by_edges: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &keys[7..9],
             Shape::Rod => &keys[9..11],
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => &[],
+            Shape::Cylinder
+            | Shape::Disk
+            | Shape::Sphere
+            | Shape::Point
+            | Shape::Inertia
+            | Shape::Triangle => &[],
         };
         let canonical: &[(&str, Option<Range<usize>>)] = match shape {
             Shape::Box | Shape::Plate => &[keys[3].clone(), keys[5].clone(), keys[6].clone()],
             Shape::Rod => &keys[4..7],
-            Shape::Cylinder | Shape::Disk | Shape::Sphere | Shape::Point | Shape::Inertia => {
-                &keys[5..6]
-            }
+            Shape::Cylinder
+            | Shape::Disk
+            | Shape::Sphere
+            | Shape::Point
+            | Shape::Inertia
+            | Shape::Triangle => &keys[5..6],
         };
         let edges_given = first(by_edges).is_some();
         let (center, orientation, dims) = match (first(canonical), first(by_edges)) {
@@ -719,7 +742,7 @@ impl Ctx<'_> {
         // Mass: exactly one of `mass` and the shape's density.
         let density = match shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => &p.density,
-            Shape::Plate | Shape::Disk => &p.areal_density,
+            Shape::Plate | Shape::Disk | Shape::Triangle => &p.areal_density,
             Shape::Rod => &p.linear_density,
             Shape::Point | Shape::Inertia => &None,
         };
@@ -739,7 +762,7 @@ impl Ctx<'_> {
             (None, Some(d), Some(dk)) => {
                 let dim = match shape {
                     Shape::Box | Shape::Cylinder | Shape::Sphere => Dim::DENSITY,
-                    Shape::Plate | Shape::Disk => Dim::AREAL_DENSITY,
+                    Shape::Plate | Shape::Disk | Shape::Triangle => Dim::AREAL_DENSITY,
                     _ => Dim::LINEAR_DENSITY,
                 };
                 let rho = self.positive(d, dk, dim)?;
@@ -796,6 +819,29 @@ impl Ctx<'_> {
             Shape::Inertia => Some(self.given_inertia(p)?),
             _ => None,
         };
+        let triangle = (shape == Shape::Triangle).then(|| {
+            // Its own second moment is not diagonal in any frame given:
+            // taken from the composer's (m/12) Σ dᵢdᵢᵀ in SI coordinates.
+            let raw = p
+                .vertices
+                .as_ref()
+                .expect("`triangle` checked the vertices");
+            let v: Vec<Vector3<f64>> = raw
+                .get_ref()
+                .iter()
+                .map(|r| {
+                    self.vec3(r, "vertices", Dim::LENGTH)
+                        .expect("checked in `triangle`")
+                })
+                .collect();
+            let g = (v[0] + v[1] + v[2]) / 3.0;
+            v.iter()
+                .map(|x| {
+                    let d = x - g;
+                    (d * (mass / 12.0)) * d.transpose()
+                })
+                .sum::<Matrix3<f64>>()
+        });
         let spec = self.spec(shape, p, edges_given, orientation.clone())?;
         let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
@@ -805,15 +851,55 @@ impl Ctx<'_> {
             center,
             own_second_moment: {
                 let a = rotation::to_matrix3(&orientation.matrix());
-                let local = match given {
-                    Some(c) => c * sign,
-                    None => Matrix3::from_diagonal(&(local_second_moment * sign)),
+                let local = match (given, triangle) {
+                    (Some(c), _) | (None, Some(c)) => c * sign,
+                    (None, None) => Matrix3::from_diagonal(&(local_second_moment * sign)),
                 };
                 a * local * a.transpose()
             },
             spec,
         };
         Ok((part, real))
+    }
+
+    /// A triangle's centroid and area (SI) from its `vertices`, which must
+    /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
+    /// longest edge.
+    fn triangle(
+        &self,
+        p: &RawPart,
+        missing: Diagnostic,
+    ) -> Result<(Vector3<f64>, f64), Diagnostic> {
+        let raw = p.vertices.as_ref().ok_or(missing)?;
+        if raw.get_ref().len() != 3 {
+            return Err(self.err(
+                raw.span(),
+                format!("a triangle needs 3 `vertices`, got {}", raw.get_ref().len()),
+            ));
+        }
+        let mut v = [Vector3::zeros(); 3];
+        for (out, r) in v.iter_mut().zip(raw.get_ref()) {
+            *out = self.vec3(r, "vertices", Dim::LENGTH)?;
+        }
+        let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
+        let longest = norm(&e1).max(norm(&e2)).max(norm(&(v[2] - v[1])));
+        // Scaled by the longest edge, so the cross product cannot overflow.
+        let area = if longest > 0.0 && longest.is_finite() {
+            norm(&(e1 / longest).cross(&(e2 / longest))) / 2.0 * longest * longest
+        } else {
+            0.0
+        };
+        if !(longest > 0.0 && area > COLLINEAR_TOLERANCE * longest * longest) {
+            return Err(self
+                .err(
+                    raw.span(),
+                    "the `vertices` of this triangle are (nearly) collinear: it has no area",
+                )
+                .help(format!(
+                    "its area must exceed {COLLINEAR_TOLERANCE:e} of the square of its longest edge"
+                )));
+        }
+        Ok(((v[0] + v[1] + v[2]) / 3.0, area))
     }
 
     /// A given `inertia` (SI), checked: 3 × 3, symmetric to
@@ -948,6 +1034,10 @@ impl Ctx<'_> {
             Shape::Inertia => {
                 p.inertia.as_ref().ok_or_else(|| missing("inertia"))?;
                 vec![]
+            }
+            Shape::Triangle => {
+                let (centroid, area) = self.triangle(p, missing("vertices"))?;
+                return Ok((centroid, Orientation::Identity, vec![area]));
             }
         };
         let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
@@ -1138,6 +1228,9 @@ fn shape_help(shape: Shape) -> &'static str {
             "a sphere takes `mass` or `density`, and `radius` with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)"
         }
         Shape::Point => "a point takes `mass` and `center`",
+        Shape::Triangle => {
+            "a triangle takes `mass` or `areal_density`, and three `vertices` = [[x, y, z], [x, y, z], [x, y, z]] in the file's frame"
+        }
         Shape::Inertia => {
             "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`"
         }

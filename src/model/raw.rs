@@ -60,6 +60,8 @@ pub struct RawPart {
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
     pub radius: Option<Spanned<Quantity>>,
     pub inner_radius: Option<Spanned<Quantity>>,
+    /// A triangle's three vertices.
+    pub vertices: Option<Spanned<Vec<Vector>>>,
     /// A given inertia tensor (rows) about the centroid, local axes.
     pub inertia: Option<Spanned<Vec<Vector>>>,
     /// Sign convention of `inertia`'s products: "tensor" or "positive".

@@ -1002,3 +1002,72 @@ fn a_given_inertia_composes_like_the_shape_it_describes() {
     assert_eq!(a.inertia_com, b.inertia_com);
     assert_eq!(a.inertia_com[0][1], -0.5);
 }
+
+#[test]
+fn two_triangles_make_the_rectangle_they_split() {
+    // A 0.3125 × 0.25 rectangle in a tilted plane, 1e6 from the origin
+    // (dyadic, so every vertex is exact in f64), split
+    // along a diagonal: the two triangles compose to the plate exactly
+    // (the same areal density, so the same mass), in both precisions.
+    let o = [1e6, -2e6, 5e5];
+    let (e1, e2) = ([0.1875, 0.25, 0.0], [0.0, 0.0, 0.25]);
+    let at = |s: f64, t: f64| -> String {
+        let p: Vec<String> = (0..3)
+            .map(|i| format!("{:?}", o[i] + s * e1[i] + t * e2[i]))
+            .collect();
+        format!("[{}]", p.join(", "))
+    };
+    let tri = format!(
+        "[[part]]\nshape = \"triangle\"\nareal_density = 12.5\nvertices = [{}, {}, {}]\n\
+         [[part]]\nshape = \"triangle\"\nareal_density = 12.5\nvertices = [{}, {}, {}]\n",
+        at(0.0, 0.0),
+        at(1.0, 0.0),
+        at(1.0, 1.0),
+        at(0.0, 0.0),
+        at(1.0, 1.0),
+        at(0.0, 1.0)
+    );
+    let plate = format!(
+        "[[part]]\nshape = \"plate\"\nareal_density = 12.5\ncorner = {}\nedges = [{:?}, {:?}]\n",
+        at(0.0, 0.0),
+        e1,
+        e2
+    );
+    for precision in [Precision::Standard, Precision::Extended] {
+        let (a, b) = (summary_in(&tri, precision), summary_in(&plate, precision));
+        assert!(
+            (a.mass - b.mass).abs() <= 8.0 * EPS * b.mass,
+            "{precision:?}"
+        );
+        assert!(
+            rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= 32.0 * EPS,
+            "{precision:?}"
+        );
+    }
+}
+
+#[test]
+fn a_triangle_matches_a_quadrature_of_its_definition() {
+    // ∫ρρᵀ dm by the degree-2 rule at (⅙, ⅙, ⅔) and its permutations,
+    // exact for the quadratic integrand, about the centroid.
+    let v = [[0.1, 0.0, 0.3], [0.7, 0.2, -0.1], [0.2, 0.9, 0.4]];
+    let text = format!(
+        "[[part]]\nshape = \"triangle\"\nmass = 2\nvertices = [{:?}, {:?}, {:?}]\n",
+        v[0], v[1], v[2]
+    );
+    let s = summary(&text);
+    let g: Vec<f64> = (0..3)
+        .map(|i| (v[0][i] + v[1][i] + v[2][i]) / 3.0)
+        .collect();
+    let mut c = Matrix3::zeros();
+    for w in [
+        [2.0 / 3.0, 1.0 / 6.0, 1.0 / 6.0],
+        [1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0],
+        [1.0 / 6.0, 1.0 / 6.0, 2.0 / 3.0],
+    ] {
+        let p = Vector3::from_fn(|i, _| (0..3).map(|k| w[k] * v[k][i]).sum::<f64>() - g[i]);
+        c += p * p.transpose() * (2.0 / 3.0);
+    }
+    let i = massprop::mass::inertia_of(&c);
+    assert!(rel(&m3(&s.inertia_com), &i) <= 16.0 * EPS);
+}
