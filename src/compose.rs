@@ -70,18 +70,22 @@ pub fn compose(parts: &[Part], precision: Precision) -> Body {
 }
 
 fn compose_standard(parts: &[Part]) -> Body {
+    // The pivot ĉ = Σ (mᵢ/m) cᵢ: weights first, so that huge masses far out
+    // cannot overflow a first moment Σ mᵢcᵢ the centre itself fits in.
     let mut mass = Sum::default();
-    let mut first = [Sum::default(); 3];
     for p in parts {
-        let m: f64 = mass_of(p.shape, &p.spec);
-        let c = centroid(&p.spec.place);
-        mass.add(m);
-        for (f, ci) in first.iter_mut().zip(&c) {
-            f.add(m * ci.hi);
-        }
+        mass.add(mass_of::<f64>(p.shape, &p.spec));
     }
     let total = mass.value();
-    let c0 = first.map(|f| f.value() / total);
+    let mut first = [Sum::default(); 3];
+    for p in parts {
+        let w = mass_of::<f64>(p.shape, &p.spec) / total;
+        let c = centroid(&p.spec.place);
+        for (f, ci) in first.iter_mut().zip(&c) {
+            f.add(w * ci.hi);
+        }
+    }
+    let c0 = first.map(Sum::value);
     let mut sum = [[Sum::default(); 3]; 3];
     let mut s = [Sum::default(); 3];
     for p in parts {
@@ -124,16 +128,17 @@ fn compose_standard(parts: &[Part]) -> Body {
 fn compose_extended(parts: &[Part]) -> Body {
     let zero = DD::of(0.0);
     let mut total = zero;
-    let mut first = [zero; 3];
     for p in parts {
-        let m: DD = mass_of(p.shape, &p.spec);
-        let c = centroid(&p.spec.place);
-        total += m;
-        for (f, ci) in first.iter_mut().zip(c) {
-            *f += m * ci;
+        total += mass_of::<DD>(p.shape, &p.spec);
+    }
+    // Σ (mᵢ/m) cᵢ, as in `compose_standard`.
+    let mut c0 = [zero; 3];
+    for p in parts {
+        let w = mass_of::<DD>(p.shape, &p.spec) / total;
+        for (f, ci) in c0.iter_mut().zip(centroid(&p.spec.place)) {
+            *f += w * ci;
         }
     }
-    let c0 = first.map(|f| f / total);
     let mut c = [[zero; 3]; 3];
     let mut s = [zero; 3];
     for p in parts {
@@ -382,6 +387,9 @@ pub fn principal(c: &M3<DD>, precision: Precision) -> Option<Principal> {
 
 fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
     let (lam, v) = jacobi(*c)?;
+    if !lam.iter().all(|x| x.is_finite()) {
+        return None;
+    }
     let lam: [DD; 3] = lam.map(|x| {
         if x > T::of(0.0) {
             x.into()
@@ -395,7 +403,7 @@ fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
     order.sort_by(|&a, &b| {
         moment(a)
             .partial_cmp(&moment(b))
-            .expect("moments are finite")
+            .unwrap_or(std::cmp::Ordering::Equal)
             .then(a.cmp(&b))
     });
     let moments = order.map(moment);

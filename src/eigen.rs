@@ -19,7 +19,8 @@ const MAX_SWEEPS: usize = 60;
 
 /// Eigen-decomposition of a symmetric `a`: eigenvalues (unordered) and the
 /// matrix whose columns are the matching unit eigenvectors, or `None` if
-/// the iteration does not converge (which finite input does not cause).
+/// the iteration does not converge or an eigenvalue is not finite (which
+/// finite input does not cause).
 pub fn jacobi<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
     let zero = T::of(0.0);
     let one = T::of(1.0);
@@ -45,11 +46,19 @@ pub fn jacobi<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
             rotated = true;
             // The rotation angle: tan 2φ = 2 a_pq / (a_qq − a_pp); t = tan φ
             // is the smaller root of t² + 2θt − 1 = 0, |φ| ≤ π/4.
-            let theta = (aqq - app) / (T::of(2.0) * apq);
-            let t = if theta.abs().f64() > 1e150 {
-                one / (T::of(2.0) * theta)
+            let diff = aqq - app;
+            // |θ| beyond 1e150: t = 1/(2θ) = a_pq/(a_qq − a_pp), formed
+            // without θ itself, which could overflow.
+            let t = if apq.abs().f64() * 1e150 < diff.abs().f64() {
+                apq / diff
             } else {
-                let r = (theta * theta + one).sqrt();
+                let theta = diff / (T::of(2.0) * apq);
+                // √(θ² + 1) as |θ| √(1 + 1/θ²) beyond 1: θ² may overflow.
+                let r = if theta.abs() > one {
+                    theta.abs() * (one + one / (theta * theta)).sqrt()
+                } else {
+                    (theta * theta + one).sqrt()
+                };
                 let t = one / (theta.abs() + r);
                 if theta < zero { -t } else { t }
             };
@@ -73,7 +82,8 @@ pub fn jacobi<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
             }
         }
         if !rotated {
-            return Some(([a[0][0], a[1][1], a[2][2]], v));
+            let lam = [a[0][0], a[1][1], a[2][2]];
+            return lam.iter().all(|x| x.is_finite()).then_some((lam, v));
         }
     }
     None
@@ -179,6 +189,26 @@ mod tests {
             assert!((x / 1e-24 - 1.0).abs() < 1e-6, "{l:?}");
         }
         assert!((l[2] - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn extreme_scales_converge_in_both_precisions() {
+        // Off-diagonals 1e-200 of a diagonal difference near the top of the
+        // range: θ would overflow.
+        let a = [[1e300, 1e100, 0.0], [1e100, 2e300, 0.0], [0.0, 0.0, 1.0]];
+        let (l, _) = jacobi(a).unwrap();
+        let (d, _) = jacobi(a.map(|r| r.map(DD::of))).unwrap();
+        for (x, y) in l.iter().zip(d) {
+            assert!((x - y.f64()).abs() <= 4.0 * f64::EPSILON * x.abs());
+        }
+        // Eigenvalues beyond the range (2.7e308): None, never NaN or inf.
+        let huge = [
+            [1.7e308, 1e308, 0.0],
+            [1e308, 1.7e308, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        assert!(jacobi(huge).is_none());
+        assert!(jacobi(huge.map(|r| r.map(DD::of))).is_none());
     }
 
     #[test]

@@ -129,13 +129,36 @@ fn split(a: f64) -> (f64, f64) {
 #[inline]
 pub fn two_prod(a: f64, b: f64) -> (f64, f64) {
     let p = a * b;
-    if cfg!(target_feature = "fma") {
-        (p, a.mul_add(b, -p))
-    } else {
-        let (ah, al) = split(a);
-        let (bh, bl) = split(b);
-        (p, ((ah * bh - p) + ah * bl + al * bh) + al * bl)
+    if !p.is_finite() {
+        // Overflow (or an infinite or NaN operand): no error term to add.
+        return (p, 0.0);
     }
+    if cfg!(target_feature = "fma") {
+        return (p, a.mul_add(b, -p));
+    }
+    // Near the top of the range Dekker's halves can round up to infinity:
+    // take the product of the larger operand scaled down by 2⁶⁰ (exact),
+    // and scale its error back.
+    const HUGE: f64 = 6.696_928_794_914_171e299; // 2⁹⁹⁶
+    if a.abs() > HUGE || b.abs() > HUGE || p.abs() > HUGE {
+        const DOWN: f64 = 8.673_617_379_884_035e-19; // 2⁻⁶⁰
+        const UP: f64 = 1_152_921_504_606_846_976.0; // 2⁶⁰
+        let (a, b) = if a.abs() >= b.abs() {
+            (a * DOWN, b)
+        } else {
+            (a, b * DOWN)
+        };
+        return (p, dekker(a, b, p * DOWN) * UP);
+    }
+    (p, dekker(a, b, p))
+}
+
+/// The error a·b − p of the rounded product p, by Dekker's algorithm.
+#[inline]
+fn dekker(a: f64, b: f64, p: f64) -> f64 {
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    ((ah * bh - p) + ah * bl + al * bh) + al * bl
 }
 
 /// A double-double number hi + lo, |lo| ≤ ½ ulp(hi).
@@ -201,6 +224,9 @@ impl Add for DD {
     #[inline]
     fn add(self, o: DD) -> DD {
         let (s, e) = two_sum(self.hi, o.hi);
+        if !s.is_finite() {
+            return DD::new(s, 0.0);
+        }
         let (t, f) = two_sum(self.lo, o.lo);
         let (s, e) = fast_two_sum(s, e + t);
         DD::renorm(s, e + f)
@@ -244,6 +270,11 @@ impl Div for DD {
     #[inline]
     fn div(self, o: DD) -> DD {
         let q1 = self.hi / o.hi;
+        if !q1.is_finite() || !o.hi.is_finite() || q1 == 0.0 {
+            // Overflow, division by zero or by infinity, or a zero quotient:
+            // the f64 quotient is the answer, without a NaN from inf − inf.
+            return DD::new(q1, 0.0);
+        }
         let r = self - o.mul_f64(q1);
         let q2 = r.hi / o.hi;
         let r = r - o.mul_f64(q2);
@@ -279,8 +310,10 @@ impl Real for DD {
     }
     fn sin_cos_deg(deg: f64) -> (DD, DD) {
         let (x, q) = reduce_degrees(deg);
-        if x == 0.0 {
-            return quarter(q, DD::of(0.0), DD::of(1.0));
+        if x.abs() < 1e-40 {
+            // sin t = t and cos t = 1 to double-double precision (t² < 1e-80).
+            let t = DD::PI.mul_f64(x) / DD::of(180.0);
+            return quarter(q, t, DD::of(1.0));
         }
         // |x| ≤ 45° = π/4: the Taylor series reach 2⁻¹⁰⁶ within 27 terms.
         let t = DD::PI.mul_f64(x) / DD::of(180.0);
@@ -294,7 +327,9 @@ impl Real for DD {
             ts = -(ts * t2) / DD::of((2.0 * k) * (2.0 * k + 1.0));
             c += tc;
             s += ts;
-            if tc.hi.abs() < 1e-34 && ts.hi.abs() < 1e-34 * t.hi.abs() {
+            // Terms below 2⁻¹¹⁰ of their sums are gone; 30 terms reach that
+            // for |t| ≤ π/4 whatever happens to the test.
+            if (tc.hi.abs() <= 1e-33 && ts.hi.abs() <= 1e-33 * s.hi.abs()) || k >= 30.0 {
                 break;
             }
             k += 1.0;
@@ -396,6 +431,41 @@ mod tests {
         let (s, _) = DD::sin_cos_deg(30.0);
         assert!((s - DD::of(0.5)).f64().abs() < 1e-31);
         assert_eq!(DD::sin_cos_deg(90.0), (DD::of(1.0), DD::of(0.0)));
+    }
+
+    #[test]
+    fn dd_sin_cos_of_tiny_angles_end_and_are_the_angle() {
+        for deg in [1e-300, -3e-290, 1e-45, 1e-20, 5e-324] {
+            let (s, c) = DD::sin_cos_deg(deg);
+            let t = deg.to_radians();
+            assert!(
+                (s.f64() - t).abs() <= 2.0 * f64::EPSILON * t.abs(),
+                "{deg}: {s:?}"
+            );
+            assert_eq!(c.f64(), 1.0);
+        }
+    }
+
+    #[test]
+    fn dd_at_the_ends_of_the_range_gives_inf_or_zero_not_nan() {
+        let max = f64::MAX;
+        let p = DD::of(max) * DD::of(0.999_999_999_999_999_9);
+        assert!(p.f64().is_finite() && p.f64() > 1.79e308, "{p:?}");
+        assert_eq!(two_prod(max, 0.5).0, max * 0.5);
+        assert!(two_prod(max, 0.5).1 == 0.0);
+        assert_eq!((DD::of(1e300) / DD::of(1e-10)).f64(), f64::INFINITY);
+        assert_eq!((DD::of(1.0) / DD::of(f64::INFINITY)).f64(), 0.0);
+        assert_eq!((DD::of(f64::INFINITY) + DD::of(1.0)).f64(), f64::INFINITY);
+        // Products near the top keep their error term.
+        let a = 1.0 + 2f64.powi(-30);
+        let (p, e) = two_prod(2f64.powi(1000) * a, 2f64.powi(20) * a);
+        assert_eq!(
+            (p, e),
+            (
+                2f64.powi(1020) * (1.0 + 2f64.powi(-29)),
+                2f64.powi(1020 - 60)
+            )
+        );
     }
 
     #[test]

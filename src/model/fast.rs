@@ -37,9 +37,16 @@ const RECURSION_LIMIT: u32 = 80;
 /// `RawFile` from `text`, or `None` where the serde path must decide.
 pub fn parse(text: &str) -> Option<RawFile> {
     // `[expect]` is serde's: decline now, not after reading every part
-    // before it (a file of 100,000 parts would be read twice). A name with
-    // "expect" in it only costs the fast path.
-    if text.contains("expect") {
+    // before it (a file of 100,000 parts would be read twice). Only a line
+    // that starts with the table or key counts, so a comment or a name that
+    // mentions "expected" keeps the fast path; a quoted key ("expect") is
+    // declined later, when the builder meets it.
+    if text.lines().any(|l| {
+        let l = l.trim_start();
+        l.starts_with("expect")
+            || l.strip_prefix('[')
+                .is_some_and(|h| h.trim_start().starts_with("expect"))
+    }) {
         return None;
     }
     let source = Source::new(text);
@@ -576,6 +583,17 @@ mod tests {
     /// The fast path leaves the file to serde.
     fn declines(text: &str) {
         assert!(parse(text).is_none(), "fast path accepted:\n{text}");
+    }
+
+    #[test]
+    fn expectations_go_to_serde_and_mentions_of_them_do_not() {
+        let part = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+        declines(&format!("{part}[expect]\nmass = {{ max = 2 }}\n"));
+        declines(&format!("{part}[ expect ]\nmass = {{ max = 2 }}\n"));
+        declines(&format!("expect.mass = {{ max = 2 }}\n{part}"));
+        same(&format!(
+            "# expected by Monday\nname = \"as expected\"\n{part}"
+        ));
     }
 
     #[test]

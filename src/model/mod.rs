@@ -843,6 +843,7 @@ impl Ctx<'_> {
                 .sum::<Matrix3<f64>>()
         });
         let spec = self.spec(shape, p, edges_given, orientation.clone())?;
+        self.in_file_range(shape, &spec, &name, raw.span())?;
         let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
             name,
@@ -860,6 +861,58 @@ impl Ctx<'_> {
             spec,
         };
         Ok((part, real))
+    }
+
+    /// The composer works in the file's units (see `Spec`), so the part's
+    /// mass and second moments must be normal f64 there too, not only in
+    /// SI: a tiny part in a file of kilometres and tonnes can be subnormal
+    /// (a few bits of precision) in file units while fine in SI, and a huge
+    /// one in micrometres and milligrams can overflow.
+    fn in_file_range(
+        &self,
+        shape: Shape,
+        spec: &Spec,
+        name: &str,
+        span: Range<usize>,
+    ) -> Result<(), Diagnostic> {
+        let m = crate::compose::mass_of::<f64>(shape, spec).abs();
+        let j = crate::compose::own_second_moment::<f64>(shape, spec, m);
+        // Each independent second moment: along the local axes, per edge,
+        // or (a triangle, a given tensor) the trace.
+        let parts: Vec<f64> = match &spec.place {
+            Place::Centered { extent, .. } => shape
+                .second_moments(m, &extent[..shape.dim_count()])
+                .to_vec(),
+            Place::Edges { edges, .. } => edges[..shape.edge_count()]
+                .iter()
+                // (m e) e, not m (e e): e² alone can underflow or overflow.
+                .map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum())
+                .collect(),
+            _ => vec![j[0][0] + j[1][1] + j[2][2]],
+        };
+        let u = self.units;
+        let units = format!("{} and {}", u.length, u.mass);
+        let fix =
+            "give the file units closer to the part's size (`units = { length = .., mass = .. }`)";
+        if !(m.is_finite()
+            && j.iter().flatten().all(|x| x.is_finite())
+            && parts.iter().all(|x| x.is_finite()))
+        {
+            return Err(self
+                .err(span, format!("the mass properties of `{name}` overflow the range of f64 in the file's units ({units})"))
+                .help(fix));
+        }
+        let expected = match shape {
+            Shape::Triangle => 1,
+            _ => shape.nonzero_moments(),
+        };
+        let normal = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
+        if m < f64::MIN_POSITIVE || normal < expected {
+            return Err(self
+                .err(span, format!("the mass properties of `{name}` underflow the range of f64 in the file's units ({units}): too few digits to compute with"))
+                .help(fix));
+        }
+        Ok(())
     }
 
     /// A triangle's centroid and area (SI) from its `vertices`, which must

@@ -1071,3 +1071,76 @@ fn a_triangle_matches_a_quadrature_of_its_definition() {
     let i = massprop::mass::inertia_of(&c);
     assert!(rel(&m3(&s.inertia_com), &i) <= 16.0 * EPS);
 }
+
+#[test]
+fn extreme_inputs_found_in_review_give_answers_not_hangs_or_nan() {
+    // A rotation of 1e-300 degrees is the identity to f64 precision (the
+    // double-double sine once looped forever on it), with or without the
+    // idealisation report, which always turns parts in double-double.
+    let plain = "[[part]]\nshape = \"plate\"\nmass = 1\nsize = [1, 2]\ncenter = [0, 0, 0]\nthickness = 0.01\n";
+    let turned = format!("{plain}rotation = {{ axis = [1, 0, 0], degrees = 1e-300 }}\n");
+    for precision in [Precision::Standard, Precision::Extended] {
+        let (a, b) = (summary_in(plain, precision), summary_in(&turned, precision));
+        assert!(
+            rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= EPS,
+            "{precision:?}"
+        );
+    }
+    // Two 1e300 kg points: the first moment Σ mᵢcᵢ would overflow, the
+    // centre of mass and inertia do not.
+    let heavy = "[[part]]\nshape = \"point\"\nmass = 1e300\ncenter = [1e9, 0, 0]\n\
+                 [[part]]\nshape = \"point\"\nmass = 1e300\ncenter = [1e9, 1, 0]\n";
+    for precision in [Precision::Standard, Precision::Extended] {
+        let s = summary_in(heavy, precision);
+        assert_eq!(s.center_of_mass, [1e9, 0.5, 0.0]);
+        // I_xx = 2 m (½)² = 5e299.
+        assert!((s.inertia_com[0][0] / 5e299 - 1.0).abs() <= 4.0 * EPS);
+    }
+    // A box 1e151 × 1e-150 × 1: the Jacobi angle's θ overflows unless it is
+    // formed with care; both precisions agree on the moments.
+    let long = "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1e151, 1e-150, 1]\ncenter = [0, 0, 0]\n\
+                rotation = { quaternion = [1, 0, 0, 1e-310] }\n";
+    let (a, b) = (
+        summary_in(long, Precision::Standard),
+        summary_in(long, Precision::Extended),
+    );
+    for k in 1..3 {
+        assert!((a.principal_moments[k] / b.principal_moments[k] - 1.0).abs() <= 8.0 * EPS);
+    }
+}
+
+#[test]
+fn every_rotation_form_keeps_the_smallest_moment_of_a_slender_box() {
+    // The principal moments of a box do not depend on its orientation, so
+    // the exact smallest moment of a 1e-9 × 1e-9 × 1 box of 1 kg is
+    // (a² + a²)/12 for the f64 value a of 1e-9, whatever the rotation:
+    // this checks the double-double sine and Newton–Schulz of every form
+    // against an exact value (the exact reference covers quaternions).
+    use massprop::numeric::DD;
+    let a = 1e-9;
+    let ad = DD::of(a);
+    let exact = ((ad * ad + ad * ad) / DD::of(12.0)).f64();
+    let top_over_min = (1.0 / 12.0) / exact;
+    for rotation in [
+        "{ axis = [1, 2, 3], degrees = 37.25 }",
+        "{ intrinsic = \"zyx\", degrees = [10, 20.5, 30] }",
+        "{ extrinsic = \"xzx\", degrees = [-70, 33, 12.125] }",
+        // A Pythagorean rotation written to 17 digits: orthonormal to ~1e-16,
+        // made exactly orthonormal by Newton–Schulz.
+        "{ matrix = [[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]] }",
+        "{ quaternion = [0.5, 0.5, -0.5, 0.5] }",
+    ] {
+        let text = format!(
+            "[[part]]\nshape = \"box\"\nmass = 1\nsize = [{a:?}, {a:?}, 1]\ncenter = [0, 0, 0]\nrotation = {rotation}\n"
+        );
+        let ext = summary_in(&text, Precision::Extended).principal_moments[0];
+        let err = (ext - exact).abs() / exact;
+        assert!(err <= 1e-12, "{rotation}: extended {err:e}");
+        // Standard: the tensor's entries round by ~ε·I_max; no better.
+        let std = summary_in(&text, Precision::Standard).principal_moments[0];
+        assert!(
+            (std - exact).abs() <= 12.0 * EPS * top_over_min * exact,
+            "{rotation}: standard"
+        );
+    }
+}
