@@ -26,6 +26,20 @@ pub enum Command {
     Check(CheckArgs),
     /// Compare the mass properties of two part files (or two versions of one).
     Diff(DiffArgs),
+    /// List the materials `material = "NAME"` may name, with their densities.
+    Materials(MaterialsArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct MaterialsArgs {
+    /// A part file whose `[materials]` table is listed too (it adds to and
+    /// overrides the built-in ones).
+    #[arg(value_name = "FILE")]
+    pub file: Option<String>,
+
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
 }
 
 #[derive(Args, Debug)]

@@ -12,6 +12,7 @@ pub mod diag;
 pub mod diff;
 pub mod eigen;
 pub mod mass;
+pub mod materials;
 pub mod model;
 pub mod numeric;
 pub mod report;
@@ -52,6 +53,7 @@ pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
         Command::Report(args) => report(args),
         Command::Check(args) => check::run(args),
         Command::Diff(args) => diff::run(args),
+        Command::Materials(args) => materials::run(args),
     }
 }
 

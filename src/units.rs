@@ -22,6 +22,7 @@ impl Dim {
         Dim { mass, length, time }
     }
     pub const LENGTH: Dim = Dim::new(0, 1, 0);
+    pub const AREA: Dim = Dim::new(0, 2, 0);
     pub const MASS: Dim = Dim::new(1, 0, 0);
     pub const DENSITY: Dim = Dim::new(1, -3, 0);
     pub const AREAL_DENSITY: Dim = Dim::new(1, -2, 0);
@@ -44,6 +45,7 @@ impl Dim {
     pub fn describe(self) -> &'static str {
         match self {
             Dim::LENGTH => "a length",
+            Dim::AREA => "an area",
             Dim::MASS => "a mass",
             Dim::DENSITY => "a density (mass per volume)",
             Dim::AREAL_DENSITY => "an areal density (mass per area)",
@@ -61,6 +63,7 @@ impl Dim {
     pub fn example(self) -> &'static str {
         match self {
             Dim::LENGTH => "\"3 mm\"",
+            Dim::AREA => "\"12 mm^2\"",
             Dim::MASS => "\"2 lb\"",
             Dim::DENSITY => "\"7.85 g/cm^3\"",
             Dim::AREAL_DENSITY => "\"70 kg/m^2\"",

@@ -181,6 +181,8 @@ impl<'i> Builder<'i> {
             part: self.parts.map(|(span, v)| Spanned::new(span, v)),
             analysis: self.analysis,
             expect: None,
+            // `[materials]` is an unknown table to the builder: serde's.
+            materials: None,
         })
     }
 
@@ -219,6 +221,8 @@ impl<'i> Builder<'i> {
             // Triangles too: a key the fast path does not take sends the
             // file down the serde path.
             vertices: None,
+            material: None,
+            area: None,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),

@@ -50,6 +50,8 @@ pub struct Model {
     /// cannot see them: the composition is the idealised one whatever these
     /// say, and only the report compares it with the solids.
     pub real_sizes: Vec<RealSize>,
+    /// `[materials]`: name → density, kg/m³.
+    pub materials: std::collections::BTreeMap<String, f64>,
 }
 
 /// The solid that a thin plate or slender rod idealises.
@@ -182,12 +184,26 @@ impl Model {
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
+            materials: Default::default(),
         };
         let units = match &raw.units {
             Some(u) => ctx.file_units(u)?,
             None => FileUnits::default(),
         };
-        let ctx = Ctx { source, units };
+        let mut ctx = Ctx {
+            source,
+            units,
+            materials: Default::default(),
+        };
+        if let Some(table) = &raw.materials {
+            for (name, m) in table.get_ref() {
+                let key = format!("density` of material `{name}");
+                let si = ctx.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
+                let file = ctx.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
+                ctx.materials.insert(name.clone(), (si, file));
+            }
+        }
+        let ctx = ctx;
         let raw_parts = match &raw.part {
             Some(p) if !p.get_ref().is_empty() => p.get_ref(),
             Some(p) => {
@@ -229,6 +245,11 @@ impl Model {
             parts,
             analysis,
             expect,
+            materials: ctx
+                .materials
+                .iter()
+                .map(|(k, v)| (k.clone(), v.0))
+                .collect(),
             real_sizes,
         })
     }
@@ -347,6 +368,8 @@ fn key_before(text: &str, offset: usize) -> Option<String> {
 pub(crate) struct Ctx<'a> {
     source: &'a Source,
     units: FileUnits,
+    /// `[materials]`: name → density (kg/m³, and in file units).
+    materials: std::collections::BTreeMap<String, (f64, f64)>,
 }
 
 impl Ctx<'_> {
@@ -452,6 +475,7 @@ impl Ctx<'_> {
         p: &RawPart,
         by_edges: bool,
         orientation: Orientation,
+        material: Option<f64>,
     ) -> Result<Spec, Diagnostic> {
         let density = match shape {
             Shape::Box | Shape::Cylinder | Shape::Sphere => (&p.density, Dim::DENSITY),
@@ -466,7 +490,9 @@ impl Ctx<'_> {
                 shape.density_key().unwrap_or("density"),
                 dim,
             )?),
-            (None, (None, _)) => unreachable!("`part` checked that a mass is given"),
+            (None, (None, _)) => MassSpec::Density(
+                material.expect("`part` checked that a mass, density or material is given"),
+            ),
         };
         fn req(v: &Option<Vector>) -> &Vector {
             v.as_ref().expect("`part` checked the placement keys")
@@ -607,7 +633,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 20] = [
+        let keys: [(&str, Option<Range<usize>>); 22] = [
             ("density", p.density.as_ref().map(Spanned::span)),
             ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
             (
@@ -631,10 +657,13 @@ impl Ctx<'_> {
             ("inertia", p.inertia.as_ref().map(Spanned::span)),
             ("products", p.products.as_ref().map(Spanned::span)),
             ("vertices", p.vertices.as_ref().map(Spanned::span)),
+            ("material", p.material.as_ref().map(Spanned::span)),
+            ("area", p.area.as_ref().map(Spanned::span)),
         ];
         let accepted: &[&str] = match shape {
             Shape::Box => &[
                 "density", "size", "center", "rotation", "corner", "edges", "mass", "remove",
+                "material",
             ],
             Shape::Plate => &[
                 "areal_density",
@@ -646,6 +675,7 @@ impl Ctx<'_> {
                 "mass",
                 "remove",
                 "thickness",
+                "material",
             ],
             Shape::Rod => &[
                 "linear_density",
@@ -657,11 +687,14 @@ impl Ctx<'_> {
                 "mass",
                 "remove",
                 "diameter",
+                "material",
+                "area",
             ],
             Shape::Cylinder => &[
                 "density",
                 "radius",
                 "inner_radius",
+                "material",
                 "length",
                 "center",
                 "rotation",
@@ -672,6 +705,8 @@ impl Ctx<'_> {
                 "areal_density",
                 "radius",
                 "inner_radius",
+                "material",
+                "thickness",
                 "center",
                 "rotation",
                 "mass",
@@ -681,6 +716,7 @@ impl Ctx<'_> {
                 "density",
                 "radius",
                 "inner_radius",
+                "material",
                 "center",
                 "rotation",
                 "mass",
@@ -690,7 +726,14 @@ impl Ctx<'_> {
             Shape::Inertia => &[
                 "mass", "center", "rotation", "inertia", "products", "remove",
             ],
-            Shape::Triangle => &["areal_density", "vertices", "mass", "remove"],
+            Shape::Triangle => &[
+                "areal_density",
+                "vertices",
+                "mass",
+                "remove",
+                "material",
+                "thickness",
+            ],
         };
         if let Some((key, span)) = keys
             .iter()
@@ -746,7 +789,33 @@ impl Ctx<'_> {
             Shape::Rod => &p.linear_density,
             Shape::Point | Shape::Inertia => &None,
         };
+        let material = self.material(shape, p, raw.span())?;
+        if let Some((_, _, span)) = &material {
+            let other = [
+                ("mass", &p.mass),
+                (shape.density_key().unwrap_or("density"), density),
+            ];
+            if let Some((k, q)) = other.iter().find_map(|(k, q)| q.as_ref().map(|q| (*k, q))) {
+                let (span, later, earlier) = if q.span().start > span.start {
+                    (q.span(), k, "material")
+                } else {
+                    (span.clone(), "material", k)
+                };
+                return Err(self.err(
+                    span,
+                    format!("`{later}` conflicts with `{earlier}`: give exactly one"),
+                ));
+            }
+        }
         let mass = match (&p.mass, density, shape.density_key()) {
+            (None, None, _) if material.is_some() => {
+                let (si, _, span) = material.clone().expect("checked");
+                let m = si * shape.measure(&dims);
+                if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
+                    return Err(self.err(span, "the material's density times the size gives a mass out of the range of f64"));
+                }
+                m
+            }
             (Some(m), Some(d), Some(dk)) => {
                 let (span, later, earlier) = if d.span().start > m.span().start {
                     (d.span(), dk, "mass")
@@ -781,7 +850,10 @@ impl Ctx<'_> {
                 m
             }
             (None, _, Some(dk)) => {
-                return Err(self.err(raw.span(), format!("this {s} needs `mass` or `{dk}`")));
+                return Err(self.err(
+                    raw.span(),
+                    format!("this {s} needs `mass`, `{dk}` or `material`"),
+                ));
             }
             (None, _, None) => return Err(self.err(raw.span(), format!("this {s} needs `mass`"))),
         };
@@ -842,7 +914,13 @@ impl Ctx<'_> {
                 })
                 .sum::<Matrix3<f64>>()
         });
-        let spec = self.spec(shape, p, edges_given, orientation.clone())?;
+        let spec = self.spec(
+            shape,
+            p,
+            edges_given,
+            orientation.clone(),
+            material.map(|m| m.1),
+        )?;
         self.in_file_range(shape, &spec, &name, raw.span())?;
         let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
@@ -861,6 +939,113 @@ impl Ctx<'_> {
             spec,
         };
         Ok((part, real))
+    }
+
+    /// A part's `material`: its density made the shape's (per volume; times
+    /// `thickness` for a plate, disk or triangle; times `area` or the area
+    /// of `diameter` for a rod), in SI and in file units, with the span of
+    /// `material`. `None` without one; `thickness` and `area` where they
+    /// only serve a material are errors without it.
+    fn material(
+        &self,
+        shape: Shape,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<Option<(f64, f64, Range<usize>)>, Diagnostic> {
+        let s = shape.name();
+        let Some(name) = &p.material else {
+            let only_with = match shape {
+                Shape::Disk | Shape::Triangle => p.thickness.as_ref().map(|q| ("thickness", q)),
+                Shape::Rod => p.area.as_ref().map(|q| ("area", q)),
+                _ => None,
+            };
+            if let Some((key, q)) = only_with {
+                return Err(self
+                    .err(
+                        q.span(),
+                        format!(
+                            "`{key}` on a {s} goes with `material`, which it turns into a mass"
+                        ),
+                    )
+                    .help(format!(
+                        "give `material`, or drop `{key}` and give `mass` or `{}`",
+                        shape.density_key().unwrap_or("density")
+                    )));
+            }
+            return Ok(None);
+        };
+        let (si, file) = match self.materials.get(name.get_ref()) {
+            Some(&(si, file)) => (si, file),
+            None => match crate::materials::built_in(name.get_ref()) {
+                Some(m) => {
+                    let f = self.units.factor(Dim::DENSITY).value();
+                    (m.density, m.density / f)
+                }
+                None => {
+                    let names: Vec<&str> = crate::materials::BUILT_IN
+                        .iter()
+                        .map(|m| m.name)
+                        .chain(self.materials.keys().map(String::as_str))
+                        .collect();
+                    let d = self.err(
+                        name.span(),
+                        format!("unknown material {:?}", name.get_ref()),
+                    );
+                    return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
+                        Some(s) => d.label(format!("did you mean \"{s}\"?")),
+                        None => d.help("`massprop materials` lists them; add one in `[materials]`, e.g. foam = { density = \"30 kg/m^3\" }"),
+                    });
+                }
+            },
+        };
+        let factor = |si_mult: f64, file_mult: f64| (si * si_mult, file * file_mult);
+        let needs = |key: &str| {
+            self.err(
+                span.clone(),
+                format!(
+                    "this {s} of `{}` needs `{key}` to turn the density into a mass",
+                    name.get_ref()
+                ),
+            )
+        };
+        let out = match shape {
+            Shape::Box | Shape::Cylinder | Shape::Sphere => (si, file),
+            Shape::Plate | Shape::Disk | Shape::Triangle => {
+                let t = p.thickness.as_ref().ok_or_else(|| needs("thickness"))?;
+                factor(
+                    self.positive(t, "thickness", Dim::LENGTH)?,
+                    self.file_quantity(t, "thickness", Dim::LENGTH)?,
+                )
+            }
+            Shape::Rod => match (&p.area, &p.diameter) {
+                (Some(a), _) => factor(
+                    self.positive(a, "area", Dim::AREA)?,
+                    self.file_quantity(a, "area", Dim::AREA)?,
+                ),
+                (None, Some(d)) => {
+                    let (ds, df) = (
+                        self.positive(d, "diameter", Dim::LENGTH)?,
+                        self.file_quantity(d, "diameter", Dim::LENGTH)?,
+                    );
+                    let q = std::f64::consts::PI / 4.0;
+                    factor(q * ds * ds, q * df * df)
+                }
+                (None, None) => return Err(needs("area` or `diameter")),
+            },
+            Shape::Point | Shape::Inertia => {
+                return Err(self.err(
+                    name.span(),
+                    format!("`material` does not apply to a {s}: give `mass`"),
+                ));
+            }
+        };
+        if !(out.0.is_finite() && out.1.is_finite()) {
+            return Err(self.err(
+                name.span(),
+                "the material's density overflows the range of f64",
+            ));
+        }
+        Ok(Some((out.0, out.1, name.span())))
     }
 
     /// The composer works in the file's units (see `Spec`), so the part's

@@ -24,6 +24,17 @@ pub struct RawFile {
     pub part: Option<Spanned<Vec<Spanned<RawPart>>>>,
     pub analysis: Option<Spanned<RawAnalysis>>,
     pub expect: Option<Spanned<RawExpect>>,
+    /// `[materials]`: name → { density }, adding to the built-in ones.
+    pub materials: Option<Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>>,
+}
+
+#[derive(Deserialize, Debug)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a table such as { density = \"30 kg/m^3\" }"
+)]
+pub struct RawMaterial {
+    pub density: Spanned<Quantity>,
 }
 
 #[derive(Deserialize, Debug)]
@@ -60,6 +71,10 @@ pub struct RawPart {
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
     pub radius: Option<Spanned<Quantity>>,
     pub inner_radius: Option<Spanned<Quantity>>,
+    /// A named material instead of a density.
+    pub material: Option<Spanned<String>>,
+    /// A rod's cross-section area (with `material`).
+    pub area: Option<Spanned<Quantity>>,
     /// A triangle's three vertices.
     pub vertices: Option<Spanned<Vec<Vector>>>,
     /// A given inertia tensor (rows) about the centroid, local axes.

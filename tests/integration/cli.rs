@@ -393,3 +393,44 @@ fn a_unit_on_the_last_flag_component_applies_to_all_three() {
     assert_eq!(run("5 mm,0 mm,1 in"), [0.005, 0.0, 0.0254]);
     assert_eq!(run("5,0,10"), [5.0, 0.0, 10.0]);
 }
+
+#[test]
+fn materials_lists_the_built_in_table_and_a_files_own() {
+    let out = massprop(&["materials", "--format", "json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(v["units"]["density"], "kg/m^3");
+    let list = v["materials"].as_array().expect("an array");
+    let steel = list
+        .iter()
+        .find(|m| m["name"] == "steel")
+        .expect("steel is built in");
+    assert_eq!(steel["density"], 7850.0);
+    assert!(
+        list.iter()
+            .all(|m| m["source"].as_str().is_some_and(|s| !s.is_empty()))
+    );
+
+    let dir = std::env::temp_dir().join(format!("massprop-materials-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("m.toml");
+    std::fs::write(
+        &file,
+        "[materials]\nfoam = { density = 30 }\nsteel = { density = \"7.9 g/cm^3\" }\n\
+         [[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    let out = massprop(&["materials", "--format", "json", file.to_str().unwrap()]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let find = |n: &str| {
+        v["materials"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|m| m["name"] == n)
+            .cloned()
+    };
+    assert_eq!(find("foam").expect("added")["density"], 30.0);
+    assert_eq!(find("steel").expect("overridden")["density"], 7900.0);
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -1144,3 +1144,32 @@ fn every_rotation_form_keeps_the_smallest_moment_of_a_slender_box() {
         );
     }
 }
+
+#[test]
+fn materials_give_the_mass_of_their_density_times_the_size() {
+    // By hand: 30 kg/m³ foam, 0.1 m cube: 0.03 kg; 2 mm 6061 plate
+    // 0.1 × 0.05 m: 2700 · 1e-5 = 0.027 kg; a steel rod of 4 mm diameter,
+    // overridden to 7900 kg/m³, 0.2 m long: 7900 · π · 4e-6 · 0.2;
+    // Ti-6Al-4V rod of 12 mm² section, 0.1 m: 4430 · 1.2e-6.
+    let text = "units = { length = \"mm\", mass = \"kg\" }\n\
+                [materials]\nfoam = { density = \"30 kg/m^3\" }\nsteel = { density = 7.9e-6 }\n\
+                [[part]]\nshape = \"box\"\nmaterial = \"foam\"\nsize = [100, 100, 100]\ncenter = [0, 0, 0]\n\
+                [[part]]\nshape = \"plate\"\nmaterial = \"aluminium-6061\"\nthickness = 2\nsize = [100, 50]\ncenter = [0, 0, 60]\n\
+                [[part]]\nshape = \"rod\"\nmaterial = \"steel\"\ndiameter = 4\nlength = 200\ncenter = [0, 0, -60]\n\
+                [[part]]\nshape = \"rod\"\nmaterial = \"titanium-6al-4v\"\narea = \"12 mm^2\"\nlength = 100\ncenter = [0, 0, -70]\n";
+    let s = summary(text);
+    let want = [
+        0.03,
+        0.027,
+        7900.0 * std::f64::consts::PI * 4e-6 * 0.2,
+        4430.0 * 1.2e-6,
+    ];
+    for (p, w) in s.parts.iter().zip(want) {
+        assert!(
+            (p.mass - w).abs() <= 8.0 * EPS * w,
+            "{}: {} vs {w}",
+            p.name,
+            p.mass
+        );
+    }
+}
