@@ -1064,19 +1064,21 @@ impl Ctx<'_> {
         let j = crate::compose::own_second_moment::<f64>(shape, spec, m);
         // Each independent second moment: along the local axes, per edge,
         // or (a triangle, a given tensor) the trace.
-        let parts: Vec<f64> = match &spec.place {
-            Place::Centered { extent, .. } => shape
-                .second_moments(m, &extent[..shape.dim_count()])
-                .to_vec(),
-            Place::Edges { edges, .. } => edges[..shape.edge_count()]
-                .iter()
+        // (No allocation: this runs for every part of every file.)
+        let (parts, count): ([f64; 3], usize) = match &spec.place {
+            Place::Centered { extent, .. } => {
+                (shape.second_moments(m, &extent[..shape.dim_count()]), 3)
+            }
+            Place::Edges { edges, .. } => (
                 // (m e) e, not m (e e): e² alone can underflow or overflow.
-                .map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum())
-                .collect(),
-            _ => vec![j[0][0] + j[1][1] + j[2][2]],
+                edges.map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum()),
+                shape.edge_count(),
+            ),
+            _ => ([j[0][0] + j[1][1] + j[2][2], 0.0, 0.0], 1),
         };
+        let parts = &parts[..count];
         let u = self.units;
-        let units = format!("{} and {}", u.length, u.mass);
+        let units = || format!("{} and {}", u.length, u.mass);
         let fix =
             "give the file units closer to the part's size (`units = { length = .., mass = .. }`)";
         if !(m.is_finite()
@@ -1084,7 +1086,7 @@ impl Ctx<'_> {
             && parts.iter().all(|x| x.is_finite()))
         {
             return Err(self
-                .err(span, format!("the mass properties of `{name}` overflow the range of f64 in the file's units ({units})"))
+                .err(span, format!("the mass properties of `{name}` overflow the range of f64 in the file's units ({})", units()))
                 .help(fix));
         }
         let expected = match shape {
@@ -1094,7 +1096,7 @@ impl Ctx<'_> {
         let normal = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
         if m < f64::MIN_POSITIVE || normal < expected {
             return Err(self
-                .err(span, format!("the mass properties of `{name}` underflow the range of f64 in the file's units ({units}): too few digits to compute with"))
+                .err(span, format!("the mass properties of `{name}` underflow the range of f64 in the file's units ({}): too few digits to compute with", units()))
                 .help(fix));
         }
         Ok(())
