@@ -119,6 +119,11 @@ pub struct ReportArgs {
     #[arg(long, value_enum, default_value_t)]
     pub products: Products,
 
+    /// Report one sub-assembly (an `include`, by its name) alone, in the
+    /// file's frame.
+    #[arg(long, value_name = "NAME")]
+    pub only: Option<String>,
+
     /// Arithmetic: `standard` (f64, compensated sums) or `extended`
     /// (double-double, ~32 digits; for the smallest moments of very slender
     /// or flat bodies). See docs/accuracy.md.

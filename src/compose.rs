@@ -623,6 +623,7 @@ mod tests {
                             },
                             removed: false,
                         },
+                        assembly: Vec::new(),
                     });
                 }
             }

@@ -59,7 +59,10 @@ pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
 
 fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
     let source = read_source(&args.file)?;
-    let model = Model::parse(&source)?;
+    let mut model = Model::parse(&source)?;
+    if let Some(name) = &args.only {
+        model.only(name).map_err(Diagnostic::plain)?;
+    }
     let mut analysis = model.analysis.clone();
     let flag = |text: &Option<String>, name: &str, dim: Dim| {
         text.as_deref()

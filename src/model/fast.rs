@@ -191,9 +191,11 @@ impl<'i> Builder<'i> {
         let Some((span, p)) = self.part.take() else {
             return;
         };
+        // A part without a shape is an include or an error: serde's.
         let Some(shape) = p.shape else {
             return self.fail();
         };
+        let shape = Some(shape);
         let part = RawPart {
             name: p.name,
             shape,
@@ -223,6 +225,8 @@ impl<'i> Builder<'i> {
             vertices: None,
             material: None,
             area: None,
+            include: None,
+            origin: None,
         };
         match &mut self.parts {
             Some((_, v)) => v.push(Spanned::new(span, part)),

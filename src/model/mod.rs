@@ -6,6 +6,7 @@
 
 pub mod expect;
 pub mod fast;
+mod include;
 pub mod raw;
 pub mod rotation;
 
@@ -86,7 +87,8 @@ pub struct RealSize {
 /// One primitive, reduced to what composition needs. SI throughout.
 #[derive(Debug, Clone)]
 pub struct Part {
-    /// The part's `name`, or `part N` (1-based position in the file).
+    /// The part's `name`, or `part N` (1-based position in the file); for
+    /// a part of a sub-assembly, its path: `elbow / motor / stator`.
     pub name: String,
     pub shape: Shape,
     /// kg; negative for a cut-out (`remove = true`).
@@ -98,6 +100,9 @@ pub struct Part {
     pub own_second_moment: Matrix3<f64>,
     /// The part as the file gave it, in the file's units.
     pub spec: Spec,
+    /// The sub-assemblies the part is in, outermost first (empty for a
+    /// part of the file itself).
+    pub assembly: Vec<String>,
 }
 
 /// A part's numbers as the file gave them, in the file's units (a quantity
@@ -175,6 +180,19 @@ pub struct Analysis {
 impl Model {
     /// Parse and validate a part file.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
+        let mut stack = Vec::new();
+        if let Ok(p) = std::fs::canonicalize(&source.name) {
+            stack.push((p, source.name.clone()));
+        }
+        Model::parse_in(source, &mut stack)
+    }
+
+    /// `parse`, inside the chain of files that include each other (for
+    /// cycles).
+    fn parse_in(
+        source: &Source,
+        stack: &mut Vec<(std::path::PathBuf, String)>,
+    ) -> Result<Model, Diagnostic> {
         // The fast path where it can (most part files); else, and for every
         // error in the TOML, serde via the toml crate's value tree.
         let raw: RawFile = match fast::parse(&source.text) {
@@ -221,15 +239,19 @@ impl Model {
         let mut parts = Vec::with_capacity(raw_parts.len());
         let mut real_sizes = Vec::new();
         for (i, p) in raw_parts.iter().enumerate() {
+            if p.get_ref().include.is_some() {
+                ctx.include(i, p, stack, &mut parts, &mut real_sizes)?;
+                continue;
+            }
             let (part, real) = ctx.part(i, p)?;
-            parts.push(part);
             if let Some((solid, size)) = real {
                 real_sizes.push(RealSize {
-                    part: i,
+                    part: parts.len(),
                     solid,
                     size,
                 });
             }
+            parts.push(part);
         }
         let analysis = match &raw.analysis {
             Some(a) => ctx.analysis(a)?,
@@ -252,6 +274,54 @@ impl Model {
                 .collect(),
             real_sizes,
         })
+    }
+}
+
+impl Model {
+    /// Keep only the parts of the sub-assembly `name` (at any depth).
+    pub fn only(&mut self, name: &str) -> Result<(), String> {
+        let keep: Vec<bool> = self
+            .parts
+            .iter()
+            .map(|p| p.assembly.iter().any(|a| a == name))
+            .collect();
+        if !keep.contains(&true) {
+            let mut names: Vec<&str> = self
+                .parts
+                .iter()
+                .flat_map(|p| p.assembly.iter().map(String::as_str))
+                .collect();
+            names.sort_unstable();
+            names.dedup();
+            return Err(if names.is_empty() {
+                format!("`--only {name}`: the file has no sub-assemblies (`include`)")
+            } else {
+                let near = units::suggest(name, names.iter().copied())
+                    .map(|s| format!("; did you mean `{s}`?"))
+                    .unwrap_or_default();
+                format!(
+                    "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
+                    names
+                        .iter()
+                        .map(|n| format!("`{n}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            });
+        }
+        let mut index = Vec::with_capacity(keep.len());
+        let mut next = 0;
+        for k in &keep {
+            index.push(next);
+            next += usize::from(*k);
+        }
+        self.real_sizes.retain(|r| keep[r.part]);
+        for r in &mut self.real_sizes {
+            r.part = index[r.part];
+        }
+        let mut k = keep.iter();
+        self.parts.retain(|_| *k.next().expect("one flag per part"));
+        Ok(())
     }
 }
 
@@ -619,13 +689,19 @@ impl Ctx<'_> {
         raw: &Spanned<RawPart>,
     ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
         let p = raw.get_ref();
-        let shape = Shape::from_name(p.shape.get_ref()).ok_or_else(|| {
+        let Some(shape_raw) = &p.shape else {
+            return Err(self.err(raw.span(), "missing key `shape`").help(format!(
+                "every part needs `shape`, one of {} (or `include` of another part file)",
+                Shape::ALL.map(|s| format!("\"{}\"", s.name())).join(", ")
+            )));
+        };
+        let shape = Shape::from_name(shape_raw.get_ref()).ok_or_else(|| {
             let names = Shape::ALL.map(Shape::name);
             self.err(
-                p.shape.span(),
-                format!("unknown shape {:?}", p.shape.get_ref()),
+                shape_raw.span(),
+                format!("unknown shape {:?}", shape_raw.get_ref()),
             )
-            .label(match units::suggest(p.shape.get_ref(), names) {
+            .label(match units::suggest(shape_raw.get_ref(), names) {
                 Some(s) => format!("did you mean \"{s}\"?"),
                 None => format!("expected one of {}", names.join(", ")),
             })
@@ -633,33 +709,7 @@ impl Ctx<'_> {
         let s = shape.name();
 
         // Keys that exist in part files but do not apply to this shape.
-        let keys: [(&str, Option<Range<usize>>); 22] = [
-            ("density", p.density.as_ref().map(Spanned::span)),
-            ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
-            (
-                "linear_density",
-                p.linear_density.as_ref().map(Spanned::span),
-            ),
-            ("size", p.size.as_ref().map(Spanned::span)),
-            ("length", p.length.as_ref().map(Spanned::span)),
-            ("center", p.center.as_ref().map(Spanned::span)),
-            ("rotation", p.rotation.as_ref().map(Spanned::span)),
-            ("corner", p.corner.as_ref().map(Spanned::span)),
-            ("edges", p.edges.as_ref().map(Spanned::span)),
-            ("from", p.from.as_ref().map(Spanned::span)),
-            ("to", p.to.as_ref().map(Spanned::span)),
-            ("mass", p.mass.as_ref().map(Spanned::span)),
-            ("thickness", p.thickness.as_ref().map(Spanned::span)),
-            ("diameter", p.diameter.as_ref().map(Spanned::span)),
-            ("radius", p.radius.as_ref().map(Spanned::span)),
-            ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
-            ("remove", p.remove.as_ref().map(Spanned::span)),
-            ("inertia", p.inertia.as_ref().map(Spanned::span)),
-            ("products", p.products.as_ref().map(Spanned::span)),
-            ("vertices", p.vertices.as_ref().map(Spanned::span)),
-            ("material", p.material.as_ref().map(Spanned::span)),
-            ("area", p.area.as_ref().map(Spanned::span)),
-        ];
+        let keys = key_spans(p);
         let accepted: &[&str] = match shape {
             Shape::Box => &[
                 "density", "size", "center", "rotation", "corner", "edges", "mass", "remove",
@@ -937,6 +987,7 @@ impl Ctx<'_> {
                 a * local * a.transpose()
             },
             spec,
+            assembly: Vec::new(),
         };
         Ok((part, real))
     }
@@ -1438,6 +1489,47 @@ pub(crate) fn norm(v: &Vector3<f64>) -> f64 {
 /// v / |v| for a non-zero finite v, robust to extreme magnitudes.
 pub(crate) fn unit(v: &Vector3<f64>) -> Vector3<f64> {
     (v / v.amax()).normalize()
+}
+
+/// Every key a part may have, with where it is when present. The order is
+/// the one `Ctx::part` indexes.
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
+    [
+        ("density", p.density.as_ref().map(Spanned::span)),
+        ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
+        (
+            "linear_density",
+            p.linear_density.as_ref().map(Spanned::span),
+        ),
+        ("size", p.size.as_ref().map(Spanned::span)),
+        ("length", p.length.as_ref().map(Spanned::span)),
+        ("center", p.center.as_ref().map(Spanned::span)),
+        ("rotation", p.rotation.as_ref().map(Spanned::span)),
+        ("corner", p.corner.as_ref().map(Spanned::span)),
+        ("edges", p.edges.as_ref().map(Spanned::span)),
+        ("from", p.from.as_ref().map(Spanned::span)),
+        ("to", p.to.as_ref().map(Spanned::span)),
+        ("mass", p.mass.as_ref().map(Spanned::span)),
+        ("thickness", p.thickness.as_ref().map(Spanned::span)),
+        ("diameter", p.diameter.as_ref().map(Spanned::span)),
+        ("radius", p.radius.as_ref().map(Spanned::span)),
+        ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
+        ("remove", p.remove.as_ref().map(Spanned::span)),
+        ("inertia", p.inertia.as_ref().map(Spanned::span)),
+        ("products", p.products.as_ref().map(Spanned::span)),
+        ("vertices", p.vertices.as_ref().map(Spanned::span)),
+        ("material", p.material.as_ref().map(Spanned::span)),
+        ("area", p.area.as_ref().map(Spanned::span)),
+        ("include", p.include.as_ref().map(Spanned::span)),
+        ("origin", p.origin.as_ref().map(Spanned::span)),
+    ]
+}
+
+/// The keys of `key_spans`, and `shape`.
+pub(super) fn present_keys(p: &RawPart) -> include::Present<'static> {
+    let mut keys: include::Present<'static> = key_spans(p).to_vec();
+    keys.push(("shape", p.shape.as_ref().map(Spanned::span)));
+    keys
 }
 
 /// The earliest present key of a set, with its span.

@@ -51,7 +51,8 @@ pub struct RawUnits {
 #[serde(deny_unknown_fields, expecting = "a part table with `shape`")]
 pub struct RawPart {
     pub name: Option<Spanned<String>>,
-    pub shape: Spanned<String>,
+    /// The primitive; absent only in a part that `include`s a file.
+    pub shape: Option<Spanned<String>>,
     pub mass: Option<Spanned<Quantity>>,
     pub density: Option<Spanned<Quantity>>,
     pub areal_density: Option<Spanned<Quantity>>,
@@ -71,6 +72,10 @@ pub struct RawPart {
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
     pub radius: Option<Spanned<Quantity>>,
     pub inner_radius: Option<Spanned<Quantity>>,
+    /// Another part file placed here as a sub-assembly.
+    pub include: Option<Spanned<String>>,
+    /// Where the included file's origin goes (with `include`).
+    pub origin: Option<Vector>,
     /// A named material instead of a density.
     pub material: Option<Spanned<String>>,
     /// A rod's cross-section area (with `material`).

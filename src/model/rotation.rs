@@ -33,6 +33,9 @@ pub enum Orientation {
     Euler([usize; 3], [f64; 3], bool),
     /// Rows as given, orthonormal to `MATRIX_TOLERANCE`, determinant +1.
     Matrix(M3<f64>),
+    /// The first turn applied after the second (R₁ R₂): a part of an
+    /// included sub-assembly, turned with it.
+    Then(Box<Orientation>, Box<Orientation>),
 }
 
 impl Orientation {
@@ -44,6 +47,7 @@ impl Orientation {
             Orientation::AxisAngle(k, deg) => axis_angle(*k, *deg),
             Orientation::Euler(seq, deg, intrinsic) => euler(*seq, *deg, *intrinsic),
             Orientation::Matrix(m) => orthonormalised(m),
+            Orientation::Then(outer, inner) => mul(&outer.matrix(), &inner.matrix()),
         }
     }
 }

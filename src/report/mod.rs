@@ -66,6 +66,66 @@ pub struct PartSummary {
     /// (0 to 1; the shares of all parts sum to 1); `None` (null) where the
     /// moment is zero. See `ideal::shares`.
     pub principal_moment_share: [Option<f64>; 3],
+    /// The sub-assemblies the part is in, outermost first (`include`);
+    /// empty for the file's own parts.
+    pub assembly: Vec<String>,
+}
+
+/// A sub-assembly (`include`): the sum of its parts. SI.
+#[derive(Debug, Clone, Serialize)]
+pub struct AssemblySummary {
+    /// The path of sub-assembly names, outermost first; the last is its own.
+    pub path: Vec<String>,
+    pub parts: usize,
+    pub mass: f64,
+    pub mass_fraction: f64,
+    pub center_of_mass: [f64; 3],
+    /// The sum of its parts' shares of each principal moment.
+    pub principal_moment_share: [Option<f64>; 3],
+}
+
+/// The sub-assemblies of the parts, each path once, in the order they
+/// first appear (so a parent comes before its children).
+fn assemblies(parts: &[PartSummary], total: f64) -> Vec<AssemblySummary> {
+    let mut paths: Vec<Vec<String>> = Vec::new();
+    for p in parts {
+        for depth in 1..=p.assembly.len() {
+            let path = &p.assembly[..depth];
+            if !paths.iter().any(|q| q == path) {
+                paths.push(path.to_vec());
+            }
+        }
+    }
+    paths
+        .into_iter()
+        .map(|path| {
+            let inside: Vec<&PartSummary> = parts
+                .iter()
+                .filter(|p| p.assembly.starts_with(&path))
+                .collect();
+            let mass: f64 = inside.iter().map(|p| p.mass).sum();
+            let center_of_mass = std::array::from_fn(|i| {
+                inside
+                    .iter()
+                    .map(|p| p.mass / mass * p.center_of_mass[i])
+                    .sum()
+            });
+            let principal_moment_share = std::array::from_fn(|k| {
+                inside
+                    .iter()
+                    .map(|p| p.principal_moment_share[k])
+                    .sum::<Option<f64>>()
+            });
+            AssemblySummary {
+                parts: inside.len(),
+                mass,
+                mass_fraction: mass / total,
+                center_of_mass,
+                principal_moment_share,
+                path,
+            }
+        })
+        .collect()
 }
 
 /// Everything `report` prints, in SI. Field names are the JSON keys.
@@ -108,6 +168,10 @@ pub struct Summary {
     /// present only when a part gives its `thickness` or `diameter`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub idealisation: Option<ideal::Idealisation>,
+    /// The sub-assemblies (`include`), parents before children; absent
+    /// when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub assemblies: Vec<AssemblySummary>,
     /// Whether a reference point was given (else it is the centre of mass).
     #[serde(skip)]
     pub reference_given: bool,
@@ -290,7 +354,7 @@ pub fn summarize(
         finite(m, "Euler moment")?;
     }
 
-    Ok(Summary {
+    let mut summary = Summary {
         format_version: FORMAT_VERSION,
         name: model.name.clone(),
         products_convention: products,
@@ -319,8 +383,10 @@ pub fn summarize(
                 mass_fraction: p.mass / mass,
                 center_of_mass: arr(&p.center),
                 principal_moment_share: share,
+                assembly: p.assembly.clone(),
             })
             .collect(),
+        assemblies: Vec::new(),
         omega: analysis.omega.as_ref().map(arr),
         angular_momentum: h,
         kinetic_energy: t,
@@ -329,5 +395,7 @@ pub fn summarize(
         idealisation,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
-    })
+    };
+    summary.assemblies = assemblies(&summary.parts, summary.mass);
+    Ok(summary)
 }

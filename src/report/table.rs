@@ -405,10 +405,44 @@ pub fn render(s: &Summary, source: &str) -> String {
             "note: — marks a principal moment that is zero (a lone rod's axial moment): it has no shares"
         );
     }
+    if !s.assemblies.is_empty() {
+        assemblies(&mut out, s, &u);
+    }
     if let Some(i) = &s.idealisation {
         idealisation(&mut out, i, &u);
     }
     out
+}
+
+/// The sub-assemblies section: each with its mass, centre of mass and
+/// shares, indented by depth.
+fn assemblies(out: &mut String, s: &Summary, u: &Units) {
+    let mut t = new_table();
+    t.set_header(vec![
+        "sub-assembly".to_string(),
+        "parts".to_string(),
+        format!("mass ({})", u.mass_label),
+        "mass share".to_string(),
+        format!("centre of mass x ({})", u.length_label),
+        "y".to_string(),
+        "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
+    ]);
+    for a in &s.assemblies {
+        let indent = "  ".repeat(a.path.len() - 1);
+        let mut row = vec![
+            format!("{indent}{}", a.path.last().expect("a path is never empty")),
+            a.parts.to_string(),
+            fmt_num(a.mass / u.mass),
+            fmt_percent(Some(a.mass_fraction)),
+        ];
+        row.extend(a.center_of_mass.iter().map(|x| fmt_num(x / u.length)));
+        row.extend(a.principal_moment_share.iter().map(|x| fmt_percent(*x)));
+        t.add_row(row);
+    }
+    let _ = writeln!(out, "\nsub-assemblies\n{t}");
 }
 
 /// The idealisation section: the change of each principal moment with the

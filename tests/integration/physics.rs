@@ -1173,3 +1173,83 @@ fn materials_give_the_mass_of_their_density_times_the_size() {
         );
     }
 }
+
+/// Write `files` (name, text) into a fresh directory; the paths back.
+fn scratch(tag: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("massprop-{tag}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (name, text) in files {
+        std::fs::write(dir.join(name), text).unwrap();
+    }
+    dir
+}
+
+fn summary_of_file(path: &std::path::Path) -> Summary {
+    let source = massprop::read_source(path.to_str().unwrap()).unwrap();
+    let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
+    summarize(
+        &model,
+        &model.analysis,
+        Products::Tensor,
+        Precision::Standard,
+    )
+    .unwrap()
+}
+
+#[test]
+fn an_included_sub_assembly_is_its_parts_moved_turned_and_converted() {
+    // The motor in mm and g, included twice into a file in m and kg: once
+    // as it is, once at (0.4, 0, 0) turned a quarter turn about x (local z
+    // to −y), nested one level deeper through `elbow.toml`. By hand, the
+    // same parts written inline in m and kg, moved and turned.
+    let motor = "name = \"motor\"\nunits = { length = \"mm\", mass = \"g\" }\n\
+                 [[part]]\nname = \"stator\"\nshape = \"cylinder\"\nmass = 300\nradius = 20\nlength = 30\ncenter = [0, 0, 5]\n\
+                 [[part]]\nname = \"shaft\"\nshape = \"rod\"\nmass = 20\nfrom = [0, 0, -10]\nto = [0, 0, 40]\n";
+    let elbow = "[[part]]\ninclude = \"motor.toml\"\nname = \"elbow motor\"\norigin = [0.25, 0, 0]\n\
+                 rotation = { axis = [1, 0, 0], degrees = 90 }\n";
+    let arm = "[[part]]\nname = \"link\"\nshape = \"box\"\nmass = 1\nsize = [0.4, 0.05, 0.05]\ncenter = [0.2, 0, 0]\n\
+               [[part]]\ninclude = \"sub/elbow.toml\"\nname = \"elbow\"\norigin = [0.15, 0, 0]\n\
+               [[part]]\ninclude = \"sub/motor.toml\"\n";
+    let inline = "[[part]]\nname = \"link\"\nshape = \"box\"\nmass = 1\nsize = [0.4, 0.05, 0.05]\ncenter = [0.2, 0, 0]\n\
+                  [[part]]\nshape = \"cylinder\"\nmass = 0.3\nradius = 0.02\nlength = 0.03\ncenter = [0.4, -0.005, 0]\n\
+                  rotation = { axis = [1, 0, 0], degrees = 90 }\n\
+                  [[part]]\nshape = \"rod\"\nmass = 0.02\nfrom = [0.4, 0.01, 0]\nto = [0.4, -0.04, 0]\n\
+                  [[part]]\nshape = \"cylinder\"\nmass = 0.3\nradius = 0.02\nlength = 0.03\ncenter = [0, 0, 0.005]\n\
+                  [[part]]\nshape = \"rod\"\nmass = 0.02\nfrom = [0, 0, -0.01]\nto = [0, 0, 0.04]\n";
+    let dir = scratch("include", &[("arm.toml", arm), ("inline.toml", inline)]);
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("sub/motor.toml"), motor).unwrap();
+    std::fs::write(dir.join("sub/elbow.toml"), elbow).unwrap();
+    let (a, b) = (
+        summary_of_file(&dir.join("arm.toml")),
+        summary_of_file(&dir.join("inline.toml")),
+    );
+    assert!((a.mass - b.mass).abs() <= 4.0 * EPS * b.mass);
+    assert!((v3(&a.center_of_mass) - v3(&b.center_of_mass)).amax() <= 8.0 * EPS);
+    assert!(rel(&m3(&a.inertia_com), &m3(&b.inertia_com)) <= 16.0 * EPS);
+    // The tree: elbow > elbow motor, and motor.
+    let paths: Vec<Vec<String>> = a.assemblies.iter().map(|s| s.path.clone()).collect();
+    assert_eq!(
+        paths,
+        [vec!["elbow"], vec!["elbow", "elbow motor"], vec!["motor"]]
+    );
+    assert_eq!(a.parts[1].assembly, ["elbow", "elbow motor"]);
+    assert_eq!(a.parts[1].name, "elbow / elbow motor / stator");
+    assert!((a.assemblies[0].mass - 0.32).abs() <= 4.0 * EPS);
+    // --only: the sub-assembly alone.
+    let source = massprop::read_source(dir.join("arm.toml").to_str().unwrap()).unwrap();
+    let mut model = Model::parse(&source).unwrap();
+    model.only("motor").unwrap();
+    let s = summarize(
+        &model,
+        &model.analysis,
+        Products::Tensor,
+        Precision::Standard,
+    )
+    .unwrap();
+    assert!((s.mass - 0.32).abs() <= 4.0 * EPS);
+    // Centre of the unmoved motor by hand: (0.3 · 5 + 0.02 · 15) mm / 0.32.
+    assert!((s.center_of_mass[2] - 0.0018 / 0.32).abs() <= 8.0 * EPS);
+    assert!(model.only("nothing").is_err());
+    std::fs::remove_dir_all(&dir).ok();
+}

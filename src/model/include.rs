@@ -1,0 +1,225 @@
+//! Sub-assemblies: `[[part]] include = "motor.toml"` places another part
+//! file's parts here, its origin at `origin` and its axes turned by
+//! `rotation`, converted from its units to this file's.
+//!
+//! NOTE: the included parts are moved into this file's frame and units
+//! once, in f64 (each coordinate rounds once, as a unit string does); a
+//! sub-assembly placed without rotation, at an origin and in units that make
+//! the arithmetic exact (the same units, integer origins) is carried over
+//! exactly.
+
+use super::raw::RawPart;
+use super::rotation::{Orientation, to_matrix3};
+use super::{Ctx, MassSpec, Model, Part, Place, RealSize, Spec};
+use crate::diag::{Diagnostic, Source};
+use crate::numeric::M3;
+use crate::shapes::Shape;
+use crate::units::Dim;
+use nalgebra::{Matrix3, Vector3};
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// Where an included file's frame goes in this file's.
+struct Frame {
+    /// This file's units.
+    origin: [f64; 3],
+    r: M3<f64>,
+    orientation: Orientation,
+    /// The included file's length and mass units in this file's.
+    length: f64,
+    mass: f64,
+    /// SI, for the parts' SI fields.
+    origin_si: Vector3<f64>,
+    r_si: Matrix3<f64>,
+}
+
+impl Frame {
+    fn dir(&self, v: [f64; 3]) -> [f64; 3] {
+        let w = v.map(|x| x * self.length);
+        std::array::from_fn(|i| self.r[i][0] * w[0] + self.r[i][1] * w[1] + self.r[i][2] * w[2])
+    }
+
+    fn point(&self, p: [f64; 3]) -> [f64; 3] {
+        let d = self.dir(p);
+        std::array::from_fn(|i| self.origin[i] + d[i])
+    }
+
+    fn turn(&self, o: &Orientation) -> Orientation {
+        match (&self.orientation, o) {
+            (Orientation::Identity, o) => o.clone(),
+            (f, Orientation::Identity) => f.clone(),
+            (f, o) => Orientation::Then(Box::new(f.clone()), Box::new(o.clone())),
+        }
+    }
+
+    /// A part of the included file, in this file's frame and units.
+    fn place(&self, p: Part) -> Part {
+        let s = &p.spec;
+        let k = match p.shape {
+            Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
+            Shape::Plate | Shape::Disk | Shape::Triangle => 2,
+            Shape::Rod => 1,
+            Shape::Point | Shape::Inertia => 0,
+        };
+        let mass = match s.mass {
+            MassSpec::Given(m) => MassSpec::Given(m * self.mass),
+            MassSpec::Density(d) => MassSpec::Density(d * self.mass / self.length.powi(k)),
+        };
+        let place = match &s.place {
+            Place::Centered {
+                center,
+                extent,
+                orientation,
+            } => Place::Centered {
+                center: self.point(*center),
+                extent: extent.map(|x| x * self.length),
+                orientation: self.turn(orientation),
+            },
+            Place::Edges { corner, edges } => Place::Edges {
+                corner: self.point(*corner),
+                edges: edges.map(|e| self.dir(e)),
+            },
+            Place::FromTo { from, to } => Place::FromTo {
+                from: self.point(*from),
+                to: self.point(*to),
+            },
+            Place::Vertices(v) => Place::Vertices(v.map(|x| self.point(x))),
+            Place::Given {
+                center,
+                inertia,
+                orientation,
+            } => Place::Given {
+                center: self.point(*center),
+                inertia: inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length)),
+                orientation: self.turn(orientation),
+            },
+        };
+        Part {
+            center: self.origin_si + self.r_si * p.center,
+            own_second_moment: self.r_si * p.own_second_moment * self.r_si.transpose(),
+            spec: Spec {
+                mass,
+                place,
+                removed: s.removed,
+            },
+            ..p
+        }
+    }
+}
+
+impl Ctx<'_> {
+    /// Expand `[[part]] include = ".."` at position `index` into `parts`
+    /// (and its real sizes into `real`).
+    pub(super) fn include(
+        &self,
+        index: usize,
+        raw: &Spanned<RawPart>,
+        stack: &mut Vec<(PathBuf, String)>,
+        parts: &mut Vec<Part>,
+        real: &mut Vec<RealSize>,
+    ) -> Result<(), Diagnostic> {
+        let p = raw.get_ref();
+        let inc = p.include.as_ref().expect("the caller checked `include`");
+        if let Some((key, span)) = super::present_keys(p)
+            .into_iter()
+            .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))
+            .find_map(|(k, s)| s.map(|s| (k, s)))
+        {
+            let what = if key == "shape" {
+                "`shape` conflicts with `include`: a part is a shape or a sub-assembly".to_string()
+            } else {
+                format!("`{key}` does not apply to an included sub-assembly")
+            };
+            return Err(self.err(span, what).help(
+                "an include takes `include`, and optionally `name`, `origin` and `rotation`",
+            ));
+        }
+        let base = Path::new(&self.source.name)
+            .parent()
+            .filter(|_| self.source.name != "<stdin>")
+            .unwrap_or(Path::new(""));
+        let shown = base.join(inc.get_ref());
+        let shown_name = shown.to_string_lossy().into_owned();
+        let text = std::fs::read_to_string(&shown).map_err(|e| {
+            self.err(
+                inc.span(),
+                format!("cannot read the included file `{shown_name}`: {e}"),
+            )
+            .help("the path is relative to the including file")
+        })?;
+        let canonical = std::fs::canonicalize(&shown).unwrap_or_else(|_| shown.clone());
+        if let Some(at) = stack.iter().position(|(c, _)| *c == canonical) {
+            let chain: Vec<&str> = stack[at..].iter().map(|(_, n)| n.as_str()).collect();
+            return Err(self
+                .err(
+                    inc.span(),
+                    format!("include cycle: {} → {shown_name}", chain.join(" → ")),
+                )
+                .help("a sub-assembly cannot contain itself"));
+        }
+        stack.push((canonical, shown_name.clone()));
+        let child = Model::parse_in(&Source::new(shown_name.clone(), text), stack);
+        stack.pop();
+        let child = child?;
+
+        let name = match (&p.name, &child.name) {
+            (Some(n), _) => n.get_ref().clone(),
+            (None, Some(n)) => n.clone(),
+            (None, None) => shown
+                .file_stem()
+                .map(|s| s.to_string_lossy().into_owned())
+                .unwrap_or_else(|| format!("part {}", index + 1)),
+        };
+        let ratio = |dim: Dim| {
+            child
+                .units
+                .factor(dim)
+                .per(self.units.factor(dim))
+                .map(|f| f.value())
+                .unwrap_or_else(|| child.units.factor(dim).value() / self.units.factor(dim).value())
+        };
+        let orientation = match &p.rotation {
+            Some(r) => self.rotation(r)?,
+            None => Orientation::Identity,
+        };
+        let r: M3<f64> = orientation.matrix();
+        let origin = match &p.origin {
+            Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
+            None => [0.0; 3],
+        };
+        let origin_si = match &p.origin {
+            Some(o) => self.vec3(o, "origin", Dim::LENGTH)?,
+            None => Vector3::zeros(),
+        };
+        let frame = Frame {
+            origin,
+            r,
+            orientation,
+            length: ratio(Dim::LENGTH),
+            mass: ratio(Dim::MASS),
+            origin_si,
+            r_si: to_matrix3(&r),
+        };
+        let offset = parts.len();
+        for rs in &child.real_sizes {
+            real.push(RealSize {
+                part: rs.part + offset,
+                solid: rs.solid,
+                size: rs.size * frame.length,
+            });
+        }
+        for part in child.parts {
+            let mut placed = frame.place(part);
+            // Qualified, so that parts of two copies of a sub-assembly keep
+            // distinct names (in `diff`, `check` and the tables).
+            placed.name = format!("{name} / {}", placed.name);
+            placed.assembly.insert(0, name.clone());
+            parts.push(placed);
+        }
+        Ok(())
+    }
+}
+
+/// Keys of a part with the span of each that is present.
+pub(super) type Present<'k> = Vec<(&'k str, Option<Range<usize>>)>;
