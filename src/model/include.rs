@@ -16,9 +16,18 @@ use crate::numeric::M3;
 use crate::shapes::Shape;
 use crate::units::Dim;
 use nalgebra::{Matrix3, Vector3};
+use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
+
+/// The files being read: the chain of includes (for cycles) and each file
+/// parsed once, however many times it is included.
+#[derive(Default)]
+pub(super) struct Files {
+    pub(super) stack: Vec<(PathBuf, String)>,
+    cache: HashMap<PathBuf, Model>,
+}
 
 /// Where an included file's frame goes in this file's.
 struct Frame {
@@ -115,7 +124,7 @@ impl Ctx<'_> {
         &self,
         index: usize,
         raw: &Spanned<RawPart>,
-        stack: &mut Vec<(PathBuf, String)>,
+        files: &mut Files,
         parts: &mut Vec<Part>,
         real: &mut Vec<RealSize>,
     ) -> Result<(), Diagnostic> {
@@ -135,22 +144,29 @@ impl Ctx<'_> {
                 "an include takes `include`, and optionally `name`, `origin` and `rotation`",
             ));
         }
+        if self.source.name == "<stdin>" {
+            // Relative to what? Not the working directory: a file piped in
+            // (`git show OLD:arm.toml | massprop diff - arm.toml`) would
+            // silently include today's sub-assemblies.
+            return Err(self
+                .err(inc.span(), "`include` in a file read from standard input: its path has nothing to be relative to")
+                .help("give the file by its path"));
+        }
         let base = Path::new(&self.source.name)
             .parent()
-            .filter(|_| self.source.name != "<stdin>")
             .unwrap_or(Path::new(""));
         let shown = base.join(inc.get_ref());
         let shown_name = shown.to_string_lossy().into_owned();
-        let text = std::fs::read_to_string(&shown).map_err(|e| {
+        let unreadable = |e: std::io::Error| {
             self.err(
                 inc.span(),
                 format!("cannot read the included file `{shown_name}`: {e}"),
             )
             .help("the path is relative to the including file")
-        })?;
-        let canonical = std::fs::canonicalize(&shown).unwrap_or_else(|_| shown.clone());
-        if let Some(at) = stack.iter().position(|(c, _)| *c == canonical) {
-            let chain: Vec<&str> = stack[at..].iter().map(|(_, n)| n.as_str()).collect();
+        };
+        let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
+        if let Some(at) = files.stack.iter().position(|(c, _)| *c == canonical) {
+            let chain: Vec<&str> = files.stack[at..].iter().map(|(_, n)| n.as_str()).collect();
             return Err(self
                 .err(
                     inc.span(),
@@ -158,12 +174,20 @@ impl Ctx<'_> {
                 )
                 .help("a sub-assembly cannot contain itself"));
         }
-        stack.push((canonical, shown_name.clone()));
-        let child = Model::parse_in(&Source::new(shown_name.clone(), text), stack);
-        stack.pop();
-        let child = child?;
+        let child = match files.cache.get(&canonical) {
+            Some(m) => m.clone(),
+            None => {
+                let text = std::fs::read_to_string(&shown).map_err(unreadable)?;
+                files.stack.push((canonical.clone(), shown_name.clone()));
+                let child = Model::parse_in(&Source::new(shown_name.clone(), text), files);
+                files.stack.pop();
+                let child = child?;
+                files.cache.insert(canonical, child.clone());
+                child
+            }
+        };
 
-        let name = match (&p.name, &child.name) {
+        let base_name = match (&p.name, &child.name) {
             (Some(n), _) => n.get_ref().clone(),
             (None, Some(n)) => n.clone(),
             (None, None) => shown
@@ -171,6 +195,19 @@ impl Ctx<'_> {
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_else(|| format!("part {}", index + 1)),
         };
+        // Two copies of a sub-assembly in one file get distinct names:
+        // `wheel`, `wheel #2`, … (so `--only` and `diff` can tell them apart).
+        let taken = |n: &str| {
+            parts
+                .iter()
+                .any(|q| q.assembly.first().is_some_and(|a| a == n))
+        };
+        let mut name = base_name.clone();
+        let mut k = 1;
+        while taken(&name) {
+            k += 1;
+            name = format!("{base_name} #{k}");
+        }
         let ratio = |dim: Dim| {
             child
                 .units
@@ -215,6 +252,9 @@ impl Ctx<'_> {
             // distinct names (in `diff`, `check` and the tables).
             placed.name = format!("{name} / {}", placed.name);
             placed.assembly.insert(0, name.clone());
+            // Representable in this file's units too (the composer works in
+            // them): a sub-assembly in µm and mg can underflow in km and t.
+            self.in_file_range(placed.shape, &placed.spec, &placed.name, inc.span())?;
             parts.push(placed);
         }
         Ok(())

@@ -180,19 +180,16 @@ pub struct Analysis {
 impl Model {
     /// Parse and validate a part file.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
-        let mut stack = Vec::new();
+        let mut files = include::Files::default();
         if let Ok(p) = std::fs::canonicalize(&source.name) {
-            stack.push((p, source.name.clone()));
+            files.stack.push((p, source.name.clone()));
         }
-        Model::parse_in(source, &mut stack)
+        Model::parse_in(source, &mut files)
     }
 
     /// `parse`, inside the chain of files that include each other (for
     /// cycles).
-    fn parse_in(
-        source: &Source,
-        stack: &mut Vec<(std::path::PathBuf, String)>,
-    ) -> Result<Model, Diagnostic> {
+    fn parse_in(source: &Source, files: &mut include::Files) -> Result<Model, Diagnostic> {
         // The fast path where it can (most part files); else, and for every
         // error in the TOML, serde via the toml crate's value tree.
         let raw: RawFile = match fast::parse(&source.text) {
@@ -240,7 +237,7 @@ impl Model {
         let mut real_sizes = Vec::new();
         for (i, p) in raw_parts.iter().enumerate() {
             if p.get_ref().include.is_some() {
-                ctx.include(i, p, stack, &mut parts, &mut real_sizes)?;
+                ctx.include(i, p, files, &mut parts, &mut real_sizes)?;
                 continue;
             }
             let (part, real) = ctx.part(i, p)?;
@@ -278,37 +275,59 @@ impl Model {
 }
 
 impl Model {
-    /// Keep only the parts of the sub-assembly `name` (at any depth).
+    /// Keep only the parts of the sub-assembly `name`: its own name at any
+    /// depth, if only one sub-assembly has it, or its path
+    /// (`front / wheel #2`).
     pub fn only(&mut self, name: &str) -> Result<(), String> {
+        let mut prefixes: Vec<&[String]> = Vec::new();
+        for p in &self.parts {
+            for depth in 1..=p.assembly.len() {
+                let prefix = &p.assembly[..depth];
+                if !prefixes.contains(&prefix) {
+                    prefixes.push(prefix);
+                }
+            }
+        }
+        let matching: Vec<&[String]> = prefixes
+            .iter()
+            .copied()
+            .filter(|q| q.join(" / ") == name || q.last().is_some_and(|l| l == name))
+            .collect();
+        let target: Vec<String> = match matching.as_slice() {
+            [one] => one.to_vec(),
+            [] => {
+                let names: Vec<String> = prefixes.iter().map(|q| q.join(" / ")).collect();
+                return Err(if names.is_empty() {
+                    format!("`--only {name}`: the file has no sub-assemblies (`include`)")
+                } else {
+                    let near = units::suggest(name, names.iter().map(String::as_str))
+                        .map(|s| format!("; did you mean `{s}`?"))
+                        .unwrap_or_default();
+                    format!(
+                        "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
+                        names
+                            .iter()
+                            .map(|n| format!("`{n}`"))
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    )
+                });
+            }
+            many => {
+                return Err(format!(
+                    "`--only {name}` is ambiguous: {}; give the path",
+                    many.iter()
+                        .map(|q| format!("`{}`", q.join(" / ")))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ));
+            }
+        };
         let keep: Vec<bool> = self
             .parts
             .iter()
-            .map(|p| p.assembly.iter().any(|a| a == name))
+            .map(|p| p.assembly.starts_with(&target))
             .collect();
-        if !keep.contains(&true) {
-            let mut names: Vec<&str> = self
-                .parts
-                .iter()
-                .flat_map(|p| p.assembly.iter().map(String::as_str))
-                .collect();
-            names.sort_unstable();
-            names.dedup();
-            return Err(if names.is_empty() {
-                format!("`--only {name}`: the file has no sub-assemblies (`include`)")
-            } else {
-                let near = units::suggest(name, names.iter().copied())
-                    .map(|s| format!("; did you mean `{s}`?"))
-                    .unwrap_or_default();
-                format!(
-                    "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
-                    names
-                        .iter()
-                        .map(|n| format!("`{n}`"))
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                )
-            });
-        }
         let mut index = Vec::with_capacity(keep.len());
         let mut next = 0;
         for k in &keep {
@@ -860,6 +879,9 @@ impl Ctx<'_> {
         let mass = match (&p.mass, density, shape.density_key()) {
             (None, None, _) if material.is_some() => {
                 let (si, _, span) = material.clone().expect("checked");
+                if is_thin_shell(shape, &dims) {
+                    return Err(self.thin_shell(span, s));
+                }
                 let m = si * shape.measure(&dims);
                 if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
                     return Err(self.err(span, "the material's density times the size gives a mass out of the range of f64"));
@@ -885,6 +907,9 @@ impl Ctx<'_> {
                     _ => Dim::LINEAR_DENSITY,
                 };
                 let rho = self.positive(d, dk, dim)?;
+                if is_thin_shell(shape, &dims) {
+                    return Err(self.thin_shell(d.span(), s));
+                }
                 let m = rho * shape.measure(&dims);
                 if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
                     let what = if m.is_finite() {
@@ -992,6 +1017,15 @@ impl Ctx<'_> {
         Ok((part, real))
     }
 
+    /// A density (at `span`) on a thin shell, which has no volume.
+    fn thin_shell(&self, span: Range<usize>, shape: &str) -> Diagnostic {
+        self.err(
+            span,
+            format!("this {shape} is a thin shell (`inner_radius` = `radius`): it has no volume for a density to fill"),
+        )
+        .help("give its `mass`")
+    }
+
     /// A part's `material`: its density made the shape's (per volume; times
     /// `thickness` for a plate, disk or triangle; times `area` or the area
     /// of `diameter` for a rod), in SI and in file units, with the span of
@@ -1029,8 +1063,12 @@ impl Ctx<'_> {
             Some(&(si, file)) => (si, file),
             None => match crate::materials::built_in(name.get_ref()) {
                 Some(m) => {
-                    let f = self.units.factor(Dim::DENSITY).value();
-                    (m.density, m.density / f)
+                    // kg/m³ to file units by the exact factor, as a unit
+                    // string is converted: one rounding, not two.
+                    let to_file = units::Factor::ONE
+                        .per(self.units.factor(Dim::DENSITY))
+                        .expect("density factors are small fractions");
+                    (m.density, to_file.apply(m.density))
                 }
                 None => {
                     let names: Vec<&str> = crate::materials::BUILT_IN
@@ -1069,7 +1107,12 @@ impl Ctx<'_> {
                 )
             }
             Shape::Rod => match (&p.area, &p.diameter) {
-                (Some(a), _) => factor(
+                (Some(a), Some(_)) => {
+                    return Err(self
+                        .err(a.span(), "`area` conflicts with `diameter`: give one to turn the material's density into a mass")
+                        .help("`diameter` (a round rod) also feeds the idealisation report; `area` is any section"));
+                }
+                (Some(a), None) => factor(
                     self.positive(a, "area", Dim::AREA)?,
                     self.file_quantity(a, "area", Dim::AREA)?,
                 ),
@@ -1180,6 +1223,12 @@ impl Ctx<'_> {
         } else {
             0.0
         };
+        if !(area * 4.0).is_finite() || !longest.is_finite() {
+            return Err(self.err(
+                raw.span(),
+                "this triangle is too large for f64: its area overflows",
+            ));
+        }
         if !(longest > 0.0 && area > COLLINEAR_TOLERANCE * longest * longest) {
             return Err(self
                 .err(
@@ -1219,6 +1268,18 @@ impl Ctx<'_> {
             *row = [v.x, v.y, v.z];
         }
         let big = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
+        if m.iter()
+            .flatten()
+            .any(|x| *x != 0.0 && x.abs() < f64::MIN_POSITIVE)
+        {
+            return Err(self
+                .err(raw.span(), "`inertia` has an entry too small for f64 (below 2.2e-308 in SI): too few digits to compute with")
+                .help("give it in smaller units, e.g. \"1.2e-7 kg*mm^2\""));
+        }
+        // Its second moment must fit in f64 (the eigen check forms it).
+        if !(big * 4.0).is_finite() {
+            return Err(self.err(raw.span(), "`inertia` overflows the range of f64"));
+        }
         for (i, j) in [(0, 1), (0, 2), (1, 2)] {
             if !((m[i][j] - m[j][i]).abs() <= SYMMETRY_TOLERANCE * big) {
                 return Err(self
@@ -1530,6 +1591,11 @@ pub(super) fn present_keys(p: &RawPart) -> include::Present<'static> {
     let mut keys: include::Present<'static> = key_spans(p).to_vec();
     keys.push(("shape", p.shape.as_ref().map(Spanned::span)));
     keys
+}
+
+/// A cylinder, disk or sphere whose inner radius is its radius.
+fn is_thin_shell(shape: Shape, dims: &[f64]) -> bool {
+    matches!(shape, Shape::Cylinder | Shape::Disk | Shape::Sphere) && dims[1] == dims[0]
 }
 
 /// The earliest present key of a set, with its span.

@@ -252,9 +252,12 @@ fn cut_outs_leave_a_body(
         1 => (format!("the cut-out {}", cut[0]), "removes"),
         _ => (format!("the cut-outs {}", cut.join(", ")), "remove"),
     };
-    if !(mass > 0.0) {
+    // Relative to the masses that cancel: what is left of equal and
+    // opposite masses is rounding, not a body.
+    let gross: f64 = model.parts.iter().map(|p| p.mass.abs()).sum();
+    if !(mass > NEGATIVE_MOMENT_RTOL * gross) {
         return Err(SummaryError::NotPhysical(format!(
-            "the total mass is {mass:.4e} kg: {them} {verb} all of the material and more"
+            "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {them} {verb} all of the material"
         )));
     }
     let c = body.second_moment.map(|r| r.map(|x| x.f64()));

@@ -434,3 +434,15 @@ fn materials_lists_the_built_in_table_and_a_files_own() {
     assert_eq!(find("steel").expect("overridden")["density"], 7900.0);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn an_include_in_standard_input_is_an_error_not_a_guess() {
+    let out = massprop_stdin(&["report", "-"], "[[part]]\ninclude = \"motor.toml\"\n");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("<stdin>:2:11") && err.contains("standard input"),
+        "{err}"
+    );
+}

@@ -1253,3 +1253,73 @@ fn an_included_sub_assembly_is_its_parts_moved_turned_and_converted() {
     assert!(model.only("nothing").is_err());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn copies_of_a_sub_assembly_get_distinct_names_and_only_takes_paths() {
+    // A car with a front and a rear axle, each with two unnamed wheels.
+    let wheel = "name = \"wheel\"\n[[part]]\nname = \"hub\"\nshape = \"disk\"\nmass = 2\nradius = 0.3\ncenter = [0, 0, 0]\n";
+    let axle = "[[part]]\ninclude = \"wheel.toml\"\norigin = [0, 0.8, 0]\n\
+                [[part]]\ninclude = \"wheel.toml\"\norigin = [0, -0.8, 0]\n";
+    let car = "[[part]]\nname = \"front\"\ninclude = \"axle.toml\"\norigin = [1.2, 0, 0]\n\
+               [[part]]\nname = \"rear\"\ninclude = \"axle.toml\"\norigin = [-1.2, 0, 0]\n";
+    let dir = scratch(
+        "car",
+        &[
+            ("wheel.toml", wheel),
+            ("axle.toml", axle),
+            ("car.toml", car),
+        ],
+    );
+    let s = summary_of_file(&dir.join("car.toml"));
+    let paths: Vec<String> = s.assemblies.iter().map(|a| a.path.join(" / ")).collect();
+    assert_eq!(
+        paths,
+        [
+            "front",
+            "front / wheel",
+            "front / wheel #2",
+            "rear",
+            "rear / wheel",
+            "rear / wheel #2"
+        ]
+    );
+    let source = massprop::read_source(dir.join("car.toml").to_str().unwrap()).unwrap();
+    let model = Model::parse(&source).unwrap();
+    let mut m = model.clone();
+    let err = m.only("wheel").unwrap_err();
+    assert!(err.contains("ambiguous"), "{err}");
+    let mut m = model.clone();
+    m.only("rear / wheel #2").unwrap();
+    assert_eq!(m.parts.len(), 1);
+    assert_eq!(m.parts[0].center, Vector3::new(-1.2, -0.8, 0.0));
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn an_included_part_must_fit_the_including_files_units() {
+    // Two tiny spheres in um and mg are fine there, subnormal in km and t.
+    let small = "units = { length = \"um\", mass = \"mg\" }\n\
+                 [[part]]\nshape = \"sphere\"\nmass = 1e-285\nradius = 1\ncenter = [0, 0, 0]\n";
+    let big = "units = { length = \"km\", mass = \"t\" }\n[[part]]\ninclude = \"small.toml\"\n";
+    let dir = scratch("units-range", &[("small.toml", small), ("big.toml", big)]);
+    let source = massprop::read_source(dir.join("big.toml").to_str().unwrap()).unwrap();
+    let err = Model::parse(&source).unwrap_err().to_string();
+    assert!(
+        err.contains("big.toml:3:11") && err.contains("underflow"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_built_in_material_converts_like_its_density_written_with_units() {
+    // One exact conversion either way: the same f64 mass in ft and lb.
+    let part = |m: &str| {
+        format!(
+            "units = {{ length = \"ft\", mass = \"lb\" }}\n[[part]]\nshape = \"box\"\n{m}\nsize = [3, 7, 11]\ncenter = [0, 0, 0]\n"
+        )
+    };
+    let a = summary(&part("material = \"steel\""));
+    let b = summary(&part("density = \"7850 kg/m^3\""));
+    assert_eq!(a.mass, b.mass);
+}
