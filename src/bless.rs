@@ -232,27 +232,6 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
     doc.insert("expect", Item::Table(t));
 }
 
-/// Replace `path` by `text` through a temporary file in the same directory
-/// and a rename, so an interrupted run never leaves half a file.
 fn write_atomically(path: &str, text: &str) -> Result<(), Diagnostic> {
-    let target = std::path::Path::new(path);
-    let dir = target
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.massprop-bless.{}", std::process::id()));
-    let fail =
-        |e: std::io::Error| Diagnostic::file(path, format!("cannot write the blessed file: {e}"));
-    std::fs::write(&tmp, text).map_err(fail)?;
-    if let Ok(meta) = std::fs::metadata(target) {
-        let _ = std::fs::set_permissions(&tmp, meta.permissions());
-    }
-    std::fs::rename(&tmp, target).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
+    crate::write_atomically(path, text, "the blessed file")
 }

@@ -48,6 +48,12 @@ pub struct CheckArgs {
     #[arg(value_name = "PATH", required = true)]
     pub paths: Vec<String>,
 
+    /// Write the output to FILE instead of standard output, atomically
+    /// (through a temporary file and a rename): a failed or interrupted run
+    /// leaves FILE as it was.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<String>,
+
     /// Write the computed values into each file's `[expect]` entries first,
     /// keeping tolerances (adding defaults where missing), bounds, comments
     /// and formatting; files that cannot be parsed are left untouched.
@@ -78,6 +84,12 @@ pub struct DiffArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
+
+    /// Write the output to FILE instead of standard output, atomically
+    /// (through a temporary file and a rename): a failed or interrupted run
+    /// leaves FILE as it was.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<String>,
 
     /// Relative tolerance: a value counts as changed when it moves by more
     /// than this fraction of its scale.
@@ -114,6 +126,12 @@ pub struct ReportArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
+
+    /// Write the output to FILE instead of standard output, atomically
+    /// (through a temporary file and a rename): a failed or interrupted run
+    /// leaves FILE as it was.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<String>,
 
     /// Sign convention of products of inertia in the output.
     #[arg(long, value_enum, default_value_t)]

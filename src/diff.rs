@@ -322,7 +322,8 @@ fn part_diff(old: &[Part], new: &[Part], length: f64, tol: f64) -> PartDiff {
     diff
 }
 
-/// Beyond the tolerance: mass relative to the old part's mass; centroid by
+/// Beyond the tolerance: mass relative to the old part's mass (its size, for
+/// a cut-out's negative mass); centroid by
 /// the distance moved, relative to the body's length scale; second moment
 /// (∫ρρᵀ dm about the centroid) by the norm of its change, relative to the
 /// old part's (the new one's if the old is zero, as for a point mass).
@@ -332,7 +333,8 @@ fn part_changes(o: &Part, n: &Part, length: f64, tol: f64) -> Vec<&'static str> 
         what.push("shape");
     }
     // `!(x <= limit)` also catches a NaN or infinite ratio as a change.
-    if !((n.mass - o.mass).abs() <= tol * o.mass) {
+    // |m|: a cut-out's mass is negative.
+    if !((n.mass - o.mass).abs() <= tol * o.mass.abs()) {
         what.push("mass");
     }
     let moved = norm((n.center - o.center).as_slice());

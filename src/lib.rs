@@ -33,14 +33,44 @@ pub struct Output {
     pub status: u8,
 }
 
-/// Read a part file, or standard input for `-`.
+/// The largest part file read, in bytes: a 100,000-part file of 17-digit
+/// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this
+/// allows ~1.7 million parts in ~8 GB.
+pub const MAX_FILE_BYTES: u64 = 512 << 20;
+
+/// Read a part file, or standard input for `-`, refusing files over
+/// `MAX_FILE_BYTES` and anything but a regular file.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
+    let too_big = |what: &str| {
+        Diagnostic::file(
+            if path == "-" { "<stdin>" } else { path },
+            format!(
+                "{what} is larger than the limit of {} MiB for a part file",
+                MAX_FILE_BYTES >> 20
+            ),
+        )
+    };
     if path == "-" {
         let mut text = String::new();
         std::io::stdin()
+            .take(MAX_FILE_BYTES + 1)
             .read_to_string(&mut text)
             .map_err(|e| Diagnostic::file("<stdin>", format!("cannot read standard input: {e}")))?;
+        if text.len() as u64 > MAX_FILE_BYTES {
+            return Err(too_big("standard input"));
+        }
         return Ok(Source::new("<stdin>", text));
+    }
+    let meta = std::fs::metadata(path)
+        .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
+    if !meta.is_file() {
+        return Err(Diagnostic::file(
+            path,
+            "cannot read file: not a regular file (a directory?)",
+        ));
+    }
+    if meta.len() > MAX_FILE_BYTES {
+        return Err(too_big("the file"));
     }
     let text = std::fs::read_to_string(path)
         .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
@@ -49,12 +79,51 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
 
 /// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
 pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
-    match &cli.command {
-        Command::Report(args) => report(args),
-        Command::Check(args) => check::run(args),
-        Command::Diff(args) => diff::run(args),
-        Command::Materials(args) => materials::run(args),
+    let (out, file) = match &cli.command {
+        Command::Report(args) => (report(args)?, &args.output),
+        Command::Check(args) => (check::run(args)?, &args.output),
+        Command::Diff(args) => (diff::run(args)?, &args.output),
+        Command::Materials(args) => return materials::run(args),
+    };
+    match file {
+        // `-o FILE`: the whole result or nothing, never half a file.
+        Some(path) => {
+            write_atomically(path, &out.stdout, "the output file")?;
+            Ok(Output {
+                stdout: String::new(),
+                ..out
+            })
+        }
+        None => Ok(out),
     }
+}
+
+/// Replace `path` by `text` through a temporary file in the same directory
+/// and a rename, so an interrupted or failed run never leaves half a file
+/// (`what` names it in the error).
+pub(crate) fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
+    let target = std::path::Path::new(path);
+    let dir = target
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let name = target
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.massprop.{}", std::process::id()));
+    let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
+    if let Err(e) = std::fs::write(&tmp, text) {
+        let _ = std::fs::remove_file(&tmp);
+        return Err(fail(e));
+    }
+    if let Ok(meta) = std::fs::metadata(target) {
+        let _ = std::fs::set_permissions(&tmp, meta.permissions());
+    }
+    std::fs::rename(&tmp, target).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        fail(e)
+    })
 }
 
 fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {

@@ -21,6 +21,9 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
+/// Includes may nest this deep.
+pub const MAX_INCLUDE_DEPTH: usize = 32;
+
 /// The files being read: the chain of includes (for cycles) and each file
 /// parsed once, however many times it is included.
 #[derive(Default)]
@@ -165,6 +168,36 @@ impl Ctx<'_> {
             .help("the path is relative to the including file")
         };
         let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
+        let meta = std::fs::metadata(&canonical).map_err(unreadable)?;
+        if meta.len() > crate::MAX_FILE_BYTES {
+            return Err(self.err(
+                inc.span(),
+                format!(
+                    "the included `{shown_name}` is larger than the limit of {} MiB",
+                    crate::MAX_FILE_BYTES >> 20
+                ),
+            ));
+        }
+        if !meta.is_file() {
+            return Err(self
+                .err(
+                    inc.span(),
+                    format!("the included `{shown_name}` is not a regular file"),
+                )
+                .help("`include` names a part file"));
+        }
+        if files.stack.len() >= MAX_INCLUDE_DEPTH {
+            let chain: Vec<&str> = files.stack.iter().map(|(_, n)| n.as_str()).collect();
+            return Err(self
+                .err(
+                    inc.span(),
+                    format!(
+                        "includes nest deeper than {MAX_INCLUDE_DEPTH} files: {} → {shown_name}",
+                        chain.join(" → ")
+                    ),
+                )
+                .help("a deeper tree is almost certainly a mistake; flatten it"));
+        }
         if let Some(at) = files.stack.iter().position(|(c, _)| *c == canonical) {
             let chain: Vec<&str> = files.stack[at..].iter().map(|(_, n)| n.as_str()).collect();
             return Err(self
@@ -245,6 +278,15 @@ impl Ctx<'_> {
                 solid: rs.solid,
                 size: rs.size * frame.length,
             });
+        }
+        if parts.len() + child.parts.len() > super::MAX_PARTS {
+            return Err(self.err(
+                inc.span(),
+                format!(
+                    "this include takes the body past {} parts, the limit",
+                    super::MAX_PARTS
+                ),
+            ));
         }
         for part in child.parts {
             let mut placed = frame.place(part);

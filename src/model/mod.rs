@@ -20,6 +20,10 @@ use serde::Serialize;
 use std::ops::Range;
 use toml::Spanned;
 
+/// The most parts a body may have, included ones counted: ~1 KB of memory
+/// each while reading.
+pub const MAX_PARTS: usize = 2_000_000;
+
 /// A triangle's area must exceed this fraction of its longest edge squared.
 pub const COLLINEAR_TOLERANCE: f64 = 1e-9;
 
@@ -233,6 +237,15 @@ impl Model {
                     .help("add at least one `[[part]]` table with a `shape`"));
             }
         };
+        if raw_parts.len() > MAX_PARTS {
+            return Err(ctx.err(
+                0..0,
+                format!(
+                    "the file has {} parts; the limit is {MAX_PARTS}",
+                    raw_parts.len()
+                ),
+            ));
+        }
         let mut parts = Vec::with_capacity(raw_parts.len());
         let mut real_sizes = Vec::new();
         for (i, p) in raw_parts.iter().enumerate() {

@@ -446,3 +446,62 @@ fn an_include_in_standard_input_is_an_error_not_a_guess() {
         "{err}"
     );
 }
+
+#[test]
+fn output_file_is_written_whole_or_not_at_all() {
+    let dir = std::env::temp_dir().join(format!("massprop-output-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out_path = dir.join("report.json");
+    let out = massprop(&[
+        "report",
+        "shapes/bent-plate.toml",
+        "--format",
+        "json",
+        "-o",
+        out_path.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(out.stdout.is_empty(), "nothing on stdout with -o");
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(&out_path).unwrap()).unwrap();
+    assert!(v["mass"].as_f64().is_some());
+    // A failing run leaves the previous result untouched, and no temporary file.
+    let bad = dir.join("bad.toml");
+    std::fs::write(&bad, "[[part]]\nshape = \"box\"\n").unwrap();
+    let before = std::fs::read(&out_path).unwrap();
+    let out = massprop(&[
+        "report",
+        bad.to_str().unwrap(),
+        "-o",
+        out_path.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read(&out_path).unwrap(), before);
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    // check and diff take -o too.
+    let c = dir.join("check.json");
+    let out = massprop(&[
+        "check",
+        "shapes/",
+        "--format",
+        "json",
+        "-o",
+        c.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(std::fs::read_to_string(&c).unwrap().contains("\"files\""));
+    let d = dir.join("diff.txt");
+    let out = massprop(&[
+        "diff",
+        "shapes/flywheel.toml",
+        "shapes/flywheel.toml",
+        "-o",
+        d.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(!std::fs::read_to_string(&d).unwrap().is_empty());
+    std::fs::remove_dir_all(&dir).ok();
+}
