@@ -48,7 +48,7 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
     let staged = Source::new(source.name.clone(), doc.to_string());
     let model = Model::parse(&staged)?;
     let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
-        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+        .map_err(|e| e.diagnostic(&model, &model.analysis, &staged))?;
 
     let mut changed = added_tol;
     if doc.get("expect").is_none() {
@@ -63,6 +63,11 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
     }
     // The result must parse before it replaces the file.
     Model::parse(&Source::new(source.name.clone(), text.clone()))?;
+    let text = if source.bom {
+        format!("\u{feff}{text}")
+    } else {
+        text
+    };
     write_atomically(path, &text)?;
     Ok(changed)
 }

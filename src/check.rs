@@ -117,13 +117,22 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
                 Tol::Abs(t) => show(t),
                 Tol::Rel(r) => format!("{} %", fmt_num(r * 100.0)),
             };
-            let off = if value != 0.0 {
-                format!("{:+.3} %", (m - value) / value.abs() * 100.0)
+            // Relative when that is a readable finite number; absolute when
+            // the value is zero or so small (subnormal) that the ratio
+            // overflows; left out when even the difference overflows.
+            let percent = (m - value) / value.abs() * 100.0;
+            let off = if value != 0.0 && percent.is_finite() && percent.abs() < 1e6 {
+                format!(" (off by {percent:+.3} %)")
+            } else if value != 0.0 && percent.is_finite() {
+                format!(" (off by {percent:+.3e} %)")
+            } else if (m - value).is_finite() {
+                let sign = if m >= value { "+" } else { "" };
+                format!(" (off by {sign}{})", show(m - value))
             } else {
-                format!("{}{}", if m >= value { "+" } else { "" }, show(m - value))
+                String::new()
             };
             format!(
-                "{} {} is outside {} ± {tol_text} (off by {off})",
+                "{} {} is outside {} ± {tol_text}{off}",
                 c.name,
                 show(m),
                 show(value)
@@ -202,7 +211,7 @@ pub fn check_file(path: &str, precision: Precision) -> Result<FileResult, Diagno
     let source = crate::read_source(path)?;
     let model = Model::parse(&source)?;
     let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
-        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+        .map_err(|e| e.diagnostic(&model, &model.analysis, &source))?;
     let validity = validity(&summary);
     let checks: Vec<CheckResult> = model
         .expect

@@ -623,6 +623,7 @@ mod tests {
                             },
                             removed: false,
                         },
+                        span: 0..0,
                         assembly: Vec::new(),
                     });
                 }

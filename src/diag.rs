@@ -11,14 +11,24 @@ use unicode_width::{UnicodeWidthChar, UnicodeWidthStr};
 #[derive(Debug, Clone)]
 pub struct Source {
     pub name: String,
+    /// The text without a leading byte-order mark, so that columns count
+    /// what an editor shows.
     pub text: String,
+    /// Whether the file began with a byte-order mark (`--bless` keeps it).
+    pub bom: bool,
 }
 
 impl Source {
     pub fn new(name: impl Into<String>, text: impl Into<String>) -> Source {
+        let mut text = text.into();
+        let bom = text.starts_with('\u{feff}');
+        if bom {
+            text.drain(..'\u{feff}'.len_utf8());
+        }
         Source {
             name: name.into(),
-            text: text.into(),
+            text,
+            bom,
         }
     }
 
@@ -45,13 +55,13 @@ impl Source {
         let end = span.end.clamp(start, line_end.max(start));
         let end = floor_char_boundary(&self.text, end);
         // Carets count display columns, so wide characters line up.
-        let width = UnicodeWidthStr::width(&self.text[start..end]).max(1);
+        let width = UnicodeWidthStr::width(visible(&self.text[start..end]).as_str()).max(1);
         Diagnostic(Box::new(Inner {
             location: Some(format!("{}:{line}:{col}", self.name)),
             message: message.into(),
             snippet: Some(Snippet {
                 line,
-                text: line_text.to_string(),
+                text: visible(line_text),
                 col,
                 width,
                 label: None,
@@ -61,7 +71,26 @@ impl Source {
     }
 }
 
-fn floor_char_boundary(s: &str, mut i: usize) -> usize {
+/// The text with control characters (but tab) shown as their Unicode
+/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡, C1 as �), one character
+/// each, so a stray one neither vanishes nor moves the carets nor acts on
+/// the terminal.
+fn visible(text: &str) -> String {
+    text.chars()
+        .map(|c| match c {
+            '\t' => c,
+            '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
+            '\u{7f}' => '\u{2421}',
+            c if c.is_control() => '\u{fffd}',
+            c => c,
+        })
+        .collect()
+}
+
+/// The largest char boundary at or before `i` (clamped to the text): toml
+/// reports some error spans inside a multi-byte character.
+pub(crate) fn floor_char_boundary(s: &str, i: usize) -> usize {
+    let mut i = i.min(s.len());
     while i > 0 && !s.is_char_boundary(i) {
         i -= 1;
     }
@@ -218,6 +247,41 @@ mod tests {
         let d = s.error(semicolon..semicolon + 1, "bad").to_string();
         assert!(d.starts_with("f.toml:1:12:"), "{d}");
         assert!(d.contains(&format!("  | {}^\n", " ".repeat(13))), "{d}");
+    }
+
+    #[test]
+    fn control_characters_show_as_pictures_and_keep_the_carets_in_line() {
+        // DEL and ESC would vanish (or drive the terminal); each shows as
+        // one visible character, so `x` is still under its caret.
+        let text = "a = 1 # \u{7f}\u{1b}[2J x\n";
+        let s = Source::new("f.toml", text);
+        let x = text.find('x').unwrap();
+        let d = s.error(x..x + 1, "bad").to_string();
+        assert!(d.contains("1 | a = 1 # \u{2421}\u{241b}[2J x\n"), "{d}");
+        assert!(d.contains(&format!("  | {}^\n", " ".repeat(14))), "{d}");
+        assert!(!d.contains('\u{1b}') && !d.contains('\u{7f}'), "{d}");
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_not_a_column() {
+        let s = Source::new("f.toml", "\u{feff}mass = x\n");
+        assert!(s.bom);
+        assert_eq!(s.text, "mass = x\n");
+        assert_eq!(s.line_col(7), (1, 8));
+        assert!(!Source::new("f.toml", "mass = x").bom);
+    }
+
+    #[test]
+    fn spans_inside_a_character_snap_to_its_start() {
+        // toml has reported spans one byte into a BOM or an em dash.
+        let text = "a = 1 # \u{2014}\n";
+        let s = Source::new("f.toml", text);
+        let inside = text.find('\u{2014}').unwrap() + 1;
+        assert_eq!(s.line_col(inside), (1, 9));
+        let d = s.error(inside..inside + 1, "bad").to_string();
+        assert!(d.starts_with("f.toml:1:9:"), "{d}");
+        assert_eq!(floor_char_boundary(text, inside), inside - 1);
+        assert_eq!(floor_char_boundary(text, 1000), text.len());
     }
 
     #[test]

@@ -43,7 +43,7 @@ fn load(path: &str, precision: crate::compose::Precision) -> Result<Side, Diagno
             .help("give `omega` here; for a body starting from rest, `omega = [0, 0, 0]`"));
     }
     let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
-        .map_err(|e| Diagnostic::file(&source.name, e.to_string()))?;
+        .map_err(|e| e.diagnostic(&model, &model.analysis, &source))?;
     Ok(Side {
         source,
         model,

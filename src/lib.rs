@@ -142,14 +142,18 @@ fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
             })
             .transpose()
     };
+    // A flag's value has no place in the file: its span goes.
     if let Some(v) = flag(&args.about, "about", Dim::LENGTH)? {
         analysis.about = Some(v);
+        analysis.about_span = None;
     }
     if let Some(v) = flag(&args.omega, "omega", Dim::ANGULAR_VELOCITY)? {
         analysis.omega = Some(v);
+        analysis.omega_span = None;
     }
     if let Some(v) = flag(&args.alpha, "alpha", Dim::ANGULAR_ACCELERATION)? {
         analysis.alpha = Some(v);
+        analysis.alpha_span = None;
     }
     // α without ω: point at the file's `alpha` unless it came from the flag.
     if analysis.alpha.is_some() && analysis.omega.is_none() {
@@ -160,16 +164,8 @@ fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {
             _ => Diagnostic::plain("`--alpha` needs ω: give `--omega` or `[analysis].omega`"),
         });
     }
-    let flags_given = args.about.is_some() || args.omega.is_some() || args.alpha.is_some();
-    let summary =
-        report::summarize(&model, &analysis, args.products, args.precision).map_err(|e| {
-            let with = if flags_given {
-                " (with the values given on the command line)"
-            } else {
-                ""
-            };
-            Diagnostic::file(&source.name, format!("{e}{with}"))
-        })?;
+    let summary = report::summarize(&model, &analysis, args.products, args.precision)
+        .map_err(|e| e.diagnostic(&model, &analysis, &source))?;
     let stdout = match args.format {
         Format::Table => report::table::render(&summary, &source.name),
         Format::Json => report::json::render(&summary),

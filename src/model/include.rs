@@ -294,6 +294,7 @@ impl Ctx<'_> {
             // distinct names (in `diff`, `check` and the tables).
             placed.name = format!("{name} / {}", placed.name);
             placed.assembly.insert(0, name.clone());
+            placed.span = raw.span();
             // Representable in this file's units too (the composer works in
             // them): a sub-assembly in µm and mg can underflow in km and t.
             self.in_file_range(placed.shape, &placed.spec, &placed.name, inc.span())?;

@@ -107,6 +107,9 @@ pub struct Part {
     /// The sub-assemblies the part is in, outermost first (empty for a
     /// part of the file itself).
     pub assembly: Vec<String>,
+    /// Its `[[part]]` table in the file (for a part of a sub-assembly, the
+    /// table that includes it), to point at it when a sum overflows.
+    pub span: Range<usize>,
 }
 
 /// A part's numbers as the file gave them, in the file's units (a quantity
@@ -179,6 +182,10 @@ pub struct Analysis {
     pub alpha: Option<Vector3<f64>>,
     /// Where the file gave `alpha`, to point at it if ω is missing.
     pub alpha_span: Option<Range<usize>>,
+    /// Where the file gave `about` and `omega`, to point at them when a
+    /// result overflows.
+    pub about_span: Option<Range<usize>>,
+    pub omega_span: Option<Range<usize>>,
 }
 
 impl Model {
@@ -362,6 +369,10 @@ impl Model {
 /// type errors name the key that holds the offending value.
 fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     let span = e.span().unwrap_or(0..0);
+    // toml reports some spans inside a multi-byte character (after a BOM,
+    // a combining mark or an em dash in a comment): snap to boundaries.
+    let floor = |i| crate::diag::floor_char_boundary(&source.text, i);
+    let span = floor(span.start)..floor(span.end).max(floor(span.start));
     // serde's words for TOML's: a "map" is a table, a "sequence" an array.
     let msg = e
         .message()
@@ -404,17 +415,24 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         let key = source.text.get(span.clone()).unwrap_or("").trim();
         return source.error(span, format!("duplicate key `{key}`"));
     }
-    let key = key_at(&source.text, span.start).or_else(|| key_before(&source.text, span.start));
+    let at = span.start;
+    let key = key_at(&source.text, at).or_else(|| key_before(&source.text, at));
     let d = match (key.as_deref(), msg.strip_prefix("invalid type: ")) {
         (Some(k), Some(rest)) => source.error(span, format!("`{k}` has the wrong type: {rest}")),
         (Some(k), None) => source.error(span, format!("`{k}`: {msg}")),
-        (None, _) => source.error(span, msg),
+        (None, _) => source.error(span, msg.clone()),
     };
     if key.as_deref() == Some("part") {
-        d.help("write each part as a `[[part]]` table (two brackets)")
-    } else {
-        d
+        return d.help("write each part as a `[[part]]` table (two brackets)");
     }
+    if msg.contains("string values must be quoted")
+        && let (Some(k), Some(v)) = (key.as_deref(), quoted_value(&source.text, at))
+    {
+        return d.help(format!(
+            "a number with a unit is written as a string: `{k} = {v}`"
+        ));
+    }
+    d
 }
 
 /// The innermost key whose value contains byte `offset`, from a spanned
@@ -455,14 +473,56 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
 
 /// The key on the line of `offset`: the name before the last `=` (`mass =
 /// 1e400`), for syntax errors where no spanned parse is possible.
+/// None inside a comment: a bad character there belongs to no key.
 fn key_before(text: &str, offset: usize) -> Option<String> {
     let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
-    let before = text[line_start..offset].rsplit_once('=')?.0.trim_end();
+    let line = &text[line_start..offset];
+    if comment_start(line).is_some() {
+        return None;
+    }
+    let before = line.rsplit_once('=')?.0.trim_end();
     let start = before
-        .rfind(|c: char| !(c.is_alphanumeric() || c == '_' || c == '-'))
-        .map_or(0, |i| i + 1);
+        .char_indices()
+        .rfind(|&(_, c)| !(c.is_alphanumeric() || c == '_' || c == '-'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
     let key = &before[start..];
     (!key.is_empty()).then(|| key.to_string())
+}
+
+/// Where a comment begins on a line of TOML: the first `#` outside a
+/// string. (Multi-line strings are not followed; this only serves messages.)
+fn comment_start(line: &str) -> Option<usize> {
+    let mut quote = None;
+    let mut escaped = false;
+    for (i, c) in line.char_indices() {
+        match (quote, c) {
+            (Some('"'), '\\') if !escaped => {
+                escaped = true;
+                continue;
+            }
+            (Some(q), c) if c == q && !escaped => quote = None,
+            (None, '"' | '\'') => quote = Some(c),
+            (None, '#') => return Some(i),
+            _ => {}
+        }
+        escaped = false;
+    }
+    None
+}
+
+/// For "string values must be quoted" (`mass = 1 kg`): the line's value
+/// from `offset`, without its comment, quoted as a quantity.
+fn quoted_value(text: &str, offset: usize) -> Option<String> {
+    let line_end = text[offset..].find('\n').map_or(text.len(), |i| offset + i);
+    let rest = &text[offset..line_end];
+    let value = rest[..comment_start(rest).unwrap_or(rest.len())].trim();
+    let plain = !value.is_empty()
+        && value
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_ascii_digit() || c == '-' || c == '+' || c == '.')
+        && !value.contains(['"', '\'', '[', ']', '{', '}', ',', '=']);
+    plain.then(|| format!("\"{value}\""))
 }
 
 /// What the conversion step needs to read values: the source (for spans)
@@ -957,10 +1017,12 @@ impl Ctx<'_> {
             .filter(|x| **x >= f64::MIN_POSITIVE)
             .count();
         if !local_second_moment.iter().all(|x| x.is_finite()) {
-            return Err(self.err(
-                raw.span(),
-                format!("the second moments of `{name}` overflow the range of f64"),
-            ));
+            return Err(self
+                .err(
+                    raw.span(),
+                    format!("the second moments of `{name}` overflow the range of f64"),
+                )
+                .help("are its sizes or mass in the wrong units?"));
         }
         if nonzero < expected_nonzero {
             return Err(self.err(
@@ -1026,6 +1088,7 @@ impl Ctx<'_> {
             },
             spec,
             assembly: Vec::new(),
+            span: raw.span(),
         };
         Ok((part, real))
     }
@@ -1546,6 +1609,8 @@ impl Ctx<'_> {
             omega,
             alpha,
             alpha_span: r.alpha.as_ref().map(Spanned::span),
+            about_span: r.about.as_ref().map(Spanned::span),
+            omega_span: r.omega.as_ref().map(Spanned::span),
         })
     }
 }
@@ -1718,4 +1783,51 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
         out[i] = v;
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_key_before_an_error_is_found_on_its_line_but_not_in_a_comment() {
+        let text = "x = 1\nlength = 3 mm\n";
+        assert_eq!(
+            key_before(text, text.find("3 mm").unwrap()).as_deref(),
+            Some("length")
+        );
+        // A multi-byte character before the key (a BOM left in, say).
+        let text = "\u{2014}mass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find('1').unwrap()).as_deref(),
+            Some("mass")
+        );
+        let text = "shape = \"box\" # a = b \u{7f}";
+        assert_eq!(key_before(text, text.find('\u{7f}').unwrap()), None);
+        // `#` inside a string is not a comment.
+        let text = "name = \"#1\"\nmass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find("1 kg").unwrap()).as_deref(),
+            Some("mass")
+        );
+    }
+
+    #[test]
+    fn comments_start_at_the_first_hash_outside_strings() {
+        assert_eq!(comment_start("a = 1 # x"), Some(6));
+        assert_eq!(comment_start("a = \"#\" # x"), Some(8));
+        assert_eq!(comment_start("a = '#\\' # x"), Some(9));
+        assert_eq!(comment_start("a = \"\\\"#\" # x"), Some(10));
+        assert_eq!(comment_start("a = 1"), None);
+    }
+
+    #[test]
+    fn a_bare_quantity_is_suggested_quoted() {
+        assert_eq!(
+            quoted_value("mass = 1 kg # m", 7).as_deref(),
+            Some("\"1 kg\"")
+        );
+        assert_eq!(quoted_value("mass = [1 kg]", 7), None);
+        assert_eq!(quoted_value("mass = kg", 7), None);
+    }
 }

@@ -214,10 +214,22 @@ impl Ctx<'_> {
             "quaternion" => {
                 let q = r.quaternion.as_ref().expect("form is quaternion");
                 let v = self.floats(q, "quaternion", 4)?;
-                let norm = v.iter().map(|x| x * x).sum::<f64>().sqrt();
+                // Scaled, so that a huge component gives its length, not inf.
+                let big = v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
+                let norm = if big > 0.0 {
+                    big * v.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
+                } else {
+                    0.0
+                };
                 if !((norm - 1.0).abs() <= QUATERNION_TOLERANCE) {
+                    // Beyond f64 only when a component is near its largest.
+                    let length = if norm.is_finite() {
+                        format!("{norm}")
+                    } else {
+                        format!("above {big:e}")
+                    };
                     return Err(self
-                        .err(q.span(), format!("`quaternion` must have unit length, got length {norm}"))
+                        .err(q.span(), format!("`quaternion` must have unit length, got length {length}"))
                         .help(format!("only rounding is tolerated (|‖q‖ − 1| ≤ {QUATERNION_TOLERANCE:e}); the order is [w, x, y, z]")));
                 }
                 Ok(Orientation::Quaternion([v[0], v[1], v[2], v[3]]))
@@ -256,6 +268,15 @@ impl Ctx<'_> {
                     }
                 }
                 let defect = (out.transpose() * out - Matrix3::identity()).amax();
+                if !defect.is_finite() {
+                    return Err(self.err(
+                        m.span(),
+                        format!(
+                            "`matrix` is not a rotation: it has an entry {:e}, where a rotation's lie between −1 and 1",
+                            out.iter().copied().fold(0.0_f64, |a, x| if x.abs() > a.abs() { x } else { a })
+                        ),
+                    ));
+                }
                 if !(defect <= MATRIX_TOLERANCE) {
                     return Err(self
                         .err(m.span(), format!("`matrix` is not orthonormal (RᵀR differs from the identity by {defect:.3e})"))

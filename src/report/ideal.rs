@@ -197,9 +197,10 @@ pub fn idealisation(
     let solid = principal(&all)?;
     let moments = solid.moments.map(|m| (m * f_inertia).f64());
     if !moments.iter().all(|x| x.is_finite()) {
-        return Err(SummaryError::NotFinite(
-            "principal moments with the parts made solid",
-        ));
+        return Err(SummaryError::NotFinite {
+            what: "principal moments with the parts made solid",
+            blame: super::Blame::Parts,
+        });
     }
     Ok(Some(Idealisation {
         principal_moments_solid: moments,

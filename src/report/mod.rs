@@ -7,6 +7,7 @@ pub mod json;
 pub mod table;
 
 use crate::compose::{self, Precision, Principal};
+use crate::diag::{Diagnostic, Source};
 use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
@@ -183,26 +184,136 @@ pub struct Summary {
 /// Why a summary could not be formed from valid parts.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SummaryError {
-    /// A result overflowed f64 (parts or offsets too large).
-    NotFinite(&'static str),
+    /// A result overflowed f64: every part is representable, but a sum,
+    /// the conversion to SI, or a product with `about`, ω or α is not.
+    NotFinite {
+        what: &'static str,
+        blame: Blame,
+    },
     NoConvergence,
     /// Cut-outs left a body that is not physical; the message names them.
     NotPhysical(String),
 }
 
+/// What a result that overflows is blamed on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Blame {
+    /// The parts: the one that contributes most is named.
+    Parts,
+    /// The reference point (`about`), through m·d².
+    About,
+    /// The angular velocity (H, T) or acceleration (M).
+    Omega,
+    Alpha,
+}
+
 impl std::fmt::Display for SummaryError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
-            SummaryError::NotFinite(what) => {
-                write!(
-                    f,
-                    "the {what} overflows the range of f64; are sizes, masses or offsets in the wrong units?"
-                )
+            SummaryError::NotFinite { what, .. } => {
+                write!(f, "the {what} overflows the range of f64")
             }
             SummaryError::NoConvergence => write!(f, "the principal-axis solver did not converge"),
             SummaryError::NotPhysical(why) => f.write_str(why),
         }
     }
+}
+
+const WRONG_UNITS: &str = "are sizes, masses or offsets in the wrong units?";
+
+impl SummaryError {
+    /// The error as a diagnostic at its cause in `source`: the `[[part]]`
+    /// that contributes most to a sum that overflows, or the `[analysis]`
+    /// key whose value makes a result overflow (or its flag, when the
+    /// command line gave it: `analysis` is what `summarize` was given).
+    pub fn diagnostic(&self, model: &Model, analysis: &Analysis, source: &Source) -> Diagnostic {
+        let message = self.to_string();
+        let SummaryError::NotFinite { what, blame } = *self else {
+            return Diagnostic::file(&source.name, message);
+        };
+        let at =
+            |span: &Option<std::ops::Range<usize>>, flag: &str, label: &str, help: &str| match span
+            {
+                Some(span) => source.error(span.clone(), &message).label(label).help(help),
+                None => Diagnostic::file(
+                    &source.name,
+                    format!("{message} with the `--{flag}` given on the command line"),
+                )
+                .help(help),
+            };
+        match blame {
+            Blame::Parts => match largest_contributor(model, what) {
+                Some(p) => source
+                    .error(p.span.clone(), &message)
+                    .label(format!("`{}` contributes the most", p.name))
+                    .help(WRONG_UNITS),
+                None => Diagnostic::file(&source.name, message).help(WRONG_UNITS),
+            },
+            Blame::About => at(
+                &analysis.about_span,
+                "about",
+                "this far from the centre of mass",
+                "m·d², d the distance from the centre of mass, exceeds the largest f64 in SI units; is `about` in the file's length unit?",
+            ),
+            Blame::Omega => at(
+                &analysis.omega_span,
+                "omega",
+                "too fast for this body",
+                "H = I·ω and T = ½ ωᵀIω exceed the largest f64 in SI units; is ω in rad/s (or written as \"N rpm\")?",
+            ),
+            Blame::Alpha => at(
+                &analysis.alpha_span,
+                "alpha",
+                "with this `omega`, too large for this body",
+                "M = I·α + ω × I·ω exceeds the largest f64 in SI units; are α and ω in the intended units?",
+            ),
+        }
+    }
+}
+
+/// The part whose contribution to `what` is largest: its |mass| for the
+/// total mass, |m|·|c| for the centre of mass, and for moments of inertia
+/// the larger of |m|·d² (d from the centre of mass) and the trace of its
+/// own tensor, compared by logarithm so that none of them overflows.
+fn largest_contributor<'m>(model: &'m Model, what: &str) -> Option<&'m crate::model::Part> {
+    let parts = &model.parts;
+    let ln_norm = |v: Vector3<f64>| {
+        // ln |v| without overflow: scale by the largest component.
+        let big = v.amax();
+        if big == 0.0 {
+            f64::NEG_INFINITY
+        } else {
+            big.ln() + (v / big).norm().ln()
+        }
+    };
+    let total: f64 = parts.iter().map(|p| p.mass).sum();
+    let com = if total.is_finite() && total != 0.0 {
+        parts
+            .iter()
+            .map(|p| p.center * (p.mass / total))
+            .sum::<Vector3<f64>>()
+    } else {
+        Vector3::zeros()
+    };
+    let score = |p: &crate::model::Part| {
+        let ln_m = p.mass.abs().ln();
+        match what {
+            "total mass" => ln_m,
+            "centre of mass" => ln_m + ln_norm(p.center),
+            _ => {
+                // (c − com) / 2 cannot overflow; add ln 2 back.
+                let d = ln_norm(p.center / 2.0 - com / 2.0) + std::f64::consts::LN_2;
+                let own = p.own_second_moment.trace().abs().ln();
+                (ln_m + 2.0 * d).max(own)
+            }
+        }
+    };
+    parts
+        .iter()
+        .map(|p| (score(p), p))
+        .filter(|(s, _)| !s.is_nan())
+        .max_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, p)| p)
 }
 
 fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
@@ -217,11 +328,11 @@ fn arr(v: &Vector3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
 }
 
-fn finite(v: &[f64], what: &'static str) -> Result<(), SummaryError> {
+fn finite(v: &[f64], what: &'static str, blame: Blame) -> Result<(), SummaryError> {
     if v.iter().all(|x| x.is_finite()) {
         Ok(())
     } else {
-        Err(SummaryError::NotFinite(what))
+        Err(SummaryError::NotFinite { what, blame })
     }
 }
 
@@ -294,34 +405,50 @@ pub fn summarize(
     let f_inertia = u.factor(Dim::INERTIA).dd();
     let mass_dd = body.mass * f_mass;
     let mass = mass_dd.f64();
-    finite(&[mass], "total mass")?;
+    finite(&[mass], "total mass", Blame::Parts)?;
     cut_outs_leave_a_body(model, &body, mass)?;
     let com = body.center_of_mass.map(|c| (c * f_length).f64());
-    finite(&com, "centre of mass")?;
+    finite(&com, "centre of mass", Blame::Parts)?;
     let about: [DD; 3] = match analysis.about {
         Some(a) => [a.x, a.y, a.z].map(DD::of),
         None => body.center_of_mass,
     };
     let reference = about.map(|c| (c * f_length).f64());
-    finite(&reference, "reference point")?;
+    finite(&reference, "reference point", Blame::About)?;
     let c_ref = body.second_moment_about(&about);
     let si = |c: &M3<DD>| inertia_of_rows(c).map(|r| r.map(|x| x * f_inertia));
     let (i_com, i_ref) = (si(&body.second_moment), si(&c_ref));
     let round = |m: &M3<DD>| m.map(|r| r.map(DD::f64));
     let (i_com_f, i_ref_f) = (round(&i_com), round(&i_ref));
-    finite(i_com_f.as_flattened(), "inertia about the centre of mass")?;
-    finite(i_ref_f.as_flattened(), "inertia about the reference point")?;
+    finite(
+        i_com_f.as_flattened(),
+        "inertia about the centre of mass",
+        Blame::Parts,
+    )?;
+    finite(
+        i_ref_f.as_flattened(),
+        "inertia about the reference point",
+        Blame::About,
+    )?;
     let p_com =
         compose::principal(&body.second_moment, precision).ok_or(SummaryError::NoConvergence)?;
     let p_ref = compose::principal(&c_ref, precision).ok_or(SummaryError::NoConvergence)?;
     let moments = |p: &Principal| p.moments.map(|m| (m * f_inertia).f64());
     let (m_com, m_ref) = (moments(&p_com), moments(&p_ref));
-    finite(&m_com, "principal moments about the centre of mass")?;
-    finite(&m_ref, "principal moments about the reference point")?;
+    finite(
+        &m_com,
+        "principal moments about the centre of mass",
+        Blame::Parts,
+    )?;
+    finite(
+        &m_ref,
+        "principal moments about the reference point",
+        Blame::About,
+    )?;
     let radii = p_com
         .moments
         .map(|i| ((i * f_inertia) / mass_dd).sqrt().f64());
-    finite(&radii, "radii of gyration")?;
+    finite(&radii, "radii of gyration", Blame::Parts)?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
     let shares = ideal::shares(&model.parts, &body, &p_com);
     let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;
@@ -350,11 +477,11 @@ pub fn summarize(
         });
     let h = h.map(|h| h.map(DD::f64));
     if let Some(h) = &h {
-        finite(h, "angular momentum")?;
+        finite(h, "angular momentum", Blame::Omega)?;
     }
-    finite(&[t.unwrap_or(0.0)], "kinetic energy")?;
+    finite(&[t.unwrap_or(0.0)], "kinetic energy", Blame::Omega)?;
     if let Some(m) = &m {
-        finite(m, "Euler moment")?;
+        finite(m, "Euler moment", Blame::Alpha)?;
     }
 
     let mut summary = Summary {
@@ -401,4 +528,68 @@ pub fn summarize(
     };
     summary.assemblies = assemblies(&summary.parts, summary.mass);
     Ok(summary)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn blamed(text: &str) -> String {
+        let source = Source::new("f.toml", text);
+        let model = Model::parse(&source).unwrap();
+        let e = summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            Precision::Standard,
+        )
+        .unwrap_err();
+        e.diagnostic(&model, &model.analysis, &source).to_string()
+    }
+
+    const POINT: &str = "[[part]]\nshape = \"point\"\n";
+
+    #[test]
+    fn an_overflowing_sum_names_the_largest_contributor_wherever_it_is() {
+        // Masses: the largest is named, first or last.
+        let a = format!("{POINT}name = \"a\"\nmass = 1e308\ncenter = [0, 0, 0]\n");
+        let b = format!("{POINT}name = \"b\"\nmass = 1.7e308\ncenter = [0, 0, 0]\n");
+        for text in [format!("{a}{b}"), format!("{b}{a}")] {
+            let d = blamed(&text);
+            assert!(d.contains("the total mass overflows"), "{d}");
+            assert!(d.contains("`b` contributes the most"), "{d}");
+        }
+        // Moments: m·d² about the centre of mass, not about the origin, and
+        // not the mass alone: `far` is lighter but farther out.
+        let near = format!("{POINT}name = \"near\"\nmass = 2e100\ncenter = [-1e104, 0, 0]\n");
+        let far = format!("{POINT}name = \"far\"\nmass = 1e100\ncenter = [1e104, 0, 0]\n");
+        for text in [format!("{near}{far}"), format!("{far}{near}")] {
+            let d = blamed(&text);
+            assert!(
+                d.contains("inertia about the centre of mass overflows"),
+                "{d}"
+            );
+            assert!(d.contains("`far` contributes the most"), "{d}");
+        }
+    }
+
+    #[test]
+    fn an_overflow_through_the_analysis_points_at_its_key() {
+        let body = format!("{POINT}mass = 1e100\ncenter = [0, 0, 0]\n");
+        let d = blamed(&format!("{body}[analysis]\nabout = [1e105, 0, 0]\n"));
+        assert!(
+            d.starts_with("f.toml:6:9: error: the inertia about the reference point"),
+            "{d}"
+        );
+        let boxed = "[[part]]\nshape = \"box\"\nmass = 1e100\nsize = [1e50, 1e50, 1e50]\ncenter = [0, 0, 0]\n";
+        let d = blamed(&format!("{boxed}[analysis]\nomega = [1e300, 0, 0]\n"));
+        assert!(
+            d.starts_with("f.toml:7:9: error: the angular momentum"),
+            "{d}"
+        );
+        let d = blamed(&format!(
+            "{boxed}[analysis]\nomega = [0, 0, 1]\nalpha = [1e300, 0, 0]\n"
+        ));
+        assert!(d.starts_with("f.toml:8:9: error: the Euler moment"), "{d}");
+    }
 }

@@ -5,6 +5,7 @@ mod check;
 mod cli;
 mod common;
 mod diff;
+mod hostile;
 mod invariants;
 mod physics;
 mod reference;

@@ -533,7 +533,7 @@ fn overrides_replace_the_file_analysis() {
             about: Some(Vector3::new(1.0, 0.0, 0.0)),
             omega: Some(w),
             alpha: None,
-            alpha_span: None,
+            ..Analysis::default()
         },
         Products::Tensor,
         Precision::Standard,

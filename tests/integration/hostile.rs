@@ -1,0 +1,1017 @@
+//! Hostile input (issue 6): generated and mutated part files, run in
+//! process through `report` (JSON in both precision modes, and the table)
+//! and `check`. Whatever the file, massprop must not panic or hang, and
+//! must either print finite results (status 0) or give a diagnostic
+//! (status 2) that names the file.
+//!
+//! - generated files: every shape, with keys and values drawn from lists
+//!   rich in extremes (0, -0.0, subnormals, 1e308, f64::MAX, nan, inf,
+//!   integers beyond i64), unit strings good and bad, rotations of every
+//!   form with extreme angles, cut-outs, materials, `[analysis]`;
+//! - mutations of the example files in shapes/: lines deleted or
+//!   duplicated, numbers replaced by extremes, truncation at any byte,
+//!   TOML punctuation and unicode inserted.
+//!
+//! Deterministic (fixed ChaCha seed, no persistence), as in invariants.rs.
+
+use clap::Parser;
+use massprop::cli::Cli;
+use massprop::{Output, diag::Diagnostic};
+use proptest::prelude::*;
+use proptest::sample::Index;
+use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
+use serde_json::Value;
+use std::cell::RefCell;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::time::Duration;
+
+/// Generated files: each runs `report` three times and `check` once.
+const GENERATED: u32 = 600;
+/// Mutated example files.
+const MUTATED: u32 = 400;
+/// Longer than any sane run of one command in a debug build: a hang.
+const HANG: Duration = Duration::from_secs(20);
+
+// ---------------------------------------------------------------------------
+// Running massprop in process
+
+/// A scratch directory, unique to this process and call, removed on drop.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Scratch {
+        static N: AtomicUsize = AtomicUsize::new(0);
+        let dir = std::env::temp_dir().join(format!(
+            "massprop-hostile-{name}-{}-{}",
+            std::process::id(),
+            N.fetch_add(1, Ordering::Relaxed)
+        ));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// `massprop ARGS` in process, on its own thread: Err(message) if it panics
+/// or takes longer than `HANG`.
+fn run(args: &[&str]) -> Result<Result<Output, Diagnostic>, String> {
+    let mut argv = vec!["massprop".to_string()];
+    argv.extend(args.iter().map(|a| a.to_string()));
+    let cli = Cli::try_parse_from(&argv).map_err(|e| format!("bad command line: {e}"))?;
+    let (tx, rx) = mpsc::channel();
+    std::thread::spawn(move || {
+        let result = std::panic::catch_unwind(|| massprop::run(&cli));
+        let _ = tx.send(result);
+    });
+    match rx.recv_timeout(HANG) {
+        Ok(Ok(result)) => Ok(result),
+        Ok(Err(payload)) => {
+            let text = payload
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| payload.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "(non-string payload)".to_string());
+            Err(format!("massprop {} panicked: {text}", args.join(" ")))
+        }
+        Err(_) => Err(format!(
+            "massprop {} did not finish within {HANG:?}",
+            args.join(" ")
+        )),
+    }
+}
+
+/// Words that mean a non-finite number was printed. toml's own messages
+/// name the keywords in backquotes (`invalid float, expected \`inf\``):
+/// those are words, not results.
+fn non_finite_word(text: &str) -> Option<String> {
+    let text = &text.replace("`inf`", "").replace("`nan`", "");
+    if text.contains('∞') {
+        return Some("∞".to_string());
+    }
+    text.split(|c: char| !c.is_ascii_alphanumeric())
+        .find(|w| {
+            let w = w.to_ascii_lowercase();
+            w == "inf" || w == "infinity" || w == "nan"
+        })
+        .map(|w| w.to_string())
+}
+
+/// Keys whose value (or whose array's entries) may be `null`: docs/json.md.
+const MAY_BE_NULL: &[&str] = &["name", "principal_moment_share", "relative_change"];
+
+/// Every number in `v` is finite and nothing is `null` except where
+/// docs/json.md allows it; `key` is the key `v` (or its array) sits under.
+fn walk(v: &Value, key: &str, path: &str) -> Result<(), String> {
+    match v {
+        Value::Null if MAY_BE_NULL.contains(&key) => Ok(()),
+        Value::Null => Err(format!("null at {path}")),
+        Value::Number(n) => match n.as_f64() {
+            Some(x) if x.is_finite() => Ok(()),
+            _ => Err(format!("non-finite number {n} at {path}")),
+        },
+        Value::Array(items) => items
+            .iter()
+            .enumerate()
+            .try_for_each(|(i, item)| walk(item, key, &format!("{path}[{i}]"))),
+        Value::Object(map) => map
+            .iter()
+            .try_for_each(|(k, item)| walk(item, k, &format!("{path}.{k}"))),
+        Value::Bool(_) | Value::String(_) => Ok(()),
+    }
+}
+
+/// A number, or an array (of arrays) of numbers and nothing else.
+fn numeric(v: &Value) -> bool {
+    match v {
+        Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+        Value::Array(items) => !items.is_empty() && items.iter().all(numeric),
+        _ => false,
+    }
+}
+
+fn check_json(stdout: &str) -> Result<(), String> {
+    let json: Value =
+        serde_json::from_str(stdout).map_err(|e| format!("output is not JSON ({e}): {stdout}"))?;
+    for key in ["mass", "center_of_mass", "inertia_com", "principal_moments"] {
+        if !json.get(key).is_some_and(numeric) {
+            return Err(format!(
+                "`{key}` is not finite numbers: {:?}",
+                json.get(key)
+            ));
+        }
+    }
+    walk(&json, "", "$")
+}
+
+/// One file through `report` (JSON in both modes, table) and `check`.
+/// Err describes the first broken promise; Ok(true) if some report
+/// computed the body. `check` quotes the lines it rejects, so its output is
+/// searched for "inf" and "nan" only when the file has none.
+fn hostile(path: &str) -> Result<bool, String> {
+    let input = std::fs::read(path).unwrap();
+    let quiet_input = non_finite_word(&String::from_utf8_lossy(&input)).is_none();
+    let name = Path::new(path).file_name().unwrap().to_str().unwrap();
+    let diagnostic = |d: &Diagnostic, what: &str| {
+        let text = d.to_string();
+        if text.trim().is_empty() {
+            Err(format!("{what}: empty diagnostic"))
+        } else if !text.contains(name) {
+            Err(format!("{what}: diagnostic does not name the file: {text}"))
+        } else {
+            Ok(())
+        }
+    };
+    let mut outcomes = Vec::new();
+    for mode in ["standard", "extended"] {
+        let args = ["report", "--format", "json", "--precision", mode, path];
+        let what = format!("report --format json --precision {mode}");
+        match run(&args)? {
+            Ok(out) => {
+                if out.status != 0 {
+                    return Err(format!("{what}: Ok with status {}", out.status));
+                }
+                check_json(&out.stdout).map_err(|e| format!("{what}: {e}"))?;
+                outcomes.push(true);
+            }
+            Err(d) => {
+                if std::env::var_os("HOSTILE_DEBUG").is_some() && mode == "standard" {
+                    eprintln!("DIAG {}", d.message());
+                }
+                diagnostic(&d, &what)?;
+                outcomes.push(false);
+            }
+        }
+    }
+    match run(&["report", "--format", "table", path])? {
+        Ok(out) => {
+            if out.status != 0 {
+                return Err(format!("report (table): Ok with status {}", out.status));
+            }
+            if let Some(w) = non_finite_word(&out.stdout) {
+                return Err(format!("report (table) prints {w:?}:\n{}", out.stdout));
+            }
+            if !outcomes[0] {
+                return Err("the table reports a file the JSON rejects".to_string());
+            }
+        }
+        Err(d) => diagnostic(&d, "report (table)")?,
+    }
+    match run(&["check", path])? {
+        Ok(out) => {
+            if out.status > 2 {
+                return Err(format!("check: status {}", out.status));
+            }
+            for text in [&out.stdout, &out.stderr]
+                .into_iter()
+                .filter(|_| quiet_input)
+            {
+                if let Some(w) = non_finite_word(text) {
+                    return Err(format!("check prints {w:?}:\n{text}"));
+                }
+            }
+        }
+        Err(d) => {
+            if d.to_string().trim().is_empty() {
+                return Err("check: empty diagnostic".to_string());
+            }
+        }
+    }
+    Ok(outcomes.contains(&true))
+}
+
+/// Write `text` as `dir/file` and run it through `hostile`.
+fn hostile_file(dir: &Path, file: &str, text: &[u8]) -> Result<bool, String> {
+    let path = dir.join(file);
+    std::fs::write(&path, text).unwrap();
+    hostile(path.to_str().unwrap())
+}
+
+/// Run `cases` inputs from `strategy` through `body`, deterministically;
+/// fail with the smallest failing input proptest finds.
+///
+/// For a deeper local search: `HOSTILE_CASES=N` runs N cases instead, and
+/// `HOSTILE_KEEP_GOING=1` reports every failing case (unshrunk) at the end
+/// instead of stopping at the first.
+fn property<S: Strategy>(
+    name: &str,
+    cases: u32,
+    strategy: S,
+    body: impl Fn(&S::Value) -> Result<bool, String>,
+) where
+    S::Value: std::fmt::Debug,
+{
+    let cases = std::env::var("HOSTILE_CASES")
+        .ok()
+        .and_then(|n| n.parse().ok())
+        .unwrap_or(cases);
+    let keep_going = std::env::var_os("HOSTILE_KEEP_GOING").is_some();
+    let mut config = Config::with_cases(cases);
+    config.failure_persistence = None;
+    config.rng_algorithm = RngAlgorithm::ChaCha;
+    // Shrinking re-runs four commands per step: keep it bounded.
+    config.max_shrink_iters = 512;
+    let mut runner = TestRunner::new_with_rng(
+        config.clone(),
+        TestRng::deterministic_rng(RngAlgorithm::ChaCha),
+    );
+    let failures = RefCell::new(Vec::new());
+    let computed = RefCell::new(0usize);
+    let result = runner.run(&strategy, |input| match body(&input) {
+        Ok(ok) => {
+            *computed.borrow_mut() += usize::from(ok);
+            Ok(())
+        }
+        Err(e) if keep_going => {
+            failures.borrow_mut().push(e);
+            Ok(())
+        }
+        Err(e) => Err(TestCaseError::fail(e)),
+    });
+    if let Err(e) = result {
+        panic!("property {name}: {e}");
+    }
+    // How deep the inputs reach: a file rejected by every command tests
+    // only the parser.
+    println!(
+        "property {name}: {cases} cases, {} computed by some report",
+        computed.into_inner()
+    );
+    let failures = failures.into_inner();
+    if !failures.is_empty() {
+        panic!(
+            "property {name}: {} of {cases} cases failed:\n\n{}",
+            failures.len(),
+            failures.join("\n\n")
+        );
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Generated part files
+
+/// Ordinary numbers: most parts should get far enough to be computed.
+const NICE: &[&str] = &[
+    "1", "2", "3", "0.5", "2.5", "10", "0.001", "100", "7", "0.25",
+];
+
+/// Numbers that break naive arithmetic or parsing.
+const EXTREME: &[&str] = &[
+    "0",
+    "-0.0",
+    "1e-320",
+    "5e-324",
+    "1e-308",
+    "2.2250738585072014e-308",
+    "1e-300",
+    "1e-160",
+    "1e154",
+    "1e300",
+    "1e308",
+    "1.7976931348623157e308",
+    "-1.7976931348623157e308",
+    "-1",
+    "-1e-300",
+    "nan",
+    "-nan",
+    "inf",
+    "-inf",
+    "9223372036854775807",
+    "-9223372036854775808",
+    "99999999999999999999",
+    "1e-16",
+    "1.0000000000000002",
+    "0x10",
+    "1_000",
+];
+
+/// Extremes that are still valid sizes and masses: they reach the
+/// arithmetic instead of stopping at validation.
+const FINITE_EXTREME: &[&str] = &[
+    "1e-320",
+    "5e-324",
+    "1e-308",
+    "2.2250738585072014e-308",
+    "1e-300",
+    "1e-160",
+    "1e-100",
+    "1e-16",
+    "1.0000000000000002",
+    "1e16",
+    "1e100",
+    "1e154",
+    "1e160",
+    "1e300",
+    "1e308",
+    "1.7976931348623157e308",
+    "9223372036854775807",
+];
+
+/// Quantities with their own units, good and bad.
+const UNITS: &[&str] = &[
+    "\"3 mm\"",
+    "\"1e300 km\"",
+    "\"1e-300 um\"",
+    "\"7.85 g/cm^3\"",
+    "\"1e308 t/um^3\"",
+    "\"1e-320 kg/m^3\"",
+    "\"70 kg/m^2\"",
+    "\"40 g/m\"",
+    "\"2 lb\"",
+    "\"1e308 lb\"",
+    "\"5 rpm\"",
+    "\"1e300 rpm\"",
+    "\"90 deg/s^2\"",
+    "\"1.8e-4 kg*m^2\"",
+    "\"1e300 kg*km^2\"",
+    "\"3 furlongs\"",
+    "\"3 kg\"",
+    "\"inf m\"",
+    "\"nan mm\"",
+    "\"\"",
+    "\"mm\"",
+    "\"5 m²\"",
+    "\"5 m^-1\"",
+    "\"5 m/s/s\"",
+    "\"1 m^99999999999\"",
+    "\"1e309 m\"",
+    "\"2 µm\"",
+    "\"1 in\"",
+    "\"1 ft\"",
+];
+
+/// A scalar: mostly ordinary, often a valid extreme, sometimes invalid or
+/// with units, rarely not a number at all. A file has some twenty values:
+/// about half the files have no invalid one and reach the arithmetic.
+fn value(l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        60 => prop::sample::select(NICE).prop_map(str::to_string),
+        8 => prop::sample::select(FINITE_EXTREME).prop_map(str::to_string),
+        2 * l => prop::sample::select(EXTREME).prop_map(str::to_string),
+        2 * l => prop::sample::select(UNITS).prop_map(str::to_string),
+        l => prop::sample::select(vec!["true", "[]", "{}", "\"x\"", "[1, 2, 3]"])
+            .prop_map(str::to_string),
+    ]
+    .boxed()
+}
+
+/// A value, or a coordinate only a position may have.
+fn coordinate(l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        5 => value(l),
+        1 => prop::sample::select(vec!["-2", "-0.5", "0", "-0.0", "-1e300", "-1e-320"])
+            .prop_map(str::to_string),
+    ]
+    .boxed()
+}
+
+/// `[a, b, …]` of `n` values, sometimes one too few or too many.
+fn vector(n: usize, l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        60 => prop::collection::vec(coordinate(l), n..=n),
+        l => prop::collection::vec(value(l), n.saturating_sub(1)..=n + 1),
+    ]
+    .prop_map(|v| format!("[{}]", v.join(", ")))
+    .boxed()
+}
+
+/// `[[..], [..], …]`: `rows` vectors of 3.
+fn matrix(rows: usize, l: u32) -> BoxedStrategy<String> {
+    prop::collection::vec(vector(3, l), rows..=rows)
+        .prop_map(|v| format!("[{}]", v.join(", ")))
+        .boxed()
+}
+
+/// Angles in degrees, extreme ones included.
+fn angle(l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        2 => prop::sample::select(vec![
+            "0", "90", "-90", "180", "270", "360", "45", "30", "720", "1e-300", "1e300",
+            "1e308", "1e16", "1e-320", "nan", "inf", "-0.0",
+        ])
+        .prop_map(str::to_string),
+        1 => value(l),
+    ]
+    .boxed()
+}
+
+/// `rotation = {…}` in every form.
+fn rotation(l: u32) -> BoxedStrategy<String> {
+    let seq = prop::sample::select(vec![
+        "zyx", "xyz", "zxz", "xyx", "yzy", "zyz", "xzy", "zyx", "xyz", "xxy", "abc", "zy", "",
+    ]);
+    let angles = prop::collection::vec(angle(l), 3..=3).prop_map(|v| v.join(", "));
+    prop_oneof![
+        l => vector(4, l).prop_map(|q| format!("{{ quaternion = {q} }}")),
+        3 => prop::sample::select(vec![
+            "[1, 0, 0, 0]",
+            "[0.5, 0.5, 0.5, 0.5]",
+            "[0.7071067811865476, 0, 0.7071067811865476, 0]",
+            "[1e-300, 1, 0, 0]",
+            "[1.0000001, 0, 0, 0]",
+            "[0, 0, 0, 0]",
+        ])
+        .prop_map(|q| format!("{{ quaternion = {q} }}")),
+        3 => (vector(3, l), angle(l)).prop_map(|(a, d)| format!("{{ axis = {a}, degrees = {d} }}")),
+        3 => (
+            prop::sample::select(vec![
+                "[0, 0, 1]",
+                "[1, 0, 0]",
+                "[1, 1, 1]",
+                "[1e-300, 0, 0]"
+            ]),
+            angle(l)
+        )
+            .prop_map(|(a, d)| format!("{{ axis = {a}, degrees = {d} }}")),
+        l => matrix(3, l).prop_map(|m| format!("{{ matrix = {m} }}")),
+        3 => prop::sample::select(vec![
+            "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]",
+            "[[0, -1, 0], [1, 0, 0], [0, 0, 1]]",
+            "[[-1, 0, 0], [0, 1, 0], [0, 0, 1]]",
+            "[[1, 0, 0], [0, 1, 0], [0, 0, 1.0000000001]]",
+        ])
+        .prop_map(|m| format!("{{ matrix = {m} }}")),
+        3 => (seq.clone(), angles.clone())
+            .prop_map(|(s, a)| format!("{{ intrinsic = \"{s}\", degrees = [{a}] }}")),
+        3 => (seq, angles).prop_map(|(s, a)| format!("{{ extrinsic = \"{s}\", degrees = [{a}] }}")),
+        l => Just("{ axis = [0, 0, 1], degrees = 90, quaternion = [1, 0, 0, 0] }".to_string()),
+        l => Just("{}".to_string()),
+    ]
+    .boxed()
+}
+
+const SHAPES: &[&str] = &[
+    "box", "plate", "rod", "cylinder", "disk", "sphere", "triangle", "point", "inertia",
+];
+
+/// Three perpendicular edges, scaled by `s`.
+fn edges3(s: &str) -> String {
+    format!("[[{s}, 0, 0], [0, 0, {s}], [0, -2, 0]]")
+}
+
+/// A valid inertia tensor, or not.
+const TENSORS: &[&str] = &[
+    "[[2, 0, 0], [0, 2, 0], [0, 0, 1]]",
+    "[[180, 0, 0], [0, 180, 0], [0, 0, 90]]",
+    "[[2, 1, 0], [1, 2, 0], [0, 0, 1]]",
+    "[[1e308, 0, 0], [0, 1e308, 0], [0, 0, 1e308]]",
+    "[[1.7976931348623157e308, 0, 0], [0, 1.7976931348623157e308, 0], [0, 0, 1e308]]",
+    "[[1e-320, 0, 0], [0, 1e-320, 0], [0, 0, 1e-320]]",
+    "[[1, 0, 0], [0, 1, 0], [0, 0, 2]]",
+    "[[0, 0, 0], [0, 0, 0], [0, 0, 0]]",
+    "[[1, 0, 0], [0, 1, 0], [0, 0, 3]]",
+    "[[1, 2, 3], [4, 5, 6], [7, 8, 9]]",
+    "[[\"1.8e-4 kg*m^2\", 0, 0], [0, \"1.8e-4 kg*m^2\", 0], [0, 0, \"1e300 kg*km^2\"]]",
+];
+
+/// Keys that belong to no shape, or to another one.
+const EXTRA_KEYS: &[&str] = &[
+    "mass",
+    "density",
+    "areal_density",
+    "linear_density",
+    "size",
+    "radius",
+    "inner_radius",
+    "length",
+    "center",
+    "corner",
+    "edges",
+    "from",
+    "to",
+    "vertices",
+    "inertia",
+    "thickness",
+    "diameter",
+    "area",
+    "material",
+    "remove",
+    "products",
+    "include",
+    "origin",
+    "colour",
+];
+
+/// One `[[part]]`: shape-appropriate keys with hostile values, plus noise.
+fn part(l: u32) -> BoxedStrategy<String> {
+    let sizes = (
+        vector(3, l),
+        vector(2, l),
+        value(l),
+        prop::option::weighted(0.4, (0..3u8, value(l))),
+        value(l),
+    );
+    let placement = (
+        vector(3, l),
+        prop::option::weighted(0.6, rotation(l)),
+        vector(3, l),
+        prop_oneof![3 => value(l).prop_map(|s| edges3(&s)), l => matrix(3, l)],
+        prop_oneof![
+            3 => (value(l), value(l)).prop_map(|(a, b)| format!("[[{a}, 0, 0], [0, 0, {b}]]")),
+            l => matrix(2, l),
+        ],
+        (vector(3, l), vector(3, l)),
+        prop_oneof![
+            3 => prop::sample::select(TENSORS).prop_map(str::to_string),
+            l => matrix(3, l),
+        ],
+        any::<bool>(),
+    );
+    let amount = (
+        0..9usize,
+        value(l),
+        value(l),
+        prop::sample::select(vec![
+            "steel",
+            "aluminium-6061",
+            "steel",
+            "lead",
+            "balsa",
+            "foam",
+            "unobtainium",
+            "",
+        ]),
+        prop::option::of(value(l)),
+        prop::option::weighted(0.2, value(l)),
+    );
+    let noise = (
+        prop_oneof![
+            100 => Just(None),
+            3 * l => (prop::sample::select(EXTRA_KEYS), value(l)).prop_map(Some),
+        ],
+        prop::option::weighted(0.2, any::<bool>()),
+        prop::option::weighted(
+            0.3,
+            prop_oneof![
+                4 => prop::sample::select(vec!["\"positive\"", "\"tensor\""]),
+                l => Just("1"),
+            ],
+        ),
+        prop::option::weighted(
+            0.7,
+            prop::sample::select(vec!["a", "bracket", "hole +x", "é", "x\\ty", "", "part 1"]),
+        ),
+    );
+    (
+        prop_oneof![40 => prop::sample::select(SHAPES), l => Just("cone")],
+        sizes,
+        placement,
+        amount,
+        noise,
+    )
+        .prop_map(|(shape, sizes, placement, amount, noise)| {
+            let (size3, size2, radius, inner, length) = sizes;
+            let (center, rot, corner, edges3, edges2, (from, to), tensor, by_edges) = placement;
+            let (how, mass, density, material, thickness, extra_thick) = amount;
+            let (extra, remove, products, name) = noise;
+            let mut lines = vec!["[[part]]".to_string()];
+            if let Some(n) = name {
+                lines.push(format!("name = \"{n}\""));
+            }
+            lines.push(format!("shape = \"{shape}\""));
+            let density_key = match shape {
+                "box" | "cylinder" | "sphere" => "density",
+                "plate" | "disk" | "triangle" => "areal_density",
+                "rod" => "linear_density",
+                _ => "mass",
+            };
+            // A material needs a thickness on flat shapes and an area or
+            // diameter on a rod; points and given inertias take a mass.
+            let flat = matches!(shape, "plate" | "disk" | "triangle");
+            let how = if matches!(shape, "point" | "inertia") && how >= 4 {
+                0
+            } else {
+                how
+            };
+            let mut thick = false;
+            match how {
+                0..=3 => lines.push(format!("mass = {mass}")),
+                4 | 5 => lines.push(format!("{density_key} = {density}")),
+                6 | 7 => {
+                    lines.push(format!("material = \"{material}\""));
+                    if let Some(t) = &thickness {
+                        if flat {
+                            lines.push(format!("thickness = {t}"));
+                            thick = true;
+                        } else if shape == "rod" {
+                            let key = if how == 6 { "area" } else { "diameter" };
+                            lines.push(format!("{key} = {t}"));
+                            thick = true;
+                        }
+                    }
+                }
+                _ => {}
+            }
+            let by_edges = by_edges && matches!(shape, "box" | "plate" | "rod");
+            match shape {
+                "box" | "plate" if by_edges => {
+                    lines.push(format!("corner = {corner}"));
+                    let e = if shape == "box" { &edges3 } else { &edges2 };
+                    lines.push(format!("edges = {e}"));
+                }
+                "rod" if by_edges => {
+                    lines.push(format!("from = {from}"));
+                    lines.push(format!("to = {to}"));
+                }
+                "triangle" => lines.push(format!("vertices = {tensor}")),
+                _ => {
+                    lines.push(format!("center = {center}"));
+                    if let Some(r) = rot.filter(|_| shape != "point") {
+                        lines.push(format!("rotation = {r}"));
+                    }
+                }
+            }
+            match shape {
+                "box" if !by_edges => lines.push(format!("size = {size3}")),
+                "plate" if !by_edges => lines.push(format!("size = {size2}")),
+                "rod" if !by_edges => lines.push(format!("length = {length}")),
+                "cylinder" | "disk" | "sphere" => {
+                    lines.push(format!("radius = {radius}"));
+                    match inner {
+                        Some((0, _)) => lines.push(format!("inner_radius = {radius}")),
+                        Some((1, _)) => lines.push("inner_radius = 0".to_string()),
+                        Some((_, r)) => lines.push(format!("inner_radius = {r}")),
+                        None => {}
+                    }
+                    if shape == "cylinder" {
+                        lines.push(format!("length = {length}"));
+                    }
+                }
+                "inertia" => lines.push(format!("inertia = {tensor}")),
+                _ => {}
+            }
+            match (shape, extra_thick) {
+                ("plate", Some(t)) if !thick => lines.push(format!("thickness = {t}")),
+                ("rod", Some(t)) if !thick => lines.push(format!("diameter = {t}")),
+                _ => {}
+            }
+            if let Some(r) = remove.filter(|_| shape != "point") {
+                lines.push(format!("remove = {r}"));
+            }
+            if let Some(p) = products.filter(|_| shape == "inertia") {
+                lines.push(format!("products = {p}"));
+            }
+            if let Some((k, v)) = extra {
+                lines.push(format!("{k} = {v}"));
+            }
+            lines.join("\n")
+        })
+        .boxed()
+}
+
+/// `[analysis]` with extreme reference points and motions.
+fn analysis(l: u32) -> BoxedStrategy<String> {
+    let motion = || {
+        prop_oneof![
+            2 => vector(3, l),
+            1 => prop::sample::select(vec![
+                "[0, 0, \"1e300 rpm\"]",
+                "[0, 0, \"5 rpm\"]",
+                "[1e308, 1e308, 1e308]",
+                "[1e-320, 0, 0]",
+                "[0, 0, 0]",
+                "[1e154, 1e154, 1e154]",
+                "[0, 0, \"90 deg/s^2\"]",
+                "[\"3 mm\", 0, 0]",
+            ])
+            .prop_map(str::to_string),
+        ]
+    };
+    (
+        prop::option::of(vector(3, l)),
+        prop::option::weighted(0.7, motion()),
+        prop::option::of(motion()),
+    )
+        .prop_map(|(about, omega, alpha)| {
+            let mut lines = vec!["[analysis]".to_string()];
+            for (k, v) in [("about", about), ("omega", omega), ("alpha", alpha)] {
+                if let Some(v) = v {
+                    lines.push(format!("{k} = {v}"));
+                }
+            }
+            lines.join("\n")
+        })
+        .boxed()
+}
+
+/// A whole part file.
+fn part_file_at(l: u32) -> BoxedStrategy<String> {
+    let units = (
+        prop_oneof![
+            20 => prop::sample::select(vec!["m", "mm", "um", "µm", "km", "in", "ft"]),
+            l => Just("furlong"),
+        ],
+        prop_oneof![
+            20 => prop::sample::select(vec!["kg", "g", "mg", "t", "lb"]),
+            l => Just("stone"),
+        ],
+    );
+    (
+        prop::option::of(prop::sample::select(vec!["", "body", "a b", "ünïcode"])),
+        prop::option::weighted(0.5, units),
+        prop::option::weighted(0.15, value(l)),
+        prop::collection::vec(part(l), 1..=4),
+        prop::option::weighted(0.5, analysis(l)),
+        prop::option::weighted(0.1, (value(l), prop::sample::select(vec!["min", "max"]))),
+        Just(l),
+    )
+        .prop_map(|(name, units, material, parts, analysis, expect, l)| {
+            let mut out = vec![format!("# hostility {l}")];
+            if let Some(n) = name {
+                out.push(format!("name = \"{n}\""));
+            }
+            if let Some((len, m)) = units {
+                out.push(format!("units = {{ length = \"{len}\", mass = \"{m}\" }}"));
+            }
+            if let Some(d) = material {
+                out.push(format!("\n[materials]\nfoam = {{ density = {d} }}"));
+            }
+            for p in parts {
+                out.push(format!("\n{p}"));
+            }
+            if let Some(a) = analysis {
+                out.push(format!("\n{a}"));
+            }
+            if let Some((v, bound)) = expect {
+                out.push(format!("\n[expect]\nmass = {{ {bound} = {v} }}"));
+            }
+            out.join("\n") + "\n"
+        })
+        .boxed()
+}
+
+/// A part file at hostility 0 (valid keys, extreme but valid numbers),
+/// 1 or 2 (ever more invalid values, units, keys and shapes).
+fn part_file() -> BoxedStrategy<String> {
+    (0..3u32).prop_flat_map(part_file_at).boxed()
+}
+
+#[test]
+fn generated_part_files_give_finite_results_or_diagnostics() {
+    let dir = Scratch::new("generated");
+    property("generated", GENERATED, part_file(), |text| {
+        hostile_file(&dir.0, "generated.toml", text.as_bytes())
+            .map_err(|e| format!("{e}\n--- input ---\n{text}"))
+    });
+}
+
+// ---------------------------------------------------------------------------
+// Mutated example files
+
+const EXAMPLES: &[&str] = &[
+    "bent-plate.toml",
+    "cubesat-6u.toml",
+    "flywheel.toml",
+    "motor-bracket.toml",
+    "quadcopter.toml",
+    "robot-arm.toml",
+    "welded-bracket.toml",
+];
+
+/// What `Insert` puts in: TOML punctuation, line structure, unicode.
+const SNIPPETS: &[&str] = &[
+    "[",
+    "]",
+    "=",
+    "\"",
+    "{",
+    "}",
+    ",",
+    "\n",
+    "#",
+    "'",
+    "\"\"\"",
+    "[[part]]\n",
+    "[analysis]\n",
+    "\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+    "é",
+    "²",
+    "µ",
+    "\u{0}",
+    "\t",
+    "\r",
+    "\u{feff}",
+    "\u{202e}",
+    "🦀",
+    "-",
+    "e",
+    "e999",
+    ".",
+    "0",
+    "\\",
+    "remove = true\n",
+    "inf",
+    "nan",
+];
+
+#[derive(Clone, Debug)]
+enum Mutation {
+    DeleteLine(Index),
+    DuplicateLine(Index),
+    ReplaceNumber(Index, String),
+    Truncate(Index),
+    Insert(Index, &'static str),
+}
+
+fn mutation() -> impl Strategy<Value = Mutation> {
+    prop_oneof![
+        1 => any::<Index>().prop_map(Mutation::DeleteLine),
+        1 => any::<Index>().prop_map(Mutation::DuplicateLine),
+        4 => (any::<Index>(), prop::sample::select(EXTREME)).prop_map(|(i, v)| Mutation::ReplaceNumber(i, v.to_string())),
+        1 => (any::<Index>(), prop::sample::select(UNITS)).prop_map(|(i, v)| Mutation::ReplaceNumber(i, v.to_string())),
+        1 => any::<Index>().prop_map(Mutation::Truncate),
+        2 => (any::<Index>(), prop::sample::select(SNIPPETS)).prop_map(|(i, s)| Mutation::Insert(i, s)),
+    ]
+}
+
+/// Byte ranges of the numbers in `text` (outside comments): maximal runs
+/// of digits, `.`, `e`, `+`, `-`, `_` that start with a digit, `-` or `.`
+/// and contain a digit, not part of a word.
+fn numbers(text: &str) -> Vec<std::ops::Range<usize>> {
+    let mut out = Vec::new();
+    for (start, line) in line_starts(text) {
+        let code = line.split('#').next().unwrap();
+        let b = code.as_bytes();
+        let mut i = 0;
+        while i < b.len() {
+            let prev_word = i > 0 && (b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_');
+            if !prev_word && (b[i].is_ascii_digit() || b[i] == b'-' || b[i] == b'.') {
+                let mut j = i + 1;
+                while j < b.len() && (b[j].is_ascii_digit() || b"._eE+-".contains(&b[j])) {
+                    j += 1;
+                }
+                let word_after = j < b.len() && b[j].is_ascii_alphabetic();
+                if !word_after && b[i..j].iter().any(u8::is_ascii_digit) {
+                    out.push(start + i..start + j);
+                }
+                i = j;
+            } else {
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+/// Each line (with its newline) and the byte offset it starts at.
+fn line_starts(text: &str) -> Vec<(usize, &str)> {
+    let mut at = 0;
+    text.split_inclusive('\n')
+        .map(|l| {
+            let s = at;
+            at += l.len();
+            (s, l)
+        })
+        .collect()
+}
+
+fn apply(text: &[u8], m: &Mutation) -> Vec<u8> {
+    let Ok(s) = std::str::from_utf8(text) else {
+        // An earlier truncation split a character: only cut further.
+        return match m {
+            Mutation::Truncate(i) => text[..i.index(text.len() + 1)].to_vec(),
+            _ => text.to_vec(),
+        };
+    };
+    let lines = line_starts(s);
+    let mut out = text.to_vec();
+    match m {
+        Mutation::DeleteLine(i) | Mutation::DuplicateLine(i) if !lines.is_empty() => {
+            let (start, line) = lines[i.index(lines.len())];
+            let range = start..start + line.len();
+            let mut line = line.to_string();
+            if !line.ends_with('\n') {
+                line.push('\n');
+            }
+            let with = if matches!(m, Mutation::DeleteLine(_)) {
+                String::new()
+            } else {
+                line.repeat(2)
+            };
+            out.splice(range, with.into_bytes());
+        }
+        Mutation::ReplaceNumber(i, v) => {
+            let nums = numbers(s);
+            if !nums.is_empty() {
+                out.splice(nums[i.index(nums.len())].clone(), v.bytes());
+            }
+        }
+        Mutation::Truncate(i) => out.truncate(i.index(out.len() + 1)),
+        Mutation::Insert(i, snippet) => {
+            let mut at = i.index(s.len() + 1);
+            while !s.is_char_boundary(at) {
+                at -= 1;
+            }
+            out.splice(at..at, snippet.bytes());
+        }
+        _ => {}
+    }
+    out
+}
+
+#[test]
+fn mutated_example_files_give_finite_results_or_diagnostics() {
+    let shapes = Path::new(env!("CARGO_MANIFEST_DIR")).join("shapes");
+    let dir = Scratch::new("mutated");
+    // robot-arm.toml includes motor-bracket.toml by a relative path: the
+    // mutants sit next to an intact copy.
+    std::fs::copy(
+        shapes.join("motor-bracket.toml"),
+        dir.0.join("motor-bracket.toml"),
+    )
+    .unwrap();
+    let originals: Vec<Vec<u8>> = EXAMPLES
+        .iter()
+        .map(|f| std::fs::read(shapes.join(f)).unwrap())
+        .collect();
+    let strategy = (0..EXAMPLES.len(), prop::collection::vec(mutation(), 1..=3));
+    property("mutated", MUTATED, strategy, |(which, mutations)| {
+        let text = mutations
+            .iter()
+            .fold(originals[*which].clone(), |t, m| apply(&t, m));
+        hostile_file(&dir.0, "mutant.toml", &text).map_err(|e| {
+            format!(
+                "{e}\n--- {} with {mutations:?} ---\n{}",
+                EXAMPLES[*which],
+                String::from_utf8_lossy(&text)
+            )
+        })
+    });
+}
+
+/// The example files themselves pass: the harness accepts good files.
+#[test]
+fn example_files_pass_the_hostile_checks() {
+    let shapes = Path::new(env!("CARGO_MANIFEST_DIR")).join("shapes");
+    for f in EXAMPLES {
+        let path = shapes.join(f);
+        hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{f}: {e}"));
+        let out = run(&["report", "--format", "json", path.to_str().unwrap()])
+            .unwrap()
+            .unwrap_or_else(|d| panic!("{f}: {d}"));
+        assert_eq!(out.status, 0, "{f}");
+    }
+}
+
+/// Every input the fuzzer (fuzz/, docs/fuzzing.md) has crashed massprop
+/// with stays a test: each file in fuzz/regressions/.
+#[test]
+fn fuzz_regressions_give_finite_results_or_diagnostics() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    files.sort();
+    assert!(files.len() >= 4, "fuzz/regressions/ lost its files");
+    for path in files {
+        hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    }
+}
