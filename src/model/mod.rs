@@ -1017,10 +1017,20 @@ impl Ctx<'_> {
             .filter(|x| **x >= f64::MIN_POSITIVE)
             .count();
         if !local_second_moment.iter().all(|x| x.is_finite()) {
+            // At the key that gives the size (m·a² overflows through it).
+            let size = keys.iter().find_map(|(k, span)| {
+                matches!(*k, "size" | "length" | "radius" | "edges" | "from" | "to")
+                    .then(|| span.clone().map(|s| (*k, s)))
+                    .flatten()
+            });
+            let (span, what) = match size {
+                Some((k, span)) => (span, format!("`{k}`: ")),
+                None => (raw.span(), String::new()),
+            };
             return Err(self
                 .err(
-                    raw.span(),
-                    format!("the second moments of `{name}` overflow the range of f64"),
+                    span,
+                    format!("{what}the second moments of `{name}` overflow the range of f64"),
                 )
                 .help("are its sizes or mass in the wrong units?"));
         }
