@@ -104,8 +104,14 @@ fn non_finite_word(text: &str) -> Option<String> {
         .map(|w| w.to_string())
 }
 
-/// Keys whose value (or whose array's entries) may be `null`: docs/json.md.
-const MAY_BE_NULL: &[&str] = &["name", "principal_moment_share", "relative_change"];
+/// Keys whose value (or whose array's entries) may be `null`: docs/json.md
+/// and docs/diff.md (`rel_change`: a zero scale or an overflowing ratio).
+const MAY_BE_NULL: &[&str] = &[
+    "name",
+    "principal_moment_share",
+    "relative_change",
+    "rel_change",
+];
 
 /// Every number in `v` is finite and nothing is `null` except where
 /// docs/json.md allows it; `key` is the key `v` (or its array) sits under.
@@ -203,6 +209,42 @@ fn hostile(path: &str) -> Result<bool, String> {
             }
         }
         Err(d) => diagnostic(&d, "report (table)")?,
+    }
+    // diff against an example and against itself (status 0 or 1, or a
+    // diagnostic); materials lists the file's [materials].
+    let example = Path::new(env!("CARGO_MANIFEST_DIR")).join("shapes/bent-plate.toml");
+    let example = example.to_str().unwrap();
+    for args in [
+        vec!["diff", example, path, "--format", "json"],
+        vec!["diff", path, path],
+        vec!["materials", path, "--format", "json"],
+        vec![
+            "report",
+            path,
+            "--products",
+            "positive",
+            "--omega",
+            "1e150,0,1",
+            "--about",
+            "1e100,0,0",
+        ],
+    ] {
+        let what = args.join(" ");
+        match run(&args)? {
+            Ok(out) => {
+                if out.status > 1 {
+                    return Err(format!("{what}: Ok with status {}", out.status));
+                }
+                if args.contains(&"json") {
+                    let json: Value = serde_json::from_str(&out.stdout)
+                        .map_err(|e| format!("{what}: output is not JSON ({e})"))?;
+                    walk(&json, "", "$").map_err(|e| format!("{what}: {e}"))?;
+                } else if let Some(w) = non_finite_word(&out.stdout).filter(|_| quiet_input) {
+                    return Err(format!("{what} prints {w:?}:\n{}", out.stdout));
+                }
+            }
+            Err(d) => diagnostic(&d, &what)?,
+        }
     }
     match run(&["check", path])? {
         Ok(out) => {
