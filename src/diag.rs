@@ -67,6 +67,8 @@ impl Source {
                 label: None,
             }),
             help: None,
+            notes: Vec::new(),
+            chain_in_message: false,
         }))
     }
 }
@@ -118,6 +120,11 @@ struct Inner {
     message: String,
     snippet: Option<Snippet>,
     help: Option<String>,
+    /// `= note:` lines after the help: the include chain, innermost first.
+    notes: Vec<String>,
+    /// The message already names the whole include chain (a cycle, too
+    /// deep): no "included from" notes.
+    chain_in_message: bool,
 }
 
 impl Diagnostic {
@@ -128,6 +135,8 @@ impl Diagnostic {
             message: message.into(),
             snippet: None,
             help: None,
+            notes: Vec::new(),
+            chain_in_message: false,
         }))
     }
 
@@ -138,6 +147,8 @@ impl Diagnostic {
             message: message.into(),
             snippet: None,
             help: None,
+            notes: Vec::new(),
+            chain_in_message: false,
         }))
     }
 
@@ -152,6 +163,27 @@ impl Diagnostic {
     pub fn help(mut self, help: impl Into<String>) -> Diagnostic {
         self.0.help = Some(help.into());
         self
+    }
+
+    /// A `= note:` line, after any earlier ones.
+    pub fn note(mut self, note: impl Into<String>) -> Diagnostic {
+        self.0.notes.push(note.into());
+        self
+    }
+
+    /// Mark the message as naming the whole include chain itself.
+    pub fn with_chain_in_message(mut self) -> Diagnostic {
+        self.0.chain_in_message = true;
+        self
+    }
+
+    /// An "included from" note, unless the message names the chain.
+    pub fn included_from(self, place: impl Into<String>) -> Diagnostic {
+        if self.0.chain_in_message {
+            self
+        } else {
+            self.note(format!("included from {}", place.into()))
+        }
     }
 
     /// A "did you mean" help line when there is a suggestion.
@@ -204,6 +236,9 @@ impl fmt::Display for Diagnostic {
         }
         if let Some(help) = &d.help {
             writeln!(f, "  = help: {help}")?;
+        }
+        for note in &d.notes {
+            writeln!(f, "  = note: {note}")?;
         }
         Ok(())
     }

@@ -196,7 +196,8 @@ impl Ctx<'_> {
                         chain.join(" → ")
                     ),
                 )
-                .help("a deeper tree is almost certainly a mistake; flatten it"));
+                .help("a deeper tree is almost certainly a mistake; flatten it")
+                .with_chain_in_message());
         }
         if let Some(at) = files.stack.iter().position(|(c, _)| *c == canonical) {
             let chain: Vec<&str> = files.stack[at..].iter().map(|(_, n)| n.as_str()).collect();
@@ -205,7 +206,8 @@ impl Ctx<'_> {
                     inc.span(),
                     format!("include cycle: {} → {shown_name}", chain.join(" → ")),
                 )
-                .help("a sub-assembly cannot contain itself"));
+                .help("a sub-assembly cannot contain itself")
+                .with_chain_in_message());
         }
         let child = match files.cache.get(&canonical) {
             Some(m) => m.clone(),
@@ -214,7 +216,12 @@ impl Ctx<'_> {
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&Source::new(shown_name.clone(), text), files);
                 files.stack.pop();
-                let child = child?;
+                // An error inside says where it was included from, as
+                // compilers do: one note per level, innermost first.
+                let child = child.map_err(|d| {
+                    let (line, col) = self.source.line_col(inc.span().start);
+                    d.included_from(format!("{}:{line}:{col}", self.source.name))
+                })?;
                 files.cache.insert(canonical, child.clone());
                 child
             }

@@ -162,8 +162,16 @@ fn check_json(stdout: &str) -> Result<(), String> {
 /// computed the body. `check` quotes the lines it rejects, so its output is
 /// searched for "inf" and "nan" only when the file has none.
 fn hostile(path: &str) -> Result<bool, String> {
+    hostile_including(path, &[])
+}
+
+/// `hostile` for a file that includes the files `included` (whose text
+/// messages may quote too).
+fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, String> {
     let input = std::fs::read(path).unwrap();
-    let quiet_input = non_finite_word(&String::from_utf8_lossy(&input)).is_none();
+    let quiet_input = std::iter::once(&input[..])
+        .chain(included.iter().copied())
+        .all(|text| non_finite_word(&String::from_utf8_lossy(text)).is_none());
     let name = Path::new(path).file_name().unwrap().to_str().unwrap();
     let diagnostic = |d: &Diagnostic, what: &str| {
         let text = d.to_string();
@@ -1013,18 +1021,35 @@ fn mutated_example_files_give_finite_results_or_diagnostics() {
         .iter()
         .map(|f| std::fs::read(shapes.join(f)).unwrap())
         .collect();
+    std::fs::copy(shapes.join("robot-arm.toml"), dir.0.join("arm.toml")).unwrap();
+    let bracket = dir.0.join("motor-bracket.toml");
+    let bracket_index = EXAMPLES
+        .iter()
+        .position(|f| *f == "motor-bracket.toml")
+        .unwrap();
     let strategy = (0..EXAMPLES.len(), prop::collection::vec(mutation(), 1..=3));
     property("mutated", MUTATED, strategy, |(which, mutations)| {
         let text = mutations
             .iter()
             .fold(originals[*which].clone(), |t, m| apply(&t, m));
-        hostile_file(&dir.0, "mutant.toml", &text).map_err(|e| {
+        let context = |e: String| {
             format!(
                 "{e}\n--- {} with {mutations:?} ---\n{}",
                 EXAMPLES[*which],
                 String::from_utf8_lossy(&text)
             )
-        })
+        };
+        let computed = hostile_file(&dir.0, "mutant.toml", &text).map_err(context)?;
+        if EXAMPLES[*which] != "motor-bracket.toml" {
+            return Ok(computed);
+        }
+        // The mutant as a sub-assembly: the intact robot arm includes it
+        // (twice), and errors inside it must still name the including file.
+        std::fs::write(&bracket, &text).unwrap();
+        let arm = hostile_including(dir.0.join("arm.toml").to_str().unwrap(), &[&text])
+            .map_err(|e| context(format!("included by robot-arm.toml: {e}")));
+        std::fs::write(&bracket, &originals[bracket_index]).unwrap();
+        Ok(computed | arm?)
     });
 }
 
