@@ -27,12 +27,12 @@ pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;
 
 /// Bless one file: returns whether it changed. Errors leave it untouched.
 pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bool, Diagnostic> {
-    let source = crate::read_source(path)?;
     if path == "-" {
         return Err(Diagnostic::plain(
             "`--bless` writes files; it cannot bless standard input",
         ));
     }
+    let source = crate::read_source(path)?;
     let mut doc: DocumentMut = match source.text.parse() {
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.
@@ -63,6 +63,12 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
     }
     // The result must parse before it replaces the file.
     Model::parse(&Source::new(source.name.clone(), text.clone()))?;
+    // toml_edit writes new lines as LF: a CRLF file stays CRLF throughout.
+    let text = if source.text.contains("\r\n") {
+        text.replace("\r\n", "\n").replace('\n', "\r\n")
+    } else {
+        text
+    };
     let text = if source.bom {
         format!("\u{feff}{text}")
     } else {

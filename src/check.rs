@@ -241,8 +241,13 @@ fn collect(paths: &[String]) -> Result<Vec<String>, Diagnostic> {
         let mut entries: Vec<PathBuf> = read.filter_map(|e| e.ok().map(|e| e.path())).collect();
         entries.sort();
         for p in entries {
+            // Symlinked directories are not followed (as ripgrep does not
+            // by default): `ln -s .. up` would loop. Symlinked files are.
+            let linked_dir = std::fs::symlink_metadata(&p).is_ok_and(|m| m.is_symlink());
             if p.is_dir() {
-                walk(&p, out)?;
+                if !linked_dir {
+                    walk(&p, out)?;
+                }
             } else if p.extension().is_some_and(|e| e == "toml") {
                 out.push(p);
             }
@@ -292,16 +297,30 @@ pub fn run(args: &CheckArgs) -> Result<Output, Diagnostic> {
         ..Counts::default()
     };
     for f in &files {
+        // A file that cannot be blessed is left untouched. If it is invalid
+        // the check below says why; if it is valid, the bless failure
+        // itself (standard input, a write error) is the error.
+        let mut not_blessed = None;
         if args.bless {
-            // A file that cannot be blessed is left untouched; the check
-            // below reports it as invalid.
             match crate::bless::bless_file(f, args.precision) {
                 Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
                 Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
-                Err(_) => stderr.push_str(&format!("{f}: not blessed (invalid; left untouched)\n")),
+                Err(d) => not_blessed = Some(d),
             }
         }
-        match check_file(f, args.precision) {
+        let checked = check_file(f, args.precision);
+        let checked = match (checked, not_blessed) {
+            (Ok(_), Some(d)) => {
+                stderr.push_str(&format!("{f}: not blessed\n"));
+                Err(d)
+            }
+            (Err(d), Some(_)) => {
+                stderr.push_str(&format!("{f}: not blessed (invalid; left untouched)\n"));
+                Err(d)
+            }
+            (checked, None) => checked,
+        };
+        match checked {
             Ok(r) => {
                 if r.status == "ok" {
                     counts.ok += 1;

@@ -51,15 +51,15 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
         )
     };
     if path == "-" {
-        let mut text = String::new();
+        let mut bytes = Vec::new();
         std::io::stdin()
             .take(MAX_FILE_BYTES + 1)
-            .read_to_string(&mut text)
+            .read_to_end(&mut bytes)
             .map_err(|e| Diagnostic::file("<stdin>", format!("cannot read standard input: {e}")))?;
-        if text.len() as u64 > MAX_FILE_BYTES {
+        if bytes.len() as u64 > MAX_FILE_BYTES {
             return Err(too_big("standard input"));
         }
-        return Ok(Source::new("<stdin>", text));
+        return source_of("<stdin>", bytes);
     }
     let meta = std::fs::metadata(path)
         .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
@@ -72,9 +72,29 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
     if meta.len() > MAX_FILE_BYTES {
         return Err(too_big("the file"));
     }
-    let text = std::fs::read_to_string(path)
+    let bytes = std::fs::read(path)
         .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
-    Ok(Source::new(path, text))
+    source_of(path, bytes)
+}
+
+/// A part file's bytes as its source: UTF-8, or an error at the first byte
+/// that is not (with its line and column, as any other error).
+pub(crate) fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
+    match String::from_utf8(bytes) {
+        Ok(text) => Ok(Source::new(name, text)),
+        Err(e) => {
+            let at = e.utf8_error().valid_up_to();
+            let byte = e.as_bytes()[at];
+            // The text up to `at` is valid, so the lossy copy has the same
+            // offsets there; the bad byte shows as U+FFFD under the caret.
+            let lossy = String::from_utf8_lossy(e.as_bytes()).into_owned();
+            let source = Source::new(name, lossy);
+            let at = at.saturating_sub(if source.bom { 3 } else { 0 });
+            Err(source
+                .error(at..at + 1, format!("invalid UTF-8 (byte 0x{byte:02x})"))
+                .help("a part file is UTF-8 text; re-save it as UTF-8"))
+        }
+    }
 }
 
 /// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
@@ -102,7 +122,24 @@ pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
 /// and a rename, so an interrupted or failed run never leaves half a file
 /// (`what` names it in the error).
 pub(crate) fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
-    let target = std::path::Path::new(path);
+    let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
+    // A symlink is written through (the link stays a link, its target gets
+    // the text); something that is not a regular file (/dev/stdout, a FIFO,
+    // a device) cannot be replaced by a rename and is written directly.
+    let resolved = match std::fs::canonicalize(path) {
+        Ok(real) => match std::fs::metadata(&real) {
+            Ok(meta) if !meta.is_file() && !meta.is_dir() => {
+                return std::fs::OpenOptions::new()
+                    .write(true)
+                    .open(&real)
+                    .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
+                    .map_err(fail);
+            }
+            _ => real,
+        },
+        Err(_) => std::path::PathBuf::from(path),
+    };
+    let target = resolved.as_path();
     let dir = target
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
@@ -112,8 +149,13 @@ pub(crate) fn write_atomically(path: &str, text: &str, what: &str) -> Result<(),
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     let tmp = dir.join(format!(".{name}.massprop.{}", std::process::id()));
-    let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
-    if let Err(e) = std::fs::write(&tmp, text) {
+    // create_new: never through a symlink or file already at that name.
+    let written = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&tmp)
+        .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()));
+    if let Err(e) = written {
         let _ = std::fs::remove_file(&tmp);
         return Err(fail(e));
     }

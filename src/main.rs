@@ -5,11 +5,28 @@ use clap::Parser;
 use std::io::Write;
 use std::process::ExitCode;
 
+/// Write to stderr, ignoring failure: with stderr closed (`2>&1 | head -1`)
+/// there is nowhere left to say anything, and `eprint!` would panic.
+fn to_stderr(text: &str) {
+    let mut stderr = std::io::stderr().lock();
+    let _ = stderr
+        .write_all(text.as_bytes())
+        .and_then(|()| stderr.flush());
+}
+
 fn main() -> ExitCode {
-    let cli = massprop::cli::Cli::parse();
+    let cli = match massprop::cli::Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version go to stdout, usage errors to stderr; a
+            // closed pipe on either is not a panic.
+            let _ = e.print();
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
     match massprop::run(&cli) {
         Ok(out) => {
-            eprint!("{}", out.stderr);
+            to_stderr(&out.stderr);
             let mut stdout = std::io::stdout().lock();
             match stdout
                 .write_all(out.stdout.as_bytes())
@@ -19,13 +36,13 @@ fn main() -> ExitCode {
                 // A closed pipe (`massprop report x.toml | head -1`) is not an error.
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(out.status),
                 Err(e) => {
-                    eprintln!("error: cannot write output: {e}");
+                    to_stderr(&format!("error: cannot write output: {e}\n"));
                     ExitCode::from(2)
                 }
             }
         }
         Err(diag) => {
-            eprint!("{diag}");
+            to_stderr(&diag.to_string());
             ExitCode::from(2)
         }
     }

@@ -341,7 +341,8 @@ fn split_exponent(term: &str) -> Result<(&str, i32), UnitError> {
     match term.split_once('^') {
         Some((base, exp)) => {
             let exp: i32 = exp.trim().parse().map_err(|_| bad())?;
-            if exp == 0 || exp.abs() > 4 {
+            // (unsigned_abs: i32::MIN has no i32 absolute value.)
+            if exp == 0 || exp.unsigned_abs() > 4 {
                 return Err(bad());
             }
             Ok((base.trim(), exp))
@@ -554,6 +555,10 @@ mod tests {
         );
         assert!(parse_quantity("3 kg/m/m", Dim::AREAL_DENSITY).is_err());
         assert!(parse_quantity("3 kg/m^", Dim::AREAL_DENSITY).is_err());
+        // i32::MIN has no i32 absolute value: once a 2³¹-step loop (and a
+        // panic in debug builds).
+        assert!(parse_quantity("2 kg^-2147483648", Dim::MASS).is_err());
+        assert!(parse_quantity("2 m^2147483647", Dim::LENGTH).is_err());
     }
 
     #[test]

@@ -11,7 +11,7 @@
 use super::raw::RawPart;
 use super::rotation::{Orientation, to_matrix3};
 use super::{Ctx, MassSpec, Model, Part, Place, RealSize, Spec};
-use crate::diag::{Diagnostic, Source};
+use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::shapes::Shape;
 use crate::units::Dim;
@@ -212,9 +212,13 @@ impl Ctx<'_> {
         let child = match files.cache.get(&canonical) {
             Some(m) => m.clone(),
             None => {
-                let text = std::fs::read_to_string(&shown).map_err(unreadable)?;
+                let bytes = std::fs::read(&shown).map_err(unreadable)?;
+                let source = crate::source_of(&shown_name, bytes).map_err(|d| {
+                    let (line, col) = self.source.line_col(inc.span().start);
+                    d.included_from(format!("{}:{line}:{col}", self.source.name))
+                })?;
                 files.stack.push((canonical.clone(), shown_name.clone()));
-                let child = Model::parse_in(&Source::new(shown_name.clone(), text), files);
+                let child = Model::parse_in(&source, files);
                 files.stack.pop();
                 // An error inside says where it was included from, as
                 // compilers do: one note per level, innermost first.
@@ -237,11 +241,13 @@ impl Ctx<'_> {
         };
         // Two copies of a sub-assembly in one file get distinct names:
         // `wheel`, `wheel #2`, … (so `--only` and `diff` can tell them apart).
-        let taken = |n: &str| {
-            parts
-                .iter()
-                .any(|q| q.assembly.first().is_some_and(|a| a == n))
-        };
+        // (The names taken, gathered once: scanning every part for each
+        // candidate name made N copies of one file cost N³.)
+        let taken: std::collections::HashSet<&str> = parts
+            .iter()
+            .filter_map(|q| q.assembly.first().map(String::as_str))
+            .collect();
+        let taken = |n: &str| taken.contains(n);
         let mut name = base_name.clone();
         let mut k = 1;
         while taken(&name) {

@@ -602,6 +602,14 @@ impl Ctx<'_> {
                 format!("`{key}` overflows when converted to SI units"),
             ));
         }
+        // Results are shown in the file's units: a value within a rounding
+        // of the largest f64 there can overflow on its way back from SI.
+        if !(value / self.units.factor(dim).value()).is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` is beyond the largest number in the file's units"),
+            ));
+        }
         Ok(value)
     }
 

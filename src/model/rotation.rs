@@ -223,8 +223,11 @@ impl Ctx<'_> {
                 };
                 if !((norm - 1.0).abs() <= QUATERNION_TOLERANCE) {
                     // Beyond f64 only when a component is near its largest.
-                    let length = if norm.is_finite() {
+                    // (`{}` of 1e300 is 301 digits.)
+                    let length = if norm.is_finite() && norm < 1e6 {
                         format!("{norm}")
+                    } else if norm.is_finite() {
+                        format!("{norm:e}")
                     } else {
                         format!("above {big:e}")
                     };

@@ -331,3 +331,43 @@ fn bless_adds_an_expect_block_and_leaves_invalid_files_untouched() {
         .collect();
     assert_eq!(names.len(), 2, "{names:?}");
 }
+
+#[test]
+fn symlinked_directories_are_not_followed() {
+    // `up -> ..` twice in one directory: followed, the walk would grow
+    // without end; a symlinked file is still checked.
+    let dir = scratch("symlink-loop");
+    let sub = dir.join("sub");
+    std::fs::create_dir_all(&sub).unwrap();
+    let a = write(&sub, "a.toml", "mass = { value = 12, tol = \"0.1%\" }");
+    std::os::unix::fs::symlink("..", sub.join("up")).unwrap();
+    std::os::unix::fs::symlink("..", sub.join("up2")).unwrap();
+    std::os::unix::fs::symlink("a.toml", sub.join("b.toml")).unwrap();
+    let (code, stdout, stderr) = check(&[dir.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stdout}{stderr}");
+    assert!(stdout.contains(&format!("{a}: ok")), "{stdout}");
+    assert!(stdout.contains("checked 2 files: 2 ok"), "{stdout}");
+}
+
+#[test]
+fn bless_keeps_crlf_line_endings_and_refuses_stdin_by_saying_so() {
+    let dir = scratch("bless-crlf");
+    let path = dir.join("crlf.toml");
+    let text = format!("{BODY}mass = {{ value = 11, tol = \"0.1%\" }}\n").replace('\n', "\r\n");
+    std::fs::write(&path, &text).unwrap();
+    let (code, _, stderr) = check(&["--bless", path.to_str().unwrap()]);
+    assert_eq!(code, 0, "{stderr}");
+    let blessed = std::fs::read_to_string(&path).unwrap();
+    assert!(blessed.contains("value = 12"), "{blessed}");
+    assert_eq!(
+        blessed.matches('\n').count(),
+        blessed.matches("\r\n").count(),
+        "a bare LF crept in:\n{blessed:?}"
+    );
+    assert_eq!(blessed.replace("value = 12.0", "value = 11"), text);
+
+    let out = crate::common::massprop_stdin(&["check", "--bless", "-"], &text);
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("cannot bless standard input"), "{stderr}");
+}

@@ -556,3 +556,48 @@ fn output_file_is_written_whole_or_not_at_all() {
     assert!(!std::fs::read_to_string(&d).unwrap().is_empty());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn output_through_a_symlink_keeps_the_link_and_a_device_is_written_not_replaced() {
+    let dir = std::env::temp_dir().join(format!("massprop-output-link-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let real = dir.join("real.json");
+    std::fs::write(&real, "old").unwrap();
+    let link = dir.join("link.json");
+    std::os::unix::fs::symlink("real.json", &link).unwrap();
+    let out = massprop(&[
+        "report",
+        BENT_PLATE,
+        "--format",
+        "json",
+        "-o",
+        link.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
+    let v: Value = serde_json::from_str(&std::fs::read_to_string(&real).unwrap()).unwrap();
+    assert!(v["mass"].as_f64().is_some());
+    // /dev/null stays a device (a rename would replace it, as root).
+    let out = massprop(&["report", BENT_PLATE, "-o", "/dev/null"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(!std::fs::metadata("/dev/null").unwrap().is_file());
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn a_closed_stderr_is_not_a_panic() {
+    use std::process::{Command, Stdio};
+    // Closed before massprop writes its error (and if not, the write lands
+    // in the pipe: either way the status must be 2, never 101).
+    for _ in 0..5 {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_massprop"))
+            .args(["report", "tests/cmd/bad-input.in/unknown-key.toml"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(child.stderr.take());
+        assert_eq!(child.wait().unwrap().code(), Some(2));
+    }
+}
