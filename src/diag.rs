@@ -54,15 +54,40 @@ impl Source {
         // Underline the span's part on its first line, at least one caret.
         let end = span.end.clamp(start, line_end.max(start));
         let end = floor_char_boundary(&self.text, end);
+        // A long line (a generated file, a million-element array) is shown
+        // as a window around the span, not echoed whole.
+        let chars: Vec<char> = visible(line_text).chars().collect();
+        let span_chars = self.text[start..end].chars().count();
+        let (text, snippet_col, span_chars) = if chars.len() > LONG_LINE {
+            let from = (col - 1).saturating_sub(LONG_LINE / 3);
+            let to = (from + LONG_LINE).min(chars.len());
+            let mut text: String = if from > 0 {
+                "…".into()
+            } else {
+                String::new()
+            };
+            text.extend(&chars[from..to]);
+            if to < chars.len() {
+                text.push('…');
+            }
+            let shown = span_chars.min(to.saturating_sub(col - 1)).max(1);
+            (text, col - from + usize::from(from > 0), shown)
+        } else {
+            (chars.iter().collect(), col, span_chars)
+        };
         // Carets count display columns, so wide characters line up.
-        let width = UnicodeWidthStr::width(visible(&self.text[start..end]).as_str()).max(1);
+        let shown: String = self.text[start..]
+            .chars()
+            .take(span_chars.min(end - start))
+            .collect();
+        let width = UnicodeWidthStr::width(visible(&shown).as_str()).max(1);
         Diagnostic(Box::new(Inner {
             location: Some(format!("{}:{line}:{col}", self.name)),
             message: message.into(),
             snippet: Some(Snippet {
                 line,
-                text: visible(line_text),
-                col,
+                text,
+                col: snippet_col,
                 width,
                 label: None,
             }),
@@ -71,6 +96,15 @@ impl Source {
             chain_in_message: false,
         }))
     }
+}
+
+/// Lines longer than this (in characters) are shown as a window.
+const LONG_LINE: usize = 160;
+
+/// Message text with control characters (but tab and newline) made visible:
+/// keys, names and paths in messages come from the file.
+fn visible_message(text: &str) -> String {
+    text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
 }
 
 /// The text with control characters (but tab) shown as their Unicode
@@ -207,10 +241,14 @@ impl Diagnostic {
 impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let d = &self.0;
+        let message = visible_message(&d.message);
         match &d.location {
-            Some(loc) => writeln!(f, "{loc}: error: {}", d.message)?,
-            None => writeln!(f, "error: {}", d.message)?,
+            Some(loc) => writeln!(f, "{loc}: error: {message}")?,
+            None => writeln!(f, "error: {message}")?,
         }
+        // `= help:` under the gutter's bar, as rustc aligns it.
+        let gutter = d.snippet.as_ref().map_or(1, |s| s.line.to_string().len());
+        let indent = " ".repeat(gutter + 1);
         if let Some(s) = &d.snippet {
             let num = s.line.to_string();
             let pad = " ".repeat(num.len());
@@ -230,15 +268,15 @@ impl fmt::Display for Diagnostic {
                 .collect();
             let carets = "^".repeat(s.width);
             match &s.label {
-                Some(label) => writeln!(f, "{pad} | {lead}{carets} {label}")?,
+                Some(label) => writeln!(f, "{pad} | {lead}{carets} {}", visible_message(label))?,
                 None => writeln!(f, "{pad} | {lead}{carets}")?,
             }
         }
         if let Some(help) = &d.help {
-            writeln!(f, "  = help: {help}")?;
+            writeln!(f, "{indent}= help: {}", visible_message(help))?;
         }
         for note in &d.notes {
-            writeln!(f, "  = note: {note}")?;
+            writeln!(f, "{indent}= note: {}", visible_message(note))?;
         }
         Ok(())
     }
@@ -295,6 +333,34 @@ mod tests {
         assert!(d.contains("1 | a = 1 # \u{2421}\u{241b}[2J x\n"), "{d}");
         assert!(d.contains(&format!("  | {}^\n", " ".repeat(14))), "{d}");
         assert!(!d.contains('\u{1b}') && !d.contains('\u{7f}'), "{d}");
+    }
+
+    #[test]
+    fn a_long_line_is_shown_as_a_window_around_the_span() {
+        let text = format!("x = [{}9]\n", "0, ".repeat(100_000));
+        let s = Source::new("f.toml", text.as_str());
+        let nine = text.find('9').unwrap();
+        let d = s.error(nine..nine + 1, "bad").to_string();
+        assert!(
+            d.starts_with(&format!("f.toml:1:{}:", nine + 1)),
+            "{}",
+            &d[..40]
+        );
+        assert!(d.len() < 1000, "the whole line was echoed");
+        // The caret is still under the 9.
+        let lines: Vec<&str> = d.lines().collect();
+        let caret = lines[3].find('^').unwrap();
+        assert_eq!(lines[2][..caret + 3].chars().last(), Some('9'), "{d}");
+    }
+
+    #[test]
+    fn help_lines_align_with_the_gutter_and_messages_show_control_characters() {
+        let text = "\n".repeat(11) + "a = 1\n";
+        let s = Source::new("f.toml", text.as_str());
+        let d = s.error(11..12, "key `\u{1b}[2J`").help("h").to_string();
+        assert!(d.contains("key `\u{241b}[2J`"), "{d}");
+        assert!(d.contains("\n12 | a = 1\n   |"), "{d}");
+        assert!(d.ends_with("\n   = help: h\n"), "{d}");
     }
 
     #[test]

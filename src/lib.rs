@@ -99,6 +99,24 @@ pub(crate) fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic
 
 /// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
 pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
+    // `-o` onto a part file being read would replace the design with the
+    // report: refused before anything is read or written.
+    let (output, inputs): (&Option<String>, Vec<&String>) = match &cli.command {
+        Command::Report(a) => (&a.output, vec![&a.file]),
+        Command::Check(a) => (&a.output, a.paths.iter().collect()),
+        Command::Diff(a) => (&a.output, vec![&a.old, &a.new]),
+        Command::Materials(_) => (&None, Vec::new()),
+    };
+    if let Some(o) = output.as_ref().and_then(|o| std::fs::canonicalize(o).ok()) {
+        for i in inputs {
+            if std::fs::canonicalize(i).is_ok_and(|i| i == o) {
+                return Err(Diagnostic::plain(format!(
+                    "`-o {}` is the part file `{i}`: the report would replace it",
+                    output.as_deref().unwrap_or_default()
+                )));
+            }
+        }
+    }
     let (out, file) = match &cli.command {
         Command::Report(args) => (report(args)?, &args.output),
         Command::Check(args) => (check::run(args)?, &args.output),

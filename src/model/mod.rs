@@ -368,6 +368,14 @@ impl Model {
 /// a "did you mean" drawn from the key list in serde's own message, and
 /// type errors name the key that holds the offending value.
 fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
+    if e.span().is_none() && e.message().contains("recursion limit") {
+        // toml gives no place for too deep a dotted key or table header:
+        // point at the line whose key has the most dots.
+        let (start, len) = deepest_key(&source.text);
+        return source
+            .error(start..start + len, "this key nests tables too deeply")
+            .help("a part file needs a few levels at most; is the key or header mistyped?");
+    }
     let span = e.span().unwrap_or(0..0);
     // toml reports some spans inside a multi-byte character (after a BOM,
     // a combining mark or an em dash in a comment): snap to boundaries.
@@ -487,6 +495,23 @@ fn key_before(text: &str, offset: usize) -> Option<String> {
         .map_or(0, |(i, c)| i + c.len_utf8());
     let key = &before[start..];
     (!key.is_empty()).then(|| key.to_string())
+}
+
+/// The line whose key (before `=`, or a `[header]`) has the most dots:
+/// its offset and the length of the key.
+fn deepest_key(text: &str) -> (usize, usize) {
+    let mut best = (0, 0, 0);
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let code = &line[..comment_start(line).unwrap_or(line.len())];
+        let key = code.split('=').next().unwrap_or("").trim_end();
+        let dots = key.matches('.').count();
+        if dots > best.0 {
+            best = (dots, at, key.len());
+        }
+        at += line.len();
+    }
+    (best.1, best.2)
 }
 
 /// Where a comment begins on a line of TOML: the first `#` outside a

@@ -601,3 +601,26 @@ fn a_closed_stderr_is_not_a_panic() {
         assert_eq!(child.wait().unwrap().code(), Some(2));
     }
 }
+
+#[test]
+fn output_onto_an_input_part_file_is_refused() {
+    let dir = std::env::temp_dir().join(format!("massprop-output-self-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let part = dir.join("part.toml");
+    std::fs::copy(BENT_PLATE, &part).unwrap();
+    let before = std::fs::read(&part).unwrap();
+    let p = part.to_str().unwrap();
+    for args in [
+        vec!["report", p, "-o", p],
+        vec!["check", p, "-o", p],
+        vec!["diff", BENT_PLATE, p, "-o", p],
+    ] {
+        let out = massprop(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(stderr.contains("would replace it"), "{args:?}: {stderr}");
+        assert_eq!(std::fs::read(&part).unwrap(), before, "{args:?}");
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
