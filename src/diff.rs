@@ -123,7 +123,14 @@ pub fn run(args: &DiffArgs) -> Result<Output, Diagnostic> {
     let old = load(&args.old, args.precision)?;
     let new = load(&args.new, args.precision)?;
     let length = length_scale(&old.summary, &new.summary);
-    let quantities = quantities(&old.summary, &new.summary, length, tol)?;
+    let quantities = quantities(&old.summary, &new.summary, length, tol).map_err(|d| {
+        Diagnostic::plain(format!(
+            "{} → {}: {}",
+            old.source.name,
+            new.source.name,
+            d.message()
+        ))
+    })?;
     let parts = part_diff(&old.model.parts, &new.model.parts, length, tol);
     let changed = quantities.iter().any(|q| q.changed) || !parts.is_empty();
     let d = Diff {

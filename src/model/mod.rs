@@ -424,6 +424,17 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         return source.error(span, format!("duplicate key `{key}`"));
     }
     let at = span.start;
+    // TOML integers are 64-bit: toml says "integer `1e20-ish` as i128".
+    let wide_integer = msg.contains(" as i128");
+    let msg = msg.replacen(" as i128", "", 1);
+    // A date or time reaches serde as a table.
+    let msg = if msg.starts_with("invalid type: table")
+        && source.text[at..].starts_with(|c: char| c.is_ascii_digit())
+    {
+        msg.replacen("table", "date-time", 1)
+    } else {
+        msg
+    };
     let key = key_at(&source.text, at).or_else(|| key_before(&source.text, at));
     let d = match (key.as_deref(), msg.strip_prefix("invalid type: ")) {
         (Some(k), Some(rest)) => source.error(span, format!("`{k}` has the wrong type: {rest}")),
@@ -432,6 +443,9 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     };
     if key.as_deref() == Some("part") {
         return d.help("write each part as a `[[part]]` table (two brackets)");
+    }
+    if wide_integer {
+        return d.help("a TOML integer is 64-bit (up to 9223372036854775807): write a larger number as a float, e.g. `1e20`");
     }
     if msg.contains("string values must be quoted")
         && let (Some(k), Some(v)) = (key.as_deref(), quoted_value(&source.text, at))
@@ -1253,9 +1267,17 @@ impl Ctx<'_> {
             }
         };
         if !(out.0.is_finite() && out.1.is_finite()) {
+            // The density times the thickness, area or diameter²: point at
+            // that size when the file gives one.
+            let (span, what) = match (&p.thickness, &p.area, &p.diameter) {
+                (Some(q), _, _) => (q.span(), "its thickness"),
+                (_, Some(q), _) => (q.span(), "its area"),
+                (_, _, Some(q)) => (q.span(), "its diameter"),
+                _ => (name.span(), "its size"),
+            };
             return Err(self.err(
-                name.span(),
-                "the material's density overflows the range of f64",
+                span,
+                format!("the material's density times {what} overflows the range of f64"),
             ));
         }
         Ok(Some((out.0, out.1, name.span())))
@@ -1812,8 +1834,9 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
                 return Err(format!("component {} must be finite", i + 1));
             }
             (Some(x), None) => x,
+            // The unit given once, at the end, for all three.
             (Some(x), Some(u)) => units::parse_quantity_in(&format!("{x:?} {u}"), dim, units)
-                .map_err(|e| format!("component {}: {e}", i + 1))?,
+                .map_err(|e| e.to_string())?,
             (None, _) => units::parse_quantity_in(p, dim, units)
                 .map_err(|e| format!("component {}: {e}", i + 1))?,
         };
