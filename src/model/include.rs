@@ -32,6 +32,32 @@ pub(super) struct Files {
     cache: HashMap<PathBuf, Model>,
 }
 
+/// The names given to one file's sub-assemblies: `wheel`, `wheel #2`, …
+/// Kept as the file is read, so that N copies of one include cost O(N)
+/// (scanning the parts, or counting up from #2, for each made it N² or N³).
+#[derive(Default)]
+pub(super) struct AssemblyNames {
+    taken: std::collections::HashSet<String>,
+    /// For each base name, the last `#k` given.
+    last: HashMap<String, usize>,
+}
+
+impl AssemblyNames {
+    fn claim(&mut self, base: &str) -> String {
+        let k = self.last.entry(base.to_string()).or_insert(0);
+        let mut name = base.to_string();
+        loop {
+            *k += 1;
+            if *k > 1 {
+                name = format!("{base} #{k}");
+            }
+            if self.taken.insert(name.clone()) {
+                return name;
+            }
+        }
+    }
+}
+
 /// Where an included file's frame goes in this file's.
 struct Frame {
     /// This file's units.
@@ -130,6 +156,7 @@ impl Ctx<'_> {
         files: &mut Files,
         parts: &mut Vec<Part>,
         real: &mut Vec<RealSize>,
+        names: &mut AssemblyNames,
     ) -> Result<(), Diagnostic> {
         let p = raw.get_ref();
         let inc = p.include.as_ref().expect("the caller checked `include`");
@@ -241,19 +268,7 @@ impl Ctx<'_> {
         };
         // Two copies of a sub-assembly in one file get distinct names:
         // `wheel`, `wheel #2`, … (so `--only` and `diff` can tell them apart).
-        // (The names taken, gathered once: scanning every part for each
-        // candidate name made N copies of one file cost N³.)
-        let taken: std::collections::HashSet<&str> = parts
-            .iter()
-            .filter_map(|q| q.assembly.first().map(String::as_str))
-            .collect();
-        let taken = |n: &str| taken.contains(n);
-        let mut name = base_name.clone();
-        let mut k = 1;
-        while taken(&name) {
-            k += 1;
-            name = format!("{base_name} #{k}");
-        }
+        let name = names.claim(&base_name);
         let ratio = |dim: Dim| {
             child
                 .units
@@ -319,3 +334,21 @@ impl Ctx<'_> {
 
 /// Keys of a part with the span of each that is present.
 pub(super) type Present<'k> = Vec<(&'k str, Option<Range<usize>>)>;
+
+#[cfg(test)]
+mod tests {
+    use super::AssemblyNames;
+
+    #[test]
+    fn copies_are_numbered_past_names_already_taken() {
+        let mut names = AssemblyNames::default();
+        assert_eq!(names.claim("wheel"), "wheel");
+        // A sub-assembly the file itself called "wheel #3".
+        assert_eq!(names.claim("wheel #3"), "wheel #3");
+        assert_eq!(names.claim("wheel"), "wheel #2");
+        assert_eq!(names.claim("wheel"), "wheel #4");
+        assert_eq!(names.claim("arm"), "arm");
+        // "wheel #3" asked for again gets its own number.
+        assert_eq!(names.claim("wheel #3"), "wheel #3 #2");
+    }
+}

@@ -255,9 +255,18 @@ impl Model {
         }
         let mut parts = Vec::with_capacity(raw_parts.len());
         let mut real_sizes = Vec::new();
+        // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
+        let mut assembly_names = include::AssemblyNames::default();
         for (i, p) in raw_parts.iter().enumerate() {
             if p.get_ref().include.is_some() {
-                ctx.include(i, p, files, &mut parts, &mut real_sizes)?;
+                ctx.include(
+                    i,
+                    p,
+                    files,
+                    &mut parts,
+                    &mut real_sizes,
+                    &mut assembly_names,
+                )?;
                 continue;
             }
             let (part, real) = ctx.part(i, p)?;
@@ -300,14 +309,30 @@ impl Model {
     /// (`front / wheel #2`).
     pub fn only(&mut self, name: &str) -> Result<(), String> {
         let mut prefixes: Vec<&[String]> = Vec::new();
+        let mut seen = std::collections::HashSet::new();
         for p in &self.parts {
             for depth in 1..=p.assembly.len() {
                 let prefix = &p.assembly[..depth];
-                if !prefixes.contains(&prefix) {
+                if seen.insert(prefix) {
                     prefixes.push(prefix);
                 }
             }
         }
+        // At most this many names in a message; the rest are counted.
+        const LISTED: usize = 12;
+        let list = |names: Vec<String>| {
+            let more = names.len().saturating_sub(LISTED);
+            let mut text = names
+                .into_iter()
+                .take(LISTED)
+                .map(|n| format!("`{n}`"))
+                .collect::<Vec<_>>()
+                .join(", ");
+            if more > 0 {
+                text.push_str(&format!(" and {more} more"));
+            }
+            text
+        };
         let matching: Vec<&[String]> = prefixes
             .iter()
             .copied()
@@ -325,21 +350,14 @@ impl Model {
                         .unwrap_or_default();
                     format!(
                         "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
-                        names
-                            .iter()
-                            .map(|n| format!("`{n}`"))
-                            .collect::<Vec<_>>()
-                            .join(", ")
+                        list(names)
                     )
                 });
             }
             many => {
                 return Err(format!(
                     "`--only {name}` is ambiguous: {}; give the path",
-                    many.iter()
-                        .map(|q| format!("`{}`", q.join(" / ")))
-                        .collect::<Vec<_>>()
-                        .join(", ")
+                    list(many.iter().map(|q| q.join(" / ")).collect())
                 ));
             }
         };
