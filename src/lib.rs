@@ -63,17 +63,24 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
     }
     let meta = std::fs::metadata(path)
         .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
-    if !meta.is_file() {
+    if meta.is_dir() {
         return Err(Diagnostic::file(
             path,
-            "cannot read file: not a regular file (a directory?)",
+            "cannot read file: it is a directory (`check` searches directories)",
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
         return Err(too_big("the file"));
     }
-    let bytes = std::fs::read(path)
+    // Not only regular files: `massprop report <(generate)` is a pipe. The
+    // cap keeps /dev/zero from reading forever.
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
         .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(too_big("the file"));
+    }
     source_of(path, bytes)
 }
 

@@ -624,3 +624,32 @@ fn output_onto_an_input_part_file_is_refused() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn a_named_pipe_is_read_like_a_file() {
+    // `massprop report <(generate)` hands over a pipe, not a regular file.
+    let dir = std::env::temp_dir().join(format!("massprop-fifo-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let fifo = dir.join("part.toml");
+    let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo (coreutils) failed");
+    let writer = {
+        let fifo = fifo.clone();
+        std::thread::spawn(move || {
+            std::fs::write(&fifo, std::fs::read(BENT_PLATE).unwrap()).unwrap();
+        })
+    };
+    let out = massprop(&["report", fifo.to_str().unwrap(), "--format", "json"]);
+    writer.join().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let direct = json(&["report", BENT_PLATE, "--format", "json"]);
+    let piped: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(piped["mass"], direct["mass"]);
+    std::fs::remove_dir_all(&dir).ok();
+}
