@@ -238,17 +238,18 @@ fn collect(paths: &[String]) -> Result<Vec<String>, Diagnostic> {
                 format!("cannot read directory: {e}"),
             )
         })?;
-        let mut entries: Vec<PathBuf> = read.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        // With each entry's own type (from the directory, not following a
+        // symlink): symlinked directories are not followed (as ripgrep does
+        // not by default: `ln -s .. up` would loop); symlinked files are.
+        let mut entries: Vec<(PathBuf, bool)> = read
+            .filter_map(|e| e.ok())
+            .map(|e| (e.path(), e.file_type().is_ok_and(|t| t.is_dir())))
+            .collect();
         entries.sort();
-        for p in entries {
-            // Symlinked directories are not followed (as ripgrep does not
-            // by default): `ln -s .. up` would loop. Symlinked files are.
-            let linked_dir = std::fs::symlink_metadata(&p).is_ok_and(|m| m.is_symlink());
-            if p.is_dir() {
-                if !linked_dir {
-                    walk(&p, out)?;
-                }
-            } else if p.extension().is_some_and(|e| e == "toml") {
+        for (p, dir) in entries {
+            if dir {
+                walk(&p, out)?;
+            } else if p.extension().is_some_and(|e| e == "toml") && !p.is_dir() {
                 out.push(p);
             }
         }

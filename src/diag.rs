@@ -76,10 +76,7 @@ impl Source {
             (chars.iter().collect(), col, span_chars)
         };
         // Carets count display columns, so wide characters line up.
-        let shown: String = self.text[start..]
-            .chars()
-            .take(span_chars.min(end - start))
-            .collect();
+        let shown: String = self.text[start..].chars().take(span_chars).collect();
         let width = UnicodeWidthStr::width(visible(&shown).as_str()).max(1);
         Diagnostic(Box::new(Inner {
             location: Some(format!("{}:{line}:{col}", self.name)),

@@ -38,31 +38,42 @@ pub struct Output {
 /// allows ~1.7 million parts in ~8 GB.
 pub const MAX_FILE_BYTES: u64 = 512 << 20;
 
-/// Read a part file, or standard input for `-`, refusing files over
-/// `MAX_FILE_BYTES` and anything but a regular file.
+/// Read a part file, or standard input for `-`, refusing directories and
+/// anything over `MAX_FILE_BYTES`.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    let too_big = |what: &str| {
+    let stdin = path == "-";
+    let name = if stdin { "<stdin>" } else { path };
+    let too_big = || {
         Diagnostic::file(
-            if path == "-" { "<stdin>" } else { path },
+            name,
             format!(
-                "{what} is larger than the limit of {} MiB for a part file",
+                "{} is larger than the limit of {} MiB for a part file",
+                if stdin { "standard input" } else { "the file" },
                 MAX_FILE_BYTES >> 20
             ),
         )
     };
-    if path == "-" {
+    let cannot_read = |e: std::io::Error| {
+        let what = if stdin { "standard input" } else { "file" };
+        Diagnostic::file(name, format!("cannot read {what}: {e}"))
+    };
+    // At most the limit and one byte, so that /dev/zero or an endless pipe
+    // cannot read forever.
+    let capped = |reader: &mut dyn Read| -> Result<Vec<u8>, Diagnostic> {
         let mut bytes = Vec::new();
-        std::io::stdin()
+        reader
             .take(MAX_FILE_BYTES + 1)
             .read_to_end(&mut bytes)
-            .map_err(|e| Diagnostic::file("<stdin>", format!("cannot read standard input: {e}")))?;
+            .map_err(cannot_read)?;
         if bytes.len() as u64 > MAX_FILE_BYTES {
-            return Err(too_big("standard input"));
+            return Err(too_big());
         }
-        return source_of("<stdin>", bytes);
+        Ok(bytes)
+    };
+    if stdin {
+        return source_of(name, capped(&mut std::io::stdin())?);
     }
-    let meta = std::fs::metadata(path)
-        .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
+    let meta = std::fs::metadata(path).map_err(cannot_read)?;
     if meta.is_dir() {
         return Err(Diagnostic::file(
             path,
@@ -70,18 +81,11 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
-        return Err(too_big("the file"));
+        return Err(too_big());
     }
-    // Not only regular files: `massprop report <(generate)` is a pipe. The
-    // cap keeps /dev/zero from reading forever.
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .and_then(|f| f.take(MAX_FILE_BYTES + 1).read_to_end(&mut bytes))
-        .map_err(|e| Diagnostic::file(path, format!("cannot read file: {e}")))?;
-    if bytes.len() as u64 > MAX_FILE_BYTES {
-        return Err(too_big("the file"));
-    }
-    source_of(path, bytes)
+    // Not only regular files: `massprop report <(generate)` is a pipe.
+    let mut file = std::fs::File::open(path).map_err(cannot_read)?;
+    source_of(path, capped(&mut file)?)
 }
 
 /// A part file's bytes as its source: UTF-8, or an error at the first byte

@@ -366,9 +366,34 @@ impl Sum {
     }
 }
 
+/// Euclidean (Frobenius for a matrix) norm without overflow or underflow in
+/// the squares: scaled by the largest magnitude. `f64::MAX` at most for
+/// finite input; infinite if an entry is not finite.
+pub fn norm(v: &[f64]) -> f64 {
+    let a = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if a == 0.0 {
+        return 0.0;
+    }
+    if !a.is_finite() || v.iter().any(|x| x.is_nan()) {
+        return f64::INFINITY;
+    }
+    (a * v.iter().map(|x| (x / a).powi(2)).sum::<f64>().sqrt()).min(f64::MAX)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn norm_neither_overflows_nor_underflows() {
+        assert_eq!(norm(&[3.0, 4.0]), 5.0);
+        assert_eq!(norm(&[3e300, 4e300]), 5e300);
+        assert_eq!(norm(&[3e-300, 4e-300]), 5e-300);
+        assert_eq!(norm(&[0.0, 0.0]), 0.0);
+        assert_eq!(norm(&[f64::MAX, f64::MAX]), f64::MAX);
+        assert_eq!(norm(&[f64::INFINITY, 1.0]), f64::INFINITY);
+        assert_eq!(norm(&[f64::NAN, 1.0]), f64::INFINITY);
+    }
 
     /// 2⁻¹⁰⁰: far below f64's resolution at 1, well within DD's.
     const TINY: f64 = 7.888_609_052_210_118e-31;

@@ -272,7 +272,7 @@ impl Ctx<'_> {
         };
         let bounds: Vec<Bound> = match (&e.value, &e.tol, &e.min, &e.max) {
             (Some(v), Some(t), None, None) => {
-                let tol = self.tolerance(name, t, dim)?;
+                let tol = self.tolerance(t, dim)?;
                 self.values(name, v, "value", shape, dim)?
                     .into_iter()
                     .map(|value| Bound::Value { value, tol })
@@ -336,7 +336,7 @@ impl Ctx<'_> {
         shape: Shape,
         dim: Dim,
     ) -> Result<Vec<f64>, Diagnostic> {
-        let q = |x: &Quantity| self.expected(name, &Spanned::new(v.span(), x.clone()), key, dim);
+        let q = |x: &Quantity| self.quantity(&Spanned::new(v.span(), x.clone()), key, dim);
         let bad = |what: &str| self.err(v.span(), format!("`{name}`: `{key}` must be {what}"));
         match (shape, v.get_ref()) {
             (Shape::Scalar, ExpectValue::One(x)) => Ok(vec![q(x)?]),
@@ -374,28 +374,7 @@ impl Ctx<'_> {
 
     /// `tol`: a plain number (absolute, file units), `"0.5%"` (relative) or a
     /// quantity with its own unit (absolute).
-    /// An expected quantity in SI, which must also be finite in the file's
-    /// units, where `check` shows it.
-    fn expected(
-        &self,
-        name: &str,
-        q: &Spanned<Quantity>,
-        key: &str,
-        dim: Dim,
-    ) -> Result<f64, Diagnostic> {
-        let si = self.quantity(q, key, dim)?;
-        self.file_quantity(q, key, dim)?;
-        // Back from SI: the round trip can round past the largest f64.
-        if !(si / self.units.factor(dim).value()).is_finite() {
-            return Err(self.err(
-                q.span(),
-                format!("`{name}`: `{key}` is beyond the largest number in the file's units"),
-            ));
-        }
-        Ok(si)
-    }
-
-    fn tolerance(&self, name: &str, t: &Spanned<Quantity>, dim: Dim) -> Result<Tol, Diagnostic> {
+    fn tolerance(&self, t: &Spanned<Quantity>, dim: Dim) -> Result<Tol, Diagnostic> {
         let tol = match t.get_ref() {
             Quantity::Text(s) if s.trim_end().ends_with('%') => {
                 let num = s.trim_end().trim_end_matches('%').trim();
@@ -408,7 +387,7 @@ impl Ctx<'_> {
                     }
                 }
             }
-            _ => Tol::Abs(self.expected(name, t, "tol", dim)?),
+            _ => Tol::Abs(self.quantity(t, "tol", dim)?),
         };
         match tol {
             Tol::Abs(x) | Tol::Rel(x) if x >= 0.0 => Ok(tol),

@@ -239,20 +239,18 @@ impl Ctx<'_> {
         let child = match files.cache.get(&canonical) {
             Some(m) => m.clone(),
             None => {
-                let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                let source = crate::source_of(&shown_name, bytes).map_err(|d| {
+                // An error inside says where it was included from, as
+                // compilers do: one note per level, innermost first.
+                let included_here = |d: Diagnostic| {
                     let (line, col) = self.source.line_col(inc.span().start);
                     d.included_from(format!("{}:{line}:{col}", self.source.name))
-                })?;
+                };
+                let bytes = std::fs::read(&shown).map_err(unreadable)?;
+                let source = crate::source_of(&shown_name, bytes).map_err(included_here)?;
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();
-                // An error inside says where it was included from, as
-                // compilers do: one note per level, innermost first.
-                let child = child.map_err(|d| {
-                    let (line, col) = self.source.line_col(inc.span().start);
-                    d.included_from(format!("{}:{line}:{col}", self.source.name))
-                })?;
+                let child = child.map_err(included_here)?;
                 files.cache.insert(canonical, child.clone());
                 child
             }

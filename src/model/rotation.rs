@@ -215,21 +215,15 @@ impl Ctx<'_> {
                 let q = r.quaternion.as_ref().expect("form is quaternion");
                 let v = self.floats(q, "quaternion", 4)?;
                 // Scaled, so that a huge component gives its length, not inf.
-                let big = v.iter().fold(0.0_f64, |a, x| a.max(x.abs()));
-                let norm = if big > 0.0 {
-                    big * v.iter().map(|x| (x / big) * (x / big)).sum::<f64>().sqrt()
-                } else {
-                    0.0
-                };
+                let norm = crate::numeric::norm(&v);
                 if !((norm - 1.0).abs() <= QUATERNION_TOLERANCE) {
-                    // Beyond f64 only when a component is near its largest.
-                    // (`{}` of 1e300 is 301 digits.)
-                    let length = if norm.is_finite() && norm < 1e6 {
+                    // (`{}` of 1e300 is 301 digits; `norm` stops at f64::MAX.)
+                    let length = if norm < 1e6 {
                         format!("{norm}")
-                    } else if norm.is_finite() {
+                    } else if norm < f64::MAX {
                         format!("{norm:e}")
                     } else {
-                        format!("above {big:e}")
+                        format!("above {:e}", f64::MAX)
                     };
                     return Err(self
                         .err(q.span(), format!("`quaternion` must have unit length, got length {length}"))

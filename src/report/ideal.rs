@@ -199,7 +199,7 @@ pub fn idealisation(
     if !moments.iter().all(|x| x.is_finite()) {
         return Err(SummaryError::NotFinite {
             what: "principal moments with the parts made solid",
-            blame: super::Blame::Parts,
+            blame: super::Blame::Parts(super::Contribution::SecondMoment),
         });
     }
     Ok(Some(Idealisation {

@@ -201,8 +201,9 @@ pub enum SummaryError {
 /// What a result that overflows is blamed on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Blame {
-    /// The parts: the one that contributes most is named.
-    Parts,
+    /// The parts, through a sum of what each contributes: the one that
+    /// contributes most is named.
+    Parts(Contribution),
     /// The reference point (`about`), through m·d².
     About,
     /// The angular velocity (H, T) or acceleration (M).
@@ -222,6 +223,17 @@ impl std::fmt::Display for SummaryError {
     }
 }
 
+/// What each part adds to a sum that overflows.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Contribution {
+    /// m (the total mass).
+    Mass,
+    /// m·c (the centre of mass).
+    FirstMoment,
+    /// m·d² about the centre of mass and its own tensor (the inertia).
+    SecondMoment,
+}
+
 const WRONG_UNITS: &str = "are sizes, masses or offsets in the wrong units?";
 
 impl SummaryError {
@@ -231,7 +243,7 @@ impl SummaryError {
     /// command line gave it: `analysis` is what `summarize` was given).
     pub fn diagnostic(&self, model: &Model, analysis: &Analysis, source: &Source) -> Diagnostic {
         let message = self.to_string();
-        let SummaryError::NotFinite { what, blame } = *self else {
+        let SummaryError::NotFinite { blame, .. } = *self else {
             return Diagnostic::file(&source.name, message);
         };
         let at =
@@ -245,7 +257,7 @@ impl SummaryError {
                 .help(help),
             };
         match blame {
-            Blame::Parts => match largest_contributor(model, what) {
+            Blame::Parts(kind) => match largest_contributor(model, kind) {
                 Some(p) => source
                     .error(p.span.clone(), &message)
                     .label(format!("`{}` contributes the most", p.name))
@@ -274,11 +286,10 @@ impl SummaryError {
     }
 }
 
-/// The part whose contribution to `what` is largest: its |mass| for the
-/// total mass, |m|·|c| for the centre of mass, and for moments of inertia
-/// the larger of |m|·d² (d from the centre of mass) and the trace of its
-/// own tensor, compared by logarithm so that none of them overflows.
-fn largest_contributor<'m>(model: &'m Model, what: &str) -> Option<&'m crate::model::Part> {
+/// The part whose contribution is largest: its |mass|, |m|·|c|, or the
+/// larger of |m|·d² (d from the centre of mass) and the trace of its own
+/// tensor, compared by logarithm so that none of them overflows.
+fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::model::Part> {
     let parts = &model.parts;
     let ln_norm = |v: Vector3<f64>| {
         // ln |v| without overflow: scale by the largest component.
@@ -300,10 +311,10 @@ fn largest_contributor<'m>(model: &'m Model, what: &str) -> Option<&'m crate::mo
     };
     let score = |p: &crate::model::Part| {
         let ln_m = p.mass.abs().ln();
-        match what {
-            "total mass" => ln_m,
-            "centre of mass" => ln_m + ln_norm(p.center),
-            _ => {
+        match kind {
+            Contribution::Mass => ln_m,
+            Contribution::FirstMoment => ln_m + ln_norm(p.center),
+            Contribution::SecondMoment => {
                 // (c − com) / 2 cannot overflow; add ln 2 back.
                 let d = ln_norm(p.center / 2.0 - com / 2.0) + std::f64::consts::LN_2;
                 let own = p.own_second_moment.trace().abs().ln();
@@ -408,10 +419,14 @@ pub fn summarize(
     let f_inertia = u.factor(Dim::INERTIA).dd();
     let mass_dd = body.mass * f_mass;
     let mass = mass_dd.f64();
-    finite(&[mass], "total mass", Blame::Parts)?;
+    finite(&[mass], "total mass", Blame::Parts(Contribution::Mass))?;
     cut_outs_leave_a_body(model, &body, mass)?;
     let com = body.center_of_mass.map(|c| (c * f_length).f64());
-    finite(&com, "centre of mass", Blame::Parts)?;
+    finite(
+        &com,
+        "centre of mass",
+        Blame::Parts(Contribution::FirstMoment),
+    )?;
     let about: [DD; 3] = match analysis.about {
         Some(a) => [a.x, a.y, a.z].map(DD::of),
         None => body.center_of_mass,
@@ -426,7 +441,7 @@ pub fn summarize(
     finite(
         i_com_f.as_flattened(),
         "inertia about the centre of mass",
-        Blame::Parts,
+        Blame::Parts(Contribution::SecondMoment),
     )?;
     finite(
         i_ref_f.as_flattened(),
@@ -441,7 +456,7 @@ pub fn summarize(
     finite(
         &m_com,
         "principal moments about the centre of mass",
-        Blame::Parts,
+        Blame::Parts(Contribution::SecondMoment),
     )?;
     finite(
         &m_ref,
@@ -451,7 +466,11 @@ pub fn summarize(
     let radii = p_com
         .moments
         .map(|i| ((i * f_inertia) / mass_dd).sqrt().f64());
-    finite(&radii, "radii of gyration", Blame::Parts)?;
+    finite(
+        &radii,
+        "radii of gyration",
+        Blame::Parts(Contribution::SecondMoment),
+    )?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
     let shares = ideal::shares(&model.parts, &body, &p_com);
     let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;

@@ -14,12 +14,7 @@ const BODY: &str = "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncent
 
 /// A scratch directory for one test, emptied first.
 fn scratch(name: &str) -> PathBuf {
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join("check")
-        .join(name);
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch("check", name)
 }
 
 fn write(dir: &Path, file: &str, expect: &str) -> String {

@@ -559,9 +559,7 @@ fn output_file_is_written_whole_or_not_at_all() {
 
 #[test]
 fn output_through_a_symlink_keeps_the_link_and_a_device_is_written_not_replaced() {
-    let dir = std::env::temp_dir().join(format!("massprop-output-link-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch("cli", "output-link");
     let real = dir.join("real.json");
     std::fs::write(&real, "old").unwrap();
     let link = dir.join("link.json");
@@ -604,9 +602,7 @@ fn a_closed_stderr_is_not_a_panic() {
 
 #[test]
 fn output_onto_an_input_part_file_is_refused() {
-    let dir = std::env::temp_dir().join(format!("massprop-output-self-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch("cli", "output-self");
     let part = dir.join("part.toml");
     std::fs::copy(BENT_PLATE, &part).unwrap();
     let before = std::fs::read(&part).unwrap();
@@ -628,9 +624,7 @@ fn output_onto_an_input_part_file_is_refused() {
 #[test]
 fn a_named_pipe_is_read_like_a_file() {
     // `massprop report <(generate)` hands over a pipe, not a regular file.
-    let dir = std::env::temp_dir().join(format!("massprop-fifo-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch("cli", "fifo");
     let fifo = dir.join("part.toml");
     let made = std::process::Command::new("mkfifo").arg(&fifo).status();
     assert!(made.is_ok_and(|s| s.success()), "mkfifo (coreutils) failed");

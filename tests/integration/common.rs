@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 
 use std::io::Write;
+use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
 
 /// Run the built `massprop` binary.
@@ -27,4 +28,15 @@ pub fn massprop_stdin(args: &[&str], input: &str) -> Output {
         .write_all(input.as_bytes())
         .expect("stdin accepts the input");
     child.wait_with_output().expect("massprop finishes")
+}
+
+/// A scratch directory for one test, under cargo's per-target temporary
+/// directory, emptied first: `group/name`.
+pub fn scratch(group: &str, name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join(group)
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
 }

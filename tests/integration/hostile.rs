@@ -23,7 +23,6 @@ use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRu
 use serde_json::Value;
 use std::cell::RefCell;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::Duration;
 
@@ -36,29 +35,6 @@ const HANG: Duration = Duration::from_secs(20);
 
 // ---------------------------------------------------------------------------
 // Running massprop in process
-
-/// A scratch directory, unique to this process and call, removed on drop.
-struct Scratch(PathBuf);
-
-impl Scratch {
-    fn new(name: &str) -> Scratch {
-        static N: AtomicUsize = AtomicUsize::new(0);
-        let dir = std::env::temp_dir().join(format!(
-            "massprop-hostile-{name}-{}-{}",
-            std::process::id(),
-            N.fetch_add(1, Ordering::Relaxed)
-        ));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        Scratch(dir)
-    }
-}
-
-impl Drop for Scratch {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
 
 /// `massprop ARGS` in process, on its own thread: Err(message) if it panics
 /// or takes longer than `HANG`.
@@ -845,9 +821,9 @@ fn part_file() -> BoxedStrategy<String> {
 
 #[test]
 fn generated_part_files_give_finite_results_or_diagnostics() {
-    let dir = Scratch::new("generated");
+    let dir = crate::common::scratch("hostile", "generated");
     property("generated", GENERATED, part_file(), |text| {
-        hostile_file(&dir.0, "generated.toml", text.as_bytes())
+        hostile_file(&dir, "generated.toml", text.as_bytes())
             .map_err(|e| format!("{e}\n--- input ---\n{text}"))
     });
 }
@@ -1009,20 +985,20 @@ fn apply(text: &[u8], m: &Mutation) -> Vec<u8> {
 #[test]
 fn mutated_example_files_give_finite_results_or_diagnostics() {
     let shapes = Path::new(env!("CARGO_MANIFEST_DIR")).join("shapes");
-    let dir = Scratch::new("mutated");
+    let dir = crate::common::scratch("hostile", "mutated");
     // robot-arm.toml includes motor-bracket.toml by a relative path: the
     // mutants sit next to an intact copy.
     std::fs::copy(
         shapes.join("motor-bracket.toml"),
-        dir.0.join("motor-bracket.toml"),
+        dir.join("motor-bracket.toml"),
     )
     .unwrap();
     let originals: Vec<Vec<u8>> = EXAMPLES
         .iter()
         .map(|f| std::fs::read(shapes.join(f)).unwrap())
         .collect();
-    std::fs::copy(shapes.join("robot-arm.toml"), dir.0.join("arm.toml")).unwrap();
-    let bracket = dir.0.join("motor-bracket.toml");
+    std::fs::copy(shapes.join("robot-arm.toml"), dir.join("arm.toml")).unwrap();
+    let bracket = dir.join("motor-bracket.toml");
     let bracket_index = EXAMPLES
         .iter()
         .position(|f| *f == "motor-bracket.toml")
@@ -1039,14 +1015,14 @@ fn mutated_example_files_give_finite_results_or_diagnostics() {
                 String::from_utf8_lossy(&text)
             )
         };
-        let computed = hostile_file(&dir.0, "mutant.toml", &text).map_err(context)?;
+        let computed = hostile_file(&dir, "mutant.toml", &text).map_err(context)?;
         if EXAMPLES[*which] != "motor-bracket.toml" {
             return Ok(computed);
         }
         // The mutant as a sub-assembly: the intact robot arm includes it
         // (twice), and errors inside it must still name the including file.
         std::fs::write(&bracket, &text).unwrap();
-        let arm = hostile_including(dir.0.join("arm.toml").to_str().unwrap(), &[&text])
+        let arm = hostile_including(dir.join("arm.toml").to_str().unwrap(), &[&text])
             .map_err(|e| context(format!("included by robot-arm.toml: {e}")));
         std::fs::write(&bracket, &originals[bracket_index]).unwrap();
         Ok(computed | arm?)
