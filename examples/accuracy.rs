@@ -84,25 +84,25 @@ fn inertia_rows(c: &Matrix3<f64>) -> [[f64; 3]; 3] {
 /// The two plain-f64 composers, from the same parsed parts (file units).
 fn baseline(model: &Model, method: Method) -> Result {
     let parts = &model.parts;
-    let own = |p: &massprop::model::Part| -> Matrix3<f64> {
-        let m: f64 = compose::mass_of(p.shape, &p.spec);
-        let j: M3<f64> = compose::own_second_moment(p.shape, &p.spec, m);
+    let own = |p: &massprop::part::Part| -> Matrix3<f64> {
+        let m: f64 = p.mass();
+        let j: M3<f64> = p.own_second_moment(m);
         Matrix3::from_fn(|i, k| j[i][k])
     };
-    let center = |p: &massprop::model::Part| {
-        nalgebra::Vector3::from(compose::centroid(&p.spec.place).map(|c| c.f64()))
+    let center = |p: &massprop::part::Part| {
+        nalgebra::Vector3::from(p.centroid().map(|c| c.f64()))
     };
     let mut mass = 0.0;
     let mut first = nalgebra::Vector3::zeros();
     for p in parts {
-        let m: f64 = compose::mass_of(p.shape, &p.spec);
+        let m: f64 = p.mass();
         mass += m;
         first += center(p) * m;
     }
     let com = first / mass;
     let mut c = Matrix3::zeros();
     for p in parts {
-        let m: f64 = compose::mass_of(p.shape, &p.spec);
+        let m: f64 = p.mass();
         let d = match method {
             Method::Origin => center(p),
             _ => center(p) - com,

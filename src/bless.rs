@@ -244,5 +244,5 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
 }
 
 fn write_atomically(path: &str, text: &str) -> Result<(), Diagnostic> {
-    crate::write_atomically(path, text, "the blessed file")
+    crate::io::write_atomically(path, text, "the blessed file")
 }

@@ -14,10 +14,8 @@
 
 use crate::eigen::jacobi;
 use crate::mass::Body;
-use crate::model::rotation::Orientation;
-use crate::model::{MassSpec, Part, Place, Spec};
+use crate::part::Part;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
-use crate::shapes::Shape;
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -74,13 +72,13 @@ fn compose_standard(parts: &[Part]) -> Body {
     // cannot overflow a first moment Σ mᵢcᵢ the centre itself fits in.
     let mut mass = Sum::default();
     for p in parts {
-        mass.add(mass_of::<f64>(p.shape, &p.spec));
+        mass.add(p.mass::<f64>());
     }
     let total = mass.value();
     let mut first = [Sum::default(); 3];
     for p in parts {
-        let w = mass_of::<f64>(p.shape, &p.spec) / total;
-        let c = centroid(&p.spec.place);
+        let w = p.mass::<f64>() / total;
+        let c = p.centroid();
         for (f, ci) in first.iter_mut().zip(&c) {
             f.add(w * ci.hi);
         }
@@ -89,12 +87,12 @@ fn compose_standard(parts: &[Part]) -> Body {
     let mut sum = [[Sum::default(); 3]; 3];
     let mut s = [Sum::default(); 3];
     for p in parts {
-        let m: f64 = mass_of(p.shape, &p.spec);
-        let c = centroid(&p.spec.place);
+        let m: f64 = p.mass();
+        let c = p.centroid();
         // c.hi − ĉ is exact when they are close (Sterbenz); c.lo carries the
         // rest of a centroid formed from a corner and edges.
         let d: [f64; 3] = std::array::from_fn(|i| (c[i].hi - c0[i]) + c[i].lo);
-        let own: M3<f64> = own_second_moment(p.shape, &p.spec, m);
+        let own: M3<f64> = p.own_second_moment(m);
         for i in 0..3 {
             // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
             let md = m * d[i];
@@ -129,23 +127,23 @@ fn compose_extended(parts: &[Part]) -> Body {
     let zero = DD::of(0.0);
     let mut total = zero;
     for p in parts {
-        total += mass_of::<DD>(p.shape, &p.spec);
+        total += p.mass::<DD>();
     }
     // Σ (mᵢ/m) cᵢ, as in `compose_standard`.
     let mut c0 = [zero; 3];
     for p in parts {
-        let w = mass_of::<DD>(p.shape, &p.spec) / total;
-        for (f, ci) in c0.iter_mut().zip(centroid(&p.spec.place)) {
+        let w = p.mass::<DD>() / total;
+        for (f, ci) in c0.iter_mut().zip(p.centroid()) {
             *f += w * ci;
         }
     }
     let mut c = [[zero; 3]; 3];
     let mut s = [zero; 3];
     for p in parts {
-        let m: DD = mass_of(p.shape, &p.spec);
-        let cen = centroid(&p.spec.place);
+        let m: DD = p.mass();
+        let cen = p.centroid();
         let d: [DD; 3] = std::array::from_fn(|i| cen[i] - c0[i]);
-        let own: M3<DD> = own_second_moment(p.shape, &p.spec, m);
+        let own: M3<DD> = p.own_second_moment(m);
         for i in 0..3 {
             let md = m * d[i];
             s[i] += md;
@@ -165,182 +163,6 @@ fn compose_extended(parts: &[Part]) -> Body {
         center_of_mass: std::array::from_fn(|i| c0[i] + s[i] / total),
         second_moment: c,
     }
-}
-
-/// |v| without overflow or underflow in the squares: scaled by a power of
-/// two near max |vᵢ|, which is exact.
-fn norm<T: Real>(v: [T; 3]) -> T {
-    let big = v.iter().fold(0.0f64, |m, x| m.max(x.f64().abs()));
-    if big == 0.0 || !big.is_finite() {
-        return T::of(big);
-    }
-    let scale = 2f64.powi(big.log2().floor() as i32);
-    let w = v.map(|x| x / T::of(scale));
-    T::of(scale) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt()
-}
-
-fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
-    std::array::from_fn(|i| T::of(a[i]) - T::of(b[i]))
-}
-
-/// Mass of a part (file units): given, or density times volume, area or
-/// length; negative for a cut-out.
-pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
-    let m: T = unsigned_mass_of(shape, spec);
-    if spec.removed { -m } else { m }
-}
-
-fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
-    match spec.mass {
-        MassSpec::Given(m) => T::of(m),
-        MassSpec::Density(rho) => {
-            let measure = match (&spec.place, shape) {
-                (Place::Centered { extent: e, .. }, _) => {
-                    let e: [T; 3] = e.map(T::of);
-                    shape.measure_of(&e[..shape.dim_count()])
-                }
-                (Place::Edges { edges, .. }, _) => edges[..shape.edge_count()]
-                    .iter()
-                    .fold(T::of(1.0), |acc, e| acc * norm(e.map(T::of))),
-                (Place::FromTo { from, to }, _) => norm(sub::<T>(*to, *from)),
-                (Place::Given { .. }, _) => T::of(1.0),
-                (Place::Vertices(v), _) => {
-                    let d = triangle_offsets::<T>(v);
-                    let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
-                    let c = [
-                        a[1] * b[2] - a[2] * b[1],
-                        a[2] * b[0] - a[0] * b[2],
-                        a[0] * b[1] - a[1] * b[0],
-                    ];
-                    norm(c) / T::of(2.0)
-                }
-            };
-            T::of(rho) * measure
-        }
-    }
-}
-
-/// Centroid of a part (file units), in double-double: a corner plus half
-/// its edges is not an f64 in general, and far from the origin its rounding
-/// would move the part relative to its neighbours.
-pub fn centroid(place: &Place) -> [DD; 3] {
-    match place {
-        Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
-        Place::Vertices(v) => triangle_centroid(v),
-        Place::Edges { corner, edges } => std::array::from_fn(|i| {
-            edges
-                .iter()
-                .fold(DD::of(corner[i]), |acc, e| acc + DD::of(e[i] * 0.5))
-        }),
-        Place::FromTo { from, to } => {
-            std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
-        }
-    }
-}
-
-fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
-    std::array::from_fn(|i| (DD::of(v[0][i]) + DD::of(v[1][i]) + DD::of(v[2][i])) / DD::of(3.0))
-}
-
-/// A triangle's vertices less its centroid, in double-double before the
-/// rounding to T: far from the origin the offsets keep their digits.
-fn triangle_offsets<T: Real>(v: &[[f64; 3]; 3]) -> [[T; 3]; 3] {
-    let g = triangle_centroid(v);
-    v.map(|p| std::array::from_fn(|i| T::of_dd(DD::of(p[i]) - g[i])))
-}
-
-fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
-    std::array::from_fn(|i| a[i] - b[i])
-}
-
-/// ∫ρρᵀ dm of a part about its own centroid, in the file's axes and units.
-///
-/// A uniform segment of length a centred on 0 has ∫x² dm = m a²/12, and each
-/// shape is a product of such segments: R diag(m aₖ²/12) Rᵀ for a turned
-/// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
-/// needs neither their lengths nor a rotation.
-pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
-    let zero = T::of(0.0);
-    let twelfth = m / T::of(12.0);
-    let mut j = [[zero; 3]; 3];
-    let mut add_outer = |e: [T; 3]| {
-        for a in 0..3 {
-            for b in 0..3 {
-                j[a][b] = j[a][b] + twelfth * e[a] * e[b];
-            }
-        }
-    };
-    match &spec.place {
-        Place::Centered {
-            extent,
-            orientation,
-            ..
-        } => {
-            let dims: [T; 3] = extent.map(T::of);
-            let d = shape.second_moments(m, &dims[..shape.dim_count()]);
-            if let Orientation::Identity = orientation {
-                return std::array::from_fn(|a| {
-                    std::array::from_fn(|b| if a == b { d[a] } else { zero })
-                });
-            }
-            let r: M3<T> = orientation.matrix();
-            for a in 0..3 {
-                for b in a..3 {
-                    j[a][b] = r[a][0] * d[0] * r[b][0]
-                        + r[a][1] * d[1] * r[b][1]
-                        + r[a][2] * d[2] * r[b][2];
-                    j[b][a] = j[a][b];
-                }
-            }
-        }
-        Place::Edges { edges, .. } => {
-            for e in &edges[..shape.edge_count()] {
-                add_outer(e.map(T::of));
-            }
-        }
-        Place::FromTo { from, to } => add_outer(sub(*to, *from)),
-        // ∫ρρᵀ dm of a uniform triangle about its centroid g is
-        // (m/12) Σ dᵢdᵢᵀ with dᵢ = vᵢ − g (from ∫ρρᵀ dA = (A/12)(Σ vᵢvᵢᵀ + s sᵀ),
-        // s = Σ vᵢ, about any origin).
-        Place::Vertices(v) => {
-            for d in triangle_offsets::<T>(v) {
-                add_outer(d);
-            }
-        }
-        Place::Given {
-            inertia,
-            orientation,
-            ..
-        } => {
-            // ∫ρρᵀ dm = tr(I)/2 E − I; a cut-out's is subtracted.
-            let i: M3<T> = inertia.map(|r| r.map(T::of));
-            let half_trace = (i[0][0] + i[1][1] + i[2][2]) / T::of(2.0);
-            let sign = T::of(if m < zero { -1.0 } else { 1.0 });
-            let local: M3<T> = std::array::from_fn(|a| {
-                std::array::from_fn(|b| {
-                    sign * if a == b {
-                        half_trace - i[a][a]
-                    } else {
-                        -i[a][b]
-                    }
-                })
-            });
-            let r: M3<T> = orientation.matrix();
-            for a in 0..3 {
-                for b in a..3 {
-                    let mut v = zero;
-                    for k in 0..3 {
-                        for l in 0..3 {
-                            v = v + r[a][k] * local[k][l] * r[b][l];
-                        }
-                    }
-                    j[a][b] = v;
-                    j[b][a] = v;
-                }
-            }
-        }
-    }
-    j
 }
 
 /// Principal moments (ascending) and axes of a body, with the moments that
@@ -469,6 +291,8 @@ mod tests {
     use super::*;
     use crate::mass::inertia_of;
     use crate::model::rotation::Orientation;
+    use crate::part::{MassSpec, Place, Spec};
+    use crate::shapes::Shape;
     use nalgebra::Matrix3;
 
     #[derive(Debug, PartialEq)]
@@ -611,9 +435,6 @@ mod tests {
                     parts.push(Part {
                         name: String::new(),
                         shape: Shape::Box,
-                        mass: m,
-                        center: Vector3::from(center),
-                        own_second_moment: Matrix3::zeros(),
                         spec: Spec {
                             mass: MassSpec::Given(m),
                             place: Place::Centered {
@@ -670,9 +491,9 @@ mod tests {
             if precision == Precision::Standard {
                 let mut plain = 0.0;
                 for p in &parts {
-                    let d = p.center.x - body.center_of_mass[0].f64();
-                    plain +=
-                        p.mass * d * d + own_second_moment::<f64>(p.shape, &p.spec, p.mass)[0][0];
+                    let m: f64 = p.mass();
+                    let d = p.centroid()[0].f64() - body.center_of_mass[0].f64();
+                    plain += m * d * d + p.own_second_moment::<f64>(m)[0][0];
                 }
                 let plain_err = (plain / exact - 1.0).abs();
                 eprintln!("plain summation: relative error {plain_err:e}");

@@ -10,7 +10,9 @@
 use crate::Output;
 use crate::cli::{DiffArgs, Format};
 use crate::diag::{Diagnostic, Source};
-use crate::model::{Model, Part};
+use crate::model::Model;
+use crate::shapes::Shape;
+use nalgebra::{Matrix3, Vector3};
 use crate::numeric::norm;
 use crate::report::table::{Units, fmt_num, new_table};
 use crate::report::{self, Products, Summary};
@@ -28,6 +30,17 @@ struct Side {
     source: Source,
     model: Model,
     summary: Summary,
+    /// The model's parts in SI, in its order.
+    parts: Vec<PartView>,
+}
+
+/// What `diff` compares of a part, SI.
+struct PartView {
+    name: String,
+    shape: Shape,
+    mass: f64,
+    center: Vector3<f64>,
+    second_moment: Matrix3<f64>,
 }
 
 fn load(path: &str, precision: crate::compose::Precision) -> Result<Side, Diagnostic> {
@@ -45,10 +58,25 @@ fn load(path: &str, precision: crate::compose::Precision) -> Result<Side, Diagno
     }
     let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
         .map_err(|e| e.diagnostic(&model, &model.analysis, &source))?;
+    let parts = model
+        .parts
+        .iter()
+        .map(|p| {
+            let si = p.si(model.units);
+            PartView {
+                name: p.name.clone(),
+                shape: p.shape,
+                mass: si.mass,
+                center: si.center,
+                second_moment: si.second_moment,
+            }
+        })
+        .collect();
     Ok(Side {
         source,
         model,
         summary,
+        parts,
     })
 }
 
@@ -132,7 +160,7 @@ pub fn run(args: &DiffArgs) -> Result<Output, Diagnostic> {
             d.message()
         ))
     })?;
-    let parts = part_diff(&old.model.parts, &new.model.parts, length, tol);
+    let parts = part_diff(&old.parts, &new.parts, length, tol);
     let changed = quantities.iter().any(|q| q.changed) || !parts.is_empty();
     let d = Diff {
         old: &old,
@@ -283,7 +311,7 @@ fn quantities(
 /// Match parts by name, the k-th part of a name in the old file with the
 /// k-th of that name in the new one (unnamed parts are `part N`, so they
 /// match by position), and say what was added, removed or changed.
-fn part_diff(old: &[Part], new: &[Part], length: f64, tol: f64) -> PartDiff {
+fn part_diff(old: &[PartView], new: &[PartView], length: f64, tol: f64) -> PartDiff {
     let mut unmatched_new: HashMap<&str, VecDeque<usize>> = HashMap::new();
     for (i, p) in new.iter().enumerate() {
         unmatched_new.entry(&p.name).or_default().push_back(i);
@@ -321,7 +349,7 @@ fn part_diff(old: &[Part], new: &[Part], length: f64, tol: f64) -> PartDiff {
 /// the distance moved, relative to the body's length scale; second moment
 /// (∫ρρᵀ dm about the centroid) by the norm of its change, relative to the
 /// old part's (the new one's if the old is zero, as for a point mass).
-fn part_changes(o: &Part, n: &Part, length: f64, tol: f64) -> Vec<&'static str> {
+fn part_changes(o: &PartView, n: &PartView, length: f64, tol: f64) -> Vec<&'static str> {
     let mut what = Vec::new();
     if o.shape != n.shape {
         what.push("shape");
@@ -335,7 +363,7 @@ fn part_changes(o: &Part, n: &Part, length: f64, tol: f64) -> Vec<&'static str> 
     if !(moved <= tol * length) {
         what.push("centroid");
     }
-    let (co, cn) = (o.second_moment(), n.second_moment());
+    let (co, cn) = (o.second_moment, n.second_moment);
     let scale = pick(norm(co.as_slice()), norm(cn.as_slice()));
     if !(norm((cn - co).as_slice()) <= tol * scale) {
         what.push("second_moment");
@@ -380,7 +408,7 @@ struct JsonDiff<'a> {
 }
 
 fn render_json(d: &Diff) -> String {
-    let (op, np) = (&d.old.model.parts, &d.new.model.parts);
+    let (op, np) = (&d.old.parts, &d.new.parts);
     let json = JsonDiff {
         format_version: FORMAT_VERSION,
         old: &d.old.source.name,
@@ -463,7 +491,7 @@ fn title(side: &Side) -> String {
 }
 
 /// A part's name, numbered when the name is not unique in its file.
-fn part_label(parts: &[Part], index: usize) -> String {
+fn part_label(parts: &[PartView], index: usize) -> String {
     let name = &parts[index].name;
     if parts.iter().filter(|p| &p.name == name).count() > 1 {
         let k = parts[..=index].iter().filter(|p| &p.name == name).count();
@@ -473,7 +501,7 @@ fn part_label(parts: &[Part], index: usize) -> String {
     }
 }
 
-fn describe_lone(p: &Part, u: &Units) -> String {
+fn describe_lone(p: &PartView, u: &Units) -> String {
     let c = p.center.as_slice();
     format!(
         "{}, {} {} at ({}, {}, {}) {}",
@@ -487,7 +515,7 @@ fn describe_lone(p: &Part, u: &Units) -> String {
     )
 }
 
-fn describe_change(o: &Part, n: &Part, what: &[&str], u: &Units) -> String {
+fn describe_change(o: &PartView, n: &PartView, what: &[&str], u: &Units) -> String {
     what.iter()
         .map(|w| match *w {
             "shape" => format!("shape {} → {}", o.shape.name(), n.shape.name()),
@@ -558,7 +586,7 @@ fn render_table(d: &Diff) -> String {
     }
     let _ = writeln!(out, "\n{t}");
 
-    let (op, np) = (&d.old.model.parts, &d.new.model.parts);
+    let (op, np) = (&d.old.parts, &d.new.parts);
     let p = &d.parts;
     if p.is_empty() {
         let _ = writeln!(out, "\nparts: none added, removed or changed");

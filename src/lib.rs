@@ -11,18 +11,21 @@ pub mod compose;
 pub mod diag;
 pub mod diff;
 pub mod eigen;
+pub mod io;
 pub mod mass;
 pub mod materials;
 pub mod model;
 pub mod numeric;
+pub mod part;
 pub mod report;
 pub mod shapes;
 pub mod units;
 
 use cli::{Cli, Command, Format, ReportArgs};
-use diag::{Diagnostic, Source};
+use diag::Diagnostic;
 use model::Model;
-use std::io::Read;
+pub use io::{MAX_FILE_BYTES, read_source};
+use io::write_atomically;
 use units::Dim;
 
 /// What a run that completed prints and the exit status it ends with
@@ -31,81 +34,6 @@ pub struct Output {
     pub stdout: String,
     pub stderr: String,
     pub status: u8,
-}
-
-/// The largest part file read, in bytes: a 100,000-part file of 17-digit
-/// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this
-/// allows ~1.7 million parts in ~8 GB.
-pub const MAX_FILE_BYTES: u64 = 512 << 20;
-
-/// Read a part file, or standard input for `-`, refusing directories and
-/// anything over `MAX_FILE_BYTES`.
-pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    let stdin = path == "-";
-    let name = if stdin { "<stdin>" } else { path };
-    let too_big = || {
-        Diagnostic::file(
-            name,
-            format!(
-                "{} is larger than the limit of {} MiB for a part file",
-                if stdin { "standard input" } else { "the file" },
-                MAX_FILE_BYTES >> 20
-            ),
-        )
-    };
-    let cannot_read = |e: std::io::Error| {
-        let what = if stdin { "standard input" } else { "file" };
-        Diagnostic::file(name, format!("cannot read {what}: {e}"))
-    };
-    // At most the limit and one byte, so that /dev/zero or an endless pipe
-    // cannot read forever.
-    let capped = |reader: &mut dyn Read| -> Result<Vec<u8>, Diagnostic> {
-        let mut bytes = Vec::new();
-        reader
-            .take(MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(cannot_read)?;
-        if bytes.len() as u64 > MAX_FILE_BYTES {
-            return Err(too_big());
-        }
-        Ok(bytes)
-    };
-    if stdin {
-        return source_of(name, capped(&mut std::io::stdin())?);
-    }
-    let meta = std::fs::metadata(path).map_err(cannot_read)?;
-    if meta.is_dir() {
-        return Err(Diagnostic::file(
-            path,
-            "cannot read file: it is a directory (`check` searches directories)",
-        ));
-    }
-    if meta.len() > MAX_FILE_BYTES {
-        return Err(too_big());
-    }
-    // Not only regular files: `massprop report <(generate)` is a pipe.
-    let mut file = std::fs::File::open(path).map_err(cannot_read)?;
-    source_of(path, capped(&mut file)?)
-}
-
-/// A part file's bytes as its source: UTF-8, or an error at the first byte
-/// that is not (with its line and column, as any other error).
-pub(crate) fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
-    match String::from_utf8(bytes) {
-        Ok(text) => Ok(Source::new(name, text)),
-        Err(e) => {
-            let at = e.utf8_error().valid_up_to();
-            let byte = e.as_bytes()[at];
-            // The text up to `at` is valid, so the lossy copy has the same
-            // offsets there; the bad byte shows as U+FFFD under the caret.
-            let lossy = String::from_utf8_lossy(e.as_bytes()).into_owned();
-            let source = Source::new(name, lossy);
-            let at = at.saturating_sub(if source.bom { 3 } else { 0 });
-            Err(source
-                .error(at..at + 1, format!("invalid UTF-8 (byte 0x{byte:02x})"))
-                .help("a part file is UTF-8 text; re-save it as UTF-8"))
-        }
-    }
 }
 
 /// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
@@ -145,56 +73,6 @@ pub fn run(cli: &Cli) -> Result<Output, Diagnostic> {
         }
         None => Ok(out),
     }
-}
-
-/// Replace `path` by `text` through a temporary file in the same directory
-/// and a rename, so an interrupted or failed run never leaves half a file
-/// (`what` names it in the error).
-pub(crate) fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
-    let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
-    // A symlink is written through (the link stays a link, its target gets
-    // the text); something that is not a regular file (/dev/stdout, a FIFO,
-    // a device) cannot be replaced by a rename and is written directly.
-    let resolved = match std::fs::canonicalize(path) {
-        Ok(real) => match std::fs::metadata(&real) {
-            Ok(meta) if !meta.is_file() && !meta.is_dir() => {
-                return std::fs::OpenOptions::new()
-                    .write(true)
-                    .open(&real)
-                    .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-                    .map_err(fail);
-            }
-            _ => real,
-        },
-        Err(_) => std::path::PathBuf::from(path),
-    };
-    let target = resolved.as_path();
-    let dir = target
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.massprop.{}", std::process::id()));
-    // create_new: never through a symlink or file already at that name.
-    let written = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&tmp)
-        .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()));
-    if let Err(e) = written {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(fail(e));
-    }
-    if let Ok(meta) = std::fs::metadata(target) {
-        let _ = std::fs::set_permissions(&tmp, meta.permissions());
-    }
-    std::fs::rename(&tmp, target).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
-    })
 }
 
 fn report(args: &ReportArgs) -> Result<Output, Diagnostic> {

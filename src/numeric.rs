@@ -366,18 +366,52 @@ impl Sum {
     }
 }
 
-/// Euclidean (Frobenius for a matrix) norm without overflow or underflow in
-/// the squares: scaled by the largest magnitude. `f64::MAX` at most for
-/// finite input; infinite if an entry is not finite.
+/// A power of two near max |vᵢ| (1 for a zero or non-finite vector):
+/// dividing by it is exact, and it keeps the squares of the scaled vector
+/// away from overflow and underflow.
+pub fn pow2_scale<T: Real>(v: &[T]) -> f64 {
+    let big = v.iter().fold(0.0f64, |m, x| m.max(x.f64().abs()));
+    if big == 0.0 || !big.is_finite() {
+        return 1.0;
+    }
+    // 2^e from the biased exponent (log2 rounds up to 1024 near f64::MAX);
+    // subnormals take 2⁻¹⁰²², by which dividing them is still exact.
+    let biased = ((big.to_bits() >> 52) & 0x7ff).max(1);
+    f64::from_bits(biased << 52)
+}
+
+/// The scaled Euclidean norm (Frobenius for a matrix), the one used
+/// everywhere: no overflow or underflow in the squares, since the vector is
+/// first divided by `pow2_scale`, which is exact. `f64::MAX` at most for
+/// finite input; infinite if an entry is infinite or NaN.
+pub fn norm_of<T: Real>(v: &[T]) -> T {
+    if v.iter().any(|x| !x.is_finite()) {
+        return T::of(f64::INFINITY);
+    }
+    let scale = pow2_scale(v);
+    let sum = v.iter().fold(T::of(0.0), |acc, &x| {
+        let w = x / T::of(scale);
+        acc + w * w
+    });
+    let r = T::of(scale) * sum.sqrt();
+    if r.f64() > f64::MAX {
+        T::of(f64::MAX)
+    } else {
+        r
+    }
+}
+
+/// `norm_of` for f64.
 pub fn norm(v: &[f64]) -> f64 {
-    let a = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    if a == 0.0 {
-        return 0.0;
-    }
-    if !a.is_finite() || v.iter().any(|x| x.is_nan()) {
-        return f64::INFINITY;
-    }
-    (a * v.iter().map(|x| (x / a).powi(2)).sum::<f64>().sqrt()).min(f64::MAX)
+    norm_of(v)
+}
+
+/// v / |v| for a non-zero finite v, robust to extreme magnitudes.
+pub fn unit(v: &[f64; 3]) -> [f64; 3] {
+    let s = pow2_scale(v);
+    let w = v.map(|x| x / s);
+    let n = norm(&w);
+    w.map(|x| x / n)
 }
 
 #[cfg(test)]
@@ -386,9 +420,12 @@ mod tests {
 
     #[test]
     fn norm_neither_overflows_nor_underflows() {
+        // Two roundings (the sum of squares, the root) and an exact scaling:
+        // within 2 ulps wherever the magnitudes are.
+        let close = |a: f64, b: f64| (a - b).abs() <= 2.0 * f64::EPSILON * b;
         assert_eq!(norm(&[3.0, 4.0]), 5.0);
-        assert_eq!(norm(&[3e300, 4e300]), 5e300);
-        assert_eq!(norm(&[3e-300, 4e-300]), 5e-300);
+        assert!(close(norm(&[3e300, 4e300]), 5e300));
+        assert!(close(norm(&[3e-300, 4e-300]), 5e-300));
         assert_eq!(norm(&[0.0, 0.0]), 0.0);
         assert_eq!(norm(&[f64::MAX, f64::MAX]), f64::MAX);
         assert_eq!(norm(&[f64::INFINITY, 1.0]), f64::INFINITY);

@@ -9,13 +9,13 @@
 //! exactly.
 
 use super::raw::RawPart;
-use super::rotation::{Orientation, to_matrix3};
-use super::{Ctx, MassSpec, Model, Part, Place, RealSize, Spec};
+use super::rotation::Orientation;
+use super::{Ctx, Model};
+use crate::part::{MassSpec, Part, Place, RealSize, Spec};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::shapes::Shape;
 use crate::units::Dim;
-use nalgebra::{Matrix3, Vector3};
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -67,9 +67,6 @@ struct Frame {
     /// The included file's length and mass units in this file's.
     length: f64,
     mass: f64,
-    /// SI, for the parts' SI fields.
-    origin_si: Vector3<f64>,
-    r_si: Matrix3<f64>,
 }
 
 impl Frame {
@@ -134,8 +131,6 @@ impl Frame {
             },
         };
         Part {
-            center: self.origin_si + self.r_si * p.center,
-            own_second_moment: self.r_si * p.own_second_moment * self.r_si.transpose(),
             spec: Spec {
                 mass,
                 place,
@@ -196,12 +191,12 @@ impl Ctx<'_> {
         };
         let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
         let meta = std::fs::metadata(&canonical).map_err(unreadable)?;
-        if meta.len() > crate::MAX_FILE_BYTES {
+        if meta.len() > crate::io::MAX_FILE_BYTES {
             return Err(self.err(
                 inc.span(),
                 format!(
                     "the included `{shown_name}` is larger than the limit of {} MiB",
-                    crate::MAX_FILE_BYTES >> 20
+                    crate::io::MAX_FILE_BYTES >> 20
                 ),
             ));
         }
@@ -246,7 +241,7 @@ impl Ctx<'_> {
                     d.included_from(format!("{}:{line}:{col}", self.source.name))
                 };
                 let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                let source = crate::source_of(&shown_name, bytes).map_err(included_here)?;
+                let source = crate::io::source_of(&shown_name, bytes).map_err(included_here)?;
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();
@@ -284,18 +279,16 @@ impl Ctx<'_> {
             Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
             None => [0.0; 3],
         };
-        let origin_si = match &p.origin {
-            Some(o) => self.vec3(o, "origin", Dim::LENGTH)?,
-            None => Vector3::zeros(),
-        };
+        // Checked in SI too, as every length is.
+        if let Some(o) = &p.origin {
+            self.vec3(o, "origin", Dim::LENGTH)?;
+        }
         let frame = Frame {
             origin,
             r,
             orientation,
             length: ratio(Dim::LENGTH),
             mass: ratio(Dim::MASS),
-            origin_si,
-            r_si: to_matrix3(&r),
         };
         let offset = parts.len();
         for rs in &child.real_sizes {

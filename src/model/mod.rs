@@ -11,12 +11,12 @@ pub mod raw;
 pub mod rotation;
 
 use crate::diag::{Diagnostic, Source};
+use crate::part::{MassSpec, Part, Place, RealSize, Solid, Spec};
 use crate::shapes::Shape;
 use crate::units::{self, Dim, FileUnits, UnitError};
 use nalgebra::{Matrix3, Vector3};
 use raw::{Quantity, RawAnalysis, RawFile, RawPart, Vector};
 use rotation::Orientation;
-use serde::Serialize;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -59,119 +59,19 @@ pub struct Model {
     pub materials: std::collections::BTreeMap<String, f64>,
 }
 
-/// The solid that a thin plate or slender rod idealises.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Solid {
-    /// A plate a × b of thickness t: the box a × b × t.
-    Box,
-    /// A rod of length L and diameter d: the solid circular cylinder.
-    Cylinder,
+/// How a part is turned, and its dimensions (m) as `Shape::second_moments`
+/// takes them.
+type Placement = (Orientation, Vec<f64>);
+
+/// `numeric::norm` of a vector.
+fn vnorm(v: &Vector3<f64>) -> f64 {
+    crate::numeric::norm(v.as_slice())
 }
 
-impl Solid {
-    pub fn name(self) -> &'static str {
-        match self {
-            Solid::Box => "box",
-            Solid::Cylinder => "cylinder",
-        }
-    }
+/// `numeric::unit` of a vector.
+fn vunit(v: &Vector3<f64>) -> Vector3<f64> {
+    Vector3::from(crate::numeric::unit(&[v.x, v.y, v.z]))
 }
-
-/// A plate's `thickness` or a rod's `diameter`.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct RealSize {
-    /// Index of the part in `Model::parts`.
-    pub part: usize,
-    pub solid: Solid,
-    /// Thickness (box) or diameter (cylinder), in the file's length unit.
-    pub size: f64,
-}
-
-/// One primitive, reduced to what composition needs. SI throughout.
-#[derive(Debug, Clone)]
-pub struct Part {
-    /// The part's `name`, or `part N` (1-based position in the file); for
-    /// a part of a sub-assembly, its path: `elbow / motor / stator`.
-    pub name: String,
-    pub shape: Shape,
-    /// kg; negative for a cut-out (`remove = true`).
-    pub mass: f64,
-    /// Centroid in the file's frame, m.
-    pub center: Vector3<f64>,
-    /// ∫ρρᵀ dm about the centroid in the file's axes, kg·m² (for the
-    /// per-part comparison of `diff`; the composer uses `spec`).
-    pub own_second_moment: Matrix3<f64>,
-    /// The part as the file gave it, in the file's units.
-    pub spec: Spec,
-    /// The sub-assemblies the part is in, outermost first (empty for a
-    /// part of the file itself).
-    pub assembly: Vec<String>,
-    /// Its `[[part]]` table in the file (for a part of a sub-assembly, the
-    /// table that includes it), to point at it when a sum overflows.
-    pub span: Range<usize>,
-}
-
-/// A part's numbers as the file gave them, in the file's units (a quantity
-/// written with its own unit converted once, by an exact ratio).
-///
-/// NOTE: the composer works from these, not from the SI values above, and
-/// converts only its results to SI. Converting every input first would
-/// round each coordinate on its own: for parts 10⁹ sizes from the origin in
-/// a millimetre file that alone moves them relative to each other by 1e-7
-/// of their size.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Spec {
-    pub mass: MassSpec,
-    pub place: Place,
-    /// `remove = true`: a cut-out, composed with negative mass.
-    pub removed: bool,
-}
-
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum MassSpec {
-    Given(f64),
-    /// Density per volume, area or length, times the shape's measure.
-    Density(f64),
-}
-
-#[derive(Debug, Clone, PartialEq)]
-pub enum Place {
-    /// `center`, the shape's dimensions as `Shape::second_moments` takes
-    /// them (box [a, b, c], plate [a, b], rod [L], cylinder [R, r, L], disk
-    /// and sphere [R, r]), padded with 0, and the turn of the local axes.
-    Centered {
-        center: [f64; 3],
-        extent: [f64; 3],
-        orientation: Orientation,
-    },
-    /// `corner` and the shape's edges (a plate uses the first two).
-    Edges {
-        corner: [f64; 3],
-        edges: [[f64; 3]; 3],
-    },
-    /// A rod `from` → `to`.
-    FromTo { from: [f64; 3], to: [f64; 3] },
-    /// A thin triangular plate's three vertices in the file's frame.
-    Vertices([[f64; 3]; 3]),
-    /// A given inertia tensor (tensor convention, symmetric, local axes,
-    /// file units) about the centroid `center`, turned by `orientation`.
-    Given {
-        center: [f64; 3],
-        inertia: [[f64; 3]; 3],
-        orientation: Orientation,
-    },
-}
-
-impl Part {
-    /// ∫ρρᵀ dm about the centroid in the file's axes, kg·m².
-    pub fn second_moment(&self) -> Matrix3<f64> {
-        self.own_second_moment
-    }
-}
-
-/// Where a part sits: centroid (m), local axes (columns), edge lengths (m).
-type Placement = (Vector3<f64>, Orientation, Vec<f64>);
 
 /// `[analysis]` in the file's units: reference point (file length), ω
 /// (rad/s), α (rad/s²) — the file's units name no time, so ω and α are SI.
@@ -974,7 +874,7 @@ impl Ctx<'_> {
             | Shape::Triangle => &keys[5..6],
         };
         let edges_given = first(by_edges).is_some();
-        let (center, orientation, dims) = match (first(canonical), first(by_edges)) {
+        let (orientation, dims) = match (first(canonical), first(by_edges)) {
             (Some((a, sa)), Some((b, sb))) => {
                 let (later, earlier, span) = if sa.start > sb.start {
                     (a, b, sa)
@@ -1112,33 +1012,9 @@ impl Ctx<'_> {
             }
             _ => None,
         };
-        let given = match shape {
-            Shape::Inertia => Some(self.given_inertia(p)?),
-            _ => None,
-        };
-        let triangle = (shape == Shape::Triangle).then(|| {
-            // Its own second moment is not diagonal in any frame given:
-            // taken from the composer's (m/12) Σ dᵢdᵢᵀ in SI coordinates.
-            let raw = p
-                .vertices
-                .as_ref()
-                .expect("`triangle` checked the vertices");
-            let v: Vec<Vector3<f64>> = raw
-                .get_ref()
-                .iter()
-                .map(|r| {
-                    self.vec3(r, "vertices", Dim::LENGTH)
-                        .expect("checked in `triangle`")
-                })
-                .collect();
-            let g = (v[0] + v[1] + v[2]) / 3.0;
-            v.iter()
-                .map(|x| {
-                    let d = x - g;
-                    (d * (mass / 12.0)) * d.transpose()
-                })
-                .sum::<Matrix3<f64>>()
-        });
+        if shape == Shape::Inertia {
+            self.given_inertia(p)?;
+        }
         let spec = self.spec(
             shape,
             p,
@@ -1147,20 +1023,9 @@ impl Ctx<'_> {
             material.map(|m| m.1),
         )?;
         self.in_file_range(shape, &spec, &name, raw.span())?;
-        let sign = if spec.removed { -1.0 } else { 1.0 };
         let part = Part {
             name,
             shape,
-            mass: sign * mass,
-            center,
-            own_second_moment: {
-                let a = rotation::to_matrix3(&orientation.matrix());
-                let local = match (given, triangle) {
-                    (Some(c), _) | (None, Some(c)) => c * sign,
-                    (None, None) => Matrix3::from_diagonal(&(local_second_moment * sign)),
-                };
-                a * local * a.transpose()
-            },
             spec,
             assembly: Vec::new(),
             span: raw.span(),
@@ -1313,8 +1178,8 @@ impl Ctx<'_> {
         name: &str,
         span: Range<usize>,
     ) -> Result<(), Diagnostic> {
-        let m = crate::compose::mass_of::<f64>(shape, spec).abs();
-        let j = crate::compose::own_second_moment::<f64>(shape, spec, m);
+        let m = crate::part::mass_of::<f64>(shape, spec).abs();
+        let j = crate::part::own_second_moment::<f64>(shape, spec, m);
         // Each independent second moment: along the local axes, per edge,
         // or (a triangle, a given tensor) the trace.
         // (No allocation: this runs for every part of every file.)
@@ -1355,14 +1220,14 @@ impl Ctx<'_> {
         Ok(())
     }
 
-    /// A triangle's centroid and area (SI) from its `vertices`, which must
+    /// A triangle's area (SI) from its `vertices`, which must
     /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
     /// longest edge.
     fn triangle(
         &self,
         p: &RawPart,
         missing: Diagnostic,
-    ) -> Result<(Vector3<f64>, f64), Diagnostic> {
+    ) -> Result<f64, Diagnostic> {
         let raw = p.vertices.as_ref().ok_or(missing)?;
         if raw.get_ref().len() != 3 {
             return Err(self.err(
@@ -1375,10 +1240,10 @@ impl Ctx<'_> {
             *out = self.vec3(r, "vertices", Dim::LENGTH)?;
         }
         let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
-        let longest = norm(&e1).max(norm(&e2)).max(norm(&(v[2] - v[1])));
+        let longest = vnorm(&e1).max(vnorm(&e2)).max(vnorm(&(v[2] - v[1])));
         // Scaled by the longest edge, so the cross product cannot overflow.
         let area = if longest > 0.0 && longest.is_finite() {
-            norm(&(e1 / longest).cross(&(e2 / longest))) / 2.0 * longest * longest
+            vnorm(&(e1 / longest).cross(&(e2 / longest))) / 2.0 * longest * longest
         } else {
             0.0
         };
@@ -1398,7 +1263,7 @@ impl Ctx<'_> {
                     "its area must exceed {COLLINEAR_TOLERANCE:e} of the square of its longest edge"
                 )));
         }
-        Ok(((v[0] + v[1] + v[2]) / 3.0, area))
+        Ok(area)
     }
 
     /// A given `inertia` (SI), checked: 3 × 3, symmetric to
@@ -1547,17 +1412,17 @@ impl Ctx<'_> {
                 vec![]
             }
             Shape::Triangle => {
-                let (centroid, area) = self.triangle(p, missing("vertices"))?;
-                return Ok((centroid, Orientation::Identity, vec![area]));
+                let area = self.triangle(p, missing("vertices"))?;
+                return Ok((Orientation::Identity, vec![area]));
             }
         };
         let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
-        let center = self.vec3(center, "center", Dim::LENGTH)?;
+        self.vec3(center, "center", Dim::LENGTH)?;
         let orientation = match &p.rotation {
             Some(r) => self.rotation(r)?,
             None => Orientation::Identity,
         };
-        Ok((center, orientation, dims))
+        Ok((orientation, dims))
     }
 
     fn placement_by_edges(
@@ -1614,7 +1479,7 @@ impl Ctx<'_> {
             }
             for i in 0..n {
                 for j in i + 1..n {
-                    let cos = unit(&edges[i].0).dot(&unit(&edges[j].0));
+                    let cos = vunit(&edges[i].0).dot(&vunit(&edges[j].0));
                     if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
                         return Err(self
                             .err(
@@ -1632,36 +1497,10 @@ impl Ctx<'_> {
             }
             (corner, edges)
         };
-        let half_sum = edges.iter().fold(Vector3::zeros(), |acc, (e, _)| acc + e) * 0.5;
-        let center = origin + half_sum;
-        let dims: Vec<f64> = edges.iter().map(|(e, _)| norm(e)).collect();
-        let units: Vec<Vector3<f64>> = edges.iter().map(|(e, _)| unit(e)).collect();
-        let axes = match units[..] {
-            // The rod's axis is local z; x and y complete a right-handed set
-            // (their second moments are zero, so which pair does not matter).
-            [u] => {
-                let helper = if u.x.abs() <= u.y.abs() && u.x.abs() <= u.z.abs() {
-                    Vector3::x()
-                } else if u.y.abs() <= u.z.abs() {
-                    Vector3::y()
-                } else {
-                    Vector3::z()
-                };
-                let a = helper.cross(&u).normalize();
-                Matrix3::from_columns(&[a, u.cross(&a), u])
-            }
-            [a, b] => Matrix3::from_columns(&[a, b, a.cross(&b).normalize()]),
-            // A box spanned by a left-handed triple is the same box: flip the
-            // third local axis to keep the frame right-handed.
-            [a, b, c] => {
-                Matrix3::from_columns(&[a, b, if a.cross(&b).dot(&c) < 0.0 { -c } else { c }])
-            }
-            _ => unreachable!("box, plate and rod have 1 to 3 edges"),
-        };
-        let m = axes;
-        let orientation =
-            Orientation::Matrix(std::array::from_fn(|i| std::array::from_fn(|j| m[(i, j)])));
-        Ok((center, orientation, dims))
+        // Validated only: the composer works from the corner and edges.
+        let _ = origin;
+        let dims: Vec<f64> = edges.iter().map(|(e, _)| vnorm(e)).collect();
+        Ok((Orientation::Identity, dims))
     }
 
     fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
@@ -1696,21 +1535,6 @@ impl Ctx<'_> {
             omega_span: r.omega.as_ref().map(Spanned::span),
         })
     }
-}
-
-/// |v| without overflow or underflow in the squares: scaled by max |vᵢ|.
-pub(crate) fn norm(v: &Vector3<f64>) -> f64 {
-    let s = v.amax();
-    if s == 0.0 || !s.is_finite() {
-        s
-    } else {
-        s * (v / s).norm()
-    }
-}
-
-/// v / |v| for a non-zero finite v, robust to extreme magnitudes.
-pub(crate) fn unit(v: &Vector3<f64>) -> Vector3<f64> {
-    (v / v.amax()).normalize()
 }
 
 /// Every key a part may have, with where it is when present. The order is

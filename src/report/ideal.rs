@@ -12,7 +12,8 @@
 use super::SummaryError;
 use crate::compose::{self, Precision, Principal};
 use crate::mass::Body;
-use crate::model::{Model, Part, Place, Solid};
+use crate::model::Model;
+use crate::part::{Part, Place, Solid};
 use crate::numeric::{DD, M3, Real};
 use serde::Serialize;
 
@@ -112,7 +113,7 @@ fn direction(part: &Part) -> [DD; 3] {
 /// mid-plane: the extra is (m r²/4)(E − u uᵀ), u the unit axis. (Then
 /// I_zz = m r²/2 and I_xx = m(3r² + L²)/12, the textbook cylinder.)
 pub fn solid_extra(part: &Part, solid: Solid, size: f64) -> M3<DD> {
-    let m: DD = compose::mass_of(part.shape, &part.spec);
+    let m: DD = part.mass();
     let w = scaled(direction(part));
     let ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     let s = DD::of(size);
@@ -232,10 +233,10 @@ pub fn shares(parts: &[Part], body: &Body, principal: &Principal) -> Vec<[Option
     parts
         .iter()
         .map(|p| {
-            let m: f64 = compose::mass_of(p.shape, &p.spec);
-            let c = compose::centroid(&p.spec.place);
+            let m: f64 = p.mass();
+            let c = p.centroid();
             let d: [f64; 3] = std::array::from_fn(|i| (c[i] - body.center_of_mass[i]).f64());
-            let own: M3<f64> = compose::own_second_moment(p.shape, &p.spec, m);
+            let own: M3<f64> = p.own_second_moment(m);
             let along: [f64; 3] = axes.map(|a| {
                 let mut q = 0.0;
                 for i in 0..3 {

@@ -289,8 +289,8 @@ impl SummaryError {
 /// The part whose contribution is largest: its |mass|, |m|·|c|, or the
 /// larger of |m|·d² (d from the centre of mass) and the trace of its own
 /// tensor, compared by logarithm so that none of them overflows.
-fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::model::Part> {
-    let parts = &model.parts;
+fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::part::Part> {
+    let si: Vec<crate::part::PartSi> = model.parts.iter().map(|p| p.si(model.units)).collect();
     let ln_norm = |v: Vector3<f64>| {
         // ln |v| without overflow: scale by the largest component.
         let big = v.amax();
@@ -300,16 +300,15 @@ fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::mode
             big.ln() + (v / big).norm().ln()
         }
     };
-    let total: f64 = parts.iter().map(|p| p.mass).sum();
+    let total: f64 = si.iter().map(|p| p.mass).sum();
     let com = if total.is_finite() && total != 0.0 {
-        parts
-            .iter()
+        si.iter()
             .map(|p| p.center * (p.mass / total))
             .sum::<Vector3<f64>>()
     } else {
         Vector3::zeros()
     };
-    let score = |p: &crate::model::Part| {
+    let score = |p: &crate::part::PartSi| {
         let ln_m = p.mass.abs().ln();
         match kind {
             Contribution::Mass => ln_m,
@@ -317,14 +316,14 @@ fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::mode
             Contribution::SecondMoment => {
                 // (c − com) / 2 cannot overflow; add ln 2 back.
                 let d = ln_norm(p.center / 2.0 - com / 2.0) + std::f64::consts::LN_2;
-                let own = p.own_second_moment.trace().abs().ln();
+                let own = p.second_moment.trace().abs().ln();
                 (ln_m + 2.0 * d).max(own)
             }
         }
     };
-    parts
-        .iter()
-        .map(|p| (score(p), p))
+    si.iter()
+        .zip(&model.parts)
+        .map(|(s, p)| (score(s), p))
         .filter(|(s, _)| !s.is_nan())
         .max_by(|a, b| a.0.total_cmp(&b.0))
         .map(|(_, p)| p)
@@ -379,7 +378,11 @@ fn cut_outs_leave_a_body(
     };
     // Relative to the masses that cancel: what is left of equal and
     // opposite masses is rounding, not a body.
-    let gross: f64 = model.parts.iter().map(|p| p.mass.abs()).sum();
+    let gross: f64 = model
+        .parts
+        .iter()
+        .map(|p| p.si(model.units).mass.abs())
+        .sum();
     if !(mass > NEGATIVE_MOMENT_RTOL * gross) {
         return Err(SummaryError::NotPhysical(format!(
             "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {them} {verb} all of the material"
@@ -528,15 +531,17 @@ pub fn summarize(
             .parts
             .iter()
             .zip(shares)
-            .map(|(p, share)| PartSummary {
+            .map(|(p, share)| {
+                let si = p.si(model.units);
+                PartSummary {
                 name: p.name.clone(),
                 shape: p.shape,
-                mass: p.mass,
-                mass_fraction: p.mass / mass,
-                center_of_mass: arr(&p.center),
+                mass: si.mass,
+                mass_fraction: si.mass / mass,
+                center_of_mass: arr(&si.center),
                 principal_moment_share: share,
                 assembly: p.assembly.clone(),
-            })
+            }})
             .collect(),
         assemblies: Vec::new(),
         omega: analysis.omega.as_ref().map(arr),

@@ -358,7 +358,8 @@ fn the_far_offset_scene_defeats_summing_about_the_origin() {
     let body = massprop::compose::compose(&model.parts, Precision::Standard);
     let com = Vector3::from(body.center_of_mass.map(|c| c.f64()));
     let naive: Matrix3<f64> = model.parts.iter().fold(Matrix3::zeros(), |acc, p| {
-        acc + p.second_moment() + p.center * p.center.transpose() * p.mass
+        let s = p.si(model.units);
+        acc + s.second_moment + s.center * s.center.transpose() * s.mass
     }) - com * com.transpose() * body.mass.f64();
     let exact = summary(&assembly(Vector3::zeros(), false));
     let naive_i = massprop::mass::inertia_of(&naive);
@@ -1291,7 +1292,7 @@ fn copies_of_a_sub_assembly_get_distinct_names_and_only_takes_paths() {
     let mut m = model.clone();
     m.only("rear / wheel #2").unwrap();
     assert_eq!(m.parts.len(), 1);
-    assert_eq!(m.parts[0].center, Vector3::new(-1.2, -0.8, 0.0));
+    assert_eq!(m.parts[0].si(m.units).center, Vector3::new(-1.2, -0.8, 0.0));
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -1,0 +1,330 @@
+//! A part: one primitive as the file gave it (`Spec`, file units), and its
+//! physics — mass, centroid and own second moment — in the precision asked
+//! for. The composer, the per-part figures of every report and the checks
+//! on the input all use these functions: one path per quantity.
+
+use crate::model::rotation::Orientation;
+use crate::numeric::{DD, M3, Real, norm_of};
+use crate::shapes::Shape;
+use crate::units::{Dim, FileUnits};
+use nalgebra::{Matrix3, Vector3};
+use serde::Serialize;
+use std::ops::Range;
+
+/// The solid that a thin plate or slender rod idealises.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Solid {
+    /// A plate a × b of thickness t: the box a × b × t.
+    Box,
+    /// A rod of length L and diameter d: the solid circular cylinder.
+    Cylinder,
+}
+
+impl Solid {
+    pub fn name(self) -> &'static str {
+        match self {
+            Solid::Box => "box",
+            Solid::Cylinder => "cylinder",
+        }
+    }
+}
+
+/// A plate's `thickness` or a rod's `diameter`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RealSize {
+    /// Index of the part in `Model::parts`.
+    pub part: usize,
+    pub solid: Solid,
+    /// Thickness (box) or diameter (cylinder), in the file's length unit.
+    pub size: f64,
+}
+
+/// One primitive: its shape and its numbers as the file gave them, in the
+/// file's units. This is the only representation of a part; the SI view
+/// (`Part::si`) and everything the composer uses are derived from `spec` by
+/// the functions below, so a part's own figures and the composite's come
+/// from the same arithmetic.
+#[derive(Debug, Clone)]
+pub struct Part {
+    /// The part's `name`, or `part N` (1-based position in the file); for
+    /// a part of a sub-assembly, its path: `elbow / motor / stator`.
+    pub name: String,
+    pub shape: Shape,
+    /// The part as the file gave it, in the file's units.
+    pub spec: Spec,
+    /// The sub-assemblies the part is in, outermost first (empty for a
+    /// part of the file itself).
+    pub assembly: Vec<String>,
+    /// Its `[[part]]` table in the file (for a part of a sub-assembly, the
+    /// table that includes it), to point at it when a sum overflows.
+    pub span: Range<usize>,
+}
+
+/// A part's mass properties in SI, derived from its `Spec` by exact unit
+/// factors in double-double and rounded once.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PartSi {
+    /// kg; negative for a cut-out (`remove = true`).
+    pub mass: f64,
+    /// Centroid in the file's frame, m.
+    pub center: Vector3<f64>,
+    /// ∫ρρᵀ dm about the centroid in the file's axes, kg·m² (negative
+    /// semi-definite for a cut-out).
+    pub second_moment: Matrix3<f64>,
+}
+
+impl Part {
+    /// Mass in file units: given, or density times volume, area or length;
+    /// negative for a cut-out.
+    pub fn mass<T: Real>(&self) -> T {
+        mass_of(self.shape, &self.spec)
+    }
+
+    /// Centroid in file units, in double-double (see `centroid`).
+    pub fn centroid(&self) -> [DD; 3] {
+        centroid(&self.spec.place)
+    }
+
+    /// ∫ρρᵀ dm about the centroid, file axes and units, for the mass `m`
+    /// (see `own_second_moment`).
+    pub fn own_second_moment<T: Real>(&self, m: T) -> M3<T> {
+        own_second_moment(self.shape, &self.spec, m)
+    }
+
+    /// The part in SI: mass and centroid from the same double-double
+    /// arithmetic the `extended` composer uses, times the exact unit
+    /// factors, rounded once; the second moment in f64 (it serves
+    /// comparisons and blame, not sums).
+    pub fn si(&self, units: FileUnits) -> PartSi {
+        let m: DD = self.mass();
+        let f_mass = units.factor(Dim::MASS).dd();
+        let f_length = units.factor(Dim::LENGTH).dd();
+        let c = self.centroid();
+        let own: M3<f64> = self.own_second_moment(m.f64());
+        let f_inertia = units.factor(Dim::INERTIA).value();
+        PartSi {
+            mass: (m * f_mass).f64(),
+            center: Vector3::from(c.map(|x| (x * f_length).f64())),
+            second_moment: Matrix3::from_fn(|i, j| own[i][j] * f_inertia),
+        }
+    }
+}
+
+/// A part's numbers as the file gave them, in the file's units (a quantity
+/// written with its own unit converted once, by an exact ratio).
+///
+/// NOTE: the composer works from these, not from the SI values above, and
+/// converts only its results to SI. Converting every input first would
+/// round each coordinate on its own: for parts 10⁹ sizes from the origin in
+/// a millimetre file that alone moves them relative to each other by 1e-7
+/// of their size.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spec {
+    pub mass: MassSpec,
+    pub place: Place,
+    /// `remove = true`: a cut-out, composed with negative mass.
+    pub removed: bool,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MassSpec {
+    Given(f64),
+    /// Density per volume, area or length, times the shape's measure.
+    Density(f64),
+}
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Place {
+    /// `center`, the shape's dimensions as `Shape::second_moments` takes
+    /// them (box [a, b, c], plate [a, b], rod [L], cylinder [R, r, L], disk
+    /// and sphere [R, r]), padded with 0, and the turn of the local axes.
+    Centered {
+        center: [f64; 3],
+        extent: [f64; 3],
+        orientation: Orientation,
+    },
+    /// `corner` and the shape's edges (a plate uses the first two).
+    Edges {
+        corner: [f64; 3],
+        edges: [[f64; 3]; 3],
+    },
+    /// A rod `from` → `to`.
+    FromTo { from: [f64; 3], to: [f64; 3] },
+    /// A thin triangular plate's three vertices in the file's frame.
+    Vertices([[f64; 3]; 3]),
+    /// A given inertia tensor (tensor convention, symmetric, local axes,
+    /// file units) about the centroid `center`, turned by `orientation`.
+    Given {
+        center: [f64; 3],
+        inertia: [[f64; 3]; 3],
+        orientation: Orientation,
+    },
+}
+
+
+
+fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
+    std::array::from_fn(|i| T::of(a[i]) - T::of(b[i]))
+}
+
+/// Mass of a part (file units): given, or density times volume, area or
+/// length; negative for a cut-out.
+pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
+    let m: T = unsigned_mass_of(shape, spec);
+    if spec.removed { -m } else { m }
+}
+
+fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
+    match spec.mass {
+        MassSpec::Given(m) => T::of(m),
+        MassSpec::Density(rho) => {
+            let measure = match (&spec.place, shape) {
+                (Place::Centered { extent: e, .. }, _) => {
+                    let e: [T; 3] = e.map(T::of);
+                    shape.measure_of(&e[..shape.dim_count()])
+                }
+                (Place::Edges { edges, .. }, _) => edges[..shape.edge_count()]
+                    .iter()
+                    .fold(T::of(1.0), |acc, e| acc * norm_of(&e.map(T::of))),
+                (Place::FromTo { from, to }, _) => norm_of(&sub::<T>(*to, *from)),
+                (Place::Given { .. }, _) => T::of(1.0),
+                (Place::Vertices(v), _) => {
+                    let d = triangle_offsets::<T>(v);
+                    let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
+                    let c = [
+                        a[1] * b[2] - a[2] * b[1],
+                        a[2] * b[0] - a[0] * b[2],
+                        a[0] * b[1] - a[1] * b[0],
+                    ];
+                    norm_of(&c) / T::of(2.0)
+                }
+            };
+            T::of(rho) * measure
+        }
+    }
+}
+
+/// Centroid of a part (file units), in double-double: a corner plus half
+/// its edges is not an f64 in general, and far from the origin its rounding
+/// would move the part relative to its neighbours.
+pub fn centroid(place: &Place) -> [DD; 3] {
+    match place {
+        Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
+        Place::Vertices(v) => triangle_centroid(v),
+        Place::Edges { corner, edges } => std::array::from_fn(|i| {
+            edges
+                .iter()
+                .fold(DD::of(corner[i]), |acc, e| acc + DD::of(e[i] * 0.5))
+        }),
+        Place::FromTo { from, to } => {
+            std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
+        }
+    }
+}
+
+fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
+    std::array::from_fn(|i| (DD::of(v[0][i]) + DD::of(v[1][i]) + DD::of(v[2][i])) / DD::of(3.0))
+}
+
+/// A triangle's vertices less its centroid, in double-double before the
+/// rounding to T: far from the origin the offsets keep their digits.
+fn triangle_offsets<T: Real>(v: &[[f64; 3]; 3]) -> [[T; 3]; 3] {
+    let g = triangle_centroid(v);
+    v.map(|p| std::array::from_fn(|i| T::of_dd(DD::of(p[i]) - g[i])))
+}
+
+fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
+    std::array::from_fn(|i| a[i] - b[i])
+}
+
+/// ∫ρρᵀ dm of a part about its own centroid, in the file's axes and units.
+///
+/// A uniform segment of length a centred on 0 has ∫x² dm = m a²/12, and each
+/// shape is a product of such segments: R diag(m aₖ²/12) Rᵀ for a turned
+/// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
+/// needs neither their lengths nor a rotation.
+pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
+    let zero = T::of(0.0);
+    let twelfth = m / T::of(12.0);
+    let mut j = [[zero; 3]; 3];
+    let mut add_outer = |e: [T; 3]| {
+        for a in 0..3 {
+            for b in 0..3 {
+                j[a][b] = j[a][b] + twelfth * e[a] * e[b];
+            }
+        }
+    };
+    match &spec.place {
+        Place::Centered {
+            extent,
+            orientation,
+            ..
+        } => {
+            let dims: [T; 3] = extent.map(T::of);
+            let d = shape.second_moments(m, &dims[..shape.dim_count()]);
+            if let Orientation::Identity = orientation {
+                return std::array::from_fn(|a| {
+                    std::array::from_fn(|b| if a == b { d[a] } else { zero })
+                });
+            }
+            let r: M3<T> = orientation.matrix();
+            for a in 0..3 {
+                for b in a..3 {
+                    j[a][b] = r[a][0] * d[0] * r[b][0]
+                        + r[a][1] * d[1] * r[b][1]
+                        + r[a][2] * d[2] * r[b][2];
+                    j[b][a] = j[a][b];
+                }
+            }
+        }
+        Place::Edges { edges, .. } => {
+            for e in &edges[..shape.edge_count()] {
+                add_outer(e.map(T::of));
+            }
+        }
+        Place::FromTo { from, to } => add_outer(sub(*to, *from)),
+        // ∫ρρᵀ dm of a uniform triangle about its centroid g is
+        // (m/12) Σ dᵢdᵢᵀ with dᵢ = vᵢ − g (from ∫ρρᵀ dA = (A/12)(Σ vᵢvᵢᵀ + s sᵀ),
+        // s = Σ vᵢ, about any origin).
+        Place::Vertices(v) => {
+            for d in triangle_offsets::<T>(v) {
+                add_outer(d);
+            }
+        }
+        Place::Given {
+            inertia,
+            orientation,
+            ..
+        } => {
+            // ∫ρρᵀ dm = tr(I)/2 E − I; a cut-out's is subtracted.
+            let i: M3<T> = inertia.map(|r| r.map(T::of));
+            let half_trace = (i[0][0] + i[1][1] + i[2][2]) / T::of(2.0);
+            let sign = T::of(if m < zero { -1.0 } else { 1.0 });
+            let local: M3<T> = std::array::from_fn(|a| {
+                std::array::from_fn(|b| {
+                    sign * if a == b {
+                        half_trace - i[a][a]
+                    } else {
+                        -i[a][b]
+                    }
+                })
+            });
+            let r: M3<T> = orientation.matrix();
+            for a in 0..3 {
+                for b in a..3 {
+                    let mut v = zero;
+                    for k in 0..3 {
+                        for l in 0..3 {
+                            v = v + r[a][k] * local[k][l] * r[b][l];
+                        }
+                    }
+                    j[a][b] = v;
+                    j[b][a] = v;
+                }
+            }
+        }
+    }
+    j
+}
+
