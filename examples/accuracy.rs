@@ -16,11 +16,12 @@ mod reference;
 #[path = "../benches/scenes.rs"]
 mod scenes;
 
+use massprop::analysis::Products;
+use massprop::analysis::summary::summarize;
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
 use massprop::model::Model;
 use massprop::numeric::{M3, Real};
-use massprop::report::{Products, summarize};
 use massprop::units::Dim;
 use nalgebra::{Matrix3, SymmetricEigen};
 use std::fmt::Write as _;
@@ -89,9 +90,7 @@ fn baseline(model: &Model, method: Method) -> Result {
         let j: M3<f64> = p.own_second_moment(m);
         Matrix3::from_fn(|i, k| j[i][k])
     };
-    let center = |p: &massprop::part::Part| {
-        nalgebra::Vector3::from(p.centroid().map(|c| c.f64()))
-    };
+    let center = |p: &massprop::part::Part| nalgebra::Vector3::from(p.centroid().map(|c| c.f64()));
     let mut mass = 0.0;
     let mut first = nalgebra::Vector3::zeros();
     for p in parts {

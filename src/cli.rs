@@ -1,7 +1,13 @@
 //! The command line, declared with clap derive; doc comments are the help.
+//! The only module that knows clap: `Cli::request` turns what was typed into
+//! the library's own options (`commands::Request`), and the library's
+//! enums get their command-line names and help here.
 
+use crate::analysis::{Overrides, Products, Settings};
+use crate::commands::{self, Request};
 use crate::compose::Precision;
-use crate::report::Products;
+use crate::render::Format;
+use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 const EXIT_STATUS: &str = "\
@@ -108,15 +114,6 @@ pub struct DiffArgs {
     pub precision: Precision,
 }
 
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Format {
-    /// Tables for people, in the file's units.
-    #[default]
-    Table,
-    /// One JSON object in SI units (see docs/json.md).
-    Json,
-}
-
 #[derive(Args, Debug)]
 pub struct ReportArgs {
     /// The part file (`-` reads standard input).
@@ -162,6 +159,98 @@ pub struct ReportArgs {
     /// rad/s², or with units, e.g. "0,0,90 deg/s^2". Needs ω.
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub alpha: Option<String>,
+}
+
+impl ValueEnum for Format {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Format::Table, Format::Json]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self {
+            Format::Table => {
+                PossibleValue::new("table").help("Tables for people, in the file's units")
+            }
+            Format::Json => {
+                PossibleValue::new("json").help("One JSON object in SI units (see docs/json.md)")
+            }
+        })
+    }
+}
+
+impl ValueEnum for Precision {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Precision::Standard, Precision::Extended]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self {
+            Precision::Standard => PossibleValue::new("standard")
+                .help("f64 with compensated sums and a Jacobi eigen solver (the default)"),
+            Precision::Extended => PossibleValue::new("extended").help(
+                "Double-double (~32 significant digits) throughout: for the smallest principal moment of very slender or flat bodies",
+            ),
+        })
+    }
+}
+
+impl ValueEnum for Products {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Products::Tensor, Products::Positive]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self {
+            Products::Tensor => {
+                PossibleValue::new("tensor").help("Tensor entries: I_xy = −∫xy dm (the default)")
+            }
+            Products::Positive => {
+                PossibleValue::new("positive").help("CAD and Meriam convention: I_xy = +∫xy dm")
+            }
+        })
+    }
+}
+
+impl Cli {
+    /// What was typed, as the library's options.
+    pub fn request(&self) -> Request {
+        match &self.command {
+            Command::Report(a) => Request::Report(commands::report::Options {
+                file: a.file.clone(),
+                format: a.format,
+                output: a.output.clone(),
+                settings: Settings {
+                    products: a.products,
+                    precision: a.precision,
+                    only: a.only.clone(),
+                    overrides: Overrides {
+                        about: a.about.clone(),
+                        omega: a.omega.clone(),
+                        alpha: a.alpha.clone(),
+                    },
+                },
+            }),
+            Command::Check(a) => Request::Check(commands::check::Options {
+                paths: a.paths.clone(),
+                output: a.output.clone(),
+                bless: a.bless,
+                precision: a.precision,
+                format: a.format,
+            }),
+            Command::Diff(a) => Request::Diff(commands::diff::Options {
+                old: a.old.clone(),
+                new: a.new.clone(),
+                format: a.format,
+                output: a.output.clone(),
+                tol: a.tol,
+                precision: a.precision,
+            }),
+            Command::Materials(a) => Request::Materials(commands::materials::Options {
+                file: a.file.clone(),
+                format: a.format,
+            }),
+        }
+    }
 }
 
 #[cfg(test)]

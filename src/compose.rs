@@ -14,23 +14,19 @@
 
 use crate::eigen::jacobi;
 use crate::mass::Body;
-use crate::part::Part;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
+use crate::part::Part;
 use nalgebra::Vector3;
 use serde::Serialize;
 
-/// Principal moments within this fraction of the largest are reported as
-/// equal, and their axes as not unique. 1e-9 is far above the rounding of a
-/// composed tensor (~1e-16 relative) and far below any gap an engineer would
-/// call distinct; below it the computed axes are noise.
-pub const EQUAL_MOMENT_RTOL: f64 = 1e-9;
+pub use crate::tolerance::EQUAL_MOMENT_RTOL;
 
 /// Components of a unit axis whose magnitudes differ by less than this count
 /// as tied for the sign rule, so rounding cannot flip an axis.
 const SIGN_TIE: f64 = 1e-9;
 
 /// The arithmetic of composition and of the principal axes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Precision {
     /// f64 with compensated sums and a Jacobi eigen solver (the default).

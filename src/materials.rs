@@ -1,6 +1,6 @@
 //! The built-in materials: `material = "NAME"` on a part instead of a
-//! density, and `massprop materials`. A part file's `[materials]` table adds
-//! to or overrides these.
+//! density (and what `massprop materials` lists). A part file's
+//! `[materials]` table adds to or overrides these.
 //!
 //! Densities are typical values at room temperature for the common grade;
 //! a part whose mass matters to better than a few per cent should give its
@@ -82,73 +82,6 @@ pub const BUILT_IN: &[Material] = &[
     ),
     m("water", 998.0, "at 20 °C"),
 ];
-
-/// One listed material (JSON); `density` in kg/m³.
-#[derive(Debug, Serialize)]
-struct Listed {
-    name: String,
-    density: f64,
-    source: String,
-}
-
-/// `massprop materials [FILE]`: the built-in table, and a file's own
-/// `[materials]` (marked as overriding where they share a name).
-pub fn run(args: &crate::cli::MaterialsArgs) -> Result<crate::Output, crate::diag::Diagnostic> {
-    let mut list: Vec<Listed> = BUILT_IN
-        .iter()
-        .map(|m| Listed {
-            name: m.name.to_string(),
-            density: m.density,
-            source: m.source.to_string(),
-        })
-        .collect();
-    if let Some(path) = &args.file {
-        let source = crate::read_source(path)?;
-        let model = crate::model::Model::parse(&source)?;
-        for (name, &density) in &model.materials {
-            match list.iter_mut().find(|l| &l.name == name) {
-                Some(l) => {
-                    l.density = density;
-                    l.source = format!("[materials] in {path}, overriding the built-in value");
-                }
-                None => list.push(Listed {
-                    name: name.clone(),
-                    density,
-                    source: format!("[materials] in {path}"),
-                }),
-            }
-        }
-    }
-    let stdout = match args.format {
-        crate::cli::Format::Json => {
-            let mut s = serde_json::to_string(&serde_json::json!({
-                "format_version": crate::report::FORMAT_VERSION,
-                "units": { "density": "kg/m^3" },
-                "materials": list,
-            }))
-            .expect("finite densities serialize");
-            s.push('\n');
-            s
-        }
-        crate::cli::Format::Table => {
-            let mut t = crate::report::table::new_table();
-            t.set_header(vec!["material", "density (kg/m³)", "source"]);
-            for l in &list {
-                t.add_row(vec![
-                    l.name.clone(),
-                    crate::report::table::fmt_num(l.density),
-                    l.source.clone(),
-                ]);
-            }
-            format!("{t}\n")
-        }
-    };
-    Ok(crate::Output {
-        stdout,
-        stderr: String::new(),
-        status: 0,
-    })
-}
 
 /// A built-in material by name.
 pub fn built_in(name: &str) -> Option<&'static Material> {

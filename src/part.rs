@@ -162,8 +162,6 @@ pub enum Place {
     },
 }
 
-
-
 fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
     std::array::from_fn(|i| T::of(a[i]) - T::of(b[i]))
 }
@@ -327,4 +325,3 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
     }
     j
 }
-

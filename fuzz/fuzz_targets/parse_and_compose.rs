@@ -5,11 +5,13 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use massprop::check;
+use massprop::analysis::check;
 use massprop::compose::Precision;
 use massprop::diag::Source;
 use massprop::model::Model;
-use massprop::report::{self, Products};
+use massprop::analysis::Products;
+use massprop::analysis::summary as report;
+use massprop::render;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
@@ -33,11 +35,11 @@ fuzz_target!(|data: &[u8]| {
                 continue;
             }
         };
-        let json = report::json::render(&summary);
+        let json = render::report::json(&summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
-        let _ = report::table::render(&summary, "fuzz.toml");
+        let _ = render::report::table(&summary, "fuzz.toml");
         let _ = check::validity(&summary);
         for c in &model.expect {
             let r = check::evaluate(&source, &summary, c);

@@ -11,9 +11,9 @@
 use super::raw::RawPart;
 use super::rotation::Orientation;
 use super::{Ctx, Model};
-use crate::part::{MassSpec, Part, Place, RealSize, Spec};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
+use crate::part::{MassSpec, Part, Place, RealSize, Spec};
 use crate::shapes::Shape;
 use crate::units::Dim;
 use std::collections::HashMap;

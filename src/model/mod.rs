@@ -13,6 +13,9 @@ pub mod rotation;
 use crate::diag::{Diagnostic, Source};
 use crate::part::{MassSpec, Part, Place, RealSize, Solid, Spec};
 use crate::shapes::Shape;
+use crate::tolerance::{
+    COLLINEAR_TOLERANCE, PERPENDICULAR_TOLERANCE, SYMMETRY_TOLERANCE, VALIDITY_RTOL,
+};
 use crate::units::{self, Dim, FileUnits, UnitError};
 use nalgebra::{Matrix3, Vector3};
 use raw::{Quantity, RawAnalysis, RawFile, RawPart, Vector};
@@ -23,21 +26,6 @@ use toml::Spanned;
 /// The most parts a body may have, included ones counted: ~1 KB of memory
 /// each while reading.
 pub const MAX_PARTS: usize = 2_000_000;
-
-/// A triangle's area must exceed this fraction of its longest edge squared.
-pub const COLLINEAR_TOLERANCE: f64 = 1e-9;
-
-/// A given `inertia` must be symmetric to this fraction of its largest entry
-/// (rounding in a datasheet, not a typo); it is then symmetrised.
-pub const SYMMETRY_TOLERANCE: f64 = 1e-9;
-
-/// A given `inertia` may break positivity or the triangle inequality by this
-/// fraction of its largest second moment (rounding), no more.
-pub const VALIDITY_TOLERANCE: f64 = 1e-12;
-
-/// Edges given as `corner` + `edges` must be perpendicular to this relative
-/// tolerance: |eᵢ·eⱼ| ≤ 1e-9 |eᵢ||eⱼ|.
-pub const PERPENDICULAR_TOLERANCE: f64 = 1e-9;
 
 #[derive(Debug, Clone)]
 pub struct Model {
@@ -206,8 +194,8 @@ impl Model {
 impl Model {
     /// Keep only the parts of the sub-assembly `name`: its own name at any
     /// depth, if only one sub-assembly has it, or its path
-    /// (`front / wheel #2`).
-    pub fn only(&mut self, name: &str) -> Result<(), String> {
+    /// (`front / wheel #2`). Returns the sub-assembly's path.
+    pub fn only(&mut self, name: &str) -> Result<Vec<String>, String> {
         let mut prefixes: Vec<&[String]> = Vec::new();
         let mut seen = std::collections::HashSet::new();
         for p in &self.parts {
@@ -278,7 +266,7 @@ impl Model {
         }
         let mut k = keep.iter();
         self.parts.retain(|_| *k.next().expect("one flag per part"));
-        Ok(())
+        Ok(target)
     }
 }
 
@@ -1223,11 +1211,7 @@ impl Ctx<'_> {
     /// A triangle's area (SI) from its `vertices`, which must
     /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
     /// longest edge.
-    fn triangle(
-        &self,
-        p: &RawPart,
-        missing: Diagnostic,
-    ) -> Result<f64, Diagnostic> {
+    fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
         let raw = p.vertices.as_ref().ok_or(missing)?;
         if raw.get_ref().len() != 3 {
             return Err(self.err(
@@ -1269,7 +1253,7 @@ impl Ctx<'_> {
     /// A given `inertia` (SI), checked: 3 × 3, symmetric to
     /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
     /// tr(I)/2 E − I positive semi-definite (no principal moment negative,
-    /// I₁ + I₂ ≥ I₃) to `VALIDITY_TOLERANCE` of the largest. Returns that
+    /// I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest. Returns that
     /// second moment, local axes.
     fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
         let raw = p.inertia.as_ref().expect("`part` checked the inertia");
@@ -1319,14 +1303,14 @@ impl Ctx<'_> {
         let (lam, _) = crate::eigen::jacobi(c)
             .ok_or_else(|| self.err(raw.span(), "`inertia`: the eigen solver did not converge"))?;
         let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        if lam.iter().any(|&l| l < -VALIDITY_TOLERANCE * top) {
+        if lam.iter().any(|&l| l < -VALIDITY_RTOL * top) {
             let mut moments = [lam[1] + lam[2], lam[0] + lam[2], lam[0] + lam[1]];
             moments.sort_by(f64::total_cmp);
             return Err(self
                 .err(raw.span(), format!(
                     "`inertia` is not physically valid: its principal moments {:.6e}, {:.6e}, {:.6e} kg·m² {}",
                     moments[0], moments[1], moments[2],
-                    if moments[0] < -VALIDITY_TOLERANCE * moments[2] { "include a negative one" } else { "break the triangle inequality I1 + I2 ≥ I3" }
+                    if moments[0] < -VALIDITY_RTOL * moments[2] { "include a negative one" } else { "break the triangle inequality I1 + I2 ≥ I3" }
                 ))
                 .help("check the signs of the products (`products = \"positive\"` if they are +∫xy dm, as CAD reports them) and the units"));
         }

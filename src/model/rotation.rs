@@ -11,14 +11,9 @@ use super::Ctx;
 use super::raw::{Angles, Floats, RawRotation};
 use crate::diag::Diagnostic;
 use crate::numeric::{M3, Real};
+use crate::tolerance::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
 use nalgebra::Matrix3;
 use toml::Spanned;
-
-/// A rotation matrix must be orthonormal to this (max-norm of RᵀR − E).
-pub const MATRIX_TOLERANCE: f64 = 1e-9;
-/// A quaternion's norm may differ from 1 by this much: rounding in printed
-/// values, not a typo. Its direction is used either way.
-pub const QUATERNION_TOLERANCE: f64 = 1e-6;
 
 /// How a part's local axes are turned, as the file gave it, so that the
 /// matrix can be formed in the precision the composer works in.

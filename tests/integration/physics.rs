@@ -3,11 +3,12 @@
 //! results, and invariances. Tolerances are multiples of f64::EPSILON scaled
 //! by the size of the quantity compared.
 
+use massprop::analysis::Products;
+use massprop::analysis::summary::{Summary, summarize};
 use massprop::compose::Precision;
 use massprop::diag::Source;
 use massprop::model::{Analysis, Model};
 use massprop::numeric::Real;
-use massprop::report::{Products, Summary, summarize};
 use nalgebra::{Matrix3, Vector3};
 
 const EPS: f64 = f64::EPSILON;
@@ -622,7 +623,7 @@ fn summary_in(text: &str, precision: Precision) -> Summary {
     summarize(&model, &model.analysis, Products::Tensor, precision).expect("summary")
 }
 
-fn idealisation(s: &Summary) -> &massprop::report::ideal::Idealisation {
+fn idealisation(s: &Summary) -> &massprop::analysis::ideal::Idealisation {
     s.idealisation.as_ref().expect("the file gives a real size")
 }
 
@@ -784,7 +785,7 @@ fn thickness_and_diameter_change_nothing_in_the_composition() {
     assert!(a.idealisation.is_some() && b.idealisation.is_none());
     let json = |s: &Summary| {
         let mut v: serde_json::Value =
-            serde_json::from_str(&massprop::report::json::render(s)).unwrap();
+            serde_json::from_str(&massprop::render::report::json(s)).unwrap();
         v.as_object_mut().unwrap().remove("idealisation");
         v
     };
@@ -794,7 +795,7 @@ fn thickness_and_diameter_change_nothing_in_the_composition() {
 #[test]
 fn idealisation_is_absent_from_json_without_real_sizes() {
     let s = summary(&assembly(Vector3::zeros(), false));
-    let v: serde_json::Value = serde_json::from_str(&massprop::report::json::render(&s)).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&massprop::render::report::json(&s)).unwrap();
     assert!(v.get("idealisation").is_none());
     assert!(v["parts"][0]["principal_moment_share"].is_array());
 }

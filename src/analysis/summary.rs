@@ -1,16 +1,15 @@
 //! One serializable summary of a body, in SI, that every output format
-//! renders. `json` serializes it as the documented contract; `table` prints
-//! it for people in the file's units.
+//! renders: `render::report` serializes it as the documented JSON contract
+//! and prints it for people in the file's units.
 
-pub mod ideal;
-pub mod json;
-pub mod table;
-
+use super::Products;
+use super::ideal;
 use crate::compose::{self, Precision, Principal};
 use crate::diag::{Diagnostic, Source};
 use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
+use crate::tolerance::VALIDITY_RTOL;
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -19,17 +18,6 @@ use serde::Serialize;
 /// Version of the JSON contract: bumped only if a key changes meaning.
 /// Keys may be added; none is ever renamed or removed.
 pub const FORMAT_VERSION: u32 = 1;
-
-/// How products of inertia are shown.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum, Default)]
-#[serde(rename_all = "lowercase")]
-pub enum Products {
-    /// Tensor entries: I_xy = −∫xy dm (the default).
-    #[default]
-    Tensor,
-    /// CAD and Meriam convention: I_xy = +∫xy dm.
-    Positive,
-}
 
 /// SI unit of each reported quantity, written in ASCII for scripts.
 #[derive(Debug, Clone, Serialize)]
@@ -136,7 +124,12 @@ fn assemblies(parts: &[PartSummary], total: f64) -> Vec<AssemblySummary> {
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
     pub format_version: u32,
+    /// The file's `name`; with `--only`, the sub-assembly's.
     pub name: Option<String>,
+    /// With `--only`: the path of the sub-assembly reported, outermost
+    /// first.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sub_assembly: Option<Vec<String>>,
     pub products_convention: Products,
     /// The arithmetic used (`--precision`).
     pub precision: Precision,
@@ -349,11 +342,6 @@ fn finite(v: &[f64], what: &'static str, blame: Blame) -> Result<(), SummaryErro
     }
 }
 
-/// A second-moment eigenvalue below this fraction of the largest makes a
-/// body with cut-outs unphysical: far above rounding (1e-16 relative), far
-/// below any real body's thinnest direction.
-pub const NEGATIVE_MOMENT_RTOL: f64 = 1e-12;
-
 /// With cut-outs (`remove = true`) the composed body can be impossible: no
 /// mass left, or a second moment that is negative along some direction (a
 /// cut-out reaching beyond the material it is cut from). Say so, naming the
@@ -383,7 +371,7 @@ fn cut_outs_leave_a_body(
         .iter()
         .map(|p| p.si(model.units).mass.abs())
         .sum();
-    if !(mass > NEGATIVE_MOMENT_RTOL * gross) {
+    if !(mass > VALIDITY_RTOL * gross) {
         return Err(SummaryError::NotPhysical(format!(
             "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {them} {verb} all of the material"
         )));
@@ -392,7 +380,7 @@ fn cut_outs_leave_a_body(
     let (lam, _) = crate::eigen::jacobi(c).ok_or(SummaryError::NoConvergence)?;
     let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
     let low = lam.iter().fold(f64::INFINITY, |a, &x| a.min(x));
-    if low < -NEGATIVE_MOMENT_RTOL * top {
+    if low < -VALIDITY_RTOL * top {
         return Err(SummaryError::NotPhysical(format!(
             "the body is not physical: its second moment is negative along one direction ({low:.3e}, the largest being {top:.3e}, in file units); {them} {verb} more material along it than the body has"
         )));
@@ -512,6 +500,7 @@ pub fn summarize(
     let mut summary = Summary {
         format_version: FORMAT_VERSION,
         name: model.name.clone(),
+        sub_assembly: None,
         products_convention: products,
         units: SI_UNITS,
         precision,
@@ -534,14 +523,15 @@ pub fn summarize(
             .map(|(p, share)| {
                 let si = p.si(model.units);
                 PartSummary {
-                name: p.name.clone(),
-                shape: p.shape,
-                mass: si.mass,
-                mass_fraction: si.mass / mass,
-                center_of_mass: arr(&si.center),
-                principal_moment_share: share,
-                assembly: p.assembly.clone(),
-            }})
+                    name: p.name.clone(),
+                    shape: p.shape,
+                    mass: si.mass,
+                    mass_fraction: si.mass / mass,
+                    center_of_mass: arr(&si.center),
+                    principal_moment_share: share,
+                    assembly: p.assembly.clone(),
+                }
+            })
             .collect(),
         assemblies: Vec::new(),
         omega: analysis.omega.as_ref().map(arr),

@@ -9,12 +9,12 @@
 //!
 //! Neither changes the composition: both are read off the composed body.
 
-use super::SummaryError;
+use super::summary::{Blame, Contribution, SummaryError};
 use crate::compose::{self, Precision, Principal};
 use crate::mass::Body;
 use crate::model::Model;
-use crate::part::{Part, Place, Solid};
 use crate::numeric::{DD, M3, Real};
+use crate::part::{Part, Place, Solid};
 use serde::Serialize;
 
 /// A principal moment at most this many unit roundoffs of the largest is
@@ -200,7 +200,7 @@ pub fn idealisation(
     if !moments.iter().all(|x| x.is_finite()) {
         return Err(SummaryError::NotFinite {
             what: "principal moments with the parts made solid",
-            blame: super::Blame::Parts(super::Contribution::SecondMoment),
+            blame: Blame::Parts(Contribution::SecondMoment),
         });
     }
     Ok(Some(Idealisation {

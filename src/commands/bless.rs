@@ -9,11 +9,13 @@
 //! - A file that cannot be parsed, or whose edit would not parse, is left
 //!   untouched. The file is replaced atomically (temporary file + rename).
 
-use crate::check::display_unit;
+use crate::analysis::check::measured;
+use crate::analysis::summary::Summary;
+use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check};
-use crate::report::{self, Products, Summary};
+use crate::render::format::DisplayUnits;
 use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
 
@@ -32,7 +34,7 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
             "`--bless` writes files; it cannot bless standard input",
         ));
     }
-    let source = crate::read_source(path)?;
+    let source = crate::io::read_source(path)?;
     let mut doc: DocumentMut = match source.text.parse() {
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.
@@ -46,9 +48,11 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
     // that the file parses as a model.
     let added_tol = add_default_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
-    let model = Model::parse(&staged)?;
-    let summary = report::summarize(&model, &model.analysis, Products::Tensor, precision)
-        .map_err(|e| e.diagnostic(&model, &model.analysis, &staged))?;
+    let settings = Settings {
+        precision,
+        ..Settings::default()
+    };
+    let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, &settings)?;
 
     let mut changed = added_tol;
     if doc.get("expect").is_none() {
@@ -163,10 +167,10 @@ fn write_values(doc: &mut DocumentMut, checks: &[Check], s: &Summary) -> bool {
     let mut changed = false;
     for group in entries.values() {
         let first = group[0];
-        let (scale, _) = display_unit(first.dim, s.file_units);
+        let (scale, _) = DisplayUnits::of(s.file_units).of_dim(first.dim);
         let measured: Vec<f64> = group
             .iter()
-            .map(|c| crate::check::measured(s, c.target) / scale)
+            .map(|c| measured(s, c.target) / scale)
             .collect();
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
@@ -212,9 +216,8 @@ fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item
 
 /// A new `[expect]` with the mass, centre of mass and principal moments.
 fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
-    let (m, _) = display_unit(crate::units::Dim::MASS, s.file_units);
-    let (l, _) = display_unit(crate::units::Dim::LENGTH, s.file_units);
-    let (i, _) = display_unit(crate::units::Dim::INERTIA, s.file_units);
+    let units = DisplayUnits::of(s.file_units);
+    let (m, l, i) = (units.mass, units.length, units.inertia);
     let entry = |value: Value, tol: Value| {
         let mut t = InlineTable::new();
         t.insert("value", value);

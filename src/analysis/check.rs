@@ -1,0 +1,275 @@
+//! What `check` finds in one part file: each `[expect]` entry against the
+//! summary, and the body's physical validity. `commands::check` walks the
+//! files; `render::check` prints the results.
+
+use super::summary::Summary;
+use super::{Loaded, Settings};
+use crate::compose::Precision;
+use crate::diag::{Diagnostic, Source};
+use crate::model::expect::{Bound, Check, Target, Tol};
+use crate::render::format::{DisplayUnits, fmt_num};
+use crate::tolerance::VALIDITY_RTOL;
+use serde::Serialize;
+
+/// The measured value of one check, SI.
+pub(crate) fn measured(s: &Summary, t: Target) -> f64 {
+    match t {
+        Target::Mass => s.mass,
+        Target::CenterOfMass(i) => s.center_of_mass[i],
+        Target::PrincipalMoment(i) => s.principal_moments[i],
+        Target::InertiaCom(i, j) => s.inertia_com[i][j],
+        Target::InertiaRef(i, j) => s.inertia_ref[i][j],
+        Target::RadiusOfGyration(i) => s.radii_of_gyration[i],
+        Target::AngularMomentum(i) => s.angular_momentum.map_or(f64::NAN, |h| h[i]),
+        Target::KineticEnergy => s.kinetic_energy.unwrap_or(f64::NAN),
+    }
+}
+
+/// Bounds [lo, hi] of a check, SI.
+fn limits(b: &Bound) -> (f64, f64) {
+    match *b {
+        Bound::Value { value, tol } => {
+            let t = match tol {
+                Tol::Abs(t) => t,
+                Tol::Rel(r) => r * value.abs(),
+            };
+            (value - t, value + t)
+        }
+        Bound::Range { min, max } => (
+            min.unwrap_or(f64::NEG_INFINITY),
+            max.unwrap_or(f64::INFINITY),
+        ),
+    }
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct CheckResult {
+    pub quantity: String,
+    pub line: usize,
+    pub column: usize,
+    /// SI.
+    pub measured: f64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub value: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tol: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub tol_relative: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max: Option<f64>,
+    pub pass: bool,
+    /// The message shown when it fails.
+    #[serde(skip)]
+    pub message: String,
+}
+
+/// The outcome for one file, serialised by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Status {
+    /// Every expectation and validity check holds.
+    Ok,
+    /// An expectation or validity check does not.
+    Failed,
+    /// The file cannot be read or is not a valid part file.
+    Invalid,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct FileResult {
+    pub path: String,
+    pub status: Status,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    pub checks: Vec<CheckResult>,
+    /// Physical validity failures (empty when valid).
+    pub validity: Vec<String>,
+}
+
+/// Evaluate one expectation against a summary.
+pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
+    let m = measured(s, c.target);
+    let (lo, hi) = limits(&c.bound);
+    let pass = m >= lo && m <= hi;
+    let (line, column) = source.line_col(c.span.start);
+    let units = DisplayUnits::of(s.file_units);
+    let show = |x: f64| units.show(x, c.dim);
+    let message = match c.bound {
+        Bound::Value { value, tol } => {
+            let tol_text = match tol {
+                Tol::Abs(t) => show(t),
+                Tol::Rel(r) => format!("{} %", fmt_num(r * 100.0)),
+            };
+            // Relative when that is a readable finite number; absolute when
+            // the value is zero or so small (subnormal) that the ratio
+            // overflows; left out when even the difference overflows.
+            let percent = (m - value) / value.abs() * 100.0;
+            let off = if value != 0.0 && percent.is_finite() && percent.abs() < 1e6 {
+                format!(" (off by {percent:+.3} %)")
+            } else if value != 0.0 && percent.is_finite() {
+                format!(" (off by {percent:+.3e} %)")
+            } else if (m - value).is_finite() {
+                let sign = if m >= value { "+" } else { "" };
+                format!(" (off by {sign}{})", show(m - value))
+            } else {
+                String::new()
+            };
+            format!(
+                "{} {} is outside {} ± {tol_text}{off}",
+                c.name,
+                show(m),
+                show(value)
+            )
+        }
+        Bound::Range { .. } if m < lo => {
+            format!(
+                "{} {} is below the minimum {} (by {})",
+                c.name,
+                show(m),
+                show(lo),
+                show(lo - m)
+            )
+        }
+        Bound::Range { .. } => {
+            format!(
+                "{} {} is above the maximum {} (by {})",
+                c.name,
+                show(m),
+                show(hi),
+                show(m - hi)
+            )
+        }
+    };
+    let (value, tol, tol_relative, min, max) = match c.bound {
+        Bound::Value {
+            value,
+            tol: Tol::Abs(t),
+        } => (Some(value), Some(t), None, None, None),
+        Bound::Value {
+            value,
+            tol: Tol::Rel(r),
+        } => (Some(value), None, Some(r), None, None),
+        Bound::Range { min, max } => (None, None, None, min, max),
+    };
+    CheckResult {
+        quantity: c.name.clone(),
+        line,
+        column,
+        measured: m,
+        value,
+        tol,
+        tol_relative,
+        min,
+        max,
+        pass,
+        message: format!("{}:{line}:{column}: error: {message}", source.name),
+    }
+}
+
+/// Physical validity: positive mass, no negative principal moment, and the
+/// triangle inequality I1 + I2 ≥ I3, each to `VALIDITY_RTOL` of I3.
+pub fn validity(s: &Summary) -> Vec<String> {
+    let mut out = Vec::new();
+    let [i1, i2, i3] = s.principal_moments;
+    let tol = VALIDITY_RTOL * i3.abs();
+    if !(s.mass > 0.0) {
+        out.push(format!("total mass {} kg is not positive", s.mass));
+    }
+    if i1 < -tol {
+        out.push(format!(
+            "inertia is not positive definite: principal moment I1 = {i1:e} kg·m² is negative"
+        ));
+    }
+    if i1 + i2 < i3 - tol {
+        out.push(format!(
+            "principal moments violate the triangle inequality: I1 + I2 = {:e} < I3 = {i3:e} kg·m²",
+            i1 + i2
+        ));
+    }
+    out
+}
+
+/// Check one file; `Err` when it cannot be read or is invalid.
+pub fn check_file(path: &str, precision: Precision) -> Result<FileResult, Diagnostic> {
+    let settings = Settings {
+        precision,
+        ..Settings::default()
+    };
+    Ok(check_loaded(&super::load(path, &settings)?))
+}
+
+/// The expectations and validity of a file that loaded.
+pub fn check_loaded(loaded: &Loaded) -> FileResult {
+    let validity = validity(&loaded.summary);
+    let checks: Vec<CheckResult> = loaded
+        .model
+        .expect
+        .iter()
+        .map(|c| evaluate(&loaded.source, &loaded.summary, c))
+        .collect();
+    let ok = validity.is_empty() && checks.iter().all(|c| c.pass);
+    FileResult {
+        path: loaded.source.name.clone(),
+        status: if ok { Status::Ok } else { Status::Failed },
+        error: None,
+        checks,
+        validity,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn summary() -> Summary {
+        let source = Source::new(
+            "t.toml",
+            "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n",
+        );
+        crate::analysis::load_source(source, &Settings::default())
+            .unwrap()
+            .summary
+    }
+
+    #[test]
+    fn a_real_body_is_physically_valid() {
+        assert!(validity(&summary()).is_empty());
+    }
+
+    #[test]
+    fn a_negative_principal_moment_is_reported() {
+        let mut s = summary();
+        // Sorted moments with a negative I1 also break I1 + I2 ≥ I3.
+        s.principal_moments = [-1e-3, 10.0, 10.0];
+        let v = validity(&s);
+        assert!(
+            v.iter().any(|m| m.contains("not positive definite")),
+            "{v:?}"
+        );
+    }
+
+    #[test]
+    fn rounding_below_the_tolerance_is_not_a_violation() {
+        let mut s = summary();
+        s.principal_moments = [-1e-15, 5.0, 5.0];
+        assert!(validity(&s).is_empty());
+    }
+
+    #[test]
+    fn the_triangle_inequality_is_checked() {
+        let mut s = summary();
+        s.principal_moments = [1.0, 2.0, 4.0];
+        let v = validity(&s);
+        assert_eq!(v.len(), 1);
+        assert!(v[0].contains("triangle inequality"), "{v:?}");
+    }
+
+    #[test]
+    fn a_non_positive_mass_is_reported() {
+        let mut s = summary();
+        s.mass = -1.0;
+        assert!(validity(&s)[0].contains("not positive"));
+    }
+}

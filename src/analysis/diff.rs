@@ -1,0 +1,394 @@
+//! What `diff OLD NEW` compares: the mass properties of two part files,
+//! each loaded by the one pipeline (tensor convention), as absolute and
+//! relative changes in SI, and what happened to each part (matched by
+//! name). The contract (table, JSON keys, exit statuses, the
+//! relative-change rule) is docs/diff.md; `render::diff` prints it.
+
+use super::Loaded;
+use super::summary::Summary;
+use crate::diag::Diagnostic;
+use crate::numeric::norm;
+use crate::shapes::Shape;
+use crate::units::Dim;
+use nalgebra::{Matrix3, Vector3};
+use serde::Serialize;
+use std::collections::{HashMap, VecDeque};
+
+/// Version of the diff JSON contract (docs/diff.md): bumped only if a key
+/// changes meaning. Keys may be added; none is ever renamed or removed.
+pub const FORMAT_VERSION: u32 = 1;
+
+/// One part file, loaded, with its parts in SI.
+pub struct Side {
+    pub loaded: Loaded,
+    /// The model's parts in SI, in its order.
+    pub parts: Vec<PartView>,
+}
+
+/// What `diff` compares of a part, SI.
+pub struct PartView {
+    pub name: String,
+    pub shape: Shape,
+    pub mass: f64,
+    pub center: Vector3<f64>,
+    pub second_moment: Matrix3<f64>,
+}
+
+impl Side {
+    pub fn of(loaded: Loaded) -> Side {
+        let model = &loaded.model;
+        let parts = model
+            .parts
+            .iter()
+            .map(|p| {
+                let si = p.si(model.units);
+                PartView {
+                    name: p.name.clone(),
+                    shape: p.shape,
+                    mass: si.mass,
+                    center: si.center,
+                    second_moment: si.second_moment,
+                }
+            })
+            .collect();
+        Side { loaded, parts }
+    }
+}
+
+/// One compared value, SI. Field names are the JSON keys.
+#[derive(Debug, Clone, Serialize)]
+pub struct QuantityDiff {
+    /// `mass`, `center_of_mass.x`, `inertia_com.xy`, `principal_moments.1`.
+    pub quantity: String,
+    pub old: f64,
+    pub new: f64,
+    pub abs_change: f64,
+    /// `abs_change` divided by the quantity's scale; `None` when the scale is
+    /// zero (the quantity is zero in both files) or the ratio overflows.
+    pub rel_change: Option<f64>,
+    pub changed: bool,
+    /// How the table names it.
+    #[serde(skip)]
+    pub label: String,
+    /// Its dimension, for its display unit.
+    #[serde(skip)]
+    pub dim: Dim,
+}
+
+/// A part present in one file only: its position there (0-based).
+#[derive(Debug, Clone, Copy)]
+pub struct Lone {
+    pub index: usize,
+}
+
+/// What changed of a part matched by name, serialised by name.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Change {
+    Shape,
+    Mass,
+    Centroid,
+    SecondMoment,
+}
+
+/// A part matched by name whose properties moved beyond the tolerance.
+#[derive(Debug, Clone)]
+pub struct PartChange {
+    pub old: usize,
+    pub new: usize,
+    /// In the order shape, mass, centroid, second moment.
+    pub what: Vec<Change>,
+}
+
+#[derive(Debug, Clone, Default)]
+pub struct PartDiff {
+    /// Parts of the new file only, in its order.
+    pub added: Vec<Lone>,
+    /// Parts of the old file only, in its order.
+    pub removed: Vec<Lone>,
+    /// In the old file's order.
+    pub changed: Vec<PartChange>,
+}
+
+impl PartDiff {
+    pub fn is_empty(&self) -> bool {
+        self.added.is_empty() && self.removed.is_empty() && self.changed.is_empty()
+    }
+}
+
+/// Two files compared.
+pub struct Diff {
+    pub old: Side,
+    pub new: Side,
+    /// Relative tolerance (`--tol`).
+    pub tol: f64,
+    pub quantities: Vec<QuantityDiff>,
+    pub parts: PartDiff,
+    /// Anything changed beyond the tolerance.
+    pub changed: bool,
+}
+
+impl Diff {
+    /// Compare `old` with `new` at relative tolerance `tol` (finite, ≥ 0).
+    pub fn of(old: Loaded, new: Loaded, tol: f64) -> Result<Diff, Diagnostic> {
+        let (old, new) = (Side::of(old), Side::of(new));
+        let (os, ns) = (&old.loaded.summary, &new.loaded.summary);
+        let length = length_scale(os, ns);
+        let quantities = quantities(os, ns, length, tol).map_err(|d| {
+            Diagnostic::plain(format!(
+                "{} → {}: {}",
+                old.loaded.source.name,
+                new.loaded.source.name,
+                d.message()
+            ))
+        })?;
+        let parts = part_diff(&old.parts, &new.parts, length, tol);
+        let changed = quantities.iter().any(|q| q.changed) || !parts.is_empty();
+        Ok(Diff {
+            old,
+            new,
+            tol,
+            quantities,
+            parts,
+            changed,
+        })
+    }
+}
+
+/// The old file's scale, or the new one's when the old is zero.
+fn pick(old: f64, new: f64) -> f64 {
+    if old > 0.0 { old } else { new }
+}
+
+/// The length scale of a body: the larger of the distance of its centre of
+/// mass from the origin and its r.m.s. size √(tr C / m) = |k| / √2 (k the
+/// principal radii of gyration). NOTE: a position has no natural zero; with
+/// the distance alone, a centre of mass at the origin (a symmetric body)
+/// would turn every rounding of ~1e-17 m into a 100 % change.
+fn body_length(s: &Summary) -> f64 {
+    norm(&s.center_of_mass).max(norm(&s.radii_of_gyration) / std::f64::consts::SQRT_2)
+}
+
+fn length_scale(old: &Summary, new: &Summary) -> f64 {
+    pick(body_length(old), body_length(new))
+}
+
+fn flat(m: &[[f64; 3]; 3]) -> [f64; 9] {
+    std::array::from_fn(|k| m[k / 3][k % 3])
+}
+
+/// Compare one value against `scale`. Errors only if the change itself
+/// overflows f64 (two huge values of opposite signs).
+fn compare(
+    quantity: String,
+    label: String,
+    dim: Dim,
+    (old, new): (f64, f64),
+    scale: f64,
+    tol: f64,
+) -> Result<QuantityDiff, Diagnostic> {
+    let abs_change = new - old;
+    if !abs_change.is_finite() {
+        return Err(Diagnostic::plain(format!(
+            "the change in `{quantity}` overflows the range of f64; are sizes, masses or offsets in the wrong units?"
+        )));
+    }
+    let rel_change = if scale > 0.0 {
+        Some(abs_change / scale).filter(|r| r.is_finite())
+    } else {
+        None
+    };
+    let changed = match rel_change {
+        Some(r) => r.abs() > tol,
+        // Scale zero (then the change is zero too) or a ratio beyond f64.
+        None => abs_change != 0.0,
+    };
+    Ok(QuantityDiff {
+        quantity,
+        old,
+        new,
+        abs_change,
+        rel_change,
+        changed,
+        label,
+        dim,
+    })
+}
+
+/// Mass, centre of mass, principal moments, and the six independent entries
+/// of the inertia tensor about the centre of mass (upper triangle).
+fn quantities(
+    old: &Summary,
+    new: &Summary,
+    length: f64,
+    tol: f64,
+) -> Result<Vec<QuantityDiff>, Diagnostic> {
+    let mut out = vec![compare(
+        "mass".into(),
+        "mass".into(),
+        Dim::MASS,
+        (old.mass, new.mass),
+        pick(old.mass.abs(), new.mass.abs()),
+        tol,
+    )?];
+    for (i, axis) in ["x", "y", "z"].iter().enumerate() {
+        out.push(compare(
+            format!("center_of_mass.{axis}"),
+            format!("centre of mass {axis}"),
+            Dim::LENGTH,
+            (old.center_of_mass[i], new.center_of_mass[i]),
+            length,
+            tol,
+        )?);
+    }
+    let scale = pick(norm(&old.principal_moments), norm(&new.principal_moments));
+    for i in 0..3 {
+        out.push(compare(
+            format!("principal_moments.{}", i + 1),
+            format!("principal moment I{}", i + 1),
+            Dim::INERTIA,
+            (old.principal_moments[i], new.principal_moments[i]),
+            scale,
+            tol,
+        )?);
+    }
+    let scale = pick(norm(&flat(&old.inertia_com)), norm(&flat(&new.inertia_com)));
+    for (i, j, ij) in [
+        (0, 0, "xx"),
+        (1, 1, "yy"),
+        (2, 2, "zz"),
+        (0, 1, "xy"),
+        (0, 2, "xz"),
+        (1, 2, "yz"),
+    ] {
+        out.push(compare(
+            format!("inertia_com.{ij}"),
+            format!("I{ij}"),
+            Dim::INERTIA,
+            (old.inertia_com[i][j], new.inertia_com[i][j]),
+            scale,
+            tol,
+        )?);
+    }
+    Ok(out)
+}
+
+/// Match parts by name, the k-th part of a name in the old file with the
+/// k-th of that name in the new one (unnamed parts are `part N`, so they
+/// match by position), and say what was added, removed or changed.
+fn part_diff(old: &[PartView], new: &[PartView], length: f64, tol: f64) -> PartDiff {
+    let mut unmatched_new: HashMap<&str, VecDeque<usize>> = HashMap::new();
+    for (i, p) in new.iter().enumerate() {
+        unmatched_new.entry(&p.name).or_default().push_back(i);
+    }
+    let mut diff = PartDiff::default();
+    let mut matched_new = vec![false; new.len()];
+    for (i, o) in old.iter().enumerate() {
+        match unmatched_new
+            .get_mut(o.name.as_str())
+            .and_then(|q| q.pop_front())
+        {
+            Some(j) => {
+                matched_new[j] = true;
+                let what = part_changes(o, &new[j], length, tol);
+                if !what.is_empty() {
+                    diff.changed.push(PartChange {
+                        old: i,
+                        new: j,
+                        what,
+                    });
+                }
+            }
+            None => diff.removed.push(Lone { index: i }),
+        }
+    }
+    diff.added = (0..new.len())
+        .filter(|&j| !matched_new[j])
+        .map(|index| Lone { index })
+        .collect();
+    diff
+}
+
+/// Beyond the tolerance: mass relative to the old part's mass (its size, for
+/// a cut-out's negative mass); centroid by
+/// the distance moved, relative to the body's length scale; second moment
+/// (∫ρρᵀ dm about the centroid) by the norm of its change, relative to the
+/// old part's (the new one's if the old is zero, as for a point mass).
+fn part_changes(o: &PartView, n: &PartView, length: f64, tol: f64) -> Vec<Change> {
+    let mut what = Vec::new();
+    if o.shape != n.shape {
+        what.push(Change::Shape);
+    }
+    // `!(x <= limit)` also catches a NaN or infinite ratio as a change.
+    // |m|: a cut-out's mass is negative.
+    if !((n.mass - o.mass).abs() <= tol * o.mass.abs()) {
+        what.push(Change::Mass);
+    }
+    let moved = norm((n.center - o.center).as_slice());
+    if !(moved <= tol * length) {
+        what.push(Change::Centroid);
+    }
+    let (co, cn) = (o.second_moment, n.second_moment);
+    let scale = pick(norm(co.as_slice()), norm(cn.as_slice()));
+    if !(norm((cn - co).as_slice()) <= tol * scale) {
+        what.push(Change::SecondMoment);
+    }
+    what
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_small_entry_of_a_large_quantity_is_not_a_large_change() {
+        // A product of inertia from 1e-18 to 2e-18 on a tensor of size 1.
+        let q = compare(
+            "q".into(),
+            "q".into(),
+            Dim::INERTIA,
+            (1e-18, 2e-18),
+            1.0,
+            1e-9,
+        )
+        .unwrap();
+        assert!(!q.changed);
+        assert_eq!(q.rel_change, Some(1e-18));
+    }
+
+    #[test]
+    fn zero_scale_gives_no_relative_change() {
+        let q = compare("q".into(), "q".into(), Dim::MASS, (0.0, 0.0), 0.0, 0.0).unwrap();
+        assert_eq!(q.rel_change, None);
+        assert!(!q.changed);
+    }
+
+    #[test]
+    fn an_overflowing_ratio_is_a_change_without_a_relative_value() {
+        let q = compare(
+            "q".into(),
+            "q".into(),
+            Dim::LENGTH,
+            (0.0, 1e300),
+            1e-300,
+            1.0,
+        )
+        .unwrap();
+        assert_eq!(q.rel_change, None);
+        assert!(q.changed);
+    }
+
+    #[test]
+    fn an_overflowing_change_is_an_error_not_infinity() {
+        let e = compare(
+            "center_of_mass.x".into(),
+            "x".into(),
+            Dim::LENGTH,
+            (-f64::MAX, f64::MAX),
+            f64::MAX,
+            1e-9,
+        )
+        .unwrap_err();
+        assert!(e.message().contains("`center_of_mass.x` overflows"), "{e}");
+    }
+}

@@ -1,0 +1,132 @@
+//! The load pipeline every command runs, and what it derives from a body:
+//!
+//! read (`io`) → parse and validate (`model`) → `--only` → resolve the
+//! analysis once (the file's `[analysis]`, the command line's overrides and
+//! every rule across keys and flags) → compose and summarize (`summary`).
+//!
+//! `report`, `check`, `check --bless`, `diff` and `materials` all go through
+//! `load` or its stages, so a file one command accepts no other rejects,
+//! and the other way round. The commands add only what is theirs: `check`
+//! evaluates expectations (`check`), `diff` compares two summaries (`diff`).
+
+pub mod check;
+pub mod diff;
+pub mod ideal;
+pub mod summary;
+
+use crate::compose::Precision;
+use crate::diag::{Diagnostic, Source};
+use crate::model::{self, Analysis, Model};
+use crate::units::Dim;
+use serde::Serialize;
+use summary::Summary;
+
+/// How products of inertia are shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Default)]
+#[serde(rename_all = "lowercase")]
+pub enum Products {
+    /// Tensor entries: I_xy = −∫xy dm (the default).
+    #[default]
+    Tensor,
+    /// CAD and Meriam convention: I_xy = +∫xy dm.
+    Positive,
+}
+
+/// `[analysis]` values given on the command line, as typed: x,y,z with
+/// optional units, overriding the file's.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Overrides {
+    pub about: Option<String>,
+    pub omega: Option<String>,
+    pub alpha: Option<String>,
+}
+
+/// What a command asks of the pipeline.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Settings {
+    pub products: Products,
+    pub precision: Precision,
+    /// Report one sub-assembly alone (`--only`).
+    pub only: Option<String>,
+    pub overrides: Overrides,
+}
+
+/// A part file read, validated, resolved and summarized.
+#[derive(Debug, Clone)]
+pub struct Loaded {
+    pub source: Source,
+    pub model: Model,
+    /// The analysis the summary was made with: the file's, overridden.
+    pub analysis: Analysis,
+    pub summary: Summary,
+}
+
+/// Read a part file (`-`: standard input) and run it through the pipeline.
+pub fn load(path: &str, settings: &Settings) -> Result<Loaded, Diagnostic> {
+    load_source(crate::io::read_source(path)?, settings)
+}
+
+/// `load` of a source already read.
+pub fn load_source(source: Source, settings: &Settings) -> Result<Loaded, Diagnostic> {
+    let mut model = Model::parse(&source)?;
+    let only = match &settings.only {
+        Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
+        None => None,
+    };
+    let analysis = resolve(&model, &source, &settings.overrides)?;
+    let mut summary = summary::summarize(&model, &analysis, settings.products, settings.precision)
+        .map_err(|e| e.diagnostic(&model, &analysis, &source))?;
+    if let Some(path) = only {
+        summary.name = path.last().cloned();
+        summary.sub_assembly = Some(path);
+    }
+    Ok(Loaded {
+        source,
+        model,
+        analysis,
+        summary,
+    })
+}
+
+/// The analysis to run: the file's `[analysis]` with the command line's
+/// values in place of the file's, and every rule that spans keys and flags.
+/// The one place such rules live.
+pub fn resolve(
+    model: &Model,
+    source: &Source,
+    overrides: &Overrides,
+) -> Result<Analysis, Diagnostic> {
+    let mut analysis = model.analysis.clone();
+    let flag = |text: &Option<String>, name: &str, dim: Dim| {
+        text.as_deref()
+            .map(|t| {
+                model::parse_flag_vector(t, model.units, dim).map_err(|e| {
+                    Diagnostic::plain(format!("invalid value {t:?} for `--{name}`: {e}"))
+                })
+            })
+            .transpose()
+    };
+    // A flag's value has no place in the file: its span goes.
+    if let Some(v) = flag(&overrides.about, "about", Dim::LENGTH)? {
+        analysis.about = Some(v);
+        analysis.about_span = None;
+    }
+    if let Some(v) = flag(&overrides.omega, "omega", Dim::ANGULAR_VELOCITY)? {
+        analysis.omega = Some(v);
+        analysis.omega_span = None;
+    }
+    if let Some(v) = flag(&overrides.alpha, "alpha", Dim::ANGULAR_ACCELERATION)? {
+        analysis.alpha = Some(v);
+        analysis.alpha_span = None;
+    }
+    // α without ω: point at the file's `alpha` unless it came from the flag.
+    if analysis.alpha.is_some() && analysis.omega.is_none() {
+        return Err(match (&analysis.alpha_span, &overrides.alpha) {
+            (Some(span), None) => source
+                .error(span.clone(), "`alpha` needs `omega`: the Euler moment depends on both")
+                .help("give `omega` here or `--omega`; for a body starting from rest, `omega = [0, 0, 0]`"),
+            _ => Diagnostic::plain("`--alpha` needs ω: give `--omega` or `[analysis].omega`"),
+        });
+    }
+    Ok(analysis)
+}

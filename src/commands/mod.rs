@@ -1,0 +1,98 @@
+//! The commands: each a thin file that takes its options (plain library
+//! types; `cli` converts the command line into them), runs the load
+//! pipeline (`analysis`) and hands its result to the output layer
+//! (`render`). Only `main.rs` turns an `Outcome` into a process exit.
+
+pub mod bless;
+pub mod check;
+pub mod diff;
+pub mod materials;
+pub mod report;
+
+use crate::diag::Diagnostic;
+use crate::io::write_atomically;
+
+/// What a run that completed prints and the exit status it ends with
+/// (`check` reports invalid files on stderr and still checks the rest).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Outcome {
+    pub stdout: String,
+    pub stderr: String,
+    pub status: u8,
+}
+
+impl Outcome {
+    /// Success with `stdout`.
+    pub fn ok(stdout: String) -> Outcome {
+        Outcome {
+            stdout,
+            stderr: String::new(),
+            status: 0,
+        }
+    }
+}
+
+/// One command with its options.
+#[derive(Debug, Clone)]
+pub enum Request {
+    Report(report::Options),
+    Check(check::Options),
+    Diff(diff::Options),
+    Materials(materials::Options),
+}
+
+impl Request {
+    /// `-o FILE`, where the command takes it.
+    fn output(&self) -> Option<&str> {
+        match self {
+            Request::Report(o) => o.output.as_deref(),
+            Request::Check(o) => o.output.as_deref(),
+            Request::Diff(o) => o.output.as_deref(),
+            Request::Materials(_) => None,
+        }
+    }
+
+    /// The part files the command reads, as named.
+    fn inputs(&self) -> Vec<&str> {
+        match self {
+            Request::Report(o) => vec![&o.file],
+            Request::Check(o) => o.paths.iter().map(String::as_str).collect(),
+            Request::Diff(o) => vec![&o.old, &o.new],
+            Request::Materials(o) => o.file.as_deref().into_iter().collect(),
+        }
+    }
+}
+
+/// Run a command. Errors are user-facing diagnostics (exit 2).
+pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
+    // `-o` onto a part file being read would replace the design with the
+    // report: refused before anything is read or written.
+    let output = request.output();
+    if let Some(o) = output.and_then(|o| std::fs::canonicalize(o).ok()) {
+        for i in request.inputs() {
+            if std::fs::canonicalize(i).is_ok_and(|i| i == o) {
+                return Err(Diagnostic::plain(format!(
+                    "`-o {}` is the part file `{i}`: the report would replace it",
+                    output.unwrap_or_default()
+                )));
+            }
+        }
+    }
+    let out = match request {
+        Request::Report(o) => report::run(o)?,
+        Request::Check(o) => check::run(o)?,
+        Request::Diff(o) => diff::run(o)?,
+        Request::Materials(o) => materials::run(o)?,
+    };
+    match output {
+        // `-o FILE`: the whole result or nothing, never half a file.
+        Some(path) => {
+            write_atomically(path, &out.stdout, "the output file")?;
+            Ok(Outcome {
+                stdout: String::new(),
+                ..out
+            })
+        }
+        None => Ok(out),
+    }
+}

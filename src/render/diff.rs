@@ -1,0 +1,281 @@
+//! `diff`'s table (in the new file's units) and JSON contract (SI,
+//! docs/diff.md).
+
+use super::format::{DisplayUnits, UNDEFINED, fmt_num};
+use super::grid::new_table;
+use crate::analysis::Products;
+use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
+use crate::numeric::norm;
+use comfy_table::CellAlignment;
+use serde::Serialize;
+use std::fmt::Write;
+
+#[derive(Serialize)]
+struct JsonUnits {
+    mass: &'static str,
+    length: &'static str,
+    inertia: &'static str,
+}
+
+#[derive(Serialize)]
+struct JsonPartChange<'a> {
+    name: &'a str,
+    what: &'a [Change],
+}
+
+#[derive(Serialize)]
+struct JsonParts<'a> {
+    added: Vec<&'a str>,
+    removed: Vec<&'a str>,
+    changed: Vec<JsonPartChange<'a>>,
+}
+
+/// The JSON contract of docs/diff.md; field names are the keys.
+#[derive(Serialize)]
+struct JsonDiff<'a> {
+    format_version: u32,
+    old: &'a str,
+    new: &'a str,
+    products_convention: Products,
+    units: JsonUnits,
+    tolerance: f64,
+    changed: bool,
+    quantities: &'a [QuantityDiff],
+    parts: JsonParts<'a>,
+}
+
+/// The diff as one JSON object, SI.
+pub fn json(d: &Diff) -> String {
+    let (op, np) = (&d.old.parts, &d.new.parts);
+    let json = JsonDiff {
+        format_version: FORMAT_VERSION,
+        old: &d.old.loaded.source.name,
+        new: &d.new.loaded.source.name,
+        products_convention: Products::Tensor,
+        units: JsonUnits {
+            mass: "kg",
+            length: "m",
+            inertia: "kg*m^2",
+        },
+        tolerance: d.tol,
+        changed: d.changed,
+        quantities: &d.quantities,
+        parts: JsonParts {
+            added: d
+                .parts
+                .added
+                .iter()
+                .map(|l| np[l.index].name.as_str())
+                .collect(),
+            removed: d
+                .parts
+                .removed
+                .iter()
+                .map(|l| op[l.index].name.as_str())
+                .collect(),
+            changed: d
+                .parts
+                .changed
+                .iter()
+                .map(|c| JsonPartChange {
+                    name: &op[c.old].name,
+                    what: &c.what,
+                })
+                .collect(),
+        },
+    };
+    let mut s = serde_json::to_string(&json).expect("a diff of finite numbers always serializes");
+    s.push('\n');
+    s
+}
+
+/// `x` (SI) in display units; should the conversion overflow (a value near
+/// the limit of f64, shown in smaller units), the SI value, marked as such.
+fn show(x: f64, factor: f64) -> String {
+    let v = x / factor;
+    if v.is_finite() {
+        fmt_num(v)
+    } else {
+        format!("{} (SI)", fmt_num(x))
+    }
+}
+
+fn percent(r: Option<f64>) -> String {
+    match r.map(|r| r * 100.0) {
+        Some(p) if p.is_finite() => format!("{} %", fmt_num(p)),
+        Some(_) => "> 1e306 %".to_string(),
+        None => UNDEFINED.to_string(),
+    }
+}
+
+/// How a file is named in the table: its path, and its `name` if it has one.
+fn title(side: &Side) -> String {
+    let name = &side.loaded.source.name;
+    match &side.loaded.model.name {
+        Some(n) => format!("{name} ({n})"),
+        None => name.clone(),
+    }
+}
+
+/// A part's name, numbered when the name is not unique in its file.
+fn part_label(parts: &[PartView], index: usize) -> String {
+    let name = &parts[index].name;
+    if parts.iter().filter(|p| &p.name == name).count() > 1 {
+        let k = parts[..=index].iter().filter(|p| &p.name == name).count();
+        format!("{name} (#{k})")
+    } else {
+        name.clone()
+    }
+}
+
+fn describe_lone(p: &PartView, u: &DisplayUnits) -> String {
+    let c = p.center.as_slice();
+    format!(
+        "{}, {} {} at ({}, {}, {}) {}",
+        p.shape.name(),
+        show(p.mass, u.mass),
+        u.mass_label,
+        show(c[0], u.length),
+        show(c[1], u.length),
+        show(c[2], u.length),
+        u.length_label
+    )
+}
+
+fn describe_change(o: &PartView, n: &PartView, what: &[Change], u: &DisplayUnits) -> String {
+    what.iter()
+        .map(|w| match *w {
+            Change::Shape => format!("shape {} → {}", o.shape.name(), n.shape.name()),
+            Change::Mass => format!(
+                "mass {} → {} {} ({})",
+                show(o.mass, u.mass),
+                show(n.mass, u.mass),
+                u.mass_label,
+                percent(Some((n.mass - o.mass) / o.mass))
+            ),
+            Change::Centroid => {
+                let moved = norm((n.center - o.center).as_slice());
+                if moved < f64::MAX {
+                    format!(
+                        "centroid moved {} {}",
+                        show(moved, u.length),
+                        u.length_label
+                    )
+                } else {
+                    "centroid moved".to_string()
+                }
+            }
+            Change::SecondMoment => "second moment".to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}
+
+/// The diff for people, in the new file's units.
+pub fn table(d: &Diff) -> String {
+    let u = DisplayUnits::of(d.new.loaded.summary.file_units);
+    let mut out = String::new();
+    let _ = writeln!(out, "old: {}", title(&d.old));
+    let _ = writeln!(out, "new: {}", title(&d.new));
+    let _ = writeln!(
+        out,
+        "units (the new file's): mass {}, length {}, inertia {}",
+        u.mass_label, u.length_label, u.inertia_label
+    );
+    let _ = writeln!(
+        out,
+        "Ixx … Iyz: inertia about the centre of mass, tensor convention, Ixy = −∫xy dm"
+    );
+    let _ = writeln!(
+        out,
+        "relative: change ÷ the scale of the whole quantity (docs/diff.md); tolerance {:e}",
+        d.tol
+    );
+
+    let mut t = new_table();
+    t.set_header(vec!["", "old", "new", "change", "relative", "unit", ""]);
+    for q in &d.quantities {
+        let (factor, unit) = u.of_dim(q.dim);
+        t.add_row(vec![
+            q.label.clone(),
+            show(q.old, factor),
+            show(q.new, factor),
+            show(q.abs_change, factor),
+            percent(q.rel_change),
+            unit.to_string(),
+            if q.changed { "changed" } else { "" }.to_string(),
+        ]);
+    }
+    for (i, c) in t.column_iter_mut().enumerate() {
+        if (1..=4).contains(&i) {
+            c.set_cell_alignment(CellAlignment::Right);
+        }
+    }
+    let _ = writeln!(out, "\n{t}");
+
+    let (op, np) = (&d.old.parts, &d.new.parts);
+    let p = &d.parts;
+    if p.is_empty() {
+        let _ = writeln!(out, "\nparts: none added, removed or changed");
+    } else {
+        let _ = writeln!(
+            out,
+            "\nparts: {} added, {} removed, {} changed (matched by name)",
+            p.added.len(),
+            p.removed.len(),
+            p.changed.len()
+        );
+        let mut t = new_table();
+        t.set_header(vec!["part", "", "what"]);
+        for l in &p.removed {
+            t.add_row(vec![
+                part_label(op, l.index),
+                "removed".to_string(),
+                describe_lone(&op[l.index], &u),
+            ]);
+        }
+        for l in &p.added {
+            t.add_row(vec![
+                part_label(np, l.index),
+                "added".to_string(),
+                describe_lone(&np[l.index], &u),
+            ]);
+        }
+        for c in &p.changed {
+            t.add_row(vec![
+                part_label(op, c.old),
+                "changed".to_string(),
+                describe_change(&op[c.old], &np[c.new], &c.what, &u),
+            ]);
+        }
+        let _ = writeln!(out, "{t}");
+    }
+    let _ = writeln!(
+        out,
+        "\n{}",
+        if d.changed {
+            "result: changed beyond the tolerance"
+        } else {
+            "result: no change beyond the tolerance"
+        }
+    );
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_value_beyond_f64_in_display_units_is_shown_in_si() {
+        assert_eq!(show(2.5e-3, 1e-3), "2.5");
+        assert_eq!(show(1e308, 1e-3), "1e308 (SI)");
+    }
+
+    #[test]
+    fn percentages_never_print_infinity() {
+        assert_eq!(percent(Some(0.5)), "50 %");
+        assert_eq!(percent(Some(f64::MAX)), "> 1e306 %");
+        assert_eq!(percent(None), UNDEFINED);
+    }
+}

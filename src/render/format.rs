@@ -1,0 +1,329 @@
+//! Everything about how a value looks to a person, in one place: numbers
+//! to significant digits, percentages, the mark of an undefined ratio, the
+//! display unit of each dimension, and the labels of conventions. Every
+//! table renderer takes its words and digits from here; JSON prints full
+//! precision in SI and needs none of it.
+
+use crate::analysis::Products;
+use crate::compose::{EQUAL_MOMENT_RTOL, Precision};
+use crate::units::{Dim, FileUnits};
+use std::fmt::Write;
+
+/// How an undefined ratio (a share of a zero moment, a change relative to
+/// zero) is shown in every table.
+pub const UNDEFINED: &str = "—";
+
+/// The unit of a moment (torque), N·m: the dimension of an energy, J.
+pub const MOMENT_UNIT: &str = "N·m";
+
+/// `x` to six significant digits: fixed notation for moderate magnitudes,
+/// scientific otherwise, trailing zeros dropped.
+pub fn fmt_num(x: f64) -> String {
+    fmt_sig(x, 6)
+}
+
+/// A fraction as a percentage to three significant digits (shares and
+/// relative changes are read as orders of magnitude, not to six digits);
+/// `None`, an undefined ratio, as `UNDEFINED`.
+pub fn fmt_percent(fraction: Option<f64>) -> String {
+    let mut s = String::new();
+    push_percent(&mut s, fraction);
+    s
+}
+
+/// Append `fmt_percent(fraction)` to `out`.
+pub fn push_percent(out: &mut String, fraction: Option<f64>) {
+    match fraction {
+        Some(f) => {
+            push_sig(out, f * 100.0, 3);
+            out.push_str(" %");
+        }
+        None => out.push_str(UNDEFINED),
+    }
+}
+
+/// `x` to `digits` significant digits (1 to 40), as `fmt_num`.
+pub fn fmt_sig(x: f64, digits: usize) -> String {
+    let mut s = String::new();
+    push_sig(&mut s, x, digits);
+    s
+}
+
+/// Append `fmt_sig(x, digits)` to `out`, without allocating.
+///
+/// NOTE: one `{:.N$e}` formatting gives the digits of both notations where
+/// the fixed one keeps `digits` significant digits (exponent ≤ digits − 1,
+/// always so for six): both round at the same decimal place. Above that the
+/// fixed notation rounds to a whole number, a second formatting. The table
+/// of 100,000 parts formats ~800,000 numbers.
+pub fn push_sig(out: &mut String, x: f64, digits: usize) {
+    debug_assert!((1..=40).contains(&digits), "the buffers hold 40 digits");
+    if x == 0.0 {
+        out.push('0');
+        return;
+    }
+    if !x.is_finite() {
+        // Unreachable through `summarize`, which refuses non-finite
+        // results; printed honestly rather than panicking if it ever is.
+        let _ = write!(out, "{x}");
+        return;
+    }
+    let places = digits.max(1) - 1;
+    let mut sci = Ascii::<64>::new();
+    let _ = write!(sci, "{x:.places$e}");
+    let sci = sci.as_str();
+    let (mantissa, exp) = sci.split_once('e').expect("{:e} always has an exponent");
+    let exp: i32 = exp.parse().expect("{:e} exponent is an integer");
+    if !(-4..6).contains(&exp) {
+        out.push_str(trim_zeros(mantissa));
+        let _ = write!(out, "e{exp}");
+        return;
+    }
+    let mut fixed = Ascii::<64>::new();
+    if exp > places as i32 {
+        let _ = write!(fixed, "{x:.0}");
+    } else {
+        let (sign, m) = match mantissa.strip_prefix('-') {
+            Some(m) => ("-", m),
+            None => ("", mantissa),
+        };
+        // m is "d" or "d.ddd…": `digits` digits.
+        let (first, rest) = m.split_at(1);
+        let rest = rest.strip_prefix('.').unwrap_or(rest);
+        let _ = fixed.write_str(sign);
+        if exp >= 0 {
+            let e = exp as usize;
+            let _ = fixed.write_str(first);
+            let _ = fixed.write_str(&rest[..e]);
+            if e < places {
+                let _ = fixed.write_str(".");
+                let _ = fixed.write_str(&rest[e..]);
+            }
+        } else {
+            let _ = fixed.write_str("0.");
+            for _ in 0..(-exp - 1) {
+                let _ = fixed.write_str("0");
+            }
+            let _ = fixed.write_str(first);
+            let _ = fixed.write_str(rest);
+        }
+    }
+    out.push_str(trim_zeros(fixed.as_str()));
+}
+
+fn trim_zeros(s: &str) -> &str {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        s
+    }
+}
+
+/// A fixed-size ASCII buffer on the stack for `write!`.
+struct Ascii<const N: usize> {
+    bytes: [u8; N],
+    len: usize,
+}
+
+impl<const N: usize> Ascii<N> {
+    fn new() -> Self {
+        Ascii {
+            bytes: [0; N],
+            len: 0,
+        }
+    }
+
+    fn as_str(&self) -> &str {
+        std::str::from_utf8(&self.bytes[..self.len]).expect("only str is written")
+    }
+}
+
+impl<const N: usize> Write for Ascii<N> {
+    fn write_str(&mut self, s: &str) -> std::fmt::Result {
+        let end = self.len + s.len();
+        self.bytes
+            .get_mut(self.len..end)
+            .ok_or(std::fmt::Error)?
+            .copy_from_slice(s.as_bytes());
+        self.len = end;
+        Ok(())
+    }
+}
+
+/// The display units of a file: tables show mass, length and inertia in
+/// the file's own units and the dynamics in SI. The one mapping from a
+/// dimension to a display scale and label.
+#[derive(Debug, Clone)]
+pub struct DisplayUnits {
+    /// SI per display unit.
+    pub mass: f64,
+    pub length: f64,
+    pub inertia: f64,
+    pub mass_label: &'static str,
+    pub length_label: &'static str,
+    pub inertia_label: String,
+}
+
+impl DisplayUnits {
+    pub fn of(f: FileUnits) -> DisplayUnits {
+        DisplayUnits {
+            mass: f.factor(Dim::MASS).value(),
+            length: f.factor(Dim::LENGTH).value(),
+            inertia: f.factor(Dim::INERTIA).value(),
+            mass_label: f.mass,
+            length_label: f.length,
+            inertia_label: f.inertia_label(),
+        }
+    }
+
+    /// Scale (SI per display unit) and label of a value of dimension `dim`:
+    /// the file's units for mass, length and inertia, SI for the rest.
+    pub fn of_dim(&self, dim: Dim) -> (f64, &str) {
+        match dim {
+            Dim::MASS => (self.mass, self.mass_label),
+            Dim::LENGTH => (self.length, self.length_label),
+            Dim::INERTIA => (self.inertia, &self.inertia_label),
+            Dim::ANGULAR_VELOCITY => (1.0, "rad/s"),
+            Dim::ANGULAR_ACCELERATION => (1.0, "rad/s²"),
+            Dim::ANGULAR_MOMENTUM => (1.0, "N·m·s"),
+            // Also the dimension of a moment, which the report labels
+            // `MOMENT_UNIT` itself.
+            Dim::ENERGY => (1.0, "J"),
+            _ => (1.0, ""),
+        }
+    }
+
+    /// `x` (SI) in display units with its unit, e.g. `12.5 mm`.
+    pub fn show(&self, x: f64, dim: Dim) -> String {
+        let (scale, unit) = self.of_dim(dim);
+        let mut s = fmt_num(x / scale);
+        if !unit.is_empty() {
+            s.push(' ');
+            s.push_str(unit);
+        }
+        s
+    }
+}
+
+/// The line that says which sign convention products of inertia use.
+pub fn products_label(p: Products) -> &'static str {
+    match p {
+        Products::Tensor => "tensor convention, Ixy = −∫xy dm",
+        Products::Positive => "positive convention (CAD, Meriam), Ixy = +∫xy dm",
+    }
+}
+
+/// The line that says which arithmetic was used.
+pub fn precision_label(p: Precision) -> &'static str {
+    match p {
+        Precision::Standard => "standard (f64, compensated sums)",
+        Precision::Extended => "extended (double-double, ~32 digits)",
+    }
+}
+
+/// The note under a table of principal moments some of which are equal.
+pub fn equal_note(out: &mut String, equal: &[usize]) {
+    if !equal.is_empty() {
+        let names: Vec<String> = equal.iter().map(|i| format!("I{}", i + 1)).collect();
+        let _ = writeln!(
+            out,
+            "note: {} are equal within {EQUAL_MOMENT_RTOL:e} relative: their axes are not unique",
+            names.join(" = "),
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_show_six_significant_digits() {
+        assert_eq!(fmt_num(1.6625), "1.6625");
+        assert_eq!(fmt_num(0.5501562), "0.550156");
+        assert_eq!(fmt_num(-0.06644531), "-0.0664453");
+        assert_eq!(fmt_num(123456.7), "123457");
+        assert_eq!(fmt_num(1234567.0), "1.23457e6");
+        assert_eq!(fmt_num(0.00001234567), "1.23457e-5");
+        assert_eq!(fmt_num(0.0), "0");
+        assert_eq!(fmt_num(2.0), "2");
+    }
+
+    #[test]
+    fn percentages_show_three_significant_digits_and_a_dash_for_none() {
+        assert_eq!(fmt_percent(Some(1.0 / 3.0)), "33.3 %");
+        assert_eq!(fmt_percent(Some(1e-6)), "0.0001 %");
+        assert_eq!(fmt_percent(Some(1.234_567e-9)), "1.23e-7 %");
+        assert_eq!(fmt_percent(Some(1.0)), "100 %");
+        assert_eq!(fmt_percent(Some(0.0)), "0 %");
+        assert_eq!(fmt_percent(None), "—");
+    }
+
+    /// `fmt_sig` formats once where it can; this reference, as it was,
+    /// twice (`{:.N$e}`, then fixed). Rounding that bumps the exponent
+    /// (9.999996 → 10.0000) and decimal ties (123456.5) included.
+    #[test]
+    fn one_formatting_gives_the_digits_of_two() {
+        fn reference(x: f64, digits: usize) -> String {
+            let trim = |s: &str| {
+                if s.contains('.') {
+                    s.trim_end_matches('0').trim_end_matches('.').to_string()
+                } else {
+                    s.to_string()
+                }
+            };
+            if x == 0.0 {
+                return "0".to_string();
+            }
+            let places = digits.max(1) - 1;
+            let sci = format!("{x:.places$e}");
+            let (mantissa, exp) = sci.split_once('e').unwrap();
+            let exp: i32 = exp.parse().unwrap();
+            if (-4..6).contains(&exp) {
+                let decimals = (places as i32 - exp).max(0) as usize;
+                trim(&format!("{x:.decimals$}"))
+            } else {
+                format!("{}e{exp}", trim(mantissa))
+            }
+        }
+        let mut state = 0x9E37_79B9_7F4A_7C15_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut xs = vec![
+            9.999995,
+            9.999996,
+            99999.95,
+            999999.5,
+            0.000099999995,
+            123456.5,
+            2.5,
+            99.95,
+            0.5,
+        ];
+        for _ in 0..50_000 {
+            xs.push(f64::from_bits(next()));
+            // Uniform in [0, 10) times 1e-6 … 1e7: the fixed range and its edges.
+            let m = (next() >> 11) as f64 / (1u64 << 53) as f64 * 10.0;
+            xs.push(m * 10f64.powi((next() % 14) as i32 - 6));
+        }
+        for x in xs.into_iter().filter(|x| x.is_finite()) {
+            for digits in [1, 3, 6, 17] {
+                assert_eq!(
+                    super::fmt_sig(x, digits),
+                    reference(x, digits),
+                    "{x:e}, {digits}"
+                );
+                assert_eq!(
+                    super::fmt_sig(-x, digits),
+                    reference(-x, digits),
+                    "{:e}, {digits}",
+                    -x
+                );
+            }
+        }
+    }
+}

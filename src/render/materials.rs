@@ -1,0 +1,34 @@
+//! `materials`' output: the table of materials, or one JSON document.
+
+use super::format::fmt_num;
+use super::grid::new_table;
+use crate::analysis::summary::FORMAT_VERSION;
+use serde::Serialize;
+
+/// One listed material; `density` in kg/m³.
+#[derive(Debug, Clone, Serialize, PartialEq)]
+pub struct Listed {
+    pub name: String,
+    pub density: f64,
+    pub source: String,
+}
+
+pub fn json(list: &[Listed]) -> String {
+    let mut s = serde_json::to_string(&serde_json::json!({
+        "format_version": FORMAT_VERSION,
+        "units": { "density": "kg/m^3" },
+        "materials": list,
+    }))
+    .expect("finite densities serialize");
+    s.push('\n');
+    s
+}
+
+pub fn table(list: &[Listed]) -> String {
+    let mut t = new_table();
+    t.set_header(vec!["material", "density (kg/m³)", "source"]);
+    for l in list {
+        t.add_row(vec![l.name.clone(), fmt_num(l.density), l.source.clone()]);
+    }
+    format!("{t}\n")
+}

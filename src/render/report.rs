@@ -1,0 +1,301 @@
+//! The table for people: mass, length and inertia in the file's own units
+//! (what the engineer wrote and would compare with a CAD dialog), dynamics in
+//! SI, six significant digits. Full precision is in the JSON.
+
+use super::format::{
+    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, fmt_percent, precision_label,
+    products_label, push_percent, push_sig,
+};
+use super::grid::{Cells, new_table, right_align, write_table};
+use crate::analysis::ideal::Idealisation;
+use crate::analysis::summary::Summary;
+use crate::units::Dim;
+use comfy_table::{CellAlignment, Table};
+use std::fmt::Write;
+
+/// The report as one JSON object (docs/json.md): the summary, SI.
+pub fn json(summary: &Summary) -> String {
+    let mut s =
+        serde_json::to_string(summary).expect("a summary of finite numbers always serializes");
+    s.push('\n');
+    s
+}
+
+fn matrix_table(m: &[[f64; 3]; 3], scale: f64) -> Table {
+    let mut t = new_table();
+    t.set_header(vec!["", "x", "y", "z"]);
+    for (label, row) in ["x", "y", "z"].iter().zip(m) {
+        let mut cells = vec![label.to_string()];
+        cells.extend(row.iter().map(|v| fmt_num(v / scale)));
+        t.add_row(cells);
+    }
+    right_align(&mut t, 1);
+    t
+}
+
+fn principal_table(
+    moments: &[f64; 3],
+    axes: &[[f64; 3]; 3],
+    radii: Option<&[f64; 3]>,
+    u: &DisplayUnits,
+) -> Table {
+    let mut t = new_table();
+    let mut header = vec![format!("moment ({})", u.inertia_label)];
+    if radii.is_some() {
+        header.push(format!("radius of gyration ({})", u.length_label));
+    }
+    header.extend(["axis x", "axis y", "axis z"].map(String::from));
+    header.insert(0, String::new());
+    t.set_header(header);
+    for i in 0..3 {
+        let mut cells = vec![format!("I{}", i + 1), fmt_num(moments[i] / u.inertia)];
+        if let Some(r) = radii {
+            cells.push(fmt_num(r[i] / u.length));
+        }
+        cells.extend(axes[i].iter().map(|a| fmt_num(*a)));
+        t.add_row(cells);
+    }
+    right_align(&mut t, 1);
+    t
+}
+
+/// The report for people; `source` names the file it came from.
+pub fn table(s: &Summary, source: &str) -> String {
+    let u = DisplayUnits::of(s.file_units);
+    let mut out = String::new();
+    let _ = match (&s.name, &s.sub_assembly) {
+        (Some(n), Some(path)) => {
+            writeln!(out, "{n} (sub-assembly `{}` of {source})", path.join(" / "))
+        }
+        (Some(n), None) => writeln!(out, "{n} ({source})"),
+        (None, _) => writeln!(out, "{source}"),
+    };
+    let _ = writeln!(
+        out,
+        "units: mass {}, length {}, inertia {}; ω, H, T, α and M in SI",
+        u.mass_label, u.length_label, u.inertia_label
+    );
+    let _ = writeln!(
+        out,
+        "products of inertia: {}",
+        products_label(s.products_convention)
+    );
+    let _ = writeln!(out, "precision: {}", precision_label(s.precision));
+    let _ = writeln!(out, "\nmass: {} {}", fmt_num(s.mass / u.mass), u.mass_label);
+    if let Some(t) = s.kinetic_energy {
+        let _ = writeln!(out, "kinetic energy T: {} J", fmt_num(t));
+    }
+
+    let mut vectors = new_table();
+    vectors.set_header(vec!["", "x", "y", "z", "unit"]);
+    let mut row = |label: &str, v: &[f64; 3], dim: Dim| {
+        let (scale, unit) = u.of_dim(dim);
+        let unit = if dim == Dim::ENERGY {
+            MOMENT_UNIT
+        } else {
+            unit
+        };
+        let mut cells = vec![label.to_string()];
+        cells.extend(v.iter().map(|x| fmt_num(x / scale)));
+        cells.push(unit.to_string());
+        vectors.add_row(cells);
+    };
+    row("centre of mass", &s.center_of_mass, Dim::LENGTH);
+    if s.reference_given {
+        row("reference point", &s.reference_point, Dim::LENGTH);
+    }
+    if let Some(w) = &s.omega {
+        row("angular velocity ω", w, Dim::ANGULAR_VELOCITY);
+    }
+    if let Some(h) = &s.angular_momentum {
+        row("angular momentum H", h, Dim::ANGULAR_MOMENTUM);
+    }
+    if let Some(a) = &s.alpha {
+        row("angular acceleration α", a, Dim::ANGULAR_ACCELERATION);
+    }
+    if let Some(m) = &s.euler_moment {
+        // A moment has the dimension of an energy: labelled N·m above.
+        row("Euler moment M", m, Dim::ENERGY);
+    }
+    right_align(&mut vectors, 1);
+    if let Some(c) = vectors.column_mut(4) {
+        c.set_cell_alignment(CellAlignment::Left);
+    }
+    let _ = writeln!(out, "{vectors}");
+
+    let _ = writeln!(
+        out,
+        "\ninertia about the centre of mass ({})",
+        u.inertia_label
+    );
+    let _ = writeln!(out, "{}", matrix_table(&s.inertia_com, u.inertia));
+    if s.reference_given {
+        let p = s.reference_point.map(|x| fmt_num(x / u.length));
+        let _ = writeln!(
+            out,
+            "\ninertia about the reference point ({}, {}, {}) {} ({})",
+            p[0], p[1], p[2], u.length_label, u.inertia_label
+        );
+        let _ = writeln!(out, "{}", matrix_table(&s.inertia_ref, u.inertia));
+    }
+
+    let _ = writeln!(
+        out,
+        "\nprincipal moments and axes about the centre of mass (ascending)"
+    );
+    let _ = writeln!(
+        out,
+        "{}",
+        principal_table(
+            &s.principal_moments,
+            &s.principal_axes,
+            Some(&s.radii_of_gyration),
+            &u
+        )
+    );
+    equal_note(&mut out, &s.equal_moments);
+    if s.reference_given {
+        let _ = writeln!(
+            out,
+            "\nprincipal moments and axes about the reference point (ascending)"
+        );
+        let _ = writeln!(
+            out,
+            "{}",
+            principal_table(&s.principal_moments_ref, &s.principal_axes_ref, None, &u)
+        );
+        equal_note(&mut out, &s.equal_moments_ref);
+    }
+
+    let _ = writeln!(out, "\nparts");
+    let header = [
+        "#".to_string(),
+        "name".to_string(),
+        "shape".to_string(),
+        format!("mass ({})", u.mass_label),
+        "mass share".to_string(),
+        format!("centroid x ({})", u.length_label),
+        "y".to_string(),
+        "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
+    ];
+    let mut cells = Cells::with_capacity(s.parts.len() * header.len());
+    for (i, p) in s.parts.iter().enumerate() {
+        let _ = write!(cells.text, "{}", i + 1);
+        cells.end();
+        cells.text.push_str(&p.name);
+        cells.end();
+        cells.text.push_str(p.shape.name());
+        cells.end();
+        push_sig(&mut cells.text, p.mass / u.mass, 6);
+        cells.end();
+        let _ = write!(cells.text, "{:.1} %", p.mass_fraction * 100.0);
+        cells.end();
+        for x in &p.center_of_mass {
+            push_sig(&mut cells.text, x / u.length, 6);
+            cells.end();
+        }
+        for share in p.principal_moment_share {
+            push_percent(&mut cells.text, share);
+            cells.end();
+        }
+    }
+    // Left-aligned: name and shape.
+    let right: Vec<bool> = (0..header.len()).map(|i| !(1..3).contains(&i)).collect();
+    write_table(&mut out, &header, &cells, &right);
+    let _ = writeln!(
+        out,
+        "I1–I3 share: each part's share of each principal moment about the centre of mass"
+    );
+    if s.parts
+        .iter()
+        .any(|p| p.principal_moment_share.contains(&None))
+    {
+        let _ = writeln!(
+            out,
+            "note: {UNDEFINED} marks a principal moment that is zero (a lone rod's axial moment): it has no shares"
+        );
+    }
+    if !s.assemblies.is_empty() {
+        assemblies(&mut out, s, &u);
+    }
+    if let Some(i) = &s.idealisation {
+        idealisation(&mut out, i, &u);
+    }
+    out
+}
+
+/// The sub-assemblies section: each with its mass, centre of mass and
+/// shares, indented by depth.
+fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
+    let mut t = new_table();
+    t.set_header(vec![
+        "sub-assembly".to_string(),
+        "parts".to_string(),
+        format!("mass ({})", u.mass_label),
+        "mass share".to_string(),
+        format!("centre of mass x ({})", u.length_label),
+        "y".to_string(),
+        "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
+    ]);
+    for a in &s.assemblies {
+        let indent = "  ".repeat(a.path.len() - 1);
+        let mut row = vec![
+            format!("{indent}{}", a.path.last().expect("a path is never empty")),
+            a.parts.to_string(),
+            fmt_num(a.mass / u.mass),
+            fmt_percent(Some(a.mass_fraction)),
+        ];
+        row.extend(a.center_of_mass.iter().map(|x| fmt_num(x / u.length)));
+        row.extend(a.principal_moment_share.iter().map(|x| fmt_percent(*x)));
+        t.add_row(row);
+    }
+    let _ = writeln!(out, "\nsub-assemblies\n{t}");
+}
+
+/// The idealisation section: the change of each principal moment with the
+/// plates and rods that give their real size made solid.
+fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits) {
+    let _ = writeln!(
+        out,
+        "\nidealisation (thin plates and slender rods as solids)"
+    );
+    let m = i.principal_moments_solid.map(|x| fmt_num(x / u.inertia));
+    let _ = writeln!(
+        out,
+        "principal moments with the parts below solid ({}): {}, {}, {}",
+        u.inertia_label, m[0], m[1], m[2]
+    );
+    let header = ["made solid", "as", "I1 change", "I2 change", "I3 change"].map(String::from);
+    let mut cells = Cells::with_capacity((i.parts.len() + 1) * header.len());
+    let mut row = |name: &str, solid: &str, change: &[Option<f64>; 3]| {
+        cells.text.push_str(name);
+        cells.end();
+        cells.text.push_str(solid);
+        cells.end();
+        for c in change {
+            push_percent(&mut cells.text, *c);
+            cells.end();
+        }
+    };
+    row("all together", "", &i.relative_change);
+    for p in &i.parts {
+        row(&p.name, p.solid.name(), &p.relative_change);
+    }
+    write_table(out, &header, &cells, &[false, false, true, true, true]);
+    let _ = writeln!(
+        out,
+        "change: (solid − idealised) / idealised of each principal moment, ascending"
+    );
+    if i.relative_change.contains(&None) {
+        let _ = writeln!(
+            out,
+            "note: {UNDEFINED} marks a principal moment that is zero when idealised (a lone rod's axial moment); compare the moments"
+        );
+    }
+}

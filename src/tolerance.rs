@@ -1,0 +1,37 @@
+//! Every tolerance massprop applies, in one place, each with the reason for
+//! its size. A tolerance is a fraction of the scale named with it, never an
+//! absolute number.
+
+/// Physical validity: a principal moment (or second-moment eigenvalue) may
+/// be negative, or the triangle inequality I1 + I2 ≥ I3 broken, by this
+/// fraction of the largest — a given `inertia`'s rounding in a datasheet, a
+/// composed body's rounding, a cut-out that removes exactly what was there
+/// — no more. Far above the rounding of a composed tensor (~1e-16
+/// relative), far below any real body's thinnest direction. Used by the
+/// input check of `inertia` parts, the check of bodies with cut-outs and
+/// `check`'s validity checks alike.
+pub const VALIDITY_RTOL: f64 = 1e-12;
+
+/// Principal moments within this fraction of the largest are reported as
+/// equal, and their axes as not unique. 1e-9 is far above the rounding of a
+/// composed tensor (~1e-16 relative) and far below any gap an engineer would
+/// call distinct; below it the computed axes are noise.
+pub const EQUAL_MOMENT_RTOL: f64 = 1e-9;
+
+/// A triangle's area must exceed this fraction of its longest edge squared.
+pub const COLLINEAR_TOLERANCE: f64 = 1e-9;
+
+/// A given `inertia` must be symmetric to this fraction of its largest entry
+/// (rounding in a datasheet, not a typo); it is then symmetrised.
+pub const SYMMETRY_TOLERANCE: f64 = 1e-9;
+
+/// Edges given as `corner` + `edges` must be perpendicular to this relative
+/// tolerance: |eᵢ·eⱼ| ≤ 1e-9 |eᵢ||eⱼ|.
+pub const PERPENDICULAR_TOLERANCE: f64 = 1e-9;
+
+/// A rotation matrix must be orthonormal to this (max-norm of RᵀR − E).
+pub const MATRIX_TOLERANCE: f64 = 1e-9;
+
+/// A quaternion's norm may differ from 1 by this much: rounding in printed
+/// values, not a typo. Its direction is used either way.
+pub const QUATERNION_TOLERANCE: f64 = 1e-6;
