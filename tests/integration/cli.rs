@@ -6,8 +6,9 @@ use serde_json::Value;
 const BENT_PLATE: &str = "shapes/bent-plate.toml";
 
 #[test]
-fn bad_input_cases() {
-    // Every case in tests/cmd/*.md: exit status and full output pinned.
+fn every_case_in_tests_cmd_gives_its_pinned_output() {
+    // Every case in tests/cmd/*.md (bad input, check, diff, report):
+    // exit status and full output pinned.
     trycmd::TestCases::new().case("tests/cmd/*.md");
 }
 
