@@ -12,6 +12,43 @@ fn every_case_in_tests_cmd_gives_its_pinned_output() {
     trycmd::TestCases::new().case("tests/cmd/*.md");
 }
 
+/// tests/cmd/report.md pins `report` of every example in shapes/, as a
+/// table and as JSON, so adding an example forces its snapshots. Each
+/// command must open a `console` block (not `text`, not `ignore`: trycmd
+/// runs it) and expect success.
+#[test]
+fn every_example_has_a_table_and_a_json_snapshot() {
+    let md = std::fs::read_to_string("tests/cmd/report.md").unwrap();
+    let lines: Vec<&str> = md.lines().collect();
+    let mut examples = 0;
+    for entry in std::fs::read_dir("shapes").unwrap() {
+        // Every file: anything in shapes/ is an example users will run.
+        let path = entry.unwrap().path();
+        let path = path.to_str().unwrap();
+        for command in [
+            format!("$ massprop report {path}"),
+            format!("$ massprop report {path} --format json"),
+        ] {
+            let at = lines.iter().position(|l| *l == command);
+            let at = at.unwrap_or_else(|| {
+                panic!(
+                    "tests/cmd/report.md has no `{command}`: add a console block \
+                     and run TRYCMD=overwrite cargo test --test integration cli::every_case_in_tests_cmd"
+                )
+            });
+            assert_eq!(lines[at - 1], "```console", "{command}: not a run block");
+            // No `? ...` line is trycmd's default: status 0.
+            let status = lines[at + 1];
+            assert!(
+                !status.starts_with("? ") || status == "? 0" || status == "? success",
+                "{command}: must expect success, not {status}"
+            );
+        }
+        examples += 1;
+    }
+    assert!(examples >= 7, "only {examples} files in shapes/");
+}
+
 /// The catalogue's promises, beyond the pinned text: for every `report`
 /// case of tests/cmd/bad-input.md, nothing on stdout (trycmd shows stdout
 /// and stderr together), status 2, a first line `file[:line:col]: error:`,
