@@ -100,6 +100,38 @@ fn every_bad_input_case_errors_on_stderr_alone_with_its_place() {
     assert!(files.len() >= 40, "only {} hostile files", files.len());
 }
 
+/// The one case of tests/cmd/bad-input.md that cannot be a committed file:
+/// `cargo package` fails on a symlink loop, so the loop is made here, in a
+/// scratch directory. The expected stderr is the catalogue's own `text`
+/// block that starts with `include-symlink-loop.toml:`, so the catalogue
+/// shows what is tested.
+#[test]
+fn an_include_of_a_symlink_loop_is_an_error_at_the_include() {
+    let md = std::fs::read_to_string("tests/cmd/bad-input.md").unwrap();
+    let want = md
+        .split("```text\n")
+        .filter_map(|rest| rest.split("```").next())
+        .find(|block| block.starts_with("include-symlink-loop.toml:"))
+        .expect("tests/cmd/bad-input.md shows the symlink loop's message");
+    let dir = crate::common::scratch("cli", "include-symlink-loop");
+    std::fs::write(
+        dir.join("include-symlink-loop.toml"),
+        "[[part]]\ninclude = \"loop-a.toml\"\n",
+    )
+    .unwrap();
+    std::os::unix::fs::symlink("loop-b.toml", dir.join("loop-a.toml")).unwrap();
+    std::os::unix::fs::symlink("loop-a.toml", dir.join("loop-b.toml")).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args(["report", "include-symlink-loop.toml"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty(), "printed on stdout");
+    assert_eq!(String::from_utf8_lossy(&out.stderr), want);
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 fn json(args: &[&str]) -> Value {
     let out = massprop(args);
     assert!(
