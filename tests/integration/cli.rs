@@ -434,6 +434,29 @@ fn the_documented_full_example_is_the_bent_plate() {
     }
 }
 
+/// README's sample of `massprop report shapes/bent-plate.toml` is the real
+/// output up to its `…`, and README names every example in shapes/.
+#[test]
+fn the_readme_shows_the_real_report_and_every_example() {
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    let sample = readme
+        .split("```console\n$ massprop report shapes/bent-plate.toml\n")
+        .nth(1)
+        .and_then(|rest| rest.split('…').next())
+        .expect("README shows `massprop report shapes/bent-plate.toml`");
+    let out = massprop(&["report", BENT_PLATE]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.starts_with(sample),
+        "README's sample:\n{sample}\nis not how the output starts:\n{text}"
+    );
+    for entry in std::fs::read_dir("shapes").unwrap() {
+        let name = entry.unwrap().file_name();
+        let name = format!("`{}`", name.to_str().unwrap());
+        assert!(readme.contains(&name), "README does not name {name}");
+    }
+}
+
 #[test]
 fn help_documents_exit_statuses() {
     let out = massprop(&["--help"]);
