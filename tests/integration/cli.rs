@@ -457,6 +457,33 @@ fn the_readme_shows_the_real_report_and_every_example() {
     }
 }
 
+/// docs/json.md's example prints the bent plate's `angular_momentum`: its
+/// numbers are the ones massprop prints, digit for digit.
+#[test]
+fn the_json_doc_example_shows_the_printed_numbers() {
+    let doc = std::fs::read_to_string("docs/json.md").unwrap();
+    let command =
+        "$ massprop report shapes/bent-plate.toml --format json | jq '.angular_momentum'\n";
+    let shown: Vec<&str> = doc
+        .split(command)
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("docs/json.md shows the bent plate's angular momentum")
+        .split(['[', ']', ',', ' ', '\n'])
+        .filter(|w| !w.is_empty())
+        .collect();
+    let out = massprop(&["report", BENT_PLATE, "--format", "json"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let printed: Vec<&str> = text
+        .split("\"angular_momentum\":[")
+        .nth(1)
+        .and_then(|rest| rest.split(']').next())
+        .expect("the JSON has angular_momentum")
+        .split(',')
+        .collect();
+    assert_eq!(shown, printed);
+}
+
 #[test]
 fn help_documents_exit_statuses() {
     let out = massprop(&["--help"]);
