@@ -6,9 +6,47 @@ use serde_json::Value;
 const BENT_PLATE: &str = "shapes/bent-plate.toml";
 
 #[test]
-fn bad_input_cases() {
-    // Every case in tests/cmd/*.md: exit status and full output pinned.
+fn every_case_in_tests_cmd_gives_its_pinned_output() {
+    // Every case in tests/cmd/*.md (bad input, check, diff, report):
+    // exit status and full output pinned.
     trycmd::TestCases::new().case("tests/cmd/*.md");
+}
+
+/// tests/cmd/report.md pins `report` of every example in shapes/, as a
+/// table and as JSON, so adding an example forces its snapshots. Each
+/// command must open a `console` block (not `text`, not `ignore`: trycmd
+/// runs it) and expect success.
+#[test]
+fn every_example_has_a_table_and_a_json_snapshot() {
+    let md = std::fs::read_to_string("tests/cmd/report.md").unwrap();
+    let lines: Vec<&str> = md.lines().collect();
+    let mut examples = 0;
+    for entry in std::fs::read_dir("shapes").unwrap() {
+        // Every file: anything in shapes/ is an example users will run.
+        let path = entry.unwrap().path();
+        let path = path.to_str().unwrap();
+        for command in [
+            format!("$ massprop report {path}"),
+            format!("$ massprop report {path} --format json"),
+        ] {
+            let at = lines.iter().position(|l| *l == command);
+            let at = at.unwrap_or_else(|| {
+                panic!(
+                    "tests/cmd/report.md has no `{command}`: add a console block \
+                     and run TRYCMD=overwrite cargo test --test integration cli::every_case_in_tests_cmd"
+                )
+            });
+            assert_eq!(lines[at - 1], "```console", "{command}: not a run block");
+            // No `? ...` line is trycmd's default: status 0.
+            let status = lines[at + 1];
+            assert!(
+                !status.starts_with("? ") || status == "? 0" || status == "? success",
+                "{command}: must expect success, not {status}"
+            );
+        }
+        examples += 1;
+    }
+    assert!(examples >= 7, "only {examples} files in shapes/");
 }
 
 /// The catalogue's promises, beyond the pinned text: for every `report`
@@ -60,6 +98,38 @@ fn every_bad_input_case_errors_on_stderr_alone_with_its_place() {
         }
     }
     assert!(files.len() >= 40, "only {} hostile files", files.len());
+}
+
+/// The one case of tests/cmd/bad-input.md that cannot be a committed file:
+/// `cargo package` fails on a symlink loop, so the loop is made here, in a
+/// scratch directory. The expected stderr is the catalogue's own `text`
+/// block that starts with `include-symlink-loop.toml:`, so the catalogue
+/// shows what is tested.
+#[test]
+fn an_include_of_a_symlink_loop_is_an_error_at_the_include() {
+    let md = std::fs::read_to_string("tests/cmd/bad-input.md").unwrap();
+    let want = md
+        .split("```text\n")
+        .filter_map(|rest| rest.split("```").next())
+        .find(|block| block.starts_with("include-symlink-loop.toml:"))
+        .expect("tests/cmd/bad-input.md shows the symlink loop's message");
+    let dir = crate::common::scratch("cli", "include-symlink-loop");
+    std::fs::write(
+        dir.join("include-symlink-loop.toml"),
+        "[[part]]\ninclude = \"loop-a.toml\"\n",
+    )
+    .unwrap();
+    std::os::unix::fs::symlink("loop-b.toml", dir.join("loop-a.toml")).unwrap();
+    std::os::unix::fs::symlink("loop-a.toml", dir.join("loop-b.toml")).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args(["report", "include-symlink-loop.toml"])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty(), "printed on stdout");
+    assert_eq!(String::from_utf8_lossy(&out.stderr), want);
+    std::fs::remove_dir_all(&dir).ok();
 }
 
 fn json(args: &[&str]) -> Value {
@@ -364,6 +434,56 @@ fn the_documented_full_example_is_the_bent_plate() {
             }
         }
     }
+}
+
+/// README's sample of `massprop report shapes/bent-plate.toml` is the real
+/// output up to its `…`, and README names every example in shapes/.
+#[test]
+fn the_readme_shows_the_real_report_and_every_example() {
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    let sample = readme
+        .split("```console\n$ massprop report shapes/bent-plate.toml\n")
+        .nth(1)
+        .and_then(|rest| rest.split('…').next())
+        .expect("README shows `massprop report shapes/bent-plate.toml`");
+    let out = massprop(&["report", BENT_PLATE]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.starts_with(sample),
+        "README's sample:\n{sample}\nis not how the output starts:\n{text}"
+    );
+    for entry in std::fs::read_dir("shapes").unwrap() {
+        let name = entry.unwrap().file_name();
+        let name = format!("`{}`", name.to_str().unwrap());
+        assert!(readme.contains(&name), "README does not name {name}");
+    }
+}
+
+/// docs/json.md's example prints the bent plate's `angular_momentum`: its
+/// numbers are the ones massprop prints, digit for digit.
+#[test]
+fn the_json_doc_example_shows_the_printed_numbers() {
+    let doc = std::fs::read_to_string("docs/json.md").unwrap();
+    let command =
+        "$ massprop report shapes/bent-plate.toml --format json | jq '.angular_momentum'\n";
+    let shown: Vec<&str> = doc
+        .split(command)
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .expect("docs/json.md shows the bent plate's angular momentum")
+        .split(['[', ']', ',', ' ', '\n'])
+        .filter(|w| !w.is_empty())
+        .collect();
+    let out = massprop(&["report", BENT_PLATE, "--format", "json"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let printed: Vec<&str> = text
+        .split("\"angular_momentum\":[")
+        .nth(1)
+        .and_then(|rest| rest.split(']').next())
+        .expect("the JSON has angular_momentum")
+        .split(',')
+        .collect();
+    assert_eq!(shown, printed);
 }
 
 #[test]

@@ -7,6 +7,7 @@ mod common;
 mod diff;
 mod hostile;
 mod invariants;
+mod package;
 mod physics;
 mod reference;
 mod stress;
