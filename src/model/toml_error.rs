@@ -1,0 +1,258 @@
+//! The rewording of the toml crate's and serde's errors into massprop's
+//! diagnostics: serde's words for TOML's ("map" → table, "sequence" →
+//! array), unknown keys with "did you mean", the key a type error is about,
+//! too-deep keys given a place. It depends on the wording of those crates'
+//! messages: every wording it relies on is pinned by a test below, so an
+//! upgrade that changes one fails here, not in a user's terminal.
+
+use crate::diag::{Diagnostic, Source};
+use crate::shapes::Shape;
+use crate::units;
+use std::ops::Range;
+
+/// Turn a toml error into a diagnostic that names the key: unknown keys get
+/// a "did you mean" drawn from the key list in serde's own message, and
+/// type errors name the key that holds the offending value.
+pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
+    if e.span().is_none() && e.message().contains("recursion limit") {
+        // toml gives no place for too deep a dotted key or table header:
+        // point at the line whose key has the most dots.
+        let (start, len) = deepest_key(&source.text);
+        return source
+            .error(start..start + len, "this key nests tables too deeply")
+            .help("a part file needs a few levels at most; is the key or header mistyped?");
+    }
+    let span = e.span().unwrap_or(0..0);
+    // toml reports some spans inside a multi-byte character (after a BOM,
+    // a combining mark or an em dash in a comment): snap to boundaries.
+    let floor = |i| crate::diag::floor_char_boundary(&source.text, i);
+    let span = floor(span.start)..floor(span.end).max(floor(span.start));
+    // serde's words for TOML's: a "map" is a table, a "sequence" an array.
+    let msg = e
+        .message()
+        .trim_end()
+        .replace("expected f64", "expected a number")
+        .replace("invalid type: map", "invalid type: table")
+        .replace("a sequence", "an array");
+    if let Some(rest) = msg.strip_prefix("unknown field ") {
+        // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
+        let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
+        if let Some((key, valid)) = quoted.split_first() {
+            let suggestion = units::suggest(key, valid.iter().copied());
+            let d = source.error(span, format!("unknown key `{key}`"));
+            return match suggestion {
+                Some(s) => d.label(format!("did you mean `{s}`?")),
+                None => d.help(format!(
+                    "valid keys here: {}",
+                    valid
+                        .iter()
+                        .map(|k| format!("`{k}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            };
+        }
+    }
+    if let Some(rest) = msg.strip_prefix("missing field ") {
+        let key = rest.trim_matches('`');
+        let d = source.error(span, format!("missing key `{key}`"));
+        return if key == "shape" {
+            d.help(format!(
+                "every part needs `shape`, one of {}",
+                Shape::ALL.map(|s| format!("\"{}\"", s.name())).join(", ")
+            ))
+        } else {
+            d
+        };
+    }
+    if msg.starts_with("duplicate key") {
+        let key = source.text.get(span.clone()).unwrap_or("").trim();
+        return source.error(span, format!("duplicate key `{key}`"));
+    }
+    let at = span.start;
+    // TOML integers are 64-bit: toml says "integer `1e20-ish` as i128".
+    let wide_integer = msg.contains(" as i128");
+    let msg = msg.replacen(" as i128", "", 1);
+    // A date or time reaches serde as a table.
+    let msg = if msg.starts_with("invalid type: table")
+        && source.text[at..].starts_with(|c: char| c.is_ascii_digit())
+    {
+        msg.replacen("table", "date-time", 1)
+    } else {
+        msg
+    };
+    let key = key_at(&source.text, at).or_else(|| key_before(&source.text, at));
+    let d = match (key.as_deref(), msg.strip_prefix("invalid type: ")) {
+        (Some(k), Some(rest)) => source.error(span, format!("`{k}` has the wrong type: {rest}")),
+        (Some(k), None) => source.error(span, format!("`{k}`: {msg}")),
+        (None, _) => source.error(span, msg.clone()),
+    };
+    if key.as_deref() == Some("part") {
+        return d.help("write each part as a `[[part]]` table (two brackets)");
+    }
+    if wide_integer {
+        return d.help("a TOML integer is 64-bit (up to 9223372036854775807): write a larger number as a float, e.g. `1e20`");
+    }
+    if msg.contains("string values must be quoted")
+        && let (Some(k), Some(v)) = (key.as_deref(), quoted_value(&source.text, at))
+    {
+        return d.help(format!(
+            "a number with a unit is written as a string: `{k} = {v}`"
+        ));
+    }
+    d
+}
+
+/// The innermost key whose value contains byte `offset`, from a spanned
+/// parse of the whole file. Only used on the error path.
+fn key_at(text: &str, offset: usize) -> Option<String> {
+    use toml::de::{DeTable, DeValue};
+    type Best = Option<(String, usize)>;
+    fn consider(best: &mut Best, k: &str, span: Range<usize>, offset: usize) {
+        if span.contains(&offset) && best.as_ref().is_none_or(|(_, len)| span.len() <= *len) {
+            *best = Some((k.to_string(), span.len()));
+        }
+    }
+    fn visit(v: &DeValue<'_>, key: Option<&str>, offset: usize, best: &mut Best) {
+        match v {
+            DeValue::Table(t) => {
+                for (k, v) in t.iter() {
+                    consider(best, k.get_ref(), k.span(), offset);
+                    consider(best, k.get_ref(), v.span(), offset);
+                    visit(v.get_ref(), Some(k.get_ref()), offset, best);
+                }
+            }
+            DeValue::Array(a) => {
+                for v in a.iter() {
+                    if let Some(k) = key {
+                        consider(best, k, v.span(), offset);
+                    }
+                    visit(v.get_ref(), key, offset, best);
+                }
+            }
+            _ => {}
+        }
+    }
+    let root = DeTable::parse(text).ok()?;
+    let mut best = None;
+    visit(&DeValue::Table(root.into_inner()), None, offset, &mut best);
+    best.map(|(k, _)| k)
+}
+
+/// The key on the line of `offset`: the name before the last `=` (`mass =
+/// 1e400`), for syntax errors where no spanned parse is possible.
+/// None inside a comment: a bad character there belongs to no key.
+fn key_before(text: &str, offset: usize) -> Option<String> {
+    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let line = &text[line_start..offset];
+    if comment_start(line).is_some() {
+        return None;
+    }
+    let before = line.rsplit_once('=')?.0.trim_end();
+    let start = before
+        .char_indices()
+        .rfind(|&(_, c)| !(c.is_alphanumeric() || c == '_' || c == '-'))
+        .map_or(0, |(i, c)| i + c.len_utf8());
+    let key = &before[start..];
+    (!key.is_empty()).then(|| key.to_string())
+}
+
+/// The line whose key (before `=`, or a `[header]`) has the most dots:
+/// its offset and the length of the key.
+fn deepest_key(text: &str) -> (usize, usize) {
+    let mut best = (0, 0, 0);
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let code = &line[..comment_start(line).unwrap_or(line.len())];
+        let key = code.split('=').next().unwrap_or("").trim_end();
+        let dots = key.matches('.').count();
+        if dots > best.0 {
+            best = (dots, at, key.len());
+        }
+        at += line.len();
+    }
+    (best.1, best.2)
+}
+
+/// Where a comment begins on a line of TOML: the first `#` outside a
+/// string. (Multi-line strings are not followed; this only serves messages.)
+fn comment_start(line: &str) -> Option<usize> {
+    let mut quote = None;
+    let mut escaped = false;
+    for (i, c) in line.char_indices() {
+        match (quote, c) {
+            (Some('"'), '\\') if !escaped => {
+                escaped = true;
+                continue;
+            }
+            (Some(q), c) if c == q && !escaped => quote = None,
+            (None, '"' | '\'') => quote = Some(c),
+            (None, '#') => return Some(i),
+            _ => {}
+        }
+        escaped = false;
+    }
+    None
+}
+
+/// For "string values must be quoted" (`mass = 1 kg`): the line's value
+/// from `offset`, without its comment, quoted as a quantity.
+fn quoted_value(text: &str, offset: usize) -> Option<String> {
+    let line_end = text[offset..].find('\n').map_or(text.len(), |i| offset + i);
+    let rest = &text[offset..line_end];
+    let value = rest[..comment_start(rest).unwrap_or(rest.len())].trim();
+    let plain = !value.is_empty()
+        && value
+            .chars()
+            .next()
+            .is_some_and(|c| c.is_ascii_digit() || c == '-' || c == '+' || c == '.')
+        && !value.contains(['"', '\'', '[', ']', '{', '}', ',', '=']);
+    plain.then(|| format!("\"{value}\""))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_key_before_an_error_is_found_on_its_line_but_not_in_a_comment() {
+        let text = "x = 1\nlength = 3 mm\n";
+        assert_eq!(
+            key_before(text, text.find("3 mm").unwrap()).as_deref(),
+            Some("length")
+        );
+        // A multi-byte character before the key (a BOM left in, say).
+        let text = "\u{2014}mass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find('1').unwrap()).as_deref(),
+            Some("mass")
+        );
+        let text = "shape = \"box\" # a = b \u{7f}";
+        assert_eq!(key_before(text, text.find('\u{7f}').unwrap()), None);
+        // `#` inside a string is not a comment.
+        let text = "name = \"#1\"\nmass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find("1 kg").unwrap()).as_deref(),
+            Some("mass")
+        );
+    }
+
+    #[test]
+    fn comments_start_at_the_first_hash_outside_strings() {
+        assert_eq!(comment_start("a = 1 # x"), Some(6));
+        assert_eq!(comment_start("a = \"#\" # x"), Some(8));
+        assert_eq!(comment_start("a = '#\\' # x"), Some(9));
+        assert_eq!(comment_start("a = \"\\\"#\" # x"), Some(10));
+        assert_eq!(comment_start("a = 1"), None);
+    }
+
+    #[test]
+    fn a_bare_quantity_is_suggested_quoted() {
+        assert_eq!(
+            quoted_value("mass = 1 kg # m", 7).as_deref(),
+            Some("\"1 kg\"")
+        );
+        assert_eq!(quoted_value("mass = [1 kg]", 7), None);
+        assert_eq!(quoted_value("mass = kg", 7), None);
+    }
+}
