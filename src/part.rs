@@ -8,27 +8,9 @@ use crate::numeric::{DD, M3, Real, norm_of};
 use crate::shapes::Shape;
 use crate::units::{Dim, FileUnits};
 use nalgebra::{Matrix3, Vector3};
-use serde::Serialize;
 use std::ops::Range;
 
-/// The solid that a thin plate or slender rod idealises.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Solid {
-    /// A plate a × b of thickness t: the box a × b × t.
-    Box,
-    /// A rod of length L and diameter d: the solid circular cylinder.
-    Cylinder,
-}
-
-impl Solid {
-    pub fn name(self) -> &'static str {
-        match self {
-            Solid::Box => "box",
-            Solid::Cylinder => "cylinder",
-        }
-    }
-}
+pub use crate::shapes::Solid;
 
 /// A plate's `thickness` or a rod's `diameter`.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -14,7 +14,6 @@ use super::{Ctx, Model};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::part::{MassSpec, Part, Place, RealSize, Spec};
-use crate::shapes::Shape;
 use crate::units::Dim;
 use std::collections::HashMap;
 use std::ops::Range;
@@ -91,12 +90,8 @@ impl Frame {
     /// A part of the included file, in this file's frame and units.
     fn place(&self, p: Part) -> Part {
         let s = &p.spec;
-        let k = match p.shape {
-            Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
-            Shape::Plate | Shape::Disk | Shape::Triangle => 2,
-            Shape::Rod => 1,
-            Shape::Point | Shape::Inertia => 0,
-        };
+        // A density per volume, area or length scales with that power.
+        let k = p.shape.info().density.map_or(0, |d| d.length_power);
         let mass = match s.mass {
             MassSpec::Given(m) => MassSpec::Given(m * self.mass),
             MassSpec::Density(d) => MassSpec::Density(d * self.mass / self.length.powi(k)),
@@ -155,7 +150,7 @@ impl Ctx<'_> {
     ) -> Result<(), Diagnostic> {
         let p = raw.get_ref();
         let inc = p.include.as_ref().expect("the caller checked `include`");
-        if let Some((key, span)) = super::present_keys(p)
+        if let Some((key, span)) = super::parts::present_keys(p)
             .into_iter()
             .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))
             .find_map(|(k, s)| s.map(|s| (k, s)))

@@ -1,0 +1,224 @@
+//! What the conversion step reads values with: the source (for spans), the
+//! file's units and materials, and the readers of quantities and vectors —
+//! the one place a value is converted and range-checked.
+
+use super::raw::{Quantity, RawAnalysis, Vector};
+use super::{Analysis, raw};
+use crate::diag::{Diagnostic, Source};
+use crate::units::{self, Dim, FileUnits, UnitError};
+use nalgebra::Vector3;
+use std::ops::Range;
+use toml::Spanned;
+
+/// What the conversion step needs to read values: the source (for spans)
+/// and the file's units.
+pub(crate) struct Ctx<'a> {
+    pub(super) source: &'a Source,
+    pub(super) units: FileUnits,
+    /// `[materials]`: name → density (kg/m³, and in file units).
+    pub(super) materials: std::collections::BTreeMap<String, (f64, f64)>,
+}
+
+impl Ctx<'_> {
+    pub(super) fn err(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
+        self.source.error(span, message)
+    }
+
+    pub(super) fn file_units(&self, u: &Spanned<raw::RawUnits>) -> Result<FileUnits, Diagnostic> {
+        let pick = |v: &Option<Spanned<String>>,
+                    allowed: &'static [&'static str],
+                    key: &str,
+                    default: &'static str| {
+            let Some(v) = v else { return Ok(default) };
+            allowed
+                .iter()
+                .copied()
+                .find(|a| *a == v.get_ref())
+                .ok_or_else(|| {
+                    self.err(
+                        v.span(),
+                        format!("unknown {key} unit {:?} in `units`", v.get_ref()),
+                    )
+                    .label(
+                        match units::suggest(v.get_ref(), allowed.iter().copied()) {
+                            Some(s) => format!("did you mean \"{s}\"?"),
+                            None => format!("expected one of {}", allowed.join(", ")),
+                        },
+                    )
+                })
+        };
+        Ok(FileUnits {
+            length: pick(&u.get_ref().length, units::LENGTH_UNITS, "length", "m")?,
+            mass: pick(&u.get_ref().mass, units::MASS_UNITS, "mass", "kg")?,
+        })
+    }
+
+    /// A scalar of dimension `dim` in SI: a plain number in file units, or a
+    /// string with its own unit. Always finite.
+    pub(super) fn quantity(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<f64, Diagnostic> {
+        let value = match q.get_ref() {
+            Quantity::Number(x) => {
+                if !x.is_finite() {
+                    return Err(self.err(
+                        q.span(),
+                        format!("`{key}` must be a finite number, got {x}"),
+                    ));
+                }
+                self.units.factor(dim).apply(*x)
+            }
+            Quantity::Text(t) => units::parse_quantity(t, dim).map_err(|e| {
+                let d = self.err(q.span(), format!("`{key}`: {e}"));
+                match e {
+                    UnitError::Unknown {
+                        suggestion: Some(s),
+                        ..
+                    } => d.suggest(Some(s)),
+                    _ => d.help(format!(
+                        "`{key}` is {}, e.g. {}",
+                        dim.describe(),
+                        dim.example()
+                    )),
+                }
+            })?,
+        };
+        if !value.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows when converted to SI units"),
+            ));
+        }
+        // Results are shown in the file's units: a value within a rounding
+        // of the largest f64 there can overflow on its way back from SI.
+        if !(value / self.units.factor(dim).value()).is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` is beyond the largest number in the file's units"),
+            ));
+        }
+        Ok(value)
+    }
+
+    /// A scalar of dimension `dim` in the file's units (see `Spec`).
+    pub(super) fn file_quantity(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<f64, Diagnostic> {
+        let value = match q.get_ref() {
+            Quantity::Number(x) => *x,
+            Quantity::Text(t) => units::parse_quantity_in(t, dim, self.units)
+                .map_err(|e| self.err(q.span(), format!("`{key}`: {e}")))?,
+        };
+        if !value.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows when converted to the file's units"),
+            ));
+        }
+        Ok(value)
+    }
+
+    pub(super) fn file_vec3(
+        &self,
+        v: &Vector,
+        key: &str,
+        dim: Dim,
+    ) -> Result<[f64; 3], Diagnostic> {
+        let mut out = [0.0; 3];
+        for (o, q) in out.iter_mut().zip(v.get_ref()) {
+            *o = self.file_quantity(q, key, dim)?;
+        }
+        Ok(out)
+    }
+
+    /// The part's numbers in the file's units, read after `part` has
+    /// validated them (so only a conversion overflow can fail here).
+    pub(super) fn positive(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<f64, Diagnostic> {
+        let v = self.quantity(q, key, dim)?;
+        if v >= f64::MIN_POSITIVE {
+            Ok(v)
+        } else if v > 0.0 {
+            Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too small: below {:e} in SI units, f64 loses precision",
+                    f64::MIN_POSITIVE
+                ),
+            ))
+        } else {
+            Err(self.err(q.span(), format!("`{key}` must be positive")))
+        }
+    }
+
+    /// A vector of exactly `n` quantities of dimension `dim`, in SI.
+    pub(super) fn vector(
+        &self,
+        v: &Vector,
+        key: &str,
+        dim: Dim,
+        n: usize,
+    ) -> Result<Vec<f64>, Diagnostic> {
+        if v.get_ref().len() != n {
+            return Err(self.err(
+                v.span(),
+                format!("`{key}` needs {n} components, got {}", v.get_ref().len()),
+            ));
+        }
+        v.get_ref()
+            .iter()
+            .map(|q| self.quantity(q, key, dim))
+            .collect()
+    }
+
+    pub(super) fn vec3(&self, v: &Vector, key: &str, dim: Dim) -> Result<Vector3<f64>, Diagnostic> {
+        let c = self.vector(v, key, dim, 3)?;
+        Ok(Vector3::new(c[0], c[1], c[2]))
+    }
+
+    /// One part, and the solid it idealises with its real size (file
+    /// units) when the file gives a plate's `thickness` or a rod's
+    /// `diameter`.
+    pub(super) fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
+        let r = a.get_ref();
+        let about = r
+            .about
+            .as_ref()
+            .map(|v| self.file_vec3(v, "about", Dim::LENGTH).map(Vector3::from))
+            .transpose()?;
+        let omega = r
+            .omega
+            .as_ref()
+            .map(|v| {
+                self.file_vec3(v, "omega", Dim::ANGULAR_VELOCITY)
+                    .map(Vector3::from)
+            })
+            .transpose()?;
+        let alpha = r
+            .alpha
+            .as_ref()
+            .map(|v| {
+                self.file_vec3(v, "alpha", Dim::ANGULAR_ACCELERATION)
+                    .map(Vector3::from)
+            })
+            .transpose()?;
+        Ok(Analysis {
+            about,
+            omega,
+            alpha,
+            alpha_span: r.alpha.as_ref().map(Spanned::span),
+            about_span: r.about.as_ref().map(Spanned::span),
+            omega_span: r.omega.as_ref().map(Spanned::span),
+        })
+    }
+}
