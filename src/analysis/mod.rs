@@ -124,7 +124,7 @@ pub fn resolve(
         return Err(match (&analysis.alpha_span, &overrides.alpha) {
             (Some(span), None) => source
                 .error(span.clone(), "`alpha` needs `omega`: the Euler moment depends on both")
-                .help("give `omega` here or `--omega`; for a body starting from rest, `omega = [0, 0, 0]`"),
+                .help("give `omega` here (`report` also takes `--omega`); for a body starting from rest, `omega = [0, 0, 0]`"),
             _ => Diagnostic::plain("`--alpha` needs ω: give `--omega` or `[analysis].omega`"),
         });
     }

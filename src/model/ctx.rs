@@ -124,21 +124,39 @@ impl Ctx<'_> {
         Ok(value)
     }
 
+    /// The one check of an array's length, for every vector and matrix in
+    /// a file: `v` must have exactly `n` items, or a located error says
+    /// "{subject} needs {n} {items}, got {len}".
+    pub(super) fn exactly<'v, T>(
+        &self,
+        v: &'v Spanned<Vec<T>>,
+        n: usize,
+        subject: &str,
+        items: &str,
+    ) -> Result<&'v [T], Diagnostic> {
+        let got = v.get_ref().len();
+        if got != n {
+            return Err(self.err(v.span(), format!("{subject} needs {n} {items}, got {got}")));
+        }
+        Ok(v.get_ref())
+    }
+
     pub(super) fn file_vec3(
         &self,
         v: &Vector,
         key: &str,
         dim: Dim,
     ) -> Result<[f64; 3], Diagnostic> {
+        let items = self.exactly(v, 3, &format!("`{key}`"), "components")?;
         let mut out = [0.0; 3];
-        for (o, q) in out.iter_mut().zip(v.get_ref()) {
+        for (o, q) in out.iter_mut().zip(items) {
             *o = self.file_quantity(q, key, dim)?;
         }
         Ok(out)
     }
 
-    /// The part's numbers in the file's units, read after `part` has
-    /// validated them (so only a conversion overflow can fail here).
+    /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
+    /// refused too: they carry too few digits to compute with.
     pub(super) fn positive(
         &self,
         q: &Spanned<Quantity>,
@@ -169,13 +187,7 @@ impl Ctx<'_> {
         dim: Dim,
         n: usize,
     ) -> Result<Vec<f64>, Diagnostic> {
-        if v.get_ref().len() != n {
-            return Err(self.err(
-                v.span(),
-                format!("`{key}` needs {n} components, got {}", v.get_ref().len()),
-            ));
-        }
-        v.get_ref()
+        self.exactly(v, n, &format!("`{key}`"), "components")?
             .iter()
             .map(|q| self.quantity(q, key, dim))
             .collect()
@@ -186,9 +198,7 @@ impl Ctx<'_> {
         Ok(Vector3::new(c[0], c[1], c[2]))
     }
 
-    /// One part, and the solid it idealises with its real size (file
-    /// units) when the file gives a plate's `thickness` or a rod's
-    /// `diameter`.
+    /// `[analysis]`: the reference point, ω and α, in the file's units.
     pub(super) fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
         let r = a.get_ref();
         let about = r

@@ -3,34 +3,20 @@
 //! dimensions, every range check — and its numbers kept in the file's units.
 
 use super::Ctx;
+use super::material::is_thin_shell;
+use super::place::{positive_products, tensor_convention};
 use super::raw::{Quantity, RawPart, Vector};
 use super::rotation::Orientation;
 use crate::diag::Diagnostic;
 use crate::part::{MassSpec, Part, Place, Solid, Spec};
-use crate::shapes::{Dims, MaterialRule, Shape, Spanned as Spans};
-use crate::tolerance::{
-    COLLINEAR_TOLERANCE, PERPENDICULAR_TOLERANCE, SYMMETRY_TOLERANCE, VALIDITY_RTOL,
-};
+use crate::shapes::{Dims, Shape, Spanned as Spans};
 use crate::units::{self, Dim};
-use nalgebra::{Matrix3, Vector3};
 use std::ops::Range;
 use toml::Spanned;
 
-/// How a part is turned, and its dimensions (m) as `Shape::second_moments`
-/// takes them.
-type Placement = (Orientation, Vec<f64>);
-
-/// `numeric::norm` of a vector.
-fn vnorm(v: &Vector3<f64>) -> f64 {
-    crate::numeric::norm(v.as_slice())
-}
-
-/// `numeric::unit` of a vector.
-fn vunit(v: &Vector3<f64>) -> Vector3<f64> {
-    Vector3::from(crate::numeric::unit(&[v.x, v.y, v.z]))
-}
-
 impl Ctx<'_> {
+    /// The part's numbers in the file's units, read after `part` has
+    /// validated them (so only a conversion overflow can fail here).
     pub(super) fn spec(
         &self,
         shape: Shape,
@@ -130,8 +116,9 @@ impl Ctx<'_> {
         })
     }
 
-    /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
-    /// refused too: they carry too few digits to compute with.
+    /// One part, and the solid it idealises with its real size (file
+    /// units) when the file gives a plate's `thickness` or a rod's
+    /// `diameter`.
     pub(super) fn part(
         &self,
         index: usize,
@@ -339,140 +326,6 @@ impl Ctx<'_> {
     }
 
     /// A density (at `span`) on a thin shell, which has no volume.
-    fn thin_shell(&self, span: Range<usize>, shape: &str) -> Diagnostic {
-        self.err(
-            span,
-            format!("this {shape} is a thin shell (`inner_radius` = `radius`): it has no volume for a density to fill"),
-        )
-        .help("give its `mass`")
-    }
-
-    /// A part's `material`: its density made the shape's (per volume; times
-    /// `thickness` for a plate, disk or triangle; times `area` or the area
-    /// of `diameter` for a rod), in SI and in file units, with the span of
-    /// `material`. `None` without one; `thickness` and `area` where they
-    /// only serve a material are errors without it.
-    fn material(
-        &self,
-        shape: Shape,
-        p: &RawPart,
-        span: Range<usize>,
-    ) -> Result<Option<(f64, f64, Range<usize>)>, Diagnostic> {
-        let s = shape.name();
-        let Some(name) = &p.material else {
-            // The keys that serve only to turn a material into a mass (a
-            // plate's `thickness` is also its real size, a rod's `diameter`
-            // too: those stand alone).
-            let info = shape.info();
-            let only_with = material_keys(info.material)
-                .iter()
-                .filter(|k| info.real_size.is_none_or(|(r, _)| r != **k))
-                .find_map(|k| quantity_key(p, k).map(|q| (*k, q)));
-            if let Some((key, q)) = only_with {
-                return Err(self
-                    .err(
-                        q.span(),
-                        format!(
-                            "`{key}` on a {s} goes with `material`, which it turns into a mass"
-                        ),
-                    )
-                    .help(format!(
-                        "give `material`, or drop `{key}` and give `mass` or `{}`",
-                        shape.density_key().unwrap_or("density")
-                    )));
-            }
-            return Ok(None);
-        };
-        let (si, file) = match self.materials.get(name.get_ref()) {
-            Some(&(si, file)) => (si, file),
-            None => match crate::materials::built_in(name.get_ref()) {
-                Some(m) => {
-                    // kg/m³ to file units by the exact factor, as a unit
-                    // string is converted: one rounding, not two.
-                    let to_file = units::Factor::ONE
-                        .per(self.units.factor(Dim::DENSITY))
-                        .expect("density factors are small fractions");
-                    (m.density, to_file.apply(m.density))
-                }
-                None => {
-                    let names: Vec<&str> = crate::materials::BUILT_IN
-                        .iter()
-                        .map(|m| m.name)
-                        .chain(self.materials.keys().map(String::as_str))
-                        .collect();
-                    let d = self.err(
-                        name.span(),
-                        format!("unknown material {:?}", name.get_ref()),
-                    );
-                    return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
-                        Some(s) => d.label(format!("did you mean \"{s}\"?")),
-                        None => d.help("`massprop materials` lists them; add one in `[materials]`, e.g. foam = { density = \"30 kg/m^3\" }"),
-                    });
-                }
-            },
-        };
-        let factor = |si_mult: f64, file_mult: f64| (si * si_mult, file * file_mult);
-        let needs = |key: &str| {
-            self.err(
-                span.clone(),
-                format!(
-                    "this {s} of `{}` needs `{key}` to turn the density into a mass",
-                    name.get_ref()
-                ),
-            )
-        };
-        let out = match shape.info().material {
-            MaterialRule::Volume => (si, file),
-            MaterialRule::Thickness => {
-                let t = p.thickness.as_ref().ok_or_else(|| needs("thickness"))?;
-                factor(
-                    self.positive(t, "thickness", Dim::LENGTH)?,
-                    self.file_quantity(t, "thickness", Dim::LENGTH)?,
-                )
-            }
-            MaterialRule::Section => match (&p.area, &p.diameter) {
-                (Some(a), Some(_)) => {
-                    return Err(self
-                        .err(a.span(), "`area` conflicts with `diameter`: give one to turn the material's density into a mass")
-                        .help("`diameter` (a round rod) also feeds the idealisation report; `area` is any section"));
-                }
-                (Some(a), None) => factor(
-                    self.positive(a, "area", Dim::AREA)?,
-                    self.file_quantity(a, "area", Dim::AREA)?,
-                ),
-                (None, Some(d)) => {
-                    let (ds, df) = (
-                        self.positive(d, "diameter", Dim::LENGTH)?,
-                        self.file_quantity(d, "diameter", Dim::LENGTH)?,
-                    );
-                    let q = std::f64::consts::PI / 4.0;
-                    factor(q * ds * ds, q * df * df)
-                }
-                (None, None) => return Err(needs("area` or `diameter")),
-            },
-            MaterialRule::None => {
-                return Err(self.err(
-                    name.span(),
-                    format!("`material` does not apply to a {s}: give `mass`"),
-                ));
-            }
-        };
-        if !(out.0.is_finite() && out.1.is_finite()) {
-            // The density times the thickness, area or diameter²: point at
-            // that size when the file gives one.
-            let (span, what) = match (&p.thickness, &p.area, &p.diameter) {
-                (Some(q), _, _) => (q.span(), "its thickness"),
-                (_, Some(q), _) => (q.span(), "its area"),
-                (_, _, Some(q)) => (q.span(), "its diameter"),
-                _ => (name.span(), "its size"),
-            };
-            return Err(self.err(
-                span,
-                format!("the material's density times {what} overflows the range of f64"),
-            ));
-        }
-        Ok(Some((out.0, out.1, name.span())))
-    }
 
     /// The composer works in the file's units (see `Spec`), so the part's
     /// mass and second moments must be normal f64 there too, not only in
@@ -528,285 +381,6 @@ impl Ctx<'_> {
         }
         Ok(())
     }
-
-    /// A triangle's area (SI) from its `vertices`, which must
-    /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
-    /// longest edge.
-    fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
-        let raw = p.vertices.as_ref().ok_or(missing)?;
-        if raw.get_ref().len() != 3 {
-            return Err(self.err(
-                raw.span(),
-                format!("a triangle needs 3 `vertices`, got {}", raw.get_ref().len()),
-            ));
-        }
-        let mut v = [Vector3::zeros(); 3];
-        for (out, r) in v.iter_mut().zip(raw.get_ref()) {
-            *out = self.vec3(r, "vertices", Dim::LENGTH)?;
-        }
-        let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
-        let longest = vnorm(&e1).max(vnorm(&e2)).max(vnorm(&(v[2] - v[1])));
-        // Scaled by the longest edge, so the cross product cannot overflow.
-        let area = if longest > 0.0 && longest.is_finite() {
-            vnorm(&(e1 / longest).cross(&(e2 / longest))) / 2.0 * longest * longest
-        } else {
-            0.0
-        };
-        if !(area * 4.0).is_finite() || !longest.is_finite() {
-            return Err(self.err(
-                raw.span(),
-                "this triangle is too large for f64: its area overflows",
-            ));
-        }
-        if !(longest > 0.0 && area > COLLINEAR_TOLERANCE * longest * longest) {
-            return Err(self
-                .err(
-                    raw.span(),
-                    "the `vertices` of this triangle are (nearly) collinear: it has no area",
-                )
-                .help(format!(
-                    "its area must exceed {COLLINEAR_TOLERANCE:e} of the square of its longest edge"
-                )));
-        }
-        Ok(area)
-    }
-
-    /// A given `inertia` (SI), checked: 3 × 3, symmetric to
-    /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
-    /// tr(I)/2 E − I positive semi-definite (no principal moment negative,
-    /// I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest. Returns that
-    /// second moment, local axes.
-    fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
-        let raw = p.inertia.as_ref().expect("`part` checked the inertia");
-        if let Some(pr) = &p.products
-            && !matches!(pr.get_ref().as_str(), "tensor" | "positive")
-        {
-            return Err(self
-                .err(pr.span(), format!("unknown `products` convention {:?}", pr.get_ref()))
-                .help("\"tensor\" (off-diagonals −∫xy dm, the default) or \"positive\" (+∫xy dm, CAD and Meriam)"));
-        }
-        if raw.get_ref().len() != 3 {
-            return Err(self.err(
-                raw.span(),
-                format!("`inertia` needs 3 rows, got {}", raw.get_ref().len()),
-            ));
-        }
-        let mut m = [[0.0; 3]; 3];
-        for (row, r) in m.iter_mut().zip(raw.get_ref()) {
-            let v = self.vec3(r, "inertia", Dim::INERTIA)?;
-            *row = [v.x, v.y, v.z];
-        }
-        let big = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
-        if m.iter()
-            .flatten()
-            .any(|x| *x != 0.0 && x.abs() < f64::MIN_POSITIVE)
-        {
-            return Err(self
-                .err(raw.span(), "`inertia` has an entry too small for f64 (below 2.2e-308 in SI): too few digits to compute with")
-                .help("give it in smaller units, e.g. \"1.2e-7 kg*mm^2\""));
-        }
-        // Its second moment must fit in f64 (the eigen check forms it).
-        if !(big * 4.0).is_finite() {
-            return Err(self.err(raw.span(), "`inertia` overflows the range of f64"));
-        }
-        for (i, j) in [(0, 1), (0, 2), (1, 2)] {
-            if !((m[i][j] - m[j][i]).abs() <= SYMMETRY_TOLERANCE * big) {
-                return Err(self
-                    .err(raw.span(), format!("`inertia` is not symmetric: row {}, column {} is {:e} but row {}, column {} is {:e}", i + 1, j + 1, m[i][j], j + 1, i + 1, m[j][i]))
-                    .help(format!("an inertia tensor is symmetric (to {SYMMETRY_TOLERANCE:e} of its largest entry)")));
-            }
-        }
-        let t = tensor_convention(m, positive_products(p));
-        let half = (t[0][0] + t[1][1] + t[2][2]) / 2.0;
-        let c: crate::numeric::M3<f64> = std::array::from_fn(|i| {
-            std::array::from_fn(|j| if i == j { half - t[i][i] } else { -t[i][j] })
-        });
-        let (lam, _) = crate::eigen::jacobi(c)
-            .ok_or_else(|| self.err(raw.span(), "`inertia`: the eigen solver did not converge"))?;
-        let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-        if lam.iter().any(|&l| l < -VALIDITY_RTOL * top) {
-            let mut moments = [lam[1] + lam[2], lam[0] + lam[2], lam[0] + lam[1]];
-            moments.sort_by(f64::total_cmp);
-            return Err(self
-                .err(raw.span(), format!(
-                    "`inertia` is not physically valid: its principal moments {:.6e}, {:.6e}, {:.6e} kg·m² {}",
-                    moments[0], moments[1], moments[2],
-                    if moments[0] < -VALIDITY_RTOL * moments[2] { "include a negative one" } else { "break the triangle inequality I1 + I2 ≥ I3" }
-                ))
-                .help("check the signs of the products (`products = \"positive\"` if they are +∫xy dm, as CAD reports them) and the units"));
-        }
-        Ok(Matrix3::from_fn(|i, j| c[i][j]))
-    }
-
-    /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
-    /// file's length unit. `mass` (kg) checks that the second moment it
-    /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
-    /// = m (d/2)²/4 for the cylinder.
-    fn real_size(
-        &self,
-        solid: Solid,
-        q: &Spanned<Quantity>,
-        key: &str,
-        mass: f64,
-    ) -> Result<(Solid, f64), Diagnostic> {
-        let si = self.positive(q, key, Dim::LENGTH)?;
-        let extra = match solid {
-            Solid::Box => mass * si * si / 12.0,
-            Solid::Cylinder => mass * si * si / 16.0,
-        };
-        if !extra.is_finite() {
-            return Err(self.err(
-                q.span(),
-                format!(
-                    "`{key}` is too large: the solid's second moment overflows the range of f64"
-                ),
-            ));
-        }
-        Ok((solid, self.file_quantity(q, key, Dim::LENGTH)?))
-    }
-
-    fn placement_canonical(
-        &self,
-        shape: Shape,
-        p: &RawPart,
-        span: Range<usize>,
-    ) -> Result<Placement, Diagnostic> {
-        let s = shape.name();
-        let missing = |key: &str| {
-            self.err(span.clone(), format!("this {s} needs `{key}`"))
-                .help(shape.info().help)
-        };
-        let dims = match shape.info().dims {
-            Dims::Size(n) => {
-                let size = p.size.as_ref().ok_or_else(|| missing("size"))?;
-                let dims = self.vector(size, "size", Dim::LENGTH, n)?;
-                for q in size.get_ref() {
-                    self.positive(q, "size", Dim::LENGTH)?;
-                }
-                dims
-            }
-            Dims::Length => {
-                let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
-                vec![self.positive(l, "length", Dim::LENGTH)?]
-            }
-            Dims::Radii { length } => {
-                let r = p.radius.as_ref().ok_or_else(|| missing("radius"))?;
-                let outer = self.positive(r, "radius", Dim::LENGTH)?;
-                let inner = match &p.inner_radius {
-                    None => 0.0,
-                    Some(q) => {
-                        let v = self.quantity(q, "inner_radius", Dim::LENGTH)?;
-                        if !(v >= 0.0 && v <= outer) {
-                            return Err(self
-                                .err(q.span(), "`inner_radius` must be from 0 to `radius`")
-                                .help("0 (or leaving it out) is a solid; equal to `radius`, a thin shell"));
-                        }
-                        v
-                    }
-                };
-                let mut dims = vec![outer, inner];
-                if length {
-                    let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
-                    dims.push(self.positive(l, "length", Dim::LENGTH)?);
-                }
-                dims
-            }
-            Dims::None => vec![],
-            Dims::Given => {
-                p.inertia.as_ref().ok_or_else(|| missing("inertia"))?;
-                vec![]
-            }
-            Dims::Vertices => {
-                let area = self.triangle(p, missing("vertices"))?;
-                return Ok((Orientation::Identity, vec![area]));
-            }
-        };
-        let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
-        self.vec3(center, "center", Dim::LENGTH)?;
-        let orientation = match &p.rotation {
-            Some(r) => self.rotation(r)?,
-            None => Orientation::Identity,
-        };
-        Ok((orientation, dims))
-    }
-
-    fn placement_by_edges(
-        &self,
-        shape: Shape,
-        p: &RawPart,
-        span: Range<usize>,
-    ) -> Result<Placement, Diagnostic> {
-        let s = shape.name();
-        let missing = |key: &str| {
-            self.err(span.clone(), format!("this {s} needs `{key}`"))
-                .help(shape.info().help)
-        };
-        let (origin, edges) = if shape.info().spanned == Some(Spans::FromTo) {
-            let from = self.vec3(
-                p.from.as_ref().ok_or_else(|| missing("from"))?,
-                "from",
-                Dim::LENGTH,
-            )?;
-            let to_raw = p.to.as_ref().ok_or_else(|| missing("to"))?;
-            let to = self.vec3(to_raw, "to", Dim::LENGTH)?;
-            let e = to - from;
-            if e.amax() == 0.0 {
-                return Err(self.err(
-                    to_raw.span(),
-                    "`to` must differ from `from`: the rod has no length",
-                ));
-            }
-            if !e.amax().is_finite() {
-                return Err(self.err(
-                    to_raw.span(),
-                    "the rod from `from` to `to` is too long for f64",
-                ));
-            }
-            (from, vec![(e, to_raw.span())])
-        } else {
-            let corner = p.corner.as_ref().ok_or_else(|| missing("corner"))?;
-            let corner = self.vec3(corner, "corner", Dim::LENGTH)?;
-            let edges_raw = p.edges.as_ref().ok_or_else(|| missing("edges"))?;
-            let n = shape.edge_count();
-            if edges_raw.get_ref().len() != n {
-                return Err(self.err(
-                    edges_raw.span(),
-                    format!("a {s} needs {n} `edges`, got {}", edges_raw.get_ref().len()),
-                ));
-            }
-            let mut edges = Vec::with_capacity(n);
-            for e in edges_raw.get_ref() {
-                let v = self.vec3(e, "edges", Dim::LENGTH)?;
-                if v.amax() == 0.0 {
-                    return Err(self.err(e.span(), "an edge must not be zero"));
-                }
-                edges.push((v, e.span()));
-            }
-            for i in 0..n {
-                for j in i + 1..n {
-                    let cos = vunit(&edges[i].0).dot(&vunit(&edges[j].0));
-                    if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
-                        return Err(self
-                            .err(
-                                edges[j].1.clone(),
-                                format!(
-                                    "edges {} and {} are not perpendicular (angle {:.6}°)",
-                                    i + 1,
-                                    j + 1,
-                                    cos.clamp(-1.0, 1.0).acos().to_degrees()
-                                ),
-                            )
-                            .help(format!("edges must be perpendicular to a relative {PERPENDICULAR_TOLERANCE:e}")));
-                    }
-                }
-            }
-            (corner, edges)
-        };
-        // Validated only: the composer works from the corner and edges.
-        let _ = origin;
-        let dims: Vec<f64> = edges.iter().map(|(e, _)| vnorm(e)).collect();
-        Ok((Orientation::Identity, dims))
-    }
 }
 
 /// Every key a part may have, with where it is when present.
@@ -851,7 +425,7 @@ fn span_of(keys: &[(&str, Option<Range<usize>>)], key: &str) -> Option<Range<usi
 
 /// A part's quantity by its key: the density kinds' keys and the sizes
 /// `ShapeInfo` names (`thickness`, `diameter`, `area`).
-fn quantity_key<'p>(p: &'p RawPart, key: &str) -> Option<&'p Spanned<Quantity>> {
+pub(super) fn quantity_key<'p>(p: &'p RawPart, key: &str) -> Option<&'p Spanned<Quantity>> {
     match key {
         "density" => p.density.as_ref(),
         "areal_density" => p.areal_density.as_ref(),
@@ -863,15 +437,6 @@ fn quantity_key<'p>(p: &'p RawPart, key: &str) -> Option<&'p Spanned<Quantity>> 
     }
 }
 
-/// The keys a `MaterialRule` reads beside `material`.
-fn material_keys(rule: MaterialRule) -> &'static [&'static str] {
-    match rule {
-        MaterialRule::Thickness => &["thickness"],
-        MaterialRule::Section => &["area", "diameter"],
-        MaterialRule::Volume | MaterialRule::None => &[],
-    }
-}
-
 /// The keys of `key_spans`, and `shape`.
 pub(super) fn present_keys(p: &RawPart) -> super::include::Present<'static> {
     let mut keys: super::include::Present<'static> = key_spans(p).to_vec();
@@ -879,34 +444,9 @@ pub(super) fn present_keys(p: &RawPart) -> super::include::Present<'static> {
     keys
 }
 
-/// A cylinder, disk or sphere whose inner radius is its radius.
-fn is_thin_shell(shape: Shape, dims: &[f64]) -> bool {
-    matches!(shape.info().dims, Dims::Radii { .. }) && dims[1] == dims[0]
-}
-
 /// The earliest present key of a set, with its span.
 fn first<'k>(set: &[(&'k str, Option<Range<usize>>)]) -> Option<(&'k str, Range<usize>)> {
     set.iter()
         .filter_map(|(k, s)| s.clone().map(|s| (*k, s)))
         .min_by_key(|(_, s)| s.start)
-}
-
-/// Whether a part's `products = "positive"` (checked in `part`).
-fn positive_products(p: &RawPart) -> bool {
-    matches!(&p.products, Some(s) if s.get_ref() == "positive")
-}
-
-/// A given inertia matrix in the tensor convention (off-diagonals −∫xy dm),
-/// symmetrised: the average of the two entries each product appears in.
-fn tensor_convention(m: [[f64; 3]; 3], positive: bool) -> [[f64; 3]; 3] {
-    let sign = if positive { -1.0 } else { 1.0 };
-    std::array::from_fn(|i| {
-        std::array::from_fn(|j| {
-            if i == j {
-                m[i][i]
-            } else {
-                sign * (m[i][j] * 0.5 + m[j][i] * 0.5)
-            }
-        })
-    })
 }

@@ -245,13 +245,7 @@ impl Ctx<'_> {
             }
             "matrix" => {
                 let m = r.matrix.as_ref().expect("form is matrix");
-                let rows = m.get_ref();
-                if rows.len() != 3 {
-                    return Err(self.err(
-                        m.span(),
-                        format!("`matrix` needs 3 rows, got {}", rows.len()),
-                    ));
-                }
+                let rows = self.exactly(m, 3, "`matrix`", "rows")?;
                 let mut out = Matrix3::zeros();
                 for (i, row) in rows.iter().enumerate() {
                     let v = self.floats(row, "matrix row", 3)?;
@@ -316,13 +310,7 @@ impl Ctx<'_> {
 
     /// A plain array of `n` finite numbers (rotation parameters carry no unit).
     fn floats(&self, v: &Floats, key: &str, n: usize) -> Result<Vec<f64>, Diagnostic> {
-        if v.get_ref().len() != n {
-            return Err(self.err(
-                v.span(),
-                format!("`{key}` needs {n} numbers, got {}", v.get_ref().len()),
-            ));
-        }
-        v.get_ref()
+        self.exactly(v, n, &format!("`{key}`"), "numbers")?
             .iter()
             .map(|x| {
                 if x.get_ref().is_finite() {

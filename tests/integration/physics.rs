@@ -1325,3 +1325,71 @@ fn a_built_in_material_converts_like_its_density_written_with_units() {
     let b = summary(&part("density = \"7850 kg/m^3\""));
     assert_eq!(a.mass, b.mass);
 }
+
+/// One representation of a part (issue 11): in a millimetre file, a
+/// triangle and a rod 10⁸ mm from the origin get the part masses the file
+/// describes exactly (6 mm² × 2 kg/mm², 7 mm × 3 kg/mm; the SI path once
+/// gave them 4e-11 off), and the parts' masses add up to the body's.
+#[test]
+fn parts_far_out_in_millimetres_have_exact_masses_that_sum_to_the_body() {
+    let text = "units = { length = \"mm\", mass = \"kg\" }\n\
+        [[part]]\nshape = \"triangle\"\nareal_density = 2\n\
+        vertices = [[1e8, 0, 0], [100000003, 0, 0], [1e8, 4, 0]]\n\
+        [[part]]\nshape = \"rod\"\nlinear_density = 3\nfrom = [1e8, 0, 0]\nto = [1e8, 0, 7]\n\
+        [[part]]\nshape = \"box\"\ndensity = \"7850 kg/m^3\"\ncorner = [-1e8, 0, 0]\n\
+        edges = [[0.1, 0.1, 0], [-0.3, 0.3, 0], [0, 0, 0.7]]\n";
+    for precision in [Precision::Standard, Precision::Extended] {
+        let s = summary_in(text, precision);
+        assert_eq!(s.parts[0].mass, 12.0, "{precision:?}");
+        assert_eq!(s.parts[1].mass, 21.0, "{precision:?}");
+        // Each part's mass is its exact value rounded once, and the body's
+        // the exact sum rounded once: the sum of the rounded parts is
+        // within an ulp of each of their roundings.
+        let sum: f64 = s.parts.iter().map(|p| p.mass).sum();
+        let ulps = s.parts.len() as f64 * f64::EPSILON * s.mass;
+        assert!((sum - s.mass).abs() <= ulps, "{sum} vs {}", s.mass);
+        let fractions: f64 = s.parts.iter().map(|p| p.mass_fraction).sum();
+        assert!((fractions - 1.0).abs() <= 4.0 * f64::EPSILON, "{fractions}");
+    }
+}
+
+/// `--only NAME` says what it reports: the table's title and the JSON
+/// `name` give the sub-assembly's name, and JSON `sub_assembly` its path.
+#[test]
+fn only_names_the_sub_assembly_in_the_table_and_the_json() {
+    let dir = crate::common::scratch("physics", "only-names");
+    std::fs::write(
+        dir.join("wheel.toml"),
+        "name = \"wheel\"\n[[part]]\nname = \"rim\"\nshape = \"cylinder\"\nmass = 2\nradius = 0.3\ninner_radius = 0.28\nlength = 0.05\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("cart.toml"),
+        "name = \"cart\"\n[[part]]\nname = \"deck\"\nshape = \"box\"\nmass = 5\nsize = [1, 0.5, 0.02]\ncenter = [0, 0, 0.2]\n\
+         [[part]]\nname = \"front\"\ninclude = \"wheel.toml\"\norigin = [0.4, 0, 0]\n\
+         [[part]]\nname = \"rear\"\ninclude = \"wheel.toml\"\norigin = [-0.4, 0, 0]\n",
+    )
+    .unwrap();
+    let cart = dir.join("cart.toml");
+    let cart = cart.to_str().unwrap();
+    let out = crate::common::massprop(&["report", cart, "--only", "rear", "--format", "json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["name"], "rear");
+    assert_eq!(v["sub_assembly"], serde_json::json!(["rear"]));
+    assert_eq!(v["mass"].as_f64(), Some(2.0));
+    let out = crate::common::massprop(&["report", cart, "--only", "rear"]);
+    let table = String::from_utf8(out.stdout).unwrap();
+    let title = table.lines().next().unwrap();
+    assert_eq!(title, format!("rear (sub-assembly `rear` of {cart})"));
+    // Without `--only`, no `sub_assembly` key: the contract is unchanged.
+    let out = crate::common::massprop(&["report", cart, "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["name"], "cart");
+    assert!(v.get("sub_assembly").is_none());
+}

@@ -1,0 +1,208 @@
+//! `material = "NAME"`: a named density made the shape's (times a
+//! thickness or a section where the shape is thin or slender), and the real
+//! sizes (`thickness`, `diameter`) of idealised plates and rods.
+
+use super::Ctx;
+use super::parts::quantity_key;
+use super::raw::{Quantity, RawPart};
+use crate::diag::Diagnostic;
+use crate::part::Solid;
+use crate::shapes::{Dims, MaterialRule, Shape};
+use crate::units::{self, Dim};
+use std::ops::Range;
+use toml::Spanned;
+
+impl Ctx<'_> {
+    /// A density (at `span`) on a thin shell, which has no volume.
+    pub(super) fn thin_shell(&self, span: Range<usize>, shape: &str) -> Diagnostic {
+        self.err(
+            span,
+            format!("this {shape} is a thin shell (`inner_radius` = `radius`): it has no volume for a density to fill"),
+        )
+        .help("give its `mass`")
+    }
+
+    /// A part's `material`: its density made the shape's (per volume; times
+    /// `thickness` for a plate, disk or triangle; times `area` or the area
+    /// of `diameter` for a rod), in SI and in file units, with the span of
+    /// `material`. `None` without one; `thickness` and `area` where they
+    /// only serve a material are errors without it.
+
+    /// A part's `material`: its density made the shape's (per volume; times
+    /// `thickness` for a plate, disk or triangle; times `area` or the area
+    /// of `diameter` for a rod), in SI and in file units, with the span of
+    /// `material`. `None` without one; `thickness` and `area` where they
+    /// only serve a material are errors without it.
+    pub(super) fn material(
+        &self,
+        shape: Shape,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<Option<(f64, f64, Range<usize>)>, Diagnostic> {
+        let s = shape.name();
+        let Some(name) = &p.material else {
+            // The keys that serve only to turn a material into a mass (a
+            // plate's `thickness` is also its real size, a rod's `diameter`
+            // too: those stand alone).
+            let info = shape.info();
+            let only_with = material_keys(info.material)
+                .iter()
+                .filter(|k| info.real_size.is_none_or(|(r, _)| r != **k))
+                .find_map(|k| quantity_key(p, k).map(|q| (*k, q)));
+            if let Some((key, q)) = only_with {
+                return Err(self
+                    .err(
+                        q.span(),
+                        format!(
+                            "`{key}` on a {s} goes with `material`, which it turns into a mass"
+                        ),
+                    )
+                    .help(format!(
+                        "give `material`, or drop `{key}` and give `mass` or `{}`",
+                        shape.density_key().unwrap_or("density")
+                    )));
+            }
+            return Ok(None);
+        };
+        let (si, file) = match self.materials.get(name.get_ref()) {
+            Some(&(si, file)) => (si, file),
+            None => match crate::materials::built_in(name.get_ref()) {
+                Some(m) => {
+                    // kg/m³ to file units by the exact factor, as a unit
+                    // string is converted: one rounding, not two.
+                    let to_file = units::Factor::ONE
+                        .per(self.units.factor(Dim::DENSITY))
+                        .expect("density factors are small fractions");
+                    (m.density, to_file.apply(m.density))
+                }
+                None => {
+                    let names: Vec<&str> = crate::materials::BUILT_IN
+                        .iter()
+                        .map(|m| m.name)
+                        .chain(self.materials.keys().map(String::as_str))
+                        .collect();
+                    let d = self.err(
+                        name.span(),
+                        format!("unknown material {:?}", name.get_ref()),
+                    );
+                    return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
+                        Some(s) => d.label(format!("did you mean \"{s}\"?")),
+                        None => d.help("`massprop materials` lists them; add one in `[materials]`, e.g. foam = { density = \"30 kg/m^3\" }"),
+                    });
+                }
+            },
+        };
+        let factor = |si_mult: f64, file_mult: f64| (si * si_mult, file * file_mult);
+        let needs = |key: &str| {
+            self.err(
+                span.clone(),
+                format!(
+                    "this {s} of `{}` needs `{key}` to turn the density into a mass",
+                    name.get_ref()
+                ),
+            )
+        };
+        let out = match shape.info().material {
+            MaterialRule::Volume => (si, file),
+            MaterialRule::Thickness => {
+                let t = p.thickness.as_ref().ok_or_else(|| needs("thickness"))?;
+                factor(
+                    self.positive(t, "thickness", Dim::LENGTH)?,
+                    self.file_quantity(t, "thickness", Dim::LENGTH)?,
+                )
+            }
+            MaterialRule::Section => match (&p.area, &p.diameter) {
+                (Some(a), Some(_)) => {
+                    return Err(self
+                        .err(a.span(), "`area` conflicts with `diameter`: give one to turn the material's density into a mass")
+                        .help("`diameter` (a round rod) also feeds the idealisation report; `area` is any section"));
+                }
+                (Some(a), None) => factor(
+                    self.positive(a, "area", Dim::AREA)?,
+                    self.file_quantity(a, "area", Dim::AREA)?,
+                ),
+                (None, Some(d)) => {
+                    let (ds, df) = (
+                        self.positive(d, "diameter", Dim::LENGTH)?,
+                        self.file_quantity(d, "diameter", Dim::LENGTH)?,
+                    );
+                    let q = std::f64::consts::PI / 4.0;
+                    factor(q * ds * ds, q * df * df)
+                }
+                (None, None) => return Err(needs("area` or `diameter")),
+            },
+            MaterialRule::None => {
+                return Err(self.err(
+                    name.span(),
+                    format!("`material` does not apply to a {s}: give `mass`"),
+                ));
+            }
+        };
+        if !(out.0.is_finite() && out.1.is_finite()) {
+            // The density times the thickness, area or diameter²: point at
+            // that size when the file gives one.
+            let (span, what) = match (&p.thickness, &p.area, &p.diameter) {
+                (Some(q), _, _) => (q.span(), "its thickness"),
+                (_, Some(q), _) => (q.span(), "its area"),
+                (_, _, Some(q)) => (q.span(), "its diameter"),
+                _ => (name.span(), "its size"),
+            };
+            return Err(self.err(
+                span,
+                format!("the material's density times {what} overflows the range of f64"),
+            ));
+        }
+        Ok(Some((out.0, out.1, name.span())))
+    }
+
+    /// The composer works in the file's units (see `Spec`), so the part's
+    /// mass and second moments must be normal f64 there too, not only in
+    /// SI: a tiny part in a file of kilometres and tonnes can be subnormal
+    /// (a few bits of precision) in file units while fine in SI, and a huge
+    /// one in micrometres and milligrams can overflow.
+
+    /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
+    /// file's length unit. `mass` (kg) checks that the second moment it
+    /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
+    /// = m (d/2)²/4 for the cylinder.
+    /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
+    /// file's length unit. `mass` (kg) checks that the second moment it
+    /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
+    /// = m (d/2)²/4 for the cylinder.
+    pub(super) fn real_size(
+        &self,
+        solid: Solid,
+        q: &Spanned<Quantity>,
+        key: &str,
+        mass: f64,
+    ) -> Result<(Solid, f64), Diagnostic> {
+        let si = self.positive(q, key, Dim::LENGTH)?;
+        let extra = match solid {
+            Solid::Box => mass * si * si / 12.0,
+            Solid::Cylinder => mass * si * si / 16.0,
+        };
+        if !extra.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too large: the solid's second moment overflows the range of f64"
+                ),
+            ));
+        }
+        Ok((solid, self.file_quantity(q, key, Dim::LENGTH)?))
+    }
+}
+
+/// The keys a `MaterialRule` reads beside `material`.
+pub(super) fn material_keys(rule: MaterialRule) -> &'static [&'static str] {
+    match rule {
+        MaterialRule::Thickness => &["thickness"],
+        MaterialRule::Section => &["area", "diameter"],
+        MaterialRule::Volume | MaterialRule::None => &[],
+    }
+}
+
+/// A cylinder, disk or sphere whose inner radius is its radius.
+pub(super) fn is_thin_shell(shape: Shape, dims: &[f64]) -> bool {
+    matches!(shape.info().dims, Dims::Radii { .. }) && dims[1] == dims[0]
+}

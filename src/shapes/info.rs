@@ -1,0 +1,356 @@
+//! The description of each shape that the rules of a part file read: one
+//! `ShapeInfo` per shape in `SHAPES`. Adding a shape is its closed form in
+//! `shapes`, one entry here and its tests (docs/architecture.md).
+
+use super::Shape;
+use crate::units::Dim;
+use serde::Serialize;
+
+/// What a shape's density is per, and so which key gives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DensityKind {
+    /// The key: `density`, `areal_density` or `linear_density`.
+    pub key: &'static str,
+    pub dim: Dim,
+    /// The power of length the density is per (3, 2 or 1): how it scales
+    /// when a sub-assembly's units are converted.
+    pub length_power: i32,
+}
+
+/// Per volume: `density`, kg/m³.
+pub const PER_VOLUME: DensityKind = DensityKind {
+    key: "density",
+    dim: Dim::DENSITY,
+    length_power: 3,
+};
+/// Per area: `areal_density`, kg/m², for thin plates.
+pub const PER_AREA: DensityKind = DensityKind {
+    key: "areal_density",
+    dim: Dim::AREAL_DENSITY,
+    length_power: 2,
+};
+/// Per length: `linear_density`, kg/m, for slender rods.
+pub const PER_LENGTH: DensityKind = DensityKind {
+    key: "linear_density",
+    dim: Dim::LINEAR_DENSITY,
+    length_power: 1,
+};
+
+/// The dimensions a shape is given by, in the order `second_moments`
+/// takes them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Dims {
+    /// `size`, an array of this many positive lengths (box, plate).
+    Size(usize),
+    /// `length`, one positive length (rod).
+    Length,
+    /// `radius`, an optional `inner_radius` from 0 to it, and a positive
+    /// `length` if `length` is true: [R, r] or [R, r, L].
+    Radii { length: bool },
+    /// `vertices`: three points; the one dimension is the area.
+    Vertices,
+    /// A given tensor, `inertia` (rows, about the centroid in local axes).
+    Given,
+    /// None (a point).
+    None,
+}
+
+impl Dims {
+    /// The keys that give the dimensions.
+    pub fn keys(self) -> &'static [&'static str] {
+        match self {
+            Dims::Size(_) => &["size"],
+            Dims::Length => &["length"],
+            Dims::Radii { length: true } => &["radius", "inner_radius", "length"],
+            Dims::Radii { length: false } => &["radius", "inner_radius"],
+            Dims::Vertices => &["vertices"],
+            Dims::Given => &["inertia"],
+            Dims::None => &[],
+        }
+    }
+}
+
+/// A second way to place a shape, by the vectors that span it, beside the
+/// centred one (`center` and `rotation` with the dimensions).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Spanned {
+    /// `corner` and this many perpendicular `edges` (box 3, plate 2).
+    CornerEdges(usize),
+    /// `from` and `to` (rod).
+    FromTo,
+}
+
+impl Spanned {
+    /// The keys of this placement.
+    pub fn keys(self) -> &'static [&'static str] {
+        match self {
+            Spanned::CornerEdges(_) => &["corner", "edges"],
+            Spanned::FromTo => &["from", "to"],
+        }
+    }
+
+    /// The number of edge vectors.
+    pub fn edges(self) -> usize {
+        match self {
+            Spanned::CornerEdges(n) => n,
+            Spanned::FromTo => 1,
+        }
+    }
+}
+
+/// What turns a named `material`'s density (per volume) into the shape's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MaterialRule {
+    /// Per volume already.
+    Volume,
+    /// Times the `thickness` (plates, disks, triangles).
+    Thickness,
+    /// Times the section: `area`, or the disc of `diameter` (rods).
+    Section,
+    /// The shape takes no material (`mass` only).
+    None,
+}
+
+/// Everything the rules of a part file know about a shape: the one
+/// description every reader consults (validation, includes, idealisation,
+/// suggestions, docs/part-file.md). See docs/architecture.md for adding a
+/// shape.
+#[derive(Clone, Copy, Debug)]
+pub struct ShapeInfo {
+    pub shape: Shape,
+    /// The name in part files (`shape = "box"`).
+    pub name: &'static str,
+    /// Every key a part of this shape accepts, besides `name` and `shape`.
+    pub keys: &'static [&'static str],
+    /// The density it takes instead of `mass`; `None`: `mass` only.
+    pub density: Option<DensityKind>,
+    pub dims: Dims,
+    /// The keys of the centred placement that conflict with `spanned`'s.
+    pub centred: &'static [&'static str],
+    /// The other placement, if the shape has one.
+    pub spanned: Option<Spanned>,
+    pub material: MaterialRule,
+    /// The key giving the real size of a thin or slender idealisation, and
+    /// the solid it describes (`report::ideal`).
+    pub real_size: Option<(&'static str, Solid)>,
+    /// How many of the three local second moments are non-zero (0 where
+    /// the model checks the shape's own way: a triangle, a given tensor).
+    pub nonzero_moments: usize,
+    /// What makes it degenerate, for the docs and messages.
+    pub degenerate: &'static str,
+    /// The help shown with an error about its keys.
+    pub help: &'static str,
+}
+
+/// The solid that a thin plate or slender rod idealises.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Solid {
+    /// A plate a × b of thickness t: the box a × b × t.
+    Box,
+    /// A rod of length L and diameter d: the solid circular cylinder.
+    Cylinder,
+}
+
+impl Solid {
+    pub fn name(self) -> &'static str {
+        match self {
+            Solid::Box => "box",
+            Solid::Cylinder => "cylinder",
+        }
+    }
+}
+
+/// The shapes, in the order of `Shape`'s variants.
+pub const SHAPES: [ShapeInfo; 9] = [
+    ShapeInfo {
+        shape: Shape::Box,
+        name: "box",
+        keys: &[
+            "density", "size", "center", "rotation", "corner", "edges", "mass", "remove",
+            "material",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Size(3),
+        centred: &["size", "center", "rotation"],
+        spanned: Some(Spanned::CornerEdges(3)),
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a zero or non-perpendicular edge",
+        help: "a box takes `mass` or `density`, and `size` with `center` (and optional `rotation`), or `corner` with three `edges`",
+    },
+    ShapeInfo {
+        shape: Shape::Plate,
+        name: "plate",
+        keys: &[
+            "areal_density",
+            "size",
+            "center",
+            "rotation",
+            "corner",
+            "edges",
+            "mass",
+            "remove",
+            "thickness",
+            "material",
+        ],
+        density: Some(PER_AREA),
+        dims: Dims::Size(2),
+        centred: &["size", "center", "rotation"],
+        spanned: Some(Spanned::CornerEdges(2)),
+        material: MaterialRule::Thickness,
+        real_size: Some(("thickness", Solid::Box)),
+        nonzero_moments: 2,
+        degenerate: "a zero or non-perpendicular edge",
+        help: "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`; optionally its real `thickness`",
+    },
+    ShapeInfo {
+        shape: Shape::Rod,
+        name: "rod",
+        keys: &[
+            "linear_density",
+            "length",
+            "center",
+            "rotation",
+            "from",
+            "to",
+            "mass",
+            "remove",
+            "diameter",
+            "material",
+            "area",
+        ],
+        density: Some(PER_LENGTH),
+        dims: Dims::Length,
+        centred: &["length", "center", "rotation"],
+        spanned: Some(Spanned::FromTo),
+        material: MaterialRule::Section,
+        real_size: Some(("diameter", Solid::Cylinder)),
+        nonzero_moments: 1,
+        degenerate: "`to` equal to `from`",
+        help: "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`; optionally its real `diameter`",
+    },
+    ShapeInfo {
+        shape: Shape::Cylinder,
+        name: "cylinder",
+        keys: &[
+            "density",
+            "radius",
+            "inner_radius",
+            "material",
+            "length",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Radii { length: true },
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
+        help: "a cylinder takes `mass` or `density`, `radius` and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
+    },
+    ShapeInfo {
+        shape: Shape::Disk,
+        name: "disk",
+        keys: &[
+            "areal_density",
+            "radius",
+            "inner_radius",
+            "material",
+            "thickness",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_AREA),
+        dims: Dims::Radii { length: false },
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Thickness,
+        real_size: None,
+        nonzero_moments: 2,
+        degenerate: "a density on a thin ring (`inner_radius` = `radius`)",
+        help: "a disk takes `mass` or `areal_density`, and `radius` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
+    },
+    ShapeInfo {
+        shape: Shape::Sphere,
+        name: "sphere",
+        keys: &[
+            "density",
+            "radius",
+            "inner_radius",
+            "material",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Radii { length: false },
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
+        help: "a sphere takes `mass` or `density`, and `radius` with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
+    },
+    ShapeInfo {
+        shape: Shape::Triangle,
+        name: "triangle",
+        keys: &[
+            "areal_density",
+            "vertices",
+            "mass",
+            "remove",
+            "material",
+            "thickness",
+        ],
+        density: Some(PER_AREA),
+        dims: Dims::Vertices,
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Thickness,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "(nearly) collinear vertices",
+        help: "a triangle takes `mass` or `areal_density`, and three `vertices` = [[x, y, z], [x, y, z], [x, y, z]] in the file's frame",
+    },
+    ShapeInfo {
+        shape: Shape::Point,
+        name: "point",
+        keys: &["center", "mass"],
+        density: None,
+        dims: Dims::None,
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::None,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "none",
+        help: "a point takes `mass` and `center`",
+    },
+    ShapeInfo {
+        shape: Shape::Inertia,
+        name: "inertia",
+        keys: &[
+            "mass", "center", "rotation", "inertia", "products", "remove",
+        ],
+        density: None,
+        dims: Dims::Given,
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::None,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "a tensor that is not symmetric or not physically valid",
+        help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
+    },
+];
