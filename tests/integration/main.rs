@@ -5,6 +5,7 @@ mod check;
 mod cli;
 mod common;
 mod diff;
+mod docs;
 mod hostile;
 mod invariants;
 mod package;
