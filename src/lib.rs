@@ -6,7 +6,8 @@
 //! 1. numbers, units, diagnostics: `numeric`, `eigen`, `tolerance`,
 //!    `units`, `diag`, `io`;
 //! 2. shapes and parts: `shapes` (one description per shape and the closed
-//!    forms), `part` (a part and its physics), `materials`;
+//!    forms), `rotation` (the forms of a part's turn), `part` (a part and
+//!    its physics), `materials`;
 //! 3. the model: `model` (the part file read and validated);
 //! 4. composition and principal axes: `compose`, `mass`;
 //! 5. analysis: `analysis` (the one load pipeline; summary, checks, diff);
@@ -27,6 +28,7 @@ pub mod model;
 pub mod numeric;
 pub mod part;
 pub mod render;
+pub mod rotation;
 pub mod shapes;
 pub mod tolerance;
 pub mod units;

@@ -3,8 +3,8 @@
 //! for. The composer, the per-part figures of every report and the checks
 //! on the input all use these functions: one path per quantity.
 
-use crate::model::rotation::Orientation;
 use crate::numeric::{DD, M3, Real, norm_of};
+use crate::rotation::Orientation;
 use crate::shapes::Shape;
 use crate::units::{Dim, FileUnits};
 use nalgebra::{Matrix3, Vector3};

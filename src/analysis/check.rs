@@ -7,12 +7,12 @@ use super::{Loaded, Settings};
 use crate::compose::Precision;
 use crate::diag::{Diagnostic, Source};
 use crate::model::expect::{Bound, Check, Target, Tol};
-use crate::render::format::{DisplayUnits, fmt_num};
 use crate::tolerance::VALIDITY_RTOL;
+use crate::units::{Dim, FileUnits};
 use serde::Serialize;
 
 /// The measured value of one check, SI.
-pub(crate) fn measured(s: &Summary, t: Target) -> f64 {
+pub fn measured(s: &Summary, t: Target) -> f64 {
     match t {
         Target::Mass => s.mass,
         Target::CenterOfMass(i) => s.center_of_mass[i],
@@ -26,7 +26,7 @@ pub(crate) fn measured(s: &Summary, t: Target) -> f64 {
 }
 
 /// Bounds [lo, hi] of a check, SI.
-fn limits(b: &Bound) -> (f64, f64) {
+pub fn limits(b: &Bound) -> (f64, f64) {
     match *b {
         Bound::Value { value, tol } => {
             let t = match tol {
@@ -60,9 +60,15 @@ pub struct CheckResult {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max: Option<f64>,
     pub pass: bool,
-    /// The message shown when it fails.
+    /// The expectation, SI, for the message (`render::check::message`).
     #[serde(skip)]
-    pub message: String,
+    pub bound: Bound,
+    /// The dimension of the value, for its display unit.
+    #[serde(skip)]
+    pub dim: Dim,
+    /// The file's units, in which the message shows the values.
+    #[serde(skip)]
+    pub file_units: FileUnits,
 }
 
 /// The outcome for one file, serialised by name.
@@ -94,54 +100,6 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
     let (lo, hi) = limits(&c.bound);
     let pass = m >= lo && m <= hi;
     let (line, column) = source.line_col(c.span.start);
-    let units = DisplayUnits::of(s.file_units);
-    let show = |x: f64| units.show(x, c.dim);
-    let message = match c.bound {
-        Bound::Value { value, tol } => {
-            let tol_text = match tol {
-                Tol::Abs(t) => show(t),
-                Tol::Rel(r) => format!("{} %", fmt_num(r * 100.0)),
-            };
-            // Relative when that is a readable finite number; absolute when
-            // the value is zero or so small (subnormal) that the ratio
-            // overflows; left out when even the difference overflows.
-            let percent = (m - value) / value.abs() * 100.0;
-            let off = if value != 0.0 && percent.is_finite() && percent.abs() < 1e6 {
-                format!(" (off by {percent:+.3} %)")
-            } else if value != 0.0 && percent.is_finite() {
-                format!(" (off by {percent:+.3e} %)")
-            } else if (m - value).is_finite() {
-                let sign = if m >= value { "+" } else { "" };
-                format!(" (off by {sign}{})", show(m - value))
-            } else {
-                String::new()
-            };
-            format!(
-                "{} {} is outside {} ± {tol_text}{off}",
-                c.name,
-                show(m),
-                show(value)
-            )
-        }
-        Bound::Range { .. } if m < lo => {
-            format!(
-                "{} {} is below the minimum {} (by {})",
-                c.name,
-                show(m),
-                show(lo),
-                show(lo - m)
-            )
-        }
-        Bound::Range { .. } => {
-            format!(
-                "{} {} is above the maximum {} (by {})",
-                c.name,
-                show(m),
-                show(hi),
-                show(m - hi)
-            )
-        }
-    };
     let (value, tol, tol_relative, min, max) = match c.bound {
         Bound::Value {
             value,
@@ -164,7 +122,9 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
         min,
         max,
         pass,
-        message: format!("{}:{line}:{column}: error: {message}", source.name),
+        bound: c.bound,
+        dim: c.dim,
+        file_units: s.file_units,
     }
 }
 

@@ -1,8 +1,10 @@
 //! `check`'s output: one line per file or failure in the form compilers
 //! use (`file:line:col: error: …`), or one JSON document (docs/check.md).
 
-use crate::analysis::check::{FileResult, Status};
+use super::format::{DisplayUnits, fmt_num};
+use crate::analysis::check::{CheckResult, FileResult, Status, limits};
 use crate::analysis::summary::FORMAT_VERSION;
+use crate::model::expect::{Bound, Tol};
 use serde::Serialize;
 
 /// How many files ended each way.
@@ -57,7 +59,7 @@ pub fn table(results: &[FileResult]) -> String {
                     s.push_str(&format!("{}: error: {v}\n", r.path));
                 }
                 for c in r.checks.iter().filter(|c| !c.pass) {
-                    s.push_str(&c.message);
+                    s.push_str(&message(&r.path, c));
                     s.push('\n');
                 }
             }
@@ -73,4 +75,61 @@ pub fn table(results: &[FileResult]) -> String {
         counts.invalid
     ));
     s
+}
+
+/// The line a failed expectation gets, in the form compilers use:
+/// `path:line:col: error: NAME VALUE is outside …`, values in the file's
+/// units.
+pub fn message(path: &str, c: &CheckResult) -> String {
+    let units = DisplayUnits::of(c.file_units);
+    let show = |x: f64| units.show(x, c.dim);
+    let m = c.measured;
+    let (lo, hi) = limits(&c.bound);
+    let message = match c.bound {
+        Bound::Value { value, tol } => {
+            let tol_text = match tol {
+                Tol::Abs(t) => show(t),
+                Tol::Rel(r) => format!("{} %", fmt_num(r * 100.0)),
+            };
+            // Relative when that is a readable finite number; absolute when
+            // the value is zero or so small (subnormal) that the ratio
+            // overflows; left out when even the difference overflows.
+            let percent = (m - value) / value.abs() * 100.0;
+            let off = if value != 0.0 && percent.is_finite() && percent.abs() < 1e6 {
+                format!(" (off by {percent:+.3} %)")
+            } else if value != 0.0 && percent.is_finite() {
+                format!(" (off by {percent:+.3e} %)")
+            } else if (m - value).is_finite() {
+                let sign = if m >= value { "+" } else { "" };
+                format!(" (off by {sign}{})", show(m - value))
+            } else {
+                String::new()
+            };
+            format!(
+                "{} {} is outside {} ± {tol_text}{off}",
+                c.quantity,
+                show(m),
+                show(value)
+            )
+        }
+        Bound::Range { .. } if m < lo => {
+            format!(
+                "{} {} is below the minimum {} (by {})",
+                c.quantity,
+                show(m),
+                show(lo),
+                show(lo - m)
+            )
+        }
+        Bound::Range { .. } => {
+            format!(
+                "{} {} is above the maximum {} (by {})",
+                c.quantity,
+                show(m),
+                show(hi),
+                show(m - hi)
+            )
+        }
+    };
+    format!("{path}:{}:{}: error: {message}", c.line, c.column)
 }

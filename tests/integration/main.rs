@@ -8,6 +8,7 @@ mod diff;
 mod docs;
 mod hostile;
 mod invariants;
+mod layers;
 mod package;
 mod physics;
 mod reference;
