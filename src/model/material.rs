@@ -27,12 +27,6 @@ impl Ctx<'_> {
     /// of `diameter` for a rod), in SI and in file units, with the span of
     /// `material`. `None` without one; `thickness` and `area` where they
     /// only serve a material are errors without it.
-
-    /// A part's `material`: its density made the shape's (per volume; times
-    /// `thickness` for a plate, disk or triangle; times `area` or the area
-    /// of `diameter` for a rod), in SI and in file units, with the span of
-    /// `material`. `None` without one; `thickness` and `area` where they
-    /// only serve a material are errors without it.
     pub(super) fn material(
         &self,
         shape: Shape,
@@ -155,16 +149,6 @@ impl Ctx<'_> {
         Ok(Some((out.0, out.1, name.span())))
     }
 
-    /// The composer works in the file's units (see `Spec`), so the part's
-    /// mass and second moments must be normal f64 there too, not only in
-    /// SI: a tiny part in a file of kilometres and tonnes can be subnormal
-    /// (a few bits of precision) in file units while fine in SI, and a huge
-    /// one in micrometres and milligrams can overflow.
-
-    /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
-    /// file's length unit. `mass` (kg) checks that the second moment it
-    /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
-    /// = m (d/2)²/4 for the cylinder.
     /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
     /// file's length unit. `mass` (kg) checks that the second moment it
     /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16

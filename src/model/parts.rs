@@ -325,8 +325,6 @@ impl Ctx<'_> {
         Ok((part, real))
     }
 
-    /// A density (at `span`) on a thin shell, which has no volume.
-
     /// The composer works in the file's units (see `Spec`), so the part's
     /// mass and second moments must be normal f64 there too, not only in
     /// SI: a tiny part in a file of kilometres and tonnes can be subnormal

@@ -173,9 +173,6 @@ impl Ctx<'_> {
     /// A triangle's area (SI) from its `vertices`, which must
     /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
     /// longest edge.
-    /// A triangle's area (SI) from its `vertices`, which must
-    /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
-    /// longest edge.
     pub(super) fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
         let raw = p.vertices.as_ref().ok_or(missing)?;
         let rows = self.exactly(raw, 3, "a triangle", "`vertices`")?;
@@ -209,12 +206,6 @@ impl Ctx<'_> {
         }
         Ok(area)
     }
-
-    /// A given `inertia` (SI), checked: 3 × 3, symmetric to
-    /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
-    /// tr(I)/2 E − I positive semi-definite (no principal moment negative,
-    /// I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest. Returns that
-    /// second moment, local axes.
 
     /// A given `inertia` (SI), checked: 3 × 3, symmetric to
     /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
