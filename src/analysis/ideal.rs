@@ -13,7 +13,7 @@ use super::summary::{Blame, Contribution, SummaryError};
 use crate::compose::{self, Precision, Principal};
 use crate::mass::Body;
 use crate::model::Model;
-use crate::numeric::{DD, M3, Real};
+use crate::numeric::{DD, M3, Real, pow2_scale};
 use crate::part::{Part, Place, Solid};
 use serde::Serialize;
 
@@ -65,12 +65,8 @@ pub struct IdealPart {
 /// v / 2ᵏ for the power of two nearest below max |vᵢ|: exact, and keeps the
 /// squares of a direction vector away from overflow and underflow.
 fn scaled(v: [DD; 3]) -> [DD; 3] {
-    let big = v.iter().fold(0.0f64, |m, x| m.max(x.f64().abs()));
-    if big == 0.0 || !big.is_finite() {
-        return v;
-    }
-    let scale = 2f64.powi(big.log2().floor() as i32);
-    v.map(|x| x / DD::of(scale))
+    let scale = DD::of(pow2_scale(&v));
+    v.map(|x| x / scale)
 }
 
 /// A vector along the plate's normal (plate) or the rod's axis (rod), of

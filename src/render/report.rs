@@ -191,7 +191,7 @@ pub fn table(s: &Summary, source: &str) -> String {
         cells.end();
         push_sig(&mut cells.text, p.mass / u.mass, 6);
         cells.end();
-        let _ = write!(cells.text, "{:.1} %", p.mass_fraction * 100.0);
+        push_percent(&mut cells.text, Some(p.mass_fraction));
         cells.end();
         for x in &p.center_of_mass {
             push_sig(&mut cells.text, x / u.length, 6);
@@ -255,6 +255,7 @@ fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
         row.extend(a.principal_moment_share.iter().map(|x| fmt_percent(*x)));
         t.add_row(row);
     }
+    right_align(&mut t, 1);
     let _ = writeln!(out, "\nsub-assemblies\n{t}");
 }
 
