@@ -56,6 +56,26 @@ pub struct PartSi {
     pub second_moment: Matrix3<f64>,
 }
 
+/// The exact factors from a file's units to SI, formed once (each is a
+/// rational computed in i128) for all the parts of a body.
+#[derive(Debug, Clone, Copy)]
+pub struct SiFactors {
+    pub mass: DD,
+    pub length: DD,
+    /// kg·m² per file unit of inertia, rounded once.
+    pub inertia: f64,
+}
+
+impl SiFactors {
+    pub fn of(units: FileUnits) -> SiFactors {
+        SiFactors {
+            mass: units.factor(Dim::MASS).dd(),
+            length: units.factor(Dim::LENGTH).dd(),
+            inertia: units.factor(Dim::INERTIA).value(),
+        }
+    }
+}
+
 impl Part {
     /// Mass in file units: given, or density times volume, area or length;
     /// negative for a cut-out.
@@ -79,17 +99,28 @@ impl Part {
     /// factors, rounded once; the second moment in f64 (it serves
     /// comparisons and blame, not sums).
     pub fn si(&self, units: FileUnits) -> PartSi {
+        self.si_in(&SiFactors::of(units))
+    }
+
+    /// `si` with the unit factors formed once for many parts.
+    pub fn si_in(&self, f: &SiFactors) -> PartSi {
         let m: DD = self.mass();
-        let f_mass = units.factor(Dim::MASS).dd();
-        let f_length = units.factor(Dim::LENGTH).dd();
-        let c = self.centroid();
         let own: M3<f64> = self.own_second_moment(m.f64());
-        let f_inertia = units.factor(Dim::INERTIA).value();
         PartSi {
-            mass: (m * f_mass).f64(),
-            center: Vector3::from(c.map(|x| (x * f_length).f64())),
-            second_moment: Matrix3::from_fn(|i, j| own[i][j] * f_inertia),
+            mass: (m * f.mass).f64(),
+            center: self.center_si(f),
+            second_moment: Matrix3::from_fn(|i, j| own[i][j] * f.inertia),
         }
+    }
+
+    /// The mass in SI (kg), as in `si`.
+    pub fn mass_si(&self, f: &SiFactors) -> f64 {
+        (self.mass::<DD>() * f.mass).f64()
+    }
+
+    /// The centroid in SI (m), as in `si`.
+    pub fn center_si(&self, f: &SiFactors) -> Vector3<f64> {
+        Vector3::from(self.centroid().map(|x| (x * f.length).f64()))
     }
 }
 

@@ -37,11 +37,12 @@ pub struct PartView {
 impl Side {
     pub fn of(loaded: Loaded) -> Side {
         let model = &loaded.model;
+        let factors = crate::part::SiFactors::of(model.units);
         let parts = model
             .parts
             .iter()
             .map(|p| {
-                let si = p.si(model.units);
+                let si = p.si_in(&factors);
                 PartView {
                     name: p.name.clone(),
                     shape: p.shape,

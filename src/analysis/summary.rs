@@ -9,6 +9,7 @@ use crate::diag::{Diagnostic, Source};
 use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
+use crate::part::SiFactors;
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::Dim;
 use crate::units::FileUnits;
@@ -283,7 +284,8 @@ impl SummaryError {
 /// larger of |m|·d² (d from the centre of mass) and the trace of its own
 /// tensor, compared by logarithm so that none of them overflows.
 fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::part::Part> {
-    let si: Vec<crate::part::PartSi> = model.parts.iter().map(|p| p.si(model.units)).collect();
+    let factors = SiFactors::of(model.units);
+    let si: Vec<crate::part::PartSi> = model.parts.iter().map(|p| p.si_in(&factors)).collect();
     let ln_norm = |v: Vector3<f64>| {
         // ln |v| without overflow: scale by the largest component.
         let big = v.amax();
@@ -366,11 +368,8 @@ fn cut_outs_leave_a_body(
     };
     // Relative to the masses that cancel: what is left of equal and
     // opposite masses is rounding, not a body.
-    let gross: f64 = model
-        .parts
-        .iter()
-        .map(|p| p.si(model.units).mass.abs())
-        .sum();
+    let factors = SiFactors::of(model.units);
+    let gross: f64 = model.parts.iter().map(|p| p.mass_si(&factors).abs()).sum();
     if !(mass > VALIDITY_RTOL * gross) {
         return Err(SummaryError::NotPhysical(format!(
             "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {them} {verb} all of the material"
@@ -497,6 +496,7 @@ pub fn summarize(
         finite(m, "Euler moment", Blame::Alpha)?;
     }
 
+    let factors = SiFactors::of(model.units);
     let mut summary = Summary {
         format_version: FORMAT_VERSION,
         name: model.name.clone(),
@@ -521,13 +521,13 @@ pub fn summarize(
             .iter()
             .zip(shares)
             .map(|(p, share)| {
-                let si = p.si(model.units);
+                let m = p.mass_si(&factors);
                 PartSummary {
                     name: p.name.clone(),
                     shape: p.shape,
-                    mass: si.mass,
-                    mass_fraction: si.mass / mass,
-                    center_of_mass: arr(&si.center),
+                    mass: m,
+                    mass_fraction: m / mass,
+                    center_of_mass: arr(&p.center_si(&factors)),
                     principal_moment_share: share,
                     assembly: p.assembly.clone(),
                 }
