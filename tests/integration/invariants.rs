@@ -17,11 +17,11 @@
 //! so two runs are within twice that of each other. Each property prints
 //! its worst error/bound over all cases.
 
-use crate::reference::{self as r, Amount, Length, Mass, Part, Scene, fm};
 use crate::stress::{
     self, MOMENT, Margins, Precision, Report, TENSOR, check_against_reference, check_axes,
     com_bound, mass_bound, report, turn_tensor,
 };
+use massprop_support::reference::{self as r, Amount, Length, Mass, Part, Scene, fm};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
 use std::cell::RefCell;

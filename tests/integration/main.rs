@@ -8,5 +8,4 @@ mod diff;
 mod hostile;
 mod invariants;
 mod physics;
-mod reference;
 mod stress;

@@ -1,5 +1,5 @@
 //! Stress tests of massprop's accuracy against the exact reference
-//! (`reference.rs`, issue 4), through the public JSON contract:
+//! (`massprop_support::reference`, support/src/reference.rs, issue 4), through the public JSON contract:
 //! `massprop report FILE --format json --precision MODE`, run in-process.
 //!
 //! Each scene is written as a part file whose numbers are exactly the f64
@@ -21,11 +21,11 @@
 //! - mass and centre of mass: a priori bounds of sums, [`mass_bound`] and
 //!   [`com_bound`].
 
-use crate::reference::{
+use clap::Parser;
+use massprop_support::num_traits::Signed;
+use massprop_support::reference::{
     self as r, Amount, Exact, Length, Mass, Part, Place, Scene, axis_sin, f, fm, rel, rel_frobenius,
 };
-use clap::Parser;
-use num_traits::Signed;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub(crate) const EPS: f64 = f64::EPSILON;

@@ -1,4 +1,5 @@
-//! An exact reference composer, for the accuracy tests only (issue 4).
+//! An exact reference composer, for the accuracy tests, the benchmark and
+//! the accuracy example only (issue 4).
 //!
 //! Every finite f64 is a dyadic rational, so a scene's inputs are taken
 //! *exactly*, and every unit factor is an exact fraction (0.0254 m, 0.45359237
