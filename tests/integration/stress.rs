@@ -1143,18 +1143,31 @@ fn rounding_bound(scene: &Scene, exact: &Exact) -> f64 {
     for (p, e) in scene.parts.iter().zip(&exact.parts) {
         let tr = f(&(&e.second_moment[0][0] + &e.second_moment[1][1] + &e.second_moment[2][2]));
         let len = |v: &[f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let turned = |rotation: &Option<r::Rotation>| match rotation {
+            Some(r::Rotation::Quaternion(_)) => 12.0 * U * tr,
+            // None, or a signed permutation: no rounding.
+            _ => 0.0,
+        };
         let (own, size) = match &p.place {
             Place::Center {
-                center, quaternion, ..
-            } => (
-                if quaternion.is_some() { 12.0 } else { 0.0 } * U * tr,
-                len(center),
-            ),
+                center, rotation, ..
+            }
+            | Place::Given {
+                center, rotation, ..
+            } => (turned(rotation), len(center)),
             Place::Edges { corner, edges } => (
                 2.0 * U * tr,
                 len(corner) + edges.iter().map(len).sum::<f64>() / 2.0,
             ),
             Place::FromTo { from, to } => (2.0 * U * tr, (len(from) + len(to)) / 2.0),
+            // Each vertex moves by u|vᵢ|, an edge by up to 2u max|vᵢ|: the
+            // triangle's own C by 2·(2u max|vᵢ| / shortest edge) of itself.
+            Place::Vertices(v) => {
+                let far = v.iter().map(len).fold(0.0, f64::max);
+                let edge = |a: usize, b: usize| len(&std::array::from_fn(|i| v[a][i] - v[b][i]));
+                let short = edge(0, 1).min(edge(1, 2)).min(edge(2, 0));
+                (4.0 * U * far / short * tr, v.iter().map(len).sum::<f64>() / 3.0)
+            }
         };
         let d = r::norm(&std::array::from_fn(|i| &e.center[i] - &exact.com[i]));
         let delta = U * size;
