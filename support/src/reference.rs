@@ -1507,10 +1507,16 @@ pub fn rel_vec(a: &[f64; 3], b: &V3) -> f64 {
     ratio_sqrt(&dot(&d, &d), &dot(b, b))
 }
 
-/// |a − b| / scale for vectors.
+/// |a − b| / scale for vectors; 0 when a = b (also for a zero scale: a
+/// body whose parts all sit at the origin).
 pub fn vec_err_over(a: &[f64; 3], b: &V3, scale: f64) -> f64 {
     let d = sub(&qv(*a), b);
-    f(&dot(&d, &d)).sqrt() / scale
+    let d = dot(&d, &d);
+    if d.is_zero() {
+        0.0
+    } else {
+        f(&d).sqrt() / scale
+    }
 }
 
 /// sin of the angle between the lines of `a` (computed) and `b` (exact, any
