@@ -7,17 +7,12 @@
 //! precision mode costs. The errors that go with them come from
 //! `cargo run --release --example accuracy` (docs/accuracy.md).
 
-#[allow(dead_code)]
-#[path = "../tests/integration/reference.rs"]
-mod reference;
-#[allow(dead_code)]
-mod scenes;
-
 use divan::counter::ItemsCount;
 use divan::{Bencher, black_box};
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
 use massprop::model::Model;
+use massprop_support::{reference, scenes};
 use std::sync::OnceLock;
 
 const SCENES: &[&str] = &[

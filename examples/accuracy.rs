@@ -9,13 +9,6 @@
 //! against time. Times are medians of repeated runs on whatever machine runs
 //! it; errors are exact (the reference is rational arithmetic).
 
-#[allow(dead_code)]
-#[path = "../tests/integration/reference.rs"]
-mod reference;
-#[allow(dead_code)]
-#[path = "../benches/scenes.rs"]
-mod scenes;
-
 use massprop::analysis::Products;
 use massprop::analysis::summary::summarize;
 use massprop::compose::{self, Precision};
@@ -23,6 +16,7 @@ use massprop::diag::Source;
 use massprop::model::Model;
 use massprop::numeric::{M3, Real};
 use massprop::units::Dim;
+use massprop_support::{reference, scenes};
 use nalgebra::{Matrix3, SymmetricEigen};
 use std::fmt::Write as _;
 use std::hint::black_box;

@@ -1,6 +1,8 @@
 //! Property tests over random assemblies (proptest): 2 to 8 parts of every
-//! shape and placement, random sizes, orientations, masses and densities,
-//! run through massprop's JSON output in both precision modes.
+//! shape and placement — box, plate, rod, point, cylinder, tube, disk,
+//! annulus, sphere, hollow sphere, thin shell, triangle, given inertia —
+//! random sizes, orientations, masses and densities, run through massprop's
+//! JSON output in both precision modes.
 //!
 //! - translating the whole assembly leaves the inertia about its centre of
 //!   mass unchanged;
@@ -8,19 +10,23 @@
 //! - a quarter turn of the whole assembly permutes the tensor and keeps the
 //!   principal moments;
 //! - splitting a box in two halves changes nothing;
-//! - every result is within its bound of the exact reference.
+//! - every result is within its bound of the exact reference, and so is
+//!   each shape alone (printed per shape).
 //!
 //! The transformations are chosen to be exact on the f64 inputs (positions
-//! on a binary grid, integer-grid offsets, halving), so each pair of runs
-//! describes exactly the same body and may differ only by massprop's own
-//! rounding: each run is within TENSOR (MOMENT, …) of the same exact result,
-//! so two runs are within twice that of each other. Each property prints
-//! its worst error/bound over all cases.
+//! on a binary grid, integer-grid offsets, halving, signed permutations),
+//! so each pair of runs describes exactly the same body and may differ only
+//! by massprop's own rounding: each run is within the scene's bounds
+//! ([`Bounds::of`]: TENSOR, MOMENT, … plus what its shapes add) of the same
+//! exact result, so two runs are within twice that of each other. Each
+//! property prints its worst error/bound over all cases.
 
-use crate::reference::{self as r, Amount, Length, Mass, Part, Scene, fm};
 use crate::stress::{
-    self, MOMENT, Margins, Precision, Report, TENSOR, check_against_reference, check_axes,
-    com_bound, mass_bound, report, turn_tensor,
+    self, Bounds, Margins, Precision, Report, check_against_reference, check_against_reference_as,
+    check_axes, check_axes_as, report, turn_tensor,
+};
+use massprop_support::reference::{
+    self as r, Amount, Length, Mass, Part, Products, Rotation, Scene, fm,
 };
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
@@ -107,30 +113,128 @@ enum Kind {
     RodTurned,
     RodFromTo,
     Point,
+    Cylinder,
+    Tube,
+    Disk,
+    Annulus,
+    Sphere,
+    HollowSphere,
+    Shell,
+    Triangle,
+    Given,
 }
 
-/// Every shape and placement; `turnable` keeps to those a quarter turn maps
-/// exactly (no part rotated by a quaternion, no canonical plate).
-fn part(turnable: bool) -> impl Strategy<Value = Part> {
-    let kinds = if turnable {
-        vec![
-            Kind::BoxUpright,
-            Kind::BoxEdges,
-            Kind::PlateEdges,
-            Kind::RodFromTo,
-            Kind::Point,
-        ]
+impl Kind {
+    /// Every kind of part; `turnable` keeps to those a quarter turn maps
+    /// exactly (no part rotated by a quaternion: the new shapes are then
+    /// unrotated or turned by a signed permutation).
+    fn all(turnable: bool) -> Vec<Kind> {
+        use Kind::*;
+        let mut kinds = if turnable {
+            vec![BoxUpright, BoxEdges, PlateEdges, RodFromTo, Point]
+        } else {
+            vec![
+                BoxTurned,
+                BoxUpright,
+                BoxEdges,
+                PlateTurned,
+                PlateEdges,
+                RodTurned,
+                RodFromTo,
+                Point,
+            ]
+        };
+        kinds.extend(Kind::NEW);
+        kinds
+    }
+
+    /// The shapes beyond box, plate, rod and point.
+    const NEW: [Kind; 9] = [
+        Kind::Cylinder,
+        Kind::Tube,
+        Kind::Disk,
+        Kind::Annulus,
+        Kind::Sphere,
+        Kind::HollowSphere,
+        Kind::Shell,
+        Kind::Triangle,
+        Kind::Given,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Kind::Cylinder => "cylinder",
+            Kind::Tube => "tube",
+            Kind::Disk => "disk",
+            Kind::Annulus => "annulus",
+            Kind::Sphere => "sphere",
+            Kind::HollowSphere => "hollow sphere",
+            Kind::Shell => "shell",
+            Kind::Triangle => "triangle",
+            Kind::Given => "given inertia",
+            _ => "box, plate, rod or point",
+        }
+    }
+}
+
+/// A rotation by a signed permutation with determinant +1 (one of the 24
+/// quarter-turn rotations), exact in any part file.
+fn signed_permutation() -> impl Strategy<Value = Rotation> {
+    (0usize..6, 0usize..4).prop_map(|(perm, signs)| {
+        let order = [
+            [0, 1, 2],
+            [0, 2, 1],
+            [1, 0, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [2, 1, 0],
+        ][perm];
+        // Odd permutations need an odd number of sign flips.
+        let odd = matches!(perm, 1 | 2 | 5);
+        let mut s = [1.0, 1.0, 1.0];
+        if signs & 1 == 1 {
+            s[0] = -1.0;
+            s[1] = -1.0;
+        }
+        if signs & 2 == 2 {
+            s[1] = -s[1];
+            s[2] = -s[2];
+        }
+        if odd {
+            s[2] = -s[2];
+        }
+        let mut m = [[0.0; 3]; 3];
+        for (row, &col) in order.iter().enumerate() {
+            m[row][col] = s[row];
+        }
+        Rotation::Matrix(m)
+    })
+}
+
+/// An inner radius as a fraction of the outer: anywhere in (0, 1), or
+/// within 2⁻¹⁰ … 2⁻⁴⁰ of 1 (thin walls, where R − r must not cancel), or
+/// exactly 1 (thin: mass only).
+fn inner_ratio() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        2 => 0.02f64..0.98,
+        1 => (10i32..=40).prop_map(|k| 1.0 - 0.5f64.powi(k)),
+        1 => Just(1.0),
+    ]
+}
+
+/// One part of a kind from `kinds`; parts of the new shapes are turned by a
+/// quaternion, by a signed permutation or not at all (only the latter two
+/// when `turnable`).
+fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Part)> {
+    let rotation = if turnable {
+        prop_oneof![Just(None), signed_permutation().prop_map(Some)].boxed()
     } else {
-        vec![
-            Kind::BoxTurned,
-            Kind::BoxUpright,
-            Kind::BoxEdges,
-            Kind::PlateTurned,
-            Kind::PlateEdges,
-            Kind::RodTurned,
-            Kind::RodFromTo,
-            Kind::Point,
+        prop_oneof![
+            2 => quaternion().prop_map(|q| Some(Rotation::Quaternion(q))),
+            1 => Just(None),
+            1 => signed_permutation().prop_map(Some),
         ]
+        .boxed()
     };
     (
         prop::sample::select(kinds),
@@ -139,31 +243,90 @@ fn part(turnable: bool) -> impl Strategy<Value = Part> {
         quaternion(),
         0.1f64..10.0,
         any::<bool>(),
+        (rotation, inner_ratio(), -0.5f64..1.5, any::<bool>()),
     )
-        .prop_map(|(kind, s, at, q, amount, by_density)| {
-            let amount = if by_density && kind != Kind::Point {
-                Amount::Density(amount)
-            } else {
-                Amount::Mass(amount)
-            };
-            let rot = fm(&r::rotation(&q.map(r::q)));
-            let edge = |k: usize| stress::edge(&rot, k, s[k]);
-            match kind {
-                Kind::BoxTurned => Part::cuboid(s, at, Some(q), amount),
-                Kind::BoxUpright => Part::cuboid(s, at, None, amount),
-                Kind::BoxEdges => Part::box_edges(at, [edge(0), edge(1), edge(2)], amount),
-                Kind::PlateTurned => Part::plate([s[0], s[1]], at, Some(q), amount),
-                Kind::PlateEdges => Part::plate_edges(at, [edge(0), edge(1)], amount),
-                Kind::RodTurned => Part::rod(s[2], at, Some(q), amount),
-                // Both ends on the grid, so translations stay exact.
-                Kind::RodFromTo => Part::rod_from_to(
-                    at,
-                    std::array::from_fn(|i| on_grid(at[i] + edge(2)[i], GRID)),
-                    amount,
-                ),
-                Kind::Point => Part::point(amount_value(amount), at),
-            }
-        })
+        .prop_map(
+            |(kind, s, at, q, amount, by_density, (rotation, ratio, skew, positive))| {
+                // Thin walls, points and given tensors take only a mass.
+                let thin = match kind {
+                    Kind::Shell => true,
+                    Kind::Tube | Kind::Annulus | Kind::HollowSphere => ratio == 1.0,
+                    _ => false,
+                };
+                let amount = if by_density && !thin && !matches!(kind, Kind::Point | Kind::Given) {
+                    Amount::Density(amount)
+                } else {
+                    Amount::Mass(amount)
+                };
+                let rot = fm(&r::rotation(&q.map(r::q)));
+                let edge = |k: usize| stress::edge(&rot, k, s[k]);
+                let inner = Some(s[0] * ratio);
+                let part = match kind {
+                    Kind::BoxTurned => Part::cuboid(s, at, Some(q), amount),
+                    Kind::BoxUpright => Part::cuboid(s, at, None, amount),
+                    Kind::BoxEdges => Part::box_edges(at, [edge(0), edge(1), edge(2)], amount),
+                    Kind::PlateTurned => Part::plate([s[0], s[1]], at, Some(q), amount),
+                    Kind::PlateEdges => Part::plate_edges(at, [edge(0), edge(1)], amount),
+                    Kind::RodTurned => Part::rod(s[2], at, Some(q), amount),
+                    // Both ends on the grid, so translations stay exact.
+                    Kind::RodFromTo => Part::rod_from_to(
+                        at,
+                        std::array::from_fn(|i| on_grid(at[i] + edge(2)[i], GRID)),
+                        amount,
+                    ),
+                    Kind::Point => Part::point(amount_value(amount), at),
+                    Kind::Cylinder => Part::cylinder(s[0], None, s[2], at, rotation, amount),
+                    Kind::Tube => Part::cylinder(s[0], inner, s[2], at, rotation, amount),
+                    Kind::Disk => Part::disk(s[0], None, at, rotation, amount),
+                    Kind::Annulus => Part::disk(s[0], inner, at, rotation, amount),
+                    Kind::Sphere => Part::sphere(s[0], None, at, rotation, amount),
+                    Kind::HollowSphere => Part::sphere(s[0], inner, at, rotation, amount),
+                    Kind::Shell => Part::sphere(s[0], Some(s[0]), at, rotation, amount),
+                    // Vertices on the grid (translations stay exact): two
+                    // perpendicular legs, the second 0.2 to 1 times the
+                    // first and slid along it by −0.5 to 1.5 of it, so no
+                    // angle is below about 7° (the area's conditioning).
+                    Kind::Triangle => {
+                        let v = |e: [f64; 3]| std::array::from_fn(|i| on_grid(at[i] + e[i], GRID));
+                        let leg = stress::edge(&rot, 1, s[0] * (0.2 + 0.8 * s[1] / 3.0));
+                        let far = std::array::from_fn(|i| skew * edge(0)[i] + leg[i]);
+                        Part::triangle([at, v(edge(0)), v(far)], amount)
+                    }
+                    Kind::Given => {
+                        let factors = [0.02 + 0.48 * ratio.min(0.99), 0.26, 0.5];
+                        // Principal second moments m sₖ² times 0.02 to 0.5:
+                        // valid with room to spare for the rounding.
+                        let tensor = stress::given_tensor(
+                            amount_value(amount),
+                            std::array::from_fn(|k| s[k] * factors[k].sqrt()),
+                            q,
+                        );
+                        let products = if positive {
+                            Products::Positive
+                        } else {
+                            Products::Tensor
+                        };
+                        let written = if positive {
+                            std::array::from_fn(|i| {
+                                std::array::from_fn(|j| {
+                                    if i == j { tensor[i][j] } else { -tensor[i][j] }
+                                })
+                            })
+                        } else {
+                            tensor
+                        };
+                        Part::given(amount_value(amount), written, products, at, rotation)
+                    }
+                };
+                (kind, part)
+            },
+        )
+}
+
+/// Every shape and placement; `turnable` keeps to those a quarter turn maps
+/// exactly (no part rotated by a quaternion).
+fn part(turnable: bool) -> impl Strategy<Value = Part> {
+    part_of(Kind::all(turnable), turnable).prop_map(|(_, p)| p)
 }
 
 fn amount_value(a: Amount) -> f64 {
@@ -193,34 +356,47 @@ struct Expect {
     com: [f64; 3],
 }
 
-fn same_body(m: &mut Margins, what: &str, a: &Report, b: &Report, expect: Expect) {
-    let n = a.parts.len().max(b.parts.len());
+/// `scenes`: the two scenes run, whose bounds (the larger of each) apply.
+fn same_body(
+    m: &mut Margins,
+    what: &str,
+    scenes: [&Scene; 2],
+    [a, b]: [&Report; 2],
+    expect: Expect,
+) {
+    let [x, y] = scenes.map(Bounds::of);
+    let bound = Bounds {
+        tensor: x.tensor.max(y.tensor),
+        moment: x.moment.max(y.moment),
+        mass: x.mass.max(y.mass),
+        com: x.com.max(y.com),
+    };
     m.check(
         "I_com",
         what,
         r::rel_frobenius_f64(&b.inertia, &expect.tensor, &a.inertia),
-        2.0 * TENSOR,
+        2.0 * bound.tensor,
     );
     for k in 0..3 {
         m.check(
             "moments",
             format_args!("{what}, moment {k}"),
             (a.moments[k] - b.moments[k]).abs() / a.moments[2],
-            2.0 * MOMENT,
+            2.0 * bound.moment,
         );
     }
     m.check(
         "mass",
         what,
         (a.mass - b.mass).abs() / a.mass,
-        2.0 * mass_bound(n),
+        2.0 * bound.mass,
     );
     let scale = a.com_scale().max(b.com_scale());
     let d = (0..3)
         .map(|i| (b.com[i] - expect.com[i]).powi(2))
         .sum::<f64>()
         .sqrt();
-    m.check("com", what, d / scale, 2.0 * com_bound(n) + 2.0 * stress::U);
+    m.check("com", what, d / scale, 2.0 * bound.com + 2.0 * stress::U);
 }
 
 // ---------------------------------------------------------------------------
@@ -238,14 +414,15 @@ fn translating_an_assembly_leaves_its_inertia_about_the_centre_of_mass_unchanged
                 scene.translation_is_exact(*t),
                 "grid positions translate exactly"
             );
+            let moved = scene.translated(*t);
             let a = report(scene, *p);
-            let b = report(&scene.translated(*t), *p);
+            let b = report(&moved, *p);
             let com = std::array::from_fn(|i| a.com[i] + t[i]);
             same_body(
                 m,
                 "translated",
-                &a,
-                &b,
+                [scene, &moved],
+                [&a, &b],
                 Expect {
                     tensor: a.inertia,
                     com,
@@ -266,13 +443,14 @@ fn the_order_of_parts_does_not_matter() {
         CASES,
         (shuffled, precision()),
         |((scene, order), p), m| {
+            let reordered = scene.reordered(order);
             let a = report(scene, *p);
-            let b = report(&scene.reordered(order), *p);
+            let b = report(&reordered, *p);
             same_body(
                 m,
                 "reordered",
-                &a,
-                &b,
+                [scene, &reordered],
+                [&a, &b],
                 Expect {
                     tensor: a.inertia,
                     com: a.com,
@@ -289,14 +467,21 @@ fn a_quarter_turn_permutes_the_tensor_and_keeps_the_moments() {
         CASES,
         (assembly(true), 0usize..3, precision()),
         |(scene, axis, p), m| {
+            let turned = scene.quarter_turn(*axis);
             let a = report(scene, *p);
-            let b = report(&scene.quarter_turn(*axis), *p);
+            let b = report(&turned, *p);
             let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
             let mut com = a.com;
             com[i] = -a.com[j];
             com[j] = a.com[i];
             let tensor = turn_tensor(&a.inertia, *axis);
-            same_body(m, "turned", &a, &b, Expect { tensor, com });
+            same_body(
+                m,
+                "turned",
+                [scene, &turned],
+                [&a, &b],
+                Expect { tensor, com },
+            );
         },
     );
 }
@@ -363,8 +548,8 @@ fn splitting_a_box_in_halves_changes_nothing() {
             same_body(
                 m,
                 "split",
-                &a,
-                &b,
+                [&whole, &split],
+                [&a, &b],
                 Expect {
                     tensor: a.inertia,
                     com: a.com,
@@ -401,7 +586,40 @@ fn random_assemblies_in_any_units_match_the_exact_reference() {
             let rep = report(&scene, *p);
             let what = format!("{} {} {}", length.symbol(), mass.symbol(), p.flag());
             let (_, pr) = check_against_reference(m, &what, &scene, &rep);
-            check_axes(m, &what, &rep, &pr);
+            check_axes(m, &what, &rep, &pr, Bounds::of(&scene).moment);
+        },
+    );
+}
+
+/// Each new shape alone (one to three parts of one kind, in any units and
+/// placement), so that the margins print per shape: the worst error/bound
+/// of `I_com cylinder`, `mass shell`, and so on.
+#[test]
+fn each_shape_alone_matches_the_exact_reference() {
+    let alone = prop::sample::select(Kind::NEW.to_vec()).prop_flat_map(|kind| {
+        (
+            prop::collection::vec(part_of(vec![kind], false), 1..=3),
+            prop::sample::select(vec![Length::M, Length::Mm, Length::In, Length::Km]),
+            prop::sample::select(vec![Mass::Kg, Mass::G, Mass::Lb]),
+        )
+    });
+    property(
+        "each shape",
+        CASES,
+        (alone, precision()),
+        |((parts, length, mass), p), m| {
+            let kind = parts[0].0;
+            let scene = Scene {
+                length: *length,
+                mass: *mass,
+                parts: parts.iter().map(|(_, part)| part.clone()).collect(),
+                about: None,
+            };
+            let rep = report(&scene, *p);
+            let what = format!("{} {} {}", length.symbol(), mass.symbol(), p.flag());
+            let label = format!(" {}", kind.name());
+            let (_, pr) = check_against_reference_as(m, &label, &what, &scene, &rep);
+            check_axes_as(m, &label, &what, &rep, &pr, Bounds::of(&scene).moment);
         },
     );
 }

@@ -11,5 +11,4 @@ mod invariants;
 mod layers;
 mod package;
 mod physics;
-mod reference;
 mod stress;

@@ -1,5 +1,5 @@
 //! Stress tests of massprop's accuracy against the exact reference
-//! (`reference.rs`, issue 4), through the public JSON contract:
+//! (`massprop_support::reference`, support/src/reference.rs, issue 4), through the public JSON contract:
 //! `massprop report FILE --format json --precision MODE`, run in-process.
 //!
 //! Each scene is written as a part file whose numbers are exactly the f64
@@ -21,11 +21,11 @@
 //! - mass and centre of mass: a priori bounds of sums, [`mass_bound`] and
 //!   [`com_bound`].
 
-use crate::reference::{
+use clap::Parser;
+use massprop_support::num_traits::Signed;
+use massprop_support::reference::{
     self as r, Amount, Exact, Length, Mass, Part, Place, Scene, axis_sin, f, fm, rel, rel_frobenius,
 };
-use clap::Parser;
-use num_traits::Signed;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub(crate) const EPS: f64 = f64::EPSILON;
@@ -61,6 +61,115 @@ pub(crate) fn mass_bound(n: usize) -> f64 {
 /// mass's error and one product, the sum (n − 1)u, the division one.
 pub(crate) fn com_bound(n: usize) -> f64 {
     (n as f64 + 14.0) * U
+}
+
+/// Unit roundoffs beyond a box's that one part's own mass (`mass`) and its
+/// own second moment (`tensor`, relative to the part's trace, and
+/// including the mass's) may carry, for shapes whose closed forms take more
+/// operations than a box's m = ρabc (3 roundings) and m a²/12 (3 per
+/// entry), which TENSOR and [`mass_bound`] already budget. Counted for a
+/// stable evaluation of each closed form from exact inputs: the inputs
+/// hold the digits, and each form is well conditioned in them (its
+/// differences R − r and vertex differences are exact or rounded once, and
+/// the rest are sums of positive terms), so only the operations count.
+///
+/// | part | mass | tensor | why |
+/// |---|---|---|---|
+/// | box, plate, rod, point | 0 | 0 | the budget itself |
+/// | cylinder by density | 4 | 4 | π rounded (1), R − r and R + r (2), one product more (1); (R² + r²)/4 rounds as often as a²/12 |
+/// | disk by density | 3 | 3 | the same without the length |
+/// | sphere | 7 by density | 13 more | ⁴⁄₃ and π (2), R − r (1), R² + Rr + r² (3), one product (1); (1 + ρ + … + ρ⁴)/(1 + ρ + ρ²) with ρ = r/R: ρ's rounding moves the ratio by ≤ 1u (ρ f′/f ≤ 1), its powers and sums by ≤ 7u and 3u, the division 1u, and m R²/5 · ratio one product more than m a²/12 |
+/// | triangle by density | 1 + 2/sin θ | 2 more | the area \|e₁ × e₂\|/2 from exact edges: each component a difference of products, 2u of \|e₁\|\|e₂\| in all, i.e. 2u/sin θ of the area for the smallest vertex angle θ, and one rounding more; vertex differences rounded (if inexact) add 2u max\|vᵢ\|/min\|eᵢ\|; the vertices less the centroid round once each |
+/// | given inertia | 0 | 9 | C = tr(I)/2 · E − I: 3 roundings; R C Rᵀ with a full C sums 9 products per entry where a box sums 3: 6 more |
+///
+/// Thin shells, tubes and rings take only a mass; their closed forms round
+/// no more often than the solids'.
+pub(crate) struct Extra {
+    pub mass: f64,
+    pub tensor: f64,
+}
+
+pub(crate) fn extra_ulps(p: &Part) -> Extra {
+    use r::Shape;
+    let density = matches!(p.amount, Amount::Density(_));
+    let by_density = |x: f64| if density { x } else { 0.0 };
+    let (mass, shape) = match p.shape {
+        Shape::Box | Shape::Plate | Shape::Rod | Shape::Point => (0.0, 0.0),
+        Shape::Cylinder => (by_density(4.0), 0.0),
+        Shape::Disk => (by_density(3.0), 0.0),
+        Shape::Sphere => (by_density(7.0), 13.0),
+        Shape::Triangle => {
+            let Place::Vertices(v) = &p.place else {
+                unreachable!("a triangle is placed by its vertices")
+            };
+            (by_density(triangle_area_ulps(v)), 2.0)
+        }
+        Shape::Inertia => (0.0, 9.0),
+    };
+    Extra {
+        mass,
+        tensor: mass + shape,
+    }
+}
+
+/// The area's rounding of a triangle (see [`extra_ulps`]), in u.
+fn triangle_area_ulps(v: &[[f64; 3]; 3]) -> f64 {
+    let diff = |a: usize, b: usize| -> [f64; 3] { std::array::from_fn(|i| v[a][i] - v[b][i]) };
+    let len = |e: [f64; 3]| (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]).sqrt();
+    let edges = [diff(1, 0), diff(2, 1), diff(0, 2)];
+    let c = cross3(edges[0], edges[1]);
+    let twice_area = len(c);
+    // 1/sin of the smallest angle: the largest |a||b| over 2·area.
+    let inv_sin = (0..3)
+        .map(|k| len(edges[k]) * len(edges[(k + 1) % 3]))
+        .fold(0.0, f64::max)
+        / twice_area;
+    let exact = (0..3).all(|k| {
+        let (a, b) = (k, (k + 1) % 3);
+        (0..3).all(|i| r::q(v[b][i] - v[a][i]) == r::q(v[b][i]) - r::q(v[a][i]))
+    });
+    let rounding = if exact {
+        0.0
+    } else {
+        let far = v.iter().map(|p| len(*p)).fold(0.0, f64::max);
+        let short = edges.iter().map(|e| len(*e)).fold(f64::INFINITY, f64::min);
+        2.0 * far / short
+    };
+    1.0 + 2.0 * inv_sin + rounding
+}
+
+/// The bounds of one scene against its exact reference: TENSOR, MOMENT,
+/// [`mass_bound`] and [`com_bound`] plus what its parts add
+/// ([`extra_ulps`], the largest of any part: a relative error δᵢ of each
+/// part's contribution Pᵢ = Cᵢ + mᵢdᵢdᵢᵀ (positive semi-definite, so
+/// ‖Pᵢ‖_F ≤ tr Pᵢ) moves C by at most δ·tr C; I = tr(C)E − C then by
+/// ‖ΔI‖_F ≤ 2‖ΔC‖_F ≤ 2δ tr C = δ tr I ≤ √3 δ ‖I‖_F, and a moment by at
+/// most 2δ tr C ≤ 3δ I_max; masses by δ m, the centre by 2δ of its scale).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Bounds {
+    pub tensor: f64,
+    pub moment: f64,
+    pub mass: f64,
+    pub com: f64,
+}
+
+impl Bounds {
+    pub(crate) fn of(scene: &Scene) -> Bounds {
+        let n = scene.parts.len();
+        let (mass, tensor) = scene
+            .parts
+            .iter()
+            .map(extra_ulps)
+            .fold((0.0f64, 0.0f64), |(m, t), e| {
+                (m.max(e.mass), t.max(e.tensor))
+            });
+        Bounds {
+            tensor: TENSOR + 3f64.sqrt() * tensor * U,
+            moment: MOMENT + 3.0 * tensor * U,
+            mass: mass_bound(n) + mass * U,
+            com: com_bound(n) + 2.0 * mass * U,
+        }
+    }
 }
 
 // ---------------------------------------------------------------------------
@@ -341,9 +450,22 @@ impl Margins {
 }
 
 /// The standard checks of one scene against its reference: tensor, moments,
-/// mass and centre of mass; returns the reference for further checks.
+/// mass and centre of mass, within [`Bounds::of`] the scene; returns the
+/// reference for further checks.
 pub(crate) fn check_against_reference(
     m: &mut Margins,
+    what: &str,
+    scene: &Scene,
+    rep: &Report,
+) -> (Exact, r::Principal) {
+    check_against_reference_as(m, "", what, scene, rep)
+}
+
+/// [`check_against_reference`], each quantity's name followed by `label`
+/// (so that a test can print its margins per shape, say).
+pub(crate) fn check_against_reference_as(
+    m: &mut Margins,
+    label: &str,
     what: &str,
     scene: &Scene,
     rep: &Report,
@@ -351,42 +473,66 @@ pub(crate) fn check_against_reference(
     let exact = r::compose(scene);
     let pr = exact.principal();
     let top = f(&pr.moments[2]);
-    let n = scene.parts.len();
+    let b = Bounds::of(scene);
     m.check(
-        "I_com",
+        &format!("I_com{label}"),
         what,
         rel_frobenius(&rep.inertia, &exact.inertia),
-        TENSOR,
+        b.tensor,
     );
     for k in 0..3 {
         m.check(
-            "moments",
+            &format!("moments{label}"),
             format_args!("{what}, moment {k}"),
             r::err_over(rep.moments[k], &pr.moments[k], top),
-            MOMENT,
+            b.moment,
         );
     }
-    m.check("mass", what, rel(rep.mass, &exact.mass), mass_bound(n));
     m.check(
-        "com",
+        &format!("mass{label}"),
+        what,
+        rel(rep.mass, &exact.mass),
+        b.mass,
+    );
+    m.check(
+        &format!("com{label}"),
         what,
         r::vec_err_over(&rep.com, &exact.com, exact.com_scale()),
-        com_bound(n),
+        b.com,
     );
     (exact, pr)
 }
 
-/// Check the axes of separated moments: sin θ ≤ MOMENT / (gap / I_max).
-pub(crate) fn check_axes(m: &mut Margins, what: &str, rep: &Report, pr: &r::Principal) {
+/// Check the axes of separated moments: sin θ ≤ moment bound / (gap / I_max)
+/// (`moment`: MOMENT, or [`Bounds::of`] the scene's).
+pub(crate) fn check_axes(
+    m: &mut Margins,
+    what: &str,
+    rep: &Report,
+    pr: &r::Principal,
+    moment: f64,
+) {
+    check_axes_as(m, "", what, rep, pr, moment);
+}
+
+/// [`check_axes`], the quantity's name followed by `label`.
+pub(crate) fn check_axes_as(
+    m: &mut Margins,
+    label: &str,
+    what: &str,
+    rep: &Report,
+    pr: &r::Principal,
+    moment: f64,
+) {
     for k in 0..3 {
         if let Some(axis) = &pr.axes[k]
             && !rep.equal.contains(&k)
         {
             m.check(
-                "axes",
+                &format!("axes{label}"),
                 format_args!("{what}, axis {k}"),
                 axis_sin(&rep.axes[k], axis),
-                MOMENT / pr.gap(k),
+                moment / pr.gap(k),
             );
         }
     }
@@ -474,14 +620,116 @@ fn twelve_boxes(rng: &mut Rng) -> Scene {
     )
 }
 
-// ---------------------------------------------------------------------------
-// 1. Translation: 12 boxes moved 10⁰ … 10⁹ part sizes
+/// A given inertia tensor (file mass × length², rows) of a body of mass
+/// `mass` whose principal second moments are m sₖ² along the axes of the
+/// rotation of `q`: C = Q diag(m sₖ²) Qᵀ rounded, and I = tr(C)E − C,
+/// symmetric by construction and valid while every sₖ is well above
+/// √ε of the largest.
+pub(crate) fn given_tensor(mass: f64, s: [f64; 3], q: [f64; 4]) -> [[f64; 3]; 3] {
+    let rot = fm(&r::rotation(&q.map(r::q)));
+    let c: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..3)
+                .map(|k| rot[i][k] * mass * s[k] * s[k] * rot[j][k])
+                .sum()
+        })
+    });
+    let tr = c[0][0] + c[1][1] + c[2][2];
+    let mut out = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in i..3 {
+            out[i][j] = if i == j { tr - c[i][i] } else { -c[i][j] };
+            out[j][i] = out[i][j];
+        }
+    }
+    out
+}
 
-fn translation(precision: Precision) {
-    let mut m = Margins::new(format!("translation {}", precision.flag()));
+/// One part of every shape but box, plate, rod and point, sizes 0.2 to 1,
+/// centres and vertices on the 2⁻²⁰ grid within [−1, 1]³ (translations by
+/// offsets on that grid below 2³² are exact), random orientations, masses
+/// and densities: cylinder, tube, thin tube, disk, annulus, ring, sphere,
+/// hollow sphere, shell, triangle and a given inertia (CAD products).
+fn every_shape(rng: &mut Rng) -> Scene {
+    let mut turn = || Some(r::Rotation::Quaternion(rng.quaternion()));
+    let rotations: Vec<_> = (0..8).map(|_| turn()).collect();
+    let size = |rng: &mut Rng| rng.range(0.2, 1.0);
+    let density = |rng: &mut Rng| Amount::Density(rng.range(500.0, 9000.0));
+    let mass = |rng: &mut Rng| Amount::Mass(rng.range(0.5, 2.0));
+    let (a, b) = (size(rng), size(rng));
+    let mut parts = vec![
+        Part::cylinder(a, None, b, rng.grid_point(), rotations[0], density(rng)),
+        Part::cylinder(
+            a,
+            Some(0.7 * a),
+            b,
+            rng.grid_point(),
+            rotations[1],
+            mass(rng),
+        ),
+        Part::cylinder(b, Some(b), a, rng.grid_point(), rotations[2], mass(rng)),
+        Part::disk(
+            a,
+            None,
+            rng.grid_point(),
+            rotations[3],
+            Amount::Density(rng.range(5.0, 40.0)),
+        ),
+        Part::disk(
+            b,
+            Some(0.25 * b),
+            rng.grid_point(),
+            None,
+            Amount::Density(rng.range(5.0, 40.0)),
+        ),
+        Part::disk(a, Some(a), rng.grid_point(), rotations[4], mass(rng)),
+        Part::sphere(a, None, rng.grid_point(), None, density(rng)),
+        Part::sphere(
+            b,
+            Some(b * (1.0 - 1e-6)),
+            rng.grid_point(),
+            None,
+            density(rng),
+        ),
+        Part::sphere(a, Some(a), rng.grid_point(), None, mass(rng)),
+    ];
+    let at = rng.grid_point();
+    let rot = rng.rotation();
+    let (e0, e1) = (edge(&rot, 0, a), edge(&rot, 1, b));
+    let grid = |x: f64| (x * 1048576.0).round() / 1048576.0;
+    parts.push(Part::triangle(
+        [
+            at,
+            std::array::from_fn(|i| grid(at[i] + e0[i])),
+            std::array::from_fn(|i| grid(at[i] + 0.3 * e0[i] + e1[i])),
+        ],
+        Amount::Density(rng.range(5.0, 40.0)),
+    ));
+    let m = rng.range(0.5, 2.0);
+    let tensor = given_tensor(m, [0.3, 0.5, 0.6], rng.quaternion());
+    let cad = std::array::from_fn(|i| {
+        std::array::from_fn(|j| if i == j { tensor[i][j] } else { -tensor[i][j] })
+    });
+    parts.push(Part::given(
+        m,
+        cad,
+        r::Products::Positive,
+        rng.grid_point(),
+        rotations[5],
+    ));
+    Scene::si(parts)
+}
+
+// ---------------------------------------------------------------------------
+// 1. Translation: 12 boxes, and every other shape, moved 10⁰ … 10⁹ part
+// sizes
+
+fn translation(precision: Precision, name: &str, scene: fn(&mut Rng) -> Scene) {
+    let mut m = Margins::new(format!("translation {name} {}", precision.flag()));
     let mut rng = Rng::new(1);
     for trial in 0..2 {
-        let base = twelve_boxes(&mut rng);
+        let base = scene(&mut rng);
+        let b = Bounds::of(&base);
         let at_origin = report(&base, precision);
         let exact0 = r::compose(&base);
         check_against_reference(
@@ -503,20 +751,20 @@ fn translation(precision: Precision) {
             let rep = report(&moved, precision);
             let (exact, pr) = check_against_reference(&mut m, &what, &moved, &rep);
             assert_eq!(exact.inertia, exact0.inertia, "exact translation");
-            check_axes(&mut m, &what, &rep, &pr);
+            check_axes(&mut m, &what, &rep, &pr, b.moment);
             // The same result as the untranslated body, to the same bound.
             m.check(
                 "I_com vs untranslated",
                 &what,
                 r::rel_frobenius_f64(&rep.inertia, &at_origin.inertia, &at_origin.inertia),
-                TENSOR,
+                b.tensor,
             );
             for i in 0..3 {
                 m.check(
                     "moments vs untranslated",
                     format_args!("{what}, moment {i}"),
                     (rep.moments[i] - at_origin.moments[i]).abs() / at_origin.moments[2],
-                    MOMENT,
+                    b.moment,
                 );
             }
             // About the origin: C + m d dᵀ with |d| = 10ᵏ, a sum of positive
@@ -526,7 +774,7 @@ fn translation(precision: Precision) {
                 "I_ref",
                 &what,
                 rel_frobenius(&rep.inertia_ref, &about),
-                TENSOR,
+                b.tensor,
             );
         }
     }
@@ -535,13 +783,24 @@ fn translation(precision: Precision) {
 
 #[test]
 fn twelve_boxes_translated_up_to_1e9_sizes_keep_their_inertia_standard() {
-    translation(Precision::Standard);
+    translation(Precision::Standard, "boxes", twelve_boxes);
 }
 
 /// Needs `--precision extended`.
 #[test]
 fn twelve_boxes_translated_up_to_1e9_sizes_keep_their_inertia_extended() {
-    translation(Precision::Extended);
+    translation(Precision::Extended, "boxes", twelve_boxes);
+}
+
+#[test]
+fn every_shape_translated_up_to_1e9_sizes_keeps_its_inertia_standard() {
+    translation(Precision::Standard, "every shape", every_shape);
+}
+
+/// Needs `--precision extended`.
+#[test]
+fn every_shape_translated_up_to_1e9_sizes_keeps_its_inertia_extended() {
+    translation(Precision::Extended, "every shape", every_shape);
 }
 
 // ---------------------------------------------------------------------------
@@ -866,7 +1125,7 @@ fn nearly_equal(precision: Precision) {
                 format_args!("{what}: {:?}", rep.equal),
                 rep.equal == flag,
             );
-            check_axes(&mut m, &what, &rep, &pr);
+            check_axes(&mut m, &what, &rep, &pr, MOMENT);
         }
     }
     m.finish();
@@ -935,7 +1194,7 @@ fn mass_ratios(precision: Precision) {
             let what = format!("{kind}, ratio 1e{e}");
             let rep = report(&scene, precision);
             let (_, pr) = check_against_reference(&mut m, &what, &scene, &rep);
-            check_axes(&mut m, &what, &rep, &pr);
+            check_axes(&mut m, &what, &rep, &pr, MOMENT);
         }
     }
     m.finish();
@@ -1143,18 +1402,34 @@ fn rounding_bound(scene: &Scene, exact: &Exact) -> f64 {
     for (p, e) in scene.parts.iter().zip(&exact.parts) {
         let tr = f(&(&e.second_moment[0][0] + &e.second_moment[1][1] + &e.second_moment[2][2]));
         let len = |v: &[f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let turned = |rotation: &Option<r::Rotation>| match rotation {
+            Some(r::Rotation::Quaternion(_)) => 12.0 * U * tr,
+            // None, or a signed permutation: no rounding.
+            _ => 0.0,
+        };
         let (own, size) = match &p.place {
             Place::Center {
-                center, quaternion, ..
-            } => (
-                if quaternion.is_some() { 12.0 } else { 0.0 } * U * tr,
-                len(center),
-            ),
+                center, rotation, ..
+            }
+            | Place::Given {
+                center, rotation, ..
+            } => (turned(rotation), len(center)),
             Place::Edges { corner, edges } => (
                 2.0 * U * tr,
                 len(corner) + edges.iter().map(len).sum::<f64>() / 2.0,
             ),
             Place::FromTo { from, to } => (2.0 * U * tr, (len(from) + len(to)) / 2.0),
+            // Each vertex moves by u|vᵢ|, an edge by up to 2u max|vᵢ|: the
+            // triangle's own C by 2·(2u max|vᵢ| / shortest edge) of itself.
+            Place::Vertices(v) => {
+                let far = v.iter().map(len).fold(0.0, f64::max);
+                let edge = |a: usize, b: usize| len(&std::array::from_fn(|i| v[a][i] - v[b][i]));
+                let short = edge(0, 1).min(edge(1, 2)).min(edge(2, 0));
+                (
+                    4.0 * U * far / short * tr,
+                    v.iter().map(len).sum::<f64>() / 3.0,
+                )
+            }
         };
         let d = r::norm(&std::array::from_fn(|i| &e.center[i] - &exact.com[i]));
         let delta = U * size;
@@ -1183,7 +1458,7 @@ fn rotations(precision: Precision) {
             );
             let t = report(&turned, precision);
             let (exact, pr) = check_against_reference(&mut m, &what, &turned, &t);
-            check_axes(&mut m, &what, &t, &pr);
+            check_axes(&mut m, &what, &t, &pr, MOMENT);
             let permuted = turn_tensor(&rep.inertia, axis);
             assert_eq!(
                 fm(&exact.inertia),
@@ -1226,7 +1501,7 @@ fn rotations(precision: Precision) {
         let what = format!("rotation by quaternion {quat:?}");
         let t = report(&turned, precision);
         let (_, pr) = check_against_reference(&mut m, &what, &turned, &t);
-        check_axes(&mut m, &what, &t, &pr);
+        check_axes(&mut m, &what, &t, &pr, MOMENT);
         // Placements of the turned scene (unrotated boxes gain a rounded
         // quaternion), masses and offsets of the original.
         let rounding = rounding_bound(&turned, &exact0);

@@ -1,17 +1,23 @@
-//! An exact reference composer, for the accuracy tests only (issue 4).
+//! An exact reference composer, for the accuracy tests, the benchmark and
+//! the accuracy example only (issue 4).
 //!
 //! Every finite f64 is a dyadic rational, so a scene's inputs are taken
 //! *exactly*, and every unit factor is an exact fraction (0.0254 m, 0.45359237
 //! kg, …). The "true answer" of a scene is the exact result for those f64
 //! inputs: mass, centre of mass, C = ∫ρρᵀ dm about it and the inertia tensor
 //! I = tr(C)·E − C, all as `BigRational`s with no rounding at all. The only
-//! inexact steps are square roots (measures of parts placed by edges with a
-//! density: relative 2⁻²⁰⁰) and eigenvalues (relative 2⁻¹⁴¹, ≈ 43 digits).
+//! inexact steps are square roots (measures of parts placed by edges, and
+//! of triangles, with a density: relative 2⁻²⁰⁰), π (a 100-digit fraction,
+//! for cylinders, disks and spheres with a density: relative < 1e-100) and
+//! eigenvalues (relative 2⁻¹⁴¹, ≈ 43 digits).
 //!
-//! The derivation is independent of massprop's code: rotations come from the
-//! quaternion sandwich product q v q̄ / |q|², shapes from the textbook
-//! segment ∫x² dm = m a²/12 over the edge vectors, and composition sums
-//! exact first and second moments. Eigenvalues come from the exact
+//! Every shape of massprop is here: box, plate, rod, point, cylinder (and
+//! tube), disk (and annulus), sphere (hollow, and thin shell), triangle and
+//! a given inertia tensor. The derivation is independent of massprop's
+//! code: rotations come from the quaternion sandwich product q v q̄ / |q|²
+//! (or an exactly orthonormal matrix), shapes from closed forms derived
+//! from their definitions in the comments of [`centered_form`] and
+//! [`triangle_form`], and composition sums exact first and second moments. Eigenvalues come from the exact
 //! characteristic polynomial (see [`CharPoly`]), never from an iterative
 //! solver.
 //!
@@ -265,6 +271,16 @@ pub enum Shape {
     Plate,
     Rod,
     Point,
+    /// Solid cylinder, or with an inner radius a tube (thin at r = R).
+    Cylinder,
+    /// Thin disk, or with an inner radius an annulus (a ring at r = R).
+    Disk,
+    /// Solid sphere, or with an inner radius hollow (a shell at r = R).
+    Sphere,
+    /// Thin triangular plate given by its vertices.
+    Triangle,
+    /// A given mass, centre and inertia tensor.
+    Inertia,
 }
 
 impl Shape {
@@ -274,25 +290,30 @@ impl Shape {
             Shape::Plate => "plate",
             Shape::Rod => "rod",
             Shape::Point => "point",
+            Shape::Cylinder => "cylinder",
+            Shape::Disk => "disk",
+            Shape::Sphere => "sphere",
+            Shape::Triangle => "triangle",
+            Shape::Inertia => "inertia",
         }
     }
 
     fn density_key(self) -> &'static str {
         match self {
-            Shape::Box => "density",
-            Shape::Plate => "areal_density",
+            Shape::Box | Shape::Cylinder | Shape::Sphere => "density",
+            Shape::Plate | Shape::Disk | Shape::Triangle => "areal_density",
             Shape::Rod => "linear_density",
-            Shape::Point => panic!("a point takes only a mass"),
+            Shape::Point | Shape::Inertia => panic!("a {} takes only a mass", self.name()),
         }
     }
 
     /// Volume, area, length: the power of length a density is per.
     fn dim(self) -> i32 {
         match self {
-            Shape::Box => 3,
-            Shape::Plate => 2,
+            Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
+            Shape::Plate | Shape::Disk | Shape::Triangle => 2,
             Shape::Rod => 1,
-            Shape::Point => 0,
+            Shape::Point | Shape::Inertia => 0,
         }
     }
 }
@@ -304,15 +325,39 @@ pub enum Amount {
     Density(f64),
 }
 
+/// A part's `rotation`, in one of two of massprop's forms.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Rotation {
+    /// `{ quaternion = [w, x, y, z] }`, taken exactly as written (any
+    /// non-zero length: R = q v q̄ / |q|² is a rotation for every q).
+    Quaternion([f64; 4]),
+    /// `{ matrix = [[..], [..], [..]] }` by rows, columns the local axes.
+    /// The reference takes only matrices that are exactly rotations (in
+    /// practice signed permutations: quarter turns), so the part file and
+    /// the reference describe the same body to the last bit.
+    Matrix([[f64; 3]; 3]),
+}
+
+/// The sign convention of a given inertia's products (`products = ..`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Products {
+    /// Off-diagonals −∫xy dm: the default, the key left out.
+    Tensor,
+    /// `products = "positive"`: off-diagonals +∫xy dm, as CAD reports them.
+    Positive,
+}
+
 /// Where a part sits, in file units.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Place {
     /// `size` (box [a, b, c], plate [a, b], rod [L] written as `length`,
-    /// point []), `center`, optional `rotation = { quaternion = [w, x, y, z] }`.
+    /// point []; cylinder [R, L] or [R, L, r], disk and sphere [R] or
+    /// [R, r], written as `radius`, `length` and `inner_radius`), `center`,
+    /// optional `rotation`.
     Center {
         size: Vec<f64>,
         center: [f64; 3],
-        quaternion: Option<[f64; 4]>,
+        rotation: Option<Rotation>,
     },
     /// Box or plate: `corner` and 3 or 2 perpendicular `edges`.
     Edges {
@@ -321,6 +366,17 @@ pub enum Place {
     },
     /// Rod: `from` and `to`.
     FromTo { from: [f64; 3], to: [f64; 3] },
+    /// Triangle: its three `vertices`.
+    Vertices([[f64; 3]; 3]),
+    /// Given inertia: `inertia` (rows, file mass × length², about the
+    /// centre in local axes), its `products` convention, `center` and an
+    /// optional `rotation`.
+    Given {
+        inertia: [[f64; 3]; 3],
+        products: Products,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+    },
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -331,21 +387,32 @@ pub struct Part {
 }
 
 impl Part {
+    fn centered(
+        shape: Shape,
+        size: Vec<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        Part {
+            shape,
+            amount,
+            place: Place::Center {
+                size,
+                center,
+                rotation,
+            },
+        }
+    }
+
     pub fn cuboid(
         size: [f64; 3],
         center: [f64; 3],
         quaternion: Option<[f64; 4]>,
         amount: Amount,
     ) -> Part {
-        Part {
-            shape: Shape::Box,
-            amount,
-            place: Place::Center {
-                size: size.to_vec(),
-                center,
-                quaternion,
-            },
-        }
+        let rotation = quaternion.map(Rotation::Quaternion);
+        Part::centered(Shape::Box, size.to_vec(), center, rotation, amount)
     }
 
     pub fn plate(
@@ -354,15 +421,8 @@ impl Part {
         quaternion: Option<[f64; 4]>,
         amount: Amount,
     ) -> Part {
-        Part {
-            shape: Shape::Plate,
-            amount,
-            place: Place::Center {
-                size: size.to_vec(),
-                center,
-                quaternion,
-            },
-        }
+        let rotation = quaternion.map(Rotation::Quaternion);
+        Part::centered(Shape::Plate, size.to_vec(), center, rotation, amount)
     }
 
     pub fn rod(
@@ -371,25 +431,82 @@ impl Part {
         quaternion: Option<[f64; 4]>,
         amount: Amount,
     ) -> Part {
-        Part {
-            shape: Shape::Rod,
-            amount,
-            place: Place::Center {
-                size: vec![length],
-                center,
-                quaternion,
-            },
-        }
+        let rotation = quaternion.map(Rotation::Quaternion);
+        Part::centered(Shape::Rod, vec![length], center, rotation, amount)
     }
 
     pub fn point(mass: f64, center: [f64; 3]) -> Part {
+        Part::centered(Shape::Point, vec![], center, None, Amount::Mass(mass))
+    }
+
+    /// A cylinder of `radius` and `length` along local z; with `inner` a
+    /// tube (`inner_radius`; equal to the radius a thin tube, mass only).
+    pub fn cylinder(
+        radius: f64,
+        inner: Option<f64>,
+        length: f64,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius, length];
+        size.extend(inner);
+        Part::centered(Shape::Cylinder, size, center, rotation, amount)
+    }
+
+    /// A disk in the local x–y plane; with `inner` an annulus (a ring at
+    /// `inner` = `radius`, mass only).
+    pub fn disk(
+        radius: f64,
+        inner: Option<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius];
+        size.extend(inner);
+        Part::centered(Shape::Disk, size, center, rotation, amount)
+    }
+
+    /// A sphere; with `inner` hollow (a thin shell at `inner` = `radius`,
+    /// mass only).
+    pub fn sphere(
+        radius: f64,
+        inner: Option<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius];
+        size.extend(inner);
+        Part::centered(Shape::Sphere, size, center, rotation, amount)
+    }
+
+    pub fn triangle(vertices: [[f64; 3]; 3], amount: Amount) -> Part {
         Part {
-            shape: Shape::Point,
+            shape: Shape::Triangle,
+            amount,
+            place: Place::Vertices(vertices),
+        }
+    }
+
+    /// A given inertia tensor (file mass × length², about `center` in the
+    /// part's local axes) of a part of mass `mass`.
+    pub fn given(
+        mass: f64,
+        inertia: [[f64; 3]; 3],
+        products: Products,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+    ) -> Part {
+        Part {
+            shape: Shape::Inertia,
             amount: Amount::Mass(mass),
-            place: Place::Center {
-                size: vec![],
+            place: Place::Given {
+                inertia,
+                products,
                 center,
-                quaternion: None,
+                rotation,
             },
         }
     }
@@ -423,6 +540,16 @@ impl Part {
             place: Place::FromTo { from, to },
         }
     }
+
+    /// The same part with another rotation (parts placed by `center`, and
+    /// given inertias, only).
+    pub fn with_rotation(mut self, rotation: Option<Rotation>) -> Part {
+        match &mut self.place {
+            Place::Center { rotation: r, .. } | Place::Given { rotation: r, .. } => *r = rotation,
+            _ => panic!("only parts placed by `center` take a rotation"),
+        }
+        self
+    }
 }
 
 /// A part file: units, parts, and an optional reference point (`about`).
@@ -445,14 +572,15 @@ impl Scene {
         }
     }
 
-    /// Every position (centre, corner, rod end, reference point) mapped by
-    /// `point` and every direction (edge) by `dir`; canonical rotations by
-    /// `quat`. Sizes, masses and densities are unchanged.
+    /// Every position (centre, corner, rod end, vertex, reference point)
+    /// mapped by `point` and every direction (edge) by `dir`; rotations of
+    /// parts placed by `center` by `rot`. Sizes, given tensors, masses and
+    /// densities are unchanged.
     pub fn map(
         &self,
         point: impl Fn([f64; 3]) -> [f64; 3],
         dir: impl Fn([f64; 3]) -> [f64; 3],
-        quat: impl Fn(Option<[f64; 4]>, &Part) -> Option<[f64; 4]>,
+        rot: impl Fn(Option<Rotation>, &Part) -> Option<Rotation>,
     ) -> Scene {
         let parts = self
             .parts
@@ -462,11 +590,11 @@ impl Scene {
                     Place::Center {
                         size,
                         center,
-                        quaternion,
+                        rotation,
                     } => Place::Center {
                         size: size.clone(),
                         center: point(*center),
-                        quaternion: quat(*quaternion, p),
+                        rotation: rot(*rotation, p),
                     },
                     Place::Edges { corner, edges } => Place::Edges {
                         corner: point(*corner),
@@ -475,6 +603,18 @@ impl Scene {
                     Place::FromTo { from, to } => Place::FromTo {
                         from: point(*from),
                         to: point(*to),
+                    },
+                    Place::Vertices(v) => Place::Vertices(v.map(&point)),
+                    Place::Given {
+                        inertia,
+                        products,
+                        center,
+                        rotation,
+                    } => Place::Given {
+                        inertia: *inertia,
+                        products: *products,
+                        center: point(*center),
+                        rotation: rot(*rotation, p),
                     },
                 };
                 Part { place, ..p.clone() }
@@ -513,9 +653,11 @@ impl Scene {
     }
 
     /// The scene turned a quarter turn about file axis `axis` (0, 1, 2),
-    /// exactly: (x, y, z) → (x, −z, y) about x, and so on. Parts placed by
-    /// `center` with a rotation cannot be turned exactly (the composed
-    /// quaternion rounds) and are refused; unrotated boxes swap sizes.
+    /// exactly: (x, y, z) → (x, −z, y) about x, and so on. Unrotated boxes
+    /// swap sizes; every other part placed by `center` (or a given inertia)
+    /// gains the turn as a `matrix` rotation, P·R, a signed permutation when
+    /// R is one (or none). Parts rotated by a quaternion cannot be turned
+    /// exactly (the composed quaternion rounds) and are refused.
     pub fn quarter_turn(&self, axis: usize) -> Scene {
         let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
         let turn = move |p: [f64; 3]| {
@@ -524,15 +666,32 @@ impl Scene {
             r[j] = p[i];
             r
         };
-        let mut out = self.map(turn, turn, |q, part| {
-            assert!(
-                q.is_none() && part.shape != Shape::Plate,
-                "quarter_turn: canonical rotated parts and plates cannot turn exactly"
-            );
-            None
+        let mut out = self.map(turn, turn, |rot, part| {
+            let m = match (part.shape, rot) {
+                (Shape::Box | Shape::Point, None) => return None,
+                (_, Some(Rotation::Quaternion(_))) => {
+                    panic!("quarter_turn: parts rotated by a quaternion cannot turn exactly")
+                }
+                (_, Some(Rotation::Matrix(m))) => m,
+                (_, None) => [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+            };
+            // P·R turns each column (local axis) of R: exact, as P only
+            // moves entries and flips signs.
+            let cols: [[f64; 3]; 3] = std::array::from_fn(|k| turn([m[0][k], m[1][k], m[2][k]]));
+            Some(Rotation::Matrix(std::array::from_fn(|r| {
+                std::array::from_fn(|k| cols[k][r])
+            })))
         });
         for p in &mut out.parts {
-            if let (Shape::Box, Place::Center { size, .. }) = (p.shape, &mut p.place) {
+            if let (
+                Shape::Box,
+                Place::Center {
+                    size,
+                    rotation: None,
+                    ..
+                },
+            ) = (p.shape, &mut p.place)
+            {
                 size.swap(i, j);
             }
         }
@@ -549,12 +708,18 @@ impl Scene {
         let rot = rotation(&rq);
         let turn = |p: [f64; 3]| fv(&mvec(&rot, &qv(p)));
         let norm = r.iter().map(|x| (x * x) as f64).sum::<f64>().sqrt();
-        self.map(turn, turn, |quat, part| {
+        self.map(turn, turn, |rot, part| {
             // An unrotated part gains the rotation itself; a point none.
             (part.shape != Shape::Point).then(|| {
-                let qq = quat.unwrap_or([1.0, 0.0, 0.0, 0.0]);
+                let qq = match rot {
+                    None => [1.0, 0.0, 0.0, 0.0],
+                    Some(Rotation::Quaternion(qq)) => qq,
+                    Some(Rotation::Matrix(_)) => {
+                        panic!("rotated: a matrix rotation would not stay exactly orthonormal")
+                    }
+                };
                 let prod = qmul(&rq, &qq.map(q));
-                std::array::from_fn(|k| f(&prod[k]) / norm)
+                Rotation::Quaternion(std::array::from_fn(|k| f(&prod[k]) / norm))
             })
         })
     }
@@ -589,11 +754,11 @@ impl Scene {
                     Place::Center {
                         size,
                         center,
-                        quaternion,
+                        rotation,
                     } => Place::Center {
                         size: size.iter().map(|&s| len(s)).collect(),
                         center: pos(*center),
-                        quaternion: *quaternion,
+                        rotation: *rotation,
                     },
                     Place::Edges { corner, edges } => Place::Edges {
                         corner: pos(*corner),
@@ -602,6 +767,19 @@ impl Scene {
                     Place::FromTo { from, to } => Place::FromTo {
                         from: pos(*from),
                         to: pos(*to),
+                    },
+                    Place::Vertices(v) => Place::Vertices(v.map(pos)),
+                    // kg·m² → (mass unit)·(length unit)²
+                    Place::Given {
+                        inertia,
+                        products,
+                        center,
+                        rotation,
+                    } => Place::Given {
+                        inertia: inertia.map(|row| row.map(|x| f(&(q(x) / (&m * &l * &l))))),
+                        products: *products,
+                        center: pos(*center),
+                        rotation: *rotation,
                     },
                 };
                 Part {
@@ -660,68 +838,270 @@ fn spanned(mass: &Q, edges: &[V3]) -> M3 {
     })
 }
 
+/// π to 100 decimal places: |PI − π| < 10⁻¹⁰⁰, a relative error 84 orders
+/// of magnitude below f64's unit roundoff (2⁻⁵³ ≈ 1.1e-16), so a mass with
+/// π in it (a cylinder, disk or sphere by density) is "exact" far beyond
+/// anything a test resolves. The digits are checked against Machin's
+/// formula in the tests below.
+pub fn pi() -> Q {
+    const DIGITS: &str = "31415926535897932384626433832795028841971693993751\
+                          05820974944592307816406286208998628034825342117067\
+                          9";
+    Q::new(
+        DIGITS.parse::<BigInt>().expect("decimal digits"),
+        BigInt::from(10).pow(100),
+    )
+}
+
+fn identity() -> M3 {
+    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { Q::one() } else { Q::zero() }))
+}
+
+/// R C Rᵀ: a second moment in local axes seen in the file's axes (the
+/// columns of R are the local axes, a local point p lies at center + R p).
+fn turned(r: &M3, c: &M3) -> M3 {
+    mmul(&mmul(r, c), &transpose(r))
+}
+
+fn diag_of(d: [Q; 3]) -> M3 {
+    let mut m = zero_m();
+    for (k, x) in d.into_iter().enumerate() {
+        m[k][k] = x;
+    }
+    m
+}
+
+/// A rotation's matrix, exactly: the quaternion's sandwich product, or the
+/// given matrix, which must be exactly a rotation (RᵀR = E, det R = +1).
+pub fn rotation_matrix(rot: Option<&Rotation>) -> M3 {
+    match rot {
+        None => identity(),
+        Some(Rotation::Quaternion(qq)) => rotation(&qq.map(q)),
+        Some(Rotation::Matrix(m)) => {
+            let r = m.map(qv);
+            assert_eq!(
+                mmul(&transpose(&r), &r),
+                identity(),
+                "the reference takes only matrices that are exactly orthonormal"
+            );
+            assert_eq!(dot(&r[0], &cross(&r[1], &r[2])), Q::one(), "det R = +1");
+            r
+        }
+    }
+}
+
+/// A shape placed by `size`, per unit mass, in its local axes: the
+/// diagonal of ∫xxᵀ dm / m and the measure (volume, area or length) that a
+/// density multiplies; `None` for a thin shell, tube or ring (and a point),
+/// which has no measure and takes only a mass.
+///
+/// The closed forms, derived here from the definitions (not taken from
+/// massprop):
+///
+/// - box, plate, rod: a uniform segment of length a, x uniform on
+///   [−a/2, a/2], has ∫x² dm / m = (1/a)∫x² dx = a²/12, independently per
+///   edge.
+/// - cylinder of radius R, bore r, length L (along z): the cross-section is
+///   the annulus r ≤ ρ ≤ R, and z is uniform on [−L/2, L/2] independently
+///   (z²: L²/12). Over the annulus, with x = ρ cos θ,
+///   ∫x² dA = ∫∫ ρ² cos²θ ρ dρ dθ = π (R⁴ − r⁴)/4 and A = π (R² − r²), so
+///   ∫x² dm / m = (R⁴ − r⁴)/(4 (R² − r²)) = (R² + r²)/4, the same for y;
+///   the factored form holds at r = R too, a thin tube (R²/2 = R²/4 + R²/4:
+///   all its mass at distance R from the axis, ∫(x² + y²) dm = m R²).
+///   Volume π (R² − r²) L.
+/// - disk and annulus: the cylinder's cross-section alone, L = 0; area
+///   π (R² − r²).
+/// - sphere of radius R, cavity r: by symmetry ∫x² dm = ⅓∫|p|² dm, and in
+///   shells of radius s, ∫|p|² dV = ∫ s² 4π s² ds = 4π (R⁵ − r⁵)/5 with
+///   V = 4π (R³ − r³)/3, so ∫x² dm / m = (R⁵ − r⁵)/(5 (R³ − r³))
+///   = (R⁴ + R³r + R²r² + Rr³ + r⁴)/(5 (R² + Rr + r²)) after dividing both
+///   differences by R − r; the second form is exact at r = R as well, the
+///   thin shell (5R⁴/(15R²) = R²/3, i.e. I = ⅔ m R²). Solid: R²/5
+///   (I = ⅖ m R²).
+fn centered_form(shape: Shape, size: &[Q]) -> ([Q; 3], Option<Q>) {
+    let twelfth = |a: &Q| a * a / int(12);
+    // The inner radius, 0 when not given.
+    let inner = |k: usize| size.get(k).cloned().unwrap_or_else(Q::zero);
+    match shape {
+        Shape::Box => {
+            let [a, b, c] = [&size[0], &size[1], &size[2]];
+            ([twelfth(a), twelfth(b), twelfth(c)], Some(a * b * c))
+        }
+        Shape::Plate => {
+            let [a, b] = [&size[0], &size[1]];
+            ([twelfth(a), twelfth(b), Q::zero()], Some(a * b))
+        }
+        Shape::Rod => (
+            [Q::zero(), Q::zero(), twelfth(&size[0])],
+            Some(size[0].clone()),
+        ),
+        Shape::Point => (std::array::from_fn(|_| Q::zero()), None),
+        Shape::Cylinder | Shape::Disk => {
+            let big = &size[0];
+            let (len, r) = if shape == Shape::Cylinder {
+                (size[1].clone(), inner(2))
+            } else {
+                (Q::zero(), inner(1))
+            };
+            let across = (big * big + &r * &r) / int(4);
+            let area = pi() * (big * big - &r * &r);
+            let measure = if shape == Shape::Cylinder {
+                area * &len
+            } else {
+                area
+            };
+            (
+                [across.clone(), across, twelfth(&len)],
+                (!measure.is_zero()).then_some(measure),
+            )
+        }
+        Shape::Sphere => {
+            let (big, r) = (&size[0], inner(1));
+            let num = pow(big, 4)
+                + pow(big, 3) * &r
+                + pow(big, 2) * pow(&r, 2)
+                + big * pow(&r, 3)
+                + pow(&r, 4);
+            let den = int(5) * (big * big + big * &r + &r * &r);
+            let each = num / den;
+            let volume = int(4) * pi() * (pow(big, 3) - pow(&r, 3)) / int(3);
+            (
+                std::array::from_fn(|_| each.clone()),
+                (!volume.is_zero()).then_some(volume),
+            )
+        }
+        Shape::Triangle | Shape::Inertia => {
+            panic!("a {} is not placed by size", shape.name())
+        }
+    }
+}
+
+/// A thin triangle with vertices v₀, v₁, v₂: its centroid g, ∫ddᵀ dm / m
+/// about it, and its area.
+///
+/// A uniform point of the triangle is p = Σ λᵢvᵢ with (λ₀, λ₁, λ₂) uniform
+/// on the simplex (Dirichlet(1, 1, 1)), whose moments are E[λᵢ] = 1/3,
+/// E[λᵢ²] = 1/6 and E[λᵢλⱼ] = 1/12 (i ≠ j) (E[λ₀²] = ∫₀¹ t² 2(1 − t) dt).
+/// With dᵢ = vᵢ − g, so that Σ dᵢ = 0 and p − g = Σ λᵢdᵢ:
+/// E[(p − g)(p − g)ᵀ] = Σᵢⱼ E[λᵢλⱼ] dᵢdⱼᵀ
+///   = (1/12)(Σᵢ dᵢdᵢᵀ + Σᵢⱼ dᵢdⱼᵀ) = (1/12) Σᵢ dᵢdᵢᵀ,
+/// since Σᵢⱼ dᵢdⱼᵀ = (Σ dᵢ)(Σ dⱼ)ᵀ = 0. The area is |(v₁ − v₀) × (v₂ − v₀)|/2,
+/// a square root of a rational (to relative 2⁻²⁰⁰).
+fn triangle_form(v: &[V3; 3]) -> (V3, M3, Q) {
+    let g = scale(&add(&add(&v[0], &v[1]), &v[2]), &frac(1, 3));
+    let c = v.iter().fold(zero_m(), |acc, vi| {
+        let d = sub(vi, &g);
+        madd(&acc, &outer(&d, &d))
+    });
+    let n = cross(&sub(&v[1], &v[0]), &sub(&v[2], &v[0]));
+    let area = sqrt(&dot(&n, &n)) / int(2);
+    (g, mscale(&c, &frac(1, 12)), area)
+}
+
 /// One part reduced to SI, exactly.
 pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
     let l = length.si();
     let mu = mass_unit.si();
     let pos = |p: &[f64; 3]| scale(&qv(*p), &l);
-    // The part's centroid and spanning edges, SI.
-    let (center, edges): (V3, Vec<V3>) = match &part.place {
+    // The measure (volume, area, length) a density multiplies, in SI.
+    let by_mass = |measure: Option<Q>| -> Q {
+        match part.amount {
+            Amount::Mass(m) => q(m) * &mu,
+            Amount::Density(rho) => {
+                let measure = measure.unwrap_or_else(|| {
+                    panic!("a {} of no volume takes only a mass", part.shape.name())
+                });
+                q(rho) * &mu / pow(&l, part.shape.dim()) * measure
+            }
+        }
+    };
+    match &part.place {
         Place::Center {
             size,
             center,
-            quaternion,
+            rotation,
         } => {
-            let r = match quaternion {
-                Some(qq) => rotation(&qq.map(q)),
-                None => rotation(&[int(1), int(0), int(0), int(0)]),
+            let r = rotation_matrix(rotation.as_ref());
+            let size: Vec<Q> = size.iter().map(|&s| q(s) * &l).collect();
+            let (per_mass, measure) = centered_form(part.shape, &size);
+            let mass = by_mass(measure);
+            ExactPart {
+                second_moment: mscale(&turned(&r, &diag_of(per_mass)), &mass),
+                mass,
+                center: pos(center),
+            }
+        }
+        Place::Edges { .. } | Place::FromTo { .. } => {
+            // The part's centroid and spanning edges, SI.
+            let (center, edges): (V3, Vec<V3>) = match &part.place {
+                Place::Edges { corner, edges } => {
+                    let e: Vec<V3> = edges.iter().map(&pos).collect();
+                    let half = e
+                        .iter()
+                        .fold(zero_v(), |acc, x| add(&acc, &scale(x, &frac(1, 2))));
+                    (add(&pos(corner), &half), e)
+                }
+                Place::FromTo { from, to } => {
+                    let (a, b) = (pos(from), pos(to));
+                    let e = sub(&b, &a);
+                    (scale(&add(&a, &b), &frac(1, 2)), vec![e])
+                }
+                _ => unreachable!("matched above"),
             };
-            let column = |k: usize| -> V3 { std::array::from_fn(|i| r[i][k].clone()) };
-            // Local axes carrying the sizes: box x, y, z; plate x, y; rod z.
-            let axes: &[usize] = match part.shape {
-                Shape::Box => &[0, 1, 2],
-                Shape::Plate => &[0, 1],
-                Shape::Rod => &[2],
-                Shape::Point => &[],
-            };
-            assert_eq!(size.len(), axes.len(), "size entries for the shape");
-            let edges = axes
-                .iter()
-                .zip(size)
-                .map(|(&k, &s)| scale(&column(k), &(q(s) * &l)))
-                .collect();
-            (pos(center), edges)
-        }
-        Place::Edges { corner, edges } => {
-            let e: Vec<V3> = edges.iter().map(&pos).collect();
-            let half = e
-                .iter()
-                .fold(zero_v(), |acc, x| add(&acc, &scale(x, &frac(1, 2))));
-            (add(&pos(corner), &half), e)
-        }
-        Place::FromTo { from, to } => {
-            let (a, b) = (pos(from), pos(to));
-            let e = sub(&b, &a);
-            (scale(&add(&a, &b), &frac(1, 2)), vec![e])
-        }
-    };
-    let mass = match part.amount {
-        Amount::Mass(m) => q(m) * &mu,
-        Amount::Density(rho) => {
-            let rho = q(rho) * &mu / pow(&l, part.shape.dim());
             // Volume, area or length: the product of the edge lengths
-            // (edges are perpendicular), exact for `size`, else a square root.
-            let measure = match &part.place {
-                Place::Center { size, .. } => size.iter().map(|&s| q(s) * &l).product(),
-                _ => sqrt(&edges.iter().map(|e| dot(e, e)).product()),
-            };
-            rho * measure
+            // (edges are perpendicular), a square root of a rational.
+            let mass = by_mass(Some(sqrt(&edges.iter().map(|e| dot(e, e)).product())));
+            ExactPart {
+                second_moment: spanned(&mass, &edges),
+                mass,
+                center,
+            }
         }
-    };
-    ExactPart {
-        second_moment: spanned(&mass, &edges),
-        mass,
-        center,
+        Place::Vertices(v) => {
+            let (center, per_mass, area) = triangle_form(&v.map(|p| pos(&p)));
+            let mass = by_mass(Some(area));
+            ExactPart {
+                second_moment: mscale(&per_mass, &mass),
+                mass,
+                center,
+            }
+        }
+        Place::Given {
+            inertia,
+            products,
+            center,
+            rotation,
+        } => {
+            // The tensor in SI and the tensor convention (off-diagonals
+            // −∫xy dm), symmetrised as massprop documents.
+            let unit = &mu * &l * &l;
+            let sign = match products {
+                Products::Tensor => int(1),
+                Products::Positive => int(-1),
+            };
+            let i: M3 = std::array::from_fn(|a| {
+                std::array::from_fn(|b| {
+                    let x = (q(inertia[a][b]) + q(inertia[b][a])) / int(2) * &unit;
+                    if a == b { x } else { x * &sign }
+                })
+            });
+            // I = tr(C)·E − C, so tr I = 2 tr C and C = (tr I / 2)·E − I.
+            let half = (&i[0][0] + &i[1][1] + &i[2][2]) / int(2);
+            let c: M3 = std::array::from_fn(|a| {
+                std::array::from_fn(|b| {
+                    if a == b {
+                        &half - &i[a][b]
+                    } else {
+                        -i[a][b].clone()
+                    }
+                })
+            });
+            ExactPart {
+                second_moment: turned(&rotation_matrix(rotation.as_ref()), &c),
+                mass: by_mass(None),
+                center: pos(center),
+            }
+        }
     }
 }
 
@@ -1127,10 +1507,16 @@ pub fn rel_vec(a: &[f64; 3], b: &V3) -> f64 {
     ratio_sqrt(&dot(&d, &d), &dot(b, b))
 }
 
-/// |a − b| / scale for vectors.
+/// |a − b| / scale for vectors; 0 when a = b (also for a zero scale: a
+/// body whose parts all sit at the origin).
 pub fn vec_err_over(a: &[f64; 3], b: &V3, scale: f64) -> f64 {
     let d = sub(&qv(*a), b);
-    f(&dot(&d, &d)).sqrt() / scale
+    let d = dot(&d, &d);
+    if d.is_zero() {
+        0.0
+    } else {
+        f(&d).sqrt() / scale
+    }
 }
 
 /// sin of the angle between the lines of `a` (computed) and `b` (exact, any
@@ -1161,6 +1547,24 @@ fn array(v: &[f64]) -> String {
     format!("[{}]", items.join(", "))
 }
 
+/// Three rows: `[[..], [..], [..]]`.
+fn matrix(m: &[[f64; 3]; 3]) -> String {
+    let rows: Vec<String> = m.iter().map(|r| array(r)).collect();
+    format!("[{}]", rows.join(", "))
+}
+
+fn write_rotation(s: &mut String, rotation: Option<&Rotation>) {
+    match rotation {
+        None => {}
+        Some(Rotation::Quaternion(qq)) => {
+            writeln!(s, "rotation = {{ quaternion = {} }}", array(qq)).unwrap()
+        }
+        Some(Rotation::Matrix(m)) => {
+            writeln!(s, "rotation = {{ matrix = {} }}", matrix(m)).unwrap()
+        }
+    }
+}
+
 /// The scene as a part file.
 pub fn to_toml(scene: &Scene) -> String {
     let mut s = String::new();
@@ -1181,17 +1585,36 @@ pub fn to_toml(scene: &Scene) -> String {
             Place::Center {
                 size,
                 center,
-                quaternion,
+                rotation,
             } => {
                 match p.shape {
                     Shape::Box | Shape::Plate => writeln!(s, "size = {}", array(size)).unwrap(),
                     Shape::Rod => writeln!(s, "length = {}", number(size[0])).unwrap(),
                     Shape::Point => {}
+                    Shape::Cylinder => {
+                        writeln!(
+                            s,
+                            "radius = {}\nlength = {}",
+                            number(size[0]),
+                            number(size[1])
+                        )
+                        .unwrap();
+                        if let Some(r) = size.get(2) {
+                            writeln!(s, "inner_radius = {}", number(*r)).unwrap();
+                        }
+                    }
+                    Shape::Disk | Shape::Sphere => {
+                        writeln!(s, "radius = {}", number(size[0])).unwrap();
+                        if let Some(r) = size.get(1) {
+                            writeln!(s, "inner_radius = {}", number(*r)).unwrap();
+                        }
+                    }
+                    Shape::Triangle | Shape::Inertia => {
+                        panic!("a {} is not placed by size", p.shape.name())
+                    }
                 }
                 writeln!(s, "center = {}", array(center)).unwrap();
-                if let Some(qq) = quaternion {
-                    writeln!(s, "rotation = {{ quaternion = {} }}", array(qq)).unwrap();
-                }
+                write_rotation(&mut s, rotation.as_ref());
             }
             Place::Edges { corner, edges } => {
                 let e: Vec<String> = edges.iter().map(|e| array(e)).collect();
@@ -1199,6 +1622,22 @@ pub fn to_toml(scene: &Scene) -> String {
             }
             Place::FromTo { from, to } => {
                 writeln!(s, "from = {}\nto = {}", array(from), array(to)).unwrap();
+            }
+            Place::Vertices(v) => {
+                writeln!(s, "vertices = {}", matrix(v)).unwrap();
+            }
+            Place::Given {
+                inertia,
+                products,
+                center,
+                rotation,
+            } => {
+                writeln!(s, "inertia = {}", matrix(inertia)).unwrap();
+                if *products == Products::Positive {
+                    writeln!(s, "products = \"positive\"").unwrap();
+                }
+                writeln!(s, "center = {}", array(center)).unwrap();
+                write_rotation(&mut s, rotation.as_ref());
             }
         }
     }
@@ -1518,12 +1957,16 @@ mod tests {
             let Place::Center {
                 size,
                 center,
-                quaternion,
+                rotation,
             } = &p.place
             else {
                 unreachable!()
             };
-            let [w, x, y, z] = quaternion.unwrap_or([1.0, 0.0, 0.0, 0.0]);
+            let [w, x, y, z] = match rotation {
+                None => [1.0, 0.0, 0.0, 0.0],
+                Some(Rotation::Quaternion(qq)) => *qq,
+                Some(Rotation::Matrix(_)) => unreachable!("quaternions only here"),
+            };
             let r = [
                 [
                     w * w + x * x - y * y - z * z,
@@ -1551,6 +1994,7 @@ mod tests {
                 Shape::Plate => [dims[0], dims[1], 0.0],
                 Shape::Rod => [0.0, 0.0, dims[0]],
                 Shape::Point => [0.0; 3],
+                _ => unreachable!("boxes, plates, rods and points only here"),
             };
             let s = local.map(|a| m * a * a / 12.0);
             let c = center;
@@ -1678,6 +2122,538 @@ mod tests {
         assert_eq!(rounded.mass, exact.mass);
         for k in 0..3 {
             assert!(f(&(&rounded.com[k] - &exact.com[k]).abs()) < 1e-45);
+        }
+    }
+
+    // -----------------------------------------------------------------------
+    // Cylinders, disks, spheres, triangles and given inertias
+
+    fn one(part: Part) -> ExactPart {
+        exact_part(&part, Length::M, Mass::Kg)
+    }
+
+    /// ∫xxᵀ dm / m of a part, about its centroid.
+    fn per_mass(p: &ExactPart) -> M3 {
+        mscale(&p.second_moment, &(Q::one() / &p.mass))
+    }
+
+    fn msub(a: &M3, b: &M3) -> M3 {
+        std::array::from_fn(|i| sub(&a[i], &b[i]))
+    }
+
+    /// arctan(1/x) = Σ (−1)ᵏ / ((2k + 1) x²ᵏ⁺¹), with the alternating
+    /// series' error below its first omitted term.
+    fn arctan_inv(x: i64, terms: u32) -> Q {
+        (0..terms)
+            .map(|k| {
+                let t = Q::new(
+                    BigInt::one(),
+                    BigInt::from(2 * k + 1) * BigInt::from(x).pow(2 * k + 1),
+                );
+                if k % 2 == 0 { t } else { -t }
+            })
+            .sum()
+    }
+
+    #[test]
+    fn pi_agrees_with_machins_formula_to_a_hundred_digits_and_rounds_to_f64_pi() {
+        // π = 16 arctan(1/5) − 4 arctan(1/239); 80 and 50 terms leave
+        // errors below 5⁻¹⁶⁰ and 239⁻¹⁰⁰, far below 10⁻¹⁰⁰.
+        let machin = int(16) * arctan_inv(5, 80) - int(4) * arctan_inv(239, 50);
+        let tiny = Q::new(BigInt::one(), BigInt::from(10).pow(100));
+        assert!((pi() - machin).abs() < tiny);
+        assert_eq!(f(&pi()), std::f64::consts::PI);
+        // And the test can fail: the 100th digit matters.
+        assert!(
+            (pi() + &tiny * int(2) - int(16) * arctan_inv(5, 80) + int(4) * arctan_inv(239, 50))
+                .abs()
+                > tiny
+        );
+    }
+
+    #[test]
+    fn cylinders_disks_and_spheres_have_their_textbook_moments() {
+        let (m, r, l) = (q(3.0), q(0.5), q(2.0));
+        let moments = |p: Part| inertia_of(&one(p).second_moment);
+        // Solid cylinder: I_zz = m R²/2, I_xx = I_yy = m (3R² + L²)/12.
+        let i = moments(Part::cylinder(
+            0.5,
+            None,
+            2.0,
+            [1.0; 3],
+            None,
+            Amount::Mass(3.0),
+        ));
+        let across = &m * (int(3) * &r * &r + &l * &l) / int(12);
+        let axial = &m * &r * &r / int(2);
+        assert_eq!(i, diag_of([across.clone(), across, axial.clone()]));
+        // Thin tube: all the mass at R from the axis, I_zz = m R².
+        let i = moments(Part::cylinder(
+            0.5,
+            Some(0.5),
+            2.0,
+            [0.0; 3],
+            None,
+            Amount::Mass(3.0),
+        ));
+        assert_eq!(i[2][2], &m * &r * &r);
+        // Disk: I_zz = m R²/2, I_xx = m R²/4; a ring: m R² and m R²/2.
+        let i = moments(Part::disk(0.5, None, [0.0; 3], None, Amount::Mass(3.0)));
+        assert_eq!(
+            i,
+            diag_of([&axial / int(2), &axial / int(2), axial.clone()])
+        );
+        let i = moments(Part::disk(
+            0.5,
+            Some(0.5),
+            [0.0; 3],
+            None,
+            Amount::Mass(3.0),
+        ));
+        assert_eq!(i, diag_of([axial.clone(), axial.clone(), &axial * int(2)]));
+        // Sphere: ⅖ m R² solid, ⅔ m R² a thin shell, on every axis.
+        let solid = &m * &r * &r * frac(2, 5);
+        let i = moments(Part::sphere(0.5, None, [0.0; 3], None, Amount::Mass(3.0)));
+        assert_eq!(i, diag_of(std::array::from_fn(|_| solid.clone())));
+        let shell = &m * &r * &r * frac(2, 3);
+        let i = moments(Part::sphere(
+            0.5,
+            Some(0.5),
+            [0.0; 3],
+            None,
+            Amount::Mass(3.0),
+        ));
+        assert_eq!(i, diag_of(std::array::from_fn(|_| shell.clone())));
+        // Masses from densities: ρ π R² L, σ π R², ρ ⁴⁄₃ π R³.
+        let rho = q(7.5);
+        let c = one(Part::cylinder(
+            0.5,
+            None,
+            2.0,
+            [0.0; 3],
+            None,
+            Amount::Density(7.5),
+        ));
+        assert_eq!(c.mass, &rho * pi() * &r * &r * &l);
+        let d = one(Part::disk(0.5, None, [0.0; 3], None, Amount::Density(7.5)));
+        assert_eq!(d.mass, &rho * pi() * &r * &r);
+        let b = one(Part::sphere(
+            0.5,
+            None,
+            [0.0; 3],
+            None,
+            Amount::Density(7.5),
+        ));
+        assert_eq!(b.mass, &rho * pi() * pow(&r, 3) * frac(4, 3));
+    }
+
+    #[test]
+    fn hollow_shapes_are_the_solid_less_the_bore_at_equal_density() {
+        let h = 0.5f64.sqrt();
+        let turn = Some(Rotation::Quaternion([0.3, -0.7, 0.2, 0.9]));
+        let rot = Some(Rotation::Quaternion([h, 0.0, h, 0.0]));
+        let cases: [(Part, Part, Part); 3] = [
+            (
+                Part::cylinder(
+                    1.5,
+                    Some(0.625),
+                    3.0,
+                    [1.0, 2.0, 3.0],
+                    turn,
+                    Amount::Density(2.0),
+                ),
+                Part::cylinder(1.5, None, 3.0, [1.0, 2.0, 3.0], turn, Amount::Density(2.0)),
+                Part::cylinder(
+                    0.625,
+                    None,
+                    3.0,
+                    [1.0, 2.0, 3.0],
+                    turn,
+                    Amount::Density(2.0),
+                ),
+            ),
+            (
+                Part::disk(1.5, Some(0.625), [0.0; 3], rot, Amount::Density(0.3)),
+                Part::disk(1.5, None, [0.0; 3], rot, Amount::Density(0.3)),
+                Part::disk(0.625, None, [0.0; 3], rot, Amount::Density(0.3)),
+            ),
+            (
+                Part::sphere(1.5, Some(0.625), [0.0; 3], None, Amount::Density(5.0)),
+                Part::sphere(1.5, None, [0.0; 3], None, Amount::Density(5.0)),
+                Part::sphere(0.625, None, [0.0; 3], None, Amount::Density(5.0)),
+            ),
+        ];
+        for (hollow, outer, inner) in cases {
+            let (h, o, i) = (one(hollow), one(outer), one(inner));
+            assert_eq!(h.mass, &o.mass - &i.mass);
+            assert_eq!(h.second_moment, msub(&o.second_moment, &i.second_moment));
+        }
+        // A cylinder is its two halves end to end (the L²/12 term).
+        let whole = compose(&Scene::si(vec![Part::cylinder(
+            0.5,
+            Some(0.25),
+            2.0,
+            [0.0, 0.0, 1.0],
+            None,
+            Amount::Density(4.0),
+        )]));
+        let halves = compose(&Scene::si(vec![
+            Part::cylinder(
+                0.5,
+                Some(0.25),
+                1.0,
+                [0.0, 0.0, 0.5],
+                None,
+                Amount::Density(4.0),
+            ),
+            Part::cylinder(
+                0.5,
+                Some(0.25),
+                1.0,
+                [0.0, 0.0, 1.5],
+                None,
+                Amount::Density(4.0),
+            ),
+        ]));
+        assert_eq!((whole.mass, whole.inertia), (halves.mass, halves.inertia));
+    }
+
+    #[test]
+    fn a_disk_is_a_cylinder_of_length_zero() {
+        let rot = Some(Rotation::Quaternion([0.9, 0.1, -0.3, 0.2]));
+        for inner in [None, Some(0.25), Some(1.25)] {
+            let d = one(Part::disk(1.25, inner, [1.0; 3], rot, Amount::Mass(2.0)));
+            let c = one(Part::cylinder(
+                1.25,
+                inner,
+                0.0,
+                [1.0; 3],
+                rot,
+                Amount::Mass(2.0),
+            ));
+            assert_eq!(d.second_moment, c.second_moment);
+        }
+    }
+
+    #[test]
+    fn thin_walls_tend_to_the_thin_shell() {
+        for k in [10, 20, 40] {
+            let h = 0.5f64.powi(k);
+            let r = 1.0 - h;
+            for (thin, thick) in [
+                (
+                    Part::sphere(1.0, Some(1.0), [0.0; 3], None, Amount::Mass(1.0)),
+                    Part::sphere(1.0, Some(r), [0.0; 3], None, Amount::Mass(1.0)),
+                ),
+                (
+                    Part::cylinder(1.0, Some(1.0), 0.5, [0.0; 3], None, Amount::Mass(1.0)),
+                    Part::cylinder(1.0, Some(r), 0.5, [0.0; 3], None, Amount::Mass(1.0)),
+                ),
+            ] {
+                let (a, b) = (one(thin).second_moment, one(thick).second_moment);
+                // Moving mass inwards by at most h only lowers ∫x² dm, by a
+                // relative amount below 2h.
+                let d = f(&((&a[0][0] - &b[0][0]) / &a[0][0]));
+                assert!(d > 0.0 && d < 2.0 * h, "2^-{k}: {d:e}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_sphere_is_a_stack_of_thin_cylinders() {
+        // Midpoint quadrature of the unit ball in 64 slabs of height 1/32,
+        // each a cylinder of radius √(1 − z²) (the cylinder's own closed
+        // form, not the sphere's): ∫x² dm / m and ∫z² dm / m tend to 1/5
+        // with errors of order 1/N² (0.5/N² and 3.7/N² here).
+        let n = 64;
+        let hgt = 2.0 / n as f64;
+        let slabs = (0..n)
+            .map(|k| {
+                let z = -1.0 + (k as f64 + 0.5) * hgt;
+                Part::cylinder(
+                    (1.0 - z * z).sqrt(),
+                    None,
+                    hgt,
+                    [0.0, 0.0, z],
+                    None,
+                    Amount::Density(1.0),
+                )
+            })
+            .collect();
+        let stack = compose(&Scene::si(slabs));
+        let ball = one(Part::sphere(1.0, None, [0.0; 3], None, Amount::Mass(1.0)));
+        let c = per_mass(&ExactPart {
+            mass: stack.mass.clone(),
+            center: stack.com.clone(),
+            second_moment: stack.second_moment.clone(),
+        });
+        assert_eq!(
+            per_mass(&ball),
+            diag_of(std::array::from_fn(|_| frac(1, 5)))
+        );
+        let bound = 4.0 / (n * n) as f64;
+        for k in [0, 2] {
+            let err = f(&((&c[k][k] - frac(1, 5)) / frac(1, 5))).abs();
+            assert!(err < bound, "axis {k}: {err:e}");
+        }
+    }
+
+    /// The triangle (a, b, c) split at its edge midpoints into four
+    /// half-scale triangles (three at the corners, one turned in the middle).
+    fn four_halves(v: [[f64; 3]; 3]) -> [[[f64; 3]; 3]; 4] {
+        let mid =
+            |i: usize, j: usize| -> [f64; 3] { std::array::from_fn(|k| (v[i][k] + v[j][k]) / 2.0) };
+        let (ab, bc, ca) = (mid(0, 1), mid(1, 2), mid(2, 0));
+        [[v[0], ab, ca], [ab, v[1], bc], [ca, bc, v[2]], [ab, bc, ca]]
+    }
+
+    #[test]
+    fn a_triangle_is_its_four_half_scale_triangles() {
+        // NOTE: this pins the constant: if C = k m Σ dᵢdᵢᵀ, the four halves
+        // give 4 · k (m/4) Σ (dᵢ/2)(dᵢ/2)ᵀ plus the parallel-axis terms of
+        // the corner triangles' centroids at g + dᵢ/2, (m/4) Σ dᵢdᵢᵀ/4:
+        // k = k/4 + 1/16 holds only for k = 1/12.
+        let v = [[0.25, -1.0, 2.0], [3.0, 0.5, 1.0], [-1.0, 2.0, -0.5]];
+        let whole = compose(&Scene::si(vec![Part::triangle(v, Amount::Mass(4.0))]));
+        let split = compose(&Scene::si(
+            four_halves(v)
+                .map(|t| Part::triangle(t, Amount::Mass(1.0)))
+                .to_vec(),
+        ));
+        assert_eq!(whole.com, split.com);
+        assert_eq!(whole.inertia, split.inertia);
+        // By density: the areas are square roots (to 2⁻²⁰⁰).
+        let whole = compose(&Scene::si(vec![Part::triangle(v, Amount::Density(0.75))]));
+        let split = compose(&Scene::si(
+            four_halves(v)
+                .map(|t| Part::triangle(t, Amount::Density(0.75)))
+                .to_vec(),
+        ));
+        assert!(rel_q(&split.mass, &whole.mass) < 1e-55);
+        assert!(rel_frobenius_exact(&split.inertia, &whole.inertia) < 1e-55);
+    }
+
+    #[test]
+    fn a_right_triangle_has_the_textbook_centroidal_moments() {
+        // Legs b along x and h along y: per unit area, ∫y² dA = b h³/36 and
+        // ∫xy dA = −b² h²/72 about the centroid (b/3, h/3), so per unit mass
+        // h²/18 and −b h/36; the tensor's I_xy = −∫xy dm = m b h/36.
+        let (b, h) = (3.0, 2.0);
+        let t = compose(&Scene::si(vec![Part::triangle(
+            [[0.0; 3], [b, 0.0, 0.0], [0.0, h, 0.0]],
+            Amount::Density(2.0),
+        )]));
+        let m = int(6); // 2 · (3 · 2)/2, exactly: √36 = 6
+        assert_eq!(t.mass, m);
+        assert_eq!(t.com, [frac(1, 1), frac(2, 3), int(0)]);
+        let (b, h) = (q(b), q(h));
+        assert_eq!(t.second_moment[1][1], &m * &h * &h / int(18));
+        assert_eq!(t.second_moment[0][0], &m * &b * &b / int(18));
+        assert_eq!(t.inertia[0][1], &m * &b * &h / int(36));
+        assert_eq!(t.second_moment[2][2], int(0));
+    }
+
+    #[test]
+    fn a_polygon_of_many_triangles_tends_to_the_disk() {
+        // A regular n-gon inscribed in the unit circle, as n triangles of
+        // equal mass from its centre. Its polar moment per unit area is
+        // (1 + 2cos²(π/n))/6 (each isosceles slice: ∫|p|² dA =
+        // (A/6)(|a|² + a·b + |b|²)), so ∫x² dm / m = (1 + 2cos²(π/n))/12,
+        // which tends to the disk's 1/4 from below, short by (2/3) sin²(π/n).
+        let n = 256;
+        let vertex = |k: usize| {
+            let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64;
+            [t.cos(), t.sin(), 0.0]
+        };
+        let slices = (0..n)
+            .map(|k| Part::triangle([[0.0; 3], vertex(k), vertex(k + 1)], Amount::Mass(1.0)))
+            .collect();
+        let poly = compose(&Scene::si(slices));
+        let xx = f(&(&poly.second_moment[0][0] / &poly.mass));
+        let c = (std::f64::consts::PI / n as f64).cos();
+        let regular = (1.0 + 2.0 * c * c) / 12.0;
+        // Vertices and slice masses rounded in f64: a few ε.
+        assert!((xx - regular).abs() < 1e-14, "{xx} vs {regular}");
+        let disk = per_mass(&one(Part::disk(
+            1.0,
+            None,
+            [0.0; 3],
+            None,
+            Amount::Mass(1.0),
+        )));
+        let gap = (f(&disk[0][0]) - xx) / f(&disk[0][0]);
+        let step = std::f64::consts::PI / n as f64;
+        assert!(gap > 0.0 && gap < step * step, "{gap:e}");
+    }
+
+    /// Integer edges, exactly perpendicular, all of length 3.
+    const OBLIQUE: [[f64; 3]; 3] = [[2.0, 1.0, 2.0], [1.0, 2.0, -2.0], [2.0, -2.0, -1.0]];
+
+    #[test]
+    fn a_given_inertia_is_the_body_it_describes() {
+        // A box of mass 12 by integer edges of lengths 3, 6 and 9:
+        // C = Σ eₖeₖᵀ and its tensor I = tr(C)E − C are integer matrices
+        // with products, exact in f64.
+        let edges: [[f64; 3]; 3] = std::array::from_fn(|k| OBLIQUE[k].map(|x| x * (k + 1) as f64));
+        let boxed = one(Part::box_edges([0.0; 3], edges, Amount::Mass(12.0)));
+        let i = fm(&inertia_of(&boxed.second_moment));
+        assert!(i[0][1] != 0.0 && i[0][2] != 0.0 && i[1][2] != 0.0);
+        let center = fv(&boxed.center);
+        let given = one(Part::given(12.0, i, Products::Tensor, center, None));
+        assert_eq!(given.second_moment, boxed.second_moment);
+        assert_eq!(
+            (given.mass, given.center),
+            (boxed.mass.clone(), boxed.center.clone())
+        );
+        // The same products written as CAD does, +∫xy dm.
+        let mut cad = i;
+        for (a, b) in [(0, 1), (1, 0), (0, 2), (2, 0), (1, 2), (2, 1)] {
+            cad[a][b] = -cad[a][b];
+        }
+        let given = one(Part::given(12.0, cad, Products::Positive, center, None));
+        assert_eq!(given.second_moment, boxed.second_moment);
+        // Turned: a box's local tensor and the box's own rotation.
+        let qq = [0.3, -0.7, 0.2, 0.9];
+        let turned_box = one(Part::cuboid(
+            [1.0, 2.0, 3.0],
+            [0.5; 3],
+            Some(qq),
+            Amount::Mass(12.0),
+        ));
+        let local = [[13.0, 0.0, 0.0], [0.0, 10.0, 0.0], [0.0, 0.0, 5.0]];
+        let given = one(Part::given(
+            12.0,
+            local,
+            Products::Tensor,
+            [0.5; 3],
+            Some(Rotation::Quaternion(qq)),
+        ));
+        assert_eq!(given.second_moment, turned_box.second_moment);
+        // And a wrong convention is seen.
+        let wrong = one(Part::given(12.0, cad, Products::Tensor, center, None));
+        assert!(rel_frobenius_exact(&wrong.second_moment, &boxed.second_moment) > 0.1);
+    }
+
+    /// One part of every shape and placement that a quarter turn maps
+    /// exactly: unrotated or turned by a signed permutation.
+    fn turnable_every_shape() -> Scene {
+        let swap = Some(Rotation::Matrix([
+            [0.0, 0.0, 1.0],
+            [-1.0, 0.0, 0.0],
+            [0.0, -1.0, 0.0],
+        ]));
+        Scene::si(vec![
+            Part::cuboid([0.5, 1.0, 1.5], [1.0, 0.0, 0.5], None, Amount::Density(3.0)),
+            Part::plate([0.5, 2.0], [0.0, 1.0, 0.25], None, Amount::Mass(1.0)).with_rotation(swap),
+            Part::rod(2.5, [-1.0, 0.5, 0.0], None, Amount::Density(0.5)),
+            Part::point(0.75, [0.5, -1.5, 2.0]),
+            Part::cylinder(
+                0.5,
+                Some(0.25),
+                2.0,
+                [2.0, 1.0, -1.0],
+                None,
+                Amount::Density(2.0),
+            ),
+            Part::cylinder(0.75, None, 0.5, [0.0, 0.0, 0.0], swap, Amount::Mass(3.0)),
+            Part::disk(1.0, Some(0.5), [-2.0, 0.0, 1.0], swap, Amount::Density(1.5)),
+            Part::disk(0.25, Some(0.25), [0.5, 0.5, 0.5], None, Amount::Mass(0.5)),
+            Part::sphere(
+                0.5,
+                Some(0.375),
+                [1.0, -1.0, 0.0],
+                None,
+                Amount::Density(8.0),
+            ),
+            Part::sphere(0.25, Some(0.25), [0.0, 2.0, 0.0], swap, Amount::Mass(0.25)),
+            Part::triangle(
+                [[0.0, 0.0, 1.0], [1.0, 0.5, 0.0], [0.25, 2.0, 0.5]],
+                Amount::Density(4.0),
+            ),
+            Part::given(
+                2.0,
+                [[3.0, 0.5, -0.25], [0.5, 2.5, 0.75], [-0.25, 0.75, 4.0]],
+                Products::Positive,
+                [0.0, -1.0, -1.0],
+                swap,
+            ),
+        ])
+    }
+
+    #[test]
+    fn a_quarter_turn_of_every_shape_permutes_the_exact_tensor() {
+        let scene = turnable_every_shape();
+        let e = compose(&scene);
+        for axis in 0..3 {
+            let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
+            // P: x_i ← −x_j, x_j ← x_i.
+            let mut p = zero_m();
+            p[axis][axis] = int(1);
+            p[i][j] = int(-1);
+            p[j][i] = int(1);
+            let t = compose(&scene.quarter_turn(axis));
+            assert_eq!(t.inertia, turned(&p, &e.inertia), "axis {axis}");
+            assert_eq!(t.com, mvec(&p, &e.com));
+            assert_eq!(t.mass, e.mass);
+        }
+    }
+
+    #[test]
+    fn only_exact_rotation_matrices_are_taken() {
+        let r = std::panic::catch_unwind(|| {
+            rotation_matrix(Some(&Rotation::Matrix([
+                [0.6, 0.8, 0.0],
+                [-0.8, 0.6, 0.0],
+                [0.0, 0.0, 1.0],
+            ])))
+        });
+        assert!(r.is_err(), "0.6 and 0.8 are not exact in binary");
+        let m = rotation_matrix(Some(&Rotation::Matrix([
+            [0.0, -1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ])));
+        assert_eq!(
+            mvec(&m, &[int(1), int(0), int(0)]),
+            [int(0), int(1), int(0)]
+        );
+    }
+
+    #[test]
+    fn the_part_file_writer_writes_every_shape() {
+        let scene = turnable_every_shape();
+        let v: toml::Value = toml::from_str(&to_toml(&scene)).unwrap();
+        let part = |k: usize| &v["part"][k];
+        assert_eq!(part(4)["shape"].as_str(), Some("cylinder"));
+        assert_eq!(part(4)["radius"].as_float(), Some(0.5));
+        assert_eq!(part(4)["inner_radius"].as_float(), Some(0.25));
+        assert_eq!(part(4)["length"].as_float(), Some(2.0));
+        assert_eq!(part(4)["density"].as_float(), Some(2.0));
+        assert!(part(5).get("inner_radius").is_none());
+        assert_eq!(part(5)["rotation"]["matrix"][1][0].as_float(), Some(-1.0));
+        assert_eq!(part(6)["areal_density"].as_float(), Some(1.5));
+        assert_eq!(part(8)["shape"].as_str(), Some("sphere"));
+        assert_eq!(part(10)["vertices"][2][1].as_float(), Some(2.0));
+        assert_eq!(part(10)["areal_density"].as_float(), Some(4.0));
+        assert_eq!(part(11)["shape"].as_str(), Some("inertia"));
+        assert_eq!(part(11)["inertia"][1][2].as_float(), Some(0.75));
+        assert_eq!(part(11)["products"].as_str(), Some("positive"));
+        assert_eq!(part(11)["mass"].as_float(), Some(2.0));
+    }
+
+    #[test]
+    fn every_shape_converts_to_other_units_with_exact_factors() {
+        // One rounding per number: the same body to a few ε.
+        let si = turnable_every_shape();
+        let e = compose(&si);
+        for (length, mass) in [
+            (Length::In, Mass::Lb),
+            (Length::Mm, Mass::G),
+            (Length::Km, Mass::T),
+        ] {
+            let c = compose(&si.in_units(length, mass));
+            assert!(rel_q(&c.mass, &e.mass) < 1e-15);
+            assert!(rel_frobenius_exact(&c.inertia, &e.inertia) < 1e-15);
         }
     }
 }

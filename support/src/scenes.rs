@@ -1,8 +1,8 @@
 //! The stress scenes of docs/accuracy.md, shared by the benchmark
 //! (benches/compose.rs) and the accuracy table (examples/accuracy.rs). They
 //! are built with the exact reference's scene description
-//! (tests/integration/reference.rs, included by both as `reference`), so
-//! each can be written as a part file and composed exactly.
+//! ([`crate::reference`]), so each can be written as a part file and
+//! composed exactly.
 
 use crate::reference::{Amount, Length, Mass, Part, Scene};
 
