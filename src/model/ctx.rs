@@ -201,27 +201,14 @@ impl Ctx<'_> {
     /// `[analysis]`: the reference point, ω and α, in the file's units.
     pub(super) fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
         let r = a.get_ref();
-        let about = r
-            .about
-            .as_ref()
-            .map(|v| self.file_vec3(v, "about", Dim::LENGTH).map(Vector3::from))
-            .transpose()?;
-        let omega = r
-            .omega
-            .as_ref()
-            .map(|v| {
-                self.file_vec3(v, "omega", Dim::ANGULAR_VELOCITY)
-                    .map(Vector3::from)
-            })
-            .transpose()?;
-        let alpha = r
-            .alpha
-            .as_ref()
-            .map(|v| {
-                self.file_vec3(v, "alpha", Dim::ANGULAR_ACCELERATION)
-                    .map(Vector3::from)
-            })
-            .transpose()?;
+        let read = |v: &Option<Vector>, key: &str, dim: Dim| {
+            v.as_ref()
+                .map(|v| self.file_vec3(v, key, dim).map(Vector3::from))
+                .transpose()
+        };
+        let about = read(&r.about, "about", Dim::LENGTH)?;
+        let omega = read(&r.omega, "omega", Dim::ANGULAR_VELOCITY)?;
+        let alpha = read(&r.alpha, "alpha", Dim::ANGULAR_ACCELERATION)?;
         Ok(Analysis {
             about,
             omega,

@@ -30,6 +30,12 @@ fn vunit(v: &Vector3<f64>) -> Vector3<f64> {
 }
 
 impl Ctx<'_> {
+    /// "this SHAPE needs `KEY`", at the part, with the shape's help.
+    fn missing(&self, shape: Shape, span: Range<usize>, key: &str) -> Diagnostic {
+        self.err(span, format!("this {} needs `{key}`", shape.name()))
+            .help(shape.info().help)
+    }
+
     /// The centred placement: the dimensions, `center` and `rotation`.
     pub(super) fn placement_canonical(
         &self,
@@ -37,11 +43,7 @@ impl Ctx<'_> {
         p: &RawPart,
         span: Range<usize>,
     ) -> Result<Placement, Diagnostic> {
-        let s = shape.name();
-        let missing = |key: &str| {
-            self.err(span.clone(), format!("this {s} needs `{key}`"))
-                .help(shape.info().help)
-        };
+        let missing = |key: &str| self.missing(shape, span.clone(), key);
         let dims = match shape.info().dims {
             Dims::Size(n) => {
                 let size = p.size.as_ref().ok_or_else(|| missing("size"))?;
@@ -105,10 +107,7 @@ impl Ctx<'_> {
         span: Range<usize>,
     ) -> Result<Placement, Diagnostic> {
         let s = shape.name();
-        let missing = |key: &str| {
-            self.err(span.clone(), format!("this {s} needs `{key}`"))
-                .help(shape.info().help)
-        };
+        let missing = |key: &str| self.missing(shape, span.clone(), key);
         let (origin, edges) = if shape.info().spanned == Some(Spans::FromTo) {
             let from = self.vec3(
                 p.from.as_ref().ok_or_else(|| missing("from"))?,

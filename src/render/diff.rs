@@ -1,7 +1,7 @@
 //! `diff`'s table (in the new file's units) and JSON contract (SI,
 //! docs/diff.md).
 
-use super::format::{DisplayUnits, UNDEFINED, fmt_num};
+use super::format::{DisplayUnits, UNDEFINED, fmt_num, products_label};
 use super::grid::new_table;
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
@@ -184,7 +184,8 @@ pub fn table(d: &Diff) -> String {
     );
     let _ = writeln!(
         out,
-        "Ixx … Iyz: inertia about the centre of mass, tensor convention, Ixy = −∫xy dm"
+        "Ixx … Iyz: inertia about the centre of mass, {}",
+        products_label(Products::Tensor)
     );
     let _ = writeln!(
         out,
