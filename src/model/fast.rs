@@ -17,9 +17,12 @@
 //! `toml::from_str::<RawFile>` gives, values and spans alike (tested in
 //! `tests`).
 //!
-//! NOTE: a key added to `RawPart` must be added to `Builder::assign` too
-//! (`close_part` does not compile without the field; a key missing from
-//! `assign` only sends files that use it down the serde path).
+//! NOTE: the builder fills `RawPart` itself, the serde mirror's own struct,
+//! so the two readers share one definition of a part's keys and types. A
+//! key that `Builder::assign` does not take (booleans, includes, given
+//! tensors, …) only sends the files that use it down the serde path; the
+//! property test (tests/integration/hostile.rs) and the fuzz target assert
+//! that wherever this returns `Some`, serde gives the same `RawFile`.
 
 use super::raw::{
     Angles, Floats, Quantity, RawAnalysis, RawFile, RawPart, RawRotation, RawUnits, Vector,
@@ -105,28 +108,6 @@ enum Current {
     Analysis,
 }
 
-#[derive(Default)]
-struct Part {
-    name: Option<Spanned<String>>,
-    shape: Option<Spanned<String>>,
-    mass: Option<Spanned<Quantity>>,
-    density: Option<Spanned<Quantity>>,
-    areal_density: Option<Spanned<Quantity>>,
-    linear_density: Option<Spanned<Quantity>>,
-    size: Option<Vector>,
-    length: Option<Spanned<Quantity>>,
-    center: Option<Vector>,
-    rotation: Option<Spanned<RawRotation>>,
-    corner: Option<Vector>,
-    edges: Option<Spanned<Vec<Vector>>>,
-    from: Option<Vector>,
-    to: Option<Vector>,
-    thickness: Option<Spanned<Quantity>>,
-    diameter: Option<Spanned<Quantity>>,
-    radius: Option<Spanned<Quantity>>,
-    inner_radius: Option<Spanned<Quantity>>,
-}
-
 struct Builder<'i> {
     source: Source<'i>,
     failed: bool,
@@ -140,7 +121,7 @@ struct Builder<'i> {
     name: Option<Spanned<String>>,
     units: Option<Spanned<RawUnits>>,
     parts: Option<(Range<usize>, Vec<Spanned<RawPart>>)>,
-    part: Option<(Range<usize>, Part)>,
+    part: Option<(Range<usize>, RawPart)>,
     analysis: Option<Spanned<RawAnalysis>>,
 }
 
@@ -192,44 +173,11 @@ impl<'i> Builder<'i> {
             return;
         };
         // A part without a shape is an include or an error: serde's.
-        let Some(shape) = p.shape else {
+        if p.shape.is_none() {
             return self.fail();
-        };
-        let shape = Some(shape);
-        let part = RawPart {
-            name: p.name,
-            shape,
-            mass: p.mass,
-            density: p.density,
-            areal_density: p.areal_density,
-            linear_density: p.linear_density,
-            size: p.size,
-            length: p.length,
-            center: p.center,
-            rotation: p.rotation,
-            corner: p.corner,
-            edges: p.edges,
-            from: p.from,
-            to: p.to,
-            thickness: p.thickness,
-            diameter: p.diameter,
-            radius: p.radius,
-            inner_radius: p.inner_radius,
-            // Booleans are serde's: a file with `remove` never gets here.
-            remove: None,
-            // Given inertia tensors are serde's too (a rare, small part).
-            inertia: None,
-            products: None,
-            // Triangles too: a key the fast path does not take sends the
-            // file down the serde path.
-            vertices: None,
-            material: None,
-            area: None,
-            include: None,
-            origin: None,
-        };
+        }
         match &mut self.parts {
-            Some((_, v)) => v.push(Spanned::new(span, part)),
+            Some((_, v)) => v.push(Spanned::new(span, p)),
             None => self.fail(),
         }
     }
@@ -240,24 +188,15 @@ impl<'i> Builder<'i> {
         match (is_array, path.as_slice()) {
             (true, [k]) if k == "part" => {
                 self.parts.get_or_insert_with(|| (span.clone(), Vec::new()));
-                self.part = Some((span, Part::default()));
+                self.part = Some((span, RawPart::default()));
                 self.current = Current::Part;
             }
             (false, [k]) if k == "analysis" && self.analysis.is_none() => {
-                let empty = RawAnalysis {
-                    about: None,
-                    omega: None,
-                    alpha: None,
-                };
-                self.analysis = Some(Spanned::new(span, empty));
+                self.analysis = Some(Spanned::new(span, RawAnalysis::default()));
                 self.current = Current::Analysis;
             }
             (false, [k]) if k == "units" && self.units.is_none() => {
-                let empty = RawUnits {
-                    length: None,
-                    mass: None,
-                };
-                self.units = Some(Spanned::new(span, empty));
+                self.units = Some(Spanned::new(span, RawUnits::default()));
                 self.current = Current::Units;
             }
             _ => self.fail(),
@@ -295,10 +234,7 @@ impl<'i> Builder<'i> {
                     let Node::Table(entries, _) = node else {
                         return None;
                     };
-                    let mut u = RawUnits {
-                        length: None,
-                        mass: None,
-                    };
+                    let mut u = RawUnits::default();
                     for (k, v) in entries {
                         units_key(&mut u, &k, v)?;
                     }
@@ -418,14 +354,7 @@ fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
     let Node::Table(entries, span) = node else {
         return None;
     };
-    let mut r = RawRotation {
-        quaternion: None,
-        axis: None,
-        degrees: None,
-        matrix: None,
-        intrinsic: None,
-        extrinsic: None,
-    };
+    let mut r = RawRotation::default();
     for (k, v) in entries {
         match &*k {
             "quaternion" => set(&mut r.quaternion, floats(v)?),

@@ -37,7 +37,7 @@ pub struct RawMaterial {
     pub density: Spanned<Quantity>,
 }
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(
     deny_unknown_fields,
     expecting = "a table such as { length = \"mm\", mass = \"kg\" }"
@@ -47,7 +47,7 @@ pub struct RawUnits {
     pub mass: Option<Spanned<String>>,
 }
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(deny_unknown_fields, expecting = "a part table with `shape`")]
 pub struct RawPart {
     pub name: Option<Spanned<String>>,
@@ -90,7 +90,7 @@ pub struct RawPart {
     pub remove: Option<Spanned<bool>>,
 }
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(
     deny_unknown_fields,
     expecting = "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
@@ -104,7 +104,7 @@ pub struct RawRotation {
     pub extrinsic: Option<Spanned<String>>,
 }
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(
     deny_unknown_fields,
     expecting = "a table with `about`, `omega` or `alpha`"
