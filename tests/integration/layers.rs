@@ -101,3 +101,21 @@ fn no_module_uses_a_module_of_a_later_layer() {
         );
     }
 }
+
+/// No source file grows past about 800 lines unless it says at its top why
+/// it is one cohesive thing (a `//! NOTE: cohesive:` line).
+#[test]
+fn source_files_stay_under_800_lines_or_say_why() {
+    let mut files = Vec::new();
+    sources(Path::new("src"), &mut files);
+    let long: Vec<String> = files
+        .iter()
+        .filter_map(|f| {
+            let text = std::fs::read_to_string(f).unwrap();
+            let lines = text.lines().count();
+            (lines > 800 && !text.contains("//! NOTE: cohesive:"))
+                .then(|| format!("{} ({lines} lines)", f.display()))
+        })
+        .collect();
+    assert!(long.is_empty(), "split these or say why not: {long:?}");
+}
