@@ -54,19 +54,27 @@ impl Cells {
 /// NOTE: the parts table has a row per part, 100,000 and more: through
 /// comfy-table (a `String` and several `Vec`s per cell and per line) it
 /// took 0.44 s for 100,000 parts, more than the rest of `report` after
-/// parsing; written here, 0.1 s. Tables with a line break in a cell
-/// (comfy-table splits those into lines) or a column wider than comfy-table
-/// measures (u16) still go through comfy-table.
+/// parsing; written here, 0.1 s. Tables with a line break in a cell or in
+/// the header (comfy-table splits those into lines) still go through
+/// comfy-table, and so do columns near the width comfy-table can hold:
+/// it keeps a column's width with its padding in a u16, which saturates at
+/// 65,535 (its borders come out shorter than its rows), and wraps wider
+/// content. Widths are unicode-width's `str::width`, as comfy-table's are
+/// (wide CJK characters 2, combining marks 0, an emoji ZWJ sequence or a
+/// flag 2, a tab 1): the same function, so the same columns, whatever a
+/// terminal makes of them.
 pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
     let n = header.len();
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
-    let mut multiline = false;
+    let mut multiline = header.iter().any(|h| h.contains('\n'));
     for (i, c) in cells.iter().enumerate() {
         multiline |= c.contains('\n');
         let w = &mut widths[i % n];
         *w = (*w).max(c.width());
     }
-    if multiline || widths.iter().any(|w| *w > usize::from(u16::MAX)) {
+    // comfy-table's width of a column: content, one space each side, in u16.
+    let too_wide = |w: &usize| w + 2 > usize::from(u16::MAX);
+    if multiline || widths.iter().any(too_wide) {
         let mut t = new_table();
         t.set_header(header.to_vec());
         let all: Vec<&str> = cells.iter().collect();
@@ -118,4 +126,79 @@ pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[
         row(out, &mut it.by_ref().take(n));
     }
     rule(out, ['└', '─', '┴', '┘']);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The table as comfy-table prints it: `new_table()`'s style, the
+    /// header, the rows, and `right[i]` aligning column i right; then the
+    /// newline `write_table` ends with.
+    fn comfy(header: &[&str], rows: &[Vec<&str>], right: &[bool]) -> String {
+        let mut t = new_table();
+        t.set_header(header.to_vec());
+        for row in rows {
+            t.add_row(row.clone());
+        }
+        for (column, r) in t.column_iter_mut().zip(right) {
+            if *r {
+                column.set_cell_alignment(CellAlignment::Right);
+            }
+        }
+        format!("{t}\n")
+    }
+
+    /// The same table through `write_table`.
+    fn written(header: &[&str], rows: &[Vec<&str>], right: &[bool]) -> String {
+        let header: Vec<String> = header.iter().map(|h| h.to_string()).collect();
+        let mut cells = Cells::with_capacity(rows.len() * header.len());
+        for cell in rows.iter().flatten() {
+            cells.text.push_str(cell);
+            cells.end();
+        }
+        let mut out = String::new();
+        write_table(&mut out, &header, &cells, right);
+        out
+    }
+
+    /// `write_table` prints, byte for byte, what comfy-table prints.
+    fn same_as_comfy_table(header: &[&str], rows: &[Vec<&str>], right: &[bool]) {
+        let ours = written(header, rows, right);
+        let theirs = comfy(header, rows, right);
+        if ours == theirs {
+            return;
+        }
+        let first = ours.lines().zip(theirs.lines()).position(|(a, b)| a != b);
+        let short = |text: &str| text.chars().take(200).collect::<String>();
+        let line = |text: &str| short(first.and_then(|i| text.lines().nth(i)).unwrap_or_default());
+        panic!(
+            "write_table differs from comfy-table for header {:?}, right {right:?}, {} rows \
+             (widest cell {} columns); first differing line {first:?}:\n  write_table: {:?}\n  comfy-table: {:?}\n\
+             write_table:\n{}\ncomfy-table:\n{}",
+            header.iter().map(|h| short(h)).collect::<Vec<_>>(),
+            rows.len(),
+            rows.iter().flatten().map(|c| c.width()).max().unwrap_or(0),
+            line(&ours),
+            line(&theirs),
+            short(&ours),
+            short(&theirs),
+        );
+    }
+
+    #[test]
+    fn a_line_break_in_the_header_goes_through_comfy_table() {
+        same_as_comfy_table(&["mass\n[kg]", "n"], &[vec!["1", "2"]], &[true, false]);
+        same_as_comfy_table(&["mass\n[kg]", "n"], &[], &[true, false]);
+    }
+
+    #[test]
+    fn columns_near_comfy_tables_u16_width_limit_print_as_in_comfy_table() {
+        // comfy-table keeps widths in u16: a column's width with its padding
+        // saturates at 65,535, and wider content is wrapped.
+        for width in [65_532, 65_533, 65_534, 65_535, 65_536] {
+            let wide = "a".repeat(width);
+            same_as_comfy_table(&["wide", "n"], &[vec![&wide, "1"]], &[false, true]);
+        }
+    }
 }
