@@ -27,12 +27,16 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     // a combining mark or an em dash in a comment): snap to boundaries.
     let floor = |i| crate::diag::floor_char_boundary(&source.text, i);
     let span = floor(span.start)..floor(span.end).max(floor(span.start));
-    // serde's words for TOML's: a "map" is a table, a "sequence" an array.
+    // serde's words for TOML's: a "map" is a table, a "sequence" an array,
+    // both as the value found ("invalid type: map") and as the one
+    // expected ("expected a map", from `[materials]`'s map).
     let msg = e
         .message()
         .trim_end()
         .replace("expected f64", "expected a number")
         .replace("invalid type: map", "invalid type: table")
+        .replace("expected a map", "expected a table")
+        .replace("invalid type: sequence", "invalid type: array")
         .replace("a sequence", "an array");
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
@@ -350,6 +354,29 @@ mod tests {
         assert!(upstream.ends_with("expected a sequence"), "{upstream}");
         assert!(
             ours.contains("error: `center` has the wrong type: integer `1`, expected an array\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_sequence_of_the_wrong_type_is_called_an_array() {
+        let (upstream, ours) = reworded("name = [1]\n");
+        assert!(
+            upstream.starts_with("invalid type: sequence, expected"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `name` has the wrong type: array, expected a string\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_expected_map_is_called_a_table() {
+        let (upstream, ours) = reworded("materials = 1\n");
+        assert!(upstream.ends_with("expected a map"), "{upstream}");
+        assert!(
+            ours.contains("error: `materials` has the wrong type: integer `1`, expected a table\n"),
             "{ours}"
         );
     }
