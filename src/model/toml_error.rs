@@ -462,9 +462,9 @@ mod tests {
     #[test]
     fn model_parse_words_toml_errors_through_this_module() {
         let text = part_with("mas = 1");
-        let d = crate::model::Model::parse(&Source::new("t.toml", text.as_str()))
-            .err()
-            .expect("an unknown key is an error");
+        let Err(d) = crate::model::Model::parse(&Source::new("t.toml", text.as_str())) else {
+            panic!("an unknown key is an error");
+        };
         assert_eq!(d.message(), "unknown key `mas`");
         assert_eq!(d.location(), Some("t.toml:3:1"));
     }

@@ -1183,8 +1183,21 @@ struct PartValues {
     scalars: Vec<String>,
     vectors: Vec<Vec<String>>,
     edges: Vec<Vec<String>>,
-    rotation: Option<(u8, Vec<String>, Vec<String>, &'static str, bool)>,
+    rotation: Option<RotationValues>,
     optional: Vec<bool>,
+}
+
+/// A rotation's values: its form (0 quaternion, 1 axis and angle, 2
+/// matrix, 3 Euler angles), nine numbers, three angles, an Euler sequence,
+/// and whether its keys come in reverse order (and Euler angles are
+/// extrinsic).
+#[derive(Clone, Debug)]
+struct RotationValues {
+    form: u8,
+    numbers: Vec<String>,
+    angles: Vec<String>,
+    sequence: &'static str,
+    reversed: bool,
 }
 
 fn part_values(l: u32) -> impl Strategy<Value = PartValues> {
@@ -1195,7 +1208,16 @@ fn part_values(l: u32) -> impl Strategy<Value = PartValues> {
         prop::collection::vec(spelled_number(l), 3),
         prop::sample::select(vec!["zyx", "xyz", "zxz", "yzy"]),
         any::<bool>(),
-    );
+    )
+        .prop_map(
+            |(form, numbers, angles, sequence, reversed)| RotationValues {
+                form,
+                numbers,
+                angles,
+                sequence,
+                reversed,
+            },
+        );
     (
         (prop::sample::select(shapes.to_vec()), 0..4u8),
         prop::option::weighted(0.6, prop::sample::select(NAMES)),
@@ -1234,8 +1256,14 @@ fn part_values(l: u32) -> impl Strategy<Value = PartValues> {
 }
 
 /// `rotation = {…}` in one of its forms, keys in either order.
-fn rotation_value(r: &(u8, Vec<String>, Vec<String>, &str, bool), look: &Look) -> String {
-    let (form, numbers, angles, sequence, reversed) = r;
+fn rotation_value(r: &RotationValues, look: &Look) -> String {
+    let RotationValues {
+        form,
+        numbers,
+        angles,
+        sequence,
+        reversed,
+    } = r;
     let plain = Look {
         layout: 0,
         ..look.clone()
