@@ -1,7 +1,9 @@
 //! Fuzz the part-file parser, the composer and the checker: any text either
 //! is rejected with a diagnostic or gives a summary whose JSON is finite and
 //! valid, whose table renders, and whose `[expect]` messages print no
-//! non-finite number. Panics, hangs and out-of-memory are the findings.
+//! non-finite number; and wherever the fast path (`model::fast::parse`)
+//! reads the text, serde (`toml::from_str::<RawFile>`) reads it too, to the
+//! same values and spans. Panics, hangs and out-of-memory are the findings.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -9,6 +11,8 @@ use massprop::analysis::check;
 use massprop::compose::Precision;
 use massprop::diag::Source;
 use massprop::model::Model;
+use massprop::model::fast;
+use massprop::model::raw::RawFile;
 use massprop::analysis::Products;
 use massprop::analysis::summary as report;
 use massprop::render;
@@ -18,6 +22,12 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let source = Source::new("fuzz.toml", text);
+    // As given, and as `Model::parse` gives it to the fast path (without a
+    // byte-order mark).
+    fast_path_agrees(text);
+    if source.text != text {
+        fast_path_agrees(&source.text);
+    }
     let model = match Model::parse(&source) {
         Ok(model) => model,
         Err(d) => {
@@ -52,6 +62,23 @@ fuzz_target!(|data: &[u8]| {
         }
     }
 });
+
+/// src/model/fast.rs's promise: where `fast::parse` returns `Some`, serde
+/// accepts the text too and gives the same `RawFile`, values and spans
+/// (compared through `Debug`, as fast.rs's tests do: `RawFile` is not
+/// `PartialEq`).
+fn fast_path_agrees(text: &str) {
+    let Some(fast) = fast::parse(text) else {
+        return;
+    };
+    let serde = toml::from_str::<RawFile>(text)
+        .unwrap_or_else(|e| panic!("the fast path reads a file that serde rejects: {e}"));
+    assert_eq!(
+        format!("{fast:?}"),
+        format!("{serde:?}"),
+        "the fast path and serde read the file differently"
+    );
+}
 
 /// serde_json writes a non-finite f64 as `null` (it never writes `inf` or
 /// `NaN`), so a finite summary has no `null` but where docs/json.md allows

@@ -27,12 +27,16 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     // a combining mark or an em dash in a comment): snap to boundaries.
     let floor = |i| crate::diag::floor_char_boundary(&source.text, i);
     let span = floor(span.start)..floor(span.end).max(floor(span.start));
-    // serde's words for TOML's: a "map" is a table, a "sequence" an array.
+    // serde's words for TOML's: a "map" is a table, a "sequence" an array,
+    // both as the value found ("invalid type: map") and as the one
+    // expected ("expected a map", from `[materials]`'s map).
     let msg = e
         .message()
         .trim_end()
         .replace("expected f64", "expected a number")
         .replace("invalid type: map", "invalid type: table")
+        .replace("expected a map", "expected a table")
+        .replace("invalid type: sequence", "invalid type: array")
         .replace("a sequence", "an array");
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
@@ -254,5 +258,214 @@ mod tests {
         );
         assert_eq!(quoted_value("mass = [1 kg]", 7), None);
         assert_eq!(quoted_value("mass = kg", 7), None);
+    }
+
+    // The upstream wordings this module matches on, each with the wording
+    // we turn it into: an upgrade of toml or serde that changes one fails
+    // here.
+
+    /// toml's and serde's message for `text` read as a part file, and our
+    /// diagnostic for it as printed.
+    fn reworded(text: &str) -> (String, String) {
+        let e = toml::from_str::<crate::model::raw::RawFile>(text)
+            .expect_err("the text is not a valid part file");
+        let ours = toml_error(&Source::new("t.toml", text), &e).to_string();
+        (e.message().to_string(), ours)
+    }
+
+    /// A part with `key = value` after its shape.
+    fn part_with(line: &str) -> String {
+        format!("[[part]]\nshape = \"box\"\n{line}\n")
+    }
+
+    #[test]
+    fn an_unknown_field_becomes_an_unknown_key_with_a_suggestion() {
+        let (upstream, ours) = reworded(&part_with("mas = 1"));
+        assert!(
+            upstream.starts_with("unknown field `mas`, expected one of `name`, `shape`, `mass`"),
+            "{upstream}"
+        );
+        assert!(
+            ours.starts_with("t.toml:3:1: error: unknown key `mas`\n"),
+            "{ours}"
+        );
+        assert!(ours.contains("did you mean `mass`?"), "{ours}");
+    }
+
+    #[test]
+    fn an_unknown_field_far_from_every_key_lists_the_valid_keys() {
+        let (upstream, ours) = reworded(&part_with("xyzzy = 1"));
+        assert!(
+            upstream.starts_with("unknown field `xyzzy`, expected one of `name`"),
+            "{upstream}"
+        );
+        assert!(ours.contains("error: unknown key `xyzzy`"), "{ours}");
+        assert!(
+            ours.contains("help: valid keys here: `name`, `shape`, `mass`, `density`"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_unknown_field_where_one_key_is_valid_suggests_that_key() {
+        // serde words a single valid key as "expected `k`", not "one of".
+        let (upstream, ours) = reworded("[materials]\nfoam = { densty = 1 }\n");
+        assert_eq!(upstream, "unknown field `densty`, expected `density`");
+        assert!(ours.contains("error: unknown key `densty`"), "{ours}");
+        assert!(ours.contains("did you mean `density`?"), "{ours}");
+    }
+
+    #[test]
+    fn a_missing_field_becomes_a_missing_key() {
+        let (upstream, ours) = reworded("[materials]\nfoam = {}\n");
+        assert_eq!(upstream, "missing field `density`");
+        assert!(
+            ours.starts_with("t.toml:2:8: error: missing key `density`\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_duplicate_key_is_named() {
+        let (upstream, ours) = reworded(&part_with("mass = 1\nmass = 2"));
+        assert!(upstream.starts_with("duplicate key"), "{upstream}");
+        assert!(
+            ours.starts_with("t.toml:4:1: error: duplicate key `mass`\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_map_of_the_wrong_type_is_called_a_table_and_its_key_named() {
+        let (upstream, ours) = reworded(&part_with("mass = { a = 1 }"));
+        assert!(
+            upstream.starts_with("invalid type: map, expected"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `mass` has the wrong type: table, expected a number"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_expected_sequence_is_called_an_array() {
+        let (upstream, ours) = reworded(&part_with("center = 1"));
+        assert!(upstream.ends_with("expected a sequence"), "{upstream}");
+        assert!(
+            ours.contains("error: `center` has the wrong type: integer `1`, expected an array\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_sequence_of_the_wrong_type_is_called_an_array() {
+        let (upstream, ours) = reworded("name = [1]\n");
+        assert!(
+            upstream.starts_with("invalid type: sequence, expected"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `name` has the wrong type: array, expected a string\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_expected_map_is_called_a_table() {
+        let (upstream, ours) = reworded("materials = 1\n");
+        assert!(upstream.ends_with("expected a map"), "{upstream}");
+        assert!(
+            ours.contains("error: `materials` has the wrong type: integer `1`, expected a table\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_expected_f64_is_called_a_number() {
+        let (upstream, ours) = reworded(&part_with("rotation = { quaternion = [\"a\", 0, 0, 0] }"));
+        assert!(upstream.ends_with("expected f64"), "{upstream}");
+        assert!(
+            ours.contains(
+                "error: `quaternion` has the wrong type: string \"a\", expected a number\n"
+            ),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_integer_beyond_64_bits_loses_as_i128_and_gets_a_help() {
+        let (upstream, ours) = reworded(&part_with("mass = 99999999999999999999"));
+        assert!(
+            upstream.starts_with("invalid type: integer `99999999999999999999` as i128,"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `mass` has the wrong type: integer `99999999999999999999`, expected a number"),
+            "{ours}"
+        );
+        assert!(!ours.contains("i128"), "{ours}");
+        assert!(ours.contains("help: a TOML integer is 64-bit"), "{ours}");
+    }
+
+    #[test]
+    fn a_date_of_the_wrong_type_is_called_a_date_time() {
+        // A date reaches serde as a map.
+        let (upstream, ours) = reworded(&part_with("mass = 1979-05-27"));
+        assert!(
+            upstream.starts_with("invalid type: map, expected"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `mass` has the wrong type: date-time, expected a number"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_too_deep_key_without_a_place_is_given_the_line_of_the_deepest_key() {
+        let text = format!("name = \"x\"\n{} = 1\n", vec!["a"; 100].join("."));
+        let e = toml::from_str::<crate::model::raw::RawFile>(&text).unwrap_err();
+        // toml gives no span for this one: the reason we find the line.
+        assert_eq!(e.span(), None);
+        let (upstream, ours) = reworded(&text);
+        assert!(upstream.contains("recursion limit"), "{upstream}");
+        assert!(
+            ours.starts_with("t.toml:2:1: error: this key nests tables too deeply\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_unquoted_quantity_gets_the_quoted_form_as_help() {
+        let (upstream, ours) = reworded(&part_with("mass = 1 kg # heavy"));
+        assert!(
+            upstream.starts_with("string values must be quoted"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("help: a number with a unit is written as a string: `mass = \"1 kg\"`"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn a_part_that_is_not_an_array_of_tables_gets_the_double_brackets_as_help() {
+        let (upstream, ours) = reworded("part = 1\n");
+        assert!(upstream.ends_with("expected a sequence"), "{upstream}");
+        assert!(
+            ours.contains("help: write each part as a `[[part]]` table (two brackets)"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn model_parse_words_toml_errors_through_this_module() {
+        let text = part_with("mas = 1");
+        let Err(d) = crate::model::Model::parse(&Source::new("t.toml", text.as_str())) else {
+            panic!("an unknown key is an error");
+        };
+        assert_eq!(d.message(), "unknown key `mas`");
+        assert_eq!(d.location(), Some("t.toml:3:1"));
     }
 }

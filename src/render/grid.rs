@@ -54,19 +54,27 @@ impl Cells {
 /// NOTE: the parts table has a row per part, 100,000 and more: through
 /// comfy-table (a `String` and several `Vec`s per cell and per line) it
 /// took 0.44 s for 100,000 parts, more than the rest of `report` after
-/// parsing; written here, 0.1 s. Tables with a line break in a cell
-/// (comfy-table splits those into lines) or a column wider than comfy-table
-/// measures (u16) still go through comfy-table.
+/// parsing; written here, 0.1 s. Tables with a line break in a cell or in
+/// the header (comfy-table splits those into lines) still go through
+/// comfy-table, and so do columns near the width comfy-table can hold:
+/// it keeps a column's width with its padding in a u16, which saturates at
+/// 65,535 (its borders come out shorter than its rows), and wraps wider
+/// content. Widths are unicode-width's `str::width`, as comfy-table's are
+/// (wide CJK characters 2, combining marks 0, an emoji ZWJ sequence or a
+/// flag 2, a tab 1): the same function, so the same columns, whatever a
+/// terminal makes of them.
 pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
     let n = header.len();
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
-    let mut multiline = false;
+    let mut multiline = header.iter().any(|h| h.contains('\n'));
     for (i, c) in cells.iter().enumerate() {
         multiline |= c.contains('\n');
         let w = &mut widths[i % n];
         *w = (*w).max(c.width());
     }
-    if multiline || widths.iter().any(|w| *w > usize::from(u16::MAX)) {
+    // comfy-table's width of a column: content, one space each side, in u16.
+    let too_wide = |w: &usize| w + 2 > usize::from(u16::MAX);
+    if multiline || widths.iter().any(too_wide) {
         let mut t = new_table();
         t.set_header(header.to_vec());
         let all: Vec<&str> = cells.iter().collect();
@@ -118,4 +126,291 @@ pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[
         row(out, &mut it.by_ref().take(n));
     }
     rule(out, ['└', '─', '┴', '┘']);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+
+    /// The table as comfy-table prints it: `new_table()`'s style, the
+    /// header, the rows, and `right[i]` aligning column i right; then the
+    /// newline `write_table` ends with.
+    fn comfy(header: &[&str], rows: &[Vec<&str>], right: &[bool]) -> String {
+        let mut t = new_table();
+        t.set_header(header.to_vec());
+        for row in rows {
+            t.add_row(row.clone());
+        }
+        for (column, r) in t.column_iter_mut().zip(right) {
+            if *r {
+                column.set_cell_alignment(CellAlignment::Right);
+            }
+        }
+        format!("{t}\n")
+    }
+
+    /// The same table through `write_table`.
+    fn written(header: &[&str], rows: &[Vec<&str>], right: &[bool]) -> String {
+        let header: Vec<String> = header.iter().map(|h| h.to_string()).collect();
+        let mut cells = Cells::with_capacity(rows.len() * header.len());
+        for cell in rows.iter().flatten() {
+            cells.text.push_str(cell);
+            cells.end();
+        }
+        let mut out = String::new();
+        write_table(&mut out, &header, &cells, right);
+        out
+    }
+
+    /// `write_table` prints, byte for byte, what comfy-table prints.
+    fn same_as_comfy_table(header: &[&str], rows: &[Vec<&str>], right: &[bool]) {
+        let ours = written(header, rows, right);
+        let theirs = comfy(header, rows, right);
+        if ours == theirs {
+            return;
+        }
+        let first = ours.lines().zip(theirs.lines()).position(|(a, b)| a != b);
+        let short = |text: &str| text.chars().take(200).collect::<String>();
+        let line = |text: &str| short(first.and_then(|i| text.lines().nth(i)).unwrap_or_default());
+        panic!(
+            "write_table differs from comfy-table for header {:?}, right {right:?}, {} rows \
+             (widest cell {} columns); first differing line {first:?}:\n  write_table: {:?}\n  comfy-table: {:?}\n\
+             write_table:\n{}\ncomfy-table:\n{}",
+            header.iter().map(|h| short(h)).collect::<Vec<_>>(),
+            rows.len(),
+            rows.iter().flatten().map(|c| c.width()).max().unwrap_or(0),
+            line(&ours),
+            line(&theirs),
+            short(&ours),
+            short(&theirs),
+        );
+    }
+
+    #[test]
+    fn an_ascii_table_prints_as_comfy_table_prints_it() {
+        same_as_comfy_table(
+            &["part", "shape", "mass [kg]", "x [m]"],
+            &[
+                vec!["base plate", "plate", "1.25", "-0.5"],
+                vec!["bolt", "rod", "0.012", "10"],
+                vec!["a much longer part name", "box", "100", "0"],
+            ],
+            &[false, false, true, true],
+        );
+    }
+
+    #[test]
+    fn wide_cjk_characters_take_two_columns_as_in_comfy_table() {
+        same_as_comfy_table(
+            &["部品", "質量"],
+            &[
+                vec!["底板", "1.5"],
+                vec!["ﾎﾞﾙﾄ", "２０"],
+                vec!["a", "漢字漢字漢字"],
+            ],
+            &[false, true],
+        );
+    }
+
+    #[test]
+    fn combining_marks_take_no_column_as_in_comfy_table() {
+        same_as_comfy_table(
+            &["name", "n"],
+            &[
+                vec!["e\u{301}", "1"],
+                vec!["cafe\u{301} cre\u{300}me", "2"],
+                vec!["a\u{301}\u{302}\u{303}\u{304}", "3"],
+                vec!["\u{301}", "4"],
+            ],
+            &[false, true],
+        );
+    }
+
+    #[test]
+    fn emoji_take_the_columns_comfy_table_gives_them() {
+        // A crab; a ZWJ sequence (woman scientist) and a family; a flag
+        // (two regional indicators) and a lone regional indicator; an emoji
+        // with a skin-tone modifier; a heart with and without the emoji
+        // variation selector; a keycap.
+        let emoji = [
+            "🦀",
+            "👩\u{200d}🔬",
+            "👨\u{200d}👩\u{200d}👧\u{200d}👦",
+            "🇫🇷",
+            "🇫",
+            "👍🏽",
+            "❤\u{fe0f}",
+            "❤",
+            "1\u{fe0f}\u{20e3}",
+        ];
+        let rows: Vec<Vec<&str>> = emoji.iter().map(|e| vec![*e, *e, "x"]).collect();
+        same_as_comfy_table(&["left", "right", "x"], &rows, &[false, true, false]);
+    }
+
+    #[test]
+    fn tabs_count_as_unicode_width_counts_them_as_in_comfy_table() {
+        same_as_comfy_table(
+            &["a\tb", "c"],
+            &[vec!["\t", "x\ty"], vec!["1", "\t\t"]],
+            &[false, true],
+        );
+    }
+
+    #[test]
+    fn empty_cells_and_headers_make_columns_one_wide_as_in_comfy_table() {
+        same_as_comfy_table(
+            &["", "b", ""],
+            &[vec!["", "", ""], vec!["", "x", ""]],
+            &[false, true, true],
+        );
+    }
+
+    #[test]
+    fn a_header_without_rows_prints_as_in_comfy_table() {
+        same_as_comfy_table(&["part", "mass"], &[], &[false, true]);
+    }
+
+    #[test]
+    fn a_single_column_prints_as_in_comfy_table() {
+        same_as_comfy_table(&["only"], &[vec!["1"], vec!["22"], vec![""]], &[true]);
+        same_as_comfy_table(&["only"], &[vec!["1"], vec!["22"]], &[false]);
+    }
+
+    #[test]
+    fn a_multi_line_cell_goes_through_comfy_table() {
+        same_as_comfy_table(
+            &["part", "mass"],
+            &[vec!["two\nlines", "1"], vec!["one", "2\n3\n4"]],
+            &[false, true],
+        );
+    }
+
+    #[test]
+    fn control_and_zero_width_characters_print_as_in_comfy_table() {
+        same_as_comfy_table(
+            &["a", "b"],
+            &[
+                vec!["\r", "x\u{200b}y"],
+                vec!["\u{1b}[1m", "\u{ad}"],
+                vec!["\u{feff}", "\u{0}"],
+            ],
+            &[false, true],
+        );
+    }
+
+    #[test]
+    fn a_line_break_in_the_header_goes_through_comfy_table() {
+        same_as_comfy_table(&["mass\n[kg]", "n"], &[vec!["1", "2"]], &[true, false]);
+        same_as_comfy_table(&["mass\n[kg]", "n"], &[], &[true, false]);
+    }
+
+    #[test]
+    fn columns_near_comfy_tables_u16_width_limit_print_as_in_comfy_table() {
+        // comfy-table keeps widths in u16: a column's width with its padding
+        // saturates at 65,535, and wider content is wrapped.
+        for width in [65_532, 65_533, 65_534, 65_535, 65_536] {
+            let wide = "a".repeat(width);
+            same_as_comfy_table(&["wide", "n"], &[vec![&wide, "1"]], &[false, true]);
+        }
+    }
+
+    #[test]
+    fn widths_are_what_the_note_on_write_table_says() {
+        assert_eq!("漢".width(), 2);
+        assert_eq!("e\u{301}".width(), 1);
+        assert_eq!("👩\u{200d}🔬".width(), 2);
+        assert_eq!("🇫🇷".width(), 2);
+        assert_eq!("\t".width(), 1);
+    }
+
+    /// Pieces of cells: ASCII, wide CJK, combining marks, emoji (ZWJ
+    /// sequences, flags, modifiers, variation selectors), tabs, control
+    /// and zero-width characters.
+    const PIECES: &[&str] = &[
+        "a",
+        "mass",
+        "1.25e-3",
+        " ",
+        "-",
+        "漢",
+        "字",
+        "ﾎ",
+        "Ｈ",
+        "e\u{301}",
+        "\u{301}",
+        "\u{20e3}",
+        "🦀",
+        "👩\u{200d}🔬",
+        "👨\u{200d}👩\u{200d}👧",
+        "\u{200d}",
+        "🇫🇷",
+        "🇫",
+        "👍🏽",
+        "🏽",
+        "❤\u{fe0f}",
+        "❤",
+        "\u{fe0f}",
+        "\t",
+        "\r",
+        "\u{1b}",
+        "\u{0}",
+        "\u{200b}",
+        "\u{ad}",
+        "\u{feff}",
+    ];
+
+    /// A cell: a few pieces, sometimes any character at all, rarely a
+    /// line break (which sends the table through comfy-table).
+    fn cell() -> impl Strategy<Value = String> {
+        let piece = prop_oneof![
+            40 => prop::sample::select(PIECES).prop_map(str::to_string),
+            4 => any::<char>().prop_map(String::from),
+            1 => Just("\n".to_string()),
+        ];
+        prop::collection::vec(piece, 0..5).prop_map(|p| p.concat())
+    }
+
+    /// A header, rows of as many cells, and the right-aligned columns.
+    fn table() -> impl Strategy<Value = (Vec<String>, Vec<Vec<String>>, Vec<bool>)> {
+        (1..=4usize).prop_flat_map(|n| {
+            (
+                prop::collection::vec(cell(), n),
+                prop::collection::vec(prop::collection::vec(cell(), n), 0..6),
+                prop::collection::vec(any::<bool>(), n),
+            )
+        })
+    }
+
+    #[test]
+    fn random_tables_print_as_comfy_table_prints_them() {
+        let mut config = Config::with_cases(1000);
+        config.failure_persistence = None;
+        config.rng_algorithm = RngAlgorithm::ChaCha;
+        let mut runner =
+            TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+        let written_here = std::cell::Cell::new(0);
+        runner
+            .run(&table(), |(header, rows, right)| {
+                let header: Vec<&str> = header.iter().map(String::as_str).collect();
+                let rows: Vec<Vec<&str>> = rows
+                    .iter()
+                    .map(|r| r.iter().map(String::as_str).collect())
+                    .collect();
+                let lines = header.iter().chain(rows.iter().flatten());
+                let one_line = !lines.clone().any(|c| c.contains('\n'));
+                written_here.set(written_here.get() + usize::from(one_line));
+                same_as_comfy_table(&header, &rows, &right);
+                Ok(())
+            })
+            .unwrap();
+        // Most tables must take the hand-written path, not the fallback.
+        let written_here = written_here.get();
+        println!("{written_here} of 1000 random tables written by write_table itself");
+        assert!(
+            written_here >= 500,
+            "{written_here} of 1000 tables written here"
+        );
+    }
 }

@@ -2,7 +2,9 @@
 //! process through `report` (JSON in both precision modes, and the table)
 //! and `check`. Whatever the file, massprop must not panic or hang, and
 //! must either print finite results (status 0) or give a diagnostic
-//! (status 2) that names the file.
+//! (status 2) that names the file. And wherever the fast path
+//! (`model::fast::parse`) reads a file, serde (`toml::from_str::<RawFile>`)
+//! must read it too, to the same values and spans.
 //!
 //! - generated files: every shape, with keys and values drawn from lists
 //!   rich in extremes (0, -0.0, subnormals, 1e308, f64::MAX, nan, inf,
@@ -10,18 +12,22 @@
 //!   form with extreme angles, cut-outs, materials, `[analysis]`;
 //! - mutations of the example files in shapes/: lines deleted or
 //!   duplicated, numbers replaced by extremes, truncation at any byte,
-//!   TOML punctuation and unicode inserted.
+//!   TOML punctuation and unicode inserted (and, for the fast path only,
+//!   the same mutations of the examples without their `[expect]`);
+//! - files written for the fast path: no `[expect]`, every key it reads,
+//!   in every spelling and layout TOML allows.
 //!
 //! Deterministic (fixed ChaCha seed, no persistence), as in invariants.rs.
 
 use clap::Parser;
 use massprop::cli::Cli;
+use massprop::model::{fast, raw::RawFile};
 use massprop::{Output, diag::Diagnostic};
 use proptest::prelude::*;
 use proptest::sample::Index;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use serde_json::Value;
-use std::cell::RefCell;
+use std::cell::{Cell, RefCell};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::Duration;
@@ -261,7 +267,8 @@ fn hostile_file(dir: &Path, file: &str, text: &[u8]) -> Result<bool, String> {
 }
 
 /// Run `cases` inputs from `strategy` through `body`, deterministically;
-/// fail with the smallest failing input proptest finds.
+/// fail with the smallest failing input proptest finds. Returns the number
+/// of cases run.
 ///
 /// For a deeper local search: `HOSTILE_CASES=N` runs N cases instead, and
 /// `HOSTILE_KEEP_GOING=1` reports every failing case (unshrunk) at the end
@@ -271,7 +278,8 @@ fn property<S: Strategy>(
     cases: u32,
     strategy: S,
     body: impl Fn(&S::Value) -> Result<bool, String>,
-) where
+) -> u32
+where
     S::Value: std::fmt::Debug,
 {
     let cases = std::env::var("HOSTILE_CASES")
@@ -318,6 +326,7 @@ fn property<S: Strategy>(
             failures.join("\n\n")
         );
     }
+    cases
 }
 
 // ---------------------------------------------------------------------------
@@ -822,10 +831,681 @@ fn part_file() -> BoxedStrategy<String> {
 #[test]
 fn generated_part_files_give_finite_results_or_diagnostics() {
     let dir = crate::common::scratch("hostile", "generated");
-    property("generated", GENERATED, part_file(), |text| {
-        hostile_file(&dir, "generated.toml", text.as_bytes())
+    let taken = Cell::new(0);
+    let cases = property("generated", GENERATED, part_file(), |text| {
+        fast_path_checked(&taken, text.as_bytes())
+            .and_then(|()| hostile_file(&dir, "generated.toml", text.as_bytes()))
             .map_err(|e| format!("{e}\n--- input ---\n{text}"))
     });
+    let taken = taken.get();
+    println!("property generated: the fast path took {taken} of {cases} files");
+}
+
+// ---------------------------------------------------------------------------
+// The fast path (src/model/fast.rs) reads files as serde does
+
+/// Files written for the fast path.
+const FAST: u32 = 400;
+
+/// Where `fast::parse` takes `text` (returns `Some`), `toml::from_str::<RawFile>`
+/// must accept it too and give the same result, values and spans alike,
+/// as fast.rs promises. Compared through `Debug`, as fast.rs's own tests
+/// do: `RawFile` is not `PartialEq`. Ok(true) if the fast path took it.
+///
+/// NOTE: `Debug` prints every NaN as `NaN`, so a NaN's sign is not
+/// compared; both sides get it from `str::parse::<f64>` of the same
+/// decoded text.
+fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
+    let Ok(text) = std::str::from_utf8(text) else {
+        return Ok(false);
+    };
+    let Some(fast) = fast::parse(text) else {
+        return Ok(false);
+    };
+    let serde = toml::from_str::<RawFile>(text)
+        .map_err(|e| format!("the fast path reads a file that serde rejects: {e}"))?;
+    let (fast, serde) = (format!("{fast:#?}"), format!("{serde:#?}"));
+    if fast == serde {
+        return Ok(true);
+    }
+    let at = fast
+        .lines()
+        .zip(serde.lines())
+        .position(|(a, b)| a != b)
+        .unwrap_or_else(|| fast.lines().count().min(serde.lines().count()));
+    let around = |t: &str| {
+        let lines: Vec<&str> = t.lines().skip(at.saturating_sub(10)).take(14).collect();
+        lines.join("\n")
+    };
+    Err(format!(
+        "the fast path and serde differ at line {at} of their Debug:\n\
+         --- fast ---\n{}\n--- serde ---\n{}",
+        around(&fast),
+        around(&serde)
+    ))
+}
+
+/// `fast_path_agrees`, counting in `taken` the files the fast path took.
+fn fast_path_checked(taken: &Cell<u32>, text: &[u8]) -> Result<(), String> {
+    if fast_path_agrees(text)? {
+        taken.set(taken.get() + 1);
+    }
+    Ok(())
+}
+
+/// Numbers in TOML's spellings: signs, underscores, exponents, radixes.
+const SPELLED: &[&str] = &[
+    "1",
+    "+1",
+    "2",
+    "3",
+    "0.5",
+    "+0.5",
+    "5e-1",
+    "5E-1",
+    "0.5e+0",
+    "1_0",
+    "1_000.5",
+    "2.5_5",
+    "0x1",
+    "0x0A",
+    "0xdead_BEEF",
+    "0o7",
+    "0o1_0",
+    "0b1",
+    "0b1_0",
+    "1e0",
+    "1.0",
+    "0.001",
+    "7e-3",
+    "100",
+    "0.25",
+    "1e1_0",
+];
+
+/// Zero and below: valid only as coordinates.
+const SIGNED: &[&str] = &[
+    "-1", "-0.5", "-0", "+0", "-0.0", "0", "-1e-3", "-2_5", "0.0",
+];
+
+/// Numbers at the edges of what TOML and the fast path read: i64 and u64
+/// limits in every radix, beyond them, overflow and underflow, inf, nan.
+const EDGES: &[&str] = &[
+    "9223372036854775807",
+    "9223372036854775808",
+    "18446744073709551615",
+    "18446744073709551616",
+    "-9223372036854775808",
+    "-9223372036854775809",
+    "0x7fffffffffffffff",
+    "0xffffffffffffffff",
+    "0x1_0000_0000_0000_0000",
+    "0o777777777777777777777",
+    "0o1777777777777777777777",
+    "0b111111111111111111111111111111111111111111111111111111111111111",
+    "0b1111111111111111111111111111111111111111111111111111111111111111",
+    "1e-400",
+    "5e-324",
+    "1.7976931348623157e308",
+    "1e309",
+    "inf",
+    "+inf",
+    "-inf",
+    "nan",
+    "+nan",
+    "-nan",
+];
+
+/// Quantities as strings in every kind of TOML string, with escapes.
+const TEXTS: &[&str] = &[
+    "\"3 mm\"",
+    "'3 mm'",
+    "\"\"\"3 mm\"\"\"",
+    "'''3 mm'''",
+    "\"\\u0033 mm\"",
+    "\"\\U00000033 mm\"",
+    "\"\\x33 mm\"",
+    "\"3\\tmm\"",
+    "\"\"\"\n3 mm\"\"\"",
+    "\"\"\"3 \\\n    mm\"\"\"",
+    "'''\n3 mm'''",
+    "\"2 µm\"",
+    "\"2 \\u00b5m\"",
+    "\"7.85 g/cm^3\"",
+    "\"70 kg/m^2\"",
+    "\"40 g/m\"",
+    "\"1 in\"",
+    "\"5 rpm\"",
+    "\"\"",
+];
+
+/// Names: every kind of string, escapes, unicode.
+const NAMES: &[&str] = &[
+    "\"bracket\"",
+    "'C:\\parts\\bracket'",
+    "\"é\"",
+    "\"\\u00e9\"",
+    "\"\\U0001F980 crab\"",
+    "\"tab\\there\"",
+    "\"quote \\\" inside\"",
+    "\"back\\\\slash\"",
+    "\"\\e[1m bold\"",
+    "\"\"\"two\nlines\"\"\"",
+    "'''lit\nlines'''",
+    "\"\"\"\\\n    joined\"\"\"",
+    "\"#not a comment\"",
+    "\"e\u{301} \u{2014} 漢字 🇫🇷\"",
+    "\"\"",
+];
+
+/// Comments after a value or header: unicode, and text that looks like
+/// TOML or like `[expect]`.
+const COMMENTS: &[&str] = &[
+    "# c",
+    "#",
+    "# é — e\u{301}",
+    "#[[part]]",
+    "# expect 2 kg",
+    "#\ttab",
+    "# = [1, 2]",
+];
+
+/// What goes on a line above a key: a blank line or a comment.
+const ABOVE: &[&str] = &["", "# a comment", "\t# indented", "# é — 漢字", "# expect"];
+
+/// Spacing where TOML allows it.
+const SPACES: &[&str] = &["", " ", " ", " ", "  ", "\t", " \t "];
+
+/// How one key/value pair is written.
+#[derive(Clone, Debug)]
+struct Look {
+    /// 0..=7 bare, 8 quoted, 9 literal, 10 every letter a `\u` escape,
+    /// 11 the first letter a `\U` escape.
+    key: u8,
+    indent: &'static str,
+    before: &'static str,
+    after: &'static str,
+    /// An array's or inline table's layout: 0..=3 plain, 4 spaced, 5 a
+    /// trailing comma, 6 one item a line, 7 that with comments.
+    layout: u8,
+    comment: Option<&'static str>,
+    above: Option<&'static str>,
+}
+
+fn look() -> impl Strategy<Value = Look> {
+    (
+        0..12u8,
+        prop_oneof![6 => Just(""), 1 => prop::sample::select(SPACES)],
+        prop::sample::select(SPACES),
+        prop::sample::select(SPACES),
+        0..8u8,
+        prop::option::weighted(0.15, prop::sample::select(COMMENTS)),
+        prop::option::weighted(0.1, prop::sample::select(ABOVE)),
+    )
+        .prop_map(
+            |(key, indent, before, after, layout, comment, above)| Look {
+                key,
+                indent,
+                before,
+                after,
+                layout,
+                comment,
+                above,
+            },
+        )
+}
+
+/// Hands out the looks of a file's lines in turn.
+struct Looks<'a>(std::iter::Cycle<std::slice::Iter<'a, Look>>);
+
+impl Looks<'_> {
+    fn next(&mut self) -> &Look {
+        self.0.next().expect("a file has at least one look")
+    }
+}
+
+/// A key as `look` spells it.
+fn spell(key: &str, look: &Look) -> String {
+    match look.key {
+        8 => format!("\"{key}\""),
+        9 => format!("'{key}'"),
+        10 => {
+            let escaped: String = key
+                .chars()
+                .map(|c| format!("\\u{:04x}", u32::from(c)))
+                .collect();
+            format!("\"{escaped}\"")
+        }
+        11 => {
+            let mut chars = key.chars();
+            let first = chars.next().map_or(0, u32::from);
+            format!("\"\\U{first:08X}{}\"", chars.as_str())
+        }
+        _ => key.to_string(),
+    }
+}
+
+/// `[a, b, c]` laid out as `look` says (nested arrays plainly).
+fn array(items: &[String], look: &Look) -> String {
+    let sp = look.after;
+    match look.layout {
+        4 => format!("[{sp}{}{sp}]", items.join(&format!("{sp},{sp}"))),
+        5 => format!("[{},{sp}]", items.join(",")),
+        6 => format!(
+            "[\n{}]",
+            items
+                .iter()
+                .map(|i| format!("  {i},\n"))
+                .collect::<String>()
+        ),
+        7 => {
+            let lines: Vec<String> = items
+                .iter()
+                .enumerate()
+                .map(|(n, i)| {
+                    format!(
+                        "  {i}{} # item {n}\n",
+                        if n + 1 < items.len() { "," } else { "" }
+                    )
+                })
+                .collect();
+            format!("[ # opening\n{}\n  # before the end\n]", lines.concat())
+        }
+        _ => format!("[{}]", items.join(", ")),
+    }
+}
+
+/// `{ k = v, … }` laid out as `look` says; TOML 1.1 lets it span lines.
+fn inline_table(entries: &[(&str, String)], look: &Look) -> String {
+    let (sp, b, a) = (look.after, look.before, look.after);
+    let pairs: Vec<String> = entries
+        .iter()
+        .map(|(k, v)| format!("{}{b}={a}{v}", spell(k, look)))
+        .collect();
+    match look.layout {
+        4 => format!("{{{sp}{}{sp}}}", pairs.join(&format!("{sp},{sp}"))),
+        5 => format!("{{{}}}", pairs.join(",")),
+        6 | 7 => format!(
+            "{{\n{}}}",
+            pairs
+                .iter()
+                .map(|p| format!("  {p},\n"))
+                .collect::<String>()
+        ),
+        _ if pairs.is_empty() => "{}".to_string(),
+        _ => format!("{{ {} }}", pairs.join(", ")),
+    }
+}
+
+/// `key = value` as `look` writes it, with what goes above it.
+fn pair(key: &str, value: &str, look: &Look) -> String {
+    let above = look.above.map(|a| format!("{a}\n")).unwrap_or_default();
+    let comment = look.comment.map(|c| format!(" {c}")).unwrap_or_default();
+    format!(
+        "{above}{}{}{}={}{value}{comment}",
+        look.indent,
+        spell(key, look),
+        look.before,
+        look.after
+    )
+}
+
+/// A number in one of TOML's spellings: at level 0 a positive one, at
+/// level 1 sometimes zero, negative or an edge case.
+fn spelled_number(l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        30 => prop::sample::select(SPELLED).prop_map(str::to_string),
+        3 * l => prop::sample::select(SIGNED).prop_map(str::to_string),
+        2 * l => prop::sample::select(EDGES).prop_map(str::to_string),
+    ]
+    .boxed()
+}
+
+/// A quantity: a number, or (at level 1) a string with a unit.
+fn spelled_quantity(l: u32) -> BoxedStrategy<String> {
+    prop_oneof![
+        5 => spelled_number(l),
+        l => prop::sample::select(TEXTS).prop_map(str::to_string),
+    ]
+    .boxed()
+}
+
+/// The values a part may use, drawn once per part.
+#[derive(Clone, Debug)]
+struct PartValues {
+    shape: &'static str,
+    /// 0 the shape spelled `"box"`, 1 `'box'`, 2 with a `\u` escape, 3
+    /// multi-line.
+    shape_spelling: u8,
+    name: Option<&'static str>,
+    by_mass: bool,
+    by_edges: bool,
+    scalars: Vec<String>,
+    vectors: Vec<Vec<String>>,
+    edges: Vec<Vec<String>>,
+    rotation: Option<RotationValues>,
+    optional: Vec<bool>,
+}
+
+/// A rotation's values: its form (0 quaternion, 1 axis and angle, 2
+/// matrix, 3 Euler angles), nine numbers, three angles, an Euler sequence,
+/// and whether its keys come in reverse order (and Euler angles are
+/// extrinsic).
+#[derive(Clone, Debug)]
+struct RotationValues {
+    form: u8,
+    numbers: Vec<String>,
+    angles: Vec<String>,
+    sequence: &'static str,
+    reversed: bool,
+}
+
+fn part_values(l: u32) -> impl Strategy<Value = PartValues> {
+    let shapes = ["box", "plate", "rod", "cylinder", "disk", "sphere", "point"];
+    let rotation = (
+        0..4u8,
+        prop::collection::vec(spelled_number(l), 9),
+        prop::collection::vec(spelled_number(l), 3),
+        prop::sample::select(vec!["zyx", "xyz", "zxz", "yzy"]),
+        any::<bool>(),
+    )
+        .prop_map(
+            |(form, numbers, angles, sequence, reversed)| RotationValues {
+                form,
+                numbers,
+                angles,
+                sequence,
+                reversed,
+            },
+        );
+    (
+        (prop::sample::select(shapes.to_vec()), 0..4u8),
+        prop::option::weighted(0.6, prop::sample::select(NAMES)),
+        (any::<bool>(), any::<bool>()),
+        prop::collection::vec(spelled_quantity(l), 6),
+        prop::collection::vec(prop::collection::vec(spelled_quantity(l), 3), 5),
+        prop::collection::vec(prop::collection::vec(spelled_quantity(l), 3), 3),
+        prop::option::weighted(0.6, rotation),
+        prop::collection::vec(any::<bool>(), 4),
+    )
+        .prop_map(
+            |(
+                (shape, shape_spelling),
+                name,
+                (by_mass, by_edges),
+                scalars,
+                vectors,
+                edges,
+                rotation,
+                optional,
+            )| {
+                PartValues {
+                    shape,
+                    shape_spelling,
+                    name,
+                    by_mass,
+                    by_edges,
+                    scalars,
+                    vectors,
+                    edges,
+                    rotation,
+                    optional,
+                }
+            },
+        )
+}
+
+/// `rotation = {…}` in one of its forms, keys in either order.
+fn rotation_value(r: &RotationValues, look: &Look) -> String {
+    let RotationValues {
+        form,
+        numbers,
+        angles,
+        sequence,
+        reversed,
+    } = r;
+    let plain = Look {
+        layout: 0,
+        ..look.clone()
+    };
+    let mut entries: Vec<(&str, String)> = match form {
+        0 => vec![("quaternion", array(&numbers[..4], look))],
+        1 => vec![
+            ("axis", array(&numbers[..3], look)),
+            ("degrees", angles[0].clone()),
+        ],
+        2 => {
+            let rows: Vec<String> = numbers.chunks(3).map(|row| array(row, &plain)).collect();
+            vec![("matrix", array(&rows, look))]
+        }
+        _ => {
+            let which = if *reversed { "extrinsic" } else { "intrinsic" };
+            vec![
+                (which, format!("\"{sequence}\"")),
+                ("degrees", array(angles, &plain)),
+            ]
+        }
+    };
+    if *reversed {
+        entries.reverse();
+    }
+    inline_table(&entries, look)
+}
+
+/// One `[[part]]` of any shape, with the keys the fast path reads.
+fn fast_part(v: &PartValues, looks: &mut Looks) -> String {
+    let header = [
+        "[[part]]",
+        "[[ part ]]",
+        "[[\"part\"]]",
+        "[[ 'part' ]]",
+        "\t[[part]]",
+    ];
+    let l = looks.next();
+    let mut lines = vec![
+        header[usize::from(l.key) % header.len()].to_string()
+            + &l.comment.map(|c| format!(" {c}")).unwrap_or_default(),
+    ];
+    let mut push = |key: &str, value: String, looks: &mut Looks| {
+        let l = looks.next();
+        lines.push(pair(key, &value, l));
+    };
+    let s = v.shape;
+    let shape = match v.shape_spelling {
+        0 => format!("\"{s}\""),
+        1 => format!("'{s}'"),
+        2 => format!("\"\\u{:04X}{}\"", u32::from(s.as_bytes()[0]), &s[1..]),
+        _ => format!("\"\"\"{s}\"\"\""),
+    };
+    if let Some(n) = v.name {
+        push("name", n.to_string(), looks);
+    }
+    push("shape", shape, looks);
+    let amount = match (s, v.by_mass) {
+        ("point", _) | (_, true) => "mass",
+        ("box" | "cylinder" | "sphere", false) => "density",
+        ("plate" | "disk", false) => "areal_density",
+        _ => "linear_density",
+    };
+    push(amount, v.scalars[0].clone(), looks);
+    let vector = |i: usize, n: usize, looks: &mut Looks| array(&v.vectors[i][..n], looks.next());
+    let edges = |n: usize, looks: &mut Looks| {
+        let plain = Look {
+            layout: 0,
+            ..looks.next().clone()
+        };
+        let rows: Vec<String> = v.edges[..n].iter().map(|e| array(e, &plain)).collect();
+        array(&rows, looks.next())
+    };
+    let by_edges = v.by_edges && matches!(s, "box" | "plate" | "rod");
+    let mut centred = !by_edges;
+    match s {
+        "box" | "plate" if by_edges => {
+            let c = vector(0, 3, looks);
+            push("corner", c, looks);
+            let e = edges(if s == "box" { 3 } else { 2 }, looks);
+            push("edges", e, looks);
+        }
+        "box" => {
+            let size = vector(1, 3, looks);
+            push("size", size, looks);
+        }
+        "plate" => {
+            let size = vector(1, 2, looks);
+            push("size", size, looks);
+        }
+        "rod" if by_edges => {
+            let (from, to) = (vector(2, 3, looks), vector(3, 3, looks));
+            push("from", from, looks);
+            push("to", to, looks);
+        }
+        "rod" => push("length", v.scalars[1].clone(), looks),
+        "cylinder" | "disk" | "sphere" => {
+            push("radius", v.scalars[2].clone(), looks);
+            if v.optional[0] {
+                push("inner_radius", v.scalars[3].clone(), looks);
+            }
+            if s == "cylinder" {
+                push("length", v.scalars[1].clone(), looks);
+            }
+        }
+        _ => centred = true,
+    }
+    if centred {
+        let c = vector(4, 3, looks);
+        push("center", c, looks);
+        if let Some(r) = v.rotation.as_ref().filter(|_| s != "point") {
+            let value = rotation_value(r, looks.next());
+            push("rotation", value, looks);
+        }
+    }
+    match s {
+        "plate" if v.optional[1] => push("thickness", v.scalars[4].clone(), looks),
+        "rod" if v.optional[1] => push("diameter", v.scalars[5].clone(), looks),
+        _ => {}
+    }
+    lines.join("\n")
+}
+
+/// A part file the fast path should read: no `[expect]`, every key it
+/// reads, in every spelling and layout TOML allows (spacing, comments,
+/// CRLF, quoted and escaped keys, escapes in strings, integer radixes),
+/// `[units]` inline or as a table, tables in any order. Level 0: positive
+/// numbers only, so that some files reach the arithmetic; level 1: zero,
+/// negative and edge numbers, quantities with units.
+fn fast_path_file() -> BoxedStrategy<String> {
+    (0..2u32).prop_flat_map(fast_path_file_at).boxed()
+}
+
+fn fast_path_file_at(l: u32) -> BoxedStrategy<String> {
+    let units = (
+        prop::sample::select(vec!["\"mm\"", "'m'", "\"in\"", "\"\\u00b5m\"", "\"ft\""]),
+        prop::sample::select(vec!["\"kg\"", "'g'", "\"lb\"", "\"\\u006Bg\""]),
+        0..4u8,
+    );
+    let analysis = (
+        prop::collection::vec(prop::collection::vec(spelled_quantity(l), 3), 3),
+        prop::collection::vec(any::<bool>(), 3),
+    );
+    (
+        (
+            prop::option::weighted(0.6, prop::sample::select(NAMES)),
+            prop::option::weighted(0.6, units),
+            prop::option::weighted(0.4, analysis),
+        ),
+        prop::collection::vec(part_values(l), 1..=4),
+        prop::collection::vec(look(), 24),
+        (
+            0..3u8,
+            prop::bool::weighted(0.05),
+            any::<prop::sample::Index>(),
+        ),
+    )
+        .prop_map(
+            |((name, units, analysis), parts, looks, (newline, bom, order))| {
+                let mut looks = Looks(looks.iter().cycle());
+                let mut top = Vec::new();
+                let mut tables = Vec::new();
+                if bom {
+                    top.push("\u{feff}# with a byte-order mark".to_string());
+                }
+                if let Some(n) = name {
+                    top.push(pair("name", n, looks.next()));
+                }
+                if let Some((length, mass, how)) = units {
+                    let entries = match how {
+                        0 => vec![("length", length.to_string())],
+                        1 => vec![("mass", mass.to_string())],
+                        _ => vec![("length", length.to_string()), ("mass", mass.to_string())],
+                    };
+                    if how == 3 {
+                        let header = ["[units]", "[ units ]", "[\"units\"]"];
+                        let mut t = vec![header[usize::from(looks.next().key) % 3].to_string()];
+                        for (k, v) in &entries {
+                            t.push(pair(k, v, looks.next()));
+                        }
+                        tables.push(t.join("\n"));
+                    } else {
+                        let value = inline_table(&entries, looks.next());
+                        top.push(pair("units", &value, looks.next()));
+                    }
+                }
+                if let Some((vectors, present)) = analysis {
+                    let header = ["[analysis]", "[ analysis ]", "['analysis'] # motion"];
+                    let mut t = vec![header[usize::from(looks.next().key) % 3].to_string()];
+                    for ((k, v), on) in ["about", "omega", "alpha"]
+                        .iter()
+                        .zip(&vectors)
+                        .zip(&present)
+                    {
+                        if *on {
+                            let value = array(v, looks.next());
+                            t.push(pair(k, &value, looks.next()));
+                        }
+                    }
+                    tables.push(t.join("\n"));
+                }
+                // `[units]` and `[analysis]` anywhere among the parts.
+                let mut all: Vec<String> = parts.iter().map(|p| fast_part(p, &mut looks)).collect();
+                for t in tables {
+                    all.insert(order.index(all.len() + 1), t);
+                }
+                let text = top.into_iter().chain(all).collect::<Vec<_>>().join("\n\n") + "\n";
+                match newline {
+                    0 => text,
+                    1 => text.replace('\n', "\r\n"),
+                    // Every other line ends in CRLF.
+                    _ => text
+                        .split_inclusive('\n')
+                        .enumerate()
+                        .map(|(i, l)| match l.strip_suffix('\n') {
+                            Some(l) if i % 2 == 0 => format!("{l}\r\n"),
+                            _ => l.to_string(),
+                        })
+                        .collect(),
+                }
+            },
+        )
+        .boxed()
+}
+
+#[test]
+fn the_fast_path_reads_part_files_as_serde_reads_them() {
+    let dir = crate::common::scratch("hostile", "fast");
+    let taken = Cell::new(0);
+    let cases = property("fast path", FAST, fast_path_file(), |text| {
+        fast_path_checked(&taken, text.as_bytes())
+            .and_then(|()| hostile_file(&dir, "fast.toml", text.as_bytes()))
+            .map_err(|e| format!("{e}\n--- input ---\n{text}"))
+    });
+    let taken = taken.get();
+    println!("property fast path: the fast path took {taken} of {cases} files");
+    // The files are written for the fast path: most must take it, or the
+    // comparison tests nothing.
+    assert!(
+        taken * 100 >= cases * 60,
+        "the fast path took only {taken} of {cases} files written for it"
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -1003,8 +1683,13 @@ fn mutated_example_files_give_finite_results_or_diagnostics() {
         .iter()
         .position(|f| *f == "motor-bracket.toml")
         .unwrap();
+    // The fast path leaves files with `[expect]` (every example) to serde:
+    // the same mutations of the examples without it are hostile text for
+    // the fast path.
+    let bare: Vec<Vec<u8>> = originals.iter().map(|t| without_expect(t)).collect();
+    let (taken, bare_taken) = (Cell::new(0), Cell::new(0));
     let strategy = (0..EXAMPLES.len(), prop::collection::vec(mutation(), 1..=3));
-    property("mutated", MUTATED, strategy, |(which, mutations)| {
+    let cases = property("mutated", MUTATED, strategy, |(which, mutations)| {
         let text = mutations
             .iter()
             .fold(originals[*which].clone(), |t, m| apply(&t, m));
@@ -1015,6 +1700,17 @@ fn mutated_example_files_give_finite_results_or_diagnostics() {
                 String::from_utf8_lossy(&text)
             )
         };
+        fast_path_checked(&taken, &text).map_err(context)?;
+        let bare_text = mutations
+            .iter()
+            .fold(bare[*which].clone(), |t, m| apply(&t, m));
+        fast_path_checked(&bare_taken, &bare_text).map_err(|e| {
+            format!(
+                "{e}\n--- {} without [expect], with {mutations:?} ---\n{}",
+                EXAMPLES[*which],
+                String::from_utf8_lossy(&bare_text)
+            )
+        })?;
         let computed = hostile_file(&dir, "mutant.toml", &text).map_err(context)?;
         if EXAMPLES[*which] != "motor-bracket.toml" {
             return Ok(computed);
@@ -1027,6 +1723,27 @@ fn mutated_example_files_give_finite_results_or_diagnostics() {
         std::fs::write(&bracket, &originals[bracket_index]).unwrap();
         Ok(computed | arm?)
     });
+    let (taken, bare_taken) = (taken.get(), bare_taken.get());
+    println!(
+        "property mutated: the fast path took {taken} of {cases} mutants, \
+         {bare_taken} of them without [expect]"
+    );
+    // Without `[expect]`, the examples' parts are the fast path's (most of
+    // them): the comparison must have been made often.
+    assert!(
+        bare_taken * 100 >= cases * 25,
+        "the fast path took only {bare_taken} of {cases} mutants without [expect]"
+    );
+}
+
+/// `text` up to its `[expect]` table.
+fn without_expect(text: &[u8]) -> Vec<u8> {
+    let s = std::str::from_utf8(text).expect("the examples are UTF-8");
+    let end = line_starts(s)
+        .into_iter()
+        .find(|(_, l)| l.trim_start().starts_with("[expect"))
+        .map_or(s.len(), |(at, _)| at);
+    text[..end].to_vec()
 }
 
 /// The example files themselves pass: the harness accepts good files.
@@ -1036,6 +1753,10 @@ fn example_files_pass_the_hostile_checks() {
     for f in EXAMPLES {
         let path = shapes.join(f);
         hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{f}: {e}"));
+        let text = std::fs::read(&path).unwrap();
+        fast_path_agrees(&text).unwrap_or_else(|e| panic!("{f}: {e}"));
+        fast_path_agrees(&without_expect(&text))
+            .unwrap_or_else(|e| panic!("{f} without [expect]: {e}"));
         let out = run(&["report", "--format", "json", path.to_str().unwrap()])
             .unwrap()
             .unwrap_or_else(|d| panic!("{f}: {d}"));
@@ -1056,5 +1777,7 @@ fn fuzz_regressions_give_finite_results_or_diagnostics() {
     assert!(files.len() >= 4, "fuzz/regressions/ lost its files");
     for path in files {
         hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        fast_path_agrees(&std::fs::read(&path).unwrap())
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     }
 }
