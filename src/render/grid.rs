@@ -64,6 +64,10 @@ impl Cells {
 /// flag 2, a tab 1): the same function, so the same columns, whatever a
 /// terminal makes of them.
 pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
+    assert!(
+        !header.is_empty(),
+        "invariant: every massprop table has a header (its cells are laid out by it)"
+    );
     let n = header.len();
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
     let mut multiline = header.iter().any(|h| h.contains('\n'));
