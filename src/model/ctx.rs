@@ -10,6 +10,16 @@ use nalgebra::Vector3;
 use std::ops::Range;
 use toml::Spanned;
 
+/// What an array belongs to, for the message when its length is wrong
+/// (formed only then: this is on every part's path).
+#[derive(Clone, Copy)]
+pub(super) enum Whose<'a> {
+    /// A key: "`center` needs 3 components".
+    Key(&'a str),
+    /// A shape: "a box needs 3 `edges`".
+    Shape(&'a str),
+}
+
 /// What the conversion step needs to read values: the source (for spans)
 /// and the file's units.
 pub(crate) struct Ctx<'a> {
@@ -126,17 +136,21 @@ impl Ctx<'_> {
 
     /// The one check of an array's length, for every vector and matrix in
     /// a file: `v` must have exactly `n` items, or a located error says
-    /// "{subject} needs {n} {items}, got {len}".
+    /// "{whose} needs {n} {items}, got {len}".
     pub(super) fn exactly<'v, T>(
         &self,
         v: &'v Spanned<Vec<T>>,
         n: usize,
-        subject: &str,
+        whose: Whose,
         items: &str,
     ) -> Result<&'v [T], Diagnostic> {
         let got = v.get_ref().len();
         if got != n {
-            return Err(self.err(v.span(), format!("{subject} needs {n} {items}, got {got}")));
+            let whose = match whose {
+                Whose::Key(k) => format!("`{k}`"),
+                Whose::Shape(s) => format!("a {s}"),
+            };
+            return Err(self.err(v.span(), format!("{whose} needs {n} {items}, got {got}")));
         }
         Ok(v.get_ref())
     }
@@ -147,7 +161,7 @@ impl Ctx<'_> {
         key: &str,
         dim: Dim,
     ) -> Result<[f64; 3], Diagnostic> {
-        let items = self.exactly(v, 3, &format!("`{key}`"), "components")?;
+        let items = self.exactly(v, 3, Whose::Key(key), "components")?;
         let mut out = [0.0; 3];
         for (o, q) in out.iter_mut().zip(items) {
             *o = self.file_quantity(q, key, dim)?;
@@ -187,7 +201,7 @@ impl Ctx<'_> {
         dim: Dim,
         n: usize,
     ) -> Result<Vec<f64>, Diagnostic> {
-        self.exactly(v, n, &format!("`{key}`"), "components")?
+        self.exactly(v, n, Whose::Key(key), "components")?
             .iter()
             .map(|q| self.quantity(q, key, dim))
             .collect()

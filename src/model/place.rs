@@ -4,6 +4,7 @@
 //! `inertia` — each validated.
 
 use super::Ctx;
+use super::ctx::Whose;
 use super::raw::RawPart;
 use super::rotation::Orientation;
 use crate::diag::Diagnostic;
@@ -136,7 +137,7 @@ impl Ctx<'_> {
             let edges_raw = p.edges.as_ref().ok_or_else(|| missing("edges"))?;
             let n = shape.edge_count();
             let mut edges = Vec::with_capacity(n);
-            for e in self.exactly(edges_raw, n, &format!("a {s}"), "`edges`")? {
+            for e in self.exactly(edges_raw, n, Whose::Shape(s), "`edges`")? {
                 let v = self.vec3(e, "edges", Dim::LENGTH)?;
                 if v.amax() == 0.0 {
                     return Err(self.err(e.span(), "an edge must not be zero"));
@@ -174,7 +175,7 @@ impl Ctx<'_> {
     /// longest edge.
     pub(super) fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
         let raw = p.vertices.as_ref().ok_or(missing)?;
-        let rows = self.exactly(raw, 3, "a triangle", "`vertices`")?;
+        let rows = self.exactly(raw, 3, Whose::Shape("triangle"), "`vertices`")?;
         let mut v = [Vector3::zeros(); 3];
         for (out, r) in v.iter_mut().zip(rows) {
             *out = self.vec3(r, "vertices", Dim::LENGTH)?;
@@ -220,7 +221,7 @@ impl Ctx<'_> {
                 .err(pr.span(), format!("unknown `products` convention {:?}", pr.get_ref()))
                 .help("\"tensor\" (off-diagonals −∫xy dm, the default) or \"positive\" (+∫xy dm, CAD and Meriam)"));
         }
-        let rows = self.exactly(raw, 3, "`inertia`", "rows")?;
+        let rows = self.exactly(raw, 3, Whose::Key("inertia"), "rows")?;
         let mut m = [[0.0; 3]; 3];
         for (row, r) in m.iter_mut().zip(rows) {
             let v = self.vec3(r, "inertia", Dim::INERTIA)?;

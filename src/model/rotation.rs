@@ -5,6 +5,7 @@
 pub use crate::rotation::*;
 
 use super::Ctx;
+use super::ctx::Whose;
 use super::raw::{Angles, Floats, RawRotation};
 use crate::diag::Diagnostic;
 use crate::tolerance::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
@@ -100,7 +101,7 @@ impl Ctx<'_> {
             }
             "matrix" => {
                 let m = r.matrix.as_ref().expect("form is matrix");
-                let rows = self.exactly(m, 3, "`matrix`", "rows")?;
+                let rows = self.exactly(m, 3, Whose::Key("matrix"), "rows")?;
                 let mut out = Matrix3::zeros();
                 for (i, row) in rows.iter().enumerate() {
                     let v = self.floats(row, "matrix row", 3)?;
@@ -165,7 +166,7 @@ impl Ctx<'_> {
 
     /// A plain array of `n` finite numbers (rotation parameters carry no unit).
     fn floats(&self, v: &Floats, key: &str, n: usize) -> Result<Vec<f64>, Diagnostic> {
-        self.exactly(v, n, &format!("`{key}`"), "numbers")?
+        self.exactly(v, n, Whose::Key(key), "numbers")?
             .iter()
             .map(|x| {
                 if x.get_ref().is_finite() {
