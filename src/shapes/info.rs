@@ -56,6 +56,18 @@ pub enum Dims {
 }
 
 impl Dims {
+    /// How many numbers the closed forms take (see `Shape::second_moments`).
+    pub fn count(self) -> usize {
+        match self {
+            Dims::Size(n) => n,
+            Dims::Radii { length: true } => 3,
+            Dims::Radii { length: false } => 2,
+            // A triangle's one "dimension" is its area (see `measure_of`).
+            Dims::Length | Dims::Vertices => 1,
+            Dims::Given | Dims::None => 0,
+        }
+    }
+
     /// The keys that give the dimensions.
     pub fn keys(self) -> &'static [&'static str] {
         match self {

@@ -85,14 +85,7 @@ impl Shape {
 
     /// Number of dimensions the closed forms take (see `second_moments`).
     pub fn dim_count(self) -> usize {
-        match self.info().dims {
-            Dims::Size(n) => n,
-            Dims::Radii { length: true } => 3,
-            Dims::Radii { length: false } => 2,
-            // A triangle's one "dimension" is its area (see `measure_of`).
-            Dims::Length | Dims::Vertices => 1,
-            Dims::Given | Dims::None => 0,
-        }
+        self.info().dims.count()
     }
 
     /// How many of the three local second moments are non-zero.

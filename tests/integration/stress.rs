@@ -1610,3 +1610,21 @@ fn no_negative_or_nan_moment_in_degenerate_bodies_standard() {
 fn no_negative_or_nan_moment_in_degenerate_bodies_extended() {
     zero_moments(Precision::Extended);
 }
+
+/// The every-shape scene draws every shape massprop has (`shapes::SHAPES`)
+/// beyond the box, plate, rod and point that every other scene is made of:
+/// a shape added without its exact reference and its place here fails this
+/// test (docs/architecture.md, "Adding a shape").
+#[test]
+fn the_every_shape_scene_has_every_shape() {
+    let scene = every_shape(&mut Rng::new(1));
+    let text = massprop_support::reference::to_toml(&scene);
+    let model = massprop::model::Model::parse(&massprop::diag::Source::new("s.toml", text))
+        .unwrap_or_else(|d| panic!("{d}"));
+    let mut drawn: std::collections::BTreeSet<&str> =
+        model.parts.iter().map(|p| p.shape.name()).collect();
+    drawn.extend(["box", "plate", "rod", "point"]);
+    let all: std::collections::BTreeSet<&str> =
+        massprop::shapes::SHAPES.iter().map(|s| s.name).collect();
+    assert_eq!(drawn, all);
+}
