@@ -20,10 +20,7 @@ use nalgebra::Vector3;
 use serde::Serialize;
 
 pub use crate::tolerance::EQUAL_MOMENT_RTOL;
-
-/// Components of a unit axis whose magnitudes differ by less than this count
-/// as tied for the sign rule, so rounding cannot flip an axis.
-const SIGN_TIE: f64 = 1e-9;
+use crate::tolerance::SIGN_TIE;
 
 /// The arithmetic of composition and of the principal axes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
@@ -35,15 +32,6 @@ pub enum Precision {
     /// Double-double (~32 significant digits) throughout: for the smallest
     /// principal moment of very slender or flat bodies.
     Extended,
-}
-
-impl Precision {
-    pub fn name(self) -> &'static str {
-        match self {
-            Precision::Standard => "standard",
-            Precision::Extended => "extended",
-        }
-    }
 }
 
 /// Compose parts into mass, centre of mass and second moment about it, in

@@ -33,10 +33,15 @@ pub mod shapes;
 pub mod tolerance;
 pub mod units;
 
+// The API: the load pipeline every command runs, and the commands.
+pub use analysis::{Loaded, Overrides, Products, Settings, load, load_source};
 pub use commands::Outcome as Output;
+pub use commands::{Request, run as run_request};
 pub use io::{MAX_FILE_BYTES, read_source};
 
-/// Run a parsed command line. Errors are user-facing diagnostics (exit 2).
+/// Run a parsed command line (`main` and the CLI tests): `cli` turns it into
+/// a `Request` of plain options, which `run_request` runs. Errors are
+/// user-facing diagnostics (exit 2).
 pub fn run(cli: &cli::Cli) -> Result<Output, diag::Diagnostic> {
     commands::run(&cli.request())
 }

@@ -44,7 +44,7 @@ pub struct Part {
 }
 
 /// A part's mass properties in SI, derived from its `Spec` by exact unit
-/// factors in double-double and rounded once.
+/// factors in double-double, the product rounded to f64.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PartSi {
     /// kg; negative for a cut-out (`remove = true`).
@@ -95,7 +95,8 @@ impl Part {
     }
 
     /// The part in SI: mass and centroid from the same arithmetic the
-    /// composer uses, times the exact unit factors, rounded once; the second
+    /// composer uses, times the exact unit factors in double-double, the
+    /// product rounded to f64; the second
     /// moment in f64 (it serves comparisons and blame, not sums).
     pub fn si(&self, units: FileUnits) -> PartSi {
         self.si_in(&SiFactors::of(units))
@@ -106,19 +107,23 @@ impl Part {
         let m: f64 = self.mass();
         let own: M3<f64> = self.own_second_moment(m);
         PartSi {
-            mass: self.mass_si(f),
+            mass: (DD::of(m) * f.mass).f64(),
             center: self.center_si(f),
             second_moment: Matrix3::from_fn(|i, j| own[i][j] * f.inertia),
         }
     }
 
-    /// The mass in SI (kg): the f64 mass the `standard` composer sums,
-    /// times the exact unit factor, rounded once.
+    /// The mass in SI (kg): the f64 mass in file units that the `standard`
+    /// composer sums (a density already converted to file units, so with
+    /// the rounding of that conversion), times the exact unit factor in
+    /// double-double, rounded to f64.
     ///
-    /// NOTE: f64, not double-double: this is the mass the composite is made
-    /// of (so the parts' masses add up to the body's), and double-double's
-    /// square roots for parts placed by edges cost 5 % of a 100,000-part
-    /// report for digits beyond what the f64 result keeps.
+    /// NOTE: f64, not double-double: in `standard` this is exactly the mass
+    /// the composite is made of, so the parts' masses add up to the body's
+    /// to the rounding of the sum; in `extended` the composite's parts
+    /// carry ~16 more digits that a figure rounded to f64 would not show.
+    /// Double-double square roots for parts placed by edges would cost
+    /// ~5 % of a 100,000-part report for none of those digits.
     pub fn mass_si(&self, f: &SiFactors) -> f64 {
         (DD::of(self.mass::<f64>()) * f.mass).f64()
     }

@@ -8,7 +8,7 @@
 //! then fixed y, then fixed z (also R = Rz·Ry·Rx). `model::rotation` reads
 //! them from a part file.
 
-use crate::numeric::{M3, Real};
+use crate::numeric::{M3, Real, norm_of};
 use nalgebra::Matrix3;
 
 /// How a part's local axes are turned, as the file gave it, so that the
@@ -71,10 +71,10 @@ fn elementary<T: Real>(axis: usize, deg: f64) -> M3<T> {
 /// Rodrigues' formula for the axis `k` (normalised here, in T):
 /// R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ.
 pub fn axis_angle<T: Real>(k: [f64; 3], deg: f64) -> M3<T> {
-    // Scale by the largest component first so the squares cannot overflow.
-    let big = k.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let k = k.map(|x| T::of(x / big));
-    let n = (k[0] * k[0] + k[1] * k[1] + k[2] * k[2]).sqrt();
+    // The one scaled norm: no overflow in the squares, and no rounding of
+    // the axis before it is in T.
+    let k = k.map(T::of);
+    let n = norm_of(&k);
     let k = k.map(|x| x / n);
     let (s, c) = T::sin_cos_deg(deg);
     let one_c = T::of(1.0) - c;

@@ -35,3 +35,27 @@ pub const MATRIX_TOLERANCE: f64 = 1e-9;
 /// A quaternion's norm may differ from 1 by this much: rounding in printed
 /// values, not a typo. Its direction is used either way.
 pub const QUATERNION_TOLERANCE: f64 = 1e-6;
+
+/// Components of a unit axis whose magnitudes differ by less than this count
+/// as tied for the sign rule, so rounding cannot flip an axis.
+pub const SIGN_TIE: f64 = 1e-9;
+
+/// A principal moment at most this many unit roundoffs of the largest is
+/// zero to rounding: the composed second moment and the eigen solution each
+/// carry absolute errors of a few roundoffs of the largest moment, so a
+/// ratio to a smaller moment would be noise. At the threshold the error of
+/// a ratio is below ~1e-3 of it, hence 2¹².
+pub const NEGLIGIBLE_ROUNDOFFS: f64 = 4096.0;
+
+/// A relative change this small and negative is the rounding of two
+/// solutions of nearly the same tensor, not a decrease.
+pub const ROUNDING_CHANGE: f64 = 64.0 * f64::EPSILON;
+
+/// Default relative tolerance for a blessed scalar: 1e-6, far above the
+/// rounding differences between machines and far below a design change.
+pub const DEFAULT_RELATIVE_TOL: &str = "0.0001%";
+
+/// Default absolute tolerance of a blessed vector or matrix, as a fraction
+/// of its largest component (a relative tolerance per component would fail
+/// on rounding noise in components that are zero).
+pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;

@@ -7,14 +7,12 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
+use massprop::Settings;
 use massprop::analysis::check;
 use massprop::compose::Precision;
 use massprop::diag::Source;
-use massprop::model::Model;
 use massprop::model::fast;
 use massprop::model::raw::RawFile;
-use massprop::analysis::Products;
-use massprop::analysis::summary as report;
 use massprop::render;
 
 fuzz_target!(|data: &[u8]| {
@@ -28,31 +26,29 @@ fuzz_target!(|data: &[u8]| {
     if source.text != text {
         fast_path_agrees(&source.text);
     }
-    let model = match Model::parse(&source) {
-        Ok(model) => model,
-        Err(d) => {
-            // Rendering the diagnostic (snippet, carets) must not panic.
-            let _ = d.to_string();
-            return;
-        }
-    };
     for precision in [Precision::Standard, Precision::Extended] {
-        let summary = match report::summarize(&model, &model.analysis, Products::Tensor, precision)
-        {
-            Ok(summary) => summary,
-            Err(e) => {
-                let _ = e.diagnostic(&model, &model.analysis, &source).to_string();
-                continue;
+        // The pipeline every command runs: parse, resolve, compose.
+        let settings = Settings {
+            precision,
+            ..Settings::default()
+        };
+        let loaded = match massprop::load_source(source.clone(), &settings) {
+            Ok(loaded) => loaded,
+            Err(d) => {
+                // Rendering the diagnostic (snippet, carets) must not panic.
+                let _ = d.to_string();
+                return;
             }
         };
-        let json = render::report::json(&summary);
+        let (model, summary) = (&loaded.model, &loaded.summary);
+        let json = render::report::json(summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
-        let _ = render::report::table(&summary, "fuzz.toml");
-        let _ = check::validity(&summary);
+        let _ = render::report::table(summary, "fuzz.toml");
+        let _ = check::validity(summary);
         for c in &model.expect {
-            let r = check::evaluate(&source, &summary, c);
+            let r = check::evaluate(&source, summary, c);
             let message = render::check::message("fuzz.toml", &r);
             let words = message.split(|c: char| !c.is_ascii_alphanumeric());
             assert!(

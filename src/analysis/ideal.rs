@@ -15,18 +15,8 @@ use crate::mass::Body;
 use crate::model::Model;
 use crate::numeric::{DD, M3, Real, pow2_scale};
 use crate::part::{Part, Place, Solid};
+use crate::tolerance::{NEGLIGIBLE_ROUNDOFFS, ROUNDING_CHANGE};
 use serde::Serialize;
-
-/// A principal moment at most this many unit roundoffs of the largest is
-/// zero to rounding: the composed second moment and the eigen solution each
-/// carry absolute errors of a few roundoffs of the largest moment, so a
-/// ratio to a smaller moment would be noise. At the threshold the error of
-/// a ratio is below ~1e-3 of it, hence 2¹².
-const NEGLIGIBLE_ROUNDOFFS: f64 = 4096.0;
-
-/// A relative change this small and negative is the rounding of two
-/// solutions of nearly the same tensor, not a decrease.
-const ROUNDING_CHANGE: f64 = 64.0 * f64::EPSILON;
 
 /// The fraction of the largest principal moment below which a moment counts
 /// as zero, for the arithmetic that produced it.

@@ -16,16 +16,9 @@ use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check};
 use crate::render::format::DisplayUnits;
+use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
 use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
-
-/// Default relative tolerance for a blessed scalar: 1e-6, far above the
-/// rounding differences between machines and far below a design change.
-pub const DEFAULT_RELATIVE_TOL: &str = "0.0001%";
-/// Default absolute tolerance of a blessed vector or matrix, as a fraction
-/// of its largest component (a relative tolerance per component would fail
-/// on rounding noise in components that are zero).
-pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;
 
 /// Bless one file: returns whether it changed. Errors leave it untouched.
 pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bool, Diagnostic> {

@@ -69,6 +69,10 @@ pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[
         "invariant: every massprop table has a header (its cells are laid out by it)"
     );
     let n = header.len();
+    debug_assert!(
+        cells.ends.len().is_multiple_of(n),
+        "invariant: whole rows of cells"
+    );
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
     let mut multiline = header.iter().any(|h| h.contains('\n'));
     for (i, c) in cells.iter().enumerate() {

@@ -327,7 +327,7 @@ pub const SHAPES: [ShapeInfo; 9] = [
         ],
         density: Some(PER_AREA),
         dims: Dims::Vertices,
-        centred: &["center"],
+        centred: &[],
         spanned: None,
         material: MaterialRule::Thickness,
         real_size: None,

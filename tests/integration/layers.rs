@@ -1,13 +1,14 @@
 //! The module graph has layers and no cycles: docs/architecture.md lists
 //! the modules from the bottom up, and no module of `src/` may use a
-//! module listed in a later layer. The document is the one statement of the
+//! module listed after it (in a later layer, or later in its own). The document is the one statement of the
 //! layers; this test holds the code to it.
 
 use std::collections::HashMap;
 use std::path::Path;
 
-/// Top-level module → layer, from docs/architecture.md's numbered list.
-fn layers() -> HashMap<String, usize> {
+/// Top-level module → (layer, position in the list), from
+/// docs/architecture.md's numbered list.
+fn layers() -> HashMap<String, (usize, usize)> {
     let doc = std::fs::read_to_string("docs/architecture.md").unwrap();
     let start = doc.find("## Modules, from the bottom up").unwrap();
     let rest = &doc[start..];
@@ -24,7 +25,8 @@ fn layers() -> HashMap<String, usize> {
             let is_module = Path::new("src").join(format!("{name}.rs")).exists()
                 || Path::new("src").join(name).is_dir();
             if layer > 0 && is_module {
-                out.entry(name.to_string()).or_insert(layer);
+                let position = out.len();
+                out.entry(name.to_string()).or_insert((layer, position));
             }
         }
     }
@@ -73,11 +75,13 @@ fn no_module_uses_a_module_of_a_later_layer() {
                 .take_while(|c| c.is_alphanumeric() || *c == '_')
                 .collect();
             if let Some(&other) = layers.get(&name)
-                && other > own
+                && other.1 > own.1
             {
                 wrong.push(format!(
-                    "{} (layer {own}) uses `{name}` (layer {other})",
-                    f.display()
+                    "{} (layer {}) uses `{name}` (layer {}, listed after it)",
+                    f.display(),
+                    own.0,
+                    other.0
                 ));
             }
         }
@@ -96,7 +100,7 @@ fn no_module_uses_a_module_of_a_later_layer() {
     // The list is read at all: every layer has a module.
     for l in 1..=7 {
         assert!(
-            layers.values().any(|&v| v == l),
+            layers.values().any(|v| v.0 == l),
             "layer {l} is empty: {layers:?}"
         );
     }
