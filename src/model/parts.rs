@@ -448,3 +448,45 @@ fn first<'k>(set: &[(&'k str, Option<Range<usize>>)]) -> Option<(&'k str, Range<
         .filter_map(|(k, s)| s.clone().map(|s| (*k, s)))
         .min_by_key(|(_, s)| s.start)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes::SHAPES;
+    use std::collections::BTreeSet;
+
+    /// The keys the model reads off a part (`key_spans`) are exactly the
+    /// keys the shapes accept and those of an include: a key added to one
+    /// and not the other fails here.
+    #[test]
+    fn the_part_keys_read_are_the_keys_the_shapes_and_includes_accept() {
+        let read: BTreeSet<&str> = key_spans(&RawPart::default()).iter().map(|k| k.0).collect();
+        let mut accepted: BTreeSet<&str> =
+            SHAPES.iter().flat_map(|s| s.keys.iter().copied()).collect();
+        accepted.extend(["include", "origin"]);
+        assert_eq!(read, accepted);
+    }
+
+    /// Every quantity key the shape table names (density, real size,
+    /// material section) is one `quantity_key` reads.
+    #[test]
+    fn every_quantity_key_of_the_shape_table_is_read() {
+        let p = RawPart::default();
+        for s in &SHAPES {
+            let keys = s
+                .density
+                .map(|d| d.key)
+                .into_iter()
+                .chain(s.real_size.map(|r| r.0))
+                .chain(
+                    super::super::material::material_keys(s.material)
+                        .iter()
+                        .copied(),
+                );
+            for k in keys {
+                // Unknown keys are unreachable!: reaching the end is the test.
+                assert!(quantity_key(&p, k).is_none(), "{}: `{k}`", s.name);
+            }
+        }
+    }
+}
