@@ -1,7 +1,7 @@
 //! `diff`'s table (in the new file's units) and JSON contract (SI,
 //! docs/diff.md).
 
-use super::format::{DisplayUnits, UNDEFINED, fmt_num, products_label};
+use super::format::{DisplayUnits, change_percent as percent, products_label, show_or_si as show};
 use super::grid::new_table;
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
@@ -87,25 +87,6 @@ pub fn json(d: &Diff) -> String {
     let mut s = serde_json::to_string(&json).expect("a diff of finite numbers always serializes");
     s.push('\n');
     s
-}
-
-/// `x` (SI) in display units; should the conversion overflow (a value near
-/// the limit of f64, shown in smaller units), the SI value, marked as such.
-fn show(x: f64, factor: f64) -> String {
-    let v = x / factor;
-    if v.is_finite() {
-        fmt_num(v)
-    } else {
-        format!("{} (SI)", fmt_num(x))
-    }
-}
-
-fn percent(r: Option<f64>) -> String {
-    match r.map(|r| r * 100.0) {
-        Some(p) if p.is_finite() => format!("{} %", fmt_num(p)),
-        Some(_) => "> 1e306 %".to_string(),
-        None => UNDEFINED.to_string(),
-    }
 }
 
 /// How a file is named in the table: its path, and its `name` if it has one.
@@ -261,22 +242,4 @@ pub fn table(d: &Diff) -> String {
         }
     );
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_value_beyond_f64_in_display_units_is_shown_in_si() {
-        assert_eq!(show(2.5e-3, 1e-3), "2.5");
-        assert_eq!(show(1e308, 1e-3), "1e308 (SI)");
-    }
-
-    #[test]
-    fn percentages_never_print_infinity() {
-        assert_eq!(percent(Some(0.5)), "50 %");
-        assert_eq!(percent(Some(f64::MAX)), "> 1e306 %");
-        assert_eq!(percent(None), UNDEFINED);
-    }
 }

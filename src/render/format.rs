@@ -233,6 +233,28 @@ pub fn equal_note(out: &mut String, equal: &[usize]) {
     }
 }
 
+/// `x` (SI) in display units; should the conversion overflow (a value near
+/// the limit of f64, shown in smaller units), the SI value, marked as such.
+pub fn show_or_si(x: f64, factor: f64) -> String {
+    let v = x / factor;
+    if v.is_finite() {
+        fmt_num(v)
+    } else {
+        format!("{} (SI)", fmt_num(x))
+    }
+}
+
+/// A relative change as a percentage, to six significant digits as `diff`
+/// shows it (`diff` is read for small changes; shares are read as orders
+/// of magnitude, `fmt_percent`); beyond f64 as such, never `inf`.
+pub fn change_percent(r: Option<f64>) -> String {
+    match r.map(|r| r * 100.0) {
+        Some(p) if p.is_finite() => format!("{} %", fmt_num(p)),
+        Some(_) => "> 1e306 %".to_string(),
+        None => UNDEFINED.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -325,5 +347,18 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn a_value_beyond_f64_in_display_units_is_shown_in_si() {
+        assert_eq!(show_or_si(2.5e-3, 1e-3), "2.5");
+        assert_eq!(show_or_si(1e308, 1e-3), "1e308 (SI)");
+    }
+
+    #[test]
+    fn percentages_never_print_infinity() {
+        assert_eq!(change_percent(Some(0.5)), "50 %");
+        assert_eq!(change_percent(Some(f64::MAX)), "> 1e306 %");
+        assert_eq!(change_percent(None), UNDEFINED);
     }
 }

@@ -83,7 +83,7 @@ pub fn table(s: &Summary, source: &str) -> String {
     let _ = writeln!(out, "precision: {}", precision_label(s.precision));
     let _ = writeln!(out, "\nmass: {} {}", fmt_num(s.mass / u.mass), u.mass_label);
     if let Some(t) = s.kinetic_energy {
-        let _ = writeln!(out, "kinetic energy T: {} J", fmt_num(t));
+        let _ = writeln!(out, "kinetic energy T: {}", u.show(t, Dim::ENERGY));
     }
 
     let mut vectors = new_table();
