@@ -2,10 +2,9 @@
 //! summary, and the body's physical validity. `commands::check` walks the
 //! files; `render::check` prints the results.
 
+use super::Loaded;
 use super::summary::Summary;
-use super::{Loaded, Settings};
-use crate::compose::Precision;
-use crate::diag::{Diagnostic, Source};
+use crate::diag::Source;
 use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
@@ -151,15 +150,6 @@ pub fn validity(s: &Summary) -> Vec<String> {
     out
 }
 
-/// Check one file; `Err` when it cannot be read or is invalid.
-pub fn check_file(path: &str, precision: Precision) -> Result<FileResult, Diagnostic> {
-    let settings = Settings {
-        precision,
-        ..Settings::default()
-    };
-    Ok(check_loaded(&super::load(path, &settings)?))
-}
-
 /// The expectations and validity of a file that loaded.
 pub fn check_loaded(loaded: &Loaded) -> FileResult {
     let validity = validity(&loaded.summary);
@@ -188,7 +178,7 @@ mod tests {
             "t.toml",
             "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n",
         );
-        crate::analysis::load_source(source, &Settings::default())
+        crate::analysis::load_source(source, &crate::analysis::Settings::default())
             .unwrap()
             .summary
     }

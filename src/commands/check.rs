@@ -6,7 +6,8 @@
 //! file is still checked.
 
 use super::{Outcome, bless};
-use crate::analysis::check::{FileResult, Status, check_file};
+use crate::analysis::check::{FileResult, Status, check_loaded};
+use crate::analysis::{self, Settings};
 use crate::compose::Precision;
 use crate::diag::Diagnostic;
 use crate::render::{self, Format};
@@ -74,6 +75,15 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     }
     let mut results = Vec::new();
     let mut stderr = String::new();
+    let settings = Settings {
+        precision: o.precision,
+        ..Settings::default()
+    };
+    // Every file found, valid or not, and every file those include.
+    let mut read: Vec<PathBuf> = files
+        .iter()
+        .filter_map(|f| std::fs::canonicalize(f).ok())
+        .collect();
     for f in &files {
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
@@ -86,7 +96,11 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
                 Err(d) => not_blessed = Some(d),
             }
         }
-        let checked = match (check_file(f, o.precision), not_blessed) {
+        let loaded = analysis::load(f, &settings).map(|l| {
+            read.extend(super::files_of(&l));
+            check_loaded(&l)
+        });
+        let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
                 stderr.push_str(&format!("{f}: not blessed\n"));
                 Err(d)
@@ -123,5 +137,6 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         stdout: render::render(&render::Output::Check(&results), o.format),
         stderr,
         status,
+        read,
     })
 }

@@ -41,8 +41,8 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             }
         }
     }
-    Ok(Outcome::ok(render::render(
-        &render::Output::Materials(&list),
-        o.format,
-    )))
+    Ok(Outcome::ok(
+        render::render(&render::Output::Materials(&list), o.format),
+        Vec::new(),
+    ))
 }

@@ -11,6 +11,7 @@ pub mod report;
 
 use crate::diag::Diagnostic;
 use crate::io::write_atomically;
+use std::path::PathBuf;
 
 /// What a run that completed prints and the exit status it ends with
 /// (`check` reports invalid files on stderr and still checks the rest).
@@ -19,17 +20,30 @@ pub struct Outcome {
     pub stdout: String,
     pub stderr: String,
     pub status: u8,
+    /// Every file the run read (part files, the files they include, the
+    /// files found in directories): `-o` may not name any of them.
+    pub read: Vec<PathBuf>,
 }
 
 impl Outcome {
-    /// Success with `stdout`.
-    pub fn ok(stdout: String) -> Outcome {
+    /// Success with `stdout`, having read `read`.
+    pub fn ok(stdout: String, read: Vec<PathBuf>) -> Outcome {
         Outcome {
             stdout,
             stderr: String::new(),
             status: 0,
+            read,
         }
     }
+}
+
+/// The files a loaded part file was read from: itself (unless standard
+/// input) and every file it includes.
+pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
+    let own = std::fs::canonicalize(&loaded.source.name).ok();
+    own.into_iter()
+        .chain(loaded.model.included.iter().cloned())
+        .collect()
 }
 
 /// One command with its options.
@@ -85,8 +99,18 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
         Request::Materials(o) => materials::run(o)?,
     };
     match output {
-        // `-o FILE`: the whole result or nothing, never half a file.
+        // `-o FILE`: the whole result or nothing, never half a file, and
+        // never onto a file the run read (one found in a directory, or
+        // included by one named).
         Some(path) => {
+            if let Ok(o) = std::fs::canonicalize(path)
+                && let Some(i) = out.read.iter().find(|i| **i == o)
+            {
+                return Err(Diagnostic::plain(format!(
+                    "`-o {path}` is the part file `{}`: the report would replace it",
+                    i.display()
+                )));
+            }
             write_atomically(path, &out.stdout, "the output file")?;
             Ok(Outcome {
                 stdout: String::new(),

@@ -20,5 +20,8 @@ pub struct Options {
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
     let out = render::Output::Report(&loaded.summary, &loaded.source.name);
-    Ok(Outcome::ok(render::render(&out, o.format)))
+    Ok(Outcome::ok(
+        render::render(&out, o.format),
+        super::files_of(&loaded),
+    ))
 }

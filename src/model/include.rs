@@ -29,6 +29,17 @@ pub const MAX_INCLUDE_DEPTH: usize = 32;
 pub(super) struct Files {
     pub(super) stack: Vec<(PathBuf, String)>,
     cache: HashMap<PathBuf, Model>,
+    /// Every file included, at any depth, as often as it is.
+    read: Vec<PathBuf>,
+}
+
+impl Files {
+    /// Every file included, at any depth, once each.
+    pub(super) fn included(mut self) -> Vec<PathBuf> {
+        self.read.sort();
+        self.read.dedup();
+        self.read
+    }
 }
 
 /// The names given to one file's sub-assemblies: `wheel`, `wheel #2`, …
@@ -226,6 +237,7 @@ impl Ctx<'_> {
                 .help("a sub-assembly cannot contain itself")
                 .with_chain_in_message());
         }
+        files.read.push(canonical.clone());
         let child = match files.cache.get(&canonical) {
             Some(m) => m.clone(),
             None => {

@@ -49,6 +49,9 @@ pub struct Model {
     pub real_sizes: Vec<RealSize>,
     /// `[materials]`: name → density, kg/m³.
     pub materials: std::collections::BTreeMap<String, f64>,
+    /// Every file this one includes, at any depth, by its canonical path
+    /// (so that `-o` can refuse to write onto any of them).
+    pub included: Vec<std::path::PathBuf>,
 }
 
 /// `[analysis]` in the file's units: reference point (file length), ω
@@ -73,7 +76,9 @@ impl Model {
         if let Ok(p) = std::fs::canonicalize(&source.name) {
             files.stack.push((p, source.name.clone()));
         }
-        Model::parse_in(source, &mut files)
+        let mut model = Model::parse_in(source, &mut files)?;
+        model.included = files.included();
+        Ok(model)
     }
 
     /// `parse`, inside the chain of files that include each other (for
@@ -177,6 +182,8 @@ impl Model {
                 .map(|(k, v)| (k.clone(), v.0))
                 .collect(),
             real_sizes,
+            // Filled in by `parse` for the file it reads.
+            included: Vec::new(),
         })
     }
 }

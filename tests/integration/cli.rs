@@ -769,3 +769,63 @@ fn a_named_pipe_is_read_like_a_file() {
     assert_eq!(piped["mass"], direct["mass"]);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o` never writes onto a file the run reads: not only the files named,
+/// but a file `check` finds in a directory and a file a part file includes
+/// (once both were overwritten with the report).
+#[test]
+fn output_onto_a_found_or_included_file_is_refused_and_leaves_it_intact() {
+    let dir = crate::common::scratch("cli", "output-onto-read");
+    let wheel = "name = \"wheel\"\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n";
+    let cart = "[[part]]\nshape = \"point\"\nmass = 5\ncenter = [0, 0, 1]\n\
+                [[part]]\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n";
+    std::fs::write(dir.join("wheel.toml"), wheel).unwrap();
+    std::fs::write(dir.join("cart.toml"), cart).unwrap();
+    let path = |f: &str| dir.join(f).to_str().unwrap().to_string();
+    for args in [
+        vec![
+            "report".to_string(),
+            path("cart.toml"),
+            "-o".into(),
+            path("wheel.toml"),
+        ],
+        vec![
+            "check".to_string(),
+            dir.to_str().unwrap().into(),
+            "-o".into(),
+            path("wheel.toml"),
+        ],
+        vec![
+            "check".to_string(),
+            path("cart.toml"),
+            "-o".into(),
+            path("wheel.toml"),
+        ],
+        vec![
+            "diff".to_string(),
+            path("cart.toml"),
+            path("cart.toml"),
+            "-o".into(),
+            path("wheel.toml"),
+        ],
+    ] {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = massprop(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert!(
+            stderr.contains("the report would replace it"),
+            "{args:?}: {stderr}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("wheel.toml")).unwrap(),
+            wheel
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("cart.toml")).unwrap(),
+            cart
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
