@@ -42,6 +42,19 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
         let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
         if let Some((key, valid)) = quoted.split_first() {
+            // In a part whose shape is known, the keys of that shape (its
+            // description in `SHAPES`), not every key any part may have.
+            let shape_keys: Vec<&str>;
+            let valid: &[&str] = match shape_of_part_at(&source.text, span.start) {
+                Some(shape) if valid.contains(&"shape") => {
+                    shape_keys = ["name", "shape"]
+                        .into_iter()
+                        .chain(shape.info().keys.iter().copied())
+                        .collect();
+                    &shape_keys
+                }
+                _ => valid,
+            };
             let suggestion = units::suggest(key, valid.iter().copied());
             let d = source.error(span, format!("unknown key `{key}`"));
             return match suggestion {
@@ -143,6 +156,31 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
     best.map(|(k, _)| k)
 }
 
+/// The shape of the `[[part]]` that has a key at `offset`, when it names a
+/// known one. Only used on the error path.
+fn shape_of_part_at(text: &str, offset: usize) -> Option<Shape> {
+    use toml::de::{DeTable, DeValue};
+    let root = DeTable::parse(text).ok()?;
+    let root = root.into_inner();
+    let parts = root.iter().find(|(k, _)| k.get_ref() == "part")?.1;
+    let DeValue::Array(parts) = parts.get_ref() else {
+        return None;
+    };
+    parts.iter().find_map(|p| {
+        let DeValue::Table(t) = p.get_ref() else {
+            return None;
+        };
+        let here = t
+            .iter()
+            .any(|(k, v)| k.span().contains(&offset) || v.span().contains(&offset));
+        let shape = t.iter().find(|(k, _)| k.get_ref() == "shape")?.1;
+        match (here, shape.get_ref()) {
+            (true, DeValue::String(s)) => Shape::from_name(s),
+            _ => None,
+        }
+    })
+}
+
 /// The key on the line of `offset`: the name before the last `=` (`mass =
 /// 1e400`), for syntax errors where no spanned parse is possible.
 /// None inside a comment: a bad character there belongs to no key.
@@ -241,6 +279,27 @@ mod tests {
         );
     }
 
+    /// Suggestions for a misspelt key come from the part's own shape: a
+    /// box's `raduis` is not "did you mean `radius`" (a key boxes refuse).
+    #[test]
+    fn a_misspelt_key_is_matched_against_the_keys_of_the_parts_shape() {
+        let text = "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\nraduis = 1\n";
+        let d = crate::model::Model::parse(&Source::new("t.toml", text))
+            .unwrap_err()
+            .to_string();
+        assert!(d.contains("unknown key `raduis`"), "{d}");
+        assert!(!d.contains("did you mean `radius`"), "{d}");
+        assert!(
+            d.contains("valid keys here: `name`, `shape`, `density`"),
+            "{d}"
+        );
+        let text = "[[part]]\nshape = \"sphere\"\nmass = 1\ncenter = [0, 0, 0]\nraduis = 1\n";
+        let d = crate::model::Model::parse(&Source::new("t.toml", text))
+            .unwrap_err()
+            .to_string();
+        assert!(d.contains("did you mean `radius`?"), "{d}");
+    }
+
     #[test]
     fn comments_start_at_the_first_hash_outside_strings() {
         assert_eq!(comment_start("a = 1 # x"), Some(6));
@@ -300,8 +359,9 @@ mod tests {
             "{upstream}"
         );
         assert!(ours.contains("error: unknown key `xyzzy`"), "{ours}");
+        // The keys of the part's shape, a box (`SHAPES`), not serde's list.
         assert!(
-            ours.contains("help: valid keys here: `name`, `shape`, `mass`, `density`"),
+            ours.contains("help: valid keys here: `name`, `shape`, `density`, `size`"),
             "{ours}"
         );
     }
