@@ -85,6 +85,26 @@ type Component<'a> = (
 const XYZ: [&str; 3] = ["x", "y", "z"];
 const ORD: [&str; 3] = ["1", "2", "3"];
 
+/// The first component key an expectation has, with where it is.
+fn first_component(e: &RawExpectation) -> Option<(&'static str, Range<usize>)> {
+    [
+        ("x", &e.x),
+        ("y", &e.y),
+        ("z", &e.z),
+        ("1", &e.c1),
+        ("2", &e.c2),
+        ("3", &e.c3),
+        ("xx", &e.xx),
+        ("yy", &e.yy),
+        ("zz", &e.zz),
+        ("xy", &e.xy),
+        ("xz", &e.xz),
+        ("yz", &e.yz),
+    ]
+    .into_iter()
+    .find_map(|(k, c)| c.as_ref().map(|c| (k, c.span())))
+}
+
 impl Ctx<'_> {
     pub(super) fn expectations(
         &self,
@@ -231,6 +251,14 @@ impl Ctx<'_> {
             any_component = true;
             let t = make(i, j);
             let n = format!("{name}.{key}");
+            // A component is a single number: one level deeper
+            // (`center_of_mass.x.y`) is an error, never a check of nothing.
+            if let Some((sub, at)) = first_component(c.get_ref()) {
+                return Err(self.err(
+                    at,
+                    format!("`{n}` is a single number and has no component `{sub}`"),
+                ));
+            }
             self.expectation_leaf(&n, c, Shape::Scalar, dim, &|_| t, out)?;
         }
         let has_own = e.value.is_some() || e.tol.is_some() || e.min.is_some() || e.max.is_some();
@@ -291,6 +319,11 @@ impl Ctx<'_> {
                     v.span(),
                     format!("`{name}`: give `value` with `tol`, or `min`/`max`, not both"),
                 ));
+            }
+            (None, None, None, None) => {
+                return Err(self
+                    .err(span, format!("expectation `{name}` is empty"))
+                    .help("give `value` and `tol`, or `min` and/or `max`"));
             }
             (None, None, min, max) => {
                 let n = names.len();
