@@ -56,14 +56,16 @@ pub enum Request {
 }
 
 impl Request {
-    /// `-o FILE`, where the command takes it.
+    /// `-o FILE`, where the command takes it; `-o -` is standard output,
+    /// as `-` is standard input wherever a file is read.
     fn output(&self) -> Option<&str> {
-        match self {
+        let o = match self {
             Request::Report(o) => o.output.as_deref(),
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
             Request::Materials(_) => None,
-        }
+        };
+        o.filter(|o| *o != "-")
     }
 
     /// The part files the command reads, as named.

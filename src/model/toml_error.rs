@@ -38,6 +38,17 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         .replace("expected a map", "expected a table")
         .replace("invalid type: sequence", "invalid type: array")
         .replace("a sequence", "an array");
+    // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
+    // length", or an unknown key inside it) would name neither the table
+    // nor the fix. Such a header is an error wherever serde stumbled.
+    if let Some((at, name)) = array_of_tables_header(&source.text) {
+        return source
+            .error(
+                at..at + name.len() + 4,
+                format!("`{name}` must be a table, found an array of tables"),
+            )
+            .help(format!("write `[{name}]`, with one pair of brackets"));
+    }
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
         let quoted: Vec<&str> = rest.split('`').skip(1).step_by(2).collect();
@@ -154,6 +165,26 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
     let mut best = None;
     visit(&DeValue::Table(root.into_inner()), None, offset, &mut best);
     best.map(|(k, _)| k)
+}
+
+/// The first `[[analysis]]`, `[[units]]`, `[[materials]]` or `[[expect]]`
+/// header (tables the file has at most one of): its offset and name.
+fn array_of_tables_header(text: &str) -> Option<(usize, &'static str)> {
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        let code = line.trim_start();
+        if let Some((name, _)) = code.strip_prefix("[[").and_then(|h| h.split_once("]]")) {
+            let name = name.trim();
+            if let Some(table) = ["analysis", "units", "materials", "expect"]
+                .into_iter()
+                .find(|t| *t == name)
+            {
+                return Some((at + line.len() - code.len(), table));
+            }
+        }
+        at += line.len();
+    }
+    None
 }
 
 /// The shape of the `[[part]]` that has a key at `offset`, when it names a

@@ -829,3 +829,23 @@ fn output_onto_a_found_or_included_file_is_refused_and_leaves_it_intact() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o -` is standard output, as `-` is standard input: no file named `-`.
+#[test]
+fn output_dash_is_standard_output() {
+    let dir = crate::common::scratch("cli", "output-dash");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args([
+            "report",
+            &std::fs::canonicalize(BENT_PLATE).unwrap().to_string_lossy(),
+            "-o",
+            "-",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("bent plate ("));
+    assert!(!dir.join("-").exists());
+    std::fs::remove_dir_all(&dir).ok();
+}
