@@ -108,16 +108,32 @@ fn visible_message(text: &str) -> String {
 /// pictures (U+0000..U+001F as ␀..␟, DEL as ␡, C1 as �), one character
 /// each, so a stray one neither vanishes nor moves the carets nor acts on
 /// the terminal.
-fn visible(text: &str) -> String {
-    text.chars()
-        .map(|c| match c {
-            '\t' => c,
-            '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
-            '\u{7f}' => '\u{2421}',
-            c if c.is_control() => '\u{fffd}',
-            c => c,
-        })
-        .collect()
+pub fn visible(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    push_visible(&mut out, text);
+    out
+}
+
+/// Append `visible(text)` to `out`: text from input written to stdout (a
+/// part's name, a file name) can neither act on the terminal nor add a line
+/// to line-per-record output.
+pub fn push_visible(out: &mut String, text: &str) {
+    // Most text has no control character: one scan, one copy. (C1 controls
+    // are U+0080..U+009F, encoded with a 0xC2 lead byte.)
+    if !text
+        .bytes()
+        .any(|b| b < 0x20 && b != b'\t' || b == 0x7f || b == 0xc2)
+    {
+        out.push_str(text);
+        return;
+    }
+    out.extend(text.chars().map(|c| match c {
+        '\t' => c,
+        '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
+        '\u{7f}' => '\u{2421}',
+        c if c.is_control() => '\u{fffd}',
+        c => c,
+    }));
 }
 
 /// The largest char boundary at or before `i` (clamped to the text): toml

@@ -4,6 +4,7 @@
 use super::format::{DisplayUnits, fmt_num};
 use crate::analysis::check::{CheckResult, FileResult, Status, limits};
 use crate::analysis::summary::FORMAT_VERSION;
+use crate::diag::visible;
 use crate::model::expect::{Bound, Tol};
 use serde::Serialize;
 
@@ -52,14 +53,17 @@ pub fn table(results: &[FileResult]) -> String {
     let mut s = String::new();
     for r in results {
         match r.status {
-            Status::Ok => s.push_str(&format!("{}: ok\n", r.path)),
-            Status::Invalid => s.push_str(&format!("{}: invalid (see the error above)\n", r.path)),
+            Status::Ok => s.push_str(&format!("{}: ok\n", visible(&r.path))),
+            Status::Invalid => s.push_str(&format!(
+                "{}: invalid (see the error above)\n",
+                visible(&r.path)
+            )),
             Status::Failed => {
                 for v in &r.validity {
-                    s.push_str(&format!("{}: error: {v}\n", r.path));
+                    s.push_str(&format!("{}: error: {v}\n", visible(&r.path)));
                 }
                 for c in r.checks.iter().filter(|c| !c.pass) {
-                    s.push_str(&message(&r.path, c));
+                    s.push_str(&message(&visible(&r.path), c));
                     s.push('\n');
                 }
             }

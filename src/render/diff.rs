@@ -5,6 +5,7 @@ use super::format::{DisplayUnits, change_percent as percent, products_label, sho
 use super::grid::new_table;
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
+use crate::diag::visible;
 use crate::numeric::norm;
 use comfy_table::CellAlignment;
 use serde::Serialize;
@@ -92,8 +93,9 @@ pub fn json(d: &Diff) -> String {
 /// How a file is named in the table: its path, and its `name` if it has one.
 fn title(side: &Side) -> String {
     let name = &side.loaded.source.name;
+    let name = visible(name);
     match &side.loaded.model.name {
-        Some(n) => format!("{name} ({n})"),
+        Some(n) => format!("{name} ({})", visible(n)),
         None => name.clone(),
     }
 }
@@ -101,11 +103,12 @@ fn title(side: &Side) -> String {
 /// A part's name, numbered when the name is not unique in its file.
 fn part_label(parts: &[PartView], index: usize) -> String {
     let name = &parts[index].name;
+    let shown = visible(name);
     if parts.iter().filter(|p| &p.name == name).count() > 1 {
         let k = parts[..=index].iter().filter(|p| &p.name == name).count();
-        format!("{name} (#{k})")
+        format!("{shown} (#{k})")
     } else {
-        name.clone()
+        shown
     }
 }
 

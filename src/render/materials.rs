@@ -3,6 +3,7 @@
 use super::format::fmt_num;
 use super::grid::new_table;
 use crate::analysis::summary::FORMAT_VERSION;
+use crate::diag::visible;
 use serde::Serialize;
 
 /// One listed material; `density` in kg/m³.
@@ -28,7 +29,11 @@ pub fn table(list: &[Listed]) -> String {
     let mut t = new_table();
     t.set_header(vec!["material", "density (kg/m³)", "source"]);
     for l in list {
-        t.add_row(vec![l.name.clone(), fmt_num(l.density), l.source.clone()]);
+        t.add_row(vec![
+            visible(&l.name),
+            fmt_num(l.density),
+            visible(&l.source),
+        ]);
     }
     format!("{t}\n")
 }

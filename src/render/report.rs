@@ -9,6 +9,7 @@ use super::format::{
 use super::grid::{Cells, new_table, right_align, write_table};
 use crate::analysis::ideal::Idealisation;
 use crate::analysis::summary::Summary;
+use crate::diag::{push_visible, visible};
 use crate::units::Dim;
 use comfy_table::{CellAlignment, Table};
 use std::fmt::Write;
@@ -63,11 +64,15 @@ fn principal_table(
 pub fn table(s: &Summary, source: &str) -> String {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
+    let source = visible(source);
     let _ = match (&s.name, &s.sub_assembly) {
-        (Some(n), Some(path)) => {
-            writeln!(out, "{n} (sub-assembly `{}` of {source})", path.join(" / "))
-        }
-        (Some(n), None) => writeln!(out, "{n} ({source})"),
+        (Some(n), Some(path)) => writeln!(
+            out,
+            "{} (sub-assembly `{}` of {source})",
+            visible(n),
+            visible(&path.join(" / "))
+        ),
+        (Some(n), None) => writeln!(out, "{} ({source})", visible(n)),
         (None, _) => writeln!(out, "{source}"),
     };
     let _ = writeln!(
@@ -185,7 +190,7 @@ pub fn table(s: &Summary, source: &str) -> String {
     for (i, p) in s.parts.iter().enumerate() {
         let _ = write!(cells.text, "{}", i + 1);
         cells.end();
-        cells.text.push_str(&p.name);
+        push_visible(&mut cells.text, &p.name);
         cells.end();
         cells.text.push_str(p.shape.name());
         cells.end();
@@ -246,7 +251,10 @@ fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
     for a in &s.assemblies {
         let indent = "  ".repeat(a.path.len() - 1);
         let mut row = vec![
-            format!("{indent}{}", a.path.last().expect("a path is never empty")),
+            format!(
+                "{indent}{}",
+                visible(a.path.last().expect("a path is never empty"))
+            ),
             a.parts.to_string(),
             fmt_num(a.mass / u.mass),
             fmt_percent(Some(a.mass_fraction)),
@@ -286,7 +294,7 @@ fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits) {
     };
     row("all together", "", &i.relative_change);
     for p in &i.parts {
-        row(&p.name, p.solid.name(), &p.relative_change);
+        row(&visible(&p.name), p.solid.name(), &p.relative_change);
     }
     write_table(out, &header, &cells, &[false, false, true, true, true]);
     let _ = writeln!(

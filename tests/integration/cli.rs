@@ -849,3 +849,34 @@ fn output_dash_is_standard_output() {
     assert!(!dir.join("-").exists());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Text from input is shown with its control characters as their pictures
+/// on stdout too, as on stderr: a part's name cannot colour the terminal or
+/// add a line, nor can a file's name add a line to `check`'s output.
+#[test]
+fn names_from_input_cannot_forge_output() {
+    let dir = crate::common::scratch("cli", "forged-names");
+    let text = "name = \"body\\u001b[2J\"\n\
+                [[part]]\nname = \"evil\\u001b[31m\\nfake.toml: ok\"\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+    let file = dir.join("x\nfake.toml: ok\n.toml");
+    std::fs::write(&file, text).unwrap();
+    let f = file.to_str().unwrap();
+    for args in [
+        vec!["report", f],
+        vec!["check", dir.to_str().unwrap()],
+        vec!["diff", f, f],
+    ] {
+        let out = massprop(&args);
+        let stdout = String::from_utf8(out.stdout).unwrap();
+        assert!(!stdout.contains('\u{1b}'), "{args:?}: {stdout}");
+        assert!(
+            !stdout.lines().any(|l| l.starts_with("fake.toml: ok")),
+            "{args:?}: {stdout}"
+        );
+        assert!(
+            stdout.contains('\u{241b}') || stdout.contains('\u{240a}'),
+            "{args:?}: {stdout}"
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
