@@ -114,6 +114,19 @@ pub fn visible(text: &str) -> String {
     out
 }
 
+/// A name or key from input as a message quotes it: at most `QUOTED`
+/// characters, the rest cut with its length said (a long source line is
+/// shown as a window the same way).
+pub fn shorten(text: &str) -> String {
+    const QUOTED: usize = 64;
+    let n = text.chars().count();
+    if n <= QUOTED {
+        return text.to_string();
+    }
+    let head: String = text.chars().take(QUOTED - 4).collect();
+    format!("{head}… ({n} characters)")
+}
+
 /// Append `visible(text)` to `out`: text from input written to stdout (a
 /// part's name, a file name) can neither act on the terminal nor add a line
 /// to line-per-record output.

@@ -431,8 +431,14 @@ pub fn parse_quantity_in(text: &str, expected: Dim, file: FileUnits) -> Result<f
 /// The nearest of `candidates` to a misspelt `word`, if one is close enough
 /// to be a likely typo.
 pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    // NOTE: the edit distance is at least the difference of the lengths, so
+    // a candidate whose length is too far off is not compared at all: a
+    // 200 KB key or name costs one count of its characters, not a
+    // quadratic comparison with every candidate.
+    let n = word.chars().count();
     candidates
         .into_iter()
+        .filter(|c| n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3))
         .map(|c| (strsim::damerau_levenshtein(word, c), c))
         .filter(|&(d, c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
         .min_by_key(|&(d, _)| d)

@@ -5,7 +5,7 @@
 //! messages: every wording it relies on is pinned by a test below, so an
 //! upgrade that changes one fails here, not in a user's terminal.
 
-use crate::diag::{Diagnostic, Source};
+use crate::diag::{Diagnostic, Source, shorten};
 use crate::shapes::Shape;
 use crate::units;
 use std::ops::Range;
@@ -67,7 +67,7 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
                 _ => valid,
             };
             let suggestion = units::suggest(key, valid.iter().copied());
-            let d = source.error(span, format!("unknown key `{key}`"));
+            let d = source.error(span, format!("unknown key `{}`", shorten(key)));
             return match suggestion {
                 Some(s) => d.label(format!("did you mean `{s}`?")),
                 None => d.help(format!(
@@ -95,7 +95,7 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     }
     if msg.starts_with("duplicate key") {
         let key = source.text.get(span.clone()).unwrap_or("").trim();
-        return source.error(span, format!("duplicate key `{key}`"));
+        return source.error(span, format!("duplicate key `{}`", shorten(key)));
     }
     let at = span.start;
     // TOML integers are 64-bit: toml says "integer `1e20-ish` as i128".
