@@ -178,9 +178,15 @@ impl Ctx<'_> {
         dim: Dim,
     ) -> Result<f64, Diagnostic> {
         let v = self.quantity(q, key, dim)?;
+        // A positive number written that f64 (or its conversion to SI)
+        // rounded to zero is too small, not "not positive".
+        let written = match q.get_ref() {
+            Quantity::Number(_) => self.source.text.get(q.span()).unwrap_or(""),
+            Quantity::Text(t) => t.as_str(),
+        };
         if v >= f64::MIN_POSITIVE {
             Ok(v)
-        } else if v > 0.0 {
+        } else if v > 0.0 || (v == 0.0 && positive_literal(written)) {
             Err(self.err(
                 q.span(),
                 format!(
@@ -232,4 +238,25 @@ impl Ctx<'_> {
             omega_span: r.omega.as_ref().map(Spanned::span),
         })
     }
+}
+
+/// Whether a number as written (`1e-400`, `"3e-330 mm"`) is positive: no
+/// sign, and a non-zero digit before any exponent.
+fn positive_literal(text: &str) -> bool {
+    let t = text
+        .trim()
+        .trim_matches('"')
+        .trim_matches('\'')
+        .trim_start();
+    if t.starts_with('-') {
+        return false;
+    }
+    let mantissa = t
+        .split(|c: char| c == 'e' || c == 'E' || c.is_whitespace())
+        .next()
+        .unwrap_or("");
+    !t.starts_with("0x")
+        && !t.starts_with("0o")
+        && !t.starts_with("0b")
+        && mantissa.chars().any(|c| ('1'..='9').contains(&c))
 }

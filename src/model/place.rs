@@ -182,19 +182,31 @@ impl Ctx<'_> {
         }
         let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
         let longest = vnorm(&e1).max(vnorm(&e2)).max(vnorm(&(v[2] - v[1])));
-        // Scaled by the longest edge, so the cross product cannot overflow.
-        let area = if longest > 0.0 && longest.is_finite() {
-            vnorm(&(e1 / longest).cross(&(e2 / longest))) / 2.0 * longest * longest
+        // Scaled by the longest edge, so the cross product can neither
+        // overflow nor underflow: the shape (`relative`, the area over the
+        // longest edge squared) is judged apart from the size.
+        let relative = if longest > 0.0 && longest.is_finite() {
+            vnorm(&(e1 / longest).cross(&(e2 / longest))) / 2.0
         } else {
             0.0
         };
+        let area = relative * longest * longest;
         if !(area * 4.0).is_finite() || !longest.is_finite() {
             return Err(self.err(
                 raw.span(),
                 "this triangle is too large for f64: its area overflows",
             ));
         }
-        if !(longest > 0.0 && area > COLLINEAR_TOLERANCE * longest * longest) {
+        if longest > 0.0 && relative > COLLINEAR_TOLERANCE && area < f64::MIN_POSITIVE {
+            return Err(self.err(
+                raw.span(),
+                format!(
+                    "this triangle is too small for f64: its area is below {:e} in SI units",
+                    f64::MIN_POSITIVE
+                ),
+            ));
+        }
+        if !(longest > 0.0 && relative > COLLINEAR_TOLERANCE) {
             return Err(self
                 .err(
                     raw.span(),
