@@ -453,9 +453,11 @@ pub fn summarize(
         "principal moments about the reference point",
         Blame::About,
     )?;
+    // √I / √m, not √(I/m): the ratio alone can overflow or underflow where
+    // the radius itself is an ordinary number.
     let radii = p_com
         .moments
-        .map(|i| ((i * f_inertia) / mass_dd).sqrt().f64());
+        .map(|i| ((i * f_inertia).sqrt() / mass_dd.sqrt()).f64());
     finite(
         &radii,
         "radii of gyration",

@@ -33,12 +33,15 @@ pub fn fmt_percent(fraction: Option<f64>) -> String {
 
 /// Append `fmt_percent(fraction)` to `out`.
 pub fn push_percent(out: &mut String, fraction: Option<f64>) {
-    match fraction {
-        Some(f) => {
-            push_sig(out, f * 100.0, 3);
+    match fraction.map(|f| (f, f * 100.0)) {
+        Some((_, p)) if p.is_finite() => {
+            push_sig(out, p, 3);
             out.push_str(" %");
         }
-        None => out.push_str(UNDEFINED),
+        // A ratio beyond f64 as a percentage: said, never `inf %`.
+        Some((f, _)) if f > 0.0 => out.push_str("> 1e306 %"),
+        Some((f, _)) if f < 0.0 => out.push_str("< -1e306 %"),
+        _ => out.push_str(UNDEFINED),
     }
 }
 
@@ -279,6 +282,10 @@ mod tests {
         assert_eq!(fmt_percent(Some(1.0)), "100 %");
         assert_eq!(fmt_percent(Some(0.0)), "0 %");
         assert_eq!(fmt_percent(None), "—");
+        // Never `inf %` or `NaN %`.
+        assert_eq!(fmt_percent(Some(f64::MAX)), "> 1e306 %");
+        assert_eq!(fmt_percent(Some(-f64::INFINITY)), "< -1e306 %");
+        assert_eq!(fmt_percent(Some(f64::NAN)), "—");
     }
 
     /// `fmt_sig` formats once where it can; this reference, as it was,

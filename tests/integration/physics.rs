@@ -1393,3 +1393,23 @@ fn only_names_the_sub_assembly_in_the_table_and_the_json() {
     assert_eq!(v["name"], "cart");
     assert!(v.get("sub_assembly").is_none());
 }
+
+/// A radius of gyration is √I / √m: where I/m alone overflows (light parts
+/// very far apart) or underflows (heavy parts very close), the radius is
+/// still an ordinary number and is reported, to a few ulps.
+#[test]
+fn radii_of_gyration_whose_ratio_over_or_underflows_are_reported() {
+    for (m, d) in [(1e-300, 1e155), (1e300, 1e-155)] {
+        let text = format!(
+            "[[part]]\nshape = \"point\"\nmass = {m:e}\ncenter = [{d:e}, 0, 0]\n\
+             [[part]]\nshape = \"point\"\nmass = {m:e}\ncenter = [{:e}, 0, 0]\n",
+            -d
+        );
+        let s = summary(&text);
+        // Two points at ±d: I_yy = I_zz = 2 m d², so k = d; I_xx = 0.
+        for k in &s.radii_of_gyration[1..] {
+            assert!((k / d - 1.0).abs() <= 8.0 * f64::EPSILON, "{k:e} vs {d:e}");
+        }
+        assert_eq!(s.radii_of_gyration[0], 0.0);
+    }
+}
