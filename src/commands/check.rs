@@ -25,16 +25,29 @@ pub struct Options {
     pub format: Format,
 }
 
+/// What a search for part files found.
+enum Found {
+    /// A part file to check (as named, or found in a directory).
+    File(String),
+    /// Something that is not checked, with why: a FIFO, socket or device
+    /// named `*.toml` (never opened: reading one can block forever), or a
+    /// directory that cannot be read. It counts as invalid; the search goes
+    /// on.
+    Skipped(Diagnostic),
+}
+
 /// The part files named: files as given, directories searched recursively
 /// for `*.toml` in sorted order.
-fn collect(paths: &[String]) -> Result<Vec<String>, Diagnostic> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) -> Result<(), Diagnostic> {
-        let read = std::fs::read_dir(dir).map_err(|e| {
-            Diagnostic::file(
-                &dir.display().to_string(),
-                format!("cannot read directory: {e}"),
-            )
-        })?;
+fn collect(paths: &[String]) -> Vec<Found> {
+    fn walk(dir: &Path, out: &mut Vec<Found>) {
+        let read = match std::fs::read_dir(dir) {
+            Ok(read) => read,
+            Err(e) => {
+                let name = dir.display().to_string();
+                let d = Diagnostic::file(&name, format!("cannot read directory: {e}"));
+                return out.push(Found::Skipped(d));
+            }
+        };
         // With each entry's own type (from the directory, not following a
         // symlink): symlinked directories are not followed (as ripgrep does
         // not by default: `ln -s .. up` would loop); symlinked files are.
@@ -45,30 +58,35 @@ fn collect(paths: &[String]) -> Result<Vec<String>, Diagnostic> {
         entries.sort();
         for (p, dir) in entries {
             if dir {
-                walk(&p, out)?;
-            } else if p.extension().is_some_and(|e| e == "toml") && !p.is_dir() {
-                out.push(p);
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "toml") {
+                // The target's type, without opening it.
+                match std::fs::metadata(&p) {
+                    Ok(m) if m.is_file() => out.push(Found::File(p.display().to_string())),
+                    Ok(m) if m.is_dir() => {}
+                    _ => out.push(Found::Skipped(Diagnostic::file(
+                        &p.display().to_string(),
+                        "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
+                    ))),
+                }
             }
         }
-        Ok(())
     }
     let mut out = Vec::new();
     for p in paths {
         let path = Path::new(p);
         if p != "-" && path.is_dir() {
-            let mut found = Vec::new();
-            walk(path, &mut found)?;
-            out.extend(found.into_iter().map(|f| f.display().to_string()));
+            walk(path, &mut out);
         } else {
-            out.push(p.clone());
+            out.push(Found::File(p.clone()));
         }
     }
-    Ok(out)
+    out
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
-    let files = collect(&o.paths)?;
-    if files.is_empty() {
+    let found = collect(&o.paths);
+    if found.is_empty() {
         return Err(Diagnostic::plain(
             "no part files found (`check` looks for *.toml in directories)",
         ));
@@ -79,12 +97,29 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         precision: o.precision,
         ..Settings::default()
     };
+    let invalid = |path: String, d: Diagnostic, stderr: &mut String| {
+        stderr.push_str(&d.to_string());
+        FileResult {
+            path,
+            status: Status::Invalid,
+            error: Some(d.to_string()),
+            checks: Vec::new(),
+            validity: Vec::new(),
+        }
+    };
     // Every file found, valid or not, and every file those include.
-    let mut read: Vec<PathBuf> = files
-        .iter()
-        .filter_map(|f| std::fs::canonicalize(f).ok())
-        .collect();
-    for f in &files {
+    let mut read: Vec<PathBuf> = Vec::new();
+    for found in found {
+        let f = match found {
+            Found::File(f) => f,
+            Found::Skipped(d) => {
+                let path = d.location().unwrap_or_default().to_string();
+                results.push(invalid(path, d, &mut stderr));
+                continue;
+            }
+        };
+        let f = &f;
+        read.extend(std::fs::canonicalize(f).ok());
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
         // itself (standard input, a write error) is the error.
@@ -113,16 +148,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         };
         match checked {
             Ok(r) => results.push(r),
-            Err(d) => {
-                stderr.push_str(&d.to_string());
-                results.push(FileResult {
-                    path: f.clone(),
-                    status: Status::Invalid,
-                    error: Some(d.to_string()),
-                    checks: Vec::new(),
-                    validity: Vec::new(),
-                });
-            }
+            Err(d) => results.push(invalid(f.clone(), d, &mut stderr)),
         }
     }
     let worst = |s: Status| results.iter().any(|r| r.status == s);

@@ -366,3 +366,44 @@ fn bless_keeps_crlf_line_endings_and_refuses_stdin_by_saying_so() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("cannot bless standard input"), "{stderr}");
 }
+
+/// A FIFO named `*.toml` in a directory is reported as not a part file and
+/// never opened (opening it blocked `check` forever); the other files are
+/// still checked and the summary line is printed.
+#[test]
+fn a_fifo_found_in_a_directory_is_reported_not_opened() {
+    let dir = crate::common::scratch("check", "fifo");
+    std::fs::copy("shapes/bent-plate.toml", dir.join("a.toml")).unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(dir.join("b.toml"))
+        .status();
+    if !made.is_ok_and(|s| s.success()) {
+        eprintln!("skipped: mkfifo is not available");
+        return;
+    }
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args(["check", dir.to_str().unwrap()])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > std::time::Duration::from_secs(20) {
+            child.kill().unwrap();
+            panic!("check blocked on a FIFO");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    let out = child.wait_with_output().unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(stderr.contains("not a regular file"), "{stderr}");
+    assert!(stdout.contains("a.toml: ok"), "{stdout}");
+    assert!(
+        stdout.contains("checked 2 files: 1 ok, 0 failed, 1 invalid"),
+        "{stdout}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
