@@ -87,6 +87,20 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
     // A symlink is written through (the link stays a link, its target gets
     // the text); something that is not a regular file (/dev/stdout, a FIFO,
     // a device) cannot be replaced by a rename and is written directly.
+    // NOTE: asked first, of the path itself (stat follows the links): with
+    // stdout a pipe, /dev/stdout resolves to /proc/self/fd/1 and on to
+    // `pipe:[N]`, which `canonicalize` cannot resolve — the rename below
+    // then replaced the /dev/stdout symlink itself.
+    if let Ok(meta) = std::fs::metadata(path)
+        && !meta.is_file()
+        && !meta.is_dir()
+    {
+        return std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
+            .map_err(fail);
+    }
     let resolved = match std::fs::canonicalize(path) {
         Ok(real) => match std::fs::metadata(&real) {
             Ok(meta) if !meta.is_file() && !meta.is_dir() => {

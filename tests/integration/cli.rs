@@ -880,3 +880,24 @@ fn names_from_input_cannot_forge_output() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o` onto a link to the process's own standard output, when that is a
+/// pipe, writes into the pipe; it once renamed a file over the link (for
+/// `/dev/stdout`, run as root, over /dev/stdout itself). The link here is a
+/// scratch one, so a regression cannot damage the machine.
+#[test]
+fn output_onto_a_link_to_a_piped_stdout_writes_into_the_pipe() {
+    let dir = crate::common::scratch("cli", "output-stdout-pipe");
+    let link = dir.join("stdout");
+    std::os::unix::fs::symlink("/proc/self/fd/1", &link).unwrap();
+    let out = massprop(&["report", BENT_PLATE, "-o", link.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).starts_with("bent plate ("));
+    assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
+    std::fs::remove_dir_all(&dir).ok();
+}
