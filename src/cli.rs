@@ -46,6 +46,9 @@ pub struct MaterialsArgs {
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
 }
 
 #[derive(Args, Debug)]
@@ -75,6 +78,9 @@ pub struct CheckArgs {
     /// Output format: one line per file or failure, or one JSON document.
     #[arg(long, value_enum, default_value_t)]
     pub format: Format,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
 }
 
 #[derive(Args, Debug)]
@@ -112,6 +118,9 @@ pub struct DiffArgs {
     /// or flat bodies). See docs/accuracy.md.
     #[arg(long, value_enum, default_value_t)]
     pub precision: Precision,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
 }
 
 #[derive(Args, Debug)]
@@ -159,6 +168,9 @@ pub struct ReportArgs {
     /// rad/s², or with units, e.g. "0,0,90 deg/s^2". Needs ω.
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub alpha: Option<String>,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
 }
 
 impl ValueEnum for Format {
@@ -223,6 +235,7 @@ impl Cli {
                     products: a.products,
                     precision: a.precision,
                     only: a.only.clone(),
+                    include_roots: a.includes.include_root.clone(),
                     overrides: Overrides {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
@@ -236,6 +249,7 @@ impl Cli {
                 bless: a.bless,
                 precision: a.precision,
                 format: a.format,
+                include_roots: a.includes.include_root.clone(),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),
@@ -244,13 +258,26 @@ impl Cli {
                 output: a.output.clone(),
                 tol: a.tol,
                 precision: a.precision,
+                include_roots: a.includes.include_root.clone(),
             }),
             Command::Materials(a) => Request::Materials(commands::materials::Options {
                 file: a.file.clone(),
                 format: a.format,
+                include_roots: a.includes.include_root.clone(),
             }),
         }
     }
+}
+
+/// How far includes may reach; every command that reads part files takes it.
+#[derive(Args, Debug, Clone, Default)]
+pub struct IncludeArgs {
+    /// Allow `include`s from this directory tree too (repeatable). By
+    /// default an included file must lie, after following symlinks, inside
+    /// the directory of the part file that names it at the top, or the
+    /// working directory.
+    #[arg(long = "include-root", value_name = "DIR")]
+    pub include_root: Vec<std::path::PathBuf>,
 }
 
 #[cfg(test)]

@@ -48,6 +48,8 @@ pub struct Settings {
     pub precision: Precision,
     /// Report one sub-assembly alone (`--only`).
     pub only: Option<String>,
+    /// More directory trees includes may come from (`--include-root`).
+    pub include_roots: Vec<std::path::PathBuf>,
     pub overrides: Overrides,
 }
 
@@ -68,7 +70,7 @@ pub fn load(path: &str, settings: &Settings) -> Result<Loaded, Diagnostic> {
 
 /// `load` of a source already read.
 pub fn load_source(source: Source, settings: &Settings) -> Result<Loaded, Diagnostic> {
-    let mut model = Model::parse(&source)?;
+    let mut model = Model::parse_with(&source, &settings.include_roots)?;
     let only = match &settings.only {
         Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
         None => None,

@@ -21,7 +21,7 @@ use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
 
 /// Bless one file: returns whether it changed. Errors leave it untouched.
-pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bool, Diagnostic> {
+pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     if path == "-" {
         return Err(Diagnostic::plain(
             "`--bless` writes files; it cannot bless standard input",
@@ -32,7 +32,7 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.
         Err(_) => {
-            return Err(Model::parse(&source)
+            return Err(Model::parse_with(&source, &settings.include_roots)
                 .err()
                 .unwrap_or_else(|| Diagnostic::file(path, "cannot parse")));
         }
@@ -41,11 +41,7 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
     // that the file parses as a model.
     let added_tol = add_default_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
-    let settings = Settings {
-        precision,
-        ..Settings::default()
-    };
-    let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, &settings)?;
+    let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, settings)?;
 
     let mut changed = added_tol;
     if doc.get("expect").is_none() {
@@ -59,7 +55,10 @@ pub fn bless_file(path: &str, precision: crate::compose::Precision) -> Result<bo
         return Ok(false);
     }
     // The result must parse before it replaces the file.
-    Model::parse(&Source::new(source.name.clone(), text.clone()))?;
+    Model::parse_with(
+        &Source::new(source.name.clone(), text.clone()),
+        &settings.include_roots,
+    )?;
     // toml_edit writes new lines as LF: a CRLF file stays CRLF throughout.
     let text = if source.text.contains("\r\n") {
         text.replace("\r\n", "\n").replace('\n', "\r\n")

@@ -23,6 +23,8 @@ pub struct Options {
     pub bless: bool,
     pub precision: Precision,
     pub format: Format,
+    /// More directory trees includes may come from.
+    pub include_roots: Vec<PathBuf>,
 }
 
 /// What a search for part files found.
@@ -95,6 +97,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let mut stderr = String::new();
     let settings = Settings {
         precision: o.precision,
+        include_roots: o.include_roots.clone(),
         ..Settings::default()
     };
     let invalid = |path: String, d: Diagnostic, stderr: &mut String| {
@@ -125,7 +128,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         // itself (standard input, a write error) is the error.
         let mut not_blessed = None;
         if o.bless {
-            match bless::bless_file(f, o.precision) {
+            match bless::bless_file(f, &settings) {
                 Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
                 Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
                 Err(d) => not_blessed = Some(d),

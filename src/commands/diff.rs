@@ -18,6 +18,8 @@ pub struct Options {
     /// Relative tolerance.
     pub tol: f64,
     pub precision: Precision,
+    /// More directory trees includes may come from.
+    pub include_roots: Vec<std::path::PathBuf>,
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
@@ -35,6 +37,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     // Tensor convention: the JSON contract of diff is fixed to it.
     let settings = Settings {
         precision: o.precision,
+        include_roots: o.include_roots.clone(),
         ..Settings::default()
     };
     let old = analysis::load(&o.old, &settings)?;

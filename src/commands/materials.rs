@@ -13,6 +13,8 @@ pub struct Options {
     /// A part file whose `[materials]` are listed too.
     pub file: Option<String>,
     pub format: Format,
+    /// More directory trees includes may come from.
+    pub include_roots: Vec<std::path::PathBuf>,
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
@@ -26,7 +28,11 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         .collect();
     if let Some(path) = &o.file {
         // The whole pipeline: a file `report` rejects is rejected here too.
-        let model = analysis::load(path, &Settings::default())?.model;
+        let settings = Settings {
+            include_roots: o.include_roots.clone(),
+            ..Settings::default()
+        };
+        let model = analysis::load(path, &settings)?.model;
         for (name, &density) in &model.materials {
             match list.iter_mut().find(|l| &l.name == name) {
                 Some(l) => {

@@ -31,6 +31,9 @@ pub(super) struct Files {
     cache: HashMap<PathBuf, Model>,
     /// Every file included, at any depth, as often as it is.
     read: Vec<PathBuf>,
+    /// The directory trees includes must stay in (canonical): the
+    /// top-level file's, the working directory, and any `--include-root`.
+    pub(super) roots: Vec<PathBuf>,
 }
 
 impl Files {
@@ -196,6 +199,18 @@ impl Ctx<'_> {
             .help("the path is relative to the including file")
         };
         let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
+        // Confined: a part file from a pull request must not read, and
+        // quote in an error, any file it names (`/proc/self/environ`).
+        if !files.roots.iter().any(|r| canonical.starts_with(r)) {
+            return Err(self
+                .err(
+                    inc.span(),
+                    format!(
+                        "the included `{shown_name}` is outside the directory of the part file and the working directory"
+                    ),
+                )
+                .help("includes stay inside those directory trees (after following symlinks); `--include-root DIR` allows another"));
+        }
         let meta = std::fs::metadata(&canonical).map_err(unreadable)?;
         if meta.len() > crate::io::MAX_FILE_BYTES {
             return Err(self.err(

@@ -70,12 +70,30 @@ pub struct Analysis {
 }
 
 impl Model {
-    /// Parse and validate a part file.
+    /// Parse and validate a part file; its includes may come from its own
+    /// directory tree and the working directory's.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
+        Model::parse_with(source, &[])
+    }
+
+    /// `parse`, with includes also allowed from `include_roots`.
+    pub fn parse_with(
+        source: &Source,
+        include_roots: &[std::path::PathBuf],
+    ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
         if let Ok(p) = std::fs::canonicalize(&source.name) {
+            files
+                .roots
+                .extend(p.parent().map(std::path::Path::to_path_buf));
             files.stack.push((p, source.name.clone()));
         }
+        files.roots.extend(std::fs::canonicalize(".").ok());
+        files.roots.extend(
+            include_roots
+                .iter()
+                .filter_map(|r| std::fs::canonicalize(r).ok()),
+        );
         let mut model = Model::parse_in(source, &mut files)?;
         model.included = files.included();
         Ok(model)

@@ -901,3 +901,42 @@ fn output_onto_a_link_to_a_piped_stdout_writes_into_the_pipe() {
     assert!(std::fs::symlink_metadata(&link).unwrap().is_symlink());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// An include outside the part file's directory tree and the working
+/// directory is refused; `--include-root` allows it.
+#[test]
+fn includes_are_confined_unless_a_root_allows_them() {
+    let dir = crate::common::scratch("cli", "include-root");
+    std::fs::create_dir_all(dir.join("a")).unwrap();
+    std::fs::create_dir_all(dir.join("b")).unwrap();
+    std::fs::write(
+        dir.join("b/sub.toml"),
+        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("a/top.toml"),
+        "[[part]]\ninclude = \"../b/sub.toml\"\n",
+    )
+    .unwrap();
+    let run = |extra: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+            .args(["report", "top.toml"])
+            .args(extra)
+            .current_dir(dir.join("a"))
+            .output()
+            .unwrap()
+    };
+    let out = run(&[]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("is outside the directory"));
+    let b = dir.join("b");
+    let out = run(&["--include-root", b.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
