@@ -28,6 +28,15 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
         ));
     }
     let source = crate::io::read_source(path)?;
+    // A rename replaces a read-only file as easily as any other (and root
+    // writes anything): the mode is the owner's word that it is not to be
+    // changed.
+    if std::fs::metadata(path).is_ok_and(|m| m.permissions().readonly()) {
+        return Err(Diagnostic::file(
+            path,
+            "the file is read-only: not blessed (make it writable to bless it)",
+        ));
+    }
     let mut doc: DocumentMut = match source.text.parse() {
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.

@@ -407,3 +407,22 @@ fn a_fifo_found_in_a_directory_is_reported_not_opened() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `check --bless` refuses a read-only file and leaves it as it was (a
+/// rename replaced it regardless of its mode).
+#[test]
+fn bless_refuses_a_read_only_file() {
+    let dir = crate::common::scratch("check", "bless-read-only");
+    let f = dir.join("ro.toml");
+    let text = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+    std::fs::write(&f, text).unwrap();
+    let mut perms = std::fs::metadata(&f).unwrap().permissions();
+    perms.set_readonly(true);
+    std::fs::set_permissions(&f, perms).unwrap();
+    let out = crate::common::massprop(&["check", "--bless", f.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("read-only: not blessed"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&f).unwrap(), text);
+    std::fs::remove_dir_all(&dir).ok();
+}
