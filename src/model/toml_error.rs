@@ -38,6 +38,16 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         .replace("expected a map", "expected a table")
         .replace("invalid type: sequence", "invalid type: array")
         .replace("a sequence", "an array");
+    // serde: "invalid length 0, expected a table such as …" for an array
+    // given where a table belongs: an array of the wrong type, in TOML's
+    // words.
+    let msg = match msg
+        .strip_prefix("invalid length ")
+        .and_then(|rest| rest.split_once(", expected "))
+    {
+        Some((_, expected)) => format!("invalid type: array, expected {expected}"),
+        None => msg,
+    };
     // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
     // length", or an unknown key inside it) would name neither the table
     // nor the fix. Such a header is an error wherever serde stumbled.
@@ -361,6 +371,25 @@ mod tests {
             .expect_err("the text is not a valid part file");
         let ours = toml_error(&Source::new("t.toml", text), &e).to_string();
         (e.message().to_string(), ours)
+    }
+
+    #[test]
+    fn an_array_where_a_table_belongs_is_called_an_array() {
+        let (upstream, ours) = reworded("units = []\n");
+        assert!(
+            upstream.starts_with("invalid length 0, expected a table"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `units` has the wrong type: array, expected a table such as"),
+            "{ours}"
+        );
+        let (_, ours) = reworded(&part_with("rotation = []"));
+        assert!(
+            ours.contains("`rotation` has the wrong type: array"),
+            "{ours}"
+        );
+        assert!(!ours.contains("invalid length"), "{ours}");
     }
 
     /// A part with `key = value` after its shape.
