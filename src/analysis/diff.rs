@@ -8,9 +8,9 @@ use super::Loaded;
 use super::summary::Summary;
 use crate::diag::Diagnostic;
 use crate::numeric::norm;
+use crate::part::PartSi;
 use crate::shapes::Shape;
 use crate::units::Dim;
-use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
 use std::collections::{HashMap, VecDeque};
 
@@ -25,13 +25,11 @@ pub struct Side {
     pub parts: Vec<PartView>,
 }
 
-/// What `diff` compares of a part, SI.
+/// What `diff` compares of a part: its name and shape, and its SI view.
 pub struct PartView {
     pub name: String,
     pub shape: Shape,
-    pub mass: f64,
-    pub center: Vector3<f64>,
-    pub second_moment: Matrix3<f64>,
+    pub si: PartSi,
 }
 
 impl Side {
@@ -41,15 +39,10 @@ impl Side {
         let parts = model
             .parts
             .iter()
-            .map(|p| {
-                let si = p.si_in(&factors);
-                PartView {
-                    name: p.name.clone(),
-                    shape: p.shape,
-                    mass: si.mass,
-                    center: si.center,
-                    second_moment: si.second_moment,
-                }
+            .map(|p| PartView {
+                name: p.name.clone(),
+                shape: p.shape,
+                si: p.si_in(&factors),
             })
             .collect();
         Side { loaded, parts }
@@ -322,14 +315,14 @@ fn part_changes(o: &PartView, n: &PartView, length: f64, tol: f64) -> Vec<Change
     }
     // `!(x <= limit)` also catches a NaN or infinite ratio as a change.
     // |m|: a cut-out's mass is negative.
-    if !((n.mass - o.mass).abs() <= tol * o.mass.abs()) {
+    if !((n.si.mass - o.si.mass).abs() <= tol * o.si.mass.abs()) {
         what.push(Change::Mass);
     }
-    let moved = norm((n.center - o.center).as_slice());
+    let moved = norm((n.si.center - o.si.center).as_slice());
     if !(moved <= tol * length) {
         what.push(Change::Centroid);
     }
-    let (co, cn) = (o.second_moment, n.second_moment);
+    let (co, cn) = (o.si.second_moment, n.si.second_moment);
     let scale = pick(norm(co.as_slice()), norm(cn.as_slice()));
     if !(norm((cn - co).as_slice()) <= tol * scale) {
         what.push(Change::SecondMoment);

@@ -404,8 +404,8 @@ pub fn summarize(
 ) -> Result<Summary, SummaryError> {
     let body = compose::compose(&model.parts, precision);
     let u = model.units;
-    let f_mass = u.factor(Dim::MASS).dd();
-    let f_length = u.factor(Dim::LENGTH).dd();
+    let factors = SiFactors::of(u);
+    let (f_mass, f_length) = (factors.mass, factors.length);
     let f_inertia = u.factor(Dim::INERTIA).dd();
     let mass_dd = body.mass * f_mass;
     let mass = mass_dd.f64();
@@ -498,7 +498,6 @@ pub fn summarize(
         finite(m, "Euler moment", Blame::Alpha)?;
     }
 
-    let factors = SiFactors::of(model.units);
     let mut summary = Summary {
         format_version: FORMAT_VERSION,
         name: model.name.clone(),

@@ -35,7 +35,7 @@ enum Found {
     /// named `*.toml` (never opened: reading one can block forever), or a
     /// directory that cannot be read. It counts as invalid; the search goes
     /// on.
-    Skipped(Diagnostic),
+    Skipped(String, Diagnostic),
 }
 
 /// The part files named: files as given, directories searched recursively
@@ -47,7 +47,7 @@ fn collect(paths: &[String]) -> Vec<Found> {
             Err(e) => {
                 let name = dir.display().to_string();
                 let d = Diagnostic::file(&name, format!("cannot read directory: {e}"));
-                return out.push(Found::Skipped(d));
+                return out.push(Found::Skipped(name, d));
             }
         };
         // With each entry's own type (from the directory, not following a
@@ -66,10 +66,14 @@ fn collect(paths: &[String]) -> Vec<Found> {
                 match std::fs::metadata(&p) {
                     Ok(m) if m.is_file() => out.push(Found::File(p.display().to_string())),
                     Ok(m) if m.is_dir() => {}
-                    _ => out.push(Found::Skipped(Diagnostic::file(
-                        &p.display().to_string(),
-                        "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
-                    ))),
+                    _ => {
+                        let name = p.display().to_string();
+                        let d = Diagnostic::file(
+                            &name,
+                            "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
+                        );
+                        out.push(Found::Skipped(name, d));
+                    }
                 }
             }
         }
@@ -115,26 +119,24 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     for found in found {
         let f = match found {
             Found::File(f) => f,
-            Found::Skipped(d) => {
-                let path = d.location().unwrap_or_default().to_string();
+            Found::Skipped(path, d) => {
                 results.push(invalid(path, d, &mut stderr));
                 continue;
             }
         };
-        let f = &f;
-        read.extend(std::fs::canonicalize(f).ok());
+        read.extend(std::fs::canonicalize(&f).ok());
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
         // itself (standard input, a write error) is the error.
         let mut not_blessed = None;
         if o.bless {
-            match bless::bless_file(f, &settings) {
+            match bless::bless_file(&f, &settings) {
                 Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
                 Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
                 Err(d) => not_blessed = Some(d),
             }
         }
-        let loaded = analysis::load(f, &settings).map(|l| {
+        let loaded = analysis::load(&f, &settings).map(|l| {
             read.extend(super::files_of(&l));
             check_loaded(&l)
         });
@@ -151,7 +153,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         };
         match checked {
             Ok(r) => results.push(r),
-            Err(d) => results.push(invalid(f.clone(), d, &mut stderr)),
+            Err(d) => results.push(invalid(f, d, &mut stderr)),
         }
     }
     let worst = |s: Status| results.iter().any(|r| r.status == s);

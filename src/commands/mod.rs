@@ -74,9 +74,16 @@ impl Request {
             Request::Report(o) => vec![&o.file],
             Request::Check(o) => o.paths.iter().map(String::as_str).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
-            Request::Materials(o) => o.file.as_deref().into_iter().collect(),
+            Request::Materials(_) => Vec::new(),
         }
     }
+}
+
+/// `-o PATH` names `input`, a file the run reads.
+fn onto_input(path: &str, input: &str) -> Diagnostic {
+    Diagnostic::plain(format!(
+        "`-o {path}` is the part file `{input}`: the report would replace it"
+    ))
 }
 
 /// Run a command. Errors are user-facing diagnostics (exit 2).
@@ -84,15 +91,14 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
     // `-o` onto a part file being read would replace the design with the
     // report: refused before anything is read or written.
     let output = request.output();
-    if let Some(o) = output.and_then(|o| std::fs::canonicalize(o).ok()) {
-        for i in request.inputs() {
-            if std::fs::canonicalize(i).is_ok_and(|i| i == o) {
-                return Err(Diagnostic::plain(format!(
-                    "`-o {}` is the part file `{i}`: the report would replace it",
-                    output.unwrap_or_default()
-                )));
-            }
-        }
+    if let Some(path) = output
+        && let Ok(o) = std::fs::canonicalize(path)
+        && let Some(i) = request
+            .inputs()
+            .into_iter()
+            .find(|i| std::fs::canonicalize(i).is_ok_and(|i| i == o))
+    {
+        return Err(onto_input(path, i));
     }
     let out = match request {
         Request::Report(o) => report::run(o)?,
@@ -108,10 +114,7 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
             if let Ok(o) = std::fs::canonicalize(path)
                 && let Some(i) = out.read.iter().find(|i| **i == o)
             {
-                return Err(Diagnostic::plain(format!(
-                    "`-o {path}` is the part file `{}`: the report would replace it",
-                    i.display()
-                )));
+                return Err(onto_input(path, &i.display().to_string()));
             }
             write_atomically(path, &out.stdout, "the output file")?;
             Ok(Outcome {

@@ -128,19 +128,21 @@ impl Ctx<'_> {
         let Some(shape_raw) = &p.shape else {
             return Err(self.err(raw.span(), "missing key `shape`").help(format!(
                 "every part needs `shape`, one of {} (or `include` of another part file)",
-                Shape::ALL.map(|s| format!("\"{}\"", s.name())).join(", ")
+                Shape::quoted_names()
             )));
         };
         let shape = Shape::from_name(shape_raw.get_ref()).ok_or_else(|| {
-            let names = Shape::ALL.map(Shape::name);
+            let names: Vec<&str> = crate::shapes::SHAPES.iter().map(|s| s.name).collect();
             self.err(
                 shape_raw.span(),
                 format!("unknown shape {:?}", shape_raw.get_ref()),
             )
-            .label(match units::suggest(shape_raw.get_ref(), names) {
-                Some(s) => format!("did you mean \"{s}\"?"),
-                None => format!("expected one of {}", names.join(", ")),
-            })
+            .label(
+                match units::suggest(shape_raw.get_ref(), names.iter().copied()) {
+                    Some(s) => format!("did you mean \"{s}\"?"),
+                    None => format!("expected one of {}", names.join(", ")),
+                },
+            )
         })?;
         let s = shape.name();
 

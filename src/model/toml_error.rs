@@ -51,10 +51,10 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
     // length", or an unknown key inside it) would name neither the table
     // nor the fix. Such a header is an error wherever serde stumbled.
-    if let Some((at, name)) = array_of_tables_header(&source.text) {
+    if let Some((header, name)) = array_of_tables_header(&source.text) {
         return source
             .error(
-                at..at + name.len() + 4,
+                header,
                 format!("`{name}` must be a table, found an array of tables"),
             )
             .help(format!("write `[{name}]`, with one pair of brackets"));
@@ -97,7 +97,7 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         return if key == "shape" {
             d.help(format!(
                 "every part needs `shape`, one of {}",
-                Shape::ALL.map(|s| format!("\"{}\"", s.name())).join(", ")
+                Shape::quoted_names()
             ))
         } else {
             d
@@ -178,18 +178,21 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
 }
 
 /// The first `[[analysis]]`, `[[units]]`, `[[materials]]` or `[[expect]]`
-/// header (tables the file has at most one of): its offset and name.
-fn array_of_tables_header(text: &str) -> Option<(usize, &'static str)> {
+/// header (tables the file has at most one of): where it is and its name.
+fn array_of_tables_header(text: &str) -> Option<(Range<usize>, &'static str)> {
     let mut at = 0;
     for line in text.split_inclusive('\n') {
         let code = line.trim_start();
-        if let Some((name, _)) = code.strip_prefix("[[").and_then(|h| h.split_once("]]")) {
-            let name = name.trim();
+        if let Some((inner, _)) = code.strip_prefix("[[").and_then(|h| h.split_once("]]")) {
+            // The whole header, `[[ analysis ]]` with its spaces.
+            let start = at + line.len() - code.len();
+            let header = start..start + inner.len() + 4;
+            let name = inner.trim();
             if let Some(table) = ["analysis", "units", "materials", "expect"]
                 .into_iter()
                 .find(|t| *t == name)
             {
-                return Some((at + line.len() - code.len(), table));
+                return Some((header, table));
             }
         }
         at += line.len();
@@ -371,6 +374,13 @@ mod tests {
             .expect_err("the text is not a valid part file");
         let ours = toml_error(&Source::new("t.toml", text), &e).to_string();
         (e.message().to_string(), ours)
+    }
+
+    #[test]
+    fn an_array_of_tables_header_is_pointed_at_whole() {
+        let text = "[[part]]\nshape = \"point\"\n  [[ analysis ]]\nabout = [0, 0, 0]\n";
+        let (header, name) = array_of_tables_header(text).unwrap();
+        assert_eq!((&text[header], name), ("[[ analysis ]]", "analysis"));
     }
 
     #[test]

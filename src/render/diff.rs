@@ -113,11 +113,11 @@ fn part_label(parts: &[PartView], index: usize) -> String {
 }
 
 fn describe_lone(p: &PartView, u: &DisplayUnits) -> String {
-    let c = p.center.as_slice();
+    let c = p.si.center.as_slice();
     format!(
         "{}, {} {} at ({}, {}, {}) {}",
         p.shape.name(),
-        show(p.mass, u.mass),
+        show(p.si.mass, u.mass),
         u.mass_label,
         show(c[0], u.length),
         show(c[1], u.length),
@@ -132,13 +132,13 @@ fn describe_change(o: &PartView, n: &PartView, what: &[Change], u: &DisplayUnits
             Change::Shape => format!("shape {} → {}", o.shape.name(), n.shape.name()),
             Change::Mass => format!(
                 "mass {} → {} {} ({})",
-                show(o.mass, u.mass),
-                show(n.mass, u.mass),
+                show(o.si.mass, u.mass),
+                show(n.si.mass, u.mass),
                 u.mass_label,
-                percent(Some((n.mass - o.mass) / o.mass))
+                percent(Some((n.si.mass - o.si.mass) / o.si.mass))
             ),
             Change::Centroid => {
-                let moved = norm((n.center - o.center).as_slice());
+                let moved = norm((n.si.center - o.si.center).as_slice());
                 if moved < f64::MAX {
                     format!(
                         "centroid moved {} {}",

@@ -190,7 +190,7 @@ impl DisplayUnits {
             Dim::ANGULAR_ACCELERATION => (1.0, "rad/s²"),
             Dim::ANGULAR_MOMENTUM => (1.0, "N·m·s"),
             // Also the dimension of a moment, which the report labels
-            // `MOMENT_UNIT` itself.
+            // with `MOMENT_UNIT` instead.
             Dim::ENERGY => (1.0, "J"),
             _ => (1.0, ""),
         }

@@ -93,34 +93,33 @@ pub fn table(s: &Summary, source: &str) -> String {
 
     let mut vectors = new_table();
     vectors.set_header(vec!["", "x", "y", "z", "unit"]);
-    let mut row = |label: &str, v: &[f64; 3], dim: Dim| {
-        let (scale, unit) = u.of_dim(dim);
-        let unit = if dim == Dim::ENERGY {
-            MOMENT_UNIT
-        } else {
-            unit
-        };
+    let mut row = |label: &str, v: &[f64; 3], (scale, unit): (f64, &str)| {
         let mut cells = vec![label.to_string()];
         cells.extend(v.iter().map(|x| fmt_num(x / scale)));
         cells.push(unit.to_string());
         vectors.add_row(cells);
     };
-    row("centre of mass", &s.center_of_mass, Dim::LENGTH);
+    row("centre of mass", &s.center_of_mass, u.of_dim(Dim::LENGTH));
     if s.reference_given {
-        row("reference point", &s.reference_point, Dim::LENGTH);
+        row("reference point", &s.reference_point, u.of_dim(Dim::LENGTH));
     }
     if let Some(w) = &s.omega {
-        row("angular velocity ω", w, Dim::ANGULAR_VELOCITY);
+        row("angular velocity ω", w, u.of_dim(Dim::ANGULAR_VELOCITY));
     }
     if let Some(h) = &s.angular_momentum {
-        row("angular momentum H", h, Dim::ANGULAR_MOMENTUM);
+        row("angular momentum H", h, u.of_dim(Dim::ANGULAR_MOMENTUM));
     }
     if let Some(a) = &s.alpha {
-        row("angular acceleration α", a, Dim::ANGULAR_ACCELERATION);
+        row(
+            "angular acceleration α",
+            a,
+            u.of_dim(Dim::ANGULAR_ACCELERATION),
+        );
     }
     if let Some(m) = &s.euler_moment {
-        // A moment has the dimension of an energy: labelled N·m above.
-        row("Euler moment M", m, Dim::ENERGY);
+        // A moment has the dimension of an energy, but is not one: SI,
+        // labelled N·m.
+        row("Euler moment M", m, (1.0, MOMENT_UNIT));
     }
     right_align(&mut vectors, 1);
     if let Some(c) = vectors.column_mut(4) {

@@ -72,6 +72,16 @@ impl Shape {
         self.info().name
     }
 
+    /// Every shape's name, quoted and in order, for messages:
+    /// `"box", "plate", …`.
+    pub fn quoted_names() -> String {
+        SHAPES
+            .iter()
+            .map(|s| format!("\"{}\"", s.name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     pub fn from_name(name: &str) -> Option<Shape> {
         SHAPES.iter().find(|s| s.name == name).map(|s| s.shape)
     }
