@@ -1,11 +1,12 @@
 //! `diff`'s table (in the new file's units) and JSON contract (SI,
 //! docs/diff.md).
 
-use super::format::{DisplayUnits, change_percent as percent, products_label, show_or_si as show};
+use super::format::{
+    DisplayUnits, change_percent as percent, name, products_label, show_or_si as show,
+};
 use super::grid::new_table;
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
-use crate::diag::visible;
 use crate::numeric::norm;
 use comfy_table::CellAlignment;
 use serde::Serialize;
@@ -92,24 +93,36 @@ pub fn json(d: &Diff) -> String {
 
 /// How a file is named in the table: its path, and its `name` if it has one.
 fn title(side: &Side) -> String {
-    let name = &side.loaded.source.name;
-    let name = visible(name);
+    let shown = name(&side.loaded.source.name);
     match &side.loaded.model.name {
-        Some(n) => format!("{name} ({})", visible(n)),
-        None => name.clone(),
+        Some(n) => format!("{shown} ({})", name(n)),
+        None => shown,
     }
 }
 
-/// A part's name, numbered when the name is not unique in its file.
-fn part_label(parts: &[PartView], index: usize) -> String {
-    let name = &parts[index].name;
-    let shown = visible(name);
-    if parts.iter().filter(|p| &p.name == name).count() > 1 {
-        let k = parts[..=index].iter().filter(|p| &p.name == name).count();
-        format!("{shown} (#{k})")
-    } else {
-        shown
+/// Each part's name as the table shows it, numbered where the name is not
+/// unique in its file (`bolt (#2)`): counted once for all the parts, so a
+/// diff of many parts of one name stays linear (counting for each row
+/// was quadratic).
+fn part_labels(parts: &[PartView]) -> Vec<String> {
+    let mut total: std::collections::HashMap<&str, usize> = Default::default();
+    for p in parts {
+        *total.entry(&p.name).or_default() += 1;
     }
+    let mut seen: std::collections::HashMap<&str, usize> = Default::default();
+    parts
+        .iter()
+        .map(|p| {
+            let shown = name(&p.name);
+            if total[p.name.as_str()] > 1 {
+                let k = seen.entry(&p.name).or_default();
+                *k += 1;
+                format!("{shown} (#{k})")
+            } else {
+                shown
+            }
+        })
+        .collect()
 }
 
 fn describe_lone(p: &PartView, u: &DisplayUnits) -> String {
@@ -210,25 +223,26 @@ pub fn table(d: &Diff) -> String {
             p.removed.len(),
             p.changed.len()
         );
+        let (old_labels, new_labels) = (part_labels(op), part_labels(np));
         let mut t = new_table();
         t.set_header(vec!["part", "", "what"]);
         for l in &p.removed {
             t.add_row(vec![
-                part_label(op, l.index),
+                old_labels[l.index].clone(),
                 "removed".to_string(),
                 describe_lone(&op[l.index], &u),
             ]);
         }
         for l in &p.added {
             t.add_row(vec![
-                part_label(np, l.index),
+                new_labels[l.index].clone(),
                 "added".to_string(),
                 describe_lone(&np[l.index], &u),
             ]);
         }
         for c in &p.changed {
             t.add_row(vec![
-                part_label(op, c.old),
+                old_labels[c.old].clone(),
                 "changed".to_string(),
                 describe_change(&op[c.old], &np[c.new], &c.what, &u),
             ]);

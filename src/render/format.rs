@@ -16,6 +16,41 @@ pub const UNDEFINED: &str = "—";
 /// The unit of a moment (torque), N·m: the dimension of an energy, J.
 pub const MOMENT_UNIT: &str = "N·m";
 
+/// The most characters of a name (a part's, a sub-assembly's, a
+/// material's, a file's) that a table or a title shows; JSON has every
+/// name whole.
+pub const SHOWN_NAME: usize = 100;
+
+/// Append a name from input as tables and titles show it: control
+/// characters as their pictures (`diag::push_visible`: it cannot act on the
+/// terminal or add a line), and at most `SHOWN_NAME` characters, the rest
+/// cut with the length said (`abc… (20971520 characters)`). A 20 MB name
+/// made every rule of its table 20 million columns wide.
+pub fn push_name(out: &mut String, name: &str) {
+    // Within the limit in bytes, within it in characters: one comparison
+    // for almost every name.
+    if name.len() <= SHOWN_NAME {
+        return crate::diag::push_visible(out, name);
+    }
+    let n = name.chars().count();
+    if n <= SHOWN_NAME {
+        return crate::diag::push_visible(out, name);
+    }
+    let head = name
+        .char_indices()
+        .nth(SHOWN_NAME - 1)
+        .map_or(name, |(i, _)| &name[..i]);
+    crate::diag::push_visible(out, head);
+    let _ = write!(out, "… ({n} characters)");
+}
+
+/// `push_name` into a new string.
+pub fn name(name: &str) -> String {
+    let mut out = String::new();
+    push_name(&mut out, name);
+    out
+}
+
 /// `x` to six significant digits: fixed notation for moderate magnitudes,
 /// scientific otherwise, trailing zeros dropped.
 pub fn fmt_num(x: f64) -> String {
@@ -367,5 +402,24 @@ mod tests {
         assert_eq!(change_percent(Some(0.5)), "50 %");
         assert_eq!(change_percent(Some(f64::MAX)), "> 1e306 %");
         assert_eq!(change_percent(None), UNDEFINED);
+    }
+
+    #[test]
+    fn a_name_past_the_limit_is_cut_with_its_length_and_one_within_is_whole() {
+        let exact = "é".repeat(SHOWN_NAME);
+        assert_eq!(name(&exact), exact);
+        let long = format!("{exact}x");
+        let shown = name(&long);
+        assert_eq!(
+            shown,
+            format!(
+                "{}… ({} characters)",
+                "é".repeat(SHOWN_NAME - 1),
+                SHOWN_NAME + 1
+            )
+        );
+        // Control characters are shown as pictures, cut or not.
+        assert_eq!(name("a\u{1b}[31mb\n"), "a\u{241b}[31mb\u{240a}");
+        assert!(!name(&"\u{1b}".repeat(500)).contains('\u{1b}'));
     }
 }

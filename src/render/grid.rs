@@ -56,10 +56,12 @@ impl Cells {
 /// took 0.44 s for 100,000 parts, more than the rest of `report` after
 /// parsing; written here, 0.1 s. Tables with a line break in a cell or in
 /// the header (comfy-table splits those into lines) still go through
-/// comfy-table, and so do columns near the width comfy-table can hold:
-/// it keeps a column's width with its padding in a u16, which saturates at
-/// 65,535 (its borders come out shorter than its rows), and wraps wider
-/// content. Widths are unicode-width's `str::width`, as comfy-table's are
+/// comfy-table. Columns wider than comfy-table can hold do not: it keeps a
+/// column's width with its padding in a u16, which saturates at 65,535
+/// (its borders come out shorter than its rows), and it wraps wider content
+/// in time quadratic in its length (a 20 MB part name took 5.5 s); written
+/// here such a column is as wide as its content, in linear time, and the
+/// table keeps its shape. Widths are unicode-width's `str::width`, as comfy-table's are
 /// (wide CJK characters 2, combining marks 0, an emoji ZWJ sequence or a
 /// flag 2, a tab 1): the same function, so the same columns, whatever a
 /// terminal makes of them.
@@ -80,9 +82,7 @@ pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[
         let w = &mut widths[i % n];
         *w = (*w).max(c.width());
     }
-    // comfy-table's width of a column: content, one space each side, in u16.
-    let too_wide = |w: &usize| w + 2 > usize::from(u16::MAX);
-    if multiline || widths.iter().any(too_wide) {
+    if multiline {
         let mut t = new_table();
         t.set_header(header.to_vec());
         let all: Vec<&str> = cells.iter().collect();
@@ -315,12 +315,38 @@ mod tests {
     }
 
     #[test]
-    fn columns_near_comfy_tables_u16_width_limit_print_as_in_comfy_table() {
-        // comfy-table keeps widths in u16: a column's width with its padding
-        // saturates at 65,535, and wider content is wrapped.
-        for width in [65_532, 65_533, 65_534, 65_535, 65_536] {
+    fn columns_up_to_comfy_tables_u16_width_limit_print_as_in_comfy_table() {
+        // comfy-table keeps a column's width with its padding in a u16:
+        // 65,533 columns of content is the widest it holds.
+        for width in [65_531, 65_532, 65_533] {
             let wide = "a".repeat(width);
             same_as_comfy_table(&["wide", "n"], &[vec![&wide, "1"]], &[false, true]);
+        }
+    }
+
+    #[test]
+    fn a_column_wider_than_comfy_table_holds_keeps_the_table_in_shape() {
+        // Past comfy-table's u16 (which would shorten the borders and wrap
+        // the cell), every line is as wide as the widest cell and its
+        // padding, and the cell is printed whole, on one line.
+        for width in [65_534, 65_536, 200_000] {
+            let wide = "漢".repeat(width / 2) + "a";
+            let out = written(
+                &["wide", "n"],
+                &[vec![&wide, "1"], vec!["b", "22"]],
+                &[false, true],
+            );
+            let lines: Vec<&str> = out.lines().collect();
+            assert_eq!(lines.len(), 6, "three rules, a header and two rows");
+            let w = lines[0].width();
+            assert_eq!(w, 1 + (wide.width() + 2) + 1 + (2 + 2) + 1);
+            assert!(lines.iter().all(|l| l.width() == w));
+            assert!(lines[3].contains(&wide));
+            assert!(
+                lines[4].ends_with(" 22 │"),
+                "right-aligned: {:?}",
+                &lines[4][lines[4].len() - 20..]
+            );
         }
     }
 

@@ -1,9 +1,8 @@
 //! `materials`' output: the table of materials, or one JSON document.
 
-use super::format::fmt_num;
+use super::format::{fmt_num, name};
 use super::grid::new_table;
 use crate::analysis::summary::FORMAT_VERSION;
-use crate::diag::visible;
 use serde::Serialize;
 
 /// One listed material; `density` in kg/m³.
@@ -29,11 +28,7 @@ pub fn table(list: &[Listed]) -> String {
     let mut t = new_table();
     t.set_header(vec!["material", "density (kg/m³)", "source"]);
     for l in list {
-        t.add_row(vec![
-            visible(&l.name),
-            fmt_num(l.density),
-            visible(&l.source),
-        ]);
+        t.add_row(vec![name(&l.name), fmt_num(l.density), name(&l.source)]);
     }
     format!("{t}\n")
 }

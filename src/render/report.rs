@@ -3,13 +3,12 @@
 //! SI, six significant digits. Full precision is in the JSON.
 
 use super::format::{
-    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, fmt_percent, precision_label,
-    products_label, push_percent, push_sig,
+    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, fmt_percent, name, precision_label,
+    products_label, push_name, push_percent, push_sig,
 };
 use super::grid::{Cells, new_table, right_align, write_table};
 use crate::analysis::ideal::Idealisation;
 use crate::analysis::summary::Summary;
-use crate::diag::{push_visible, visible};
 use crate::units::Dim;
 use comfy_table::{CellAlignment, Table};
 use std::fmt::Write;
@@ -64,15 +63,15 @@ fn principal_table(
 pub fn table(s: &Summary, source: &str) -> String {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
-    let source = visible(source);
+    let source = name(source);
     let _ = match (&s.name, &s.sub_assembly) {
         (Some(n), Some(path)) => writeln!(
             out,
             "{} (sub-assembly `{}` of {source})",
-            visible(n),
-            visible(&path.join(" / "))
+            name(n),
+            name(&path.join(" / "))
         ),
-        (Some(n), None) => writeln!(out, "{} ({source})", visible(n)),
+        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
         (None, _) => writeln!(out, "{source}"),
     };
     let _ = writeln!(
@@ -189,7 +188,7 @@ pub fn table(s: &Summary, source: &str) -> String {
     for (i, p) in s.parts.iter().enumerate() {
         let _ = write!(cells.text, "{}", i + 1);
         cells.end();
-        push_visible(&mut cells.text, &p.name);
+        push_name(&mut cells.text, &p.name);
         cells.end();
         cells.text.push_str(p.shape.name());
         cells.end();
@@ -252,7 +251,7 @@ fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
         let mut row = vec![
             format!(
                 "{indent}{}",
-                visible(a.path.last().expect("a path is never empty"))
+                name(a.path.last().expect("a path is never empty"))
             ),
             a.parts.to_string(),
             fmt_num(a.mass / u.mass),
@@ -293,7 +292,7 @@ fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits) {
     };
     row("all together", "", &i.relative_change);
     for p in &i.parts {
-        row(&visible(&p.name), p.solid.name(), &p.relative_change);
+        row(&name(&p.name), p.solid.name(), &p.relative_change);
     }
     write_table(out, &header, &cells, &[false, false, true, true, true]);
     let _ = writeln!(

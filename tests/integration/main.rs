@@ -4,6 +4,7 @@
 mod check;
 mod cli;
 mod common;
+mod cost;
 mod diff;
 mod docs;
 mod hostile;
