@@ -34,6 +34,9 @@ pub(super) struct Files {
     /// The directory trees includes must stay in (canonical): the
     /// top-level file's, the working directory, and any `--include-root`.
     pub(super) roots: Vec<PathBuf>,
+    /// The parts each file holds with its includes, counted before any is
+    /// expanded (`Ctx::count_includes`).
+    counts: HashMap<PathBuf, u64>,
 }
 
 impl Files {
@@ -150,34 +153,21 @@ impl Frame {
     }
 }
 
+/// Where an include points, checked.
+pub(super) struct Target {
+    /// Canonical: symlinks followed.
+    canonical: PathBuf,
+    /// As the including file names it, relative to the working directory.
+    shown: PathBuf,
+    shown_name: String,
+}
+
 impl Ctx<'_> {
-    /// Expand `[[part]] include = ".."` at position `index` into `parts`
-    /// (and its real sizes into `real`).
-    pub(super) fn include(
-        &self,
-        index: usize,
-        raw: &Spanned<RawPart>,
-        files: &mut Files,
-        parts: &mut Vec<Part>,
-        real: &mut Vec<RealSize>,
-        names: &mut AssemblyNames,
-    ) -> Result<(), Diagnostic> {
-        let p = raw.get_ref();
-        let inc = p.include.as_ref().expect("the caller checked `include`");
-        if let Some((key, span)) = super::parts::present_keys(p)
-            .into_iter()
-            .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))
-            .find_map(|(k, s)| s.map(|s| (k, s)))
-        {
-            let what = if key == "shape" {
-                "`shape` conflicts with `include`: a part is a shape or a sub-assembly".to_string()
-            } else {
-                format!("`{key}` does not apply to an included sub-assembly")
-            };
-            return Err(self.err(span, what).help(
-                "an include takes `include`, and optionally `name`, `origin` and `rotation`",
-            ));
-        }
+    /// Resolve `include = ".."` and apply every rule on where it may point
+    /// before anything of it is read: inside the allowed directory trees, a
+    /// regular file, within the size limit. The one place these rules live:
+    /// counting and expanding both come through here.
+    fn target(&self, inc: &Spanned<String>, files: &Files) -> Result<Target, Diagnostic> {
         if self.source.name == "<stdin>" {
             // Relative to what? Not the working directory: a file piped in
             // (`git show OLD:arm.toml | massprop diff - arm.toml`) would
@@ -229,6 +219,143 @@ impl Ctx<'_> {
                 )
                 .help("`include` names a part file"));
         }
+        Ok(Target {
+            canonical,
+            shown,
+            shown_name,
+        })
+    }
+}
+
+impl Ctx<'_> {
+    /// Refuse a body of more than `MAX_PARTS` parts before any include is
+    /// expanded: the parts of `raw_parts` counted with every file they
+    /// include, each file read and counted once however often it is
+    /// included. A binary tree of 32 files describing 2³¹ parts was
+    /// refused only once 2²¹ of them had been built, after 7 GB.
+    ///
+    /// NOTE: each included file is parsed here and again when it is
+    /// expanded (a small cost next to validating and placing its parts).
+    /// An include that cannot be counted (any error, a cycle) counts as one
+    /// part: expanding it reports the error where it is.
+    pub(super) fn check_part_count(
+        &self,
+        raw_parts: &[Spanned<RawPart>],
+        files: &mut Files,
+    ) -> Result<(), Diagnostic> {
+        if !raw_parts.iter().any(|p| p.get_ref().include.is_some()) {
+            return Ok(());
+        }
+        let max = super::MAX_PARTS as u64;
+        let mut total = 0u64;
+        for p in raw_parts {
+            let Some(inc) = &p.get_ref().include else {
+                total += 1;
+                continue;
+            };
+            let (n, shown) = match self.count_include(inc, files) {
+                Some((n, shown)) => (n, shown),
+                None => (1, String::new()),
+            };
+            total = total.saturating_add(n);
+            if total > max {
+                // A count that saturated is past u64.
+                let said = |n: u64| match n {
+                    u64::MAX => "more than 2⁶⁴".to_string(),
+                    n => n.to_string(),
+                };
+                return Err(self
+                    .err(
+                        inc.span(),
+                        format!(
+                            "with this include the body has {} parts, past the limit of {max}: `{shown}` holds {} with its includes",
+                            said(total),
+                            said(n)
+                        ),
+                    )
+                    .help("each copy of a sub-assembly counts its parts again"));
+            }
+        }
+        Ok(())
+    }
+
+    /// The parts the file `inc` names holds with its includes, and its name
+    /// as shown; `None` if it cannot be counted.
+    fn count_include(&self, inc: &Spanned<String>, files: &mut Files) -> Option<(u64, String)> {
+        let t = self.target(inc, files).ok()?;
+        if let Some(n) = files.counts.get(&t.canonical) {
+            return Some((*n, t.shown_name));
+        }
+        if files.stack.len() >= MAX_INCLUDE_DEPTH
+            || files.stack.iter().any(|(c, _)| *c == t.canonical)
+        {
+            return None;
+        }
+        let bytes = std::fs::read(&t.shown).ok()?;
+        let source = crate::io::source_of(&t.shown_name, bytes).ok()?;
+        let raw = Model::raw(&source).ok()?;
+        let child = Ctx {
+            source: &source,
+            units: Default::default(),
+            materials: Default::default(),
+        };
+        files
+            .stack
+            .push((t.canonical.clone(), t.shown_name.clone()));
+        let n = raw.part.as_ref().map_or(0, |parts| {
+            parts.get_ref().iter().fold(0u64, |n, p| {
+                n.saturating_add(match &p.get_ref().include {
+                    None => 1,
+                    Some(inc) => child.count_include(inc, files).map_or(1, |(n, _)| n),
+                })
+            })
+        });
+        files.stack.pop();
+        files.counts.insert(t.canonical, n);
+        Some((n, t.shown_name))
+    }
+}
+
+impl Ctx<'_> {
+    /// Expand `[[part]] include = ".."` at position `index` into `parts`
+    /// (and its real sizes into `real`).
+    pub(super) fn include(
+        &self,
+        index: usize,
+        raw: &Spanned<RawPart>,
+        files: &mut Files,
+        parts: &mut Vec<Part>,
+        real: &mut Vec<RealSize>,
+        names: &mut AssemblyNames,
+    ) -> Result<(), Diagnostic> {
+        let p = raw.get_ref();
+        let inc = p.include.as_ref().expect("the caller checked `include`");
+        if let Some((key, span)) = super::parts::present_keys(p)
+            .into_iter()
+            .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))
+            .find_map(|(k, s)| s.map(|s| (k, s)))
+        {
+            let what = if key == "shape" {
+                "`shape` conflicts with `include`: a part is a shape or a sub-assembly".to_string()
+            } else {
+                format!("`{key}` does not apply to an included sub-assembly")
+            };
+            return Err(self.err(span, what).help(
+                "an include takes `include`, and optionally `name`, `origin` and `rotation`",
+            ));
+        }
+        let Target {
+            canonical,
+            shown,
+            shown_name,
+        } = self.target(inc, files)?;
+        let unreadable = |e: std::io::Error| {
+            self.err(
+                inc.span(),
+                format!("cannot read the included file `{shown_name}`: {e}"),
+            )
+            .help("the path is relative to the including file")
+        };
         if files.stack.len() >= MAX_INCLUDE_DEPTH {
             let chain: Vec<&str> = files.stack.iter().map(|(_, n)| n.as_str()).collect();
             return Err(self

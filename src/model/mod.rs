@@ -99,15 +99,20 @@ impl Model {
         Ok(model)
     }
 
+    /// The file as TOML: the fast path where it can (most part files);
+    /// else, and for every error in the TOML, serde via the toml crate's
+    /// value tree.
+    fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
+        match fast::parse(&source.text) {
+            Some(raw) => Ok(raw),
+            None => toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e)),
+        }
+    }
+
     /// `parse`, inside the chain of files that include each other (for
     /// cycles).
     fn parse_in(source: &Source, files: &mut include::Files) -> Result<Model, Diagnostic> {
-        // The fast path where it can (most part files); else, and for every
-        // error in the TOML, serde via the toml crate's value tree.
-        let raw: RawFile = match fast::parse(&source.text) {
-            Some(raw) => raw,
-            None => toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))?,
-        };
+        let raw = Model::raw(source)?;
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
@@ -153,6 +158,11 @@ impl Model {
                     raw_parts.len()
                 ),
             ));
+        }
+        // Counted with the includes before any is expanded, once, by the
+        // file read first.
+        if files.stack.len() <= 1 {
+            ctx.check_part_count(raw_parts, files)?;
         }
         let mut parts = Vec::with_capacity(raw_parts.len());
         let mut real_sizes = Vec::new();
