@@ -102,6 +102,7 @@ impl Ctx<'_> {
                 format!("`{key}` overflows when converted to SI units"),
             ));
         }
+        self.representable(q, key, value, "SI units")?;
         // Results are shown in the file's units: a value within a rounding
         // of the largest f64 there can overflow on its way back from SI.
         if !(value / self.units.factor(dim).value()).is_finite() {
@@ -131,6 +132,7 @@ impl Ctx<'_> {
                 format!("`{key}` overflows when converted to the file's units"),
             ));
         }
+        self.representable(q, key, value, "the file's units")?;
         Ok(value)
     }
 
@@ -169,8 +171,47 @@ impl Ctx<'_> {
         Ok(out)
     }
 
+    /// Refuse a value that is not zero as written but that f64 (or its
+    /// conversion to `units`) made zero or subnormal: it would be computed
+    /// with as 0, or with too few digits (`center = [1e-400, 0, 0]` was
+    /// read as the origin). Zero itself, written as zero, is a value.
+    fn representable(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        value: f64,
+        units: &str,
+    ) -> Result<(), Diagnostic> {
+        if value.abs() >= f64::MIN_POSITIVE {
+            return Ok(());
+        }
+        // The number as written: the span's text where the span is the
+        // number alone (an `[expect]` component's span is its whole array,
+        // and then only a subnormal value is caught).
+        let written = match q.get_ref() {
+            Quantity::Number(_) => self
+                .source
+                .text
+                .get(q.span())
+                .filter(|w| w.replace('_', "").trim().parse::<f64>().is_ok())
+                .unwrap_or(""),
+            Quantity::Text(t) => t.as_str(),
+        };
+        if value != 0.0 || nonzero_literal(written) {
+            return Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too small: below {:e} in {units}, f64 loses precision",
+                    f64::MIN_POSITIVE
+                ),
+            ));
+        }
+        Ok(())
+    }
+
     /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are
-    /// refused too: they carry too few digits to compute with.
+    /// refused too, as for every quantity: they carry too few digits to
+    /// compute with.
     pub(super) fn positive(
         &self,
         q: &Spanned<Quantity>,
@@ -178,22 +219,8 @@ impl Ctx<'_> {
         dim: Dim,
     ) -> Result<f64, Diagnostic> {
         let v = self.quantity(q, key, dim)?;
-        // A positive number written that f64 (or its conversion to SI)
-        // rounded to zero is too small, not "not positive".
-        let written = match q.get_ref() {
-            Quantity::Number(_) => self.source.text.get(q.span()).unwrap_or(""),
-            Quantity::Text(t) => t.as_str(),
-        };
-        if v >= f64::MIN_POSITIVE {
+        if v > 0.0 {
             Ok(v)
-        } else if v > 0.0 || (v == 0.0 && positive_literal(written)) {
-            Err(self.err(
-                q.span(),
-                format!(
-                    "`{key}` is too small: below {:e} in SI units, f64 loses precision",
-                    f64::MIN_POSITIVE
-                ),
-            ))
         } else {
             Err(self.err(q.span(), format!("`{key}` must be positive")))
         }
@@ -240,17 +267,15 @@ impl Ctx<'_> {
     }
 }
 
-/// Whether a number as written (`1e-400`, `"3e-330 mm"`) is positive: no
-/// sign, and a non-zero digit before any exponent.
-fn positive_literal(text: &str) -> bool {
+/// Whether a number as written (`1e-400`, `"-3e-330 mm"`) is not zero: a
+/// non-zero digit before any exponent, whatever its sign.
+fn nonzero_literal(text: &str) -> bool {
     let t = text
         .trim()
         .trim_matches('"')
         .trim_matches('\'')
         .trim_start();
-    if t.starts_with('-') {
-        return false;
-    }
+    let t = t.strip_prefix(['-', '+']).unwrap_or(t);
     let mantissa = t
         .split(|c: char| c == 'e' || c == 'E' || c.is_whitespace())
         .next()
@@ -259,4 +284,74 @@ fn positive_literal(text: &str) -> bool {
         && !t.starts_with("0o")
         && !t.starts_with("0b")
         && mantissa.chars().any(|c| ('1'..='9').contains(&c))
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::diag::Source;
+    use crate::model::Model;
+
+    fn error(text: &str) -> Option<String> {
+        Model::parse(&Source::new("f.toml", text))
+            .err()
+            .map(|e| e.to_string())
+    }
+
+    fn point(center: &str) -> String {
+        format!("[[part]]\nshape = \"point\"\nmass = 1\ncenter = {center}\n")
+    }
+
+    #[test]
+    fn a_coordinate_that_f64_makes_zero_or_subnormal_is_too_small() {
+        for (center, bad) in [
+            ("[1e-400, 0, 0]", "1e-400"),
+            ("[0, -1e-400, 0]", "-1e-400"),
+            ("[0, 0, 1e-320]", "1e-320"),
+            ("[\"1e-320 mm\", 0, 0]", "\"1e-320 mm\""),
+            ("[\"-2e-400 m\", 0, 0]", "\"-2e-400 m\""),
+        ] {
+            let e = error(&point(center)).unwrap_or_else(|| panic!("{center} accepted"));
+            // At the component: `center = ` is 9 columns.
+            let col = 9 + center.find(bad).unwrap() + 1;
+            assert!(
+                e.starts_with(&format!(
+                    "f.toml:4:{col}: error: `center` is too small: below 2.2250738585072014e-308"
+                )),
+                "{center}: {e}"
+            );
+        }
+    }
+
+    #[test]
+    fn zero_written_as_zero_is_a_coordinate() {
+        assert_eq!(error(&point("[0e-400, -0.0, \"0 mm\"]")), None);
+        assert_eq!(error(&point("[+0.0, 0, 2.2250738585072014e-308]")), None);
+    }
+
+    #[test]
+    fn analysis_vectors_that_underflow_are_too_small() {
+        let body = point("[0, 0, 0]");
+        for (key, line) in [("omega", 6), ("about", 6)] {
+            let e = error(&format!("{body}[analysis]\n{key} = [1e-400, 0, 1]\n"))
+                .unwrap_or_else(|| panic!("{key} accepted"));
+            assert!(
+                e.contains(&format!(":{line}:")) && e.contains(&format!("`{key}` is too small")),
+                "{e}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_mass_that_underflows_is_too_small_whatever_its_sign_and_zero_is_not_positive() {
+        let mass =
+            |m: &str| format!("[[part]]\nshape = \"point\"\nmass = {m}\ncenter = [0, 0, 0]\n");
+        for m in ["1e-400", "-1e-400", "4e-320"] {
+            let e = error(&mass(m)).unwrap();
+            assert!(e.contains("`mass` is too small"), "{m}: {e}");
+        }
+        for m in ["0", "-0.0", "-1"] {
+            let e = error(&mass(m)).unwrap();
+            assert!(e.contains("`mass` must be positive"), "{m}: {e}");
+        }
+    }
 }
