@@ -3,6 +3,53 @@
 
 use crate::diag::{Diagnostic, Source};
 use std::io::Read;
+use std::path::Path;
+
+/// A file as the system knows it, so that two names of one file compare
+/// equal: on unix its device and inode (a hard link, a symlink, another
+/// spelling of its path, the file a shell redirected onto standard input);
+/// elsewhere its canonical path.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FileId(Key);
+
+#[cfg(unix)]
+type Key = (u64, u64);
+#[cfg(not(unix))]
+type Key = std::path::PathBuf;
+
+impl FileId {
+    /// The file `path` names (following symlinks), if it exists.
+    pub fn of(path: &Path) -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let meta = std::fs::metadata(path).ok()?;
+            Some(FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            std::fs::canonicalize(path).ok().map(FileId)
+        }
+    }
+
+    /// The regular file behind standard input (`massprop report - < x.toml`),
+    /// if it is one; not a pipe or a terminal, which no path can name.
+    pub fn of_stdin() -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::fd::AsFd;
+            use std::os::unix::fs::MetadataExt;
+            // fstat of fd 0 through a duplicate, so nothing closes stdin.
+            let fd = std::io::stdin().as_fd().try_clone_to_owned().ok()?;
+            let meta = std::fs::File::from(fd).metadata().ok()?;
+            meta.is_file().then(|| FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            None
+        }
+    }
+}
 
 /// The largest part file read, in bytes: a 100,000-part file of 17-digit
 /// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this

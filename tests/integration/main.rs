@@ -6,6 +6,7 @@ mod cli;
 mod common;
 mod diff;
 mod docs;
+mod files;
 mod hostile;
 mod invariants;
 mod layers;
