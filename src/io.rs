@@ -2,8 +2,8 @@
 //! the file system for them (`include` reads through `source_of` too).
 
 use crate::diag::{Diagnostic, Source};
-use std::io::Read;
-use std::path::Path;
+use std::io::{Read, Seek, Write};
+use std::path::{Path, PathBuf};
 
 /// A file as the system knows it, so that two names of one file compare
 /// equal: on unix its device and inode (a hard link, a symlink, another
@@ -15,7 +15,7 @@ pub struct FileId(Key);
 #[cfg(unix)]
 type Key = (u64, u64);
 #[cfg(not(unix))]
-type Key = std::path::PathBuf;
+type Key = PathBuf;
 
 impl FileId {
     /// The file `path` names (following symlinks), if it exists.
@@ -29,6 +29,22 @@ impl FileId {
         #[cfg(not(unix))]
         {
             std::fs::canonicalize(path).ok().map(FileId)
+        }
+    }
+
+    /// The file `meta` describes (`path` names it, for systems without
+    /// inodes).
+    fn of_meta(meta: &std::fs::Metadata, path: &str) -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let _ = path;
+            Some(FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = meta;
+            FileId::of(Path::new(path))
         }
     }
 
@@ -59,39 +75,35 @@ pub const MAX_FILE_BYTES: u64 = 512 << 20;
 /// Read a part file, or standard input for `-`, refusing directories and
 /// anything over `MAX_FILE_BYTES`.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    let stdin = path == "-";
-    let name = if stdin { "<stdin>" } else { path };
-    let too_big = || {
-        Diagnostic::file(
-            name,
-            format!(
-                "{} is larger than the limit of {} MiB for a part file",
-                if stdin { "standard input" } else { "the file" },
-                MAX_FILE_BYTES >> 20
-            ),
-        )
-    };
-    let cannot_read = |e: std::io::Error| {
-        let what = if stdin { "standard input" } else { "file" };
-        Diagnostic::file(name, format!("cannot read {what}: {e}"))
-    };
-    // At most the limit and one byte, so that /dev/zero or an endless pipe
-    // cannot read forever.
-    let capped = |reader: &mut dyn Read| -> Result<Vec<u8>, Diagnostic> {
-        let mut bytes = Vec::new();
-        reader
-            .take(MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(cannot_read)?;
-        if bytes.len() as u64 > MAX_FILE_BYTES {
-            return Err(too_big());
-        }
-        Ok(bytes)
-    };
-    if stdin {
-        return source_of(name, capped(&mut std::io::stdin())?);
+    if path == "-" {
+        let name = "<stdin>";
+        return source_of(name, read_capped(&mut std::io::stdin(), name, true)?);
     }
-    let meta = std::fs::metadata(path).map_err(cannot_read)?;
+    let meta = std::fs::metadata(path).map_err(|e| cannot_read(path, false, e))?;
+    check_size(path, &meta)?;
+    // Not only regular files: `massprop report <(generate)` is a pipe.
+    let mut file = std::fs::File::open(path).map_err(|e| cannot_read(path, false, e))?;
+    source_of(path, read_capped(&mut file, path, false)?)
+}
+
+fn cannot_read(name: &str, stdin: bool, e: std::io::Error) -> Diagnostic {
+    let what = if stdin { "standard input" } else { "file" };
+    Diagnostic::file(name, format!("cannot read {what}: {e}"))
+}
+
+fn too_big(name: &str, stdin: bool) -> Diagnostic {
+    Diagnostic::file(
+        name,
+        format!(
+            "{} is larger than the limit of {} MiB for a part file",
+            if stdin { "standard input" } else { "the file" },
+            MAX_FILE_BYTES >> 20
+        ),
+    )
+}
+
+/// Refuse a directory, and a file over the limit before reading it.
+fn check_size(path: &str, meta: &std::fs::Metadata) -> Result<(), Diagnostic> {
     if meta.is_dir() {
         return Err(Diagnostic::file(
             path,
@@ -99,11 +111,23 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
-        return Err(too_big());
+        return Err(too_big(path, false));
     }
-    // Not only regular files: `massprop report <(generate)` is a pipe.
-    let mut file = std::fs::File::open(path).map_err(cannot_read)?;
-    source_of(path, capped(&mut file)?)
+    Ok(())
+}
+
+/// At most the limit and one byte, so that /dev/zero or an endless pipe
+/// cannot read forever.
+fn read_capped(reader: &mut dyn Read, name: &str, stdin: bool) -> Result<Vec<u8>, Diagnostic> {
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| cannot_read(name, stdin, e))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(too_big(name, stdin));
+    }
+    Ok(bytes)
 }
 
 /// A part file's bytes as its source: UTF-8, or an error at the first byte
@@ -126,66 +150,275 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
     }
 }
 
-/// Replace `path` by `text` through a temporary file in the same directory
-/// and a rename, so an interrupted or failed run never leaves half a file
-/// (`what` names it in the error).
+/// Replace `path` by `text` (`what` names it in errors), the way
+/// `replace` does; a symlink is written through (the link stays a link, its
+/// target gets the text), and something that is not a regular file
+/// (/dev/stdout, a FIFO, a device) is written directly.
 pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
     let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
-    // A symlink is written through (the link stays a link, its target gets
-    // the text); something that is not a regular file (/dev/stdout, a FIFO,
-    // a device) cannot be replaced by a rename and is written directly.
+    let write_directly = |to: &Path| {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(to)
+            .and_then(|mut f| f.write_all(text.as_bytes()))
+            .map_err(fail)
+    };
     // NOTE: asked first, of the path itself (stat follows the links): with
     // stdout a pipe, /dev/stdout resolves to /proc/self/fd/1 and on to
-    // `pipe:[N]`, which `canonicalize` cannot resolve — the rename below
-    // then replaced the /dev/stdout symlink itself.
+    // `pipe:[N]`, which `canonicalize` cannot resolve — a rename then
+    // replaced the /dev/stdout symlink itself.
     if let Ok(meta) = std::fs::metadata(path)
         && !meta.is_file()
         && !meta.is_dir()
     {
-        return std::fs::OpenOptions::new()
-            .write(true)
-            .open(path)
-            .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-            .map_err(fail);
+        return write_directly(Path::new(path));
     }
-    let resolved = match std::fs::canonicalize(path) {
+    let target = match std::fs::canonicalize(path) {
         Ok(real) => match std::fs::metadata(&real) {
-            Ok(meta) if !meta.is_file() && !meta.is_dir() => {
-                return std::fs::OpenOptions::new()
-                    .write(true)
-                    .open(&real)
-                    .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-                    .map_err(fail);
-            }
+            Ok(meta) if !meta.is_file() && !meta.is_dir() => return write_directly(&real),
             _ => real,
         },
-        Err(_) => std::path::PathBuf::from(path),
+        Err(_) => PathBuf::from(path),
     };
-    let target = resolved.as_path();
+    match std::fs::metadata(&target) {
+        Ok(meta) if links(&meta) > 1 => {
+            let mut file = std::fs::OpenOptions::new()
+                .read(true)
+                .write(true)
+                .open(&target)
+                .map_err(fail)?;
+            file.lock().map_err(fail)?;
+            let mut old = Vec::new();
+            file.read_to_end(&mut old).map_err(fail)?;
+            write_in_place(&mut file, &old, text.as_bytes(), links(&meta), path, what)
+        }
+        meta => replace_by_rename(&target, meta.ok().as_ref(), text, path, what),
+    }
+}
+
+/// A part file opened to be rewritten (`check --bless`), under an exclusive
+/// advisory lock (`File::lock`: flock on unix) held until it is replaced or
+/// dropped, so that two blesses of one file take turns: each reads the
+/// text the one before it wrote.
+#[derive(Debug)]
+pub struct Rewrite {
+    file: std::fs::File,
+    /// The name it is reported under, as given.
+    name: String,
+    /// The file itself, symlinks resolved: what a rename replaces.
+    target: PathBuf,
+    meta: std::fs::Metadata,
+    /// Its bytes when read, under the lock.
+    old: Vec<u8>,
+}
+
+impl Rewrite {
+    /// Open the regular file `path` to read and write, lock it, and read it
+    /// (as `read_source`, under the same limit).
+    pub fn open(path: &str) -> Result<(Rewrite, Source), Diagnostic> {
+        // NOTE: a bless that waited for the lock may find that the one
+        // before it replaced the file (a rename): the lock it holds is then
+        // on a file no longer at `path`, so it starts again with the one
+        // there now. Bounded, in case something else keeps replacing it.
+        for _ in 0..1000 {
+            let meta = std::fs::metadata(path).map_err(|e| cannot_read(path, false, e))?;
+            check_size(path, &meta)?;
+            if !meta.is_file() {
+                return Err(Diagnostic::file(
+                    path,
+                    "not a regular file (a pipe, socket or device): `--bless` rewrites files",
+                ));
+            }
+            let cannot_open = |e: std::io::Error| {
+                Diagnostic::file(path, format!("cannot open the file to write it: {e}"))
+            };
+            let mut file = std::fs::OpenOptions::new()
+                .read(true)
+                .write(true)
+                .open(path)
+                .map_err(cannot_open)?;
+            file.lock().map_err(cannot_open)?;
+            let meta = file.metadata().map_err(cannot_open)?;
+            if FileId::of(Path::new(path)) != FileId::of_meta(&meta, path) {
+                continue;
+            }
+            let old = read_capped(&mut file, path, false)?;
+            let source = source_of(path, old.clone())?;
+            let target = std::fs::canonicalize(path).map_err(cannot_open)?;
+            let rewrite = Rewrite {
+                file,
+                name: path.to_string(),
+                target,
+                meta,
+                old,
+            };
+            return Ok((rewrite, source));
+        }
+        Err(Diagnostic::file(
+            path,
+            "the file kept being replaced while waiting to write it: not written",
+        ))
+    }
+
+    /// Replace the file's text by `text` (`what` names it in errors); the
+    /// lock is held until it is done.
+    pub fn replace(mut self, text: &str, what: &str) -> Result<(), Diagnostic> {
+        let links = links(&self.meta);
+        if links > 1 {
+            let old = std::mem::take(&mut self.old);
+            write_in_place(
+                &mut self.file,
+                &old,
+                text.as_bytes(),
+                links,
+                &self.name,
+                what,
+            )
+        } else {
+            replace_by_rename(&self.target, Some(&self.meta), text, &self.name, what)
+        }
+    }
+}
+
+/// How many names (hard links) a file has; 1 where that is not known.
+fn links(meta: &std::fs::Metadata) -> u64 {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::MetadataExt::nlink(meta)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = meta;
+        1
+    }
+}
+
+/// Replace `target` by `text` the safe way: a temporary file in the same
+/// directory (a rename does not cross file systems), its contents synced to
+/// disk, renamed over the target, so that a reader, a crash or a full disk
+/// sees the whole old file or the whole new one, never half of either.
+///
+/// - The temporary file comes from the `tempfile` crate: an unpredictable
+///   name (`.NAME.XXXXXX.massprop.tmp`), created exclusively (`O_EXCL`,
+///   never through a symlink or onto a file already there), another name
+///   tried on a clash; on failure only that file is removed, never a file
+///   massprop did not create.
+/// - It keeps the replaced file's permissions and its owner and group; when
+///   the owner cannot be kept (not running as root or as the owner), the
+///   target is not touched and the error says why, rather than a file
+///   silently changing hands. A new file gets the permissions any new file
+///   gets (0666 less the umask).
+/// - The directory is synced after the rename (best effort), so that the
+///   rename itself survives a crash.
+fn replace_by_rename(
+    target: &Path,
+    meta: Option<&std::fs::Metadata>,
+    text: &str,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    let fail = |e: std::io::Error| Diagnostic::file(name, format!("cannot write {what}: {e}"));
     let dir = target
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.massprop.{}", std::process::id()));
-    // create_new: never through a symlink or file already at that name.
-    let written = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&tmp)
-        .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()));
-    if let Err(e) = written {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(fail(e));
+        .unwrap_or(Path::new("."));
+    let mut prefix = std::ffi::OsString::from(".");
+    prefix.push(target.file_name().unwrap_or_default());
+    prefix.push(".");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".massprop.tmp");
+    #[cfg(unix)]
+    if meta.is_none() {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    if let Ok(meta) = std::fs::metadata(target) {
-        let _ = std::fs::set_permissions(&tmp, meta.permissions());
+    let tmp = builder.tempfile_in(dir).map_err(fail)?;
+    if let Some(meta) = meta {
+        keep_owner(tmp.as_file(), meta, name, what)?;
     }
-    std::fs::rename(&tmp, target).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
+    tmp.as_file().write_all(text.as_bytes()).map_err(fail)?;
+    if let Some(meta) = meta {
+        // After the owner: chown clears the set-user-ID and set-group-ID bits.
+        tmp.as_file()
+            .set_permissions(meta.permissions())
+            .map_err(fail)?;
+    }
+    tmp.as_file().sync_all().map_err(fail)?;
+    // On failure the error holds the temporary file, whose drop removes it.
+    tmp.persist(target).map_err(|e| fail(e.error))?;
+    #[cfg(unix)]
+    {
+        // Best effort: some file systems cannot sync a directory.
+        let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
+    }
+    Ok(())
+}
+
+/// Give the new file `tmp` the owner and group of the file `meta` describes,
+/// or refuse (nothing replaced yet) when that is not allowed.
+fn keep_owner(
+    tmp: &std::fs::File,
+    meta: &std::fs::Metadata,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let mine = tmp
+            .metadata()
+            .map_err(|e| Diagnostic::file(name, format!("cannot write {what}: {e}")))?;
+        if (mine.uid(), mine.gid()) == (meta.uid(), meta.gid()) {
+            return Ok(());
+        }
+        std::os::unix::fs::fchown(tmp, Some(meta.uid()), Some(meta.gid())).map_err(|e| {
+            Diagnostic::file(
+                name,
+                format!(
+                    "cannot keep the file's owner (user {}, group {}): a file massprop writes belongs to user {}, group {}, and giving it away is not allowed ({e}); {what} not written",
+                    meta.uid(),
+                    meta.gid(),
+                    mine.uid(),
+                    mine.gid()
+                ),
+            )
+            .help("run massprop as the file's owner (or as root), or copy the file to one of your own")
+        })
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (tmp, meta, name, what);
+        Ok(())
+    }
+}
+
+/// Write `new` over the file's own bytes, for a file with hard links (a
+/// rename would give this name a new file and cut it from the others). Not
+/// atomic: a reader may see it half written, and a crash mid-write may
+/// leave it so; a failed write (a full disk) puts `old` back, which fits
+/// in the space the file already had.
+fn write_in_place(
+    file: &mut std::fs::File,
+    old: &[u8],
+    new: &[u8],
+    links: u64,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    let write = |file: &mut std::fs::File, bytes: &[u8]| -> std::io::Result<()> {
+        file.seek(std::io::SeekFrom::Start(0))?;
+        file.write_all(bytes)?;
+        file.set_len(bytes.len() as u64)?;
+        file.sync_all()
+    };
+    write(file, new).map_err(|e| {
+        let back = match write(file, old) {
+            Ok(()) => "its previous text was written back".to_string(),
+            Err(e) => format!("writing its previous text back failed too ({e}): it may be damaged"),
+        };
+        Diagnostic::file(
+            name,
+            format!("cannot write {what} in place (it has {links} hard links): {e}; {back}"),
+        )
     })
 }
