@@ -332,7 +332,16 @@ fn replace_by_rename(
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    let tmp = builder.tempfile_in(dir).map_err(fail)?;
+    let tmp = builder.tempfile_in(dir).map_err(|e| {
+        Diagnostic::file(
+            name,
+            format!(
+                "cannot write {what}: cannot create a file in `{}`: {}",
+                dir.display(),
+                without_path(&e)
+            ),
+        )
+    })?;
     if let Some(meta) = meta {
         keep_owner(tmp.as_file(), meta, name, what)?;
     }
@@ -345,13 +354,29 @@ fn replace_by_rename(
     }
     tmp.as_file().sync_all().map_err(fail)?;
     // On failure the error holds the temporary file, whose drop removes it.
-    tmp.persist(target).map_err(|e| fail(e.error))?;
+    tmp.persist(target).map_err(|e| {
+        Diagnostic::file(
+            name,
+            format!("cannot write {what}: {}", without_path(&e.error)),
+        )
+    })?;
     #[cfg(unix)]
     {
         // Best effort: some file systems cannot sync a directory.
         let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
     }
     Ok(())
+}
+
+/// An error from `tempfile` without the temporary file's name, which it
+/// appends (`… at path "/dir/.x.toml.yYUCHJ.massprop.tmp"`): random, and
+/// of no use to the reader.
+fn without_path(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.find(" at path ") {
+        Some(at) => text[..at].to_string(),
+        None => text,
+    }
 }
 
 /// Give the new file `tmp` the owner and group of the file `meta` describes,
