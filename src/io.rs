@@ -203,6 +203,8 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
 #[derive(Debug)]
 pub struct Rewrite {
     file: std::fs::File,
+    /// Whether `file` was opened to write (this user may write it).
+    writable: bool,
     /// The name it is reported under, as given.
     name: String,
     /// The file itself, symlinks resolved: what a rename replaces.
@@ -232,11 +234,26 @@ impl Rewrite {
             let cannot_open = |e: std::io::Error| {
                 Diagnostic::file(path, format!("cannot open the file to write it: {e}"))
             };
-            let mut file = std::fs::OpenOptions::new()
+            // A file this user may not write is opened to read (and lock):
+            // it may need no change, and if it does, the rename below asks
+            // for the directory's permission and the owner's.
+            let writable = std::fs::OpenOptions::new()
                 .read(true)
                 .write(true)
-                .open(path)
-                .map_err(cannot_open)?;
+                .open(path);
+            let (mut file, writable) = match writable {
+                Ok(file) => (file, true),
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        std::io::ErrorKind::PermissionDenied
+                            | std::io::ErrorKind::ReadOnlyFilesystem
+                    ) =>
+                {
+                    (std::fs::File::open(path).map_err(cannot_open)?, false)
+                }
+                Err(e) => return Err(cannot_open(e)),
+            };
             file.lock().map_err(cannot_open)?;
             let meta = file.metadata().map_err(cannot_open)?;
             if FileId::of(Path::new(path)) != FileId::of_meta(&meta, path) {
@@ -247,6 +264,7 @@ impl Rewrite {
             let target = std::fs::canonicalize(path).map_err(cannot_open)?;
             let rewrite = Rewrite {
                 file,
+                writable,
                 name: path.to_string(),
                 target,
                 meta,
@@ -265,6 +283,14 @@ impl Rewrite {
     pub fn replace(mut self, text: &str, what: &str) -> Result<(), Diagnostic> {
         let links = links(&self.meta);
         if links > 1 {
+            if !self.writable {
+                return Err(Diagnostic::file(
+                    &self.name,
+                    format!(
+                        "cannot write {what}: it has {links} hard links, so it is written in place, and this user may not write it"
+                    ),
+                ));
+            }
             let old = std::mem::take(&mut self.old);
             write_in_place(
                 &mut self.file,
@@ -446,4 +472,42 @@ fn write_in_place(
             format!("cannot write {what} in place (it has {links} hard links): {e}; {back}"),
         )
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{FileId, without_path};
+
+    #[test]
+    fn a_hard_link_and_a_symlink_name_the_same_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("a.toml");
+        std::fs::write(&file, "").unwrap();
+        let hard = dir.path().join("hard.toml");
+        std::fs::hard_link(&file, &hard).unwrap();
+        let id = FileId::of(&file);
+        assert!(id.is_some());
+        assert_eq!(FileId::of(&hard), id);
+        #[cfg(unix)]
+        {
+            let soft = dir.path().join("soft.toml");
+            std::os::unix::fs::symlink(&file, &soft).unwrap();
+            assert_eq!(FileId::of(&soft), id);
+        }
+        let other = dir.path().join("b.toml");
+        std::fs::write(&other, "").unwrap();
+        assert_ne!(FileId::of(&other), id);
+        assert_eq!(FileId::of(&dir.path().join("missing.toml")), None);
+    }
+
+    #[test]
+    fn a_tempfile_error_loses_the_random_name_and_keeps_the_reason() {
+        let dir = tempfile::tempdir().unwrap();
+        let missing = dir.path().join("missing");
+        let e = tempfile::Builder::new().tempfile_in(&missing).unwrap_err();
+        assert!(e.to_string().contains(" at path "), "{e}");
+        let text = without_path(&e);
+        assert!(!text.contains("at path"), "{text}");
+        assert!(text.contains("os error"), "{text}");
+    }
 }

@@ -339,19 +339,29 @@ fn owners_are_kept_or_the_bless_is_refused() {
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(owner(&report), (4321, 4322));
 
+    // As another user: a file that needs no change is `unchanged`, even
+    // one this user may not write.
+    let as_other_user = || {
+        Command::new("setpriv")
+            .args(["--reuid=4322", "--regid=4322", "--clear-groups"])
+            .arg(env!("CARGO_BIN_EXE_massprop"))
+            .args(["check", "--bless", s(&part)])
+            .output()
+    };
+    set_mode(&part, 0o644);
+    let Ok(out) = as_other_user() else {
+        eprintln!("skipped the rest: setpriv is not available");
+        return;
+    };
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("unchanged"), "{stderr}");
+
     // Another user's file, writable by all, in a directory all may write.
     std::fs::write(&part, WHEEL).unwrap();
     set_mode(&part, 0o666);
     set_mode(&dir, 0o777);
-    let out = Command::new("setpriv")
-        .args(["--reuid=4322", "--regid=4322", "--clear-groups"])
-        .arg(env!("CARGO_BIN_EXE_massprop"))
-        .args(["check", "--bless", s(&part)])
-        .output();
-    let Ok(out) = out else {
-        eprintln!("skipped the refusal: setpriv is not available");
-        return;
-    };
+    let out = as_other_user().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(
