@@ -235,8 +235,7 @@ impl Rewrite {
                 Diagnostic::file(path, format!("cannot open the file to write it: {e}"))
             };
             // A file this user may not write is opened to read (and lock):
-            // it may need no change, and if it does, the rename below asks
-            // for the directory's permission and the owner's.
+            // it may need no change (`unchanged`); a change is refused.
             let writable = std::fs::OpenOptions::new()
                 .read(true)
                 .write(true)
@@ -281,16 +280,18 @@ impl Rewrite {
     /// Replace the file's text by `text` (`what` names it in errors); the
     /// lock is held until it is done.
     pub fn replace(mut self, text: &str, what: &str) -> Result<(), Diagnostic> {
+        // What this user may not write is not replaced either (a rename
+        // could: it asks only the directory).
+        if !self.writable {
+            return Err(Diagnostic::file(
+                &self.name,
+                format!(
+                    "cannot write {what}: this user may not write the file (permission denied)"
+                ),
+            ));
+        }
         let links = links(&self.meta);
         if links > 1 {
-            if !self.writable {
-                return Err(Diagnostic::file(
-                    &self.name,
-                    format!(
-                        "cannot write {what}: it has {links} hard links, so it is written in place, and this user may not write it"
-                    ),
-                ));
-            }
             let old = std::mem::take(&mut self.old);
             write_in_place(
                 &mut self.file,

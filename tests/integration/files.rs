@@ -357,10 +357,21 @@ fn owners_are_kept_or_the_bless_is_refused() {
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     assert!(stderr.contains("unchanged"), "{stderr}");
 
-    // Another user's file, writable by all, in a directory all may write.
-    std::fs::write(&part, WHEEL).unwrap();
-    set_mode(&part, 0o666);
+    // One that needs a change is refused, though the directory would
+    // allow a rename.
     set_mode(&dir, 0o777);
+    std::fs::write(&part, WHEEL).unwrap();
+    let out = as_other_user().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("this user may not write the file"),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_to_string(&part).unwrap(), WHEEL);
+
+    // Another user's file, writable by all, in a directory all may write.
+    set_mode(&part, 0o666);
     let out = as_other_user().unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
