@@ -187,7 +187,8 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
                 .write(true)
                 .open(&target)
                 .map_err(fail)?;
-            file.lock().map_err(fail)?;
+            // Best effort: it keeps a bless of the same file out meanwhile.
+            let _ = file.lock();
             let mut old = Vec::new();
             file.read_to_end(&mut old).map_err(fail)?;
             write_in_place(&mut file, &old, text.as_bytes(), links(&meta), path, what)
@@ -253,7 +254,19 @@ impl Rewrite {
                 }
                 Err(e) => return Err(cannot_open(e)),
             };
-            file.lock().map_err(cannot_open)?;
+            match file.lock() {
+                // A file system without locks (some network or FUSE ones):
+                // blessed as before locks, one at a time being the user's
+                // care there.
+                Err(e) if e.kind() == std::io::ErrorKind::Unsupported => {}
+                Err(e) => {
+                    return Err(Diagnostic::file(
+                        path,
+                        format!("cannot lock the file to bless it: {e}"),
+                    ));
+                }
+                Ok(()) => {}
+            }
             let meta = file.metadata().map_err(cannot_open)?;
             if FileId::of(Path::new(path)) != FileId::of_meta(&meta, path) {
                 continue;
