@@ -382,6 +382,22 @@ fn owners_are_kept_or_the_bless_is_refused() {
     assert!(stderr.contains("not blessed"), "{stderr}");
     assert_eq!(std::fs::read_to_string(&part).unwrap(), WHEEL);
     assert_eq!(owner(&part), (4321, 4321));
+
+    // The same rule for `-o` onto another user's file.
+    set_mode(&report, 0o666);
+    let out = Command::new("setpriv")
+        .args(["--reuid=4322", "--regid=4322", "--clear-groups"])
+        .arg(env!("CARGO_BIN_EXE_massprop"))
+        .args(["report", s(&part), "-o", s(&report)])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("cannot keep the file's owner (user 4321, group 4322)"),
+        "{stderr}"
+    );
+    assert_eq!(owner(&report), (4321, 4322));
     assert_eq!(
         std::fs::read_dir(&dir).unwrap().count(),
         2,
@@ -519,5 +535,27 @@ fn concurrent_blesses_leave_the_file_as_one_bless_would() {
         );
         assert_eq!(massprop(&["check", s(&part)]).status.code(), Some(0));
     }
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// An output that cannot be written says why, naming the directory, not
+/// the random name of the temporary file.
+#[test]
+fn a_failed_write_names_no_temporary_file() {
+    let dir = scratch("files", "failed-write");
+    let part = dir.join("part.toml");
+    std::fs::write(&part, WHEEL).unwrap();
+    let missing = dir.join("missing").join("report.txt");
+    let out = massprop(&["report", s(&part), "-o", s(&missing)]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    let expected = format!(
+        "{}: error: cannot write the output file: cannot create a file in `{}`: ",
+        s(&missing),
+        s(&dir.join("missing"))
+    );
+    assert!(stderr.starts_with(&expected), "{stderr}");
+    assert!(!stderr.contains("massprop.tmp"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
