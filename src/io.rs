@@ -150,10 +150,11 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
     }
 }
 
-/// Replace `path` by `text` (`what` names it in errors), the way
-/// `replace` does; a symlink is written through (the link stays a link, its
-/// target gets the text), and something that is not a regular file
-/// (/dev/stdout, a FIFO, a device) is written directly.
+/// Replace the output file `path` by `text` (`what` names it in errors):
+/// atomically with `replace_by_rename`, or in place with `write_in_place`
+/// when it has hard links. A symlink is written through (the link stays a
+/// link, its target gets the text), and something that is not a regular
+/// file (/dev/stdout, a FIFO, a device) is written directly.
 pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
     let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
     let write_directly = |to: &Path| {
