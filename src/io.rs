@@ -2,7 +2,70 @@
 //! the file system for them (`include` reads through `source_of` too).
 
 use crate::diag::{Diagnostic, Source};
-use std::io::Read;
+use std::io::{Read, Seek, Write};
+use std::path::{Path, PathBuf};
+
+/// A file as the system knows it, so that two names of one file compare
+/// equal: on unix its device and inode (a hard link, a symlink, another
+/// spelling of its path, the file a shell redirected onto standard input);
+/// elsewhere its canonical path.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FileId(Key);
+
+#[cfg(unix)]
+type Key = (u64, u64);
+#[cfg(not(unix))]
+type Key = PathBuf;
+
+impl FileId {
+    /// The file `path` names (following symlinks), if it exists.
+    pub fn of(path: &Path) -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let meta = std::fs::metadata(path).ok()?;
+            Some(FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            std::fs::canonicalize(path).ok().map(FileId)
+        }
+    }
+
+    /// The file `meta` describes (`path` names it, for systems without
+    /// inodes).
+    fn of_meta(meta: &std::fs::Metadata, path: &str) -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            let _ = path;
+            Some(FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            let _ = meta;
+            FileId::of(Path::new(path))
+        }
+    }
+
+    /// The regular file behind standard input (`massprop report - < x.toml`),
+    /// if it is one; not a pipe or a terminal, which no path can name.
+    pub fn of_stdin() -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::fd::AsFd;
+            use std::os::unix::fs::MetadataExt;
+            // fstat of fd 0 through a duplicate, so nothing closes stdin.
+            let fd = std::io::stdin().as_fd().try_clone_to_owned().ok()?;
+            let meta = std::fs::File::from(fd).metadata().ok()?;
+            meta.is_file().then(|| FileId((meta.dev(), meta.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            None
+        }
+    }
+}
 
 /// The largest part file read, in bytes: a 100,000-part file of 17-digit
 /// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this
@@ -12,39 +75,35 @@ pub const MAX_FILE_BYTES: u64 = 512 << 20;
 /// Read a part file, or standard input for `-`, refusing directories and
 /// anything over `MAX_FILE_BYTES`.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    let stdin = path == "-";
-    let name = if stdin { "<stdin>" } else { path };
-    let too_big = || {
-        Diagnostic::file(
-            name,
-            format!(
-                "{} is larger than the limit of {} MiB for a part file",
-                if stdin { "standard input" } else { "the file" },
-                MAX_FILE_BYTES >> 20
-            ),
-        )
-    };
-    let cannot_read = |e: std::io::Error| {
-        let what = if stdin { "standard input" } else { "file" };
-        Diagnostic::file(name, format!("cannot read {what}: {e}"))
-    };
-    // At most the limit and one byte, so that /dev/zero or an endless pipe
-    // cannot read forever.
-    let capped = |reader: &mut dyn Read| -> Result<Vec<u8>, Diagnostic> {
-        let mut bytes = Vec::new();
-        reader
-            .take(MAX_FILE_BYTES + 1)
-            .read_to_end(&mut bytes)
-            .map_err(cannot_read)?;
-        if bytes.len() as u64 > MAX_FILE_BYTES {
-            return Err(too_big());
-        }
-        Ok(bytes)
-    };
-    if stdin {
-        return source_of(name, capped(&mut std::io::stdin())?);
+    if path == "-" {
+        let name = "<stdin>";
+        return source_of(name, read_capped(&mut std::io::stdin(), name, true)?);
     }
-    let meta = std::fs::metadata(path).map_err(cannot_read)?;
+    let meta = std::fs::metadata(path).map_err(|e| cannot_read(path, false, e))?;
+    check_size(path, &meta)?;
+    // Not only regular files: `massprop report <(generate)` is a pipe.
+    let mut file = std::fs::File::open(path).map_err(|e| cannot_read(path, false, e))?;
+    source_of(path, read_capped(&mut file, path, false)?)
+}
+
+fn cannot_read(name: &str, stdin: bool, e: std::io::Error) -> Diagnostic {
+    let what = if stdin { "standard input" } else { "file" };
+    Diagnostic::file(name, format!("cannot read {what}: {e}"))
+}
+
+fn too_big(name: &str, stdin: bool) -> Diagnostic {
+    Diagnostic::file(
+        name,
+        format!(
+            "{} is larger than the limit of {} MiB for a part file",
+            if stdin { "standard input" } else { "the file" },
+            MAX_FILE_BYTES >> 20
+        ),
+    )
+}
+
+/// Refuse a directory, and a file over the limit before reading it.
+fn check_size(path: &str, meta: &std::fs::Metadata) -> Result<(), Diagnostic> {
     if meta.is_dir() {
         return Err(Diagnostic::file(
             path,
@@ -52,11 +111,23 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
-        return Err(too_big());
+        return Err(too_big(path, false));
     }
-    // Not only regular files: `massprop report <(generate)` is a pipe.
-    let mut file = std::fs::File::open(path).map_err(cannot_read)?;
-    source_of(path, capped(&mut file)?)
+    Ok(())
+}
+
+/// At most the limit and one byte, so that /dev/zero or an endless pipe
+/// cannot read forever.
+fn read_capped(reader: &mut dyn Read, name: &str, stdin: bool) -> Result<Vec<u8>, Diagnostic> {
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| cannot_read(name, stdin, e))?;
+    if bytes.len() as u64 > MAX_FILE_BYTES {
+        return Err(too_big(name, stdin));
+    }
+    Ok(bytes)
 }
 
 /// A part file's bytes as its source: UTF-8, or an error at the first byte
@@ -79,66 +150,379 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
     }
 }
 
-/// Replace `path` by `text` through a temporary file in the same directory
-/// and a rename, so an interrupted or failed run never leaves half a file
-/// (`what` names it in the error).
+/// Replace the output file `path` by `text` (`what` names it in errors):
+/// atomically with `replace_by_rename`, or in place with `write_in_place`
+/// when it has hard links. A symlink is written through (the link stays a
+/// link, its target gets the text), and something that is not a regular
+/// file (/dev/stdout, a FIFO, a device) is written directly.
 pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
     let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
-    // A symlink is written through (the link stays a link, its target gets
-    // the text); something that is not a regular file (/dev/stdout, a FIFO,
-    // a device) cannot be replaced by a rename and is written directly.
+    let write_directly = |to: &Path| {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(to)
+            .and_then(|mut f| f.write_all(text.as_bytes()))
+            .map_err(fail)
+    };
     // NOTE: asked first, of the path itself (stat follows the links): with
     // stdout a pipe, /dev/stdout resolves to /proc/self/fd/1 and on to
-    // `pipe:[N]`, which `canonicalize` cannot resolve — the rename below
-    // then replaced the /dev/stdout symlink itself.
+    // `pipe:[N]`, which `canonicalize` cannot resolve — a rename then
+    // replaced the /dev/stdout symlink itself.
     if let Ok(meta) = std::fs::metadata(path)
         && !meta.is_file()
         && !meta.is_dir()
     {
-        return std::fs::OpenOptions::new()
-            .write(true)
-            .open(path)
-            .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-            .map_err(fail);
+        return write_directly(Path::new(path));
     }
-    let resolved = match std::fs::canonicalize(path) {
+    let target = match std::fs::canonicalize(path) {
         Ok(real) => match std::fs::metadata(&real) {
-            Ok(meta) if !meta.is_file() && !meta.is_dir() => {
-                return std::fs::OpenOptions::new()
-                    .write(true)
-                    .open(&real)
-                    .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()))
-                    .map_err(fail);
-            }
+            Ok(meta) if !meta.is_file() && !meta.is_dir() => return write_directly(&real),
             _ => real,
         },
-        Err(_) => std::path::PathBuf::from(path),
+        Err(_) => PathBuf::from(path),
     };
-    let target = resolved.as_path();
+    match std::fs::metadata(&target) {
+        Ok(meta) if links(&meta) > 1 => {
+            let mut file = std::fs::OpenOptions::new()
+                .read(true)
+                .write(true)
+                .open(&target)
+                .map_err(fail)?;
+            // Best effort: it keeps a bless of the same file out meanwhile.
+            let _ = file.lock();
+            let mut old = Vec::new();
+            file.read_to_end(&mut old).map_err(fail)?;
+            write_in_place(&mut file, &old, text.as_bytes(), links(&meta), path, what)
+        }
+        meta => replace_by_rename(&target, meta.ok().as_ref(), text, path, what),
+    }
+}
+
+/// A part file opened to be rewritten (`check --bless`), under an exclusive
+/// advisory lock (`File::lock`: flock on unix) held until it is replaced or
+/// dropped, so that two blesses of one file take turns: each reads the
+/// text the one before it wrote.
+#[derive(Debug)]
+pub struct Rewrite {
+    file: std::fs::File,
+    /// Whether `file` was opened to write (this user may write it).
+    writable: bool,
+    /// The name it is reported under, as given.
+    name: String,
+    /// The file itself, symlinks resolved: what a rename replaces.
+    target: PathBuf,
+    meta: std::fs::Metadata,
+    /// Its bytes when read, under the lock.
+    old: Vec<u8>,
+}
+
+impl Rewrite {
+    /// Open the regular file `path` to read and write, lock it, and read it
+    /// (as `read_source`, under the same limit).
+    pub fn open(path: &str) -> Result<(Rewrite, Source), Diagnostic> {
+        // NOTE: a bless that waited for the lock may find that the one
+        // before it replaced the file (a rename): the lock it holds is then
+        // on a file no longer at `path`, so it starts again with the one
+        // there now. Bounded, in case something else keeps replacing it.
+        for _ in 0..1000 {
+            let meta = std::fs::metadata(path).map_err(|e| cannot_read(path, false, e))?;
+            check_size(path, &meta)?;
+            if !meta.is_file() {
+                return Err(Diagnostic::file(
+                    path,
+                    "not a regular file (a pipe, socket or device): `--bless` rewrites files",
+                ));
+            }
+            let cannot_open = |e: std::io::Error| {
+                Diagnostic::file(path, format!("cannot open the file to write it: {e}"))
+            };
+            // A file this user may not write is opened to read (and lock):
+            // it may need no change (`unchanged`); a change is refused.
+            let writable = std::fs::OpenOptions::new()
+                .read(true)
+                .write(true)
+                .open(path);
+            let (mut file, writable) = match writable {
+                Ok(file) => (file, true),
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        std::io::ErrorKind::PermissionDenied
+                            | std::io::ErrorKind::ReadOnlyFilesystem
+                    ) =>
+                {
+                    (std::fs::File::open(path).map_err(cannot_open)?, false)
+                }
+                Err(e) => return Err(cannot_open(e)),
+            };
+            match file.lock() {
+                // A file system without locks (some network or FUSE ones):
+                // blessed as before locks, one at a time being the user's
+                // care there.
+                Err(e) if e.kind() == std::io::ErrorKind::Unsupported => {}
+                Err(e) => {
+                    return Err(Diagnostic::file(
+                        path,
+                        format!("cannot lock the file to bless it: {e}"),
+                    ));
+                }
+                Ok(()) => {}
+            }
+            let meta = file.metadata().map_err(cannot_open)?;
+            if FileId::of(Path::new(path)) != FileId::of_meta(&meta, path) {
+                continue;
+            }
+            let old = read_capped(&mut file, path, false)?;
+            let source = source_of(path, old.clone())?;
+            let target = std::fs::canonicalize(path).map_err(cannot_open)?;
+            let rewrite = Rewrite {
+                file,
+                writable,
+                name: path.to_string(),
+                target,
+                meta,
+                old,
+            };
+            return Ok((rewrite, source));
+        }
+        Err(Diagnostic::file(
+            path,
+            "the file kept being replaced while waiting to write it: not written",
+        ))
+    }
+
+    /// Replace the file's text by `text` (`what` names it in errors); the
+    /// lock is held until it is done.
+    pub fn replace(mut self, text: &str, what: &str) -> Result<(), Diagnostic> {
+        // What this user may not write is not replaced either (a rename
+        // could: it asks only the directory).
+        if !self.writable {
+            return Err(Diagnostic::file(
+                &self.name,
+                format!(
+                    "cannot write {what}: this user may not write the file (permission denied)"
+                ),
+            ));
+        }
+        let links = links(&self.meta);
+        if links > 1 {
+            let old = std::mem::take(&mut self.old);
+            write_in_place(
+                &mut self.file,
+                &old,
+                text.as_bytes(),
+                links,
+                &self.name,
+                what,
+            )
+        } else {
+            replace_by_rename(&self.target, Some(&self.meta), text, &self.name, what)
+        }
+    }
+}
+
+/// How many names (hard links) a file has; 1 where that is not known.
+fn links(meta: &std::fs::Metadata) -> u64 {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::MetadataExt::nlink(meta)
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = meta;
+        1
+    }
+}
+
+/// Replace `target` by `text` the safe way: a temporary file in the same
+/// directory (a rename does not cross file systems), its contents synced to
+/// disk, renamed over the target, so that a reader, a crash or a full disk
+/// sees the whole old file or the whole new one, never half of either.
+///
+/// - The temporary file comes from the `tempfile` crate: an unpredictable
+///   name (`.NAME.XXXXXX.massprop.tmp`), created exclusively (`O_EXCL`,
+///   never through a symlink or onto a file already there), another name
+///   tried on a clash; on failure only that file is removed, never a file
+///   massprop did not create.
+/// - It keeps the replaced file's permissions and its owner and group; when
+///   the owner cannot be kept (not running as root or as the owner), the
+///   target is not touched and the error says why, rather than a file
+///   silently changing hands. A new file gets the permissions any new file
+///   gets (0666 less the umask).
+/// - The directory is synced after the rename (best effort), so that the
+///   rename itself survives a crash.
+fn replace_by_rename(
+    target: &Path,
+    meta: Option<&std::fs::Metadata>,
+    text: &str,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    let fail = |e: std::io::Error| Diagnostic::file(name, format!("cannot write {what}: {e}"));
     let dir = target
         .parent()
         .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = target
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.massprop.{}", std::process::id()));
-    // create_new: never through a symlink or file already at that name.
-    let written = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&tmp)
-        .and_then(|mut f| std::io::Write::write_all(&mut f, text.as_bytes()));
-    if let Err(e) = written {
-        let _ = std::fs::remove_file(&tmp);
-        return Err(fail(e));
+        .unwrap_or(Path::new("."));
+    let mut prefix = std::ffi::OsString::from(".");
+    prefix.push(target.file_name().unwrap_or_default());
+    prefix.push(".");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".massprop.tmp");
+    #[cfg(unix)]
+    if meta.is_none() {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
-    if let Ok(meta) = std::fs::metadata(target) {
-        let _ = std::fs::set_permissions(&tmp, meta.permissions());
+    let tmp = builder.tempfile_in(dir).map_err(|e| {
+        Diagnostic::file(
+            name,
+            format!(
+                "cannot write {what}: cannot create a file in `{}`: {}",
+                dir.display(),
+                without_path(&e)
+            ),
+        )
+    })?;
+    if let Some(meta) = meta {
+        keep_owner(tmp.as_file(), meta, name, what)?;
     }
-    std::fs::rename(&tmp, target).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        fail(e)
+    tmp.as_file().write_all(text.as_bytes()).map_err(fail)?;
+    if let Some(meta) = meta {
+        // After the owner: chown clears the set-user-ID and set-group-ID bits.
+        tmp.as_file()
+            .set_permissions(meta.permissions())
+            .map_err(fail)?;
+    }
+    tmp.as_file().sync_all().map_err(fail)?;
+    // On failure the error holds the temporary file, whose drop removes it.
+    tmp.persist(target).map_err(|e| {
+        Diagnostic::file(
+            name,
+            format!("cannot write {what}: {}", without_path(&e.error)),
+        )
+    })?;
+    #[cfg(unix)]
+    {
+        // Best effort: some file systems cannot sync a directory.
+        let _ = std::fs::File::open(dir).and_then(|d| d.sync_all());
+    }
+    Ok(())
+}
+
+/// An error from `tempfile` without the temporary file's name, which it
+/// appends (`… at path "/dir/.x.toml.yYUCHJ.massprop.tmp"`): random, and
+/// of no use to the reader.
+fn without_path(e: &std::io::Error) -> String {
+    let text = e.to_string();
+    match text.find(" at path ") {
+        Some(at) => text[..at].to_string(),
+        None => text,
+    }
+}
+
+/// Give the new file `tmp` the owner and group of the file `meta` describes,
+/// or refuse (nothing replaced yet) when that is not allowed.
+fn keep_owner(
+    tmp: &std::fs::File,
+    meta: &std::fs::Metadata,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let mine = tmp
+            .metadata()
+            .map_err(|e| Diagnostic::file(name, format!("cannot write {what}: {e}")))?;
+        if (mine.uid(), mine.gid()) == (meta.uid(), meta.gid()) {
+            return Ok(());
+        }
+        std::os::unix::fs::fchown(tmp, Some(meta.uid()), Some(meta.gid())).map_err(|e| {
+            Diagnostic::file(
+                name,
+                format!(
+                    "cannot keep the file's owner (user {}, group {}): a file massprop writes belongs to user {}, group {}, and giving it away is not allowed ({e}); {what} not written",
+                    meta.uid(),
+                    meta.gid(),
+                    mine.uid(),
+                    mine.gid()
+                ),
+            )
+            .help("run massprop as the file's owner (or as root), or copy the file to one of your own")
+        })
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = (tmp, meta, name, what);
+        Ok(())
+    }
+}
+
+/// Write `new` over the file's own bytes, for a file with hard links (a
+/// rename would give this name a new file and cut it from the others). Not
+/// atomic: a reader may see it half written, and a crash mid-write may
+/// leave it so; a failed write (a full disk) puts `old` back, which fits
+/// in the space the file already had.
+fn write_in_place(
+    file: &mut std::fs::File,
+    old: &[u8],
+    new: &[u8],
+    links: u64,
+    name: &str,
+    what: &str,
+) -> Result<(), Diagnostic> {
+    let write = |file: &mut std::fs::File, bytes: &[u8]| -> std::io::Result<()> {
+        file.seek(std::io::SeekFrom::Start(0))?;
+        file.write_all(bytes)?;
+        file.set_len(bytes.len() as u64)?;
+        file.sync_all()
+    };
+    write(file, new).map_err(|e| {
+        let back = match write(file, old) {
+            Ok(()) => "its previous text was written back".to_string(),
+            Err(e) => format!("writing its previous text back failed too ({e}): it may be damaged"),
+        };
+        Diagnostic::file(
+            name,
+            format!("cannot write {what} in place (it has {links} hard links): {e}; {back}"),
+        )
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{FileId, without_path};
+
+    #[test]
+    fn a_hard_link_and_a_symlink_name_the_same_file() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("a.toml");
+        std::fs::write(&file, "").unwrap();
+        let hard = dir.path().join("hard.toml");
+        std::fs::hard_link(&file, &hard).unwrap();
+        let id = FileId::of(&file);
+        assert!(id.is_some());
+        assert_eq!(FileId::of(&hard), id);
+        #[cfg(unix)]
+        {
+            let soft = dir.path().join("soft.toml");
+            std::os::unix::fs::symlink(&file, &soft).unwrap();
+            assert_eq!(FileId::of(&soft), id);
+        }
+        let other = dir.path().join("b.toml");
+        std::fs::write(&other, "").unwrap();
+        assert_ne!(FileId::of(&other), id);
+        assert_eq!(FileId::of(&dir.path().join("missing.toml")), None);
+    }
+
+    #[test]
+    fn a_tempfile_error_loses_the_random_name_and_keeps_the_reason() {
+        let dir = tempfile::tempdir().unwrap();
+        let missing = dir.path().join("missing");
+        let e = tempfile::Builder::new().tempfile_in(&missing).unwrap_err();
+        assert!(e.to_string().contains(" at path "), "{e}");
+        let text = without_path(&e);
+        assert!(!text.contains("at path"), "{text}");
+        assert!(text.contains("os error"), "{text}");
+    }
 }

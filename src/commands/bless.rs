@@ -7,7 +7,13 @@
 //! - A file without `[expect]` gets one for its mass, centre of mass and
 //!   principal moments.
 //! - A file that cannot be parsed, or whose edit would not parse, is left
-//!   untouched. The file is replaced atomically (temporary file + rename).
+//!   untouched.
+//! - Each line keeps its own ending (LF or CRLF; `Endings`), and a
+//!   byte-order mark stays.
+//! - The file is read and replaced under an exclusive lock on it, so that
+//!   concurrent blesses take turns (`io::Rewrite`): replaced atomically
+//!   (temporary file + rename) keeping its permissions and owner, or in
+//!   place when it has hard links, which a rename would break.
 
 use crate::analysis::check::measured;
 use crate::analysis::summary::Summary;
@@ -27,7 +33,6 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
             "`--bless` writes files; it cannot bless standard input",
         ));
     }
-    let source = crate::io::read_source(path)?;
     // A rename replaces a read-only file as easily as any other (and root
     // writes anything): the mode is the owner's word that it is not to be
     // changed.
@@ -37,7 +42,13 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
             "the file is read-only: not blessed (make it writable to bless it)",
         ));
     }
-    let mut doc: DocumentMut = match source.text.parse() {
+    // Locked from here until written: another bless of this file waits,
+    // then reads what this one wrote.
+    let (file, source) = crate::io::Rewrite::open(path)?;
+    // toml_edit writes every line ending as LF: it edits the text with LF
+    // endings, and each line gets its own ending back afterwards.
+    let endings = Endings::of(&source.text);
+    let mut doc: DocumentMut = match endings.lf.parse() {
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.
         Err(_) => {
@@ -59,7 +70,7 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     } else {
         changed |= write_values(&mut doc, &model.expect, &summary);
     }
-    let text = doc.to_string();
+    let text = endings.restore(&doc.to_string());
     if text == source.text {
         return Ok(false);
     }
@@ -68,19 +79,98 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
         &Source::new(source.name.clone(), text.clone()),
         &settings.include_roots,
     )?;
-    // toml_edit writes new lines as LF: a CRLF file stays CRLF throughout.
-    let text = if source.text.contains("\r\n") {
-        text.replace("\r\n", "\n").replace('\n', "\r\n")
-    } else {
-        text
-    };
     let text = if source.bom {
         format!("\u{feff}{text}")
     } else {
         text
     };
-    write_atomically(path, &text)?;
+    file.replace(&text, "the blessed file")?;
     Ok(changed)
+}
+
+/// A text's line endings, one per line, and the text with every line ending
+/// in LF, so that an edit of the LF text can be given them back: every line
+/// the edit leaves as it was keeps its exact bytes, a line the edit changes
+/// keeps the ending of the line it replaces, and a new line takes the
+/// ending most lines of the file have (LF on a tie).
+struct Endings {
+    /// The text, each CRLF line ending as LF.
+    lf: String,
+    /// The lines of `lf` (without endings).
+    lines: Vec<String>,
+    /// Whether each line ended in CRLF; `None` for the last, which has no
+    /// ending (it is empty when the text ends with one).
+    crlf: Vec<Option<bool>>,
+    /// Whether most lines end in CRLF.
+    mostly_crlf: bool,
+}
+
+impl Endings {
+    fn of(text: &str) -> Endings {
+        let pieces: Vec<&str> = text.split('\n').collect();
+        let last = pieces.len() - 1;
+        let mut lines = Vec::with_capacity(pieces.len());
+        let mut crlf = Vec::with_capacity(pieces.len());
+        for (i, piece) in pieces.into_iter().enumerate() {
+            if i == last {
+                lines.push(piece.to_string());
+                crlf.push(None);
+            } else {
+                let stripped = piece.strip_suffix('\r');
+                lines.push(stripped.unwrap_or(piece).to_string());
+                crlf.push(Some(stripped.is_some()));
+            }
+        }
+        let with_crlf = crlf.iter().filter(|c| **c == Some(true)).count();
+        Endings {
+            lf: lines.join("\n"),
+            mostly_crlf: 2 * with_crlf > last,
+            lines,
+            crlf,
+        }
+    }
+
+    /// `edited` (an edit of `lf`, LF endings) with the endings given back.
+    fn restore(&self, edited: &str) -> String {
+        let new: Vec<&str> = edited.split('\n').collect();
+        let old: Vec<&str> = self.lines.iter().map(String::as_str).collect();
+        // The ending of each new line: of the old line it is, or replaces.
+        let mut crlf: Vec<Option<bool>> = vec![None; new.len()];
+        for op in similar::capture_diff_slices(similar::Algorithm::Myers, &old, &new) {
+            match op {
+                similar::DiffOp::Equal {
+                    old_index,
+                    new_index,
+                    len,
+                } => crlf[new_index..new_index + len]
+                    .copy_from_slice(&self.crlf[old_index..old_index + len]),
+                similar::DiffOp::Replace {
+                    old_index,
+                    old_len,
+                    new_index,
+                    new_len,
+                } => {
+                    let n = old_len.min(new_len);
+                    crlf[new_index..new_index + n]
+                        .copy_from_slice(&self.crlf[old_index..old_index + n]);
+                }
+                similar::DiffOp::Delete { .. } | similar::DiffOp::Insert { .. } => {}
+            }
+        }
+        let mut out = String::with_capacity(edited.len() + new.len());
+        let last = new.len() - 1;
+        for (i, (line, crlf)) in new.iter().zip(crlf).enumerate() {
+            out.push_str(line);
+            if i < last {
+                out.push_str(if crlf.unwrap_or(self.mostly_crlf) {
+                    "\r\n"
+                } else {
+                    "\n"
+                });
+            }
+        }
+        out
+    }
 }
 
 fn tables_mut(item: &mut Item) -> Vec<&mut Item> {
@@ -247,6 +337,65 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
     doc.insert("expect", Item::Table(t));
 }
 
-fn write_atomically(path: &str, text: &str) -> Result<(), Diagnostic> {
-    crate::io::write_atomically(path, text, "the blessed file")
+#[cfg(test)]
+mod tests {
+    use super::Endings;
+
+    /// What `restore` gives for `edit` applied to the LF text of `text`.
+    fn edited(text: &str, edit: impl Fn(&str) -> String) -> String {
+        let endings = Endings::of(text);
+        endings.restore(&edit(&endings.lf))
+    }
+
+    #[test]
+    fn an_unedited_text_comes_back_byte_for_byte() {
+        for text in [
+            "",
+            "a",
+            "a\n",
+            "a\r\n",
+            "a\r\nb\nc",
+            "a\n\r\n\nb\r\n",
+            "a\r\r\n",
+        ] {
+            assert_eq!(edited(text, str::to_string), text);
+        }
+    }
+
+    #[test]
+    fn an_edited_line_keeps_its_own_ending() {
+        let text = "a = 1\nb = 2\r\nc = 3\n";
+        assert_eq!(
+            edited(text, |t| t.replace("b = 2", "b = 5.0")),
+            "a = 1\nb = 5.0\r\nc = 3\n"
+        );
+        assert_eq!(
+            edited(text, |t| t.replace("a = 1", "a = 7")),
+            "a = 7\nb = 2\r\nc = 3\n"
+        );
+    }
+
+    #[test]
+    fn a_new_line_takes_the_ending_most_lines_have() {
+        let mostly_crlf = "a = 1\r\nb = 2\nc = 3\r\n";
+        assert_eq!(
+            edited(mostly_crlf, |t| t.replace("b = 2\n", "b = 2\nt = 0\n")),
+            "a = 1\r\nb = 2\nt = 0\r\nc = 3\r\n"
+        );
+        let mostly_lf = "a = 1\nb = 2\r\nc = 3\n";
+        assert_eq!(
+            edited(mostly_lf, |t| format!("{t}d = 4\n")),
+            "a = 1\nb = 2\r\nc = 3\nd = 4\n"
+        );
+    }
+
+    #[test]
+    fn a_tie_gives_new_lines_lf() {
+        assert_eq!(edited("a\r\nb\n", |t| format!("{t}c\n")), "a\r\nb\nc\n");
+    }
+
+    #[test]
+    fn a_last_line_without_an_ending_gets_one_when_lines_follow() {
+        assert_eq!(edited("a\r\nb", |t| format!("{t}\nc\n")), "a\r\nb\r\nc\r\n");
+    }
 }

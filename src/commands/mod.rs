@@ -10,8 +10,8 @@ pub mod materials;
 pub mod report;
 
 use crate::diag::Diagnostic;
-use crate::io::write_atomically;
-use std::path::PathBuf;
+use crate::io::{FileId, write_atomically};
+use std::path::{Path, PathBuf};
 
 /// What a run that completed prints and the exit status it ends with
 /// (`check` reports invalid files on stderr and still checks the rest).
@@ -79,10 +79,36 @@ impl Request {
     }
 }
 
+/// The input that `-o PATH` names, if any: the one rule for "this output
+/// is a file the run reads", used before the run (against the files named)
+/// and after it (against every file read). The same file, not the same
+/// path: a hard link or a symlink to an input is that input (`FileId`), and
+/// `-` is the file behind standard input when that is a regular file
+/// (`report - -o x.toml < x.toml`).
+fn input_named_by<'a>(
+    output: &str,
+    inputs: impl IntoIterator<Item = &'a Path>,
+) -> Option<&'a Path> {
+    let output = FileId::of(Path::new(output))?;
+    inputs.into_iter().find(|i| {
+        let id = if *i == Path::new("-") {
+            FileId::of_stdin()
+        } else {
+            FileId::of(i)
+        };
+        id.as_ref() == Some(&output)
+    })
+}
+
 /// `-o PATH` names `input`, a file the run reads.
-fn onto_input(path: &str, input: &str) -> Diagnostic {
+fn onto_input(path: &str, input: &Path) -> Diagnostic {
+    let input = if input == Path::new("-") {
+        "the file on standard input".to_string()
+    } else {
+        format!("the part file `{}`", input.display())
+    };
     Diagnostic::plain(format!(
-        "`-o {path}` is the part file `{input}`: the report would replace it"
+        "`-o {path}` is {input}: the report would replace it"
     ))
 }
 
@@ -91,12 +117,9 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
     // `-o` onto a part file being read would replace the design with the
     // report: refused before anything is read or written.
     let output = request.output();
+    let named = || request.inputs().into_iter().map(Path::new);
     if let Some(path) = output
-        && let Ok(o) = std::fs::canonicalize(path)
-        && let Some(i) = request
-            .inputs()
-            .into_iter()
-            .find(|i| std::fs::canonicalize(i).is_ok_and(|i| i == o))
+        && let Some(i) = input_named_by(path, named())
     {
         return Err(onto_input(path, i));
     }
@@ -109,12 +132,11 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
     match output {
         // `-o FILE`: the whole result or nothing, never half a file, and
         // never onto a file the run read (one found in a directory, or
-        // included by one named).
+        // included by one named; asked again now that they are known).
         Some(path) => {
-            if let Ok(o) = std::fs::canonicalize(path)
-                && let Some(i) = out.read.iter().find(|i| **i == o)
-            {
-                return Err(onto_input(path, &i.display().to_string()));
+            let read = out.read.iter().map(PathBuf::as_path);
+            if let Some(i) = input_named_by(path, named().chain(read)) {
+                return Err(onto_input(path, i));
             }
             write_atomically(path, &out.stdout, "the output file")?;
             Ok(Outcome {

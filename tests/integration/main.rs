@@ -7,6 +7,7 @@ mod common;
 mod cost;
 mod diff;
 mod docs;
+mod files;
 mod hostile;
 mod invariants;
 mod layers;
