@@ -810,14 +810,7 @@ fn output_onto_a_found_or_included_file_is_refused_and_leaves_it_intact() {
         ],
     ] {
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
-        let out = massprop(&args);
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(out.stdout.is_empty(), "{args:?}");
-        assert!(
-            stderr.contains("the report would replace it"),
-            "{args:?}: {stderr}"
-        );
+        crate::common::assert_refused(&massprop(&args), &args);
         assert_eq!(
             std::fs::read_to_string(dir.join("wheel.toml")).unwrap(),
             wheel

@@ -40,3 +40,15 @@ pub fn scratch(group: &str, name: &str) -> PathBuf {
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
+
+/// A run refused for `-o` onto one of its inputs: status 2, nothing on
+/// stdout, the reason on stderr.
+pub fn assert_refused(out: &std::process::Output, args: &[&str]) {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "{args:?}");
+    assert!(
+        stderr.contains("the report would replace it"),
+        "{args:?}: {stderr}"
+    );
+}

@@ -4,7 +4,7 @@
 //! line's ending, hard links and ownership, and serialises concurrent
 //! blesses of one file.
 
-use crate::common::{massprop, scratch};
+use crate::common::{assert_refused, massprop, scratch};
 use std::path::Path;
 use std::process::{Command, Stdio};
 
@@ -14,18 +14,6 @@ const CART: &str = "[[part]]\nshape = \"point\"\nmass = 5\ncenter = [0, 0, 1]\n\
 
 fn s(p: &Path) -> &str {
     p.to_str().expect("scratch paths are UTF-8")
-}
-
-/// A run refused for `-o` onto one of its inputs: status 2, nothing on
-/// stdout, the reason on stderr.
-fn assert_refused(out: &std::process::Output, args: &[&str]) {
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-    assert!(out.stdout.is_empty(), "{args:?}");
-    assert!(
-        stderr.contains("the report would replace it"),
-        "{args:?}: {stderr}"
-    );
 }
 
 /// `-o` onto a hard link to the part file, to an included file, or to a file
