@@ -38,14 +38,11 @@ struct JsonReport<'a> {
 
 /// The results as one JSON document.
 pub fn json(results: &[FileResult]) -> String {
-    let mut s = serde_json::to_string(&JsonReport {
+    super::json_line(&JsonReport {
         format_version: FORMAT_VERSION,
         files: results,
         summary: Counts::of(results),
     })
-    .expect("check results of finite numbers serialize");
-    s.push('\n');
-    s
 }
 
 /// The results for people and CI logs.

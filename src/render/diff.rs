@@ -86,9 +86,7 @@ pub fn json(d: &Diff) -> String {
                 .collect(),
         },
     };
-    let mut s = serde_json::to_string(&json).expect("a diff of finite numbers always serializes");
-    s.push('\n');
-    s
+    super::json_line(&json)
 }
 
 /// How a file is named in the table: its path, and its `name` if it has one.

@@ -14,14 +14,11 @@ pub struct Listed {
 }
 
 pub fn json(list: &[Listed]) -> String {
-    let mut s = serde_json::to_string(&serde_json::json!({
+    super::json_line(&serde_json::json!({
         "format_version": FORMAT_VERSION,
         "units": { "density": "kg/m^3" },
         "materials": list,
     }))
-    .expect("finite densities serialize");
-    s.push('\n');
-    s
 }
 
 pub fn table(list: &[Listed]) -> String {

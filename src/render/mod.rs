@@ -54,3 +54,65 @@ pub fn render(output: &Output, format: Format) -> String {
         (Format::Json, Output::Materials(l)) => materials::json(l),
     }
 }
+
+/// `value` as one line of JSON, ending in a newline: every JSON output is
+/// written by this.
+///
+/// NOTE: serde_json escapes only U+0000..U+001F in strings; DEL and the C1
+/// controls (U+0080..U+009F: U+009B is a CSI to terminals that take 8-bit
+/// controls) from a name would reach a terminal raw from
+/// `massprop report --format json | less`. They are escaped as `\u007f`,
+/// `\u009b`, …, which every JSON reader decodes back to the same text.
+pub fn json_line<T: serde::Serialize + ?Sized>(value: &T) -> String {
+    let mut out = Vec::new();
+    let mut ser = serde_json::Serializer::with_formatter(&mut out, ControlsEscaped);
+    value
+        .serialize(&mut ser)
+        .expect("invariant: outputs hold finite numbers and strings, which always serialize");
+    out.push(b'\n');
+    String::from_utf8(out).expect("invariant: serde_json writes UTF-8")
+}
+
+/// serde_json's compact formatter, with DEL and C1 controls escaped.
+struct ControlsEscaped;
+
+impl serde_json::ser::Formatter for ControlsEscaped {
+    fn write_string_fragment<W: ?Sized + std::io::Write>(
+        &mut self,
+        w: &mut W,
+        fragment: &str,
+    ) -> std::io::Result<()> {
+        // C1 controls are encoded with a 0xC2 lead byte: one scan for the
+        // usual text that has neither.
+        if !fragment.bytes().any(|b| b == 0x7f || b == 0xc2) {
+            return w.write_all(fragment.as_bytes());
+        }
+        let mut start = 0;
+        for (i, c) in fragment.char_indices() {
+            if c == '\u{7f}' || ('\u{80}'..='\u{9f}').contains(&c) {
+                w.write_all(fragment[start..i].as_bytes())?;
+                write!(w, "\\u{:04x}", u32::from(c))?;
+                start = i + c.len_utf8();
+            }
+        }
+        w.write_all(fragment[start..].as_bytes())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::json_line;
+
+    #[test]
+    fn json_escapes_every_control_character_and_reads_back_the_same_text() {
+        let text = "a\u{1b}[31m\u{7f}b\u{9b}2Jc\u{80}\u{9f}\u{a0}é\n";
+        let line = json_line(&serde_json::json!({ "name": text }));
+        assert_eq!(
+            line,
+            "{\"name\":\"a\\u001b[31m\\u007fb\\u009b2Jc\\u0080\\u009f\u{a0}é\\n\"}\n"
+        );
+        assert!(!line.chars().any(|c| c.is_control() && c != '\n'));
+        let back: serde_json::Value = serde_json::from_str(&line).unwrap();
+        assert_eq!(back["name"], text);
+    }
+}

@@ -15,10 +15,7 @@ use std::fmt::Write;
 
 /// The report as one JSON object (docs/json.md): the summary, SI.
 pub fn json(summary: &Summary) -> String {
-    let mut s =
-        serde_json::to_string(summary).expect("a summary of finite numbers always serializes");
-    s.push('\n');
-    s
+    super::json_line(summary)
 }
 
 fn matrix_table(m: &[[f64; 3]; 3], scale: f64) -> Table {
