@@ -219,6 +219,19 @@ impl Ctx<'_> {
                 )
                 .help("`include` names a part file"));
         }
+        // Only part files: `.env` or `.git/config` (where a CI checkout
+        // keeps its token) would be parsed as TOML and quoted in the error.
+        if !canonical
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+        {
+            return Err(self
+                .err(
+                    inc.span(),
+                    format!("the included `{shown_name}` is not a part file (`*.toml`)"),
+                )
+                .help("`include` names a part file, after following symlinks"));
+        }
         Ok(Target {
             canonical,
             shown,
@@ -390,11 +403,28 @@ impl Ctx<'_> {
                     d.included_from(format!("{}:{line}:{col}", self.source.name))
                 };
                 let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                let source = crate::io::source_of(&shown_name, bytes).map_err(included_here)?;
+                // An error inside a file that is not a part file at all
+                // (a `secrets.toml`) is said without quoting any of it.
+                let not_a_part_file = || {
+                    self.err(
+                        inc.span(),
+                        format!("the included `{shown_name}` is not a part file: it has no `[[part]]` table"),
+                    )
+                    .help("`include` names a part file; its contents are not shown")
+                };
+                let looks_like_a_part_file = has_parts(&String::from_utf8_lossy(&bytes));
+                let quoted = |d: Diagnostic| {
+                    if looks_like_a_part_file {
+                        included_here(d)
+                    } else {
+                        not_a_part_file()
+                    }
+                };
+                let source = crate::io::source_of(&shown_name, bytes).map_err(quoted)?;
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();
-                let child = child.map_err(included_here)?;
+                let child = child.map_err(quoted)?;
                 files.cache.insert(canonical, child.clone());
                 child
             }
@@ -470,6 +500,21 @@ impl Ctx<'_> {
         }
         Ok(())
     }
+}
+
+/// Whether `text` has a `[[part]]` table (or a `part` array) at the start
+/// of a line: what every part file has, and what a file of secrets or
+/// settings that happens to be TOML has not.
+fn has_parts(text: &str) -> bool {
+    text.lines().any(|l| {
+        let l = l.trim_start();
+        let header = l
+            .strip_prefix("[[")
+            .map(|h| h.trim_start().starts_with("part"));
+        header.unwrap_or(false)
+            || l.strip_prefix("part")
+                .is_some_and(|r| r.trim_start().starts_with('='))
+    })
 }
 
 /// Keys of a part with the span of each that is present.

@@ -933,3 +933,47 @@ fn includes_are_confined_unless_a_root_allows_them() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// An include names a part file: a file of another kind inside the tree
+/// (`.env`, `.git/config`, a symlink to one) is refused before it is read,
+/// and a TOML file that is not a part file (no `[[part]]`) is refused
+/// without quoting a line of it; a part file's own errors are quoted.
+#[test]
+fn includes_of_files_that_are_not_part_files_quote_nothing_of_them() {
+    const SECRET: &str = "ghp_0123456789abcdefSECRET";
+    let dir = crate::common::scratch("cli", "include-non-part");
+    std::fs::create_dir_all(dir.join(".git")).unwrap();
+    std::fs::write(dir.join(".env"), format!("API_TOKEN={SECRET}\n")).unwrap();
+    std::fs::write(
+        dir.join(".git/config"),
+        format!("[http]\n\textraheader = AUTHORIZATION: basic {SECRET}\n"),
+    )
+    .unwrap();
+    std::fs::write(dir.join("secrets.toml"), format!("token = \"{SECRET}\"\n")).unwrap();
+    std::os::unix::fs::symlink(dir.join(".env"), dir.join("env.toml")).unwrap();
+    std::fs::write(
+        dir.join("broken.toml"),
+        format!("[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0]  # {SECRET}\n"),
+    )
+    .unwrap();
+    for (target, says, quoted) in [
+        (".env", "is not a part file (`*.toml`)", false),
+        (".git/config", "is not a part file (`*.toml`)", false),
+        ("env.toml", "is not a part file (`*.toml`)", false),
+        (
+            "secrets.toml",
+            "is not a part file: it has no `[[part]]` table",
+            false,
+        ),
+        ("broken.toml", "`center` needs 3 components, got 2", true),
+    ] {
+        let top = dir.join("top.toml");
+        std::fs::write(&top, format!("[[part]]\ninclude = \"{target}\"\n")).unwrap();
+        let out = massprop(&["report", top.to_str().unwrap()]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{target}: {err}");
+        assert!(out.stdout.is_empty());
+        assert!(err.contains(says), "{target}: {err}");
+        assert_eq!(err.contains(SECRET), quoted, "{target}: {err}");
+    }
+}
