@@ -1,8 +1,9 @@
 //! Reading part files and writing outputs: the only module that touches
 //! the file system for them (`include` reads through `source_of` too).
 
-use crate::diag::{Diagnostic, Source};
+use crate::diag::{Diagnostic, Source, display_path};
 use std::io::Read;
+use std::path::Path;
 
 /// The largest part file read, in bytes: a 100,000-part file of 17-digit
 /// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this
@@ -12,8 +13,15 @@ pub const MAX_FILE_BYTES: u64 = 512 << 20;
 /// Read a part file, or standard input for `-`, refusing directories and
 /// anything over `MAX_FILE_BYTES`.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    let stdin = path == "-";
-    let name = if stdin { "<stdin>" } else { path };
+    read_source_at(Path::new(path))
+}
+
+/// `read_source` of any path, UTF-8 or not (`check DIR` finds such
+/// names): the source is named by `display_path` and opened by `path`.
+pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
+    let stdin = path.as_os_str() == "-";
+    let shown = display_path(path);
+    let name = if stdin { "<stdin>" } else { shown.as_str() };
     let too_big = || {
         Diagnostic::file(
             name,
@@ -47,7 +55,7 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
     let meta = std::fs::metadata(path).map_err(cannot_read)?;
     if meta.is_dir() {
         return Err(Diagnostic::file(
-            path,
+            name,
             "cannot read file: it is a directory (`check` searches directories)",
         ));
     }
@@ -56,7 +64,7 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
     }
     // Not only regular files: `massprop report <(generate)` is a pipe.
     let mut file = std::fs::File::open(path).map_err(cannot_read)?;
-    source_of(path, capped(&mut file)?)
+    Ok(source_of(name, capped(&mut file)?)?.read_from(path.to_path_buf()))
 }
 
 /// A part file's bytes as its source: UTF-8, or an error at the first byte

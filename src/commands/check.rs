@@ -9,7 +9,7 @@ use super::{Outcome, bless};
 use crate::analysis::check::{FileResult, Status, check_loaded};
 use crate::analysis::{self, Settings};
 use crate::compose::Precision;
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, display_path};
 use crate::render::{self, Format};
 use std::path::{Path, PathBuf};
 
@@ -27,10 +27,11 @@ pub struct Options {
     pub include_roots: Vec<PathBuf>,
 }
 
-/// What a search for part files found.
+/// What a search for part files found. Paths are kept as the file system
+/// gave them (a name need not be UTF-8) and shown by `display_path`.
 enum Found {
     /// A part file to check (as named, or found in a directory).
-    File(String),
+    File(PathBuf),
     /// Something that is not checked, with why: a FIFO, socket or device
     /// named `*.toml` (never opened: reading one can block forever), or a
     /// directory that cannot be read. It counts as invalid; the search goes
@@ -45,7 +46,7 @@ fn collect(paths: &[String]) -> Vec<Found> {
         let read = match std::fs::read_dir(dir) {
             Ok(read) => read,
             Err(e) => {
-                let name = dir.display().to_string();
+                let name = display_path(dir);
                 let d = Diagnostic::file(&name, format!("cannot read directory: {e}"));
                 return out.push(Found::Skipped(name, d));
             }
@@ -64,10 +65,10 @@ fn collect(paths: &[String]) -> Vec<Found> {
             } else if p.extension().is_some_and(|e| e == "toml") {
                 // The target's type, without opening it.
                 match std::fs::metadata(&p) {
-                    Ok(m) if m.is_file() => out.push(Found::File(p.display().to_string())),
+                    Ok(m) if m.is_file() => out.push(Found::File(p)),
                     Ok(m) if m.is_dir() => {}
                     _ => {
-                        let name = p.display().to_string();
+                        let name = display_path(&p);
                         let d = Diagnostic::file(
                             &name,
                             "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
@@ -84,7 +85,7 @@ fn collect(paths: &[String]) -> Vec<Found> {
         if p != "-" && path.is_dir() {
             walk(path, &mut out);
         } else {
-            out.push(Found::File(p.clone()));
+            out.push(Found::File(PathBuf::from(p)));
         }
     }
     out
@@ -117,29 +118,46 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     // Every file found, valid or not, and every file those include.
     let mut read: Vec<PathBuf> = Vec::new();
     for found in found {
-        let f = match found {
-            Found::File(f) => f,
+        let path = match found {
+            Found::File(path) => path,
             Found::Skipped(path, d) => {
                 results.push(invalid(path, d, &mut stderr));
                 continue;
             }
         };
-        read.extend(std::fs::canonicalize(&f).ok());
+        read.extend(std::fs::canonicalize(&path).ok());
+        let f = if path.as_os_str() == "-" {
+            "<stdin>".to_string()
+        } else {
+            display_path(&path)
+        };
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
         // itself (standard input, a write error) is the error.
         let mut not_blessed = None;
         if o.bless {
-            match bless::bless_file(&f, &settings) {
+            // NOTE: blessing writes through `io::write_atomically`, which
+            // takes a UTF-8 path; a name that is not UTF-8 is checked, not
+            // blessed.
+            let blessed = match path.to_str() {
+                Some(p) => bless::bless_file(p, &settings),
+                None => Err(Diagnostic::file(
+                    &f,
+                    "`--bless` cannot write a file whose name is not UTF-8; rename it to bless it",
+                )),
+            };
+            match blessed {
                 Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
                 Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
                 Err(d) => not_blessed = Some(d),
             }
         }
-        let loaded = analysis::load(&f, &settings).map(|l| {
-            read.extend(super::files_of(&l));
-            check_loaded(&l)
-        });
+        let loaded = crate::io::read_source_at(&path)
+            .and_then(|source| analysis::load_source(source, &settings))
+            .map(|l| {
+                read.extend(super::files_of(&l));
+                check_loaded(&l)
+            });
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
                 stderr.push_str(&format!("{f}: not blessed\n"));

@@ -40,7 +40,7 @@ impl Outcome {
 /// The files a loaded part file was read from: itself (unless standard
 /// input) and every file it includes.
 pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
-    let own = std::fs::canonicalize(&loaded.source.name).ok();
+    let own = std::fs::canonicalize(loaded.source.path()).ok();
     own.into_iter()
         .chain(loaded.model.included.iter().cloned())
         .collect()

@@ -186,11 +186,9 @@ impl Ctx<'_> {
                 .err(inc.span(), "`include` in a file read from standard input: its path has nothing to be relative to")
                 .help("give the file by its path"));
         }
-        let base = Path::new(&self.source.name)
-            .parent()
-            .unwrap_or(Path::new(""));
+        let base = self.source.path().parent().unwrap_or(Path::new(""));
         let shown = base.join(inc.get_ref());
-        let shown_name = shown.to_string_lossy().into_owned();
+        let shown_name = crate::diag::display_path(&shown);
         let unreadable = |e: std::io::Error| {
             self.err(
                 inc.span(),
@@ -263,7 +261,9 @@ impl Ctx<'_> {
                     d.included_from(format!("{}:{line}:{col}", self.source.name))
                 };
                 let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                let source = crate::io::source_of(&shown_name, bytes).map_err(included_here)?;
+                let source = crate::io::source_of(&shown_name, bytes)
+                    .map_err(included_here)?
+                    .read_from(shown.clone());
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();
