@@ -284,21 +284,19 @@ mod tests {
             let top = (next() % 617) as i32 - 308;
             let mut a = [[0.0f64; 3]; 3];
             for (i, j) in [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)] {
-                {
-                    let r = next();
-                    let x = match r % 8 {
-                        0 => 0.0,
-                        1 => f64::from_bits(r >> 44), // subnormal
-                        _ => {
-                            let m = (r >> 11) as f64 / (1u64 << 53) as f64;
-                            let sign = if r & 16 == 0 { 1.0 } else { -1.0 };
-                            let decades = ((r >> 5) % 40) as i32;
-                            sign * m * 10f64.powi(top - decades)
-                        }
-                    };
-                    a[i][j] = x;
-                    a[j][i] = x;
-                }
+                let r = next();
+                let x = match r % 8 {
+                    0 => 0.0,
+                    1 => f64::from_bits(r >> 44), // subnormal
+                    _ => {
+                        let m = (r >> 11) as f64 / (1u64 << 53) as f64;
+                        let sign = if r & 16 == 0 { 1.0 } else { -1.0 };
+                        let decades = ((r >> 5) % 40) as i32;
+                        sign * m * 10f64.powi(top - decades)
+                    }
+                };
+                a[i][j] = x;
+                a[j][i] = x;
             }
             // Near the top, entries whose eigenvalues fit (|λ| ≤ 3 max|a|).
             if case % 10 == 0 {
