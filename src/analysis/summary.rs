@@ -243,7 +243,10 @@ impl SummaryError {
                 return match model.parts.get(*cut) {
                     Some(p) => source
                         .error(p.span.clone(), message)
-                        .label("this cut-out")
+                        .label(match p.assembly.first() {
+                            None => "this cut-out".to_string(),
+                            Some(a) => format!("the sub-assembly `{a}` with the cut-out"),
+                        })
                         .help(CUT_OUT_HELP),
                     None => Diagnostic::file(&source.name, message).help(CUT_OUT_HELP),
                 };
@@ -631,6 +634,39 @@ mod tests {
         let d = blamed(&box_with_cut_outs(&[("a", 0.5, "0"), ("b", 0.6, "0")]));
         assert!(
             d.contains("of parts: the 2 cut-outs remove all of the material, `b` the most\n"),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_cut_out_in_a_sub_assembly_is_pointed_at_by_its_include() {
+        let dir = std::env::temp_dir().join(format!("massprop-cut-out-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("arm.toml"),
+            box_with_cut_outs(&[("hole", 0.001, "1e200")]),
+        )
+        .unwrap();
+        let text = "[[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [0, 0, 0]\n";
+        let top = dir.join("top.toml");
+        std::fs::write(&top, text).unwrap();
+        let source = Source::new(top.to_str().unwrap(), text);
+        let model = Model::parse(&source).unwrap();
+        let e = summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            Precision::Standard,
+        );
+        let d = e
+            .unwrap_err()
+            .diagnostic(&model, &model.analysis, &source)
+            .to_string();
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(d.contains(":1:1: error: the body is not physical"), "{d}");
+        assert!(d.contains("the cut-out `arm / hole` removes more"), "{d}");
+        assert!(
+            d.contains("^^^^^^^^ the sub-assembly `arm` with the cut-out\n"),
             "{d}"
         );
     }
