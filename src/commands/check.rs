@@ -15,8 +15,9 @@ use std::path::{Path, PathBuf};
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {
-    /// Part files, and directories searched for `*.toml`.
-    pub paths: Vec<String>,
+    /// Part files, and directories searched for `*.toml` (`-` for
+    /// standard input); any bytes, UTF-8 or not.
+    pub paths: Vec<PathBuf>,
     /// `-o FILE`.
     pub output: Option<String>,
     /// Write the computed values into the files' `[expect]` first.
@@ -41,7 +42,7 @@ enum Found {
 
 /// The part files named: files as given, directories searched recursively
 /// for `*.toml` in sorted order.
-fn collect(paths: &[String]) -> Vec<Found> {
+fn collect(paths: &[PathBuf]) -> Vec<Found> {
     fn walk(dir: &Path, out: &mut Vec<Found>) {
         let read = match std::fs::read_dir(dir) {
             Ok(read) => read,
@@ -81,11 +82,10 @@ fn collect(paths: &[String]) -> Vec<Found> {
     }
     let mut out = Vec::new();
     for p in paths {
-        let path = Path::new(p);
-        if p != "-" && path.is_dir() {
-            walk(path, &mut out);
+        if p.as_os_str() != "-" && p.is_dir() {
+            walk(p, &mut out);
         } else {
-            out.push(Found::File(PathBuf::from(p)));
+            out.push(Found::File(p.clone()));
         }
     }
     out

@@ -519,5 +519,30 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     for text in [&stdout, &stderr] {
         assert!(!text.contains(['\u{fffd}', '\u{1b}']), "{text}");
     }
+
+    // Named on the command line (clap refused such an argument), and `-o`
+    // through a link onto one of them is refused.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .arg("check")
+        .arg(named(b"ok-\xff.toml"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert_eq!(stdout.lines().next(), Some(format!("{ok}: ok").as_str()));
+    std::os::unix::fs::symlink(named(b"ok-\xff.toml"), dir.join("link.toml")).unwrap();
+    let link = dir.join("link.toml");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .arg("check")
+        .arg(named(b"ok-\xff.toml"))
+        .args(["-o", link.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        String::from_utf8(out.stderr)
+            .unwrap()
+            .contains("is the part file")
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
