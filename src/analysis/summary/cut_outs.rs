@@ -53,7 +53,7 @@ pub(super) fn leave_a_body(
             cut: worst,
         });
     }
-    let scaled = Scaled::of(model);
+    let scaled = std::cell::LazyCell::new(|| Scaled::of(model));
     let c = body.second_moment.map(|r| r.map(|x| x.f64()));
     // The composed second moment where it fits f64; else the same sum made
     // in scaled units, where it does (whether a matrix has a negative
@@ -102,50 +102,69 @@ pub(super) fn leave_a_body(
 /// The parts in units scaled so that no sum of their second moments
 /// overflows: masses by the largest |m|, lengths by the largest distance
 /// from the origin or radius of gyration. Only for deciding whether a body
-/// is physical and which cut-out is to blame, in f64.
-struct Scaled {
-    /// Each part's m (signed), centroid, and ∫ρρᵀ dm about it, scaled.
-    parts: Vec<(f64, Vector3<f64>, Matrix3<f64>)>,
+/// is physical and which cut-out is to blame, in f64; each part's figures
+/// are formed when asked for (no copy of a 2,000,000-part model).
+struct Scaled<'m> {
+    model: &'m Model,
+    /// The largest |m| and the length scale.
+    mass: f64,
+    length: f64,
     /// The centre of mass, scaled.
     com: Vector3<f64>,
 }
 
-impl Scaled {
-    fn of(model: &Model) -> Scaled {
-        let ms = (model.parts.iter()).fold(f64::MIN_POSITIVE, |a, p| a.max(p.mass::<f64>().abs()));
-        let raw = model.parts.iter().map(|p| {
-            let m = p.mass::<f64>() / ms;
-            let own = p.own_second_moment(m);
-            let c = Vector3::from(p.centroid().map(|x| x.f64()));
-            (m, c, Matrix3::from_fn(|i, j| own[i][j]))
-        });
-        let raw: Vec<(f64, Vector3<f64>, Matrix3<f64>)> = raw.collect();
-        // √(|tr|)/√|m|, not √(|tr|/|m|): the ratio alone can overflow.
-        let ls = raw.iter().fold(0.0f64, |a, (m, c, own)| {
+impl<'m> Scaled<'m> {
+    fn of(model: &'m Model) -> Scaled<'m> {
+        let parts = || model.parts.iter();
+        let mass = parts().fold(f64::MIN_POSITIVE, |a, p| a.max(p.mass::<f64>().abs()));
+        let mut s = Scaled {
+            model,
+            mass,
+            length: 1.0,
+            com: Vector3::zeros(),
+        };
+        // √|tr| / √|m|, not √(|tr| / |m|): the ratio alone can overflow.
+        let length = (0..model.parts.len()).fold(0.0f64, |a, i| {
+            let (m, c, own) = s.part(i);
             let gyration = own.trace().abs().sqrt() / m.abs().sqrt();
             a.max(c.amax())
                 .max(if gyration.is_finite() { gyration } else { 0.0 })
         });
-        let ls = if ls > 0.0 && ls.is_finite() { ls } else { 1.0 };
-        let parts: Vec<_> = raw
-            .into_iter()
-            .map(|(m, c, own)| (m, c / ls, own / ls / ls))
-            .collect();
-        let total: f64 = parts.iter().map(|p| p.0).sum();
-        let com = parts.iter().map(|p| p.1 * (p.0 / total)).sum();
-        Scaled { parts, com }
+        s.length = if length > 0.0 && length.is_finite() {
+            length
+        } else {
+            1.0
+        };
+        let total: f64 = parts().map(|p| p.mass::<f64>() / mass).sum();
+        s.com = (0..model.parts.len())
+            .map(|i| {
+                let (m, c, _) = s.part(i);
+                c * (m / total)
+            })
+            .sum();
+        s
+    }
+
+    /// Part `i`'s m (signed), centroid, and ∫ρρᵀ dm about it, scaled.
+    fn part(&self, i: usize) -> (f64, Vector3<f64>, Matrix3<f64>) {
+        let p = &self.model.parts[i];
+        let m = p.mass::<f64>() / self.mass;
+        let own = p.own_second_moment(m);
+        let c = Vector3::from(p.centroid().map(|x| x.f64())) / self.length;
+        let own = Matrix3::from_fn(|i, j| own[i][j] / self.length / self.length);
+        (m, c, own)
     }
 
     /// Part `i`'s second moment about the centre of mass.
     fn of_part(&self, i: usize) -> Matrix3<f64> {
-        let (m, c, own) = &self.parts[i];
+        let (m, c, own) = self.part(i);
         let d = c - self.com;
-        own + d * d.transpose() * *m
+        own + d * d.transpose() * m
     }
 
     /// The body's second moment about its centre of mass.
     fn total(&self) -> M3<f64> {
-        let t: Matrix3<f64> = (0..self.parts.len()).map(|i| self.of_part(i)).sum();
+        let t: Matrix3<f64> = (0..self.model.parts.len()).map(|i| self.of_part(i)).sum();
         std::array::from_fn(|i| std::array::from_fn(|j| t[(i, j)]))
     }
 
