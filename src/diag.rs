@@ -168,31 +168,33 @@ pub fn push_visible(out: &mut String, text: &str) {
     }));
 }
 
-/// A path as every output shows it (messages, tables, JSON): its text with
-/// control characters as their pictures (`push_visible`), and each byte
-/// that is not UTF-8 as `\xNN` (two lowercase hex digits), so a file name
-/// of any bytes can be told apart from another and is one line of
-/// printable text. The one escaping rule for paths.
+/// A path as text, for every output (messages, tables, JSON): the one rule
+/// for paths that are not UTF-8. Each byte that is not UTF-8 becomes `\xNN`
+/// (two lowercase hex digits), so that a file name of any bytes can be told
+/// apart from another; the rest is the path's own text, a UTF-8 path
+/// unchanged (so the name still opens the file). Control characters are
+/// then shown as text from input always is: as their pictures by `visible`
+/// on a terminal, as JSON escapes in JSON.
 ///
 /// NOTE: a backslash is shown as itself, so a file literally named `\xff`
 /// looks like one named by the byte 0xff; such names are rare, and
 /// doubling every backslash would garble the names people do use.
 pub fn display_path(path: &Path) -> String {
-    let mut out = String::new();
     #[cfg(unix)]
     {
         use std::fmt::Write;
         use std::os::unix::ffi::OsStrExt;
+        let mut out = String::new();
         for chunk in path.as_os_str().as_bytes().utf8_chunks() {
-            push_visible(&mut out, chunk.valid());
+            out.push_str(chunk.valid());
             for b in chunk.invalid() {
                 let _ = write!(out, "\\x{b:02x}");
             }
         }
+        out
     }
     #[cfg(not(unix))]
-    push_visible(&mut out, &path.to_string_lossy());
-    out
+    path.to_string_lossy().into_owned()
 }
 
 /// The largest char boundary at or before `i` (clamped to the text): toml
@@ -459,11 +461,16 @@ mod tests {
 
     #[cfg(unix)]
     #[test]
-    fn a_path_shows_bytes_that_are_not_utf8_as_hex_and_controls_as_pictures() {
+    fn a_path_shows_bytes_that_are_not_utf8_as_hex() {
         use std::ffi::OsStr;
         use std::os::unix::ffi::OsStrExt;
         let path = Path::new(OsStr::from_bytes(b"d\xe9/\xff\xfeb\x1b\xc3\xa9.toml"));
-        assert_eq!(display_path(path), "d\\xe9/\\xff\\xfeb\u{241b}\u{e9}.toml");
+        // The escape character is text, shown by `visible` where printed.
+        assert_eq!(display_path(path), "d\\xe9/\\xff\\xfeb\u{1b}\u{e9}.toml");
+        assert_eq!(
+            visible(&display_path(path)),
+            "d\\xe9/\\xff\\xfeb\u{241b}\u{e9}.toml"
+        );
         assert_eq!(display_path(Path::new("plain/a b.toml")), "plain/a b.toml");
     }
 

@@ -9,7 +9,7 @@ use super::{Outcome, bless};
 use crate::analysis::check::{FileResult, Status, check_loaded};
 use crate::analysis::{self, Settings};
 use crate::compose::Precision;
-use crate::diag::{Diagnostic, display_path};
+use crate::diag::{Diagnostic, display_path, visible};
 use crate::render::{self, Format};
 use std::path::{Path, PathBuf};
 
@@ -147,8 +147,8 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
                 )),
             };
             match blessed {
-                Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
-                Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
+                Ok(true) => stderr.push_str(&format!("{}: blessed\n", visible(&f))),
+                Ok(false) => stderr.push_str(&format!("{}: unchanged\n", visible(&f))),
                 Err(d) => not_blessed = Some(d),
             }
         }
@@ -160,11 +160,14 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             });
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
-                stderr.push_str(&format!("{f}: not blessed\n"));
+                stderr.push_str(&format!("{}: not blessed\n", visible(&f)));
                 Err(d)
             }
             (Err(d), Some(_)) => {
-                stderr.push_str(&format!("{f}: not blessed (invalid; left untouched)\n"));
+                stderr.push_str(&format!(
+                    "{}: not blessed (invalid; left untouched)\n",
+                    visible(&f)
+                ));
                 Err(d)
             }
             (checked, None) => checked,

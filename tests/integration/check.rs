@@ -519,6 +519,17 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     for text in [&stdout, &stderr] {
         assert!(!text.contains(['\u{fffd}', '\u{1b}']), "{text}");
     }
+    // In JSON the escape character is data, written as a JSON escape.
+    let out = massprop(&["check", "--format", "json", dir.to_str().unwrap()]);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    let invalid: Vec<&str> = json["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["status"] == "invalid")
+        .filter_map(|f| f["path"].as_str())
+        .collect();
+    assert_eq!(invalid, [shown("broken-\\xfc\u{1b}.toml").as_str()]);
 
     // Named on the command line (clap refused such an argument), and `-o`
     // through a link onto one of them is refused.
