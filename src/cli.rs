@@ -55,7 +55,7 @@ pub struct MaterialsArgs {
 pub struct CheckArgs {
     /// Part files, and directories searched recursively for `*.toml`.
     #[arg(value_name = "PATH", required = true)]
-    pub paths: Vec<String>,
+    pub paths: Vec<std::path::PathBuf>,
 
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run

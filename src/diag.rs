@@ -5,12 +5,17 @@
 
 use std::fmt;
 use std::ops::Range;
+use std::path::{Path, PathBuf};
 use unicode_width::{UnicodeWidthChar, UnicodeWidthStr};
 
 /// A part file's text and the name it is reported under (`<stdin>` for `-`).
 #[derive(Debug, Clone)]
 pub struct Source {
+    /// The name messages show: the path as `display_path` writes it.
     pub name: String,
+    /// The file the text was read from, when the name alone cannot be
+    /// opened (a path that is not UTF-8 is shown escaped); see `path`.
+    pub file: Option<PathBuf>,
     /// The text without a leading byte-order mark, so that columns count
     /// what an editor shows.
     pub text: String,
@@ -27,9 +32,23 @@ impl Source {
         }
         Source {
             name: name.into(),
+            file: None,
             text,
             bom,
         }
+    }
+
+    /// The same source, read from `file` (opened, and includes resolved
+    /// against, by this path; shown by `name`).
+    pub fn read_from(mut self, file: PathBuf) -> Source {
+        self.file = Some(file);
+        self
+    }
+
+    /// The path of the file the text came from, for the file system:
+    /// `file` if it was read from one, else the name itself.
+    pub fn path(&self) -> &Path {
+        self.file.as_deref().unwrap_or(Path::new(&self.name))
     }
 
     /// 1-based line and column (in characters) of a byte offset.
@@ -147,6 +166,35 @@ pub fn push_visible(out: &mut String, text: &str) {
         c if c.is_control() => '\u{fffd}',
         c => c,
     }));
+}
+
+/// A path as text, for every output (messages, tables, JSON): the one rule
+/// for paths that are not UTF-8. Each byte that is not UTF-8 becomes `\xNN`
+/// (two lowercase hex digits), so that a file name of any bytes can be told
+/// apart from another; the rest is the path's own text, a UTF-8 path
+/// unchanged (so the name still opens the file). Control characters are
+/// then shown as text from input always is: as their pictures by `visible`
+/// on a terminal, as JSON escapes in JSON.
+///
+/// NOTE: a backslash is shown as itself, so a file literally named `\xff`
+/// looks like one named by the byte 0xff; such names are rare, and
+/// doubling every backslash would garble the names people do use.
+pub fn display_path(path: &Path) -> String {
+    #[cfg(unix)]
+    {
+        use std::fmt::Write;
+        use std::os::unix::ffi::OsStrExt;
+        let mut out = String::new();
+        for chunk in path.as_os_str().as_bytes().utf8_chunks() {
+            out.push_str(chunk.valid());
+            for b in chunk.invalid() {
+                let _ = write!(out, "\\x{b:02x}");
+            }
+        }
+        out
+    }
+    #[cfg(not(unix))]
+    path.to_string_lossy().into_owned()
 }
 
 /// The largest char boundary at or before `i` (clamped to the text): toml
@@ -269,7 +317,7 @@ impl fmt::Display for Diagnostic {
         let d = &self.0;
         let message = visible_message(&d.message);
         match &d.location {
-            Some(loc) => writeln!(f, "{loc}: error: {message}")?,
+            Some(loc) => writeln!(f, "{}: error: {message}", visible(loc))?,
             None => writeln!(f, "error: {message}")?,
         }
         // `= help:` under the gutter's bar, as rustc aligns it.
@@ -409,6 +457,37 @@ mod tests {
         assert!(d.starts_with("f.toml:1:9:"), "{d}");
         assert_eq!(floor_char_boundary(text, inside), inside - 1);
         assert_eq!(floor_char_boundary(text, 1000), text.len());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_path_shows_bytes_that_are_not_utf8_as_hex() {
+        use std::ffi::OsStr;
+        use std::os::unix::ffi::OsStrExt;
+        let path = Path::new(OsStr::from_bytes(b"d\xe9/\xff\xfeb\x1b\xc3\xa9.toml"));
+        // The escape character is text, shown by `visible` where printed.
+        assert_eq!(display_path(path), "d\\xe9/\\xff\\xfeb\u{1b}\u{e9}.toml");
+        assert_eq!(
+            visible(&display_path(path)),
+            "d\\xe9/\\xff\\xfeb\u{241b}\u{e9}.toml"
+        );
+        assert_eq!(display_path(Path::new("plain/a b.toml")), "plain/a b.toml");
+    }
+
+    #[test]
+    fn a_location_shows_control_characters_as_pictures() {
+        let d = Diagnostic::file("a\u{1b}[2J.toml", "bad").to_string();
+        assert_eq!(d, "a\u{241b}[2J.toml: error: bad\n");
+    }
+
+    #[test]
+    fn a_source_read_from_a_file_opens_that_file_and_shows_its_name() {
+        let s = Source::new("shown.toml", "").read_from(PathBuf::from("real.toml"));
+        assert_eq!(
+            (s.name.as_str(), s.path()),
+            ("shown.toml", Path::new("real.toml"))
+        );
+        assert_eq!(Source::new("a.toml", "").path(), Path::new("a.toml"));
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! Reading part files and writing outputs: the only module that touches
 //! the file system for them (`include` reads through `source_of` too).
 
-use crate::diag::{Diagnostic, Source};
+use crate::diag::{Diagnostic, Source, display_path};
 use std::io::{Read, Seek, Write};
 use std::path::{Path, PathBuf};
 
@@ -75,15 +75,22 @@ pub const MAX_FILE_BYTES: u64 = 512 << 20;
 /// Read a part file, or standard input for `-`, refusing directories and
 /// anything over `MAX_FILE_BYTES`.
 pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
-    if path == "-" {
+    read_source_at(Path::new(path))
+}
+
+/// `read_source` of any path, UTF-8 or not (`check DIR` finds such
+/// names): the source is named by `display_path` and opened by `path`.
+pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
+    if path.as_os_str() == "-" {
         let name = "<stdin>";
         return source_of(name, read_capped(&mut std::io::stdin(), name, true)?);
     }
-    let meta = std::fs::metadata(path).map_err(|e| cannot_read(path, false, e))?;
-    check_size(path, &meta)?;
+    let name = display_path(path);
+    let meta = std::fs::metadata(path).map_err(|e| cannot_read(&name, false, e))?;
+    check_size(&name, &meta)?;
     // Not only regular files: `massprop report <(generate)` is a pipe.
-    let mut file = std::fs::File::open(path).map_err(|e| cannot_read(path, false, e))?;
-    source_of(path, read_capped(&mut file, path, false)?)
+    let mut file = std::fs::File::open(path).map_err(|e| cannot_read(&name, false, e))?;
+    Ok(source_of(&name, read_capped(&mut file, &name, false)?)?.read_from(path.to_path_buf()))
 }
 
 fn cannot_read(name: &str, stdin: bool, e: std::io::Error) -> Diagnostic {
@@ -102,16 +109,17 @@ fn too_big(name: &str, stdin: bool) -> Diagnostic {
     )
 }
 
-/// Refuse a directory, and a file over the limit before reading it.
-fn check_size(path: &str, meta: &std::fs::Metadata) -> Result<(), Diagnostic> {
+/// Refuse a directory, and a file over the limit before reading it
+/// (`name` as shown).
+fn check_size(name: &str, meta: &std::fs::Metadata) -> Result<(), Diagnostic> {
     if meta.is_dir() {
         return Err(Diagnostic::file(
-            path,
+            name,
             "cannot read file: it is a directory (`check` searches directories)",
         ));
     }
     if meta.len() > MAX_FILE_BYTES {
-        return Err(too_big(path, false));
+        return Err(too_big(name, false));
     }
     Ok(())
 }

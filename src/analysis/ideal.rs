@@ -166,8 +166,15 @@ pub fn idealisation(
         return Ok(None);
     }
     let zero = negligible(precision);
-    let principal =
-        |c: &M3<DD>| compose::principal(c, precision).ok_or(SummaryError::NoConvergence);
+    // `None` only for a principal moment beyond f64 (finite input).
+    let principal = |c: &M3<DD>| {
+        compose::principal(c, precision).ok_or(SummaryError::NotFinite {
+            what: "principal moments of the solid body",
+            blame: crate::analysis::summary::Blame::Parts(
+                crate::analysis::summary::Contribution::SecondMoment,
+            ),
+        })
+    };
     let mut all = body.second_moment;
     let mut parts = Vec::with_capacity(model.real_sizes.len());
     for r in &model.real_sizes {

@@ -2,6 +2,8 @@
 //! renders: `render::report` serializes it as the documented JSON contract
 //! and prints it for people in the file's units.
 
+mod cut_outs;
+
 use super::Products;
 use super::ideal;
 use crate::compose::{self, Precision, Principal};
@@ -10,7 +12,6 @@ use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
 use crate::part::SiFactors;
-use crate::tolerance::VALIDITY_RTOL;
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -183,13 +184,12 @@ pub struct Summary {
 pub enum SummaryError {
     /// A result overflowed f64: every part is representable, but a sum,
     /// the conversion to SI, or a product with `about`, ω or α is not.
-    NotFinite {
-        what: &'static str,
-        blame: Blame,
-    },
-    NoConvergence,
-    /// Cut-outs left a body that is not physical; the message names them.
-    NotPhysical(String),
+    NotFinite { what: &'static str, blame: Blame },
+    /// Cut-outs left a body that is not physical: no mass, or a second
+    /// moment negative along some direction. `cut` is the index in
+    /// `model.parts` of the cut-out that removes the most, which the
+    /// message names.
+    NotPhysical { message: String, cut: usize },
 }
 
 /// What a result that overflows is blamed on.
@@ -211,8 +211,7 @@ impl std::fmt::Display for SummaryError {
             SummaryError::NotFinite { what, .. } => {
                 write!(f, "the {what} overflows the range of f64")
             }
-            SummaryError::NoConvergence => write!(f, "the principal-axis solver did not converge"),
-            SummaryError::NotPhysical(why) => f.write_str(why),
+            SummaryError::NotPhysical { message, .. } => f.write_str(message),
         }
     }
 }
@@ -229,6 +228,7 @@ pub enum Contribution {
 }
 
 const WRONG_UNITS: &str = "are sizes, masses or offsets in the wrong units?";
+const CUT_OUT_HELP: &str = "a cut-out removes material the body has: it lies inside the parts it is cut from, with at most their mass; are its size, place and units right?";
 
 impl SummaryError {
     /// The error as a diagnostic at its cause in `source`: the `[[part]]`
@@ -237,8 +237,20 @@ impl SummaryError {
     /// command line gave it: `analysis` is what `summarize` was given).
     pub fn diagnostic(&self, model: &Model, analysis: &Analysis, source: &Source) -> Diagnostic {
         let message = self.to_string();
-        let SummaryError::NotFinite { blame, .. } = *self else {
-            return Diagnostic::file(&source.name, message);
+        let blame = match self {
+            SummaryError::NotFinite { blame, .. } => *blame,
+            SummaryError::NotPhysical { cut, .. } => {
+                return match model.parts.get(*cut) {
+                    Some(p) => source
+                        .error(p.span.clone(), message)
+                        .label(match p.assembly.first() {
+                            None => "this cut-out".to_string(),
+                            Some(a) => format!("the sub-assembly `{a}` with the cut-out"),
+                        })
+                        .help(CUT_OUT_HELP),
+                    None => Diagnostic::file(&source.name, message).help(CUT_OUT_HELP),
+                };
+            }
         };
         let at =
             |span: &Option<std::ops::Range<usize>>, flag: &str, label: &str, help: &str| match span
@@ -344,49 +356,6 @@ fn finite(v: &[f64], what: &'static str, blame: Blame) -> Result<(), SummaryErro
     }
 }
 
-/// With cut-outs (`remove = true`) the composed body can be impossible: no
-/// mass left, or a second moment that is negative along some direction (a
-/// cut-out reaching beyond the material it is cut from). Say so, naming the
-/// cut-outs, rather than report it.
-fn cut_outs_leave_a_body(
-    model: &Model,
-    body: &crate::mass::Body,
-    mass: f64,
-) -> Result<(), SummaryError> {
-    let cut: Vec<String> = model
-        .parts
-        .iter()
-        .filter(|p| p.spec.removed)
-        .map(|p| format!("`{}`", p.name))
-        .collect();
-    if cut.is_empty() {
-        return Ok(());
-    }
-    let (them, verb) = match cut.len() {
-        1 => (format!("the cut-out {}", cut[0]), "removes"),
-        _ => (format!("the cut-outs {}", cut.join(", ")), "remove"),
-    };
-    // Relative to the masses that cancel: what is left of equal and
-    // opposite masses is rounding, not a body.
-    let factors = SiFactors::of(model.units);
-    let gross: f64 = model.parts.iter().map(|p| p.mass_si(&factors).abs()).sum();
-    if !(mass > VALIDITY_RTOL * gross) {
-        return Err(SummaryError::NotPhysical(format!(
-            "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {them} {verb} all of the material"
-        )));
-    }
-    let c = body.second_moment.map(|r| r.map(|x| x.f64()));
-    let (lam, _) = crate::eigen::jacobi(c).ok_or(SummaryError::NoConvergence)?;
-    let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
-    let low = lam.iter().fold(f64::INFINITY, |a, &x| a.min(x));
-    if low < -VALIDITY_RTOL * top {
-        return Err(SummaryError::NotPhysical(format!(
-            "the body is not physical: its second moment is negative along one direction ({low:.3e}, the largest being {top:.3e}, in file units); {them} {verb} more material along it than the body has"
-        )));
-    }
-    Ok(())
-}
-
 /// Compose the model's parts and derive everything reported. `analysis`
 /// (the file's, with command-line overrides applied; file units) gives the
 /// reference point and ω, α.
@@ -410,7 +379,7 @@ pub fn summarize(
     let mass_dd = body.mass * f_mass;
     let mass = mass_dd.f64();
     finite(&[mass], "total mass", Blame::Parts(Contribution::Mass))?;
-    cut_outs_leave_a_body(model, &body, mass)?;
+    cut_outs::leave_a_body(model, &body, mass)?;
     let com = body.center_of_mass.map(|c| (c * f_length).f64());
     finite(
         &com,
@@ -438,9 +407,17 @@ pub fn summarize(
         "inertia about the reference point",
         Blame::About,
     )?;
+    // The second moments are finite here, so `None` means a principal
+    // moment beyond f64 (the solver converges on finite input).
     let p_com =
-        compose::principal(&body.second_moment, precision).ok_or(SummaryError::NoConvergence)?;
-    let p_ref = compose::principal(&c_ref, precision).ok_or(SummaryError::NoConvergence)?;
+        compose::principal(&body.second_moment, precision).ok_or(SummaryError::NotFinite {
+            what: "principal moments about the centre of mass",
+            blame: Blame::Parts(Contribution::SecondMoment),
+        })?;
+    let p_ref = compose::principal(&c_ref, precision).ok_or(SummaryError::NotFinite {
+        what: "principal moments about the reference point",
+        blame: Blame::About,
+    })?;
     let moments = |p: &Principal| p.moments.map(|m| (m * f_inertia).f64());
     let (m_com, m_ref) = (moments(&p_com), moments(&p_ref));
     finite(
@@ -609,5 +586,101 @@ mod tests {
             "{boxed}[analysis]\nomega = [0, 0, 1]\nalpha = [1e300, 0, 0]\n"
         ));
         assert!(d.starts_with("f.toml:8:9: error: the Euler moment"), "{d}");
+    }
+
+    /// A 1 kg box, 1 m a side, at the origin, and cut-outs (name, mass,
+    /// x of the centre) of 0.1 m boxes.
+    fn box_with_cut_outs(cuts: &[(&str, f64, &str)]) -> String {
+        let mut text =
+            "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n"
+                .to_string();
+        for (name, mass, x) in cuts {
+            text += &format!(
+                "[[part]]\nname = \"{name}\"\nshape = \"box\"\nmass = {mass}\nsize = [0.1, 0.1, 0.1]\ncenter = [{x}, 0, 0]\nremove = true\n"
+            );
+        }
+        text
+    }
+
+    /// The body is not physical however far the cut-out is: also where its
+    /// second moment overflows f64 (which ended in "the principal-axis
+    /// solver did not converge").
+    #[test]
+    fn a_far_cut_out_is_named_as_leaving_a_body_that_is_not_physical() {
+        for x in ["30", "1e8", "1e160", "1e300"] {
+            let d = blamed(&box_with_cut_outs(&[("far", 0.001, x)]));
+            assert!(
+                d.starts_with("f.toml:6:1: error: the body is not physical: its second moment along (1.000, 0.000, 0.000) is negative; the cut-out `far` removes more material along it than the body has\n"),
+                "{x}: {d}"
+            );
+            assert!(d.contains("^^^^^^^^ this cut-out"), "{d}");
+        }
+    }
+
+    #[test]
+    fn of_several_cut_outs_the_one_that_removes_the_most_is_named() {
+        // `in` lies inside the box; `out` beyond it; `far` farther out but
+        // so light that it removes less along x than `out`.
+        let text =
+            box_with_cut_outs(&[("in", 0.01, "0.2"), ("out", 0.05, "2"), ("far", 1e-5, "20")]);
+        let d = blamed(&text);
+        assert!(
+            d.contains(
+                "the 3 cut-outs remove more material along it than the body has, `out` the most\n"
+            ),
+            "{d}"
+        );
+        assert!(d.starts_with("f.toml:13:1:"), "{d}");
+        let d = blamed(&box_with_cut_outs(&[("a", 0.5, "0"), ("b", 0.6, "0")]));
+        assert!(
+            d.contains("of parts: the 2 cut-outs remove all of the material, `b` the most\n"),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_cut_out_in_a_sub_assembly_is_pointed_at_by_its_include() {
+        let dir = std::env::temp_dir().join(format!("massprop-cut-out-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("arm.toml"),
+            box_with_cut_outs(&[("hole", 0.001, "1e200")]),
+        )
+        .unwrap();
+        let text = "[[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [0, 0, 0]\n";
+        let top = dir.join("top.toml");
+        std::fs::write(&top, text).unwrap();
+        let source = Source::new(top.to_str().unwrap(), text);
+        let model = Model::parse(&source).unwrap();
+        let e = summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            Precision::Standard,
+        );
+        let d = e
+            .unwrap_err()
+            .diagnostic(&model, &model.analysis, &source)
+            .to_string();
+        std::fs::remove_dir_all(&dir).ok();
+        assert!(d.contains(":1:1: error: the body is not physical"), "{d}");
+        assert!(d.contains("the cut-out `arm / hole` removes more"), "{d}");
+        assert!(
+            d.contains("^^^^^^^^ the sub-assembly `arm` with the cut-out\n"),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn cut_outs_inside_the_body_leave_a_body() {
+        let text = box_with_cut_outs(&[("a", 0.01, "0.2"), ("b", 0.01, "-0.3")]);
+        let model = Model::parse(&Source::new("f.toml", text.as_str())).unwrap();
+        let s = summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            Precision::Standard,
+        );
+        assert!(s.is_ok(), "{s:?}");
     }
 }

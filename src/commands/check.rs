@@ -9,14 +9,15 @@ use super::{Outcome, bless};
 use crate::analysis::check::{FileResult, Status, check_loaded};
 use crate::analysis::{self, Settings};
 use crate::compose::Precision;
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, display_path, visible};
 use crate::render::{self, Format};
 use std::path::{Path, PathBuf};
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {
-    /// Part files, and directories searched for `*.toml`.
-    pub paths: Vec<String>,
+    /// Part files, and directories searched for `*.toml` (`-` for
+    /// standard input); any bytes, UTF-8 or not.
+    pub paths: Vec<PathBuf>,
     /// `-o FILE`.
     pub output: Option<String>,
     /// Write the computed values into the files' `[expect]` first.
@@ -27,10 +28,11 @@ pub struct Options {
     pub include_roots: Vec<PathBuf>,
 }
 
-/// What a search for part files found.
+/// What a search for part files found. Paths are kept as the file system
+/// gave them (a name need not be UTF-8) and shown by `display_path`.
 enum Found {
     /// A part file to check (as named, or found in a directory).
-    File(String),
+    File(PathBuf),
     /// Something that is not checked, with why: a FIFO, socket or device
     /// named `*.toml` (never opened: reading one can block forever), or a
     /// directory that cannot be read. It counts as invalid; the search goes
@@ -40,12 +42,12 @@ enum Found {
 
 /// The part files named: files as given, directories searched recursively
 /// for `*.toml` in sorted order.
-fn collect(paths: &[String]) -> Vec<Found> {
+fn collect(paths: &[PathBuf]) -> Vec<Found> {
     fn walk(dir: &Path, out: &mut Vec<Found>) {
         let read = match std::fs::read_dir(dir) {
             Ok(read) => read,
             Err(e) => {
-                let name = dir.display().to_string();
+                let name = display_path(dir);
                 let d = Diagnostic::file(&name, format!("cannot read directory: {e}"));
                 return out.push(Found::Skipped(name, d));
             }
@@ -64,10 +66,10 @@ fn collect(paths: &[String]) -> Vec<Found> {
             } else if p.extension().is_some_and(|e| e == "toml") {
                 // The target's type, without opening it.
                 match std::fs::metadata(&p) {
-                    Ok(m) if m.is_file() => out.push(Found::File(p.display().to_string())),
+                    Ok(m) if m.is_file() => out.push(Found::File(p)),
                     Ok(m) if m.is_dir() => {}
                     _ => {
-                        let name = p.display().to_string();
+                        let name = display_path(&p);
                         let d = Diagnostic::file(
                             &name,
                             "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
@@ -80,9 +82,8 @@ fn collect(paths: &[String]) -> Vec<Found> {
     }
     let mut out = Vec::new();
     for p in paths {
-        let path = Path::new(p);
-        if p != "-" && path.is_dir() {
-            walk(path, &mut out);
+        if p.as_os_str() != "-" && p.is_dir() {
+            walk(p, &mut out);
         } else {
             out.push(Found::File(p.clone()));
         }
@@ -117,36 +118,56 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     // Every file found, valid or not, and every file those include.
     let mut read: Vec<PathBuf> = Vec::new();
     for found in found {
-        let f = match found {
-            Found::File(f) => f,
+        let path = match found {
+            Found::File(path) => path,
             Found::Skipped(path, d) => {
                 results.push(invalid(path, d, &mut stderr));
                 continue;
             }
         };
-        read.extend(std::fs::canonicalize(&f).ok());
+        read.extend(std::fs::canonicalize(&path).ok());
+        let f = if path.as_os_str() == "-" {
+            "<stdin>".to_string()
+        } else {
+            display_path(&path)
+        };
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
         // itself (standard input, a write error) is the error.
         let mut not_blessed = None;
         if o.bless {
-            match bless::bless_file(&f, &settings) {
-                Ok(true) => stderr.push_str(&format!("{f}: blessed\n")),
-                Ok(false) => stderr.push_str(&format!("{f}: unchanged\n")),
+            // NOTE: blessing writes through `io::write_atomically`, which
+            // takes a UTF-8 path; a name that is not UTF-8 is checked, not
+            // blessed.
+            let blessed = match path.to_str() {
+                Some(p) => bless::bless_file(p, &settings),
+                None => Err(Diagnostic::file(
+                    &f,
+                    "`--bless` cannot write a file whose name is not UTF-8; rename it to bless it",
+                )),
+            };
+            match blessed {
+                Ok(true) => stderr.push_str(&format!("{}: blessed\n", visible(&f))),
+                Ok(false) => stderr.push_str(&format!("{}: unchanged\n", visible(&f))),
                 Err(d) => not_blessed = Some(d),
             }
         }
-        let loaded = analysis::load(&f, &settings).map(|l| {
-            read.extend(super::files_of(&l));
-            check_loaded(&l)
-        });
+        let loaded = crate::io::read_source_at(&path)
+            .and_then(|source| analysis::load_source(source, &settings))
+            .map(|l| {
+                read.extend(super::files_of(&l));
+                check_loaded(&l)
+            });
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
-                stderr.push_str(&format!("{f}: not blessed\n"));
+                stderr.push_str(&format!("{}: not blessed\n", visible(&f)));
                 Err(d)
             }
             (Err(d), Some(_)) => {
-                stderr.push_str(&format!("{f}: not blessed (invalid; left untouched)\n"));
+                stderr.push_str(&format!(
+                    "{}: not blessed (invalid; left untouched)\n",
+                    visible(&f)
+                ));
                 Err(d)
             }
             (checked, None) => checked,

@@ -40,7 +40,7 @@ impl Outcome {
 /// The files a loaded part file was read from: itself (unless standard
 /// input) and every file it includes.
 pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
-    let own = std::fs::canonicalize(&loaded.source.name).ok();
+    let own = std::fs::canonicalize(loaded.source.path()).ok();
     own.into_iter()
         .chain(loaded.model.included.iter().cloned())
         .collect()
@@ -72,7 +72,9 @@ impl Request {
     fn inputs(&self) -> Vec<&str> {
         match self {
             Request::Report(o) => vec![&o.file],
-            Request::Check(o) => o.paths.iter().map(String::as_str).collect(),
+            // A name that is not UTF-8 is left to the check after the run,
+            // against every file read.
+            Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
             Request::Materials(_) => Vec::new(),
         }

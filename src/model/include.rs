@@ -176,11 +176,9 @@ impl Ctx<'_> {
                 .err(inc.span(), "`include` in a file read from standard input: its path has nothing to be relative to")
                 .help("give the file by its path"));
         }
-        let base = Path::new(&self.source.name)
-            .parent()
-            .unwrap_or(Path::new(""));
+        let base = self.source.path().parent().unwrap_or(Path::new(""));
         let shown = base.join(inc.get_ref());
-        let shown_name = shown.to_string_lossy().into_owned();
+        let shown_name = crate::diag::display_path(&shown);
         let unreadable = |e: std::io::Error| {
             self.err(
                 inc.span(),
@@ -305,7 +303,9 @@ impl Ctx<'_> {
             return None;
         }
         let bytes = std::fs::read(&t.shown).ok()?;
-        let source = crate::io::source_of(&t.shown_name, bytes).ok()?;
+        let source = crate::io::source_of(&t.shown_name, bytes)
+            .ok()?
+            .read_from(t.shown.clone());
         let raw = Model::raw(&source).ok()?;
         let child = Ctx {
             source: &source,
@@ -420,7 +420,9 @@ impl Ctx<'_> {
                         not_a_part_file()
                     }
                 };
-                let source = crate::io::source_of(&shown_name, bytes).map_err(quoted)?;
+                let source = crate::io::source_of(&shown_name, bytes)
+                    .map_err(quoted)?
+                    .read_from(shown.clone());
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();

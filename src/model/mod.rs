@@ -82,7 +82,7 @@ impl Model {
         include_roots: &[std::path::PathBuf],
     ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
-        if let Ok(p) = std::fs::canonicalize(&source.name) {
+        if let Ok(p) = std::fs::canonicalize(source.path()) {
             files
                 .roots
                 .extend(p.parent().map(std::path::Path::to_path_buf));

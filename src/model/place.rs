@@ -264,8 +264,10 @@ impl Ctx<'_> {
         let c: crate::numeric::M3<f64> = std::array::from_fn(|i| {
             std::array::from_fn(|j| if i == j { half - t[i][i] } else { -t[i][j] })
         });
+        // The entries are finite, so `None` means an eigenvalue beyond f64
+        // (|λ| can reach 4.5 times the largest entry).
         let (lam, _) = crate::eigen::jacobi(c)
-            .ok_or_else(|| self.err(raw.span(), "`inertia`: the eigen solver did not converge"))?;
+            .ok_or_else(|| self.err(raw.span(), "`inertia` overflows the range of f64"))?;
         let top = lam.iter().fold(0.0f64, |a, x| a.max(x.abs()));
         if lam.iter().any(|&l| l < -VALIDITY_RTOL * top) {
             let mut moments = [lam[1] + lam[2], lam[0] + lam[2], lam[0] + lam[1]];

@@ -16,6 +16,50 @@ pub type Vector = Spanned<Vec<Spanned<Quantity>>>;
 /// An array of plain numbers (rotation parameters carry no unit).
 pub type Floats = Spanned<Vec<Spanned<f64>>>;
 
+/// A table and nothing else. serde's derived struct also takes an array of
+/// its fields in order: `rotation = [1]` was read as a quaternion of one
+/// number ("expected an array"), and `foam = [1]` in `[materials]` was
+/// accepted as a density. So each table type derives with
+/// `remote = "Self"` (the derived code as an inherent function) and is
+/// read through this impl: a table goes to the derived code, anything else
+/// is the wrong type, expected as `$expecting` says.
+macro_rules! table_only {
+    ($t:ident, $expecting:literal) => {
+        impl<'de> Deserialize<'de> for $t {
+            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+                struct V;
+                impl<'de> Visitor<'de> for V {
+                    type Value = $t;
+                    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                        f.write_str($expecting)
+                    }
+                    fn visit_map<A: de::MapAccess<'de>>(self, map: A) -> Result<$t, A::Error> {
+                        $t::deserialize(de::value::MapAccessDeserializer::new(map))
+                    }
+                }
+                d.deserialize_any(V)
+            }
+        }
+    };
+}
+
+table_only!(RawMaterial, "a table such as { density = \"30 kg/m^3\" }");
+table_only!(
+    RawUnits,
+    "a table such as { length = \"mm\", mass = \"kg\" }"
+);
+table_only!(RawPart, "a part table with `shape`");
+table_only!(
+    RawRotation,
+    "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
+);
+table_only!(RawAnalysis, "a table with `about`, `omega` or `alpha`");
+table_only!(RawExpect, "a table of expected quantities");
+table_only!(
+    RawExpectation,
+    "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
+);
+
 #[derive(Deserialize, Debug)]
 #[serde(deny_unknown_fields, expecting = "a part file")]
 pub struct RawFile {
@@ -29,26 +73,20 @@ pub struct RawFile {
 }
 
 #[derive(Deserialize, Debug)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a table such as { density = \"30 kg/m^3\" }"
-)]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawMaterial {
     pub density: Spanned<Quantity>,
 }
 
 #[derive(Deserialize, Debug, Default)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a table such as { length = \"mm\", mass = \"kg\" }"
-)]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawUnits {
     pub length: Option<Spanned<String>>,
     pub mass: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize, Debug, Default)]
-#[serde(deny_unknown_fields, expecting = "a part table with `shape`")]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawPart {
     pub name: Option<Spanned<String>>,
     /// The primitive; absent only in a part that `include`s a file.
@@ -91,10 +129,7 @@ pub struct RawPart {
 }
 
 #[derive(Deserialize, Debug, Default)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
-)]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawRotation {
     pub quaternion: Option<Floats>,
     pub axis: Option<Floats>,
@@ -105,10 +140,7 @@ pub struct RawRotation {
 }
 
 #[derive(Deserialize, Debug, Default)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "a table with `about`, `omega` or `alpha`"
-)]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawAnalysis {
     pub about: Option<Vector>,
     pub omega: Option<Vector>,
@@ -185,7 +217,7 @@ impl<'de> Deserialize<'de> for Angles {
 
 /// `[expect]`: the quantities a check compares, each optional.
 #[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields, expecting = "a table of expected quantities")]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawExpect {
     pub mass: Option<Spanned<RawExpectation>>,
     pub center_of_mass: Option<Spanned<RawExpectation>>,
@@ -213,10 +245,7 @@ pub struct RawExpect {
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
 #[derive(Deserialize, Debug, Default)]
-#[serde(
-    deny_unknown_fields,
-    expecting = "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
-)]
+#[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawExpectation {
     pub value: Option<Spanned<ExpectValue>>,
     pub tol: Option<Spanned<Quantity>>,

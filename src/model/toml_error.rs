@@ -1,9 +1,17 @@
 //! The rewording of the toml crate's and serde's errors into massprop's
 //! diagnostics: serde's words for TOML's ("map" → table, "sequence" →
-//! array), unknown keys with "did you mean", the key a type error is about,
-//! too-deep keys given a place. It depends on the wording of those crates'
+//! array), unknown keys with "did you mean", the key a type error is about
+//! (its value, or an element inside it) and what that key holds in our
+//! words (`expected`: "an array of 3 numbers or strings with units"), the
+//! accepted forms of a `rotation`, too-deep keys given a place. (An array
+//! where a table belongs never reaches serde's struct code: see
+//! `raw::table_only`.) It depends on the wording of those crates'
 //! messages: every wording it relies on is pinned by a test below, so an
 //! upgrade that changes one fails here, not in a user's terminal.
+//!
+//! NOTE: cohesive: one rewording of one crate's errors; more than half the
+//! file is the tests that pin each upstream wording beside the code that
+//! relies on it.
 
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::shapes::Shape;
@@ -38,16 +46,6 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         .replace("expected a map", "expected a table")
         .replace("invalid type: sequence", "invalid type: array")
         .replace("a sequence", "an array");
-    // serde: "invalid length 0, expected a table such as …" for an array
-    // given where a table belongs: an array of the wrong type, in TOML's
-    // words.
-    let msg = match msg
-        .strip_prefix("invalid length ")
-        .and_then(|rest| rest.split_once(", expected "))
-    {
-        Some((_, expected)) => format!("invalid type: array, expected {expected}"),
-        None => msg,
-    };
     // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
     // length", or an unknown key inside it) would name neither the table
     // nor the fix. Such a header is an error wherever serde stumbled.
@@ -58,6 +56,23 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
                 format!("`{name}` must be a table, found an array of tables"),
             )
             .help(format!("write `[{name}]`, with one pair of brackets"));
+    }
+    // A date-time reaches a table type as a table with toml's private key.
+    if msg.starts_with("unknown field `$__toml_private") {
+        let key = key_at(&source.text, span.start);
+        let d = source.error(
+            span,
+            match &key {
+                Some((k, depth)) => {
+                    format!("`{k}` {}: date-time, expected a table", wrong_type(*depth))
+                }
+                None => "a date-time where a table belongs".to_string(),
+            },
+        );
+        return match key {
+            Some((k, 0)) if k == "rotation" => d.help(ROTATION_FORMS),
+            _ => d,
+        };
     }
     if let Some(rest) = msg.strip_prefix("unknown field ") {
         // serde: "unknown field `k`, expected one of `a`, `b`" or "expected `a`".
@@ -112,21 +127,45 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     let wide_integer = msg.contains(" as i128");
     let msg = msg.replacen(" as i128", "", 1);
     // A date or time reaches serde as a table.
-    let msg = if msg.starts_with("invalid type: table")
-        && source.text[at..].starts_with(|c: char| c.is_ascii_digit())
-    {
+    let date = source.text[at..].starts_with(|c: char| c.is_ascii_digit());
+    let msg = if msg.starts_with("invalid type: table") && date {
         msg.replacen("table", "date-time", 1)
     } else {
         msg
     };
-    let key = key_at(&source.text, at).or_else(|| key_before(&source.text, at));
+    // ... and to a spanned table of tables (`materials`) as a string, with
+    // toml's own word for what it wanted.
+    let msg = match msg.strip_suffix(", expected a spanned value") {
+        Some(_) if date => "invalid type: date-time, expected a table".to_string(),
+        Some(found) => format!("{found}, expected a table"),
+        None => msg,
+    };
+    // The key, and how many arrays deep inside its value the error is.
+    let (key, depth) = match key_at(&source.text, at) {
+        Some((k, depth)) => (Some(k), depth),
+        None => (key_before(&source.text, at), 0),
+    };
     let d = match (key.as_deref(), msg.strip_prefix("invalid type: ")) {
-        (Some(k), Some(rest)) => source.error(span, format!("`{k}` has the wrong type: {rest}")),
+        (Some(k), Some(rest)) => {
+            // The type found as toml says it; what was expected in our
+            // words where serde's are only "an array".
+            let rest = match (
+                rest.split_once(", expected "),
+                expected(k, depth, &source.text, at),
+            ) {
+                (Some((found, _)), Some(ours)) => format!("{found}, expected {ours}"),
+                _ => rest.to_string(),
+            };
+            source.error(span, format!("`{k}` {}: {rest}", wrong_type(depth)))
+        }
         (Some(k), None) => source.error(span, format!("`{k}`: {msg}")),
         (None, _) => source.error(span, msg.clone()),
     };
     if key.as_deref() == Some("part") {
         return d.help("write each part as a `[[part]]` table (two brackets)");
+    }
+    if key.as_deref() == Some("rotation") && depth == 0 {
+        return d.help(ROTATION_FORMS);
     }
     if wide_integer {
         return d.help("a TOML integer is 64-bit (up to 9223372036854775807): write a larger number as a float, e.g. `1e20`");
@@ -141,31 +180,82 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     d
 }
 
-/// The innermost key whose value contains byte `offset`, from a spanned
-/// parse of the whole file. Only used on the error path.
-fn key_at(text: &str, offset: usize) -> Option<String> {
+/// "has the wrong type", said of a key's value (`depth` 0) or of an element
+/// inside it.
+fn wrong_type(depth: usize) -> &'static str {
+    if depth == 0 {
+        "has the wrong type"
+    } else {
+        "has an element of the wrong type"
+    }
+}
+
+/// The accepted forms of `rotation`, for every message about its type.
+const ROTATION_FORMS: &str = "write `{ quaternion = [w, x, y, z] }`, `{ axis = [x, y, z], degrees = θ }`, `{ matrix = [[..], [..], [..]] }`, or `{ intrinsic = \"zyx\", degrees = [a, b, c] }` (or `extrinsic`)";
+
+/// What the value of `key` is, in massprop's words, `depth` arrays inside
+/// it, where serde's would be only "an array" or "a number": the keys
+/// whose values are arrays. `text` and `at` find the part's shape (the
+/// length of `size`).
+fn expected(key: &str, depth: usize, text: &str, at: usize) -> Option<String> {
+    const QUANTITIES: &str = "numbers or strings with units";
+    Some(match (key, depth) {
+        ("part", 0) => "an array of tables, each a `[[part]]`".into(),
+        ("materials", 0) => {
+            "a table of materials such as { foam = { density = \"30 kg/m^3\" } }".into()
+        }
+        ("center" | "corner" | "from" | "to" | "origin", 0) => {
+            format!("an array of 3 {QUANTITIES}, such as [0, 0, \"5 mm\"]")
+        }
+        ("about" | "omega" | "alpha", 0) => format!("an array of 3 {QUANTITIES}"),
+        ("size", 0) => match shape_of_part_at(text, at).map(|s| s.info().dims) {
+            Some(crate::shapes::Dims::Size(n)) => {
+                format!("an array of {n} lengths ({QUANTITIES})")
+            }
+            _ => format!("an array of lengths ({QUANTITIES})"),
+        },
+        ("edges", 0) => format!("3 edge vectors, each an array of 3 {QUANTITIES}"),
+        ("vertices", 0) => format!("3 points, each an array of 3 {QUANTITIES}"),
+        ("edges", 1) => format!("an edge vector, an array of 3 {QUANTITIES}"),
+        ("vertices", 1) => format!("a point, an array of 3 {QUANTITIES}"),
+        ("inertia", 0) => format!("3 rows, each an array of 3 {QUANTITIES}"),
+        ("inertia", 1) => format!("a row, an array of 3 {QUANTITIES}"),
+        ("axis", 0) => "an array of 3 numbers, such as [0, 0, 1]".into(),
+        ("quaternion", 0) => "an array of 4 numbers [w, x, y, z]".into(),
+        ("matrix", 0) => "3 rows, each an array of 3 numbers".into(),
+        ("matrix", 1) => "a row, an array of 3 numbers".into(),
+        _ => return None,
+    })
+}
+
+/// The innermost key whose value contains byte `offset`, and how many
+/// arrays deep inside that value `offset` is (0: the value itself, 1: an
+/// element of it), from a spanned parse of the whole file. Only used on
+/// the error path.
+fn key_at(text: &str, offset: usize) -> Option<(String, usize)> {
     use toml::de::{DeTable, DeValue};
-    type Best = Option<(String, usize)>;
-    fn consider(best: &mut Best, k: &str, span: Range<usize>, offset: usize) {
-        if span.contains(&offset) && best.as_ref().is_none_or(|(_, len)| span.len() <= *len) {
-            *best = Some((k.to_string(), span.len()));
+    type Best = Option<(String, usize, usize)>;
+    fn consider(best: &mut Best, k: &str, depth: usize, span: Range<usize>, offset: usize) {
+        if span.contains(&offset) && best.as_ref().is_none_or(|b| span.len() <= b.2) {
+            *best = Some((k.to_string(), depth, span.len()));
         }
     }
-    fn visit(v: &DeValue<'_>, key: Option<&str>, offset: usize, best: &mut Best) {
+    fn visit(v: &DeValue<'_>, key: Option<(&str, usize)>, offset: usize, best: &mut Best) {
         match v {
             DeValue::Table(t) => {
                 for (k, v) in t.iter() {
-                    consider(best, k.get_ref(), k.span(), offset);
-                    consider(best, k.get_ref(), v.span(), offset);
-                    visit(v.get_ref(), Some(k.get_ref()), offset, best);
+                    consider(best, k.get_ref(), 0, k.span(), offset);
+                    consider(best, k.get_ref(), 0, v.span(), offset);
+                    visit(v.get_ref(), Some((k.get_ref(), 0)), offset, best);
                 }
             }
             DeValue::Array(a) => {
+                let inner = key.map(|(k, depth)| (k, depth + 1));
                 for v in a.iter() {
-                    if let Some(k) = key {
-                        consider(best, k, v.span(), offset);
+                    if let Some((k, depth)) = inner {
+                        consider(best, k, depth, v.span(), offset);
                     }
-                    visit(v.get_ref(), key, offset, best);
+                    visit(v.get_ref(), inner, offset, best);
                 }
             }
             _ => {}
@@ -174,7 +264,7 @@ fn key_at(text: &str, offset: usize) -> Option<String> {
     let root = DeTable::parse(text).ok()?;
     let mut best = None;
     visit(&DeValue::Table(root.into_inner()), None, offset, &mut best);
-    best.map(|(k, _)| k)
+    best.map(|(k, depth, _)| (k, depth))
 }
 
 /// The first `[[analysis]]`, `[[units]]`, `[[materials]]` or `[[expect]]`
@@ -385,9 +475,11 @@ mod tests {
 
     #[test]
     fn an_array_where_a_table_belongs_is_called_an_array() {
+        // serde's derived struct would read an array as its fields in
+        // order ("invalid length 0"); `raw::table_only` refuses it.
         let (upstream, ours) = reworded("units = []\n");
         assert!(
-            upstream.starts_with("invalid length 0, expected a table"),
+            upstream.starts_with("invalid type: sequence, expected a table"),
             "{upstream}"
         );
         assert!(
@@ -400,6 +492,96 @@ mod tests {
             "{ours}"
         );
         assert!(!ours.contains("invalid length"), "{ours}");
+    }
+
+    /// `rotation = [1]` was read as a quaternion of one number ("integer
+    /// `1`, expected an array"), and `foam = [1]` as a density, accepted.
+    #[test]
+    fn an_array_is_never_read_as_the_fields_of_a_table() {
+        let (_, ours) = reworded(&part_with("rotation = [1]"));
+        assert!(
+            ours.contains("3:12: error: `rotation` has the wrong type: array, expected a rotation table such as { axis = [0, 0, 1], degrees = 90 }\n"),
+            "{ours}"
+        );
+        assert!(
+            ours.contains("help: write `{ quaternion = [w, x, y, z] }`, `{ axis"),
+            "{ours}"
+        );
+        let (_, ours) = reworded("[materials]\nfoam = [1]\n");
+        assert!(
+            ours.contains("2:8: error: `foam` has the wrong type: array, expected a table such as { density = \"30 kg/m^3\" }\n"),
+            "{ours}"
+        );
+        for text in [
+            "units = [\"mm\", \"kg\"]\n",
+            "analysis = [[0, 0, 0]]\n",
+            "expect = [{ value = 1 }]\n",
+            "[expect]\nmass = [1, 0.1]\n",
+            "[expect]\ncenter_of_mass = { x = [1] }\n",
+            "part = [[\"box\"]]\n",
+        ] {
+            let (_, ours) = reworded(text);
+            assert!(
+                ours.contains("wrong type: array, expected a"),
+                "{text}: {ours}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_date_time_where_a_table_belongs_is_called_a_date_time() {
+        // A date reaches a table type as a table with toml's private key.
+        let (upstream, ours) = reworded(&part_with("rotation = 1979-05-27"));
+        assert!(
+            upstream.starts_with("unknown field `$__toml_private_datetime`"),
+            "{upstream}"
+        );
+        assert!(
+            ours.contains("error: `rotation` has the wrong type: date-time, expected a table\n"),
+            "{ours}"
+        );
+        // ... and a spanned table of tables as a string.
+        let (upstream, ours) = reworded("materials = 1979-05-27\n");
+        assert_eq!(
+            upstream,
+            "invalid type: string \"1979-05-27\", expected a spanned value"
+        );
+        assert!(
+            ours.contains(
+                "error: `materials` has the wrong type: date-time, expected a table of materials"
+            ),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn an_element_of_the_wrong_type_is_called_an_element() {
+        let (_, ours) = reworded(&part_with("center = [0, true, 0]"));
+        assert!(
+            ours.contains("3:14: error: `center` has an element of the wrong type: boolean `true`, expected a number, or a string with a unit"),
+            "{ours}"
+        );
+        let (_, ours) = reworded(&part_with("edges = [1, 2, 3]"));
+        assert!(
+            ours.contains("`edges` has an element of the wrong type: integer `1`, expected an edge vector, an array of 3 numbers or strings with units\n"),
+            "{ours}"
+        );
+        let (_, ours) = reworded(&part_with("rotation = { matrix = [[1, 0, 0], 0, 1] }"));
+        assert!(
+            ours.contains("`matrix` has an element of the wrong type: integer `0`, expected a row, an array of 3 numbers\n"),
+            "{ours}"
+        );
+    }
+
+    #[test]
+    fn the_length_of_size_is_the_shapes() {
+        let (_, ours) = reworded("[[part]]\nshape = \"plate\"\nsize = 1\n");
+        assert!(
+            ours.contains("`size` has the wrong type: integer `1`, expected an array of 2 lengths"),
+            "{ours}"
+        );
+        let (_, ours) = reworded(&part_with("size = 1"));
+        assert!(ours.contains("expected an array of 3 lengths"), "{ours}");
     }
 
     /// A part with `key = value` after its shape.
@@ -483,7 +665,7 @@ mod tests {
         let (upstream, ours) = reworded(&part_with("center = 1"));
         assert!(upstream.ends_with("expected a sequence"), "{upstream}");
         assert!(
-            ours.contains("error: `center` has the wrong type: integer `1`, expected an array\n"),
+            ours.contains("error: `center` has the wrong type: integer `1`, expected an array of 3 numbers or strings with units, such as [0, 0, \"5 mm\"]\n"),
             "{ours}"
         );
     }
@@ -506,9 +688,10 @@ mod tests {
         let (upstream, ours) = reworded("materials = 1\n");
         assert!(upstream.ends_with("expected a map"), "{upstream}");
         assert!(
-            ours.contains("error: `materials` has the wrong type: integer `1`, expected a table\n"),
+            ours.contains("error: `materials` has the wrong type: integer `1`, expected a table of materials such as"),
             "{ours}"
         );
+        assert!(!ours.contains("map"), "{ours}");
     }
 
     #[test]
@@ -517,7 +700,7 @@ mod tests {
         assert!(upstream.ends_with("expected f64"), "{upstream}");
         assert!(
             ours.contains(
-                "error: `quaternion` has the wrong type: string \"a\", expected a number\n"
+                "error: `quaternion` has an element of the wrong type: string \"a\", expected a number\n"
             ),
             "{ours}"
         );
@@ -587,6 +770,115 @@ mod tests {
             ours.contains("help: write each part as a `[[part]]` table (two brackets)"),
             "{ours}"
         );
+    }
+
+    /// Every key given every kind of wrong value: the message is ours,
+    /// with none of serde's or toml's internal words.
+    #[test]
+    fn no_wrong_value_anywhere_gets_serdes_words() {
+        const WRONG: &[&str] = &[
+            "1",
+            "1.5",
+            "\"x\"",
+            "true",
+            "1979-05-27",
+            "[]",
+            "[1]",
+            "[[1]]",
+            "[true]",
+            "[{}]",
+            "[[[1]]]",
+            "{}",
+            "{ a = 1 }",
+            "{ value = 1 }",
+            "[1979-05-27]",
+        ];
+        // Every field of `RawPart`.
+        const PART_KEYS: &[&str] = &[
+            "name",
+            "shape",
+            "mass",
+            "density",
+            "areal_density",
+            "linear_density",
+            "size",
+            "length",
+            "center",
+            "rotation",
+            "corner",
+            "edges",
+            "from",
+            "to",
+            "thickness",
+            "diameter",
+            "radius",
+            "inner_radius",
+            "include",
+            "origin",
+            "material",
+            "area",
+            "vertices",
+            "inertia",
+            "products",
+            "remove",
+        ];
+        let part = "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n";
+        let mut files = Vec::new();
+        for v in WRONG {
+            for key in PART_KEYS {
+                let lines: Vec<String> = part
+                    .lines()
+                    .filter(|l| !l.starts_with(&format!("{key} ")))
+                    .map(str::to_string)
+                    .collect();
+                files.push(format!("{}\n{key} = {v}\n", lines.join("\n")));
+            }
+            for key in ["quaternion", "axis", "degrees", "matrix", "intrinsic"] {
+                files.push(format!("{part}rotation = {{ {key} = {v} }}\n"));
+            }
+            for top in ["name", "units", "analysis", "expect", "materials"] {
+                files.push(format!("{top} = {v}\n{part}"));
+            }
+            files.push(format!("part = {v}\n"));
+            files.push(format!("[units]\nlength = {v}\n{part}"));
+            files.push(format!("[analysis]\nabout = {v}\n{part}"));
+            files.push(format!("[materials]\nfoam = {v}\n{part}"));
+            files.push(format!("[materials.foam]\ndensity = {v}\n{part}"));
+            for entry in ["mass", "center_of_mass", "inertia_com"] {
+                files.push(format!("{part}[expect]\n{entry} = {v}\n"));
+                for sub in ["value", "tol", "max", "x", "xy"] {
+                    files.push(format!("{part}[expect]\n{entry} = {{ {sub} = {v} }}\n"));
+                }
+            }
+        }
+        let serde_words = [
+            "sequence",
+            " map",
+            "invalid length",
+            "struct",
+            "enum",
+            "variant",
+            "tuple",
+            "f64",
+            "i64",
+            "u64",
+            "i128",
+            "unit value",
+            "newtype",
+            "identifier",
+            "spanned",
+            "$__",
+        ];
+        for text in &files {
+            let Err(d) = crate::model::Model::parse(&Source::new("t.toml", text.as_str())) else {
+                continue;
+            };
+            let d = d.to_string();
+            let first = d.lines().next().unwrap_or_default();
+            for w in serde_words {
+                assert!(!first.contains(w), "{text}\n{d}");
+            }
+        }
     }
 
     #[test]

@@ -426,3 +426,134 @@ fn bless_refuses_a_read_only_file() {
     assert_eq!(std::fs::read_to_string(&f).unwrap(), text);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// File names that are not UTF-8 are checked like any other (they were
+/// reported as missing), and shown with each such byte as `\xNN` and
+/// control characters as their pictures, on stdout and stderr alike;
+/// includes resolve from a directory whose name is not UTF-8.
+#[cfg(unix)]
+#[test]
+fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
+    use std::ffi::OsStr;
+    use std::os::unix::ffi::OsStrExt;
+    let dir = scratch("not-utf8");
+    let named = |bytes: &[u8]| dir.join(OsStr::from_bytes(bytes));
+    let body = |expect: &str| format!("{BODY}{expect}\n");
+    std::fs::write(
+        named(b"ok-\xff.toml"),
+        body("mass = { value = 12.001, tol = 0.01 }"),
+    )
+    .unwrap();
+    std::fs::write(
+        named(b"bad-\xfe.toml"),
+        body("mass = { value = 12.5, tol = 0.01 }"),
+    )
+    .unwrap();
+    let shown = |name: &str| format!("{}/{name}", dir.display());
+    let out = massprop(&["check", dir.to_str().unwrap()]);
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(1), "{stdout}");
+    // `[expect]` is line 10 of BODY: the mass entry is line 11.
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert!(
+        lines[0].starts_with(&format!("{}:11:8: error: mass ", shown("bad-\\xfe.toml"))),
+        "{stdout}"
+    );
+    assert_eq!(
+        lines[1],
+        format!("{}: ok", shown("ok-\\xff.toml")),
+        "{stdout}"
+    );
+    assert_eq!(lines[2], "checked 2 files: 1 ok, 1 failed, 0 invalid");
+
+    let out = massprop(&["check", "--format", "json", dir.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let json: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    let files = json["files"].as_array().unwrap();
+    let entry = |i: usize| (files[i]["path"].as_str(), files[i]["status"].as_str());
+    let (bad, ok) = (shown("bad-\\xfe.toml"), shown("ok-\\xff.toml"));
+    assert_eq!(entry(0), (Some(bad.as_str()), Some("failed")));
+    assert_eq!(entry(1), (Some(ok.as_str()), Some("ok")));
+
+    // `--bless` cannot write such a name: it says so and leaves the file.
+    let before = std::fs::read(named(b"bad-\xfe.toml")).unwrap();
+    let out = massprop(&["check", "--bless", dir.to_str().unwrap()]);
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains(&format!(
+            "{bad}: error: `--bless` cannot write a file whose name is not UTF-8"
+        )),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read(named(b"bad-\xfe.toml")).unwrap(), before);
+
+    // A sub-assembly in a directory whose name is not UTF-8, and an
+    // invalid file whose name has an escape character too.
+    std::fs::create_dir(named(b"sub\xfd")).unwrap();
+    std::fs::write(
+        named(b"sub\xfd/asm.toml"),
+        "[[part]]\ninclude = \"wheel.toml\"\norigin = [0, 0, 1]\n",
+    )
+    .unwrap();
+    std::fs::write(named(b"sub\xfd/wheel.toml"), body("")).unwrap();
+    std::fs::write(named(b"broken-\xfc\x1b.toml"), "mass = \n").unwrap();
+    let out = massprop(&["check", dir.to_str().unwrap()]);
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    let broken = shown("broken-\\xfc\u{241b}.toml");
+    assert!(
+        stderr.starts_with(&format!("{broken}:1:8: error: ")),
+        "{stderr}"
+    );
+    assert!(stdout.contains(&format!("\n{broken}: invalid")), "{stdout}");
+    assert!(
+        stdout.contains(&format!("\n{}: ok\n", shown("sub\\xfd/asm.toml"))),
+        "{stdout}"
+    );
+    assert!(
+        stdout.ends_with("checked 5 files: 3 ok, 1 failed, 1 invalid\n"),
+        "{stdout}"
+    );
+    for text in [&stdout, &stderr] {
+        assert!(!text.contains(['\u{fffd}', '\u{1b}']), "{text}");
+    }
+    // In JSON the escape character is data, written as a JSON escape.
+    let out = massprop(&["check", "--format", "json", dir.to_str().unwrap()]);
+    let json: Value = serde_json::from_slice(&out.stdout).expect("valid JSON");
+    let invalid: Vec<&str> = json["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["status"] == "invalid")
+        .filter_map(|f| f["path"].as_str())
+        .collect();
+    assert_eq!(invalid, [shown("broken-\\xfc\u{1b}.toml").as_str()]);
+
+    // Named on the command line (clap refused such an argument), and `-o`
+    // through a link onto one of them is refused.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .arg("check")
+        .arg(named(b"ok-\xff.toml"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert_eq!(stdout.lines().next(), Some(format!("{ok}: ok").as_str()));
+    std::os::unix::fs::symlink(named(b"ok-\xff.toml"), dir.join("link.toml")).unwrap();
+    let link = dir.join("link.toml");
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .arg("check")
+        .arg(named(b"ok-\xff.toml"))
+        .args(["-o", link.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        String::from_utf8(out.stderr)
+            .unwrap()
+            .contains("is the part file")
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
