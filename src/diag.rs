@@ -124,9 +124,10 @@ fn visible_message(text: &str) -> String {
 }
 
 /// The text with control characters (but tab) shown as their Unicode
-/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡, C1 as �), one character
-/// each, so a stray one neither vanishes nor moves the carets nor acts on
-/// the terminal.
+/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡, C1 and the bidirectional
+/// formatting characters as �), one character each, so a stray one neither
+/// vanishes nor moves the carets nor acts on the terminal nor reorders the
+/// line.
 pub fn visible(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     push_visible(&mut out, text);
@@ -151,10 +152,11 @@ pub fn shorten(text: &str) -> String {
 /// to line-per-record output.
 pub fn push_visible(out: &mut String, text: &str) {
     // Most text has no control character: one scan, one copy. (C1 controls
-    // are U+0080..U+009F, encoded with a 0xC2 lead byte.)
+    // are U+0080..U+009F, encoded with a 0xC2 lead byte; the bidirectional
+    // marks have lead bytes 0xD8 and 0xE2.)
     if !text
         .bytes()
-        .any(|b| b < 0x20 && b != b'\t' || b == 0x7f || b == 0xc2)
+        .any(|b| b < 0x20 && b != b'\t' || b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
     {
         out.push_str(text);
         return;
@@ -163,9 +165,20 @@ pub fn push_visible(out: &mut String, text: &str) {
         '\t' => c,
         '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
         '\u{7f}' => '\u{2421}',
-        c if c.is_control() => '\u{fffd}',
+        c if c.is_control() || is_bidi(c) => '\u{fffd}',
         c => c,
     }));
+}
+
+/// The bidirectional formatting characters (embeddings, overrides,
+/// isolates and marks): not controls to Unicode, but on a terminal they
+/// reorder how the rest of the line reads ("Trojan Source": a name can make
+/// `PATH: failed` read as something else).
+pub fn is_bidi(c: char) -> bool {
+    matches!(
+        c,
+        '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{200e}' | '\u{200f}' | '\u{61c}'
+    )
 }
 
 /// A path as text, for every output (messages, tables, JSON): the one rule
@@ -472,6 +485,27 @@ mod tests {
             "d\\xe9/\\xff\\xfeb\u{241b}\u{e9}.toml"
         );
         assert_eq!(display_path(Path::new("plain/a b.toml")), "plain/a b.toml");
+    }
+
+    #[test]
+    fn bidirectional_formatting_characters_are_shown_as_replacement_characters() {
+        // "ok ", U+202E, "deliaf" would read as "ok failed" on a terminal.
+        assert_eq!(visible("ok \u{202e}deliaf"), "ok \u{fffd}deliaf");
+        for c in [
+            '\u{202a}', '\u{202e}', '\u{2066}', '\u{2069}', '\u{200e}', '\u{200f}', '\u{61c}',
+        ] {
+            assert_eq!(
+                visible(&format!("a{c}b")),
+                "a\u{fffd}b",
+                "{:04x}",
+                u32::from(c)
+            );
+        }
+        // Neighbours of the ranges and other text behind the same lead bytes
+        // stay as they are.
+        for t in ["\u{2029}\u{202f}\u{2065}\u{206a}—…│\u{200d}\u{61b}\u{61d}"] {
+            assert_eq!(visible(t), t);
+        }
     }
 
     #[test]

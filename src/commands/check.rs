@@ -43,7 +43,8 @@ enum Found {
 /// The part files named: files as given, directories searched recursively
 /// for `*.toml` in sorted order.
 fn collect(paths: &[PathBuf]) -> Vec<Found> {
-    fn walk(dir: &Path, out: &mut Vec<Found>) {
+    /// `root`: the directory named, canonical.
+    fn walk(dir: &Path, root: &Path, out: &mut Vec<Found>) {
         let read = match std::fs::read_dir(dir) {
             Ok(read) => read,
             Err(e) => {
@@ -54,15 +55,35 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
         };
         // With each entry's own type (from the directory, not following a
         // symlink): symlinked directories are not followed (as ripgrep does
-        // not by default: `ln -s .. up` would loop); symlinked files are.
-        let mut entries: Vec<(PathBuf, bool)> = read
+        // not by default: `ln -s .. up` would loop); symlinked files are,
+        // to a part file inside the directory named.
+        let mut entries: Vec<(PathBuf, bool, bool)> = read
             .filter_map(|e| e.ok())
-            .map(|e| (e.path(), e.file_type().is_ok_and(|t| t.is_dir())))
+            .map(|e| {
+                let t = e.file_type();
+                let dir = t.as_ref().is_ok_and(|t| t.is_dir());
+                let link = t.is_ok_and(|t| t.is_symlink());
+                (e.path(), dir, link)
+            })
             .collect();
         entries.sort();
-        for (p, dir) in entries {
+        for (p, dir, link) in entries {
             if dir {
-                walk(&p, out);
+                walk(&p, root, out);
+            } else if link
+                && p.extension().is_some_and(|e| e == "toml")
+                && std::fs::canonicalize(&p).is_ok_and(|t| {
+                    !(t.starts_with(root) && t.extension().is_some_and(|e| e == "toml"))
+                })
+            {
+                // A file from a pull request, `x.toml -> ~/.cargo/credentials.toml`
+                // or `-> .git/config`, would be read and quoted in the log.
+                let name = display_path(&p);
+                let d = Diagnostic::file(
+                    &name,
+                    "not checked: a symlink to a file outside the directory searched, or to one that is not a `*.toml` file (check it by its own path)",
+                );
+                out.push(Found::Skipped(name, d));
             } else if p.extension().is_some_and(|e| e == "toml") {
                 // The target's type, without opening it.
                 match std::fs::metadata(&p) {
@@ -83,7 +104,8 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
     let mut out = Vec::new();
     for p in paths {
         if p.as_os_str() != "-" && p.is_dir() {
-            walk(p, &mut out);
+            let root = std::fs::canonicalize(p).unwrap_or_else(|_| p.clone());
+            walk(p, &root, &mut out);
         } else {
             out.push(Found::File(p.clone()));
         }

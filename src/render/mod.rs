@@ -58,11 +58,13 @@ pub fn render(output: &Output, format: Format) -> String {
 /// `value` as one line of JSON, ending in a newline: every JSON output is
 /// written by this.
 ///
-/// NOTE: serde_json escapes only U+0000..U+001F in strings; DEL and the C1
+/// NOTE: serde_json escapes only U+0000..U+001F in strings; DEL, the C1
 /// controls (U+0080..U+009F: U+009B is a CSI to terminals that take 8-bit
-/// controls) from a name would reach a terminal raw from
+/// controls) and the bidirectional formatting characters (`diag::is_bidi`)
+/// from a name would reach a terminal raw from
 /// `massprop report --format json | less`. They are escaped as `\u007f`,
-/// `\u009b`, …, which every JSON reader decodes back to the same text.
+/// `\u009b`, `\u202e`, …, which every JSON reader decodes back to the same
+/// text.
 pub fn json_line<T: serde::Serialize + ?Sized>(value: &T) -> String {
     let mut out = Vec::new();
     let mut ser = serde_json::Serializer::with_formatter(&mut out, ControlsEscaped);
@@ -82,14 +84,17 @@ impl serde_json::ser::Formatter for ControlsEscaped {
         w: &mut W,
         fragment: &str,
     ) -> std::io::Result<()> {
-        // C1 controls are encoded with a 0xC2 lead byte: one scan for the
-        // usual text that has neither.
-        if !fragment.bytes().any(|b| b == 0x7f || b == 0xc2) {
+        // C1 controls are encoded with a 0xC2 lead byte, the bidirectional
+        // marks with 0xD8 or 0xE2: one scan for the usual text.
+        if !fragment
+            .bytes()
+            .any(|b| b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
+        {
             return w.write_all(fragment.as_bytes());
         }
         let mut start = 0;
         for (i, c) in fragment.char_indices() {
-            if c == '\u{7f}' || ('\u{80}'..='\u{9f}').contains(&c) {
+            if c == '\u{7f}' || ('\u{80}'..='\u{9f}').contains(&c) || crate::diag::is_bidi(c) {
                 w.write_all(&fragment.as_bytes()[start..i])?;
                 write!(w, "\\u{:04x}", u32::from(c))?;
                 start = i + c.len_utf8();
@@ -105,13 +110,17 @@ mod tests {
 
     #[test]
     fn json_escapes_every_control_character_and_reads_back_the_same_text() {
-        let text = "a\u{1b}[31m\u{7f}b\u{9b}2Jc\u{80}\u{9f}\u{a0}é\n";
+        let text = "a\u{1b}[31m\u{7f}b\u{9b}2Jc\u{80}\u{9f}\u{a0}é\u{202e}d\u{2069}—\n";
         let line = json_line(&serde_json::json!({ "name": text }));
         assert_eq!(
             line,
-            "{\"name\":\"a\\u001b[31m\\u007fb\\u009b2Jc\\u0080\\u009f\u{a0}é\\n\"}\n"
+            "{\"name\":\"a\\u001b[31m\\u007fb\\u009b2Jc\\u0080\\u009f\u{a0}é\\u202ed\\u2069—\\n\"}\n"
         );
-        assert!(!line.chars().any(|c| c.is_control() && c != '\n'));
+        assert!(
+            !line
+                .chars()
+                .any(|c| (c.is_control() && c != '\n') || crate::diag::is_bidi(c))
+        );
         let back: serde_json::Value = serde_json::from_str(&line).unwrap();
         assert_eq!(back["name"], text);
     }

@@ -557,3 +557,55 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `check DIR` follows a symlinked `*.toml` only to a `*.toml` file inside
+/// DIR: one to a file outside (`~/.cargo/credentials.toml`) or to one of
+/// another kind (`.git/config`) is reported as not checked, and nothing of
+/// it is read or quoted; the rest is checked.
+#[test]
+fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
+    const SECRET: &str = "SECRET-7c1f";
+    let root = crate::common::scratch("check", "dir-links");
+    let (tree, outside) = (root.join("tree"), root.join("outside"));
+    std::fs::create_dir_all(tree.join(".git")).unwrap();
+    std::fs::create_dir_all(&outside).unwrap();
+    std::fs::write(
+        outside.join("credentials.toml"),
+        format!("token = \"{SECRET}\"\n"),
+    )
+    .unwrap();
+    std::fs::write(
+        tree.join(".git/config"),
+        format!("[http]\n\textraheader = {SECRET}\n"),
+    )
+    .unwrap();
+    let part = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+    std::fs::write(tree.join("real.toml"), part).unwrap();
+    let link =
+        |to: &std::path::Path, name: &str| std::os::unix::fs::symlink(to, tree.join(name)).unwrap();
+    link(&outside.join("credentials.toml"), "a.toml");
+    link(&tree.join(".git/config"), "b.toml");
+    link(&tree.join("real.toml"), "c.toml");
+    let out = massprop(&["check", tree.to_str().unwrap()]);
+    let (stdout, stderr) = (
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(
+        !stdout.contains(SECRET) && !stderr.contains(SECRET),
+        "{stdout}{stderr}"
+    );
+    for skipped in ["a.toml", "b.toml"] {
+        assert!(
+            stderr.contains(&format!(
+                "{skipped}: error: not checked: a symlink to a file outside"
+            )),
+            "{stderr}"
+        );
+    }
+    assert!(
+        stdout.ends_with("checked 4 files: 2 ok, 0 failed, 2 invalid\n"),
+        "{stdout}"
+    );
+}
