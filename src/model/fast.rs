@@ -6,8 +6,8 @@
 //! (`toml::de::DeTable`: every key, value and span as a node, ~22 bytes of
 //! memory per input byte with the lexer's tokens and the parser's events)
 //! and only then deserializes `RawFile` from it. Here the parser's events
-//! fill `RawFile` as they come: only the tokens and the result are ever in
-//! memory. It covers what part files are made of (top-level `name` and
+//! fill `RawFile` as they come: only the result, and the tokens of a chunk
+//! of whole tables (`CHUNK`), are ever in memory. It covers what part files are made of (top-level `name` and
 //! `units`, `[[part]]` tables, `[analysis]`, inline tables and arrays of
 //! strings and numbers) and gives up — `None` — on anything else (`[expect]`,
 //! dotted keys, other tables, booleans, dates), on any syntax error, any
@@ -31,6 +31,7 @@ use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
 use toml_parser::decoder::{Encoding, ScalarKind};
+use toml_parser::lexer::{Token, TokenKind};
 use toml_parser::parser::{EventReceiver, RecursionGuard, ValidateWhitespace};
 use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
 
@@ -52,21 +53,66 @@ pub fn parse(text: &str) -> Option<RawFile> {
     }) {
         return None;
     }
+    parse_in_chunks(text, CHUNK)
+}
+
+/// `parse`, lexing and parsing `chunk_tokens` tokens at a time (at least:
+/// a chunk ends before a line that starts with `[`). Public for the
+/// property test and the fuzz target, which read their files in small
+/// chunks too.
+pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
     let source = Source::new(text);
-    let tokens = source.lex().into_vec();
     let mut builder = Builder::new(source);
     let mut error = Failed(false);
-    {
-        let mut ws = ValidateWhitespace::new(&mut builder, source);
-        let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
-        toml_parser::parser::parse_document(&tokens, &mut guarded, &mut error);
-    }
-    drop(tokens);
-    if error.0 {
-        return None;
+    // NOTE: lexed and parsed a chunk of whole tables at a time, not the
+    // whole file: the lexer's tokens take 14 bytes of memory per byte of
+    // input, more than the rest of reading a file together. A chunk ends
+    // before a `[` that opens a line, once it holds `CHUNK` tokens, and is
+    // closed with an end-of-file token. Where that `[` is a table header,
+    // each chunk is a document of whole tables and the parser's events are
+    // those of the whole file. Where it is not (a line of an array that
+    // starts with `[`), the chunk before it ends inside a value: the parser
+    // or the builder (a value still open, `finish`, or the next header)
+    // fails, and the serde path decides, as for any file this declines.
+    let mut lexer = source.lex();
+    let eof = Source::new("")
+        .lex()
+        .next()
+        .expect("invariant: the lexer ends every input with an end-of-file token");
+    let mut chunk: Vec<Token> = Vec::with_capacity(chunk_tokens.min(CHUNK) + 1);
+    let mut line_start = true;
+    loop {
+        let token = lexer.next();
+        let end = match &token {
+            None => true,
+            Some(t) => {
+                chunk.len() >= chunk_tokens
+                    && line_start
+                    && t.kind() == TokenKind::LeftSquareBracket
+            }
+        };
+        if end && !chunk.is_empty() {
+            if chunk.last().is_some_and(|t| t.kind() != TokenKind::Eof) {
+                chunk.push(eof);
+            }
+            let mut ws = ValidateWhitespace::new(&mut builder, source);
+            let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
+            toml_parser::parser::parse_document(&chunk, &mut guarded, &mut error);
+            chunk.clear();
+            if error.0 || builder.failed {
+                return None;
+            }
+        }
+        let Some(t) = token else { break };
+        line_start = t.kind() == TokenKind::Newline;
+        chunk.push(t);
     }
     builder.finish()
 }
+
+/// Tokens lexed and parsed at a time (24 bytes each): a few thousand
+/// parts.
+const CHUNK: usize = 1 << 16;
 
 /// Records that the parser reported an error.
 struct Failed(bool);
@@ -510,11 +556,62 @@ impl<'i> EventReceiver for Builder<'i> {
 mod tests {
     use super::*;
 
-    /// The fast path gives what serde gives, spans included.
+    /// The fast path gives what serde gives, spans included; and so does it
+    /// read in chunks of any size, or it declines.
     fn same(text: &str) {
         let fast = parse(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
         let serde: RawFile = toml::from_str(text).unwrap();
         assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
+        in_chunks_the_same_or_declined(text);
+    }
+
+    /// Read in chunks of 1 to 40 tokens: the same `RawFile` as read whole,
+    /// or declined (a chunk that ended inside a value); never another.
+    fn in_chunks_the_same_or_declined(text: &str) -> usize {
+        let whole = format!(
+            "{:?}",
+            parse_in_chunks(text, usize::MAX).expect("read whole")
+        );
+        let mut declined = 0;
+        for n in 1..=40 {
+            match parse_in_chunks(text, n) {
+                Some(raw) => assert_eq!(format!("{raw:?}"), whole, "chunks of {n}:\n{text}"),
+                None => declined += 1,
+            }
+        }
+        declined
+    }
+
+    #[test]
+    fn a_file_read_in_chunks_of_whole_tables_reads_as_whole() {
+        let part = |i: usize| {
+            format!(
+                "[[part]]\nname = \"p{i}\"\nshape = \"box\"\nmass = {i}\nsize = [1, 2, 3]\ncenter = [{i}, 0, 0]\n"
+            )
+        };
+        let many: String = (1..=30).map(part).collect();
+        same(&format!(
+            "name = \"n\"\nunits = {{ length = \"mm\" }}\n{many}[analysis]\nomega = [0, 0, 1]\n{}",
+            part(31)
+        ));
+        // Whole tables in every chunk: never declined.
+        assert_eq!(in_chunks_the_same_or_declined(&many), 0);
+    }
+
+    #[test]
+    fn a_chunk_that_ends_inside_a_value_is_declined_not_misread() {
+        // Lines of an array that start with `[`, as a table header does.
+        let text = "[[part]]\nshape = \"plate\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [\n[0, 125, 0],\n[0, 0, 100]]\n\
+                    [[part]]\nshape = \"rod\"\nmass = 1\nfrom = [\n0, 0, 0]\nto = [\n[1][0], 0, 0]\n";
+        let serde: Result<RawFile, _> = toml::from_str(text);
+        assert!(serde.is_err(), "`[1][0]` is no TOML value");
+        assert!(parse_in_chunks(text, usize::MAX).is_none());
+        let text = "[[part]]\nshape = \"plate\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [\n[0, 125, 0],\n[0, 0, 100]]\n";
+        same(text);
+        assert!(
+            in_chunks_the_same_or_declined(text) > 0,
+            "some chunk ends inside `edges`"
+        );
     }
 
     /// The fast path leaves the file to serde.

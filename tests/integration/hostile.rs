@@ -876,6 +876,17 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
     let serde = toml::from_str::<RawFile>(text)
         .map_err(|e| format!("the fast path reads a file that serde rejects: {e}"))?;
     let (fast, serde) = (format!("{fast:#?}"), format!("{serde:#?}"));
+    // Read in small chunks (every table its own, or a split inside a
+    // value): the same, or declined.
+    for n in [1, 7] {
+        if let Some(chunked) = fast::parse_in_chunks(text, n)
+            && format!("{chunked:#?}") != fast
+        {
+            return Err(format!(
+                "the fast path in chunks of {n} tokens reads another file:\n{text}"
+            ));
+        }
+    }
     if fast == serde {
         return Ok(true);
     }
