@@ -7,6 +7,7 @@ mod common;
 mod diff;
 mod docs;
 mod hostile;
+mod hostile_round_two;
 mod invariants;
 mod layers;
 mod package;
