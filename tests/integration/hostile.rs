@@ -1776,7 +1776,8 @@ fn example_files_pass_the_hostile_checks() {
 }
 
 /// Every input the fuzzer (fuzz/, docs/fuzzing.md) has crashed massprop
-/// with stays a test: each file in fuzz/regressions/.
+/// with stays a test: each file in fuzz/regressions/. An input of several
+/// files (lines `#---- NAME`) is split as the fuzz target splits it.
 #[test]
 fn fuzz_regressions_give_finite_results_or_diagnostics() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
@@ -1786,9 +1787,70 @@ fn fuzz_regressions_give_finite_results_or_diagnostics() {
         .collect();
     files.sort();
     assert!(files.len() >= 4, "fuzz/regressions/ lost its files");
+    let scratch = crate::common::scratch("hostile", "regressions");
     for path in files {
-        hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        fast_path_agrees(&std::fs::read(&path).unwrap())
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let bytes = std::fs::read(&path).unwrap();
+        let framed = std::str::from_utf8(&bytes)
+            .ok()
+            .filter(|t| t.starts_with(SEPARATOR) || t.contains(&format!("\n{SEPARATOR}")));
+        let (top, texts) = match framed {
+            Some(text) => {
+                let files = unframe(text);
+                let run = scratch.join(path.file_name().unwrap());
+                for (name, t) in &files {
+                    let p = run.join(name);
+                    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+                    let _ = std::fs::write(&p, t);
+                }
+                let texts = files.iter().map(|(_, t)| t.as_bytes().to_vec()).collect();
+                (run.join("top.toml"), texts)
+            }
+            None => (path.clone(), vec![bytes]),
+        };
+        hostile(top.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        for t in texts {
+            fast_path_agrees(&t).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        }
     }
+}
+
+/// The line that starts another file in a fuzz input.
+const SEPARATOR: &str = "#---- ";
+
+/// A fuzz input's files, (name, text), `top.toml` first, as
+/// fuzz/fuzz_targets/parse_and_compose.rs splits it: a line `#---- NAME`
+/// starts the file NAME (at most three plain components, else `fN.toml`),
+/// at most 16 files.
+fn unframe(text: &str) -> Vec<(String, &str)> {
+    let file_name = |line: &str, n: usize| {
+        let name = line.trim_end_matches(['\r', ' ']);
+        let plain = |c: &str| {
+            !c.is_empty()
+                && c != "."
+                && c != ".."
+                && c.len() <= 32
+                && c.bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b"._-".contains(&b))
+        };
+        let parts: Vec<&str> = name.split('/').collect();
+        if parts.len() <= 3 && parts.iter().all(|c| plain(c)) && name != "top.toml" {
+            name.to_string()
+        } else {
+            format!("f{n}.toml")
+        }
+    };
+    let mut files = Vec::new();
+    let (mut name, mut start, mut at) = ("top.toml".to_string(), 0, 0);
+    for line in text.split_inclusive('\n') {
+        if let Some(rest) = line.strip_prefix(SEPARATOR)
+            && files.len() + 1 < 16
+        {
+            files.push((name, &text[start..at]));
+            name = file_name(rest.trim_end_matches('\n'), files.len());
+            start = at + line.len();
+        }
+        at += line.len();
+    }
+    files.push((name, &text[start..]));
+    files
 }
