@@ -37,11 +37,12 @@ use std::path::{Path, PathBuf};
 /// Include trees: each runs `report` twice, `check` on the top file and on
 /// the tree's directory.
 const TREES: u32 = 120;
-/// Files with hostile names: each runs eight commands on two trees.
+/// Files with hostile names: each runs nine commands, and again on a twin
+/// with plain names.
 const NAMED: u32 = 60;
 /// Files with `[expect]` entries too deep.
 const DEEP: u32 = 100;
-/// Files of extreme values: each runs hostile.rs's ten commands.
+/// Files of extreme values: each runs hostile.rs's eight commands.
 const EXTREMES: u32 = 120;
 
 // ---------------------------------------------------------------------------
