@@ -1022,6 +1022,9 @@ fn json_names(names: &Names, args: &[&str], v: &Value, paths: &[String]) -> Resu
                 same("a part's name", &g["name"], w)?;
             }
             let asm = v["assemblies"].as_array().ok_or("no assemblies")?;
+            if asm.len() != 2 {
+                return Err(format!("{} sub-assemblies, not 2", asm.len()));
+            }
             for (g, w) in asm.iter().zip(names.assemblies()) {
                 same("a sub-assembly's path", &g["path"][0], &w)?;
             }
