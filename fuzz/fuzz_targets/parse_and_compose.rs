@@ -76,8 +76,7 @@ fn file_name(line: &str, n: usize) -> String {
             && c != "."
             && c != ".."
             && c.len() <= 32
-            && c
-                .bytes()
+            && c.bytes()
                 .all(|b| b.is_ascii_alphanumeric() || b"._-".contains(&b))
     };
     let parts: Vec<&str> = name.split('/').collect();
@@ -154,20 +153,35 @@ fuzz_target!(|data: &[u8]| {
                 // Rendering the diagnostic (snippet, carets) must not panic,
                 // and it quotes no file outside the directory.
                 let text = d.to_string();
-                assert!(!text.contains(MARKER), "an error quotes secret.toml:\n{text}");
+                assert!(
+                    !text.contains(MARKER),
+                    "an error quotes secret.toml:\n{text}"
+                );
                 return;
             }
         };
         let (model, summary) = (&loaded.model, &loaded.summary);
-        let outside = model.included.iter().find(|p| !roots().iter().any(|r| p.starts_with(r)));
-        assert!(outside.is_none(), "an include outside the roots: {outside:?}");
+        let outside = model
+            .included
+            .iter()
+            .find(|p| !roots().iter().any(|r| p.starts_with(r)));
+        assert!(
+            outside.is_none(),
+            "an include outside the roots: {outside:?}"
+        );
         let json = render::report::json(summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
-        assert!(!json.contains(MARKER), "the JSON shows secret.toml:\n{json}");
+        assert!(
+            !json.contains(MARKER),
+            "the JSON shows secret.toml:\n{json}"
+        );
         let table = render::report::table(summary, top);
-        assert!(!table.contains(MARKER), "the table shows secret.toml:\n{table}");
+        assert!(
+            !table.contains(MARKER),
+            "the table shows secret.toml:\n{table}"
+        );
         let _ = check::validity(summary);
         for c in &model.expect {
             let r = check::evaluate(&loaded.source, summary, c);
