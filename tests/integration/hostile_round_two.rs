@@ -37,7 +37,7 @@ use std::path::{Path, PathBuf};
 /// Include trees: each runs `report` twice, `check` on the top file and on
 /// the tree's directory.
 const TREES: u32 = 120;
-/// Files with hostile names: each runs nine commands, and again on a twin
+/// Files with hostile names: each runs ten commands, and again on a twin
 /// with plain names.
 const NAMED: u32 = 60;
 /// Files with `[expect]` entries too deep.
@@ -935,6 +935,7 @@ fn named_commands(names: &Names, paths: &[PathBuf; 3], dir: &Path) -> Vec<Vec<St
         vec![s("report"), s("--format"), s("json"), p(0)],
         vec![s("materials"), s("--format"), s("json"), p(0)],
         vec![s("check"), s("--format"), s("json"), p(0)],
+        vec![s("diff"), s("--format"), s("json"), p(0), p(2)],
     ]
 }
 
@@ -1037,6 +1038,10 @@ fn json_names(names: &Names, args: &[&str], v: &Value, paths: &[String]) -> Resu
             {
                 return Err(format!("no material named {:?}", names.material));
             }
+        }
+        "diff" => {
+            same("the old file", &v["old"], &paths[0])?;
+            same("the new file", &v["new"], &paths[2])?;
         }
         _ => same("the path", &v["files"][0]["path"], &paths[0])?,
     }
