@@ -1,54 +1,195 @@
-//! Fuzz the part-file parser, the composer and the checker: any text either
-//! is rejected with a diagnostic or gives a summary whose JSON is finite and
-//! valid, whose table renders, and whose `[expect]` messages print no
-//! non-finite number; and wherever the fast path (`model::fast::parse`)
-//! reads the text, serde (`toml::from_str::<RawFile>`) reads it too, to the
-//! same values and spans. Panics, hangs and out-of-memory are the findings.
+//! Fuzz the part-file parser, includes, the composer and the checker: any
+//! set of files either is rejected with a diagnostic or gives a summary
+//! whose JSON is finite and valid, whose table renders, and whose
+//! `[expect]` messages print no non-finite number; an include never reads,
+//! or quotes, a file outside the part file's directory; and wherever the
+//! fast path (`model::fast::parse`) reads a file, serde
+//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans.
+//! Panics, hangs and out-of-memory are the findings.
+//!
+//! The input is one or more files: the text up to the first line that
+//! starts with `#---- ` is the top-level part file `top.toml`; each such
+//! line starts another file, named by the rest of the line (`#---- a.toml`,
+//! `#---- sub/b.toml`). The files are written into a fresh directory for
+//! each input (the loader reads includes from disk), and `top.toml` is
+//! loaded from there, so `include = "a.toml"` finds `a.toml`. An input
+//! without a separator line is one part file, as before includes were
+//! fuzzed. Beside that directory lies `secret.toml`, a valid part file whose
+//! name and comment hold a marker: an include may not reach it
+//! (`include = "../secret.toml"`), so the marker may never appear in any
+//! output.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use massprop::Settings;
 use massprop::analysis::check;
 use massprop::compose::Precision;
-use massprop::diag::Source;
 use massprop::model::fast;
 use massprop::model::raw::RawFile;
 use massprop::render;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// The line that starts another file.
+const SEPARATOR: &str = "#---- ";
+/// At most this many files per input (more only slows each run).
+const MAX_FILES: usize = 16;
+/// In `secret.toml`, outside the files' directory: never in any output.
+const MARKER: &str = "FUZZ-SECRET-8c1e";
+
+/// This process's scratch directory (`$TMPDIR/massprop-fuzz-PID`), with
+/// `secret.toml` in it; each input's files go in its `run/`.
+fn scratch() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let dir = std::env::temp_dir().join(format!("massprop-fuzz-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).expect("the fuzz scratch directory can be made");
+        let secret = format!(
+            "# {MARKER}\nname = \"{MARKER}\"\n[[part]]\nname = \"{MARKER}\"\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n"
+        );
+        std::fs::write(dir.join("secret.toml"), secret).expect("secret.toml can be written");
+        dir
+    })
+}
+
+/// Where includes may come from: the run directory and the working
+/// directory (canonical).
+fn roots() -> &'static [PathBuf] {
+    static ROOTS: OnceLock<Vec<PathBuf>> = OnceLock::new();
+    ROOTS.get_or_init(|| {
+        let run = scratch().join("run");
+        std::fs::create_dir_all(&run).expect("the run directory can be made");
+        [run, PathBuf::from(".")]
+            .iter()
+            .map(|p| p.canonicalize().expect("the roots exist"))
+            .collect()
+    })
+}
+
+/// A file name from a separator line, kept inside the run directory: at
+/// most three plain components (letters, digits, `.`, `-`, `_`; no `..`),
+/// else `fN.toml`.
+fn file_name(line: &str, n: usize) -> String {
+    let name = line.trim_end_matches(['\r', ' ']);
+    let plain = |c: &str| {
+        !c.is_empty()
+            && c != "."
+            && c != ".."
+            && c.len() <= 32
+            && c.bytes()
+                .all(|b| b.is_ascii_alphanumeric() || b"._-".contains(&b))
+    };
+    let parts: Vec<&str> = name.split('/').collect();
+    if parts.len() <= 3 && parts.iter().all(|c| plain(c)) && name != "top.toml" {
+        name.to_string()
+    } else {
+        format!("f{n}.toml")
+    }
+}
+
+/// The input's files: (name, text), `top.toml` first.
+fn split(text: &str) -> Vec<(String, &str)> {
+    let mut files = Vec::new();
+    let mut name = "top.toml".to_string();
+    let mut start = 0;
+    let mut at = 0;
+    for line in text.split_inclusive('\n') {
+        if let Some(rest) = line.strip_prefix(SEPARATOR)
+            && files.len() + 1 < MAX_FILES
+        {
+            files.push((name, &text[start..at]));
+            name = file_name(rest.trim_end_matches('\n'), files.len());
+            start = at + line.len();
+        }
+        at += line.len();
+    }
+    files.push((name, &text[start..]));
+    files
+}
+
+/// Write the files into a fresh `run/` directory; the top-level file's
+/// path.
+fn write_files(files: &[(String, &str)]) -> PathBuf {
+    let run = scratch().join("run");
+    let _ = std::fs::remove_dir_all(&run);
+    std::fs::create_dir_all(&run).expect("the run directory can be made");
+    for (name, text) in files {
+        let path = run.join(name);
+        if let Some(dir) = path.parent() {
+            // A name that is also a directory of another name: the later
+            // one is not written (an include of it is then an error).
+            let _ = std::fs::create_dir_all(dir);
+        }
+        let _ = std::fs::write(&path, text);
+    }
+    run.join("top.toml")
+}
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let source = Source::new("fuzz.toml", text);
-    // As given, and as `Model::parse` gives it to the fast path (without a
-    // byte-order mark).
-    fast_path_agrees(text);
-    if source.text != text {
-        fast_path_agrees(&source.text);
+    let files = split(text);
+    for (_, t) in &files {
+        // As given, and as `Model::parse` gives it to the fast path
+        // (without a byte-order mark).
+        fast_path_agrees(t);
+        if let Some(bare) = t.strip_prefix('\u{feff}') {
+            fast_path_agrees(bare);
+        }
     }
+    let top = write_files(&files);
+    let top = top.to_str().expect("the scratch path is UTF-8");
     for precision in [Precision::Standard, Precision::Extended] {
-        // The pipeline every command runs: parse, resolve, compose.
+        // The pipeline every command runs: read, parse (includes from
+        // disk), resolve, compose.
         let settings = Settings {
             precision,
             ..Settings::default()
         };
-        let loaded = match massprop::load_source(source.clone(), &settings) {
+        let loaded = match massprop::load(top, &settings) {
             Ok(loaded) => loaded,
             Err(d) => {
-                // Rendering the diagnostic (snippet, carets) must not panic.
-                let _ = d.to_string();
+                // Rendering the diagnostic (snippet, carets) must not panic,
+                // and it quotes no file outside the directory.
+                let text = d.to_string();
+                assert!(
+                    !text.contains(MARKER),
+                    "an error quotes secret.toml:\n{text}"
+                );
                 return;
             }
         };
         let (model, summary) = (&loaded.model, &loaded.summary);
+        let outside = model
+            .included
+            .iter()
+            .find(|p| !roots().iter().any(|r| p.starts_with(r)));
+        assert!(
+            outside.is_none(),
+            "an include outside the roots: {outside:?}"
+        );
         let json = render::report::json(summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
-        let _ = render::report::table(summary, "fuzz.toml");
+        assert!(
+            !json.contains(MARKER),
+            "the JSON shows secret.toml:\n{json}"
+        );
+        let table = render::report::table(summary, top);
+        assert!(
+            !table.contains(MARKER),
+            "the table shows secret.toml:\n{table}"
+        );
         let _ = check::validity(summary);
         for c in &model.expect {
-            let r = check::evaluate(&source, summary, c);
+            let r = check::evaluate(&loaded.source, summary, c);
+            // `check` words only the failures: a passing `{ min = … }` has
+            // no maximum to be above.
+            if r.pass {
+                continue;
+            }
             let message = render::check::message("fuzz.toml", &r);
             let words = message.split(|c: char| !c.is_ascii_alphanumeric());
             assert!(

@@ -44,7 +44,7 @@ const HANG: Duration = Duration::from_secs(20);
 
 /// `massprop ARGS` in process, on its own thread: Err(message) if it panics
 /// or takes longer than `HANG`.
-fn run(args: &[&str]) -> Result<Result<Output, Diagnostic>, String> {
+pub(crate) fn run(args: &[&str]) -> Result<Result<Output, Diagnostic>, String> {
     let mut argv = vec!["massprop".to_string()];
     argv.extend(args.iter().map(|a| a.to_string()));
     let cli = Cli::try_parse_from(&argv).map_err(|e| format!("bad command line: {e}"))?;
@@ -73,7 +73,7 @@ fn run(args: &[&str]) -> Result<Result<Output, Diagnostic>, String> {
 /// Words that mean a non-finite number was printed. toml's own messages
 /// name the keywords in backquotes (`invalid float, expected \`inf\``):
 /// those are words, not results.
-fn non_finite_word(text: &str) -> Option<String> {
+pub(crate) fn non_finite_word(text: &str) -> Option<String> {
     let text = &text.replace("`inf`", "").replace("`nan`", "");
     if text.contains('∞') {
         return Some("∞".to_string());
@@ -97,7 +97,7 @@ const MAY_BE_NULL: &[&str] = &[
 
 /// Every number in `v` is finite and nothing is `null` except where
 /// docs/json.md allows it; `key` is the key `v` (or its array) sits under.
-fn walk(v: &Value, key: &str, path: &str) -> Result<(), String> {
+pub(crate) fn walk(v: &Value, key: &str, path: &str) -> Result<(), String> {
     match v {
         Value::Null if MAY_BE_NULL.contains(&key) => Ok(()),
         Value::Null => Err(format!("null at {path}")),
@@ -125,7 +125,7 @@ fn numeric(v: &Value) -> bool {
     }
 }
 
-fn check_json(stdout: &str) -> Result<(), String> {
+pub(crate) fn check_json(stdout: &str) -> Result<(), String> {
     let json: Value =
         serde_json::from_str(stdout).map_err(|e| format!("output is not JSON ({e}): {stdout}"))?;
     for key in ["mass", "center_of_mass", "inertia_com", "principal_moments"] {
@@ -143,13 +143,13 @@ fn check_json(stdout: &str) -> Result<(), String> {
 /// Err describes the first broken promise; Ok(true) if some report
 /// computed the body. `check` quotes the lines it rejects, so its output is
 /// searched for "inf" and "nan" only when the file has none.
-fn hostile(path: &str) -> Result<bool, String> {
+pub(crate) fn hostile(path: &str) -> Result<bool, String> {
     hostile_including(path, &[])
 }
 
 /// `hostile` for a file that includes the files `included` (whose text
 /// messages may quote too).
-fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, String> {
+pub(crate) fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, String> {
     let input = std::fs::read(path).unwrap();
     let quiet_input = std::iter::once(&input[..])
         .chain(included.iter().copied())
@@ -273,7 +273,7 @@ fn hostile_file(dir: &Path, file: &str, text: &[u8]) -> Result<bool, String> {
 /// For a deeper local search: `HOSTILE_CASES=N` runs N cases instead, and
 /// `HOSTILE_KEEP_GOING=1` reports every failing case (unshrunk) at the end
 /// instead of stopping at the first.
-fn property<S: Strategy>(
+pub(crate) fn property<S: Strategy>(
     name: &str,
     cases: u32,
     strategy: S,
@@ -425,7 +425,7 @@ const UNITS: &[&str] = &[
 /// A scalar: mostly ordinary, often a valid extreme, sometimes invalid or
 /// with units, rarely not a number at all. A file has some twenty values:
 /// about half the files have no invalid one and reach the arithmetic.
-fn value(l: u32) -> BoxedStrategy<String> {
+pub(crate) fn value(l: u32) -> BoxedStrategy<String> {
     prop_oneof![
         60 => prop::sample::select(NICE).prop_map(str::to_string),
         8 => prop::sample::select(FINITE_EXTREME).prop_map(str::to_string),
@@ -1787,7 +1787,8 @@ fn example_files_pass_the_hostile_checks() {
 }
 
 /// Every input the fuzzer (fuzz/, docs/fuzzing.md) has crashed massprop
-/// with stays a test: each file in fuzz/regressions/.
+/// with stays a test: each file in fuzz/regressions/. An input of several
+/// files (lines `#---- NAME`) is split as the fuzz target splits it.
 #[test]
 fn fuzz_regressions_give_finite_results_or_diagnostics() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
@@ -1797,9 +1798,70 @@ fn fuzz_regressions_give_finite_results_or_diagnostics() {
         .collect();
     files.sort();
     assert!(files.len() >= 4, "fuzz/regressions/ lost its files");
+    let scratch = crate::common::scratch("hostile", "regressions");
     for path in files {
-        hostile(path.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        fast_path_agrees(&std::fs::read(&path).unwrap())
-            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let bytes = std::fs::read(&path).unwrap();
+        let framed = std::str::from_utf8(&bytes)
+            .ok()
+            .filter(|t| t.starts_with(SEPARATOR) || t.contains(&format!("\n{SEPARATOR}")));
+        let (top, texts) = match framed {
+            Some(text) => {
+                let files = unframe(text);
+                let run = scratch.join(path.file_name().unwrap());
+                for (name, t) in &files {
+                    let p = run.join(name);
+                    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+                    let _ = std::fs::write(&p, t);
+                }
+                let texts = files.iter().map(|(_, t)| t.as_bytes().to_vec()).collect();
+                (run.join("top.toml"), texts)
+            }
+            None => (path.clone(), vec![bytes]),
+        };
+        hostile(top.to_str().unwrap()).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        for t in texts {
+            fast_path_agrees(&t).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        }
     }
+}
+
+/// The line that starts another file in a fuzz input.
+const SEPARATOR: &str = "#---- ";
+
+/// A fuzz input's files, (name, text), `top.toml` first, as
+/// fuzz/fuzz_targets/parse_and_compose.rs splits it: a line `#---- NAME`
+/// starts the file NAME (at most three plain components, else `fN.toml`),
+/// at most 16 files.
+fn unframe(text: &str) -> Vec<(String, &str)> {
+    let file_name = |line: &str, n: usize| {
+        let name = line.trim_end_matches(['\r', ' ']);
+        let plain = |c: &str| {
+            !c.is_empty()
+                && c != "."
+                && c != ".."
+                && c.len() <= 32
+                && c.bytes()
+                    .all(|b| b.is_ascii_alphanumeric() || b"._-".contains(&b))
+        };
+        let parts: Vec<&str> = name.split('/').collect();
+        if parts.len() <= 3 && parts.iter().all(|c| plain(c)) && name != "top.toml" {
+            name.to_string()
+        } else {
+            format!("f{n}.toml")
+        }
+    };
+    let mut files = Vec::new();
+    let (mut name, mut start, mut at) = ("top.toml".to_string(), 0, 0);
+    for line in text.split_inclusive('\n') {
+        if let Some(rest) = line.strip_prefix(SEPARATOR)
+            && files.len() + 1 < 16
+        {
+            files.push((name, &text[start..at]));
+            name = file_name(rest.trim_end_matches('\n'), files.len());
+            start = at + line.len();
+        }
+        at += line.len();
+    }
+    files.push((name, &text[start..]));
+    files
 }

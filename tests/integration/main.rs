@@ -9,6 +9,7 @@ mod diff;
 mod docs;
 mod files;
 mod hostile;
+mod hostile_round_two;
 mod invariants;
 mod layers;
 mod package;
