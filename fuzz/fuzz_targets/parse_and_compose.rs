@@ -210,11 +210,23 @@ fn fast_path_agrees(text: &str) {
     };
     let serde = toml::from_str::<RawFile>(text)
         .unwrap_or_else(|e| panic!("the fast path reads a file that serde rejects: {e}"));
+    let fast = format!("{fast:?}");
     assert_eq!(
-        format!("{fast:?}"),
+        fast,
         format!("{serde:?}"),
         "the fast path and serde read the file differently"
     );
+    // Read a few tokens at a time, the same file or declined (a chunk that
+    // ends inside a value), never another.
+    for n in [1, 5] {
+        if let Some(chunked) = fast::parse_in_chunks(text, n) {
+            assert_eq!(
+                format!("{chunked:?}"),
+                fast,
+                "the fast path reads the file otherwise in chunks of {n} tokens"
+            );
+        }
+    }
 }
 
 /// serde_json writes a non-finite f64 as `null` (it never writes `inf` or
