@@ -335,12 +335,13 @@ impl<'i> Builder<'i> {
     }
 }
 
-/// Set a field once: a second value is a duplicate key.
-fn set<T>(field: &mut Option<T>, value: T) -> Option<()> {
+/// Set a field once: a second value is a duplicate key. (`Into`: the
+/// rarely given keys of a part are boxed.)
+fn set<T, V: Into<T>>(field: &mut Option<T>, value: V) -> Option<()> {
     match field {
         Some(_) => None,
         None => {
-            *field = Some(value);
+            *field = Some(value.into());
             Some(())
         }
     }

@@ -342,7 +342,7 @@ impl Ctx<'_> {
         names: &mut AssemblyNames,
     ) -> Result<(), Diagnostic> {
         let p = raw.get_ref();
-        let inc = p.include.as_ref().expect("the caller checked `include`");
+        let inc = p.include.as_deref().expect("the caller checked `include`");
         if let Some((key, span)) = super::parts::present_keys(p)
             .into_iter()
             .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))

@@ -99,7 +99,7 @@ impl Ctx<'_> {
         let out = match shape.info().material {
             MaterialRule::Volume => (si, file),
             MaterialRule::Thickness => {
-                let t = p.thickness.as_ref().ok_or_else(|| needs("thickness"))?;
+                let t = p.thickness.as_deref().ok_or_else(|| needs("thickness"))?;
                 factor(
                     self.positive(t, "thickness", Dim::LENGTH)?,
                     self.file_quantity(t, "thickness", Dim::LENGTH)?,

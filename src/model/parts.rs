@@ -38,12 +38,15 @@ impl Ctx<'_> {
                 material.expect("`part` checked that a mass, density or material is given"),
             ),
         };
-        fn req(v: &Option<Vector>) -> &Vector {
-            v.as_ref().expect("`part` checked the placement keys")
+        // A key kept in the part (`center`) or boxed (`corner`).
+        fn req<V: std::borrow::Borrow<Vector>>(v: &Option<V>) -> &Vector {
+            v.as_ref()
+                .expect("`part` checked the placement keys")
+                .borrow()
         }
         let place = match (info.dims, by_edges) {
             (Dims::Vertices, _) => {
-                let rows = p.vertices.as_ref().expect("`part` checked the vertices");
+                let rows = p.vertices.as_deref().expect("`part` checked the vertices");
                 let mut vertices = [[0.0; 3]; 3];
                 for (v, raw) in vertices.iter_mut().zip(rows.get_ref()) {
                     *v = self.file_vec3(raw, "vertices", Dim::LENGTH)?;
@@ -51,7 +54,7 @@ impl Ctx<'_> {
                 Place::Vertices(vertices)
             }
             (Dims::Given, _) => {
-                let rows = p.inertia.as_ref().expect("`part` checked the inertia");
+                let rows = p.inertia.as_deref().expect("`part` checked the inertia");
                 let mut m = [[0.0; 3]; 3];
                 for (r, raw) in m.iter_mut().zip(rows.get_ref()) {
                     *r = self.file_vec3(raw, "inertia", Dim::INERTIA)?;
@@ -68,7 +71,10 @@ impl Ctx<'_> {
             },
             (_, true) => {
                 let mut edges = [[0.0; 3]; 3];
-                let raw = p.edges.as_ref().expect("`part` checked the placement keys");
+                let raw = p
+                    .edges
+                    .as_deref()
+                    .expect("`part` checked the placement keys");
                 for (e, r) in edges.iter_mut().zip(raw.get_ref()) {
                     *e = self.file_vec3(r, "edges", Dim::LENGTH)?;
                 }
@@ -87,11 +93,11 @@ impl Ctx<'_> {
                         }
                     }
                     Dims::Length => {
-                        let l = p.length.as_ref().expect("`part` checked the length");
+                        let l = p.length.as_deref().expect("`part` checked the length");
                         extent[0] = self.file_quantity(l, "length", Dim::LENGTH)?;
                     }
                     Dims::Radii { length } => {
-                        let r = p.radius.as_ref().expect("`part` checked the radius");
+                        let r = p.radius.as_deref().expect("`part` checked the radius");
                         extent[0] = self.file_quantity(r, "radius", Dim::LENGTH)?;
                         if let Some(q) = &p.inner_radius {
                             extent[1] = self.file_quantity(q, "inner_radius", Dim::LENGTH)?;
@@ -386,33 +392,36 @@ impl Ctx<'_> {
 /// Every key a part may have, with where it is when present.
 fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
     [
-        ("density", p.density.as_ref().map(Spanned::span)),
-        ("areal_density", p.areal_density.as_ref().map(Spanned::span)),
+        ("density", p.density.as_deref().map(Spanned::span)),
+        (
+            "areal_density",
+            p.areal_density.as_deref().map(Spanned::span),
+        ),
         (
             "linear_density",
-            p.linear_density.as_ref().map(Spanned::span),
+            p.linear_density.as_deref().map(Spanned::span),
         ),
         ("size", p.size.as_ref().map(Spanned::span)),
-        ("length", p.length.as_ref().map(Spanned::span)),
+        ("length", p.length.as_deref().map(Spanned::span)),
         ("center", p.center.as_ref().map(Spanned::span)),
-        ("rotation", p.rotation.as_ref().map(Spanned::span)),
-        ("corner", p.corner.as_ref().map(Spanned::span)),
-        ("edges", p.edges.as_ref().map(Spanned::span)),
-        ("from", p.from.as_ref().map(Spanned::span)),
-        ("to", p.to.as_ref().map(Spanned::span)),
+        ("rotation", p.rotation.as_deref().map(Spanned::span)),
+        ("corner", p.corner.as_deref().map(Spanned::span)),
+        ("edges", p.edges.as_deref().map(Spanned::span)),
+        ("from", p.from.as_deref().map(Spanned::span)),
+        ("to", p.to.as_deref().map(Spanned::span)),
         ("mass", p.mass.as_ref().map(Spanned::span)),
-        ("thickness", p.thickness.as_ref().map(Spanned::span)),
-        ("diameter", p.diameter.as_ref().map(Spanned::span)),
-        ("radius", p.radius.as_ref().map(Spanned::span)),
-        ("inner_radius", p.inner_radius.as_ref().map(Spanned::span)),
-        ("remove", p.remove.as_ref().map(Spanned::span)),
-        ("inertia", p.inertia.as_ref().map(Spanned::span)),
-        ("products", p.products.as_ref().map(Spanned::span)),
-        ("vertices", p.vertices.as_ref().map(Spanned::span)),
-        ("material", p.material.as_ref().map(Spanned::span)),
-        ("area", p.area.as_ref().map(Spanned::span)),
-        ("include", p.include.as_ref().map(Spanned::span)),
-        ("origin", p.origin.as_ref().map(Spanned::span)),
+        ("thickness", p.thickness.as_deref().map(Spanned::span)),
+        ("diameter", p.diameter.as_deref().map(Spanned::span)),
+        ("radius", p.radius.as_deref().map(Spanned::span)),
+        ("inner_radius", p.inner_radius.as_deref().map(Spanned::span)),
+        ("remove", p.remove.as_deref().map(Spanned::span)),
+        ("inertia", p.inertia.as_deref().map(Spanned::span)),
+        ("products", p.products.as_deref().map(Spanned::span)),
+        ("vertices", p.vertices.as_deref().map(Spanned::span)),
+        ("material", p.material.as_deref().map(Spanned::span)),
+        ("area", p.area.as_deref().map(Spanned::span)),
+        ("include", p.include.as_deref().map(Spanned::span)),
+        ("origin", p.origin.as_deref().map(Spanned::span)),
     ]
 }
 
@@ -427,12 +436,12 @@ fn span_of(keys: &[(&str, Option<Range<usize>>)], key: &str) -> Option<Range<usi
 /// `ShapeInfo` names (`thickness`, `diameter`, `area`).
 pub(super) fn quantity_key<'p>(p: &'p RawPart, key: &str) -> Option<&'p Spanned<Quantity>> {
     match key {
-        "density" => p.density.as_ref(),
-        "areal_density" => p.areal_density.as_ref(),
-        "linear_density" => p.linear_density.as_ref(),
-        "thickness" => p.thickness.as_ref(),
-        "diameter" => p.diameter.as_ref(),
-        "area" => p.area.as_ref(),
+        "density" => p.density.as_deref(),
+        "areal_density" => p.areal_density.as_deref(),
+        "linear_density" => p.linear_density.as_deref(),
+        "thickness" => p.thickness.as_deref(),
+        "diameter" => p.diameter.as_deref(),
+        "area" => p.area.as_deref(),
         _ => unreachable!("`{key}` is not a quantity key of `ShapeInfo`"),
     }
 }

@@ -55,11 +55,11 @@ impl Ctx<'_> {
                 dims
             }
             Dims::Length => {
-                let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
+                let l = p.length.as_deref().ok_or_else(|| missing("length"))?;
                 vec![self.positive(l, "length", Dim::LENGTH)?]
             }
             Dims::Radii { length } => {
-                let r = p.radius.as_ref().ok_or_else(|| missing("radius"))?;
+                let r = p.radius.as_deref().ok_or_else(|| missing("radius"))?;
                 let outer = self.positive(r, "radius", Dim::LENGTH)?;
                 let inner = match &p.inner_radius {
                     None => 0.0,
@@ -75,14 +75,14 @@ impl Ctx<'_> {
                 };
                 let mut dims = vec![outer, inner];
                 if length {
-                    let l = p.length.as_ref().ok_or_else(|| missing("length"))?;
+                    let l = p.length.as_deref().ok_or_else(|| missing("length"))?;
                     dims.push(self.positive(l, "length", Dim::LENGTH)?);
                 }
                 dims
             }
             Dims::None => vec![],
             Dims::Given => {
-                p.inertia.as_ref().ok_or_else(|| missing("inertia"))?;
+                p.inertia.as_deref().ok_or_else(|| missing("inertia"))?;
                 vec![]
             }
             Dims::Vertices => {
@@ -111,11 +111,11 @@ impl Ctx<'_> {
         let missing = |key: &str| self.missing(shape, span.clone(), key);
         let (origin, edges) = if shape.info().spanned == Some(Spans::FromTo) {
             let from = self.vec3(
-                p.from.as_ref().ok_or_else(|| missing("from"))?,
+                p.from.as_deref().ok_or_else(|| missing("from"))?,
                 "from",
                 Dim::LENGTH,
             )?;
-            let to_raw = p.to.as_ref().ok_or_else(|| missing("to"))?;
+            let to_raw = p.to.as_deref().ok_or_else(|| missing("to"))?;
             let to = self.vec3(to_raw, "to", Dim::LENGTH)?;
             let e = to - from;
             if e.amax() == 0.0 {
@@ -132,9 +132,9 @@ impl Ctx<'_> {
             }
             (from, vec![(e, to_raw.span())])
         } else {
-            let corner = p.corner.as_ref().ok_or_else(|| missing("corner"))?;
+            let corner = p.corner.as_deref().ok_or_else(|| missing("corner"))?;
             let corner = self.vec3(corner, "corner", Dim::LENGTH)?;
-            let edges_raw = p.edges.as_ref().ok_or_else(|| missing("edges"))?;
+            let edges_raw = p.edges.as_deref().ok_or_else(|| missing("edges"))?;
             let n = shape.edge_count();
             let mut edges = Vec::with_capacity(n);
             for e in self.exactly(edges_raw, n, Whose::Shape(s), "`edges`")? {
@@ -174,7 +174,7 @@ impl Ctx<'_> {
     /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
     /// longest edge.
     pub(super) fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
-        let raw = p.vertices.as_ref().ok_or(missing)?;
+        let raw = p.vertices.as_deref().ok_or(missing)?;
         let rows = self.exactly(raw, 3, Whose::Shape("triangle"), "`vertices`")?;
         let mut v = [Vector3::zeros(); 3];
         for (out, r) in v.iter_mut().zip(rows) {
@@ -225,7 +225,7 @@ impl Ctx<'_> {
     /// I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest. Returns that
     /// second moment, local axes.
     pub(super) fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
-        let raw = p.inertia.as_ref().expect("`part` checked the inertia");
+        let raw = p.inertia.as_deref().expect("`part` checked the inertia");
         if let Some(pr) = &p.products
             && !matches!(pr.get_ref().as_str(), "tensor" | "positive")
         {

@@ -85,6 +85,10 @@ pub struct RawUnits {
     pub mass: Option<Spanned<String>>,
 }
 
+/// NOTE: the keys most parts give (`name`, `shape`, `mass`, `size`,
+/// `center`) are kept in the struct; every other key is boxed, so that a
+/// part is 368 bytes, not 1,240: a file's parts are all held at once while
+/// it is read, and they were most of the memory of reading a large file.
 #[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
 pub struct RawPart {
@@ -92,40 +96,40 @@ pub struct RawPart {
     /// The primitive; absent only in a part that `include`s a file.
     pub shape: Option<Spanned<String>>,
     pub mass: Option<Spanned<Quantity>>,
-    pub density: Option<Spanned<Quantity>>,
-    pub areal_density: Option<Spanned<Quantity>>,
-    pub linear_density: Option<Spanned<Quantity>>,
+    pub density: Option<Box<Spanned<Quantity>>>,
+    pub areal_density: Option<Box<Spanned<Quantity>>>,
+    pub linear_density: Option<Box<Spanned<Quantity>>>,
     pub size: Option<Vector>,
-    pub length: Option<Spanned<Quantity>>,
+    pub length: Option<Box<Spanned<Quantity>>>,
     pub center: Option<Vector>,
-    pub rotation: Option<Spanned<RawRotation>>,
-    pub corner: Option<Vector>,
-    pub edges: Option<Spanned<Vec<Vector>>>,
-    pub from: Option<Vector>,
-    pub to: Option<Vector>,
+    pub rotation: Option<Box<Spanned<RawRotation>>>,
+    pub corner: Option<Box<Vector>>,
+    pub edges: Option<Box<Spanned<Vec<Vector>>>>,
+    pub from: Option<Box<Vector>>,
+    pub to: Option<Box<Vector>>,
     /// A plate's real thickness: reported against, never composed.
-    pub thickness: Option<Spanned<Quantity>>,
+    pub thickness: Option<Box<Spanned<Quantity>>>,
     /// A rod's real diameter: reported against, never composed.
-    pub diameter: Option<Spanned<Quantity>>,
+    pub diameter: Option<Box<Spanned<Quantity>>>,
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
-    pub radius: Option<Spanned<Quantity>>,
-    pub inner_radius: Option<Spanned<Quantity>>,
+    pub radius: Option<Box<Spanned<Quantity>>>,
+    pub inner_radius: Option<Box<Spanned<Quantity>>>,
     /// Another part file placed here as a sub-assembly.
-    pub include: Option<Spanned<String>>,
+    pub include: Option<Box<Spanned<String>>>,
     /// Where the included file's origin goes (with `include`).
-    pub origin: Option<Vector>,
+    pub origin: Option<Box<Vector>>,
     /// A named material instead of a density.
-    pub material: Option<Spanned<String>>,
+    pub material: Option<Box<Spanned<String>>>,
     /// A rod's cross-section area (with `material`).
-    pub area: Option<Spanned<Quantity>>,
+    pub area: Option<Box<Spanned<Quantity>>>,
     /// A triangle's three vertices.
-    pub vertices: Option<Spanned<Vec<Vector>>>,
+    pub vertices: Option<Box<Spanned<Vec<Vector>>>>,
     /// A given inertia tensor (rows) about the centroid, local axes.
-    pub inertia: Option<Spanned<Vec<Vector>>>,
+    pub inertia: Option<Box<Spanned<Vec<Vector>>>>,
     /// Sign convention of `inertia`'s products: "tensor" or "positive".
-    pub products: Option<Spanned<String>>,
+    pub products: Option<Box<Spanned<String>>>,
     /// A cut-out: subtracted from the body.
-    pub remove: Option<Spanned<bool>>,
+    pub remove: Option<Box<Spanned<bool>>>,
 }
 
 #[derive(Deserialize, Debug, Default)]
