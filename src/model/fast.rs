@@ -67,13 +67,14 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
     // NOTE: lexed and parsed a chunk of whole tables at a time, not the
     // whole file: the lexer's tokens take 14 bytes of memory per byte of
     // input, more than the rest of reading a file together. A chunk ends
-    // before a `[` that opens a line, once it holds `CHUNK` tokens, and is
-    // closed with an end-of-file token. Where that `[` is a table header,
-    // each chunk is a document of whole tables and the parser's events are
-    // those of the whole file. Where it is not (a line of an array that
-    // starts with `[`), the chunk before it ends inside a value: the parser
-    // or the builder (a value still open, `finish`, or the next header)
-    // fails, and the serde path decides, as for any file this declines.
+    // before a `[` that opens a line outside any array or inline table
+    // (strings and comments are single tokens, so counting brackets is
+    // exact), once it holds `CHUNK` tokens, and is closed with an
+    // end-of-file token: that `[` opens a table header, so each chunk is a
+    // document of whole tables and the parser's events are those of the
+    // whole file. Should a chunk ever end inside a value, the parser or the
+    // builder (a value still open, `finish`, or the next header) fails,
+    // and the serde path decides, as for any file this declines.
     let mut lexer = source.lex();
     let eof = Source::new("")
         .lex()
@@ -81,6 +82,8 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
         .expect("invariant: the lexer ends every input with an end-of-file token");
     let mut chunk: Vec<Token> = Vec::with_capacity(chunk_tokens.min(CHUNK) + 1);
     let mut line_start = true;
+    // Arrays and inline tables open at this point.
+    let mut depth = 0usize;
     loop {
         let token = lexer.next();
         let end = match &token {
@@ -88,6 +91,7 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
             Some(t) => {
                 chunk.len() >= chunk_tokens
                     && line_start
+                    && depth == 0
                     && t.kind() == TokenKind::LeftSquareBracket
             }
         };
@@ -104,6 +108,13 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
             }
         }
         let Some(t) = token else { break };
+        match t.kind() {
+            TokenKind::LeftSquareBracket | TokenKind::LeftCurlyBracket => depth += 1,
+            TokenKind::RightSquareBracket | TokenKind::RightCurlyBracket => {
+                depth = depth.saturating_sub(1);
+            }
+            _ => {}
+        }
         line_start = t.kind() == TokenKind::Newline;
         chunk.push(t);
     }
@@ -563,11 +574,12 @@ mod tests {
         let fast = parse(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
         let serde: RawFile = toml::from_str(text).unwrap();
         assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
-        in_chunks_the_same_or_declined(text);
+        assert_eq!(in_chunks_the_same_or_declined(text), 0, "{text}");
     }
 
     /// Read in chunks of 1 to 40 tokens: the same `RawFile` as read whole,
-    /// or declined (a chunk that ended inside a value); never another.
+    /// or declined (should a chunk end inside a value); never another.
+    /// Returns how many chunk sizes declined (the callers require none).
     fn in_chunks_the_same_or_declined(text: &str) -> usize {
         let whole = format!(
             "{:?}",
@@ -600,19 +612,19 @@ mod tests {
     }
 
     #[test]
-    fn a_chunk_that_ends_inside_a_value_is_declined_not_misread() {
-        // Lines of an array that start with `[`, as a table header does.
+    fn a_line_of_an_array_that_starts_with_a_bracket_does_not_end_a_chunk() {
+        // Lines of arrays that start with `[`, as a table header does.
         let text = "[[part]]\nshape = \"plate\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [\n[0, 125, 0],\n[0, 0, 100]]\n\
-                    [[part]]\nshape = \"rod\"\nmass = 1\nfrom = [\n0, 0, 0]\nto = [\n[1][0], 0, 0]\n";
-        let serde: Result<RawFile, _> = toml::from_str(text);
-        assert!(serde.is_err(), "`[1][0]` is no TOML value");
-        assert!(parse_in_chunks(text, usize::MAX).is_none());
-        let text = "[[part]]\nshape = \"plate\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [\n[0, 125, 0],\n[0, 0, 100]]\n";
+                    [[part]]\nshape = \"box\"\nmass = 1\ncenter = [\n0, 0, 0]\nsize = [\n1,\n2, 3]\n\
+                    rotation = { matrix = [\n[1, 0, 0],\n[0, 1, 0],\n[0, 0, 1]] }\n";
         same(text);
-        assert!(
-            in_chunks_the_same_or_declined(text) > 0,
-            "some chunk ends inside `edges`"
-        );
+        // `[1][0]` is no TOML value: declined however it is read.
+        let bad =
+            "[[part]]\nshape = \"rod\"\nmass = 1\nfrom = [\n0, 0, 0]\nto = [\n[1][0], 0, 0]\n";
+        assert!(toml::from_str::<RawFile>(bad).is_err());
+        for n in [1, 2, 3, 5, usize::MAX] {
+            assert!(parse_in_chunks(bad, n).is_none(), "chunks of {n}");
+        }
     }
 
     /// The fast path leaves the file to serde.
