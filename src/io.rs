@@ -54,16 +54,34 @@ impl FileId {
         #[cfg(unix)]
         {
             use std::os::fd::AsFd;
-            use std::os::unix::fs::MetadataExt;
-            // fstat of fd 0 through a duplicate, so nothing closes stdin.
-            let fd = std::io::stdin().as_fd().try_clone_to_owned().ok()?;
-            let meta = std::fs::File::from(fd).metadata().ok()?;
-            meta.is_file().then(|| FileId((meta.dev(), meta.ino())))
+            FileId::of_regular_fd(std::io::stdin().as_fd())
         }
         #[cfg(not(unix))]
         {
             None
         }
+    }
+
+    /// The regular file behind standard output (`> out.txt`), likewise.
+    pub fn of_stdout() -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::fd::AsFd;
+            FileId::of_regular_fd(std::io::stdout().as_fd())
+        }
+        #[cfg(not(unix))]
+        {
+            None
+        }
+    }
+
+    #[cfg(unix)]
+    fn of_regular_fd(fd: std::os::fd::BorrowedFd<'_>) -> Option<FileId> {
+        use std::os::unix::fs::MetadataExt;
+        // fstat through a duplicate, so nothing closes the stream.
+        let fd = fd.try_clone_to_owned().ok()?;
+        let meta = std::fs::File::from(fd).metadata().ok()?;
+        meta.is_file().then(|| FileId((meta.dev(), meta.ino())))
     }
 }
 
@@ -172,6 +190,17 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
             .and_then(|mut f| f.write_all(text.as_bytes()))
             .map_err(fail)
     };
+    // `-o /dev/stdout` (or any name of the file) with standard output a
+    // file (`{ echo head; massprop … -o /dev/stdout; } > out.txt`): written
+    // to standard output, after what the shell wrote there. A rename put a
+    // new file in place of out.txt and lost the rest.
+    if FileId::of_stdout().is_some_and(|out| FileId::of(Path::new(path)) == Some(out)) {
+        let mut out = std::io::stdout().lock();
+        return out
+            .write_all(text.as_bytes())
+            .and_then(|()| out.flush())
+            .map_err(fail);
+    }
     // NOTE: asked first, of the path itself (stat follows the links): with
     // stdout a pipe, /dev/stdout resolves to /proc/self/fd/1 and on to
     // `pipe:[N]`, which `canonicalize` cannot resolve — a rename then

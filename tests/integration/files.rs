@@ -547,3 +547,36 @@ fn a_failed_write_names_no_temporary_file() {
     assert!(!stderr.contains("massprop.tmp"), "{stderr}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o /dev/stdout` (or any other name of the file) with standard output
+/// redirected to a file appends to what the shell wrote there, as writing
+/// to standard output does; a rename once put a new file in its place, and
+/// everything before and after was lost.
+#[test]
+fn output_onto_the_file_behind_standard_output_is_written_to_it() {
+    use std::io::Write;
+    let dir = scratch("files", "onto-stdout");
+    let part = dir.join("wheel.toml");
+    std::fs::write(&part, WHEEL).unwrap();
+    let out = dir.join("out.txt");
+    for name in ["/dev/stdout", "/proc/self/fd/1", out.to_str().unwrap()] {
+        let mut file = std::fs::File::create(&out).unwrap();
+        file.write_all(b"HEADER\n").unwrap();
+        let before = ino(&out).0;
+        let status = Command::new(env!("CARGO_BIN_EXE_massprop"))
+            .args(["report", "--format", "json", s(&part), "-o", name])
+            .stdout(Stdio::from(file.try_clone().unwrap()))
+            .status()
+            .unwrap();
+        assert!(status.success(), "{name}");
+        file.write_all(b"TRAILER\n").unwrap();
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert_eq!(ino(&out).0, before, "{name}: the file was replaced");
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 3, "{name}: {text}");
+        assert_eq!((lines[0], lines[2]), ("HEADER", "TRAILER"), "{name}");
+        let json: serde_json::Value = serde_json::from_str(lines[1]).unwrap();
+        assert_eq!(json["mass"], 2.0);
+    }
+    std::fs::remove_dir_all(&dir).ok();
+}
