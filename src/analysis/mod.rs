@@ -70,7 +70,17 @@ pub fn load(path: &str, settings: &Settings) -> Result<Loaded, Diagnostic> {
 
 /// `load` of a source already read.
 pub fn load_source(source: Source, settings: &Settings) -> Result<Loaded, Diagnostic> {
-    let mut model = Model::parse_with(&source, &settings.include_roots)?;
+    load_source_reading(source, settings, &mut Vec::new())
+}
+
+/// `load_source`, adding to `read` every file included, valid or not
+/// (`model::Model::parse_reading`).
+pub fn load_source_reading(
+    source: Source,
+    settings: &Settings,
+    read: &mut Vec<std::path::PathBuf>,
+) -> Result<Loaded, Diagnostic> {
+    let mut model = Model::parse_reading(&source, &settings.include_roots, read)?;
     let only = match &settings.only {
         Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
         None => None,

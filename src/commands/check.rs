@@ -31,8 +31,10 @@ pub struct Options {
 /// What a search for part files found. Paths are kept as the file system
 /// gave them (a name need not be UTF-8) and shown by `display_path`.
 enum Found {
-    /// A part file to check (as named, or found in a directory).
-    File(PathBuf),
+    /// A part file to check: as named (`false`), or found in a directory
+    /// (`true`: it must read as a part file before anything of it is
+    /// quoted).
+    File(PathBuf, bool),
     /// Something that is not checked, with why: a FIFO, socket or device
     /// named `*.toml` (never opened: reading one can block forever), or a
     /// directory that cannot be read. It counts as invalid; the search goes
@@ -87,7 +89,7 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
             } else if p.extension().is_some_and(|e| e == "toml") {
                 // The target's type, without opening it.
                 match std::fs::metadata(&p) {
-                    Ok(m) if m.is_file() => out.push(Found::File(p)),
+                    Ok(m) if m.is_file() => out.push(Found::File(p, true)),
                     Ok(m) if m.is_dir() => {}
                     _ => {
                         let name = display_path(&p);
@@ -107,7 +109,7 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
             let root = std::fs::canonicalize(p).unwrap_or_else(|_| p.clone());
             walk(p, &root, &mut out);
         } else {
-            out.push(Found::File(p.clone()));
+            out.push(Found::File(p.clone(), false));
         }
     }
     out
@@ -140,8 +142,8 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     // Every file found, valid or not, and every file those include.
     let mut read: Vec<PathBuf> = Vec::new();
     for found in found {
-        let path = match found {
-            Found::File(path) => path,
+        let (path, found) = match found {
+            Found::File(path, found) => (path, found),
             Found::Skipped(path, d) => {
                 results.push(invalid(path, d, &mut stderr));
                 continue;
@@ -158,9 +160,8 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         // itself (standard input, a write error) is the error.
         let mut not_blessed = None;
         if o.bless {
-            // NOTE: blessing writes through `io::write_atomically`, which
-            // takes a UTF-8 path; a name that is not UTF-8 is checked, not
-            // blessed.
+            // NOTE: `bless_file` takes a UTF-8 path; a name that is not
+            // UTF-8 is checked, not blessed.
             let blessed = match path.to_str() {
                 Some(p) => bless::bless_file(p, &settings),
                 None => Err(Diagnostic::file(
@@ -174,12 +175,25 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
                 Err(d) => not_blessed = Some(d),
             }
         }
+        // A `*.toml` found in a directory that is no part file (a
+        // `settings.toml`, a `credentials.toml`) is not checked, and none
+        // of it is quoted in an error. Every file a part file includes
+        // joins `read` even if it turns out invalid: `-o` may write onto
+        // none of them.
+        let part_file = |source: crate::diag::Source| {
+            if found && !crate::model::looks_like_a_part_file(&source.text) {
+                Err(Diagnostic::file(
+                    &f,
+                    "not a part file: it has no `[[part]]` table, so it is not checked (nor quoted)",
+                ))
+            } else {
+                Ok(source)
+            }
+        };
         let loaded = crate::io::read_source_at(&path)
-            .and_then(|source| analysis::load_source(source, &settings))
-            .map(|l| {
-                read.extend(super::files_of(&l));
-                check_loaded(&l)
-            });
+            .and_then(part_file)
+            .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
+            .map(|l| check_loaded(&l));
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
                 stderr.push_str(&format!("{}: not blessed\n", visible(&f)));

@@ -114,16 +114,42 @@ fn onto_input(path: &str, input: &Path) -> Diagnostic {
     ))
 }
 
+/// Whether `path` is a regular file that reads as a part file
+/// (`model::looks_like_a_part_file`, on its first MiB: a part file's first
+/// `[[part]]` comes early, and an old report is never read whole).
+fn is_a_part_file(path: &str) -> bool {
+    use std::io::Read;
+    let Ok(file) = std::fs::File::open(path) else {
+        return false;
+    };
+    if !file.metadata().is_ok_and(|m| m.is_file()) {
+        return false;
+    }
+    let mut head = Vec::new();
+    file.take(1 << 20).read_to_end(&mut head).is_ok()
+        && crate::model::looks_like_a_part_file(&String::from_utf8_lossy(&head))
+}
+
 /// Run a command. Errors are user-facing diagnostics (exit 2).
 pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
     // `-o` onto a part file being read would replace the design with the
-    // report: refused before anything is read or written.
+    // report: refused before anything is read or written. So is `-o` onto
+    // any part file: one that a file includes is not known to be read when
+    // that file is refused before its includes are (`check` goes on).
     let output = request.output();
     let named = || request.inputs().into_iter().map(Path::new);
     if let Some(path) = output
         && let Some(i) = input_named_by(path, named())
     {
         return Err(onto_input(path, i));
+    }
+    if let Some(path) = output
+        && is_a_part_file(path)
+    {
+        return Err(Diagnostic::plain(format!(
+            "`-o {path}` is a part file: the report would replace it"
+        ))
+        .help("`-o` never replaces a part file; name another file"));
     }
     let out = match request {
         Request::Report(o) => report::run(o)?,

@@ -302,6 +302,7 @@ impl Ctx<'_> {
         {
             return None;
         }
+        files.read.push(t.canonical.clone());
         let bytes = std::fs::read(&t.shown).ok()?;
         let source = crate::io::source_of(&t.shown_name, bytes)
             .ok()?
@@ -412,7 +413,8 @@ impl Ctx<'_> {
                     )
                     .help("`include` names a part file; its contents are not shown")
                 };
-                let looks_like_a_part_file = has_parts(&String::from_utf8_lossy(&bytes));
+                let looks_like_a_part_file =
+                    super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
                 let quoted = |d: Diagnostic| {
                     if looks_like_a_part_file {
                         included_here(d)
@@ -502,21 +504,6 @@ impl Ctx<'_> {
         }
         Ok(())
     }
-}
-
-/// Whether `text` has a `[[part]]` table (or a `part` array) at the start
-/// of a line: what every part file has, and what a file of secrets or
-/// settings that happens to be TOML has not.
-fn has_parts(text: &str) -> bool {
-    text.lines().any(|l| {
-        let l = l.trim_start();
-        let header = l
-            .strip_prefix("[[")
-            .map(|h| h.trim_start().starts_with("part"));
-        header.unwrap_or(false)
-            || l.strip_prefix("part")
-                .is_some_and(|r| r.trim_start().starts_with('='))
-    })
 }
 
 /// Keys of a part with the span of each that is present.

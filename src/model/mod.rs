@@ -81,6 +81,17 @@ impl Model {
         source: &Source,
         include_roots: &[std::path::PathBuf],
     ) -> Result<Model, Diagnostic> {
+        Model::parse_reading(source, include_roots, &mut Vec::new())
+    }
+
+    /// `parse_with`, adding to `read` every file it opened to include (by
+    /// canonical path), whether the file turns out valid or not: `check -o`
+    /// may write onto none of them, even after an invalid file.
+    pub fn parse_reading(
+        source: &Source,
+        include_roots: &[std::path::PathBuf],
+        read: &mut Vec<std::path::PathBuf>,
+    ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
         if let Ok(p) = std::fs::canonicalize(source.path()) {
             files
@@ -94,8 +105,11 @@ impl Model {
                 .iter()
                 .filter_map(|r| std::fs::canonicalize(r).ok()),
         );
-        let mut model = Model::parse_in(source, &mut files)?;
-        model.included = files.included();
+        let model = Model::parse_in(source, &mut files);
+        let included = files.included();
+        read.extend(included.iter().cloned());
+        let mut model = model?;
+        model.included = included;
         Ok(model)
     }
 
@@ -295,6 +309,29 @@ impl Model {
     }
 }
 
+/// Whether `text` reads as a part file: it has a `[[part]]` table (or a
+/// `part` array) at the start of a line, as every part file has and a file
+/// of secrets or settings that happens to be TOML has not. The one rule
+/// for "is this a part file" before it is parsed (or where its errors must
+/// not be quoted): includes, and `-o`, which never replaces a part file.
+pub fn looks_like_a_part_file(text: &str) -> bool {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    /// After the key `part`, `"part"` or `'part'`: what follows it, if
+    /// that is `]` or `=`.
+    fn part_key(k: &str) -> Option<&str> {
+        let k = k.trim_start();
+        let k = k.strip_prefix(['"', '\'']).unwrap_or(k);
+        let rest = k.strip_prefix("part")?;
+        let rest = rest.strip_prefix(['"', '\'']).unwrap_or(rest).trim_start();
+        rest.starts_with([']', '=']).then_some(rest)
+    }
+    text.lines().any(|l| {
+        let l = l.trim_start();
+        l.strip_prefix("[[").and_then(part_key).is_some()
+            || (!l.starts_with('[') && part_key(l).is_some_and(|r| r.trim_start().starts_with('=')))
+    })
+}
+
 /// Parse a command-line vector into the file's units (rad/s for ω, rad/s²
 /// for α): three comma-separated components. Plain numbers are in the
 /// file's units. A unit on
@@ -346,4 +383,41 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
         out[i] = v;
     }
     Ok(out)
+}
+
+#[cfg(test)]
+mod part_file_tests {
+    use super::looks_like_a_part_file as part_file;
+
+    #[test]
+    fn a_part_file_is_told_by_its_part_tables_however_written() {
+        for text in [
+            "[[part]]\nshape = \"point\"\n",
+            "# a part\nname = \"x\"\n\n  [[ part ]]\n",
+            "\u{feff}[[part]]\n",
+            "[[\"part\"]]\n",
+            "[[ 'part' ]]\n",
+            "part = [{ shape = \"point\" }]\n",
+            "\"part\" = []\n",
+        ] {
+            assert!(part_file(text), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn settings_secrets_and_lookalikes_are_not_part_files() {
+        for text in [
+            "",
+            "token = \"abc\"\n",
+            "API_TOKEN=abc\n",
+            "# [[part]]\n",
+            "[[parts]]\n",
+            "[[part.x]]\n",
+            "[part]\n",
+            "partner = 1\n",
+            "x = \"[[part]]\"\n",
+        ] {
+            assert!(!part_file(text), "{text:?}");
+        }
+    }
 }

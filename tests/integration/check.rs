@@ -497,14 +497,14 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     )
     .unwrap();
     std::fs::write(named(b"sub\xfd/wheel.toml"), body("")).unwrap();
-    std::fs::write(named(b"broken-\xfc\x1b.toml"), "mass = \n").unwrap();
+    std::fs::write(named(b"broken-\xfc\x1b.toml"), "[[part]]\nmass = \n").unwrap();
     let out = massprop(&["check", dir.to_str().unwrap()]);
     let stdout = String::from_utf8(out.stdout).unwrap();
     let stderr = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
     let broken = shown("broken-\\xfc\u{241b}.toml");
     assert!(
-        stderr.starts_with(&format!("{broken}:1:8: error: ")),
+        stderr.starts_with(&format!("{broken}:2:8: error: ")),
         "{stderr}"
     );
     assert!(stdout.contains(&format!("\n{broken}: invalid")), "{stdout}");
@@ -553,7 +553,7 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     assert!(
         String::from_utf8(out.stderr)
             .unwrap()
-            .contains("is the part file")
+            .contains("the report would replace it")
     );
     std::fs::remove_dir_all(&dir).ok();
 }
@@ -607,5 +607,55 @@ fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
     assert!(
         stdout.ends_with("checked 4 files: 2 ok, 0 failed, 2 invalid\n"),
         "{stdout}"
+    );
+}
+
+/// A `*.toml` that `check DIR` finds but that is no part file (no
+/// `[[part]]`: settings, credentials) is reported as not checked, and
+/// nothing of it is quoted; one named on the command line is checked (and
+/// its error quoted) as before.
+#[test]
+fn check_dir_quotes_nothing_of_a_toml_file_that_is_not_a_part_file() {
+    const SECRET: &str = "SECRET-91d2";
+    let dir = crate::common::scratch("check", "dir-non-part");
+    std::fs::create_dir_all(dir.join(".cargo")).unwrap();
+    let secret = format!("token = \"{SECRET}\"\n");
+    std::fs::write(dir.join("settings.toml"), &secret).unwrap();
+    std::fs::write(dir.join(".cargo/credentials.toml"), &secret).unwrap();
+    // A part file with a byte-order mark and a quoted header is one.
+    std::fs::write(
+        dir.join("real.toml"),
+        "\u{feff}[[\"part\"]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    let out = massprop(&["check", dir.to_str().unwrap()]);
+    let (stdout, stderr) = (
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(
+        !stdout.contains(SECRET) && !stderr.contains(SECRET),
+        "{stdout}{stderr}"
+    );
+    for name in [".cargo/credentials.toml", "settings.toml"] {
+        assert!(
+            stderr.contains(&format!(
+                "{name}: error: not a part file: it has no `[[part]]` table"
+            )),
+            "{stderr}"
+        );
+    }
+    assert!(
+        stdout.ends_with("checked 3 files: 1 ok, 0 failed, 2 invalid\n"),
+        "{stdout}"
+    );
+    // Named, it is read as the part file it is asked to be.
+    let named = dir.join("settings.toml");
+    let out = massprop(&["check", named.to_str().unwrap()]);
+    assert!(
+        String::from_utf8(out.stderr)
+            .unwrap()
+            .contains("unknown key `token`")
     );
 }

@@ -956,6 +956,12 @@ fn includes_of_files_that_are_not_part_files_quote_nothing_of_them() {
         format!("[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0]  # {SECRET}\n"),
     )
     .unwrap();
+    // A byte-order mark and a quoted header: a part file all the same.
+    std::fs::write(
+        dir.join("bom.toml"),
+        format!("\u{feff}[[ 'part' ]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0]  # {SECRET}\n"),
+    )
+    .unwrap();
     for (target, says, quoted) in [
         (".env", "is not a part file (`*.toml`)", false),
         (".git/config", "is not a part file (`*.toml`)", false),
@@ -966,6 +972,7 @@ fn includes_of_files_that_are_not_part_files_quote_nothing_of_them() {
             false,
         ),
         ("broken.toml", "`center` needs 3 components, got 2", true),
+        ("bom.toml", "`center` needs 3 components, got 2", true),
     ] {
         let top = dir.join("top.toml");
         std::fs::write(&top, format!("[[part]]\ninclude = \"{target}\"\n")).unwrap();

@@ -580,3 +580,25 @@ fn output_onto_the_file_behind_standard_output_is_written_to_it() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `check -o` may not write onto a file that a part file includes, even
+/// when that part file turns out invalid after its includes were read
+/// (here an unknown key in `[expect]`): the check's report once replaced
+/// the sub-assembly.
+#[test]
+fn check_output_onto_a_file_an_invalid_part_file_includes_is_refused() {
+    let dir = scratch("files", "onto-include-of-invalid");
+    let sub = dir.join("sub.toml");
+    std::fs::write(&sub, WHEEL).unwrap();
+    let top = dir.join("top.toml");
+    std::fs::write(
+        &top,
+        "[[part]]\ninclude = \"sub.toml\"\n\n[expect]\nmass = { value = 2, tol = 0.1, bogus = 1 }\n",
+    )
+    .unwrap();
+    let args = ["check", s(&top), "-o", s(&sub)];
+    let out = massprop(&args);
+    assert_refused(&out, &args);
+    assert_eq!(std::fs::read_to_string(&sub).unwrap(), WHEEL);
+    std::fs::remove_dir_all(&dir).ok();
+}
