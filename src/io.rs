@@ -331,6 +331,16 @@ impl Rewrite {
     /// Replace the file's text by `text` (`what` names it in errors); the
     /// lock is held until it is done.
     pub fn replace(mut self, text: &str, what: &str) -> Result<(), Diagnostic> {
+        // A rename replaces a read-only file as easily as any other (and
+        // root writes anything): the mode is the owner's word that it is
+        // not to be changed. Asked only of a change: a read-only file that
+        // needs none is `unchanged`, as one this user may not write is.
+        if self.meta.permissions().readonly() {
+            return Err(Diagnostic::file(
+                &self.name,
+                "the file is read-only: not blessed (make it writable to bless it)",
+            ));
+        }
         // What this user may not write is not replaced either (a rename
         // could: it asks only the directory).
         if !self.writable {

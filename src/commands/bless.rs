@@ -33,15 +33,6 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
             "`--bless` writes files; it cannot bless standard input",
         ));
     }
-    // A rename replaces a read-only file as easily as any other (and root
-    // writes anything): the mode is the owner's word that it is not to be
-    // changed.
-    if std::fs::metadata(path).is_ok_and(|m| m.permissions().readonly()) {
-        return Err(Diagnostic::file(
-            path,
-            "the file is read-only: not blessed (make it writable to bless it)",
-        ));
-    }
     // Locked from here until written: another bless of this file waits,
     // then reads what this one wrote.
     let (file, source) = crate::io::Rewrite::open(path)?;

@@ -408,8 +408,9 @@ fn a_fifo_found_in_a_directory_is_reported_not_opened() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
-/// `check --bless` refuses a read-only file and leaves it as it was (a
-/// rename replaced it regardless of its mode).
+/// `check --bless` refuses to change a read-only file and leaves it as it
+/// was (a rename replaced it regardless of its mode); one that needs no
+/// change is `unchanged`, and passes.
 #[test]
 fn bless_refuses_a_read_only_file() {
     let dir = crate::common::scratch("check", "bless-read-only");
@@ -424,6 +425,29 @@ fn bless_refuses_a_read_only_file() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("read-only: not blessed"), "{stderr}");
     assert_eq!(std::fs::read_to_string(&f).unwrap(), text);
+    // Blessed while writable, then read-only: nothing to change.
+    let mut perms = std::fs::metadata(&f).unwrap().permissions();
+    #[allow(
+        clippy::permissions_set_readonly_false,
+        reason = "the test makes it writable again on purpose"
+    )]
+    perms.set_readonly(false);
+    std::fs::set_permissions(&f, perms.clone()).unwrap();
+    let out = crate::common::massprop(&["check", "--bless", f.to_str().unwrap()]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let blessed = std::fs::read_to_string(&f).unwrap();
+    perms.set_readonly(true);
+    std::fs::set_permissions(&f, perms).unwrap();
+    let out = crate::common::massprop(&["check", "--bless", f.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("ro.toml: unchanged"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&f).unwrap(), blessed);
     std::fs::remove_dir_all(&dir).ok();
 }
 
