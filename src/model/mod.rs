@@ -316,20 +316,34 @@ impl Model {
 /// not be quoted): includes, and `-o`, which never replaces a part file.
 pub fn looks_like_a_part_file(text: &str) -> bool {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    /// After the key `part`, `"part"` or `'part'`: what follows it, if
-    /// that is `]` or `=`.
-    fn part_key(k: &str) -> Option<&str> {
-        let k = k.trim_start();
-        let k = k.strip_prefix(['"', '\'']).unwrap_or(k);
-        let rest = k.strip_prefix("part")?;
-        let rest = rest.strip_prefix(['"', '\'']).unwrap_or(rest).trim_start();
-        rest.starts_with([']', '=']).then_some(rest)
-    }
     text.lines().any(|l| {
         let l = l.trim_start();
-        l.strip_prefix("[[").and_then(part_key).is_some()
+        is_part_table(l)
             || (!l.starts_with('[') && part_key(l).is_some_and(|r| r.trim_start().starts_with('=')))
     })
+}
+
+/// Whether a line (its leading blanks trimmed) opens a `[[part]]` table.
+fn is_part_table(l: &str) -> bool {
+    l.strip_prefix("[[").and_then(part_key).is_some()
+}
+
+/// After the key `part`, `"part"` or `'part'`: what follows it, if that is
+/// `]` or `=`.
+fn part_key(k: &str) -> Option<&str> {
+    let k = k.trim_start();
+    let k = k.strip_prefix(['"', '\'']).unwrap_or(k);
+    let rest = k.strip_prefix("part")?;
+    let rest = rest.strip_prefix(['"', '\'']).unwrap_or(rest).trim_start();
+    rest.starts_with([']', '=']).then_some(rest)
+}
+
+/// How many `[[part]]` tables `text` opens, by its lines (see
+/// `include::Ctx::check_part_count`).
+fn part_tables(text: &str) -> u64 {
+    text.lines()
+        .filter(|l| is_part_table(l.trim_start()))
+        .count() as u64
 }
 
 /// Parse a command-line vector into the file's units (rad/s for ω, rad/s²
@@ -402,6 +416,13 @@ mod part_file_tests {
         ] {
             assert!(part_file(text), "{text:?}");
         }
+    }
+
+    #[test]
+    fn part_tables_are_counted_by_their_header_lines() {
+        let text = "[[part]]\nx = 1\n  [[ 'part' ]]\n# [[part]]\n[[parts]]\n[[\"part\"]]\n";
+        assert_eq!(super::part_tables(text), 3);
+        assert_eq!(super::part_tables("token = 1\n"), 0);
     }
 
     #[test]
