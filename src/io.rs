@@ -85,6 +85,13 @@ impl FileId {
     }
 }
 
+/// Whether `path` is named as a part file is: `*.toml` (any case). The one
+/// rule for the files `check DIR` takes and that `include` may name.
+pub fn is_toml(path: &Path) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
+}
+
 /// The largest part file read, in bytes: a 100,000-part file of 17-digit
 /// numbers is ~30 MB and takes ~15 bytes of memory per byte to read, so this
 /// allows ~1.7 million parts in ~8 GB.

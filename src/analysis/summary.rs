@@ -266,7 +266,10 @@ impl SummaryError {
             Blame::Parts(kind) => match largest_contributor(model, kind) {
                 Some(p) => source
                     .error(p.span.clone(), &message)
-                    .label(format!("`{}` contributes the most", p.name))
+                    .label(format!(
+                        "`{}` contributes the most",
+                        crate::diag::shorten(&p.name)
+                    ))
                     .help(WRONG_UNITS),
                 None => Diagnostic::file(&source.name, message).help(WRONG_UNITS),
             },

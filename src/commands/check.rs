@@ -73,10 +73,9 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
             if dir {
                 walk(&p, root, out);
             } else if link
-                && p.extension().is_some_and(|e| e == "toml")
-                && std::fs::canonicalize(&p).is_ok_and(|t| {
-                    !(t.starts_with(root) && t.extension().is_some_and(|e| e == "toml"))
-                })
+                && crate::io::is_toml(&p)
+                && std::fs::canonicalize(&p)
+                    .is_ok_and(|t| !(t.starts_with(root) && crate::io::is_toml(&t)))
             {
                 // A file from a pull request, `x.toml -> ~/.cargo/credentials.toml`
                 // or `-> .git/config`, would be read and quoted in the log.
@@ -86,7 +85,7 @@ fn collect(paths: &[PathBuf]) -> Vec<Found> {
                     "not checked: a symlink to a file outside the directory searched, or to one that is not a `*.toml` file (check it by its own path)",
                 );
                 out.push(Found::Skipped(name, d));
-            } else if p.extension().is_some_and(|e| e == "toml") {
+            } else if crate::io::is_toml(&p) {
                 // The target's type, without opening it.
                 match std::fs::metadata(&p) {
                     Ok(m) if m.is_file() => out.push(Found::File(p, true)),

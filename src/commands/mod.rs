@@ -107,7 +107,7 @@ fn onto_input(path: &str, input: &Path) -> Diagnostic {
     let input = if input == Path::new("-") {
         "the file on standard input".to_string()
     } else {
-        format!("the part file `{}`", input.display())
+        format!("the part file `{}`", crate::diag::display_path(input))
     };
     Diagnostic::plain(format!(
         "`-o {path}` is {input}: the report would replace it"

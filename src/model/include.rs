@@ -219,10 +219,7 @@ impl Ctx<'_> {
         }
         // Only part files: `.env` or `.git/config` (where a CI checkout
         // keeps its token) would be parsed as TOML and quoted in the error.
-        if !canonical
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("toml"))
-        {
+        if !crate::io::is_toml(&canonical) {
             return Err(self
                 .err(
                     inc.span(),

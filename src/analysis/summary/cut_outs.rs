@@ -30,7 +30,8 @@ pub(super) fn leave_a_body(
     };
     // "the cut-out `a` removes …", or "the 3 cut-outs remove …, `a` the most".
     let them = |worst: usize, what: &str| {
-        let name = &model.parts[worst].name;
+        // Quoted as messages quote names: a 2 MB name is cut.
+        let name = crate::diag::shorten(&model.parts[worst].name);
         match cuts.len() {
             1 => format!("the cut-out `{name}` removes {what}"),
             n => format!("the {n} cut-outs remove {what}, `{name}` the most"),
