@@ -234,8 +234,19 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
                 .map_err(fail)?;
             // Best effort: it keeps a bless of the same file out meanwhile.
             let _ = file.lock();
-            let mut old = Vec::new();
-            file.read_to_end(&mut old).map_err(fail)?;
+            // Its old text is kept to be written back should the write
+            // fail: only as much as a part file may hold.
+            if meta.len() > MAX_FILE_BYTES {
+                return Err(Diagnostic::file(
+                    path,
+                    format!(
+                        "cannot write {what} in place (it has {} hard links): its old text is over {} MiB, too large to keep for a restore; name another file",
+                        links(&meta),
+                        MAX_FILE_BYTES >> 20
+                    ),
+                ));
+            }
+            let old = read_capped(&mut file, path, false)?;
             write_in_place(&mut file, &old, text.as_bytes(), links(&meta), path, what)
         }
         meta => replace_by_rename(&target, meta.ok().as_ref(), text, path, what),

@@ -602,3 +602,28 @@ fn check_output_onto_a_file_an_invalid_part_file_includes_is_refused() {
     assert_eq!(std::fs::read_to_string(&sub).unwrap(), WHEEL);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o` onto a file with hard links writes in place and keeps the old text
+/// to write back should that fail: not past the size a part file may have
+/// (a sparse file of 513 MiB here), which is refused, the file untouched.
+#[test]
+fn output_in_place_onto_a_huge_hard_linked_file_is_refused() {
+    let dir = scratch("files", "huge-hard-link");
+    let part = dir.join("wheel.toml");
+    std::fs::write(&part, WHEEL).unwrap();
+    let out = dir.join("out.json");
+    std::fs::File::create(&out)
+        .unwrap()
+        .set_len(513 << 20)
+        .unwrap();
+    std::fs::hard_link(&out, dir.join("other.json")).unwrap();
+    let o = massprop(&["report", s(&part), "-o", s(&out)]);
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("too large to keep for a restore"),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::metadata(&out).unwrap().len(), 513 << 20);
+    std::fs::remove_dir_all(&dir).ok();
+}
