@@ -223,7 +223,12 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
             Ok(meta) if !meta.is_file() && !meta.is_dir() => return write_directly(&real),
             _ => real,
         },
-        Err(_) => PathBuf::from(path),
+        // A symlink to a file not there yet: the file is made where the
+        // link points, and the link stays (a rename replaced the link).
+        Err(_) => match std::fs::read_link(path) {
+            Ok(to) => Path::new(path).parent().unwrap_or(Path::new("")).join(to),
+            Err(_) => PathBuf::from(path),
+        },
     };
     match std::fs::metadata(&target) {
         Ok(meta) if links(&meta) > 1 => {

@@ -627,3 +627,27 @@ fn output_in_place_onto_a_huge_hard_linked_file_is_refused() {
     assert_eq!(std::fs::metadata(&out).unwrap().len(), 513 << 20);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// `-o` through a symlink whose target does not exist yet makes the target
+/// and leaves the link a link (a rename once replaced the link by a file).
+#[test]
+fn output_through_a_dangling_symlink_makes_its_target() {
+    let dir = scratch("files", "dangling-link");
+    let part = dir.join("wheel.toml");
+    std::fs::write(&part, WHEEL).unwrap();
+    std::fs::create_dir_all(dir.join("reports")).unwrap();
+    let link = dir.join("latest.json");
+    std::os::unix::fs::symlink("reports/wheel.json", &link).unwrap();
+    let o = massprop(&["report", "--format", "json", s(&part), "-o", s(&link)]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    let json: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(dir.join("reports/wheel.json")).unwrap()).unwrap();
+    assert_eq!(json["mass"], 2.0);
+    std::fs::remove_dir_all(&dir).ok();
+}
