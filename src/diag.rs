@@ -124,10 +124,10 @@ fn visible_message(text: &str) -> String {
 }
 
 /// The text with control characters (but tab) shown as their Unicode
-/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡, C1 and the bidirectional
-/// formatting characters as �), one character each, so a stray one neither
-/// vanishes nor moves the carets nor acts on the terminal nor reorders the
-/// line.
+/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡; C1, the bidirectional
+/// formatting characters and the line and paragraph separators as �), one
+/// character each, so a stray one neither vanishes nor moves the carets
+/// nor acts on the terminal nor reorders or breaks the line.
 pub fn visible(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     push_visible(&mut out, text);
@@ -165,9 +165,16 @@ pub fn push_visible(out: &mut String, text: &str) {
         '\t' => c,
         '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
         '\u{7f}' => '\u{2421}',
-        c if c.is_control() || is_bidi(c) => '\u{fffd}',
+        c if c.is_control() || is_bidi(c) || is_line_separator(c) => '\u{fffd}',
         c => c,
     }));
+}
+
+/// The Unicode line and paragraph separators (U+2028, U+2029): not
+/// controls, but a log viewer or editor may start a new line at them, so a
+/// name could add a line to line-per-record output.
+pub fn is_line_separator(c: char) -> bool {
+    matches!(c, '\u{2028}' | '\u{2029}')
 }
 
 /// The bidirectional formatting characters (embeddings, overrides,
@@ -491,6 +498,7 @@ mod tests {
     fn bidirectional_formatting_characters_are_shown_as_replacement_characters() {
         // "ok ", U+202E, "deliaf" would read as "ok failed" on a terminal.
         assert_eq!(visible("ok \u{202e}deliaf"), "ok \u{fffd}deliaf");
+        assert_eq!(visible("a\u{2028}b\u{2029}c"), "a\u{fffd}b\u{fffd}c");
         for c in [
             '\u{202a}', '\u{202e}', '\u{2066}', '\u{2069}', '\u{200e}', '\u{200f}', '\u{61c}',
         ] {
@@ -503,7 +511,7 @@ mod tests {
         }
         // Neighbours of the ranges and other text behind the same lead bytes
         // stay as they are.
-        let t = "\u{2029}\u{202f}\u{2065}\u{206a}—…│\u{200d}\u{61b}\u{61d}";
+        let t = "\u{2027}\u{202f}\u{2065}\u{206a}—…│\u{200d}\u{61b}\u{61d}";
         assert_eq!(visible(t), t);
     }
 

@@ -60,7 +60,8 @@ pub fn render(output: &Output, format: Format) -> String {
 ///
 /// NOTE: serde_json escapes only U+0000..U+001F in strings; DEL, the C1
 /// controls (U+0080..U+009F: U+009B is a CSI to terminals that take 8-bit
-/// controls) and the bidirectional formatting characters (`diag::is_bidi`)
+/// controls), the bidirectional formatting characters (`diag::is_bidi`) and
+/// the line and paragraph separators (`diag::is_line_separator`)
 /// from a name would reach a terminal raw from
 /// `massprop report --format json | less`. They are escaped as `\u007f`,
 /// `\u009b`, `\u202e`, …, which every JSON reader decodes back to the same
@@ -94,7 +95,11 @@ impl serde_json::ser::Formatter for ControlsEscaped {
         }
         let mut start = 0;
         for (i, c) in fragment.char_indices() {
-            if c == '\u{7f}' || ('\u{80}'..='\u{9f}').contains(&c) || crate::diag::is_bidi(c) {
+            if c == '\u{7f}'
+                || ('\u{80}'..='\u{9f}').contains(&c)
+                || crate::diag::is_bidi(c)
+                || crate::diag::is_line_separator(c)
+            {
                 w.write_all(&fragment.as_bytes()[start..i])?;
                 write!(w, "\\u{:04x}", u32::from(c))?;
                 start = i + c.len_utf8();
@@ -110,17 +115,15 @@ mod tests {
 
     #[test]
     fn json_escapes_every_control_character_and_reads_back_the_same_text() {
-        let text = "a\u{1b}[31m\u{7f}b\u{9b}2Jc\u{80}\u{9f}\u{a0}é\u{202e}d\u{2069}—\n";
+        let text = "a\u{1b}[31m\u{7f}b\u{9b}2Jc\u{80}\u{9f}\u{a0}é\u{202e}d\u{2069}—\u{2028}\n";
         let line = json_line(&serde_json::json!({ "name": text }));
         assert_eq!(
             line,
-            "{\"name\":\"a\\u001b[31m\\u007fb\\u009b2Jc\\u0080\\u009f\u{a0}é\\u202ed\\u2069—\\n\"}\n"
+            "{\"name\":\"a\\u001b[31m\\u007fb\\u009b2Jc\\u0080\\u009f\u{a0}é\\u202ed\\u2069—\\u2028\\n\"}\n"
         );
-        assert!(
-            !line
-                .chars()
-                .any(|c| (c.is_control() && c != '\n') || crate::diag::is_bidi(c))
-        );
+        assert!(!line.chars().any(|c| (c.is_control() && c != '\n')
+            || crate::diag::is_bidi(c)
+            || crate::diag::is_line_separator(c)));
         let back: serde_json::Value = serde_json::from_str(&line).unwrap();
         assert_eq!(back["name"], text);
     }

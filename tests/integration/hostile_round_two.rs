@@ -695,6 +695,7 @@ const PIECES: &[&str] = &[
     "\u{9b}",
     "\u{85}",
     "\u{202e}",
+    "\u{2028}",
     "\u{2066}",
     "\t",
     "é",
@@ -893,15 +894,21 @@ impl Names {
 /// mark, in `text`.
 fn raw_control(text: &str) -> Option<char> {
     text.chars()
-        .find(|c| c.is_control() && !matches!(c, '\n' | '\t') || massprop::diag::is_bidi(*c))
+        .find(|&c| c.is_control() && !matches!(c, '\n' | '\t') || hidden(c))
+}
+
+/// A bidirectional mark or a line or paragraph separator: not controls to
+/// Unicode, escaped all the same.
+fn hidden(c: char) -> bool {
+    massprop::diag::is_bidi(c) || massprop::diag::is_line_separator(c)
 }
 
 /// In JSON, a raw control character: any (tab too, which JSON escapes),
 /// DEL and the C1 controls (which JSON allows raw but massprop escapes),
-/// and the bidirectional marks; but the line's end.
+/// the bidirectional marks and line separators; but the line's end.
 fn raw_json_control(text: &str) -> Option<char> {
     text.chars()
-        .find(|c| c.is_control() && *c != '\n' || massprop::diag::is_bidi(*c))
+        .find(|&c| c.is_control() && c != '\n' || hidden(c))
 }
 
 /// The commands whose stdout is compared with the twin's, line for line.
