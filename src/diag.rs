@@ -151,13 +151,7 @@ pub fn shorten(text: &str) -> String {
 /// part's name, a file name) can neither act on the terminal nor add a line
 /// to line-per-record output.
 pub fn push_visible(out: &mut String, text: &str) {
-    // Most text has no control character: one scan, one copy. (C1 controls
-    // are U+0080..U+009F, encoded with a 0xC2 lead byte; the bidirectional
-    // marks have lead bytes 0xD8 and 0xE2.)
-    if !text
-        .bytes()
-        .any(|b| b < 0x20 && b != b'\t' || b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
-    {
+    if !may_hide(text) {
         out.push_str(text);
         return;
     }
@@ -165,9 +159,26 @@ pub fn push_visible(out: &mut String, text: &str) {
         '\t' => c,
         '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
         '\u{7f}' => '\u{2421}',
-        c if c.is_control() || is_bidi(c) || is_line_separator(c) => '\u{fffd}',
+        c if is_hidden(c) => '\u{fffd}',
         c => c,
     }));
+}
+
+/// Whether text from input may hold a character `is_hidden` names: one
+/// scan of the bytes, so that most text is copied as it is. (C1 controls
+/// are U+0080..U+009F, encoded with a 0xC2 lead byte; the bidirectional
+/// marks and the separators have lead bytes 0xD8 and 0xE2.)
+pub fn may_hide(text: &str) -> bool {
+    text.bytes()
+        .any(|b| b < 0x20 || b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
+}
+
+/// The characters that text from input may not show raw, in any output:
+/// controls (C0, DEL, C1), the bidirectional formatting characters and the
+/// line and paragraph separators. Tables and messages show them as
+/// pictures or �, JSON escapes them (`render::json_line`).
+pub fn is_hidden(c: char) -> bool {
+    c.is_control() || is_bidi(c) || is_line_separator(c)
 }
 
 /// The Unicode line and paragraph separators (U+2028, U+2029): not

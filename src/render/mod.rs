@@ -85,21 +85,14 @@ impl serde_json::ser::Formatter for ControlsEscaped {
         w: &mut W,
         fragment: &str,
     ) -> std::io::Result<()> {
-        // C1 controls are encoded with a 0xC2 lead byte, the bidirectional
-        // marks with 0xD8 or 0xE2: one scan for the usual text.
-        if !fragment
-            .bytes()
-            .any(|b| b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
-        {
+        if !crate::diag::may_hide(fragment) {
             return w.write_all(fragment.as_bytes());
         }
         let mut start = 0;
         for (i, c) in fragment.char_indices() {
-            if c == '\u{7f}'
-                || ('\u{80}'..='\u{9f}').contains(&c)
-                || crate::diag::is_bidi(c)
-                || crate::diag::is_line_separator(c)
-            {
+            // serde_json has escaped C0 already; the rest of
+            // `diag::is_hidden` is left to this.
+            if crate::diag::is_hidden(c) {
                 w.write_all(&fragment.as_bytes()[start..i])?;
                 write!(w, "\\u{:04x}", u32::from(c))?;
                 start = i + c.len_utf8();
