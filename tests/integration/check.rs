@@ -582,6 +582,22 @@ fn names_that_are_not_utf8_are_checked_and_shown_escaped() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// `check DIR` on `dir`, which holds an invalid entry: status 2, and
+/// `secret` nowhere in stdout or stderr. Returns both.
+fn check_invalid_quoting_nothing_of(dir: &std::path::Path, secret: &str) -> (String, String) {
+    let out = massprop(&["check", dir.to_str().unwrap()]);
+    let (stdout, stderr) = (
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    );
+    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
+    assert!(
+        !stdout.contains(secret) && !stderr.contains(secret),
+        "{stdout}{stderr}"
+    );
+    (stdout, stderr)
+}
+
 /// `check DIR` follows a symlinked `*.toml` only to a `*.toml` file inside
 /// DIR: one to a file outside (`~/.cargo/credentials.toml`) or to one of
 /// another kind (`.git/config`) is reported as not checked, and nothing of
@@ -610,16 +626,7 @@ fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
     link(&outside.join("credentials.toml"), "a.toml");
     link(&tree.join(".git/config"), "b.toml");
     link(&tree.join("real.toml"), "c.toml");
-    let out = massprop(&["check", tree.to_str().unwrap()]);
-    let (stdout, stderr) = (
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    );
-    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
-    assert!(
-        !stdout.contains(SECRET) && !stderr.contains(SECRET),
-        "{stdout}{stderr}"
-    );
+    let (stdout, stderr) = check_invalid_quoting_nothing_of(&tree, SECRET);
     for skipped in ["a.toml", "b.toml"] {
         assert!(
             stderr.contains(&format!(
@@ -652,16 +659,7 @@ fn check_dir_quotes_nothing_of_a_toml_file_that_is_not_a_part_file() {
         "\u{feff}[[\"part\"]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
     )
     .unwrap();
-    let out = massprop(&["check", dir.to_str().unwrap()]);
-    let (stdout, stderr) = (
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    );
-    assert_eq!(out.status.code(), Some(2), "{stdout}{stderr}");
-    assert!(
-        !stdout.contains(SECRET) && !stderr.contains(SECRET),
-        "{stdout}{stderr}"
-    );
+    let (stdout, stderr) = check_invalid_quoting_nothing_of(&dir, SECRET);
     for name in [".cargo/credentials.toml", "settings.toml"] {
         assert!(
             stderr.contains(&format!(
