@@ -53,12 +53,10 @@ fn run(bencher: Bencher, scene: &str, precision: Precision) {
         .find(|(n, _)| *n == scene)
         .expect("a known scene")
         .1;
-    bencher
-        .counter(ItemsCount::new(model.parts.len()))
-        .bench(|| {
-            let body = compose::compose(black_box(&model.parts), precision);
-            black_box(compose::principal(&body.second_moment, precision))
-        });
+    bencher.counter(ItemsCount::new(model.count)).bench(|| {
+        let body = compose::compose(black_box(&model) as &Model, precision);
+        black_box(compose::principal(&body.second_moment, precision))
+    });
 }
 
 #[divan::bench(args = SCENES)]

@@ -78,7 +78,7 @@ fn inertia_rows(c: &Matrix3<f64>) -> [[f64; 3]; 3] {
 
 /// The two plain-f64 composers, from the same parsed parts (file units).
 fn baseline(model: &Model, method: Method) -> Result {
-    let parts = &model.parts;
+    let parts = &model.flattened();
     let own = |p: &massprop::part::Part| -> Matrix3<f64> {
         let m: f64 = p.mass();
         let j: M3<f64> = p.own_second_moment(m);
@@ -140,7 +140,7 @@ fn run(model: &Model, method: Method) -> Result {
 fn work(model: &Model, method: Method) {
     match method {
         Method::Mode(p) => {
-            let body = compose::compose(&model.parts, p);
+            let body = compose::compose(model, p);
             black_box(compose::principal(&body.second_moment, p));
         }
         _ => {
@@ -301,11 +301,11 @@ fn main() {
                         a.max(e)
                     }
                 });
-            let seconds_per_part = time(&model, method) / model.parts.len() as f64;
+            let seconds_per_part = time(&model, method) / model.count as f64;
             println!(
                 "| {} | {} | {} | {:.1} ns | {:.1e} | {:.1e} |",
                 s.name,
-                model.parts.len(),
+                model.count,
                 method.short(),
                 seconds_per_part * 1e9,
                 inertia_err,
@@ -313,7 +313,7 @@ fn main() {
             );
             rows.push(Row {
                 scene: s.name,
-                parts: model.parts.len(),
+                parts: model.count,
                 method,
                 seconds_per_part,
                 inertia_err,

@@ -15,7 +15,7 @@
 use crate::eigen::jacobi;
 use crate::mass::Body;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
-use crate::part::Part;
+use crate::part::Parts;
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -44,33 +44,31 @@ pub enum Precision {
 /// first moment s = Σ mᵢdᵢ (zero in exact arithmetic) then corrects the
 /// rounding of the centre ĉ itself: C = Σ(Cᵢ + mᵢdᵢdᵢᵀ) − s sᵀ/m and
 /// c = ĉ + s/m.
-pub fn compose(parts: &[Part], precision: Precision) -> Body {
+pub fn compose<P: Parts + ?Sized>(parts: &P, precision: Precision) -> Body {
     match precision {
         Precision::Standard => compose_standard(parts),
         Precision::Extended => compose_extended(parts),
     }
 }
 
-fn compose_standard(parts: &[Part]) -> Body {
+fn compose_standard<P: Parts + ?Sized>(parts: &P) -> Body {
     // The pivot ĉ = Σ (mᵢ/m) cᵢ: weights first, so that huge masses far out
     // cannot overflow a first moment Σ mᵢcᵢ the centre itself fits in.
     let mut mass = Sum::default();
-    for p in parts {
-        mass.add(p.mass::<f64>());
-    }
+    parts.each(&mut |p| mass.add(p.mass::<f64>()));
     let total = mass.value();
     let mut first = [Sum::default(); 3];
-    for p in parts {
+    parts.each(&mut |p| {
         let w = p.mass::<f64>() / total;
         let c = p.centroid();
         for (f, ci) in first.iter_mut().zip(&c) {
             f.add(w * ci.hi);
         }
-    }
+    });
     let c0 = first.map(Sum::value);
     let mut sum = [[Sum::default(); 3]; 3];
     let mut s = [Sum::default(); 3];
-    for p in parts {
+    parts.each(&mut |p| {
         let m: f64 = p.mass();
         let c = p.centroid();
         // c.hi − ĉ is exact when they are close (Sterbenz); c.lo carries the
@@ -86,7 +84,7 @@ fn compose_standard(parts: &[Part]) -> Body {
                 sum[i][j].add(md * d[j]);
             }
         }
-    }
+    });
     let s = s.map(Sum::value);
     let mut c = [[DD::of(0.0); 3]; 3];
     for i in 0..3 {
@@ -107,23 +105,21 @@ fn compose_standard(parts: &[Part]) -> Body {
     }
 }
 
-fn compose_extended(parts: &[Part]) -> Body {
+fn compose_extended<P: Parts + ?Sized>(parts: &P) -> Body {
     let zero = DD::of(0.0);
     let mut total = zero;
-    for p in parts {
-        total += p.mass::<DD>();
-    }
+    parts.each(&mut |p| total += p.mass::<DD>());
     // Σ (mᵢ/m) cᵢ, as in `compose_standard`.
     let mut c0 = [zero; 3];
-    for p in parts {
+    parts.each(&mut |p| {
         let w = p.mass::<DD>() / total;
         for (f, ci) in c0.iter_mut().zip(p.centroid()) {
             *f += w * ci;
         }
-    }
+    });
     let mut c = [[zero; 3]; 3];
     let mut s = [zero; 3];
-    for p in parts {
+    parts.each(&mut |p| {
         let m: DD = p.mass();
         let cen = p.centroid();
         let d: [DD; 3] = std::array::from_fn(|i| cen[i] - c0[i]);
@@ -135,7 +131,7 @@ fn compose_extended(parts: &[Part]) -> Body {
                 c[i][j] += own[i][j] + md * d[j];
             }
         }
-    }
+    });
     for i in 0..3 {
         for j in i..3 {
             c[i][j] = c[i][j] - s[i] * (s[j] / total);
@@ -275,7 +271,7 @@ mod tests {
     use super::*;
     use crate::mass::inertia_of;
     use crate::model::rotation::Orientation;
-    use crate::part::{MassSpec, Place, Spec};
+    use crate::part::{MassSpec, Part, Place, Spec};
     use crate::shapes::Shape;
     use nalgebra::Matrix3;
 

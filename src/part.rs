@@ -43,6 +43,25 @@ pub struct Part {
     pub span: Range<usize>,
 }
 
+/// A body's parts, for the passes of the composer and of the per-part
+/// figures: a list, or a model walked (`model::walk`).
+pub trait Parts {
+    /// Each part, in order.
+    fn each(&self, f: &mut dyn FnMut(&Part));
+}
+
+impl Parts for [Part] {
+    fn each(&self, f: &mut dyn FnMut(&Part)) {
+        self.iter().for_each(f);
+    }
+}
+
+impl Parts for Vec<Part> {
+    fn each(&self, f: &mut dyn FnMut(&Part)) {
+        self.iter().for_each(f);
+    }
+}
+
 /// A part's mass properties in SI, derived from its `Spec` by exact unit
 /// factors in double-double, the product rounded to f64.
 #[derive(Debug, Clone, Copy, PartialEq)]

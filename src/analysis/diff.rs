@@ -36,15 +36,17 @@ impl Side {
     pub fn of(loaded: Loaded) -> Side {
         let model = &loaded.model;
         let factors = crate::part::SiFactors::of(model.units);
-        let parts = model
-            .parts
-            .iter()
-            .map(|p| PartView {
+        // NOTE: every part of both files is in memory (its name and SI
+        // view): parts are matched by name across the files.
+        let mut parts = Vec::with_capacity(model.count);
+        model.each_part(&mut |l| {
+            let p = l.part;
+            parts.push(PartView {
                 name: p.name.clone(),
                 shape: p.shape,
                 si: p.si_in(&factors),
-            })
-            .collect();
+            });
+        });
         Side { loaded, parts }
     }
 }

@@ -162,7 +162,7 @@ pub fn idealisation(
     precision: Precision,
     f_inertia: DD,
 ) -> Result<Option<Idealisation>, SummaryError> {
-    if model.real_sizes.is_empty() {
+    if !model.has_real_sizes {
         return Ok(None);
     }
     let zero = negligible(precision);
@@ -176,18 +176,25 @@ pub fn idealisation(
         })
     };
     let mut all = body.second_moment;
-    let mut parts = Vec::with_capacity(model.real_sizes.len());
-    for r in &model.real_sizes {
-        let part = &model.parts[r.part];
-        let extra = solid_extra(part, r.solid, r.size);
+    let mut parts = Vec::new();
+    let mut failed = Ok(());
+    model.each_part(&mut |l| {
+        let Some(r) = l.real else { return };
+        if failed.is_err() {
+            return;
+        }
+        let extra = solid_extra(l.part, r.solid, r.size);
         all = plus(&all, &extra);
-        let alone = principal(&plus(&body.second_moment, &extra))?;
-        parts.push(IdealPart {
-            name: part.name.clone(),
-            solid: r.solid,
-            relative_change: relative_change(&alone, ideal, zero),
-        });
-    }
+        match principal(&plus(&body.second_moment, &extra)) {
+            Ok(alone) => parts.push(IdealPart {
+                name: l.part.name.clone(),
+                solid: r.solid,
+                relative_change: relative_change(&alone, ideal, zero),
+            }),
+            Err(e) => failed = Err(e),
+        }
+    });
+    failed?;
     let solid = principal(&all)?;
     let moments = solid.moments.map(|m| (m * f_inertia).f64());
     if !moments.iter().all(|x| x.is_finite()) {
@@ -219,36 +226,52 @@ pub fn idealisation(
 /// for every part of every report), so the zero threshold is f64's: above
 /// it the error of a share, a few roundoffs of the largest moment over Iₖ,
 /// stays below 1e-3 of it.
-pub fn shares(parts: &[Part], body: &Body, principal: &Principal) -> Vec<[Option<f64>; 3]> {
-    let moments = principal.moments.map(DD::f64);
-    let zero = negligible(Precision::Standard) * moments[2];
-    let axes = principal.axes.map(|a| [a.x, a.y, a.z]);
-    parts
-        .iter()
-        .map(|p| {
-            let m: f64 = p.mass();
-            let c = p.centroid();
-            let d: [f64; 3] = std::array::from_fn(|i| (c[i] - body.center_of_mass[i]).f64());
-            let own: M3<f64> = p.own_second_moment(m);
-            let along: [f64; 3] = axes.map(|a| {
-                let mut q = 0.0;
-                for i in 0..3 {
-                    q += a[i] * a[i] * own[i][i];
-                    for j in i + 1..3 {
-                        q += 2.0 * a[i] * a[j] * own[i][j];
-                    }
+#[derive(Debug, Clone)]
+pub struct Shares {
+    moments: [f64; 3],
+    zero: f64,
+    axes: [[f64; 3]; 3],
+    com: [DD; 3],
+}
+
+impl Shares {
+    /// The shares of the parts of `body`, of principal moments and axes
+    /// `principal`.
+    pub fn new(body: &Body, principal: &Principal) -> Shares {
+        let moments = principal.moments.map(DD::f64);
+        Shares {
+            moments,
+            zero: negligible(Precision::Standard) * moments[2],
+            axes: principal.axes.map(|a| [a.x, a.y, a.z]),
+            com: body.center_of_mass,
+        }
+    }
+
+    /// The shares of the part `p`.
+    pub fn of(&self, p: &Part) -> [Option<f64>; 3] {
+        let m: f64 = p.mass();
+        let c = p.centroid();
+        let d: [f64; 3] = std::array::from_fn(|i| (c[i] - self.com[i]).f64());
+        let own: M3<f64> = p.own_second_moment(m);
+        let along: [f64; 3] = self.axes.map(|a| {
+            let mut q = 0.0;
+            for i in 0..3 {
+                q += a[i] * a[i] * own[i][i];
+                for j in i + 1..3 {
+                    q += 2.0 * a[i] * a[j] * own[i][j];
                 }
-                let ad = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
-                // Exactly of the sign of m (negative for a cut-out);
-                // rounding may leave a trace of the other sign.
-                let q = if m >= 0.0 { q.max(0.0) } else { q.min(0.0) };
-                q + (m * ad) * ad
-            });
-            std::array::from_fn(|k| {
-                (moments[k] > zero).then(|| (along[(k + 1) % 3] + along[(k + 2) % 3]) / moments[k])
-            })
+            }
+            let ad = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+            // Exactly of the sign of m (negative for a cut-out);
+            // rounding may leave a trace of the other sign.
+            let q = if m >= 0.0 { q.max(0.0) } else { q.min(0.0) };
+            q + (m * ad) * ad
+        });
+        std::array::from_fn(|k| {
+            (self.moments[k] > self.zero)
+                .then(|| (along[(k + 1) % 3] + along[(k + 2) % 3]) / self.moments[k])
         })
-        .collect()
+    }
 }
 
 #[cfg(test)]
@@ -262,8 +285,8 @@ mod tests {
 
     fn extra_of(text: &str) -> M3<f64> {
         let m = model(text);
-        let r = m.real_sizes[0];
-        solid_extra(&m.parts[r.part], r.solid, r.size).map(|row| row.map(DD::f64))
+        let r = m.real_sizes()[0];
+        solid_extra(&m.flattened()[r.part], r.solid, r.size).map(|row| row.map(DD::f64))
     }
 
     fn assert_close(a: &M3<f64>, b: &M3<f64>, scale: f64) {
@@ -322,21 +345,11 @@ mod tests {
         let m = model(
             "units = { length = \"mm\" }\n[[part]]\nshape = \"plate\"\nmass = 1\nsize = [10, 10]\ncenter = [0, 0, 0]\nthickness = \"0.2 cm\"\n[[part]]\nshape = \"rod\"\nmass = 1\nlength = 10\ncenter = [0, 0, 0]\ndiameter = 3\n",
         );
-        assert_eq!(m.real_sizes.len(), 2);
+        let rs = m.real_sizes();
+        assert_eq!(rs.len(), 2);
+        assert_eq!((rs[0].part, rs[0].solid, rs[0].size), (0, Solid::Box, 2.0));
         assert_eq!(
-            (
-                m.real_sizes[0].part,
-                m.real_sizes[0].solid,
-                m.real_sizes[0].size
-            ),
-            (0, Solid::Box, 2.0)
-        );
-        assert_eq!(
-            (
-                m.real_sizes[1].part,
-                m.real_sizes[1].solid,
-                m.real_sizes[1].size
-            ),
+            (rs[1].part, rs[1].solid, rs[1].size),
             (1, Solid::Cylinder, 3.0)
         );
     }

@@ -240,7 +240,7 @@ impl SummaryError {
         let blame = match self {
             SummaryError::NotFinite { blame, .. } => *blame,
             SummaryError::NotPhysical { cut, .. } => {
-                return match model.parts.get(*cut) {
+                return match model.part(*cut) {
                     Some(p) => source
                         .error(p.span.clone(), message)
                         .label(match p.assembly.first() {
@@ -298,9 +298,8 @@ impl SummaryError {
 /// The part whose contribution is largest: its |mass|, |m|·|c|, or the
 /// larger of |m|·d² (d from the centre of mass) and the trace of its own
 /// tensor, compared by logarithm so that none of them overflows.
-fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::part::Part> {
+fn largest_contributor(model: &Model, kind: Contribution) -> Option<crate::part::Part> {
     let factors = SiFactors::of(model.units);
-    let si: Vec<crate::part::PartSi> = model.parts.iter().map(|p| p.si_in(&factors)).collect();
     let ln_norm = |v: Vector3<f64>| {
         // ln |v| without overflow: scale by the largest component.
         let big = v.amax();
@@ -310,14 +309,15 @@ fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::part
             big.ln() + (v / big).norm().ln()
         }
     };
-    let total: f64 = si.iter().map(|p| p.mass).sum();
-    let com = if total.is_finite() && total != 0.0 {
-        si.iter()
-            .map(|p| p.center * (p.mass / total))
-            .sum::<Vector3<f64>>()
-    } else {
-        Vector3::zeros()
-    };
+    let mut total = 0.0;
+    model.each_body_part(&mut |p| total += p.si_in(&factors).mass);
+    let mut com = Vector3::zeros();
+    if total.is_finite() && total != 0.0 {
+        model.each_body_part(&mut |p| {
+            let si = p.si_in(&factors);
+            com += si.center * (si.mass / total);
+        });
+    }
     let score = |p: &crate::part::PartSi| {
         let ln_m = p.mass.abs().ln();
         match kind {
@@ -331,12 +331,16 @@ fn largest_contributor(model: &Model, kind: Contribution) -> Option<&crate::part
             }
         }
     };
-    si.iter()
-        .zip(&model.parts)
-        .map(|(s, p)| (score(s), p))
-        .filter(|(s, _)| !s.is_nan())
-        .max_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, p)| p)
+    // Of equal scores, the last.
+    let (mut best, mut index) = (None::<(f64, usize)>, 0);
+    model.each_body_part(&mut |p| {
+        let s = score(&p.si_in(&factors));
+        if !s.is_nan() && best.is_none_or(|(b, _)| s >= b) {
+            best = Some((s, index));
+        }
+        index += 1;
+    });
+    model.part(best?.1)
 }
 
 fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
@@ -374,7 +378,7 @@ pub fn summarize(
     products: Products,
     precision: Precision,
 ) -> Result<Summary, SummaryError> {
-    let body = compose::compose(&model.parts, precision);
+    let body = compose::compose(model, precision);
     let u = model.units;
     let factors = SiFactors::of(u);
     let (f_mass, f_length) = (factors.mass, factors.length);
@@ -444,7 +448,7 @@ pub fn summarize(
         Blame::Parts(Contribution::SecondMoment),
     )?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
-    let shares = ideal::shares(&model.parts, &body, &p_com);
+    let shares = ideal::Shares::new(&body, &p_com);
     let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;
 
     let times = |m: &M3<DD>, v: &Vector3<f64>| -> [DD; 3] {
@@ -497,23 +501,23 @@ pub fn summarize(
         principal_axes_ref: axes(&p_ref),
         equal_moments_ref: p_ref.equal.clone(),
         radii_of_gyration: radii,
-        parts: model
-            .parts
-            .iter()
-            .zip(shares)
-            .map(|(p, share)| {
+        parts: {
+            let mut parts = Vec::with_capacity(model.count);
+            model.each_part(&mut |l| {
+                let p = l.part;
                 let m = p.mass_si(&factors);
-                PartSummary {
+                parts.push(PartSummary {
                     name: p.name.clone(),
                     shape: p.shape,
                     mass: m,
                     mass_fraction: m / mass,
                     center_of_mass: arr(&p.center_si(&factors)),
-                    principal_moment_share: share,
+                    principal_moment_share: shares.of(p),
                     assembly: p.assembly.clone(),
-                }
-            })
-            .collect(),
+                });
+            });
+            parts
+        },
         assemblies: Vec::new(),
         omega: analysis.omega.as_ref().map(arr),
         angular_momentum: h,

@@ -2,18 +2,21 @@
 //! file's parts here, its origin at `origin` and its axes turned by
 //! `rotation`, converted from its units to this file's.
 //!
-//! NOTE: the included parts are moved into this file's frame and units
-//! once, in f64 (each coordinate rounds once, as a unit string does); a
+//! NOTE: each distinct file is read and validated once, however often it
+//! is included, and kept once (`Include` holds it by `Arc`); its parts are
+//! moved into this file's frame and units as a walk reaches them
+//! (`walk`), in f64 (each coordinate rounds once, as a unit string does); a
 //! sub-assembly placed without rotation, at an origin and in units that make
 //! the arithmetic exact (the same units, integer origins) is carried over
 //! exactly.
 
 use super::raw::RawPart;
 use super::rotation::Orientation;
-use super::{Ctx, Model};
+use super::{Ctx, Include, Item, Model};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
-use crate::part::{MassSpec, Part, Place, RealSize, Spec};
+use crate::part::{MassSpec, Place, Spec};
+use crate::shapes::Shape;
 use crate::units::Dim;
 use std::collections::HashMap;
 use std::ops::Range;
@@ -28,7 +31,7 @@ pub const MAX_INCLUDE_DEPTH: usize = 32;
 #[derive(Default)]
 pub(super) struct Files {
     pub(super) stack: Vec<(PathBuf, String)>,
-    cache: HashMap<PathBuf, Model>,
+    cache: HashMap<PathBuf, std::sync::Arc<Model>>,
     /// Every file included, at any depth, as often as it is.
     read: Vec<PathBuf>,
     /// The directory trees includes must stay in (canonical): the
@@ -75,13 +78,14 @@ impl AssemblyNames {
 }
 
 /// Where an included file's frame goes in this file's.
-struct Frame {
+#[derive(Debug, Clone)]
+pub struct Frame {
     /// This file's units.
     origin: [f64; 3],
     r: M3<f64>,
     orientation: Orientation,
     /// The included file's length and mass units in this file's.
-    length: f64,
+    pub(super) length: f64,
     mass: f64,
 }
 
@@ -104,11 +108,11 @@ impl Frame {
         }
     }
 
-    /// A part of the included file, in this file's frame and units.
-    fn place(&self, p: Part) -> Part {
-        let s = &p.spec;
+    /// A part of the included file (`shape`, `s`), in this file's frame
+    /// and units.
+    pub(super) fn place(&self, shape: Shape, s: &Spec) -> Spec {
         // A density per volume, area or length scales with that power.
-        let k = p.shape.info().density.map_or(0, |d| d.length_power);
+        let k = shape.info().density.map_or(0, |d| d.length_power);
         let mass = match s.mass {
             MassSpec::Given(m) => MassSpec::Given(m * self.mass),
             MassSpec::Density(d) => MassSpec::Density(d * self.mass / self.length.powi(k)),
@@ -142,13 +146,10 @@ impl Frame {
                 orientation: self.turn(orientation),
             },
         };
-        Part {
-            spec: Spec {
-                mass,
-                place,
-                removed: s.removed,
-            },
-            ..p
+        Spec {
+            mass,
+            place,
+            removed: s.removed,
         }
     }
 }
@@ -340,17 +341,16 @@ impl Ctx<'_> {
 }
 
 impl Ctx<'_> {
-    /// Expand `[[part]] include = ".."` at position `index` into `parts`
-    /// (and its real sizes into `real`).
+    /// Read `[[part]] include = ".."` at position `index` into the
+    /// sub-assembly it places, `parts` the parts of the body before it.
     pub(super) fn include(
         &self,
         index: usize,
         raw: &Spanned<RawPart>,
         files: &mut Files,
-        parts: &mut Vec<Part>,
-        real: &mut Vec<RealSize>,
+        parts: usize,
         names: &mut AssemblyNames,
-    ) -> Result<(), Diagnostic> {
+    ) -> Result<Item, Diagnostic> {
         let p = raw.get_ref();
         let inc = p.include.as_deref().expect("the caller checked `include`");
         if let Some((key, span)) = super::parts::present_keys(p)
@@ -437,7 +437,7 @@ impl Ctx<'_> {
                 files.stack.push((canonical.clone(), shown_name.clone()));
                 let child = Model::parse_in(&source, files);
                 files.stack.pop();
-                let child = child.map_err(quoted)?;
+                let child = std::sync::Arc::new(child.map_err(quoted)?);
                 files.cache.insert(canonical, child.clone());
                 child
             }
@@ -482,15 +482,7 @@ impl Ctx<'_> {
             length: ratio(Dim::LENGTH),
             mass: ratio(Dim::MASS),
         };
-        let offset = parts.len();
-        for rs in &child.real_sizes {
-            real.push(RealSize {
-                part: rs.part + offset,
-                solid: rs.solid,
-                size: rs.size * frame.length,
-            });
-        }
-        if parts.len() + child.parts.len() > super::MAX_PARTS {
+        if parts + child.count > super::MAX_PARTS {
             return Err(self.err(
                 inc.span(),
                 format!(
@@ -499,19 +491,39 @@ impl Ctx<'_> {
                 ),
             ));
         }
-        for part in child.parts {
-            let mut placed = frame.place(part);
-            // Qualified, so that parts of two copies of a sub-assembly keep
-            // distinct names (in `diff`, `check` and the tables).
-            placed.name = format!("{name} / {}", placed.name);
-            placed.assembly.insert(0, name.clone());
-            placed.span = raw.span();
-            // Representable in this file's units too (the composer works in
-            // them): a sub-assembly in µm and mg can underflow in km and t.
-            self.in_file_range(placed.shape, &placed.spec, &placed.name, inc.span())?;
-            parts.push(placed);
+        let include = Include {
+            name,
+            frame,
+            model: child,
+            span: raw.span(),
+        };
+        // Representable in this file's units too (the composer works in
+        // them): a sub-assembly in µm and mg can underflow in km and t.
+        // Each part of it as placed here (its own sub-assemblies' frames
+        // already checked when that file was read), named.
+        let one = Model {
+            items: vec![Item::Include(Box::new(include))],
+            ..Model::empty(self.units)
+        };
+        let mut bad = None;
+        one.walk(&mut Vec::new(), false, &mut 0, &mut |l| {
+            if bad.is_none()
+                && self
+                    .in_file_range(l.part.shape, &l.part.spec, "", 0..0)
+                    .is_err()
+            {
+                bad = Some(l.index);
+            }
+        });
+        if let Some(index) = bad {
+            // Again, named (names are made for the one part that fails).
+            let p = one.part(index).expect("the part the walk met");
+            self.in_file_range(p.shape, &p.spec, &p.name, inc.span())?;
         }
-        Ok(())
+        let Some(Item::Include(include)) = one.items.into_iter().next() else {
+            unreachable!("the item just made")
+        };
+        Ok(Item::Include(include))
     }
 }
 

@@ -18,9 +18,13 @@ mod place;
 pub mod raw;
 pub mod rotation;
 mod toml_error;
+mod walk;
+
+pub use include::Frame;
+pub use walk::Leaf;
 
 use crate::diag::{Diagnostic, Source};
-use crate::part::{Part, RealSize};
+use crate::part::{Part, Solid};
 use crate::units::{self, Dim, FileUnits};
 use ctx::Ctx;
 use nalgebra::Vector3;
@@ -36,22 +40,50 @@ pub struct Model {
     /// The file's `name`, if given.
     pub name: Option<String>,
     pub units: FileUnits,
-    pub parts: Vec<Part>,
+    /// The file's own parts and sub-assemblies, in file order. The body's
+    /// parts, sub-assemblies expanded, come from a walk (`each_part`).
+    pub items: Vec<Item>,
+    /// The parts of the body, sub-assemblies expanded.
+    pub count: usize,
     pub analysis: Analysis,
     /// `[expect]`, one scalar check per component.
     pub expect: Vec<expect::Check>,
-    /// The real thickness of plates and diameter of rods that give one, in
-    /// file order; empty when none does.
-    ///
-    /// NOTE: kept beside the parts, not in `Spec`, so that the composer
-    /// cannot see them: the composition is the idealised one whatever these
-    /// say, and only the report compares it with the solids.
-    pub real_sizes: Vec<RealSize>,
+    /// Whether some part, at any depth, gives its real thickness or
+    /// diameter (`Item::Part::real`).
+    pub has_real_sizes: bool,
     /// `[materials]`: name → density, kg/m³.
     pub materials: std::collections::BTreeMap<String, f64>,
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
+}
+
+/// One `[[part]]` of a file: a part, or a sub-assembly placed.
+#[derive(Debug, Clone)]
+pub enum Item {
+    Part {
+        part: Part,
+        /// The real thickness of a plate or diameter of a rod that gives
+        /// one, in the file's length unit.
+        ///
+        /// NOTE: kept beside the part, not in `Spec`, so that the composer
+        /// cannot see it: the composition is the idealised one whatever
+        /// this says, and only the report compares it with the solid.
+        real: Option<(Solid, f64)>,
+    },
+    Include(Box<Include>),
+}
+
+/// A sub-assembly: an included file, placed.
+#[derive(Debug, Clone)]
+pub struct Include {
+    /// Its name in this file: `wheel`, `wheel #2`, …
+    pub name: String,
+    pub frame: Frame,
+    /// The file, read once however often it is included.
+    pub model: std::sync::Arc<Model>,
+    /// Its `[[part]]` table in this file.
+    pub span: Range<usize>,
 }
 
 /// `[analysis]` in the file's units: reference point (file length), ω
@@ -70,6 +102,21 @@ pub struct Analysis {
 }
 
 impl Model {
+    /// A model of no parts, to be filled in.
+    fn empty(units: FileUnits) -> Model {
+        Model {
+            name: None,
+            units,
+            items: Vec::new(),
+            count: 0,
+            analysis: Analysis::default(),
+            expect: Vec::new(),
+            has_real_sizes: false,
+            materials: Default::default(),
+            included: Vec::new(),
+        }
+    }
+
     /// Parse and validate a part file; its includes may come from its own
     /// directory tree and the working directory's.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
@@ -178,31 +225,24 @@ impl Model {
         if files.stack.len() <= 1 {
             ctx.check_part_count(raw_parts, files)?;
         }
-        let mut parts = Vec::with_capacity(raw_parts.len());
-        let mut real_sizes = Vec::new();
+        let mut items = Vec::with_capacity(raw_parts.len());
+        let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
         for (i, p) in raw_parts.iter().enumerate() {
             if p.get_ref().include.is_some() {
-                ctx.include(
-                    i,
-                    p,
-                    files,
-                    &mut parts,
-                    &mut real_sizes,
-                    &mut assembly_names,
-                )?;
+                let item = ctx.include(i, p, files, count, &mut assembly_names)?;
+                if let Item::Include(inc) = &item {
+                    count += inc.model.count;
+                    has_real_sizes |= inc.model.has_real_sizes;
+                }
+                items.push(item);
                 continue;
             }
             let (part, real) = ctx.part(i, p)?;
-            if let Some((solid, size)) = real {
-                real_sizes.push(RealSize {
-                    part: parts.len(),
-                    solid,
-                    size,
-                });
-            }
-            parts.push(part);
+            has_real_sizes |= real.is_some();
+            count += 1;
+            items.push(Item::Part { part, real });
         }
         let analysis = match &raw.analysis {
             Some(a) => ctx.analysis(a)?,
@@ -215,7 +255,8 @@ impl Model {
         Ok(Model {
             name: raw.name.map(|n| n.into_inner()),
             units,
-            parts,
+            items,
+            count,
             analysis,
             expect,
             materials: ctx
@@ -223,7 +264,7 @@ impl Model {
                 .iter()
                 .map(|(k, v)| (k.clone(), v.0))
                 .collect(),
-            real_sizes,
+            has_real_sizes,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
         })
@@ -235,16 +276,11 @@ impl Model {
     /// depth, if only one sub-assembly has it, or its path
     /// (`front / wheel #2`). Returns the sub-assembly's path.
     pub fn only(&mut self, name: &str) -> Result<Vec<String>, String> {
-        let mut prefixes: Vec<&[String]> = Vec::new();
-        let mut seen = std::collections::HashSet::new();
-        for p in &self.parts {
-            for depth in 1..=p.assembly.len() {
-                let prefix = &p.assembly[..depth];
-                if seen.insert(prefix) {
-                    prefixes.push(prefix);
-                }
-            }
-        }
+        // Every sub-assembly's path, parents first.
+        let mut prefixes: Vec<Vec<String>> = Vec::new();
+        self.each_assembly(&mut Vec::new(), &mut |path| {
+            prefixes.push(path.iter().map(|s| s.to_string()).collect());
+        });
         // At most this many names in a message; the rest are counted.
         const LISTED: usize = 12;
         let list = |names: Vec<String>| {
@@ -260,9 +296,8 @@ impl Model {
             }
             text
         };
-        let matching: Vec<&[String]> = prefixes
+        let matching: Vec<&Vec<String>> = prefixes
             .iter()
-            .copied()
             .filter(|q| q.join(" / ") == name || q.last().is_some_and(|l| l == name))
             .collect();
         let target: Vec<String> = match matching.as_slice() {
@@ -288,24 +323,61 @@ impl Model {
                 ));
             }
         };
-        let keep: Vec<bool> = self
-            .parts
-            .iter()
-            .map(|p| p.assembly.starts_with(&target))
-            .collect();
-        let mut index = Vec::with_capacity(keep.len());
-        let mut next = 0;
-        for k in &keep {
-            index.push(next);
-            next += usize::from(*k);
-        }
-        self.real_sizes.retain(|r| keep[r.part]);
-        for r in &mut self.real_sizes {
-            r.part = index[r.part];
-        }
-        let mut k = keep.iter();
-        self.parts.retain(|_| *k.next().expect("one flag per part"));
+        *self = self.keeping(&target);
         Ok(target)
+    }
+
+    /// Each sub-assembly's path, parents before children.
+    fn each_assembly<'m>(&'m self, path: &mut Vec<&'m str>, f: &mut dyn FnMut(&[&str])) {
+        for item in &self.items {
+            if let Item::Include(inc) = item {
+                path.push(&inc.name);
+                f(path);
+                inc.model.each_assembly(path, f);
+                path.pop();
+            }
+        }
+    }
+
+    /// This model with only the sub-assembly at `path` (a path `only`
+    /// found, so every step of it names one include).
+    fn keeping(&self, path: &[String]) -> Model {
+        let Some((first, rest)) = path.split_first() else {
+            return self.clone();
+        };
+        let mut items = Vec::new();
+        let (mut count, mut has_real_sizes) = (0, false);
+        for item in &self.items {
+            if let Item::Include(inc) = item {
+                if inc.name == *first {
+                    let model = std::sync::Arc::new(inc.model.keeping(rest));
+                    count = model.count;
+                    has_real_sizes = model.has_real_sizes;
+                    items.push(Item::Include(Box::new(Include {
+                        model,
+                        ..(**inc).clone()
+                    })));
+                }
+            }
+        }
+        Model {
+            items,
+            count,
+            has_real_sizes,
+            ..self.clone_without_items()
+        }
+    }
+
+    /// Everything but the parts.
+    fn clone_without_items(&self) -> Model {
+        Model {
+            name: self.name.clone(),
+            analysis: self.analysis.clone(),
+            expect: self.expect.clone(),
+            materials: self.materials.clone(),
+            included: self.included.clone(),
+            ..Model::empty(self.units)
+        }
     }
 }
 

@@ -356,9 +356,9 @@ fn the_far_offset_scene_defeats_summing_about_the_origin() {
     // something.
     let t = Vector3::new(1.0, -2.0, 3.0) * 1e9;
     let model = Model::parse(&Source::new("t.toml", assembly(t, false))).unwrap();
-    let body = massprop::compose::compose(&model.parts, Precision::Standard);
+    let body = massprop::compose::compose(&model, Precision::Standard);
     let com = Vector3::from(body.center_of_mass.map(|c| c.f64()));
-    let naive: Matrix3<f64> = model.parts.iter().fold(Matrix3::zeros(), |acc, p| {
+    let naive: Matrix3<f64> = model.flattened().iter().fold(Matrix3::zeros(), |acc, p| {
         let s = p.si(model.units);
         acc + s.second_moment + s.center * s.center.transpose() * s.mass
     }) - com * com.transpose() * body.mass.f64();
@@ -1292,8 +1292,11 @@ fn copies_of_a_sub_assembly_get_distinct_names_and_only_takes_paths() {
     assert!(err.contains("ambiguous"), "{err}");
     let mut m = model.clone();
     m.only("rear / wheel #2").unwrap();
-    assert_eq!(m.parts.len(), 1);
-    assert_eq!(m.parts[0].si(m.units).center, Vector3::new(-1.2, -0.8, 0.0));
+    assert_eq!(m.count, 1);
+    assert_eq!(
+        m.flattened()[0].si(m.units).center,
+        Vector3::new(-1.2, -0.8, 0.0)
+    );
     std::fs::remove_dir_all(&dir).ok();
 }
 

@@ -1622,7 +1622,7 @@ fn the_every_shape_scene_has_every_shape() {
     let model = massprop::model::Model::parse(&massprop::diag::Source::new("s.toml", text))
         .unwrap_or_else(|d| panic!("{d}"));
     let mut drawn: std::collections::BTreeSet<&str> =
-        model.parts.iter().map(|p| p.shape.name()).collect();
+        model.flattened().iter().map(|p| p.shape.name()).collect();
     drawn.extend(["box", "plate", "rod", "point"]);
     let all: std::collections::BTreeSet<&str> =
         massprop::shapes::SHAPES.iter().map(|s| s.name).collect();

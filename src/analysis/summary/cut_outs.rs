@@ -5,7 +5,7 @@
 use super::SummaryError;
 use crate::model::Model;
 use crate::numeric::{M3, Real};
-use crate::part::SiFactors;
+use crate::part::{Part, SiFactors};
 use crate::tolerance::VALIDITY_RTOL;
 use nalgebra::{Matrix3, Vector3};
 
@@ -22,30 +22,42 @@ pub(super) fn leave_a_body(
     body: &crate::mass::Body,
     mass: f64,
 ) -> Result<(), SummaryError> {
-    let cuts: Vec<usize> = (0..model.parts.len())
-        .filter(|&i| model.parts[i].spec.removed)
-        .collect();
-    let Some(&first) = cuts.first() else {
+    // Relative to the masses that cancel: what is left of equal and
+    // opposite masses is rounding, not a body.
+    let factors = SiFactors::of(model.units);
+    // The cut-outs, the first and the heaviest, and the gross mass.
+    let (mut cuts, mut index) = (0usize, 0usize);
+    let (mut first, mut heaviest, mut heaviest_mass) = (0, 0, f64::NEG_INFINITY);
+    let mut gross = 0.0;
+    model.each_body_part(&mut |p| {
+        let m = p.mass_si(&factors).abs();
+        gross += m;
+        if p.spec.removed {
+            if cuts == 0 {
+                first = index;
+            }
+            cuts += 1;
+            if m > heaviest_mass {
+                (heaviest, heaviest_mass) = (index, m);
+            }
+        }
+        index += 1;
+    });
+    if cuts == 0 {
         return Ok(());
-    };
+    }
     // "the cut-out `a` removes …", or "the 3 cut-outs remove …, `a` the most".
     let them = |worst: usize, what: &str| {
         // Quoted as messages quote names: a 2 MB name is cut.
-        let name = crate::diag::shorten(&model.parts[worst].name);
-        match cuts.len() {
+        let part = model.part(worst).expect("a part of the body");
+        let name = crate::diag::shorten(&part.name);
+        match cuts {
             1 => format!("the cut-out `{name}` removes {what}"),
             n => format!("the {n} cut-outs remove {what}, `{name}` the most"),
         }
     };
-    // Relative to the masses that cancel: what is left of equal and
-    // opposite masses is rounding, not a body.
-    let factors = SiFactors::of(model.units);
-    let gross: f64 = model.parts.iter().map(|p| p.mass_si(&factors).abs()).sum();
     if !(mass > VALIDITY_RTOL * gross) {
-        let worst = cuts.iter().copied().fold(first, |w, i| {
-            let m = |i: usize| model.parts[i].mass_si(&factors).abs();
-            if m(i) > m(w) { i } else { w }
-        });
+        let worst = heaviest;
         return Err(SummaryError::NotPhysical {
             message: format!(
                 "the total mass is {mass:.4e} kg of {gross:.4e} kg of parts: {}",
@@ -83,11 +95,17 @@ pub(super) fn leave_a_body(
     // Shown with its largest component positive, and no `-0.000`.
     let u = if u[u.iamax()] < 0.0 { -u } else { u };
     let shown = u.map(|x| if x.abs() < 5e-4 { 0.0 } else { x });
-    let along = |i: usize| scaled.along(i, &u);
-    let worst = cuts
-        .iter()
-        .copied()
-        .fold(first, |w, i| if along(i) < along(w) { i } else { w });
+    // The first of the cut-outs that remove the most.
+    let (mut worst, mut least, mut index) = (first, f64::INFINITY, 0);
+    model.each_body_part(&mut |p| {
+        if p.spec.removed {
+            let a = scaled.along(p, &u);
+            if a < least || (index == first && !(least <= a)) {
+                (worst, least) = (index, a);
+            }
+        }
+        index += 1;
+    });
     Err(SummaryError::NotPhysical {
         message: format!(
             "the body is not physical: its second moment along ({:.3}, {:.3}, {:.3}) is negative; {}",
@@ -116,8 +134,8 @@ struct Scaled<'m> {
 
 impl<'m> Scaled<'m> {
     fn of(model: &'m Model) -> Scaled<'m> {
-        let parts = || model.parts.iter();
-        let mass = parts().fold(f64::MIN_POSITIVE, |a, p| a.max(p.mass::<f64>().abs()));
+        let mut mass = f64::MIN_POSITIVE;
+        model.each_body_part(&mut |p| mass = mass.max(p.mass::<f64>().abs()));
         let mut s = Scaled {
             model,
             mass,
@@ -125,30 +143,32 @@ impl<'m> Scaled<'m> {
             com: Vector3::zeros(),
         };
         // √|tr| / √|m|, not √(|tr| / |m|): the ratio alone can overflow.
-        let length = (0..model.parts.len()).fold(0.0f64, |a, i| {
-            let (m, c, own) = s.part(i);
+        let mut length = 0.0f64;
+        model.each_body_part(&mut |p| {
+            let (m, c, own) = s.part(p);
             let gyration = own.trace().abs().sqrt() / m.abs().sqrt();
-            a.max(c.amax())
-                .max(if gyration.is_finite() { gyration } else { 0.0 })
+            length = length
+                .max(c.amax())
+                .max(if gyration.is_finite() { gyration } else { 0.0 });
         });
         s.length = if length > 0.0 && length.is_finite() {
             length
         } else {
             1.0
         };
-        let total: f64 = parts().map(|p| p.mass::<f64>() / mass).sum();
-        s.com = (0..model.parts.len())
-            .map(|i| {
-                let (m, c, _) = s.part(i);
-                c * (m / total)
-            })
-            .sum();
+        let mut total = 0.0;
+        model.each_body_part(&mut |p| total += p.mass::<f64>() / mass);
+        let mut com = Vector3::zeros();
+        model.each_body_part(&mut |p| {
+            let (m, c, _) = s.part(p);
+            com += c * (m / total);
+        });
+        s.com = com;
         s
     }
 
-    /// Part `i`'s m (signed), centroid, and ∫ρρᵀ dm about it, scaled.
-    fn part(&self, i: usize) -> (f64, Vector3<f64>, Matrix3<f64>) {
-        let p = &self.model.parts[i];
+    /// The part's m (signed), centroid, and ∫ρρᵀ dm about it, scaled.
+    fn part(&self, p: &Part) -> (f64, Vector3<f64>, Matrix3<f64>) {
         let m = p.mass::<f64>() / self.mass;
         let own = p.own_second_moment(m);
         let c = Vector3::from(p.centroid().map(|x| x.f64())) / self.length;
@@ -156,22 +176,23 @@ impl<'m> Scaled<'m> {
         (m, c, own)
     }
 
-    /// Part `i`'s second moment about the centre of mass.
-    fn of_part(&self, i: usize) -> Matrix3<f64> {
-        let (m, c, own) = self.part(i);
+    /// The part's second moment about the centre of mass.
+    fn of_part(&self, p: &Part) -> Matrix3<f64> {
+        let (m, c, own) = self.part(p);
         let d = c - self.com;
         own + d * d.transpose() * m
     }
 
     /// The body's second moment about its centre of mass.
     fn total(&self) -> M3<f64> {
-        let t: Matrix3<f64> = (0..self.model.parts.len()).map(|i| self.of_part(i)).sum();
+        let mut t = Matrix3::zeros();
+        self.model.each_body_part(&mut |p| t += self.of_part(p));
         std::array::from_fn(|i| std::array::from_fn(|j| t[(i, j)]))
     }
 
-    /// Part `i`'s second moment along the unit direction `u`: uᵀ C u
+    /// The part's second moment along the unit direction `u`: uᵀ C u
     /// (negative for a cut-out).
-    fn along(&self, i: usize, u: &Vector3<f64>) -> f64 {
-        (u.transpose() * self.of_part(i) * u)[(0, 0)]
+    fn along(&self, p: &Part, u: &Vector3<f64>) -> f64 {
+        (u.transpose() * self.of_part(p) * u)[(0, 0)]
     }
 }
