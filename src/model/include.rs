@@ -500,14 +500,15 @@ impl Ctx<'_> {
         // Representable in this file's units too (the composer works in
         // them): a sub-assembly in µm and mg can underflow in km and t.
         // Each part of it as placed here (its own sub-assemblies' frames
-        // already checked when that file was read), named.
+        // already checked when that file was read).
         let one = Model {
             items: vec![Item::Include(Box::new(include))],
             ..Model::empty(self.units)
         };
         let mut bad = None;
-        one.walk(&mut Vec::new(), false, &mut 0, &mut |l| {
-            if bad.is_none()
+        one.each_event(&mut |e| {
+            if let super::Event::Part(l) = e
+                && bad.is_none()
                 && self
                     .in_file_range(l.part.shape, &l.part.spec, "", 0..0)
                     .is_err()

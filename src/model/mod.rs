@@ -21,7 +21,7 @@ mod toml_error;
 mod walk;
 
 pub use include::Frame;
-pub use walk::Leaf;
+pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};
 use crate::part::{Part, Solid};

@@ -33,17 +33,39 @@ pub struct Leaf<'a> {
     pub real: Option<RealSize>,
 }
 
+/// What a walk of the tree meets, in file order: a sub-assembly entered,
+/// a part, the sub-assembly left.
+pub enum Event<'a> {
+    Enter(&'a Include),
+    Part(Leaf<'a>),
+    Exit,
+}
+
 impl Model {
     /// Every part of the body, named, in file order.
     pub fn each_part(&self, f: &mut dyn FnMut(Leaf<'_>)) {
-        self.walk(&mut Vec::new(), true, &mut 0, f);
+        self.walk(&mut Vec::new(), true, &mut 0, &mut |e| {
+            if let Event::Part(l) = e {
+                f(l);
+            }
+        });
+    }
+
+    /// Every part and sub-assembly, in file order; parts unnamed, as
+    /// `each_body_part`'s.
+    pub fn each_event(&self, f: &mut dyn FnMut(Event<'_>)) {
+        self.walk(&mut Vec::new(), false, &mut 0, f);
     }
 
     /// Every part of the body, in file order, for its physics only: a part
     /// of a sub-assembly has neither its name nor its sub-assemblies
     /// (nothing of them is allocated).
     pub fn each_body_part(&self, f: &mut dyn FnMut(&Part)) {
-        self.walk(&mut Vec::new(), false, &mut 0, &mut |l| f(l.part));
+        self.walk(&mut Vec::new(), false, &mut 0, &mut |e| {
+            if let Event::Part(l) = e {
+                f(l.part);
+            }
+        });
     }
 
     /// All the parts, expanded into memory: for tests and for `diff`, which
@@ -75,8 +97,8 @@ impl Model {
     }
 
     fn each_body_part_real(&self, f: &mut dyn FnMut(RealSize)) {
-        self.walk(&mut Vec::new(), false, &mut 0, &mut |l| {
-            if let Some(r) = l.real {
+        self.walk(&mut Vec::new(), false, &mut 0, &mut |e| {
+            if let Event::Part(Leaf { real: Some(r), .. }) = e {
                 f(r);
             }
         });
@@ -89,55 +111,100 @@ impl Model {
         frames: &mut Vec<&'m Include>,
         named: bool,
         next: &mut usize,
-        f: &mut dyn FnMut(Leaf<'_>),
+        f: &mut dyn FnMut(Event<'_>),
     ) {
-        for item in &self.items {
+        let mut walk = Walk {
+            frames: std::mem::take(frames),
+            named,
+            next: *next,
+            prefix: String::new(),
+            placed: Part {
+                name: String::new(),
+                shape: crate::shapes::Shape::ALL[0],
+                spec: crate::part::Spec {
+                    mass: crate::part::MassSpec::Given(0.0),
+                    place: crate::part::Place::Vertices([[0.0; 3]; 3]),
+                    removed: false,
+                },
+                assembly: Vec::new(),
+                span: 0..0,
+            },
+        };
+        walk.items(self, f);
+        *next = walk.next;
+        *frames = walk.frames;
+    }
+}
+
+/// A walk under way.
+///
+/// NOTE: the part handed out for a sub-assembly's part is one `Part`
+/// reused, its path (`prefix`, `assembly`) kept as sub-assemblies are
+/// entered and left: a part 20 sub-assemblies deep costs no allocation for
+/// its name or path (made afresh for each, they were 40 of the 2²⁰ parts'
+/// 42 allocations).
+struct Walk<'m> {
+    frames: Vec<&'m Include>,
+    named: bool,
+    next: usize,
+    /// `a / b / `: the names of the sub-assemblies entered.
+    prefix: String,
+    placed: Part,
+}
+
+impl<'m> Walk<'m> {
+    fn items(&mut self, model: &'m Model, f: &mut dyn FnMut(Event<'_>)) {
+        for item in &model.items {
             match item {
                 Item::Include(inc) => {
-                    frames.push(inc);
-                    inc.model.walk(frames, named, next, f);
-                    frames.pop();
+                    f(Event::Enter(inc));
+                    self.frames.push(inc);
+                    let len = self.prefix.len();
+                    if self.named {
+                        self.prefix.push_str(&inc.name);
+                        self.prefix.push_str(" / ");
+                        self.placed.assembly.push(inc.name.clone());
+                    }
+                    self.items(&inc.model, f);
+                    if self.named {
+                        self.prefix.truncate(len);
+                        self.placed.assembly.pop();
+                    }
+                    self.frames.pop();
+                    f(Event::Exit);
                 }
                 Item::Part { part, real } => {
-                    let index = *next;
-                    *next += 1;
+                    let index = self.next;
+                    self.next += 1;
                     let mut real = real.map(|(solid, size)| RealSize {
                         part: index,
                         solid,
                         size,
                     });
-                    if frames.is_empty() {
-                        f(Leaf { index, part, real });
+                    let Some(outermost) = self.frames.first() else {
+                        f(Event::Part(Leaf { index, part, real }));
                         continue;
-                    }
-                    let mut placed = Part {
-                        name: String::new(),
-                        shape: part.shape,
-                        spec: part.spec.clone(),
-                        assembly: Vec::new(),
-                        span: frames[0].span.clone(),
                     };
-                    for inc in frames.iter().rev() {
+                    let placed = &mut self.placed;
+                    placed.shape = part.shape;
+                    placed.span = outermost.span.clone();
+                    placed.spec = part.spec.clone();
+                    for inc in self.frames.iter().rev() {
                         placed.spec = inc.frame.place(part.shape, &placed.spec);
                         if let Some(r) = &mut real {
                             r.size *= inc.frame.length;
                         }
                     }
-                    if named {
-                        placed.assembly = frames.iter().map(|i| i.name.clone()).collect();
-                        let mut name = String::new();
-                        for a in &placed.assembly {
-                            name.push_str(a);
-                            name.push_str(" / ");
-                        }
-                        name.push_str(&part.name);
-                        placed.name = name;
+                    if self.named {
+                        placed.name.clear();
+                        placed.name.push_str(&self.prefix);
+                        placed.name.push_str(&part.name);
                     }
-                    f(Leaf {
+                    f(Event::Part(Leaf {
                         index,
-                        part: &placed,
+                        part: placed,
                         real,
-                    });
+                    }));
                 }
             }
         }
