@@ -189,12 +189,25 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
 /// link, its target gets the text), and something that is not a regular
 /// file (/dev/stdout, a FIFO, a device) is written directly.
 pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
+    write_atomically_with(path, &|w| w.write_all(text.as_bytes()), what)
+}
+
+/// What is written: called once, with the file (or standard output) to
+/// write it to, so that a long output is written as it is made.
+pub type Content<'a> = dyn Fn(&mut dyn Write) -> std::io::Result<()> + 'a;
+
+/// `write_atomically`, the text written by `content`.
+pub fn write_atomically_with(path: &str, content: &Content, what: &str) -> Result<(), Diagnostic> {
     let fail = |e: std::io::Error| Diagnostic::file(path, format!("cannot write {what}: {e}"));
     let write_directly = |to: &Path| {
         std::fs::OpenOptions::new()
             .write(true)
             .open(to)
-            .and_then(|mut f| f.write_all(text.as_bytes()))
+            .and_then(|f| {
+                let mut w = std::io::BufWriter::new(f);
+                content(&mut w)?;
+                w.flush()
+            })
             .map_err(fail)
     };
     // `-o /dev/stdout` (or any name of the file) with standard output a
@@ -202,11 +215,8 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
     // to standard output, after what the shell wrote there. A rename put a
     // new file in place of out.txt and lost the rest.
     if FileId::of_stdout().is_some_and(|out| FileId::of(Path::new(path)) == Some(out)) {
-        let mut out = std::io::stdout().lock();
-        return out
-            .write_all(text.as_bytes())
-            .and_then(|()| out.flush())
-            .map_err(fail);
+        let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+        return content(&mut out).and_then(|()| out.flush()).map_err(fail);
     }
     // NOTE: asked first, of the path itself (stat follows the links): with
     // stdout a pipe, /dev/stdout resolves to /proc/self/fd/1 and on to
@@ -252,9 +262,14 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
                 ));
             }
             let old = read_capped(&mut file, path, false)?;
-            write_in_place(&mut file, &old, text.as_bytes(), links(&meta), path, what)
+            // NOTE: made in memory first: a write in place that fails
+            // puts the old text back, and must not have begun before the
+            // new text is whole.
+            let mut text = Vec::new();
+            content(&mut text).map_err(fail)?;
+            write_in_place(&mut file, &old, &text, links(&meta), path, what)
         }
-        meta => replace_by_rename(&target, meta.ok().as_ref(), text, path, what),
+        meta => replace_by_rename(&target, meta.ok().as_ref(), content, path, what),
     }
 }
 
@@ -386,7 +401,13 @@ impl Rewrite {
                 what,
             )
         } else {
-            replace_by_rename(&self.target, Some(&self.meta), text, &self.name, what)
+            replace_by_rename(
+                &self.target,
+                Some(&self.meta),
+                &|w| w.write_all(text.as_bytes()),
+                &self.name,
+                what,
+            )
         }
     }
 }
@@ -424,7 +445,7 @@ fn links(meta: &std::fs::Metadata) -> u64 {
 fn replace_by_rename(
     target: &Path,
     meta: Option<&std::fs::Metadata>,
-    text: &str,
+    content: &Content,
     name: &str,
     what: &str,
 ) -> Result<(), Diagnostic> {
@@ -456,7 +477,9 @@ fn replace_by_rename(
     if let Some(meta) = meta {
         keep_owner(tmp.as_file(), meta, name, what)?;
     }
-    tmp.as_file().write_all(text.as_bytes()).map_err(fail)?;
+    let mut w = std::io::BufWriter::new(tmp.as_file());
+    content(&mut w).and_then(|()| w.flush()).map_err(fail)?;
+    drop(w);
     if let Some(meta) = meta {
         // After the owner: chown clears the set-user-ID and set-group-ID bits.
         tmp.as_file()

@@ -27,9 +27,12 @@ fn main() -> ExitCode {
     match massprop::run(&cli) {
         Ok(out) => {
             to_stderr(&out.stderr);
-            let mut stdout = std::io::stdout().lock();
-            match stdout
-                .write_all(out.stdout.as_bytes())
+            // Written as it is made: a report of 2²⁰ parts is never all in
+            // memory.
+            let mut stdout = std::io::BufWriter::with_capacity(1 << 16, std::io::stdout().lock());
+            match out
+                .stdout
+                .write_to(&mut stdout)
                 .and_then(|()| stdout.flush())
             {
                 Ok(()) => ExitCode::from(out.status),

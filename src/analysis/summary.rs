@@ -3,6 +3,9 @@
 //! and prints it for people in the file's units.
 
 mod cut_outs;
+mod rows;
+
+pub use rows::{Assemblies, Parts};
 
 use super::Products;
 use super::ideal;
@@ -75,53 +78,6 @@ pub struct AssemblySummary {
     pub principal_moment_share: [Option<f64>; 3],
 }
 
-/// The sub-assemblies of the parts, each path once, in the order they
-/// first appear (so a parent comes before its children).
-fn assemblies(parts: &[PartSummary], total: f64) -> Vec<AssemblySummary> {
-    // Each sub-assembly (a path prefix of some part's), in order of first
-    // appearance, with its parts: one pass, hashed (comparing every part
-    // with every sub-assembly made 10,000 includes take seconds).
-    let mut index: std::collections::HashMap<&[String], usize> = Default::default();
-    let mut paths: Vec<(&[String], Vec<&PartSummary>)> = Vec::new();
-    for p in parts {
-        for depth in 1..=p.assembly.len() {
-            let path = &p.assembly[..depth];
-            let i = *index.entry(path).or_insert_with(|| {
-                paths.push((path, Vec::new()));
-                paths.len() - 1
-            });
-            paths[i].1.push(p);
-        }
-    }
-    paths
-        .into_iter()
-        .map(|(path, inside)| {
-            let path = path.to_vec();
-            let mass: f64 = inside.iter().map(|p| p.mass).sum();
-            let center_of_mass = std::array::from_fn(|i| {
-                inside
-                    .iter()
-                    .map(|p| p.mass / mass * p.center_of_mass[i])
-                    .sum()
-            });
-            let principal_moment_share = std::array::from_fn(|k| {
-                inside
-                    .iter()
-                    .map(|p| p.principal_moment_share[k])
-                    .sum::<Option<f64>>()
-            });
-            AssemblySummary {
-                parts: inside.len(),
-                mass,
-                mass_fraction: mass / total,
-                center_of_mass,
-                principal_moment_share,
-                path,
-            }
-        })
-        .collect()
-}
-
 /// Everything `report` prints, in SI. Field names are the JSON keys.
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
@@ -152,7 +108,8 @@ pub struct Summary {
     pub equal_moments_ref: Vec<usize>,
     /// √(Iᵢ/m) of the principal moments about the centre of mass.
     pub radii_of_gyration: [f64; 3],
-    pub parts: Vec<PartSummary>,
+    /// A row per part, made as it is written (`Parts::each`).
+    pub parts: Parts,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub omega: Option<[f64; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -169,8 +126,8 @@ pub struct Summary {
     pub idealisation: Option<ideal::Idealisation>,
     /// The sub-assemblies (`include`), parents before children; absent
     /// when there are none.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub assemblies: Vec<AssemblySummary>,
+    #[serde(skip_serializing_if = "Assemblies::is_empty")]
+    pub assemblies: Assemblies,
     /// Whether a reference point was given (else it is the centre of mass).
     #[serde(skip)]
     pub reference_given: bool,
@@ -482,7 +439,13 @@ pub fn summarize(
         finite(m, "Euler moment", Blame::Alpha)?;
     }
 
-    let mut summary = Summary {
+    let made_from = std::sync::Arc::new(rows::Source {
+        model: model.clone(),
+        factors,
+        shares,
+        mass,
+    });
+    Ok(Summary {
         format_version: FORMAT_VERSION,
         name: model.name.clone(),
         sub_assembly: None,
@@ -501,24 +464,8 @@ pub fn summarize(
         principal_axes_ref: axes(&p_ref),
         equal_moments_ref: p_ref.equal.clone(),
         radii_of_gyration: radii,
-        parts: {
-            let mut parts = Vec::with_capacity(model.count);
-            model.each_part(&mut |l| {
-                let p = l.part;
-                let m = p.mass_si(&factors);
-                parts.push(PartSummary {
-                    name: p.name.clone(),
-                    shape: p.shape,
-                    mass: m,
-                    mass_fraction: m / mass,
-                    center_of_mass: arr(&p.center_si(&factors)),
-                    principal_moment_share: shares.of(p),
-                    assembly: p.assembly.clone(),
-                });
-            });
-            parts
-        },
-        assemblies: Vec::new(),
+        parts: Parts(made_from.clone()),
+        assemblies: Assemblies(made_from),
         omega: analysis.omega.as_ref().map(arr),
         angular_momentum: h,
         kinetic_energy: t,
@@ -527,9 +474,7 @@ pub fn summarize(
         idealisation,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
-    };
-    summary.assemblies = assemblies(&summary.parts, summary.mass);
-    Ok(summary)
+    })
 }
 
 #[cfg(test)]

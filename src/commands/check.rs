@@ -221,7 +221,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         0
     };
     Ok(Outcome {
-        stdout: render::render(&render::Output::Check(&results), o.format),
+        stdout: super::Stdout::Text(render::render(&render::Output::Check(&results), o.format)),
         stderr,
         status,
         read,

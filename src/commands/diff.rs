@@ -45,7 +45,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
     let diff = Diff::of(old, new, tol)?;
     Ok(Outcome {
-        stdout: render::render(&render::Output::Diff(&diff), o.format),
+        stdout: super::Stdout::Text(render::render(&render::Output::Diff(&diff), o.format)),
         stderr: String::new(),
         status: u8::from(diff.changed),
         read,

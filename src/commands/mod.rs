@@ -10,14 +10,51 @@ pub mod materials;
 pub mod report;
 
 use crate::diag::Diagnostic;
-use crate::io::{FileId, write_atomically};
+use crate::io::{FileId, write_atomically_with};
 use std::path::{Path, PathBuf};
+
+/// What a run prints on standard output (or into `-o`'s file).
+#[derive(Debug, Clone)]
+pub enum Stdout {
+    /// Made already (small).
+    Text(String),
+    /// A report, written as it is made: its rows, one per part and per
+    /// sub-assembly, are never all in memory.
+    Report {
+        summary: Box<crate::analysis::summary::Summary>,
+        /// The name of the part file.
+        source: String,
+        format: crate::render::Format,
+    },
+}
+
+impl Stdout {
+    /// Write it to `w`.
+    pub fn write_to(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        match self {
+            Stdout::Text(t) => w.write_all(t.as_bytes()),
+            Stdout::Report {
+                summary,
+                source,
+                format,
+            } => crate::render::write(&crate::render::Output::Report(summary, source), *format, w),
+        }
+    }
+
+    /// All of it, in memory (for tests).
+    pub fn text(&self) -> String {
+        let mut out = Vec::new();
+        self.write_to(&mut out)
+            .expect("invariant: writing to memory does not fail");
+        String::from_utf8(out).expect("invariant: every output is UTF-8")
+    }
+}
 
 /// What a run that completed prints and the exit status it ends with
 /// (`check` reports invalid files on stderr and still checks the rest).
-#[derive(Debug, Clone, PartialEq, Eq)]
+#[derive(Debug, Clone)]
 pub struct Outcome {
-    pub stdout: String,
+    pub stdout: Stdout,
     pub stderr: String,
     pub status: u8,
     /// Every file the run read (part files, the files they include, the
@@ -29,7 +66,7 @@ impl Outcome {
     /// Success with `stdout`, having read `read`.
     pub fn ok(stdout: String, read: Vec<PathBuf>) -> Outcome {
         Outcome {
-            stdout,
+            stdout: Stdout::Text(stdout),
             stderr: String::new(),
             status: 0,
             read,
@@ -166,9 +203,9 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
             if let Some(i) = input_named_by(path, named().chain(read)) {
                 return Err(onto_input(path, i));
             }
-            write_atomically(path, &out.stdout, "the output file")?;
+            write_atomically_with(path, &|w| out.stdout.write_to(w), "the output file")?;
             Ok(Outcome {
-                stdout: String::new(),
+                stdout: Stdout::Text(String::new()),
                 ..out
             })
         }

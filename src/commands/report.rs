@@ -3,7 +3,7 @@
 use super::Outcome;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
-use crate::render::{self, Format};
+use crate::render::Format;
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {
@@ -19,9 +19,15 @@ pub struct Options {
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
-    let out = render::Output::Report(&loaded.summary, &loaded.source.name);
-    Ok(Outcome::ok(
-        render::render(&out, o.format),
-        super::files_of(&loaded),
-    ))
+    let read = super::files_of(&loaded);
+    Ok(Outcome {
+        stdout: super::Stdout::Report {
+            summary: Box::new(loaded.summary),
+            source: loaded.source.name,
+            format: o.format,
+        },
+        stderr: String::new(),
+        status: 0,
+        read,
+    })
 }

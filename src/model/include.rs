@@ -502,7 +502,7 @@ impl Ctx<'_> {
         // Each part of it as placed here (its own sub-assemblies' frames
         // already checked when that file was read).
         let one = Model {
-            items: vec![Item::Include(Box::new(include))],
+            items: std::sync::Arc::new([Item::Include(Box::new(include))]),
             ..Model::empty(self.units)
         };
         let mut bad = None;
@@ -521,10 +521,7 @@ impl Ctx<'_> {
             let p = one.part(index).expect("the part the walk met");
             self.in_file_range(p.shape, &p.spec, &p.name, inc.span())?;
         }
-        let Some(Item::Include(include)) = one.items.into_iter().next() else {
-            unreachable!("the item just made")
-        };
-        Ok(Item::Include(include))
+        Ok(one.items[0].clone())
     }
 }
 

@@ -42,7 +42,9 @@ pub struct Model {
     pub units: FileUnits,
     /// The file's own parts and sub-assemblies, in file order. The body's
     /// parts, sub-assemblies expanded, come from a walk (`each_part`).
-    pub items: Vec<Item>,
+    /// Shared: a model is cloned (into a summary, for its rows) without
+    /// copying its parts.
+    pub items: std::sync::Arc<[Item]>,
     /// The parts of the body, sub-assemblies expanded.
     pub count: usize,
     pub analysis: Analysis,
@@ -59,7 +61,11 @@ pub struct Model {
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
+///
+/// NOTE: a part is held inline, a sub-assembly boxed: most items of most
+/// files are parts, and a box each would cost an allocation per part.
 #[derive(Debug, Clone)]
+#[allow(clippy::large_enum_variant)]
 pub enum Item {
     Part {
         part: Part,
@@ -107,7 +113,7 @@ impl Model {
         Model {
             name: None,
             units,
-            items: Vec::new(),
+            items: std::sync::Arc::new([]),
             count: 0,
             analysis: Analysis::default(),
             expect: Vec::new(),
@@ -255,7 +261,7 @@ impl Model {
         Ok(Model {
             name: raw.name.map(|n| n.into_inner()),
             units,
-            items,
+            items: items.into(),
             count,
             analysis,
             expect,
@@ -329,7 +335,7 @@ impl Model {
 
     /// Each sub-assembly's path, parents before children.
     fn each_assembly<'m>(&'m self, path: &mut Vec<&'m str>, f: &mut dyn FnMut(&[&str])) {
-        for item in &self.items {
+        for item in self.items.iter() {
             if let Item::Include(inc) = item {
                 path.push(&inc.name);
                 f(path);
@@ -347,21 +353,21 @@ impl Model {
         };
         let mut items = Vec::new();
         let (mut count, mut has_real_sizes) = (0, false);
-        for item in &self.items {
-            if let Item::Include(inc) = item {
-                if inc.name == *first {
-                    let model = std::sync::Arc::new(inc.model.keeping(rest));
-                    count = model.count;
-                    has_real_sizes = model.has_real_sizes;
-                    items.push(Item::Include(Box::new(Include {
-                        model,
-                        ..(**inc).clone()
-                    })));
-                }
+        for item in self.items.iter() {
+            if let Item::Include(inc) = item
+                && inc.name == *first
+            {
+                let model = std::sync::Arc::new(inc.model.keeping(rest));
+                count = model.count;
+                has_real_sizes = model.has_real_sizes;
+                items.push(Item::Include(Box::new(Include {
+                    model,
+                    ..(**inc).clone()
+                })));
             }
         }
         Model {
-            items,
+            items: items.into(),
             count,
             has_real_sizes,
             ..self.clone_without_items()

@@ -154,7 +154,7 @@ struct Walk<'m> {
 
 impl<'m> Walk<'m> {
     fn items(&mut self, model: &'m Model, f: &mut dyn FnMut(Event<'_>)) {
-        for item in &model.items {
+        for item in model.items.iter() {
             match item {
                 Item::Include(inc) => {
                     f(Event::Enter(inc));

@@ -3,7 +3,7 @@
 //! `write_table`), pinned byte for byte against comfy-table in the tests.
 
 use comfy_table::{CellAlignment, Table, presets};
-use std::fmt::Write;
+
 use unicode_width::UnicodeWidthStr;
 
 /// A table in the style every massprop table uses.
@@ -41,6 +41,18 @@ impl Cells {
         self.ends.push(self.text.len());
     }
 
+    /// Empty again, its memory kept.
+    pub fn clear(&mut self) {
+        self.text.clear();
+        self.ends.clear();
+    }
+
+    fn append(&mut self, other: &Cells) {
+        let base = self.text.len();
+        self.text.push_str(&other.text);
+        self.ends.extend(other.ends.iter().map(|e| e + base));
+    }
+
     fn iter(&self) -> impl Iterator<Item = &str> {
         let starts = std::iter::once(0).chain(self.ends.iter().copied());
         starts.zip(&self.ends).map(|(a, b)| &self.text[a..*b])
@@ -66,36 +78,48 @@ impl Cells {
 /// flag 2, a tab 1): the same function, so the same columns, whatever a
 /// terminal makes of them.
 pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
+    let mut bytes = Vec::new();
+    stream_table(&mut bytes, header, right, &mut |row| row(cells))
+        .expect("invariant: writing to memory does not fail");
+    out.push_str(std::str::from_utf8(&bytes).expect("invariant: the table is UTF-8"));
+}
+
+/// Rows handed out by a table's source, one `Cells` at a time.
+pub type RowSink<'a> = dyn FnMut(&Cells) + 'a;
+
+/// `write_table` for a table too long to hold in memory (a row per part of
+/// a body of 2²⁰ parts): `rows` is called twice, and each time hands every
+/// row, in order, to the function it is given (a `Cells` of whole rows,
+/// reused as it likes); the first time to measure the columns, the second
+/// to write them. The output is the same as `write_table`'s.
+pub fn stream_table(
+    out: &mut dyn std::io::Write,
+    header: &[String],
+    right: &[bool],
+    rows: &mut dyn FnMut(&mut RowSink<'_>),
+) -> std::io::Result<()> {
     assert!(
         !header.is_empty(),
         "invariant: every massprop table has a header (its cells are laid out by it)"
     );
     let n = header.len();
-    debug_assert!(
-        cells.ends.len().is_multiple_of(n),
-        "invariant: whole rows of cells"
-    );
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
     let mut multiline = header.iter().any(|h| h.contains('\n'));
-    for (i, c) in cells.iter().enumerate() {
-        multiline |= c.contains('\n');
-        let w = &mut widths[i % n];
-        *w = (*w).max(c.width());
-    }
+    rows(&mut |cells| {
+        debug_assert!(
+            cells.ends.len().is_multiple_of(n),
+            "invariant: whole rows of cells"
+        );
+        for (i, c) in cells.iter().enumerate() {
+            multiline |= c.contains('\n');
+            let w = &mut widths[i % n];
+            *w = (*w).max(c.width());
+        }
+    });
     if multiline {
-        let mut t = new_table();
-        t.set_header(header.to_vec());
-        let all: Vec<&str> = cells.iter().collect();
-        for row in all.chunks(n) {
-            t.add_row(row.to_vec());
-        }
-        for (c, r) in t.column_iter_mut().zip(right) {
-            if *r {
-                c.set_cell_alignment(CellAlignment::Right);
-            }
-        }
-        let _ = writeln!(out, "{t}");
-        return;
+        let mut all = Cells::with_capacity(0);
+        rows(&mut |cells| all.append(cells));
+        return writeln!(out, "{}", comfy(header, &all, right));
     }
     let rule = |out: &mut String, [left, fill, junction, end]: [char; 4]| {
         out.push(left);
@@ -125,15 +149,44 @@ pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[
         }
         out.push('\n');
     };
-    out.reserve(cells.text.len() + cells.ends.len() * 8);
-    rule(out, ['┌', '─', '┬', '┐']);
-    row(out, &mut header.iter().map(String::as_str));
-    rule(out, ['╞', '═', '╪', '╡']);
-    let mut it = cells.iter();
-    for _ in 0..cells.ends.len() / n {
-        row(out, &mut it.by_ref().take(n));
+    // Written in pieces of about this many bytes.
+    const PIECE: usize = 1 << 16;
+    let mut buf = String::with_capacity(PIECE);
+    rule(&mut buf, ['┌', '─', '┬', '┐']);
+    row(&mut buf, &mut header.iter().map(String::as_str));
+    rule(&mut buf, ['╞', '═', '╪', '╡']);
+    let mut failed = Ok(());
+    rows(&mut |cells| {
+        let mut it = cells.iter();
+        for _ in 0..cells.ends.len() / n {
+            row(&mut buf, &mut it.by_ref().take(n));
+        }
+        if buf.len() >= PIECE && failed.is_ok() {
+            failed = out.write_all(buf.as_bytes());
+            buf.clear();
+        }
+    });
+    failed?;
+    rule(&mut buf, ['└', '─', '┴', '┘']);
+    out.write_all(buf.as_bytes())
+}
+
+/// A table with a line break in a cell or in the header, through
+/// comfy-table (which splits those into lines).
+fn comfy(header: &[String], cells: &Cells, right: &[bool]) -> Table {
+    let n = header.len();
+    let mut t = new_table();
+    t.set_header(header.to_vec());
+    let all: Vec<&str> = cells.iter().collect();
+    for row in all.chunks(n) {
+        t.add_row(row.to_vec());
     }
-    rule(out, ['└', '─', '┴', '┘']);
+    for (c, r) in t.column_iter_mut().zip(right) {
+        if *r {
+            c.set_cell_alignment(CellAlignment::Right);
+        }
+    }
+    t
 }
 
 #[cfg(test)]

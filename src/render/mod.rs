@@ -20,6 +20,7 @@ pub mod report;
 use crate::analysis::check::FileResult;
 use crate::analysis::diff::Diff;
 use crate::analysis::summary::Summary;
+use std::io::Write as _;
 
 /// Output format (`--format`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -41,18 +42,30 @@ pub enum Output<'a> {
     Materials(&'a [materials::Listed]),
 }
 
-/// `output` in `format`: the one place formats are told apart.
+/// `output` in `format`, in memory.
 pub fn render(output: &Output, format: Format) -> String {
-    match (format, output) {
-        (Format::Table, Output::Report(s, source)) => report::table(s, source),
-        (Format::Json, Output::Report(s, _)) => report::json(s),
+    let mut out = Vec::new();
+    write(output, format, &mut out).expect("invariant: writing to memory does not fail");
+    String::from_utf8(out).expect("invariant: every output is UTF-8")
+}
+
+/// `output` in `format`, written to `w`: the one place formats are told
+/// apart. A report is written as it is made (its rows are never all in
+/// memory); the other outputs are small and made first.
+pub fn write(output: &Output, format: Format, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+    let text = match (format, output) {
+        (Format::Table, Output::Report(s, source)) => {
+            return report::write_table_to(s, source, w);
+        }
+        (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
         (Format::Table, Output::Check(r)) => check::table(r),
         (Format::Json, Output::Check(r)) => check::json(r),
         (Format::Table, Output::Diff(d)) => diff::table(d),
         (Format::Json, Output::Diff(d)) => diff::json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),
         (Format::Json, Output::Materials(l)) => materials::json(l),
-    }
+    };
+    w.write_all(text.as_bytes())
 }
 
 /// `value` as one line of JSON, ending in a newline: every JSON output is
@@ -68,12 +81,23 @@ pub fn render(output: &Output, format: Format) -> String {
 /// text.
 pub fn json_line<T: serde::Serialize + ?Sized>(value: &T) -> String {
     let mut out = Vec::new();
-    let mut ser = serde_json::Serializer::with_formatter(&mut out, ControlsEscaped);
-    value
-        .serialize(&mut ser)
-        .expect("invariant: outputs hold finite numbers and strings, which always serialize");
-    out.push(b'\n');
+    json_line_to(value, &mut out).expect("invariant: writing to memory does not fail");
     String::from_utf8(out).expect("invariant: serde_json writes UTF-8")
+}
+
+/// `json_line`, written to `w` as it is made.
+pub fn json_line_to<T: serde::Serialize + ?Sized>(
+    value: &T,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    // Written in pieces, not a call to `w` per token.
+    let mut w = std::io::BufWriter::with_capacity(1 << 16, w);
+    let mut ser = serde_json::Serializer::with_formatter(&mut w, ControlsEscaped);
+    // Outputs hold finite numbers and strings, which always serialize: an
+    // error is one of writing.
+    value.serialize(&mut ser).map_err(std::io::Error::from)?;
+    w.write_all(b"\n")?;
+    w.flush()
 }
 
 /// serde_json's compact formatter, with DEL and C1 controls escaped.

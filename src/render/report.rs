@@ -3,10 +3,10 @@
 //! SI, six significant digits. Full precision is in the JSON.
 
 use super::format::{
-    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, fmt_percent, name, precision_label,
+    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, name, precision_label,
     products_label, push_name, push_percent, push_sig,
 };
-use super::grid::{Cells, new_table, right_align, write_table};
+use super::grid::{Cells, new_table, right_align, stream_table, write_table};
 use crate::analysis::ideal::Idealisation;
 use crate::analysis::summary::Summary;
 use crate::units::Dim;
@@ -58,6 +58,23 @@ fn principal_table(
 
 /// The report for people; `source` names the file it came from.
 pub fn table(s: &Summary, source: &str) -> String {
+    let mut out = Vec::new();
+    write_table_to(s, source, &mut out).expect("invariant: writing to memory does not fail");
+    String::from_utf8(out).expect("invariant: the table is UTF-8")
+}
+
+/// The report as one JSON object, written to `w` as it is made.
+pub fn write_json_to(summary: &Summary, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+    super::json_line_to(summary, w)
+}
+
+/// `table`, written to `w` as it is made: the rows of parts and
+/// sub-assemblies are never all in memory.
+pub fn write_table_to(
+    s: &Summary,
+    source: &str,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
     let source = name(source);
@@ -181,57 +198,64 @@ pub fn table(s: &Summary, source: &str) -> String {
         "I2 share".to_string(),
         "I3 share".to_string(),
     ];
-    let mut cells = Cells::with_capacity(s.parts.len() * header.len());
-    for (i, p) in s.parts.iter().enumerate() {
-        let _ = write!(cells.text, "{}", i + 1);
-        cells.end();
-        push_name(&mut cells.text, &p.name);
-        cells.end();
-        cells.text.push_str(p.shape.name());
-        cells.end();
-        push_sig(&mut cells.text, p.mass / u.mass, 6);
-        cells.end();
-        push_percent(&mut cells.text, Some(p.mass_fraction));
-        cells.end();
-        for x in &p.center_of_mass {
-            push_sig(&mut cells.text, x / u.length, 6);
-            cells.end();
-        }
-        for share in p.principal_moment_share {
-            push_percent(&mut cells.text, share);
-            cells.end();
-        }
-    }
     // Left-aligned: name and shape.
     let right: Vec<bool> = (0..header.len()).map(|i| !(1..3).contains(&i)).collect();
-    write_table(&mut out, &header, &cells, &right);
+    w.write_all(out.as_bytes())?;
+    out.clear();
+    let mut cells = Cells::with_capacity(header.len());
+    let mut undefined = false;
+    stream_table(w, &header, &right, &mut |sink| {
+        let mut i = 0usize;
+        s.parts.each(&mut |p| {
+            cells.clear();
+            i += 1;
+            let _ = write!(cells.text, "{i}");
+            cells.end();
+            push_name(&mut cells.text, &p.name);
+            cells.end();
+            cells.text.push_str(p.shape.name());
+            cells.end();
+            push_sig(&mut cells.text, p.mass / u.mass, 6);
+            cells.end();
+            push_percent(&mut cells.text, Some(p.mass_fraction));
+            cells.end();
+            for x in &p.center_of_mass {
+                push_sig(&mut cells.text, x / u.length, 6);
+                cells.end();
+            }
+            for share in p.principal_moment_share {
+                push_percent(&mut cells.text, share);
+                cells.end();
+            }
+            undefined |= p.principal_moment_share.contains(&None);
+            sink(&cells);
+        });
+    })?;
     let _ = writeln!(
         out,
         "I1–I3 share: each part's share of each principal moment about the centre of mass"
     );
-    if s.parts
-        .iter()
-        .any(|p| p.principal_moment_share.contains(&None))
-    {
+    if undefined {
         let _ = writeln!(
             out,
             "note: {UNDEFINED} marks a principal moment that is zero (a lone rod's axial moment): it has no shares"
         );
     }
     if !s.assemblies.is_empty() {
-        assemblies(&mut out, s, &u);
+        w.write_all(out.as_bytes())?;
+        out.clear();
+        assemblies(w, s, &u)?;
     }
     if let Some(i) = &s.idealisation {
         idealisation(&mut out, i, &u);
     }
-    out
+    w.write_all(out.as_bytes())
 }
 
 /// The sub-assemblies section: each with its mass, centre of mass and
 /// shares, indented by depth.
-fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
-    let mut t = new_table();
-    t.set_header(vec![
+fn assemblies(w: &mut dyn std::io::Write, s: &Summary, u: &DisplayUnits) -> std::io::Result<()> {
+    let header = [
         "sub-assembly".to_string(),
         "parts".to_string(),
         format!("mass ({})", u.mass_label),
@@ -242,24 +266,38 @@ fn assemblies(out: &mut String, s: &Summary, u: &DisplayUnits) {
         "I1 share".to_string(),
         "I2 share".to_string(),
         "I3 share".to_string(),
-    ]);
-    for a in &s.assemblies {
-        let indent = "  ".repeat(a.path.len() - 1);
-        let mut row = vec![
-            format!(
-                "{indent}{}",
-                name(a.path.last().expect("a path is never empty"))
-            ),
-            a.parts.to_string(),
-            fmt_num(a.mass / u.mass),
-            fmt_percent(Some(a.mass_fraction)),
-        ];
-        row.extend(a.center_of_mass.iter().map(|x| fmt_num(x / u.length)));
-        row.extend(a.principal_moment_share.iter().map(|x| fmt_percent(*x)));
-        t.add_row(row);
-    }
-    right_align(&mut t, 1);
-    let _ = writeln!(out, "\nsub-assemblies\n{t}");
+    ];
+    let right: Vec<bool> = (0..header.len()).map(|i| i >= 1).collect();
+    w.write_all(b"\nsub-assemblies\n")?;
+    let mut cells = Cells::with_capacity(header.len());
+    stream_table(w, &header, &right, &mut |sink| {
+        s.assemblies.each(&mut |a| {
+            cells.clear();
+            for _ in 1..a.path.len() {
+                cells.text.push_str("  ");
+            }
+            push_name(
+                &mut cells.text,
+                a.path.last().expect("a path is never empty"),
+            );
+            cells.end();
+            let _ = write!(cells.text, "{}", a.parts);
+            cells.end();
+            push_sig(&mut cells.text, a.mass / u.mass, 6);
+            cells.end();
+            push_percent(&mut cells.text, Some(a.mass_fraction));
+            cells.end();
+            for x in &a.center_of_mass {
+                push_sig(&mut cells.text, x / u.length, 6);
+                cells.end();
+            }
+            for x in &a.principal_moment_share {
+                push_percent(&mut cells.text, *x);
+                cells.end();
+            }
+            sink(&cells);
+        });
+    })
 }
 
 /// The idealisation section: the change of each principal moment with the

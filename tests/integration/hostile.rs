@@ -174,7 +174,7 @@ pub(crate) fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, 
                 if out.status != 0 {
                     return Err(format!("{what}: Ok with status {}", out.status));
                 }
-                check_json(&out.stdout).map_err(|e| format!("{what}: {e}"))?;
+                check_json(&out.stdout.text()).map_err(|e| format!("{what}: {e}"))?;
                 outcomes.push(true);
             }
             Err(d) => {
@@ -191,8 +191,11 @@ pub(crate) fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, 
             if out.status != 0 {
                 return Err(format!("report (table): Ok with status {}", out.status));
             }
-            if let Some(w) = non_finite_word(&out.stdout) {
-                return Err(format!("report (table) prints {w:?}:\n{}", out.stdout));
+            if let Some(w) = non_finite_word(&out.stdout.text()) {
+                return Err(format!(
+                    "report (table) prints {w:?}:\n{}",
+                    out.stdout.text()
+                ));
             }
             if !outcomes[0] {
                 return Err("the table reports a file the JSON rejects".to_string());
@@ -226,11 +229,12 @@ pub(crate) fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, 
                     return Err(format!("{what}: Ok with status {}", out.status));
                 }
                 if args.contains(&"json") {
-                    let json: Value = serde_json::from_str(&out.stdout)
+                    let json: Value = serde_json::from_str(&out.stdout.text())
                         .map_err(|e| format!("{what}: output is not JSON ({e})"))?;
                     walk(&json, "", "$").map_err(|e| format!("{what}: {e}"))?;
-                } else if let Some(w) = non_finite_word(&out.stdout).filter(|_| quiet_input) {
-                    return Err(format!("{what} prints {w:?}:\n{}", out.stdout));
+                } else if let Some(w) = non_finite_word(&out.stdout.text()).filter(|_| quiet_input)
+                {
+                    return Err(format!("{what} prints {w:?}:\n{}", out.stdout.text()));
                 }
             }
             Err(d) => diagnostic(&d, &what)?,
@@ -241,7 +245,7 @@ pub(crate) fn hostile_including(path: &str, included: &[&[u8]]) -> Result<bool, 
             if out.status > 2 {
                 return Err(format!("check: status {}", out.status));
             }
-            for text in [&out.stdout, &out.stderr]
+            for text in [&out.stdout.text(), &out.stderr]
                 .into_iter()
                 .filter(|_| quiet_input)
             {

@@ -68,7 +68,7 @@ fn exec(args: &[&str]) -> Result<Out, String> {
     let out = match run(args)? {
         Ok(o) => Out {
             status: o.status,
-            stdout: o.stdout,
+            stdout: o.stdout.text(),
             stderr: o.stderr,
             failed: false,
         },

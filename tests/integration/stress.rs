@@ -258,7 +258,7 @@ pub(crate) fn report_text(text: &str, precision: Precision) -> Report {
     ])
     .unwrap_or_else(|e| panic!("command line: {e}"));
     let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}\nfor the part file:\n{text}"));
-    let v: serde_json::Value = serde_json::from_str(&out.stdout).expect("stdout is JSON");
+    let v: serde_json::Value = serde_json::from_str(&out.stdout.text()).expect("stdout is JSON");
     let num = |x: &serde_json::Value| x.as_f64().expect("a number");
     let vec3 = |x: &serde_json::Value| -> [f64; 3] { std::array::from_fn(|i| num(&x[i])) };
     let mat3 = |x: &serde_json::Value| -> [[f64; 3]; 3] { std::array::from_fn(|i| vec3(&x[i])) };
@@ -281,13 +281,13 @@ pub(crate) fn report_text(text: &str, precision: Precision) -> Report {
             .iter()
             .map(|p| (num(&p["mass"]), vec3(&p["center_of_mass"])))
             .collect(),
-        stdout: out.stdout.clone(),
+        stdout: out.stdout.text(),
     };
     assert_eq!(
         v["precision"].as_str(),
         Some(precision.flag()),
         "{}",
-        out.stdout
+        out.stdout.text()
     );
     assert_sane(&rep);
     rep
