@@ -40,20 +40,47 @@ const RECURSION_LIMIT: u32 = 80;
 
 /// `RawFile` from `text`, or `None` where the serde path must decide.
 pub fn parse(text: &str) -> Option<RawFile> {
-    // `[expect]` is serde's: decline now, not after reading every part
-    // before it (a file of 100,000 parts would be read twice). Only a line
-    // that starts with the table or key counts, so a comment or a name that
-    // mentions "expected" keeps the fast path; a quoted key ("expect") is
-    // declined later, when the builder meets it.
-    if text.lines().any(|l| {
+    if has_expectations(text) {
+        return None;
+    }
+    parse_in_chunks(text, CHUNK)
+}
+
+/// `[expect]` is serde's: declined at once, not after reading every part
+/// before it (a file of 100,000 parts would be read twice). Only a line
+/// that starts with the table or key counts, so a comment or a name that
+/// mentions "expected" keeps the fast path; a quoted key ("expect") is
+/// declined later, when the builder meets it.
+fn has_expectations(text: &str) -> bool {
+    text.lines().any(|l| {
         let l = l.trim_start();
         l.starts_with("expect")
             || l.strip_prefix('[')
                 .is_some_and(|h| h.trim_start().starts_with("expect"))
-    }) {
+    })
+}
+
+/// Where each `[[part]]` goes as soon as it is read, with the file's
+/// `units` as read so far.
+pub type PartSink<'a> = dyn FnMut(Option<&Spanned<RawUnits>>, Spanned<RawPart>) + 'a;
+
+/// `parse`, handing each part to `sink` as soon as it is read (after each
+/// chunk) rather than keeping it: the `RawFile` returned has an empty
+/// `part` list (its span kept). `None` where the serde path must decide,
+/// also after some parts were handed out.
+///
+/// NOTE: a raw part takes ~370 bytes and its vectors ~160 more, 4–5 times
+/// the text it is read from: kept for a whole file of a million parts, the
+/// raw parts alone were over the memory budget (3 × the input + 64 MiB).
+pub fn parse_streaming(
+    text: &str,
+    chunk_tokens: usize,
+    sink: &mut PartSink<'_>,
+) -> Option<RawFile> {
+    if has_expectations(text) {
         return None;
     }
-    parse_in_chunks(text, CHUNK)
+    read(text, chunk_tokens, Some(sink))
 }
 
 /// `parse`, lexing and parsing `chunk_tokens` tokens at a time (at least:
@@ -61,8 +88,15 @@ pub fn parse(text: &str) -> Option<RawFile> {
 /// property test and the fuzz target, which read their files in small
 /// chunks too.
 pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
+    read(text, chunk_tokens, None)
+}
+
+/// `parse_in_chunks`, the parts read handed to `sink` after each chunk if
+/// there is one.
+fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) -> Option<RawFile> {
     let source = Source::new(text);
     let mut builder = Builder::new(source);
+    builder.streaming = sink.is_some();
     let mut error = Failed(false);
     // NOTE: lexed and parsed a chunk of whole tables at a time, not the
     // whole file: the lexer's tokens take 14 bytes of memory per byte of
@@ -106,6 +140,13 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
             if error.0 || builder.failed {
                 return None;
             }
+            if token.is_none() {
+                // The last part is complete.
+                builder.close_part();
+            }
+            if let Some(sink) = sink.as_mut() {
+                builder.hand_out(&mut **sink);
+            }
         }
         let Some(t) = token else { break };
         match t.kind() {
@@ -123,7 +164,7 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
 
 /// Tokens lexed and parsed at a time (24 bytes each): a few thousand
 /// parts.
-const CHUNK: usize = 1 << 16;
+pub const CHUNK: usize = 1 << 16;
 
 /// Records that the parser reported an error.
 struct Failed(bool);
@@ -180,6 +221,8 @@ struct Builder<'i> {
     parts: Option<(Range<usize>, Vec<Spanned<RawPart>>)>,
     part: Option<(Range<usize>, RawPart)>,
     analysis: Option<Spanned<RawAnalysis>>,
+    /// Parts are handed out as read (`parse_streaming`), not kept.
+    streaming: bool,
 }
 
 impl<'i> Builder<'i> {
@@ -196,6 +239,7 @@ impl<'i> Builder<'i> {
             parts: None,
             part: None,
             analysis: None,
+            streaming: false,
         }
     }
 
@@ -206,6 +250,15 @@ impl<'i> Builder<'i> {
     fn raw(&self, span: Span, kind: Option<Encoding>) -> Raw<'i> {
         let text = &self.source.input()[span.start()..span.end()];
         Raw::new_unchecked(text, kind, span)
+    }
+
+    /// Hand the parts read so far to `sink`.
+    fn hand_out(&mut self, sink: &mut PartSink<'_>) {
+        if let Some((_, parts)) = &mut self.parts {
+            for p in parts.drain(..) {
+                sink(self.units.as_ref(), p);
+            }
+        }
     }
 
     fn finish(mut self) -> Option<RawFile> {
@@ -244,7 +297,17 @@ impl<'i> Builder<'i> {
         self.close_part();
         match (is_array, path.as_slice()) {
             (true, [k]) if k == "part" => {
-                self.parts.get_or_insert_with(|| (span.clone(), Vec::new()));
+                if self.parts.is_none() {
+                    // Made at the size the file's `[[part]]` lines say (a
+                    // list doubled up to 100,000 parts of 368 bytes held 48
+                    // MB for 37), unless they are handed out as read.
+                    let tables = if self.streaming {
+                        0
+                    } else {
+                        super::part_tables(self.source.input()) as usize
+                    };
+                    self.parts = Some((span.clone(), Vec::with_capacity(tables)));
+                }
                 self.part = Some((span, RawPart::default()));
                 self.current = Current::Part;
             }

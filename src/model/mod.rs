@@ -43,8 +43,10 @@ pub struct Model {
     /// The file's own parts and sub-assemblies, in file order. The body's
     /// parts, sub-assemblies expanded, come from a walk (`each_part`).
     /// Shared: a model is cloned (into a summary, for its rows) without
-    /// copying its parts.
-    pub items: std::sync::Arc<[Item]>,
+    /// copying its parts. (An `Arc<Vec>`, not an `Arc<[Item]>`: made from
+    /// the `Vec` it moves, where the slice is a copy, 29 MB more at the
+    /// peak of a 100,000-part file.)
+    pub items: std::sync::Arc<Vec<Item>>,
     /// The parts of the body, sub-assemblies expanded.
     pub count: usize,
     pub analysis: Analysis,
@@ -113,7 +115,7 @@ impl Model {
         Model {
             name: None,
             units,
-            items: std::sync::Arc::new([]),
+            items: std::sync::Arc::new(Vec::new()),
             count: 0,
             analysis: Analysis::default(),
             expect: Vec::new(),
@@ -179,7 +181,30 @@ impl Model {
     /// `parse`, inside the chain of files that include each other (for
     /// cycles).
     fn parse_in(source: &Source, files: &mut include::Files) -> Result<Model, Diagnostic> {
-        let raw = Model::raw(source)?;
+        // The fast path, each part made as it is read; else, or if the
+        // file's units came after its parts (a `[units]` table at the end),
+        // the whole file read first.
+        let mut streamed = Streamed::default();
+        let fast = fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, p| {
+            streamed.take(source, units, p);
+        });
+        let mut raw = match fast {
+            Some(raw)
+                if streamed
+                    .units_seen
+                    .is_none_or(|seen| seen == raw.units.is_some()) =>
+            {
+                raw
+            }
+            Some(_) => {
+                streamed = Streamed::off();
+                Model::raw(source)?
+            }
+            None => {
+                streamed = Streamed::off();
+                toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))?
+            }
+        };
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
@@ -203,6 +228,9 @@ impl Model {
             }
         }
         let ctx = ctx;
+        if !streamed.off {
+            return streamed.model(&ctx, raw);
+        }
         let raw_parts = match &raw.part {
             Some(p) if !p.get_ref().is_empty() => p.get_ref(),
             Some(p) => {
@@ -232,12 +260,15 @@ impl Model {
             ctx.check_part_count(raw_parts, files)?;
         }
         let mut items = Vec::with_capacity(raw_parts.len());
+        // Each raw part dropped once read: its vectors and rare keys are
+        // freed as the parts are made, not after all of them.
+        let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
         let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
-        for (i, p) in raw_parts.iter().enumerate() {
+        for (i, p) in raw_parts.into_iter().enumerate() {
             if p.get_ref().include.is_some() {
-                let item = ctx.include(i, p, files, count, &mut assembly_names)?;
+                let item = ctx.include(i, &p, files, count, &mut assembly_names)?;
                 if let Item::Include(inc) = &item {
                     count += inc.model.count;
                     has_real_sizes |= inc.model.has_real_sizes;
@@ -245,11 +276,22 @@ impl Model {
                 items.push(item);
                 continue;
             }
-            let (part, real) = ctx.part(i, p)?;
+            let (part, real) = ctx.part(i, &p)?;
             has_real_sizes |= real.is_some();
             count += 1;
             items.push(Item::Part { part, real });
         }
+        Model::rest(&ctx, raw, items, count, has_real_sizes)
+    }
+
+    /// The model of `raw`'s keys other than its parts, with `items`.
+    fn rest(
+        ctx: &Ctx,
+        raw: RawFile,
+        items: Vec<Item>,
+        count: usize,
+        has_real_sizes: bool,
+    ) -> Result<Model, Diagnostic> {
         let analysis = match &raw.analysis {
             Some(a) => ctx.analysis(a)?,
             None => Analysis::default(),
@@ -260,8 +302,8 @@ impl Model {
         };
         Ok(Model {
             name: raw.name.map(|n| n.into_inner()),
-            units,
-            items: items.into(),
+            units: ctx.units,
+            items: std::sync::Arc::new(items),
             count,
             analysis,
             expect,
@@ -274,6 +316,100 @@ impl Model {
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
         })
+    }
+}
+
+/// The parts of a file on the fast path, made as they are read
+/// (`fast::parse_streaming`): such a file has no includes and no
+/// `[materials]`, and its `units` come before its parts (the keys at the
+/// top of a TOML file come before its tables; a `[units]` table after
+/// them sends the file down the other path). Errors come in the order the
+/// whole file read first gives them: the units, the part limit, then the
+/// first part that is not valid.
+#[derive(Default)]
+struct Streamed {
+    /// Not used: the file is read whole first.
+    off: bool,
+    /// The file's units as the first part found them: given or not, and
+    /// read.
+    units_seen: Option<bool>,
+    units: Option<Result<FileUnits, ()>>,
+    items: Vec<Item>,
+    /// Parts read, made or not.
+    count: usize,
+    has_real_sizes: bool,
+    /// The first part that is not valid.
+    error: Option<Diagnostic>,
+}
+
+impl Streamed {
+    fn off() -> Streamed {
+        Streamed {
+            off: true,
+            ..Streamed::default()
+        }
+    }
+
+    fn take(
+        &mut self,
+        source: &Source,
+        units: Option<&toml::Spanned<raw::RawUnits>>,
+        p: toml::Spanned<raw::RawPart>,
+    ) {
+        let index = self.count;
+        self.count += 1;
+        if self.error.is_some() || self.count > MAX_PARTS {
+            return;
+        }
+        let units = *self.units.get_or_insert_with(|| {
+            self.units_seen = Some(units.is_some());
+            let ctx = Ctx {
+                source,
+                units: FileUnits::default(),
+                materials: Default::default(),
+            };
+            // An error is said again when the whole file is read.
+            units.map_or(Ok(FileUnits::default()), |u| {
+                ctx.file_units(u).map_err(|_| ())
+            })
+        });
+        let Ok(units) = units else { return };
+        let ctx = Ctx {
+            source,
+            units,
+            materials: Default::default(),
+        };
+        match ctx.part(index, &p) {
+            Ok((part, real)) => {
+                self.has_real_sizes |= real.is_some();
+                self.items.push(Item::Part { part, real });
+            }
+            Err(e) => self.error = Some(e),
+        }
+    }
+
+    /// The model, `ctx` with the file's units read.
+    fn model(self, ctx: &Ctx, raw: RawFile) -> Result<Model, Diagnostic> {
+        if raw.part.is_none() {
+            return Err(ctx
+                .err(0..0, "the file has no parts")
+                .help("add at least one `[[part]]` table with a `shape`"));
+        }
+        if self.count > MAX_PARTS {
+            return Err(ctx.err(
+                0..0,
+                format!(
+                    "the file has {} parts; the limit is {MAX_PARTS}",
+                    self.count
+                ),
+            ));
+        }
+        if let Some(e) = self.error {
+            return Err(e);
+        }
+        let mut items = self.items;
+        items.shrink_to_fit();
+        Model::rest(ctx, raw, items, self.count, self.has_real_sizes)
     }
 }
 
@@ -367,7 +503,7 @@ impl Model {
             }
         }
         Model {
-            items: items.into(),
+            items: std::sync::Arc::new(items),
             count,
             has_real_sizes,
             ..self.clone_without_items()

@@ -188,9 +188,9 @@ impl<'m> Walk<'m> {
                     let placed = &mut self.placed;
                     placed.shape = part.shape;
                     placed.span = outermost.span.clone();
-                    placed.spec = part.spec.clone();
+                    placed.spec.clone_from(&part.spec);
                     for inc in self.frames.iter().rev() {
-                        placed.spec = inc.frame.place(part.shape, &placed.spec);
+                        inc.frame.place(part.shape, &mut placed.spec);
                         if let Some(r) = &mut real {
                             r.size *= inc.frame.length;
                         }
