@@ -656,3 +656,69 @@ mod part_file_tests {
         }
     }
 }
+
+#[cfg(test)]
+mod streaming_tests {
+    use super::Model;
+    use crate::diag::Source;
+
+    fn points(n: usize, bad: Option<usize>) -> String {
+        (0..n)
+            .map(|k| {
+                let mass = if Some(k) == bad { "-1" } else { "1.5" };
+                format!("[[part]]\nshape = \"point\"\nmass = {mass}\ncenter = [{k}, 0.25, 0]\n")
+            })
+            .collect()
+    }
+
+    fn parse(text: &str) -> Result<Model, String> {
+        Model::parse(&Source::new("s.toml", text)).map_err(|d| d.to_string())
+    }
+
+    /// Enough parts for several chunks of the fast path.
+    const MANY: usize = 12_000;
+
+    /// Parts made as they are read are the parts of the file read whole:
+    /// the same file sent down the serde path (a `[materials]` table is
+    /// the fast path's to decline) gives the same parts.
+    #[test]
+    fn parts_made_as_read_are_those_of_the_file_read_whole() {
+        let text = format!("units = {{ length = \"mm\" }}\n{}", points(MANY, None));
+        let fast = parse(&text).unwrap();
+        let whole = parse(&format!("{text}[materials]\nfoam = {{ density = 30 }}\n")).unwrap();
+        assert_eq!(fast.count, MANY);
+        assert_eq!(
+            format!("{:?}", fast.flattened()),
+            format!("{:?}", whole.flattened())
+        );
+    }
+
+    /// Units given after the parts (a `[units]` table at the end, chunks
+    /// after the first part is read) apply to them: the file is read whole
+    /// first. (A part's numbers are kept in the file's units: "1.5 kg" is
+    /// 1500 in grams; made in kilograms, 1.5, it would read as 1.5 g.)
+    #[test]
+    fn units_after_the_parts_apply_to_them() {
+        let part = "[[part]]\nshape = \"point\"\nmass = \"1.5 kg\"\ncenter = [0, 0, 0]\n";
+        let text = format!("{}[units]\nmass = \"g\"\n", part.repeat(MANY));
+        // A file the fast path reads (else this tests nothing of it).
+        assert!(super::fast::parse(&text).is_some());
+        let m = parse(&text).unwrap();
+        let si = m.flattened()[1].si(m.units);
+        assert_eq!(si.mass, 1.5);
+    }
+
+    /// Errors in the order of a file read whole: a syntax error anywhere
+    /// first, then the first part that is not valid, wherever it is.
+    #[test]
+    fn a_syntax_error_after_an_invalid_part_is_said_first() {
+        let bad = MANY - 100;
+        let text = points(MANY, Some(bad));
+        let e = parse(&text).unwrap_err();
+        let line = 4 * bad + 3;
+        assert!(e.starts_with(&format!("s.toml:{line}:8: error:")), "{e}");
+        assert!(e.contains("`mass`"), "{e}");
+        let e = parse(&format!("{text}x = = 1\n")).unwrap_err();
+        assert!(e.starts_with(&format!("s.toml:{}:", 4 * MANY + 1)), "{e}");
+    }
+}
