@@ -30,7 +30,9 @@ pub struct RealSize {
 #[derive(Debug, Clone)]
 pub struct Part {
     /// The part's `name`, or `part N` (1-based position in the file); for
-    /// a part of a sub-assembly, its path: `elbow / motor / stator`.
+    /// a part of a sub-assembly, its path: `elbow / motor / stator`. Empty
+    /// in a model's items for a part the file does not name: a walk that
+    /// names parts (`Model::each_part`) gives it `part N`.
     pub name: String,
     pub shape: Shape,
     /// The part as the file gave it, in the file's units.
@@ -199,7 +201,7 @@ pub enum Place {
     /// file units) about the centroid `center`, turned by `orientation`.
     Given {
         center: [f64; 3],
-        inertia: [[f64; 3]; 3],
+        inertia: Box<[[f64; 3]; 3]>,
         orientation: Orientation,
     },
 }

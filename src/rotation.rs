@@ -21,9 +21,11 @@ pub enum Orientation {
     /// A non-zero axis (any length) and an angle in degrees.
     AxisAngle([f64; 3], f64),
     /// Axis sequence (0 = x), angles in degrees, intrinsic or not.
-    Euler([usize; 3], [f64; 3], bool),
+    Euler([u8; 3], [f64; 3], bool),
     /// Rows as given, orthonormal to `MATRIX_TOLERANCE`, determinant +1.
-    Matrix(M3<f64>),
+    /// (Boxed, as is a given tensor, so that a part takes ~200 bytes, not
+    /// ~270: a file of a million parts holds them all.)
+    Matrix(Box<M3<f64>>),
     /// The first turn applied after the second (R₁ R₂): a part of an
     /// included sub-assembly, turned with it.
     Then(Box<Orientation>, Box<Orientation>),
@@ -36,7 +38,9 @@ impl Orientation {
             Orientation::Identity => identity(),
             Orientation::Quaternion(q) => quaternion(*q),
             Orientation::AxisAngle(k, deg) => axis_angle(*k, *deg),
-            Orientation::Euler(seq, deg, intrinsic) => euler(*seq, *deg, *intrinsic),
+            Orientation::Euler(seq, deg, intrinsic) => {
+                euler(seq.map(usize::from), *deg, *intrinsic)
+            }
             Orientation::Matrix(m) => orthonormalised(m),
             Orientation::Then(outer, inner) => mul(&outer.matrix(), &inner.matrix()),
         }

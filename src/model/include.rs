@@ -148,7 +148,7 @@ impl Frame {
                 orientation,
             } => {
                 *center = self.point(*center);
-                *inertia = inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length));
+                **inertia = inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length));
                 self.turn(orientation);
             }
         }

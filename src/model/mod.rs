@@ -184,7 +184,12 @@ impl Model {
         // The fast path, each part made as it is read; else, or if the
         // file's units came after its parts (a `[units]` table at the end),
         // the whole file read first.
-        let mut streamed = Streamed::default();
+        let mut streamed = Streamed {
+            // At the size the file's `[[part]]` lines say: a list doubled
+            // up to its size holds up to twice the memory of the parts.
+            items: Vec::with_capacity((part_tables(&source.text) as usize).min(MAX_PARTS)),
+            ..Streamed::default()
+        };
         let fast = fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, p| {
             streamed.take(source, units, p);
         });

@@ -132,9 +132,9 @@ impl Ctx<'_> {
                         )
                         .help("negate one row or column to make the axes right-handed"));
                 }
-                Ok(Orientation::Matrix(std::array::from_fn(|i| {
+                Ok(Orientation::Matrix(Box::new(std::array::from_fn(|i| {
                     std::array::from_fn(|j| out[(i, j)])
-                })))
+                }))))
             }
             _ => {
                 let intrinsic = form == "intrinsic";
@@ -150,7 +150,11 @@ impl Ctx<'_> {
                 let d = degrees()?;
                 match d.get_ref() {
                     Angles::Three(a) if a.len() == 3 && a.iter().all(|x| x.is_finite()) => {
-                        Ok(Orientation::Euler(seq, [a[0], a[1], a[2]], intrinsic))
+                        Ok(Orientation::Euler(
+                            seq.map(|a| a as u8),
+                            [a[0], a[1], a[2]],
+                            intrinsic,
+                        ))
                     }
                     Angles::Three(a) if a.len() == 3 => {
                         Err(self.err(d.span(), "`degrees` must be finite"))

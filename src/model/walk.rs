@@ -14,6 +14,7 @@
 
 use super::{Include, Item, Model};
 use crate::part::{Part, Parts, RealSize};
+use std::fmt::Write as _;
 
 impl Parts for Model {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
@@ -154,7 +155,7 @@ struct Walk<'m> {
 
 impl<'m> Walk<'m> {
     fn items(&mut self, model: &'m Model, f: &mut dyn FnMut(Event<'_>)) {
-        for item in model.items.iter() {
+        for (k, item) in model.items.iter().enumerate() {
             match item {
                 Item::Include(inc) => {
                     f(Event::Enter(inc));
@@ -181,8 +182,20 @@ impl<'m> Walk<'m> {
                         solid,
                         size,
                     });
+                    let unnamed = self.named && part.name.is_empty();
                     let Some(outermost) = self.frames.first() else {
-                        f(Event::Part(Leaf { index, part, real }));
+                        if !unnamed {
+                            f(Event::Part(Leaf { index, part, real }));
+                            continue;
+                        }
+                        let placed = &mut self.placed;
+                        placed.clone_from(part);
+                        placed.name = format!("part {}", k + 1);
+                        f(Event::Part(Leaf {
+                            index,
+                            part: placed,
+                            real,
+                        }));
                         continue;
                     };
                     let placed = &mut self.placed;
@@ -198,7 +211,11 @@ impl<'m> Walk<'m> {
                     if self.named {
                         placed.name.clear();
                         placed.name.push_str(&self.prefix);
-                        placed.name.push_str(&part.name);
+                        if unnamed {
+                            let _ = write!(placed.name, "part {}", k + 1);
+                        } else {
+                            placed.name.push_str(&part.name);
+                        }
                     }
                     f(Event::Part(Leaf {
                         index,
