@@ -215,18 +215,13 @@ pub fn write_table_to(
             cells.end();
             cells.text.push_str(p.shape.name());
             cells.end();
-            push_sig(&mut cells.text, p.mass / u.mass, 6);
-            cells.end();
-            push_percent(&mut cells.text, Some(p.mass_fraction));
-            cells.end();
-            for x in &p.center_of_mass {
-                push_sig(&mut cells.text, x / u.length, 6);
-                cells.end();
-            }
-            for share in p.principal_moment_share {
-                push_percent(&mut cells.text, share);
-                cells.end();
-            }
+            push_figures(
+                &mut cells,
+                &u,
+                (p.mass, p.mass_fraction),
+                &p.center_of_mass,
+                &p.principal_moment_share,
+            );
             undefined |= p.principal_moment_share.contains(&None);
             sink(&cells);
         });
@@ -250,6 +245,29 @@ pub fn write_table_to(
         idealisation(&mut out, i, &u);
     }
     w.write_all(out.as_bytes())
+}
+
+/// The cells a part's and a sub-assembly's rows share: mass and its share,
+/// centre of mass, shares of the principal moments.
+fn push_figures(
+    cells: &mut Cells,
+    u: &DisplayUnits,
+    (mass, fraction): (f64, f64),
+    center: &[f64; 3],
+    shares: &[Option<f64>; 3],
+) {
+    push_sig(&mut cells.text, mass / u.mass, 6);
+    cells.end();
+    push_percent(&mut cells.text, Some(fraction));
+    cells.end();
+    for x in center {
+        push_sig(&mut cells.text, x / u.length, 6);
+        cells.end();
+    }
+    for share in shares {
+        push_percent(&mut cells.text, *share);
+        cells.end();
+    }
 }
 
 /// The sub-assemblies section: each with its mass, centre of mass and
@@ -283,18 +301,13 @@ fn assemblies(w: &mut dyn std::io::Write, s: &Summary, u: &DisplayUnits) -> std:
             cells.end();
             let _ = write!(cells.text, "{}", a.parts);
             cells.end();
-            push_sig(&mut cells.text, a.mass / u.mass, 6);
-            cells.end();
-            push_percent(&mut cells.text, Some(a.mass_fraction));
-            cells.end();
-            for x in &a.center_of_mass {
-                push_sig(&mut cells.text, x / u.length, 6);
-                cells.end();
-            }
-            for x in &a.principal_moment_share {
-                push_percent(&mut cells.text, *x);
-                cells.end();
-            }
+            push_figures(
+                &mut cells,
+                u,
+                (a.mass, a.mass_fraction),
+                &a.center_of_mass,
+                &a.principal_moment_share,
+            );
             sink(&cells);
         });
     })
