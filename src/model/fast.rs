@@ -9,13 +9,14 @@
 //! fill `RawFile` as they come: only the result, and the tokens of a chunk
 //! of whole tables (`CHUNK`), are ever in memory. It covers what part files are made of (top-level `name` and
 //! `units`, `[[part]]` tables, `[analysis]`, inline tables and arrays of
-//! strings and numbers) and gives up — `None` — on anything else (`[expect]`,
-//! dotted keys, other tables, booleans, dates), on any syntax error, any
+//! strings and numbers; `[expect]` and `[materials]` it passes over for
+//! serde to read alone, `Section`) and gives up — `None` — on anything else
+//! (dotted keys, other tables, booleans, dates), on any syntax error, any
 //! duplicate or unknown key and any value of the wrong type. The caller then
 //! takes the serde path, which accepts or rejects the file and words every
-//! error as before. When this returns `Some`, the result equals what
-//! `toml::from_str::<RawFile>` gives, values and spans alike (tested in
-//! `tests`).
+//! error as before. When `read_file` returns `Some`, the result equals
+//! what `toml::from_str::<RawFile>` gives, values and spans alike (tested
+//! in `tests`).
 //!
 //! NOTE: the builder fills `RawPart` itself, the serde mirror's own struct,
 //! so the two readers share one definition of a part's keys and types. A
@@ -27,6 +28,7 @@
 use super::raw::{
     Angles, Floats, Quantity, RawAnalysis, RawFile, RawPart, RawRotation, RawUnits, Vector,
 };
+pub use super::section::Section;
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -38,31 +40,29 @@ use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
 /// The toml crate's own nesting limit (`toml::de::parser::LIMIT`).
 const RECURSION_LIMIT: u32 = 80;
 
-/// `RawFile` from `text`, or `None` where the serde path must decide.
+/// `RawFile` from `text`, or `None` where the serde path must decide;
+/// its `[expect]` and `[materials]` still to be read from its `sections`
+/// (`read_file` does).
 pub fn parse(text: &str) -> Option<RawFile> {
-    if has_expectations(text) {
-        return None;
-    }
     parse_in_chunks(text, CHUNK)
 }
 
-/// `[expect]` is serde's: declined at once, not after reading every part
-/// before it (a file of 100,000 parts would be read twice). Only a line
-/// that starts with the table or key counts, so a comment or a name that
-/// mentions "expected" keeps the fast path; a quoted key ("expect") is
-/// declined later, when the builder meets it.
-fn has_expectations(text: &str) -> bool {
-    text.lines().any(|l| {
-        let l = l.trim_start();
-        l.starts_with("expect")
-            || l.strip_prefix('[')
-                .is_some_and(|h| h.trim_start().starts_with("expect"))
-    })
+/// The file as the model reads it on the fast path: `parse`, with its
+/// `[expect]` and `[materials]` read by serde (`Section::read`). Where this
+/// returns `Some`, `toml::from_str::<RawFile>` gives the same, values and
+/// spans alike (tested here, by the property test and by the fuzz target).
+pub fn read_file(text: &str) -> Option<RawFile> {
+    let mut raw = parse(text)?;
+    let sections = Section::read(text, &raw.sections)?;
+    raw.expect = sections.expect;
+    raw.materials = sections.materials;
+    raw.sections.clear();
+    Some(raw)
 }
 
 /// Where each `[[part]]` goes as soon as it is read, with the file's
-/// `units` as read so far.
-pub type PartSink<'a> = dyn FnMut(Option<&Spanned<RawUnits>>, Spanned<RawPart>) + 'a;
+/// `units` and the `Section`s read so far.
+pub type PartSink<'a> = dyn FnMut(Option<&Spanned<RawUnits>>, &[Section], Spanned<RawPart>) + 'a;
 
 /// `parse`, handing each part to `sink` as soon as it is read (after each
 /// chunk) rather than keeping it: the `RawFile` returned has an empty
@@ -77,9 +77,6 @@ pub fn parse_streaming(
     chunk_tokens: usize,
     sink: &mut PartSink<'_>,
 ) -> Option<RawFile> {
-    if has_expectations(text) {
-        return None;
-    }
     read(text, chunk_tokens, Some(sink))
 }
 
@@ -204,6 +201,9 @@ enum Current {
     Units,
     Part,
     Analysis,
+    /// `[expect]` or `[materials]` (or a table under them): read by serde
+    /// alone (`Section`), its keys and values passed over here.
+    Skipped,
 }
 
 struct Builder<'i> {
@@ -223,6 +223,9 @@ struct Builder<'i> {
     analysis: Option<Spanned<RawAnalysis>>,
     /// Parts are handed out as read (`parse_streaming`), not kept.
     streaming: bool,
+    /// The `[expect]` and `[materials]` tables met, the last one's end
+    /// `usize::MAX` while it is read.
+    sections: Vec<Section>,
 }
 
 impl<'i> Builder<'i> {
@@ -240,6 +243,7 @@ impl<'i> Builder<'i> {
             part: None,
             analysis: None,
             streaming: false,
+            sections: Vec::new(),
         }
     }
 
@@ -254,15 +258,29 @@ impl<'i> Builder<'i> {
 
     /// Hand the parts read so far to `sink`.
     fn hand_out(&mut self, sink: &mut PartSink<'_>) {
+        let closed = match self.sections.last() {
+            Some(s) if s.span.end == usize::MAX => self.sections.len() - 1,
+            _ => self.sections.len(),
+        };
         if let Some((_, parts)) = &mut self.parts {
             for p in parts.drain(..) {
-                sink(self.units.as_ref(), p);
+                sink(self.units.as_ref(), &self.sections[..closed], p);
             }
         }
     }
 
+    /// Inside `[expect]` or `[materials]`, past its header.
+    fn skipping(&self) -> bool {
+        self.current == Current::Skipped && self.header.is_none()
+    }
+
     fn finish(mut self) -> Option<RawFile> {
         self.close_part();
+        if let Some(last) = self.sections.last_mut()
+            && last.span.end == usize::MAX
+        {
+            last.span.end = self.source.input().len();
+        }
         if self.failed || self.header.is_some() || !self.stack.is_empty() || self.key.is_some() {
             return None;
         }
@@ -272,8 +290,9 @@ impl<'i> Builder<'i> {
             part: self.parts.map(|(span, v)| Spanned::new(span, v)),
             analysis: self.analysis,
             expect: None,
-            // `[materials]` is an unknown table to the builder: serde's.
+            // Serde's, from the sections.
             materials: None,
+            sections: self.sections,
         })
     }
 
@@ -295,7 +314,19 @@ impl<'i> Builder<'i> {
     /// A table header `[path]` or `[[path]]` from `span`.
     fn open_table(&mut self, span: Range<usize>, is_array: bool, path: Vec<Cow<'i, str>>) {
         self.close_part();
+        if let Some(last) = self.sections.last_mut()
+            && last.span.end == usize::MAX
+        {
+            last.span.end = span.start;
+        }
         match (is_array, path.as_slice()) {
+            (false, [k, ..]) if k == "expect" || k == "materials" => {
+                self.sections.push(Section {
+                    span: span.start..usize::MAX,
+                    materials: k == "materials",
+                });
+                self.current = Current::Skipped;
+            }
             (true, [k]) if k == "part" => {
                 if self.parts.is_none() {
                     // Made at the size the file's `[[part]]` lines say (a
@@ -347,6 +378,8 @@ impl<'i> Builder<'i> {
     /// repeated, or the value of the wrong type.
     fn assign(&mut self, key: &str, node: Node<'i>) -> Option<()> {
         match self.current {
+            // Not reached: nothing is assigned while skipping.
+            Current::Skipped => Some(()),
             Current::Root => match key {
                 "name" => set(&mut self.name, string(node)?),
                 "units" => {
@@ -542,12 +575,18 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn inline_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
+        if self.skipping() {
+            return true;
+        }
         self.stack
             .push(Frame::Table(span.start(), Vec::new(), None));
         true
     }
 
     fn inline_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        if self.skipping() {
+            return;
+        }
         match self.stack.pop() {
             Some(Frame::Table(start, entries, None)) => {
                 self.value(Node::Table(entries, start..span.end()))
@@ -557,11 +596,17 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn array_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
+        if self.skipping() {
+            return true;
+        }
         self.stack.push(Frame::Array(span.start(), Vec::new()));
         true
     }
 
     fn array_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        if self.skipping() {
+            return;
+        }
         match self.stack.pop() {
             Some(Frame::Array(start, items)) => self.value(Node::Array(items, start..span.end())),
             _ => self.fail(),
@@ -569,6 +614,9 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn simple_key(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
+        if self.skipping() {
+            return;
+        }
         let mut key = Cow::Borrowed("");
         self.raw(span, kind).decode_key(&mut key, error);
         if let Some((_, _, path)) = &mut self.header {
@@ -589,12 +637,15 @@ impl<'i> EventReceiver for Builder<'i> {
 
     fn key_sep(&mut self, _span: Span, _error: &mut dyn ErrorSink) {
         // Dotted keys outside headers: left to the serde path.
-        if self.header.is_none() {
+        if self.header.is_none() && !self.skipping() {
             self.fail();
         }
     }
 
     fn scalar(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
+        if self.skipping() {
+            return;
+        }
         let mut text = Cow::Borrowed("");
         let range = span.start()..span.end();
         let node = match self.raw(span, kind).decode_scalar(&mut text, error) {
@@ -634,7 +685,7 @@ mod tests {
     /// The fast path gives what serde gives, spans included; and so does it
     /// read in chunks of any size, or it declines.
     fn same(text: &str) {
-        let fast = parse(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
+        let fast = read_file(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
         let serde: RawFile = toml::from_str(text).unwrap();
         assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
         assert_eq!(in_chunks_the_same_or_declined(text), 0, "{text}");
@@ -692,18 +743,7 @@ mod tests {
 
     /// The fast path leaves the file to serde.
     fn declines(text: &str) {
-        assert!(parse(text).is_none(), "fast path accepted:\n{text}");
-    }
-
-    #[test]
-    fn expectations_go_to_serde_and_mentions_of_them_do_not() {
-        let part = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
-        declines(&format!("{part}[expect]\nmass = {{ max = 2 }}\n"));
-        declines(&format!("{part}[ expect ]\nmass = {{ max = 2 }}\n"));
-        declines(&format!("expect.mass = {{ max = 2 }}\n{part}"));
-        same(&format!(
-            "# expected by Monday\nname = \"as expected\"\n{part}"
-        ));
+        assert!(read_file(text).is_none(), "fast path accepted:\n{text}");
     }
 
     #[test]
@@ -740,10 +780,7 @@ mod tests {
 
     #[test]
     fn anything_else_is_left_to_serde() {
-        // Not covered: [expect], dotted keys, inline `part`, other tables.
-        declines(
-            "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n[expect]\nmass = { value = 1, tol = \"1%\" }\n",
-        );
+        // Not covered: dotted keys, inline `part`, other tables.
         declines("units.length = \"mm\"\n");
         declines("part = [{ shape = \"point\", mass = 1, center = [0, 0, 0] }]\n");
         declines("[[part]]\nshape = \"box\"\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = 90\n");

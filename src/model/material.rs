@@ -13,6 +13,20 @@ use std::ops::Range;
 use toml::Spanned;
 
 impl Ctx<'_> {
+    /// The file's `[materials]`, each density checked, into `materials`.
+    pub(super) fn read_materials(
+        &mut self,
+        table: &super::raw::Materials,
+    ) -> Result<(), Diagnostic> {
+        for (name, m) in table.get_ref() {
+            let key = format!("density` of material `{name}");
+            let si = self.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
+            let file = self.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
+            self.materials.insert(name.clone(), (si, file));
+        }
+        Ok(())
+    }
+
     /// A density (at `span`) on a thin shell, which has no volume.
     pub(super) fn thin_shell(&self, span: Range<usize>, shape: &str) -> Diagnostic {
         self.err(

@@ -17,6 +17,7 @@ mod parts;
 mod place;
 pub mod raw;
 pub mod rotation;
+mod section;
 mod toml_error;
 mod walk;
 
@@ -172,10 +173,15 @@ impl Model {
     /// else, and for every error in the TOML, serde via the toml crate's
     /// value tree.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
-        match fast::parse(&source.text) {
+        match fast::read_file(&source.text) {
             Some(raw) => Ok(raw),
-            None => toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e)),
+            None => Model::serde(source),
         }
+    }
+
+    /// The file read by serde, through the toml crate's value tree.
+    fn serde(source: &Source) -> Result<RawFile, Diagnostic> {
+        toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))
     }
 
     /// `parse`, inside the chain of files that include each other (for
@@ -190,24 +196,22 @@ impl Model {
             items: Vec::with_capacity((part_tables(&source.text) as usize).min(MAX_PARTS)),
             ..Streamed::default()
         };
-        let fast = fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, p| {
-            streamed.take(source, units, p);
+        let fast = fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, sections, p| {
+            streamed.take(source, units, sections, p);
         });
-        let mut raw = match fast {
-            Some(raw)
-                if streamed
-                    .units_seen
-                    .is_none_or(|seen| seen == raw.units.is_some()) =>
-            {
-                raw
-            }
+        let raw = match fast {
+            Some(raw) if streamed.saw_all_of(&raw) => with_sections(source, raw),
             Some(_) => {
                 streamed = Streamed::off();
-                Model::raw(source)?
+                fast::read_file(&source.text)
             }
+            None => None,
+        };
+        let mut raw = match raw {
+            Some(raw) => raw,
             None => {
                 streamed = Streamed::off();
-                toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))?
+                Model::serde(source)?
             }
         };
         let ctx = Ctx {
@@ -225,12 +229,7 @@ impl Model {
             materials: Default::default(),
         };
         if let Some(table) = &raw.materials {
-            for (name, m) in table.get_ref() {
-                let key = format!("density` of material `{name}");
-                let si = ctx.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
-                let file = ctx.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
-                ctx.materials.insert(name.clone(), (si, file));
-            }
+            ctx.read_materials(table)?;
         }
         let ctx = ctx;
         if !streamed.off {
@@ -324,6 +323,20 @@ impl Model {
     }
 }
 
+/// `raw` from the fast path with its `[expect]` and `[materials]` read
+/// (`fast::Section::read`); `None` where serde must read the whole file.
+fn with_sections(source: &Source, mut raw: RawFile) -> Option<RawFile> {
+    if !raw.sections.is_empty() {
+        let read = fast::Section::read(&source.text, &raw.sections)?;
+        raw.expect = read.expect;
+        raw.materials = read.materials;
+    }
+    Some(raw)
+}
+
+/// Materials by name: density in SI and in the file's units.
+type Materials = std::collections::BTreeMap<String, (f64, f64)>;
+
 /// The parts of a file on the fast path, made as they are read
 /// (`fast::parse_streaming`): such a file has no includes and no
 /// `[materials]`, and its `units` come before its parts (the keys at the
@@ -336,9 +349,11 @@ struct Streamed {
     /// Not used: the file is read whole first.
     off: bool,
     /// The file's units as the first part found them: given or not, and
-    /// read.
+    /// read; and how many `[materials]` sections had been read by then.
     units_seen: Option<bool>,
-    units: Option<Result<FileUnits, ()>>,
+    materials_seen: usize,
+    /// The units and materials the parts are made with.
+    ctx: Option<Result<(FileUnits, Materials), ()>>,
     items: Vec<Item>,
     /// Parts read, made or not.
     count: usize,
@@ -359,6 +374,7 @@ impl Streamed {
         &mut self,
         source: &Source,
         units: Option<&toml::Spanned<raw::RawUnits>>,
+        sections: &[fast::Section],
         p: toml::Spanned<raw::RawPart>,
     ) {
         let index = self.count;
@@ -366,31 +382,53 @@ impl Streamed {
         if self.error.is_some() || self.count > MAX_PARTS {
             return;
         }
-        let units = *self.units.get_or_insert_with(|| {
+        let made = self.ctx.get_or_insert_with(|| {
             self.units_seen = Some(units.is_some());
-            let ctx = Ctx {
+            let materials: Vec<fast::Section> =
+                sections.iter().filter(|s| s.materials).cloned().collect();
+            self.materials_seen = materials.len();
+            // An error is said again when the whole file is read.
+            let mut ctx = Ctx {
                 source,
                 units: FileUnits::default(),
                 materials: Default::default(),
             };
-            // An error is said again when the whole file is read.
-            units.map_or(Ok(FileUnits::default()), |u| {
-                ctx.file_units(u).map_err(|_| ())
-            })
+            if let Some(u) = units {
+                ctx.units = ctx.file_units(u).map_err(|_| ())?;
+            }
+            let table = fast::Section::read(&source.text, &materials).ok_or(())?;
+            if let Some(table) = &table.materials {
+                ctx.read_materials(table).map_err(|_| ())?;
+            }
+            Ok((ctx.units, ctx.materials))
         });
-        let Ok(units) = units else { return };
+        let Ok((units, materials)) = made else { return };
         let ctx = Ctx {
             source,
-            units,
-            materials: Default::default(),
+            units: *units,
+            materials: std::mem::take(materials),
         };
-        match ctx.part(index, &p) {
+        let made = ctx.part(index, &p);
+        // Handed back: a `Ctx` owns its materials.
+        if let Some(Ok((_, m))) = &mut self.ctx {
+            *m = ctx.materials;
+        }
+        match made {
             Ok((part, real)) => {
                 self.has_real_sizes |= real.is_some();
                 self.items.push(Item::Part { part, real });
             }
             Err(e) => self.error = Some(e),
         }
+    }
+
+    /// Whether the parts were made with the file's units and materials:
+    /// none came after the first part was read (a `[units]` or
+    /// `[materials]` table at the end).
+    fn saw_all_of(&self, raw: &RawFile) -> bool {
+        let materials = raw.sections.iter().filter(|s| s.materials).count();
+        self.units_seen
+            .is_none_or(|seen| seen == raw.units.is_some() && materials == self.materials_seen)
     }
 
     /// The model, `ctx` with the file's units read.
@@ -711,6 +749,26 @@ mod streaming_tests {
         let m = parse(&text).unwrap();
         let si = m.flattened()[1].si(m.units);
         assert_eq!(si.mass, 1.5);
+    }
+
+    /// A material the parts use, defined before them or after them (in a
+    /// later chunk: the file is then read whole first), gives the same
+    /// parts; an expectation at the end keeps the file's line and column.
+    #[test]
+    fn materials_and_expectations_anywhere_are_read_with_the_files_spans() {
+        let part = "[[part]]\nshape = \"box\"\nmaterial = \"foam\"\nsize = [1, 2, 4]\ncenter = [0, 0, 0]\n";
+        let parts = part.repeat(MANY);
+        let foam = "[materials]\nfoam = { density = \"30 kg/m^3\" }\n";
+        let before = parse(&format!("{foam}{parts}")).unwrap();
+        let after = parse(&format!("{parts}{foam}")).unwrap();
+        for m in [&before, &after] {
+            assert_eq!(m.flattened()[MANY - 1].si(m.units).mass, 240.0);
+        }
+        let expect = "[expect]\nmass = { value = 1, tol = \"1 %\" }\n";
+        let m = parse(&format!("{parts}{foam}{expect}")).unwrap();
+        let (line, col) = Source::new("s.toml", format!("{parts}{foam}{expect}"))
+            .line_col(m.expect[0].span.start);
+        assert_eq!((line, col), (5 * MANY + 4, 8));
     }
 
     /// Errors in the order of a file read whole: a syntax error anywhere

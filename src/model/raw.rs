@@ -69,8 +69,15 @@ pub struct RawFile {
     pub analysis: Option<Spanned<RawAnalysis>>,
     pub expect: Option<Spanned<RawExpect>>,
     /// `[materials]`: name → { density }, adding to the built-in ones.
-    pub materials: Option<Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>>,
+    pub materials: Option<Materials>,
+    /// From the fast path: the tables it passed over, for serde to read
+    /// (`expect`, `materials` are then still to be filled in).
+    #[serde(skip)]
+    pub sections: Vec<super::fast::Section>,
 }
+
+/// `[materials]`.
+pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
 
 #[derive(Deserialize, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
@@ -308,5 +315,138 @@ impl<'de> Deserialize<'de> for ExpectValue {
             }
         }
         d.deserialize_any(V)
+    }
+}
+
+/// Spans moved `by` bytes on: a table serde read from a slice of the file
+/// that starts `by` bytes in (`model::fast::Section`). Every field is
+/// named (no `..`), so that a field added to a table is shifted too or the
+/// code does not compile.
+pub trait Shift {
+    fn shift(self, by: usize) -> Self;
+}
+
+impl<T: Shift> Shift for Spanned<T> {
+    fn shift(self, by: usize) -> Self {
+        let span = self.span();
+        Spanned::new(span.start + by..span.end + by, self.into_inner().shift(by))
+    }
+}
+
+impl<T: Shift> Shift for Option<T> {
+    fn shift(self, by: usize) -> Self {
+        self.map(|t| t.shift(by))
+    }
+}
+
+impl<T: Shift> Shift for Box<T> {
+    fn shift(self, by: usize) -> Self {
+        Box::new((*self).shift(by))
+    }
+}
+
+/// Values that hold no span.
+impl Shift for Quantity {
+    fn shift(self, _: usize) -> Self {
+        self
+    }
+}
+
+impl Shift for ExpectValue {
+    fn shift(self, _: usize) -> Self {
+        self
+    }
+}
+
+impl Shift for RawMaterial {
+    fn shift(self, by: usize) -> Self {
+        let RawMaterial { density } = self;
+        RawMaterial {
+            density: density.shift(by),
+        }
+    }
+}
+
+impl Shift for std::collections::BTreeMap<String, Spanned<RawMaterial>> {
+    fn shift(self, by: usize) -> Self {
+        self.into_iter().map(|(k, v)| (k, v.shift(by))).collect()
+    }
+}
+
+impl Shift for RawExpectation {
+    fn shift(self, by: usize) -> Self {
+        let RawExpectation {
+            value,
+            tol,
+            min,
+            max,
+            x,
+            y,
+            z,
+            xx,
+            yy,
+            zz,
+            xy,
+            xz,
+            yz,
+            c1,
+            c2,
+            c3,
+        } = self;
+        RawExpectation {
+            value: value.shift(by),
+            tol: tol.shift(by),
+            min: min.shift(by),
+            max: max.shift(by),
+            x: x.shift(by),
+            y: y.shift(by),
+            z: z.shift(by),
+            xx: xx.shift(by),
+            yy: yy.shift(by),
+            zz: zz.shift(by),
+            xy: xy.shift(by),
+            xz: xz.shift(by),
+            yz: yz.shift(by),
+            c1: c1.shift(by),
+            c2: c2.shift(by),
+            c3: c3.shift(by),
+        }
+    }
+}
+
+impl Shift for RawExpect {
+    fn shift(self, by: usize) -> Self {
+        let RawExpect {
+            mass,
+            center_of_mass,
+            principal_moments,
+            inertia_com,
+            inertia_ref,
+            radii_of_gyration,
+            angular_momentum,
+            kinetic_energy,
+            ixx,
+            iyy,
+            izz,
+            ixy,
+            ixz,
+            iyz,
+        } = self;
+        RawExpect {
+            mass: mass.shift(by),
+            center_of_mass: center_of_mass.shift(by),
+            principal_moments: principal_moments.shift(by),
+            inertia_com: inertia_com.shift(by),
+            inertia_ref: inertia_ref.shift(by),
+            radii_of_gyration: radii_of_gyration.shift(by),
+            angular_momentum: angular_momentum.shift(by),
+            kinetic_energy: kinetic_energy.shift(by),
+            ixx: ixx.shift(by),
+            iyy: iyy.shift(by),
+            izz: izz.shift(by),
+            ixy: ixy.shift(by),
+            ixz: ixz.shift(by),
+            iyz: iyz.shift(by),
+        }
     }
 }
