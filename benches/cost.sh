@@ -17,7 +17,8 @@
 # - a tree of 32 files describing 2^31 instances (refused by the part
 #   limit: how long the refusal takes);
 # - a part name of 1 to 20 MB (the table);
-# - an unknown key of 200 KB ("did you mean").
+# - an unknown key of 200 KB ("did you mean");
+# - the 100,000 point masses with `[materials]` and `[expect]` (`check`).
 #
 # Environment: FLAT (default "10000 30000 100000 300000 1000000"), TREE
 # (default "10 12 14 16 18 20"), SVG (a path: also write the plot there).
@@ -75,6 +76,13 @@ for mb in (1, 5, 20):
     open(f"{tmp}/name-{mb}.toml", "w").write(
         f'[[part]]\nname = "{name}"\nshape = "point"\nmass = 1\ncenter = [0, 0, 0]\n'
         '[[part]]\nshape = "point"\nmass = 1\ncenter = [1, 0, 0]\n')
+# The same 100,000 point masses with materials and expectations, read
+# by `check` (those tables are serde's, read alone).
+pts = open(f"{tmp}/flat-100000.toml").read() if os.path.exists(f"{tmp}/flat-100000.toml") else ""
+if pts:
+    open(f"{tmp}/expect-100000.toml", "w").write(
+        '[materials]\nfoam = { density = "30 kg/m^3" }\n' + pts
+        + '[expect]\nmass = { min = 0 }\ncenter_of_mass.x = { min = -1, max = 1 }\n')
 key = "k" * 200_000
 open(f"{tmp}/key.toml", "w").write(f'[[part]]\nshape = "point"\nmass = 1\ncenter = [0, 0, 0]\n{key} = 1\n')
 EOF
@@ -85,6 +93,9 @@ for n in $FLAT; do
     measure flat-json "$n" "$bytes" -- "$bin" report --format json "$f"
     measure flat-table "$n" "$bytes" -- "$bin" report "$f"
 done
+if [ -f "$tmp/expect-100000.toml" ]; then
+    measure check-expect 100000 "$(wc -c <"$tmp/expect-100000.toml")" -- "$bin" check "$tmp/expect-100000.toml"
+fi
 for k in $TREE; do
     measure tree-json "$((1 << k))" "$(cat "$tmp/tree-$k"/*.toml | wc -c)" -- \
         "$bin" report --format json "$tmp/tree-$k/t0.toml"

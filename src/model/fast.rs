@@ -20,15 +20,16 @@
 //!
 //! NOTE: the builder fills `RawPart` itself, the serde mirror's own struct,
 //! so the two readers share one definition of a part's keys and types. A
-//! key that `Builder::assign` does not take (booleans, includes, given
-//! tensors, …) only sends the files that use it down the serde path; the
+//! key that `Builder::assign` does not take (`include`, `origin`, …) only
+//! sends the files that use it down the serde path; the
 //! property test (tests/integration/hostile.rs) and the fuzz target assert
 //! that wherever this returns `Some`, serde gives the same `RawFile`.
 
-use super::raw::{
-    Angles, Floats, Quantity, RawAnalysis, RawFile, RawPart, RawRotation, RawUnits, Vector,
-};
+use super::raw::{RawAnalysis, RawFile, RawPart, RawUnits};
 pub use super::section::Section;
+use values::{Node, quantity, rotation, set, string, units_key, vector, vectors};
+
+mod values;
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -169,22 +170,6 @@ struct Failed(bool);
 impl ErrorSink for Failed {
     fn report_error(&mut self, _error: ParseError) {
         self.0 = true;
-    }
-}
-
-/// A value being read: only what part files contain.
-enum Node<'i> {
-    Str(Cow<'i, str>, Range<usize>),
-    Num(f64, Range<usize>),
-    Array(Vec<Node<'i>>, Range<usize>),
-    Table(Vec<(Cow<'i, str>, Node<'i>)>, Range<usize>),
-}
-
-impl Node<'_> {
-    fn span(&self) -> Range<usize> {
-        match self {
-            Node::Str(_, s) | Node::Num(_, s) | Node::Array(_, s) | Node::Table(_, s) => s.clone(),
-        }
     }
 }
 
@@ -427,122 +412,22 @@ impl<'i> Builder<'i> {
                     "corner" => set(&mut p.corner, vector(node)?),
                     "from" => set(&mut p.from, vector(node)?),
                     "to" => set(&mut p.to, vector(node)?),
-                    "edges" => {
-                        let Node::Array(items, span) = node else {
-                            return None;
-                        };
-                        let edges = items.into_iter().map(vector).collect::<Option<_>>()?;
-                        set(&mut p.edges, Spanned::new(span, edges))
-                    }
+                    "edges" => set(&mut p.edges, vectors(node)?),
+                    "vertices" => set(&mut p.vertices, vectors(node)?),
+                    "inertia" => set(&mut p.inertia, vectors(node)?),
                     "rotation" => set(&mut p.rotation, rotation(node)?),
+                    "material" => set(&mut p.material, string(node)?),
+                    "products" => set(&mut p.products, string(node)?),
+                    "area" => set(&mut p.area, quantity(node)?),
+                    "remove" => match node {
+                        Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
+                        _ => None,
+                    },
                     _ => None,
                 }
             }
         }
     }
-}
-
-/// Set a field once: a second value is a duplicate key. (`Into`: the
-/// rarely given keys of a part are boxed.)
-fn set<T, V: Into<T>>(field: &mut Option<T>, value: V) -> Option<()> {
-    match field {
-        Some(_) => None,
-        None => {
-            *field = Some(value.into());
-            Some(())
-        }
-    }
-}
-
-fn units_key(u: &mut RawUnits, key: &str, node: Node<'_>) -> Option<()> {
-    match key {
-        "length" => set(&mut u.length, string(node)?),
-        "mass" => set(&mut u.mass, string(node)?),
-        _ => None,
-    }
-}
-
-fn string(node: Node<'_>) -> Option<Spanned<String>> {
-    match node {
-        Node::Str(s, span) => Some(Spanned::new(span, s.into_owned())),
-        _ => None,
-    }
-}
-
-fn quantity(node: Node<'_>) -> Option<Spanned<Quantity>> {
-    match node {
-        Node::Num(x, span) => Some(Spanned::new(span, Quantity::Number(x))),
-        Node::Str(s, span) => Some(Spanned::new(span, Quantity::Text(s.into_owned()))),
-        _ => None,
-    }
-}
-
-fn vector(node: Node<'_>) -> Option<Vector> {
-    match node {
-        Node::Array(items, span) => {
-            let v = items.into_iter().map(quantity).collect::<Option<_>>()?;
-            Some(Spanned::new(span, v))
-        }
-        _ => None,
-    }
-}
-
-fn number(node: Node<'_>) -> Option<Spanned<f64>> {
-    match node {
-        Node::Num(x, span) => Some(Spanned::new(span, x)),
-        _ => None,
-    }
-}
-
-fn floats(node: Node<'_>) -> Option<Floats> {
-    match node {
-        Node::Array(items, span) => {
-            let v = items.into_iter().map(number).collect::<Option<_>>()?;
-            Some(Spanned::new(span, v))
-        }
-        _ => None,
-    }
-}
-
-fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
-    let Node::Table(entries, span) = node else {
-        return None;
-    };
-    let mut r = RawRotation::default();
-    for (k, v) in entries {
-        match &*k {
-            "quaternion" => set(&mut r.quaternion, floats(v)?),
-            "axis" => set(&mut r.axis, floats(v)?),
-            "degrees" => {
-                let degrees = match v {
-                    Node::Num(x, s) => Spanned::new(s, Angles::One(x)),
-                    Node::Array(items, s) => {
-                        let xs = items
-                            .into_iter()
-                            .map(|n| match n {
-                                Node::Num(x, _) => Some(x),
-                                _ => None,
-                            })
-                            .collect::<Option<_>>()?;
-                        Spanned::new(s, Angles::Three(xs))
-                    }
-                    _ => return None,
-                };
-                set(&mut r.degrees, degrees)
-            }
-            "matrix" => {
-                let Node::Array(rows, s) = v else {
-                    return None;
-                };
-                let rows = rows.into_iter().map(floats).collect::<Option<_>>()?;
-                set(&mut r.matrix, Spanned::new(s, rows))
-            }
-            "intrinsic" => set(&mut r.intrinsic, string(v)?),
-            "extrinsic" => set(&mut r.extrinsic, string(v)?),
-            _ => None,
-        }?;
-    }
-    Some(Spanned::new(span, r))
 }
 
 impl<'i> EventReceiver for Builder<'i> {
@@ -668,7 +553,8 @@ impl<'i> EventReceiver for Builder<'i> {
                     return self.fail();
                 }
             }
-            ScalarKind::Boolean(_) | ScalarKind::DateTime => return self.fail(),
+            ScalarKind::Boolean(b) => Node::Bool(b, range),
+            ScalarKind::DateTime => return self.fail(),
         };
         self.value(node);
     }
@@ -776,6 +662,19 @@ mod tests {
         same("[[part]]\r\nshape = \"point\"\r\nmass = -1\r\ncenter = [1, 2]\r\n");
         same("name = \"no parts\"\n");
         same("");
+    }
+
+    /// Cut-outs, materials, triangles and given tensors: on the fast path.
+    #[test]
+    fn every_key_of_a_shape_reads_as_serde_reads_it() {
+        same(
+            "[[part]]\nshape = \"box\"\nmaterial = \"steel\"\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\nremove = true\n\
+             [[part]]\nshape = \"triangle\"\nareal_density = 2\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nremove = false\n\
+             [[part]]\nshape = \"inertia\"\nmass = 2\ncenter = [1, 2, 3]\ninertia = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\nproducts = \"positive\"\n\
+             [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n",
+        );
+        declines("[[part]]\nshape = \"box\"\nremove = 1\n");
+        declines("[[part]]\nshape = \"box\"\nname = true\n");
     }
 
     #[test]

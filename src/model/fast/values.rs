@@ -1,0 +1,140 @@
+//! The values the fast path reads (`Node`), and their conversion into the
+//! serde mirror's types, `None` for a value of another type.
+
+use super::super::raw::{Angles, Floats, Quantity, RawRotation, RawUnits, Vector};
+use std::borrow::Cow;
+use std::ops::Range;
+use toml::Spanned;
+
+/// A value being read: only what part files contain.
+pub(super) enum Node<'i> {
+    Str(Cow<'i, str>, Range<usize>),
+    Num(f64, Range<usize>),
+    Bool(bool, Range<usize>),
+    Array(Vec<Node<'i>>, Range<usize>),
+    Table(Vec<(Cow<'i, str>, Node<'i>)>, Range<usize>),
+}
+
+impl Node<'_> {
+    pub(super) fn span(&self) -> Range<usize> {
+        match self {
+            Node::Str(_, s)
+            | Node::Num(_, s)
+            | Node::Bool(_, s)
+            | Node::Array(_, s)
+            | Node::Table(_, s) => s.clone(),
+        }
+    }
+}
+
+/// Set a field once: a second value is a duplicate key. (`Into`: the
+/// rarely given keys of a part are boxed.)
+pub(super) fn set<T, V: Into<T>>(field: &mut Option<T>, value: V) -> Option<()> {
+    match field {
+        Some(_) => None,
+        None => {
+            *field = Some(value.into());
+            Some(())
+        }
+    }
+}
+
+pub(super) fn units_key(u: &mut RawUnits, key: &str, node: Node<'_>) -> Option<()> {
+    match key {
+        "length" => set(&mut u.length, string(node)?),
+        "mass" => set(&mut u.mass, string(node)?),
+        _ => None,
+    }
+}
+
+/// An array of vectors (`edges`, `vertices`, the rows of `inertia`).
+pub(super) fn vectors(node: Node<'_>) -> Option<Spanned<Vec<Vector>>> {
+    let Node::Array(items, span) = node else {
+        return None;
+    };
+    let items = items.into_iter().map(vector).collect::<Option<_>>()?;
+    Some(Spanned::new(span, items))
+}
+
+pub(super) fn string(node: Node<'_>) -> Option<Spanned<String>> {
+    match node {
+        Node::Str(s, span) => Some(Spanned::new(span, s.into_owned())),
+        _ => None,
+    }
+}
+
+pub(super) fn quantity(node: Node<'_>) -> Option<Spanned<Quantity>> {
+    match node {
+        Node::Num(x, span) => Some(Spanned::new(span, Quantity::Number(x))),
+        Node::Str(s, span) => Some(Spanned::new(span, Quantity::Text(s.into_owned()))),
+        _ => None,
+    }
+}
+
+pub(super) fn vector(node: Node<'_>) -> Option<Vector> {
+    match node {
+        Node::Array(items, span) => {
+            let v = items.into_iter().map(quantity).collect::<Option<_>>()?;
+            Some(Spanned::new(span, v))
+        }
+        _ => None,
+    }
+}
+
+pub(super) fn number(node: Node<'_>) -> Option<Spanned<f64>> {
+    match node {
+        Node::Num(x, span) => Some(Spanned::new(span, x)),
+        _ => None,
+    }
+}
+
+pub(super) fn floats(node: Node<'_>) -> Option<Floats> {
+    match node {
+        Node::Array(items, span) => {
+            let v = items.into_iter().map(number).collect::<Option<_>>()?;
+            Some(Spanned::new(span, v))
+        }
+        _ => None,
+    }
+}
+
+pub(super) fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
+    let Node::Table(entries, span) = node else {
+        return None;
+    };
+    let mut r = RawRotation::default();
+    for (k, v) in entries {
+        match &*k {
+            "quaternion" => set(&mut r.quaternion, floats(v)?),
+            "axis" => set(&mut r.axis, floats(v)?),
+            "degrees" => {
+                let degrees = match v {
+                    Node::Num(x, s) => Spanned::new(s, Angles::One(x)),
+                    Node::Array(items, s) => {
+                        let xs = items
+                            .into_iter()
+                            .map(|n| match n {
+                                Node::Num(x, _) => Some(x),
+                                _ => None,
+                            })
+                            .collect::<Option<_>>()?;
+                        Spanned::new(s, Angles::Three(xs))
+                    }
+                    _ => return None,
+                };
+                set(&mut r.degrees, degrees)
+            }
+            "matrix" => {
+                let Node::Array(rows, s) = v else {
+                    return None;
+                };
+                let rows = rows.into_iter().map(floats).collect::<Option<_>>()?;
+                set(&mut r.matrix, Spanned::new(s, rows))
+            }
+            "intrinsic" => set(&mut r.intrinsic, string(v)?),
+            "extrinsic" => set(&mut r.extrinsic, string(v)?),
+            _ => None,
+        }?;
+    }
+    Some(Spanned::new(span, r))
+}
