@@ -20,8 +20,8 @@
 //!
 //! NOTE: the builder fills `RawPart` itself, the serde mirror's own struct,
 //! so the two readers share one definition of a part's keys and types. A
-//! key that `Builder::assign` does not take (`include`, `origin`, …) only
-//! sends the files that use it down the serde path; the
+//! key that `Builder::assign` does not take only sends the files that use
+//! it down the serde path; the
 //! property test (tests/integration/hostile.rs) and the fuzz target assert
 //! that wherever this returns `Some`, serde gives the same `RawFile`.
 
@@ -286,8 +286,8 @@ impl<'i> Builder<'i> {
         let Some((span, p)) = self.part.take() else {
             return;
         };
-        // A part without a shape is an include or an error: serde's.
-        if p.shape.is_none() {
+        // A part with neither a shape nor an include is an error: serde's.
+        if p.shape.is_none() && p.include.is_none() {
             return self.fail();
         }
         match &mut self.parts {
@@ -416,6 +416,8 @@ impl<'i> Builder<'i> {
                     "vertices" => set(&mut p.vertices, vectors(node)?),
                     "inertia" => set(&mut p.inertia, vectors(node)?),
                     "rotation" => set(&mut p.rotation, rotation(node)?),
+                    "include" => set(&mut p.include, string(node)?),
+                    "origin" => set(&mut p.origin, vector(node)?),
                     "material" => set(&mut p.material, string(node)?),
                     "products" => set(&mut p.products, string(node)?),
                     "area" => set(&mut p.area, quantity(node)?),
@@ -664,14 +666,16 @@ mod tests {
         same("");
     }
 
-    /// Cut-outs, materials, triangles and given tensors: on the fast path.
+    /// Cut-outs, materials, triangles, given tensors and includes: on the
+    /// fast path.
     #[test]
     fn every_key_of_a_shape_reads_as_serde_reads_it() {
         same(
             "[[part]]\nshape = \"box\"\nmaterial = \"steel\"\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\nremove = true\n\
              [[part]]\nshape = \"triangle\"\nareal_density = 2\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nremove = false\n\
              [[part]]\nshape = \"inertia\"\nmass = 2\ncenter = [1, 2, 3]\ninertia = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\nproducts = \"positive\"\n\
-             [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n",
+             [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n\
+             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n",
         );
         declines("[[part]]\nshape = \"box\"\nremove = 1\n");
         declines("[[part]]\nshape = \"box\"\nname = true\n");

@@ -18,6 +18,7 @@ mod place;
 pub mod raw;
 pub mod rotation;
 mod section;
+mod streamed;
 mod toml_error;
 mod walk;
 
@@ -31,6 +32,7 @@ use ctx::Ctx;
 use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
+use streamed::{Streamed, with_sections};
 
 /// The most parts a body may have, included ones counted: ~1 KB of memory
 /// each while reading.
@@ -190,16 +192,25 @@ impl Model {
         // The fast path, each part made as it is read; else, or if the
         // file's units came after its parts (a `[units]` table at the end),
         // the whole file read first.
-        let mut streamed = Streamed {
+        // A file with includes is read whole first: its includes are
+        // counted before any is read (`include::Ctx::check_part_count`).
+        let includes = source.text.contains("include");
+        let mut streamed = if includes {
+            Streamed::off()
+        } else {
             // At the size the file's `[[part]]` lines say: a list doubled
-            // up to its size holds up to twice the memory of the parts.
-            items: Vec::with_capacity((part_tables(&source.text) as usize).min(MAX_PARTS)),
-            ..Streamed::default()
+            // up to its size holds up to twice the parts.
+            Streamed::with_room(part_tables(&source.text) as usize)
         };
-        let fast = fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, sections, p| {
-            streamed.take(source, units, sections, p);
-        });
+        let fast = if includes {
+            fast::read_file(&source.text)
+        } else {
+            fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, sections, p| {
+                streamed.take(source, units, sections, p);
+            })
+        };
         let raw = match fast {
+            Some(raw) if includes => Some(raw),
             Some(raw) if streamed.saw_all_of(&raw) => with_sections(source, raw),
             Some(_) => {
                 streamed = Streamed::off();
@@ -320,139 +331,6 @@ impl Model {
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
         })
-    }
-}
-
-/// `raw` from the fast path with its `[expect]` and `[materials]` read
-/// (`fast::Section::read`); `None` where serde must read the whole file.
-fn with_sections(source: &Source, mut raw: RawFile) -> Option<RawFile> {
-    if !raw.sections.is_empty() {
-        let read = fast::Section::read(&source.text, &raw.sections)?;
-        raw.expect = read.expect;
-        raw.materials = read.materials;
-    }
-    Some(raw)
-}
-
-/// Materials by name: density in SI and in the file's units.
-type Materials = std::collections::BTreeMap<String, (f64, f64)>;
-
-/// The parts of a file on the fast path, made as they are read
-/// (`fast::parse_streaming`): such a file has no includes and no
-/// `[materials]`, and its `units` come before its parts (the keys at the
-/// top of a TOML file come before its tables; a `[units]` table after
-/// them sends the file down the other path). Errors come in the order the
-/// whole file read first gives them: the units, the part limit, then the
-/// first part that is not valid.
-#[derive(Default)]
-struct Streamed {
-    /// Not used: the file is read whole first.
-    off: bool,
-    /// The file's units as the first part found them: given or not, and
-    /// read; and how many `[materials]` sections had been read by then.
-    units_seen: Option<bool>,
-    materials_seen: usize,
-    /// The units and materials the parts are made with.
-    ctx: Option<Result<(FileUnits, Materials), ()>>,
-    items: Vec<Item>,
-    /// Parts read, made or not.
-    count: usize,
-    has_real_sizes: bool,
-    /// The first part that is not valid.
-    error: Option<Diagnostic>,
-}
-
-impl Streamed {
-    fn off() -> Streamed {
-        Streamed {
-            off: true,
-            ..Streamed::default()
-        }
-    }
-
-    fn take(
-        &mut self,
-        source: &Source,
-        units: Option<&toml::Spanned<raw::RawUnits>>,
-        sections: &[fast::Section],
-        p: toml::Spanned<raw::RawPart>,
-    ) {
-        let index = self.count;
-        self.count += 1;
-        if self.error.is_some() || self.count > MAX_PARTS {
-            return;
-        }
-        let made = self.ctx.get_or_insert_with(|| {
-            self.units_seen = Some(units.is_some());
-            let materials: Vec<fast::Section> =
-                sections.iter().filter(|s| s.materials).cloned().collect();
-            self.materials_seen = materials.len();
-            // An error is said again when the whole file is read.
-            let mut ctx = Ctx {
-                source,
-                units: FileUnits::default(),
-                materials: Default::default(),
-            };
-            if let Some(u) = units {
-                ctx.units = ctx.file_units(u).map_err(|_| ())?;
-            }
-            let table = fast::Section::read(&source.text, &materials).ok_or(())?;
-            if let Some(table) = &table.materials {
-                ctx.read_materials(table).map_err(|_| ())?;
-            }
-            Ok((ctx.units, ctx.materials))
-        });
-        let Ok((units, materials)) = made else { return };
-        let ctx = Ctx {
-            source,
-            units: *units,
-            materials: std::mem::take(materials),
-        };
-        let made = ctx.part(index, &p);
-        // Handed back: a `Ctx` owns its materials.
-        if let Some(Ok((_, m))) = &mut self.ctx {
-            *m = ctx.materials;
-        }
-        match made {
-            Ok((part, real)) => {
-                self.has_real_sizes |= real.is_some();
-                self.items.push(Item::Part { part, real });
-            }
-            Err(e) => self.error = Some(e),
-        }
-    }
-
-    /// Whether the parts were made with the file's units and materials:
-    /// none came after the first part was read (a `[units]` or
-    /// `[materials]` table at the end).
-    fn saw_all_of(&self, raw: &RawFile) -> bool {
-        let materials = raw.sections.iter().filter(|s| s.materials).count();
-        self.units_seen
-            .is_none_or(|seen| seen == raw.units.is_some() && materials == self.materials_seen)
-    }
-
-    /// The model, `ctx` with the file's units read.
-    fn model(self, ctx: &Ctx, raw: RawFile) -> Result<Model, Diagnostic> {
-        if raw.part.is_none() {
-            return Err(ctx
-                .err(0..0, "the file has no parts")
-                .help("add at least one `[[part]]` table with a `shape`"));
-        }
-        if self.count > MAX_PARTS {
-            return Err(ctx.err(
-                0..0,
-                format!(
-                    "the file has {} parts; the limit is {MAX_PARTS}",
-                    self.count
-                ),
-            ));
-        }
-        if let Some(e) = self.error {
-            return Err(e);
-        }
-        let mut items = self.items;
-        items.shrink_to_fit();
-        Model::rest(ctx, raw, items, self.count, self.has_real_sizes)
     }
 }
 
