@@ -567,12 +567,12 @@ impl<'i> EventReceiver for Builder<'i> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// The fast path gives what serde gives, spans included; and so does it
     /// read in chunks of any size, or it declines.
-    fn same(text: &str) {
+    pub(in crate::model) fn same(text: &str) {
         let fast = read_file(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
         let serde: RawFile = toml::from_str(text).unwrap();
         assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
@@ -630,7 +630,7 @@ mod tests {
     }
 
     /// The fast path leaves the file to serde.
-    fn declines(text: &str) {
+    pub(in crate::model) fn declines(text: &str) {
         assert!(read_file(text).is_none(), "fast path accepted:\n{text}");
     }
 

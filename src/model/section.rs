@@ -57,19 +57,7 @@ pub struct Sections {
 
 #[cfg(test)]
 mod tests {
-    use super::super::fast::read_file;
-    use super::RawFile;
-
-    /// The file read as the model reads it, as serde reads it whole.
-    fn same(text: &str) {
-        let fast = read_file(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
-        let serde: RawFile = toml::from_str(text).unwrap();
-        assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
-    }
-
-    fn declines(text: &str) {
-        assert!(read_file(text).is_none(), "fast path accepted:\n{text}");
-    }
+    use super::super::fast::tests::{declines, same};
 
     /// `[expect]` and `[materials]` are read by serde alone, each from its
     /// own slice of the file, with the file's spans; the rest by the fast

@@ -49,11 +49,7 @@ pub(super) fn units_key(u: &mut RawUnits, key: &str, node: Node<'_>) -> Option<(
 
 /// An array of vectors (`edges`, `vertices`, the rows of `inertia`).
 pub(super) fn vectors(node: Node<'_>) -> Option<Spanned<Vec<Vector>>> {
-    let Node::Array(items, span) = node else {
-        return None;
-    };
-    let items = items.into_iter().map(vector).collect::<Option<_>>()?;
-    Some(Spanned::new(span, items))
+    array_of(node, vector)
 }
 
 pub(super) fn string(node: Node<'_>) -> Option<Spanned<String>> {
@@ -71,14 +67,17 @@ pub(super) fn quantity(node: Node<'_>) -> Option<Spanned<Quantity>> {
     }
 }
 
+/// An array of what `item` reads.
+fn array_of<'i, T>(node: Node<'i>, item: fn(Node<'i>) -> Option<T>) -> Option<Spanned<Vec<T>>> {
+    let Node::Array(items, span) = node else {
+        return None;
+    };
+    let items = items.into_iter().map(item).collect::<Option<_>>()?;
+    Some(Spanned::new(span, items))
+}
+
 pub(super) fn vector(node: Node<'_>) -> Option<Vector> {
-    match node {
-        Node::Array(items, span) => {
-            let v = items.into_iter().map(quantity).collect::<Option<_>>()?;
-            Some(Spanned::new(span, v))
-        }
-        _ => None,
-    }
+    array_of(node, quantity)
 }
 
 pub(super) fn number(node: Node<'_>) -> Option<Spanned<f64>> {
@@ -89,13 +88,7 @@ pub(super) fn number(node: Node<'_>) -> Option<Spanned<f64>> {
 }
 
 pub(super) fn floats(node: Node<'_>) -> Option<Floats> {
-    match node {
-        Node::Array(items, span) => {
-            let v = items.into_iter().map(number).collect::<Option<_>>()?;
-            Some(Spanned::new(span, v))
-        }
-        _ => None,
-    }
+    array_of(node, number)
 }
 
 pub(super) fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
