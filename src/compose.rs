@@ -414,6 +414,7 @@ mod tests {
                     let norm = q.iter().map(|x| x * x).sum::<f64>().sqrt();
                     parts.push(Part {
                         name: String::new(),
+                        named: true,
                         shape: Shape::Box,
                         spec: Spec {
                             mass: MassSpec::Given(m),

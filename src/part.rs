@@ -31,9 +31,12 @@ pub struct RealSize {
 pub struct Part {
     /// The part's `name`, or `part N` (1-based position in the file); for
     /// a part of a sub-assembly, its path: `elbow / motor / stator`. Empty
-    /// in a model's items for a part the file does not name: a walk that
-    /// names parts (`Model::each_part`) gives it `part N`.
+    /// in a model's items for a part the file does not name (`named`
+    /// false): a walk that names parts (`Model::each_part`) gives it
+    /// `part N`.
     pub name: String,
+    /// Whether the file gave `name` (which may be `""`).
+    pub named: bool,
     pub shape: Shape,
     /// The part as the file gave it, in the file's units.
     pub spec: Spec,

@@ -649,6 +649,16 @@ mod streaming_tests {
         assert_eq!((line, col), (5 * MANY + 4, 8));
     }
 
+    /// A part the file does not name is `part N` (its place in its file),
+    /// one named `""` keeps its empty name.
+    #[test]
+    fn unnamed_parts_are_numbered_and_empty_names_kept() {
+        let point = "shape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+        let m = parse(&format!("[[part]]\nname = \"\"\n{point}[[part]]\n{point}")).unwrap();
+        let names: Vec<String> = m.flattened().into_iter().map(|p| p.name).collect();
+        assert_eq!(names, ["", "part 2"]);
+    }
+
     /// Errors in the order of a file read whole: a syntax error anywhere
     /// first, then the first part that is not valid, wherever it is.
     #[test]

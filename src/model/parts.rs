@@ -334,6 +334,7 @@ impl Ctx<'_> {
             } else {
                 String::new()
             },
+            named: p.name.is_some(),
             shape,
             spec,
             assembly: Vec::new(),

@@ -121,6 +121,7 @@ impl Model {
             prefix: String::new(),
             placed: Part {
                 name: String::new(),
+                named: true,
                 shape: crate::shapes::Shape::ALL[0],
                 spec: crate::part::Spec {
                     mass: crate::part::MassSpec::Given(0.0),
@@ -182,7 +183,7 @@ impl<'m> Walk<'m> {
                         solid,
                         size,
                     });
-                    let unnamed = self.named && part.name.is_empty();
+                    let unnamed = self.named && !part.named;
                     let Some(outermost) = self.frames.first() else {
                         if !unnamed {
                             f(Event::Part(Leaf { index, part, real }));
@@ -191,6 +192,7 @@ impl<'m> Walk<'m> {
                         let placed = &mut self.placed;
                         placed.clone_from(part);
                         placed.name = format!("part {}", k + 1);
+                        placed.named = true;
                         f(Event::Part(Leaf {
                             index,
                             part: placed,
