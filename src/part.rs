@@ -213,6 +213,30 @@ fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
     std::array::from_fn(|i| T::of(a[i]) - T::of(b[i]))
 }
 
+/// The diagonal entry `a` of ∫ρρᵀ dm = tr(I)/2 E − I of a given tensor:
+/// (I_jj + I_kk − I_aa)/2, formed as ((I_jj − I_aa) + I_kk)/2 with I_jj
+/// the one of the other two closer to I_aa.
+///
+/// NOTE: not tr(I)/2 − I_aa: for a long thin component given by its
+/// datasheet (principal moments 1e-12, 1, 1: an antenna), tr(I)/2 rounds
+/// to an ulp of 1 and the two small entries lost all but 4 digits (2e-4).
+/// I_jj − I_aa of the closer pair is exact when they are within a factor
+/// of 2 (Sterbenz), which the triangle inequality of a valid tensor makes
+/// the case whenever the result is small; so the entry rounds once.
+fn diagonal_second_moment<T: Real>(i: &M3<T>, a: usize) -> T {
+    let (j, k) = ((a + 1) % 3, (a + 2) % 3);
+    let distance = |b: usize| {
+        let d = i[b][b] - i[a][a];
+        if d < T::of(0.0) { -d } else { d }
+    };
+    let (j, k) = if distance(j) <= distance(k) {
+        (j, k)
+    } else {
+        (k, j)
+    };
+    ((i[j][j] - i[a][a]) + i[k][k]) / T::of(2.0)
+}
+
 /// Mass of a part (file units): given, or density times volume, area or
 /// length; negative for a cut-out.
 pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
@@ -344,12 +368,11 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
         } => {
             // ∫ρρᵀ dm = tr(I)/2 E − I; a cut-out's is subtracted.
             let i: M3<T> = inertia.map(|r| r.map(T::of));
-            let half_trace = (i[0][0] + i[1][1] + i[2][2]) / T::of(2.0);
             let sign = T::of(if m < zero { -1.0 } else { 1.0 });
             let local: M3<T> = std::array::from_fn(|a| {
                 std::array::from_fn(|b| {
                     sign * if a == b {
-                        half_trace - i[a][a]
+                        diagonal_second_moment(&i, a)
                     } else {
                         -i[a][b]
                     }

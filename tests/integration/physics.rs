@@ -1428,3 +1428,31 @@ fn radii_of_gyration_whose_ratio_over_or_underflows_are_reported() {
         assert_eq!(s.radii_of_gyration[0], 0.0);
     }
 }
+
+/// A long thin bought component given by its datasheet tensor, principal
+/// moments 1e-12, 1 and 1 kg·m² (an antenna along x), keeps its small
+/// moment in `standard` when it is given in axes the file's are a
+/// permutation of: ∫ρρᵀ dm has entries (1e-12 + 1 − 1)/2, which tr(I)/2 − I
+/// formed from an ulp of 1 (2e-4 relative error). Against the exact
+/// values: the principal moments are the given ones, each to a few ulps.
+#[test]
+fn a_datasheet_tensor_keeps_its_small_principal_moment() {
+    for rotation in [
+        "",
+        "rotation = { matrix = [[0, 1, 0], [-1, 0, 0], [0, 0, 1]] }\n",
+        "rotation = { matrix = [[0, 0, 1], [1, 0, 0], [0, 1, 0]] }\n",
+    ] {
+        let s = summary(&format!(
+            "[[part]]\nshape = \"inertia\"\nmass = 1\ncenter = [0, 0, 0]\n\
+             inertia = [[1e-12, 0, 0], [0, 1, 0], [0, 0, 1]]\n{rotation}"
+        ));
+        let want = [1e-12, 1.0, 1.0];
+        for (got, want) in s.principal_moments.iter().zip(want) {
+            assert!(
+                (got - want).abs() <= 4.0 * EPS * want,
+                "{rotation}: {:?}",
+                s.principal_moments
+            );
+        }
+    }
+}

@@ -80,7 +80,7 @@ pub(crate) fn com_bound(n: usize) -> f64 {
 /// | disk by density | 3 | 3 | the same without the length |
 /// | sphere | 7 by density | 13 more | ⁴⁄₃ and π (2), R − r (1), R² + Rr + r² (3), one product (1); (1 + ρ + … + ρ⁴)/(1 + ρ + ρ²) with ρ = r/R: ρ's rounding moves the ratio by ≤ 1u (ρ f′/f ≤ 1), its powers and sums by ≤ 7u and 3u, the division 1u, and m R²/5 · ratio one product more than m a²/12 |
 /// | triangle by density | 1 + 2/sin θ | 2 more | the area \|e₁ × e₂\|/2 from exact edges: each component a difference of products, 2u of \|e₁\|\|e₂\| in all, i.e. 2u/sin θ of the area for the smallest vertex angle θ, and one rounding more; vertex differences rounded (if inexact) add 2u max\|vᵢ\|/min\|eᵢ\|; the vertices less the centroid round once each |
-/// | given inertia | 0 | 9 | C = tr(I)/2 · E − I: 3 roundings; R C Rᵀ with a full C sums 9 products per entry where a box sums 3: 6 more |
+/// | given inertia | 0 | 9 | C = tr(I)/2 · E − I, each diagonal entry ((I_jj − I_aa) + I_kk)/2: 2 roundings at most (`part::diagonal_second_moment`; the difference is exact when small), budgeted at 3; R C Rᵀ with a full C sums 9 products per entry where a box sums 3: 6 more |
 ///
 /// Thin shells, tubes and rings take only a mass; their closed forms round
 /// no more often than the solids'.
