@@ -10,7 +10,7 @@
 //! it; errors are exact (the reference is rational arithmetic).
 
 use massprop::analysis::Products;
-use massprop::analysis::summary::summarize;
+use massprop::analysis::summary::{Accuracy, summarize};
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
 use massprop::model::Model;
@@ -126,7 +126,13 @@ fn baseline(model: &Model, method: Method) -> Result {
 fn run(model: &Model, method: Method) -> Result {
     match method {
         Method::Mode(p) => {
-            let s = summarize(model, &model.analysis, Products::Tensor, p).expect("a valid scene");
+            let s = summarize(
+                model,
+                &model.analysis,
+                Products::Tensor,
+                &Accuracy::fixed(p),
+            )
+            .expect("a valid scene");
             Result {
                 inertia: s.inertia_com,
                 moments: s.principal_moments,

@@ -3,9 +3,9 @@
 //! the library's own options (`commands::Request`), and the library's
 //! enums get their command-line names and help here.
 
+use crate::analysis::summary::{Accuracy, PrecisionChoice, accuracy::DEFAULT_RTOL};
 use crate::analysis::{Overrides, Products, Settings};
 use crate::commands::{self, Request};
-use crate::compose::Precision;
 use crate::render::Format;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
@@ -69,11 +69,8 @@ pub struct CheckArgs {
     #[arg(long)]
     pub bless: bool,
 
-    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
-    /// (double-double, ~32 digits; for the smallest moments of very slender
-    /// or flat bodies). See docs/accuracy.md.
-    #[arg(long, value_enum, default_value_t)]
-    pub precision: Precision,
+    #[command(flatten)]
+    pub accuracy: AccuracyArgs,
 
     /// Output format: one line per file or failure, or one JSON document.
     #[arg(long, value_enum, default_value_t)]
@@ -113,11 +110,8 @@ pub struct DiffArgs {
     )]
     pub tol: f64,
 
-    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
-    /// (double-double, ~32 digits; for the smallest moments of very slender
-    /// or flat bodies). See docs/accuracy.md.
-    #[arg(long, value_enum, default_value_t)]
-    pub precision: Precision,
+    #[command(flatten)]
+    pub accuracy: AccuracyArgs,
 
     #[command(flatten)]
     pub includes: IncludeArgs,
@@ -148,11 +142,8 @@ pub struct ReportArgs {
     #[arg(long, value_name = "NAME")]
     pub only: Option<String>,
 
-    /// Arithmetic: `standard` (f64, compensated sums) or `extended`
-    /// (double-double, ~32 digits; for the smallest moments of very slender
-    /// or flat bodies). See docs/accuracy.md.
-    #[arg(long, value_enum, default_value_t)]
-    pub precision: Precision,
+    #[command(flatten)]
+    pub accuracy: AccuracyArgs,
 
     /// Reference point, overriding `[analysis].about`: x,y,z in the file's
     /// length unit, or with units, e.g. "0,0,10 mm".
@@ -190,19 +181,66 @@ impl ValueEnum for Format {
     }
 }
 
-impl ValueEnum for Precision {
+impl ValueEnum for PrecisionChoice {
     fn value_variants<'a>() -> &'a [Self] {
-        &[Precision::Standard, Precision::Extended]
+        &[
+            PrecisionChoice::Auto,
+            PrecisionChoice::Standard,
+            PrecisionChoice::Extended,
+        ]
     }
 
     fn to_possible_value(&self) -> Option<PossibleValue> {
         Some(match self {
-            Precision::Standard => PossibleValue::new("standard")
-                .help("f64 with compensated sums and a Jacobi eigen solver (the default)"),
-            Precision::Extended => PossibleValue::new("extended").help(
+            PrecisionChoice::Auto => PossibleValue::new("auto").help(
+                "`standard`, recomputed in `extended` where an error bound exceeds --rtol (the default)",
+            ),
+            PrecisionChoice::Standard => PossibleValue::new("standard")
+                .help("f64 with compensated sums and a Jacobi eigen solver"),
+            PrecisionChoice::Extended => PossibleValue::new("extended").help(
                 "Double-double (~32 significant digits) throughout: for the smallest principal moment of very slender or flat bodies",
             ),
         })
+    }
+}
+
+/// `--precision` and `--rtol`, the same for every command that composes.
+#[derive(Args, Debug, Clone)]
+pub struct AccuracyArgs {
+    /// Arithmetic. Every value is reported with a rigorous bound on its
+    /// rounding error (`error_bounds`); `auto` computes in `standard` and
+    /// recomputes in `extended` when a bound exceeds --rtol, and warns of
+    /// any value neither meets. See docs/accuracy.md.
+    #[arg(long, value_enum, default_value_t)]
+    pub precision: PrecisionChoice,
+
+    /// The accuracy asked for, relative to each value (a value zero to
+    /// within its bound is judged against the largest of its kind).
+    #[arg(long, value_name = "REL", default_value_t = DEFAULT_RTOL, value_parser = parse_rtol)]
+    pub rtol: f64,
+}
+
+impl AccuracyArgs {
+    fn accuracy(&self) -> Accuracy {
+        Accuracy {
+            precision: self.precision,
+            rtol: self.rtol,
+        }
+    }
+}
+
+/// An `--rtol`: finite, at least 2⁻⁵² (no f64 result is closer to the exact
+/// value than its own rounding, up to 2⁻⁵³ of it) and below 1.
+fn parse_rtol(text: &str) -> Result<f64, String> {
+    let min = f64::EPSILON;
+    match text.trim().parse::<f64>() {
+        Ok(x) if (min..1.0).contains(&x) => Ok(x),
+        Ok(x) if x.is_finite() && x > 0.0 && x < min => Err(format!(
+            "{x:e} is below {min:e}: no f64 result is closer than its own rounding"
+        )),
+        _ => Err(format!(
+            "expected a relative accuracy from {min:e} to below 1, such as 1e-12"
+        )),
     }
 }
 
@@ -233,7 +271,7 @@ impl Cli {
                 output: a.output.clone(),
                 settings: Settings {
                     products: a.products,
-                    precision: a.precision,
+                    accuracy: a.accuracy.accuracy(),
                     only: a.only.clone(),
                     include_roots: a.includes.include_root.clone(),
                     overrides: Overrides {
@@ -247,7 +285,7 @@ impl Cli {
                 paths: a.paths.clone(),
                 output: a.output.clone(),
                 bless: a.bless,
-                precision: a.precision,
+                accuracy: a.accuracy.accuracy(),
                 format: a.format,
                 include_roots: a.includes.include_root.clone(),
             }),
@@ -257,7 +295,7 @@ impl Cli {
                 format: a.format,
                 output: a.output.clone(),
                 tol: a.tol,
-                precision: a.precision,
+                accuracy: a.accuracy.accuracy(),
                 include_roots: a.includes.include_root.clone(),
             }),
             Command::Materials(a) => Request::Materials(commands::materials::Options {

@@ -12,27 +12,17 @@
 //! - `extended`: the same steps in double-double (~32 digits): rotation of
 //!   each part, its closed form, the sums and the Jacobi eigen solution.
 
-use crate::eigen::jacobi;
+use crate::bounds::{BodyError, Tally};
+use crate::eigen::jacobi_counted;
 use crate::mass::Body;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
 use crate::part::Parts;
 use nalgebra::Vector3;
-use serde::Serialize;
 
 pub use crate::tolerance::EQUAL_MOMENT_RTOL;
 use crate::tolerance::SIGN_TIE;
 
-/// The arithmetic of composition and of the principal axes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Precision {
-    /// f64 with compensated sums and a Jacobi eigen solver (the default).
-    #[default]
-    Standard,
-    /// Double-double (~32 significant digits) throughout: for the smallest
-    /// principal moment of very slender or flat bodies.
-    Extended,
-}
+pub use crate::numeric::Precision;
 
 /// Compose parts into mass, centre of mass and second moment about it, in
 /// the file's units.
@@ -45,13 +35,19 @@ pub enum Precision {
 /// rounding of the centre ĉ itself: C = Σ(Cᵢ + mᵢdᵢdᵢᵀ) − s sᵀ/m and
 /// c = ĉ + s/m.
 pub fn compose<P: Parts + ?Sized>(parts: &P, precision: Precision) -> Body {
+    compose_bounded(parts, precision).0
+}
+
+/// `compose`, with the error bounds of the body it returns (`bounds`): the
+/// composer's own sums and, beside them, the few sums the bounds need.
+pub fn compose_bounded<P: Parts + ?Sized>(parts: &P, precision: Precision) -> (Body, BodyError) {
     match precision {
         Precision::Standard => compose_standard(parts),
         Precision::Extended => compose_extended(parts),
     }
 }
 
-fn compose_standard<P: Parts + ?Sized>(parts: &P) -> Body {
+fn compose_standard<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
     // The pivot ĉ = Σ (mᵢ/m) cᵢ: weights first, so that huge masses far out
     // cannot overflow a first moment Σ mᵢcᵢ the centre itself fits in.
     let mut mass = Sum::default();
@@ -68,13 +64,15 @@ fn compose_standard<P: Parts + ?Sized>(parts: &P) -> Body {
     let c0 = first.map(Sum::value);
     let mut sum = [[Sum::default(); 3]; 3];
     let mut s = [Sum::default(); 3];
+    let mut tally = Tally::default();
     parts.each(&mut |p| {
         let m: f64 = p.mass();
         let c = p.centroid();
         // c.hi − ĉ is exact when they are close (Sterbenz); c.lo carries the
         // rest of a centroid formed from a corner and edges.
         let d: [f64; 3] = std::array::from_fn(|i| (c[i].hi - c0[i]) + c[i].lo);
-        let own: M3<f64> = p.own_second_moment(m);
+        let (own, error): (M3<f64>, _) = p.own_second_moment_bounded(m);
+        tally.add(m, d, c.map(|x| x.hi), &error);
         for i in 0..3 {
             // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
             let md = m * d[i];
@@ -95,17 +93,29 @@ fn compose_standard<P: Parts + ?Sized>(parts: &P) -> Body {
             c[j][i] = c[i][j];
         }
     }
-    Body {
+    let body = Body {
         mass: DD::of(total),
         center_of_mass: std::array::from_fn(|i| {
             let (hi, lo) = two_sum(c0[i], s[i] / total);
             DD::new(hi, lo)
         }),
         second_moment: c,
-    }
+    };
+    let error = finish(&tally, Precision::Standard, &body, s);
+    (body, error)
 }
 
-fn compose_extended<P: Parts + ?Sized>(parts: &P) -> Body {
+fn finish(tally: &Tally, precision: Precision, body: &Body, s: [f64; 3]) -> BodyError {
+    tally.finish(
+        precision,
+        body.mass.f64(),
+        s,
+        body.center_of_mass.map(DD::f64),
+        &body.second_moment.map(|r| r.map(DD::f64)),
+    )
+}
+
+fn compose_extended<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
     let zero = DD::of(0.0);
     let mut total = zero;
     parts.each(&mut |p| total += p.mass::<DD>());
@@ -119,11 +129,13 @@ fn compose_extended<P: Parts + ?Sized>(parts: &P) -> Body {
     });
     let mut c = [[zero; 3]; 3];
     let mut s = [zero; 3];
+    let mut tally = Tally::default();
     parts.each(&mut |p| {
         let m: DD = p.mass();
         let cen = p.centroid();
         let d: [DD; 3] = std::array::from_fn(|i| cen[i] - c0[i]);
-        let own: M3<DD> = p.own_second_moment(m);
+        let (own, error): (M3<DD>, _) = p.own_second_moment_bounded(m);
+        tally.add(m.f64(), d.map(DD::f64), cen.map(|x| x.hi), &error);
         for i in 0..3 {
             let md = m * d[i];
             s[i] += md;
@@ -138,10 +150,24 @@ fn compose_extended<P: Parts + ?Sized>(parts: &P) -> Body {
             c[j][i] = c[i][j];
         }
     }
-    Body {
+    let body = Body {
         mass: total,
         center_of_mass: std::array::from_fn(|i| c0[i] + s[i] / total),
         second_moment: c,
+    };
+    let error = finish(&tally, Precision::Extended, &body, s.map(DD::f64));
+    (body, error)
+}
+
+impl Principal {
+    /// What the error bounds are formed from (`bounds::eigen`).
+    pub fn solved(&self) -> crate::bounds::Solved<'_> {
+        crate::bounds::Solved {
+            lambda: self.lambda,
+            eigenvectors: &self.eigenvectors,
+            rotations: self.rotations,
+            equal: &self.equal,
+        }
     }
 }
 
@@ -156,6 +182,14 @@ pub struct Principal {
     /// Indices of moments equal to each other ([] when all differ, else two
     /// or three indices). Their axes are not unique.
     pub equal: Vec<usize>,
+    /// The eigenvalue of C belonging to each axis (`moments[i]` is the sum
+    /// of the other two) and its eigenvector as the solver found it (before
+    /// the sign rule and the choice among equal moments): what the error
+    /// bounds are formed from (`bounds::eigen`).
+    pub lambda: [f64; 3],
+    pub eigenvectors: [Vector3<f64>; 3],
+    /// Plane rotations the Jacobi solver applied.
+    pub rotations: usize,
 }
 
 /// Principal moments and axes of the second moment `c` (∫ρρᵀ dm), solved in
@@ -188,7 +222,7 @@ pub fn principal(c: &M3<DD>, precision: Precision) -> Option<Principal> {
 }
 
 fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
-    let (lam, v) = jacobi(*c)?;
+    let (lam, v, rotations) = jacobi_counted(*c)?;
     if !lam.iter().all(|x| x.is_finite()) {
         return None;
     }
@@ -241,6 +275,9 @@ fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
         moments,
         axes,
         equal,
+        lambda: order.map(|k| lam[k].f64()),
+        eigenvectors: vecs,
+        rotations,
     })
 }
 

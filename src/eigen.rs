@@ -23,6 +23,13 @@ const MAX_SWEEPS: usize = 60;
 /// overflowed) or an eigenvalue is beyond the range of f64: on finite input
 /// the cyclic Jacobi method converges, quadratically, in a few sweeps.
 pub fn jacobi<T: Real>(a: M3<T>) -> Option<([T; 3], M3<T>)> {
+    jacobi_counted(a).map(|(lam, v, _)| (lam, v))
+}
+
+/// `jacobi`, with the number of plane rotations it applied: each adds a
+/// backward error of a few roundings, which the error bounds count
+/// (`bounds::eigen`).
+pub fn jacobi_counted<T: Real>(a: M3<T>) -> Option<([T; 3], M3<T>, usize)> {
     if !a.iter().flatten().all(|x| x.is_finite()) {
         return None;
     }
@@ -36,12 +43,15 @@ pub fn jacobi<T: Real>(a: M3<T>) -> Option<([T; 3], M3<T>)> {
         return Some((
             [T::of(0.0); 3],
             std::array::from_fn(|i| std::array::from_fn(|j| T::of(if i == j { 1.0 } else { 0.0 }))),
+            0,
         ));
     }
     let e = big.log2().floor() as i32;
-    let (lam, v) = jacobi_scaled(a.map(|r| r.map(|x| times_pow2(x, -e))))?;
+    let (lam, v, rotations) = jacobi_scaled(a.map(|r| r.map(|x| times_pow2(x, -e))))?;
     let lam = lam.map(|x| times_pow2(x, e));
-    lam.iter().all(|x| x.is_finite()).then_some((lam, v))
+    lam.iter()
+        .all(|x| x.is_finite())
+        .then_some((lam, v, rotations))
 }
 
 /// `x` times 2^`k`, exact (barring underflow), for any `k` between the
@@ -54,13 +64,14 @@ fn times_pow2<T: Real>(x: T, k: i32) -> T {
 }
 
 /// `jacobi` of a matrix whose entries are at most about 1 in magnitude.
-fn jacobi_scaled<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
+fn jacobi_scaled<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>, usize)> {
     let zero = T::of(0.0);
     let one = T::of(1.0);
     let mut v = [[zero; 3]; 3];
     for (k, row) in v.iter_mut().enumerate() {
         row[k] = one;
     }
+    let mut rotations = 0;
     for _ in 0..MAX_SWEEPS {
         let mut rotated = false;
         for (p, q) in [(0, 1), (0, 2), (1, 2)] {
@@ -77,6 +88,7 @@ fn jacobi_scaled<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
                 continue;
             }
             rotated = true;
+            rotations += 1;
             // The rotation angle: tan 2φ = 2 a_pq / (a_qq − a_pp); t = tan φ
             // is the smaller root of t² + 2θt − 1 = 0, |φ| ≤ π/4.
             let diff = aqq - app;
@@ -116,7 +128,10 @@ fn jacobi_scaled<T: Real>(mut a: M3<T>) -> Option<([T; 3], M3<T>)> {
         }
         if !rotated {
             let lam = [a[0][0], a[1][1], a[2][2]];
-            return lam.iter().all(|x| x.is_finite()).then_some((lam, v));
+            return lam
+                .iter()
+                .all(|x| x.is_finite())
+                .then_some((lam, v, rotations));
         }
     }
     None

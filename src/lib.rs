@@ -16,6 +16,7 @@
 //! 8. `main.rs`: the process and its exit status.
 
 pub mod analysis;
+pub mod bounds;
 pub mod cli;
 pub mod commands;
 pub mod compose;

@@ -18,6 +18,18 @@ use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 /// traits a double-double does not have).
 pub type M3<T> = [[T; 3]; 3];
 
+/// The arithmetic of composition and of the principal axes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    /// f64 with compensated sums and a Jacobi eigen solver (the default).
+    #[default]
+    Standard,
+    /// Double-double (~32 significant digits) throughout: for the smallest
+    /// principal moment of very slender or flat bodies.
+    Extended,
+}
+
 /// The operations the composer and eigen solver need, for f64 and DD.
 pub trait Real:
     Copy

@@ -10,6 +10,10 @@ use crate::units::{Dim, FileUnits};
 use nalgebra::{Matrix3, Vector3};
 use std::ops::Range;
 
+pub mod error;
+
+pub use error::Own;
+
 pub use crate::shapes::Solid;
 
 /// A plate's `thickness` or a rod's `diameter`.
@@ -105,6 +109,11 @@ impl Part {
     /// negative for a cut-out.
     pub fn mass<T: Real>(&self) -> T {
         mass_of(self.shape, &self.spec)
+    }
+
+    /// `own_second_moment` with its error model (`part::error`).
+    pub fn own_second_moment_bounded<T: Real>(&self, m: T) -> (M3<T>, Own) {
+        own_second_moment_bounded(self.shape, &self.spec, m)
     }
 
     /// Centroid in file units, in double-double (see `centroid`).
@@ -237,6 +246,17 @@ fn diagonal_second_moment<T: Real>(i: &M3<T>, a: usize) -> T {
     ((i[j][j] - i[a][a]) + i[k][k]) / T::of(2.0)
 }
 
+/// The magnitude the diagonal entry `a` of a given tensor's second moment
+/// is formed from in `diagonal_second_moment`: (|I_jj − I_aa| + |I_kk|)/2,
+/// its error at most 2 units of it.
+fn diagonal_magnitude<T: Real>(i: &M3<T>, a: usize) -> f64 {
+    let (j, k) = ((a + 1) % 3, (a + 2) % 3);
+    let f = |x: T| x.f64();
+    let dist = |b: usize| (f(i[b][b]) - f(i[a][a])).abs();
+    let (j, k) = if dist(j) <= dist(k) { (j, k) } else { (k, j) };
+    (dist(j) + f(i[k][k]).abs()) / 2.0
+}
+
 /// Mass of a part (file units): given, or density times volume, area or
 /// length; negative for a cut-out.
 pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
@@ -314,6 +334,20 @@ fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
 /// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
 /// needs neither their lengths nor a rotation.
 pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
+    own_second_moment_bounded(shape, spec, m).0
+}
+
+/// `own_second_moment`, with the error model of the arithmetic that formed
+/// it (`bounds::part`): the error bounds' share of each part.
+pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
+    let mu = error::mass_error(shape, spec);
+    let outer = |j: &M3<T>| Own {
+        mass: mu,
+        kappa: mu + error::OUTER,
+        mag: std::array::from_fn(|a| j[a][a].f64().abs()),
+        rot: 0.0,
+        diagonal: false,
+    };
     let zero = T::of(0.0);
     let twelfth = m / T::of(12.0);
     let mut j = [[zero; 3]; 3];
@@ -332,10 +366,19 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
         } => {
             let dims: [T; 3] = extent.map(T::of);
             let d = shape.second_moments(m, &dims[..shape.dim_count()]);
+            let kappa = mu + error::closed_form(shape);
             if let Orientation::Identity = orientation {
-                return std::array::from_fn(|a| {
+                let own = Own {
+                    mass: mu,
+                    kappa,
+                    mag: d.map(|x| x.f64().abs()),
+                    rot: 0.0,
+                    diagonal: true,
+                };
+                let j = std::array::from_fn(|a| {
                     std::array::from_fn(|b| if a == b { d[a] } else { zero })
                 });
+                return (j, own);
             }
             let r: M3<T> = orientation.matrix();
             for a in 0..3 {
@@ -346,6 +389,20 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
                     j[b][a] = j[a][b];
                 }
             }
+            let rho = error::turn_error(orientation, &r.map(|row| row.map(T::f64)));
+            let spread: f64 = d.iter().map(|x| x.f64().abs()).sum();
+            let own = Own {
+                mass: mu,
+                kappa: kappa + error::TURN,
+                mag: std::array::from_fn(|a| j[a][a].f64().abs()),
+                rot: if rho > 0.0 {
+                    (2.0 * rho + 1.0) * spread
+                } else {
+                    0.0
+                },
+                diagonal: false,
+            };
+            return (j, own);
         }
         Place::Edges { edges, .. } => {
             for e in &edges[..shape.edge_count()] {
@@ -391,7 +448,34 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
                     j[b][a] = v;
                 }
             }
+            let r = r.map(|row| row.map(T::f64));
+            let rho = error::turn_error(orientation, &r);
+            // |C_kl| ≤ √(ℓ_k ℓ_l) for the positive semi-definite local C,
+            // ℓ the magnitudes its diagonal is formed from; so each entry of
+            // R C Rᵀ is at most v_a v_b, v = |R| √ℓ.
+            let i = inertia.map(|row| row.map(T::of));
+            let spread: [f64; 3] = std::array::from_fn(|a| diagonal_magnitude(&i, a));
+            let v: [f64; 3] =
+                std::array::from_fn(|a| (0..3).map(|k| r[a][k].abs() * spread[k].sqrt()).sum());
+            let total: f64 = spread.iter().sum::<f64>()
+                + (0..3)
+                    .flat_map(|k| (0..3).filter(move |l| *l != k).map(move |l| (k, l)))
+                    .map(|(k, l)| inertia[k][l].abs())
+                    .sum::<f64>();
+            let own = Own {
+                mass: mu,
+                kappa: mu + error::GIVEN,
+                mag: v.map(|x| x * x),
+                rot: if rho > 0.0 {
+                    (2.0 * rho + 1.0) * total
+                } else {
+                    0.0
+                },
+                diagonal: false,
+            };
+            return (j, own);
         }
     }
-    j
+    let own = outer(&j);
+    (j, own)
 }

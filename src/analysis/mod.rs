@@ -14,7 +14,6 @@ pub mod diff;
 pub mod ideal;
 pub mod summary;
 
-use crate::compose::Precision;
 use crate::diag::{Diagnostic, Source};
 use crate::model::{self, Analysis, Model};
 use crate::units::Dim;
@@ -42,10 +41,11 @@ pub struct Overrides {
 }
 
 /// What a command asks of the pipeline.
-#[derive(Debug, Clone, Default, PartialEq, Eq)]
+#[derive(Debug, Clone, Default, PartialEq)]
 pub struct Settings {
     pub products: Products,
-    pub precision: Precision,
+    /// `--precision` and `--rtol`.
+    pub accuracy: summary::Accuracy,
     /// Report one sub-assembly alone (`--only`).
     pub only: Option<String>,
     /// More directory trees includes may come from (`--include-root`).
@@ -86,7 +86,7 @@ pub fn load_source_reading(
         None => None,
     };
     let analysis = resolve(&model, &source, &settings.overrides)?;
-    let mut summary = summary::summarize(&model, &analysis, settings.products, settings.precision)
+    let mut summary = summary::summarize(&model, &analysis, settings.products, &settings.accuracy)
         .map_err(|e| e.diagnostic(&model, &analysis, &source))?;
     if let Some(path) = only {
         summary.name = path.last().cloned();

@@ -2,13 +2,17 @@
 //! renders: `render::report` serializes it as the documented JSON contract
 //! and prints it for people in the file's units.
 
+pub mod accuracy;
 mod cut_outs;
 mod rows;
+
+pub use accuracy::{Accuracy, AccuracyWarning, PrecisionChoice};
 
 pub use rows::{Assemblies, Parts};
 
 use super::Products;
 use super::ideal;
+use crate::bounds;
 use crate::compose::{self, Precision, Principal};
 use crate::diag::{Diagnostic, Source};
 use crate::mass::inertia_of_rows;
@@ -124,6 +128,14 @@ pub struct Summary {
     /// present only when a part gives its `thickness` or `diameter`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub idealisation: Option<ideal::Idealisation>,
+    /// How far each value may lie from the exact value for the file's
+    /// numbers, for the arithmetic used (`bounds`): absolute, SI.
+    pub error_bounds: bounds::ErrorBounds,
+    /// The accuracy asked for (`--rtol`), relative.
+    pub rtol: f64,
+    /// The values whose bound exceeds `rtol` in the arithmetic used
+    /// (`accuracy`); empty when every value meets it.
+    pub accuracy_warnings: Vec<AccuracyWarning>,
     /// The sub-assemblies (`include`), parents before children; absent
     /// when there are none.
     #[serde(skip_serializing_if = "Assemblies::is_empty")]
@@ -333,9 +345,19 @@ pub fn summarize(
     model: &Model,
     analysis: &Analysis,
     products: Products,
+    accuracy: &Accuracy,
+) -> Result<Summary, SummaryError> {
+    accuracy::summarize(model, analysis, products, accuracy)
+}
+
+/// `summarize` in one arithmetic, with the error bounds of every value.
+fn summarize_in(
+    model: &Model,
+    analysis: &Analysis,
+    products: Products,
     precision: Precision,
 ) -> Result<Summary, SummaryError> {
-    let body = compose::compose(model, precision);
+    let (body, error) = compose::compose_bounded(model, precision);
     let u = model.units;
     let factors = SiFactors::of(u);
     let (f_mass, f_length) = (factors.mass, factors.length);
@@ -439,6 +461,74 @@ pub fn summarize(
         finite(m, "Euler moment", Blame::Alpha)?;
     }
 
+    let error_bounds = {
+        let f = |x: DD| x.f64();
+        let (f_m, f_l, f_i) = (f(f_mass), f(f_length), f(f_inertia));
+        let si = |b: f64, factor: f64, v: f64| bounds::to_si(b, factor, v);
+        let com_b: [f64; 3] = std::array::from_fn(|j| si(error.center_of_mass[j], f_l, com[j]));
+        let c_com = body.second_moment.map(|r| r.map(f));
+        let c_about = c_ref.map(|r| r.map(f));
+        let offset = std::array::from_fn(|j| f(body.center_of_mass[j] - about[j]));
+        // About the centre of mass itself (no point given), the exact
+        // value is the exact C: the error is the composer's alone.
+        let e_ref = match analysis.about {
+            Some(_) => error.second_moment_about(f(body.mass), offset, &c_about),
+            None => error.second_moment,
+        };
+        // The f64 solver takes C about the point rounded to f64.
+        let e_solved = match precision {
+            Precision::Standard => std::array::from_fn(|j| {
+                std::array::from_fn(|k| e_ref[j][k] + bounds::U64 * c_about[j][k].abs())
+            }),
+            Precision::Extended => e_ref,
+        };
+        let tensor = |e: &M3<f64>, v: &M3<f64>| -> [[f64; 3]; 3] {
+            let e = bounds::inertia_of(e);
+            std::array::from_fn(|j| std::array::from_fn(|k| si(e[j][k], f_i, v[j][k])))
+        };
+        let eigen = |c: &M3<f64>, e: &M3<f64>, p: &Principal, values: &[f64; 3]| {
+            let b = bounds::eigen(c, e, &p.solved(), precision);
+            (
+                std::array::from_fn::<f64, 3, _>(|i| si(b.moments[i], f_i, values[i])),
+                b.axes,
+            )
+        };
+        let (moments_b, axes_b) = eigen(&c_com, &error.second_moment, &p_com, &m_com);
+        let (moments_ref_b, axes_ref_b) = eigen(&c_about, &e_solved, &p_ref, &m_ref);
+        let mass_b = si(error.mass, f_m, mass);
+        let inertia_ref = tensor(&e_ref, &i_ref_f);
+        let dynamics = analysis.omega.zip(h).map(|(w, h)| {
+            bounds::dynamics(
+                &inertia_ref,
+                arr(&w),
+                analysis.alpha.as_ref().map(arr),
+                h,
+                t.unwrap_or(0.0),
+                m,
+            )
+        });
+        bounds::ErrorBounds {
+            mass: mass_b,
+            center_of_mass: com_b,
+            reference_point: match analysis.about {
+                Some(_) => reference.map(|x| bounds::U64 * x.abs()),
+                None => com_b,
+            },
+            inertia_com: tensor(&error.second_moment, &i_com_f),
+            inertia_ref,
+            principal_moments: moments_b,
+            principal_axes: axes_b,
+            principal_moments_ref: moments_ref_b,
+            principal_axes_ref: axes_ref_b,
+            radii_of_gyration: std::array::from_fn(|i| {
+                bounds::radius(radii[i], m_com[i], moments_b[i], mass, mass_b)
+            }),
+            angular_momentum: dynamics.map(|d| d.0),
+            kinetic_energy: dynamics.map(|d| d.1),
+            euler_moment: dynamics.and_then(|d| d.2),
+        }
+    };
+
     let made_from = std::sync::Arc::new(rows::Source {
         model: model.clone(),
         factors,
@@ -472,6 +562,9 @@ pub fn summarize(
         alpha: analysis.alpha.as_ref().map(arr),
         euler_moment: m,
         idealisation,
+        error_bounds,
+        rtol: 0.0,
+        accuracy_warnings: Vec::new(),
         reference_given: analysis.about.is_some(),
         file_units: model.units,
     })
@@ -488,7 +581,7 @@ mod tests {
             &model,
             &model.analysis,
             Products::Tensor,
-            Precision::Standard,
+            &Accuracy::default(),
         )
         .unwrap_err();
         e.diagnostic(&model, &model.analysis, &source).to_string()
@@ -608,7 +701,7 @@ mod tests {
             &model,
             &model.analysis,
             Products::Tensor,
-            Precision::Standard,
+            &Accuracy::default(),
         );
         let d = e
             .unwrap_err()
@@ -631,7 +724,7 @@ mod tests {
             &model,
             &model.analysis,
             Products::Tensor,
-            Precision::Standard,
+            &Accuracy::default(),
         );
         assert!(s.is_ok(), "{s:?}");
     }

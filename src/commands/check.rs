@@ -7,8 +7,8 @@
 
 use super::{Outcome, bless};
 use crate::analysis::check::{FileResult, Status, check_loaded};
+use crate::analysis::summary::Accuracy;
 use crate::analysis::{self, Settings};
-use crate::compose::Precision;
 use crate::diag::{Diagnostic, display_path, visible};
 use crate::render::{self, Format};
 use std::path::{Path, PathBuf};
@@ -22,7 +22,8 @@ pub struct Options {
     pub output: Option<String>,
     /// Write the computed values into the files' `[expect]` first.
     pub bless: bool,
-    pub precision: Precision,
+    /// `--precision` and `--rtol`.
+    pub accuracy: Accuracy,
     pub format: Format,
     /// More directory trees includes may come from.
     pub include_roots: Vec<PathBuf>,
@@ -124,7 +125,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let mut results = Vec::new();
     let mut stderr = String::new();
     let settings = Settings {
-        precision: o.precision,
+        accuracy: o.accuracy,
         include_roots: o.include_roots.clone(),
         ..Settings::default()
     };

@@ -3,8 +3,8 @@
 
 use super::Outcome;
 use crate::analysis::diff::Diff;
+use crate::analysis::summary::Accuracy;
 use crate::analysis::{self, Settings};
-use crate::compose::Precision;
 use crate::diag::Diagnostic;
 use crate::render::{self, Format};
 
@@ -17,7 +17,8 @@ pub struct Options {
     pub output: Option<String>,
     /// Relative tolerance.
     pub tol: f64,
-    pub precision: Precision,
+    /// `--precision` and `--rtol`.
+    pub accuracy: Accuracy,
     /// More directory trees includes may come from.
     pub include_roots: Vec<std::path::PathBuf>,
 }
@@ -36,7 +37,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     }
     // Tensor convention: the JSON contract of diff is fixed to it.
     let settings = Settings {
-        precision: o.precision,
+        accuracy: o.accuracy,
         include_roots: o.include_roots.clone(),
         ..Settings::default()
     };

@@ -4,7 +4,7 @@
 //! by the size of the quantity compared.
 
 use massprop::analysis::Products;
-use massprop::analysis::summary::{Summary, summarize};
+use massprop::analysis::summary::{Accuracy, Summary, summarize};
 use massprop::compose::Precision;
 use massprop::diag::Source;
 use massprop::model::{Analysis, Model};
@@ -16,7 +16,13 @@ const EPS: f64 = f64::EPSILON;
 fn summary_with(text: &str, products: Products) -> Summary {
     let source = Source::new("test.toml", text);
     let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
-    summarize(&model, &model.analysis, products, Precision::Standard).expect("summary")
+    summarize(
+        &model,
+        &model.analysis,
+        products,
+        &Accuracy::fixed(Precision::Standard),
+    )
+    .expect("summary")
 }
 
 fn summary(text: &str) -> Summary {
@@ -538,7 +544,7 @@ fn overrides_replace_the_file_analysis() {
             ..Analysis::default()
         },
         Products::Tensor,
-        Precision::Standard,
+        &Accuracy::fixed(Precision::Standard),
     )
     .unwrap();
     assert_eq!(a.reference_point, [1.0, 0.0, 0.0]);
@@ -620,7 +626,13 @@ fn extreme_masses_and_lengths_scale_exactly() {
 fn summary_in(text: &str, precision: Precision) -> Summary {
     let source = Source::new("test.toml", text);
     let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
-    summarize(&model, &model.analysis, Products::Tensor, precision).expect("summary")
+    summarize(
+        &model,
+        &model.analysis,
+        Products::Tensor,
+        &Accuracy::fixed(precision),
+    )
+    .expect("summary")
 }
 
 fn idealisation(s: &Summary) -> &massprop::analysis::ideal::Idealisation {
@@ -898,7 +910,13 @@ fn round_shapes_match_their_textbook_moments_in_both_precisions() {
     for precision in [Precision::Standard, Precision::Extended] {
         let source = Source::new("t.toml", text);
         let model = Model::parse(&source).unwrap_or_else(|d| panic!("{d}"));
-        let s = summarize(&model, &model.analysis, Products::Tensor, precision).unwrap();
+        let s = summarize(
+            &model,
+            &model.analysis,
+            Products::Tensor,
+            &Accuracy::fixed(precision),
+        )
+        .unwrap();
         for (k, w) in want.iter().enumerate() {
             let got = s.inertia_com[k][k];
             assert!(
@@ -1195,7 +1213,7 @@ fn summary_of_file(path: &std::path::Path) -> Summary {
         &model,
         &model.analysis,
         Products::Tensor,
-        Precision::Standard,
+        &Accuracy::fixed(Precision::Standard),
     )
     .unwrap()
 }
@@ -1253,7 +1271,7 @@ fn an_included_sub_assembly_is_its_parts_moved_turned_and_converted() {
         &model,
         &model.analysis,
         Products::Tensor,
-        Precision::Standard,
+        &Accuracy::fixed(Precision::Standard),
     )
     .unwrap();
     assert!((s.mass - 0.32).abs() <= 4.0 * EPS);

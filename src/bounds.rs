@@ -1,0 +1,518 @@
+//! Error bounds of the arithmetic: for every composed quantity, how far the
+//! value massprop computed may lie from the exact value for the file's
+//! numbers (docs/accuracy.md, "Error bounds"). Bounds are absolute, first
+//! order in the unit roundoff, and cheap: a few sums beside the composer's
+//! (`Tally`), then closed-form propagation through the shift, the eigen
+//! solution and the products with ω and α.
+//!
+//! The composer's error, entry by entry of the second moment C:
+//!
+//! - each part's own C and its parallel-axis term m d dᵀ carry a relative
+//!   error of κ units of their magnitudes (`part::error`); since each is
+//!   positive semi-definite (or its negative), an off-diagonal entry is at
+//!   most √(C_jj C_kk), and by Cauchy–Schwarz the sum over parts of
+//!   κᵢ √(a_ij a_ik) is at most √(G_j G_k) with G_j = Σ κᵢ a_ij: three sums
+//!   per body, not six per part;
+//! - a rotation matrix's own rounding moves a large local moment into every
+//!   entry (`Own::rot`), summed as is;
+//! - a compensated sum of n terms is within 2u|S| + 4nu²Σ|xᵢ| of the exact
+//!   sum (Neumaier; Higham, *Accuracy and Stability*, §4.3); a
+//!   double-double running sum within (n − 1)U Σ|xᵢ|;
+//! - the correction −s sᵀ/m by the residual first moment s, and the centre
+//!   ĉ + s/m, carry the errors of s and m.
+
+use crate::numeric::{M3, Precision};
+use crate::part::Own;
+use nalgebra::Vector3;
+use serde::Serialize;
+
+/// Unit roundoff of f64, 2⁻⁵³.
+pub const U64: f64 = f64::EPSILON / 2.0;
+
+/// The unit in which the arithmetic's roundings are counted: 2⁻⁵³ for f64;
+/// for double-double 5 · 2⁻¹⁰⁶, its worst operation (a product; a sum
+/// rounds by 3 · 2⁻¹⁰⁶, Joldes, Muller and Popescu 2017).
+pub fn unit(p: Precision) -> f64 {
+    match p {
+        Precision::Standard => U64,
+        Precision::Extended => 5.0 * U64 * U64 / 4.0,
+    }
+}
+
+/// A bound made safe against the rounding of its own arithmetic (each bound
+/// is a few dozen f64 operations on non-negative numbers) and against
+/// overflow: past f64's range it is the largest f64, which still bounds.
+pub fn safe(x: f64) -> f64 {
+    let y = x * (1.0 + 256.0 * f64::EPSILON);
+    if y.is_nan() || y > f64::MAX {
+        f64::MAX
+    } else {
+        y
+    }
+}
+
+/// The sums beside the composer's, one part at a time (`add`), from which
+/// `finish` forms the bounds of the composed body.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Tally {
+    parts: f64,
+    /// Σ μᵢ|mᵢ| (μ the mass's relative error in units) and Σ|mᵢ|.
+    mass_w: f64,
+    mass_abs: f64,
+    /// Σ (μᵢ + 3)|mᵢ||dᵢ| and Σ|mᵢ||dᵢ| per axis: the residual first moment.
+    first_w: [f64; 3],
+    first_abs: [f64; 3],
+    /// G_j = Σ κᵢ a_ij over the parts' own second moments, and over those
+    /// whose own C is not diagonal (`Own::diagonal`) alone.
+    own_w: [f64; 3],
+    coupled_w: [f64; 3],
+    /// Σ (μᵢ + 6)|mᵢ||d_ij||d_ik|, the parallel-axis terms, entry by entry
+    /// (rows of the upper triangle: xx, xy, xz, yy, yz, zz).
+    shift_w: [f64; 6],
+    /// The same sums unweighted: what a sum's own rounding is relative to.
+    own_abs: [f64; 3],
+    coupled_abs: [f64; 3],
+    shift_abs: [f64; 6],
+    rot: f64,
+}
+
+/// The entries of the upper triangle, in `Tally::shift_w`'s order.
+const UPPER: [(usize, usize); 6] = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)];
+
+fn upper(j: usize, k: usize) -> usize {
+    let (j, k) = if j <= k { (j, k) } else { (k, j) };
+    UPPER
+        .iter()
+        .position(|e| *e == (j, k))
+        .expect("an entry of a 3 × 3")
+}
+
+/// A double-double centroid (`part::centroid`) is within 2⁻⁹⁸ of its own
+/// magnitude of the exact one: the offset d from the pivot counts it.
+const CENTROID: f64 = 3.155_443_620_884_047e-30;
+
+impl Tally {
+    /// One part of mass `m` at offset `d` from the composer's pivot, its
+    /// centroid `centroid` (its high words), its own second moment's error
+    /// model `own`.
+    #[inline]
+    pub fn add(&mut self, m: f64, d: [f64; 3], centroid: [f64; 3], own: &Own) {
+        let am = m.abs();
+        self.parts += 1.0;
+        self.mass_w += own.mass * am;
+        self.mass_abs += am;
+        let dm: [f64; 3] = std::array::from_fn(|j| d[j].abs() + centroid[j].abs() * CENTROID);
+        let md = dm.map(|x| am * x);
+        let w = own.mass + 6.0;
+        #[allow(clippy::needless_range_loop)] // six arrays by one index
+        for j in 0..3 {
+            self.first_w[j] += (own.mass + 3.0) * md[j];
+            self.first_abs[j] += md[j];
+            let a = own.kappa * own.mag[j];
+            self.own_w[j] += a;
+            self.own_abs[j] += own.mag[j];
+            if !own.diagonal {
+                self.coupled_w[j] += a;
+                self.coupled_abs[j] += own.mag[j];
+            }
+        }
+        for (i, (j, k)) in UPPER.into_iter().enumerate() {
+            let b = md[j] * dm[k];
+            self.shift_w[i] += w * b;
+            self.shift_abs[i] += b;
+        }
+        self.rot += own.rot;
+    }
+
+    /// The bounds of the composed body, from the composer's results in file
+    /// units: the total `mass`, the residual first moment `s` about the
+    /// pivot, the centre `com` and the second moment `c` about it.
+    pub fn finish(
+        &self,
+        precision: Precision,
+        mass: f64,
+        s: [f64; 3],
+        com: [f64; 3],
+        c: &M3<f64>,
+    ) -> BodyError {
+        let u = unit(precision);
+        let n = self.parts;
+        // A sum of `terms` terms of absolute sum `abs`, value `v`.
+        let sum = |v: f64, abs: f64, terms: f64| match precision {
+            Precision::Standard => 2.0 * u * v.abs() + 4.0 * terms * u * u * abs,
+            Precision::Extended => terms * u * abs,
+        };
+        let am = mass.abs();
+        let dm = u * self.mass_w + sum(mass, self.mass_abs, n);
+        let ds: [f64; 3] =
+            std::array::from_fn(|j| u * self.first_w[j] + sum(s[j], self.first_abs[j], n));
+        let dc = std::array::from_fn(|j| {
+            safe(
+                ds[j] / am
+                    + s[j].abs() * dm / (am * am)
+                    + 2.0 * u * (s[j] / mass).abs()
+                    + u * com[j].abs(),
+            )
+        });
+        let root_w = self.coupled_w.map(f64::sqrt);
+        let root_abs = self.coupled_abs.map(f64::sqrt);
+        let e = std::array::from_fn(|j| {
+            std::array::from_fn(|k| {
+                let (sj, sk) = (s[j].abs(), s[k].abs());
+                let correction = (ds[j] * sk + sj * ds[k]) / am
+                    + sj * sk * dm / (am * am)
+                    + 3.0 * u * sj * (sk / am);
+                // The own moments' errors: on the diagonal their sum; off
+                // it, Cauchy–Schwarz over the parts whose own C is not
+                // diagonal (the others' off-diagonal entries are exact
+                // zeros).
+                let (own, own_abs) = if j == k {
+                    (self.own_w[j], self.own_abs[j])
+                } else {
+                    (root_w[j] * root_w[k], root_abs[j] * root_abs[k])
+                };
+                let shift = upper(j, k);
+                safe(
+                    u * (own + self.shift_w[shift] + self.rot)
+                        + sum(c[j][k], own_abs + self.shift_abs[shift], 2.0 * n + 1.0)
+                        + correction,
+                )
+            })
+        });
+        BodyError {
+            mass: safe(dm),
+            center_of_mass: dc,
+            second_moment: e,
+        }
+    }
+}
+
+/// Bounds of a composed body, file units: absolute, entry by entry.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BodyError {
+    pub mass: f64,
+    pub center_of_mass: [f64; 3],
+    /// Of ∫ρρᵀ dm about the centre of mass.
+    pub second_moment: M3<f64>,
+}
+
+impl BodyError {
+    /// The bound of the second moment about a point at offset `r` = c − p
+    /// from the centre (p exact: given, or the exact centre itself when
+    /// `r` is zero), C + m r rᵀ formed in double-double.
+    pub fn second_moment_about(&self, mass: f64, r: [f64; 3], c_about: &M3<f64>) -> M3<f64> {
+        let am = mass.abs();
+        let dc = self.center_of_mass;
+        std::array::from_fn(|j| {
+            std::array::from_fn(|k| {
+                let (rj, rk) = (r[j].abs(), r[k].abs());
+                safe(
+                    self.second_moment[j][k]
+                        + self.mass * rj * rk
+                        + am * (dc[j] * rk + rj * dc[k] + dc[j] * dc[k])
+                        + 16.0 * unit(Precision::Extended) * (c_about[j][k].abs() + am * rj * rk),
+                )
+            })
+        })
+    }
+}
+
+/// The bound of I = tr(C)E − C (I_jj = C_kk + C_ll, I_jk = −C_jk) from
+/// that of C.
+pub fn inertia_of(e: &M3<f64>) -> M3<f64> {
+    std::array::from_fn(|j| {
+        std::array::from_fn(|k| {
+            if j == k {
+                safe(e[(j + 1) % 3][(j + 1) % 3] + e[(j + 2) % 3][(j + 2) % 3])
+            } else {
+                e[j][k]
+            }
+        })
+    })
+}
+
+/// A bound in file units made a bound of the SI value `value` (rounded to
+/// f64, within u of itself) by the unit factor `factor`.
+pub fn to_si(bound: f64, factor: f64, value: f64) -> f64 {
+    safe(bound * factor + U64 * value.abs())
+}
+
+/// What the eigen solver gave (`compose::Principal`): per axis, its
+/// eigenvalue of C and its eigenvector as found, the rotations it took,
+/// and the axes of moments flagged equal.
+#[derive(Debug, Clone, Copy)]
+pub struct Solved<'a> {
+    pub lambda: [f64; 3],
+    pub eigenvectors: &'a [Vector3<f64>; 3],
+    pub rotations: usize,
+    pub equal: &'a [usize],
+}
+
+/// Bounds of principal moments and axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct EigenError {
+    /// Of each principal moment (file units of C).
+    pub moments: [f64; 3],
+    /// Of each axis, as the angle in radians between it and the exact axis;
+    /// π/2 for an axis of equal moments, which is a choice (not unique).
+    pub axes: [f64; 3],
+}
+
+/// The backward error of one Jacobi rotation, in units: a rotation computed
+/// from a few operations and applied as two products and a sum per entry
+/// (Demmel and Veselić 1992, §4: a perturbation of each entry by a few
+/// units of √(a_pp a_qq)).
+const JACOBI: f64 = 8.0;
+
+/// Error bounds of the principal moments and axes computed from the second
+/// moment `c` (as the solver took it) whose entries lie within `e` of the
+/// exact ones.
+///
+/// Each eigenvalue λ of C moves by at most:
+/// - `e_jj` when its eigenvector is a file axis j that C and the error
+///   bound both leave uncoupled (row j off the diagonal zero in both): the
+///   solver never touches it, so λ = C_jj;
+/// - ‖E‖_F (Weyl), E the perturbation of the coupled rows plus the solver's
+///   backward error;
+/// - λ · η/(1 − η) with η = ‖D⁻¹ E D⁻¹‖_F / λ_min(D⁻¹ C D⁻¹), D = diag(√C_jj),
+///   when below ½ (Demmel and Veselić 1992, Theorem 2.3: the relative
+///   bound of a positive definite matrix whose scaled form is well
+///   conditioned, which keeps the small moments of a slender body that is
+///   not turned).
+///
+/// An axis moves by at most arcsin(‖r‖/(g − 2w)), r the part of E vᵢ
+/// across vᵢ plus the solver's residual, w the Weyl bound and g the gap
+/// from its eigenvalue to the others (Davis and Kahan's sin θ theorem with
+/// the Rayleigh quotient), plus its rounding to a unit f64 vector.
+pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> EigenError {
+    let u = unit(precision);
+    // The uncoupled file axes.
+    let free: [bool; 3] = std::array::from_fn(|j| {
+        (0..3)
+            .filter(|k| *k != j)
+            .all(|k| c[j][k] == 0.0 && e[j][k] == 0.0)
+    });
+    let axis_of = |v: &Vector3<f64>| {
+        let nonzero: Vec<usize> = (0..3).filter(|k| v[*k] != 0.0).collect();
+        match nonzero[..] {
+            [j] if free[j] => Some(j),
+            _ => None,
+        }
+    };
+    let coupled: Vec<usize> = (0..3).filter(|j| !free[*j]).collect();
+    // For the relative bound, a priori: each rotation perturbs the scaled
+    // matrix by a few units.
+    let solver = JACOBI * u * p.rotations as f64;
+    // The solver's error as a perturbation F of C. In f64, a posteriori:
+    // the computed eigenpairs are exact for C − F, ‖F‖ at most the
+    // residual ‖C V − V Λ‖ plus the defect of V from orthonormal times ‖C‖
+    // (formed in double-double), typically a unit of ‖C‖ where the a priori
+    // count gives dozens. In double-double the solver's eigenvectors are
+    // rounded to f64 here, so a priori.
+    let backward = match precision {
+        Precision::Standard => residual(c, p),
+        Precision::Extended => solver * c.iter().flatten().map(|x| x * x).sum::<f64>().sqrt(),
+    };
+    let frobenius = |m: &dyn Fn(usize, usize) -> f64| {
+        coupled
+            .iter()
+            .flat_map(|&j| coupled.iter().map(move |&k| (j, k)))
+            .map(|(j, k)| m(j, k) * m(j, k))
+            .sum::<f64>()
+            .sqrt()
+    };
+    let weyl = frobenius(&|j, k| e[j][k]) + backward;
+    let relative = scaled_condition(c, e, &coupled).map(|(eta, low)| (eta + solver) / low);
+    let lambda: [f64; 3] = std::array::from_fn(|i| match axis_of(&p.eigenvectors[i]) {
+        Some(j) => e[j][j],
+        None => {
+            let rel = match relative {
+                Some(r) if r < 0.5 => p.lambda[i].abs() * r / (1.0 - r),
+                _ => f64::INFINITY,
+            };
+            weyl.min(rel)
+        }
+    });
+    let moments = std::array::from_fn(|i| {
+        let (a, b) = ((i + 1) % 3, (i + 2) % 3);
+        safe(lambda[a] + lambda[b] + 4.0 * u * (p.lambda[a].abs() + p.lambda[b].abs()))
+    });
+    let axes = std::array::from_fn(|i| {
+        if p.equal.contains(&i) {
+            return std::f64::consts::FRAC_PI_2;
+        }
+        if axis_of(&p.eigenvectors[i]).is_some() {
+            return 0.0;
+        }
+        let gap = (0..3)
+            .filter(|k| *k != i)
+            .map(|k| (p.lambda[i] - p.lambda[k]).abs())
+            .fold(f64::INFINITY, f64::min);
+        // The residual of vᵢ in the exact C: its part across vᵢ, bounded
+        // in the basis of the other eigenvectors by |v_k|ᵀ|E||vᵢ| (a
+        // perturbation along the file's axes does not turn an axis that
+        // lies along them), plus the solver's residual.
+        let v = &p.eigenvectors;
+        let across = (0..3)
+            .filter(|k| *k != i)
+            .map(|k| {
+                let x: f64 = coupled
+                    .iter()
+                    .flat_map(|&j| coupled.iter().map(move |&l| (j, l)))
+                    .map(|(j, l)| v[k][j].abs() * e[j][l] * v[i][l].abs())
+                    .sum();
+                x * x
+            })
+            .sum::<f64>()
+            .sqrt()
+            + backward;
+        let sin = if gap > 3.0 * weyl {
+            across / (gap - 2.0 * weyl)
+        } else {
+            1.0
+        };
+        // The vector's own rounding, its normalisation and, for the third
+        // axis, the cross product of the first two.
+        safe(sin.min(1.0).asin() + 8.0 * U64)
+    });
+    EigenError { moments, axes }
+}
+
+/// A bound on the solver's backward error ‖F‖₂: ‖R‖_F (1 + δ) + 2‖C‖_F δ
+/// with R = C V − V Λ and δ = ‖VᵀV − E‖_F, V the solver's eigenvectors as
+/// f64 unit vectors, each formed in double-double (within 2⁻¹⁰⁰ of its
+/// terms, counted).
+fn residual(c: &M3<f64>, p: &Solved) -> f64 {
+    use crate::numeric::{DD, Real};
+    let v = &p.eigenvectors;
+    let dd = |x: f64| DD::new(x, 0.0);
+    let mut r2 = 0.0f64;
+    let mut terms = 0.0;
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut acc = -(dd(p.lambda[i]) * dd(v[i][j]));
+            terms += (p.lambda[i] * v[i][j]).abs();
+            for k in 0..3 {
+                acc += dd(c[j][k]) * dd(v[i][k]);
+                terms += (c[j][k] * v[i][k]).abs();
+            }
+            r2 += acc.f64() * acc.f64();
+        }
+    }
+    let mut o2 = 0.0f64;
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut acc = dd(if i == j { -1.0 } else { 0.0 });
+            for k in 0..3 {
+                acc += dd(v[i][k]) * dd(v[j][k]);
+            }
+            o2 += acc.f64() * acc.f64();
+        }
+    }
+    let slack = 1e-29;
+    let delta = o2.sqrt() * (1.0 + 1e-15) + 9.0 * slack;
+    let norm = c.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
+    safe((r2.sqrt() * (1.0 + 1e-15) + slack * terms) * (1.0 + delta) + 2.0 * norm * delta)
+}
+
+/// For the coupled rows of C: η = ‖D⁻¹ E D⁻¹‖_F with D = diag(√(C_jj − E_jj))
+/// and a lower bound of λ_min(D⁻¹ C D⁻¹) (a 2 × 2 with off-diagonal a:
+/// 1 − |a|; a 3 × 3, whose eigenvalues are ≥ 0 and sum to 3: det/(3/2)²),
+/// or `None` when a diagonal entry is not clearly positive or the scaled
+/// matrix is not clearly definite.
+fn scaled_condition(c: &M3<f64>, e: &M3<f64>, coupled: &[usize]) -> Option<(f64, f64)> {
+    let root: [f64; 3] = std::array::from_fn(|j| (c[j][j] - e[j][j]).max(0.0).sqrt());
+    if coupled.iter().any(|&j| root[j] == 0.0 || c[j][j] <= 0.0) {
+        return None;
+    }
+    let eta = coupled
+        .iter()
+        .flat_map(|&j| coupled.iter().map(move |&k| (j, k)))
+        .map(|(j, k)| {
+            let x = e[j][k] / root[j] / root[k];
+            x * x
+        })
+        .sum::<f64>()
+        .sqrt();
+    let scaled = |j: usize, k: usize| c[j][k] / c[j][j].sqrt() / c[k][k].sqrt();
+    let low = match coupled {
+        [] | [_] => 1.0,
+        [j, k] => 1.0 - scaled(*j, *k).abs() - 4.0 * U64,
+        _ => {
+            let (a, b, d) = (scaled(0, 1), scaled(0, 2), scaled(1, 2));
+            (1.0 + 2.0 * a * b * d - a * a - b * b - d * d - 32.0 * U64) / 2.25
+        }
+    };
+    (low > 0.0 && eta.is_finite()).then_some((eta, low))
+}
+
+/// The error bounds of everything `report` prints, in SI, absolute: the
+/// same keys as the values they bound (docs/json.md). Axes as angles.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ErrorBounds {
+    pub mass: f64,
+    pub center_of_mass: [f64; 3],
+    pub reference_point: [f64; 3],
+    pub inertia_com: [[f64; 3]; 3],
+    pub inertia_ref: [[f64; 3]; 3],
+    pub principal_moments: [f64; 3],
+    /// Radians.
+    pub principal_axes: [f64; 3],
+    pub principal_moments_ref: [f64; 3],
+    /// Radians.
+    pub principal_axes_ref: [f64; 3],
+    pub radii_of_gyration: [f64; 3],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angular_momentum: Option<[f64; 3]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kinetic_energy: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub euler_moment: Option<[f64; 3]>,
+}
+
+/// The bound of a radius of gyration k = √(I/m) from those of I and m:
+/// √(I + δI) − √I ≤ min(δI/(2√I), √δI).
+pub fn radius(k: f64, moment: f64, d_moment: f64, mass: f64, d_mass: f64) -> f64 {
+    let root = if moment > 0.0 {
+        (d_moment / (2.0 * moment.sqrt())).min(d_moment.sqrt())
+    } else {
+        d_moment.sqrt()
+    };
+    safe(
+        root / mass.sqrt()
+            + k * d_mass / (2.0 * mass - 2.0 * d_mass).max(f64::MIN_POSITIVE)
+            + 2.0 * U64 * k,
+    )
+}
+
+/// The bounds of H = I ω, T = ½ ωᵀ I ω and M = I α + ω × H from the bound
+/// `e` of I (SI) and the computed H, T and M, each formed in double-double
+/// and rounded once.
+pub fn dynamics(
+    e: &M3<f64>,
+    omega: [f64; 3],
+    alpha: Option<[f64; 3]>,
+    h: [f64; 3],
+    t: f64,
+    m: Option<[f64; 3]>,
+) -> ([f64; 3], f64, Option<[f64; 3]>) {
+    let times = |v: [f64; 3]| -> [f64; 3] {
+        std::array::from_fn(|j| (0..3).map(|k| e[j][k] * v[k].abs()).sum())
+    };
+    let dh_exact = times(omega);
+    let dh = std::array::from_fn(|j| safe(dh_exact[j] + U64 * h[j].abs()));
+    let dt = safe(0.5 * (0..3).map(|j| omega[j].abs() * dh_exact[j]).sum::<f64>() + U64 * t.abs());
+    let dm = alpha.zip(m).map(|(a, m)| {
+        let ia = times(a);
+        std::array::from_fn(|j| {
+            let (k, l) = ((j + 1) % 3, (j + 2) % 3);
+            safe(
+                ia[j]
+                    + omega[k].abs() * dh_exact[l]
+                    + omega[l].abs() * dh_exact[k]
+                    + U64 * m[j].abs(),
+            )
+        })
+    });
+    (dh, dt, dm)
+}

@@ -1,0 +1,130 @@
+//! The error model of one part: how far its mass and its own second moment,
+//! as the composer computes them, may lie from the exact values for the
+//! file's numbers. Counted in units of the arithmetic's unit roundoff
+//! (`super::unit`): each operation rounds by at most one unit relative to
+//! its result (f64: 2⁻⁵³; double-double: 5·2⁻¹⁰⁶ for a product, the worst
+//! of its operations, Joldes, Muller and Popescu 2017; a division counts
+//! three).
+//!
+//! NOTE: the counts are of operations whose result keeps the digits of
+//! its inputs: products, quotients, square roots and sums of terms of one
+//! sign, and differences of the file's own numbers (rounded once, relative
+//! to the difference). The closed forms are written so (`shapes`), and the
+//! counts include a unit or two of slack each; the exact-rational reference
+//! checks them (tests/integration/stress.rs, every shape, both modes).
+
+use super::{MassSpec, Place, Spec};
+use crate::numeric::M3;
+use crate::rotation::Orientation;
+use crate::shapes::Shape;
+
+/// The error of a part's own second moment C (about its centroid):
+/// |δC_jk| ≤ unit · (kappa · √(mag_j mag_k) + rot), with `mag` non-negative
+/// magnitudes of the diagonal (|C_jj| for a shape whose local tensor is
+/// diagonal) and `rot` the share of the rotation matrix's own rounding,
+/// which moves a large local moment into every entry.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Own {
+    /// The mass's relative error (`mass_error`), in units.
+    pub mass: f64,
+    /// Includes the mass's.
+    pub kappa: f64,
+    pub mag: [f64; 3],
+    pub rot: f64,
+    /// Whether C is diagonal in the file's axes with exact zeros off the
+    /// diagonal (a shape not turned): its off-diagonal error is then zero.
+    pub diagonal: bool,
+}
+
+/// Roundings of a shape's local second moments beyond its mass's: m a²/12
+/// (3: a², m·, /12), m(R² + r²)/4 (4), the sphere's m R²/5 · (1 + ρ + … +
+/// ρ⁴)/(1 + ρ + ρ²) (≤ 18: ρ = r/R moves the ratio by at most its own
+/// rounding, its powers and sums 7 and 3, the division 3).
+pub fn closed_form(shape: Shape) -> f64 {
+    match shape {
+        Shape::Sphere => 18.0,
+        Shape::Cylinder | Shape::Disk => 5.0,
+        _ => 4.0,
+    }
+}
+
+/// Roundings of R diag(d) Rᵀ beyond diag(d): two products and two sums.
+pub const TURN: f64 = 4.0;
+
+/// Roundings of (m/12) Σ eₖeₖᵀ over up to three edges beyond the mass's:
+/// m/12, two products, two sums, and the edge vector's own difference
+/// (from/to, a triangle's vertices less its centroid) twice.
+pub const OUTER: f64 = 9.0;
+
+/// Roundings of a given tensor's R C Rᵀ: nine products of three factors
+/// summed (10), and the diagonal of C = tr(I)/2 E − I (2, relative to
+/// the magnitudes `part::diagonal_second_moment` takes).
+pub const GIVEN: f64 = 12.0;
+
+/// The error of a part's mass, relative, in units: 0 when given; for a
+/// density, one product and its measure's roundings (π and R ± r, a norm
+/// per edge, a triangle's area from a cross product).
+pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
+    if let MassSpec::Given(_) = spec.mass {
+        return 0.0;
+    }
+    1.0 + match &spec.place {
+        Place::Centered { .. } => match shape {
+            // 4/3 and π (3), R − r (1), R² + Rr + r² (3), three products.
+            Shape::Sphere => 11.0,
+            // π (1), R − r and R + r (2), two products, the length (1).
+            Shape::Cylinder | Shape::Disk => 6.0,
+            _ => shape.dim_count() as f64,
+        },
+        // A norm per edge (3 for the squares' sum, 2 for the root) and a
+        // product.
+        Place::Edges { .. } => 6.0 * shape.edge_count() as f64,
+        Place::FromTo { .. } => 7.0,
+        Place::Given { .. } => 0.0,
+        Place::Vertices(v) => triangle_area(v),
+    }
+}
+
+/// A triangle's area |a × b|/2 from its edges a and b (vertex offsets
+/// rounded once): each component of the cross product is a difference of
+/// products, 2 units of |a||b| (and 4 more from a and b's rounding), so
+/// 6/sin θ units of the area for the angle θ between a and b; the norm 3.
+fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
+    let a: [f64; 3] = std::array::from_fn(|i| v[1][i] - v[0][i]);
+    let b: [f64; 3] = std::array::from_fn(|i| v[2][i] - v[0][i]);
+    let c = [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ];
+    let sq = |x: [f64; 3]| x.iter().map(|t| t * t).sum::<f64>();
+    // 1/sin θ = |a||b|/|a × b|; the model rejects degenerate triangles,
+    // and a far one rounds its edges here: 2 units of slack, and a floor.
+    let inv_sin = (sq(a) * sq(b) / sq(c)).sqrt();
+    let inv_sin = if inv_sin.is_finite() { inv_sin } else { 1e16 };
+    5.0 + 8.0 * inv_sin
+}
+
+/// How far each entry of a rotation matrix as computed may lie from the
+/// exact rotation the file gives, in units: none for a signed permutation
+/// (quarter turns are exact in every form); else by the form's operations.
+pub fn turn_error(o: &Orientation, r: &M3<f64>) -> f64 {
+    let exact = r.iter().flatten().all(|x| *x == 0.0 || x.abs() == 1.0);
+    if exact { 0.0 } else { form_error(o) }
+}
+
+fn form_error(o: &Orientation) -> f64 {
+    match o {
+        Orientation::Identity => 0.0,
+        // Sums of four products over |q|², and the division.
+        Orientation::Quaternion(_) => 10.0,
+        // The axis normalised (4), sin and cos (3), c + s k + (1 − c) k kᵀ.
+        Orientation::AxisAngle(..) => 16.0,
+        // Three elementary turns (3 each) multiplied twice.
+        Orientation::Euler(..) => 24.0,
+        // Newton–Schulz leaves the orthonormal defect δ as ~δ² (1e-18 at
+        // the model's 1e-9) and a product's roundings.
+        Orientation::Matrix(_) => 16.0,
+        Orientation::Then(outer, inner) => form_error(outer) + form_error(inner) + 4.0,
+    }
+}
