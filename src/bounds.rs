@@ -21,7 +21,7 @@
 //! - the correction −s sᵀ/m by the residual first moment s, and the centre
 //!   ĉ + s/m, carry the errors of s and m.
 
-use crate::numeric::{M3, Precision};
+use crate::numeric::{DD, M3, Precision, Real};
 use crate::part::Own;
 use nalgebra::Vector3;
 use serde::Serialize;
@@ -30,12 +30,14 @@ use serde::Serialize;
 pub const U64: f64 = f64::EPSILON / 2.0;
 
 /// The unit in which the arithmetic's roundings are counted: 2⁻⁵³ for f64;
-/// for double-double 5 · 2⁻¹⁰⁶, its worst operation (a product; a sum
-/// rounds by 3 · 2⁻¹⁰⁶, Joldes, Muller and Popescu 2017).
+/// for double-double 7 · 2⁻¹⁰⁶, its worst operation (the product of
+/// `numeric::DD`, Joldes, Muller and Popescu 2017, Algorithm 10, within
+/// 7u²; a sum rounds by 3u²; the division's three quotient digits and the
+/// square root's Newton step by less).
 pub fn unit(p: Precision) -> f64 {
     match p {
         Precision::Standard => U64,
-        Precision::Extended => 5.0 * U64 * U64 / 4.0,
+        Precision::Extended => 7.0 * U64 * U64,
     }
 }
 
@@ -49,6 +51,17 @@ pub fn safe(x: f64) -> f64 {
     } else {
         y
     }
+}
+
+/// √(Σ xᵢ²) of a few numbers, scaled by the largest so that neither the
+/// squares of bounds near f64's ends overflow nor tiny ones underflow.
+fn root_sum_squares(xs: impl IntoIterator<Item = f64>) -> f64 {
+    let xs: Vec<f64> = xs.into_iter().map(f64::abs).collect();
+    let top = xs.iter().copied().fold(0.0, f64::max);
+    if top == 0.0 || !top.is_finite() {
+        return top;
+    }
+    top * xs.iter().map(|x| (x / top) * (x / top)).sum::<f64>().sqrt()
 }
 
 /// The sums beside the composer's, one part at a time (`add`), from which
@@ -87,21 +100,17 @@ fn upper(j: usize, k: usize) -> usize {
         .expect("an entry of a 3 × 3")
 }
 
-/// A double-double centroid (`part::centroid`) is within 2⁻⁹⁸ of its own
-/// magnitude of the exact one: the offset d from the pivot counts it.
-const CENTROID: f64 = 3.155_443_620_884_047e-30;
-
 impl Tally {
-    /// One part of mass `m` at offset `d` from the composer's pivot, its
-    /// centroid `centroid` (its high words), its own second moment's error
-    /// model `own`.
+    /// One part of mass `m` at offset `d` from the composer's pivot, the
+    /// error of its centroid (`part::error::centroid_error`), its own
+    /// second moment's error model `own`.
     #[inline]
     pub fn add(&mut self, m: f64, d: [f64; 3], centroid: [f64; 3], own: &Own) {
         let am = m.abs();
         self.parts += 1.0;
         self.mass_w += own.mass * am;
         self.mass_abs += am;
-        let dm: [f64; 3] = std::array::from_fn(|j| d[j].abs() + centroid[j].abs() * CENTROID);
+        let dm: [f64; 3] = std::array::from_fn(|j| d[j].abs() + centroid[j]);
         let md = dm.map(|x| am * x);
         let w = own.mass + 6.0;
         #[allow(clippy::needless_range_loop)] // six arrays by one index
@@ -149,7 +158,7 @@ impl Tally {
         let dc = std::array::from_fn(|j| {
             safe(
                 ds[j] / am
-                    + s[j].abs() * dm / (am * am)
+                    + (s[j].abs() / am) * (dm / am)
                     + 2.0 * u * (s[j] / mass).abs()
                     + u * com[j].abs(),
             )
@@ -159,8 +168,9 @@ impl Tally {
         let e = std::array::from_fn(|j| {
             std::array::from_fn(|k| {
                 let (sj, sk) = (s[j].abs(), s[k].abs());
-                let correction = (ds[j] * sk + sj * ds[k]) / am
-                    + sj * sk * dm / (am * am)
+                let correction = ds[j] * (sk / am)
+                    + (sj / am) * ds[k]
+                    + sj * (sk / am) * (dm / am)
                     + 3.0 * u * sj * (sk / am);
                 // The own moments' errors: on the diagonal their sum; off
                 // it, Cauchy–Schwarz over the parts whose own C is not
@@ -246,6 +256,8 @@ pub struct Solved<'a> {
     pub eigenvectors: &'a [Vector3<f64>; 3],
     pub rotations: usize,
     pub equal: &'a [usize],
+    /// `backward_error` of the solution.
+    pub backward: f64,
 }
 
 /// Bounds of principal moments and axes.
@@ -303,25 +315,15 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
     // For the relative bound, a priori: each rotation perturbs the scaled
     // matrix by a few units.
     let solver = JACOBI * u * p.rotations as f64;
-    // The solver's error as a perturbation F of C. In f64, a posteriori:
-    // the computed eigenpairs are exact for C − F, ‖F‖ at most the
-    // residual ‖C V − V Λ‖ plus the defect of V from orthonormal times ‖C‖
-    // (formed in double-double), typically a unit of ‖C‖ where the a priori
-    // count gives dozens. In double-double the solver's eigenvectors are
-    // rounded to f64 here, so a priori.
-    let backward = match precision {
-        Precision::Standard => residual(c, p),
-        Precision::Extended => solver * c.iter().flatten().map(|x| x * x).sum::<f64>().sqrt(),
-    };
-    let frobenius = |m: &dyn Fn(usize, usize) -> f64| {
+    // The solver's error as a perturbation F of C, a posteriori
+    // (`backward_error`): typically a unit of ‖C‖ where an a priori count
+    // of its rotations gives dozens.
+    let backward = p.backward;
+    let weyl = root_sum_squares(
         coupled
             .iter()
-            .flat_map(|&j| coupled.iter().map(move |&k| (j, k)))
-            .map(|(j, k)| m(j, k) * m(j, k))
-            .sum::<f64>()
-            .sqrt()
-    };
-    let weyl = frobenius(&|j, k| e[j][k]) + backward;
+            .flat_map(|&j| coupled.iter().map(move |&k| e[j][k])),
+    ) + backward;
     let relative = scaled_condition(c, e, &coupled).map(|(eta, low)| (eta + solver) / low);
     let lambda: [f64; 3] = std::array::from_fn(|i| match axis_of(&p.eigenvectors[i]) {
         Some(j) => e[j][j],
@@ -353,19 +355,13 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
         // perturbation along the file's axes does not turn an axis that
         // lies along them), plus the solver's residual.
         let v = &p.eigenvectors;
-        let across = (0..3)
-            .filter(|k| *k != i)
-            .map(|k| {
-                let x: f64 = coupled
-                    .iter()
-                    .flat_map(|&j| coupled.iter().map(move |&l| (j, l)))
-                    .map(|(j, l)| v[k][j].abs() * e[j][l] * v[i][l].abs())
-                    .sum();
-                x * x
-            })
-            .sum::<f64>()
-            .sqrt()
-            + backward;
+        let across = root_sum_squares((0..3).filter(|k| *k != i).map(|k| {
+            coupled
+                .iter()
+                .flat_map(|&j| coupled.iter().map(move |&l| (j, l)))
+                .map(|(j, l)| v[k][j].abs() * e[j][l] * v[i][l].abs())
+                .sum::<f64>()
+        })) + backward;
         let sin = if gap > 3.0 * weyl {
             across / (gap - 2.0 * weyl)
         } else {
@@ -378,41 +374,44 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
     EigenError { moments, axes }
 }
 
-/// A bound on the solver's backward error ‖F‖₂: ‖R‖_F (1 + δ) + 2‖C‖_F δ
-/// with R = C V − V Λ and δ = ‖VᵀV − E‖_F, V the solver's eigenvectors as
-/// f64 unit vectors, each formed in double-double (within 2⁻¹⁰⁰ of its
-/// terms, counted).
-fn residual(c: &M3<f64>, p: &Solved) -> f64 {
-    use crate::numeric::{DD, Real};
-    let v = &p.eigenvectors;
-    let dd = |x: f64| DD::new(x, 0.0);
-    let mut r2 = 0.0f64;
-    let mut terms = 0.0;
+/// A bound on the eigen solver's backward error ‖F‖₂ (its eigenpairs are
+/// exact for C − F), a posteriori: ‖R‖_F (1 + δ) + 2‖C‖_F δ with the
+/// residual R = C V − V Λ and δ = ‖VᵀV − E‖_F, formed in double-double
+/// from the solver's own C, V and Λ (in its arithmetic, before rounding),
+/// with the rounding of that formation counted (four units of
+/// double-double of its terms).
+pub fn backward_error<T: Real + Into<DD>>(c: &M3<T>, lambda: &[T; 3], v: &M3<T>) -> f64 {
+    let dd = |x: T| -> DD { x.into() };
+    // Four double-double operations' rounding, relative to the terms.
+    let slack = 4.0 * unit(Precision::Extended);
+    let mut r = Vec::with_capacity(9);
+    let mut terms = 0.0f64;
     for i in 0..3 {
         for j in 0..3 {
-            let mut acc = -(dd(p.lambda[i]) * dd(v[i][j]));
-            terms += (p.lambda[i] * v[i][j]).abs();
+            // Column i of V is the eigenvector of λᵢ.
+            let mut acc = -(dd(lambda[i]) * dd(v[j][i]));
+            terms += (lambda[i].f64() * v[j][i].f64()).abs();
             for k in 0..3 {
-                acc += dd(c[j][k]) * dd(v[i][k]);
-                terms += (c[j][k] * v[i][k]).abs();
+                acc += dd(c[j][k]) * dd(v[k][i]);
+                terms += (c[j][k].f64() * v[k][i].f64()).abs();
             }
-            r2 += acc.f64() * acc.f64();
+            r.push(acc.f64());
         }
     }
     let mut o2 = 0.0f64;
     for i in 0..3 {
         for j in 0..3 {
-            let mut acc = dd(if i == j { -1.0 } else { 0.0 });
-            for k in 0..3 {
-                acc += dd(v[i][k]) * dd(v[j][k]);
+            let mut acc = DD::new(if i == j { -1.0 } else { 0.0 }, 0.0);
+            for row in v {
+                acc += dd(row[i]) * dd(row[j]);
             }
             o2 += acc.f64() * acc.f64();
         }
     }
-    let slack = 1e-29;
     let delta = o2.sqrt() * (1.0 + 1e-15) + 9.0 * slack;
-    let norm = c.iter().flatten().map(|x| x * x).sum::<f64>().sqrt();
-    safe((r2.sqrt() * (1.0 + 1e-15) + slack * terms) * (1.0 + delta) + 2.0 * norm * delta)
+    let norm = root_sum_squares(c.iter().flatten().map(|x| x.f64()));
+    let r = root_sum_squares(r);
+    safe((r * (1.0 + 1e-15) + slack * terms) * (1.0 + delta) + 2.0 * norm * delta)
 }
 
 /// For the coupled rows of C: η = ‖D⁻¹ E D⁻¹‖_F with D = diag(√(C_jj − E_jj))

@@ -106,7 +106,7 @@ pub struct DiffArgs {
         long,
         value_name = "REL",
         default_value_t = 1e-9,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub tol: f64,
 
@@ -216,7 +216,13 @@ pub struct AccuracyArgs {
 
     /// The accuracy asked for, relative to each value (a value zero to
     /// within its bound is judged against the largest of its kind).
-    #[arg(long, value_name = "REL", default_value_t = DEFAULT_RTOL, value_parser = parse_rtol)]
+    #[arg(
+        long,
+        value_name = "REL",
+        default_value_t = DEFAULT_RTOL,
+        value_parser = parse_rtol,
+        allow_hyphen_values = true
+    )]
     pub rtol: f64,
 }
 

@@ -72,7 +72,8 @@ fn compose_standard<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
         // rest of a centroid formed from a corner and edges.
         let d: [f64; 3] = std::array::from_fn(|i| (c[i].hi - c0[i]) + c[i].lo);
         let (own, error): (M3<f64>, _) = p.own_second_moment_bounded(m);
-        tally.add(m, d, c.map(|x| x.hi), &error);
+        let off = crate::part::error::centroid_error(&p.spec.place, &c.map(|x| x.hi));
+        tally.add(m, d, off, &error);
         for i in 0..3 {
             // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
             let md = m * d[i];
@@ -135,7 +136,8 @@ fn compose_extended<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
         let cen = p.centroid();
         let d: [DD; 3] = std::array::from_fn(|i| cen[i] - c0[i]);
         let (own, error): (M3<DD>, _) = p.own_second_moment_bounded(m);
-        tally.add(m.f64(), d.map(DD::f64), cen.map(|x| x.hi), &error);
+        let off = crate::part::error::centroid_error(&p.spec.place, &cen.map(|x| x.hi));
+        tally.add(m.f64(), d.map(DD::f64), off, &error);
         for i in 0..3 {
             let md = m * d[i];
             s[i] += md;
@@ -167,6 +169,7 @@ impl Principal {
             eigenvectors: &self.eigenvectors,
             rotations: self.rotations,
             equal: &self.equal,
+            backward: self.backward,
         }
     }
 }
@@ -190,6 +193,8 @@ pub struct Principal {
     pub eigenvectors: [Vector3<f64>; 3],
     /// Plane rotations the Jacobi solver applied.
     pub rotations: usize,
+    /// A bound on the solver's backward error (`bounds::backward_error`).
+    pub backward: f64,
 }
 
 /// Principal moments and axes of the second moment `c` (∫ρρᵀ dm), solved in
@@ -226,6 +231,7 @@ fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
     if !lam.iter().all(|x| x.is_finite()) {
         return None;
     }
+    let backward = crate::bounds::backward_error(c, &lam, &v);
     let lam: [DD; 3] = lam.map(|x| {
         if x > T::of(0.0) {
             x.into()
@@ -278,6 +284,7 @@ fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
         lambda: order.map(|k| lam[k].f64()),
         eigenvectors: vecs,
         rotations,
+        backward,
     })
 }
 

@@ -91,6 +91,10 @@ pub struct FileResult {
     pub checks: Vec<CheckResult>,
     /// Physical validity failures (empty when valid).
     pub validity: Vec<String>,
+    /// The values whose error bound exceeds `--rtol` (`summary::accuracy`);
+    /// absent when there are none.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub accuracy_warnings: Vec<crate::analysis::summary::AccuracyWarning>,
 }
 
 /// Evaluate one expectation against a summary.
@@ -166,6 +170,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         error: None,
         checks,
         validity,
+        accuracy_warnings: loaded.summary.accuracy_warnings.clone(),
     }
 }
 

@@ -140,6 +140,9 @@ pub struct Summary {
     /// when there are none.
     #[serde(skip_serializing_if = "Assemblies::is_empty")]
     pub assemblies: Assemblies,
+    /// The `--precision` asked for (`precision` is the one used).
+    #[serde(skip)]
+    pub requested: PrecisionChoice,
     /// Whether a reference point was given (else it is the centre of mass).
     #[serde(skip)]
     pub reference_given: bool,
@@ -565,6 +568,7 @@ fn summarize_in(
         error_bounds,
         rtol: 0.0,
         accuracy_warnings: Vec::new(),
+        requested: PrecisionChoice::Auto,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
     })

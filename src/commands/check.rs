@@ -137,6 +137,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             error: Some(d.to_string()),
             checks: Vec::new(),
             validity: Vec::new(),
+            accuracy_warnings: Vec::new(),
         }
     };
     // Every file found, valid or not, and every file those include.
@@ -193,7 +194,10 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         let loaded = crate::io::read_source_at(&path)
             .and_then(part_file)
             .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
-            .map(|l| check_loaded(&l));
+            .map(|l| {
+                stderr.push_str(&super::accuracy_warnings(&l));
+                check_loaded(&l)
+            });
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {
                 stderr.push_str(&format!("{}: not blessed\n", visible(&f)));

@@ -44,10 +44,11 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let old = analysis::load(&o.old, &settings)?;
     let new = analysis::load(&o.new, &settings)?;
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
+    let stderr = super::accuracy_warnings(&old) + &super::accuracy_warnings(&new);
     let diff = Diff::of(old, new, tol)?;
     Ok(Outcome {
         stdout: super::Stdout::Text(render::render(&render::Output::Diff(&diff), o.format)),
-        stderr: String::new(),
+        stderr,
         status: u8::from(diff.changed),
         read,
     })

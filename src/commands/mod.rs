@@ -83,6 +83,18 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
         .collect()
 }
 
+/// The accuracy warnings of a loaded part file (`--rtol` not met), a line
+/// each for standard error: `warning: FILE: …`.
+pub fn accuracy_warnings(loaded: &crate::analysis::Loaded) -> String {
+    let file = crate::diag::visible(&loaded.source.name);
+    loaded
+        .summary
+        .accuracy_warnings
+        .iter()
+        .map(|w| format!("warning: {file}: {}\n", w.message))
+        .collect()
+}
+
 /// One command with its options.
 #[derive(Debug, Clone)]
 pub enum Request {

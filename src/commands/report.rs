@@ -20,13 +20,14 @@ pub struct Options {
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
     let read = super::files_of(&loaded);
+    let stderr = super::accuracy_warnings(&loaded);
     Ok(Outcome {
         stdout: super::Stdout::Report {
             summary: Box::new(loaded.summary),
             source: loaded.source.name,
             format: o.format,
         },
-        stderr: String::new(),
+        stderr,
         status: 0,
         read,
     })

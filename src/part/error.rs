@@ -1,10 +1,9 @@
 //! The error model of one part: how far its mass and its own second moment,
 //! as the composer computes them, may lie from the exact values for the
 //! file's numbers. Counted in units of the arithmetic's unit roundoff
-//! (`super::unit`): each operation rounds by at most one unit relative to
-//! its result (f64: 2⁻⁵³; double-double: 5·2⁻¹⁰⁶ for a product, the worst
-//! of its operations, Joldes, Muller and Popescu 2017; a division counts
-//! three).
+//! (`bounds::unit`): each operation rounds by at most one unit relative to
+//! its result (f64: 2⁻⁵³; double-double: 7·2⁻¹⁰⁶, its product's bound,
+//! the worst of its operations).
 //!
 //! NOTE: the counts are of operations whose result keeps the digits of
 //! its inputs: products, quotients, square roots and sums of terms of one
@@ -103,6 +102,26 @@ fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
     let inv_sin = (sq(a) * sq(b) / sq(c)).sqrt();
     let inv_sin = if inv_sin.is_finite() { inv_sin } else { 1e16 };
     5.0 + 8.0 * inv_sin
+}
+
+/// How far each component of a part's centroid, as `part::centroid` forms
+/// it in double-double, may lie from the exact centroid: nothing where it
+/// is a number of the file (a centre) or a sum of two halves (from/to), or
+/// where the vertices or the edges do not move it off the corner along
+/// that axis; else 2⁻⁹⁸ of it (a few double-double operations).
+pub fn centroid_error(place: &Place, centroid: &[f64; 3]) -> [f64; 3] {
+    let inexact = |j: usize| match place {
+        Place::Centered { .. } | Place::Given { .. } | Place::FromTo { .. } => false,
+        Place::Edges { edges, .. } => edges.iter().any(|e| e[j] != 0.0),
+        Place::Vertices(v) => !(v[0][j] == v[1][j] && v[1][j] == v[2][j]),
+    };
+    std::array::from_fn(|j| {
+        if inexact(j) {
+            centroid[j].abs() * 3.155_443_620_884_047e-30
+        } else {
+            0.0
+        }
+    })
 }
 
 /// How far each entry of a rotation matrix as computed may lie from the

@@ -57,6 +57,45 @@ pub fn fmt_num(x: f64) -> String {
     fmt_sig(x, 6)
 }
 
+/// Significant digits a table shows.
+pub const SHOWN_DIGITS: i32 = 6;
+
+/// `x` to the digits its error bound `bound` guarantees, judged against
+/// `scale` (|x| for a value on its own; the largest entry for an entry of
+/// a vector or tensor, which is read to the same resolution as the rest):
+/// as `fmt_num` when the bound is within half a unit of the last digit
+/// shown; rounded to the scale's last digit shown when the bound is within
+/// half of that (`0` for a product of inertia that is zero within its
+/// bound); else to the digits the bound leaves, with `± bound`.
+pub fn fmt_bounded(x: f64, bound: f64, scale: f64) -> String {
+    // A bound past f64 (made so by a unit's scale) is still a bound.
+    let bound = bound.min(f64::MAX);
+    // Decimal exponents as f64 (no overflow at the ends of the range): of
+    // x's lead digit, and of the unit of the last digit shown of `of`.
+    let lead = |v: f64| v.abs().log10().floor();
+    let last_shown = |of: f64| lead(of) - f64::from(SHOWN_DIGITS - 1);
+    let within = |of: f64| of != 0.0 && bound <= 0.5 * 10f64.powf(last_shown(of));
+    if bound == 0.0 || !x.is_finite() || within(x) {
+        return fmt_num(x);
+    }
+    // x to the digits above the unit 10^last.
+    let shown = |last: f64| {
+        let digits = if x == 0.0 { 0.0 } else { lead(x) - last + 1.0 };
+        if digits < 1.0 {
+            "0".to_string()
+        } else {
+            fmt_sig(x, digits.min(f64::from(SHOWN_DIGITS)) as usize)
+        }
+    };
+    let top = scale.max(x.abs());
+    if within(top) {
+        return shown(last_shown(top));
+    }
+    // The last digit whose half unit covers the bound.
+    let last = (2.0 * bound).log10().ceil();
+    format!("{} ± {}", shown(last), fmt_sig(bound, 1))
+}
+
 /// A fraction as a percentage to three significant digits (shares and
 /// relative changes are read as orders of magnitude, not to six digits);
 /// `None`, an undefined ratio, as `UNDEFINED`.

@@ -3,7 +3,7 @@
 //! SI, six significant digits. Full precision is in the JSON.
 
 use super::format::{
-    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_num, name, precision_label,
+    DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_bounded, fmt_num, name, precision_label,
     products_label, push_name, push_percent, push_sig,
 };
 use super::grid::{Cells, new_table, right_align, stream_table, write_table};
@@ -18,24 +18,38 @@ pub fn json(summary: &Summary) -> String {
     super::json_line(summary)
 }
 
-fn matrix_table(m: &[[f64; 3]; 3], scale: f64) -> Table {
+/// Entries to the digits their bounds `b` guarantee, read against the
+/// largest entry (`fmt_bounded`).
+fn matrix_table(m: &[[f64; 3]; 3], b: &[[f64; 3]; 3], scale: f64) -> Table {
     let mut t = new_table();
     t.set_header(vec!["", "x", "y", "z"]);
-    for (label, row) in ["x", "y", "z"].iter().zip(m) {
+    let top = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs())) / scale;
+    for ((label, row), bounds) in ["x", "y", "z"].iter().zip(m).zip(b) {
         let mut cells = vec![label.to_string()];
-        cells.extend(row.iter().map(|v| fmt_num(v / scale)));
+        cells.extend(
+            row.iter()
+                .zip(bounds)
+                .map(|(v, e)| fmt_bounded(v / scale, e / scale, top)),
+        );
         t.add_row(cells);
     }
     right_align(&mut t, 1);
     t
 }
 
-fn principal_table(
-    moments: &[f64; 3],
-    axes: &[[f64; 3]; 3],
-    radii: Option<&[f64; 3]>,
-    u: &DisplayUnits,
-) -> Table {
+/// A principal table's values and their bounds (`error_bounds`).
+struct Principal<'a> {
+    moments: (&'a [f64; 3], &'a [f64; 3]),
+    axes: (&'a [[f64; 3]; 3], &'a [f64; 3]),
+    radii: Option<(&'a [f64; 3], &'a [f64; 3])>,
+}
+
+fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
+    let Principal {
+        moments: (moments, moments_b),
+        axes: (axes, axes_b),
+        radii,
+    } = p;
     let mut t = new_table();
     let mut header = vec![format!("moment ({})", u.inertia_label)];
     if radii.is_some() {
@@ -45,15 +59,53 @@ fn principal_table(
     header.insert(0, String::new());
     t.set_header(header);
     for i in 0..3 {
-        let mut cells = vec![format!("I{}", i + 1), fmt_num(moments[i] / u.inertia)];
-        if let Some(r) = radii {
-            cells.push(fmt_num(r[i] / u.length));
+        let own = |v: f64, b: f64, scale: f64| fmt_bounded(v / scale, b / scale, (v / scale).abs());
+        let mut cells = vec![
+            format!("I{}", i + 1),
+            own(moments[i], moments_b[i], u.inertia),
+        ];
+        if let Some((r, b)) = radii {
+            cells.push(own(r[i], b[i], u.length));
         }
-        cells.extend(axes[i].iter().map(|a| fmt_num(*a)));
+        // A component of a unit vector moves by at most the angle. Axes of
+        // equal moments are a choice (their bound is π/2): the note says so.
+        let bound = if axes_b[i] >= std::f64::consts::FRAC_PI_2 {
+            0.0
+        } else {
+            axes_b[i]
+        };
+        cells.extend(axes[i].iter().map(|a| fmt_bounded(*a, bound, 1.0)));
         t.add_row(cells);
     }
     right_align(&mut t, 1);
     t
+}
+
+/// The arithmetic used, and why: `auto`'s choice, or the one asked for;
+/// how many values fall short of `--rtol` (the warnings say which).
+fn precision_line(s: &Summary) -> String {
+    use crate::analysis::summary::PrecisionChoice;
+    use crate::compose::Precision;
+    let why = match (s.requested, s.precision) {
+        (PrecisionChoice::Auto, Precision::Standard) => "chosen by auto: every error bound within",
+        (PrecisionChoice::Auto, Precision::Extended) => {
+            "chosen by auto: standard's error bounds exceed"
+        }
+        _ => "as asked; error bounds judged against",
+    };
+    let mut line = format!(
+        "precision: {}, {why} --rtol {:e}",
+        precision_label(s.precision),
+        s.rtol
+    );
+    match s.accuracy_warnings.len() {
+        0 => {}
+        1 => line.push_str("; 1 value is not within it (see the warning)"),
+        n => {
+            let _ = write!(line, "; {n} values are not within it (see the warnings)");
+        }
+    }
+    line
 }
 
 /// The report for people; `source` names the file it came from.
@@ -98,41 +150,68 @@ pub fn write_table_to(
         "products of inertia: {}",
         products_label(s.products_convention)
     );
-    let _ = writeln!(out, "precision: {}", precision_label(s.precision));
-    let _ = writeln!(out, "\nmass: {} {}", fmt_num(s.mass / u.mass), u.mass_label);
-    if let Some(t) = s.kinetic_energy {
-        let _ = writeln!(out, "kinetic energy T: {}", u.show(t, Dim::ENERGY));
+    let _ = writeln!(out, "{}", precision_line(s));
+    let b = &s.error_bounds;
+    let own = |v: f64, e: f64, scale: f64| fmt_bounded(v / scale, e / scale, (v / scale).abs());
+    let _ = writeln!(
+        out,
+        "\nmass: {} {}",
+        own(s.mass, b.mass, u.mass),
+        u.mass_label
+    );
+    if let (Some(t), Some(e)) = (s.kinetic_energy, b.kinetic_energy) {
+        let (scale, unit) = u.of_dim(Dim::ENERGY);
+        let _ = writeln!(out, "kinetic energy T: {} {unit}", own(t, e, scale));
     }
 
     let mut vectors = new_table();
     vectors.set_header(vec!["", "x", "y", "z", "unit"]);
-    let mut row = |label: &str, v: &[f64; 3], (scale, unit): (f64, &str)| {
+    // Given vectors (ω, α, a reference point given) are exact: no bound.
+    let exact = [0.0; 3];
+    let mut row = |label: &str, v: &[f64; 3], e: &[f64; 3], (scale, unit): (f64, &str)| {
         let mut cells = vec![label.to_string()];
-        cells.extend(v.iter().map(|x| fmt_num(x / scale)));
+        let top = v.iter().fold(0.0f64, |a, x| a.max(x.abs())) / scale;
+        cells.extend(
+            v.iter()
+                .zip(e)
+                .map(|(x, e)| fmt_bounded(x / scale, e / scale, top)),
+        );
         cells.push(unit.to_string());
         vectors.add_row(cells);
     };
-    row("centre of mass", &s.center_of_mass, u.of_dim(Dim::LENGTH));
+    let length = u.of_dim(Dim::LENGTH);
+    row(
+        "centre of mass",
+        &s.center_of_mass,
+        &b.center_of_mass,
+        length,
+    );
     if s.reference_given {
-        row("reference point", &s.reference_point, u.of_dim(Dim::LENGTH));
+        row("reference point", &s.reference_point, &exact, length);
     }
     if let Some(w) = &s.omega {
-        row("angular velocity ω", w, u.of_dim(Dim::ANGULAR_VELOCITY));
+        row(
+            "angular velocity ω",
+            w,
+            &exact,
+            u.of_dim(Dim::ANGULAR_VELOCITY),
+        );
     }
-    if let Some(h) = &s.angular_momentum {
-        row("angular momentum H", h, u.of_dim(Dim::ANGULAR_MOMENTUM));
+    if let (Some(h), Some(e)) = (&s.angular_momentum, &b.angular_momentum) {
+        row("angular momentum H", h, e, u.of_dim(Dim::ANGULAR_MOMENTUM));
     }
     if let Some(a) = &s.alpha {
         row(
             "angular acceleration α",
             a,
+            &exact,
             u.of_dim(Dim::ANGULAR_ACCELERATION),
         );
     }
-    if let Some(m) = &s.euler_moment {
+    if let (Some(m), Some(e)) = (&s.euler_moment, &b.euler_moment) {
         // A moment has the dimension of an energy, but is not one: SI,
         // labelled N·m.
-        row("Euler moment M", m, (1.0, MOMENT_UNIT));
+        row("Euler moment M", m, e, (1.0, MOMENT_UNIT));
     }
     right_align(&mut vectors, 1);
     if let Some(c) = vectors.column_mut(4) {
@@ -145,7 +224,11 @@ pub fn write_table_to(
         "\ninertia about the centre of mass ({})",
         u.inertia_label
     );
-    let _ = writeln!(out, "{}", matrix_table(&s.inertia_com, u.inertia));
+    let _ = writeln!(
+        out,
+        "{}",
+        matrix_table(&s.inertia_com, &b.inertia_com, u.inertia)
+    );
     if s.reference_given {
         let p = s.reference_point.map(|x| fmt_num(x / u.length));
         let _ = writeln!(
@@ -153,7 +236,11 @@ pub fn write_table_to(
             "\ninertia about the reference point ({}, {}, {}) {} ({})",
             p[0], p[1], p[2], u.length_label, u.inertia_label
         );
-        let _ = writeln!(out, "{}", matrix_table(&s.inertia_ref, u.inertia));
+        let _ = writeln!(
+            out,
+            "{}",
+            matrix_table(&s.inertia_ref, &b.inertia_ref, u.inertia)
+        );
     }
 
     let _ = writeln!(
@@ -164,9 +251,11 @@ pub fn write_table_to(
         out,
         "{}",
         principal_table(
-            &s.principal_moments,
-            &s.principal_axes,
-            Some(&s.radii_of_gyration),
+            Principal {
+                moments: (&s.principal_moments, &b.principal_moments),
+                axes: (&s.principal_axes, &b.principal_axes),
+                radii: Some((&s.radii_of_gyration, &b.radii_of_gyration)),
+            },
             &u
         )
     );
@@ -179,7 +268,14 @@ pub fn write_table_to(
         let _ = writeln!(
             out,
             "{}",
-            principal_table(&s.principal_moments_ref, &s.principal_axes_ref, None, &u)
+            principal_table(
+                Principal {
+                    moments: (&s.principal_moments_ref, &b.principal_moments_ref),
+                    axes: (&s.principal_axes_ref, &b.principal_axes_ref),
+                    radii: None,
+                },
+                &u
+            )
         );
         equal_note(&mut out, &s.equal_moments_ref);
     }

@@ -1393,22 +1393,33 @@ fn cells(line: &str) -> Vec<&str> {
         .collect()
 }
 
-/// A number printed as zero.
+/// A number printed as zero (`0`, or `0 ± b`: zero to within its error
+/// bound).
 fn zero(cell: &str) -> bool {
-    cell.parse::<f64>().is_ok_and(|x| x == 0.0)
+    let value = cell.split(" ± ").next().unwrap_or(cell);
+    value.parse::<f64>().is_ok_and(|x| x == 0.0)
 }
 
-/// A number the table shows as zero is zero in the JSON, and the other
-/// way round; a radius of gyration is zero only with its moment.
+/// A number the table shows as zero is zero in the JSON or within its
+/// error bound (`error_bounds`) of zero — the table shows only the digits
+/// a bound guarantees — and a number the JSON has as zero is shown as
+/// zero; a radius of gyration is zero only with its moment.
 fn zeros_agree(table: &str, json: &Value) -> Result<(), String> {
     let num = |v: &Value| v.as_f64().ok_or_else(|| format!("not a number: {v}"));
-    let agree = |what: &str, cell: &str, x: f64| {
-        if zero(cell) != (x == 0.0) {
-            Err(format!(
-                "{what} is printed as {cell} where the JSON has {x:e}"
-            ))
+    let bounds = &json["error_bounds"];
+    let agree = |what: &str, cell: &str, x: f64, bound: &Value| {
+        let bound = num(bound)?;
+        let ok = if zero(cell) {
+            x.abs() <= bound
         } else {
+            x != 0.0
+        };
+        if ok {
             Ok(())
+        } else {
+            Err(format!(
+                "{what} is printed as {cell} where the JSON has {x:e} (bound {bound:e})"
+            ))
         }
     };
     let moments = json["principal_moments"].as_array().ok_or("no moments")?;
@@ -1425,14 +1436,16 @@ fn zeros_agree(table: &str, json: &Value) -> Result<(), String> {
     for line in table.lines() {
         if let Some(rest) = line.strip_prefix("mass: ") {
             let cell = rest.split(' ').next().unwrap_or("");
-            agree("the mass", cell, num(&json["mass"])?)?;
+            agree("the mass", cell, num(&json["mass"])?, &bounds["mass"])?;
         }
         let c = cells(line);
         if let Some(k) = ["I1", "I2", "I3"].iter().position(|n| c.first() == Some(n))
             && c.len() >= 3
         {
-            agree("a principal moment", c[1], num(&moments[k])?)?;
-            agree("a radius of gyration", c[2], num(&radii[k])?)?;
+            let moment = &bounds["principal_moments"][k];
+            agree("a principal moment", c[1], num(&moments[k])?, moment)?;
+            let radius = &bounds["radii_of_gyration"][k];
+            agree("a radius of gyration", c[2], num(&radii[k])?, radius)?;
         }
         if c.first() == Some(&"centre of mass") && c.len() >= 4 {
             for (axis, cell) in c[1..4].iter().enumerate() {
@@ -1440,6 +1453,7 @@ fn zeros_agree(table: &str, json: &Value) -> Result<(), String> {
                     "the centre of mass",
                     cell,
                     num(&json["center_of_mass"][axis])?,
+                    &bounds["center_of_mass"][axis],
                 )?;
             }
         }

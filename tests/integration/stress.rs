@@ -712,7 +712,7 @@ pub(crate) fn edge(rot: &[[f64; 3]; 3], k: usize, s: f64) -> [f64; 3] {
 
 /// Twelve boxes of random sizes (0.2 to 1), masses or densities and
 /// orientations, centred on the 2⁻²⁰ grid within [−1, 1]³.
-fn twelve_boxes(rng: &mut Rng) -> Scene {
+pub(crate) fn twelve_boxes(rng: &mut Rng) -> Scene {
     Scene::si(
         (0..12)
             .map(|k| {
@@ -762,7 +762,7 @@ pub(crate) fn given_tensor(mass: f64, s: [f64; 3], q: [f64; 4]) -> [[f64; 3]; 3]
 /// offsets on that grid below 2³² are exact), random orientations, masses
 /// and densities: cylinder, tube, thin tube, disk, annulus, ring, sphere,
 /// hollow sphere, shell, triangle and a given inertia (CAD products).
-fn every_shape(rng: &mut Rng) -> Scene {
+pub(crate) fn every_shape(rng: &mut Rng) -> Scene {
     let mut turn = || Some(r::Rotation::Quaternion(rng.quaternion()));
     let rotations: Vec<_> = (0..8).map(|_| turn()).collect();
     let size = |rng: &mut Rng| rng.range(0.2, 1.0);
@@ -1327,7 +1327,7 @@ fn mass_ratios_up_to_1e12_extended() {
 // 6. Units
 
 /// One physical scene in m and kg, with densities of every kind.
-fn steel_assembly(rng: &mut Rng) -> Scene {
+pub(crate) fn steel_assembly(rng: &mut Rng) -> Scene {
     let mut parts = Vec::new();
     for _ in 0..3 {
         let size = [
@@ -1450,7 +1450,7 @@ fn the_same_body_in_any_units_extended() {
 
 /// Parts that a quarter turn maps exactly: placed by edges, from/to, points,
 /// unrotated boxes.
-fn turnable_assembly(rng: &mut Rng) -> Scene {
+pub(crate) fn turnable_assembly(rng: &mut Rng) -> Scene {
     let mut parts = Vec::new();
     for k in 0..6 {
         let rot = rng.rotation();

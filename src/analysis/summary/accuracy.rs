@@ -91,6 +91,7 @@ pub(super) fn summarize(
         short = shortfalls(&summary, accuracy.rtol);
     }
     summary.rtol = accuracy.rtol;
+    summary.requested = accuracy.precision;
     summary.accuracy_warnings = short
         .into_iter()
         .map(|s| s.warning(summary.precision, accuracy.rtol))
@@ -125,10 +126,11 @@ impl Shortfall {
                 self.quantity, self.bound
             )
         } else {
-            let relative = if self.value == 0.0 {
-                String::new()
+            let ratio = self.bound / self.value.abs();
+            let relative = if ratio.is_finite() {
+                format!(" ({ratio:.1e} of it)")
             } else {
-                format!(" ({:.1e} of it)", self.bound / self.value.abs())
+                String::new()
             };
             format!(
                 "`{}` = {:e} {} is within ±{:.2e} {}{relative}",
