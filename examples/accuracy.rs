@@ -11,6 +11,7 @@
 
 use massprop::analysis::Products;
 use massprop::analysis::summary::{Accuracy, summarize};
+use massprop::bounds;
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
 use massprop::model::Model;
@@ -30,6 +31,10 @@ enum Method {
     /// eigen solver: what `standard` would be without compensation.
     Plain,
     Mode(Precision),
+    /// `--precision auto` (the default): standard with its error bounds,
+    /// and extended too where a bound exceeds --rtol; `true` when it does
+    /// for the scene (found by a run before timing).
+    Auto(bool),
 }
 
 impl Method {
@@ -39,6 +44,7 @@ impl Method {
             Method::Plain => "f64, about the centre, no compensation",
             Method::Mode(Precision::Standard) => "massprop standard",
             Method::Mode(Precision::Extended) => "massprop extended",
+            Method::Auto(_) => "massprop auto",
         }
     }
     fn short(self) -> &'static str {
@@ -47,16 +53,31 @@ impl Method {
             Method::Plain => "plain",
             Method::Mode(Precision::Standard) => "standard",
             Method::Mode(Precision::Extended) => "extended",
+            Method::Auto(false) => "auto → standard",
+            Method::Auto(true) => "auto → extended",
         }
     }
 }
 
-const METHODS: [Method; 4] = [
+const METHODS: [Method; 5] = [
     Method::Origin,
     Method::Plain,
     Method::Mode(Precision::Standard),
     Method::Mode(Precision::Extended),
+    Method::Auto(false),
 ];
+
+/// Which arithmetic `auto` chooses for a model.
+fn auto_escalates(model: &Model) -> bool {
+    let s = summarize(
+        model,
+        &model.analysis,
+        Products::Tensor,
+        &Accuracy::default(),
+    )
+    .expect("a valid scene");
+    s.precision == Precision::Extended
+}
 
 /// Inertia about the centre of mass and principal moments (ascending), SI.
 struct Result {
@@ -138,6 +159,19 @@ fn run(model: &Model, method: Method) -> Result {
                 moments: s.principal_moments,
             }
         }
+        Method::Auto(_) => {
+            let s = summarize(
+                model,
+                &model.analysis,
+                Products::Tensor,
+                &Accuracy::default(),
+            )
+            .expect("a valid scene");
+            Result {
+                inertia: s.inertia_com,
+                moments: s.principal_moments,
+            }
+        }
         _ => baseline(model, method),
     }
 }
@@ -148,6 +182,26 @@ fn work(model: &Model, method: Method) {
         Method::Mode(p) => {
             let body = compose::compose(model, p);
             black_box(compose::principal(&body.second_moment, p));
+        }
+        // The same work with the error bounds of both, in standard, and
+        // again in extended where auto goes on.
+        Method::Auto(escalates) => {
+            let modes: &[Precision] = if escalates {
+                &[Precision::Standard, Precision::Extended]
+            } else {
+                &[Precision::Standard]
+            };
+            for &p in modes {
+                let (body, error) = compose::compose_bounded(model, p);
+                let principal = compose::principal(&body.second_moment, p).expect("converges");
+                let c = body.second_moment.map(|r| r.map(|x| x.f64()));
+                black_box(bounds::eigen(
+                    &c,
+                    &error.second_moment,
+                    &principal.solved(),
+                    p,
+                ));
+            }
         }
         _ => {
             black_box(baseline(model, method));
@@ -233,9 +287,14 @@ fn svg(rows: &[Row]) -> String {
         r#"<text transform="translate(16 {}) rotate(-90)" text-anchor="middle">worst relative error (inertia or a principal moment)</text>"#,
         (t + h - b) / 2.0
     );
-    let colors = ["#d62728", "#ff7f0e", "#1f77b4", "#2ca02c"];
+    let colors = ["#d62728", "#ff7f0e", "#1f77b4", "#2ca02c", "#9467bd"];
     for (i, m) in METHODS.iter().enumerate() {
-        for row in rows.iter().filter(|r| r.method == *m) {
+        // Auto's rows, whichever arithmetic it chose, share a colour.
+        let kind = |m: Method| match m {
+            Method::Auto(_) => Method::Auto(false),
+            m => m,
+        };
+        for row in rows.iter().filter(|r| kind(r.method) == kind(*m)) {
             let e = row.inertia_err.max(row.worst_moment_err);
             let _ = writeln!(
                 s,
@@ -256,7 +315,10 @@ fn svg(rows: &[Row]) -> String {
             colors[i],
             w - r + 22.0,
             y + 4.0,
-            m.short()
+            match m {
+                Method::Auto(_) => "auto",
+                m => m.short(),
+            }
         );
     }
     let _ = writeln!(s, "</svg>");
@@ -296,6 +358,10 @@ fn main() {
         };
         let pr = exact.principal();
         for method in METHODS {
+            let method = match method {
+                Method::Auto(_) => Method::Auto(auto_escalates(&model)),
+                m => m,
+            };
             let res = run(&model, method);
             let inertia_err = reference::rel_frobenius(&res.inertia, &exact.inertia);
             let worst_moment_err = (0..3)

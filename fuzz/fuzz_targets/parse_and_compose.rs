@@ -23,6 +23,7 @@
 use libfuzzer_sys::fuzz_target;
 use massprop::Settings;
 use massprop::analysis::check;
+use massprop::analysis::summary::Accuracy;
 use massprop::compose::Precision;
 use massprop::model::fast;
 use massprop::model::raw::RawFile;
@@ -140,11 +141,17 @@ fuzz_target!(|data: &[u8]| {
     }
     let top = write_files(&files);
     let top = top.to_str().expect("the scratch path is UTF-8");
-    for precision in [Precision::Standard, Precision::Extended] {
+    for accuracy in [
+        Accuracy::fixed(Precision::Standard),
+        Accuracy::fixed(Precision::Extended),
+        Accuracy::default(),
+    ] {
+        let precision = accuracy.precision;
         // The pipeline every command runs: read, parse (includes from
-        // disk), resolve, compose.
+        // disk), resolve, compose (and, with `auto`, compose again where a
+        // bound asks).
         let settings = Settings {
-            precision,
+            accuracy,
             ..Settings::default()
         };
         let loaded = match massprop::load(top, &settings) {

@@ -2,6 +2,7 @@
 //! another link on a 2-core machine.
 
 mod auto;
+mod bounds;
 mod check;
 mod cli;
 mod common;
