@@ -10,7 +10,7 @@
 //! it; errors are exact (the reference is rational arithmetic).
 
 use massprop::analysis::Products;
-use massprop::analysis::summary::{Accuracy, summarize};
+use massprop::analysis::summary::{Accuracy, Summary, summarize};
 use massprop::bounds;
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
@@ -67,16 +67,14 @@ const METHODS: [Method; 5] = [
     Method::Auto(false),
 ];
 
+/// massprop's report of a model, in the accuracy asked for.
+fn summary(model: &Model, accuracy: &Accuracy) -> Summary {
+    summarize(model, &model.analysis, Products::Tensor, accuracy).expect("a valid scene")
+}
+
 /// Which arithmetic `auto` chooses for a model.
 fn auto_escalates(model: &Model) -> bool {
-    let s = summarize(
-        model,
-        &model.analysis,
-        Products::Tensor,
-        &Accuracy::default(),
-    )
-    .expect("a valid scene");
-    s.precision == Precision::Extended
+    summary(model, &Accuracy::default()).precision == Precision::Extended
 }
 
 /// Inertia about the centre of mass and principal moments (ascending), SI.
@@ -145,34 +143,15 @@ fn baseline(model: &Model, method: Method) -> Result {
 }
 
 fn run(model: &Model, method: Method) -> Result {
-    match method {
-        Method::Mode(p) => {
-            let s = summarize(
-                model,
-                &model.analysis,
-                Products::Tensor,
-                &Accuracy::fixed(p),
-            )
-            .expect("a valid scene");
-            Result {
-                inertia: s.inertia_com,
-                moments: s.principal_moments,
-            }
-        }
-        Method::Auto(_) => {
-            let s = summarize(
-                model,
-                &model.analysis,
-                Products::Tensor,
-                &Accuracy::default(),
-            )
-            .expect("a valid scene");
-            Result {
-                inertia: s.inertia_com,
-                moments: s.principal_moments,
-            }
-        }
-        _ => baseline(model, method),
+    let accuracy = match method {
+        Method::Mode(p) => Accuracy::fixed(p),
+        Method::Auto(_) => Accuracy::default(),
+        _ => return baseline(model, method),
+    };
+    let s = summary(model, &accuracy);
+    Result {
+        inertia: s.inertia_com,
+        moments: s.principal_moments,
     }
 }
 

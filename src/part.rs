@@ -391,17 +391,8 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
             }
             let rho = error::turn_error(orientation, &r.map(|row| row.map(T::f64)));
             let spread: f64 = d.iter().map(|x| x.f64().abs()).sum();
-            let own = Own {
-                mass: mu,
-                kappa: kappa + error::TURN,
-                mag: std::array::from_fn(|a| j[a][a].f64().abs()),
-                rot: if rho > 0.0 {
-                    (2.0 * rho + 1.0) * spread
-                } else {
-                    0.0
-                },
-                diagonal: false,
-            };
+            let mag = std::array::from_fn(|a| j[a][a].f64().abs());
+            let own = Own::turned(mu, kappa + error::TURN, mag, rho, spread);
             return (j, own);
         }
         Place::Edges { edges, .. } => {
@@ -462,17 +453,7 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
                     .flat_map(|k| (0..3).filter(move |l| *l != k).map(move |l| (k, l)))
                     .map(|(k, l)| inertia[k][l].abs())
                     .sum::<f64>();
-            let own = Own {
-                mass: mu,
-                kappa: mu + error::GIVEN,
-                mag: v.map(|x| x * x),
-                rot: if rho > 0.0 {
-                    (2.0 * rho + 1.0) * total
-                } else {
-                    0.0
-                },
-                diagonal: false,
-            };
+            let own = Own::turned(mu, mu + error::GIVEN, v.map(|x| x * x), rho, total);
             return (j, own);
         }
     }

@@ -35,6 +35,26 @@ pub struct Own {
     pub diagonal: bool,
 }
 
+impl Own {
+    /// A turned part's: its local moments' errors (`kappa` units of
+    /// `mag`), and its rotation matrix's own error of `rho` units per entry
+    /// (`turn_error`), which moves (2ρ + 1) units of `spread`, the local
+    /// moments' total magnitude, into every entry.
+    pub fn turned(mass: f64, kappa: f64, mag: [f64; 3], rho: f64, spread: f64) -> Own {
+        Own {
+            mass,
+            kappa,
+            mag,
+            rot: if rho > 0.0 {
+                (2.0 * rho + 1.0) * spread
+            } else {
+                0.0
+            },
+            diagonal: false,
+        }
+    }
+}
+
 /// Roundings of a shape's local second moments beyond its mass's: m a²/12
 /// (3: a², m·, /12), m(R² + r²)/4 (4), the sphere's m R²/5 · (1 + ρ + … +
 /// ρ⁴)/(1 + ρ + ρ²) (≤ 18: ρ = r/R moves the ratio by at most its own

@@ -8,29 +8,12 @@ use crate::stress::{Rng, every_shape, steel_assembly, turnable_assembly, twelve_
 use massprop_support::num_traits::Signed;
 use massprop_support::reference::{self as r, Amount, Part, Scene};
 use serde_json::Value;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 const RTOL: f64 = 1e-12;
 
-/// `massprop report FILE --format json ARGS…` on `text`: the JSON and what
-/// went to standard error.
+/// `massprop report` on `text` with `args`: the JSON and standard error.
 fn run(text: &str, args: &[&str]) -> (Value, String) {
-    static COUNT: AtomicUsize = AtomicUsize::new(0);
-    let path = std::env::temp_dir().join(format!(
-        "massprop-auto-{}-{}.toml",
-        std::process::id(),
-        COUNT.fetch_add(1, Ordering::Relaxed)
-    ));
-    std::fs::write(&path, text).unwrap();
-    let mut argv = vec!["massprop", "report", "--format", "json"];
-    argv.extend(args);
-    argv.push(path.to_str().unwrap());
-    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
-    let out = massprop::run(&cli);
-    std::fs::remove_file(&path).ok();
-    let out = out.unwrap_or_else(|d| panic!("{d}\nfor:\n{text}"));
-    let v = serde_json::from_str(&out.stdout.text()).expect("stdout is JSON");
-    (v, out.stderr)
+    crate::common::report_json(text, args)
 }
 
 fn num(v: &Value) -> f64 {

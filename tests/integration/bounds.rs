@@ -9,23 +9,9 @@ use crate::stress::{Rng, every_shape, twelve_boxes};
 use massprop_support::num_traits::Signed;
 use massprop_support::reference::{self as r, Q, Scene};
 use serde_json::Value;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 fn run(scene: &Scene, args: &[&str]) -> Value {
-    static COUNT: AtomicUsize = AtomicUsize::new(0);
-    let path = std::env::temp_dir().join(format!(
-        "massprop-bounds-{}-{}.toml",
-        std::process::id(),
-        COUNT.fetch_add(1, Ordering::Relaxed)
-    ));
-    std::fs::write(&path, r::to_toml(scene)).unwrap();
-    let mut argv = vec!["massprop", "report", "--format", "json"];
-    argv.extend(args);
-    argv.push(path.to_str().unwrap());
-    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
-    let out = massprop::run(&cli);
-    std::fs::remove_file(&path).ok();
-    serde_json::from_str(&out.unwrap().stdout.text()).unwrap()
+    crate::common::report_json(&r::to_toml(scene), args).0
 }
 
 fn num(v: &Value) -> f64 {

@@ -52,3 +52,25 @@ pub fn assert_refused(out: &std::process::Output, args: &[&str]) {
         "{args:?}: {stderr}"
     );
 }
+
+/// `massprop report --format json ARGS… FILE` on `text`, in process: the
+/// JSON and what went to standard error.
+pub fn report_json(text: &str, args: &[&str]) -> (serde_json::Value, String) {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    static COUNT: AtomicUsize = AtomicUsize::new(0);
+    let path = std::env::temp_dir().join(format!(
+        "massprop-report-{}-{}.toml",
+        std::process::id(),
+        COUNT.fetch_add(1, Ordering::Relaxed)
+    ));
+    std::fs::write(&path, text).unwrap();
+    let mut argv = vec!["massprop", "report", "--format", "json"];
+    argv.extend(args);
+    argv.push(path.to_str().unwrap());
+    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+    let out = massprop::run(&cli);
+    std::fs::remove_file(&path).ok();
+    let out = out.unwrap_or_else(|d| panic!("{d}\nfor:\n{text}"));
+    let v = serde_json::from_str(&out.stdout.text()).expect("stdout is JSON");
+    (v, out.stderr)
+}
