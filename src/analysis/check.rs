@@ -91,6 +91,9 @@ pub struct FileResult {
     pub checks: Vec<CheckResult>,
     /// Physical validity failures (empty when valid).
     pub validity: Vec<String>,
+    /// The arithmetic the file was computed in (absent when invalid).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub precision: Option<crate::compose::Precision>,
     /// The values whose error bound exceeds `--rtol` (`summary::accuracy`);
     /// absent when there are none.
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -170,6 +173,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         error: None,
         checks,
         validity,
+        precision: Some(loaded.summary.precision),
         accuracy_warnings: loaded.summary.accuracy_warnings.clone(),
     }
 }

@@ -137,6 +137,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             error: Some(d.to_string()),
             checks: Vec::new(),
             validity: Vec::new(),
+            precision: None,
             accuracy_warnings: Vec::new(),
         }
     };

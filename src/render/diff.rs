@@ -41,9 +41,18 @@ struct JsonDiff<'a> {
     products_convention: Products,
     units: JsonUnits,
     tolerance: f64,
+    /// The arithmetic each side was computed in (`--precision auto`
+    /// chooses per file).
+    precision: JsonPrecision,
     changed: bool,
     quantities: &'a [QuantityDiff],
     parts: JsonParts<'a>,
+}
+
+#[derive(Serialize)]
+struct JsonPrecision {
+    old: crate::compose::Precision,
+    new: crate::compose::Precision,
 }
 
 /// The diff as one JSON object, SI.
@@ -60,6 +69,10 @@ pub fn json(d: &Diff) -> String {
             inertia: "kg*m^2",
         },
         tolerance: d.tol,
+        precision: JsonPrecision {
+            old: d.old.loaded.summary.precision,
+            new: d.new.loaded.summary.precision,
+        },
         changed: d.changed,
         quantities: &d.quantities,
         parts: JsonParts {

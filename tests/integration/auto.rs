@@ -329,3 +329,39 @@ fn rtol_outside_its_range_is_refused() {
         assert!(text.contains("--rtol"), "{bad}: {text}");
     }
 }
+
+/// `check` and `diff` compose as `report` does, and say which arithmetic
+/// each file was computed in; `check` names a value short of --rtol in its
+/// JSON without failing (an expectation's own tolerance decides that).
+#[test]
+fn check_and_diff_say_which_arithmetic_each_file_used() {
+    let out = crate::common::massprop(&["check", "--format", "json", "shapes/flywheel.toml"]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["files"][0]["precision"], "standard", "{v}");
+    assert!(v["files"][0].get("accuracy_warnings").is_none(), "{v}");
+    let f = "shapes/robot-arm.toml";
+    let out = crate::common::massprop(&["diff", "--format", "json", f, f]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["precision"]["old"], "standard", "{v}");
+    assert_eq!(v["precision"]["new"], "standard", "{v}");
+    // A turned 1e-9-slender needle at --rtol 1e-13: extended, and named.
+    let dir = crate::common::scratch("auto", "check");
+    let needle = dir.join("needle.toml");
+    std::fs::write(
+        &needle,
+        "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1e-9, 1e-9]\ncenter = [0, 0, 0]\nrotation = { axis = [1, 2, 3], degrees = 30 }\n",
+    )
+    .unwrap();
+    let needle = needle.to_str().unwrap();
+    let out = crate::common::massprop(&["check", "--format", "json", needle]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(out.status.code(), Some(0), "{v}");
+    assert_eq!(v["files"][0]["precision"], "extended", "{v}");
+    let w = &v["files"][0]["accuracy_warnings"];
+    assert_eq!(w[0]["quantity"], "principal_moments[0]", "{v}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.starts_with(&format!("warning: {needle}: ")),
+        "{stderr}"
+    );
+}
