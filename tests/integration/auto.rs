@@ -344,7 +344,8 @@ fn check_and_diff_say_which_arithmetic_each_file_used() {
     let v: Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["precision"]["old"], "standard", "{v}");
     assert_eq!(v["precision"]["new"], "standard", "{v}");
-    // A turned 1e-9-slender needle at --rtol 1e-13: extended, and named.
+    // A turned 1e-9-slender needle: extended, and its smallest moment named
+    // (double-double certifies it to ~3e-12, not the default 1e-12).
     let dir = crate::common::scratch("auto", "check");
     let needle = dir.join("needle.toml");
     std::fs::write(
