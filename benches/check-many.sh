@@ -27,16 +27,9 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/massprop-check-many.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 
-need() { # need COMMAND PACKAGE
-    if ! command -v "$1" > /dev/null 2>&1; then
-        echo "== installing $2 (for $1)" >&2
-        apt-get update -q > /dev/null
-        apt-get install -y -q "$2" > /dev/null
-    fi
-}
-need hyperfine hyperfine
-[ -x /usr/bin/time ] || need /usr/bin/time time
-command -v python3 > /dev/null || { echo "error: python3 is needed to generate the part files" >&2; exit 2; }
+# shellcheck source=benches/lib.sh
+source "$repo/benches/lib.sh"
+need_bench_tools "the part files"
 
 echo "== build (cargo build --release --locked)" >&2
 (cd "$repo" && cargo build --release --locked --quiet)
