@@ -313,8 +313,9 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
     };
     let coupled: Vec<usize> = (0..3).filter(|j| !free[*j]).collect();
     // For the relative bound, a priori: each rotation perturbs the scaled
-    // matrix by a few units.
-    let solver = JACOBI * u * p.rotations as f64;
+    // matrix by a few units, and the stopping test drops off-diagonal
+    // entries up to a unit of √(a_pp a_qq) (three at most).
+    let solver = JACOBI * u * p.rotations as f64 + 3.0 * u;
     // The solver's error as a perturbation F of C, a posteriori
     // (`backward_error`): typically a unit of ‖C‖ where an a priori count
     // of its rotations gives dozens.
