@@ -26,18 +26,14 @@ use crate::part::Own;
 use nalgebra::Vector3;
 use serde::Serialize;
 
-/// Unit roundoff of f64, 2⁻⁵³.
-pub const U64: f64 = f64::EPSILON / 2.0;
+pub use crate::part::error::U64;
 
-/// The unit in which the arithmetic's roundings are counted: 2⁻⁵³ for f64;
-/// for double-double 7 · 2⁻¹⁰⁶, its worst operation (the product of
-/// `numeric::DD`, Joldes, Muller and Popescu 2017, Algorithm 10, within
-/// 7u²; a sum rounds by 3u²; the division's three quotient digits and the
-/// square root's Newton step by less).
+/// The unit in which the arithmetic's roundings are counted
+/// (`part::error`): 2⁻⁵³ for f64, 7·2⁻¹⁰⁶ for double-double.
 pub fn unit(p: Precision) -> f64 {
     match p {
         Precision::Standard => U64,
-        Precision::Extended => 7.0 * U64 * U64,
+        Precision::Extended => crate::part::error::U_DD,
     }
 }
 

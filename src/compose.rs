@@ -72,7 +72,7 @@ fn compose_standard<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
         // rest of a centroid formed from a corner and edges.
         let d: [f64; 3] = std::array::from_fn(|i| (c[i].hi - c0[i]) + c[i].lo);
         let (own, error): (M3<f64>, _) = p.own_second_moment_bounded(m);
-        let off = crate::part::error::centroid_error(&p.spec.place, &c.map(|x| x.hi));
+        let off = crate::part::error::centroid_error(&p.spec, &c.map(|x| x.hi));
         tally.add(m, d, off, &error);
         for i in 0..3 {
             // (m d) dᵀ, not (d dᵀ) m: d dᵀ alone can underflow or overflow.
@@ -136,7 +136,7 @@ fn compose_extended<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
         let cen = p.centroid();
         let d: [DD; 3] = std::array::from_fn(|i| cen[i] - c0[i]);
         let (own, error): (M3<DD>, _) = p.own_second_moment_bounded(m);
-        let off = crate::part::error::centroid_error(&p.spec.place, &cen.map(|x| x.hi));
+        let off = crate::part::error::centroid_error(&p.spec, &cen.map(|x| x.hi));
         tally.add(m.f64(), d.map(DD::f64), off, &error);
         for i in 0..3 {
             let md = m * d[i];
@@ -468,6 +468,7 @@ mod tests {
                                 orientation: Orientation::Quaternion(q.map(|x| x / norm)),
                             },
                             removed: false,
+                            placed: Default::default(),
                         },
                         span: 0..0,
                         assembly: Vec::new(),

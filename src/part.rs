@@ -181,6 +181,35 @@ pub struct Spec {
     pub place: Place,
     /// `remove = true`: a cut-out, composed with negative mass.
     pub removed: bool,
+    /// How far the frames of the sub-assemblies the part is in moved its
+    /// numbers by rounding (`model::include::Frame::place`); none for a
+    /// part of the file itself.
+    pub placed: Placed,
+}
+
+/// The rounding of a part's numbers by the frames that placed it, for its
+/// error bounds (`part::error`): `units` of f64's unit roundoff, relative,
+/// in its sizes, edges, mass or density and tensor entries; `at`, absolute
+/// (file units), in each coordinate of its position. Rounded up to f32
+/// (they are bounds; a part stays small).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Placed {
+    pub units: f32,
+    pub at: f32,
+}
+
+impl Placed {
+    /// `units` and `at`, each rounded up to f32.
+    pub fn new(units: f64, at: f64) -> Placed {
+        let up = |x: f64| {
+            let y = x as f32;
+            if f64::from(y) < x { y.next_up() } else { y }
+        };
+        Placed {
+            units: up(units),
+            at: up(at),
+        }
+    }
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -340,7 +369,8 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
 /// `own_second_moment`, with the error model of the arithmetic that formed
 /// it (`bounds::part`): the error bounds' share of each part.
 pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
-    let mu = error::mass_error(shape, spec);
+    // The frames' rounding of the part's numbers, on top of its own.
+    let mu = error::mass_error(shape, spec) + error::placed_units::<T>(&spec.place, &spec.placed);
     let outer = |j: &M3<T>| Own {
         mass: mu,
         kappa: mu + error::OUTER,

@@ -117,6 +117,7 @@ impl Frame {
     /// frame above it: a copy of the part per frame was a quarter of the
     /// time of a report of 2²⁰ instances).
     pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
+        let reach = reach(&s.place) * self.length;
         // A density per volume, area or length scales with that power.
         let k = shape.info().density.map_or(0, |d| d.length_power);
         match &mut s.mass {
@@ -152,6 +153,43 @@ impl Frame {
                 self.turn(orientation);
             }
         }
+        s.placed = self.rounding(s.placed, reach);
+    }
+
+    /// What placing a part through this frame adds to its rounding
+    /// (`part::Placed`): none to its sizes when the frame neither turns
+    /// (but by quarter turns, which are exact) nor scales; else a product
+    /// per size and per mass, density (with its power of the length) or
+    /// tensor entry, and an edge's turn (R w, three products summed, and
+    /// the turn's own error ρ): 12 + 2ρ units. A position error already
+    /// there is turned (×3 in the worst direction unless the turn is
+    /// exact) and scaled; the new one is R (p·L) + origin's rounding,
+    /// (4 + ρ) units of |origin| + |p·L|₁ (`reach`), or one of that when
+    /// the frame is exact.
+    fn rounding(&self, old: crate::part::Placed, reach: f64) -> crate::part::Placed {
+        let rho = crate::part::error::turn_error(&self.orientation, &self.r);
+        let exact = rho == 0.0 && self.length == 1.0 && self.mass == 1.0;
+        let grow = if rho == 0.0 { 1.0 } else { 3.0 };
+        let size = if exact { 0.0 } else { 12.0 + 2.0 * rho };
+        let ops = if exact { 1.0 } else { 4.0 + rho };
+        let origin = self.origin.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        crate::part::Placed::new(
+            f64::from(old.units) + size,
+            f64::from(old.at) * self.length * grow
+                + ops * crate::part::error::U64 * (origin + reach),
+        )
+    }
+}
+
+/// The largest |p|₁ of the points a placement gives (its centre, corner,
+/// ends or vertices), before a frame moves them.
+fn reach(place: &Place) -> f64 {
+    let norm = |p: &[f64; 3]| p.iter().map(|x| x.abs()).sum::<f64>();
+    match place {
+        Place::Centered { center, .. } | Place::Given { center, .. } => norm(center),
+        Place::Edges { corner, .. } => norm(corner),
+        Place::FromTo { from, to } => norm(from).max(norm(to)),
+        Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
     }
 }
 

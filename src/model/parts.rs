@@ -119,6 +119,7 @@ impl Ctx<'_> {
             mass,
             place,
             removed: matches!(&p.remove, Some(r) if *r.get_ref()),
+            placed: Default::default(),
         })
     }
 

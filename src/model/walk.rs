@@ -127,6 +127,7 @@ impl Model {
                     mass: crate::part::MassSpec::Given(0.0),
                     place: crate::part::Place::Vertices([[0.0; 3]; 3]),
                     removed: false,
+                    placed: Default::default(),
                 },
                 assembly: Vec::new(),
                 span: 0..0,

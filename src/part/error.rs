@@ -13,9 +13,50 @@
 //! checks them (tests/integration/stress.rs, every shape, both modes).
 
 use super::{MassSpec, Place, Spec};
-use crate::numeric::M3;
+use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
 use crate::shapes::Shape;
+
+/// Unit roundoff of f64, 2⁻⁵³.
+pub const U64: f64 = f64::EPSILON / 2.0;
+
+/// The unit in which double-double's roundings are counted: 7·2⁻¹⁰⁶, its
+/// worst operation (the product of `numeric::DD`, Joldes, Muller and
+/// Popescu 2017, Algorithm 10, within 7u²; a sum rounds by 3u²; the
+/// division's three quotient digits and the square root's Newton step by
+/// less).
+pub const U_DD: f64 = 7.0 * U64 * U64;
+
+/// The unit of the arithmetic `T`.
+pub fn unit_of<T: Real>() -> f64 {
+    if T::EPS < 1e-20 { U_DD } else { U64 }
+}
+
+/// Units of the arithmetic `T` that a part's rounding by the frames that
+/// placed it (`Placed`, in f64 units) comes to: its sizes' relative
+/// rounding, and for a shape its points span (a triangle, a rod from/to)
+/// their positions' error over its shortest edge, twice (a second moment
+/// is quadratic in its sizes).
+pub fn placed_units<T: Real>(place: &Place, placed: &super::Placed) -> f64 {
+    if placed.units == 0.0 && placed.at == 0.0 {
+        return 0.0;
+    }
+    let length = |a: &[f64; 3], b: &[f64; 3]| {
+        (0..3)
+            .map(|i| (a[i] - b[i]) * (a[i] - b[i]))
+            .sum::<f64>()
+            .sqrt()
+    };
+    let shortest = match place {
+        Place::Vertices(v) => length(&v[0], &v[1])
+            .min(length(&v[1], &v[2]))
+            .min(length(&v[2], &v[0])),
+        Place::FromTo { from, to } => length(from, to),
+        _ => f64::INFINITY,
+    };
+    let spanned = 2.0 * f64::from(placed.at) / (U64 * shortest);
+    2.0 * (f64::from(placed.units) + spanned) * U64 / unit_of::<T>()
+}
 
 /// The error of a part's own second moment C (about its centroid):
 /// |δC_jk| ≤ unit · (kappa · √(mag_j mag_k) + rot), with `mag` non-negative
@@ -128,15 +169,18 @@ fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
 /// it in double-double, may lie from the exact centroid: nothing where it
 /// is a number of the file (a centre) or a sum of two halves (from/to), or
 /// where the vertices or the edges do not move it off the corner along
-/// that axis; else 2⁻⁹⁸ of it (a few double-double operations).
-pub fn centroid_error(place: &Place, centroid: &[f64; 3]) -> [f64; 3] {
+/// that axis; else 2⁻⁹⁸ of it (a few double-double operations); and the
+/// rounding of its position by the frames that placed it (`Placed::at`).
+pub fn centroid_error(spec: &Spec, centroid: &[f64; 3]) -> [f64; 3] {
+    let place = &spec.place;
+    let at = f64::from(spec.placed.at);
     let inexact = |j: usize| match place {
         Place::Centered { .. } | Place::Given { .. } | Place::FromTo { .. } => false,
         Place::Edges { edges, .. } => edges.iter().any(|e| e[j] != 0.0),
         Place::Vertices(v) => !(v[0][j] == v[1][j] && v[1][j] == v[2][j]),
     };
     std::array::from_fn(|j| {
-        if inexact(j) {
+        at + if inexact(j) {
             centroid[j].abs() * 3.155_443_620_884_047e-30
         } else {
             0.0

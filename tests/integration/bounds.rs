@@ -146,3 +146,100 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
     }
     honest.finish();
 }
+
+/// Parts of a sub-assembly in millimetres and grams, placed by an include
+/// turned by a general quaternion, off the origin: the frame rounds every
+/// number of every part (`Frame::place`), and the bounds must count it.
+/// The exact body is formed here in rationals: each part of the included
+/// file exactly (`exact_part`, SI), turned and moved exactly.
+#[test]
+fn bounds_count_the_rounding_of_an_included_frame() {
+    use massprop_support::reference::{Length, Mass};
+    let mut rng = Rng::new(57);
+    let mut honest = Honest::default();
+    for trial in 0..3 {
+        let sub = every_shape(&mut rng).in_units(Length::Mm, Mass::G);
+        let quaternion = rng.quaternion();
+        let origin = [0.3, -1.7, 2.9].map(|x: f64| x * (1.0 + trial as f64));
+        let dir = crate::common::scratch("bounds", &format!("frame-{trial}"));
+        std::fs::write(dir.join("sub.toml"), r::to_toml(&sub)).unwrap();
+        let top = format!(
+            "[[part]]\nname = \"arm\"\ninclude = \"sub.toml\"\norigin = {origin:?}\nrotation = {{ quaternion = {quaternion:?} }}\n"
+        );
+        let top_path = dir.join("top.toml");
+        std::fs::write(&top_path, &top).unwrap();
+        // Exact: each part in SI, turned by R(q) and moved by the origin.
+        let rot = r::rotation(&quaternion.map(r::q));
+        let o = origin.map(r::q);
+        let parts: Vec<r::ExactPart> = sub
+            .parts
+            .iter()
+            .map(|p| {
+                let e = r::exact_part(p, sub.length, sub.mass);
+                let c = r::mvec(&rot, &e.center);
+                r::ExactPart {
+                    mass: e.mass,
+                    center: std::array::from_fn(|i| &o[i] + &c[i]),
+                    second_moment: r::mmul(&r::mmul(&rot, &e.second_moment), &r::transpose(&rot)),
+                }
+            })
+            .collect();
+        let mass: Q = parts.iter().map(|p| p.mass.clone()).sum();
+        let com: r::V3 = std::array::from_fn(|i| {
+            parts.iter().map(|p| &p.mass * &p.center[i]).sum::<Q>() / &mass
+        });
+        let c: r::M3 = std::array::from_fn(|j| {
+            std::array::from_fn(|k| {
+                parts
+                    .iter()
+                    .map(|p| {
+                        let (dj, dk) = (&p.center[j] - &com[j], &p.center[k] - &com[k]);
+                        &p.second_moment[j][k] + &p.mass * dj * dk
+                    })
+                    .sum::<Q>()
+            })
+        });
+        let inertia = r::inertia_of(&c);
+        let moments = r::principal(&inertia).moments;
+        for p in ["standard", "extended"] {
+            let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from([
+                "massprop",
+                "report",
+                "--format",
+                "json",
+                "--precision",
+                p,
+                top_path.to_str().unwrap(),
+            ])
+            .unwrap();
+            let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}"));
+            let v: Value = serde_json::from_str(&out.stdout.text()).unwrap();
+            let b = &v["error_bounds"];
+            let what = |q: &str| format!("frame trial {trial}, {p}: {q}");
+            honest.check(what("mass"), &v["mass"], &mass, &b["mass"]);
+            for j in 0..3 {
+                honest.check(
+                    what(&format!("center_of_mass[{j}]")),
+                    &v["center_of_mass"][j],
+                    &com[j],
+                    &b["center_of_mass"][j],
+                );
+                honest.check(
+                    what(&format!("principal_moments[{j}]")),
+                    &v["principal_moments"][j],
+                    &moments[j],
+                    &b["principal_moments"][j],
+                );
+                for k in 0..3 {
+                    honest.check(
+                        what(&format!("inertia_com[{j}][{k}]")),
+                        &v["inertia_com"][j][k],
+                        &inertia[j][k],
+                        &b["inertia_com"][j][k],
+                    );
+                }
+            }
+        }
+    }
+    honest.finish();
+}
