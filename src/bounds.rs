@@ -83,6 +83,12 @@ pub struct Tally {
     coupled_abs: [f64; 3],
     shift_abs: [f64; 6],
     rot: f64,
+    /// Absolute errors a part's centroid brings whatever the arithmetic
+    /// (its double-double rounding, a frame's placement: o, from
+    /// `part::error::centroid_error`): Σ|mᵢ|o_ij in the first moment, and
+    /// Σ|mᵢ|(o_ij|d_ik| + |d_ij|o_ik + o_ij o_ik) in the parallel-axis terms.
+    first_off: [f64; 3],
+    shift_off: [f64; 6],
 }
 
 /// The entries of the upper triangle, in `Tally::shift_w`'s order.
@@ -98,16 +104,24 @@ fn upper(j: usize, k: usize) -> usize {
 
 impl Tally {
     /// One part of mass `m` at offset `d` from the composer's pivot, the
-    /// error of its centroid (`part::error::centroid_error`), its own
-    /// second moment's error model `own`.
+    /// absolute error `off` of its centroid (`part::error::centroid_error`),
+    /// its own second moment's error model `own`.
     #[inline]
-    pub fn add(&mut self, m: f64, d: [f64; 3], centroid: [f64; 3], own: &Own) {
+    pub fn add(&mut self, m: f64, d: [f64; 3], off: [f64; 3], own: &Own) {
         let am = m.abs();
         self.parts += 1.0;
         self.mass_w += own.mass * am;
         self.mass_abs += am;
-        let dm: [f64; 3] = std::array::from_fn(|j| d[j].abs() + centroid[j]);
+        let dm: [f64; 3] = d.map(f64::abs);
         let md = dm.map(|x| am * x);
+        if off != [0.0; 3] {
+            for (f, o) in self.first_off.iter_mut().zip(off) {
+                *f += am * o;
+            }
+            for (i, (j, k)) in UPPER.into_iter().enumerate() {
+                self.shift_off[i] += am * (off[j] * dm[k] + dm[j] * off[k] + off[j] * off[k]);
+            }
+        }
         let w = own.mass + 6.0;
         #[allow(clippy::needless_range_loop)] // six arrays by one index
         for j in 0..3 {
@@ -149,8 +163,9 @@ impl Tally {
         };
         let am = mass.abs();
         let dm = u * self.mass_w + sum(mass, self.mass_abs, n);
-        let ds: [f64; 3] =
-            std::array::from_fn(|j| u * self.first_w[j] + sum(s[j], self.first_abs[j], n));
+        let ds: [f64; 3] = std::array::from_fn(|j| {
+            u * self.first_w[j] + sum(s[j], self.first_abs[j], n) + self.first_off[j]
+        });
         let dc = std::array::from_fn(|j| {
             safe(
                 ds[j] / am
@@ -179,7 +194,8 @@ impl Tally {
                 };
                 let shift = upper(j, k);
                 safe(
-                    u * (own + self.shift_w[shift] + self.rot)
+                    self.shift_off[shift]
+                        + u * (own + self.shift_w[shift] + self.rot)
                         + sum(c[j][k], own_abs + self.shift_abs[shift], 2.0 * n + 1.0)
                         + correction,
                 )
@@ -310,8 +326,9 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
     let coupled: Vec<usize> = (0..3).filter(|j| !free[*j]).collect();
     // For the relative bound, a priori: each rotation perturbs the scaled
     // matrix by a few units, and the stopping test drops off-diagonal
-    // entries up to a unit of √(a_pp a_qq) (three at most).
-    let solver = JACOBI * u * p.rotations as f64 + 3.0 * u;
+    // entries up to 2u √(a_pp a_qq) (three at most: 2√2 u each in the
+    // Frobenius norm).
+    let solver = JACOBI * u * p.rotations as f64 + 9.0 * u;
     // The solver's error as a perturbation F of C, a posteriori
     // (`backward_error`): typically a unit of ‖C‖ where an a priori count
     // of its rotations gives dozens.
@@ -322,7 +339,7 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
             .flat_map(|&j| coupled.iter().map(move |&k| e[j][k])),
     ) + backward;
     let relative = scaled_condition(c, e, &coupled).map(|(eta, low)| (eta + solver) / low);
-    let lambda: [f64; 3] = std::array::from_fn(|i| match axis_of(&p.eigenvectors[i]) {
+    let mut lambda: [f64; 3] = std::array::from_fn(|i| match axis_of(&p.eigenvectors[i]) {
         Some(j) => e[j][j],
         None => {
             let rel = match relative {
@@ -332,12 +349,30 @@ pub fn eigen(c: &M3<f64>, e: &M3<f64>, p: &Solved, precision: Precision) -> Eige
             weyl.min(rel)
         }
     });
+    // Moments are reported sorted, and the exact ones sorted too: where
+    // two eigenvalues' intervals overlap (an uncoupled axis's beside the
+    // coupled block's), their order may differ from the exact one's. Sorting
+    // is a contraction in the largest difference, so each eigenvalue of a
+    // cluster of overlapping intervals takes the cluster's largest bound;
+    // and its axis is not known to be the exact axis of that position.
+    let mut clustered = [false; 3];
+    for _ in 0..2 {
+        for a in 0..3 {
+            for b in a + 1..3 {
+                if (p.lambda[a] - p.lambda[b]).abs() <= lambda[a] + lambda[b] {
+                    let top = lambda[a].max(lambda[b]);
+                    (lambda[a], lambda[b]) = (top, top);
+                    (clustered[a], clustered[b]) = (true, true);
+                }
+            }
+        }
+    }
     let moments = std::array::from_fn(|i| {
         let (a, b) = ((i + 1) % 3, (i + 2) % 3);
         safe(lambda[a] + lambda[b] + 4.0 * u * (p.lambda[a].abs() + p.lambda[b].abs()))
     });
     let axes = std::array::from_fn(|i| {
-        if p.equal.contains(&i) {
+        if p.equal.contains(&i) || clustered[i] {
             return std::f64::consts::FRAC_PI_2;
         }
         if axis_of(&p.eigenvectors[i]).is_some() {
@@ -435,8 +470,16 @@ fn scaled_condition(c: &M3<f64>, e: &M3<f64>, coupled: &[usize]) -> Option<(f64,
         [] | [_] => 1.0,
         [j, k] => 1.0 - scaled(*j, *k).abs() - 4.0 * U64,
         _ => {
+            // det/(3/2)² bounds λ_min below only for a positive definite
+            // matrix: with a unit diagonal, when 1 − a² and det are both
+            // clearly positive (Sylvester).
             let (a, b, d) = (scaled(0, 1), scaled(0, 2), scaled(1, 2));
-            (1.0 + 2.0 * a * b * d - a * a - b * b - d * d - 32.0 * U64) / 2.25
+            let det = 1.0 + 2.0 * a * b * d - a * a - b * b - d * d - 32.0 * U64;
+            if 1.0 - a * a - 4.0 * U64 > 0.0 {
+                det / 2.25
+            } else {
+                0.0
+            }
         }
     };
     (low > 0.0 && eta.is_finite()).then_some((eta, low))

@@ -369,14 +369,21 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
 /// `own_second_moment`, with the error model of the arithmetic that formed
 /// it (`bounds::part`): the error bounds' share of each part.
 pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
-    // The frames' rounding of the part's numbers, on top of its own.
-    let mu = error::mass_error(shape, spec) + error::placed_units::<T>(&spec.place, &spec.placed);
-    let outer = |j: &M3<T>| Own {
-        mass: mu,
-        kappa: mu + error::OUTER,
-        mag: std::array::from_fn(|a| j[a][a].f64().abs()),
-        rot: 0.0,
-        diagonal: false,
+    // The frames' rounding of the part's numbers, on top of its own: its
+    // sizes and mass relative; a shape spanned by vectors the frames
+    // turned numerically (edges, ends, vertices) absolute in every entry,
+    // as a turn's own error is (a component that should be 0 is not).
+    let placed = error::placed_units::<T>(&spec.place, &spec.placed);
+    let mu = error::mass_error(shape, spec) + placed;
+    let outer = |j: &M3<T>| {
+        let mag: [f64; 3] = std::array::from_fn(|a| j[a][a].f64().abs());
+        Own {
+            mass: mu,
+            kappa: mu + error::OUTER,
+            mag,
+            rot: placed * mag.iter().sum::<f64>(),
+            diagonal: false,
+        }
     };
     let zero = T::of(0.0);
     let twelfth = m / T::of(12.0);

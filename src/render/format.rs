@@ -78,13 +78,20 @@ pub fn fmt_bounded(x: f64, bound: f64, scale: f64) -> String {
     if bound == 0.0 || !x.is_finite() || within(x) {
         return fmt_num(x);
     }
-    // x to the digits above the unit 10^last.
+    // x rounded to a multiple of the unit 10^last, to the digits that are
+    // left (0 when it rounds to nothing).
     let shown = |last: f64| {
-        let digits = if x == 0.0 { 0.0 } else { lead(x) - last + 1.0 };
-        if digits < 1.0 {
-            "0".to_string()
+        let unit = 10f64.powf(last);
+        let y = (x / unit).round() * unit;
+        if y == 0.0 || !y.is_finite() {
+            if y.is_finite() {
+                "0".to_string()
+            } else {
+                fmt_num(x)
+            }
         } else {
-            fmt_sig(x, digits.min(f64::from(SHOWN_DIGITS)) as usize)
+            let digits = (lead(y) - last + 1.0).clamp(1.0, f64::from(SHOWN_DIGITS));
+            fmt_sig(y, digits as usize)
         }
     };
     let top = scale.max(x.abs());
@@ -93,7 +100,24 @@ pub fn fmt_bounded(x: f64, bound: f64, scale: f64) -> String {
     }
     // The last digit whose half unit covers the bound.
     let last = (2.0 * bound).log10().ceil();
-    format!("{} ± {}", shown(last), fmt_sig(bound, 1))
+    format!("{} ± {}", shown(last), fmt_bound(bound))
+}
+
+/// A bound to one significant digit, rounded up (a bound shown must still
+/// bound); past 1e308 said so, not rounded to a number beyond f64.
+fn fmt_bound(bound: f64) -> String {
+    if bound > 9e307 {
+        return ">9e307".to_string();
+    }
+    let e = bound.log10().floor();
+    let unit = 10f64.powf(e);
+    let digit = (bound / unit).ceil();
+    // 10 × 10^e is 1 × 10^(e+1); a unit a rounding below the bound, one up.
+    let mut up = digit * unit;
+    if up < bound {
+        up += unit;
+    }
+    fmt_sig(up, 1)
 }
 
 /// A fraction as a percentage to three significant digits (shares and
@@ -335,6 +359,22 @@ pub fn change_percent(r: Option<f64>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_value_shows_only_the_digits_its_bound_guarantees() {
+        // Within half a unit of the sixth digit: all six.
+        assert_eq!(fmt_bounded(0.1234567, 1e-12, 0.1234567), "0.123457");
+        // An entry of a tensor read to its largest entry's resolution,
+        // rounded there (9e-6 on a scale of 1 is 1e-5, not 0).
+        assert_eq!(fmt_bounded(9e-6, 1e-11, 1.0), "1e-5");
+        assert_eq!(fmt_bounded(3e-20, 1e-17, 0.5), "0");
+        // Else the digits left, and the bound rounded up.
+        assert_eq!(fmt_bounded(2.5e-18, 2.07e-15, 2.5e-18), "0 ± 3e-15");
+        assert_eq!(fmt_bounded(1.0, 1.4e-3, 1.0), "1 ± 0.002");
+        assert_eq!(fmt_bounded(123.456789, 0.3, 123.456789), "123 ± 0.3");
+        // A bound beyond f64 is not printed as a number that reads as inf.
+        assert!(fmt_bounded(1.0, f64::MAX, 1.0).ends_with("± >9e307"));
+    }
 
     #[test]
     fn numbers_show_six_significant_digits() {

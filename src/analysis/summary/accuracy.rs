@@ -114,7 +114,7 @@ impl Shortfall {
     fn warning(self, precision: Precision, rtol: f64) -> AccuracyWarning {
         let how = match precision {
             Precision::Extended => {
-                "even in extended precision: the file's numbers do not determine it to that accuracy in double-double arithmetic"
+                "even in extended precision: double-double arithmetic does not certify it to that accuracy for the file's numbers (docs/accuracy.md: where the input, or the placement of a sub-assembly, is the limit)"
             }
             Precision::Standard => {
                 "in standard precision; `--precision auto` or `extended` computes it in double-double"
