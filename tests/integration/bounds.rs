@@ -42,6 +42,20 @@ impl Honest {
         }
     }
 
+    /// Every entry of the tensor `key` of `v` against `exact(j, k)`.
+    fn tensor(&mut self, what: &str, v: &Value, key: &str, exact: &dyn Fn(usize, usize) -> Q) {
+        for j in 0..3 {
+            for k in 0..3 {
+                self.check(
+                    format!("{what}: {key}[{j}][{k}]"),
+                    &v[key][j][k],
+                    &exact(j, k),
+                    &v["error_bounds"][key][j][k],
+                );
+            }
+        }
+    }
+
     fn finish(self) {
         assert!(self.checked > 0);
         eprintln!("worst error/bound {:.3} ({})", self.worst.0, self.worst.1);
@@ -91,15 +105,13 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
                 );
                 let b = &v["error_bounds"];
                 let what = |q: &str| format!("{kind}, trial {trial}, {p}: {q}");
+                honest.tensor(
+                    &format!("{kind}, trial {trial}, {p}"),
+                    &v,
+                    "inertia_ref",
+                    &|j, k| i_ref[j][k].clone(),
+                );
                 for j in 0..3 {
-                    for k in 0..3 {
-                        honest.check(
-                            what(&format!("inertia_ref[{j}][{k}]")),
-                            &v["inertia_ref"][j][k],
-                            &i_ref[j][k],
-                            &b["inertia_ref"][j][k],
-                        );
-                    }
                     honest.check(
                         what(&format!("principal_moments_ref[{j}]")),
                         &v["principal_moments_ref"][j],
@@ -230,15 +242,13 @@ fn bounds_count_the_rounding_of_an_included_frame() {
                     &moments[j],
                     &b["principal_moments"][j],
                 );
-                for k in 0..3 {
-                    honest.check(
-                        what(&format!("inertia_com[{j}][{k}]")),
-                        &v["inertia_com"][j][k],
-                        &inertia[j][k],
-                        &b["inertia_com"][j][k],
-                    );
-                }
             }
+            honest.tensor(
+                &format!("frame trial {trial}, {p}"),
+                &v,
+                "inertia_com",
+                &|j, k| inertia[j][k].clone(),
+            );
         }
     }
     honest.finish();
@@ -275,51 +285,37 @@ fn bounds_hold_where_a_review_found_them_short() {
     // = 0.02 exactly, the rest 0.
     let sub = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0.1, 0, 0]\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0.3, 0, 0]\n";
     let top = "[[part]]\nname = \"far\"\ninclude = \"sub.toml\"\norigin = [1000000, 0, 0]\n";
-    let exact = |j: usize, k: usize| {
-        if j == k && j > 0 {
-            r::frac(1, 50)
-        } else {
-            r::int(0)
+    // A tensor with `yy` and `zz` on its diagonal, 0 elsewhere.
+    let across = |yy: Q| {
+        move |j: usize, k: usize| {
+            if j == k && j > 0 {
+                yy.clone()
+            } else {
+                r::int(0)
+            }
         }
     };
     for p in ["standard", "extended"] {
         let v = report_with_sub("far", top, sub, p);
-        for j in 0..3 {
-            for k in 0..3 {
-                honest.check(
-                    format!("far frame, {p}: inertia_com[{j}][{k}]"),
-                    &v["inertia_com"][j][k],
-                    &exact(j, k),
-                    &v["error_bounds"]["inertia_com"][j][k],
-                );
-            }
-        }
+        honest.tensor(
+            &format!("far frame, {p}"),
+            &v,
+            "inertia_com",
+            &across(r::frac(1, 50)),
+        );
     }
     // A 1 kg rod (0,0,0)→(1,1,0) turned −45° about z: along x, length √2,
     // so I_yy = I_zz = 2/12 and every other entry 0.
     let sub = "[[part]]\nshape = \"rod\"\nmass = 1\nfrom = [0, 0, 0]\nto = [1, 1, 0]\n";
     let top = "[[part]]\nname = \"a\"\ninclude = \"sub.toml\"\nrotation = { axis = [0, 0, 1], degrees = -45 }\n";
-    let exact = |j: usize, k: usize| {
-        if j == k && j > 0 {
-            r::frac(1, 6)
-        } else {
-            r::int(0)
-        }
-    };
     for p in ["standard", "extended"] {
         let v = report_with_sub("rod", top, sub, p);
+        let what = format!("turned rod, {p}");
+        honest.tensor(&what, &v, "inertia_com", &across(r::frac(1, 6)));
         for j in 0..3 {
-            for k in 0..3 {
-                honest.check(
-                    format!("turned rod, {p}: inertia_com[{j}][{k}]"),
-                    &v["inertia_com"][j][k],
-                    &exact(j, k),
-                    &v["error_bounds"]["inertia_com"][j][k],
-                );
-            }
             let moment = if j == 0 { r::int(0) } else { r::frac(1, 6) };
             honest.check(
-                format!("turned rod, {p}: principal_moments[{j}]"),
+                format!("{what}: principal_moments[{j}]"),
                 &v["principal_moments"][j],
                 &moment,
                 &v["error_bounds"]["principal_moments"][j],
