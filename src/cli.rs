@@ -34,6 +34,30 @@ pub enum Command {
     Diff(DiffArgs),
     /// List the materials `material = "NAME"` may name, with their densities.
     Materials(MaterialsArgs),
+    /// Print a shell completion script (install: see `massprop man`).
+    #[command(after_help = COMPLETIONS_HELP)]
+    Completions(CompletionsArgs),
+    /// Print the manual page (roff), for `man`.
+    #[command(after_help = MAN_HELP)]
+    Man,
+}
+
+const COMPLETIONS_HELP: &str = "\
+Examples:
+  massprop completions bash > ~/.local/share/bash-completion/completions/massprop
+  massprop completions zsh > ~/.zfunc/_massprop      # with fpath+=~/.zfunc
+  massprop completions fish > ~/.config/fish/completions/massprop.fish";
+
+const MAN_HELP: &str = "\
+Examples:
+  massprop man > ~/.local/share/man/man1/massprop.1 && man massprop
+  massprop man | man -l -";
+
+#[derive(Args, Debug)]
+pub struct CompletionsArgs {
+    /// The shell to complete in.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
 }
 
 #[derive(Args, Debug)]
@@ -309,8 +333,38 @@ impl Cli {
                 format: a.format,
                 include_roots: a.includes.include_root.clone(),
             }),
+            Command::Completions(a) => Request::Text(completions(a.shell)),
+            Command::Man => Request::Text(man_page()),
         }
     }
+}
+
+/// The completion script for `shell`, from the command line's definition.
+fn completions(shell: clap_complete::Shell) -> String {
+    use clap::CommandFactory;
+    let mut out = Vec::new();
+    clap_complete::generate(shell, &mut Cli::command(), "massprop", &mut out);
+    String::from_utf8(out).expect("invariant: a completion script is UTF-8")
+}
+
+/// The manual page in roff: the command and each subcommand's options,
+/// from the command line's definition.
+fn man_page() -> String {
+    use clap::CommandFactory;
+    let command = Cli::command();
+    let mut out = Vec::new();
+    let man = clap_mangen::Man::new(command.clone());
+    man.render(&mut out)
+        .expect("invariant: writing to memory does not fail");
+    // Each subcommand as a section of its own, as git's and cargo's pages
+    // list theirs.
+    for sub in command.get_subcommands().filter(|s| s.get_name() != "help") {
+        let name = format!("massprop-{}", sub.get_name());
+        let page = clap_mangen::Man::new(sub.clone()).title(name);
+        page.render(&mut out)
+            .expect("invariant: writing to memory does not fail");
+    }
+    String::from_utf8(out).expect("invariant: a man page is UTF-8")
 }
 
 /// How far includes may reach; every command that reads part files takes it.

@@ -102,6 +102,10 @@ pub enum Request {
     Check(check::Options),
     Diff(diff::Options),
     Materials(materials::Options),
+    /// A text made from the command line's own definition (`completions`,
+    /// `man`: `cli` makes it, the only module that knows clap), printed as
+    /// it is.
+    Text(String),
 }
 
 impl Request {
@@ -112,7 +116,7 @@ impl Request {
             Request::Report(o) => o.output.as_deref(),
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
-            Request::Materials(_) => None,
+            Request::Materials(_) | Request::Text(_) => None,
         };
         o.filter(|o| *o != "-")
     }
@@ -125,7 +129,7 @@ impl Request {
             // against every file read.
             Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
-            Request::Materials(_) => Vec::new(),
+            Request::Materials(_) | Request::Text(_) => Vec::new(),
         }
     }
 }
@@ -205,6 +209,12 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
         Request::Check(o) => check::run(o)?,
         Request::Diff(o) => diff::run(o)?,
         Request::Materials(o) => materials::run(o)?,
+        Request::Text(text) => Outcome {
+            stdout: Stdout::Text(text.clone()),
+            stderr: String::new(),
+            status: 0,
+            read: Vec::new(),
+        },
     };
     match output {
         // `-o FILE`: the whole result or nothing, never half a file, and

@@ -16,4 +16,5 @@ mod invariants;
 mod layers;
 mod package;
 mod physics;
+mod shell;
 mod stress;
