@@ -3,7 +3,7 @@
 //! the library's own options (`commands::Request`), and the library's
 //! enums get their command-line names and help here.
 
-use crate::analysis::summary::{Accuracy, PrecisionChoice, accuracy::DEFAULT_RTOL};
+use crate::analysis::summary::{Accuracy, PrecisionChoice};
 use crate::analysis::{Overrides, Products, Settings};
 use crate::commands::{self, Request};
 use crate::render::Format;
@@ -27,12 +27,16 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
+    #[command(after_help = REPORT_HELP)]
     Report(ReportArgs),
     /// Check part files' `[expect]` blocks and physical validity (for CI).
+    #[command(after_help = CHECK_HELP)]
     Check(CheckArgs),
     /// Compare the mass properties of two part files (or two versions of one).
+    #[command(after_help = DIFF_HELP)]
     Diff(DiffArgs),
     /// List the materials `material = "NAME"` may name, with their densities.
+    #[command(after_help = MATERIALS_HELP)]
     Materials(MaterialsArgs),
     /// Print a shell completion script (install: see `massprop man`).
     #[command(after_help = COMPLETIONS_HELP)]
@@ -41,6 +45,28 @@ pub enum Command {
     #[command(after_help = MAN_HELP)]
     Man,
 }
+
+const REPORT_HELP: &str = "\
+Examples:
+  massprop report arm.toml                        the table, in the file's units
+  massprop report arm.toml --format json | jq .mass SI, each value with its error bound
+  massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"";
+
+const CHECK_HELP: &str = "\
+Examples:
+  massprop check parts/                 every *.toml part file under parts/
+  massprop check arm.toml --format json
+  massprop check --bless arm.toml       write today's values into [expect]";
+
+const DIFF_HELP: &str = "\
+Examples:
+  massprop diff old.toml new.toml
+  massprop diff old.toml new.toml --tol 1e-6 --format json";
+
+const MATERIALS_HELP: &str = "\
+Examples:
+  massprop materials
+  massprop materials arm.toml           with arm.toml's own [materials]";
 
 const COMPLETIONS_HELP: &str = "\
 Examples:
@@ -129,7 +155,7 @@ pub struct DiffArgs {
     #[arg(
         long,
         value_name = "REL",
-        default_value_t = 1e-9,
+        default_value = "1e-9",
         allow_hyphen_values = true
     )]
     pub tol: f64,
@@ -243,7 +269,7 @@ pub struct AccuracyArgs {
     #[arg(
         long,
         value_name = "REL",
-        default_value_t = DEFAULT_RTOL,
+        default_value = "1e-12",
         value_parser = parse_rtol,
         allow_hyphen_values = true
     )]
@@ -386,5 +412,19 @@ mod tests {
     #[test]
     fn cli_definition_is_consistent() {
         Cli::command().debug_assert();
+    }
+
+    /// `--rtol`'s default is written as users write it ("1e-12", not
+    /// 0.000000000001) and is the library's own.
+    #[test]
+    fn the_default_rtol_is_the_librarys() {
+        let cli = Cli::try_parse_from(["massprop", "report", "f.toml"]).unwrap();
+        let Command::Report(a) = cli.command else {
+            panic!("a report")
+        };
+        assert_eq!(
+            a.accuracy.rtol,
+            crate::analysis::summary::accuracy::DEFAULT_RTOL
+        );
     }
 }
