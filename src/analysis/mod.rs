@@ -92,6 +92,7 @@ pub fn load_source_reading(
         summary.name = path.last().cloned();
         summary.sub_assembly = Some(path);
     }
+    summary.source = Some(source.name.clone());
     Ok(Loaded {
         source,
         model,

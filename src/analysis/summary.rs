@@ -28,6 +28,10 @@ use serde::Serialize;
 /// Keys may be added; none is ever renamed or removed.
 pub const FORMAT_VERSION: u32 = 1;
 
+/// The version of massprop, which every JSON document carries
+/// (`massprop_version`) beside `format_version`.
+pub const MASSPROP_VERSION: &str = env!("CARGO_PKG_VERSION");
+
 /// SI unit of each reported quantity, written in ASCII for scripts.
 #[derive(Debug, Clone, Serialize)]
 pub struct SiUnits {
@@ -86,6 +90,12 @@ pub struct AssemblySummary {
 #[derive(Debug, Clone, Serialize)]
 pub struct Summary {
     pub format_version: u32,
+    /// The massprop that computed it (`MASSPROP_VERSION`).
+    pub massprop_version: &'static str,
+    /// The part file, as named on the command line (`<stdin>` for standard
+    /// input); absent for a summary not made from a file.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub source: Option<String>,
     /// The file's `name`; with `--only`, the sub-assembly's.
     pub name: Option<String>,
     /// With `--only`: the path of the sub-assembly reported, outermost
@@ -540,6 +550,8 @@ fn summarize_in(
     });
     Ok(Summary {
         format_version: FORMAT_VERSION,
+        massprop_version: MASSPROP_VERSION,
+        source: None,
         name: model.name.clone(),
         sub_assembly: None,
         products_convention: products,

@@ -3,7 +3,7 @@
 
 use super::format::{DisplayUnits, fmt_num};
 use crate::analysis::check::{CheckResult, FileResult, Status, limits};
-use crate::analysis::summary::FORMAT_VERSION;
+use crate::analysis::summary::{FORMAT_VERSION, MASSPROP_VERSION};
 use crate::diag::visible;
 use crate::model::expect::{Bound, Tol};
 use serde::Serialize;
@@ -32,6 +32,7 @@ impl Counts {
 #[derive(Serialize)]
 struct JsonReport<'a> {
     format_version: u32,
+    massprop_version: &'static str,
     files: &'a [FileResult],
     summary: Counts,
 }
@@ -40,6 +41,7 @@ struct JsonReport<'a> {
 pub fn json(results: &[FileResult]) -> String {
     super::json_line(&JsonReport {
         format_version: FORMAT_VERSION,
+        massprop_version: MASSPROP_VERSION,
         files: results,
         summary: Counts::of(results),
     })

@@ -36,6 +36,7 @@ struct JsonParts<'a> {
 #[derive(Serialize)]
 struct JsonDiff<'a> {
     format_version: u32,
+    massprop_version: &'static str,
     old: &'a str,
     new: &'a str,
     products_convention: Products,
@@ -60,6 +61,7 @@ pub fn json(d: &Diff) -> String {
     let (op, np) = (&d.old.parts, &d.new.parts);
     let json = JsonDiff {
         format_version: FORMAT_VERSION,
+        massprop_version: crate::analysis::summary::MASSPROP_VERSION,
         old: &d.old.loaded.source.name,
         new: &d.new.loaded.source.name,
         products_convention: Products::Tensor,

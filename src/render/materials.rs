@@ -16,6 +16,7 @@ pub struct Listed {
 pub fn json(list: &[Listed]) -> String {
     super::json_line(&serde_json::json!({
         "format_version": FORMAT_VERSION,
+        "massprop_version": crate::analysis::summary::MASSPROP_VERSION,
         "units": { "density": "kg/m^3" },
         "materials": list,
     }))
