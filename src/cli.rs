@@ -151,11 +151,12 @@ pub struct DiffArgs {
     pub output: Option<String>,
 
     /// Relative tolerance: a value counts as changed when it moves by more
-    /// than this fraction of its scale.
+    /// than this fraction of its scale (`1e-6`, or a percentage: `1%`).
     #[arg(
         long,
         value_name = "REL",
         default_value = "1e-9",
+        value_parser = parse_fraction,
         allow_hyphen_values = true
     )]
     pub tol: f64,
@@ -283,6 +284,20 @@ impl AccuracyArgs {
             rtol: self.rtol,
         }
     }
+}
+
+/// A relative tolerance as users write it: a number (`1e-6`) or a
+/// percentage (`1%`, `0.5 %`). Its range is the command's to check.
+fn parse_fraction(text: &str) -> Result<f64, String> {
+    let t = text.trim();
+    let (number, scale) = match t.strip_suffix('%') {
+        Some(n) => (n.trim_end(), 0.01),
+        None => (t, 1.0),
+    };
+    number
+        .parse::<f64>()
+        .map(|x| x * scale)
+        .map_err(|_| "expected a number such as 1e-6, or a percentage such as 1%".to_string())
 }
 
 /// An `--rtol`: finite, at least 2⁻⁵² (no f64 result is closer to the exact

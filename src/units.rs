@@ -212,6 +212,11 @@ const SYMBOLS: &[Symbol] = &[
     // Tonne (metric ton), 1000 kg.
     sym("t", Dim::MASS, 1000, 1, 0),
     sym("lb", Dim::MASS, 45_359_237, 100_000_000, 0),
+    // The avoirdupois ounce, 1/16 lb: 28.349523125 g.
+    sym("oz", Dim::MASS, 45_359_237, 1_600_000_000, 0),
+    // Litre and millilitre: 1e-3 and 1e-6 m³.
+    sym("L", Dim::new(0, 3, 0), 1, 1000, 0),
+    sym("mL", Dim::new(0, 3, 0), 1, 1_000_000, 0),
     sym("N", Dim::new(1, 1, -2), 1, 1, 0),
     sym("J", Dim::ENERGY, 1, 1, 0),
     sym("s", TIME, 1, 1, 0),
@@ -221,6 +226,9 @@ const SYMBOLS: &[Symbol] = &[
     sym("rev", NONE, 2, 1, 1),
     // Revolutions per minute: 2π/60 rad/s.
     sym("rpm", Dim::new(0, 0, -1), 1, 30, 1),
+    // Hertz as an angular velocity is revolutions per second: 2π rad/s
+    // (`rev/s` says the same).
+    sym("Hz", Dim::new(0, 0, -1), 2, 1, 1),
 ];
 
 /// Length units allowed as a file's default (`units.length`).
@@ -276,7 +284,9 @@ impl fmt::Display for UnitError {
 }
 
 /// Parse a unit expression such as `kg/m^2`, `g/cm³`, `rad/s` or `rpm`:
-/// symbols joined by `*` or `·`, at most one `/`, exponents as `^n`, `²`, `³`.
+/// symbols joined by `*`, `·` or spaces, at most one `/`, exponents as `^n`
+/// (negative too: `g cm^-3`), `²`, `³` or a digit after the symbol (`m3`).
+/// No symbol ends in a digit, so `cm3` can only be cm³.
 pub fn parse_unit(text: &str) -> Result<Unit, UnitError> {
     let text = text.trim();
     let (numer, denom) = match text.split_once('/') {
@@ -304,7 +314,7 @@ pub fn parse_unit(text: &str) -> Result<Unit, UnitError> {
 }
 
 fn product(mut unit: Unit, terms: &str, sign: i32) -> Result<Unit, UnitError> {
-    for term in terms.split(['*', '·']) {
+    for term in terms.split(['*', '·', ' ']).filter(|t| !t.is_empty()) {
         let term = term.trim();
         let (name, exp) = split_exponent(term)?;
         let symbol = SYMBOLS
@@ -337,6 +347,17 @@ fn split_exponent(term: &str) -> Result<(&str, i32), UnitError> {
     }
     if let Some(base) = term.strip_suffix('³') {
         return Ok((base, 3));
+    }
+    // `m3`, `cm2`: a digit after a symbol's letters.
+    if let Some(last) = term.chars().last()
+        && let Some(exp) = last.to_digit(10)
+        && term.len() > 1
+        && !term.contains('^')
+    {
+        if !(1..=4).contains(&exp) {
+            return Err(bad());
+        }
+        return Ok((&term[..term.len() - 1], exp as i32));
     }
     match term.split_once('^') {
         Some((base, exp)) => {
@@ -493,6 +514,28 @@ impl FileUnits {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The spellings people type (issue 14): each the same unit as its
+    /// canonical form, exactly.
+    #[test]
+    fn units_as_people_type_them() {
+        let same = |a: &str, b: &str| {
+            assert_eq!(parse_unit(a).unwrap(), parse_unit(b).unwrap(), "{a} vs {b}");
+        };
+        same("kg/m3", "kg/m^3");
+        same("g/cm3", "g/cm^3");
+        same("g cm^-3", "g/cm^3");
+        same("g  cm^-3", "g/cm³");
+        same("kg m^-3", "kg/m^3");
+        same("kg/L", "g/cm^3");
+        same("g/mL", "g/cm^3");
+        same("rev/s", "Hz");
+        let (oz, lb) = (parse_unit("oz").unwrap(), parse_unit("lb").unwrap());
+        assert_eq!(oz.dim, lb.dim);
+        assert!((16.0 * oz.factor.value() - lb.factor.value()).abs() <= 1e-16);
+        assert_eq!(parse_unit("L").unwrap().dim, Dim::new(0, 3, 0));
+        assert!(parse_unit("m5").is_err());
+    }
 
     #[test]
     fn grams_per_cubic_centimetre_is_exactly_one_thousand_si() {

@@ -487,6 +487,12 @@ fn part_tables(text: &str) -> u64 {
 /// the last component only applies to all three (`0,0,10 mm`); otherwise
 /// each component carries its own unit (`1 mm,2 in,0 m`) or none does.
 pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vector3<f64>, String> {
+    // `[0, 0, 10]`, as the file writes it, is the same vector.
+    let text = text.trim();
+    let text = text
+        .strip_prefix('[')
+        .and_then(|t| t.strip_suffix(']'))
+        .unwrap_or(text);
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
     if parts.len() != 3 {
         return Err(format!(

@@ -118,3 +118,53 @@ fn the_man_page_is_roff_with_every_subcommand_and_flag() {
         _ => eprintln!("man is not installed: the page is not rendered"),
     }
 }
+
+/// Flags as people type them (issue 14, item 8): `--tol 1%`, a vector in
+/// the file's brackets, ω in Hz (revolutions per second).
+#[test]
+fn flags_take_percentages_brackets_and_hertz() {
+    let json = |args: &[&str]| -> serde_json::Value {
+        let out = massprop(args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let f = "shapes/flywheel.toml";
+    let v = json(&["diff", f, f, "--tol", "1%", "--format", "json"]);
+    assert_eq!(v["tolerance"], 0.01);
+    let v = json(&["diff", f, f, "--tol", "0.5 %", "--format", "json"]);
+    assert_eq!(v["tolerance"], 0.005);
+    let a = json(&[
+        "report",
+        f,
+        "--format",
+        "json",
+        "--about",
+        "[0, 0, 10]",
+        "--omega",
+        "0,0,50 Hz",
+    ]);
+    let b = json(&[
+        "report",
+        f,
+        "--format",
+        "json",
+        "--about",
+        "0,0,10",
+        "--omega",
+        "0,0,50 rev/s",
+    ]);
+    assert_eq!(a["reference_point"], b["reference_point"]);
+    assert_eq!(a["omega"], b["omega"]);
+    assert_eq!(
+        a["omega"][2].as_f64().unwrap(),
+        100.0 * std::f64::consts::PI
+    );
+    let out = massprop(&["diff", f, f, "--tol", "one percent"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("such as 1%"));
+}
