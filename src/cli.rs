@@ -225,9 +225,8 @@ impl ValueEnum for Format {
             Format::Table => {
                 PossibleValue::new("table").help("Tables for people, in the file's units")
             }
-            Format::Json => {
-                PossibleValue::new("json").help("One JSON object in SI units (see docs/json.md)")
-            }
+            Format::Json => PossibleValue::new("json")
+                .help("One JSON object in SI units (its keys: JSON OUTPUT in `massprop man`)"),
         })
     }
 }
@@ -261,7 +260,7 @@ pub struct AccuracyArgs {
     /// Arithmetic. Every value is reported with a rigorous bound on its
     /// rounding error (`error_bounds`); `auto` computes in `standard` and
     /// recomputes in `extended` when a bound exceeds --rtol, and warns of
-    /// any value neither meets. See docs/accuracy.md.
+    /// any value neither meets (JSON `error_bounds`, `accuracy_warnings`).
     #[arg(long, value_enum, default_value_t)]
     pub precision: PrecisionChoice,
 
@@ -405,7 +404,48 @@ fn man_page() -> String {
         page.render(&mut out)
             .expect("invariant: writing to memory does not fail");
     }
-    String::from_utf8(out).expect("invariant: a man page is UTF-8")
+    let mut page = String::from_utf8(out).expect("invariant: a man page is UTF-8");
+    page.push_str(&json_section(include_str!("../docs/json.md")));
+    page
+}
+
+/// The JSON contract's table of keys (docs/json.md, the one statement of
+/// it) as a roff section, so that an installed massprop carries it.
+fn json_section(doc: &str) -> String {
+    // roff: a backslash and a leading dot or quote are special; `code` in
+    // bold.
+    let roff = |text: &str| {
+        let escaped = text.replace('\\', "\\e").replace('-', "\\-");
+        let mut out = String::new();
+        for (i, piece) in escaped.split('`').enumerate() {
+            if i % 2 == 1 {
+                out.push_str("\\fB");
+                out.push_str(piece);
+                out.push_str("\\fR");
+            } else {
+                out.push_str(piece);
+            }
+        }
+        if out.starts_with(['.', '\'']) {
+            out.insert_str(0, "\\&");
+        }
+        out
+    };
+    let mut s = String::from(
+        ".SH \"JSON OUTPUT\"\n\\fBmassprop report \\-\\-format json\\fR prints one object, SI units; keys are only ever added.\n",
+    );
+    for row in doc.lines().filter(|l| l.starts_with("| `")) {
+        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
+        if let [key, kind, meaning] = cells[..] {
+            s.push_str(&format!(
+                ".TP\n{} ({})\n{}\n",
+                roff(key),
+                roff(kind),
+                roff(meaning)
+            ));
+        }
+    }
+    s
 }
 
 /// How far includes may reach; every command that reads part files takes it.

@@ -168,3 +168,38 @@ fn flags_take_percentages_brackets_and_hertz() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("such as 1%"));
 }
+
+/// Help stands alone (issue 14, item 6): no subcommand's `--help` sends an
+/// installed user to a file of the source tree; the man page carries the
+/// JSON contract's keys (from docs/json.md, its one statement).
+#[test]
+fn help_names_no_source_file_and_the_man_page_carries_the_json_keys() {
+    let command = massprop::cli::Cli::command();
+    let mut subs: Vec<String> = command
+        .get_subcommands()
+        .map(|s| s.get_name().to_string())
+        .collect();
+    subs.push(String::new());
+    for sub in subs {
+        let args: Vec<&str> = if sub.is_empty() {
+            vec!["--help"]
+        } else {
+            vec![&sub, "--help"]
+        };
+        let help = text(&args);
+        assert!(
+            !help.contains("docs/") && !help.contains(".md"),
+            "{sub} --help names a source file:\n{help}"
+        );
+    }
+    let page = text(&["man"]);
+    assert!(page.contains(".SH \"JSON OUTPUT\""));
+    let doc = std::fs::read_to_string("docs/json.md").unwrap();
+    for row in doc.lines().filter(|l| l.starts_with("| `")) {
+        let key = row.split('`').nth(1).unwrap();
+        assert!(
+            page.contains(&format!("\\fB{}\\fR", key.replace('-', "\\-"))),
+            "no {key}"
+        );
+    }
+}
