@@ -172,7 +172,8 @@ fn work(model: &Model, method: Method) {
             };
             for &p in modes {
                 let (body, error) = compose::compose_bounded(model, p);
-                let principal = compose::principal(&body.second_moment, p).expect("converges");
+                let principal =
+                    compose::principal_bounded(&body.second_moment, p).expect("converges");
                 let c = body.second_moment.map(|r| r.map(|x| x.f64()));
                 black_box(bounds::eigen(
                     &c,

@@ -193,7 +193,8 @@ pub struct Principal {
     pub eigenvectors: [Vector3<f64>; 3],
     /// Plane rotations the Jacobi solver applied.
     pub rotations: usize,
-    /// A bound on the solver's backward error (`bounds::backward_error`).
+    /// A bound on the solver's backward error (`bounds::backward_error`);
+    /// infinite (unknown) unless measured (`principal_bounded`).
     pub backward: f64,
 }
 
@@ -220,18 +221,33 @@ pub struct Principal {
 /// Returns `None` only if the eigen solver fails to converge, which finite
 /// input does not cause.
 pub fn principal(c: &M3<DD>, precision: Precision) -> Option<Principal> {
+    principal_with(c, precision, false)
+}
+
+/// `principal`, with the solver's backward error measured
+/// (`Principal::backward`, `bounds::backward_error`) for the error bounds;
+/// `principal` leaves it infinite (unknown) and spares the work.
+pub fn principal_bounded(c: &M3<DD>, precision: Precision) -> Option<Principal> {
+    principal_with(c, precision, true)
+}
+
+fn principal_with(c: &M3<DD>, precision: Precision, bound: bool) -> Option<Principal> {
     match precision {
-        Precision::Standard => principal_in::<f64>(&c.map(|r| r.map(|x| x.f64()))),
-        Precision::Extended => principal_in::<DD>(c),
+        Precision::Standard => principal_in::<f64>(&c.map(|r| r.map(|x| x.f64())), bound),
+        Precision::Extended => principal_in::<DD>(c, bound),
     }
 }
 
-fn principal_in<T: Real + Into<DD>>(c: &M3<T>) -> Option<Principal> {
+fn principal_in<T: Real + Into<DD>>(c: &M3<T>, bound: bool) -> Option<Principal> {
     let (lam, v, rotations) = jacobi_counted(*c)?;
     if !lam.iter().all(|x| x.is_finite()) {
         return None;
     }
-    let backward = crate::bounds::backward_error(c, &lam, &v);
+    let backward = if bound {
+        crate::bounds::backward_error(c, &lam, &v)
+    } else {
+        f64::INFINITY
+    };
     let lam: [DD; 3] = lam.map(|x| {
         if x > T::of(0.0) {
             x.into()

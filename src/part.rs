@@ -363,19 +363,35 @@ fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
 /// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
 /// needs neither their lengths nor a rotation.
 pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
-    own_second_moment_bounded(shape, spec, m).0
+    own_second_moment_in(shape, spec, m, false).0
 }
 
 /// `own_second_moment`, with the error model of the arithmetic that formed
-/// it (`bounds::part`): the error bounds' share of each part.
+/// it (`part::error`): the error bounds' share of each part.
 pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
+    let (j, own) = own_second_moment_in(shape, spec, m, true);
+    (j, own.expect("invariant: the error model was asked for"))
+}
+
+/// The one path of both: the error model formed only when `bound` asks
+/// (the per-part figures and the checks on the input need none of it).
+fn own_second_moment_in<T: Real>(
+    shape: Shape,
+    spec: &Spec,
+    m: T,
+    bound: bool,
+) -> (M3<T>, Option<Own>) {
     // The frames' rounding of the part's numbers, on top of its own: its
     // sizes and mass relative; a shape spanned by vectors the frames
     // turned numerically (edges, ends, vertices) absolute in every entry,
     // as a turn's own error is (a component that should be 0 is not).
-    let placed = error::placed_units::<T>(&spec.place, &spec.placed);
-    let mu = error::mass_error(shape, spec) + placed;
+    // Returns (placed, μ): the frames' units and the mass's.
+    let errors = || {
+        let placed = error::placed_units::<T>(&spec.place, &spec.placed);
+        (placed, error::mass_error(shape, spec) + placed)
+    };
     let outer = |j: &M3<T>| {
+        let (placed, mu) = errors();
         let mag: [f64; 3] = std::array::from_fn(|a| j[a][a].f64().abs());
         Own {
             mass: mu,
@@ -403,15 +419,17 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
         } => {
             let dims: [T; 3] = extent.map(T::of);
             let d = shape.second_moments(m, &dims[..shape.dim_count()]);
-            let kappa = mu + error::closed_form(shape);
             if let Orientation::Identity = orientation {
-                let own = Own {
-                    mass: mu,
-                    kappa,
-                    mag: d.map(|x| x.f64().abs()),
-                    rot: 0.0,
-                    diagonal: true,
-                };
+                let own = bound.then(|| {
+                    let mu = errors().1;
+                    Own {
+                        mass: mu,
+                        kappa: mu + error::closed_form(shape),
+                        mag: d.map(|x| x.f64().abs()),
+                        rot: 0.0,
+                        diagonal: true,
+                    }
+                });
                 let j = std::array::from_fn(|a| {
                     std::array::from_fn(|b| if a == b { d[a] } else { zero })
                 });
@@ -426,10 +444,14 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
                     j[b][a] = j[a][b];
                 }
             }
-            let rho = error::turn_error(orientation, &r.map(|row| row.map(T::f64)));
-            let spread: f64 = d.iter().map(|x| x.f64().abs()).sum();
-            let mag = std::array::from_fn(|a| j[a][a].f64().abs());
-            let own = Own::turned(mu, kappa + error::TURN, mag, rho, spread);
+            let own = bound.then(|| {
+                let mu = errors().1;
+                let rho = error::turn_error(orientation, &r.map(|row| row.map(T::f64)));
+                let spread: f64 = d.iter().map(|x| x.f64().abs()).sum();
+                let mag = std::array::from_fn(|a| j[a][a].f64().abs());
+                let kappa = mu + error::closed_form(shape) + error::TURN;
+                Own::turned(mu, kappa, mag, rho, spread)
+            });
             return (j, own);
         }
         Place::Edges { edges, .. } => {
@@ -476,24 +498,26 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
                     j[b][a] = v;
                 }
             }
-            let r = r.map(|row| row.map(T::f64));
-            let rho = error::turn_error(orientation, &r);
-            // |C_kl| ≤ √(ℓ_k ℓ_l) for the positive semi-definite local C,
-            // ℓ the magnitudes its diagonal is formed from; so each entry of
-            // R C Rᵀ is at most v_a v_b, v = |R| √ℓ.
-            let i = inertia.map(|row| row.map(T::of));
-            let spread: [f64; 3] = std::array::from_fn(|a| diagonal_magnitude(&i, a));
-            let v: [f64; 3] =
-                std::array::from_fn(|a| (0..3).map(|k| r[a][k].abs() * spread[k].sqrt()).sum());
-            let total: f64 = spread.iter().sum::<f64>()
-                + (0..3)
-                    .flat_map(|k| (0..3).filter(move |l| *l != k).map(move |l| (k, l)))
-                    .map(|(k, l)| inertia[k][l].abs())
-                    .sum::<f64>();
-            let own = Own::turned(mu, mu + error::GIVEN, v.map(|x| x * x), rho, total);
+            let own = bound.then(|| {
+                let mu = errors().1;
+                let r = r.map(|row| row.map(T::f64));
+                let rho = error::turn_error(orientation, &r);
+                // |C_kl| ≤ √(ℓ_k ℓ_l) for the positive semi-definite local
+                // C, ℓ the magnitudes its diagonal is formed from; so each
+                // entry of R C Rᵀ is at most v_a v_b, v = |R| √ℓ.
+                let spread: [f64; 3] = std::array::from_fn(|a| diagonal_magnitude(&i, a));
+                let v: [f64; 3] =
+                    std::array::from_fn(|a| (0..3).map(|k| r[a][k].abs() * spread[k].sqrt()).sum());
+                let total: f64 = spread.iter().sum::<f64>()
+                    + (0..3)
+                        .flat_map(|k| (0..3).filter(move |l| *l != k).map(move |l| (k, l)))
+                        .map(|(k, l)| inertia[k][l].abs())
+                        .sum::<f64>();
+                Own::turned(mu, mu + error::GIVEN, v.map(|x| x * x), rho, total)
+            });
             return (j, own);
         }
     }
-    let own = outer(&j);
+    let own = bound.then(|| outer(&j));
     (j, own)
 }

@@ -408,12 +408,13 @@ fn summarize_in(
     )?;
     // The second moments are finite here, so `None` means a principal
     // moment beyond f64 (the solver converges on finite input).
-    let p_com =
-        compose::principal(&body.second_moment, precision).ok_or(SummaryError::NotFinite {
+    let p_com = compose::principal_bounded(&body.second_moment, precision).ok_or(
+        SummaryError::NotFinite {
             what: "principal moments about the centre of mass",
             blame: Blame::Parts(Contribution::SecondMoment),
-        })?;
-    let p_ref = compose::principal(&c_ref, precision).ok_or(SummaryError::NotFinite {
+        },
+    )?;
+    let p_ref = compose::principal_bounded(&c_ref, precision).ok_or(SummaryError::NotFinite {
         what: "principal moments about the reference point",
         blame: Blame::About,
     })?;

@@ -42,6 +42,8 @@ struct Principal<'a> {
     moments: (&'a [f64; 3], &'a [f64; 3]),
     axes: (&'a [[f64; 3]; 3], &'a [f64; 3]),
     radii: Option<(&'a [f64; 3], &'a [f64; 3])>,
+    /// The moments flagged equal: their axes are a choice.
+    equal: &'a [usize],
 }
 
 fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
@@ -49,6 +51,7 @@ fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
         moments: (moments, moments_b),
         axes: (axes, axes_b),
         radii,
+        equal,
     } = p;
     let mut t = new_table();
     let mut header = vec![format!("moment ({})", u.inertia_label)];
@@ -68,12 +71,9 @@ fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
             cells.push(own(r[i], b[i], u.length));
         }
         // A component of a unit vector moves by at most the angle. Axes of
-        // equal moments are a choice (their bound is π/2): the note says so.
-        let bound = if axes_b[i] >= std::f64::consts::FRAC_PI_2 {
-            0.0
-        } else {
-            axes_b[i]
-        };
+        // moments flagged equal are a choice, which the note says, not a
+        // result to bound.
+        let bound = if equal.contains(&i) { 0.0 } else { axes_b[i] };
         cells.extend(axes[i].iter().map(|a| fmt_bounded(*a, bound, 1.0)));
         t.add_row(cells);
     }
@@ -255,6 +255,7 @@ pub fn write_table_to(
                 moments: (&s.principal_moments, &b.principal_moments),
                 axes: (&s.principal_axes, &b.principal_axes),
                 radii: Some((&s.radii_of_gyration, &b.radii_of_gyration)),
+                equal: &s.equal_moments,
             },
             &u
         )
@@ -273,6 +274,7 @@ pub fn write_table_to(
                     moments: (&s.principal_moments_ref, &b.principal_moments_ref),
                     axes: (&s.principal_axes_ref, &b.principal_axes_ref),
                     radii: None,
+                    equal: &s.equal_moments_ref,
                 },
                 &u
             )

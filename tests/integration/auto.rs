@@ -100,17 +100,7 @@ fn auto_stays_standard_on_every_file_in_shapes() {
     files.sort();
     assert!(files.len() >= 7);
     for f in files {
-        let text = std::fs::read_to_string(&f).unwrap();
-        let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from([
-            "massprop",
-            "report",
-            "--format",
-            "json",
-            f.to_str().unwrap(),
-        ])
-        .unwrap();
-        let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}\n{text}"));
-        let v: Value = serde_json::from_str(&out.stdout.text()).unwrap();
+        let (v, stderr) = crate::common::report_json_file(&f, &[]);
         assert_eq!(precision(&v), "standard", "{}", f.display());
         assert!(
             warnings(&v).is_empty(),
@@ -118,7 +108,7 @@ fn auto_stays_standard_on_every_file_in_shapes() {
             f.display(),
             warnings(&v)
         );
-        assert!(out.stderr.is_empty(), "{}: {}", f.display(), out.stderr);
+        assert!(stderr.is_empty(), "{}: {stderr}", f.display());
     }
 }
 

@@ -214,18 +214,7 @@ fn bounds_count_the_rounding_of_an_included_frame() {
         let inertia = r::inertia_of(&c);
         let moments = r::principal(&inertia).moments;
         for p in ["standard", "extended"] {
-            let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from([
-                "massprop",
-                "report",
-                "--format",
-                "json",
-                "--precision",
-                p,
-                top_path.to_str().unwrap(),
-            ])
-            .unwrap();
-            let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}"));
-            let v: Value = serde_json::from_str(&out.stdout.text()).unwrap();
+            let (v, _) = crate::common::report_json_file(&top_path, &["--precision", p]);
             let b = &v["error_bounds"];
             let what = |q: &str| format!("frame trial {trial}, {p}: {q}");
             honest.check(what("mass"), &v["mass"], &mass, &b["mass"]);
@@ -260,17 +249,7 @@ fn report_with_sub(name: &str, top: &str, sub: &str, precision: &str) -> Value {
     std::fs::write(dir.join("sub.toml"), sub).unwrap();
     let path = dir.join("top.toml");
     std::fs::write(&path, top).unwrap();
-    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from([
-        "massprop",
-        "report",
-        "--format",
-        "json",
-        "--precision",
-        precision,
-        path.to_str().unwrap(),
-    ])
-    .unwrap();
-    serde_json::from_str(&massprop::run(&cli).unwrap().stdout.text()).unwrap()
+    crate::common::report_json_file(&path, &["--precision", precision]).0
 }
 
 /// The review's cases (each was dishonest once, by up to 1e5): a frame far

@@ -64,13 +64,19 @@ pub fn report_json(text: &str, args: &[&str]) -> (serde_json::Value, String) {
         COUNT.fetch_add(1, Ordering::Relaxed)
     ));
     std::fs::write(&path, text).unwrap();
+    let out = std::panic::catch_unwind(|| report_json_file(&path, args));
+    std::fs::remove_file(&path).ok();
+    out.unwrap_or_else(|_| panic!("for:\n{text}"))
+}
+
+/// `massprop report --format json ARGS… PATH`, in process: the JSON and
+/// what went to standard error.
+pub fn report_json_file(path: &std::path::Path, args: &[&str]) -> (serde_json::Value, String) {
     let mut argv = vec!["massprop", "report", "--format", "json"];
     argv.extend(args);
-    argv.push(path.to_str().unwrap());
+    argv.push(path.to_str().expect("a UTF-8 path"));
     let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
-    let out = massprop::run(&cli);
-    std::fs::remove_file(&path).ok();
-    let out = out.unwrap_or_else(|d| panic!("{d}\nfor:\n{text}"));
+    let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}"));
     let v = serde_json::from_str(&out.stdout.text()).expect("stdout is JSON");
     (v, out.stderr)
 }
