@@ -122,9 +122,10 @@ pub struct CheckArgs {
     #[command(flatten)]
     pub accuracy: AccuracyArgs,
 
-    /// Output format: one line per file or failure, or one JSON document.
+    /// Output format: one line per file or failure, one JSON document, or
+    /// for CI: GitHub annotations, JUnit XML or SARIF.
     #[arg(long, value_enum, default_value_t)]
-    pub format: Format,
+    pub format: CheckFormat,
 
     #[command(flatten)]
     pub includes: IncludeArgs,
@@ -227,6 +228,38 @@ impl ValueEnum for Format {
             }
             Format::Json => PossibleValue::new("json")
                 .help("One JSON object in SI units (its keys: JSON OUTPUT in `massprop man`)"),
+            // `check`'s alone (`CheckFormat`).
+            Format::Github | Format::Junit | Format::Sarif => return None,
+        })
+    }
+}
+
+/// `check`'s formats: the two of every command and those of CI systems.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct CheckFormat(pub Format);
+
+impl ValueEnum for CheckFormat {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[
+            CheckFormat(Format::Table),
+            CheckFormat(Format::Json),
+            CheckFormat(Format::Github),
+            CheckFormat(Format::Junit),
+            CheckFormat(Format::Sarif),
+        ]
+    }
+
+    fn to_possible_value(&self) -> Option<PossibleValue> {
+        Some(match self.0 {
+            Format::Table => PossibleValue::new("table")
+                .help("`FILE:LINE:COL: error: …` per failure, `FILE: ok` per file"),
+            Format::Json => Format::Json.to_possible_value()?,
+            Format::Github => PossibleValue::new("github")
+                .help("GitHub Actions annotations (`::error file=…,line=…::…`)"),
+            Format::Junit => {
+                PossibleValue::new("junit").help("JUnit XML: a test suite per file, as nextest's")
+            }
+            Format::Sarif => PossibleValue::new("sarif").help("SARIF 2.1.0, for code scanning"),
         })
     }
 }
@@ -356,7 +389,7 @@ impl Cli {
                 output: a.output.clone(),
                 bless: a.bless,
                 accuracy: a.accuracy.accuracy(),
-                format: a.format,
+                format: a.format.0,
                 include_roots: a.includes.include_root.clone(),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {

@@ -3,6 +3,7 @@
 //! optional help line, the way compilers print them so editors and CI can
 //! jump to the place.
 
+use serde::Serialize;
 use std::fmt;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
@@ -61,6 +62,26 @@ impl Source {
         (line, col)
     }
 
+    /// The lines and columns of a byte range: its first character and its
+    /// last (inclusive, as GitHub's annotations and SARIF take it; an empty
+    /// range ends where it starts).
+    pub fn span(&self, range: Range<usize>) -> Span {
+        let (line, column) = self.line_col(range.start);
+        let start = floor_char_boundary(&self.text, range.start.min(self.text.len()));
+        let end = floor_char_boundary(&self.text, range.end.min(self.text.len()));
+        let last = self.text[..end]
+            .char_indices()
+            .next_back()
+            .map_or(start, |(i, _)| i.max(start));
+        let (end_line, end_column) = self.line_col(last);
+        Span {
+            line,
+            column,
+            end_line,
+            end_column,
+        }
+    }
+
     /// An error at `span` of this source.
     pub fn error(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
         let (line, col) = self.line_col(span.start);
@@ -98,7 +119,10 @@ impl Source {
         let shown: String = self.text[start..].chars().take(span_chars).collect();
         let width = UnicodeWidthStr::width(visible(&shown).as_str()).max(1);
         Diagnostic(Box::new(Inner {
-            location: Some(format!("{}:{line}:{col}", self.name)),
+            place: Some(Place {
+                path: self.name.clone(),
+                span: Some(self.span(span)),
+            }),
             message: message.into(),
             snippet: Some(Snippet {
                 line,
@@ -252,10 +276,39 @@ struct Snippet {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnostic(Box<Inner>);
 
+/// Where an error is: the file as named, and the span in it when the error
+/// has one (an unreadable file has none).
+#[derive(Debug, Clone, PartialEq, Eq, Serialize)]
+pub struct Place {
+    pub path: String,
+    #[serde(flatten)]
+    pub span: Option<Span>,
+}
+
+/// A span's first and last characters, 1-based lines and columns counted in
+/// characters; the end is inclusive.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub struct Span {
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+}
+
+impl fmt::Display for Place {
+    /// `path:line:col`, or `path`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.span {
+            Some(s) => write!(f, "{}:{}:{}", self.path, s.line, s.column),
+            None => f.write_str(&self.path),
+        }
+    }
+}
+
 #[derive(Debug, Clone, PartialEq)]
 struct Inner {
-    /// `path:line:col`, `path`, or none for errors about flags.
-    location: Option<String>,
+    /// The file and span, or none for errors about flags.
+    place: Option<Place>,
     message: String,
     snippet: Option<Snippet>,
     help: Option<String>,
@@ -270,7 +323,10 @@ impl Diagnostic {
     /// An error about a whole file (unreadable, say): `path: error: …`.
     pub fn file(path: &str, message: impl Into<String>) -> Diagnostic {
         Diagnostic(Box::new(Inner {
-            location: Some(path.to_string()),
+            place: Some(Place {
+                path: path.to_string(),
+                span: None,
+            }),
             message: message.into(),
             snippet: None,
             help: None,
@@ -282,7 +338,7 @@ impl Diagnostic {
     /// An error with no place in a file (a command-line flag, say).
     pub fn plain(message: impl Into<String>) -> Diagnostic {
         Diagnostic(Box::new(Inner {
-            location: None,
+            place: None,
             message: message.into(),
             snippet: None,
             help: None,
@@ -337,9 +393,24 @@ impl Diagnostic {
         &self.0.message
     }
 
-    /// `path:line:col`, when the error has a place.
-    pub fn location(&self) -> Option<&str> {
-        self.0.location.as_deref()
+    /// The file and span, when the error has a place.
+    pub fn place(&self) -> Option<&Place> {
+        self.0.place.as_ref()
+    }
+
+    /// The text after the carets, when there is one.
+    pub fn label_text(&self) -> Option<&str> {
+        self.0.snippet.as_ref().and_then(|s| s.label.as_deref())
+    }
+
+    /// The `help:` line, when there is one.
+    pub fn help_text(&self) -> Option<&str> {
+        self.0.help.as_deref()
+    }
+
+    /// The `note:` lines (the include chain, innermost first).
+    pub fn notes(&self) -> &[String] {
+        &self.0.notes
     }
 }
 
@@ -347,8 +418,8 @@ impl fmt::Display for Diagnostic {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let d = &self.0;
         let message = visible_message(&d.message);
-        match &d.location {
-            Some(loc) => writeln!(f, "{}: error: {message}", visible(loc))?,
+        match &d.place {
+            Some(place) => writeln!(f, "{}: error: {message}", visible(&place.to_string()))?,
             None => writeln!(f, "error: {message}")?,
         }
         // `= help:` under the gutter's bar, as rustc aligns it.

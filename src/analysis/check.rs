@@ -4,7 +4,7 @@
 
 use super::Loaded;
 use super::summary::Summary;
-use crate::diag::Source;
+use crate::diag::{Diagnostic, Source, Span};
 use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
@@ -46,6 +46,9 @@ pub struct CheckResult {
     pub quantity: String,
     pub line: usize,
     pub column: usize,
+    /// The entry's last character (inclusive), for CI annotations.
+    pub end_line: usize,
+    pub end_column: usize,
     /// SI.
     pub measured: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -82,22 +85,35 @@ pub enum Status {
     Invalid,
 }
 
-#[derive(Debug, Clone, Serialize)]
+/// One file's outcome; `render::check` writes it in each format.
+#[derive(Debug, Clone)]
 pub struct FileResult {
     pub path: String,
     pub status: Status,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub error: Option<String>,
+    /// Why the file is invalid.
+    pub error: Option<Diagnostic>,
     pub checks: Vec<CheckResult>,
-    /// Physical validity failures (empty when valid).
-    pub validity: Vec<String>,
+    /// Each physical-validity check, passed or not (none when invalid).
+    pub validity: Vec<Validity>,
     /// The arithmetic the file was computed in (absent when invalid).
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub precision: Option<crate::compose::Precision>,
-    /// The values whose error bound exceeds `--rtol` (`summary::accuracy`);
-    /// absent when there are none.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
+    /// The values whose error bound exceeds `--rtol` (`summary::accuracy`).
     pub accuracy_warnings: Vec<crate::analysis::summary::AccuracyWarning>,
+}
+
+impl FileResult {
+    /// The messages of the validity checks that fail.
+    pub fn validity_failures(&self) -> impl Iterator<Item = &str> {
+        self.validity.iter().filter_map(|v| v.failure.as_deref())
+    }
+}
+
+/// One physical-validity check: its name (a JUnit test case's) and, when it
+/// fails, why.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Validity {
+    pub name: &'static str,
+    pub failure: Option<String>,
 }
 
 /// Evaluate one expectation against a summary.
@@ -105,7 +121,12 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
     let m = measured(s, c.target);
     let (lo, hi) = limits(&c.bound);
     let pass = m >= lo && m <= hi;
-    let (line, column) = source.line_col(c.span.start);
+    let Span {
+        line,
+        column,
+        end_line,
+        end_column,
+    } = source.span(c.span.clone());
     let (value, tol, tol_relative, min, max) = match c.bound {
         Bound::Value {
             value,
@@ -121,6 +142,8 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
         quantity: c.name.clone(),
         line,
         column,
+        end_line,
+        end_column,
         measured: m,
         value,
         tol,
@@ -136,25 +159,34 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
 
 /// Physical validity: positive mass, no negative principal moment, and the
 /// triangle inequality I1 + I2 ≥ I3, each to `VALIDITY_RTOL` of I3.
-pub fn validity(s: &Summary) -> Vec<String> {
-    let mut out = Vec::new();
+pub fn validity(s: &Summary) -> Vec<Validity> {
     let [i1, i2, i3] = s.principal_moments;
     let tol = VALIDITY_RTOL * i3.abs();
-    if !(s.mass > 0.0) {
-        out.push(format!("total mass {} kg is not positive", s.mass));
-    }
-    if i1 < -tol {
-        out.push(format!(
-            "inertia is not positive definite: principal moment I1 = {i1:e} kg·m² is negative"
-        ));
-    }
-    if i1 + i2 < i3 - tol {
-        out.push(format!(
-            "principal moments violate the triangle inequality: I1 + I2 = {:e} < I3 = {i3:e} kg·m²",
-            i1 + i2
-        ));
-    }
-    out
+    let check = |name, fails: bool, message: &dyn Fn() -> String| Validity {
+        name,
+        failure: fails.then(message),
+    };
+    vec![
+        check("mass is positive", !(s.mass > 0.0), &|| {
+            format!("total mass {} kg is not positive", s.mass)
+        }),
+        check("inertia is positive definite", i1 < -tol, &|| {
+            format!(
+                "inertia is not positive definite: principal moment I1 = {i1:e} kg·m² is negative"
+            )
+        }),
+        check("triangle inequality", i1 + i2 < i3 - tol, &|| {
+            format!(
+                "principal moments violate the triangle inequality: I1 + I2 = {:e} < I3 = {i3:e} kg·m²",
+                i1 + i2
+            )
+        }),
+    ]
+}
+
+/// The messages of the validity checks that fail.
+pub fn validity_failures(s: &Summary) -> Vec<String> {
+    validity(s).into_iter().filter_map(|v| v.failure).collect()
 }
 
 /// The expectations and validity of a file that loaded.
@@ -166,7 +198,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         .iter()
         .map(|c| evaluate(&loaded.source, &loaded.summary, c))
         .collect();
-    let ok = validity.is_empty() && checks.iter().all(|c| c.pass);
+    let ok = validity.iter().all(|v| v.failure.is_none()) && checks.iter().all(|c| c.pass);
     FileResult {
         path: loaded.source.name.clone(),
         status: if ok { Status::Ok } else { Status::Failed },
@@ -194,7 +226,9 @@ mod tests {
 
     #[test]
     fn a_real_body_is_physically_valid() {
-        assert!(validity(&summary()).is_empty());
+        let v = validity(&summary());
+        assert_eq!(v.len(), 3);
+        assert!(v.iter().all(|v| v.failure.is_none()), "{v:?}");
     }
 
     #[test]
@@ -202,7 +236,7 @@ mod tests {
         let mut s = summary();
         // Sorted moments with a negative I1 also break I1 + I2 ≥ I3.
         s.principal_moments = [-1e-3, 10.0, 10.0];
-        let v = validity(&s);
+        let v = validity_failures(&s);
         assert!(
             v.iter().any(|m| m.contains("not positive definite")),
             "{v:?}"
@@ -213,14 +247,14 @@ mod tests {
     fn rounding_below_the_tolerance_is_not_a_violation() {
         let mut s = summary();
         s.principal_moments = [-1e-15, 5.0, 5.0];
-        assert!(validity(&s).is_empty());
+        assert!(validity_failures(&s).is_empty());
     }
 
     #[test]
     fn the_triangle_inequality_is_checked() {
         let mut s = summary();
         s.principal_moments = [1.0, 2.0, 4.0];
-        let v = validity(&s);
+        let v = validity_failures(&s);
         assert_eq!(v.len(), 1);
         assert!(v[0].contains("triangle inequality"), "{v:?}");
     }
@@ -229,6 +263,6 @@ mod tests {
     fn a_non_positive_mass_is_reported() {
         let mut s = summary();
         s.mass = -1.0;
-        assert!(validity(&s)[0].contains("not positive"));
+        assert!(validity_failures(&s)[0].contains("not positive"));
     }
 }

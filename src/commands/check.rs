@@ -134,7 +134,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         FileResult {
             path,
             status: Status::Invalid,
-            error: Some(d.to_string()),
+            error: Some(d),
             checks: Vec::new(),
             validity: Vec::new(),
             precision: None,

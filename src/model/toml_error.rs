@@ -888,6 +888,6 @@ mod tests {
             panic!("an unknown key is an error");
         };
         assert_eq!(d.message(), "unknown key `mas`");
-        assert_eq!(d.location(), Some("t.toml:3:1"));
+        assert_eq!(d.place().unwrap().to_string(), "t.toml:3:1");
     }
 }

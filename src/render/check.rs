@@ -1,10 +1,11 @@
 //! `check`'s output: one line per file or failure in the form compilers
 //! use (`file:line:col: error: …`), or one JSON document (docs/check.md).
+//! The CI formats (GitHub annotations, JUnit, SARIF) are in `ci`.
 
 use super::format::{DisplayUnits, fmt_num};
 use crate::analysis::check::{CheckResult, FileResult, Status, limits};
-use crate::analysis::summary::{FORMAT_VERSION, MASSPROP_VERSION};
-use crate::diag::visible;
+use crate::analysis::summary::{AccuracyWarning, MASSPROP_VERSION};
+use crate::diag::{Diagnostic, Span, visible};
 use crate::model::expect::{Bound, Tol};
 use serde::Serialize;
 
@@ -29,20 +30,100 @@ impl Counts {
     }
 }
 
+/// The version of `check`'s JSON contract (docs/check.md): 2 since an
+/// invalid file's `error` is an object of fields rather than the rendered
+/// message.
+pub const CHECK_FORMAT_VERSION: u32 = 2;
+
 #[derive(Serialize)]
 struct JsonReport<'a> {
     format_version: u32,
     massprop_version: &'static str,
-    files: &'a [FileResult],
+    files: Vec<JsonFile<'a>>,
     summary: Counts,
+}
+
+#[derive(Serialize)]
+struct JsonFile<'a> {
+    path: &'a str,
+    status: Status,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<JsonError<'a>>,
+    checks: Vec<JsonCheck<'a>>,
+    /// The failed validity checks' messages.
+    validity: Vec<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    precision: Option<crate::compose::Precision>,
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    accuracy_warnings: &'a [AccuracyWarning],
+}
+
+#[derive(Serialize)]
+struct JsonCheck<'a> {
+    #[serde(flatten)]
+    check: &'a CheckResult,
+    /// A failure's message, as the table line has it after `error: `.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    message: Option<String>,
+}
+
+/// An invalid file's error as fields: where (the file as named, and the
+/// span when there is one) and what.
+#[derive(Serialize)]
+pub struct JsonError<'a> {
+    pub path: &'a str,
+    #[serde(flatten)]
+    pub span: Option<Span>,
+    pub message: &'a str,
+    /// What the table prints after the carets under the span.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub label: Option<&'a str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub help: Option<&'a str>,
+    /// The include chain, innermost first.
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    pub notes: &'a [String],
+}
+
+impl<'a> JsonError<'a> {
+    /// `d`'s fields; `path` names the file when the error has no place.
+    pub fn of(d: &'a Diagnostic, path: &'a str) -> JsonError<'a> {
+        JsonError {
+            path: d.place().map_or(path, |p| &p.path),
+            span: d.place().and_then(|p| p.span),
+            message: d.message(),
+            label: d.label_text(),
+            help: d.help_text(),
+            notes: d.notes(),
+        }
+    }
 }
 
 /// The results as one JSON document.
 pub fn json(results: &[FileResult]) -> String {
+    let files = results
+        .iter()
+        .map(|r| JsonFile {
+            path: &r.path,
+            status: r.status,
+            error: r.error.as_ref().map(|d| JsonError::of(d, &r.path)),
+            checks: r
+                .checks
+                .iter()
+                .map(|c| JsonCheck {
+                    check: c,
+                    message: (!c.pass).then(|| failure(c)),
+                })
+                .collect(),
+            validity: r.validity_failures().collect(),
+            precision: r.precision,
+            accuracy_warnings: &r.accuracy_warnings,
+        })
+        .collect();
     super::json_line(&JsonReport {
-        format_version: FORMAT_VERSION,
+        format_version: CHECK_FORMAT_VERSION,
         massprop_version: MASSPROP_VERSION,
-        files: results,
+        files,
         summary: Counts::of(results),
     })
 }
@@ -58,7 +139,7 @@ pub fn table(results: &[FileResult]) -> String {
                 visible(&r.path)
             )),
             Status::Failed => {
-                for v in &r.validity {
+                for v in r.validity_failures() {
                     s.push_str(&format!("{}: error: {v}\n", visible(&r.path)));
                 }
                 for c in r.checks.iter().filter(|c| !c.pass) {
@@ -84,11 +165,17 @@ pub fn table(results: &[FileResult]) -> String {
 /// `path:line:col: error: NAME VALUE is outside …`, values in the file's
 /// units.
 pub fn message(path: &str, c: &CheckResult) -> String {
+    format!("{path}:{}:{}: error: {}", c.line, c.column, failure(c))
+}
+
+/// What is wrong with a failed expectation: `NAME VALUE is outside …`,
+/// values in the file's units.
+pub fn failure(c: &CheckResult) -> String {
     let units = DisplayUnits::of(c.file_units);
     let show = |x: f64| units.show(x, c.dim);
     let m = c.measured;
     let (lo, hi) = limits(&c.bound);
-    let message = match c.bound {
+    match c.bound {
         Bound::Value { value, tol } => {
             let tol_text = match tol {
                 Tol::Abs(t) => show(t),
@@ -133,6 +220,5 @@ pub fn message(path: &str, c: &CheckResult) -> String {
                 show(m - hi)
             )
         }
-    };
-    format!("{path}:{}:{}: error: {message}", c.line, c.column)
+    }
 }

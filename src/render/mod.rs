@@ -11,6 +11,7 @@
 //! result as an `Output` and never looks at the format.
 
 pub mod check;
+pub mod ci;
 pub mod diff;
 pub mod format;
 pub mod grid;
@@ -31,6 +32,12 @@ pub enum Format {
     /// One JSON object in SI units (docs/json.md, docs/check.md,
     /// docs/diff.md).
     Json,
+    /// `check` only: GitHub Actions workflow commands (docs/ci.md).
+    Github,
+    /// `check` only: JUnit XML, as cargo-nextest writes it.
+    Junit,
+    /// `check` only: SARIF 2.1.0, for code scanning.
+    Sarif,
 }
 
 /// A command's result, ready to be written in either format.
@@ -60,6 +67,16 @@ pub fn write(output: &Output, format: Format, w: &mut dyn std::io::Write) -> std
         (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
         (Format::Table, Output::Check(r)) => check::table(r),
         (Format::Json, Output::Check(r)) => check::json(r),
+        (Format::Github, Output::Check(r)) => ci::github(r),
+        (Format::Junit, Output::Check(r)) => ci::junit(r),
+        (Format::Sarif, Output::Check(r)) => ci::sarif(r),
+        // The command line offers them for `check` alone (`cli`).
+        (Format::Github | Format::Junit | Format::Sarif, _) => {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::Unsupported,
+                "the CI formats are for `check`'s results",
+            ));
+        }
         (Format::Table, Output::Diff(d)) => diff::table(d),
         (Format::Json, Output::Diff(d)) => diff::json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),

@@ -209,7 +209,7 @@ fn json_lists_every_file_and_expectation() {
     let out = massprop(&["check", &good, &bad, "--format", "json"]);
     assert_eq!(out.status.code(), Some(1));
     let v: Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
-    assert_eq!(v["format_version"], 1);
+    assert_eq!(v["format_version"], 2);
     assert_eq!(v["summary"]["files"], 2);
     assert_eq!(v["summary"]["failed"], 1);
     let files = v["files"].as_array().unwrap();
@@ -227,6 +227,13 @@ fn json_lists_every_file_and_expectation() {
     assert_eq!(bad_check["max"], 11.9);
     assert_eq!(bad_check["line"], BODY.lines().count() + 1);
     assert_eq!(bad_check["column"], 8);
+    // The failure's message is the table's, after `error: `; a passing
+    // check has none.
+    assert_eq!(
+        bad_check["message"],
+        "mass 12 kg is above the maximum 11.9 kg (by 0.1 kg)"
+    );
+    assert!(checks[0].get("message").is_none(), "{}", checks[0]);
 }
 
 #[test]

@@ -4,6 +4,7 @@
 mod auto;
 mod bounds;
 mod check;
+mod ci;
 mod cli;
 mod common;
 mod cost;

@@ -1,0 +1,390 @@
+//! `check`'s results in the formats CI systems read (docs/ci.md):
+//!
+//! - `github`: GitHub Actions workflow commands, `::error file=…,line=…::…`,
+//!   one per failure, which the runner turns into annotations on the diff;
+//! - `junit`: JUnit XML as cargo-nextest writes it (its own crate,
+//!   quick-junit): a test suite per file, a test case per expectation and
+//!   validity check;
+//! - `sarif`: SARIF 2.1.0, for code scanning.
+//!
+//! Each reports the same things: every failed expectation at its `[expect]`
+//! entry, every failed validity check on its file, every invalid file at its
+//! error's span, and every value not certified to `--rtol` as a warning.
+
+use super::check::{Counts, failure, message};
+use crate::analysis::check::FileResult;
+use crate::analysis::summary::MASSPROP_VERSION;
+use crate::diag::{Diagnostic, Span, visible};
+use serde_json::{Value, json};
+
+/// An annotation's title names the tool, so a reader of the pull request
+/// knows where it came from.
+const TITLE: &str = "massprop check";
+
+/// A diagnostic's whole text for a single message: the message, then its
+/// label, help and notes, each on a line of its own; control characters
+/// shown as their pictures.
+fn diagnostic_text(d: &Diagnostic) -> String {
+    let mut text = d.message().to_string();
+    if let Some(label) = d.label_text() {
+        text.push_str(&format!("\n{label}"));
+    }
+    if let Some(help) = d.help_text() {
+        text.push_str(&format!("\nhelp: {help}"));
+    }
+    for note in d.notes() {
+        text.push_str(&format!("\nnote: {note}"));
+    }
+    text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
+}
+
+/// Where a diagnostic points: its file (the file checked when it has no
+/// place of its own, or an include's) and its span.
+fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
+    match d.place() {
+        Some(p) => (&p.path, p.span),
+        None => (&r.path, None),
+    }
+}
+
+/// GitHub Actions workflow commands (`::error …::message`), one per failure
+/// and warning, then the summary line as a plain log line.
+pub fn github(results: &[FileResult]) -> String {
+    // The runner's own escaping (actions/toolkit, `command.ts`): data
+    // escapes `%`, CR and LF; a property also `:` and `,`.
+    fn data(s: &str) -> String {
+        s.replace('%', "%25")
+            .replace('\r', "%0D")
+            .replace('\n', "%0A")
+    }
+    fn property(s: &str) -> String {
+        data(s).replace(':', "%3A").replace(',', "%2C")
+    }
+    fn command(level: &str, path: &str, span: Option<Span>, title: &str, text: &str) -> String {
+        let mut props = format!("file={}", property(&visible(path)));
+        if let Some(s) = span {
+            props.push_str(&format!(
+                ",line={},col={},endLine={},endColumn={}",
+                s.line, s.column, s.end_line, s.end_column
+            ));
+        }
+        props.push_str(&format!(
+            ",title={}",
+            property(&format!("{TITLE}: {title}"))
+        ));
+        format!("::{level} {props}::{}\n", data(text))
+    }
+    let mut out = String::new();
+    for r in results {
+        if let Some(d) = &r.error {
+            let (path, span) = place(d, r);
+            out.push_str(&command(
+                "error",
+                path,
+                span,
+                "invalid part file",
+                &diagnostic_text(d),
+            ));
+        }
+        for v in &r.validity {
+            if let Some(m) = &v.failure {
+                out.push_str(&command("error", &r.path, None, v.name, &visible(m)));
+            }
+        }
+        for c in r.checks.iter().filter(|c| !c.pass) {
+            let span = Span {
+                line: c.line,
+                column: c.column,
+                end_line: c.end_line,
+                end_column: c.end_column,
+            };
+            let text = visible(&failure(c));
+            out.push_str(&command(
+                "error",
+                &r.path,
+                Some(span),
+                &visible(&c.quantity),
+                &text,
+            ));
+        }
+        for w in &r.accuracy_warnings {
+            out.push_str(&command(
+                "warning",
+                &r.path,
+                None,
+                "accuracy",
+                &visible(&w.message),
+            ));
+        }
+    }
+    out.push_str(&summary_line(results));
+    out
+}
+
+/// `checked N files: …`, as the table ends.
+fn summary_line(results: &[FileResult]) -> String {
+    let c = Counts::of(results);
+    format!(
+        "checked {} file{}: {} ok, {} failed, {} invalid\n",
+        c.files,
+        if c.files == 1 { "" } else { "s" },
+        c.ok,
+        c.failed,
+        c.invalid
+    )
+}
+
+/// JUnit XML: the report `massprop check`, a test suite per file (named by
+/// its path), in it a test case `valid part file`, one per expectation
+/// (named by its key) and one per validity check (`validity: …`). A failed
+/// expectation or validity check is a `<failure>`, an invalid file an
+/// `<error>`; values not certified to `--rtol` go to the suite's
+/// `<system-err>`.
+pub fn junit(results: &[FileResult]) -> String {
+    use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
+    let failed = |kind, ty: &str, message: &str, description: &str| {
+        let mut s = TestCaseStatus::non_success(kind);
+        s.set_type(ty)
+            .set_message(message)
+            .set_description(description);
+        s
+    };
+    let mut report = Report::new(TITLE);
+    for r in results {
+        let path = visible(&r.path);
+        let mut suite = TestSuite::new(path.as_str());
+        let case = |name: &str, status| {
+            let mut c = TestCase::new(name, status);
+            c.set_classname(path.as_str());
+            c
+        };
+        let valid = match &r.error {
+            Some(d) => failed(
+                NonSuccessKind::Error,
+                "invalid",
+                &visible(d.message()),
+                &d.to_string(),
+            ),
+            None => TestCaseStatus::success(),
+        };
+        suite.add_test_case(case("valid part file", valid));
+        for c in &r.checks {
+            let status = if c.pass {
+                TestCaseStatus::success()
+            } else {
+                failed(
+                    NonSuccessKind::Failure,
+                    "expectation",
+                    &visible(&failure(c)),
+                    &visible(&message(&r.path, c)),
+                )
+            };
+            suite.add_test_case(case(&visible(&c.quantity), status));
+        }
+        for v in &r.validity {
+            let status = match &v.failure {
+                None => TestCaseStatus::success(),
+                Some(m) => failed(
+                    NonSuccessKind::Failure,
+                    "validity",
+                    &visible(m),
+                    &format!("{path}: error: {}", visible(m)),
+                ),
+            };
+            suite.add_test_case(case(&format!("validity: {}", v.name), status));
+        }
+        if !r.accuracy_warnings.is_empty() {
+            let warnings: String = r
+                .accuracy_warnings
+                .iter()
+                .map(|w| format!("warning: {path}: {}\n", visible(&w.message)))
+                .collect();
+            suite.set_system_err(warnings);
+        }
+        report.add_test_suite(suite);
+    }
+    let mut xml = report
+        .to_string()
+        .expect("invariant: a report in memory serializes");
+    if !xml.ends_with('\n') {
+        xml.push('\n');
+    }
+    xml
+}
+
+/// The rules a SARIF result names (`ruleId`), in `ruleIndex` order.
+const RULES: [(&str, &str); 4] = [
+    (
+        "expectation",
+        "A value computed from the part file is outside its [expect] entry's tolerance or bounds",
+    ),
+    (
+        "validity",
+        "The body is not physical: mass not positive, inertia not positive definite, or the triangle inequality broken",
+    ),
+    (
+        "invalid-file",
+        "The part file cannot be read or is not valid",
+    ),
+    (
+        "accuracy",
+        "A value's rigorous error bound exceeds --rtol in the arithmetic used",
+    ),
+];
+
+/// SARIF 2.1.0: one run of the tool `massprop`, a result per failure and
+/// warning. Columns count Unicode code points (`columnKind`), as massprop's
+/// do; a region's `endColumn` is the column after its last character.
+pub fn sarif(results: &[FileResult]) -> String {
+    fn rule(id: &str) -> usize {
+        RULES
+            .iter()
+            .position(|(r, _)| *r == id)
+            .expect("invariant: every result names one of RULES")
+    }
+    fn result(id: &str, level: &str, text: &str, path: &str, span: Option<Span>) -> Value {
+        let mut location = json!({ "artifactLocation": { "uri": uri(path) } });
+        if let Some(s) = span {
+            location["region"] = json!({
+                "startLine": s.line,
+                "startColumn": s.column,
+                "endLine": s.end_line,
+                "endColumn": s.end_column + 1,
+            });
+        }
+        json!({
+            "ruleId": id,
+            "ruleIndex": rule(id),
+            "level": level,
+            "message": { "text": text },
+            "locations": [{ "physicalLocation": location }],
+        })
+    }
+    let mut out = Vec::new();
+    for r in results {
+        if let Some(d) = &r.error {
+            let (path, span) = place(d, r);
+            out.push(result(
+                "invalid-file",
+                "error",
+                &diagnostic_text(d),
+                path,
+                span,
+            ));
+        }
+        for m in r.validity_failures() {
+            out.push(result("validity", "error", &visible(m), &r.path, None));
+        }
+        for c in r.checks.iter().filter(|c| !c.pass) {
+            let span = Span {
+                line: c.line,
+                column: c.column,
+                end_line: c.end_line,
+                end_column: c.end_column,
+            };
+            let text = visible(&failure(c));
+            out.push(result("expectation", "error", &text, &r.path, Some(span)));
+        }
+        for w in &r.accuracy_warnings {
+            let text = visible(&w.message);
+            out.push(result("accuracy", "warning", &text, &r.path, None));
+        }
+    }
+    let rules: Vec<Value> = RULES
+        .iter()
+        .map(|(id, text)| json!({ "id": id, "shortDescription": { "text": text } }))
+        .collect();
+    super::json_line(&json!({
+        "$schema": "https://json.schemastore.org/sarif-2.1.0.json",
+        "version": "2.1.0",
+        "runs": [{
+            "tool": { "driver": {
+                "name": "massprop",
+                "version": MASSPROP_VERSION,
+                "rules": rules,
+            }},
+            "columnKind": "unicodeCodePoints",
+            "results": out,
+        }],
+    }))
+}
+
+/// A path as a relative URI reference: every byte but the unreserved ones
+/// and `/` percent-encoded, so a space or `#` in a name does not end or
+/// change the reference.
+fn uri(path: &str) -> String {
+    let mut out = String::new();
+    for b in path.bytes() {
+        match b {
+            b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
+                out.push(char::from(b))
+            }
+            _ => out.push_str(&format!("%{b:02X}")),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::check::{Status, Validity};
+
+    /// A file whose body breaks the triangle inequality (the reader refuses
+    /// such files, so this is built by hand): each format reports it on
+    /// the file, with the check's name.
+    #[test]
+    fn a_failed_validity_check_is_reported_on_its_file() {
+        let r = FileResult {
+            path: "a,b:c.toml".into(),
+            status: Status::Failed,
+            error: None,
+            checks: Vec::new(),
+            validity: vec![
+                Validity {
+                    name: "mass is positive",
+                    failure: None,
+                },
+                Validity {
+                    name: "triangle inequality",
+                    failure: Some("I1 + I2 = 2 < I3 = 5".into()),
+                },
+            ],
+            precision: None,
+            accuracy_warnings: Vec::new(),
+        };
+        let results = [r];
+        assert_eq!(
+            github(&results),
+            "::error file=a%2Cb%3Ac.toml,title=massprop check%3A triangle inequality::I1 + I2 = 2 < I3 = 5\nchecked 1 file: 0 ok, 1 failed, 0 invalid\n"
+        );
+        let xml = junit(&results);
+        assert!(
+            xml.contains(r#"<testcase name="validity: mass is positive" classname="a,b:c.toml"/>"#),
+            "{xml}"
+        );
+        assert!(
+            xml.contains(r#"<failure message="I1 + I2 = 2 &lt; I3 = 5" type="validity">"#),
+            "{xml}"
+        );
+        let sarif: serde_json::Value = serde_json::from_str(&sarif(&results)).unwrap();
+        let result = &sarif["runs"][0]["results"][0];
+        assert_eq!(result["ruleId"], "validity");
+        assert_eq!(
+            result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"],
+            "a%2Cb%3Ac.toml"
+        );
+        assert!(
+            result["locations"][0]["physicalLocation"]
+                .get("region")
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn paths_become_relative_uri_references() {
+        assert_eq!(uri("shapes/a b#1%.toml"), "shapes/a%20b%231%25.toml");
+        assert_eq!(uri("dir\\x.toml"), "dir%5Cx.toml");
+        assert_eq!(uri("é.toml"), "%C3%A9.toml");
+    }
+}
