@@ -103,9 +103,20 @@ pub struct MaterialsArgs {
 
 #[derive(Args, Debug)]
 pub struct CheckArgs {
-    /// Part files, and directories searched recursively for `*.toml`.
+    /// Part files, and directories searched recursively for `*.toml` part
+    /// files (`.gitignore` and `.ignore` honoured, hidden files skipped).
     #[arg(value_name = "PATH", required = true)]
     pub paths: Vec<std::path::PathBuf>,
+
+    /// Search hidden files and directories too.
+    #[arg(long)]
+    pub hidden: bool,
+
+    /// Skip paths matching GLOB in directory searches (gitignore syntax,
+    /// relative to the directory named; repeatable), e.g. `--exclude
+    /// 'fixtures/'`.
+    #[arg(long, value_name = "GLOB")]
+    pub exclude: Vec<String>,
 
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
@@ -391,6 +402,10 @@ impl Cli {
                 accuracy: a.accuracy.accuracy(),
                 format: a.format.0,
                 include_roots: a.includes.include_root.clone(),
+                search: commands::check::Search {
+                    hidden: a.hidden,
+                    exclude: a.exclude.clone(),
+                },
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),

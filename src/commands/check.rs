@@ -27,14 +27,16 @@ pub struct Options {
     pub format: Format,
     /// More directory trees includes may come from.
     pub include_roots: Vec<PathBuf>,
+    /// How directories are searched.
+    pub search: Search,
 }
 
 /// What a search for part files found. Paths are kept as the file system
 /// gave them (a name need not be UTF-8) and shown by `display_path`.
 enum Found {
     /// A part file to check: as named (`false`), or found in a directory
-    /// (`true`: it must read as a part file before anything of it is
-    /// quoted).
+    /// (`true`: a `*.toml` that does not read as a part file, such as
+    /// `Cargo.toml`, is passed over, and nothing of it is quoted).
     File(PathBuf, bool),
     /// Something that is not checked, with why: a FIFO, socket or device
     /// named `*.toml` (never opened: reading one can block forever), or a
@@ -43,85 +45,110 @@ enum Found {
     Skipped(String, Diagnostic),
 }
 
-/// The part files named: files as given, directories searched recursively
-/// for `*.toml` in sorted order.
-fn collect(paths: &[PathBuf]) -> Vec<Found> {
+/// How directories are searched (`--hidden`, `--exclude`).
+#[derive(Debug, Clone, Default)]
+pub struct Search {
+    /// Hidden files and directories (names starting with `.`) too.
+    pub hidden: bool,
+    /// Globs of paths not to check, as in a `.gitignore` (relative to the
+    /// directory searched).
+    pub exclude: Vec<String>,
+}
+
+/// The part files named: files as given; directories searched recursively
+/// as ripgrep searches them (the `ignore` crate: `.gitignore`, `.ignore`
+/// and git's excludes honoured, hidden entries skipped unless
+/// `--hidden`, `--exclude` globs), `*.toml` files in sorted order.
+fn collect(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic> {
     /// `root`: the directory named, canonical.
-    fn walk(dir: &Path, root: &Path, out: &mut Vec<Found>) {
-        let read = match std::fs::read_dir(dir) {
-            Ok(read) => read,
-            Err(e) => {
-                let name = display_path(dir);
-                let d = Diagnostic::file(&name, format!("cannot read directory: {e}"));
-                return out.push(Found::Skipped(name, d));
+    fn walk(
+        dir: &Path,
+        root: &Path,
+        search: &Search,
+        out: &mut Vec<Found>,
+    ) -> Result<(), Diagnostic> {
+        let mut excluded = ignore::overrides::OverrideBuilder::new(dir);
+        for glob in &search.exclude {
+            excluded
+                .add(&format!("!{glob}"))
+                .map_err(|e| Diagnostic::plain(format!("--exclude `{}`: {e}", visible(glob))))?;
+        }
+        let excluded = excluded
+            .build()
+            .map_err(|e| Diagnostic::plain(format!("--exclude: {e}")))?;
+        // Symlinked directories are not followed (as ripgrep does not by
+        // default: `ln -s .. up` would loop); symlinked files are, to a part
+        // file inside the directory named.
+        let walker = ignore::WalkBuilder::new(dir)
+            .hidden(!search.hidden)
+            .overrides(excluded)
+            .follow_links(false)
+            .sort_by_file_name(|a, b| a.cmp(b))
+            .build();
+        for entry in walker {
+            let entry = match entry {
+                Ok(entry) => entry,
+                Err(e) => {
+                    // An unreadable directory, or an ignore file that cannot
+                    // be read or parsed: said, and the search goes on.
+                    let name = display_path(dir);
+                    let d = Diagnostic::file(&name, format!("cannot search: {e}"));
+                    out.push(Found::Skipped(name, d));
+                    continue;
+                }
+            };
+            // Its own type (from the directory, not following a symlink).
+            let Some(t) = entry.file_type() else {
+                continue;
+            };
+            let p = entry.path();
+            if t.is_dir() || !crate::io::is_toml(p) {
+                continue;
             }
-        };
-        // With each entry's own type (from the directory, not following a
-        // symlink): symlinked directories are not followed (as ripgrep does
-        // not by default: `ln -s .. up` would loop); symlinked files are,
-        // to a part file inside the directory named.
-        let mut entries: Vec<(PathBuf, bool, bool)> = read
-            .filter_map(|e| e.ok())
-            .map(|e| {
-                let t = e.file_type();
-                let dir = t.as_ref().is_ok_and(|t| t.is_dir());
-                let link = t.is_ok_and(|t| t.is_symlink());
-                (e.path(), dir, link)
-            })
-            .collect();
-        entries.sort();
-        for (p, dir, link) in entries {
-            if dir {
-                walk(&p, root, out);
-            } else if link
-                && crate::io::is_toml(&p)
-                && std::fs::canonicalize(&p)
+            if t.is_symlink()
+                && std::fs::canonicalize(p)
                     .is_ok_and(|t| !(t.starts_with(root) && crate::io::is_toml(&t)))
             {
                 // A file from a pull request, `x.toml -> ~/.cargo/credentials.toml`
                 // or `-> .git/config`, would be read and quoted in the log.
-                let name = display_path(&p);
+                let name = display_path(p);
                 let d = Diagnostic::file(
                     &name,
                     "not checked: a symlink to a file outside the directory searched, or to one that is not a `*.toml` file (check it by its own path)",
                 );
                 out.push(Found::Skipped(name, d));
-            } else if crate::io::is_toml(&p) {
-                // The target's type, without opening it.
-                match std::fs::metadata(&p) {
-                    Ok(m) if m.is_file() => out.push(Found::File(p, true)),
-                    Ok(m) if m.is_dir() => {}
-                    _ => {
-                        let name = display_path(&p);
-                        let d = Diagnostic::file(
-                            &name,
-                            "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
-                        );
-                        out.push(Found::Skipped(name, d));
-                    }
+                continue;
+            }
+            // The target's type, without opening it.
+            match std::fs::metadata(p) {
+                Ok(m) if m.is_file() => out.push(Found::File(p.to_path_buf(), true)),
+                Ok(m) if m.is_dir() => {}
+                _ => {
+                    let name = display_path(p);
+                    let d = Diagnostic::file(
+                        &name,
+                        "not a part file: not a regular file (a FIFO, socket, device or broken link), so not read",
+                    );
+                    out.push(Found::Skipped(name, d));
                 }
             }
         }
+        Ok(())
     }
     let mut out = Vec::new();
     for p in paths {
         if p.as_os_str() != "-" && p.is_dir() {
             let root = std::fs::canonicalize(p).unwrap_or_else(|_| p.clone());
-            walk(p, &root, &mut out);
+            walk(p, &root, search, &mut out)?;
         } else {
             out.push(Found::File(p.clone(), false));
         }
     }
-    out
+    Ok(out)
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
-    let found = collect(&o.paths);
-    if found.is_empty() {
-        return Err(Diagnostic::plain(
-            "no part files found (`check` looks for *.toml in directories)",
-        ));
-    }
+    let found = collect(&o.paths, &o.search)?;
     let mut results = Vec::new();
     let mut stderr = String::new();
     let settings = Settings {
@@ -157,6 +184,16 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         } else {
             display_path(&path)
         };
+        // A `*.toml` found in a directory that is no part file
+        // (`Cargo.toml`, a `settings.toml`, a `credentials.toml`) is passed
+        // over as a search passes over any other file: not checked, not
+        // blessed, nothing of it quoted. Read once, here, unless `--bless`
+        // rewrites it first.
+        let mut source = (found || !o.bless).then(|| crate::io::read_source_at(&path));
+        if found && matches!(&source, Some(Ok(s)) if !crate::model::looks_like_a_part_file(&s.text))
+        {
+            continue;
+        }
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
         // itself (standard input, a write error) is the error.
@@ -176,24 +213,12 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
                 Ok(false) => stderr.push_str(&format!("{}: unchanged\n", visible(&f))),
                 Err(d) => not_blessed = Some(d),
             }
+            source = None;
         }
-        // A `*.toml` found in a directory that is no part file (a
-        // `settings.toml`, a `credentials.toml`) is not checked, and none
-        // of it is quoted in an error. Every file a part file includes
-        // joins `read` even if it turns out invalid: `-o` may write onto
-        // none of them.
-        let part_file = |source: crate::diag::Source| {
-            if found && !crate::model::looks_like_a_part_file(&source.text) {
-                Err(Diagnostic::file(
-                    &f,
-                    "not a part file: it has no `[[part]]` table, so it is not checked (nor quoted)",
-                ))
-            } else {
-                Ok(source)
-            }
-        };
-        let loaded = crate::io::read_source_at(&path)
-            .and_then(part_file)
+        // Every file a part file includes joins `read` even if it turns out
+        // invalid: `-o` may write onto none of them.
+        let loaded = source
+            .unwrap_or_else(|| crate::io::read_source_at(&path))
             .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
             .map(|l| {
                 stderr.push_str(&super::accuracy_warnings(&l));
@@ -217,6 +242,11 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             Ok(r) => results.push(r),
             Err(d) => results.push(invalid(f, d, &mut stderr)),
         }
+    }
+    if results.is_empty() {
+        return Err(Diagnostic::plain(
+            "no part files found (a directory is searched for `*.toml` files with a `[[part]]` table; hidden and ignored ones are passed over)",
+        ));
     }
     let worst = |s: Status| results.iter().any(|r| r.status == s);
     let status = if worst(Status::Invalid) {

@@ -38,6 +38,12 @@ fn diagnostic_text(d: &Diagnostic) -> String {
     text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
 }
 
+/// A path as the CI system matches it against the repository's files:
+/// without the `./` that searching `.` puts before each.
+fn repo_path(path: &str) -> &str {
+    path.strip_prefix("./").unwrap_or(path)
+}
+
 /// Where a diagnostic points: its file (the file checked when it has no
 /// place of its own, or an include's) and its span.
 fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
@@ -61,7 +67,7 @@ pub fn github(results: &[FileResult]) -> String {
         data(s).replace(':', "%3A").replace(',', "%2C")
     }
     fn command(level: &str, path: &str, span: Option<Span>, title: &str, text: &str) -> String {
-        let mut props = format!("file={}", property(&visible(path)));
+        let mut props = format!("file={}", property(&visible(repo_path(path))));
         if let Some(s) = span {
             props.push_str(&format!(
                 ",line={},col={},endLine={},endColumn={}",
@@ -243,7 +249,7 @@ pub fn sarif(results: &[FileResult]) -> String {
             .expect("invariant: every result names one of RULES")
     }
     fn result(id: &str, level: &str, text: &str, path: &str, span: Option<Span>) -> Value {
-        let mut location = json!({ "artifactLocation": { "uri": uri(path) } });
+        let mut location = json!({ "artifactLocation": { "uri": uri(repo_path(path)) } });
         if let Some(s) = span {
             location["region"] = json!({
                 "startLine": s.line,

@@ -649,36 +649,43 @@ fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
 }
 
 /// A `*.toml` that `check DIR` finds but that is no part file (no
-/// `[[part]]`: settings, credentials) is reported as not checked, and
-/// nothing of it is quoted; one named on the command line is checked (and
-/// its error quoted) as before.
+/// `[[part]]`: `Cargo.toml`, settings, credentials) is passed over: not
+/// counted, nothing of it quoted, not blessed; one named on the command
+/// line is checked (and its error quoted) as before.
 #[test]
-fn check_dir_quotes_nothing_of_a_toml_file_that_is_not_a_part_file() {
+fn check_dir_passes_over_a_toml_file_that_is_not_a_part_file() {
     const SECRET: &str = "SECRET-91d2";
     let dir = crate::common::scratch("check", "dir-non-part");
-    std::fs::create_dir_all(dir.join(".cargo")).unwrap();
     let secret = format!("token = \"{SECRET}\"\n");
     std::fs::write(dir.join("settings.toml"), &secret).unwrap();
-    std::fs::write(dir.join(".cargo/credentials.toml"), &secret).unwrap();
+    std::fs::write(dir.join("Cargo.toml"), "[package]\nname = \"x\"\n").unwrap();
     // A part file with a byte-order mark and a quoted header is one.
     std::fs::write(
         dir.join("real.toml"),
         "\u{feff}[[\"part\"]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
     )
     .unwrap();
-    let (stdout, stderr) = check_invalid_quoting_nothing_of(&dir, SECRET);
-    for name in [".cargo/credentials.toml", "settings.toml"] {
+    for bless in [false, true] {
+        let mut args = vec!["check", dir.to_str().unwrap()];
+        if bless {
+            args.push("--bless");
+        }
+        let out = massprop(&args);
+        let (stdout, stderr) = (
+            String::from_utf8(out.stdout).unwrap(),
+            String::from_utf8(out.stderr).unwrap(),
+        );
+        assert_eq!(out.status.code(), Some(0), "{stdout}{stderr}");
+        assert!(!stdout.contains(SECRET) && !stderr.contains(SECRET));
         assert!(
-            stderr.contains(&format!(
-                "{name}: error: not a part file: it has no `[[part]]` table"
-            )),
-            "{stderr}"
+            stdout.ends_with("real.toml: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid\n"),
+            "{stdout}"
+        );
+        assert_eq!(
+            std::fs::read_to_string(dir.join("settings.toml")).unwrap(),
+            secret
         );
     }
-    assert!(
-        stdout.ends_with("checked 3 files: 1 ok, 0 failed, 2 invalid\n"),
-        "{stdout}"
-    );
     // Named, it is read as the part file it is asked to be.
     let named = dir.join("settings.toml");
     let out = massprop(&["check", named.to_str().unwrap()]);

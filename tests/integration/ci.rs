@@ -147,7 +147,10 @@ fn github_annotations_parse_back_to_every_failure_at_its_place() {
         ("10", "14")
     );
     assert_eq!(izz.1["title"], "massprop check: Izz");
-    assert_eq!(izz.2, "Izz 5 kg·m² is outside 6 kg·m² ± 1 % (off by -16.667 %)");
+    assert_eq!(
+        izz.2,
+        "Izz 5 kg·m² is outside 6 kg·m² ± 1 % (off by -16.667 %)"
+    );
     // The invalid file's message keeps its help line.
     let bad = commands
         .iter()

@@ -492,18 +492,36 @@ fn predict(files: &[TreeFile], written: &Written) -> Predicted {
 /// The `*.toml` that `check DIR` finds in `dir` (not following symlinked
 /// directories).
 fn toml_files(dir: &Path) -> usize {
-    let mut n = 0;
-    for e in std::fs::read_dir(dir).unwrap() {
-        let e = e.unwrap();
-        if e.file_type().unwrap().is_dir() {
-            n += toml_files(&e.path());
-        } else if e.path().extension().is_some_and(|x| x == "toml")
-            && !std::fs::metadata(e.path()).is_ok_and(|m| m.is_dir())
-        {
-            n += 1;
+    fn count(dir: &Path, root: &Path) -> usize {
+        let mut n = 0;
+        for e in std::fs::read_dir(dir).unwrap() {
+            let e = e.unwrap();
+            let (p, t) = (e.path(), e.file_type().unwrap());
+            if t.is_dir() {
+                n += count(&p, root);
+            } else if p.extension().is_some_and(|x| x == "toml") {
+                // A symlink out of the tree, or to what is not `*.toml`, is
+                // reported; so is anything not a regular file (a FIFO, a
+                // broken link: never opened, reading a FIFO blocks). A
+                // regular file is a part file when it has a `[[part]]`
+                // table (an empty one is passed over).
+                let escapes = t.is_symlink()
+                    && std::fs::canonicalize(&p).is_ok_and(|t| {
+                        !(t.starts_with(root) && t.extension().is_some_and(|x| x == "toml"))
+                    });
+                n += match std::fs::metadata(&p) {
+                    _ if escapes => 1,
+                    Ok(m) if m.is_dir() => 0,
+                    Ok(m) if m.is_file() => usize::from(
+                        std::fs::read_to_string(&p).map_or(true, |t| t.contains("[[part]]")),
+                    ),
+                    _ => 1,
+                };
+            }
         }
+        n
     }
-    n
+    count(dir, &std::fs::canonicalize(dir).unwrap())
 }
 
 fn no_marker(what: &str, out: &Out) -> Result<(), String> {

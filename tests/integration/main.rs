@@ -19,3 +19,4 @@ mod package;
 mod physics;
 mod shell;
 mod stress;
+mod walk;
