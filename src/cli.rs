@@ -44,6 +44,9 @@ pub enum Command {
     /// Print the manual page (roff), for `man`.
     #[command(after_help = MAN_HELP)]
     Man,
+    /// Print the part file's JSON Schema, for editors (`#:schema` in Taplo, Even Better TOML).
+    #[command(after_help = SCHEMA_HELP)]
+    Schema,
 }
 
 const REPORT_HELP: &str = "\
@@ -78,6 +81,11 @@ const MAN_HELP: &str = "\
 Examples:
   massprop man > ~/.local/share/man/man1/massprop.1 && man massprop
   massprop man | man -l -";
+
+const SCHEMA_HELP: &str = "\
+Examples:
+  massprop schema > massprop.schema.json          then `#:schema ./massprop.schema.json` atop a part file
+  massprop schema | jq '.\"$defs\".ShapeName.enum'  the shape names";
 
 #[derive(Args, Debug)]
 pub struct CompletionsArgs {
@@ -375,6 +383,7 @@ impl Cli {
             }),
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
+            Command::Schema => Request::Text(crate::model::schema::text()),
         }
     }
 }

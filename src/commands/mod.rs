@@ -102,9 +102,10 @@ pub enum Request {
     Check(check::Options),
     Diff(diff::Options),
     Materials(materials::Options),
-    /// A text made from the command line's own definition (`completions`,
-    /// `man`: `cli` makes it, the only module that knows clap), printed as
-    /// it is.
+    /// A text made before the run, printed as it is: `completions` and
+    /// `man` from the command line's own definition (`cli` makes them, the
+    /// only module that knows clap), `schema` from the part file's types
+    /// (`model::schema`).
     Text(String),
 }
 

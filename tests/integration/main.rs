@@ -16,5 +16,6 @@ mod invariants;
 mod layers;
 mod package;
 mod physics;
+mod schema;
 mod shell;
 mod stress;
