@@ -47,6 +47,9 @@ pub enum Command {
     /// Print the part file's JSON Schema, for editors (`#:schema` in Taplo, Even Better TOML).
     #[command(after_help = SCHEMA_HELP)]
     Schema,
+    /// Write a commented starter part file that `check` passes.
+    #[command(after_help = INIT_HELP)]
+    Init(InitArgs),
 }
 
 const REPORT_HELP: &str = "\
@@ -86,6 +89,19 @@ const SCHEMA_HELP: &str = "\
 Examples:
   massprop schema > massprop.schema.json          then `#:schema ./massprop.schema.json` atop a part file
   massprop schema | jq '.\"$defs\".ShapeName.enum'  the shape names";
+
+const INIT_HELP: &str = "\
+Examples:
+  massprop init arm.toml                a new file (an existing one is left alone: exit 2)
+  massprop init                         the starter on standard output
+  massprop init arm.toml && massprop check arm.toml";
+
+#[derive(Args, Debug)]
+pub struct InitArgs {
+    /// The new part file (`-` or none: standard output); never replaced if it exists.
+    #[arg(value_name = "FILE")]
+    pub file: Option<String>,
+}
 
 #[derive(Args, Debug)]
 pub struct CompletionsArgs {
@@ -384,6 +400,9 @@ impl Cli {
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
             Command::Schema => Request::Text(crate::model::schema::text()),
+            Command::Init(a) => Request::Init(commands::init::Options {
+                file: a.file.clone(),
+            }),
         }
     }
 }

@@ -538,3 +538,75 @@ fn a_schema_directive_on_the_first_line_changes_nothing() {
     }
     assert!(n >= 7);
 }
+
+/// The starter of `init`: on standard output, it validates and `check`
+/// passes it.
+#[test]
+fn init_prints_a_starter_that_validates_and_passes_check() {
+    let out = massprop(&["init"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text, massprop::commands::init::STARTER);
+    assert_eq!(massprop(&["init", "-"]).stdout, text.as_bytes());
+    let errors = schema_errors(&text);
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    let dir = scratch("schema", "init-check");
+    let file = dir.join("starter.toml");
+    std::fs::write(&file, &text).unwrap();
+    let check = massprop(&["check", file.to_str().unwrap()]);
+    assert_eq!(
+        check.status.code(),
+        Some(0),
+        "{}{}",
+        String::from_utf8_lossy(&check.stdout),
+        String::from_utf8_lossy(&check.stderr)
+    );
+    // It has expectations for `check` to hold, and comments.
+    assert!(text.contains("[expect]"));
+    assert!(
+        text.lines()
+            .filter(|l| l.trim_start().starts_with('#'))
+            .count()
+            >= 20
+    );
+    // No live directive: it would name a file that is not there.
+    assert!(!text.lines().any(|l| l.starts_with("#:schema")));
+}
+
+#[test]
+fn init_writes_a_new_file_and_refuses_an_existing_one() {
+    let dir = scratch("schema", "init-file");
+    let file = dir.join("new.toml");
+    let path = file.to_str().unwrap();
+    let out = massprop(&["init", path]);
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(
+        std::fs::read_to_string(&file).unwrap(),
+        massprop::commands::init::STARTER
+    );
+    // Again: refused, the file as it was.
+    std::fs::write(&file, "# mine\n").unwrap();
+    let out = massprop(&["init", path]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert!(stderr.contains(path), "{stderr}");
+    assert!(stderr.contains("already exists"), "{stderr}");
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "# mine\n");
+    // A symlink, even one to nothing, is a name taken.
+    #[cfg(unix)]
+    {
+        let link = dir.join("link.toml");
+        std::os::unix::fs::symlink(dir.join("nowhere.toml"), &link).unwrap();
+        let out = massprop(&["init", link.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(!dir.join("nowhere.toml").exists());
+    }
+    // Nothing left behind: no temporary file.
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(names.iter().all(|n| !n.contains(".tmp")), "{names:?}");
+}
