@@ -11,6 +11,11 @@
 //! model checks (ranges, perpendicular edges, a key's dimension): a file it
 //! accepts may still be refused by `massprop check`, never the other way
 //! round (tests/integration/schema.rs).
+//!
+//! Draft 2020-12 by its `$schema`, but in draft 7's keywords alone (with
+//! `$defs`, which a draft-7 validator reaches by its JSON pointer): Taplo
+//! 0.9, the engine of Even Better TOML, validates as draft 7 and skips any
+//! keyword it does not know.
 
 use super::raw::{Angles, ExpectValue, Quantity, RawFile};
 use crate::shapes::{Dims, MaterialRule, SHAPES, Spanned as Spans};
@@ -79,7 +84,6 @@ fn part_rules() -> Vec<Value> {
         let mut then = Map::new();
         then.insert("description".into(), s.help.into());
         then.insert("propertyNames".into(), json!({ "enum": keys }));
-        then.insert("allOf".into(), json!([mass_rule(s), placement_rule(s)]));
         let mut counts = Map::new();
         if let Dims::Size(n) = s.dims {
             counts.insert("size".into(), json!({ "minItems": n, "maxItems": n }));
@@ -90,25 +94,7 @@ fn part_rules() -> Vec<Value> {
         if !counts.is_empty() {
             then.insert("properties".into(), Value::Object(counts));
         }
-        // A material needs exactly one of the keys that turn its density
-        // into the shape's (a thickness, a section); those that do nothing
-        // else need the material (a plate's `thickness` and a rod's
-        // `diameter` are real sizes too).
-        let turning = super::material::material_keys(s.material);
-        if !turning.is_empty() {
-            then.insert(
-                "dependentSchemas".into(),
-                json!({ "material": { "oneOf": each_required(turning) } }),
-            );
-        }
-        let with_material: Map<String, Value> = turning
-            .iter()
-            .filter(|k| s.real_size.is_none_or(|(r, _)| r != **k))
-            .map(|k| (k.to_string(), json!(["material"])))
-            .collect();
-        if !with_material.is_empty() {
-            then.insert("dependentRequired".into(), Value::Object(with_material));
-        }
+        then.insert("allOf".into(), Value::Array(rules_of(s)));
         rules.push(json!({
             "if": {
                 "properties": { "shape": { "const": s.name } },
@@ -116,6 +102,36 @@ fn part_rules() -> Vec<Value> {
             },
             "then": then,
         }));
+    }
+    rules
+}
+
+/// What a part of shape `s` needs, and what goes together.
+///
+/// NOTE: written with `if`/`then` (draft 7), not `dependentSchemas` and
+/// `dependentRequired` (2019-09): Taplo 0.9 validates as draft 7 and
+/// skips keywords it does not know, so those rules did not reach the
+/// editor.
+fn rules_of(s: &crate::shapes::ShapeInfo) -> Vec<Value> {
+    let mut rules = vec![mass_rule(s), placement_rule(s)];
+    // A material needs exactly one of the keys that turn its density into
+    // the shape's (a thickness, a section); those that do nothing else
+    // need the material (a plate's `thickness` and a rod's `diameter` are
+    // real sizes too).
+    let turning = super::material::material_keys(s.material);
+    if !turning.is_empty() {
+        rules.push(json!({
+            "if": { "required": ["material"] },
+            "then": { "oneOf": each_required(turning) },
+        }));
+    }
+    for k in turning {
+        if s.real_size.is_none_or(|(r, _)| r != *k) {
+            rules.push(json!({
+                "if": { "required": [k] },
+                "then": { "required": ["material"] },
+            }));
+        }
     }
     rules
 }
@@ -372,6 +388,26 @@ mod tests {
     fn no_schema_allows_null() {
         let text = text();
         assert!(!text.contains("\"null\""), "{text}");
+    }
+
+    /// Taplo validates as draft 7: a keyword of 2019-09 or later would be
+    /// skipped there (see the module's comment).
+    #[test]
+    fn the_schema_uses_no_keyword_newer_than_draft_7() {
+        let text = text();
+        for newer in [
+            "dependentRequired",
+            "dependentSchemas",
+            "unevaluatedProperties",
+            "unevaluatedItems",
+            "prefixItems",
+            "$anchor",
+            "$dynamicRef",
+            "minContains",
+            "maxContains",
+        ] {
+            assert!(!text.contains(&format!("\"{newer}\"")), "{newer}");
+        }
     }
 
     #[test]

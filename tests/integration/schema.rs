@@ -13,6 +13,9 @@ use std::sync::LazyLock;
 static SCHEMA: LazyLock<Value> = LazyLock::new(massprop::model::schema::schema);
 static VALIDATOR: LazyLock<jsonschema::Validator> =
     LazyLock::new(|| jsonschema::validator_for(&SCHEMA).expect("the schema compiles"));
+/// The schema read as draft 7, as Taplo 0.9 (Even Better TOML) reads it.
+static DRAFT_7: LazyLock<jsonschema::Validator> =
+    LazyLock::new(|| jsonschema::draft7::new(&SCHEMA).expect("the schema compiles as draft 7"));
 
 /// A part file as the JSON an editor validates (Taplo reads TOML into
 /// JSON the same way).
@@ -21,13 +24,20 @@ fn as_json(text: &str) -> Value {
     serde_json::to_value(table).unwrap()
 }
 
-/// The schema's complaints about a part file, one line each.
+/// The schema's complaints about a part file, one line each; read as
+/// draft 7 it judges the file alike.
 fn schema_errors(text: &str) -> Vec<String> {
     let json = as_json(text);
-    VALIDATOR
+    let errors: Vec<String> = VALIDATOR
         .iter_errors(&json)
         .map(|e| format!("{}: {e} (at {})", e.instance_path(), e.schema_path()))
-        .collect()
+        .collect();
+    assert_eq!(
+        DRAFT_7.is_valid(&json),
+        errors.is_empty(),
+        "draft 2020-12 and draft 7 disagree on:\n{text}"
+    );
+    errors
 }
 
 /// The reader's verdict on a part file (no includes).
