@@ -44,6 +44,12 @@ pub enum Command {
     /// Print the manual page (roff), for `man`.
     #[command(after_help = MAN_HELP)]
     Man,
+    /// Print the part file's JSON Schema, for editors (`#:schema` in Taplo, Even Better TOML).
+    #[command(after_help = SCHEMA_HELP)]
+    Schema,
+    /// Write a commented starter part file that `check` passes.
+    #[command(after_help = INIT_HELP)]
+    Init(InitArgs),
 }
 
 const REPORT_HELP: &str = "\
@@ -78,6 +84,24 @@ const MAN_HELP: &str = "\
 Examples:
   massprop man > ~/.local/share/man/man1/massprop.1 && man massprop
   massprop man | man -l -";
+
+const SCHEMA_HELP: &str = "\
+Examples:
+  massprop schema > massprop.schema.json          then `#:schema ./massprop.schema.json` atop a part file
+  massprop schema | jq '.\"$defs\".ShapeName.enum'  the shape names";
+
+const INIT_HELP: &str = "\
+Examples:
+  massprop init arm.toml                a new file (an existing one is left alone: exit 2)
+  massprop init                         the starter on standard output
+  massprop init arm.toml && massprop check arm.toml";
+
+#[derive(Args, Debug)]
+pub struct InitArgs {
+    /// The new part file (`-` or none: standard output); never replaced if it exists.
+    #[arg(value_name = "FILE")]
+    pub file: Option<String>,
+}
 
 #[derive(Args, Debug)]
 pub struct CompletionsArgs {
@@ -423,6 +447,10 @@ impl Cli {
             }),
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
+            Command::Schema => Request::Text(crate::model::schema::text()),
+            Command::Init(a) => Request::Init(commands::init::Options {
+                file: a.file.clone(),
+            }),
         }
     }
 }

@@ -203,6 +203,26 @@ pub fn write_atomically(path: &str, text: &str, what: &str) -> Result<(), Diagno
     write_atomically_with(path, &|w| w.write_all(text.as_bytes()), what)
 }
 
+/// Write `text` to the new file `path` (`what` names it in errors), never
+/// over one that exists: the way `replace_by_rename` writes, but the
+/// temporary file takes the name only if nothing has it yet
+/// (`persist_noclobber`), so a file made meanwhile is not replaced either.
+pub fn write_new(path: &str, text: &str, what: &str) -> Result<(), Diagnostic> {
+    let exists = || {
+        Diagnostic::file(path, format!("{what} already exists; it is left as it is"))
+            .help("name a file that does not exist yet, or `-` for standard output")
+    };
+    // (`symlink_metadata`: a dangling symlink is a name taken too.)
+    if std::fs::symlink_metadata(path).is_ok() {
+        return Err(exists());
+    }
+    let content = |w: &mut dyn Write| w.write_all(text.as_bytes());
+    match replace_by_rename(Path::new(path), None, &content, path, what, false) {
+        Err(_) if std::fs::symlink_metadata(path).is_ok() => Err(exists()),
+        other => other,
+    }
+}
+
 /// What is written: called once, with the file (or standard output) to
 /// write it to, so that a long output is written as it is made.
 pub type Content<'a> = dyn Fn(&mut dyn Write) -> std::io::Result<()> + 'a;
@@ -280,7 +300,7 @@ pub fn write_atomically_with(path: &str, content: &Content, what: &str) -> Resul
             content(&mut text).map_err(fail)?;
             write_in_place(&mut file, &old, &text, links(&meta), path, what)
         }
-        meta => replace_by_rename(&target, meta.ok().as_ref(), content, path, what),
+        meta => replace_by_rename(&target, meta.ok().as_ref(), content, path, what, true),
     }
 }
 
@@ -418,6 +438,7 @@ impl Rewrite {
                 &|w| w.write_all(text.as_bytes()),
                 &self.name,
                 what,
+                true,
             )
         }
     }
@@ -453,12 +474,15 @@ fn links(meta: &std::fs::Metadata) -> u64 {
 ///   gets (0666 less the umask).
 /// - The directory is synced after the rename (best effort), so that the
 ///   rename itself survives a crash.
+/// - With `replace` false, the rename happens only if `target` does not
+///   exist (`write_new`).
 fn replace_by_rename(
     target: &Path,
     meta: Option<&std::fs::Metadata>,
     content: &Content,
     name: &str,
     what: &str,
+    replace: bool,
 ) -> Result<(), Diagnostic> {
     let fail = |e: std::io::Error| Diagnostic::file(name, format!("cannot write {what}: {e}"));
     let dir = target
@@ -499,7 +523,12 @@ fn replace_by_rename(
     }
     tmp.as_file().sync_all().map_err(fail)?;
     // On failure the error holds the temporary file, whose drop removes it.
-    tmp.persist(target).map_err(|e| {
+    let persisted = if replace {
+        tmp.persist(target)
+    } else {
+        tmp.persist_noclobber(target)
+    };
+    persisted.map_err(|e| {
         Diagnostic::file(
             name,
             format!("cannot write {what}: {}", without_path(&e.error)),

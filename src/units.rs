@@ -373,6 +373,31 @@ fn split_exponent(term: &str) -> Result<(&str, i32), UnitError> {
     }
 }
 
+/// Every unit symbol, in the order of the table (for the JSON Schema's
+/// description of a quantity).
+pub fn symbol_names() -> impl Iterator<Item = &'static str> {
+    SYMBOLS.iter().map(|s| s.name)
+}
+
+/// The quantity strings `split_number` and `parse_unit` read, of any
+/// dimension, as a regular expression (JSON Schema's `pattern`: ECMA-262,
+/// anchored here): a number, then symbols of `SYMBOLS` with their
+/// exponents, joined by `*`, `·` or spaces, with at most one `/`. Made
+/// from the table, so a symbol added there is in it; the key's dimension
+/// is the model's to check. (Stricter than the reader only where a unit is
+/// no symbol at all, such as `"3 */s"`.)
+pub fn quantity_pattern() -> String {
+    let symbol = SYMBOLS.iter().map(|s| s.name).collect::<Vec<_>>().join("|");
+    // `^n` (1 ≤ |n| ≤ 4), `²`, `³`, or one digit 1–4 (see `split_exponent`).
+    let term = format!("(?:{symbol})(?:\\^[+-]?0*[1-4]|[1-4²³])?");
+    let sep = "[*· ]";
+    let terms = format!("{sep}*{term}(?:{sep}+{term})*{sep}*");
+    // `split_number`: digits, `.` and `_`, one number once the `_` are
+    // gone; an exponent only with its digits.
+    let number = "[+-]?(?:[0-9_]*[0-9][0-9_]*(?:\\.[0-9_]*)?|[0-9_]*\\.[0-9_]*[0-9][0-9_]*)(?:[eE][+-]?[0-9]+)?";
+    format!("^\\s*{number}\\s*(?:1|{terms})(?:\\s*/\\s*{terms})?\\s*$")
+}
+
 /// Split `"7.85 g/cm^3"` into the number and the unit text.
 pub fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
     let t = text.trim_start();
@@ -535,6 +560,15 @@ mod tests {
         assert!((16.0 * oz.factor.value() - lb.factor.value()).abs() <= 1e-16);
         assert_eq!(parse_unit("L").unwrap().dim, Dim::new(0, 3, 0));
         assert!(parse_unit("m5").is_err());
+    }
+
+    /// `quantity_pattern` joins the symbols unescaped, and reads a digit
+    /// after one as its exponent.
+    #[test]
+    fn unit_symbols_are_letters_alone() {
+        for s in symbol_names() {
+            assert!(s.chars().all(char::is_alphabetic), "{s}");
+        }
     }
 
     #[test]

@@ -6,6 +6,7 @@
 pub mod bless;
 pub mod check;
 pub mod diff;
+pub mod init;
 pub mod materials;
 pub mod report;
 
@@ -102,9 +103,11 @@ pub enum Request {
     Check(check::Options),
     Diff(diff::Options),
     Materials(materials::Options),
-    /// A text made from the command line's own definition (`completions`,
-    /// `man`: `cli` makes it, the only module that knows clap), printed as
-    /// it is.
+    Init(init::Options),
+    /// A text made before the run, printed as it is: `completions` and
+    /// `man` from the command line's own definition (`cli` makes them, the
+    /// only module that knows clap), `schema` from the part file's types
+    /// (`model::schema`).
     Text(String),
 }
 
@@ -116,7 +119,7 @@ impl Request {
             Request::Report(o) => o.output.as_deref(),
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
-            Request::Materials(_) | Request::Text(_) => None,
+            Request::Materials(_) | Request::Init(_) | Request::Text(_) => None,
         };
         o.filter(|o| *o != "-")
     }
@@ -129,7 +132,7 @@ impl Request {
             // against every file read.
             Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
-            Request::Materials(_) | Request::Text(_) => Vec::new(),
+            Request::Materials(_) | Request::Init(_) | Request::Text(_) => Vec::new(),
         }
     }
 }
@@ -209,6 +212,7 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
         Request::Check(o) => check::run(o)?,
         Request::Diff(o) => diff::run(o)?,
         Request::Materials(o) => materials::run(o)?,
+        Request::Init(o) => init::run(o)?,
         Request::Text(text) => Outcome {
             stdout: Stdout::Text(text.clone()),
             stderr: String::new(),

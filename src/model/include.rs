@@ -379,6 +379,10 @@ impl Ctx<'_> {
     }
 }
 
+/// The keys of a part that includes a file, besides `name` (the JSON
+/// Schema reads them too: `model::schema`).
+pub(super) const INCLUDE_KEYS: [&str; 3] = ["include", "origin", "rotation"];
+
 impl Ctx<'_> {
     /// Read `[[part]] include = ".."` at position `index` into the
     /// sub-assembly it places, `parts` the parts of the body before it.
@@ -394,7 +398,7 @@ impl Ctx<'_> {
         let inc = p.include.as_deref().expect("the caller checked `include`");
         if let Some((key, span)) = super::parts::present_keys(p)
             .into_iter()
-            .filter(|(k, _)| !matches!(*k, "include" | "origin" | "rotation"))
+            .filter(|(k, _)| !INCLUDE_KEYS.contains(k))
             .find_map(|(k, s)| s.map(|s| (k, s)))
         {
             let what = if key == "shape" {

@@ -6,7 +6,8 @@
 //! `raw` (and its fast path `fast`) mirror the TOML; `ctx` reads values;
 //! `parts` validates a `[[part]]` against its shape's description;
 //! `include` places sub-assemblies; `expect` reads `[expect]`; `rotation`
-//! the rotation forms; `toml_error` words the TOML crate's errors.
+//! the rotation forms; `toml_error` words the TOML crate's errors;
+//! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
 mod ctx;
 pub mod expect;
@@ -17,6 +18,7 @@ mod parts;
 mod place;
 pub mod raw;
 pub mod rotation;
+pub mod schema;
 mod section;
 mod streamed;
 mod toml_error;

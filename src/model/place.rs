@@ -227,7 +227,7 @@ impl Ctx<'_> {
     pub(super) fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
         let raw = p.inertia.as_deref().expect("`part` checked the inertia");
         if let Some(pr) = &p.products
-            && !matches!(pr.get_ref().as_str(), "tensor" | "positive")
+            && !PRODUCTS.contains(&pr.get_ref().as_str())
         {
             return Err(self
                 .err(pr.span(), format!("unknown `products` convention {:?}", pr.get_ref()))
@@ -283,6 +283,10 @@ impl Ctx<'_> {
         Ok(Matrix3::from_fn(|i, j| c[i][j]))
     }
 }
+
+/// The sign conventions `products` may name: "tensor" (the default,
+/// off-diagonals −∫xy dm) and "positive" (+∫xy dm).
+pub(super) const PRODUCTS: [&str; 2] = ["tensor", "positive"];
 
 /// Whether a part's `products = "positive"` (checked in `part`).
 pub(super) fn positive_products(p: &RawPart) -> bool {

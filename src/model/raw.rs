@@ -5,7 +5,12 @@
 //! `#[serde(tag = "shape")]` enum: with toml, internally tagged enums lose
 //! error positions and let unknown keys through. Which keys apply to which
 //! shape is checked in `model`.
+//!
+//! The same types give the part file's JSON Schema (`model::schema`):
+//! `JsonSchema` is derived, each `Spanned` value described by the type it
+//! holds (`schemars(with)`: a span is no part of the file's text).
 
+use schemars::JsonSchema;
 use serde::Deserialize;
 use serde::de::{self, Deserializer, Visitor};
 use std::fmt;
@@ -60,15 +65,21 @@ table_only!(
     "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
 );
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, JsonSchema, Debug)]
 #[serde(deny_unknown_fields, expecting = "a part file")]
 pub struct RawFile {
+    #[schemars(with = "Option<String>")]
     pub name: Option<Spanned<String>>,
+    #[schemars(with = "Option<RawUnits>")]
     pub units: Option<Spanned<RawUnits>>,
+    #[schemars(with = "Option<Vec<RawPart>>")]
     pub part: Option<Spanned<Vec<Spanned<RawPart>>>>,
+    #[schemars(with = "Option<RawAnalysis>")]
     pub analysis: Option<Spanned<RawAnalysis>>,
+    #[schemars(with = "Option<RawExpect>")]
     pub expect: Option<Spanned<RawExpect>>,
     /// `[materials]`: name → { density }, adding to the built-in ones.
+    #[schemars(with = "Option<std::collections::BTreeMap<String, RawMaterial>>")]
     pub materials: Option<Materials>,
     /// From the fast path: the tables it passed over, for serde to read
     /// (`expect`, `materials` are then still to be filled in).
@@ -79,16 +90,21 @@ pub struct RawFile {
 /// `[materials]`.
 pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
 
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, JsonSchema, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Material")]
 pub struct RawMaterial {
+    #[schemars(with = "Quantity")]
     pub density: Spanned<Quantity>,
 }
 
-#[derive(Deserialize, Debug, Default)]
+#[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Units")]
 pub struct RawUnits {
+    #[schemars(with = "Option<super::schema::LengthUnit>")]
     pub length: Option<Spanned<String>>,
+    #[schemars(with = "Option<super::schema::MassUnit>")]
     pub mass: Option<Spanned<String>>,
 }
 
@@ -96,65 +112,103 @@ pub struct RawUnits {
 /// `center`) are kept in the struct; every other key is boxed, so that a
 /// part is 368 bytes, not 1,240: a file's parts are all held at once while
 /// it is read, and they were most of the memory of reading a large file.
-#[derive(Deserialize, Debug, Default)]
+#[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Part")]
 pub struct RawPart {
+    #[schemars(with = "Option<String>")]
     pub name: Option<Spanned<String>>,
     /// The primitive; absent only in a part that `include`s a file.
+    #[schemars(with = "Option<super::schema::ShapeName>")]
     pub shape: Option<Spanned<String>>,
+    #[schemars(with = "Option<Quantity>")]
     pub mass: Option<Spanned<Quantity>>,
+    #[schemars(with = "Option<Quantity>")]
     pub density: Option<Box<Spanned<Quantity>>>,
+    #[schemars(with = "Option<Quantity>")]
     pub areal_density: Option<Box<Spanned<Quantity>>>,
+    #[schemars(with = "Option<Quantity>")]
     pub linear_density: Option<Box<Spanned<Quantity>>>,
+    #[schemars(with = "Option<Vec<Quantity>>")]
     pub size: Option<Vector>,
+    #[schemars(with = "Option<Quantity>")]
     pub length: Option<Box<Spanned<Quantity>>>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub center: Option<Vector>,
+    #[schemars(with = "Option<RawRotation>")]
     pub rotation: Option<Box<Spanned<RawRotation>>>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub corner: Option<Box<Vector>>,
+    #[schemars(with = "Option<Vec<[Quantity; 3]>>")]
     pub edges: Option<Box<Spanned<Vec<Vector>>>>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub from: Option<Box<Vector>>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub to: Option<Box<Vector>>,
     /// A plate's real thickness: reported against, never composed.
+    #[schemars(with = "Option<Quantity>")]
     pub thickness: Option<Box<Spanned<Quantity>>>,
     /// A rod's real diameter: reported against, never composed.
+    #[schemars(with = "Option<Quantity>")]
     pub diameter: Option<Box<Spanned<Quantity>>>,
     /// Cylinder, disk and sphere: outer radius, and the optional inner one.
+    #[schemars(with = "Option<Quantity>")]
     pub radius: Option<Box<Spanned<Quantity>>>,
+    #[schemars(with = "Option<Quantity>")]
     pub inner_radius: Option<Box<Spanned<Quantity>>>,
     /// Another part file placed here as a sub-assembly.
+    #[schemars(with = "Option<String>")]
     pub include: Option<Box<Spanned<String>>>,
     /// Where the included file's origin goes (with `include`).
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Box<Vector>>,
     /// A named material instead of a density.
+    #[schemars(with = "Option<super::schema::MaterialName>")]
     pub material: Option<Box<Spanned<String>>>,
     /// A rod's cross-section area (with `material`).
+    #[schemars(with = "Option<Quantity>")]
     pub area: Option<Box<Spanned<Quantity>>>,
     /// A triangle's three vertices.
+    #[schemars(with = "Option<[[Quantity; 3]; 3]>")]
     pub vertices: Option<Box<Spanned<Vec<Vector>>>>,
     /// A given inertia tensor (rows) about the centroid, local axes.
+    #[schemars(with = "Option<[[Quantity; 3]; 3]>")]
     pub inertia: Option<Box<Spanned<Vec<Vector>>>>,
     /// Sign convention of `inertia`'s products: "tensor" or "positive".
+    #[schemars(with = "Option<super::schema::Products>")]
     pub products: Option<Box<Spanned<String>>>,
     /// A cut-out: subtracted from the body.
+    #[schemars(with = "Option<bool>")]
     pub remove: Option<Box<Spanned<bool>>>,
 }
 
-#[derive(Deserialize, Debug, Default)]
+#[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Rotation")]
 pub struct RawRotation {
+    #[schemars(with = "Option<[f64; 4]>")]
     pub quaternion: Option<Floats>,
+    #[schemars(with = "Option<[f64; 3]>")]
     pub axis: Option<Floats>,
+    #[schemars(with = "Option<Angles>")]
     pub degrees: Option<Spanned<Angles>>,
+    #[schemars(with = "Option<[[f64; 3]; 3]>")]
     pub matrix: Option<Spanned<Vec<Floats>>>,
+    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub intrinsic: Option<Spanned<String>>,
+    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub extrinsic: Option<Spanned<String>>,
 }
 
-#[derive(Deserialize, Debug, Default)]
+#[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Analysis")]
 pub struct RawAnalysis {
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub about: Option<Vector>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub omega: Option<Vector>,
+    #[schemars(with = "Option<[Quantity; 3]>")]
     pub alpha: Option<Vector>,
 }
 
@@ -227,55 +281,87 @@ impl<'de> Deserialize<'de> for Angles {
 }
 
 /// `[expect]`: the quantities a check compares, each optional.
-#[derive(Deserialize, Debug)]
+#[derive(Deserialize, JsonSchema, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Expect")]
 pub struct RawExpect {
+    #[schemars(with = "Option<RawExpectation>")]
     pub mass: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub center_of_mass: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub principal_moments: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub inertia_com: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub inertia_ref: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub radii_of_gyration: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub angular_momentum: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub kinetic_energy: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixx")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub ixx: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Iyy")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub iyy: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Izz")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub izz: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixy")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub ixy: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixz")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub ixz: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Iyz")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub iyz: Option<Spanned<RawExpectation>>,
 }
 
 /// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
-#[derive(Deserialize, Debug, Default)]
+#[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Expectation")]
 pub struct RawExpectation {
+    #[schemars(with = "Option<ExpectValue>")]
     pub value: Option<Spanned<ExpectValue>>,
+    #[schemars(with = "Option<super::schema::Tolerance>")]
     pub tol: Option<Spanned<Quantity>>,
+    #[schemars(with = "Option<ExpectValue>")]
     pub min: Option<Spanned<ExpectValue>>,
+    #[schemars(with = "Option<ExpectValue>")]
     pub max: Option<Spanned<ExpectValue>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub x: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub y: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub z: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub xx: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub yy: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub zz: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub xy: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub xz: Option<Box<Spanned<RawExpectation>>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub yz: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "1")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub c1: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "2")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub c2: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "3")]
+    #[schemars(with = "Option<RawExpectation>")]
     pub c3: Option<Box<Spanned<RawExpectation>>>,
 }
 

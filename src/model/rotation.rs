@@ -183,7 +183,8 @@ impl Ctx<'_> {
     }
 }
 
-fn parse_sequence(s: &str) -> Option<[usize; 3]> {
+/// An Euler sequence such as "zyx": three axes, no axis twice in a row.
+pub(super) fn parse_sequence(s: &str) -> Option<[usize; 3]> {
     let axes: Vec<usize> = s
         .chars()
         .map(|c| match c.to_ascii_lowercase() {

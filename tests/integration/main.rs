@@ -17,6 +17,7 @@ mod invariants;
 mod layers;
 mod package;
 mod physics;
+mod schema;
 mod shell;
 mod stress;
 mod walk;
