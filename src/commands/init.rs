@@ -23,7 +23,8 @@ pub const STARTER: &str = r#"# A massprop part file: one rigid body as a list of
 #   massprop report FILE    mass, centre of mass, inertia, principal axes
 #   massprop check FILE     the [expect] values below, and validity
 #
-# The format: docs/part-file.md. For completion and checking as you type
+# The format: `massprop man`, and docs/part-file.md in massprop's
+# repository. For completion and checking as you type
 # (Taplo, Even Better TOML): run `massprop schema > massprop.schema.json`
 # beside this file and make this the first line:
 #   #:schema ./massprop.schema.json
