@@ -180,7 +180,7 @@ impl Principal {
 pub struct Principal {
     /// Ascending, never negative; in the units of the second moment given.
     pub moments: [DD; 3],
-    /// `axes[i]` is the unit axis of `moments[i]`; axes[0] × axes[1] = axes[2].
+    /// `axes[i]` is the unit axis of `moments[i]`; `axes[0] × axes[1] = axes[2]`.
     pub axes: [Vector3<f64>; 3],
     /// Indices of moments equal to each other ([] when all differ, else two
     /// or three indices). Their axes are not unique.

@@ -222,7 +222,7 @@ pub enum MassSpec {
 #[derive(Debug, Clone, PartialEq)]
 pub enum Place {
     /// `center`, the shape's dimensions as `Shape::second_moments` takes
-    /// them (box [a, b, c], plate [a, b], rod [L], cylinder [R, r, L], disk
+    /// them (box [a, b, c], plate [a, b], rod `[L]`, cylinder [R, r, L], disk
     /// and sphere [R, r]), padded with 0, and the turn of the local axes.
     Centered {
         center: [f64; 3],

@@ -73,7 +73,7 @@ fn elementary<T: Real>(axis: usize, deg: f64) -> M3<T> {
 }
 
 /// Rodrigues' formula for the axis `k` (normalised here, in T):
-/// R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ.
+/// `R = cos θ E + sin θ [k]× + (1 − cos θ) k kᵀ`.
 pub fn axis_angle<T: Real>(k: [f64; 3], deg: f64) -> M3<T> {
     // The one scaled norm: no overflow in the squares, and no rounding of
     // the axis before it is in T.

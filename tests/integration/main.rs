@@ -15,6 +15,7 @@ mod hostile;
 mod hostile_round_two;
 mod invariants;
 mod layers;
+mod library;
 mod package;
 mod physics;
 mod schema;
