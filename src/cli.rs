@@ -411,7 +411,7 @@ impl Cli {
                     products: a.products,
                     accuracy: a.accuracy.accuracy(),
                     only: a.only.clone(),
-                    include_roots: a.includes.include_root.clone(),
+                    includes: a.includes.includes(),
                     overrides: Overrides {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
@@ -425,7 +425,7 @@ impl Cli {
                 bless: a.bless,
                 accuracy: a.accuracy.accuracy(),
                 format: a.format.0,
-                include_roots: a.includes.include_root.clone(),
+                includes: a.includes.includes(),
                 search: commands::check::Search {
                     hidden: a.hidden,
                     exclude: a.exclude.clone(),
@@ -438,12 +438,12 @@ impl Cli {
                 output: a.output.clone(),
                 tol: a.tol,
                 accuracy: a.accuracy.accuracy(),
-                include_roots: a.includes.include_root.clone(),
+                includes: a.includes.includes(),
             }),
             Command::Materials(a) => Request::Materials(commands::materials::Options {
                 file: a.file.clone(),
                 format: a.format,
-                include_roots: a.includes.include_root.clone(),
+                includes: a.includes.includes(),
             }),
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
@@ -533,6 +533,21 @@ pub struct IncludeArgs {
     /// working directory.
     #[arg(long = "include-root", value_name = "DIR")]
     pub include_root: Vec<std::path::PathBuf>,
+
+    /// The directory that includes in a file read from standard input or a
+    /// pipe are relative to (`massprop diff <(git show HEAD:sat.toml)
+    /// sat.toml --base-dir .`); without it such a file may not include.
+    #[arg(long = "base-dir", value_name = "DIR")]
+    pub base_dir: Option<std::path::PathBuf>,
+}
+
+impl IncludeArgs {
+    fn includes(&self) -> crate::model::Includes {
+        crate::model::Includes {
+            roots: self.include_root.clone(),
+            base_dir: self.base_dir.clone(),
+        }
+    }
 }
 
 #[cfg(test)]

@@ -22,6 +22,10 @@ pub struct Source {
     pub text: String,
     /// Whether the file began with a byte-order mark (`--bless` keeps it).
     pub bom: bool,
+    /// Read from standard input or a pipe (`<(git show …)`), not a regular
+    /// file: its includes have no directory of their own to be relative to
+    /// (`--base-dir` gives one).
+    pub piped: bool,
 }
 
 impl Source {
@@ -36,6 +40,7 @@ impl Source {
             file: None,
             text,
             bom,
+            piped: false,
         }
     }
 

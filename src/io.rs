@@ -108,17 +108,19 @@ pub fn read_source(path: &str) -> Result<Source, Diagnostic> {
 pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
     if path.as_os_str() == "-" {
         let name = "<stdin>";
-        return source_of(name, read_capped(&mut std::io::stdin(), name, true, 0)?);
+        let mut source = source_of(name, read_capped(&mut std::io::stdin(), name, true, 0)?)?;
+        source.piped = true;
+        return Ok(source);
     }
     let name = display_path(path);
     let meta = std::fs::metadata(path).map_err(|e| cannot_read(&name, false, e))?;
     check_size(&name, &meta)?;
     // Not only regular files: `massprop report <(generate)` is a pipe.
     let mut file = std::fs::File::open(path).map_err(|e| cannot_read(&name, false, e))?;
-    Ok(
-        source_of(&name, read_capped(&mut file, &name, false, meta.len())?)?
-            .read_from(path.to_path_buf()),
-    )
+    let mut source = source_of(&name, read_capped(&mut file, &name, false, meta.len())?)?
+        .read_from(path.to_path_buf());
+    source.piped = !meta.is_file();
+    Ok(source)
 }
 
 fn cannot_read(name: &str, stdin: bool, e: std::io::Error) -> Diagnostic {

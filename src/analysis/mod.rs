@@ -48,8 +48,9 @@ pub struct Settings {
     pub accuracy: summary::Accuracy,
     /// Report one sub-assembly alone (`--only`).
     pub only: Option<String>,
-    /// More directory trees includes may come from (`--include-root`).
-    pub include_roots: Vec<std::path::PathBuf>,
+    /// Where includes may come from, and what a piped file's are relative
+    /// to (`--include-root`, `--base-dir`).
+    pub includes: crate::model::Includes,
     pub overrides: Overrides,
 }
 
@@ -80,7 +81,7 @@ pub fn load_source_reading(
     settings: &Settings,
     read: &mut Vec<std::path::PathBuf>,
 ) -> Result<Loaded, Diagnostic> {
-    let mut model = Model::parse_reading(&source, &settings.include_roots, read)?;
+    let mut model = Model::parse_reading(&source, &settings.includes, read)?;
     let only = match &settings.only {
         Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
         None => None,

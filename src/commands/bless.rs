@@ -43,7 +43,7 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
         Ok(d) => d,
         // Let the model report the syntax error with its usual diagnostic.
         Err(_) => {
-            return Err(Model::parse_with(&source, &settings.include_roots)
+            return Err(Model::parse_with(&source, &settings.includes)
                 .err()
                 .unwrap_or_else(|| Diagnostic::file(path, "cannot parse")));
         }
@@ -68,7 +68,7 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     // The result must parse before it replaces the file.
     Model::parse_with(
         &Source::new(source.name.clone(), text.clone()),
-        &settings.include_roots,
+        &settings.includes,
     )?;
     let text = if source.bom {
         format!("\u{feff}{text}")

@@ -25,8 +25,8 @@ pub struct Options {
     /// `--precision` and `--rtol`.
     pub accuracy: Accuracy,
     pub format: Format,
-    /// More directory trees includes may come from.
-    pub include_roots: Vec<PathBuf>,
+    /// `--include-root` and `--base-dir`.
+    pub includes: crate::model::Includes,
     /// How directories are searched.
     pub search: Search,
 }
@@ -153,7 +153,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let mut stderr = String::new();
     let settings = Settings {
         accuracy: o.accuracy,
-        include_roots: o.include_roots.clone(),
+        includes: o.includes.clone(),
         ..Settings::default()
     };
     let invalid = |path: String, d: Diagnostic, stderr: &mut String| {

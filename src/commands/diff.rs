@@ -19,8 +19,8 @@ pub struct Options {
     pub tol: f64,
     /// `--precision` and `--rtol`.
     pub accuracy: Accuracy,
-    /// More directory trees includes may come from.
-    pub include_roots: Vec<std::path::PathBuf>,
+    /// `--include-root` and `--base-dir`.
+    pub includes: crate::model::Includes,
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
@@ -38,7 +38,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     // Tensor convention: the JSON contract of diff is fixed to it.
     let settings = Settings {
         accuracy: o.accuracy,
-        include_roots: o.include_roots.clone(),
+        includes: o.includes.clone(),
         ..Settings::default()
     };
     let old = analysis::load(&o.old, &settings)?;

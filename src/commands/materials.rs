@@ -13,8 +13,8 @@ pub struct Options {
     /// A part file whose `[materials]` are listed too.
     pub file: Option<String>,
     pub format: Format,
-    /// More directory trees includes may come from.
-    pub include_roots: Vec<std::path::PathBuf>,
+    /// `--include-root` and `--base-dir`.
+    pub includes: crate::model::Includes,
 }
 
 pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
@@ -29,7 +29,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     if let Some(path) = &o.file {
         // The whole pipeline: a file `report` rejects is rejected here too.
         let settings = Settings {
-            include_roots: o.include_roots.clone(),
+            includes: o.includes.clone(),
             ..Settings::default()
         };
         let model = analysis::load(path, &settings)?.model;

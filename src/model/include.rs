@@ -26,6 +26,17 @@ use toml::Spanned;
 /// Includes may nest this deep.
 pub const MAX_INCLUDE_DEPTH: usize = 32;
 
+/// Where includes may come from, and what a piped file's are relative to
+/// (`--include-root`, `--base-dir`).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Includes {
+    /// More directory trees includes may come from.
+    pub roots: Vec<PathBuf>,
+    /// The directory that the includes of a file read from standard input
+    /// or a pipe are relative to; without it, such a file may not include.
+    pub base_dir: Option<PathBuf>,
+}
+
 /// The files being read: the chain of includes (for cycles) and each file
 /// parsed once, however many times it is included.
 #[derive(Default)]
@@ -37,6 +48,8 @@ pub(super) struct Files {
     /// The directory trees includes must stay in (canonical): the
     /// top-level file's, the working directory, and any `--include-root`.
     pub(super) roots: Vec<PathBuf>,
+    /// `Includes::base_dir`, for the top-level file when it is piped.
+    pub(super) base_dir: Option<PathBuf>,
     /// The parts each file holds with its includes, counted before any is
     /// expanded (`Ctx::count_includes`).
     counts: HashMap<PathBuf, u64>,
@@ -208,15 +221,23 @@ impl Ctx<'_> {
     /// regular file, within the size limit. The one place these rules live:
     /// counting and expanding both come through here.
     fn target(&self, inc: &Spanned<String>, files: &Files) -> Result<Target, Diagnostic> {
-        if self.source.name == "<stdin>" {
-            // Relative to what? Not the working directory: a file piped in
-            // (`git show OLD:arm.toml | massprop diff - arm.toml`) would
-            // silently include today's sub-assemblies.
-            return Err(self
-                .err(inc.span(), "`include` in a file read from standard input: its path has nothing to be relative to")
-                .help("give the file by its path"));
-        }
-        let base = self.source.path().parent().unwrap_or(Path::new(""));
+        let base = match (self.source.piped, &files.base_dir) {
+            (false, _) => self.source.path().parent().unwrap_or(Path::new("")),
+            (true, Some(dir)) => dir.as_path(),
+            (true, None) => {
+                // Relative to what? Not silently the working directory: a
+                // file piped in (`git show OLD:arm.toml | massprop diff -
+                // arm.toml`) would include today's sub-assemblies unasked.
+                let what = if self.source.name == "<stdin>" {
+                    "standard input"
+                } else {
+                    "a pipe"
+                };
+                return Err(self
+                    .err(inc.span(), format!("`include` in a file read from {what}: its path has nothing to be relative to"))
+                    .help("give `--base-dir DIR`, the directory its includes are relative to, or the file by its path"));
+            }
+        };
         let shown = base.join(inc.get_ref());
         let shown_name = crate::diag::display_path(&shown);
         let unreadable = |e: std::io::Error| {

@@ -24,7 +24,7 @@ mod streamed;
 mod toml_error;
 mod walk;
 
-pub use include::Frame;
+pub use include::{Frame, Includes};
 pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};
@@ -133,15 +133,12 @@ impl Model {
     /// Parse and validate a part file; its includes may come from its own
     /// directory tree and the working directory's.
     pub fn parse(source: &Source) -> Result<Model, Diagnostic> {
-        Model::parse_with(source, &[])
+        Model::parse_with(source, &Includes::default())
     }
 
-    /// `parse`, with includes also allowed from `include_roots`.
-    pub fn parse_with(
-        source: &Source,
-        include_roots: &[std::path::PathBuf],
-    ) -> Result<Model, Diagnostic> {
-        Model::parse_reading(source, include_roots, &mut Vec::new())
+    /// `parse`, with includes as `includes` allows them.
+    pub fn parse_with(source: &Source, includes: &Includes) -> Result<Model, Diagnostic> {
+        Model::parse_reading(source, includes, &mut Vec::new())
     }
 
     /// `parse_with`, adding to `read` every file it opened to include (by
@@ -149,22 +146,26 @@ impl Model {
     /// may write onto none of them, even after an invalid file.
     pub fn parse_reading(
         source: &Source,
-        include_roots: &[std::path::PathBuf],
+        includes: &Includes,
         read: &mut Vec<std::path::PathBuf>,
     ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
-        if let Ok(p) = std::fs::canonicalize(source.path()) {
+        if source.piped {
+            // A piped file's tree is the one it is based in.
+            files.base_dir = includes.base_dir.clone();
+            files
+                .roots
+                .extend((includes.base_dir.iter()).filter_map(|d| std::fs::canonicalize(d).ok()));
+        } else if let Ok(p) = std::fs::canonicalize(source.path()) {
             files
                 .roots
                 .extend(p.parent().map(std::path::Path::to_path_buf));
             files.stack.push((p, source.name.clone()));
         }
         files.roots.extend(std::fs::canonicalize(".").ok());
-        files.roots.extend(
-            include_roots
-                .iter()
-                .filter_map(|r| std::fs::canonicalize(r).ok()),
-        );
+        files
+            .roots
+            .extend((includes.roots.iter()).filter_map(|r| std::fs::canonicalize(r).ok()));
         let model = Model::parse_in(source, &mut files);
         let included = files.included();
         read.extend(included.iter().cloned());

@@ -18,6 +18,7 @@ mod layers;
 mod library;
 mod package;
 mod physics;
+mod pipes;
 mod schema;
 mod shell;
 mod stress;
