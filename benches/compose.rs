@@ -12,8 +12,11 @@ use divan::{Bencher, black_box};
 use massprop::compose::{self, Precision};
 use massprop::diag::Source;
 use massprop::model::Model;
-use massprop_support::{reference, scenes};
+#[path = "../tests/support/mod.rs"]
+#[allow(dead_code)]
+mod support;
 use std::sync::OnceLock;
+use support::{reference, scenes};
 
 const SCENES: &[&str] = &[
     "offset 1e6",

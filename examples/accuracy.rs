@@ -17,11 +17,14 @@ use massprop::diag::Source;
 use massprop::model::Model;
 use massprop::numeric::{M3, Real};
 use massprop::units::Dim;
-use massprop_support::{reference, scenes};
+#[path = "../tests/support/mod.rs"]
+#[allow(dead_code)]
+mod support;
 use nalgebra::{Matrix3, SymmetricEigen};
 use std::fmt::Write as _;
 use std::hint::black_box;
 use std::time::Instant;
+use support::{reference, scenes};
 
 #[derive(Clone, Copy, PartialEq)]
 enum Method {

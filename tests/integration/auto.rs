@@ -5,8 +5,8 @@
 //! cannot.
 
 use crate::stress::{Rng, every_shape, steel_assembly, turnable_assembly, twelve_boxes};
-use massprop_support::num_traits::Signed;
-use massprop_support::reference::{self as r, Amount, Part, Scene};
+use crate::support::num_traits::Signed;
+use crate::support::reference::{self as r, Amount, Part, Scene};
 use serde_json::Value;
 
 const RTOL: f64 = 1e-12;
@@ -357,7 +357,7 @@ fn check_and_diff_say_which_arithmetic_each_file_used() {
     );
 }
 
-/// Over the stress scenes (support/src/scenes.rs: 10⁶ and 10⁹ offsets,
+/// Over the stress scenes (tests/support/scenes.rs: 10⁶ and 10⁹ offsets,
 /// slender and flat, moments 10⁻⁸ apart, mass ratio 10¹², µm and mg) and
 /// nearly equal moments 10⁻⁴ … 10⁻¹², `auto` never falls short silently:
 /// each mass, principal moment and tensor meets --rtol against the exact
@@ -366,7 +366,7 @@ fn check_and_diff_say_which_arithmetic_each_file_used() {
 /// turned 1e-9 needle) meet it with no warning at all.
 #[test]
 fn auto_meets_rtol_on_the_stress_scenes_or_says_which_value_it_cannot() {
-    let mut scenes: Vec<(String, Scene)> = massprop_support::scenes::stress()
+    let mut scenes: Vec<(String, Scene)> = crate::support::scenes::stress()
         .into_iter()
         .map(|n| (n.name.to_string(), n.scene))
         .collect();

@@ -6,8 +6,8 @@
 //! Each actual error must be within its claimed bound.
 
 use crate::stress::{Rng, every_shape, twelve_boxes};
-use massprop_support::num_traits::Signed;
-use massprop_support::reference::{self as r, Q, Scene};
+use crate::support::num_traits::Signed;
+use crate::support::reference::{self as r, Q, Scene};
 use serde_json::Value;
 
 fn run(scene: &Scene, args: &[&str]) -> Value {
@@ -166,7 +166,7 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
 /// file exactly (`exact_part`, SI), turned and moved exactly.
 #[test]
 fn bounds_count_the_rounding_of_an_included_frame() {
-    use massprop_support::reference::{Length, Mass};
+    use crate::support::reference::{Length, Mass};
     let mut rng = Rng::new(57);
     let mut honest = Honest::default();
     for trial in 0..3 {

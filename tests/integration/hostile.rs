@@ -1792,17 +1792,17 @@ fn example_files_pass_the_hostile_checks() {
 }
 
 /// Every input the fuzzer (fuzz/, docs/fuzzing.md) has crashed massprop
-/// with stays a test: each file in fuzz/regressions/. An input of several
+/// with stays a test: each file in tests/fuzz-regressions/. An input of several
 /// files (lines `#---- NAME`) is split as the fuzz target splits it.
 #[test]
 fn fuzz_regressions_give_finite_results_or_diagnostics() {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/regressions");
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fuzz-regressions");
     let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
         .unwrap()
         .map(|e| e.unwrap().path())
         .collect();
     files.sort();
-    assert!(files.len() >= 4, "fuzz/regressions/ lost its files");
+    assert!(files.len() >= 4, "tests/fuzz-regressions/ lost its files");
     let scratch = crate::common::scratch("hostile", "regressions");
     for path in files {
         let bytes = std::fs::read(&path).unwrap();

@@ -25,7 +25,7 @@ use crate::stress::{
     self, Bounds, Margins, Precision, Report, check_against_reference, check_against_reference_as,
     check_axes, check_axes_as, report, turn_tensor,
 };
-use massprop_support::reference::{
+use crate::support::reference::{
     self as r, Amount, Length, Mass, Part, Products, Rotation, Scene, fm,
 };
 use proptest::prelude::*;

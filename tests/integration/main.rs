@@ -22,4 +22,8 @@ mod pipes;
 mod schema;
 mod shell;
 mod stress;
+// Shared with the benchmark and an example, each using a part.
+#[path = "../support/mod.rs"]
+#[allow(dead_code)]
+mod support;
 mod walk;

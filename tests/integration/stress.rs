@@ -1,5 +1,5 @@
 //! Stress tests of massprop's accuracy against the exact reference
-//! (`massprop_support::reference`, support/src/reference.rs, issue 4), through the public JSON contract:
+//! (`crate::support::reference`, tests/support/reference.rs, issue 4), through the public JSON contract:
 //! `massprop report FILE --format json --precision MODE`, run in-process.
 //!
 //! Each scene is written as a part file whose numbers are exactly the f64
@@ -21,11 +21,11 @@
 //! - mass and centre of mass: a priori bounds of sums, [`mass_bound`] and
 //!   [`com_bound`].
 
-use clap::Parser;
-use massprop_support::num_traits::Signed;
-use massprop_support::reference::{
+use crate::support::num_traits::Signed;
+use crate::support::reference::{
     self as r, Amount, Exact, Length, Mass, Part, Place, Scene, axis_sin, f, fm, rel, rel_frobenius,
 };
+use clap::Parser;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 pub(crate) const EPS: f64 = f64::EPSILON;
@@ -1738,7 +1738,7 @@ fn no_negative_or_nan_moment_in_degenerate_bodies_extended() {
 #[test]
 fn the_every_shape_scene_has_every_shape() {
     let scene = every_shape(&mut Rng::new(1));
-    let text = massprop_support::reference::to_toml(&scene);
+    let text = crate::support::reference::to_toml(&scene);
     let model = massprop::model::Model::parse(&massprop::diag::Source::new("s.toml", text))
         .unwrap_or_else(|d| panic!("{d}"));
     let mut drawn: std::collections::BTreeSet<&str> =

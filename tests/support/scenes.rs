@@ -1,10 +1,10 @@
 //! The stress scenes of docs/accuracy.md, shared by the benchmark
 //! (benches/compose.rs) and the accuracy table (examples/accuracy.rs). They
 //! are built with the exact reference's scene description
-//! ([`crate::reference`]), so each can be written as a part file and
+//! ([`super::reference`]), so each can be written as a part file and
 //! composed exactly.
 
-use crate::reference::{Amount, Length, Mass, Part, Scene};
+use super::reference::{Amount, Length, Mass, Part, Scene};
 
 /// A stress scene: a short name for tables and what it stresses.
 pub struct Named {
