@@ -60,8 +60,8 @@ Examples:
 
 const CHECK_HELP: &str = "\
 Examples:
-  massprop check parts/                 every *.toml part file under parts/
-  massprop check arm.toml --format json
+  massprop check .                      every part file here (ignored and hidden ones not)
+  massprop check . --format github      annotations on a GitHub pull request
   massprop check --bless arm.toml       write today's values into [expect]";
 
 const DIFF_HELP: &str = "\
