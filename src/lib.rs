@@ -44,5 +44,5 @@ pub use io::{MAX_FILE_BYTES, read_source};
 /// a `Request` of plain options, which `run_request` runs. Errors are
 /// user-facing diagnostics (exit 2).
 pub fn run(cli: &cli::Cli) -> Result<Output, diag::Diagnostic> {
-    commands::run(&cli.request())
+    commands::run(&cli.request(), &cli.terminal())
 }
