@@ -1,4 +1,4 @@
-//! `--color`: how output is dressed, resolved once against what the
+//! `--color` and `--width`: how output is dressed, resolved once against what the
 //! process's standard output and error are (as ripgrep's `HiArgs` resolves
 //! its colour choice), and clap's own help and errors coloured the same
 //! way.
@@ -12,10 +12,12 @@ use std::ffi::OsString;
 /// The options of every command that say how output is dressed.
 #[derive(Args, Debug, Clone, Default)]
 pub struct OutputArgs {
-    /// When to colour: `auto` colours a stream that is a terminal, unless
-    /// NO_COLOR is set (CLICOLOR_FORCE colours pipes too); `always` colours
-    /// standard output and error, `never` neither, whatever the
-    /// environment says. `-o FILE` is never coloured.
+    /// When to use colour: in diagnostics, warnings and `check`'s errors.
+    ///
+    /// `auto` colours standard output and standard error each where it is
+    /// a terminal, unless NO_COLOR is set (CLICOLOR_FORCE colours pipes
+    /// too); `always` and `never` override both. `-o FILE` is never
+    /// coloured.
     #[arg(
         long,
         value_name = "WHEN",
@@ -23,17 +25,29 @@ pub struct OutputArgs {
         default_value_t = ColorChoice::Auto
     )]
     pub color: ColorChoice,
+
+    /// Fit tables to N columns (0: no limit).
+    ///
+    /// A wider table is split into parts, each with the rows' labels and a
+    /// note after the last: no number is cut and no column hidden. Default:
+    /// the terminal's width when standard output is a terminal; no limit
+    /// for pipes and `-o FILE`.
+    #[arg(long, value_name = "N", global = true)]
+    pub width: Option<usize>,
 }
 
-/// What `--color auto` depends on: whether each stream takes colour,
-/// anstream's answer (a terminal, NO_COLOR, CLICOLOR, CLICOLOR_FORCE,
-/// TERM=dumb). The default, neither, is a pipe's: `Cli::try_parse_from`
+/// What `--color auto` and the default width depend on: whether each
+/// stream takes colour, anstream's answer (a terminal, NO_COLOR, CLICOLOR,
+/// CLICOLOR_FORCE, TERM=dumb), and standard output's width when it is a
+/// terminal. The default, neither, is a pipe's: `Cli::try_parse_from`
 /// (the tests) never looks at the process's own streams, only
 /// `Cli::parse_args` does.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct Streams {
     pub stdout_colour: bool,
     pub stderr_colour: bool,
+    /// Standard output's width in columns, when it is a terminal.
+    pub stdout_width: Option<usize>,
 }
 
 impl Streams {
@@ -43,6 +57,9 @@ impl Streams {
         Streams {
             stdout_colour: AutoStream::choice(&std::io::stdout()) != ColorChoice::Never,
             stderr_colour: AutoStream::choice(&std::io::stderr()) != ColorChoice::Never,
+            stdout_width: terminal_size::terminal_size_of(std::io::stdout())
+                .map(|(w, _)| usize::from(w.0))
+                .filter(|w| *w > 0),
         }
     }
 }
@@ -70,22 +87,30 @@ impl Cli {
         Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))
     }
 
-    /// How each stream's output is dressed: `--color` against what the
-    /// streams are (`streams`).
+    /// How each stream's output is dressed: `--color` and `--width`
+    /// against what the streams are (`streams`).
     pub fn terminal(&self) -> Terminal {
         let colour = |auto: bool| match self.output.color {
             ColorChoice::Always => true,
             ColorChoice::Never => false,
             ColorChoice::Auto => auto,
         };
+        // `--width 0`: no limit.
+        let asked = self.output.width.map(|w| (w > 0).then_some(w));
         Terminal {
             stdout: Style {
                 colour: colour(self.streams.stdout_colour),
+                width: asked.unwrap_or(self.streams.stdout_width),
             },
             stderr: Style {
                 colour: colour(self.streams.stderr_colour),
+                width: None,
             },
-            file: Style::default(),
+            // A file is as a pipe: the width asked for, or none.
+            file: Style {
+                colour: false,
+                width: asked.flatten(),
+            },
         }
     }
 }
@@ -127,6 +152,7 @@ mod tests {
     const TERMINALS: Streams = Streams {
         stdout_colour: true,
         stderr_colour: true,
+        stdout_width: Some(100),
     };
 
     #[test]
@@ -170,6 +196,40 @@ mod tests {
         assert!(t.stdout.colour && t.stderr.colour && !t.file.colour);
         let t = terminal("massprop --color never check f", TERMINALS);
         assert!(!t.stdout.colour && !t.stderr.colour);
+    }
+
+    #[test]
+    fn tables_fit_a_terminal_unless_a_width_is_asked_for() {
+        let width = |line: &str, streams: Streams| {
+            let t = terminal(line, streams);
+            (t.stdout.width, t.file.width, t.stderr.width)
+        };
+        assert_eq!(
+            width("massprop report f", TERMINALS),
+            (Some(100), None, None)
+        );
+        assert_eq!(
+            width("massprop report f", Streams::default()),
+            (None, None, None)
+        );
+        assert_eq!(
+            width("massprop report --width 60 f", Streams::default()),
+            (Some(60), Some(60), None)
+        );
+        assert_eq!(
+            width("massprop --width 0 report f", TERMINALS),
+            (None, None, None)
+        );
+        // Colour is not width: NO_COLOR on a terminal still fits it.
+        let no_colour = Streams {
+            stdout_colour: false,
+            stderr_colour: false,
+            ..TERMINALS
+        };
+        assert_eq!(
+            width("massprop report f", no_colour),
+            (Some(100), None, None)
+        );
     }
 
     #[test]

@@ -48,6 +48,9 @@ pub enum Format {
 pub struct Style {
     /// ANSI colour, as cargo colours (`check`'s `error`).
     pub colour: bool,
+    /// The most columns a table may take (a terminal's width, or
+    /// `--width`): a wider one is split (`grid::Fit`). None: no limit.
+    pub width: Option<usize>,
 }
 
 /// A command's result, ready to be written in either format.
@@ -79,7 +82,7 @@ pub fn write(
 ) -> std::io::Result<()> {
     let text = match (format, output) {
         (Format::Table, Output::Report(s, source)) => {
-            return report::write_table_to(s, source, w);
+            return report::write_table_to(s, source, style.width, w);
         }
         (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
         (Format::Table, Output::Check(r)) => check::table(r, style.colour),
@@ -94,7 +97,7 @@ pub fn write(
                 "the CI formats are for `check`'s results",
             ));
         }
-        (Format::Table, Output::Diff(d)) => diff::table(d),
+        (Format::Table, Output::Diff(d)) => diff::table(d, style.width),
         (Format::Json, Output::Diff(d)) => diff::json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),
         (Format::Json, Output::Materials(l)) => materials::json(l),

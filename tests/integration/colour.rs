@@ -225,3 +225,174 @@ fn an_output_file_is_never_coloured() {
             .contains("error: mass 12 kg")
     );
 }
+
+// Width: tables split to fit `--width` (or a terminal's width), never a
+// number cut, never a column hidden; pipes and files get them whole.
+
+/// A table as its rows of cells (the header first).
+type Table = Vec<Vec<String>>;
+
+/// The cells of a table line, `│ a ┆ b │`.
+fn cells(line: &str) -> Vec<String> {
+    let inner = line.trim_start_matches('│').trim_end_matches('│');
+    inner.split('┆').map(|c| c.trim().to_string()).collect()
+}
+
+/// Every table of an output, a table split into parts joined back (each
+/// part's repeated leading columns once), and the number of notes of a
+/// split.
+fn tables(text: &str) -> (Vec<Table>, usize) {
+    let lines: Vec<&str> = text.lines().collect();
+    // Groups of adjacent parts.
+    let mut groups: Vec<Vec<Table>> = Vec::new();
+    let mut notes = 0;
+    let mut i = 0;
+    let mut adjacent = false;
+    while i < lines.len() {
+        let line = lines[i];
+        if line.starts_with('┌') {
+            let mut part = Vec::new();
+            i += 1;
+            while !lines[i].starts_with('└') {
+                if lines[i].starts_with('│') {
+                    part.push(cells(lines[i]));
+                }
+                i += 1;
+            }
+            match groups.last_mut() {
+                Some(g) if adjacent => g.push(part),
+                _ => groups.push(vec![part]),
+            }
+            adjacent = true;
+        } else {
+            if let Some(rest) = line.strip_prefix("note: table split into ") {
+                let k: usize = rest.split(' ').next().unwrap().parse().unwrap();
+                let g = groups.last().expect("a note follows a table");
+                assert!(adjacent, "the note follows its table's last part");
+                assert_eq!(g.len(), k, "the note counts the parts");
+                notes += 1;
+            }
+            adjacent = false;
+        }
+        i += 1;
+    }
+    let joined = groups
+        .into_iter()
+        .map(|parts| {
+            let first = &parts[0];
+            // The leading columns every part repeats: those the parts'
+            // headers begin with alike.
+            let keys = parts.get(1).map_or(0, |second| {
+                first[0]
+                    .iter()
+                    .zip(&second[0])
+                    .take_while(|(a, b)| a == b)
+                    .count()
+            });
+            let mut table = first.clone();
+            for part in &parts[1..] {
+                assert_eq!(part.len(), first.len(), "every part has every row");
+                for (row, more) in table.iter_mut().zip(part) {
+                    assert_eq!(&more[..keys], &row[..keys], "the labels repeat");
+                    row.extend(more[keys..].iter().cloned());
+                }
+            }
+            table
+        })
+        .collect();
+    (joined, notes)
+}
+
+fn stdout(args: &[&str]) -> String {
+    let out = run(args, &[]);
+    assert_eq!(out.status.code(), Some(0), "{args:?}");
+    String::from_utf8(out.stdout).unwrap()
+}
+
+fn widest(text: &str) -> usize {
+    use unicode_width::UnicodeWidthStr;
+    text.lines().map(UnicodeWidthStr::width).max().unwrap_or(0)
+}
+
+const EXAMPLES: &[&str] = &[
+    "shapes/quadcopter.toml",
+    "shapes/robot-arm.toml",
+    "shapes/motor-bracket.toml",
+    "shapes/bent-plate.toml",
+];
+
+#[test]
+fn a_narrow_width_splits_tables_into_parts_that_hold_every_value_whole() {
+    for file in EXAMPLES {
+        let whole = stdout(&["report", file]);
+        let (full, notes) = tables(&whole);
+        assert_eq!(notes, 0, "{file}");
+        for width in [100, 80, 60, 40, 1] {
+            let w = width.to_string();
+            let narrow = stdout(&["report", "--width", &w, file]);
+            let (split, notes) = tables(&narrow);
+            // Each value in its row and column as the whole table has it:
+            // none cut, none missing, none moved.
+            assert_eq!(split, full, "{file} at {width} columns:\n{narrow}");
+            if widest(&whole) > width {
+                assert!(notes > 0, "{file} at {width}: no table split");
+            }
+            // Every table line fits, down to where a part's labels and a
+            // single column do not.
+            if width >= 60 {
+                for line in narrow.lines().filter(|l| l.starts_with(['┌', '│', '└'])) {
+                    use unicode_width::UnicodeWidthStr;
+                    assert!(line.width() <= width, "{file} at {width}: {line}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_width_the_tables_fit_in_changes_nothing() {
+    for file in EXAMPLES {
+        let whole = stdout(&["report", file]);
+        let w = widest(&whole);
+        assert_eq!(stdout(&["report", "--width", &w.to_string(), file]), whole);
+        assert_eq!(stdout(&["--width", "0", "report", file]), whole);
+        // A column less, and the widest table splits.
+        let less = stdout(&["report", "--width", &(w - 1).to_string(), file]);
+        assert_ne!(less, whole, "{file}");
+        assert!(less.contains("note: table split into 2 to fit"), "{file}");
+    }
+}
+
+#[test]
+fn diffs_quantities_split_as_the_reports_tables() {
+    let (old, new) = ("shapes/quadcopter.toml", "shapes/robot-arm.toml");
+    let run_diff = |extra: &[&str]| {
+        let mut args = vec!["diff", old, new];
+        args.extend(extra);
+        let out = run(&args, &[]);
+        assert_eq!(out.status.code(), Some(1));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let whole = run_diff(&[]);
+    let narrow = run_diff(&["--width", "50"]);
+    assert!(narrow.contains("note: table split into"), "{narrow}");
+    // The parts table (text, not split) aside, every value kept.
+    let (full, _) = tables(&whole);
+    let (split, _) = tables(&narrow);
+    assert_eq!(split[0], full[0], "{narrow}");
+}
+
+#[test]
+fn an_output_file_is_whole_unless_a_width_is_asked_for() {
+    let dir = scratch("colour", "width-file");
+    let f = "shapes/quadcopter.toml";
+    let o = dir.join("report.txt");
+    let o = o.to_str().unwrap();
+    stdout(&["report", f, "-o", o]);
+    assert_eq!(std::fs::read_to_string(o).unwrap(), stdout(&["report", f]));
+    stdout(&["report", "--width", "80", f, "-o", o]);
+    assert_eq!(
+        std::fs::read_to_string(o).unwrap(),
+        stdout(&["report", "--width", "80", f])
+    );
+}
