@@ -64,8 +64,11 @@ pub struct Fit {
     pub width: Option<usize>,
     /// How many of the first columns every part repeats.
     pub keys: usize,
-    /// Columns kept in one part where they fit (a vector's x, y and z).
-    pub groups: &'static [Range<usize>],
+    /// Columns kept in one part where they fit (a vector's x, y and z):
+    /// each group its first column and the column after its last, as a
+    /// range is written (a one-element array of ranges reads as a mistake
+    /// to clippy).
+    pub groups: &'static [(usize, usize)],
 }
 
 impl Fit {
@@ -95,7 +98,8 @@ impl Fit {
         let Some(limit) = self.width else {
             return vec![(0..n).collect()];
         };
-        if 1 + span(0..n) <= limit {
+        // The whole line, its first border with it, is 1 + span(0..n).
+        if span(0..n) < limit {
             return vec![(0..n).collect()];
         }
         let keys = self.keys.min(n.saturating_sub(1));
@@ -108,8 +112,9 @@ impl Fit {
             let group = self
                 .groups
                 .iter()
-                .find(|g| g.start == i && g.end <= n && labels + span((*g).clone()) <= limit);
-            let block = group.cloned().unwrap_or(i..i + 1);
+                .map(|&(start, end)| start..end)
+                .find(|g| g.start == i && g.end <= n && labels + span(g.clone()) <= limit);
+            let block = group.unwrap_or(i..i + 1);
             i = block.end;
             blocks.push(block);
         }
@@ -609,7 +614,7 @@ note: table split into 2 to fit 50 columns; --width 0 prints it whole
         // columns in all, the label and the group 38.
         let widths = [10, 8, 5, 5, 5];
         let fit = |width| Fit {
-            groups: &[2..5],
+            groups: &[(2, 5)],
             ..Fit::new(Some(width), 1)
         };
         assert_eq!(fit(40).parts(&widths), [vec![0, 1], vec![0, 2, 3, 4]]);

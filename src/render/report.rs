@@ -91,7 +91,11 @@ fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Opti
     }
     // The axes' components together.
     let fit = Fit {
-        groups: if radii.is_some() { &[3..6] } else { &[2..5] },
+        groups: if radii.is_some() {
+            &[(3, 6)]
+        } else {
+            &[(2, 5)]
+        },
         ..fit(width)
     };
     write_rows(out, &header, &rows, &numbers(header.len()), fit);
@@ -234,7 +238,7 @@ pub fn write_table_to(
     // Numbers right, the unit left.
     let right = [false, true, true, true, false];
     let fit = Fit {
-        groups: &[1..4],
+        groups: &[(1, 4)],
         ..fit(width)
     };
     write_rows(&mut out, &header, &vectors, &right, fit);
@@ -313,7 +317,7 @@ pub fn write_table_to(
     // Split, each part keeps the number and the name, and the centroid's
     // coordinates and the shares together.
     let parts_fit = Fit {
-        groups: &[5..8, 8..11],
+        groups: &[(5, 8), (8, 11)],
         ..Fit::new(width, 2)
     };
     stream_table(w, &header, &right, parts_fit, &mut |sink| {
@@ -406,7 +410,7 @@ fn assemblies(
     w.write_all(b"\nsub-assemblies\n")?;
     let mut cells = Cells::with_capacity(header.len());
     let fit = Fit {
-        groups: &[4..7, 7..10],
+        groups: &[(4, 7), (7, 10)],
         ..fit(width)
     };
     stream_table(w, &header, &right, fit, &mut |sink| {
