@@ -10,6 +10,9 @@ use crate::render::Format;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod terminal;
+pub use terminal::{OutputArgs, Streams};
+
 const EXIT_STATUS: &str = "\
 Exit status:
   0  success
@@ -20,8 +23,16 @@ Exit status:
 #[derive(Parser, Debug)]
 #[command(name = "massprop", version, after_help = EXIT_STATUS)]
 pub struct Cli {
+    #[command(flatten)]
+    pub output: OutputArgs,
+
     #[command(subcommand)]
     pub command: Command,
+
+    /// What the process's streams are (`Cli::parse_args` looks; for
+    /// `try_parse_from`, pipes).
+    #[arg(skip)]
+    pub streams: Streams,
 }
 
 #[derive(Subcommand, Debug)]

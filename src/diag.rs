@@ -419,23 +419,83 @@ impl Diagnostic {
     }
 }
 
-impl fmt::Display for Diagnostic {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+/// The styles of a message's parts, as rustc and cargo colour them: the
+/// level (`error` bold red, `warning` bold yellow, with the carets and
+/// their label in its colour), the message bold, the gutter and its
+/// numbers bold blue, `help` and `note` bold. `PLAIN` is every style empty,
+/// which renders as nothing: the text is the same with or without colour,
+/// less the escape sequences.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Palette {
+    pub error: anstyle::Style,
+    pub warning: anstyle::Style,
+    pub emphasis: anstyle::Style,
+    pub gutter: anstyle::Style,
+}
+
+impl Palette {
+    pub const PLAIN: Palette = Palette {
+        error: anstyle::Style::new(),
+        warning: anstyle::Style::new(),
+        emphasis: anstyle::Style::new(),
+        gutter: anstyle::Style::new(),
+    };
+
+    pub const COLOUR: Palette = {
+        use anstyle::{AnsiColor, Color, Style};
+        let bold = Style::new().bold();
+        Palette {
+            error: bold.fg_color(Some(Color::Ansi(AnsiColor::Red))),
+            warning: bold.fg_color(Some(Color::Ansi(AnsiColor::Yellow))),
+            emphasis: bold,
+            gutter: bold.fg_color(Some(Color::Ansi(AnsiColor::Blue))),
+        }
+    };
+
+    /// `COLOUR` when `colour`, else `PLAIN`.
+    pub fn of(colour: bool) -> Palette {
+        if colour {
+            Palette::COLOUR
+        } else {
+            Palette::PLAIN
+        }
+    }
+
+    /// `warning: TEXT` and a newline, as standard error shows a warning
+    /// that has no place in a file's text.
+    pub fn warning_line(&self, text: &str) -> String {
+        let w = self.warning;
+        format!("{w}warning{w:#}: {text}\n")
+    }
+}
+
+impl Diagnostic {
+    /// The diagnostic as `Display` writes it, coloured as rustc colours
+    /// its own when `colour` is true (for standard error on a terminal);
+    /// with the escape sequences taken out, the same text.
+    pub fn render(&self, colour: bool) -> String {
+        let mut out = String::new();
+        self.write_styled(&mut out, Palette::of(colour))
+            .expect("invariant: writing to a String does not fail");
+        out
+    }
+
+    fn write_styled(&self, f: &mut dyn fmt::Write, p: Palette) -> fmt::Result {
         let d = &self.0;
         let message = visible_message(&d.message);
-        match &d.place {
-            Some(place) => writeln!(f, "{}: error: {message}", visible(&place.to_string()))?,
-            None => writeln!(f, "error: {message}")?,
+        let (e, m, g) = (p.error, p.emphasis, p.gutter);
+        if let Some(place) = &d.place {
+            write!(f, "{}: ", visible(&place.to_string()))?;
         }
+        writeln!(f, "{e}error{e:#}: {m}{message}{m:#}")?;
         // `= help:` under the gutter's bar, as rustc aligns it.
         let gutter = d.snippet.as_ref().map_or(1, |s| s.line.to_string().len());
         let indent = " ".repeat(gutter + 1);
         if let Some(s) = &d.snippet {
             let num = s.line.to_string();
             let pad = " ".repeat(num.len());
-            writeln!(f, "{pad} |")?;
-            writeln!(f, "{num} | {}", s.text)?;
-            // Tabs before the caret keep their width so the caret lines up.
+            writeln!(f, "{g}{pad} |{g:#}")?;
+            writeln!(f, "{g}{num} |{g:#} {}", s.text)?;
             // Pad to the caret in display columns; tabs stay tabs so the
             // caret lines up whatever the terminal's tab width.
             let lead: String = s
@@ -449,17 +509,36 @@ impl fmt::Display for Diagnostic {
                 .collect();
             let carets = "^".repeat(s.width);
             match &s.label {
-                Some(label) => writeln!(f, "{pad} | {lead}{carets} {}", visible_message(label))?,
-                None => writeln!(f, "{pad} | {lead}{carets}")?,
+                Some(label) => writeln!(
+                    f,
+                    "{g}{pad} |{g:#} {lead}{e}{carets} {}{e:#}",
+                    visible_message(label)
+                )?,
+                None => writeln!(f, "{g}{pad} |{g:#} {lead}{e}{carets}{e:#}")?,
             }
         }
         if let Some(help) = &d.help {
-            writeln!(f, "{indent}= help: {}", visible_message(help))?;
+            writeln!(
+                f,
+                "{indent}{g}={g:#} {m}help{m:#}: {}",
+                visible_message(help)
+            )?;
         }
         for note in &d.notes {
-            writeln!(f, "{indent}= note: {}", visible_message(note))?;
+            writeln!(
+                f,
+                "{indent}{g}={g:#} {m}note{m:#}: {}",
+                visible_message(note)
+            )?;
         }
         Ok(())
+    }
+}
+
+impl fmt::Display for Diagnostic {
+    /// Without colour: `render(true)` is this text with escape sequences.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.write_styled(f, Palette::PLAIN)
     }
 }
 
@@ -616,6 +695,76 @@ mod tests {
             ("shown.toml", Path::new("real.toml"))
         );
         assert_eq!(Source::new("a.toml", "").path(), Path::new("a.toml"));
+    }
+
+    /// A diagnostic with every part: place, snippet with a label, help,
+    /// notes.
+    fn every_part() -> Diagnostic {
+        let text = "\n".repeat(9) + "mass = \"2 kgg\"\n";
+        let s = Source::new("f.toml", text.as_str());
+        let at = text.find("2 kgg").unwrap();
+        s.error(at..at + 5, "unknown unit `kgg`")
+            .label("here")
+            .help("did you mean `kg`?")
+            .note("included from a.toml:3:1")
+    }
+
+    #[test]
+    fn uncoloured_rendering_is_display() {
+        let d = every_part();
+        assert_eq!(d.render(false), d.to_string());
+        assert!(!d.render(false).contains('\u{1b}'));
+    }
+
+    #[test]
+    fn coloured_rendering_is_the_same_text_with_escape_sequences() {
+        let d = every_part();
+        let coloured = d.render(true);
+        assert_ne!(coloured, d.to_string());
+        assert_eq!(
+            anstream::adapter::strip_str(&coloured).to_string(),
+            d.to_string()
+        );
+    }
+
+    #[test]
+    fn coloured_rendering_colours_as_rustc() {
+        let coloured = every_part().render(true);
+        let red = "\u{1b}[1m\u{1b}[31m";
+        let blue = "\u{1b}[1m\u{1b}[34m";
+        let bold = "\u{1b}[1m";
+        let reset = "\u{1b}[0m";
+        assert!(
+            coloured.starts_with(&format!(
+                "f.toml:10:9: {red}error{reset}: {bold}unknown unit `kgg`{reset}\n"
+            )),
+            "{coloured:?}"
+        );
+        assert!(
+            coloured.contains(&format!("{blue}10 |{reset} mass")),
+            "{coloured:?}"
+        );
+        assert!(
+            coloured.contains(&format!("{red}^^^^^ here{reset}\n")),
+            "{coloured:?}"
+        );
+        assert!(
+            coloured.contains(&format!("{blue}={reset} {bold}help{reset}: did you mean")),
+            "{coloured:?}"
+        );
+        assert!(
+            coloured.contains(&format!("{blue}={reset} {bold}note{reset}: included")),
+            "{coloured:?}"
+        );
+    }
+
+    #[test]
+    fn a_warning_line_colours_only_its_level() {
+        assert_eq!(Palette::PLAIN.warning_line("f: x"), "warning: f: x\n");
+        assert_eq!(
+            Palette::COLOUR.warning_line("f: x"),
+            "\u{1b}[1m\u{1b}[33mwarning\u{1b}[0m: f: x\n"
+        );
     }
 
     #[test]

@@ -122,5 +122,5 @@ pub use io::{MAX_FILE_BYTES, read_source};
 /// user-facing diagnostics (exit 2).
 #[doc(hidden)]
 pub fn run(cli: &cli::Cli) -> Result<Output, diag::Diagnostic> {
-    commands::run(&cli.request())
+    commands::run(&cli.request(), &cli.terminal())
 }

@@ -1,7 +1,6 @@
 //! The `massprop` binary: parse the command line, run, print, choose the
 //! exit status. Everything else lives in the library.
 
-use clap::Parser;
 use std::io::Write;
 use std::process::ExitCode;
 
@@ -15,7 +14,7 @@ fn to_stderr(text: &str) {
 }
 
 fn main() -> ExitCode {
-    let cli = match massprop::cli::Cli::try_parse() {
+    let cli = match massprop::cli::Cli::parse_args() {
         Ok(cli) => cli,
         Err(e) => {
             // Help and version go to stdout, usage errors to stderr; a
@@ -24,6 +23,8 @@ fn main() -> ExitCode {
             return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
         }
     };
+    // Standard error's colour, for what `main` itself prints.
+    let colour = cli.terminal().stderr.colour;
     match massprop::run(&cli) {
         Ok(out) => {
             to_stderr(&out.stderr);
@@ -39,13 +40,14 @@ fn main() -> ExitCode {
                 // A closed pipe (`massprop report x.toml | head -1`) is not an error.
                 Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(out.status),
                 Err(e) => {
-                    to_stderr(&format!("error: cannot write output: {e}\n"));
+                    let d = massprop::diag::Diagnostic::plain(format!("cannot write output: {e}"));
+                    to_stderr(&d.render(colour));
                     ExitCode::from(2)
                 }
             }
         }
         Err(diag) => {
-            to_stderr(&diag.to_string());
+            to_stderr(&diag.render(colour));
             ExitCode::from(2)
         }
     }

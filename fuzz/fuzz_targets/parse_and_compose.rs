@@ -184,7 +184,7 @@ fuzz_target!(|data: &[u8]| {
             !json.contains(MARKER),
             "the JSON shows secret.toml:\n{json}"
         );
-        let table = render::report::table(summary, top);
+        let table = render::report::table(summary, top, None);
         assert!(
             !table.contains(MARKER),
             "the table shows secret.toml:\n{table}"

@@ -147,7 +147,10 @@ fn collect(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic>
     Ok(out)
 }
 
-pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
+/// `terminal.stdout` is the output's style (`-o`'s file's when it has one);
+/// invalid files' errors and warnings go to standard error, in its.
+pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
+    let colour = terminal.stderr.colour;
     let found = collect(&o.paths, &o.search)?;
     let mut results = Vec::new();
     let mut stderr = String::new();
@@ -157,7 +160,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         ..Settings::default()
     };
     let invalid = |path: String, d: Diagnostic, stderr: &mut String| {
-        stderr.push_str(&d.to_string());
+        stderr.push_str(&d.render(colour));
         FileResult {
             path,
             status: Status::Invalid,
@@ -221,7 +224,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
             .unwrap_or_else(|| crate::io::read_source_at(&path))
             .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
             .map(|l| {
-                stderr.push_str(&super::accuracy_warnings(&l));
+                stderr.push_str(&super::accuracy_warnings(&l, colour));
                 check_loaded(&l)
             });
         let checked = match (loaded, not_blessed) {
@@ -257,7 +260,11 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         0
     };
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(&render::Output::Check(&results), o.format)),
+        stdout: super::Stdout::Text(render::render(
+            &render::Output::Check(&results),
+            o.format,
+            terminal.stdout,
+        )),
         stderr,
         status,
         read,

@@ -23,7 +23,8 @@ pub struct Options {
     pub includes: crate::model::Includes,
 }
 
-pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
+/// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
+pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let tol = o.tol;
     if !(tol >= 0.0 && tol.is_finite()) {
         return Err(Diagnostic::plain(format!(
@@ -44,10 +45,15 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
     let old = analysis::load(&o.old, &settings)?;
     let new = analysis::load(&o.new, &settings)?;
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
-    let stderr = super::accuracy_warnings(&old) + &super::accuracy_warnings(&new);
+    let colour = terminal.stderr.colour;
+    let stderr = super::accuracy_warnings(&old, colour) + &super::accuracy_warnings(&new, colour);
     let diff = Diff::of(old, new, tol)?;
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(&render::Output::Diff(&diff), o.format)),
+        stdout: super::Stdout::Text(render::render(
+            &render::Output::Diff(&diff),
+            o.format,
+            terminal.stdout,
+        )),
         stderr,
         status: u8::from(diff.changed),
         read,

@@ -17,7 +17,7 @@ pub struct Options {
     pub includes: crate::model::Includes,
 }
 
-pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
+pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let mut list: Vec<Listed> = BUILT_IN
         .iter()
         .map(|m| Listed {
@@ -48,7 +48,7 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         }
     }
     Ok(Outcome::ok(
-        render::render(&render::Output::Materials(&list), o.format),
+        render::render(&render::Output::Materials(&list), o.format, terminal.stdout),
         Vec::new(),
     ))
 }

@@ -12,6 +12,7 @@ pub mod report;
 
 use crate::diag::Diagnostic;
 use crate::io::{FileId, write_atomically_with};
+use crate::render::Style;
 use std::path::{Path, PathBuf};
 
 /// What a run prints on standard output (or into `-o`'s file).
@@ -26,6 +27,8 @@ pub enum Stdout {
         /// The name of the part file.
         source: String,
         format: crate::render::Format,
+        /// Where it goes: standard output's, or `-o`'s file's.
+        style: Style,
     },
 }
 
@@ -38,7 +41,13 @@ impl Stdout {
                 summary,
                 source,
                 format,
-            } => crate::render::write(&crate::render::Output::Report(summary, source), *format, w),
+                style,
+            } => crate::render::write(
+                &crate::render::Output::Report(summary, source),
+                *format,
+                *style,
+                w,
+            ),
         }
     }
 
@@ -85,15 +94,30 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
 }
 
 /// The accuracy warnings of a loaded part file (`--rtol` not met), a line
-/// each for standard error: `warning: FILE: …`.
-pub fn accuracy_warnings(loaded: &crate::analysis::Loaded) -> String {
+/// each for standard error: `warning: FILE: …`, `warning` coloured when
+/// `colour`.
+pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> String {
     let file = crate::diag::visible(&loaded.source.name);
+    let palette = crate::diag::Palette::of(colour);
     loaded
         .summary
         .accuracy_warnings
         .iter()
-        .map(|w| format!("warning: {file}: {}\n", w.message))
+        .map(|w| palette.warning_line(&format!("{file}: {}", w.message)))
         .collect()
+}
+
+/// Where a run's output goes and how it is dressed there: `cli` resolves
+/// `--color` and `--width` against what the process's standard output and
+/// error are. The default is plain everywhere: pipes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Terminal {
+    /// Standard output's.
+    pub stdout: Style,
+    /// Standard error's (diagnostics and warnings).
+    pub stderr: Style,
+    /// `-o FILE`'s: never coloured.
+    pub file: Style,
 }
 
 /// One command with its options.
@@ -186,8 +210,10 @@ fn is_a_part_file(path: &str) -> bool {
         && crate::model::looks_like_a_part_file(&String::from_utf8_lossy(&head))
 }
 
-/// Run a command. Errors are user-facing diagnostics (exit 2).
-pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
+/// Run a command, its output dressed for `terminal`. Errors are
+/// user-facing diagnostics (exit 2), which the caller renders for standard
+/// error (`Diagnostic::render`).
+pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic> {
     // `-o` onto a part file being read would replace the design with the
     // report: refused before anything is read or written. So is `-o` onto
     // any part file: one that a file includes is not known to be read when
@@ -207,11 +233,21 @@ pub fn run(request: &Request) -> Result<Outcome, Diagnostic> {
         ))
         .help("`-o` never replaces a part file; name another file"));
     }
+    // The command's output goes to `-o`'s file or to standard output:
+    // dressed for the one it goes to.
+    let terminal = &Terminal {
+        stdout: if output.is_some() {
+            terminal.file
+        } else {
+            terminal.stdout
+        },
+        ..*terminal
+    };
     let out = match request {
-        Request::Report(o) => report::run(o)?,
-        Request::Check(o) => check::run(o)?,
-        Request::Diff(o) => diff::run(o)?,
-        Request::Materials(o) => materials::run(o)?,
+        Request::Report(o) => report::run(o, terminal)?,
+        Request::Check(o) => check::run(o, terminal)?,
+        Request::Diff(o) => diff::run(o, terminal)?,
+        Request::Materials(o) => materials::run(o, terminal)?,
         Request::Init(o) => init::run(o)?,
         Request::Text(text) => Outcome {
             stdout: Stdout::Text(text.clone()),

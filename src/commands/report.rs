@@ -17,15 +17,17 @@ pub struct Options {
     pub settings: Settings,
 }
 
-pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
+/// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
+pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
     let read = super::files_of(&loaded);
-    let stderr = super::accuracy_warnings(&loaded);
+    let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
     Ok(Outcome {
         stdout: super::Stdout::Report {
             summary: Box::new(loaded.summary),
             source: loaded.source.name,
             format: o.format,
+            style: terminal.stdout,
         },
         stderr,
         status: 0,

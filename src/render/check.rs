@@ -5,7 +5,7 @@
 use super::format::{DisplayUnits, fmt_num};
 use crate::analysis::check::{CheckResult, FileResult, Status, limits};
 use crate::analysis::summary::{AccuracyWarning, MASSPROP_VERSION};
-use crate::diag::{Diagnostic, Span, visible};
+use crate::diag::{Diagnostic, Palette, Span, visible};
 use crate::model::expect::{Bound, Tol};
 use serde::Serialize;
 
@@ -128,8 +128,10 @@ pub fn json(results: &[FileResult]) -> String {
     })
 }
 
-/// The results for people and CI logs.
-pub fn table(results: &[FileResult]) -> String {
+/// The results for people and CI logs; `colour`: each `error` as cargo
+/// colours it (on a terminal).
+pub fn table(results: &[FileResult], colour: bool) -> String {
+    let e = Palette::of(colour).error;
     let mut s = String::new();
     for r in results {
         match r.status {
@@ -140,10 +142,10 @@ pub fn table(results: &[FileResult]) -> String {
             )),
             Status::Failed => {
                 for v in r.validity_failures() {
-                    s.push_str(&format!("{}: error: {v}\n", visible(&r.path)));
+                    s.push_str(&format!("{}: {e}error{e:#}: {v}\n", visible(&r.path)));
                 }
                 for c in r.checks.iter().filter(|c| !c.pass) {
-                    s.push_str(&message(&visible(&r.path), c));
+                    s.push_str(&message_in(&visible(&r.path), c, e));
                     s.push('\n');
                 }
             }
@@ -165,7 +167,17 @@ pub fn table(results: &[FileResult]) -> String {
 /// `path:line:col: error: NAME VALUE is outside …`, values in the file's
 /// units.
 pub fn message(path: &str, c: &CheckResult) -> String {
-    format!("{path}:{}:{}: error: {}", c.line, c.column, failure(c))
+    message_in(path, c, anstyle::Style::new())
+}
+
+/// `message`, its `error` in `style`.
+fn message_in(path: &str, c: &CheckResult, e: anstyle::Style) -> String {
+    format!(
+        "{path}:{}:{}: {e}error{e:#}: {}",
+        c.line,
+        c.column,
+        failure(c)
+    )
 }
 
 /// What is wrong with a failed expectation: `NAME VALUE is outside …`,

@@ -4,11 +4,10 @@
 use super::format::{
     DisplayUnits, change_percent as percent, name, products_label, show_or_si as show,
 };
-use super::grid::new_table;
+use super::grid::{Fit, new_table, write_rows};
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
 use crate::numeric::norm;
-use comfy_table::CellAlignment;
 use serde::Serialize;
 use std::fmt::Write;
 
@@ -181,8 +180,9 @@ fn describe_change(o: &PartView, n: &PartView, what: &[Change], u: &DisplayUnits
         .join("; ")
 }
 
-/// The diff for people, in the new file's units.
-pub fn table(d: &Diff) -> String {
+/// The diff for people, in the new file's units; the table of quantities
+/// split to fit `width` (`grid::Fit`).
+pub fn table(d: &Diff, width: Option<usize>) -> String {
     let u = DisplayUnits::of(d.new.loaded.summary.file_units);
     let mut out = String::new();
     let _ = writeln!(out, "old: {}", title(&d.old));
@@ -203,11 +203,11 @@ pub fn table(d: &Diff) -> String {
         d.tol
     );
 
-    let mut t = new_table();
-    t.set_header(vec!["", "old", "new", "change", "relative", "unit", ""]);
+    let header = ["", "old", "new", "change", "relative", "unit", ""].map(String::from);
+    let mut rows = Vec::new();
     for q in &d.quantities {
         let (factor, unit) = u.of_dim(q.dim);
-        t.add_row(vec![
+        rows.push(vec![
             q.label.clone(),
             show(q.old, factor),
             show(q.new, factor),
@@ -217,12 +217,10 @@ pub fn table(d: &Diff) -> String {
             if q.changed { "changed" } else { "" }.to_string(),
         ]);
     }
-    for (i, c) in t.column_iter_mut().enumerate() {
-        if (1..=4).contains(&i) {
-            c.set_cell_alignment(CellAlignment::Right);
-        }
-    }
-    let _ = writeln!(out, "\n{t}");
+    // The numbers right; each part of a split table keeps the quantity.
+    let right: Vec<bool> = (0..header.len()).map(|i| (1..=4).contains(&i)).collect();
+    out.push('\n');
+    write_rows(&mut out, &header, &rows, &right, Fit::new(width, 1));
 
     let (op, np) = (&d.old.parts, &d.new.parts);
     let p = &d.parts;

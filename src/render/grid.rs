@@ -3,6 +3,7 @@
 //! `write_table`), pinned byte for byte against comfy-table in the tests.
 
 use comfy_table::{CellAlignment, Table, presets};
+use std::ops::Range;
 
 use unicode_width::UnicodeWidthStr;
 
@@ -11,15 +12,6 @@ pub fn new_table() -> Table {
     let mut t = Table::new();
     t.load_style(presets::UTF8_FULL_CONDENSED);
     t
-}
-
-/// Align the columns from `from` on to the right (numbers).
-pub fn right_align(t: &mut Table, from: usize) {
-    for (i, c) in t.column_iter_mut().enumerate() {
-        if i >= from {
-            c.set_cell_alignment(CellAlignment::Right);
-        }
-    }
 }
 
 /// The text of a table's cells, row after row, in one buffer.
@@ -59,9 +51,102 @@ impl Cells {
     }
 }
 
+/// How wide a table may be. A table wider than `width` is split into
+/// parts, each a table of its own with the rows' labels (its first `keys`
+/// columns) and as many of the other columns, in order, as fit (at least
+/// one; the columns of a group together where they fit), as R and pandas
+/// print a wide data frame, and a note says so: a number is never cut and
+/// no column is hidden. (A part may still be wider than `width` when its
+/// labels and one column are.)
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Fit {
+    /// The most columns a line of the table may take; none: no limit.
+    pub width: Option<usize>,
+    /// How many of the first columns every part repeats.
+    pub keys: usize,
+    /// Columns kept in one part where they fit (a vector's x, y and z):
+    /// each group its first column and the column after its last, as a
+    /// range is written (a one-element array of ranges reads as a mistake
+    /// to clippy).
+    pub groups: &'static [(usize, usize)],
+}
+
+impl Fit {
+    /// No limit: the table whole, however wide.
+    pub const WHOLE: Fit = Fit {
+        width: None,
+        keys: 0,
+        groups: &[],
+    };
+
+    /// Within `width`, each part with the first `keys` columns.
+    pub fn new(width: Option<usize>, keys: usize) -> Fit {
+        Fit {
+            width,
+            keys,
+            groups: &[],
+        }
+    }
+
+    /// The columns of each part, given each column's width: all of them
+    /// in one part when the table fits.
+    fn parts(&self, widths: &[usize]) -> Vec<Vec<usize>> {
+        let n = widths.len();
+        // A line: a border, then for each column a space, the cell, a
+        // space and a border.
+        let span = |cols: Range<usize>| cols.map(|i| widths[i] + 3).sum::<usize>();
+        let Some(limit) = self.width else {
+            return vec![(0..n).collect()];
+        };
+        // The whole line, its first border with it, is 1 + span(0..n).
+        if span(0..n) < limit {
+            return vec![(0..n).collect()];
+        }
+        let keys = self.keys.min(n.saturating_sub(1));
+        let labels = 1 + span(0..keys);
+        // The columns after the keys in blocks: a group that fits in a part
+        // beside the labels, or a single column.
+        let mut blocks: Vec<Range<usize>> = Vec::new();
+        let mut i = keys;
+        while i < n {
+            let group = self
+                .groups
+                .iter()
+                .map(|&(start, end)| start..end)
+                .find(|g| g.start == i && g.end <= n && labels + span(g.clone()) <= limit);
+            let block = group.unwrap_or(i..i + 1);
+            i = block.end;
+            blocks.push(block);
+        }
+        let mut parts = Vec::new();
+        let mut part: Vec<usize> = (0..keys).collect();
+        let mut used = labels;
+        for block in blocks {
+            let more = span(block.clone());
+            if part.len() > keys && used + more > limit {
+                parts.push(std::mem::replace(&mut part, (0..keys).collect()));
+                used = labels;
+            }
+            part.extend(block);
+            used += more;
+        }
+        parts.push(part);
+        parts
+    }
+
+    /// The line after a table split into `parts`.
+    fn note(&self, parts: usize) -> String {
+        let width = self.width.unwrap_or_default();
+        format!(
+            "note: table split into {parts} to fit {width} columns; --width 0 prints it whole\n"
+        )
+    }
+}
+
 /// Write a table exactly as comfy-table prints it in `new_table`'s style
 /// (columns as wide as their widest cell, one space of padding, no row
-/// separators; `right[i]` aligns column i right), then a newline.
+/// separators; `right[i]` aligns column i right), then a newline; split
+/// to `fit` if it is wider.
 ///
 /// NOTE: the parts table has a row per part, 100,000 and more: through
 /// comfy-table (a `String` and several `Vec`s per cell and per line) it
@@ -77,25 +162,43 @@ impl Cells {
 /// (wide CJK characters 2, combining marks 0, an emoji ZWJ sequence or a
 /// flag 2, a tab 1): the same function, so the same columns, whatever a
 /// terminal makes of them.
-pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool]) {
+pub fn write_table(out: &mut String, header: &[String], cells: &Cells, right: &[bool], fit: Fit) {
     let mut bytes = Vec::new();
-    stream_table(&mut bytes, header, right, &mut |row| row(cells))
+    stream_table(&mut bytes, header, right, fit, &mut |row| row(cells))
         .expect("invariant: writing to memory does not fail");
     out.push_str(std::str::from_utf8(&bytes).expect("invariant: the table is UTF-8"));
+}
+
+/// `write_table` of a few rows, each a `Vec` of its cells.
+pub fn write_rows(
+    out: &mut String,
+    header: &[String],
+    rows: &[Vec<String>],
+    right: &[bool],
+    fit: Fit,
+) {
+    let mut cells = Cells::with_capacity(rows.len() * header.len());
+    for cell in rows.iter().flatten() {
+        cells.text.push_str(cell);
+        cells.end();
+    }
+    write_table(out, header, &cells, right, fit);
 }
 
 /// Rows handed out by a table's source, one `Cells` at a time.
 pub type RowSink<'a> = dyn FnMut(&Cells) + 'a;
 
 /// `write_table` for a table too long to hold in memory (a row per part of
-/// a body of 2²⁰ parts): `rows` is called twice, and each time hands every
-/// row, in order, to the function it is given (a `Cells` of whole rows,
-/// reused as it likes); the first time to measure the columns, the second
-/// to write them. The output is the same as `write_table`'s.
+/// a body of 2²⁰ parts): `rows` is called once to measure the columns, then
+/// once for each part of the table (once, unless it is split to `fit`),
+/// and each time hands every row, in order, to the function it is given (a
+/// `Cells` of whole rows, reused as it likes). The output is the same as
+/// `write_table`'s.
 pub fn stream_table(
     out: &mut dyn std::io::Write,
     header: &[String],
     right: &[bool],
+    fit: Fit,
     rows: &mut dyn FnMut(&mut RowSink<'_>),
 ) -> std::io::Result<()> {
     assert!(
@@ -104,30 +207,73 @@ pub fn stream_table(
     );
     let n = header.len();
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
-    let mut multiline = header.iter().any(|h| h.contains('\n'));
+    // The widest line of each column's cells, where a cell has line breaks
+    // (the width comfy-table lays it out in).
+    let mut lines = vec![1; n];
+    let mut multiline = false;
+    let mut measure = |i: usize, c: &str| {
+        let w = c.width();
+        widths[i] = widths[i].max(w);
+        if c.contains('\n') {
+            multiline = true;
+            lines[i] = lines[i].max(c.split('\n').map(str::width).max().unwrap_or(0));
+        } else {
+            lines[i] = lines[i].max(w);
+        }
+    };
+    for (i, h) in header.iter().enumerate() {
+        measure(i, h);
+    }
     rows(&mut |cells| {
         debug_assert!(
             cells.ends.len().is_multiple_of(n),
             "invariant: whole rows of cells"
         );
         for (i, c) in cells.iter().enumerate() {
-            multiline |= c.contains('\n');
-            let w = &mut widths[i % n];
-            *w = (*w).max(c.width());
+            measure(i % n, c);
         }
     });
+    let parts = fit.parts(if multiline { &lines } else { &widths });
     if multiline {
         let mut all = Cells::with_capacity(0);
         rows(&mut |cells| all.append(cells));
-        return writeln!(out, "{}", comfy(header, &all, right));
+        for cols in &parts {
+            writeln!(out, "{}", comfy(header, &all, right, cols))?;
+        }
+    } else {
+        for cols in &parts {
+            write_part(out, header, right, &widths, cols, rows)?;
+        }
     }
+    if parts.len() > 1 {
+        out.write_all(fit.note(parts.len()).as_bytes())?;
+    }
+    Ok(())
+}
+
+/// The columns `cols` of a table whose cells have no line breaks, columns
+/// `widths` wide.
+fn write_part(
+    out: &mut dyn std::io::Write,
+    header: &[String],
+    right: &[bool],
+    widths: &[usize],
+    cols: &[usize],
+    rows: &mut dyn FnMut(&mut RowSink<'_>),
+) -> std::io::Result<()> {
+    let n = header.len();
+    let mut shown = vec![false; n];
+    for &i in cols {
+        shown[i] = true;
+    }
+    let last = *cols.last().expect("invariant: a part has a column");
     let rule = |out: &mut String, [left, fill, junction, end]: [char; 4]| {
         out.push(left);
-        for (i, w) in widths.iter().enumerate() {
-            if i > 0 {
+        for (k, &i) in cols.iter().enumerate() {
+            if k > 0 {
                 out.push(junction);
             }
-            out.extend(std::iter::repeat_n(fill, w + 2));
+            out.extend(std::iter::repeat_n(fill, widths[i] + 2));
         }
         out.push(end);
         out.push('\n');
@@ -135,6 +281,9 @@ pub fn stream_table(
     let row = |out: &mut String, row: &mut dyn Iterator<Item = &str>| {
         out.push('│');
         for (i, c) in row.enumerate() {
+            if !shown[i] {
+                continue;
+            }
             let pad = widths[i] - c.width();
             out.push(' ');
             if right[i] {
@@ -145,7 +294,7 @@ pub fn stream_table(
                 out.extend(std::iter::repeat_n(' ', pad));
             }
             out.push(' ');
-            out.push(if i + 1 < n { '┆' } else { '│' });
+            out.push(if i == last { '│' } else { '┆' });
         }
         out.push('\n');
     };
@@ -171,18 +320,18 @@ pub fn stream_table(
     out.write_all(buf.as_bytes())
 }
 
-/// A table with a line break in a cell or in the header, through
-/// comfy-table (which splits those into lines).
-fn comfy(header: &[String], cells: &Cells, right: &[bool]) -> Table {
+/// The columns `cols` of a table with a line break in a cell or in the
+/// header, through comfy-table (which splits those into lines).
+fn comfy(header: &[String], cells: &Cells, right: &[bool], cols: &[usize]) -> Table {
     let n = header.len();
     let mut t = new_table();
-    t.set_header(header.to_vec());
+    t.set_header(cols.iter().map(|&i| header[i].as_str()));
     let all: Vec<&str> = cells.iter().collect();
     for row in all.chunks(n) {
-        t.add_row(row.to_vec());
+        t.add_row(cols.iter().map(|&i| row[i]));
     }
-    for (c, r) in t.column_iter_mut().zip(right) {
-        if *r {
+    for (c, &i) in t.column_iter_mut().zip(cols) {
+        if right[i] {
             c.set_cell_alignment(CellAlignment::Right);
         }
     }
@@ -221,7 +370,7 @@ mod tests {
             cells.end();
         }
         let mut out = String::new();
-        write_table(&mut out, &header, &cells, right);
+        write_table(&mut out, &header, &cells, right, Fit::WHOLE);
         out
     }
 
@@ -401,6 +550,118 @@ mod tests {
                 &lines[4][lines[4].len() - 20..]
             );
         }
+    }
+
+    fn fitted(header: &[&str], rows: &[Vec<&str>], right: &[bool], fit: Fit) -> String {
+        let header: Vec<String> = header.iter().map(|h| h.to_string()).collect();
+        let rows: Vec<Vec<String>> = rows
+            .iter()
+            .map(|r| r.iter().map(|c| c.to_string()).collect())
+            .collect();
+        let mut out = String::new();
+        write_rows(&mut out, &header, &rows, right, fit);
+        out
+    }
+
+    const HEADER: [&str; 5] = ["", "x", "y", "z", "unit"];
+
+    fn rows() -> Vec<Vec<&'static str>> {
+        vec![
+            vec!["centre of mass", "0.000654146", "-3.69021e-6", "1.5", "mm"],
+            vec!["ω", "1", "2", "3", "rad/s"],
+        ]
+    }
+
+    const RIGHT: [bool; 5] = [false, true, true, true, false];
+
+    #[test]
+    fn a_table_within_the_width_is_written_whole() {
+        let whole = fitted(&HEADER, &rows(), &RIGHT, Fit::WHOLE);
+        let w = whole.lines().map(str::width).max().unwrap();
+        assert_eq!(w, 60);
+        for width in [w, w + 1, 1000] {
+            let fit = Fit::new(Some(width), 1);
+            assert_eq!(fitted(&HEADER, &rows(), &RIGHT, fit), whole);
+        }
+    }
+
+    #[test]
+    fn a_wider_table_is_split_into_parts_that_repeat_the_labels() {
+        let out = fitted(&HEADER, &rows(), &RIGHT, Fit::new(Some(50), 1));
+        assert_eq!(
+            out,
+            "\
+┌────────────────┬─────────────┬─────────────┐
+│                ┆           x ┆           y │
+╞════════════════╪═════════════╪═════════════╡
+│ centre of mass ┆ 0.000654146 ┆ -3.69021e-6 │
+│ ω              ┆           1 ┆           2 │
+└────────────────┴─────────────┴─────────────┘
+┌────────────────┬─────┬───────┐
+│                ┆   z ┆ unit  │
+╞════════════════╪═════╪═══════╡
+│ centre of mass ┆ 1.5 ┆ mm    │
+│ ω              ┆   3 ┆ rad/s │
+└────────────────┴─────┴───────┘
+note: table split into 2 to fit 50 columns; --width 0 prints it whole
+"
+        );
+    }
+
+    #[test]
+    fn a_group_stays_in_one_part_where_it_fits() {
+        // A label 10 wide, a column 8, and a group of three 5 wide: 49
+        // columns in all, the label and the group 38.
+        let widths = [10, 8, 5, 5, 5];
+        let fit = |width| Fit {
+            groups: &[(2, 5)],
+            ..Fit::new(Some(width), 1)
+        };
+        assert_eq!(fit(40).parts(&widths), [vec![0, 1], vec![0, 2, 3, 4]]);
+        // Without the group, as many as fit.
+        let ungrouped = Fit::new(Some(40), 1);
+        assert_eq!(ungrouped.parts(&widths), [vec![0, 1, 2], vec![0, 3, 4]]);
+        // Too wide beside the label: its columns go one by one.
+        assert_eq!(
+            fit(30).parts(&widths),
+            [vec![0, 1], vec![0, 2, 3], vec![0, 4]]
+        );
+    }
+
+    #[test]
+    fn a_part_has_a_column_beside_its_labels_however_narrow_the_width() {
+        assert_eq!(
+            Fit::new(Some(1), 2).parts(&[3, 5, 7, 9]),
+            [vec![0, 1, 2], vec![0, 1, 3]]
+        );
+        // Labels that are all the columns but one: nothing to split.
+        assert_eq!(Fit::new(Some(1), 5).parts(&[3, 5]), [vec![0, 1]]);
+        assert_eq!(Fit::new(Some(1), 0).parts(&[3, 5]), [vec![0], vec![1]]);
+    }
+
+    #[test]
+    fn a_table_with_line_breaks_splits_through_comfy_table() {
+        let out = fitted(
+            &["name", "mass\n(kg)", "x"],
+            &[vec!["a", "1", "22"], vec!["b\nc", "333", "4"]],
+            &[false, true, true],
+            Fit::new(Some(15), 1),
+        );
+        let tables = out.matches('┌').count();
+        assert_eq!(tables, 2, "{out}");
+        assert!(
+            out.ends_with(
+                "note: table split into 2 to fit 15 columns; --width 0 prints it whole\n"
+            )
+        );
+        for cell in ["(kg)", "333", "22", "b", "c"] {
+            assert!(out.contains(cell), "{cell}: {out}");
+        }
+        assert!(
+            out.lines()
+                .all(|l| l.width() <= 15 || l.starts_with("note")),
+            "{out}"
+        );
     }
 
     #[test]

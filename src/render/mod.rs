@@ -8,7 +8,9 @@
 //!   with a `table` and a `json` renderer that return strings.
 //!
 //! `Format` is matched in one place, `render`: a command hands over its
-//! result as an `Output` and never looks at the format.
+//! result as an `Output` and never looks at the format. How the text is
+//! dressed for where it goes (colour, a terminal's width) is a `Style`,
+//! handed in with it.
 
 pub mod check;
 pub mod ci;
@@ -40,6 +42,17 @@ pub enum Format {
     Sarif,
 }
 
+/// How output is dressed for where it goes. The default, plain, is a
+/// pipe's and a file's: what every pinned output shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Style {
+    /// ANSI colour, as cargo colours (`check`'s `error`).
+    pub colour: bool,
+    /// The most columns a table may take (a terminal's width, or
+    /// `--width`): a wider one is split (`grid::Fit`). None: no limit.
+    pub width: Option<usize>,
+}
+
 /// A command's result, ready to be written in either format.
 pub enum Output<'a> {
     /// `report`: the summary, and the name of the file it came from.
@@ -49,23 +62,30 @@ pub enum Output<'a> {
     Materials(&'a [materials::Listed]),
 }
 
-/// `output` in `format`, in memory.
-pub fn render(output: &Output, format: Format) -> String {
+/// `output` in `format` and `style`, in memory.
+pub fn render(output: &Output, format: Format, style: Style) -> String {
     let mut out = Vec::new();
-    write(output, format, &mut out).expect("invariant: writing to memory does not fail");
+    write(output, format, style, &mut out).expect("invariant: writing to memory does not fail");
     String::from_utf8(out).expect("invariant: every output is UTF-8")
 }
 
 /// `output` in `format`, written to `w`: the one place formats are told
 /// apart. A report is written as it is made (its rows are never all in
-/// memory); the other outputs are small and made first.
-pub fn write(output: &Output, format: Format, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+/// memory); the other outputs are small and made first. `style` dresses
+/// the tables for people; JSON and the CI formats are for programs, and
+/// always plain.
+pub fn write(
+    output: &Output,
+    format: Format,
+    style: Style,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let text = match (format, output) {
         (Format::Table, Output::Report(s, source)) => {
-            return report::write_table_to(s, source, w);
+            return report::write_table_to(s, source, style.width, w);
         }
         (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
-        (Format::Table, Output::Check(r)) => check::table(r),
+        (Format::Table, Output::Check(r)) => check::table(r, style.colour),
         (Format::Json, Output::Check(r)) => check::json(r),
         (Format::Github, Output::Check(r)) => ci::github(r),
         (Format::Junit, Output::Check(r)) => ci::junit(r),
@@ -77,7 +97,7 @@ pub fn write(output: &Output, format: Format, w: &mut dyn std::io::Write) -> std
                 "the CI formats are for `check`'s results",
             ));
         }
-        (Format::Table, Output::Diff(d)) => diff::table(d),
+        (Format::Table, Output::Diff(d)) => diff::table(d, style.width),
         (Format::Json, Output::Diff(d)) => diff::json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),
         (Format::Json, Output::Materials(l)) => materials::json(l),

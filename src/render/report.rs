@@ -6,11 +6,10 @@ use super::format::{
     DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_bounded, fmt_num, name, precision_label,
     products_label, push_name, push_percent, push_sig,
 };
-use super::grid::{Cells, new_table, right_align, stream_table, write_table};
+use super::grid::{Cells, Fit, stream_table, write_rows, write_table};
 use crate::analysis::ideal::Idealisation;
 use crate::analysis::summary::Summary;
 use crate::units::Dim;
-use comfy_table::{CellAlignment, Table};
 use std::fmt::Write;
 
 /// The report as one JSON object (docs/json.md): the summary, SI.
@@ -18,12 +17,27 @@ pub fn json(summary: &Summary) -> String {
     super::json_line(summary)
 }
 
+/// The small tables' fit: their first column labels the rows.
+fn fit(width: Option<usize>) -> Fit {
+    Fit::new(width, 1)
+}
+
+/// Columns from the second on aligned right (numbers).
+fn numbers(n: usize) -> Vec<bool> {
+    (0..n).map(|i| i > 0).collect()
+}
+
 /// Entries to the digits their bounds `b` guarantee, read against the
 /// largest entry (`fmt_bounded`).
-fn matrix_table(m: &[[f64; 3]; 3], b: &[[f64; 3]; 3], scale: f64) -> Table {
-    let mut t = new_table();
-    t.set_header(vec!["", "x", "y", "z"]);
+fn matrix_table(
+    out: &mut String,
+    (m, b): (&[[f64; 3]; 3], &[[f64; 3]; 3]),
+    scale: f64,
+    width: Option<usize>,
+) {
+    let header = ["", "x", "y", "z"].map(String::from);
     let top = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs())) / scale;
+    let mut rows = Vec::new();
     for ((label, row), bounds) in ["x", "y", "z"].iter().zip(m).zip(b) {
         let mut cells = vec![label.to_string()];
         cells.extend(
@@ -31,10 +45,9 @@ fn matrix_table(m: &[[f64; 3]; 3], b: &[[f64; 3]; 3], scale: f64) -> Table {
                 .zip(bounds)
                 .map(|(v, e)| fmt_bounded(v / scale, e / scale, top)),
         );
-        t.add_row(cells);
+        rows.push(cells);
     }
-    right_align(&mut t, 1);
-    t
+    write_rows(out, &header, &rows, &numbers(header.len()), fit(width));
 }
 
 /// A principal table's values and their bounds (`error_bounds`).
@@ -46,21 +59,20 @@ struct Principal<'a> {
     equal: &'a [usize],
 }
 
-fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
+fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Option<usize>) {
     let Principal {
         moments: (moments, moments_b),
         axes: (axes, axes_b),
         radii,
         equal,
     } = p;
-    let mut t = new_table();
+    let mut rows = Vec::new();
     let mut header = vec![format!("moment ({})", u.inertia_label)];
     if radii.is_some() {
         header.push(format!("radius of gyration ({})", u.length_label));
     }
     header.extend(["axis x", "axis y", "axis z"].map(String::from));
     header.insert(0, String::new());
-    t.set_header(header);
     for i in 0..3 {
         let own = |v: f64, b: f64, scale: f64| fmt_bounded(v / scale, b / scale, (v / scale).abs());
         let mut cells = vec![
@@ -75,10 +87,18 @@ fn principal_table(p: Principal, u: &DisplayUnits) -> Table {
         // result to bound.
         let bound = if equal.contains(&i) { 0.0 } else { axes_b[i] };
         cells.extend(axes[i].iter().map(|a| fmt_bounded(*a, bound, 1.0)));
-        t.add_row(cells);
+        rows.push(cells);
     }
-    right_align(&mut t, 1);
-    t
+    // The axes' components together.
+    let fit = Fit {
+        groups: if radii.is_some() {
+            &[(3, 6)]
+        } else {
+            &[(2, 5)]
+        },
+        ..fit(width)
+    };
+    write_rows(out, &header, &rows, &numbers(header.len()), fit);
 }
 
 /// The arithmetic used, and why: `auto`'s choice, or the one asked for;
@@ -108,10 +128,11 @@ fn precision_line(s: &Summary) -> String {
     line
 }
 
-/// The report for people; `source` names the file it came from.
-pub fn table(s: &Summary, source: &str) -> String {
+/// The report for people; `source` names the file it came from; tables
+/// wider than `width` split (`grid::Fit`).
+pub fn table(s: &Summary, source: &str, width: Option<usize>) -> String {
     let mut out = Vec::new();
-    write_table_to(s, source, &mut out).expect("invariant: writing to memory does not fail");
+    write_table_to(s, source, width, &mut out).expect("invariant: writing to memory does not fail");
     String::from_utf8(out).expect("invariant: the table is UTF-8")
 }
 
@@ -125,6 +146,7 @@ pub fn write_json_to(summary: &Summary, w: &mut dyn std::io::Write) -> std::io::
 pub fn write_table_to(
     s: &Summary,
     source: &str,
+    width: Option<usize>,
     w: &mut dyn std::io::Write,
 ) -> std::io::Result<()> {
     let u = DisplayUnits::of(s.file_units);
@@ -164,8 +186,8 @@ pub fn write_table_to(
         let _ = writeln!(out, "kinetic energy T: {} {unit}", own(t, e, scale));
     }
 
-    let mut vectors = new_table();
-    vectors.set_header(vec!["", "x", "y", "z", "unit"]);
+    let header = ["", "x", "y", "z", "unit"].map(String::from);
+    let mut vectors = Vec::new();
     // Given vectors (ω, α, a reference point given) are exact: no bound.
     let exact = [0.0; 3];
     let mut row = |label: &str, v: &[f64; 3], e: &[f64; 3], (scale, unit): (f64, &str)| {
@@ -177,7 +199,7 @@ pub fn write_table_to(
                 .map(|(x, e)| fmt_bounded(x / scale, e / scale, top)),
         );
         cells.push(unit.to_string());
-        vectors.add_row(cells);
+        vectors.push(cells);
     };
     let length = u.of_dim(Dim::LENGTH);
     row(
@@ -213,22 +235,20 @@ pub fn write_table_to(
         // labelled N·m.
         row("Euler moment M", m, e, (1.0, MOMENT_UNIT));
     }
-    right_align(&mut vectors, 1);
-    if let Some(c) = vectors.column_mut(4) {
-        c.set_cell_alignment(CellAlignment::Left);
-    }
-    let _ = writeln!(out, "{vectors}");
+    // Numbers right, the unit left.
+    let right = [false, true, true, true, false];
+    let fit = Fit {
+        groups: &[(1, 4)],
+        ..fit(width)
+    };
+    write_rows(&mut out, &header, &vectors, &right, fit);
 
     let _ = writeln!(
         out,
         "\ninertia about the centre of mass ({})",
         u.inertia_label
     );
-    let _ = writeln!(
-        out,
-        "{}",
-        matrix_table(&s.inertia_com, &b.inertia_com, u.inertia)
-    );
+    matrix_table(&mut out, (&s.inertia_com, &b.inertia_com), u.inertia, width);
     if s.reference_given {
         let p = s.reference_point.map(|x| fmt_num(x / u.length));
         let _ = writeln!(
@@ -236,29 +256,23 @@ pub fn write_table_to(
             "\ninertia about the reference point ({}, {}, {}) {} ({})",
             p[0], p[1], p[2], u.length_label, u.inertia_label
         );
-        let _ = writeln!(
-            out,
-            "{}",
-            matrix_table(&s.inertia_ref, &b.inertia_ref, u.inertia)
-        );
+        matrix_table(&mut out, (&s.inertia_ref, &b.inertia_ref), u.inertia, width);
     }
 
     let _ = writeln!(
         out,
         "\nprincipal moments and axes about the centre of mass (ascending)"
     );
-    let _ = writeln!(
-        out,
-        "{}",
-        principal_table(
-            Principal {
-                moments: (&s.principal_moments, &b.principal_moments),
-                axes: (&s.principal_axes, &b.principal_axes),
-                radii: Some((&s.radii_of_gyration, &b.radii_of_gyration)),
-                equal: &s.equal_moments,
-            },
-            &u
-        )
+    principal_table(
+        &mut out,
+        Principal {
+            moments: (&s.principal_moments, &b.principal_moments),
+            axes: (&s.principal_axes, &b.principal_axes),
+            radii: Some((&s.radii_of_gyration, &b.radii_of_gyration)),
+            equal: &s.equal_moments,
+        },
+        &u,
+        width,
     );
     equal_note(&mut out, &s.equal_moments);
     if s.reference_given {
@@ -266,18 +280,16 @@ pub fn write_table_to(
             out,
             "\nprincipal moments and axes about the reference point (ascending)"
         );
-        let _ = writeln!(
-            out,
-            "{}",
-            principal_table(
-                Principal {
-                    moments: (&s.principal_moments_ref, &b.principal_moments_ref),
-                    axes: (&s.principal_axes_ref, &b.principal_axes_ref),
-                    radii: None,
-                    equal: &s.equal_moments_ref,
-                },
-                &u
-            )
+        principal_table(
+            &mut out,
+            Principal {
+                moments: (&s.principal_moments_ref, &b.principal_moments_ref),
+                axes: (&s.principal_axes_ref, &b.principal_axes_ref),
+                radii: None,
+                equal: &s.equal_moments_ref,
+            },
+            &u,
+            width,
         );
         equal_note(&mut out, &s.equal_moments_ref);
     }
@@ -302,7 +314,13 @@ pub fn write_table_to(
     out.clear();
     let mut cells = Cells::with_capacity(header.len());
     let mut undefined = false;
-    stream_table(w, &header, &right, &mut |sink| {
+    // Split, each part keeps the number and the name, and the centroid's
+    // coordinates and the shares together.
+    let parts_fit = Fit {
+        groups: &[(5, 8), (8, 11)],
+        ..Fit::new(width, 2)
+    };
+    stream_table(w, &header, &right, parts_fit, &mut |sink| {
         let mut i = 0usize;
         s.parts.each(&mut |p| {
             cells.clear();
@@ -337,10 +355,10 @@ pub fn write_table_to(
     if !s.assemblies.is_empty() {
         w.write_all(out.as_bytes())?;
         out.clear();
-        assemblies(w, s, &u)?;
+        assemblies(w, s, &u, width)?;
     }
     if let Some(i) = &s.idealisation {
-        idealisation(&mut out, i, &u);
+        idealisation(&mut out, i, &u, width);
     }
     w.write_all(out.as_bytes())
 }
@@ -370,7 +388,12 @@ fn push_figures(
 
 /// The sub-assemblies section: each with its mass, centre of mass and
 /// shares, indented by depth.
-fn assemblies(w: &mut dyn std::io::Write, s: &Summary, u: &DisplayUnits) -> std::io::Result<()> {
+fn assemblies(
+    w: &mut dyn std::io::Write,
+    s: &Summary,
+    u: &DisplayUnits,
+    width: Option<usize>,
+) -> std::io::Result<()> {
     let header = [
         "sub-assembly".to_string(),
         "parts".to_string(),
@@ -386,7 +409,11 @@ fn assemblies(w: &mut dyn std::io::Write, s: &Summary, u: &DisplayUnits) -> std:
     let right: Vec<bool> = (0..header.len()).map(|i| i >= 1).collect();
     w.write_all(b"\nsub-assemblies\n")?;
     let mut cells = Cells::with_capacity(header.len());
-    stream_table(w, &header, &right, &mut |sink| {
+    let fit = Fit {
+        groups: &[(4, 7), (7, 10)],
+        ..fit(width)
+    };
+    stream_table(w, &header, &right, fit, &mut |sink| {
         s.assemblies.each(&mut |a| {
             cells.clear();
             for _ in 1..a.path.len() {
@@ -413,7 +440,7 @@ fn assemblies(w: &mut dyn std::io::Write, s: &Summary, u: &DisplayUnits) -> std:
 
 /// The idealisation section: the change of each principal moment with the
 /// plates and rods that give their real size made solid.
-fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits) {
+fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits, width: Option<usize>) {
     let _ = writeln!(
         out,
         "\nidealisation (thin plates and slender rods as solids)"
@@ -440,7 +467,8 @@ fn idealisation(out: &mut String, i: &Idealisation, u: &DisplayUnits) {
     for p in &i.parts {
         row(&name(&p.name), p.solid.name(), &p.relative_change);
     }
-    write_table(out, &header, &cells, &[false, false, true, true, true]);
+    let right = [false, false, true, true, true];
+    write_table(out, &header, &cells, &right, fit(width));
     let _ = writeln!(
         out,
         "change: (solid − idealised) / idealised of each principal moment, ascending"

@@ -6,6 +6,7 @@ mod bounds;
 mod check;
 mod ci;
 mod cli;
+mod colour;
 mod common;
 mod cost;
 mod diff;
