@@ -73,6 +73,18 @@ pub struct CheckResult {
     pub file_units: FileUnits,
 }
 
+impl CheckResult {
+    /// The entry's place in its file.
+    pub fn span(&self) -> Span {
+        Span {
+            line: self.line,
+            column: self.column,
+            end_line: self.end_line,
+            end_column: self.end_column,
+        }
+    }
+}
+
 /// The outcome for one file, serialised by name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]

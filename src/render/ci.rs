@@ -98,12 +98,7 @@ pub fn github(results: &[FileResult]) -> String {
             }
         }
         for c in r.checks.iter().filter(|c| !c.pass) {
-            let span = Span {
-                line: c.line,
-                column: c.column,
-                end_line: c.end_line,
-                end_column: c.end_column,
-            };
+            let span = c.span();
             let text = visible(&failure(c));
             out.push_str(&command(
                 "error",
@@ -282,12 +277,7 @@ pub fn sarif(results: &[FileResult]) -> String {
             out.push(result("validity", "error", &visible(m), &r.path, None));
         }
         for c in r.checks.iter().filter(|c| !c.pass) {
-            let span = Span {
-                line: c.line,
-                column: c.column,
-                end_line: c.end_line,
-                end_column: c.end_column,
-            };
+            let span = c.span();
             let text = visible(&failure(c));
             out.push(result("expectation", "error", &text, &r.path, Some(span)));
         }
