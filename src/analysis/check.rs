@@ -19,6 +19,7 @@ pub fn measured(s: &Summary, t: Target) -> f64 {
         Target::InertiaCom(i, j) => s.inertia_com[i][j],
         Target::InertiaRef(i, j) => s.inertia_ref[i][j],
         Target::RadiusOfGyration(i) => s.radii_of_gyration[i],
+        Target::RadiusOfGyrationAxis(i) => s.radii_of_gyration_axes[i],
         Target::AngularMomentum(i) => s.angular_momentum.map_or(f64::NAN, |h| h[i]),
         Target::KineticEnergy => s.kinetic_energy.unwrap_or(f64::NAN),
     }

@@ -123,6 +123,11 @@ pub struct Summary {
     pub equal_moments_ref: Vec<usize>,
     /// √(Iᵢ/m) of the principal moments about the centre of mass.
     pub radii_of_gyration: [f64; 3],
+    /// √(I_xx/m), √(I_yy/m), √(I_zz/m): about the x, y and z axes through
+    /// the centre of mass (k_zz is plane motion's radius of gyration).
+    pub radii_of_gyration_axes: [f64; 3],
+    /// The same about the axes through the reference point.
+    pub radii_of_gyration_axes_ref: [f64; 3],
     /// A row per part, made as it is written (`Parts::each`).
     pub parts: Parts,
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -277,6 +282,28 @@ fn summarize_in(
         "radii of gyration",
         Blame::Parts(Contribution::SecondMoment),
     )?;
+    // About the axes: each diagonal entry (≥ 0, but for rounding) alike.
+    let along_axes = |i: &M3<DD>| {
+        std::array::from_fn::<f64, 3, _>(|k| {
+            let d = if i[k][k] < DD::of(0.0) {
+                DD::of(0.0)
+            } else {
+                i[k][k]
+            };
+            (d.sqrt() / mass_dd.sqrt()).f64()
+        })
+    };
+    let (radii_axes, radii_axes_ref) = (along_axes(&i_com), along_axes(&i_ref));
+    finite(
+        &radii_axes,
+        "radii of gyration about the axes",
+        Blame::Parts(Contribution::SecondMoment),
+    )?;
+    finite(
+        &radii_axes_ref,
+        "radii of gyration about the axes through the reference point",
+        Blame::About,
+    )?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
     let shares = ideal::Shares::new(&body, &p_com);
     let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;
@@ -347,7 +374,11 @@ fn summarize_in(
         let (moments_b, axes_b) = eigen(&c_com, &error.second_moment, &p_com, &m_com);
         let (moments_ref_b, axes_ref_b) = eigen(&c_about, &e_solved, &p_ref, &m_ref);
         let mass_b = si(error.mass, f_m, mass);
+        let inertia_com = tensor(&error.second_moment, &i_com_f);
         let inertia_ref = tensor(&e_ref, &i_ref_f);
+        let along_axes = |k: &[f64; 3], i: &M3<f64>, e: &M3<f64>| {
+            std::array::from_fn(|j| bounds::radius(k[j], i[j][j], e[j][j], mass, mass_b))
+        };
         let dynamics = analysis.omega.zip(h).map(|(w, h)| {
             bounds::dynamics(
                 &inertia_ref,
@@ -365,7 +396,9 @@ fn summarize_in(
                 Some(_) => reference.map(|x| bounds::U64 * x.abs()),
                 None => com_b,
             },
-            inertia_com: tensor(&error.second_moment, &i_com_f),
+            radii_of_gyration_axes: along_axes(&radii_axes, &i_com_f, &inertia_com),
+            radii_of_gyration_axes_ref: along_axes(&radii_axes_ref, &i_ref_f, &inertia_ref),
+            inertia_com,
             inertia_ref,
             principal_moments: moments_b,
             principal_axes: axes_b,
@@ -407,6 +440,8 @@ fn summarize_in(
         principal_axes_ref: axes(&p_ref),
         equal_moments_ref: p_ref.equal.clone(),
         radii_of_gyration: radii,
+        radii_of_gyration_axes: radii_axes,
+        radii_of_gyration_axes_ref: radii_axes_ref,
         parts: Parts(made_from.clone()),
         assemblies: Assemblies(made_from),
         omega: analysis.omega.as_ref().map(arr),

@@ -21,6 +21,8 @@ pub enum Target {
     InertiaCom(usize, usize),
     InertiaRef(usize, usize),
     RadiusOfGyration(usize),
+    /// About the x, y or z axis through the centre of mass.
+    RadiusOfGyrationAxis(usize),
     AngularMomentum(usize),
     KineticEnergy,
 }
@@ -113,7 +115,7 @@ impl Ctx<'_> {
     ) -> Result<Vec<Check>, Diagnostic> {
         let e = raw.get_ref();
         let mut out = Vec::new();
-        let entries: [Entry<'_>; 14] = [
+        let entries: [Entry<'_>; 15] = [
             ("mass", &e.mass, Shape::Scalar, Dim::MASS, |_, _| {
                 Target::Mass
             }),
@@ -151,6 +153,13 @@ impl Ctx<'_> {
                 Shape::Ordered,
                 Dim::LENGTH,
                 |i, _| Target::RadiusOfGyration(i),
+            ),
+            (
+                "radii_of_gyration_axes",
+                &e.radii_of_gyration_axes,
+                Shape::Vector,
+                Dim::LENGTH,
+                |i, _| Target::RadiusOfGyrationAxis(i),
             ),
             (
                 "angular_momentum",

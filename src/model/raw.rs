@@ -298,6 +298,8 @@ pub struct RawExpect {
     #[schemars(with = "Option<RawExpectation>")]
     pub radii_of_gyration: Option<Spanned<RawExpectation>>,
     #[schemars(with = "Option<RawExpectation>")]
+    pub radii_of_gyration_axes: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
     pub angular_momentum: Option<Spanned<RawExpectation>>,
     #[schemars(with = "Option<RawExpectation>")]
     pub kinetic_energy: Option<Spanned<RawExpectation>>,
@@ -509,6 +511,7 @@ impl Shift for RawExpect {
             inertia_com,
             inertia_ref,
             radii_of_gyration,
+            radii_of_gyration_axes,
             angular_momentum,
             kinetic_energy,
             ixx,
@@ -525,6 +528,7 @@ impl Shift for RawExpect {
             inertia_com: inertia_com.shift(by),
             inertia_ref: inertia_ref.shift(by),
             radii_of_gyration: radii_of_gyration.shift(by),
+            radii_of_gyration_axes: radii_of_gyration_axes.shift(by),
             angular_momentum: angular_momentum.shift(by),
             kinetic_energy: kinetic_energy.shift(by),
             ixx: ixx.shift(by),

@@ -208,8 +208,20 @@ pub fn write_table_to(
         &b.center_of_mass,
         length,
     );
+    row(
+        "radius of gyration k_xx, k_yy, k_zz",
+        &s.radii_of_gyration_axes,
+        &b.radii_of_gyration_axes,
+        length,
+    );
     if s.reference_given {
         row("reference point", &s.reference_point, &exact, length);
+        row(
+            "k_xx, k_yy, k_zz through the point",
+            &s.radii_of_gyration_axes_ref,
+            &b.radii_of_gyration_axes_ref,
+            length,
+        );
     }
     if let Some(w) = &s.omega {
         row(

@@ -131,20 +131,25 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
                         &b["euler_moment"][j],
                     );
                     // k = √(I/m) is irrational: (k ∓ b)² brackets I/m.
-                    let (k, kb) = (
-                        num(&v["radii_of_gyration"][j]),
-                        num(&b["radii_of_gyration"][j]),
-                    );
-                    let ratio = &moments[j] / &exact.mass;
-                    let (lo, hi) = ((k - kb).max(0.0), k + kb);
-                    let inside = r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi);
-                    honest.checked += 1;
-                    if !inside {
-                        honest.failures.push(format!(
-                            "{}: {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
-                            what(&format!("radii_of_gyration[{j}]")),
-                            r::f(&ratio).sqrt()
-                        ));
+                    // The principal ones, and those about the axes through
+                    // the centre of mass and through the point.
+                    for (key, moment) in [
+                        ("radii_of_gyration", &moments[j]),
+                        ("radii_of_gyration_axes", &exact.inertia[j][j]),
+                        ("radii_of_gyration_axes_ref", &i_ref[j][j]),
+                    ] {
+                        let (k, kb) = (num(&v[key][j]), num(&b[key][j]));
+                        let ratio = moment / &exact.mass;
+                        let (lo, hi) = ((k - kb).max(0.0), k + kb);
+                        let inside = r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi);
+                        honest.checked += 1;
+                        if !inside {
+                            honest.failures.push(format!(
+                                "{}: {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
+                                what(&format!("{key}[{j}]")),
+                                r::f(&ratio).sqrt()
+                            ));
+                        }
                     }
                 }
                 honest.check(

@@ -94,6 +94,11 @@ const CASES: &[(&str, &str)] = &[
         "radii_of_gyration.3 = { value = 1.0408329997330663, tol = 1e-12 }",
         "radii_of_gyration.3 = { value = 1.05, tol = 1e-12 }",
     ),
+    // k_zz = √(Izz/m) = √(5/12), about the z axis through the centre.
+    (
+        "radii_of_gyration_axes.z = { value = 0.6454972243679028, tol = 1e-12 }",
+        "radii_of_gyration_axes.z = { value = 0.646, tol = 1e-12 }",
+    ),
     (
         "angular_momentum = { value = [0, 0, 10], tol = 1e-12 }",
         "angular_momentum = { value = [0, 0, 10.5], tol = 1e-12 }",

@@ -1474,3 +1474,30 @@ fn a_datasheet_tensor_keeps_its_small_principal_moment() {
         }
     }
 }
+
+/// Radii of gyration about the file's axes, by hand: a 12 kg box
+/// 1 × 2 × 3 m centred at (1, 2, 3) m has I = (13, 10, 5) kg·m² about the
+/// axes through its centre, k = √(I/m); about the origin's axes the
+/// parallel-axis shift adds m (y² + z², x² + z², x² + y²) = (156, 120, 60).
+#[test]
+fn radii_of_gyration_about_the_axes_through_the_centre_and_the_point() {
+    let text = "[[part]]\nshape = \"box\"\nmass = 12\nsize = [1, 2, 3]\ncenter = [1, 2, 3]\n\n[analysis]\nabout = [0, 0, 0]\n";
+    let (v, _) = crate::common::report_json(text, &[]);
+    let close = |got: &serde_json::Value, want: f64| {
+        let got = got.as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 2.0 * f64::EPSILON * want,
+            "{got} vs {want}"
+        );
+    };
+    for (j, (i_com, i_ref)) in [(13.0, 169.0), (10.0, 130.0), (5.0, 65.0)]
+        .into_iter()
+        .enumerate()
+    {
+        close(&v["radii_of_gyration_axes"][j], f64::sqrt(i_com / 12.0));
+        close(&v["radii_of_gyration_axes_ref"][j], f64::sqrt(i_ref / 12.0));
+    }
+    // Without a point, the reference is the centre: the same radii.
+    let (v, _) = crate::common::report_json(&text.replace("about = [0, 0, 0]", ""), &[]);
+    assert_eq!(v["radii_of_gyration_axes"], v["radii_of_gyration_axes_ref"]);
+}

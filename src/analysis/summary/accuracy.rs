@@ -224,6 +224,22 @@ fn shortfalls(s: &Summary, rtol: f64) -> Vec<Shortfall> {
         let top = s.radii_of_gyration[2];
         judge(format!("radii_of_gyration[{i}]"), r, e, top, extended, "m");
     }
+    for (key, k, e) in [
+        (
+            "radii_of_gyration_axes",
+            &s.radii_of_gyration_axes,
+            &b.radii_of_gyration_axes,
+        ),
+        (
+            "radii_of_gyration_axes_ref",
+            &s.radii_of_gyration_axes_ref,
+            &b.radii_of_gyration_axes_ref,
+        ),
+    ] {
+        for i in 0..3 {
+            judge(format!("{key}[{i}]"), k[i], e[i], largest(k), extended, "m");
+        }
+    }
     for (key, equal, e) in [
         ("principal_axes", &s.equal_moments, &b.principal_axes),
         (

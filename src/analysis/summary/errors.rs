@@ -171,4 +171,3 @@ fn largest_contributor(model: &Model, kind: Contribution) -> Option<crate::part:
     });
     model.part(best?.1)
 }
-
