@@ -503,6 +503,7 @@ pub struct ErrorBounds {
     pub radii_of_gyration: [f64; 3],
     pub radii_of_gyration_axes: [f64; 3],
     pub radii_of_gyration_axes_ref: [f64; 3],
+    pub center_of_mass_ref: [f64; 3],
     #[serde(skip_serializing_if = "Option::is_none")]
     pub angular_momentum: Option<[f64; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -258,6 +258,14 @@ pub struct ReportArgs {
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub alpha: Option<String>,
 
+    /// The axes to report in, overriding `[analysis].axes`: their x and y
+    /// directions in the file's frame, "x=1,0,0;y=0,-1,0" (z = x × y), or a
+    /// rotation of the file's axes: "quaternion=w,x,y,z",
+    /// "axis=0,0,1;degrees=90", "intrinsic=zyx;degrees=a,b,c". ω and α are
+    /// read in them.
+    #[arg(long, value_name = "AXES", allow_hyphen_values = true)]
+    pub axes: Option<String>,
+
     #[command(flatten)]
     pub includes: IncludeArgs,
 }
@@ -427,6 +435,7 @@ impl Cli {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
                         alpha: a.alpha.clone(),
+                        axes: a.axes.clone(),
                     },
                 },
             }),

@@ -38,6 +38,8 @@ pub struct Overrides {
     pub about: Option<String>,
     pub omega: Option<String>,
     pub alpha: Option<String>,
+    /// `--axes`, as typed (`model::parse_flag_axes`).
+    pub axes: Option<String>,
 }
 
 /// What a command asks of the pipeline.
@@ -132,6 +134,12 @@ pub fn resolve(
     if let Some(v) = flag(&overrides.alpha, "alpha", Dim::ANGULAR_ACCELERATION)? {
         analysis.alpha = Some(v);
         analysis.alpha_span = None;
+    }
+    if let Some(t) = &overrides.axes {
+        analysis.axes =
+            Some(model::rotation::parse_flag_axes(t).map_err(|e| {
+                Diagnostic::plain(format!("invalid value {t:?} for `--axes`: {e}"))
+            })?);
     }
     // α without ω: point at the file's `alpha` unless it came from the flag.
     if analysis.alpha.is_some() && analysis.omega.is_none() {

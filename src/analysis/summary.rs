@@ -3,6 +3,7 @@
 //! and prints it for people in the file's units.
 
 pub mod accuracy;
+mod axes;
 mod cut_outs;
 mod errors;
 mod rows;
@@ -110,6 +111,14 @@ pub struct Summary {
     pub mass: f64,
     pub center_of_mass: [f64; 3],
     pub reference_point: [f64; 3],
+    /// The centre of mass from the reference point, c − p, in the report
+    /// axes (zero when the point is the centre).
+    pub center_of_mass_ref: [f64; 3],
+    /// The report axes: rows are they in the file's frame (`axes`; the
+    /// identity for the file's own). Tensors, principal axes, radii about
+    /// the axes, ω, H, α and M are in them; `center_of_mass` and
+    /// `reference_point` are points in the file's frame.
+    pub axes: [[f64; 3]; 3],
     /// Rows of the inertia tensor about the centre of mass, file axes.
     pub inertia_com: [[f64; 3]; 3],
     /// Rows of the inertia tensor about the reference point, file axes.
@@ -233,9 +242,25 @@ fn summarize_in(
     };
     let reference = about.map(|c| (c * f_length).f64());
     finite(&reference, "reference point", Blame::About)?;
-    let c_ref = body.second_moment_about(&about);
+    let c_ref_file = body.second_moment_about(&about);
+    // In the report axes from here on (`axes`): the second moments turned
+    // once; ω and α are given in them.
+    let turn = analysis
+        .axes
+        .as_ref()
+        .map(|o| axes::Turn::new(o, precision));
+    let turned = |c: &M3<DD>| turn.as_ref().map_or(*c, |t| t.tensor(c));
+    let (c_com, c_ref) = (turned(&body.second_moment), turned(&c_ref_file));
+    let offset: [DD; 3] = std::array::from_fn(|j| body.center_of_mass[j] - about[j]);
+    let com_ref_dd = turn.as_ref().map_or(offset, |t| t.vector(&offset));
+    let com_ref = com_ref_dd.map(|x| (x * f_length).f64());
+    finite(
+        &com_ref,
+        "centre of mass from the reference point",
+        Blame::About,
+    )?;
     let si = |c: &M3<DD>| inertia_of_rows(c).map(|r| r.map(|x| x * f_inertia));
-    let (i_com, i_ref) = (si(&body.second_moment), si(&c_ref));
+    let (i_com, i_ref) = (si(&c_com), si(&c_ref));
     let round = |m: &M3<DD>| m.map(|r| r.map(DD::f64));
     let (i_com_f, i_ref_f) = (round(&i_com), round(&i_ref));
     finite(
@@ -250,12 +275,17 @@ fn summarize_in(
     )?;
     // The second moments are finite here, so `None` means a principal
     // moment beyond f64 (the solver converges on finite input).
-    let p_com = compose::principal_bounded(&body.second_moment, precision).ok_or(
-        SummaryError::NotFinite {
-            what: "principal moments about the centre of mass",
-            blame: Blame::Parts(Contribution::SecondMoment),
-        },
-    )?;
+    let not_finite = SummaryError::NotFinite {
+        what: "principal moments about the centre of mass",
+        blame: Blame::Parts(Contribution::SecondMoment),
+    };
+    let p_com = compose::principal_bounded(&c_com, precision).ok_or(not_finite.clone())?;
+    // The parts' shares and the idealisation project the parts, which are
+    // in the file's axes: the same principal axes, found there.
+    let p_file = match &turn {
+        None => p_com.clone(),
+        Some(_) => compose::principal_bounded(&body.second_moment, precision).ok_or(not_finite)?,
+    };
     let p_ref = compose::principal_bounded(&c_ref, precision).ok_or(SummaryError::NotFinite {
         what: "principal moments about the reference point",
         blame: Blame::About,
@@ -305,8 +335,8 @@ fn summarize_in(
         Blame::About,
     )?;
     let axes = |p: &Principal| p.axes.map(|a| arr(&a));
-    let shares = ideal::Shares::new(&body, &p_com);
-    let idealisation = ideal::idealisation(model, &body, &p_com, precision, f_inertia)?;
+    let shares = ideal::Shares::new(&body, &p_file);
+    let idealisation = ideal::idealisation(model, &body, &p_file, precision, f_inertia)?;
 
     let times = |m: &M3<DD>, v: &Vector3<f64>| -> [DD; 3] {
         std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
@@ -344,15 +374,33 @@ fn summarize_in(
         let (f_m, f_l, f_i) = (f(f_mass), f(f_length), f(f_inertia));
         let si = |b: f64, factor: f64, v: f64| bounds::to_si(b, factor, v);
         let com_b: [f64; 3] = std::array::from_fn(|j| si(error.center_of_mass[j], f_l, com[j]));
-        let c_com = body.second_moment.map(|r| r.map(f));
-        let c_about = c_ref.map(|r| r.map(f));
-        let offset = std::array::from_fn(|j| f(body.center_of_mass[j] - about[j]));
+        let c_about_file = c_ref_file.map(|r| r.map(f));
+        let offset_f = offset.map(f);
         // About the centre of mass itself (no point given), the exact
         // value is the exact C: the error is the composer's alone.
         let e_ref = match analysis.about {
-            Some(_) => error.second_moment_about(f(body.mass), offset, &c_about),
+            Some(_) => error.second_moment_about(f(body.mass), offset_f, &c_about_file),
             None => error.second_moment,
         };
+        // The offset c − p: exactly 0 without a point; else the centre's
+        // error and the double-double difference's rounding.
+        let e_offset: [f64; 3] = match analysis.about {
+            Some(_) => std::array::from_fn(|j| {
+                error.center_of_mass[j] + crate::part::error::U_DD * offset_f[j].abs()
+            }),
+            None => [0.0; 3],
+        };
+        // Into the report axes.
+        let (e_com, e_ref, e_offset) = match &turn {
+            None => (error.second_moment, e_ref, e_offset),
+            Some(t) => (
+                t.tensor_bound(&error.second_moment, &body.second_moment.map(|r| r.map(f))),
+                t.tensor_bound(&e_ref, &c_about_file),
+                t.vector_bound(&e_offset, &offset_f),
+            ),
+        };
+        let c_com = c_com.map(|r| r.map(f));
+        let c_about = c_ref.map(|r| r.map(f));
         // The f64 solver takes C about the point rounded to f64.
         let e_solved = match precision {
             Precision::Standard => std::array::from_fn(|j| {
@@ -371,10 +419,10 @@ fn summarize_in(
                 b.axes,
             )
         };
-        let (moments_b, axes_b) = eigen(&c_com, &error.second_moment, &p_com, &m_com);
+        let (moments_b, axes_b) = eigen(&c_com, &e_com, &p_com, &m_com);
         let (moments_ref_b, axes_ref_b) = eigen(&c_about, &e_solved, &p_ref, &m_ref);
         let mass_b = si(error.mass, f_m, mass);
-        let inertia_com = tensor(&error.second_moment, &i_com_f);
+        let inertia_com = tensor(&e_com, &i_com_f);
         let inertia_ref = tensor(&e_ref, &i_ref_f);
         let along_axes = |k: &[f64; 3], i: &M3<f64>, e: &M3<f64>| {
             std::array::from_fn(|j| bounds::radius(k[j], i[j][j], e[j][j], mass, mass_b))
@@ -396,6 +444,7 @@ fn summarize_in(
                 Some(_) => reference.map(|x| bounds::U64 * x.abs()),
                 None => com_b,
             },
+            center_of_mass_ref: std::array::from_fn(|j| si(e_offset[j], f_l, com_ref[j])),
             radii_of_gyration_axes: along_axes(&radii_axes, &i_com_f, &inertia_com),
             radii_of_gyration_axes_ref: along_axes(&radii_axes_ref, &i_ref_f, &inertia_ref),
             inertia_com,
@@ -431,6 +480,11 @@ fn summarize_in(
         mass,
         center_of_mass: com,
         reference_point: reference,
+        center_of_mass_ref: com_ref,
+        axes: turn.as_ref().map_or(
+            std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j)))),
+            |t| t.rows,
+        ),
         inertia_com: rows(&i_com_f, products),
         inertia_ref: rows(&i_ref_f, products),
         principal_moments: m_com,

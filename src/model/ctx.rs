@@ -256,10 +256,12 @@ impl Ctx<'_> {
         let about = read(&r.about, "about", Dim::LENGTH)?;
         let omega = read(&r.omega, "omega", Dim::ANGULAR_VELOCITY)?;
         let alpha = read(&r.alpha, "alpha", Dim::ANGULAR_ACCELERATION)?;
+        let axes = r.axes.as_ref().map(|a| self.axes(a)).transpose()?;
         Ok(Analysis {
             about,
             omega,
             alpha,
+            axes,
             alpha_span: r.alpha.as_ref().map(Spanned::span),
             about_span: r.about.as_ref().map(Spanned::span),
             omega_span: r.omega.as_ref().map(Spanned::span),

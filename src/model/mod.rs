@@ -112,6 +112,9 @@ pub struct Analysis {
     /// result overflows.
     pub about_span: Option<Range<usize>>,
     pub omega_span: Option<Range<usize>>,
+    /// The report axes: R, whose columns are they in the file's frame
+    /// (`axes`); none for the file's own. ω and α are read in them.
+    pub axes: Option<crate::rotation::Orientation>,
 }
 
 impl Model {

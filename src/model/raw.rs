@@ -58,7 +58,14 @@ table_only!(
     RawRotation,
     "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
 );
-table_only!(RawAnalysis, "a table with `about`, `omega` or `alpha`");
+table_only!(
+    RawAnalysis,
+    "a table with `about`, `omega`, `alpha` or `axes`"
+);
+table_only!(
+    RawAxes,
+    "a table such as { x = [1, 0, 0], y = [0, -1, 0] } or a rotation such as { axis = [0, 0, 1], degrees = 90 }"
+);
 table_only!(RawExpect, "a table of expected quantities");
 table_only!(
     RawExpectation,
@@ -210,6 +217,47 @@ pub struct RawAnalysis {
     pub omega: Option<Vector>,
     #[schemars(with = "Option<[Quantity; 3]>")]
     pub alpha: Option<Vector>,
+    #[schemars(with = "Option<RawAxes>")]
+    pub axes: Option<Spanned<RawAxes>>,
+}
+
+/// `[analysis] axes`: the report axes' x and y directions in the file's
+/// frame, or a rotation of the file's axes in any form a part's `rotation`
+/// takes (the same keys; `model::rotation` reads them).
+#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Axes")]
+pub struct RawAxes {
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub x: Option<Floats>,
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub y: Option<Floats>,
+    #[schemars(with = "Option<[f64; 4]>")]
+    pub quaternion: Option<Floats>,
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub axis: Option<Floats>,
+    #[schemars(with = "Option<Angles>")]
+    pub degrees: Option<Spanned<Angles>>,
+    #[schemars(with = "Option<[[f64; 3]; 3]>")]
+    pub matrix: Option<Spanned<Vec<Floats>>>,
+    #[schemars(with = "Option<super::schema::EulerAxes>")]
+    pub intrinsic: Option<Spanned<String>>,
+    #[schemars(with = "Option<super::schema::EulerAxes>")]
+    pub extrinsic: Option<Spanned<String>>,
+}
+
+impl RawAxes {
+    /// The rotation form's keys, as a part's `rotation` holds them.
+    pub fn rotation(&self) -> RawRotation {
+        RawRotation {
+            quaternion: self.quaternion.clone(),
+            axis: self.axis.clone(),
+            degrees: self.degrees.clone(),
+            matrix: self.matrix.clone(),
+            intrinsic: self.intrinsic.clone(),
+            extrinsic: self.extrinsic.clone(),
+        }
+    }
 }
 
 /// A number in the file's units, or a string with its own unit (`"3 mm"`).

@@ -6,7 +6,7 @@ pub use crate::rotation::*;
 
 use super::Ctx;
 use super::ctx::Whose;
-use super::raw::{Angles, Floats, RawRotation};
+use super::raw::{Angles, Floats, RawAxes, RawRotation};
 use crate::diag::Diagnostic;
 use crate::tolerance::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
 use nalgebra::Matrix3;
@@ -14,6 +14,90 @@ use toml::Spanned;
 
 impl Ctx<'_> {
     pub(super) fn rotation(&self, raw: &Spanned<RawRotation>) -> Result<Orientation, Diagnostic> {
+        self.rotation_of(raw, "rotation")
+    }
+
+    /// `[analysis] axes`: the report axes' x and y directions in the
+    /// file's frame (z = x × y), or a rotation of the file's axes in any
+    /// form a part's `rotation` takes. The axes are R's columns.
+    pub(super) fn axes(&self, raw: &Spanned<RawAxes>) -> Result<Orientation, Diagnostic> {
+        let a = raw.get_ref();
+        let (x, y) = match (&a.x, &a.y) {
+            (None, None) => {
+                let r = a.rotation();
+                let any = r.quaternion.is_some()
+                    || r.axis.is_some()
+                    || r.matrix.is_some()
+                    || r.intrinsic.is_some()
+                    || r.extrinsic.is_some();
+                if !any {
+                    return Err(self
+                        .err(raw.span(), "`axes` needs the report axes")
+                        .help("write `{ x = [..], y = [..] }` (their directions in the file's frame; z = x × y) or a rotation of the file's axes: `{ axis = [x, y, z], degrees = θ }`, `{ quaternion = [w, x, y, z] }`, `{ matrix = [[..], [..], [..]] }`, `{ intrinsic = \"zyx\", degrees = [a, b, c] }`"));
+                }
+                return self.rotation_of(&Spanned::new(raw.span(), r), "axes");
+            }
+            (Some(x), Some(y)) => (x, y),
+            (Some(_), None) => {
+                return Err(self.err(raw.span(), "`axes` with `x` needs `y` (z is x × y)"));
+            }
+            (None, Some(_)) => return Err(self.err(raw.span(), "`axes` with `y` needs `x`")),
+        };
+        let r = a.rotation();
+        let form = [
+            ("quaternion", r.quaternion.as_ref().map(|v| v.span())),
+            ("axis", r.axis.as_ref().map(|v| v.span())),
+            ("degrees", r.degrees.as_ref().map(|v| v.span())),
+            ("matrix", r.matrix.as_ref().map(|v| v.span())),
+            ("intrinsic", r.intrinsic.as_ref().map(|v| v.span())),
+            ("extrinsic", r.extrinsic.as_ref().map(|v| v.span())),
+        ]
+        .into_iter()
+        .find_map(|(k, s)| s.map(|s| (k, s)));
+        if let Some((key, span)) = form {
+            return Err(self
+                .err(span, format!("`axes` takes `x` and `y` or a rotation, not both: `{key}` conflicts with `x`"))
+                .help("give the report axes as two directions, `{ x = [..], y = [..] }`, or as the rotation that turns the file's axes onto them"));
+        }
+        let unit = |v: &Floats, key: &str| -> Result<[f64; 3], Diagnostic> {
+            let c = self.floats(v, key, 3)?;
+            let n = crate::numeric::norm(&c);
+            if !(n > 0.0 && n.is_finite()) {
+                return Err(self.err(v.span(), format!("`{key}` must be a non-zero direction")));
+            }
+            Ok([c[0] / n, c[1] / n, c[2] / n])
+        };
+        let (xh, yh) = (unit(x, "x")?, unit(y, "y")?);
+        let dot: f64 = (0..3).map(|i| xh[i] * yh[i]).sum();
+        if !(dot.abs() <= MATRIX_TOLERANCE) {
+            return Err(self
+                .err(
+                    y.span(),
+                    format!(
+                        "`y` is not perpendicular to `x`: they are {:.6}° apart",
+                        dot.clamp(-1.0, 1.0).acos().to_degrees()
+                    ),
+                )
+                .help(format!("the report axes are perpendicular: y at 90° to x (to {MATRIX_TOLERANCE:e} in the cosine); z is x × y")));
+        }
+        let z = [
+            xh[1] * yh[2] - xh[2] * yh[1],
+            xh[2] * yh[0] - xh[0] * yh[2],
+            xh[0] * yh[1] - xh[1] * yh[0],
+        ];
+        // R's columns are x, y, z: row i holds their i-th components. The
+        // matrix form makes R orthonormal (the rotation nearest them).
+        Ok(Orientation::Matrix(Box::new(std::array::from_fn(|i| {
+            [xh[i], yh[i], z[i]]
+        }))))
+    }
+
+    /// A rotation form, `key` naming it in messages (`rotation`, `axes`).
+    fn rotation_of(
+        &self,
+        raw: &Spanned<RawRotation>,
+        key: &str,
+    ) -> Result<Orientation, Diagnostic> {
         let r = raw.get_ref();
         // The form keys present, in file order, so the message names the second.
         let mut forms: Vec<(&str, std::ops::Range<usize>)> = [
@@ -30,7 +114,7 @@ impl Ctx<'_> {
         let (form, _) = match forms.as_slice() {
             [] => {
                 return Err(self
-                    .err(raw.span(), "`rotation` needs one form")
+                    .err(raw.span(), format!("`{key}` needs one form"))
                     .help("write `{ quaternion = [w, x, y, z] }`, `{ axis = [x, y, z], degrees = θ }`, `{ matrix = [[..], [..], [..]] }`, or `{ intrinsic = \"zyx\", degrees = [a, b, c] }` (or `extrinsic`)"));
             }
             [one] => one.clone(),
@@ -39,7 +123,7 @@ impl Ctx<'_> {
                     .err(
                         second.1.clone(),
                         format!(
-                            "`rotation` takes one form: `{}` conflicts with `{}`",
+                            "`{key}` takes one form: `{}` conflicts with `{}`",
                             second.0, first.0
                         ),
                     )
@@ -55,10 +139,7 @@ impl Ctx<'_> {
         }
         let degrees = || {
             r.degrees.as_ref().ok_or_else(|| {
-                self.err(
-                    raw.span(),
-                    format!("`rotation` with `{form}` needs `degrees`"),
-                )
+                self.err(raw.span(), format!("`{key}` with `{form}` needs `degrees`"))
             })
         };
         match form {
@@ -198,6 +279,81 @@ pub(super) fn parse_sequence(s: &str) -> Option<[usize; 3]> {
         [a, b, c] if a != b && b != c => Some([a, b, c]),
         _ => None,
     }
+}
+
+/// `--axes`: `key=values` pairs separated by `;`, the keys of `[analysis]
+/// axes` (`x=1,0,0;y=0,-1,0`, `quaternion=w,x,y,z`, `axis=0,0,1;degrees=90`,
+/// `intrinsic=zyx;degrees=a,b,c`, `matrix=` nine numbers by rows), read by
+/// the same rules as the file's `axes`.
+pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
+    let mut pairs = Vec::new();
+    for pair in text.split(';').map(str::trim).filter(|p| !p.is_empty()) {
+        let (key, value) = pair
+            .split_once('=')
+            .ok_or_else(|| format!("expected `key=values`, got {pair:?}"))?;
+        let key = key.trim();
+        let value = value.trim();
+        let toml = match key {
+            "intrinsic" | "extrinsic" => {
+                if !value.chars().all(|c| c.is_ascii_alphabetic()) {
+                    return Err(format!("`{key}` is three axes such as zyx, got {value:?}"));
+                }
+                format!("\"{value}\"")
+            }
+            "x" | "y" | "quaternion" | "axis" | "degrees" | "matrix" => {
+                let numbers = value
+                    .trim_start_matches('[')
+                    .trim_end_matches(']')
+                    .split(',')
+                    .map(|n| {
+                        n.trim()
+                            .parse::<f64>()
+                            .ok()
+                            .filter(|x| x.is_finite())
+                            .map(|x| format!("{x:?}"))
+                            .ok_or_else(|| {
+                                format!("`{key}`: {:?} is not a finite number", n.trim())
+                            })
+                    })
+                    .collect::<Result<Vec<_>, _>>()?;
+                match (key, numbers.len()) {
+                    ("degrees", 1) => numbers[0].clone(),
+                    ("matrix", 9) => format!(
+                        "[[{}], [{}], [{}]]",
+                        numbers[0..3].join(", "),
+                        numbers[3..6].join(", "),
+                        numbers[6..9].join(", ")
+                    ),
+                    ("matrix", n) => {
+                        return Err(format!("`matrix` is nine numbers, row by row, got {n}"));
+                    }
+                    _ => format!("[{}]", numbers.join(", ")),
+                }
+            }
+            _ => {
+                return Err(format!(
+                    "unknown key `{key}`: give `x` and `y`, or `quaternion`, `axis` with `degrees`, `matrix`, or `intrinsic`/`extrinsic` with `degrees`"
+                ));
+            }
+        };
+        pairs.push(format!("{key} = {toml}"));
+    }
+    #[derive(serde::Deserialize)]
+    struct Flag {
+        axes: Spanned<RawAxes>,
+    }
+    let text = format!("axes = {{ {} }}\n", pairs.join(", "));
+    let flag: Flag = toml::from_str(&text).map_err(|e| e.message().to_string())?;
+    let source = crate::diag::Source::new("--axes", text);
+    let ctx = Ctx {
+        source: &source,
+        units: crate::units::FileUnits::default(),
+        materials: Default::default(),
+    };
+    ctx.axes(&flag.axes).map_err(|d| match d.help_text() {
+        Some(help) => format!("{} ({help})", d.message()),
+        None => d.message().to_string(),
+    })
 }
 
 #[cfg(test)]

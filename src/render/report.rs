@@ -101,6 +101,26 @@ fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Opti
     write_rows(out, &header, &rows, &numbers(header.len()), fit);
 }
 
+/// Which axes the values are in: the file's, or the report axes given
+/// (`axes`), each as its direction in the file's frame.
+fn axes_line(axes: &[[f64; 3]; 3]) -> String {
+    if file_axes(axes) {
+        return "axes: the file's".to_string();
+    }
+    let v = |r: &[f64; 3]| format!("({}, {}, {})", fmt_num(r[0]), fmt_num(r[1]), fmt_num(r[2]));
+    format!(
+        "axes: x = {}, y = {}, z = {} in the file's frame; tensors, principal axes, radii about the axes, ω, H, α and M in them",
+        v(&axes[0]),
+        v(&axes[1]),
+        v(&axes[2])
+    )
+}
+
+/// Whether the report axes are the file's own.
+fn file_axes(axes: &[[f64; 3]; 3]) -> bool {
+    (0..3).all(|i| (0..3).all(|j| axes[i][j] == f64::from(u8::from(i == j))))
+}
+
 /// The arithmetic used, and why: `auto`'s choice, or the one asked for;
 /// how many values fall short of `--rtol` (the warnings say which).
 fn precision_line(s: &Summary) -> String {
@@ -172,6 +192,7 @@ pub fn write_table_to(
         "products of inertia: {}",
         products_label(s.products_convention)
     );
+    let _ = writeln!(out, "{}", axes_line(&s.axes));
     let _ = writeln!(out, "{}", precision_line(s));
     let b = &s.error_bounds;
     let own = |v: f64, e: f64, scale: f64| fmt_bounded(v / scale, e / scale, (v / scale).abs());
@@ -202,8 +223,17 @@ pub fn write_table_to(
         vectors.push(cells);
     };
     let length = u.of_dim(Dim::LENGTH);
+    // Points are in the file's frame whatever the report axes.
+    let turned = !file_axes(&s.axes);
+    let point = |label: &'static str| -> &'static str {
+        match (turned, label) {
+            (false, l) => l,
+            (true, "centre of mass") => "centre of mass (file's frame)",
+            (true, _) => "reference point (file's frame)",
+        }
+    };
     row(
-        "centre of mass",
+        point("centre of mass"),
         &s.center_of_mass,
         &b.center_of_mass,
         length,
@@ -215,7 +245,13 @@ pub fn write_table_to(
         length,
     );
     if s.reference_given {
-        row("reference point", &s.reference_point, &exact, length);
+        row(point("reference point"), &s.reference_point, &exact, length);
+        row(
+            "centre of mass from the point",
+            &s.center_of_mass_ref,
+            &b.center_of_mass_ref,
+            length,
+        );
         row(
             "k_xx, k_yy, k_zz through the point",
             &s.radii_of_gyration_axes_ref,

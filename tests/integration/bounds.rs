@@ -169,6 +169,84 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
 /// number of every part (`Frame::place`), and the bounds must count it.
 /// The exact body is formed here in rationals: each part of the included
 /// file exactly (`exact_part`, SI), turned and moved exactly.
+/// In report axes turned by a general rotation (`--axes` as a
+/// quaternion of f64 numbers, whose rotation is exactly rational: q eₖ q̄ /
+/// |q|²), every value is the exact one turned: A I Aᵀ, A (c − p), the
+/// radii about the turned axes, H = I_ref ω with ω read in those axes;
+/// each within its bound, in both precisions.
+#[test]
+fn bounds_in_turned_report_axes_are_honest() {
+    let mut rng = Rng::new(47);
+    let mut honest = Honest::default();
+    for trial in 0..4 {
+        for (kind, mut scene) in [
+            ("boxes", twelve_boxes(&mut rng)),
+            ("every shape", every_shape(&mut rng)),
+        ] {
+            let about = rng.grid_point().map(|x| 3.0 * x);
+            scene.about = Some(about);
+            let raw: [f64; 4] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
+            let n = raw.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let quat = raw.map(|x| x / n);
+            let a = r::transpose(&r::rotation(&quat.map(r::q)));
+            let w: [f64; 3] = std::array::from_fn(|_| rng.range(-50.0, 50.0));
+            let exact = r::compose(&scene);
+            let point: r::V3 = about.map(r::q);
+            let turn = |m: &r::M3| r::mmul(&r::mmul(&a, m), &r::transpose(&a));
+            let (i_com, i_ref) = (turn(&exact.inertia), turn(&exact.inertia_about(&point)));
+            let offset: r::V3 = std::array::from_fn(|j| &exact.com[j] - &point[j]);
+            let com_ref = r::mvec(&a, &offset);
+            let wq = w.map(r::q);
+            let h = r::mvec(&i_ref, &wq);
+            let axes = format!(
+                "quaternion={:?},{:?},{:?},{:?}",
+                quat[0], quat[1], quat[2], quat[3]
+            );
+            let omega = format!("{:?},{:?},{:?}", w[0], w[1], w[2]);
+            for p in ["standard", "extended"] {
+                let v = run(
+                    &scene,
+                    &["--precision", p, "--axes", &axes, "--omega", &omega],
+                );
+                let b = &v["error_bounds"];
+                let what = format!("{kind}, trial {trial}, {p}");
+                honest.tensor(&what, &v, "inertia_com", &|j, k| i_com[j][k].clone());
+                honest.tensor(&what, &v, "inertia_ref", &|j, k| i_ref[j][k].clone());
+                for j in 0..3 {
+                    honest.check(
+                        format!("{what}: center_of_mass_ref[{j}]"),
+                        &v["center_of_mass_ref"][j],
+                        &com_ref[j],
+                        &b["center_of_mass_ref"][j],
+                    );
+                    honest.check(
+                        format!("{what}: angular_momentum[{j}]"),
+                        &v["angular_momentum"][j],
+                        &h[j],
+                        &b["angular_momentum"][j],
+                    );
+                    for (key, moment) in [
+                        ("radii_of_gyration_axes", &i_com[j][j]),
+                        ("radii_of_gyration_axes_ref", &i_ref[j][j]),
+                    ] {
+                        let (k, kb) = (num(&v[key][j]), num(&b[key][j]));
+                        let ratio = moment / &exact.mass;
+                        let (lo, hi) = ((k - kb).max(0.0), k + kb);
+                        honest.checked += 1;
+                        if !(r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi)) {
+                            honest.failures.push(format!(
+                                "{what}: {key}[{j}] {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
+                                r::f(&ratio).sqrt()
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    honest.finish();
+}
+
 #[test]
 fn bounds_count_the_rounding_of_an_included_frame() {
     use crate::support::reference::{Length, Mass};

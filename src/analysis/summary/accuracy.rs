@@ -181,6 +181,13 @@ fn shortfalls(s: &Summary, rtol: f64) -> Vec<Shortfall> {
         lengths,
         "m",
     );
+    whole(
+        "center_of_mass_ref",
+        &s.center_of_mass_ref,
+        &b.center_of_mass_ref,
+        lengths,
+        "m",
+    );
     let tensors = [
         ("inertia_com", &s.inertia_com, &b.inertia_com),
         ("inertia_ref", &s.inertia_ref, &b.inertia_ref),
