@@ -630,3 +630,36 @@ fn errors_exit_two_with_nothing_on_stdout() {
         }
     }
 }
+
+/// Each file is compared in its own report axes (`[analysis] axes`): the
+/// same body in SAE vehicle axes (y and z of an ISO file negated) has the
+/// same mass, centre (a point, in the file's frame) and principal moments,
+/// I_xx, I_yy, I_zz and I_yz (two signs flip), and I_xy, I_xz negated.
+#[test]
+fn each_file_is_compared_in_its_own_report_axes() {
+    let body = "[[part]]\nshape = \"box\"\nmass = 4\nsize = [1, 2, 3]\ncenter = [1, 2, 3]\n\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [-1, 0.5, 2]\n";
+    let sae = format!("{body}\n[analysis]\naxes = {{ x = [1, 0, 0], y = [0, -1, 0] }}\n");
+    let paths = files("axes", &[("iso.toml", body), ("sae.toml", &sae)]);
+    let (status, v) = diff_json(&paths[0], &paths[1], &[]);
+    assert_eq!(status, 1, "the products of inertia changed sign");
+    for same in [
+        "mass",
+        "center_of_mass.x",
+        "center_of_mass.y",
+        "center_of_mass.z",
+        "principal_moments.1",
+        "principal_moments.2",
+        "principal_moments.3",
+        "inertia_com.xx",
+        "inertia_com.yy",
+        "inertia_com.zz",
+        "inertia_com.yz",
+    ] {
+        assert_eq!(q(&v, same)["old"], q(&v, same)["new"], "{same}");
+    }
+    for flipped in ["inertia_com.xy", "inertia_com.xz"] {
+        let (old, new) = (num(&q(&v, flipped)["old"]), num(&q(&v, flipped)["new"]));
+        assert!(old != 0.0, "{flipped} is not zero");
+        assert_eq!(new, -old, "{flipped}");
+    }
+}
