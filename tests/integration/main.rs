@@ -12,6 +12,7 @@ mod cost;
 mod diff;
 mod docs;
 mod files;
+mod frames;
 mod hostile;
 mod hostile_round_two;
 mod invariants;
