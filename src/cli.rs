@@ -174,6 +174,9 @@ pub struct CheckArgs {
     pub format: CheckFormat,
 
     #[command(flatten)]
+    pub axes: AxesArgs,
+
+    #[command(flatten)]
     pub includes: IncludeArgs,
 }
 
@@ -210,6 +213,9 @@ pub struct DiffArgs {
 
     #[command(flatten)]
     pub accuracy: AccuracyArgs,
+
+    #[command(flatten)]
+    pub axes: AxesArgs,
 
     #[command(flatten)]
     pub includes: IncludeArgs,
@@ -258,13 +264,8 @@ pub struct ReportArgs {
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub alpha: Option<String>,
 
-    /// The axes to report in, overriding `[analysis].axes`: their x and y
-    /// directions in the file's frame, "x=1,0,0;y=0,-1,0" (z = x × y), or a
-    /// rotation of the file's axes: "quaternion=w,x,y,z",
-    /// "axis=0,0,1;degrees=90", "intrinsic=zyx;degrees=a,b,c". ω and α are
-    /// read in them.
-    #[arg(long, value_name = "AXES", allow_hyphen_values = true)]
-    pub axes: Option<String>,
+    #[command(flatten)]
+    pub axes: AxesArgs,
 
     #[command(flatten)]
     pub includes: IncludeArgs,
@@ -435,7 +436,7 @@ impl Cli {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
                         alpha: a.alpha.clone(),
-                        axes: a.axes.clone(),
+                        axes: a.axes.axes.clone(),
                     },
                 },
             }),
@@ -445,6 +446,7 @@ impl Cli {
                 bless: a.bless,
                 accuracy: a.accuracy.accuracy(),
                 format: a.format.0,
+                axes: a.axes.axes.clone(),
                 includes: a.includes.includes(),
                 search: commands::check::Search {
                     hidden: a.hidden,
@@ -458,6 +460,7 @@ impl Cli {
                 output: a.output.clone(),
                 tol: a.tol,
                 accuracy: a.accuracy.accuracy(),
+                axes: a.axes.axes.clone(),
                 includes: a.includes.includes(),
             }),
             Command::Materials(a) => Request::Materials(commands::materials::Options {
@@ -542,6 +545,18 @@ fn json_section(doc: &str) -> String {
         }
     }
     s
+}
+
+/// `--axes`, of every command that computes a body.
+#[derive(Args, Debug, Clone, Default)]
+pub struct AxesArgs {
+    /// The axes to report in, overriding `[analysis].axes`: their x and y
+    /// directions in the file's frame, "x=1,0,0;y=0,-1,0" (z = x × y), or a
+    /// rotation of the file's axes: "quaternion=w,x,y,z",
+    /// "axis=0,0,1;degrees=90", "intrinsic=zyx;degrees=a,b,c". ω and α are
+    /// read in them.
+    #[arg(long, value_name = "AXES", allow_hyphen_values = true)]
+    pub axes: Option<String>,
 }
 
 /// How far includes may reach; every command that reads part files takes it.

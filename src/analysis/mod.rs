@@ -104,6 +104,14 @@ pub fn load_source_reading(
     })
 }
 
+/// `--axes`, read (`model::rotation::parse_flag_axes`); its error names the
+/// flag. `check` reads it once before any file, as a flag's error is no
+/// file's.
+pub fn flag_axes(text: &str) -> Result<crate::rotation::Orientation, Diagnostic> {
+    model::rotation::parse_flag_axes(text)
+        .map_err(|e| Diagnostic::plain(format!("invalid value {text:?} for `--axes`: {e}")))
+}
+
 /// The analysis to run: the file's `[analysis]` with the command line's
 /// values in place of the file's, and every rule that spans keys and flags.
 /// The one place such rules live.
@@ -136,10 +144,7 @@ pub fn resolve(
         analysis.alpha_span = None;
     }
     if let Some(t) = &overrides.axes {
-        analysis.axes =
-            Some(model::rotation::parse_flag_axes(t).map_err(|e| {
-                Diagnostic::plain(format!("invalid value {t:?} for `--axes`: {e}"))
-            })?);
+        analysis.axes = Some(flag_axes(t)?);
     }
     // α without ω: point at the file's `alpha` unless it came from the flag.
     if analysis.alpha.is_some() && analysis.omega.is_none() {

@@ -25,6 +25,8 @@ pub struct Options {
     /// `--precision` and `--rtol`.
     pub accuracy: Accuracy,
     pub format: Format,
+    /// `--axes`, as typed.
+    pub axes: Option<String>,
     /// `--include-root` and `--base-dir`.
     pub includes: crate::model::Includes,
     /// How directories are searched.
@@ -151,12 +153,19 @@ fn collect(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic>
 /// invalid files' errors and warnings go to standard error, in its.
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let colour = terminal.stderr.colour;
+    if let Some(t) = &o.axes {
+        analysis::flag_axes(t)?;
+    }
     let found = collect(&o.paths, &o.search)?;
     let mut results = Vec::new();
     let mut stderr = String::new();
     let settings = Settings {
         accuracy: o.accuracy,
         includes: o.includes.clone(),
+        overrides: crate::analysis::Overrides {
+            axes: o.axes.clone(),
+            ..Default::default()
+        },
         ..Settings::default()
     };
     let invalid = |path: String, d: Diagnostic, stderr: &mut String| {

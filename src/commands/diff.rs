@@ -19,6 +19,8 @@ pub struct Options {
     pub tol: f64,
     /// `--precision` and `--rtol`.
     pub accuracy: Accuracy,
+    /// `--axes`, as typed.
+    pub axes: Option<String>,
     /// `--include-root` and `--base-dir`.
     pub includes: crate::model::Includes,
 }
@@ -40,6 +42,10 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let settings = Settings {
         accuracy: o.accuracy,
         includes: o.includes.clone(),
+        overrides: crate::analysis::Overrides {
+            axes: o.axes.clone(),
+            ..Default::default()
+        },
         ..Settings::default()
     };
     let old = analysis::load(&o.old, &settings)?;

@@ -315,17 +315,40 @@ fn signed_permutations_of_the_axes_permute_and_negate_every_result_exactly() {
             assert_general(&plain);
             same(&what("plain axes"), &plain["axes"], &m_flat(&IDENTITY));
             same(&what("axes"), &v["axes"], &m_flat(&a));
-            // Points of the file, and scalars: unchanged.
+            // Points of the file, and scalars formed from the turned
+            // tensors entry by entry: unchanged.
             for key in [
                 "mass",
                 "center_of_mass",
                 "reference_point",
-                "principal_moments",
-                "principal_moments_ref",
-                "radii_of_gyration",
                 "kinetic_energy",
             ] {
                 same(&what(key), &v[key], &flat(&plain[key]));
+            }
+            // The principal moments do not depend on the axes, but the
+            // solver meets the permuted matrix in another order (a Jacobi
+            // sweep goes by index): the same to within both bounds, not to
+            // the bit. (A turned body reported in the turned axes meets the
+            // same matrix and is exact: the quarter-turn test below.)
+            for key in [
+                "principal_moments",
+                "principal_moments_ref",
+                "radii_of_gyration",
+            ] {
+                let (got, want) = (flat(&v[key]), flat(&plain[key]));
+                let (bg, bw) = (
+                    flat(&v["error_bounds"][key]),
+                    flat(&plain["error_bounds"][key]),
+                );
+                for k in 0..3 {
+                    assert!(
+                        (got[k] - want[k]).abs() <= bg[k] + bw[k],
+                        "{}: {} vs {}",
+                        what(&format!("{key}[{k}]")),
+                        got[k],
+                        want[k]
+                    );
+                }
             }
             // Tensors A I Aᵀ.
             for key in ["inertia_com", "inertia_ref"] {
@@ -347,15 +370,24 @@ fn signed_permutations_of_the_axes_permute_and_negate_every_result_exactly() {
                 let want = times(&abs_m(&a), &vector(&plain[key]));
                 same(&what(key), &v[key], &want);
             }
-            // Principal axes: A a, up to the sign rule.
+            // Principal axes: A a, up to the sign rule, within both
+            // reports' angle bounds (a component moves by at most the
+            // angle), for the same reason as the moments.
             for key in ["principal_axes", "principal_axes_ref"] {
                 let (got, axes) = (matrix(&v[key]), matrix(&plain[key]));
+                let (bg, bw) = (
+                    flat(&v["error_bounds"][key]),
+                    flat(&plain["error_bounds"][key]),
+                );
                 for k in 0..3 {
                     let want = times(&a, &axes[k]);
+                    let off =
+                        |w: &[f64; 3]| (0..3).fold(0.0f64, |m, i| m.max((got[k][i] - w[i]).abs()));
                     let minus = want.map(|x| -x);
+                    let tol = bg[k] + bw[k] + 4.0 * f64::EPSILON;
                     assert!(
-                        got[k] == want || got[k] == minus,
-                        "{}: {:?} is not ±{want:?}",
+                        off(&want).min(off(&minus)) <= tol,
+                        "{}: {:?} is not ±{want:?} within {tol:e}",
                         what(&format!("{key}[{k}]")),
                         got[k]
                     );
@@ -1104,7 +1136,7 @@ fn axes_not_perpendicular_or_zero_are_errors_at_the_key() {
     let cases = [
         (
             "{ x = [1, 0, 0], y = [1, 1, 0] }",
-            "{ x = [1, 0, 0], y = [-1, 1, 0] }",
+            "{ x = [1, 1, 0], y = [-1, 1, 0] }",
         ),
         // x̂·ŷ ≈ 1e-8, and its twin 1e-10.
         (
