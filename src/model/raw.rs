@@ -224,6 +224,10 @@ pub struct RawAnalysis {
 /// `[analysis] axes`: the report axes' x and y directions in the file's
 /// frame, or a rotation of the file's axes in any form a part's `rotation`
 /// takes (the same keys; `model::rotation` reads them).
+///
+/// NOTE: the rotation keys repeat `RawRotation`'s: `#[serde(flatten)]`
+/// cannot be combined with `deny_unknown_fields`, which is what makes a
+/// misspelt key an error here. `rotation()` hands them to the one reader.
 #[derive(Deserialize, JsonSchema, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
 #[schemars(rename = "Axes")]

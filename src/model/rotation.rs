@@ -12,6 +12,23 @@ use crate::tolerance::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
 use nalgebra::Matrix3;
 use toml::Spanned;
 
+/// The rotation form keys present (not `degrees`, which goes with some),
+/// in file order, so that a message names the second.
+fn forms(r: &RawRotation) -> Vec<(&'static str, std::ops::Range<usize>)> {
+    let mut forms: Vec<(&str, std::ops::Range<usize>)> = [
+        ("quaternion", r.quaternion.as_ref().map(|v| v.span())),
+        ("axis", r.axis.as_ref().map(|v| v.span())),
+        ("matrix", r.matrix.as_ref().map(|v| v.span())),
+        ("intrinsic", r.intrinsic.as_ref().map(|v| v.span())),
+        ("extrinsic", r.extrinsic.as_ref().map(|v| v.span())),
+    ]
+    .into_iter()
+    .filter_map(|(k, s)| s.map(|s| (k, s)))
+    .collect();
+    forms.sort_by_key(|(_, s)| s.start);
+    forms
+}
+
 impl Ctx<'_> {
     pub(super) fn rotation(&self, raw: &Spanned<RawRotation>) -> Result<Orientation, Diagnostic> {
         self.rotation_of(raw, "rotation")
@@ -25,12 +42,7 @@ impl Ctx<'_> {
         let (x, y) = match (&a.x, &a.y) {
             (None, None) => {
                 let r = a.rotation();
-                let any = r.quaternion.is_some()
-                    || r.axis.is_some()
-                    || r.matrix.is_some()
-                    || r.intrinsic.is_some()
-                    || r.extrinsic.is_some();
-                if !any {
+                if forms(&r).is_empty() {
                     return Err(self
                         .err(raw.span(), "`axes` needs the report axes")
                         .help("write `{ x = [..], y = [..] }` (their directions in the file's frame; z = x × y) or a rotation of the file's axes: `{ axis = [x, y, z], degrees = θ }`, `{ quaternion = [w, x, y, z] }`, `{ matrix = [[..], [..], [..]] }`, `{ intrinsic = \"zyx\", degrees = [a, b, c] }`"));
@@ -44,17 +56,8 @@ impl Ctx<'_> {
             (None, Some(_)) => return Err(self.err(raw.span(), "`axes` with `y` needs `x`")),
         };
         let r = a.rotation();
-        let form = [
-            ("quaternion", r.quaternion.as_ref().map(|v| v.span())),
-            ("axis", r.axis.as_ref().map(|v| v.span())),
-            ("degrees", r.degrees.as_ref().map(|v| v.span())),
-            ("matrix", r.matrix.as_ref().map(|v| v.span())),
-            ("intrinsic", r.intrinsic.as_ref().map(|v| v.span())),
-            ("extrinsic", r.extrinsic.as_ref().map(|v| v.span())),
-        ]
-        .into_iter()
-        .find_map(|(k, s)| s.map(|s| (k, s)));
-        if let Some((key, span)) = form {
+        let degrees = r.degrees.as_ref().map(|d| ("degrees", d.span()));
+        if let Some((key, span)) = forms(&r).into_iter().chain(degrees).next() {
             return Err(self
                 .err(span, format!("`axes` takes `x` and `y` or a rotation, not both: `{key}` conflicts with `x`"))
                 .help("give the report axes as two directions, `{ x = [..], y = [..] }`, or as the rotation that turns the file's axes onto them"));
@@ -99,18 +102,7 @@ impl Ctx<'_> {
         key: &str,
     ) -> Result<Orientation, Diagnostic> {
         let r = raw.get_ref();
-        // The form keys present, in file order, so the message names the second.
-        let mut forms: Vec<(&str, std::ops::Range<usize>)> = [
-            ("quaternion", r.quaternion.as_ref().map(|v| v.span())),
-            ("axis", r.axis.as_ref().map(|v| v.span())),
-            ("matrix", r.matrix.as_ref().map(|v| v.span())),
-            ("intrinsic", r.intrinsic.as_ref().map(|v| v.span())),
-            ("extrinsic", r.extrinsic.as_ref().map(|v| v.span())),
-        ]
-        .into_iter()
-        .filter_map(|(k, s)| s.map(|s| (k, s)))
-        .collect();
-        forms.sort_by_key(|(_, s)| s.start);
+        let forms = forms(r);
         let (form, _) = match forms.as_slice() {
             [] => {
                 return Err(self
