@@ -46,11 +46,10 @@ fn repo_path(path: &str) -> &str {
 
 /// Where a diagnostic points: its file (the file checked when it has no
 /// place of its own, or an include's) and its span.
+/// (The rule of check's JSON, `JsonError::of`.)
 fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
-    match d.place() {
-        Some(p) => (&p.path, p.span),
-        None => (&r.path, None),
-    }
+    let e = super::check::JsonError::of(d, &r.path);
+    (e.path, e.span)
 }
 
 /// GitHub Actions workflow commands (`::error …::message`), one per failure

@@ -56,6 +56,20 @@ impl Honest {
         }
     }
 
+    /// `v[key][j]`, a radius of gyration k = √(I/m), against the exact
+    /// I/m: k is irrational, so (k ∓ bound)² must bracket I/m.
+    fn radius(&mut self, what: String, v: &Value, key: &str, j: usize, ratio: &Q) {
+        let (k, kb) = (num(&v[key][j]), num(&v["error_bounds"][key][j]));
+        let (lo, hi) = ((k - kb).max(0.0), k + kb);
+        self.checked += 1;
+        if !(r::q(lo) * r::q(lo) <= *ratio && *ratio <= r::q(hi) * r::q(hi)) {
+            self.failures.push(format!(
+                "{what}: {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
+                r::f(ratio).sqrt()
+            ));
+        }
+    }
+
     fn finish(self) {
         assert!(self.checked > 0);
         eprintln!("worst error/bound {:.3} ({})", self.worst.0, self.worst.1);
@@ -138,18 +152,8 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
                         ("radii_of_gyration_axes", &exact.inertia[j][j]),
                         ("radii_of_gyration_axes_ref", &i_ref[j][j]),
                     ] {
-                        let (k, kb) = (num(&v[key][j]), num(&b[key][j]));
                         let ratio = moment / &exact.mass;
-                        let (lo, hi) = ((k - kb).max(0.0), k + kb);
-                        let inside = r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi);
-                        honest.checked += 1;
-                        if !inside {
-                            honest.failures.push(format!(
-                                "{}: {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
-                                what(&format!("{key}[{j}]")),
-                                r::f(&ratio).sqrt()
-                            ));
-                        }
+                        honest.radius(what(&format!("{key}[{j}]")), &v, key, j, &ratio);
                     }
                 }
                 honest.check(
@@ -229,16 +233,8 @@ fn bounds_in_turned_report_axes_are_honest() {
                         ("radii_of_gyration_axes", &i_com[j][j]),
                         ("radii_of_gyration_axes_ref", &i_ref[j][j]),
                     ] {
-                        let (k, kb) = (num(&v[key][j]), num(&b[key][j]));
                         let ratio = moment / &exact.mass;
-                        let (lo, hi) = ((k - kb).max(0.0), k + kb);
-                        honest.checked += 1;
-                        if !(r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi)) {
-                            honest.failures.push(format!(
-                                "{what}: {key}[{j}] {k:e} ± {kb:e} does not hold √(I/m) = {:e}",
-                                r::f(&ratio).sqrt()
-                            ));
-                        }
+                        honest.radius(format!("{what}: {key}[{j}]"), &v, key, j, &ratio);
                     }
                 }
             }
