@@ -72,6 +72,8 @@ pub mod part;
 #[doc(hidden)]
 pub mod render;
 #[doc(hidden)]
+pub mod robot;
+#[doc(hidden)]
 pub mod rotation;
 #[doc(hidden)]
 pub mod shapes;
