@@ -40,12 +40,15 @@ pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
     #[command(after_help = REPORT_HELP)]
     Report(ReportArgs),
-    /// Check part files' `[expect]` blocks and physical validity (for CI).
+    /// Check part files' `[expect]` blocks and physical validity, and robot descriptions' inertials by each engine's rule (for CI).
     #[command(after_help = CHECK_HELP)]
     Check(CheckArgs),
-    /// Compare the mass properties of two part files (or two versions of one).
+    /// Compare the mass properties of two part files, or of a part file and a robot description's link.
     #[command(after_help = DIFF_HELP)]
     Diff(DiffArgs),
+    /// Write the body's <inertial> for URDF, SDFormat or MJCF, or put it in place of a link's.
+    #[command(after_help = EXPORT_HELP)]
+    Export(ExportArgs),
     /// List the materials `material = "NAME"` may name, with their densities.
     #[command(after_help = MATERIALS_HELP)]
     Materials(MaterialsArgs),
@@ -73,12 +76,20 @@ const CHECK_HELP: &str = "\
 Examples:
   massprop check .                      every part file here (ignored and hidden ones not)
   massprop check . --format github      annotations on a GitHub pull request
-  massprop check --bless arm.toml       write today's values into [expect]";
+  massprop check --bless arm.toml       write today's values into [expect]
+  massprop check robot.urdf --engine mujoco   each link's inertial by MuJoCo's rule";
 
 const DIFF_HELP: &str = "\
 Examples:
   massprop diff old.toml new.toml
-  massprop diff old.toml new.toml --tol 1e-6 --format json";
+  massprop diff old.toml new.toml --tol 1e-6 --format json
+  massprop diff arm.toml robot.urdf --link forearm   a part file against a link's inertial";
+
+const EXPORT_HELP: &str = "\
+Examples:
+  massprop export arm.toml --to urdf                       the <inertial> element
+  massprop export arm.toml --to mjcf --principal           diaginertia and quat
+  massprop export arm.toml --update robot.urdf --link forearm --dry-run   the change, as a diff";
 
 const MATERIALS_HELP: &str = "\
 Examples:
@@ -173,6 +184,11 @@ pub struct CheckArgs {
     #[arg(long, value_enum, default_value_t)]
     pub format: CheckFormat,
 
+    /// Robot descriptions: the engines whose rules each inertial is checked
+    /// by (repeatable).
+    #[arg(long, value_enum, value_name = "ENGINE", default_value = "all")]
+    pub engine: Vec<EngineArg>,
+
     #[command(flatten)]
     pub axes: AxesArgs,
 
@@ -189,6 +205,17 @@ pub struct DiffArgs {
     /// The new part file (`-` reads standard input; not both).
     #[arg(value_name = "NEW")]
     pub new: String,
+
+    /// When OLD or NEW is a robot description (URDF, SDFormat, MJCF): the
+    /// link (MJCF body) whose inertial is compared.
+    #[arg(long, value_name = "NAME", visible_alias = "body")]
+    pub link: Option<String>,
+
+    /// With a robot description: the link frame's origin in the part
+    /// file's frame, overriding `[analysis].about`: x,y,z in the file's
+    /// length unit, or with units.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub about: Option<String>,
 
     /// Output format.
     #[arg(long, value_enum, default_value_t)]
@@ -219,6 +246,110 @@ pub struct DiffArgs {
 
     #[command(flatten)]
     pub includes: IncludeArgs,
+}
+
+#[derive(Args, Debug)]
+pub struct ExportArgs {
+    /// The part file (`-` reads standard input).
+    #[arg(value_name = "FILE")]
+    pub file: String,
+
+    /// The robot description format (with `--update`, the file tells it).
+    #[arg(long, value_enum, value_name = "FORMAT", required_unless_present = "update")]
+    pub to: Option<RobotFormat>,
+
+    /// MJCF: `diaginertia` (the principal moments) and `quat` (the
+    /// principal axes) instead of `fullinertia`.
+    #[arg(long)]
+    pub principal: bool,
+
+    /// Export one sub-assembly (an `include`, by its name) alone.
+    #[arg(long, value_name = "NAME")]
+    pub only: Option<String>,
+
+    /// The link frame's origin in the part file's frame, overriding
+    /// `[analysis].about`: x,y,z in the file's length unit, or with units.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub about: Option<String>,
+
+    #[command(flatten)]
+    pub axes: AxesArgs,
+
+    /// Replace a link's inertial in this URDF, SDFormat or MJCF file,
+    /// leaving every other byte as it was.
+    #[arg(long, value_name = "ROBOT_FILE", requires = "link", conflicts_with = "output")]
+    pub update: Option<std::path::PathBuf>,
+
+    /// The link (MJCF: body) whose inertial `--update` replaces.
+    #[arg(long, value_name = "NAME", visible_alias = "body", requires = "update")]
+    pub link: Option<String>,
+
+    /// With `--update`: print the change as a unified diff; write nothing.
+    #[arg(long, requires = "update")]
+    pub dry_run: bool,
+
+    /// Write the element to FILE instead of standard output, atomically.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<String>,
+
+    #[command(flatten)]
+    pub accuracy: AccuracyArgs,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
+}
+
+/// `export --to`'s values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum RobotFormat {
+    /// URDF: <inertial> with <origin>, <mass> and <inertia ixx … izz>
+    Urdf,
+    /// SDFormat: <inertial> with <pose>, <mass> and <inertia><ixx>…
+    Sdf,
+    /// MJCF: <inertial pos mass fullinertia> (or diaginertia and quat)
+    Mjcf,
+}
+
+impl RobotFormat {
+    fn format(self) -> crate::robot::Format {
+        match self {
+            RobotFormat::Urdf => crate::robot::Format::Urdf,
+            RobotFormat::Sdf => crate::robot::Format::Sdf,
+            RobotFormat::Mjcf => crate::robot::Format::Mjcf,
+        }
+    }
+}
+
+/// `check --engine`'s values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum EngineArg {
+    /// MuJoCo's compiler (mjCBody::Compile)
+    Mujoco,
+    /// Gazebo: gz-math MassMatrix3::IsValid, as libsdformat applies it
+    Gazebo,
+    /// Drake: SpatialInertia::IsPhysicallyValid
+    Drake,
+    /// All three (the default)
+    All,
+}
+
+/// The engines `--engine` names, each once, in `Engine::ALL`'s order.
+fn engines(args: &[EngineArg]) -> Vec<crate::robot::engine::Engine> {
+    use crate::robot::engine::Engine;
+    Engine::ALL
+        .into_iter()
+        .filter(|e| {
+            args.iter().any(|a| {
+                *a == EngineArg::All
+                    || matches!(
+                        (a, e),
+                        (EngineArg::Mujoco, Engine::Mujoco)
+                            | (EngineArg::Gazebo, Engine::Gazebo)
+                            | (EngineArg::Drake, Engine::Drake)
+                    )
+            })
+        })
+        .collect()
 }
 
 #[derive(Args, Debug)]
@@ -452,6 +583,26 @@ impl Cli {
                     hidden: a.hidden,
                     exclude: a.exclude.clone(),
                 },
+                engines: engines(&a.engine),
+            }),
+            Command::Export(a) => Request::Export(commands::export::Options {
+                file: a.file.clone(),
+                to: a.to.map(RobotFormat::format),
+                principal: a.principal,
+                settings: Settings {
+                    accuracy: a.accuracy.accuracy(),
+                    only: a.only.clone(),
+                    includes: a.includes.includes(),
+                    overrides: Overrides {
+                        about: a.about.clone(),
+                        axes: a.axes.axes.clone(),
+                        ..Default::default()
+                    },
+                    ..Settings::default()
+                },
+                update: a.update.clone().zip(a.link.clone()),
+                dry_run: a.dry_run,
+                output: a.output.clone(),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),
@@ -461,6 +612,8 @@ impl Cli {
                 tol: a.tol,
                 accuracy: a.accuracy.accuracy(),
                 axes: a.axes.axes.clone(),
+                about: a.about.clone(),
+                link: a.link.clone(),
                 includes: a.includes.includes(),
             }),
             Command::Materials(a) => Request::Materials(commands::materials::Options {

@@ -409,7 +409,7 @@ impl Rewrite {
         if self.meta.permissions().readonly() {
             return Err(Diagnostic::file(
                 &self.name,
-                "the file is read-only: not blessed (make it writable to bless it)",
+                format!("the file is read-only: {what} is not written (make it writable to write it)"),
             ));
         }
         // What this user may not write is not replaced either (a rename

@@ -112,6 +112,12 @@ pub struct FileResult {
     pub precision: Option<crate::compose::Precision>,
     /// The values whose error bound exceeds `--rtol` (`summary::accuracy`).
     pub accuracy_warnings: Vec<crate::analysis::summary::AccuracyWarning>,
+    /// A robot description's links under each engine (None for a part
+    /// file, and for a robot description that cannot be read).
+    pub robot: Option<crate::robot::check::RobotResult>,
+    /// The robot description format of the file (None: a part file), known
+    /// even when it cannot be read.
+    pub format: Option<crate::robot::Format>,
 }
 
 impl FileResult {
@@ -220,6 +226,8 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         validity,
         precision: Some(loaded.summary.precision),
         accuracy_warnings: loaded.summary.accuracy_warnings.clone(),
+        robot: None,
+        format: None,
     }
 }
 

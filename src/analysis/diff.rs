@@ -124,13 +124,78 @@ pub struct Diff {
     pub changed: bool,
 }
 
+/// The mass properties `diff` compares, SI: of a summary, or of a robot
+/// description's link.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Props {
+    pub mass: f64,
+    pub center_of_mass: [f64; 3],
+    /// Ascending.
+    pub principal_moments: [f64; 3],
+    /// About the centre of mass, tensor convention.
+    pub inertia_com: [[f64; 3]; 3],
+}
+
+impl Props {
+    /// A part file's, its centre of mass in the file's frame.
+    pub fn of(s: &Summary) -> Props {
+        Props {
+            mass: s.mass,
+            center_of_mass: s.center_of_mass,
+            principal_moments: s.principal_moments,
+            inertia_com: s.inertia_com,
+        }
+    }
+}
+
+/// A part file and a robot description's link compared (`diff --link`):
+/// the part file's body in the link frame (its report frame:
+/// `commands::export::export_of`) against the link's inertial.
+pub struct LinkDiff {
+    /// OLD's and NEW's names, as the command line gave them.
+    pub old: String,
+    pub new: String,
+    /// The link compared.
+    pub link: String,
+    /// The part file's units, in which the table shows values.
+    pub file_units: crate::units::FileUnits,
+    pub tol: f64,
+    pub quantities: Vec<QuantityDiff>,
+    pub changed: bool,
+}
+
+impl LinkDiff {
+    /// Compare `old` with `new` at relative tolerance `tol` (finite, ≥ 0).
+    pub fn of(
+        (old_name, old): (String, Props),
+        (new_name, new): (String, Props),
+        link: String,
+        file_units: crate::units::FileUnits,
+        tol: f64,
+    ) -> Result<LinkDiff, Diagnostic> {
+        let length = pick(props_length(&old), props_length(&new));
+        let quantities = quantities(&old, &new, length, tol)
+            .map_err(|d| Diagnostic::plain(format!("{old_name} → {new_name}: {}", d.message())))?;
+        let changed = quantities.iter().any(|q| q.changed);
+        Ok(LinkDiff {
+            old: old_name,
+            new: new_name,
+            link,
+            file_units,
+            tol,
+            quantities,
+            changed,
+        })
+    }
+}
+
 impl Diff {
     /// Compare `old` with `new` at relative tolerance `tol` (finite, ≥ 0).
     pub fn of(old: Loaded, new: Loaded, tol: f64) -> Result<Diff, Diagnostic> {
         let (old, new) = (Side::of(old), Side::of(new));
         let (os, ns) = (&old.loaded.summary, &new.loaded.summary);
         let length = length_scale(os, ns);
-        let quantities = quantities(os, ns, length, tol).map_err(|d| {
+        let quantities = quantities(&Props::of(os), &Props::of(ns), length, tol).map_err(|d| {
             Diagnostic::plain(format!(
                 "{} → {}: {}",
                 old.loaded.source.name,
@@ -163,6 +228,19 @@ fn pick(old: f64, new: f64) -> f64 {
 /// would turn every rounding of ~1e-17 m into a 100 % change.
 fn body_length(s: &Summary) -> f64 {
     norm(&s.center_of_mass).max(norm(&s.radii_of_gyration) / std::f64::consts::SQRT_2)
+}
+
+/// `body_length` of `Props`: √(tr C / m) from the principal moments
+/// (tr C = (I1 + I2 + I3)/2), or the distance of the centre alone when
+/// the mass is not positive.
+fn props_length(p: &Props) -> f64 {
+    let tr_c = (p.principal_moments.iter().sum::<f64>() / 2.0).max(0.0);
+    let rms = if p.mass > 0.0 {
+        (tr_c / p.mass).sqrt()
+    } else {
+        0.0
+    };
+    norm(&p.center_of_mass).max(rms)
 }
 
 fn length_scale(old: &Summary, new: &Summary) -> f64 {
@@ -214,8 +292,8 @@ fn compare(
 /// Mass, centre of mass, principal moments, and the six independent entries
 /// of the inertia tensor about the centre of mass (upper triangle).
 fn quantities(
-    old: &Summary,
-    new: &Summary,
+    old: &Props,
+    new: &Props,
     length: f64,
     tol: f64,
 ) -> Result<Vec<QuantityDiff>, Diagnostic> {

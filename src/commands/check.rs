@@ -31,6 +31,9 @@ pub struct Options {
     pub includes: crate::model::Includes,
     /// How directories are searched.
     pub search: Search,
+    /// The engines whose rules robot descriptions are checked by
+    /// (`--engine`; all of them by default).
+    pub engines: Vec<crate::robot::engine::Engine>,
 }
 
 /// What a search for part files found. Paths are kept as the file system
@@ -104,19 +107,19 @@ fn collect(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic>
                 continue;
             };
             let p = entry.path();
-            if t.is_dir() || !crate::io::is_toml(p) {
+            let wanted = |p: &Path| crate::io::is_toml(p) || crate::robot::may_be_robot(p);
+            if t.is_dir() || !wanted(p) {
                 continue;
             }
             if t.is_symlink()
-                && std::fs::canonicalize(p)
-                    .is_ok_and(|t| !(t.starts_with(root) && crate::io::is_toml(&t)))
+                && std::fs::canonicalize(p).is_ok_and(|t| !(t.starts_with(root) && wanted(&t)))
             {
                 // A file from a pull request, `x.toml -> ~/.cargo/credentials.toml`
                 // or `-> .git/config`, would be read and quoted in the log.
                 let name = display_path(p);
                 let d = Diagnostic::file(
                     &name,
-                    "not checked: a symlink to a file outside the directory searched, or to one that is not a `*.toml` file (check it by its own path)",
+                    "not checked: a symlink to a file outside the directory searched, or to one that is not a `*.toml` file or robot description (check it by its own path)",
                 );
                 out.push(Found::Skipped(name, d));
                 continue;
@@ -178,6 +181,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             validity: Vec::new(),
             precision: None,
             accuracy_warnings: Vec::new(),
+            robot: None,
+            format: None,
         }
     };
     // Every file found, valid or not, and every file those include.
@@ -196,12 +201,67 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         } else {
             display_path(&path)
         };
+        // A robot description: by its name (`*.urdf`, `*.sdf`), else by its
+        // root element (`<robot>`, `<sdf>`, `<mujoco>`). An `*.xml` found
+        // in a directory that is none is passed over, as below.
+        // Standard input read to tell its format is not read again.
+        let mut stdin = None;
+        if !crate::io::is_toml(&path) {
+            let source = crate::io::read_source_at(&path);
+            let format = crate::robot::Format::of_path(&path).or_else(|| {
+                source
+                    .as_ref()
+                    .ok()
+                    .and_then(|s| crate::robot::Format::of_text(&s.text))
+            });
+            if let Some(format) = format {
+                if o.bless {
+                    stderr.push_str(&format!(
+                        "{}: not blessed (a robot description has no `[expect]`)\n",
+                        visible(&f)
+                    ));
+                }
+                let r = source.and_then(|s| {
+                    let d = crate::robot::read::read(&s, format)?;
+                    Ok(crate::robot::check::check(&s, &d, &o.engines))
+                });
+                results.push(match r {
+                    Ok(r) => FileResult {
+                        path: f,
+                        status: if r.failed() {
+                            Status::Failed
+                        } else {
+                            Status::Ok
+                        },
+                        error: None,
+                        checks: Vec::new(),
+                        validity: Vec::new(),
+                        precision: None,
+                        accuracy_warnings: Vec::new(),
+                        robot: Some(r),
+                        format: Some(format),
+                    },
+                    Err(d) => FileResult {
+                        format: Some(format),
+                        ..invalid(f, d, &mut stderr)
+                    },
+                });
+                continue;
+            }
+            if found {
+                continue;
+            }
+            if path.as_os_str() == "-" {
+                stdin = Some(source);
+            }
+        }
         // A `*.toml` found in a directory that is no part file
         // (`Cargo.toml`, a `settings.toml`, a `credentials.toml`) is passed
         // over as a search passes over any other file: not checked, not
         // blessed, nothing of it quoted. Read once, here, unless `--bless`
         // rewrites it first.
-        let mut source = (found || !o.bless).then(|| crate::io::read_source_at(&path));
+        let mut source = (found || !o.bless)
+            .then(|| stdin.take().unwrap_or_else(|| crate::io::read_source_at(&path)));
         if found && matches!(&source, Some(Ok(s)) if !crate::model::looks_like_a_part_file(&s.text))
         {
             continue;
@@ -230,6 +290,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         // Every file a part file includes joins `read` even if it turns out
         // invalid: `-o` may write onto none of them.
         let loaded = source
+            .or(stdin)
             .unwrap_or_else(|| crate::io::read_source_at(&path))
             .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
             .map(|l| {
@@ -257,7 +318,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     }
     if results.is_empty() {
         return Err(Diagnostic::plain(
-            "no part files found (a directory is searched for `*.toml` files with a `[[part]]` table; hidden and ignored ones are passed over)",
+            "no part files or robot descriptions found (a directory is searched for `*.toml` files with a `[[part]]` table, and for `*.urdf`, `*.sdf` and `*.xml` robot descriptions; hidden and ignored ones are passed over)",
         ));
     }
     let worst = |s: Status| results.iter().any(|r| r.status == s);

@@ -23,6 +23,11 @@ pub struct Options {
     pub axes: Option<String>,
     /// `--include-root` and `--base-dir`.
     pub includes: crate::model::Includes,
+    /// `--about`, as typed (the link frame's origin, against a robot
+    /// description).
+    pub about: Option<String>,
+    /// `--link`: the link compared when a side is a robot description.
+    pub link: Option<String>,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
@@ -44,10 +49,26 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         includes: o.includes.clone(),
         overrides: crate::analysis::Overrides {
             axes: o.axes.clone(),
+            about: o.about.clone(),
             ..Default::default()
         },
         ..Settings::default()
     };
+    // A robot description on either side: a part file against a link.
+    let (old_robot, new_robot) = (robot_source(&o.old)?, robot_source(&o.new)?);
+    if old_robot.is_some() || new_robot.is_some() {
+        return against_link(o, &settings, old_robot, new_robot, terminal);
+    }
+    if o.link.is_some() {
+        return Err(Diagnostic::plain(
+            "`--link` names a link of a robot description (URDF, SDFormat, MJCF), and neither OLD nor NEW is one",
+        ));
+    }
+    if o.about.is_some() {
+        return Err(Diagnostic::plain(
+            "`--about` sets the link frame against a robot description, and neither OLD nor NEW is one: two part files are compared in their own frames",
+        ));
+    }
     let old = analysis::load(&o.old, &settings)?;
     let new = analysis::load(&o.new, &settings)?;
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
@@ -57,6 +78,124 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     Ok(Outcome {
         stdout: super::Stdout::Text(render::render(
             &render::Output::Diff(&diff),
+            o.format,
+            terminal.stdout,
+        )),
+        stderr,
+        status: u8::from(diff.changed),
+        read,
+    })
+}
+
+/// The robot description a path names, read, with its format: by its name
+/// (`*.urdf`, `*.sdf`), else an `*.xml` by its root element. None for a
+/// part file (and for standard input, which is read as one).
+fn robot_source(
+    path: &str,
+) -> Result<Option<(crate::diag::Source, crate::robot::Format)>, Diagnostic> {
+    use crate::robot::Format;
+    let p = std::path::Path::new(path);
+    if path == "-" || crate::io::is_toml(p) || !crate::robot::may_be_robot(p) {
+        return Ok(None);
+    }
+    let source = crate::io::read_source(path)?;
+    match Format::of_path(p).or_else(|| Format::of_text(&source.text)) {
+        Some(f) => Ok(Some((source, f))),
+        None => Err(Diagnostic::file(
+            path,
+            "not a robot description: its root element is not <robot> (URDF), <sdf> or <mujoco> (MJCF)",
+        )),
+    }
+}
+
+/// `diff PART ROBOT --link NAME` (either way round): the part file's body
+/// in its link frame against the link's inertial.
+fn against_link(
+    o: &Options,
+    settings: &Settings,
+    old_robot: Option<(crate::diag::Source, crate::robot::Format)>,
+    new_robot: Option<(crate::diag::Source, crate::robot::Format)>,
+    terminal: &super::Terminal,
+) -> Result<Outcome, Diagnostic> {
+    use crate::analysis::diff::{LinkDiff, Props};
+    let (robot, part, robot_is_old) = match (old_robot, new_robot) {
+        (Some(r), None) => (r, &o.new, true),
+        (None, Some(r)) => (r, &o.old, false),
+        _ => {
+            return Err(Diagnostic::plain(
+                "OLD and NEW are both robot descriptions: `diff` compares a part file with a link (check each with `massprop check`)",
+            ));
+        }
+    };
+    let (source, format) = robot;
+    let Some(name) = &o.link else {
+        return Err(Diagnostic::plain(format!(
+            "`{}` is a robot description: name the link to compare with `--link NAME`",
+            source.name
+        )));
+    };
+    let description = crate::robot::read::read(&source, format)?;
+    let matching: Vec<_> = description
+        .links
+        .iter()
+        .filter(|l| &l.name == name)
+        .collect();
+    let link = match matching.as_slice() {
+        [one] => *one,
+        [] => {
+            let names: Vec<&str> = description.links.iter().map(|l| l.name.as_str()).collect();
+            let shown = names.iter().take(8).map(|n| format!("\"{n}\"")).collect::<Vec<_>>();
+            return Err(Diagnostic::file(
+                &source.name,
+                format!(
+                    "no link named \"{name}\" (links: {}{})",
+                    shown.join(", "),
+                    if names.len() > 8 { ", …" } else { "" }
+                ),
+            ));
+        }
+        _ => {
+            return Err(Diagnostic::file(
+                &source.name,
+                format!("more than one link is named \"{name}\": `--link` cannot tell them apart"),
+            ));
+        }
+    };
+    let Some(inertial) = &link.inertial else {
+        return Err(source.error(
+            link.range.start..link.range.start + 1,
+            format!("link \"{name}\" has no <inertial> to compare"),
+        ));
+    };
+    let t = inertial.tensor_in_link().matrix();
+    let moments = crate::robot::engine::principal_moments(&inertial.tensor_in_link())
+        .ok_or_else(|| Diagnostic::plain(format!("link \"{name}\": its principal moments overflow")))?;
+    let link_props = Props {
+        mass: inertial.mass,
+        center_of_mass: inertial.pos,
+        principal_moments: moments,
+        inertia_com: t,
+    };
+    let loaded = analysis::load(part, settings)?;
+    let e = super::export::export_of(&loaded.summary, false);
+    let part_props = Props {
+        center_of_mass: e.pos,
+        ..Props::of(&loaded.summary)
+    };
+    let mut read = super::files_of(&loaded);
+    read.extend(std::fs::canonicalize(source.path()).ok());
+    let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
+    let part_side = (loaded.source.name.clone(), part_props);
+    let link_side = (source.name.clone(), link_props);
+    let (old, new) = if robot_is_old {
+        (link_side, part_side)
+    } else {
+        (part_side, link_side)
+    };
+    let diff = LinkDiff::of(old, new, name.clone(), loaded.summary.file_units, o.tol)?;
+    Ok(Outcome {
+        stdout: super::Stdout::Text(render::render(
+            &render::Output::LinkDiff(&diff),
             o.format,
             terminal.stdout,
         )),

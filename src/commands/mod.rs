@@ -6,6 +6,7 @@
 pub mod bless;
 pub mod check;
 pub mod diff;
+pub mod export;
 pub mod init;
 pub mod materials;
 pub mod report;
@@ -126,6 +127,7 @@ pub enum Request {
     Report(report::Options),
     Check(check::Options),
     Diff(diff::Options),
+    Export(export::Options),
     Materials(materials::Options),
     Init(init::Options),
     /// A text made before the run, printed as it is: `completions` and
@@ -143,6 +145,7 @@ impl Request {
             Request::Report(o) => o.output.as_deref(),
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
+            Request::Export(o) => o.output.as_deref(),
             Request::Materials(_) | Request::Init(_) | Request::Text(_) => None,
         };
         o.filter(|o| *o != "-")
@@ -156,6 +159,7 @@ impl Request {
             // against every file read.
             Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
+            Request::Export(o) => vec![&o.file],
             Request::Materials(_) | Request::Init(_) | Request::Text(_) => Vec::new(),
         }
     }
@@ -247,6 +251,7 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
         Request::Report(o) => report::run(o, terminal)?,
         Request::Check(o) => check::run(o, terminal)?,
         Request::Diff(o) => diff::run(o, terminal)?,
+        Request::Export(o) => export::run(o, terminal)?,
         Request::Materials(o) => materials::run(o, terminal)?,
         Request::Init(o) => init::run(o)?,
         Request::Text(text) => Outcome {

@@ -46,6 +46,8 @@ struct JsonReport<'a> {
 #[derive(Serialize)]
 struct JsonFile<'a> {
     path: &'a str,
+    /// `part`, or a robot description's format (`urdf`, `sdf`, `mjcf`).
+    kind: &'static str,
     status: Status,
     #[serde(skip_serializing_if = "Option::is_none")]
     error: Option<JsonError<'a>>,
@@ -56,6 +58,18 @@ struct JsonFile<'a> {
     precision: Option<crate::compose::Precision>,
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     accuracy_warnings: &'a [AccuracyWarning],
+    /// A robot description's links (docs/robots.md).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    links: Option<Vec<JsonLink<'a>>>,
+}
+
+/// A link checked, each failing engine's message added.
+#[derive(Serialize)]
+struct JsonLink<'a> {
+    #[serde(flatten)]
+    link: &'a crate::robot::check::LinkResult,
+    /// Each invalid engine's message, as the table's error line has it.
+    messages: Vec<String>,
 }
 
 #[derive(Serialize)]
@@ -105,6 +119,7 @@ pub fn json(results: &[FileResult]) -> String {
         .iter()
         .map(|r| JsonFile {
             path: &r.path,
+            kind: kind(r),
             status: r.status,
             error: r.error.as_ref().map(|d| JsonError::of(d, &r.path)),
             checks: r
@@ -118,6 +133,21 @@ pub fn json(results: &[FileResult]) -> String {
             validity: r.validity_failures().collect(),
             precision: r.precision,
             accuracy_warnings: &r.accuracy_warnings,
+            links: r.robot.as_ref().map(|robot| {
+                robot
+                    .links
+                    .iter()
+                    .map(|l| JsonLink {
+                        link: l,
+                        messages: l
+                            .engines
+                            .iter()
+                            .filter(|e| !e.verdict.valid)
+                            .map(|e| super::robot::failure(l, e))
+                            .collect(),
+                    })
+                    .collect()
+            }),
         })
         .collect();
     super::json_line(&JsonReport {
@@ -128,12 +158,22 @@ pub fn json(results: &[FileResult]) -> String {
     })
 }
 
-/// The results for people and CI logs; `colour`: each `error` as cargo
-/// colours it (on a terminal).
-pub fn table(results: &[FileResult], colour: bool) -> String {
+/// What a file is: `part`, or its robot description format's name.
+pub fn kind(r: &FileResult) -> &'static str {
+    r.format.map_or("part", crate::robot::Format::name)
+}
+
+/// The results for people and CI logs; `style.colour`: each `error` as
+/// cargo colours it (on a terminal); `style.width`: robot tables fitted.
+pub fn table(results: &[FileResult], style: super::Style) -> String {
+    let colour = style.colour;
     let e = Palette::of(colour).error;
     let mut s = String::new();
     for r in results {
+        if let Some(robot) = &r.robot {
+            super::robot::table(&mut s, &r.path, robot, colour, style.width);
+            continue;
+        }
         match r.status {
             Status::Ok => s.push_str(&format!("{}: ok\n", visible(&r.path))),
             Status::Invalid => s.push_str(&format!(

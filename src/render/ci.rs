@@ -347,6 +347,8 @@ mod tests {
             ],
             precision: None,
             accuracy_warnings: Vec::new(),
+            robot: None,
+            format: None,
         };
         let results = [r];
         assert_eq!(

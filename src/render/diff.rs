@@ -6,7 +6,9 @@ use super::format::{
 };
 use super::grid::{Fit, new_table, write_rows};
 use crate::analysis::Products;
-use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, PartView, QuantityDiff, Side};
+use crate::analysis::diff::{
+    Change, Diff, FORMAT_VERSION, LinkDiff, PartView, QuantityDiff, Side,
+};
 use crate::numeric::norm;
 use serde::Serialize;
 use std::fmt::Write;
@@ -101,6 +103,97 @@ pub fn json(d: &Diff) -> String {
         },
     };
     super::json_line(&json)
+}
+
+/// A part file against a link, as one JSON object, SI: diff's contract
+/// with `link` for `parts` (docs/diff.md).
+pub fn link_json(d: &LinkDiff) -> String {
+    #[derive(Serialize)]
+    struct JsonLinkDiff<'a> {
+        format_version: u32,
+        massprop_version: &'static str,
+        old: &'a str,
+        new: &'a str,
+        link: &'a str,
+        products_convention: Products,
+        units: JsonUnits,
+        tolerance: f64,
+        changed: bool,
+        quantities: &'a [QuantityDiff],
+    }
+    super::json_line(&JsonLinkDiff {
+        format_version: FORMAT_VERSION,
+        massprop_version: crate::analysis::summary::MASSPROP_VERSION,
+        old: &d.old,
+        new: &d.new,
+        link: &d.link,
+        products_convention: Products::Tensor,
+        units: JsonUnits {
+            mass: "kg",
+            length: "m",
+            inertia: "kg*m^2",
+        },
+        tolerance: d.tol,
+        changed: d.changed,
+        quantities: &d.quantities,
+    })
+}
+
+/// A part file against a link, for people, in the part file's units.
+pub fn link_table(d: &LinkDiff, width: Option<usize>) -> String {
+    let u = DisplayUnits::of(d.file_units);
+    let mut out = String::new();
+    let _ = writeln!(out, "old: {}", name(&d.old));
+    let _ = writeln!(out, "new: {}", name(&d.new));
+    let _ = writeln!(
+        out,
+        "link: {} (the part file's body in its link frame: origin `about`, axes `axes`)",
+        name(&d.link)
+    );
+    let _ = writeln!(
+        out,
+        "units (the part file's): mass {}, length {}, inertia {}",
+        u.mass_label, u.length_label, u.inertia_label
+    );
+    let _ = writeln!(
+        out,
+        "Ixx … Iyz: inertia about the centre of mass, {}",
+        products_label(Products::Tensor)
+    );
+    let _ = writeln!(
+        out,
+        "relative: change ÷ the scale of the whole quantity (docs/diff.md); tolerance {:e}",
+        d.tol
+    );
+    out.push('\n');
+    quantities_table(&mut out, &d.quantities, &u, width);
+    out
+}
+
+/// The table of compared quantities.
+fn quantities_table(
+    out: &mut String,
+    quantities: &[QuantityDiff],
+    u: &DisplayUnits,
+    width: Option<usize>,
+) {
+    let header = ["", "old", "new", "change", "relative", "unit", ""].map(String::from);
+    let mut rows = Vec::new();
+    for q in quantities {
+        let (factor, unit) = u.of_dim(q.dim);
+        rows.push(vec![
+            q.label.clone(),
+            show(q.old, factor),
+            show(q.new, factor),
+            show(q.abs_change, factor),
+            percent(q.rel_change),
+            unit.to_string(),
+            if q.changed { "changed" } else { "" }.to_string(),
+        ]);
+    }
+    // The numbers right; each part of a split table keeps the quantity.
+    let right: Vec<bool> = (0..header.len()).map(|i| (1..=4).contains(&i)).collect();
+    write_rows(out, &header, &rows, &right, Fit::new(width, 1));
 }
 
 /// How a file is named in the table: its path, and its `name` if it has one.
@@ -203,24 +296,8 @@ pub fn table(d: &Diff, width: Option<usize>) -> String {
         d.tol
     );
 
-    let header = ["", "old", "new", "change", "relative", "unit", ""].map(String::from);
-    let mut rows = Vec::new();
-    for q in &d.quantities {
-        let (factor, unit) = u.of_dim(q.dim);
-        rows.push(vec![
-            q.label.clone(),
-            show(q.old, factor),
-            show(q.new, factor),
-            show(q.abs_change, factor),
-            percent(q.rel_change),
-            unit.to_string(),
-            if q.changed { "changed" } else { "" }.to_string(),
-        ]);
-    }
-    // The numbers right; each part of a split table keeps the quantity.
-    let right: Vec<bool> = (0..header.len()).map(|i| (1..=4).contains(&i)).collect();
     out.push('\n');
-    write_rows(&mut out, &header, &rows, &right, Fit::new(width, 1));
+    quantities_table(&mut out, &d.quantities, &u, width);
 
     let (op, np) = (&d.old.parts, &d.new.parts);
     let p = &d.parts;

@@ -19,6 +19,7 @@ pub mod format;
 pub mod grid;
 pub mod materials;
 pub mod report;
+pub mod robot;
 
 use crate::analysis::check::FileResult;
 use crate::analysis::diff::Diff;
@@ -59,6 +60,8 @@ pub enum Output<'a> {
     Report(&'a Summary, &'a str),
     Check(&'a [FileResult]),
     Diff(&'a Diff),
+    /// `diff` of a part file and a robot description's link.
+    LinkDiff(&'a crate::analysis::diff::LinkDiff),
     Materials(&'a [materials::Listed]),
 }
 
@@ -85,7 +88,7 @@ pub fn write(
             return report::write_table_to(s, source, style.width, w);
         }
         (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
-        (Format::Table, Output::Check(r)) => check::table(r, style.colour),
+        (Format::Table, Output::Check(r)) => check::table(r, style),
         (Format::Json, Output::Check(r)) => check::json(r),
         (Format::Github, Output::Check(r)) => ci::github(r),
         (Format::Junit, Output::Check(r)) => ci::junit(r),
@@ -99,6 +102,8 @@ pub fn write(
         }
         (Format::Table, Output::Diff(d)) => diff::table(d, style.width),
         (Format::Json, Output::Diff(d)) => diff::json(d),
+        (Format::Table, Output::LinkDiff(d)) => diff::link_table(d, style.width),
+        (Format::Json, Output::LinkDiff(d)) => diff::link_json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),
         (Format::Json, Output::Materials(l)) => materials::json(l),
     };

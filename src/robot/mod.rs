@@ -6,6 +6,9 @@
 //! Every value here is SI (kg, m, kg·m²) and every tensor is in the tensor
 //! convention (I_xy = −∫xy dm), as URDF, SDFormat and MJCF all write it.
 
+pub mod cause;
+pub mod check;
+pub mod engine;
 pub mod read;
 pub mod write;
 
@@ -75,6 +78,17 @@ impl Format {
             _ => None,
         }
     }
+}
+
+/// Whether a directory search looks at a file of this name as a possible
+/// robot description: `*.urdf`, `*.sdf`, `*.xml` (any case); an `*.xml` is
+/// one only if its root element says so (`Format::of_text`).
+pub fn may_be_robot(path: &std::path::Path) -> bool {
+    Format::of_path(path).is_some()
+        || path
+            .extension()
+            .and_then(|e| e.to_str())
+            .is_some_and(|e| e.eq_ignore_ascii_case("xml"))
 }
 
 /// The six independent entries of a symmetric inertia tensor, kg·m², in

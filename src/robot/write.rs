@@ -19,6 +19,35 @@ pub struct Export {
     pub principal: Option<([f64; 3], [[f64; 3]; 3])>,
 }
 
+/// Why `update` cannot put an inertial in place.
+#[derive(Debug)]
+pub struct UpdateError {
+    pub message: String,
+    /// The byte offset of the element at fault, if one is.
+    pub at: Option<usize>,
+}
+
+impl std::fmt::Display for UpdateError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+/// `text` with link `link`'s inertial replaced by `e`'s.
+pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<String, UpdateError> {
+    let _ = (text, format, link, e);
+    Err(UpdateError {
+        message: "not yet".into(),
+        at: None,
+    })
+}
+
+/// A unified diff of `old` to `new`.
+pub fn unified_diff(old: &str, new: &str, path: &str) -> String {
+    let _ = (old, new, path);
+    String::new()
+}
+
 /// The `<inertial>` element of `e` in `format`, its lines after the first
 /// indented by `indent` (the element's own indentation) plus one level.
 pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {

@@ -1,0 +1,456 @@
+//! Each simulator's own rule for an inertial, as its source applies it, and
+//! the margin by which each part of the rule holds or fails.
+//!
+//! - **MuJoCo** (4.0, `mjCBody::Compile` in user_objects.cc; measured with
+//!   the mujoco Python package, tests/oracle/MUJOCO-RULES.md);
+//! - **Gazebo**: gz-math's `MassMatrix3::IsValid()` with its default
+//!   tolerance 10, which libsdformat applies to every link ("A link named X
+//!   has invalid inertia");
+//! - **Drake**: `SpatialInertia::IsPhysicallyValid()`: mass ≥ 0 and
+//!   `RotationalInertia::CouldBePhysicallyValid()`.
+//!
+//! The principal moments are computed accurately (Jacobi in double-double,
+//! rounded once), then each engine's comparisons are made in f64 in the
+//! order its source makes them. NOTE: each engine finds the principal
+//! moments with its own solver; for a tensor whose margin is within a few
+//! roundings of zero, the engine's own verdict may differ from the one its
+//! rule gives on exact moments. `Rule::close` says when.
+
+use super::{MujocoCompiler, Tensor, Written};
+use crate::numeric::{DD, Real};
+use serde::Serialize;
+
+/// A simulator whose rule is checked (`--engine`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, PartialOrd, Ord)]
+#[serde(rename_all = "lowercase")]
+pub enum Engine {
+    Mujoco,
+    Gazebo,
+    Drake,
+}
+
+impl Engine {
+    /// Every engine, in the order outputs list them.
+    pub const ALL: [Engine; 3] = [Engine::Mujoco, Engine::Gazebo, Engine::Drake];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Engine::Mujoco => "mujoco",
+            Engine::Gazebo => "gazebo",
+            Engine::Drake => "drake",
+        }
+    }
+}
+
+/// MuJoCo's `mjEPS`: the smallest eigenvalue a `fullinertia` (and every
+/// URDF inertial, imported as one) may have.
+pub const MJ_EPS: f64 = 1e-14;
+/// MuJoCo's `mjMINVAL`: the least mass and principal moment of a body that
+/// moves.
+pub const MJ_MINVAL: f64 = 1e-15;
+/// gz-math's default tolerance factor in `MassMatrix3::IsValid`.
+pub const GZ_TOLERANCE: f64 = 10.0;
+/// Drake's factor in `CouldBePhysicallyValid`.
+pub const DRAKE_TOLERANCE: f64 = 16.0;
+
+/// What an engine is judged on: one inertial as the file gives it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Facts {
+    pub mass: f64,
+    /// As written (in the inertial frame: a turn does not change a rule).
+    pub tensor: Tensor,
+    pub written: Written,
+    pub moving: bool,
+}
+
+/// One part of an engine's rule, and how it came out.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Rule {
+    /// Its key: `mass`, `eigenvalues`, `triangle`, `leading_minors`,
+    /// `moving_mass`, `moving_inertia`, `diagonal`.
+    pub rule: &'static str,
+    /// The rule as the engine's source states it, with its constants.
+    pub statement: String,
+    pub holds: bool,
+    /// The quantity compared (SI), and the limit it is compared with:
+    /// `triangle`: A + B − C against −ε; `eigenvalues`: the smallest
+    /// principal moment against the floor; `mass`: the mass against 0.
+    pub value: f64,
+    pub limit: f64,
+    /// How far it holds (positive) or fails (negative), relative:
+    /// `triangle` (A + B − C + ε)/C; a moment's rule (λ − limit)/(tr/2),
+    /// tr/2 being the largest moment the tensor could have. None where
+    /// there is no scale (a mass rule, a zero tensor).
+    pub margin: Option<f64>,
+    /// The margin is within a few roundings of zero: the engine's own
+    /// eigen solver may decide it the other way.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub close: bool,
+}
+
+/// An engine's verdict on one inertial.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Verdict {
+    pub engine: Engine,
+    pub valid: bool,
+    pub rules: Vec<Rule>,
+    /// Why the rule is not applied, or what the engine does instead.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// The principal moments of `t`, ascending, accurate to about an ulp each
+/// (Jacobi in double-double). None for a tensor with a non-finite entry.
+pub fn principal_moments(t: &Tensor) -> Option<[f64; 3]> {
+    let m = t.matrix().map(|r| r.map(DD::of));
+    let (lam, _) = crate::eigen::jacobi(m)?;
+    let mut lam = lam.map(Real::f64);
+    lam.sort_by(f64::total_cmp);
+    Some(lam)
+}
+
+/// The relative size of a few roundings of the eigenvalues, below which a
+/// margin is `close`. NOTE: engines solve in f64 (MuJoCo's `mju_eig3`,
+/// gz-math's closed-form cubic, Eigen's solver in Drake), each with a
+/// backward error of some tens of ulps of the largest moment.
+const CLOSE: f64 = 64.0 * f64::EPSILON;
+
+fn rel(x: f64, scale: f64) -> Option<f64> {
+    (scale > 0.0).then(|| x / scale).filter(|r| r.is_finite())
+}
+
+/// `engine`'s verdict on `f`; `compiler`: the file's MuJoCo compiler
+/// settings (MuJoCo only).
+pub fn judge(engine: Engine, f: &Facts, compiler: &MujocoCompiler) -> Verdict {
+    let Some(moments) = principal_moments(&f.tensor) else {
+        // The reader refuses non-finite numbers; a sum of huge finite ones
+        // can still overflow.
+        return Verdict {
+            engine,
+            valid: false,
+            rules: Vec::new(),
+            note: Some("the tensor's principal moments overflow".into()),
+        };
+    };
+    match engine {
+        Engine::Mujoco => mujoco(f, moments, compiler),
+        Engine::Gazebo => gazebo(f, moments),
+        Engine::Drake => drake(f, moments),
+    }
+}
+
+/// Whether `engine` accepts `f`: `judge`'s `valid`.
+pub fn accepts(engine: Engine, f: &Facts, compiler: &MujocoCompiler) -> bool {
+    judge(engine, f, compiler).valid
+}
+
+/// The triangle inequality on ascending moments [A, B, C] with tolerance
+/// `eps`, as the engines write it: A + B + ε ≥ C (the other two
+/// inequalities hold for sorted non-negative moments; they are checked
+/// too, in the engines' order, for negative ones).
+fn triangle(m: [f64; 3], eps: f64, statement: String) -> Rule {
+    let [a, b, c] = m;
+    let holds = a + b + eps >= c && b + c + eps >= a && c + a + eps >= b;
+    let value = a + b - c;
+    Rule {
+        rule: "triangle",
+        statement,
+        holds,
+        value,
+        limit: -eps,
+        margin: rel(value + eps, c.abs()),
+        close: (value + eps).abs() <= CLOSE * c.abs(),
+    }
+}
+
+/// A moment rule: the smallest principal moment against `limit`.
+fn smallest(rule: &'static str, m: [f64; 3], limit: f64, holds: bool, statement: String) -> Rule {
+    let scale = (m[0] + m[1] + m[2]).abs() / 2.0;
+    Rule {
+        rule,
+        statement,
+        holds,
+        value: m[0],
+        limit,
+        margin: rel(m[0] - limit, scale),
+        close: (m[0] - limit).abs() <= CLOSE * scale,
+    }
+}
+
+fn mass_rule(rule: &'static str, mass: f64, limit: f64, holds: bool, statement: &str) -> Rule {
+    Rule {
+        rule,
+        statement: statement.into(),
+        holds,
+        value: mass,
+        limit,
+        margin: None,
+        close: false,
+    }
+}
+
+fn verdict(engine: Engine, rules: Vec<Rule>, note: Option<String>) -> Verdict {
+    Verdict {
+        engine,
+        valid: rules.iter().all(|r| r.holds),
+        rules,
+        note,
+    }
+}
+
+/// MuJoCo 4.0 (tests/oracle/MUJOCO-RULES.md has the experiments).
+fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
+    if c.inertiafromgeom == Some(true) {
+        return verdict(
+            Engine::Mujoco,
+            Vec::new(),
+            Some(
+                "not used: `inertiafromgeom=\"true\"` makes MuJoCo compute the body's inertia from its geoms"
+                    .into(),
+            ),
+        );
+    }
+    let mut rules = Vec::new();
+    if f.written == Written::Diagonal {
+        let [x, y, z] = [f.tensor.xx, f.tensor.yy, f.tensor.zz];
+        rules.push(smallest(
+            "diagonal",
+            moments,
+            0.0,
+            x >= 0.0 && y >= 0.0 && z >= 0.0,
+            "each diaginertia value ≥ 0".into(),
+        ));
+    } else {
+        rules.push(smallest(
+            "eigenvalues",
+            moments,
+            MJ_EPS,
+            moments[0] >= MJ_EPS,
+            format!("smallest eigenvalue of fullinertia ≥ mjEPS = {MJ_EPS:e} kg·m²"),
+        ));
+    }
+    rules.push(mass_rule(
+        "mass",
+        f.mass,
+        0.0,
+        f.mass >= 0.0,
+        "mass ≥ 0",
+    ));
+    // boundmass and boundinertia raise what is below them first.
+    let mass = if c.boundmass > 0.0 {
+        f.mass.max(c.boundmass)
+    } else {
+        f.mass
+    };
+    let bounded = if c.boundinertia > 0.0 {
+        let mut m = moments.map(|x| x.max(c.boundinertia));
+        m.sort_by(f64::total_cmp);
+        m
+    } else {
+        moments
+    };
+    if !c.balanceinertia {
+        let mut t = triangle(
+            bounded,
+            0.0,
+            "A + B ≥ C for the principal moments A ≤ B ≤ C, no tolerance".into(),
+        );
+        // Only A + B < C fails: MuJoCo checks the sorted moments' one
+        // inequality that can fail.
+        t.holds = !(bounded[0] + bounded[1] < bounded[2]);
+        rules.push(t);
+    }
+    if f.moving {
+        rules.push(mass_rule(
+            "moving_mass",
+            mass,
+            MJ_MINVAL,
+            mass >= MJ_MINVAL,
+            "a moving body's mass ≥ mjMINVAL = 1e-15 kg",
+        ));
+        rules.push(smallest(
+            "moving_inertia",
+            bounded,
+            MJ_MINVAL,
+            bounded[0] >= MJ_MINVAL,
+            "a moving body's principal moments ≥ mjMINVAL = 1e-15 kg·m²".into(),
+        ));
+    }
+    let note = c
+        .balanceinertia
+        .then(|| "`balanceinertia=\"true\"`: MuJoCo replaces moments that break the triangle inequality by their mean".to_string());
+    verdict(Engine::Mujoco, rules, note)
+}
+
+/// gz-math `MassMatrix3::IsValid(10)`: `IsNearPositive` and
+/// `ValidMoments` of the principal moments, with
+/// ε = 10 · DBL_EPSILON · ½ |A + B + C|.
+fn gazebo(f: &Facts, m: [f64; 3]) -> Verdict {
+    let t = &f.tensor;
+    let eps = GZ_TOLERANCE * f64::EPSILON * (0.5 * (m[0] + m[1] + m[2]).abs());
+    let minor2 = t.xx * t.yy - t.xy * t.xy;
+    let det = determinant(t);
+    let minors_hold = t.xx + eps >= 0.0 && minor2 + eps >= 0.0 && det + eps >= 0.0;
+    let failing = if t.xx + eps < 0.0 {
+        t.xx
+    } else if minor2 + eps < 0.0 {
+        minor2
+    } else {
+        det
+    };
+    let rules = vec![
+        mass_rule("mass", f.mass, 0.0, f.mass >= 0.0, "mass ≥ 0"),
+        Rule {
+            rule: "leading_minors",
+            statement: "Ixx + ε ≥ 0, Ixx·Iyy − Ixy² + ε ≥ 0 and det I + ε ≥ 0 (IsNearPositive), ε = 10·DBL_EPSILON·(A + B + C)/2".into(),
+            holds: minors_hold,
+            value: failing,
+            limit: -eps,
+            margin: None,
+            close: false,
+        },
+        smallest(
+            "eigenvalues",
+            m,
+            -eps,
+            m[0] + eps >= 0.0 && m[1] + eps >= 0.0 && m[2] + eps >= 0.0,
+            "each principal moment + ε ≥ 0, ε = 10·DBL_EPSILON·(A + B + C)/2".into(),
+        ),
+        triangle(
+            m,
+            eps,
+            "A + B + ε ≥ C for the principal moments, ε = 10·DBL_EPSILON·(A + B + C)/2".into(),
+        ),
+    ];
+    verdict(Engine::Gazebo, rules, None)
+}
+
+/// Drake `SpatialInertia::IsPhysicallyValid`: mass ≥ 0 and
+/// `CouldBePhysicallyValid` of the central inertia, with
+/// ε = 16 · DBL_EPSILON · max(1, ½ (A + B + C)).
+fn drake(f: &Facts, m: [f64; 3]) -> Verdict {
+    let eps = DRAKE_TOLERANCE * f64::EPSILON * (0.5 * (m[0] + m[1] + m[2])).max(1.0);
+    let rules = vec![
+        mass_rule("mass", f.mass, 0.0, f.mass >= 0.0, "mass ≥ 0"),
+        smallest(
+            "eigenvalues",
+            m,
+            -eps,
+            m[0] + eps >= 0.0 && m[1] + eps >= 0.0 && m[2] + eps >= 0.0,
+            "each principal moment + ε ≥ 0, ε = 16·DBL_EPSILON·max(1, (A + B + C)/2)".into(),
+        ),
+        triangle(
+            m,
+            eps,
+            "A + B + ε ≥ C for the principal moments, ε = 16·DBL_EPSILON·max(1, (A + B + C)/2)"
+                .into(),
+        ),
+    ];
+    verdict(Engine::Drake, rules, None)
+}
+
+/// det I, expanded along the first row (gz-math's `Matrix3::Determinant`).
+fn determinant(t: &Tensor) -> f64 {
+    let m = t.matrix();
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn facts(xx: f64, yy: f64, zz: f64, written: Written, moving: bool) -> Facts {
+        Facts {
+            mass: 1.0,
+            tensor: Tensor {
+                xx,
+                yy,
+                zz,
+                ..Tensor::default()
+            },
+            written,
+            moving,
+        }
+    }
+
+    fn valid(e: Engine, f: &Facts) -> bool {
+        accepts(e, f, &MujocoCompiler::default())
+    }
+
+    #[test]
+    fn mujoco_accepts_the_triangle_inequality_at_equality_and_refuses_one_ulp_over() {
+        assert!(valid(Engine::Mujoco, &facts(1.0, 1.0, 2.0, Written::Full, true)));
+        let over = 2.0f64.next_up();
+        assert!(!valid(Engine::Mujoco, &facts(1.0, 1.0, over, Written::Full, true)));
+    }
+
+    #[test]
+    fn gazebo_and_drake_allow_the_triangle_inequality_a_few_ulps_over() {
+        // ε = 10 eps · 2 for gazebo, 16 eps · 2 for drake: 2 + 2 ulps of 2 is within.
+        let over = 2.0f64.next_up().next_up();
+        let f = facts(1.0, 1.0, over, Written::Attributes, true);
+        assert!(valid(Engine::Gazebo, &f));
+        assert!(valid(Engine::Drake, &f));
+        let far = facts(1.0, 1.0, 2.0 + 1e-12, Written::Attributes, true);
+        assert!(!valid(Engine::Gazebo, &far));
+        assert!(!valid(Engine::Drake, &far));
+    }
+
+    #[test]
+    fn the_triangle_margin_is_a_plus_b_minus_c_over_c() {
+        let v = judge(
+            Engine::Mujoco,
+            &facts(1.0, 2.0, 4.0, Written::Full, false),
+            &MujocoCompiler::default(),
+        );
+        let t = v.rules.iter().find(|r| r.rule == "triangle").unwrap();
+        assert!(!t.holds);
+        assert_eq!(t.margin, Some(-0.25));
+    }
+
+    #[test]
+    fn mujoco_needs_fullinertia_eigenvalues_to_reach_mj_eps() {
+        assert!(!valid(Engine::Mujoco, &facts(1e-15, 1.0, 1.0, Written::Full, false)));
+        assert!(valid(Engine::Mujoco, &facts(1e-14, 1.0, 1.0, Written::Full, false)));
+    }
+
+    #[test]
+    fn a_moving_mujoco_body_needs_mass_and_moments_of_mj_minval() {
+        let mut f = facts(1e-16, 1e-16, 1e-16, Written::Diagonal, true);
+        assert!(!valid(Engine::Mujoco, &f));
+        f.moving = false;
+        assert!(valid(Engine::Mujoco, &f));
+    }
+
+    #[test]
+    fn drake_floors_its_tolerance_at_sixteen_ulps_of_one() {
+        // A tiny tensor breaking the triangle inequality by 1e-16 passes
+        // Drake (ε ≥ 16 eps ≈ 3.6e-15) and fails gazebo (ε scales with it).
+        let f = facts(1e-6, 1e-6, 2e-6 + 1e-16, Written::Attributes, true);
+        assert!(valid(Engine::Drake, &f));
+        assert!(!valid(Engine::Gazebo, &f));
+    }
+
+    #[test]
+    fn negative_mass_fails_every_engine() {
+        let mut f = facts(1.0, 1.0, 1.0, Written::Attributes, true);
+        f.mass = -1.0;
+        for e in Engine::ALL {
+            assert!(!valid(e, &f), "{e:?}");
+        }
+    }
+
+    #[test]
+    fn principal_moments_of_a_turned_tensor_are_accurate() {
+        // diag(1, 2, 3) turned 45° about z: xx = yy = 1.5, xy = ∓0.5.
+        let t = Tensor {
+            xx: 1.5,
+            yy: 1.5,
+            zz: 3.0,
+            xy: -0.5,
+            ..Tensor::default()
+        };
+        assert_eq!(principal_moments(&t), Some([1.0, 2.0, 3.0]));
+    }
+}
