@@ -255,7 +255,12 @@ pub struct ExportArgs {
     pub file: String,
 
     /// The robot description format (with `--update`, the file tells it).
-    #[arg(long, value_enum, value_name = "FORMAT", required_unless_present = "update")]
+    #[arg(
+        long,
+        value_enum,
+        value_name = "FORMAT",
+        required_unless_present = "update"
+    )]
     pub to: Option<RobotFormat>,
 
     /// MJCF: `diaginertia` (the principal moments) and `quat` (the
@@ -277,7 +282,12 @@ pub struct ExportArgs {
 
     /// Replace a link's inertial in this URDF, SDFormat or MJCF file,
     /// leaving every other byte as it was.
-    #[arg(long, value_name = "ROBOT_FILE", requires = "link", conflicts_with = "output")]
+    #[arg(
+        long,
+        value_name = "ROBOT_FILE",
+        requires = "link",
+        conflicts_with = "output"
+    )]
     pub update: Option<std::path::PathBuf>,
 
     /// The link (MJCF: body) whose inertial `--update` replaces.

@@ -409,7 +409,9 @@ impl Rewrite {
         if self.meta.permissions().readonly() {
             return Err(Diagnostic::file(
                 &self.name,
-                format!("the file is read-only: {what} is not written (make it writable to write it)"),
+                format!(
+                    "the file is read-only: {what} is not written (make it writable to write it)"
+                ),
             ));
         }
         // What this user may not write is not replaced either (a rename

@@ -260,8 +260,11 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         // over as a search passes over any other file: not checked, not
         // blessed, nothing of it quoted. Read once, here, unless `--bless`
         // rewrites it first.
-        let mut source = (found || !o.bless)
-            .then(|| stdin.take().unwrap_or_else(|| crate::io::read_source_at(&path)));
+        let mut source = (found || !o.bless).then(|| {
+            stdin
+                .take()
+                .unwrap_or_else(|| crate::io::read_source_at(&path))
+        });
         if found && matches!(&source, Some(Ok(s)) if !crate::model::looks_like_a_part_file(&s.text))
         {
             continue;

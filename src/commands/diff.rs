@@ -144,7 +144,11 @@ fn against_link(
         [one] => *one,
         [] => {
             let names: Vec<&str> = description.links.iter().map(|l| l.name.as_str()).collect();
-            let shown = names.iter().take(8).map(|n| format!("\"{n}\"")).collect::<Vec<_>>();
+            let shown = names
+                .iter()
+                .take(8)
+                .map(|n| format!("\"{n}\""))
+                .collect::<Vec<_>>();
             return Err(Diagnostic::file(
                 &source.name,
                 format!(
@@ -168,8 +172,10 @@ fn against_link(
         ));
     };
     let t = inertial.tensor_in_link().matrix();
-    let moments = crate::robot::engine::principal_moments(&inertial.tensor_in_link())
-        .ok_or_else(|| Diagnostic::plain(format!("link \"{name}\": its principal moments overflow")))?;
+    let moments =
+        crate::robot::engine::principal_moments(&inertial.tensor_in_link()).ok_or_else(|| {
+            Diagnostic::plain(format!("link \"{name}\": its principal moments overflow"))
+        })?;
     let link_props = Props {
         mass: inertial.mass,
         center_of_mass: inertial.pos,

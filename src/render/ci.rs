@@ -9,9 +9,13 @@
 //!
 //! Each reports the same things: every failed expectation at its `[expect]`
 //! entry, every failed validity check on its file, every invalid file at its
-//! error's span, and every value not certified to `--rtol` as a warning.
+//! error's span, every value not certified to `--rtol` as a warning, and
+//! for a robot description each link an engine refuses, at its
+//! `<inertial>`, with the likely cause (a JUnit test case per link and
+//! engine), and each link's warnings.
 
 use super::check::{Counts, failure, message};
+use super::robot;
 use crate::analysis::check::FileResult;
 use crate::analysis::summary::MASSPROP_VERSION;
 use crate::diag::{Diagnostic, Span, visible};
@@ -83,13 +87,11 @@ pub fn github(results: &[FileResult]) -> String {
     for r in results {
         if let Some(d) = &r.error {
             let (path, span) = place(d, r);
-            out.push_str(&command(
-                "error",
-                path,
-                span,
-                "invalid part file",
-                &diagnostic_text(d),
-            ));
+            let title = match r.format {
+                Some(_) => "invalid robot description",
+                None => "invalid part file",
+            };
+            out.push_str(&command("error", path, span, title, &diagnostic_text(d)));
         }
         for v in &r.validity {
             if let Some(m) = &v.failure {
@@ -115,6 +117,22 @@ pub fn github(results: &[FileResult]) -> String {
                 "accuracy",
                 &visible(&w.message),
             ));
+        }
+        for l in r.robot.iter().flat_map(|robot| &robot.links) {
+            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
+                let title = format!(
+                    "link {} under {}",
+                    visible(&l.name),
+                    e.verdict.engine.name()
+                );
+                let text = visible(&robot::failure(l, e));
+                out.push_str(&command("error", &r.path, Some(l.span), &title, &text));
+            }
+            for w in &l.warnings {
+                let title = format!("link {}", visible(&l.name));
+                let text = visible(&robot::warning(l, w));
+                out.push_str(&command("warning", &r.path, Some(l.span), &title, &text));
+            }
         }
     }
     out.push_str(&summary_line(results));
@@ -167,7 +185,28 @@ pub fn junit(results: &[FileResult]) -> String {
             ),
             None => TestCaseStatus::success(),
         };
-        suite.add_test_case(case("valid part file", valid));
+        let valid_name = match r.format {
+            Some(f) => format!("valid {} file", f.name()),
+            None => "valid part file".to_string(),
+        };
+        suite.add_test_case(case(&valid_name, valid));
+        for l in r.robot.iter().flat_map(|robot| &robot.links) {
+            for e in &l.engines {
+                let status = if e.verdict.valid {
+                    TestCaseStatus::success()
+                } else {
+                    let text = visible(&robot::failure(l, e));
+                    failed(
+                        NonSuccessKind::Failure,
+                        "inertial",
+                        &text,
+                        &format!("{path}:{}:{}: error: {text}", l.span.line, l.span.column),
+                    )
+                };
+                let name = format!("link {}: {}", visible(&l.name), e.verdict.engine.name());
+                suite.add_test_case(case(&name, status));
+            }
+        }
         for c in &r.checks {
             let status = if c.pass {
                 TestCaseStatus::success()
@@ -193,12 +232,21 @@ pub fn junit(results: &[FileResult]) -> String {
             };
             suite.add_test_case(case(&format!("validity: {}", v.name), status));
         }
-        if !r.accuracy_warnings.is_empty() {
-            let warnings: String = r
-                .accuracy_warnings
-                .iter()
-                .map(|w| format!("warning: {path}: {}\n", visible(&w.message)))
-                .collect();
+        let mut warnings: String = r
+            .accuracy_warnings
+            .iter()
+            .map(|w| format!("warning: {path}: {}\n", visible(&w.message)))
+            .collect();
+        for l in r.robot.iter().flat_map(|robot| &robot.links) {
+            for w in &l.warnings {
+                let text = visible(&robot::warning(l, w));
+                warnings.push_str(&format!(
+                    "warning: {path}:{}:{}: {text}\n",
+                    l.span.line, l.span.column
+                ));
+            }
+        }
+        if !warnings.is_empty() {
             suite.set_system_err(warnings);
         }
         report.add_test_suite(suite);
@@ -213,7 +261,7 @@ pub fn junit(results: &[FileResult]) -> String {
 }
 
 /// The rules a SARIF result names (`ruleId`), in `ruleIndex` order.
-const RULES: [(&str, &str); 4] = [
+const RULES: [(&str, &str); 6] = [
     (
         "expectation",
         "A value computed from the part file is outside its [expect] entry's tolerance or bounds",
@@ -229,6 +277,14 @@ const RULES: [(&str, &str); 4] = [
     (
         "accuracy",
         "A value's rigorous error bound exceeds --rtol in the arithmetic used",
+    ),
+    (
+        "inertial",
+        "A robot description's inertial breaks a simulator's rule (MuJoCo, Gazebo, Drake)",
+    ),
+    (
+        "inertial-warning",
+        "A robot description's inertial looks wrong (mirrored links whose products disagree, a duplicate name, no inertial)",
     ),
 ];
 
@@ -283,6 +339,22 @@ pub fn sarif(results: &[FileResult]) -> String {
         for w in &r.accuracy_warnings {
             let text = visible(&w.message);
             out.push(result("accuracy", "warning", &text, &r.path, None));
+        }
+        for l in r.robot.iter().flat_map(|robot| &robot.links) {
+            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
+                let text = visible(&robot::failure(l, e));
+                out.push(result("inertial", "error", &text, &r.path, Some(l.span)));
+            }
+            for w in &l.warnings {
+                let text = visible(&robot::warning(l, w));
+                out.push(result(
+                    "inertial-warning",
+                    "warning",
+                    &text,
+                    &r.path,
+                    Some(l.span),
+                ));
+            }
         }
     }
     let rules: Vec<Value> = RULES

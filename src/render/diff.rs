@@ -6,9 +6,7 @@ use super::format::{
 };
 use super::grid::{Fit, new_table, write_rows};
 use crate::analysis::Products;
-use crate::analysis::diff::{
-    Change, Diff, FORMAT_VERSION, LinkDiff, PartView, QuantityDiff, Side,
-};
+use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, LinkDiff, PartView, QuantityDiff, Side};
 use crate::numeric::norm;
 use serde::Serialize;
 use std::fmt::Write;

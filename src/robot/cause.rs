@@ -258,8 +258,16 @@ pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Ca
                     kind: Kind::Units,
                     message: format!(
                         "the products look {} in other units (g or mm against kg and m): multiplied by {} it is valid under {e}",
-                        if s < 1.0 { "too large, written" } else { "too small, written" },
-                        if s < 1.0 { format!("1e-{k}") } else { format!("1e{k}") }
+                        if s < 1.0 {
+                            "too large, written"
+                        } else {
+                            "too small, written"
+                        },
+                        if s < 1.0 {
+                            format!("1e-{k}")
+                        } else {
+                            format!("1e{k}")
+                        }
                     ),
                 });
             }
@@ -275,7 +283,11 @@ pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Ca
                         kind: Kind::Units,
                         message: format!(
                             "`{name}` looks written in other units than the rest (g or mm against kg and m): multiplied by {} it is valid under {e}",
-                            if s < 1.0 { format!("1e-{k}") } else { format!("1e{k}") }
+                            if s < 1.0 {
+                                format!("1e-{k}")
+                            } else {
+                                format!("1e{k}")
+                            }
                         ),
                     });
                 }

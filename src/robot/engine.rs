@@ -229,13 +229,7 @@ fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
             format!("smallest eigenvalue of fullinertia ≥ mjEPS = {MJ_EPS:e} kg·m²"),
         ));
     }
-    rules.push(mass_rule(
-        "mass",
-        f.mass,
-        0.0,
-        f.mass >= 0.0,
-        "mass ≥ 0",
-    ));
+    rules.push(mass_rule("mass", f.mass, 0.0, f.mass >= 0.0, "mass ≥ 0"));
     // boundmass and boundinertia raise what is below them first.
     let mass = if c.boundmass > 0.0 {
         f.mass.max(c.boundmass)
@@ -352,7 +346,8 @@ fn drake(f: &Facts, m: [f64; 3]) -> Verdict {
 /// det I, expanded along the first row (gz-math's `Matrix3::Determinant`).
 fn determinant(t: &Tensor) -> f64 {
     let m = t.matrix();
-    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
         + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
 }
 
@@ -380,9 +375,15 @@ mod tests {
 
     #[test]
     fn mujoco_accepts_the_triangle_inequality_at_equality_and_refuses_one_ulp_over() {
-        assert!(valid(Engine::Mujoco, &facts(1.0, 1.0, 2.0, Written::Full, true)));
+        assert!(valid(
+            Engine::Mujoco,
+            &facts(1.0, 1.0, 2.0, Written::Full, true)
+        ));
         let over = 2.0f64.next_up();
-        assert!(!valid(Engine::Mujoco, &facts(1.0, 1.0, over, Written::Full, true)));
+        assert!(!valid(
+            Engine::Mujoco,
+            &facts(1.0, 1.0, over, Written::Full, true)
+        ));
     }
 
     #[test]
@@ -411,8 +412,14 @@ mod tests {
 
     #[test]
     fn mujoco_needs_fullinertia_eigenvalues_to_reach_mj_eps() {
-        assert!(!valid(Engine::Mujoco, &facts(1e-15, 1.0, 1.0, Written::Full, false)));
-        assert!(valid(Engine::Mujoco, &facts(1e-14, 1.0, 1.0, Written::Full, false)));
+        assert!(!valid(
+            Engine::Mujoco,
+            &facts(1e-15, 1.0, 1.0, Written::Full, false)
+        ));
+        assert!(valid(
+            Engine::Mujoco,
+            &facts(1e-14, 1.0, 1.0, Written::Full, false)
+        ));
     }
 
     #[test]

@@ -21,6 +21,7 @@ mod library;
 mod package;
 mod physics;
 mod pipes;
+mod robots;
 mod schema;
 mod shell;
 mod stress;

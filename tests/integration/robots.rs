@@ -1,0 +1,365 @@
+//! Robot descriptions (docs/robots.md): `export` reads back to the last
+//! bit in every format, `--update` changes nothing but the inertial,
+//! `check` judges robot files by each engine's rule with the likely
+//! cause, in every output format, and `diff` compares a part file with a
+//! link both ways.
+
+use super::common::{massprop, scratch};
+use massprop::diag::Source;
+use massprop::robot::{Format, Inertial, read::read};
+use std::path::{Path, PathBuf};
+
+fn repo(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(path)
+}
+
+/// The part files of shapes/ (each a body every engine takes).
+fn part_files() -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(repo("shapes"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 5, "{files:?}");
+    files
+}
+
+fn stdout(args: &[&str]) -> String {
+    let out = massprop(args);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// A one-link document of `format` holding `element`.
+fn document(format: Format, element: &str) -> String {
+    match format {
+        Format::Urdf => {
+            format!("<robot name=\"r\">\n  <link name=\"l\">\n    {element}\n  </link>\n</robot>\n")
+        }
+        Format::Sdf => format!(
+            "<sdf version=\"1.9\">\n  <model name=\"m\">\n    <link name=\"l\">\n      {element}\n    </link>\n  </model>\n</sdf>\n"
+        ),
+        Format::Mjcf => format!(
+            "<mujoco>\n  <worldbody>\n    <body name=\"l\">\n      <freejoint/>\n      {element}\n    </body>\n  </worldbody>\n</mujoco>\n"
+        ),
+    }
+}
+
+fn read_back(format: Format, element: &str) -> Inertial {
+    let text = document(format, element);
+    let d =
+        read(&Source::new("t", text.as_str()), format).unwrap_or_else(|e| panic!("{e}\n{text}"));
+    assert_eq!(d.links.len(), 1, "{text}");
+    d.links[0].inertial.clone().expect("an inertial")
+}
+
+#[test]
+fn export_reads_back_to_the_last_bit_in_every_format() {
+    for file in part_files() {
+        let s = massprop::summarize(&file, &massprop::Settings::default()).unwrap();
+        let path = file.to_str().unwrap();
+        for (format, to) in [
+            (Format::Urdf, "urdf"),
+            (Format::Sdf, "sdf"),
+            (Format::Mjcf, "mjcf"),
+        ] {
+            let element = stdout(&["export", path, "--to", to]);
+            let i = read_back(format, element.trim_end());
+            let ctx = format!("{} --to {to}:\n{element}", file.display());
+            assert_eq!(i.mass.to_bits(), s.mass.to_bits(), "{ctx}");
+            assert_eq!(i.rotation, None, "{ctx}");
+            for k in 0..3 {
+                assert_eq!(i.pos[k].to_bits(), s.center_of_mass[k].to_bits(), "{ctx}");
+            }
+            let m = i.tensor.matrix();
+            for r in 0..3 {
+                for c in 0..3 {
+                    // −0 is written 0: the same value, and the only
+                    // difference in bits allowed.
+                    assert!(
+                        m[r][c].to_bits() == s.inertia_com[r][c].to_bits()
+                            || (m[r][c] == 0.0 && s.inertia_com[r][c] == 0.0),
+                        "{ctx}: [{r}][{c}] {} against {}",
+                        m[r][c],
+                        s.inertia_com[r][c]
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn principal_mjcf_reads_back_the_principal_moments_to_the_bit_and_the_axes_to_rounding() {
+    for file in part_files() {
+        let s = massprop::summarize(&file, &massprop::Settings::default()).unwrap();
+        let element = stdout(&[
+            "export",
+            file.to_str().unwrap(),
+            "--to",
+            "mjcf",
+            "--principal",
+        ]);
+        let i = read_back(Format::Mjcf, element.trim_end());
+        let ctx = format!("{}:\n{element}", file.display());
+        let d = [i.tensor.xx, i.tensor.yy, i.tensor.zz];
+        for k in 0..3 {
+            assert_eq!(d[k].to_bits(), s.principal_moments[k].to_bits(), "{ctx}");
+        }
+        // The tensor in the link frame, R D Rᵀ, is the file's tensor to a
+        // few roundings of its largest moment (a quaternion's own rounding).
+        let t = i.tensor_in_link().matrix();
+        let big = s.principal_moments[2];
+        for r in 0..3 {
+            for c in 0..3 {
+                let err = (t[r][c] - s.inertia_com[r][c]).abs();
+                assert!(
+                    err <= 16.0 * f64::EPSILON * big,
+                    "{ctx}: [{r}][{c}] off by {err:e}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn principal_is_refused_for_urdf_and_sdformat() {
+    let out = massprop(&[
+        "export",
+        "shapes/flywheel.toml",
+        "--to",
+        "urdf",
+        "--principal",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("`--principal` is for"));
+}
+
+const ARM: &str = r#"<?xml version="1.0"?>
+<!-- a two-link arm -->
+<robot name='arm'>
+	<link name="base">
+		<inertial>
+			<origin xyz="0 0 0.05" rpy="0 0 0"/>
+			<mass value="2.5"/>
+			<inertia ixx="0.01" ixy="0" ixz="0" iyy="0.01" iyz="0" izz="0.02"/>
+		</inertial>
+	</link>
+	<link name='forearm'>
+		<inertial>
+			<mass value="1"/>
+			<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
+		</inertial>
+		<visual><geometry><box size="0.1 0.1 0.4"/></geometry></visual>
+	</link>
+	<joint name="elbow" type="revolute">
+		<parent link="base"/><child link="forearm"/>
+	</joint>
+</robot>
+"#;
+
+#[test]
+fn update_replaces_the_inertial_and_keeps_every_other_byte() {
+    let dir = scratch("robots", "update");
+    let urdf = dir.join("arm.urdf");
+    std::fs::write(&urdf, ARM).unwrap();
+    let u = urdf.to_str().unwrap();
+    let part = "shapes/robot-arm.toml";
+    // --dry-run: a diff on stdout, the file untouched.
+    let diff = stdout(&[
+        "export",
+        part,
+        "--update",
+        u,
+        "--link",
+        "forearm",
+        "--dry-run",
+    ]);
+    assert!(diff.contains("--- a/") && diff.contains("+++ b/"), "{diff}");
+    assert!(diff.contains("-\t\t\t<mass value=\"1\"/>"), "{diff}");
+    assert_eq!(std::fs::read_to_string(&urdf).unwrap(), ARM);
+    // The update: only the forearm's inertial changes.
+    stdout(&["export", part, "--update", u, "--link", "forearm"]);
+    let new = std::fs::read_to_string(&urdf).unwrap();
+    let start = ARM.find("<inertial>\n\t\t\t<mass").unwrap();
+    let end = start + ARM[start..].find("</inertial>").unwrap() + "</inertial>".len();
+    assert!(new.starts_with(&ARM[..start]), "{new}");
+    assert!(new.ends_with(&ARM[end..]), "{new}");
+    // Read back: the part file's values, to the bit.
+    let s = massprop::summarize(repo(part), &massprop::Settings::default()).unwrap();
+    let d = read(&Source::new("arm.urdf", new.as_str()), Format::Urdf).unwrap();
+    let i = d.links[1].inertial.clone().unwrap();
+    assert_eq!(i.mass.to_bits(), s.mass.to_bits());
+    assert_eq!(
+        i.tensor.matrix()[0][1].to_bits(),
+        s.inertia_com[0][1].to_bits()
+    );
+    // Once more: nothing to change.
+    let out = massprop(&["export", part, "--update", u, "--link", "forearm"]);
+    assert!(String::from_utf8_lossy(&out.stderr).contains("unchanged"));
+    assert_eq!(std::fs::read_to_string(&urdf).unwrap(), new);
+    // And `diff` agrees with the link, both ways round.
+    for args in [[part, u], [u, part]] {
+        let out = massprop(&["diff", args[0], args[1], "--link", "forearm"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+    // The base's inertial is not the part file's: a change.
+    let out = massprop(&["diff", part, u, "--link", "base", "--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["link"], "base");
+    assert_eq!(v["changed"], true);
+}
+
+#[test]
+fn update_names_a_link_that_does_not_exist() {
+    let dir = scratch("robots", "no-link");
+    let urdf = dir.join("arm.urdf");
+    std::fs::write(&urdf, ARM).unwrap();
+    let out = massprop(&[
+        "export",
+        "shapes/robot-arm.toml",
+        "--update",
+        urdf.to_str().unwrap(),
+        "--link",
+        "forarm",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("forarm"), "{err}");
+    assert_eq!(std::fs::read_to_string(&urdf).unwrap(), ARM);
+}
+
+/// A URDF of two links whose tensors have all three products equal, p:
+/// their eigenvalues are d + 2p and d − p (twice). `good` (d = 2,
+/// p = −0.9) has moments 0.2, 2.9, 2.9; `bad` is it with the products'
+/// signs flipped (the CAD convention), moments 1.1, 1.1, 3.8, which break
+/// the triangle inequality: 1.1 + 1.1 − 3.8 = −1.6.
+const FLIPPED: &str = r#"<robot name="r">
+  <link name="good">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="2" ixy="-0.9" ixz="-0.9" iyy="2" iyz="-0.9" izz="2"/>
+    </inertial>
+  </link>
+  <link name="bad">
+    <inertial>
+      <mass value="1"/>
+      <inertia ixx="2" ixy="0.9" ixz="0.9" iyy="2" iyz="0.9" izz="2"/>
+    </inertial>
+  </link>
+</robot>
+"#;
+
+#[test]
+fn check_judges_each_link_by_each_engine_and_names_the_cause() {
+    let dir = scratch("robots", "check");
+    let f = dir.join("r.urdf");
+    std::fs::write(&f, FLIPPED).unwrap();
+    let p = f.to_str().unwrap();
+    let out = massprop(&["check", p, "--format", "json"]);
+    assert_eq!(out.status.code(), Some(1));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let file = &v["files"][0];
+    assert_eq!(file["kind"], "urdf");
+    assert_eq!(file["status"], "failed");
+    let links = file["links"].as_array().unwrap();
+    assert_eq!(links[0]["name"], "good");
+    assert!(
+        links[0]["engines"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .all(|e| e["valid"] == true)
+    );
+    assert_eq!(links[1]["name"], "bad");
+    // At the `<inertial>` start tag: line 8, column 5.
+    assert_eq!(
+        (links[1]["line"].as_u64(), links[1]["column"].as_u64()),
+        (Some(8), Some(5))
+    );
+    for e in links[1]["engines"].as_array().unwrap() {
+        assert_eq!(e["valid"], false, "{e}");
+        assert_eq!(e["cause"]["kind"], "products_sign", "{e}");
+        let t = e["rules"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|r| r["rule"] == "triangle")
+            .unwrap();
+        // A + B − C = −1.6 and the margin −1.6/3.8, to a few roundings.
+        assert!((t["value"].as_f64().unwrap() + 1.6).abs() < 1e-14, "{t}");
+        let margin = t["margin"].as_f64().unwrap();
+        assert!((margin + 1.6 / 3.8).abs() < 1e-12, "{t}");
+        assert_eq!(t["holds"], false);
+    }
+    // --engine narrows the verdicts.
+    let out = massprop(&["check", p, "--format", "json", "--engine", "drake"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let engines = v["files"][0]["links"][1]["engines"].as_array().unwrap();
+    assert_eq!(engines.len(), 1);
+    assert_eq!(engines[0]["engine"], "drake");
+    // The table: a line per failure at path:line:col, with the cause.
+    let out = massprop(&["check", p]);
+    let table = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        table.contains(&format!(
+            "{p}:8:5: error: link \"bad\" is invalid under mujoco"
+        )),
+        "{table}"
+    );
+    assert!(
+        table.contains("likely cause: the products of inertia have the wrong sign"),
+        "{table}"
+    );
+    // GitHub annotations point at the element.
+    let out = massprop(&["check", p, "--format", "github"]);
+    let gh = String::from_utf8(out.stdout).unwrap();
+    assert!(gh.contains(",line=8,col=5,"), "{gh}");
+}
+
+#[test]
+fn a_directory_search_finds_robot_descriptions_and_passes_over_other_xml() {
+    let dir = scratch("robots", "walk");
+    std::fs::write(dir.join("r.urdf"), ARM).unwrap();
+    std::fs::write(dir.join("pom.xml"), "<project/>\n").unwrap();
+    std::fs::write(
+        dir.join("scene.xml"),
+        "<mujoco><worldbody><body name=\"b\"><inertial pos=\"0 0 0\" mass=\"1\" diaginertia=\"1 1 1\"/></body></worldbody></mujoco>\n",
+    )
+    .unwrap();
+    let out = massprop(&["check", dir.to_str().unwrap(), "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let kinds: Vec<&str> = v["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["urdf", "mjcf"], "{v}");
+    assert_eq!(out.status.code(), Some(0), "{v}");
+}
+
+#[test]
+fn a_malformed_robot_description_is_invalid_with_its_place() {
+    let dir = scratch("robots", "malformed");
+    let f = dir.join("bad.urdf");
+    std::fs::write(&f, "<robot name=\"r\">\n  <link name=\"a\">\n</robot>\n").unwrap();
+    let out = massprop(&["check", f.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("bad.urdf:3:"), "{err}");
+}
