@@ -132,7 +132,7 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
         ));
     }
     let e = export_of(s, o.principal);
-    let new = update(&source.text, format, link, &e).map_err(|err| match err.at {
+    let new = update(&source.text, format, link, &e).map_err(|err| match err.at() {
         Some(at) => source.error(at..at + 1, err.to_string()),
         None => Diagnostic::file(&source.name, err.to_string()),
     })?;

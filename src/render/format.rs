@@ -1,8 +1,9 @@
-//! Everything about how a value looks to a person, in one place: numbers
-//! to significant digits, percentages, the mark of an undefined ratio, the
-//! display unit of each dimension, and the labels of conventions. Every
-//! table renderer takes its words and digits from here; JSON prints full
-//! precision in SI and needs none of it.
+//! Everything about how a value looks, in one place: numbers to
+//! significant digits for people, the shortest exact decimal for files
+//! other programs read (`shortest`: robot descriptions), percentages, the
+//! mark of an undefined ratio, the display unit of each dimension, and the
+//! labels of conventions. Every table renderer takes its words and digits
+//! from here; JSON prints full precision in SI and needs none of it.
 
 use crate::analysis::Products;
 use crate::compose::{EQUAL_MOMENT_RTOL, Precision};
@@ -210,6 +211,35 @@ pub fn push_sig(out: &mut String, x: f64, digits: usize) {
         }
     }
     out.push_str(trim_zeros(fixed.as_str()));
+}
+
+/// The shortest decimal that reads back as exactly `x`, for files another
+/// program reads (robot descriptions): plain (`0.25`, `1200`) for
+/// 1e-5 ≤ |x| < 1e16 and zero, else with an exponent (`1.5e-7`, `2e20`),
+/// which C's `strtod`, `std::stod` and MuJoCo's parser all read. −0 is
+/// written `0`: a file has no use for the sign of a zero.
+///
+/// NOTE: Rust's `{}` and `{:e}` print the shortest digits that round-trip
+/// (Grisu with a Dragon4 fallback), so neither loses a bit nor adds a digit;
+/// only the notation is chosen here. The plain range stops short of 1e16,
+/// where `{}` would start writing zeros that are not digits of `x`, and of
+/// 1e-5, below which it writes runs of leading zeros.
+pub fn shortest(x: f64) -> String {
+    let mut s = String::new();
+    push_shortest(&mut s, x);
+    s
+}
+
+/// Append `shortest(x)` to `out`.
+pub fn push_shortest(out: &mut String, x: f64) {
+    debug_assert!(x.is_finite(), "a non-finite number cannot be written: {x}");
+    if x == 0.0 {
+        out.push('0');
+    } else if (1e-5..1e16).contains(&x.abs()) {
+        let _ = write!(out, "{x}");
+    } else {
+        let _ = write!(out, "{x:e}");
+    }
 }
 
 fn trim_zeros(s: &str) -> &str {
@@ -468,6 +498,111 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The significant digits of a number as written: no sign, exponent,
+    /// point, leading zeros, or zeros that only place an integer's point.
+    fn significant(s: &str) -> String {
+        let mantissa = s.split('e').next().unwrap().trim_start_matches('-');
+        let digits = if mantissa.contains('.') {
+            mantissa.replace('.', "")
+        } else {
+            mantissa.trim_end_matches('0').to_string()
+        };
+        digits.trim_start_matches('0').to_string()
+    }
+
+    /// `shortest(x)` reads back as `x` to the bit, and has no digit more
+    /// than needed: as many as `{:e}` (shortest round-trip) gives, and the
+    /// correctly rounded decimal of one digit fewer reads back as another
+    /// number.
+    fn assert_shortest(x: f64) {
+        let s = shortest(x);
+        let back: f64 = s.parse().unwrap();
+        let expected = if x == 0.0 { 0.0 } else { x };
+        assert_eq!(back.to_bits(), expected.to_bits(), "{x:e} written {s}");
+        let sci = format!("{x:e}");
+        let n = significant(&sci).len();
+        assert_eq!(significant(&s).len(), n, "{x:e} written {s}");
+        if n > 1 {
+            let places = n - 2;
+            let fewer: f64 = format!("{x:.places$e}").parse().unwrap();
+            assert_ne!(fewer.to_bits(), x.to_bits(), "{x:e} needs fewer digits");
+        }
+        let plain = x == 0.0 || (1e-5..1e16).contains(&x.abs());
+        assert_eq!(!s.contains('e'), plain, "{x:e} written {s}");
+    }
+
+    #[test]
+    fn the_shortest_decimal_of_random_bits_reads_back_exactly() {
+        let mut state = 0x2545_F491_4F6C_DD1D_u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut checked = 0;
+        while checked < 100_000 {
+            let x = f64::from_bits(next());
+            if x.is_finite() {
+                assert_shortest(x);
+                checked += 1;
+            }
+        }
+        // Moderate magnitudes too, where the plain form is used: random
+        // bits are almost all far from 1.
+        for _ in 0..20_000 {
+            let m = (next() >> 11) as f64 / (1u64 << 53) as f64;
+            assert_shortest(m * 10f64.powi((next() % 26) as i32 - 8));
+        }
+    }
+
+    #[test]
+    fn the_shortest_decimal_of_edge_values_reads_back_exactly() {
+        let edges = [
+            0.0,
+            -0.0,
+            f64::MAX,
+            f64::MIN,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            f64::MIN_POSITIVE - f64::from_bits(1),
+            f64::from_bits(1),
+            f64::from_bits(0x000F_FFFF_FFFF_FFFF),
+            f64::EPSILON,
+            0.1,
+            0.2 + 0.1,
+            1.0 / 3.0,
+            2.0 / 3.0,
+            1e-5,
+            1e-5 - 1e-21,
+            1e16,
+            1e16 - 2.0,
+            9007199254740993.0,
+        ];
+        for x in edges {
+            assert_shortest(x);
+        }
+    }
+
+    #[test]
+    fn the_shortest_decimal_is_plain_in_the_middle_and_exponent_at_the_ends() {
+        assert_eq!(shortest(0.0), "0");
+        assert_eq!(shortest(-0.0), "0");
+        assert_eq!(shortest(0.1), "0.1");
+        assert_eq!(shortest(-2.5), "-2.5");
+        assert_eq!(shortest(1200.0), "1200");
+        assert_eq!(shortest(1.0 / 3.0), "0.3333333333333333");
+        assert_eq!(shortest(1e-5), "0.00001");
+        assert_eq!(shortest(9.9e-6), "9.9e-6");
+        assert_eq!(shortest(1.5e-7), "1.5e-7");
+        assert_eq!(shortest(9999999999999998.0), "9999999999999998");
+        assert_eq!(shortest(1e16), "1e16");
+        assert_eq!(shortest(2e20), "2e20");
+        assert_eq!(shortest(-2e20), "-2e20");
+        assert_eq!(shortest(f64::MAX), "1.7976931348623157e308");
+        assert_eq!(shortest(f64::from_bits(1)), "5e-324");
     }
 
     #[test]
