@@ -1,0 +1,433 @@
+//! Reading URDF, SDFormat and MJCF files into a `Description`: the XML is
+//! parsed once (roxmltree, which keeps every node's and attribute's bytes),
+//! then read by the format's own module (`urdf`, `sdf`, `mjcf`). This file
+//! holds what they share: values with the bytes a message points at, numbers
+//! and lists of numbers, keywords, and the roll-pitch-yaw turn that URDF and
+//! SDFormat both write.
+//!
+//! A reader reads what the file says and refuses only what it cannot read
+//! (a word where a number belongs, a required value missing); whether the
+//! values make a valid inertial is the engine checks' question, so negative
+//! masses and moments are read as given.
+
+mod mjcf;
+mod sdf;
+mod urdf;
+
+use super::{Description, Format};
+use crate::diag::{Diagnostic, Source, shorten};
+use crate::numeric::M3;
+use roxmltree::{Document, Node, ParsingOptions};
+use std::ops::Range;
+
+/// Read `source` as a robot description of `format` (from `Format::of_path`
+/// or `Format::of_text`).
+pub fn read(source: &Source, format: Format) -> Result<Description, Diagnostic> {
+    let doc = parse(source)?;
+    let xml = Xml { source };
+    let root = doc.root_element();
+    let expected = match format {
+        Format::Urdf => "robot",
+        Format::Sdf => "sdf",
+        Format::Mjcf => "mujoco",
+    };
+    let found = root.tag_name().name();
+    if found != expected {
+        return Err(xml.error(
+            xml.tag(root),
+            format!(
+                "expected the root element `<{expected}>` of a {} file, found `<{}>`",
+                format.name(),
+                shorten(found)
+            ),
+        ));
+    }
+    match format {
+        Format::Urdf => urdf::read(&xml, root),
+        Format::Sdf => sdf::read(&xml, root),
+        Format::Mjcf => mjcf::read(&xml, root),
+    }
+}
+
+/// The document, or roxmltree's message at the place it names.
+fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
+    // NOTE: a DTD is allowed (some exporters write one, and MuJoCo's and
+    // urdfdom's parsers accept it); roxmltree still guards against entity
+    // expansion bombs.
+    let options = ParsingOptions {
+        allow_dtd: true,
+        ..ParsingOptions::default()
+    };
+    Document::parse_with_options(&source.text, options).map_err(|e| {
+        let pos = e.pos();
+        let at = offset_of(&source.text, pos.row, pos.col);
+        let width = source.text[at..].chars().next().map_or(0, char::len_utf8);
+        // The place is in the diagnostic's own `line:col`, so the message
+        // need not repeat it.
+        let message = e.to_string().replace(&format!(" at {pos}"), "");
+        source.error(at..at + width, format!("not well-formed xml: {message}"))
+    })
+}
+
+/// The byte offset of roxmltree's 1-based row and column (columns count
+/// characters, as `Source::line_col` does).
+fn offset_of(text: &str, row: u32, col: u32) -> usize {
+    let mut start = 0;
+    for _ in 1..row {
+        match text[start..].find('\n') {
+            Some(i) => start += i + 1,
+            None => return text.len(),
+        }
+    }
+    text[start..]
+        .char_indices()
+        .nth(col.saturating_sub(1) as usize)
+        .map_or(text.len(), |(i, _)| start + i)
+}
+
+/// A value as the file wrote it, an attribute's or an element's text, with
+/// the bytes a message points at.
+#[derive(Clone, Debug)]
+struct Value {
+    /// How messages name it: `` `ixy` `` for an attribute, `` `<ixx>` ``
+    /// for an element's text.
+    name: String,
+    /// The text, trimmed (an attribute's as XML normalises it).
+    text: String,
+    /// The value's bytes (the element's start tag when it has no text).
+    range: Range<usize>,
+    /// Whether `range` holds `text` byte for byte (no entity or character
+    /// reference), so that one number of a list can be pointed at.
+    exact: bool,
+}
+
+/// The text being read, for located messages.
+struct Xml<'s> {
+    source: &'s Source,
+}
+
+impl Xml<'_> {
+    fn error(&self, range: Range<usize>, message: impl Into<String>) -> Diagnostic {
+        self.source.error(range, message)
+    }
+
+    /// An element's start tag, `<name …>` (`/>` included), found by
+    /// scanning past quoted attribute values, which may hold `>`.
+    fn tag(&self, node: Node) -> Range<usize> {
+        let start = node.range().start;
+        let bytes = &self.source.text.as_bytes()[start..node.range().end];
+        let mut quote = None;
+        for (i, &b) in bytes.iter().enumerate() {
+            match (quote, b) {
+                (None, b'"' | b'\'') => quote = Some(b),
+                (Some(q), _) if q == b => quote = None,
+                (None, b'>') => return start..start + i + 1,
+                _ => {}
+            }
+        }
+        node.range()
+    }
+
+    /// The attribute `name` of `node`, when given.
+    fn attr(&self, node: Node, name: &str) -> Option<Value> {
+        let a = node.attribute_node(name)?;
+        let raw = a.range_value();
+        let text = a.value();
+        let trimmed = trim_range(&self.source.text, raw.clone());
+        let exact = &self.source.text[raw.clone()] == text;
+        Some(Value {
+            name: format!("`{name}`"),
+            text: text.trim().to_string(),
+            // A value with references keeps its whole range: the trimmed
+            // bytes might not be the trimmed text's.
+            range: if exact { trimmed } else { raw },
+            exact,
+        })
+    }
+
+    /// The attribute `name` of `node`, which `owner`'s element needs.
+    fn required(&self, node: Node, name: &str, owner: &str) -> Result<Value, Diagnostic> {
+        self.attr(node, name).ok_or_else(|| {
+            self.error(
+                self.tag(node),
+                format!(
+                    "`<{}>` of {owner} is missing the required attribute `{name}`",
+                    node.tag_name().name()
+                ),
+            )
+        })
+    }
+
+    /// An element's text (its text children, comments left out).
+    fn text(&self, node: Node) -> Value {
+        let texts: Vec<Node> = node.children().filter(|c| c.is_text()).collect();
+        let text: String = texts.iter().filter_map(|t| t.text()).collect();
+        let range = match (texts.first(), texts.last()) {
+            (Some(a), Some(b)) => trim_range(&self.source.text, a.range().start..b.range().end),
+            _ => 0..0,
+        };
+        let text = text.trim();
+        let exact = texts.len() == 1 && &self.source.text[range.clone()] == text;
+        Value {
+            name: format!("`<{}>`", node.tag_name().name()),
+            text: text.to_string(),
+            range: if range.is_empty() {
+                self.tag(node)
+            } else {
+                range
+            },
+            exact,
+        }
+    }
+
+    /// `v` as one finite number.
+    fn number(&self, v: &Value, owner: &str) -> Result<f64, Diagnostic> {
+        self.parse_number(&v.text, v.range.clone(), v, owner)
+    }
+
+    /// `v` as exactly `N` numbers separated by whitespace.
+    fn numbers<const N: usize>(&self, v: &Value, owner: &str) -> Result<[f64; N], Diagnostic> {
+        let list = self.list(v, owner)?;
+        <[f64; N]>::try_from(list.as_slice()).map_err(|_| {
+            self.error(
+                v.range.clone(),
+                format!(
+                    "{} of {owner}: expected {N} numbers, found {}",
+                    v.name,
+                    list.len()
+                ),
+            )
+        })
+    }
+
+    /// `v` as numbers separated by whitespace (ASCII whitespace, as
+    /// urdfdom, libsdformat and MuJoCo split them; not commas).
+    fn list(&self, v: &Value, owner: &str) -> Result<Vec<f64>, Diagnostic> {
+        tokens(&v.text)
+            .map(|(at, token)| {
+                let range = if v.exact {
+                    v.range.start + at..v.range.start + at + token.len()
+                } else {
+                    v.range.clone()
+                };
+                self.parse_number(token, range, v, owner)
+            })
+            .collect()
+    }
+
+    fn parse_number(
+        &self,
+        text: &str,
+        range: Range<usize>,
+        v: &Value,
+        owner: &str,
+    ) -> Result<f64, Diagnostic> {
+        let text = text.trim();
+        match text.parse::<f64>() {
+            Ok(x) if x.is_finite() => Ok(x),
+            Ok(_) => Err(self.error(
+                range,
+                format!(
+                    "{} of {owner}: expected a finite number, found {}",
+                    v.name,
+                    quoted(text)
+                ),
+            )),
+            Err(_) => Err(self.error(
+                range,
+                format!(
+                    "{} of {owner}: expected a number, found {}",
+                    v.name,
+                    if text.is_empty() {
+                        "nothing".to_string()
+                    } else {
+                        quoted(text)
+                    }
+                ),
+            )),
+        }
+    }
+
+    /// `v` as one of `choices`' words (exact, case included).
+    fn keyword<T: Copy>(
+        &self,
+        v: &Value,
+        owner: &str,
+        choices: &[(&str, T)],
+    ) -> Result<T, Diagnostic> {
+        if let Some((_, t)) = choices.iter().find(|(word, _)| *word == v.text) {
+            return Ok(*t);
+        }
+        let words: Vec<String> = choices.iter().map(|(w, _)| format!("`{w}`")).collect();
+        Err(self.error(
+            v.range.clone(),
+            format!(
+                "{} of {owner}: expected {}, found {}",
+                v.name,
+                or_list(&words),
+                quoted(&v.text)
+            ),
+        ))
+    }
+}
+
+/// `a`, `a or b`, `a, b or c`.
+fn or_list(words: &[String]) -> String {
+    match words {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} or {last}", rest.join(", ")),
+    }
+}
+
+/// A name or value from the file as a message quotes it.
+fn quoted(text: &str) -> String {
+    format!("\"{}\"", shorten(text))
+}
+
+/// The whitespace-separated words of `text` with their byte offsets.
+fn tokens(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.split(|c: char| c.is_ascii_whitespace())
+        .filter(|t| !t.is_empty())
+        .map(move |t| (t.as_ptr() as usize - text.as_ptr() as usize, t))
+}
+
+/// `range` without the whitespace at its ends.
+fn trim_range(text: &str, range: Range<usize>) -> Range<usize> {
+    let s = &text[range.clone()];
+    let start = range.start + (s.len() - s.trim_start().len());
+    let end = range.end - (s.len() - s.trim_end().len());
+    start..end.max(start)
+}
+
+/// The element children of `node` named `name`, in document order.
+fn children<'a, 'i>(node: Node<'a, 'i>, name: &'a str) -> impl Iterator<Item = Node<'a, 'i>> {
+    node.children()
+        .filter(move |c| c.is_element() && c.tag_name().name() == name)
+}
+
+/// The first element child of `node` named `name`.
+fn child<'a, 'i>(node: Node<'a, 'i>, name: &'a str) -> Option<Node<'a, 'i>> {
+    children(node, name).next()
+}
+
+/// `m`, or None when it is exactly no turn: the reader's `rotation` is None
+/// exactly when the file gives no turn.
+fn turn(m: M3<f64>) -> Option<M3<f64>> {
+    let identity = (0..3).all(|i| (0..3).all(|j| m[i][j] == if i == j { 1.0 } else { 0.0 }));
+    (!identity).then_some(m)
+}
+
+/// R = Rz(yaw)·Ry(pitch)·Rx(roll), URDF's `rpy` and SDFormat's pose angles
+/// (turns about the fixed x, then y, then z axes), from each angle's sine
+/// and cosine: the columns are the turned frame's axes.
+fn rpy(roll: (f64, f64), pitch: (f64, f64), yaw: (f64, f64)) -> M3<f64> {
+    let ((sr, cr), (sp, cp), (sy, cy)) = (roll, pitch, yaw);
+    [
+        [cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+        [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+        [-sp, cp * sr, cp * cr],
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    pub(super) fn source(text: &str) -> Source {
+        Source::new("r.xml", text)
+    }
+
+    /// Each column of `m` against the expected column, within 1e-15.
+    pub(super) fn assert_matrix(m: M3<f64>, expected: M3<f64>) {
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!(
+                    (m[i][j] - expected[i][j]).abs() <= 1e-15,
+                    "{m:?} is not {expected:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn malformed_xml_is_reported_at_roxmltrees_place_without_repeating_it() {
+        let text = "<robot name='r'>\n  <link name='a'>\n</robot>\n";
+        let d = read(&source(text), Format::Urdf).unwrap_err().to_string();
+        assert!(
+            d.starts_with(
+                "r.xml:3:1: error: not well-formed xml: expected 'link' tag, not 'robot'\n"
+            ),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_root_element_of_another_format_is_refused() {
+        let text = "<?xml version='1.0'?>\n<mujoco model='m'/>\n";
+        let d = read(&source(text), Format::Urdf).unwrap_err().to_string();
+        assert!(
+            d.starts_with(
+                "r.xml:2:1: error: expected the root element `<robot>` of a urdf file, found `<mujoco>`\n"
+            ),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_doctype_is_allowed() {
+        let text = "<?xml version='1.0'?>\n<!DOCTYPE robot [<!ENTITY m '2'>]>\n<robot name='r'><link name='a'><inertial><mass value='&m;'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>";
+        let d = read(&source(text), Format::Urdf).unwrap();
+        assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
+    }
+
+    #[test]
+    fn roll_pitch_yaw_is_z_then_y_then_x() {
+        // A quarter roll, then a quarter pitch about the fixed y, no yaw:
+        // R = Ry·Rx, by hand. Its first column, x turned, is Ry x̂ = −ẑ.
+        let quarter = (1.0, 0.0);
+        let none = (0.0, 1.0);
+        let m = rpy(quarter, quarter, none);
+        assert_matrix(m, [[0.0, 1.0, 0.0], [0.0, 0.0, -1.0], [-1.0, 0.0, 0.0]]);
+    }
+
+    #[test]
+    fn an_identity_is_no_turn() {
+        let zero = (0.0, 1.0);
+        assert_eq!(turn(rpy(zero, zero, zero)), None);
+        assert!(turn(rpy((-0.0, 1.0), zero, (1e-300, 1.0))).is_some());
+    }
+
+    #[test]
+    fn tokens_keep_their_offsets() {
+        let t: Vec<_> = tokens(" 1\t2.5  x ").collect();
+        assert_eq!(t, vec![(1, "1"), (3, "2.5"), (8, "x")]);
+    }
+
+    #[test]
+    fn a_word_in_a_list_is_pointed_at() {
+        let text = "<robot name='r'><link name='a'><inertial><origin xyz='0 abc 0'/><mass value='1'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>";
+        let d = read(&source(text), Format::Urdf).unwrap_err();
+        assert_eq!(
+            d.message(),
+            "`xyz` of link \"a\": expected a number, found \"abc\""
+        );
+        let at = text.find("abc").unwrap();
+        assert!(
+            d.to_string().starts_with(&format!("r.xml:1:{}:", at + 1)),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_start_tag_ends_at_the_first_unquoted_bracket() {
+        let text = "<robot name='a>b'><link name=\"x>\"/></robot>";
+        let src = source(text);
+        let doc = Document::parse(text).unwrap();
+        let xml = Xml { source: &src };
+        let root = doc.root_element();
+        assert_eq!(&text[xml.tag(root)], "<robot name='a>b'>");
+        let link = child(root, "link").unwrap();
+        assert_eq!(&text[xml.tag(link)], "<link name=\"x>\"/>");
+    }
+}
