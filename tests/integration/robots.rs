@@ -74,8 +74,15 @@ fn export_reads_back_to_the_last_bit_in_every_format() {
             let ctx = format!("{} --to {to}:\n{element}", file.display());
             assert_eq!(i.mass.to_bits(), s.mass.to_bits(), "{ctx}");
             assert_eq!(i.rotation, None, "{ctx}");
+            // The link origin is the reference point when the file gives one
+            // (`[analysis] about`), else the file's origin.
+            let c = if s.reference_given {
+                s.center_of_mass_ref
+            } else {
+                s.center_of_mass
+            };
             for k in 0..3 {
-                assert_eq!(i.pos[k].to_bits(), s.center_of_mass[k].to_bits(), "{ctx}");
+                assert_eq!(i.pos[k].to_bits(), c[k].to_bits(), "{ctx}");
             }
             let m = i.tensor.matrix();
             for r in 0..3 {
@@ -286,10 +293,10 @@ fn check_judges_each_link_by_each_engine_and_names_the_cause() {
             .all(|e| e["valid"] == true)
     );
     assert_eq!(links[1]["name"], "bad");
-    // At the `<inertial>` start tag: line 8, column 5.
+    // At the `<inertial>` start tag: line 9, column 5.
     assert_eq!(
         (links[1]["line"].as_u64(), links[1]["column"].as_u64()),
-        (Some(8), Some(5))
+        (Some(9), Some(5))
     );
     for e in links[1]["engines"].as_array().unwrap() {
         assert_eq!(e["valid"], false, "{e}");
@@ -317,7 +324,7 @@ fn check_judges_each_link_by_each_engine_and_names_the_cause() {
     let table = String::from_utf8(out.stdout).unwrap();
     assert!(
         table.contains(&format!(
-            "{p}:8:5: error: link \"bad\" is invalid under mujoco"
+            "{p}:9:5: error: link \"bad\" is invalid under mujoco"
         )),
         "{table}"
     );
@@ -328,7 +335,7 @@ fn check_judges_each_link_by_each_engine_and_names_the_cause() {
     // GitHub annotations point at the element.
     let out = massprop(&["check", p, "--format", "github"]);
     let gh = String::from_utf8(out.stdout).unwrap();
-    assert!(gh.contains(",line=8,col=5,"), "{gh}");
+    assert!(gh.contains(",line=9,col=5,"), "{gh}");
 }
 
 #[test]
