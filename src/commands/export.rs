@@ -11,7 +11,7 @@ use super::Outcome;
 use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, visible};
-use crate::robot::write::{Export, inertial_element, unified_diff, update};
+use crate::render::inertial::{Export, inertial_element, unified_diff, update};
 use crate::robot::{Format, Tensor};
 use std::path::PathBuf;
 

@@ -17,6 +17,7 @@ pub mod ci;
 pub mod diff;
 pub mod format;
 pub mod grid;
+pub mod inertial;
 pub mod materials;
 pub mod report;
 pub mod robot;

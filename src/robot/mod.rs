@@ -1,5 +1,6 @@
 //! Robot description files: the `<inertial>` elements of URDF, SDFormat and
-//! MJCF files, read (`read`), written and replaced in place (`write`), and
+//! MJCF files, read (`read`; written and replaced in place by
+//! `render::inertial`), and
 //! judged by each simulator's own rule (`engine`, with the likely cause of
 //! a failure in `cause`). docs/robots.md is the contract.
 //!
@@ -10,7 +11,6 @@ pub mod cause;
 pub mod check;
 pub mod engine;
 pub mod read;
-pub mod write;
 
 use std::ops::Range;
 

@@ -435,7 +435,10 @@ fn bless_refuses_a_read_only_file() {
     let out = crate::common::massprop(&["check", "--bless", f.to_str().unwrap()]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(stderr.contains("read-only: not blessed"), "{stderr}");
+    assert!(
+        stderr.contains("read-only: the blessed file is not written"),
+        "{stderr}"
+    );
     assert_eq!(std::fs::read_to_string(&f).unwrap(), text);
     // Blessed while writable, then read-only: nothing to change.
     let mut perms = std::fs::metadata(&f).unwrap().permissions();

@@ -81,10 +81,10 @@ fn export_reads_back_to_the_last_bit_in_every_format() {
             } else {
                 s.center_of_mass
             };
-            for k in 0..3 {
-                assert_eq!(i.pos[k].to_bits(), c[k].to_bits(), "{ctx}");
-            }
+            let bits = |v: [f64; 3]| v.map(f64::to_bits);
+            assert_eq!(bits(i.pos), bits(c), "{ctx}");
             let m = i.tensor.matrix();
+            #[allow(clippy::needless_range_loop, reason = "two matrices by index")]
             for r in 0..3 {
                 for c in 0..3 {
                     // −0 is written 0: the same value, and the only
@@ -116,13 +116,16 @@ fn principal_mjcf_reads_back_the_principal_moments_to_the_bit_and_the_axes_to_ro
         let i = read_back(Format::Mjcf, element.trim_end());
         let ctx = format!("{}:\n{element}", file.display());
         let d = [i.tensor.xx, i.tensor.yy, i.tensor.zz];
-        for k in 0..3 {
-            assert_eq!(d[k].to_bits(), s.principal_moments[k].to_bits(), "{ctx}");
-        }
+        assert_eq!(
+            d.map(f64::to_bits),
+            s.principal_moments.map(f64::to_bits),
+            "{ctx}"
+        );
         // The tensor in the link frame, R D Rᵀ, is the file's tensor to a
         // few roundings of its largest moment (a quaternion's own rounding).
         let t = i.tensor_in_link().matrix();
         let big = s.principal_moments[2];
+        #[allow(clippy::needless_range_loop, reason = "two matrices by index")]
         for r in 0..3 {
             for c in 0..3 {
                 let err = (t[r][c] - s.inertia_com[r][c]).abs();

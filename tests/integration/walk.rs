@@ -125,5 +125,8 @@ fn a_search_that_finds_no_part_file_says_so() {
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     let stderr = String::from_utf8(out.stderr).unwrap();
-    assert!(stderr.starts_with("error: no part files found"), "{stderr}");
+    assert!(
+        stderr.starts_with("error: no part files or robot descriptions found"),
+        "{stderr}"
+    );
 }

@@ -13,8 +13,8 @@ mod update;
 pub use error::UpdateError;
 pub use update::update;
 
-use super::{Format, Tensor};
 use crate::render::format::push_shortest;
+use crate::robot::{Format, Tensor};
 
 /// What `export` writes: a body's inertial in the link frame, SI.
 #[derive(Clone, Copy, Debug, PartialEq)]
