@@ -1,0 +1,60 @@
+//! MuJoCo as an independent oracle: `tests/oracle/mujoco_oracle.py` checks
+//! on a generated corpus that `check --engine mujoco` agrees with MuJoCo's
+//! own compiler on every file, and that `export --to mjcf` loads into
+//! MuJoCo with the report's mass, centre and principal moments.
+//!
+//! It needs Python with the `mujoco` package: `MASSPROP_ORACLE_PYTHON` if
+//! set, else `python3`. Without it the test says why on stderr and passes,
+//! so that `cargo test` needs nothing beyond cargo.
+
+use std::path::Path;
+use std::process::Command;
+
+/// The interpreter to try: `MASSPROP_ORACLE_PYTHON`, else `python3`.
+fn python() -> String {
+    std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
+}
+
+/// Why `python` cannot run the oracle, or None when it can import mujoco.
+fn missing_mujoco(python: &str) -> Option<String> {
+    match Command::new(python).args(["-c", "import mujoco"]).output() {
+        Err(e) => Some(format!("`{python}` does not run ({e})")),
+        Ok(out) if !out.status.success() => {
+            // The traceback's last line says why (ModuleNotFoundError: …).
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            let why = stderr.trim().lines().last().unwrap_or("no message");
+            Some(format!("`{python} -c \"import mujoco\"` fails: {why}"))
+        }
+        Ok(_) => None,
+    }
+}
+
+#[test]
+fn check_and_export_agree_with_mujocos_own_compiler() {
+    let python = python();
+    if let Some(why) = missing_mujoco(&python) {
+        eprintln!(
+            "skipped: the MuJoCo oracle needs Python with the mujoco package; {why}. \
+             Set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
+        );
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/mujoco_oracle.py");
+    let out = Command::new(&python)
+        .arg(&script)
+        .args([
+            "--massprop",
+            env!("CARGO_BIN_EXE_massprop"),
+            "--cases",
+            "300",
+        ])
+        .output()
+        .expect("the oracle script runs");
+    assert!(
+        out.status.success(),
+        "the MuJoCo oracle found disagreements (exit {:?}):\n{}\n{}",
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
