@@ -86,12 +86,7 @@ pub fn table(out: &mut String, path: &str, r: &RobotResult, colour: bool, width:
     let p = Palette::of(colour);
     let (e, w) = (p.error, p.warning);
     let path = visible(path);
-    let engines: Vec<_> = r
-        .links
-        .iter()
-        .find(|l| !l.engines.is_empty())
-        .map(|l| l.engines.iter().map(|e| e.verdict.engine).collect())
-        .unwrap_or_default();
+    let engines = &r.engines;
     out.push_str(&format!(
         "{path}: {} file, {} link{}; margins: the tightest rule's, relative ((A + B − C)/C for the triangle inequality)\n",
         r.format.name(),
@@ -119,11 +114,12 @@ pub fn table(out: &mut String, path: &str, r: &RobotResult, colour: bool, width:
                 }
                 None => row.extend(["—".to_string(), "—".to_string(), "—".to_string()]),
             }
-            if l.engines.is_empty() {
-                row.extend(engines.iter().map(|_| "not checked".to_string()));
-            } else {
-                row.extend(l.engines.iter().map(cell));
-            }
+            row.extend(engines.iter().map(|e| {
+                l.engines
+                    .iter()
+                    .find(|x| x.verdict.engine == *e)
+                    .map_or_else(|| "not checked".to_string(), cell)
+            }));
             row
         })
         .collect();

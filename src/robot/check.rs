@@ -58,6 +58,8 @@ impl LinkResult {
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotResult {
     pub format: Format,
+    /// The engines asked for (`--engine`).
+    pub engines: Vec<Engine>,
     pub links: Vec<LinkResult>,
 }
 
@@ -79,17 +81,49 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             ));
         }
         let Some(inertial) = &link.inertial else {
-            warnings.push(match d.format {
-                Format::Urdf => "no <inertial>: URDF takes the link as massless; fine for a fixed link, and refused by most engines on a moving one".to_string(),
-                Format::Sdf => "no explicit <inertial> (or `auto=\"true\"`): Gazebo gives it a mass of 1 kg and a unit tensor, or computes one from its collisions; not checked".to_string(),
-                Format::Mjcf => "no <inertial>: MuJoCo computes the body's inertia from its geoms; not checked".to_string(),
-            });
+            // Massless: MuJoCo's verdict where the file leaves it massless
+            // (URDF; MJCF without inertia from the geoms); the other
+            // engines' inertia for it is their converters' choice, not
+            // judged here.
+            let massless = match d.format {
+                Format::Urdf => true,
+                Format::Mjcf => d.compiler.inertiafromgeom == Some(false),
+                Format::Sdf => false,
+            };
+            let mut results = Vec::new();
+            if massless && engines.contains(&Engine::Mujoco) {
+                let facts = Facts {
+                    mass: 0.0,
+                    tensor: super::Tensor::default(),
+                    written: if d.format == Format::Urdf {
+                        super::Written::Attributes
+                    } else {
+                        super::Written::Diagonal
+                    },
+                    moving: link.moving,
+                    rescued: link.moving && carried(d, i),
+                };
+                let verdict = engine::judge(Engine::Mujoco, &facts, &d.compiler);
+                results.push(EngineResult {
+                    verdict,
+                    cause: None,
+                });
+            }
+            match d.format {
+                Format::Urdf if link.moving => warnings.push(
+                    "no <inertial> on a moving link: URDF takes it as massless, which engines refuse unless a fixed child carries mass (MuJoCo fuses it in); Gazebo and Drake not checked".to_string(),
+                ),
+                Format::Sdf => warnings.push(
+                    "no explicit <inertial> (or `auto=\"true\"`): Gazebo gives it a mass of 1 kg and a unit tensor, or computes one from its collisions; not checked".to_string(),
+                ),
+                _ => {}
+            }
             links.push(LinkResult {
                 name: link.name.clone(),
                 span: source.span(start_tag(source, link.range.clone())),
                 moving: link.moving,
                 inertial: None,
-                engines: Vec::new(),
+                engines: results,
                 warnings,
             });
             continue;
@@ -99,6 +133,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             tensor: inertial.tensor,
             written: inertial.written,
             moving: link.moving,
+            rescued: link.moving && carried(d, i),
         };
         let in_link = inertial.tensor_in_link();
         let values = engine::principal_moments(&inertial.tensor).map(|m| Values {
@@ -131,8 +166,39 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
     }
     RobotResult {
         format: d.format,
+        engines: engines.to_vec(),
         links,
     }
+}
+
+/// Whether a jointless descendant of link `i`, reached through jointless
+/// links only, has mass and three principal moments of at least
+/// mjMINVAL: MuJoCo then accepts `i` moving without mass of its own
+/// (tests/oracle/MUJOCO-RULES.md, rule 4).
+fn carried(d: &Description, i: usize) -> bool {
+    let floor = engine::MJ_MINVAL;
+    let heavy = |l: &super::Link| {
+        l.inertial.as_ref().is_some_and(|x| {
+            x.mass >= floor && engine::principal_moments(&x.tensor).is_some_and(|m| m[0] >= floor)
+        })
+    };
+    // Breadth first over fixed children; `seen` guards a malformed file's
+    // cycle of joints.
+    let mut seen = vec![false; d.links.len()];
+    let mut queue = vec![i];
+    seen[i] = true;
+    while let Some(p) = queue.pop() {
+        for (j, l) in d.links.iter().enumerate() {
+            if l.parent == Some(p) && !l.moving && !seen[j] {
+                if heavy(l) {
+                    return true;
+                }
+                seen[j] = true;
+                queue.push(j);
+            }
+        }
+    }
+    false
 }
 
 /// An element's start tag: where a message points (the whole element may

@@ -61,6 +61,10 @@ pub struct Facts {
     pub tensor: Tensor,
     pub written: Written,
     pub moving: bool,
+    /// A moving body that a jointless descendant with mass and inertia
+    /// carries (reached through jointless bodies only): MuJoCo waives the
+    /// moving body's floor for it.
+    pub rescued: bool,
 }
 
 /// One part of an engine's rule, and how it came out.
@@ -198,63 +202,123 @@ fn verdict(engine: Engine, rules: Vec<Rule>, note: Option<String>) -> Verdict {
     }
 }
 
-/// MuJoCo 4.0 (tests/oracle/MUJOCO-RULES.md has the experiments).
+/// MuJoCo 4.0, in its order per body (tests/oracle/MUJOCO-RULES.md has
+/// the experiments): the `fullinertia` eigenvalue floor; mass and moments
+/// raised to `boundmass` and `boundinertia` (so a negative value is
+/// clamped to 0 by default, silently); the triangle inequality on the
+/// sums rounded to f64, no tolerance (or `balanceinertia`'s mean); a
+/// moving body's floor mjMINVAL, unless a jointless descendant carries it.
 fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
+    let mut rules = Vec::new();
+    let mut notes = Vec::new();
+    let t = &f.tensor;
+    // URDF's all-zero tensor is no fullinertia: zero inertia, fine on a
+    // link that does not move.
+    let zero = [t.xx, t.yy, t.zz, t.xy, t.xz, t.yz]
+        .iter()
+        .all(|&x| x == 0.0);
+    let full = match f.written {
+        Written::Diagonal => false,
+        Written::Attributes => !zero,
+        _ => true,
+    };
+    if full {
+        rules.push(if c.boundinertia > 0.0 {
+            let limit = -MJ_EPS * moments[2].max(1.0);
+            smallest(
+                "eigenvalues",
+                moments,
+                limit,
+                moments[0] >= limit,
+                "with boundinertia > 0: smallest eigenvalue of fullinertia ≥ −mjEPS · max(1, largest) (mjEPS = 1e-14)".into(),
+            )
+        } else {
+            smallest(
+                "eigenvalues",
+                moments,
+                MJ_EPS,
+                moments[0] >= MJ_EPS,
+                format!("smallest eigenvalue of fullinertia ≥ mjEPS = {MJ_EPS:e} kg·m²"),
+            )
+        });
+    }
     if c.inertiafromgeom == Some(true) {
         return verdict(
             Engine::Mujoco,
-            Vec::new(),
+            rules,
             Some(
-                "not used: `inertiafromgeom=\"true\"` makes MuJoCo compute the body's inertia from its geoms"
+                "`inertiafromgeom=\"true\"`: MuJoCo takes the body's mass and inertia from its geoms; of the <inertial> only a fullinertia's eigenvalue floor applies"
                     .into(),
             ),
         );
     }
-    let mut rules = Vec::new();
-    if f.written == Written::Diagonal {
-        let [x, y, z] = [f.tensor.xx, f.tensor.yy, f.tensor.zz];
-        rules.push(smallest(
-            "diagonal",
-            moments,
-            0.0,
-            x >= 0.0 && y >= 0.0 && z >= 0.0,
-            "each diaginertia value ≥ 0".into(),
-        ));
-    } else {
-        rules.push(smallest(
-            "eigenvalues",
-            moments,
-            MJ_EPS,
-            moments[0] >= MJ_EPS,
-            format!("smallest eigenvalue of fullinertia ≥ mjEPS = {MJ_EPS:e} kg·m²"),
+    // The bounds, which clamp what is below them (0 by default).
+    let mass = f.mass.max(c.boundmass);
+    if f.mass < mass {
+        notes.push(format!(
+            "MuJoCo raises the mass {} to {} (boundmass) without a word",
+            f.mass, mass
         ));
     }
-    rules.push(mass_rule("mass", f.mass, 0.0, f.mass >= 0.0, "mass ≥ 0"));
-    // boundmass and boundinertia raise what is below them first.
-    let mass = if c.boundmass > 0.0 {
-        f.mass.max(c.boundmass)
+    let (diagonal, source) = if f.written == Written::Diagonal {
+        ([t.xx, t.yy, t.zz], "diaginertia value")
+    } else if full {
+        (moments, "principal moment")
     } else {
-        f.mass
+        ([0.0; 3], "principal moment")
     };
-    let bounded = if c.boundinertia > 0.0 {
-        let mut m = moments.map(|x| x.max(c.boundinertia));
-        m.sort_by(f64::total_cmp);
-        m
+    let mut bounded = diagonal.map(|x| x.max(c.boundinertia));
+    if diagonal.iter().zip(&bounded).any(|(a, b)| a < b)
+        && (f.written == Written::Diagonal || c.boundinertia > 0.0)
+    {
+        notes.push(format!(
+            "MuJoCo raises each {source} below {} (boundinertia) to it without a word",
+            c.boundinertia
+        ));
+    }
+    bounded.sort_by(f64::total_cmp);
+    // Only a negative bound lets a negative value through the clamp.
+    if mass < 0.0 || bounded[0] < 0.0 {
+        rules.push(if mass < 0.0 {
+            mass_rule(
+                "nonnegative",
+                mass,
+                0.0,
+                false,
+                "mass ≥ 0 after boundmass (a negative boundmass lets a negative mass through)",
+            )
+        } else {
+            smallest(
+                "nonnegative",
+                bounded,
+                0.0,
+                false,
+                "each moment ≥ 0 after boundinertia (a negative boundinertia lets a negative moment through)".into(),
+            )
+        });
+    }
+    let [a, b, cc] = bounded;
+    let breaks = a + b < cc || a + cc < b || b + cc < a;
+    if c.balanceinertia && breaks {
+        let mean = ((a + b) + cc) / 3.0;
+        bounded = [mean; 3];
+        notes.push(format!(
+            "`balanceinertia=\"true\"`: MuJoCo replaces the moments, which break the triangle inequality, by their mean {mean}"
+        ));
     } else {
-        moments
-    };
-    if !c.balanceinertia {
-        let mut t = triangle(
+        let mut r = triangle(
             bounded,
             0.0,
-            "A + B ≥ C for the principal moments A ≤ B ≤ C, no tolerance".into(),
+            "A + B ≥ C for the principal moments, the sum rounded to f64, no tolerance".into(),
         );
-        // Only A + B < C fails: MuJoCo checks the sorted moments' one
-        // inequality that can fail.
-        t.holds = !(bounded[0] + bounded[1] < bounded[2]);
-        rules.push(t);
+        r.holds = !breaks;
+        rules.push(r);
     }
-    if f.moving {
+    if f.moving && f.rescued {
+        notes.push(
+            "a moving body, whose mass and inertia a jointless child carries (MuJoCo then waives its floor)".into(),
+        );
+    } else if f.moving {
         rules.push(mass_rule(
             "moving_mass",
             mass,
@@ -270,9 +334,7 @@ fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
             "a moving body's principal moments ≥ mjMINVAL = 1e-15 kg·m²".into(),
         ));
     }
-    let note = c
-        .balanceinertia
-        .then(|| "`balanceinertia=\"true\"`: MuJoCo replaces moments that break the triangle inequality by their mean".to_string());
+    let note = (!notes.is_empty()).then(|| notes.join("; "));
     verdict(Engine::Mujoco, rules, note)
 }
 
@@ -366,6 +428,7 @@ mod tests {
             },
             written,
             moving,
+            rescued: false,
         }
     }
 
@@ -426,8 +489,86 @@ mod tests {
     fn a_moving_mujoco_body_needs_mass_and_moments_of_mj_minval() {
         let mut f = facts(1e-16, 1e-16, 1e-16, Written::Diagonal, true);
         assert!(!valid(Engine::Mujoco, &f));
+        f.rescued = true;
+        assert!(valid(Engine::Mujoco, &f));
+        f.rescued = false;
         f.moving = false;
         assert!(valid(Engine::Mujoco, &f));
+    }
+
+    #[test]
+    fn mujoco_clamps_a_negative_mass_or_diagonal_on_a_fixed_body() {
+        let mut f = facts(1.0, 1.0, -1.0, Written::Diagonal, false);
+        f.mass = -2.0;
+        let v = judge(Engine::Mujoco, &f, &MujocoCompiler::default());
+        assert!(v.valid, "{v:?}");
+        assert!(v.note.unwrap().contains("boundmass"));
+        // (1, 2, −1) clamps to (1, 2, 0), which breaks the triangle.
+        assert!(!valid(
+            Engine::Mujoco,
+            &facts(1.0, 2.0, -1.0, Written::Diagonal, false)
+        ));
+    }
+
+    #[test]
+    fn mujoco_rounds_the_triangle_sum_to_f64() {
+        // fl(0.1 + 0.2) = 0.30000000000000004: equal, so it holds.
+        assert!(valid(
+            Engine::Mujoco,
+            &facts(0.1, 0.2, 0.30000000000000004, Written::Diagonal, false)
+        ));
+    }
+
+    #[test]
+    fn balanceinertia_replaces_the_moments_by_their_mean_which_must_still_reach_mj_minval() {
+        let c = MujocoCompiler {
+            balanceinertia: true,
+            ..MujocoCompiler::default()
+        };
+        assert!(accepts(
+            Engine::Mujoco,
+            &facts(1.0, 1.0, 3.0, Written::Diagonal, true),
+            &c
+        ));
+        assert!(!accepts(
+            Engine::Mujoco,
+            &facts(0.0, 0.0, 3e-15, Written::Diagonal, true),
+            &c
+        ));
+        assert!(accepts(
+            Engine::Mujoco,
+            &facts(0.0, 0.0, 3.0000000000000004e-15, Written::Diagonal, true),
+            &c
+        ));
+    }
+
+    #[test]
+    fn boundinertia_relaxes_the_eigenvalue_floor_to_a_relative_one() {
+        let c = MujocoCompiler {
+            boundinertia: 1e-3,
+            ..MujocoCompiler::default()
+        };
+        assert!(accepts(
+            Engine::Mujoco,
+            &facts(1.0, 1.0, -1e-14, Written::Full, false),
+            &c
+        ));
+        assert!(!accepts(
+            Engine::Mujoco,
+            &facts(1.0, 1.0, (-1e-14f64).next_down(), Written::Full, false),
+            &c
+        ));
+    }
+
+    #[test]
+    fn a_urdf_all_zero_tensor_is_no_fullinertia_on_a_fixed_link() {
+        let f = facts(0.0, 0.0, 0.0, Written::Attributes, false);
+        assert!(valid(Engine::Mujoco, &f));
+        assert!(!valid(
+            Engine::Mujoco,
+            &facts(0.0, 0.0, 0.0, Written::Full, false)
+        ));
+        assert!(!valid(Engine::Mujoco, &Facts { moving: true, ..f }));
     }
 
     #[test]

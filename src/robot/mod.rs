@@ -205,6 +205,10 @@ pub struct Link {
     /// `<static>` too, in SDFormat: it floats); MJCF, a body with a
     /// `<joint>` or `<freejoint>` child.
     pub moving: bool,
+    /// The link it hangs from, an index into `Description::links`: URDF,
+    /// the parent of the joint whose child it is; MJCF, the enclosing
+    /// body. None for a root (and for SDFormat, whose tree is not read).
+    pub parent: Option<usize>,
 }
 
 /// The MJCF `<compiler>` settings (or URDF `<mujoco><compiler>`) that change

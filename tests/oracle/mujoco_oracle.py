@@ -31,11 +31,13 @@ one-ulp and exact-equality cases use `diaginertia` and product-free
 tests/oracle/MUJOCO-RULES.md has the rules and the experiments behind them.
 
 Part two (export). For every `shapes/*.toml` that `massprop report` accepts,
-`massprop export FILE --to mjcf` (a `fullinertia` element) and
+`massprop export FILE --to mjcf --about 0,0,0` (a `fullinertia` element;
+the link origin at the file's origin, whatever the file's own `about`) and
 `... --principal` (`diaginertia` + `quat`) are each put in a body on a
 freejoint, compiled, and MuJoCo's mass, centre (`body_ipos`) and sorted
 principal moments (`body_inertia`) compared with `massprop report FILE
---format json` to a relative 1e-12.
+--format json --about 0,0,0` (`mass`, `center_of_mass_ref`,
+`principal_moments`) to a relative 1e-12.
 
 Exit status: 0 when everything agrees, 1 on any disagreement or mismatch,
 2 when the oracle itself cannot run (no mujoco, no binary, bad arguments).
@@ -1102,17 +1104,20 @@ def check_export(massprop: str) -> int:
     failures = 0
     for shape in shapes:
         name = os.path.relpath(shape, REPO)
-        rep = run([massprop, "report", shape, "--format", "json"])
+        # The link frame is the report frame (`about`, `axes`): pinned to the
+        # file's origin for both commands, the centre is `center_of_mass_ref`.
+        frame = ["--about", "0,0,0"]
+        rep = run([massprop, "report", shape, "--format", "json", *frame])
         if rep.returncode != 0:
             print(f"  skip  {name}: `massprop report` rejects it")
             continue
         report = json.loads(rep.stdout)
-        mass, com = report["mass"], report["center_of_mass"]
+        mass, com = report["mass"], report["center_of_mass_ref"]
         moments = sorted(report["principal_moments"])
         gyration = math.sqrt(max(moments) / mass) if mass > 0 else 0.0
         for flags in ([], ["--principal"]):
             label = f"{name} {' '.join(flags) or '(fullinertia)'}"
-            exp = run([massprop, "export", shape, "--to", "mjcf", *flags])
+            exp = run([massprop, "export", shape, "--to", "mjcf", *frame, *flags])
             found = INERTIAL_RE.findall(exp.stdout)
             if exp.returncode != 0 or len(found) != 1:
                 failures += 1

@@ -112,6 +112,8 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     }
     let mut links = Vec::new();
     let mut count = 0;
+    // Each body's index, to find a body's parent among those before it.
+    let mut index = std::collections::HashMap::new();
     for world in children(mujoco, "worldbody") {
         // Bodies at any depth, also inside `<frame>`s; the world body
         // itself is not one.
@@ -140,11 +142,18 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
             let moving = body
                 .children()
                 .any(|c| c.is_element() && matches!(c.tag_name().name(), "joint" | "freejoint"));
+            let parent = body
+                .ancestors()
+                .skip(1)
+                .find(|n| n.is_element() && n.tag_name().name() == "body")
+                .and_then(|n| index.get(&n.id()).copied());
+            index.insert(body.id(), links.len());
             links.push(Link {
                 name,
                 range: body.range(),
                 inertial,
                 moving,
+                parent,
             });
         }
     }

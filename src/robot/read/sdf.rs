@@ -59,6 +59,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
             range: f.node.range(),
             inertial,
             moving,
+            parent: None,
         });
     }
     let name = match top_level.as_slice() {

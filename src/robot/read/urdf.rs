@@ -30,7 +30,23 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
             range: link.range(),
             inertial,
             moving: moving.contains(name),
+            parent: None,
         });
+    }
+    // Each link's parent: the parent of the first joint naming it as the
+    // child (the first link of that name).
+    for j in children(robot, "joint") {
+        let end = |tag| child(j, tag).and_then(|e| e.attribute("link"));
+        let (Some(parent), Some(kid)) = (end("parent"), end("child")) else {
+            continue;
+        };
+        let p = links.iter().position(|l: &Link| l.name == parent);
+        if let Some(k) = links.iter().position(|l: &Link| l.name == kid)
+            && links[k].parent.is_none()
+            && p != Some(k)
+        {
+            links[k].parent = p;
+        }
     }
     let mut settings = mjcf::Settings::default();
     for mujoco in children(robot, "mujoco") {
