@@ -32,6 +32,8 @@ pub enum Kind {
     Order,
     Units,
     Shifted,
+    /// Not a slip: the tensor fails by a hair, at the edge of physical.
+    Boundary,
 }
 
 /// A likely cause: the slip, and what to do about it.
@@ -140,17 +142,63 @@ pub fn mirror_warning(d: &Description, i: usize) -> Option<String> {
     })
 }
 
+/// The axis across whose plane two centres of mass are mirror images: the
+/// one component opposite and non-zero, the others equal (to `SAME` of the
+/// distance).
+fn mirror_axis(a: [f64; 3], b: [f64; 3]) -> Option<usize> {
+    let size = a.iter().chain(&b).fold(0.0f64, |m, x| m.max(x.abs()));
+    let near = |x: f64, y: f64| (x - y).abs() <= SAME * size;
+    let mut found = None;
+    for k in 0..3 {
+        if near(a[k], b[k]) {
+            continue;
+        }
+        if near(a[k], -b[k]) && found.is_none() {
+            found = Some(k);
+        } else {
+            return None;
+        }
+    }
+    found
+}
+
 fn facts_with(f: &Facts, tensor: Tensor) -> Facts {
     Facts { tensor, ..*f }
 }
 
+/// A failure by less than this (relative margin) is at the boundary of
+/// physical rather than a slip: the slips above break a rule by a large
+/// fraction, and any repair (adding the parallel-axis term, scaling a
+/// moment) would "fix" a hair's breadth. NOTE: 1e-4, as part files and CAD
+/// reports round moments to 4 to 6 digits, which can tip a flat plate's
+/// A + B = C either way.
+const MARGINAL: f64 = 1e-4;
+
 /// The likely cause of `engine` refusing link `i` (whose facts are `f`), if
-/// one slip, undone, makes it valid.
+/// one slip, undone, makes it valid, or the failure is marginal.
 pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Cause> {
     let link = &d.links[i];
     let inertial = link.inertial.as_ref()?;
     let ok = |t: Tensor| accepts(engine, &facts_with(f, t), &d.compiler);
     let e = engine.name();
+    let verdict = super::engine::judge(engine, f, &d.compiler);
+    let failed: Vec<_> = verdict.rules.iter().filter(|r| !r.holds).collect();
+    if !failed.is_empty()
+        && failed
+            .iter()
+            .all(|r| r.margin.is_some_and(|m| m > -MARGINAL))
+    {
+        let worst = failed
+            .iter()
+            .filter_map(|r| r.margin)
+            .fold(0.0f64, f64::min);
+        return Some(Cause {
+            kind: Kind::Boundary,
+            message: format!(
+                "no slip: it fails by only {worst:.1e} (relative), a tensor at the edge of physical — a thin rod's or a flat plate's moments rounded the wrong way (A + B = C exactly for a plate), or a moment at zero; round the largest moment down (or the others up), or give the body its real thickness"
+            ),
+        });
+    }
     // 1. Mirror: the partner's products with this link's signs made even.
     if let Some(j) = partner(&d.links, i) {
         let other = d.links[j].inertial.as_ref()?;
@@ -167,9 +215,23 @@ pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Ca
                 &d.compiler,
             )
         {
-            // Flip the one product whose change leaves the fewest flips
-            // against the partner; try each.
-            for k in 0..3 {
+            // The product to flip: the one that differs from the partner's
+            // mirror image across the plane its centre of mass says (the
+            // axis along which the two centres are opposite); else each
+            // in turn.
+            let order = match mirror_axis(inertial.pos, other.pos) {
+                Some(axis) => {
+                    // A reflection across the plane normal to `axis` flips
+                    // the products involving it: xy (x, y), xz (x, z), yz (y, z).
+                    let involves = [[0, 1], [0, 2], [1, 2]].map(|p| p.contains(&axis));
+                    let (mp, tp) = (mine.products(), theirs.products());
+                    (0..3)
+                        .filter(|&k| (mp[k] < 0.0) != ((tp[k] < 0.0) != involves[k]))
+                        .collect::<Vec<_>>()
+                }
+                None => vec![0, 1, 2],
+            };
+            for k in order {
                 let mut t = mine;
                 match k {
                     0 => t.xy = -t.xy,

@@ -144,7 +144,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             ],
             principal_moments: m,
         });
-        let results = engines
+        let results: Vec<EngineResult> = engines
             .iter()
             .map(|&e| {
                 let verdict = engine::judge(e, &facts, &d.compiler);
@@ -154,7 +154,15 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
                 EngineResult { verdict, cause }
             })
             .collect();
-        warnings.extend(cause::mirror_warning(d, i));
+        // The mirror slip is said once: as the cause where it is one.
+        let mirror_cause = results.iter().any(|r: &EngineResult| {
+            r.cause
+                .as_ref()
+                .is_some_and(|c| c.kind == cause::Kind::Mirror)
+        });
+        if !mirror_cause {
+            warnings.extend(cause::mirror_warning(d, i));
+        }
         links.push(LinkResult {
             name: link.name.clone(),
             span: source.span(start_tag(source, inertial.range.clone())),
