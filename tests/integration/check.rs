@@ -245,7 +245,9 @@ fn json_lists_every_file_and_expectation() {
 fn the_example_files_hold_their_expectations() {
     let (code, stdout, stderr) = check(&["shapes"]);
     assert_eq!(code, 0, "{stdout}{stderr}");
-    let n = std::fs::read_dir("shapes").unwrap().count();
+    // The part files and the robot descriptions of shapes/robots/.
+    let n = crate::common::example_part_files().len()
+        + std::fs::read_dir("shapes/robots").unwrap().count();
     assert!(
         stdout.ends_with(&format!("checked {n} files: {n} ok, 0 failed, 0 invalid\n")),
         "{stdout}"

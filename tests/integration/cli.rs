@@ -21,9 +21,8 @@ fn every_example_has_a_table_and_a_json_snapshot() {
     let md = std::fs::read_to_string("tests/cmd/report.md").unwrap();
     let lines: Vec<&str> = md.lines().collect();
     let mut examples = 0;
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        // Every file: anything in shapes/ is an example users will run.
-        let path = entry.unwrap().path();
+    for path in crate::common::example_part_files() {
+        // Every part file: anything in shapes/ is an example users will run.
         let path = path.to_str().unwrap();
         for command in [
             format!("$ massprop report {path}"),
@@ -394,8 +393,7 @@ fn positive_products_are_stated_and_flip_the_off_diagonals() {
 
 #[test]
 fn every_shape_file_reports_in_both_formats() {
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        let path = entry.unwrap().path();
+    for path in crate::common::example_part_files() {
         let path = path.to_str().unwrap();
         for format in ["table", "json"] {
             let out = massprop(&["report", path, "--format", format]);
@@ -461,9 +459,8 @@ fn the_readme_shows_the_real_report_and_every_example() {
         text.starts_with(sample),
         "README's sample:\n{sample}\nis not how the output starts:\n{text}"
     );
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        let name = entry.unwrap().file_name();
-        let name = format!("`{}`", name.to_str().unwrap());
+    for path in crate::common::example_part_files() {
+        let name = format!("`{}`", path.file_name().unwrap().to_str().unwrap());
         assert!(readme.contains(&name), "README does not name {name}");
     }
 }

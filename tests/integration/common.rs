@@ -80,3 +80,15 @@ pub fn report_json_file(path: &std::path::Path, args: &[&str]) -> (serde_json::V
     let v = serde_json::from_str(&out.stdout.text()).expect("stdout is JSON");
     (v, out.stderr)
 }
+
+/// The example part files, `shapes/*.toml`, sorted (shapes/robots/ holds
+/// robot descriptions, checked in robots.rs).
+pub fn example_part_files() -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir("shapes")
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    files
+}

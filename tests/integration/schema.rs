@@ -78,8 +78,7 @@ fn schema_prints_a_json_schema_of_draft_2020_12_with_its_id() {
 #[test]
 fn every_example_in_shapes_validates() {
     let mut n = 0;
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        let path = entry.unwrap().path();
+    for path in crate::common::example_part_files() {
         let text = std::fs::read_to_string(&path).unwrap();
         let errors = schema_errors(&text);
         assert!(
@@ -530,14 +529,12 @@ fn a_schema_directive_on_the_first_line_changes_nothing() {
     // Every example, with the files it includes, copied with the line.
     let dir = scratch("schema", "directive");
     let mut n = 0;
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        let path = entry.unwrap().path();
+    for path in crate::common::example_part_files() {
         let text = std::fs::read_to_string(&path).unwrap();
         let with = format!("#:schema ./massprop.schema.json\n{text}");
         std::fs::write(dir.join(path.file_name().unwrap()), with).unwrap();
     }
-    for entry in std::fs::read_dir("shapes").unwrap() {
-        let path = entry.unwrap().path();
+    for path in crate::common::example_part_files() {
         let copy = dir.join(path.file_name().unwrap());
         let (mut a, _) = crate::common::report_json_file(&path, &[]);
         let (mut b, _) = crate::common::report_json_file(&copy, &[]);

@@ -11,6 +11,7 @@
 //! masses and moments are read as given.
 
 mod mjcf;
+mod orient;
 mod sdf;
 mod urdf;
 
