@@ -70,8 +70,8 @@ pub struct Facts {
 /// One part of an engine's rule, and how it came out.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Rule {
-    /// Its key: `mass`, `eigenvalues`, `triangle`, `leading_minors`,
-    /// `moving_mass`, `moving_inertia`, `diagonal`.
+    /// Its key: `mass`, `eigenvalues`, `nonnegative`, `triangle`,
+    /// `leading_minors`, `moving_mass`, `moving_inertia`.
     pub rule: &'static str,
     /// The rule as the engine's source states it, with its constants.
     pub statement: String,
