@@ -469,3 +469,164 @@ fn each_known_bad_robot_file_fails_where_and_why_its_readme_says() {
     ];
     assert_eq!(causes.into_iter().collect::<Vec<_>>(), all);
 }
+
+/// The CI formats carry a robot description's failures at the
+/// `<inertial>` element: GitHub annotations, a JUnit test case per link
+/// and engine, SARIF valid against its schema.
+#[test]
+fn the_ci_formats_point_at_each_failing_inertial() {
+    let path = repo("tests/robots/mirror.urdf");
+    let p = path.to_str().unwrap();
+    let run = |format: &str| {
+        let out = massprop(&["check", p, "--format", format]);
+        assert_eq!(out.status.code(), Some(1), "{format}");
+        String::from_utf8(out.stdout).unwrap()
+    };
+    // GitHub: an error per engine at 23:5 (right_finger), the mirror
+    // warning on left_finger at 12:5.
+    let gh = run("github");
+    let errors: Vec<&str> = gh.lines().filter(|l| l.starts_with("::error ")).collect();
+    assert_eq!(errors.len(), 3, "{gh}");
+    assert!(errors.iter().all(|l| l.contains(",line=23,col=5,")), "{gh}");
+    let warnings: Vec<&str> = gh.lines().filter(|l| l.starts_with("::warning ")).collect();
+    assert_eq!(warnings.len(), 1, "{gh}");
+    assert!(warnings[0].contains(",line=12,col=5,"), "{gh}");
+    // JUnit: a suite with `valid urdf file` and a case per link and engine.
+    let xml = run("junit");
+    let doc = roxmltree::Document::parse(&xml).expect("well-formed XML");
+    let cases: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.tag_name().name() == "testcase")
+        .collect();
+    let links = read(
+        &Source::new("m", std::fs::read_to_string(&path).unwrap()),
+        Format::Urdf,
+    )
+    .unwrap()
+    .links
+    .iter()
+    .filter(|l| l.inertial.is_some())
+    .count();
+    assert_eq!(cases.len(), 1 + 3 * links, "{xml}");
+    assert_eq!(cases[0].attribute("name"), Some("valid urdf file"));
+    let failed: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.tag_name().name() == "failure")
+        .map(|n| n.parent().unwrap().attribute("name").unwrap())
+        .collect();
+    assert_eq!(
+        failed,
+        [
+            "link right_finger: mujoco",
+            "link right_finger: gazebo",
+            "link right_finger: drake"
+        ]
+    );
+    // SARIF: valid, three `inertial` errors and one `inertial-warning`.
+    let schema: serde_json::Value =
+        serde_json::from_str(include_str!("../schemas/sarif-2.1.0.json")).unwrap();
+    let validator = jsonschema::validator_for(&schema).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&run("sarif")).unwrap();
+    let errors: Vec<String> = validator.iter_errors(&v).map(|e| e.to_string()).collect();
+    assert!(errors.is_empty(), "{errors:#?}");
+    let results = v["runs"][0]["results"].as_array().unwrap();
+    let ids: Vec<&str> = results
+        .iter()
+        .map(|r| r["ruleId"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        ids,
+        ["inertial-warning", "inertial", "inertial", "inertial"]
+    );
+    let region = &results[1]["locations"][0]["physicalLocation"]["region"];
+    assert_eq!(
+        (region["startLine"].as_u64(), region["startColumn"].as_u64()),
+        (Some(23), Some(5))
+    );
+}
+
+/// The link frame is the report's: `--about` moves the origin, `--axes`
+/// turns the axes; what is written is what `report` gives in that frame,
+/// to the bit. `--only` exports a sub-assembly as `report --only` reports it.
+#[test]
+fn export_writes_the_report_frames_values() {
+    let part = repo("shapes/robot-arm.toml");
+    let p = part.to_str().unwrap();
+    let frame = ["--about", "0.1,-0.02,0.3", "--axes", "x=0,1,0;y=0,0,1"];
+    let mut args = vec!["export", p, "--to", "sdf"];
+    args.extend(frame);
+    let element = stdout(&args);
+    let i = read_back(Format::Sdf, element.trim_end());
+    let (r, _) = super::common::report_json_file(&part, &frame);
+    let f = |v: &serde_json::Value| v.as_f64().unwrap().to_bits();
+    for k in 0..3 {
+        assert_eq!(
+            i.pos[k].to_bits(),
+            f(&r["center_of_mass_ref"][k]),
+            "{element}"
+        );
+    }
+    let m = i.tensor.matrix();
+    for (a, row) in m.iter().enumerate() {
+        for (b, x) in row.iter().enumerate() {
+            let want = r["inertia_com"][a][b].as_f64().unwrap();
+            assert!(
+                x.to_bits() == want.to_bits() || (*x == 0.0 && want == 0.0),
+                "[{a}][{b}]: {x} against {want}\n{element}"
+            );
+        }
+    }
+    // --only: the sub-assembly's mass.
+    let (whole, _) = super::common::report_json_file(&part, &[]);
+    let name = whole["assemblies"][0]["path"][0]
+        .as_str()
+        .unwrap()
+        .to_string();
+    let element = stdout(&["export", p, "--to", "mjcf", "--only", &name]);
+    let i = read_back(Format::Mjcf, element.trim_end());
+    let (only, _) = super::common::report_json_file(&part, &["--only", &name]);
+    assert_eq!(i.mass.to_bits(), f(&only["mass"]));
+    assert!(i.mass < whole["mass"].as_f64().unwrap());
+}
+
+/// `--update` in an SDFormat model (a nested link's scoped name) and an
+/// MJCF body (`--body`): only the inertial changes, and the file checks
+/// clean after.
+#[test]
+fn update_works_in_sdformat_and_mjcf_files() {
+    let dir = scratch("robots", "update-sdf-mjcf");
+    for (file, link) in [("quadruped_leg.sdf", "FL_calf"), ("gripper.xml", "palm")] {
+        let original = std::fs::read_to_string(repo(&format!("shapes/robots/{file}"))).unwrap();
+        let target = dir.join(file);
+        std::fs::write(&target, &original).unwrap();
+        let t = target.to_str().unwrap();
+        let flag = if file.ends_with(".xml") {
+            "--body"
+        } else {
+            "--link"
+        };
+        stdout(&["export", "shapes/flywheel.toml", "--update", t, flag, link]);
+        let new = std::fs::read_to_string(&target).unwrap();
+        assert_ne!(new, original);
+        // The bytes before and after the replaced element are the same.
+        let format = Format::of_path(&target).unwrap_or(Format::Mjcf);
+        let old_range = read(&Source::new(file, original.as_str()), format)
+            .unwrap()
+            .links
+            .into_iter()
+            .find(|l| l.name == link)
+            .unwrap()
+            .inertial
+            .unwrap()
+            .range;
+        assert!(new.starts_with(&original[..old_range.start]), "{new}");
+        assert!(new.ends_with(&original[old_range.end..]), "{new}");
+        let out = massprop(&["check", t]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+}
