@@ -44,18 +44,10 @@ pub fn export_of(s: &Summary, principal: bool) -> Export {
         let (a, c) = (&s.axes, &s.center_of_mass);
         std::array::from_fn(|i| a[i][0] * c[0] + a[i][1] * c[1] + a[i][2] * c[2])
     };
-    let i = &s.inertia_com;
     Export {
         mass: s.mass,
         pos,
-        tensor: Tensor {
-            xx: i[0][0],
-            yy: i[1][1],
-            zz: i[2][2],
-            xy: i[0][1],
-            xz: i[0][2],
-            yz: i[1][2],
-        },
+        tensor: Tensor::of_matrix(&s.inertia_com),
         // Columns the principal axes: the transpose of their rows.
         principal: principal.then(|| {
             let p = &s.principal_axes;

@@ -148,9 +148,17 @@ pub fn link_table(d: &LinkDiff, width: Option<usize>) -> String {
         "link: {} (the part file's body in its link frame: origin `about`, axes `axes`)",
         name(&d.link)
     );
+    preamble(&mut out, &u, "the part file's", d.tol);
+    quantities_table(&mut out, &d.quantities, &u, width);
+    out
+}
+
+/// The lines before the table of quantities: its units (`whose`: which
+/// file's), convention and relative-change rule, then a blank line.
+fn preamble(out: &mut String, u: &DisplayUnits, whose: &str, tol: f64) {
     let _ = writeln!(
         out,
-        "units (the part file's): mass {}, length {}, inertia {}",
+        "units ({whose}): mass {}, length {}, inertia {}",
         u.mass_label, u.length_label, u.inertia_label
     );
     let _ = writeln!(
@@ -160,12 +168,9 @@ pub fn link_table(d: &LinkDiff, width: Option<usize>) -> String {
     );
     let _ = writeln!(
         out,
-        "relative: change ÷ the scale of the whole quantity (docs/diff.md); tolerance {:e}",
-        d.tol
+        "relative: change ÷ the scale of the whole quantity (docs/diff.md); tolerance {tol:e}"
     );
     out.push('\n');
-    quantities_table(&mut out, &d.quantities, &u, width);
-    out
 }
 
 /// The table of compared quantities.
@@ -278,23 +283,7 @@ pub fn table(d: &Diff, width: Option<usize>) -> String {
     let mut out = String::new();
     let _ = writeln!(out, "old: {}", title(&d.old));
     let _ = writeln!(out, "new: {}", title(&d.new));
-    let _ = writeln!(
-        out,
-        "units (the new file's): mass {}, length {}, inertia {}",
-        u.mass_label, u.length_label, u.inertia_label
-    );
-    let _ = writeln!(
-        out,
-        "Ixx … Iyz: inertia about the centre of mass, {}",
-        products_label(Products::Tensor)
-    );
-    let _ = writeln!(
-        out,
-        "relative: change ÷ the scale of the whole quantity (docs/diff.md); tolerance {:e}",
-        d.tol
-    );
-
-    out.push('\n');
+    preamble(&mut out, &u, "the new file's", d.tol);
     quantities_table(&mut out, &d.quantities, &u, width);
 
     let (op, np) = (&d.old.parts, &d.new.parts);

@@ -92,12 +92,7 @@ fn warnings(v: &Value) -> Vec<String> {
 
 #[test]
 fn auto_stays_standard_on_every_file_in_shapes() {
-    let mut files: Vec<_> = std::fs::read_dir("shapes")
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+    let files = crate::common::example_part_files();
     assert!(files.len() >= 7);
     for f in files {
         let (v, stderr) = crate::common::report_json_file(&f, &[]);

@@ -15,12 +15,7 @@ fn repo(path: &str) -> PathBuf {
 
 /// The part files of shapes/ (each a body every engine takes).
 fn part_files() -> Vec<PathBuf> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(repo("shapes"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
+    let files = super::common::example_part_files();
     assert!(files.len() >= 5, "{files:?}");
     files
 }
