@@ -128,13 +128,16 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
         Some(at) => source.error(at..at + 1, err.to_string()),
         None => Diagnostic::file(&source.name, err.to_string()),
     })?;
+    let mut stderr = stderr;
     if o.dry_run {
+        if new == source.text {
+            stderr.push_str(&format!("{}: unchanged\n", visible(&source.name)));
+        }
         return Ok(Outcome {
             stderr,
             ..Outcome::ok(unified_diff(&source.text, &new, &source.name), read)
         });
     }
-    let mut stderr = stderr;
     if new == source.text {
         stderr.push_str(&format!("{}: unchanged\n", visible(&source.name)));
     } else {
