@@ -46,7 +46,7 @@ pub enum Command {
     /// Compare the mass properties of two part files, or of a part file and a robot description's link.
     #[command(after_help = DIFF_HELP)]
     Diff(DiffArgs),
-    /// Write the body's <inertial> for URDF, SDFormat or MJCF, or put it in place of a link's.
+    /// Write the body's `<inertial>` for URDF, SDFormat or MJCF, or put it in place of a link's.
     #[command(after_help = EXPORT_HELP)]
     Export(ExportArgs),
     /// List the materials `material = "NAME"` may name, with their densities.
@@ -312,11 +312,11 @@ pub struct ExportArgs {
 /// `export --to`'s values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum RobotFormat {
-    /// URDF: <inertial> with <origin>, <mass> and <inertia ixx … izz>
+    /// URDF: `<inertial>` with `<origin>`, `<mass>` and `<inertia ixx … izz>`
     Urdf,
-    /// SDFormat: <inertial> with <pose>, <mass> and <inertia><ixx>…
+    /// SDFormat: `<inertial>` with `<pose>`, `<mass>` and `<inertia>`, `<ixx>`…
     Sdf,
-    /// MJCF: <inertial pos mass fullinertia> (or diaginertia and quat)
+    /// MJCF: `<inertial pos mass fullinertia>` (or diaginertia and quat)
     Mjcf,
 }
 
