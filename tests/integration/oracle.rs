@@ -1,7 +1,9 @@
-//! MuJoCo as an independent oracle: `tests/oracle/mujoco_oracle.py` checks
-//! on a generated corpus that `check --engine mujoco` agrees with MuJoCo's
-//! own compiler on every file, and that `export --to mjcf` loads into
-//! MuJoCo with the report's mass, centre and principal moments.
+//! The engines as independent oracles: `tests/oracle/mujoco_oracle.py`
+//! checks on a generated corpus that `check --engine mujoco` agrees with
+//! MuJoCo's own compiler on every file, and that `export --to mjcf` loads
+//! into MuJoCo with the report's mass, centre and principal moments;
+//! `tests/oracle/engines_oracle.py` that `--engine drake` and `--engine
+//! gazebo` agree with pydrake and gz-math on every link.
 //!
 //! It needs Python with the `mujoco` package: `MASSPROP_ORACLE_PYTHON` if
 //! set, else `python3`. Without it the test says why on stderr and passes,
@@ -57,4 +59,68 @@ fn check_and_export_agree_with_mujocos_own_compiler() {
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
+}
+
+/// Why `python` cannot import `module`, or None when it can.
+fn missing(python: &str, module: &str) -> Option<String> {
+    match Command::new(python)
+        .args(["-c", &format!("import {module}")])
+        .output()
+    {
+        Err(e) => Some(format!("`{python}` does not run ({e})")),
+        Ok(out) if !out.status.success() => {
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            let why = stderr.trim().lines().last().unwrap_or("no message");
+            Some(format!("`{python} -c \"import {module}\"` fails: {why}"))
+        }
+        Ok(_) => None,
+    }
+}
+
+/// tests/oracle/engines_oracle.py for one engine, with the interpreter
+/// that has its library: Drake's (pydrake, a pip wheel) from
+/// `MASSPROP_DRAKE_PYTHON`, else `MASSPROP_ORACLE_PYTHON`, else `python3`;
+/// gz-math's (Debian's python3-ignition-math, for the system Python) from
+/// `MASSPROP_GZ_PYTHON`, else `/usr/bin/python3`. Skipped, saying why,
+/// where the library is absent.
+fn engine_oracle(engine: &str, python: String, module: &str) {
+    if let Some(why) = missing(&python, module) {
+        eprintln!(
+            "skipped: the {engine} oracle needs Python with `{module}`; {why}. docs/robots.md says how to run it."
+        );
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/engines_oracle.py");
+    let out = Command::new(&python)
+        .arg(&script)
+        .args([
+            "--massprop",
+            env!("CARGO_BIN_EXE_massprop"),
+            "--engine",
+            engine,
+            "--cases",
+            "300",
+        ])
+        .output()
+        .expect("the oracle script runs");
+    assert!(
+        out.status.success(),
+        "the {engine} oracle found disagreements (exit {:?}):\n{}\n{}",
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn check_agrees_with_drakes_own_library() {
+    let python = std::env::var("MASSPROP_DRAKE_PYTHON").unwrap_or_else(|_| python());
+    engine_oracle("drake", python, "pydrake.multibody.tree");
+}
+
+#[test]
+fn check_agrees_with_gz_maths_own_library() {
+    let python =
+        std::env::var("MASSPROP_GZ_PYTHON").unwrap_or_else(|_| "/usr/bin/python3".to_string());
+    engine_oracle("gazebo", python, "ignition.math");
 }
