@@ -9,7 +9,7 @@
 //! `nested::link`, relative to the outermost model, whose own name is left
 //! out unless the file has several top-level models.
 
-use super::{Value, Xml, child, quoted, rpy, turn};
+use super::{Value, Xml, child, qname, quoted, rpy, turn};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
@@ -81,7 +81,7 @@ fn elements<'a, 'i>(node: Node<'a, 'i>) -> impl Iterator<Item = Node<'a, 'i>> {
 }
 
 fn is(node: &Node, name: &str) -> bool {
-    node.tag_name().name() == name
+    qname(*node) == name
 }
 
 /// `scope::name`, or `name` at the top.
@@ -136,10 +136,10 @@ impl<'a, 'i> Scope<'a, 'i> {
     fn walk(&mut self, xml: &Xml) -> Result<(), Diagnostic> {
         let owner = match self.node.attribute("name") {
             Some(n) if is(&self.node, "world") => format!("world {}", quoted(n)),
-            _ => format!("`<{}>`", self.node.tag_name().name()),
+            _ => format!("`<{}>`", qname(self.node)),
         };
         for c in elements(self.node) {
-            match c.tag_name().name() {
+            match qname(c) {
                 "model" => self.model(xml, c, "", false, &owner)?,
                 // A world's own joints name links as `model::link`.
                 "joint" => self.joint(xml, c, ""),
@@ -168,7 +168,7 @@ impl<'a, 'i> Scope<'a, 'i> {
             };
         self.models.insert(path.clone(), model);
         for c in elements(model) {
-            match c.tag_name().name() {
+            match qname(c) {
                 "link" => {
                     xml.required(c, "name", &this)?;
                     let p = join(&path, c.attribute("name").unwrap_or_default());
