@@ -39,8 +39,8 @@ pub struct LinkResult {
     #[serde(flatten)]
     pub span: Span,
     pub moving: bool,
-    /// None when the link has no `<inertial>` (or its principal moments
-    /// overflow).
+    /// None when the link has no `<inertial>` (or its principal moments,
+    /// or its tensor in the link frame, overflow).
     pub inertial: Option<Values>,
     pub engines: Vec<EngineResult>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -142,14 +142,24 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             rescued: link.moving && tree.carried(d, i),
         };
         let in_link = inertial.tensor_in_link();
-        let values = engine::principal_moments(&inertial.tensor).map(|m| Values {
-            mass: inertial.mass,
-            center_of_mass: inertial.pos,
-            inertia: [
-                in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
-            ],
-            principal_moments: m,
-        });
+        // NOTE: the turn into the link frame can overflow what the file
+        // gives within f64 (a sum of nine products): no values then, as
+        // for moments that overflow, rather than infinities.
+        let finite = [
+            in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
+        ]
+        .iter()
+        .all(|x| x.is_finite());
+        let values = engine::principal_moments(&inertial.tensor)
+            .filter(|_| finite)
+            .map(|m| Values {
+                mass: inertial.mass,
+                center_of_mass: inertial.pos,
+                inertia: [
+                    in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
+                ],
+                principal_moments: m,
+            });
         let results: Vec<EngineResult> = engines
             .iter()
             .map(|&e| {
@@ -314,6 +324,27 @@ fn start_tag(source: &Source, range: std::ops::Range<usize>) -> std::ops::Range<
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_tensor_that_overflows_in_the_link_frame_has_no_values() {
+        // Moments at f64::MAX, turned: R I Rᵀ rounds past it, though the
+        // moments as written are finite.
+        let max = "1.7976931348623157e308";
+        let text = format!(
+            "<robot name='r'><link name='a'><inertial><origin rpy='0.3 0.4 0.5'/><mass value='1'/><inertia ixx='{max}' ixy='0' ixz='0' iyy='{max}' iyz='0' izz='{max}'/></inertial></link></robot>"
+        );
+        let source = Source::new("r.urdf", text);
+        let d = super::super::read::read(&source, Format::Urdf).unwrap();
+        let i = d.links[0].inertial.as_ref().unwrap();
+        assert!(engine::principal_moments(&i.tensor).is_some());
+        let t = i.tensor_in_link();
+        assert!(
+            !(t.xx.is_finite() && t.yy.is_finite() && t.zz.is_finite()),
+            "{t:?}"
+        );
+        let r = check(&source, &d, &Engine::ALL);
+        assert_eq!(r.links[0].inertial, None);
+    }
 
     #[test]
     fn spans_are_those_of_the_source_in_any_order() {

@@ -7,7 +7,7 @@
 //! (`orient`).
 
 use super::orient::{orientation, quat_to_matrix};
-use super::{Value, Xml, children, qname, quoted, turn};
+use super::{Value, Xml, children, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
 use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
 use roxmltree::Node;
@@ -221,7 +221,10 @@ fn inertial(xml: &Xml, node: Node, owner: &str, s: &Settings) -> Result<Inertial
         }
     };
     let rotation = match forms.first() {
-        Some((form, v)) => turn(quat_to_matrix(orientation(xml, form, v, owner, s)?)),
+        Some((form, v)) => {
+            let m = quat_to_matrix(orientation(xml, form, v, owner, s)?);
+            turn(proper(xml, v, owner, m)?)
+        }
         None => None,
     };
     Ok(Inertial {
@@ -541,6 +544,28 @@ mod tests {
         let d = error(&inertial("", "diaginertia='1 1 1' quat='0 0 0 0'"));
         assert!(
             d.contains("error: `quat` of body \"b\": a zero quaternion is no orientation\n"),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_quaternion_too_small_or_too_large_to_normalise_is_refused() {
+        // MuJoCo leaves a quaternion shorter than √mjEPS as it is, and
+        // divides one whose square overflows by infinity: neither is a
+        // rotation, and either would scale the tensor without a word.
+        for q in ["1e-8 0 0 0", "1e200 0 0 0", "0 1e160 1e160 0"] {
+            let d = error(&inertial("", &format!("diaginertia='1 1 1' quat='{q}'")));
+            assert!(
+                d.contains("error: `quat` of body \"b\" gives no rotation: its length is too small or too large to normalise in f64\n"),
+                "{q}: {d}"
+            );
+        }
+        let d = error(&inertial(
+            "",
+            "diaginertia='1 1 1' axisangle='1e200 0 0 30'",
+        ));
+        assert!(
+            d.contains("`axisangle` of body \"b\" gives no rotation"),
             "{d}"
         );
     }

@@ -375,6 +375,34 @@ fn turn(m: M3<f64>) -> Option<M3<f64>> {
     (!identity).then_some(m)
 }
 
+/// `m`, formed from `v`, if it is a rotation: finite, its columns unit
+/// length and perpendicular (to 1e-9). A quaternion or axis whose length
+/// overflows f64 or is too small to normalise gives none (MuJoCo's
+/// normalisation leaves a tiny quaternion as it is, and divides a huge one
+/// by infinity): a frame that is no rotation would scale or zero the
+/// tensor in the link frame without a word.
+fn proper(xml: &Xml, v: &Value, owner: &str, m: M3<f64>) -> Result<M3<f64>, Diagnostic> {
+    let mut ok = m.iter().flatten().all(|x| x.is_finite());
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot: f64 = (0..3).map(|k| m[k][i] * m[k][j]).sum();
+            let want = if i == j { 1.0 } else { 0.0 };
+            ok &= (dot - want).abs() <= 1e-9;
+        }
+    }
+    if ok {
+        Ok(m)
+    } else {
+        Err(xml.error(
+            v.range.clone(),
+            format!(
+                "{} of {owner} gives no rotation: its length is too small or too large to normalise in f64",
+                v.name
+            ),
+        ))
+    }
+}
+
 /// R = Rz(yaw)·Ry(pitch)·Rx(roll), URDF's `rpy` and SDFormat's pose angles
 /// (turns about the fixed x, then y, then z axes), from each angle's sine
 /// and cosine: the columns are the turned frame's axes.

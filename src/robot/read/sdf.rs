@@ -9,7 +9,7 @@
 //! `nested::link`, relative to the outermost model, whose own name is left
 //! out unless the file has several top-level models.
 
-use super::{Value, Xml, child, qname, quoted, rpy, turn};
+use super::{Value, Xml, child, proper, qname, quoted, rpy, turn};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
@@ -385,7 +385,7 @@ fn pose(
             ));
         }
         // Normalised: divided by |q|², not first made unit.
-        quaternion::<f64>([w, x, y, z])
+        proper(xml, &v, owner, quaternion::<f64>([w, x, y, z]))?
     } else {
         let sc = |a: f64| if degrees { sin_cos_deg(a) } else { a.sin_cos() };
         rpy(sc(n[3]), sc(n[4]), sc(n[5]))
@@ -501,6 +501,22 @@ mod tests {
         ));
         assert_eq!(i.pos, [1.0, 2.0, 3.0]);
         assert_matrix(i.rotation.unwrap(), RZ);
+    }
+
+    #[test]
+    fn a_quaternion_whose_square_overflows_or_vanishes_is_refused() {
+        // Divided by |q|², which is infinite or 0: NaN entries, once
+        // shown as null in check's JSON.
+        for q in ["0 0 1e200 1e200", "0 0 1e-200 0"] {
+            let text = link(&format!(
+                "<inertial><pose rotation_format='quat_xyzw'>1 2 3 {q}</pose></inertial>"
+            ));
+            let d = read(&source(&text), Format::Sdf).unwrap_err().to_string();
+            assert!(
+                d.contains("error: `<pose>` of link \"l\" gives no rotation"),
+                "{q}: {d}"
+            );
+        }
     }
 
     #[test]
