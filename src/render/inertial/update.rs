@@ -40,6 +40,18 @@ pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<Stri
             at: Some(offset_of(text, err.pos())),
         }
     })?;
+    // As the reader: a tree nested this deep is refused, before the
+    // recursive walk of SDFormat models below could overflow the stack.
+    if let Some(deep) = crate::robot::read::too_deep(&doc) {
+        return Err(UpdateError::Xml {
+            message: format!(
+                "`<{}>` is nested {} elements deep: no robot description nests that deep",
+                crate::diag::shorten(qname(text, deep)),
+                crate::robot::read::MAX_DEPTH
+            ),
+            at: Some(deep.range().start),
+        });
+    }
     let root = doc.root_element();
     if qname(text, root) != root_name(format) {
         return Err(UpdateError::Root {
@@ -659,6 +671,27 @@ mod tests {
         let text = "<robot>\n<link name=\"é\" x=1/></robot>";
         let err = update(text, Format::Urdf, "a", &export()).unwrap_err();
         assert_eq!(err.at(), text.find('1'));
+    }
+
+    #[test]
+    fn models_nested_too_deep_are_an_error_not_a_stack_overflow() {
+        // SDFormat models are walked recursively: 100,000 nested ones
+        // overflowed the stack.
+        let n = 100_000;
+        let text = format!(
+            "<sdf version='1.9'>{}{}</sdf>",
+            "<model name='m'><link name='l'/>".repeat(n),
+            "</model>".repeat(n)
+        );
+        let err = update(&text, Format::Sdf, "l", &export()).unwrap_err();
+        assert!(
+            err.to_string().contains("is nested 1000 elements deep"),
+            "{err}"
+        );
+        // The first element at depth 1000 (`<sdf>` is at 1): the link of
+        // the 998th model.
+        let model = |k: usize| "<sdf version='1.9'>".len() + 32 * (k - 1);
+        assert_eq!(err.at(), Some(model(998) + "<model name='m'>".len()));
     }
 
     #[test]
