@@ -117,32 +117,34 @@ fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String,
         Format::Sdf => {
             // Models are children of <sdf>, <world> or <model>; links
             // children of a model. Not every element is looked into: a
-            // <plugin>'s contents are free-form and may say <link>.
-            fn walk<'a, 'i>(
-                text: &str,
-                node: Node<'a, 'i>,
-                prefix: Option<&str>,
-                out: &mut Vec<(String, Node<'a, 'i>)>,
-            ) {
-                for child in node.children().filter(Node::is_element) {
-                    match (qname(text, child), prefix) {
-                        ("world", None) => walk(text, child, None, out),
-                        // The outermost model's name is left out.
-                        ("model", None) => walk(text, child, Some(""), out),
-                        ("model", Some(p)) => {
-                            let name = child.attribute("name").unwrap_or("");
-                            walk(text, child, Some(&format!("{p}{name}::")), out);
-                        }
-                        ("link", Some(p)) => {
-                            if let Some(name) = child.attribute("name") {
-                                out.push((format!("{p}{name}"), child));
-                            }
-                        }
-                        _ => {}
+            // <plugin>'s contents are free-form and may say <link>. Depth
+            // first in document order, with a stack of its own rather than
+            // recursive calls (models nest up to read::MAX_DEPTH deep).
+            // Each entry: the children still to walk, and the prefix of
+            // their names (None outside every model).
+            let mut stack = vec![(root.children(), None::<String>)];
+            while let Some((children, prefix)) = stack.last_mut() {
+                let Some(child) = children.next() else {
+                    stack.pop();
+                    continue;
+                };
+                let prefix = prefix.clone();
+                match (qname(text, child), prefix) {
+                    ("world", None) => stack.push((child.children(), None)),
+                    // The outermost model's name is left out.
+                    ("model", None) => stack.push((child.children(), Some(String::new()))),
+                    ("model", Some(p)) => {
+                        let name = child.attribute("name").unwrap_or("");
+                        stack.push((child.children(), Some(format!("{p}{name}::"))));
                     }
+                    ("link", Some(p)) => {
+                        if let Some(name) = child.attribute("name") {
+                            out.push((format!("{p}{name}"), child));
+                        }
+                    }
+                    _ => {}
                 }
             }
-            walk(text, root, None, &mut out);
         }
         Format::Mjcf => {
             for world in root.children().filter(|c| qname(text, *c) == "worldbody") {

@@ -149,6 +149,10 @@ impl<'a, 'i> Scope<'a, 'i> {
         Ok(())
     }
 
+    /// A model and the models nested in it, depth first in document order,
+    /// as a recursion would, but with a stack of its own: models nest as
+    /// deep as the reader allows (`MAX_DEPTH`), deeper than a thread's
+    /// stack of recursive calls goes in a debug build.
     fn model(
         &mut self,
         xml: &Xml,
@@ -157,20 +161,46 @@ impl<'a, 'i> Scope<'a, 'i> {
         fixed: bool,
         owner: &str,
     ) -> Result<(), Diagnostic> {
-        xml.required(model, "name", owner)?;
-        let path = join(scope, model.attribute("name").unwrap_or_default());
-        let this = format!("model {}", quoted(&path));
-        // A nested model of a static model is static with it.
-        let fixed = fixed
-            || match child(model, "static") {
-                Some(s) => flag(xml, &xml.text(s), &this)?,
-                None => false,
+        /// A model being walked: its children still to read, its path, and
+        /// whether it is static.
+        struct Open<'a, 'i> {
+            children: roxmltree::Children<'a, 'i>,
+            path: String,
+            fixed: bool,
+            this: String,
+        }
+        let mut stack: Vec<Open<'a, 'i>> = Vec::new();
+        let mut next = Some((model, scope.to_string(), fixed, owner.to_string()));
+        loop {
+            if let Some((model, scope, fixed, owner)) = next.take() {
+                xml.required(model, "name", &owner)?;
+                let path = join(&scope, model.attribute("name").unwrap_or_default());
+                let this = format!("model {}", quoted(&path));
+                // A nested model of a static model is static with it.
+                let fixed = fixed
+                    || match child(model, "static") {
+                        Some(s) => flag(xml, &xml.text(s), &this)?,
+                        None => false,
+                    };
+                self.models.insert(path.clone(), model);
+                stack.push(Open {
+                    children: model.children(),
+                    path,
+                    fixed,
+                    this,
+                });
+            }
+            let Some(open) = stack.last_mut() else {
+                return Ok(());
             };
-        self.models.insert(path.clone(), model);
-        for c in elements(model) {
+            let Some(c) = open.children.next() else {
+                stack.pop();
+                continue;
+            };
+            let (path, fixed) = (open.path.clone(), open.fixed);
             match qname(c) {
                 "link" => {
-                    xml.required(c, "name", &this)?;
+                    xml.required(c, "name", &open.this)?;
                     let p = join(&path, c.attribute("name").unwrap_or_default());
                     self.links.insert(p.clone(), self.found.len());
                     self.found.push(Found {
@@ -187,11 +217,10 @@ impl<'a, 'i> Scope<'a, 'i> {
                     }
                 }
                 "joint" => self.joint(xml, c, &path),
-                "model" => self.model(xml, c, &path, fixed, &this)?,
+                "model" => next = Some((c, path, fixed, open.this.clone())),
                 _ => {}
             }
         }
-        Ok(())
     }
 
     fn joint(&mut self, xml: &Xml, joint: Node, scope: &str) {
