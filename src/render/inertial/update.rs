@@ -122,6 +122,9 @@ fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String,
             // recursive calls (models nest up to read::MAX_DEPTH deep).
             // Each entry: the children still to walk, and the prefix of
             // their names (None outside every model).
+            let top = |n: Node| n.children().filter(|c| qname(text, *c) == "model").count();
+            let worlds = root.children().filter(|c| qname(text, *c) == "world");
+            let several = top(root) + worlds.map(top).sum::<usize>() > 1;
             let mut stack = vec![(root.children(), None::<String>)];
             while let Some((children, prefix)) = stack.last_mut() {
                 let Some(child) = children.next() else {
@@ -131,8 +134,17 @@ fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String,
                 let prefix = prefix.clone();
                 match (qname(text, child), prefix) {
                     ("world", None) => stack.push((child.children(), None)),
-                    // The outermost model's name is left out.
-                    ("model", None) => stack.push((child.children(), Some(String::new()))),
+                    // The outermost model's name is left out, unless the
+                    // file has several (robot::read's names).
+                    ("model", None) => {
+                        let name = child.attribute("name").unwrap_or("");
+                        let p = if several {
+                            format!("{name}::")
+                        } else {
+                            String::new()
+                        };
+                        stack.push((child.children(), Some(p)));
+                    }
                     ("model", Some(p)) => {
                         let name = child.attribute("name").unwrap_or("");
                         stack.push((child.children(), Some(format!("{p}{name}::"))));
@@ -501,6 +513,26 @@ mod tests {
           <mass>0.1</mass>
           <!-- no inertia given -->
         </inertial>";
+
+    #[test]
+    fn links_of_several_top_level_models_are_named_with_their_model() {
+        // As robot::read names them: `a::l` and `b::l`, and `l` is none.
+        let text = "<sdf version='1.9'><world name='w'><model name='a'><link name='l'/></model><model name='b'><link name='l'/></model></world></sdf>";
+        let out = update(text, Format::Sdf, "b::l", &export()).unwrap();
+        assert!(out.starts_with(&text[..text.find("<model name='b'>").unwrap()]));
+        assert!(matches!(
+            update(text, Format::Sdf, "l", &export()),
+            Err(UpdateError::NoLink { .. })
+        ));
+        let names: Vec<String> =
+            crate::robot::read::read(&crate::diag::Source::new("w.sdf", text), Format::Sdf)
+                .unwrap()
+                .links
+                .into_iter()
+                .map(|l| l.name)
+                .collect();
+        assert_eq!(names, ["a::l", "b::l"]);
+    }
 
     #[test]
     fn a_nested_sdformat_models_link_is_named_from_the_outermost() {
