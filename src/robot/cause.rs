@@ -61,10 +61,11 @@ fn tokens(name: &str) -> Vec<&str> {
     name.split(['_', '-', '.', '/', ' ', ':']).collect()
 }
 
-/// Whether two names are a mirror pair.
+/// Whether two names are a mirror pair (names of more than `MAX_TOKENS`
+/// tokens never are).
 pub fn mirror_names(a: &str, b: &str) -> bool {
     let (ta, tb) = (tokens(a), tokens(b));
-    if ta.len() != tb.len() {
+    if ta.len() != tb.len() || ta.len() > MAX_TOKENS {
         return false;
     }
     let mut swapped = 0;
@@ -86,7 +87,7 @@ pub fn mirror_names(a: &str, b: &str) -> bool {
 }
 
 /// The link whose mirror `links[i]` is, if exactly one has a mirror name
-/// and an inertial.
+/// and an inertial. (One link; `Mirrors` answers for every link at once.)
 pub fn partner(links: &[Link], i: usize) -> Option<usize> {
     let mut found = links
         .iter()
@@ -94,6 +95,88 @@ pub fn partner(links: &[Link], i: usize) -> Option<usize> {
         .filter(|(j, l)| *j != i && l.inertial.is_some() && mirror_names(&links[i].name, &l.name));
     let (j, _) = found.next()?;
     found.next().is_none().then_some(j)
+}
+
+/// A name of more tokens than this has no mirror partner: no link's name
+/// is that long, and a key per token of such a name would cost its square.
+const MAX_TOKENS: usize = 32;
+
+/// A name's keys in `Mirrors`: for each token that is one of a mirror
+/// pair, the tokens with that one blanked, its position, the pair, and the
+/// side of the pair it is on.
+fn mirror_keys(name: &str) -> Vec<(MirrorKey<'_>, usize)> {
+    let t = tokens(name);
+    if t.len() > MAX_TOKENS {
+        return Vec::new();
+    }
+    let mut out = Vec::new();
+    for (k, tok) in t.iter().enumerate() {
+        let lower = tok.to_ascii_lowercase();
+        for (pair, &(p, q)) in MIRROR_TOKENS.iter().enumerate() {
+            let side = if lower == p {
+                0
+            } else if lower == q {
+                1
+            } else {
+                continue;
+            };
+            let mut rest = t.clone();
+            rest[k] = "";
+            out.push(((rest, k, pair), side));
+        }
+    }
+    out
+}
+
+/// The other tokens, the position of the swapped one, its pair.
+type MirrorKey<'a> = (Vec<&'a str>, usize, usize);
+
+/// Every link's mirror partner (`partner`'s answer for each), found through
+/// a map of names with their swappable token taken out, in time linear in
+/// the links: comparing every pair of names would take minutes for 10⁵
+/// links.
+pub struct Mirrors {
+    partner: Vec<Option<usize>>,
+}
+
+impl Mirrors {
+    pub fn of(links: &[Link]) -> Mirrors {
+        // A name's keys: for each token that is one of a mirror pair, the
+        // tokens with that one left out, its position and the pair. Two
+        // names are mirror names exactly when they share a key and stand on
+        // its two sides (`mirror_names`).
+        let mut map: std::collections::HashMap<MirrorKey, [Vec<usize>; 2]> =
+            std::collections::HashMap::new();
+        let all: Vec<Vec<(MirrorKey, usize)>> =
+            links.iter().map(|l| mirror_keys(&l.name)).collect();
+        for (j, keys) in all.iter().enumerate() {
+            if links[j].inertial.is_none() {
+                continue;
+            }
+            for (key, side) in keys {
+                map.entry(key.clone()).or_default()[*side].push(j);
+            }
+        }
+        let partner = all
+            .iter()
+            .enumerate()
+            .map(|(i, keys)| {
+                let mut found = keys
+                    .iter()
+                    .filter_map(|(key, side)| map.get(key).map(|s| &s[1 - side]))
+                    .flatten()
+                    .filter(|&&j| j != i);
+                let j = *found.next()?;
+                found.next().is_none().then_some(j)
+            })
+            .collect();
+        Mirrors { partner }
+    }
+
+    /// The link whose mirror link `i` is: `partner(links, i)`.
+    pub fn partner(&self, i: usize) -> Option<usize> {
+        self.partner[i]
+    }
 }
 
 /// Relative closeness of mirrored values: equal to this fraction of the
@@ -124,8 +207,8 @@ fn disagree(ma: f64, a: &Tensor, mb: f64, b: &Tensor) -> bool {
 
 /// A warning for a link whose products disagree in sign with its mirror
 /// partner's, valid or not.
-pub fn mirror_warning(d: &Description, i: usize) -> Option<String> {
-    let j = partner(&d.links, i)?;
+pub fn mirror_warning(d: &Description, mirrors: &Mirrors, i: usize) -> Option<String> {
+    let j = mirrors.partner(i)?;
     let (a, b) = (d.links[i].inertial.as_ref()?, d.links[j].inertial.as_ref()?);
     disagree(a.mass, &a.tensor_in_link(), b.mass, &b.tensor_in_link()).then(|| {
         let s = |t: &Tensor| {
@@ -176,7 +259,13 @@ const MARGINAL: f64 = 1e-4;
 
 /// The likely cause of `engine` refusing link `i` (whose facts are `f`), if
 /// one slip, undone, makes it valid, or the failure is marginal.
-pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Cause> {
+pub fn likely(
+    d: &Description,
+    mirrors: &Mirrors,
+    i: usize,
+    f: &Facts,
+    engine: Engine,
+) -> Option<Cause> {
     let link = &d.links[i];
     let inertial = link.inertial.as_ref()?;
     let ok = |t: Tensor| accepts(engine, &facts_with(f, t), &d.compiler);
@@ -200,7 +289,7 @@ pub fn likely(d: &Description, i: usize, f: &Facts, engine: Engine) -> Option<Ca
         });
     }
     // 1. Mirror: the partner's products with this link's signs made even.
-    if let Some(j) = partner(&d.links, i) {
+    if let Some(j) = mirrors.partner(i) {
         let other = d.links[j].inertial.as_ref()?;
         let (mine, theirs) = (inertial.tensor_in_link(), other.tensor_in_link());
         if inertial.rotation.is_none()
@@ -397,6 +486,63 @@ mod tests {
         assert!(!mirror_names("left_finger", "right_thumb"));
         assert!(!mirror_names("FL_thigh", "RR_thigh"));
         assert!(!mirror_names("l", "link"));
+    }
+
+    fn link(name: &str, inertial: bool) -> Link {
+        Link {
+            name: name.to_string(),
+            range: 0..0,
+            inertial: inertial.then(|| super::super::Inertial {
+                mass: 1.0,
+                pos: [0.0; 3],
+                rotation: None,
+                tensor: Tensor::default(),
+                written: Written::Attributes,
+                range: 0..0,
+            }),
+            moving: false,
+            parent: None,
+        }
+    }
+
+    #[test]
+    fn the_map_of_mirrors_finds_what_comparing_every_pair_finds() {
+        let long_l = vec!["l"; MAX_TOKENS + 1].join("_");
+        let long_r = format!("r{}", &long_l[1..]);
+        let names = [
+            ("left_finger", true),
+            ("right_finger", true),
+            ("RIGHT_finger", false),
+            ("FL_thigh", true),
+            ("FR_thigh", true),
+            ("FR-thigh", true),
+            ("RR_thigh", true),
+            ("arm_l_link", true),
+            ("arm_r_link", true),
+            ("arm_r_link", true),
+            ("l_r", true),
+            ("r_r", true),
+            ("l_l", true),
+            ("a__l", true),
+            ("a__r", true),
+            ("left", true),
+            ("Left", true),
+            ("right", false),
+            (long_l.as_str(), true),
+            (long_r.as_str(), true),
+        ];
+        let links: Vec<Link> = names.iter().map(|&(n, i)| link(n, i)).collect();
+        let mirrors = Mirrors::of(&links);
+        for i in 0..links.len() {
+            assert_eq!(mirrors.partner(i), partner(&links, i), "{}", links[i].name);
+        }
+        // Some found, some ambiguous (two candidates: the separators do
+        // not count), some none.
+        assert_eq!(mirrors.partner(0), Some(1));
+        assert_eq!(mirrors.partner(4), Some(3));
+        assert_eq!(mirrors.partner(3), None);
+        assert_eq!(mirrors.partner(7), None);
+        assert_eq!(mirrors.partner(18), None);
     }
 
     #[test]

@@ -8,7 +8,7 @@
 use super::cause::{self, Cause};
 use super::engine::{self, Engine, Facts, Verdict};
 use super::{Description, Format};
-use crate::diag::{Source, Span};
+use crate::diag::{Source, Span, floor_char_boundary};
 use serde::Serialize;
 
 /// One engine's verdict on a link, with the likely cause when it fails.
@@ -39,8 +39,8 @@ pub struct LinkResult {
     #[serde(flatten)]
     pub span: Span,
     pub moving: bool,
-    /// None when the link has no `<inertial>` (or its principal moments
-    /// overflow).
+    /// None when the link has no `<inertial>` (or its principal moments,
+    /// or its tensor in the link frame, overflow).
     pub inertial: Option<Values>,
     pub engines: Vec<EngineResult>,
     #[serde(skip_serializing_if = "Vec::is_empty")]
@@ -72,9 +72,15 @@ impl RobotResult {
 /// Check every link of `d` (read from `source`) under `engines`.
 pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResult {
     let mut links = Vec::with_capacity(d.links.len());
+    // Each pass over all links is done once, here, not once per link: a
+    // description may have 10⁵ links.
+    let mut names = std::collections::HashSet::with_capacity(d.links.len());
+    let mut tree = Tree::of(d);
+    let mirrors = cause::Mirrors::of(&d.links);
+    let mut spans = Spans::new(&source.text);
     for (i, link) in d.links.iter().enumerate() {
         let mut warnings = Vec::new();
-        if d.links[..i].iter().any(|l| l.name == link.name) {
+        if !names.insert(link.name.as_str()) {
             warnings.push(format!(
                 "another link before this one is named \"{}\": engines refuse duplicate names, and `export --update` cannot tell them apart",
                 link.name
@@ -101,7 +107,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
                         super::Written::Diagonal
                     },
                     moving: link.moving,
-                    rescued: link.moving && carried(d, i),
+                    rescued: link.moving && tree.carried(d, i),
                 };
                 let verdict = engine::judge(Engine::Mujoco, &facts, &d.compiler);
                 results.push(EngineResult {
@@ -120,7 +126,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             }
             links.push(LinkResult {
                 name: link.name.clone(),
-                span: source.span(start_tag(source, link.range.clone())),
+                span: spans.span(start_tag(source, link.range.clone())),
                 moving: link.moving,
                 inertial: None,
                 engines: results,
@@ -133,23 +139,33 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             tensor: inertial.tensor,
             written: inertial.written,
             moving: link.moving,
-            rescued: link.moving && carried(d, i),
+            rescued: link.moving && tree.carried(d, i),
         };
         let in_link = inertial.tensor_in_link();
-        let values = engine::principal_moments(&inertial.tensor).map(|m| Values {
-            mass: inertial.mass,
-            center_of_mass: inertial.pos,
-            inertia: [
-                in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
-            ],
-            principal_moments: m,
-        });
+        // NOTE: the turn into the link frame can overflow what the file
+        // gives within f64 (a sum of nine products): no values then, as
+        // for moments that overflow, rather than infinities.
+        let finite = [
+            in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
+        ]
+        .iter()
+        .all(|x| x.is_finite());
+        let values = engine::principal_moments(&inertial.tensor)
+            .filter(|_| finite)
+            .map(|m| Values {
+                mass: inertial.mass,
+                center_of_mass: inertial.pos,
+                inertia: [
+                    in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
+                ],
+                principal_moments: m,
+            });
         let results: Vec<EngineResult> = engines
             .iter()
             .map(|&e| {
                 let verdict = engine::judge(e, &facts, &d.compiler);
                 let cause = (!verdict.valid)
-                    .then(|| cause::likely(d, i, &facts, e))
+                    .then(|| cause::likely(d, &mirrors, i, &facts, e))
                     .flatten();
                 EngineResult { verdict, cause }
             })
@@ -161,11 +177,11 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
                 .is_some_and(|c| c.kind == cause::Kind::Mirror)
         });
         if !mirror_cause {
-            warnings.extend(cause::mirror_warning(d, i));
+            warnings.extend(cause::mirror_warning(d, &mirrors, i));
         }
         links.push(LinkResult {
             name: link.name.clone(),
-            span: source.span(start_tag(source, inertial.range.clone())),
+            span: spans.span(start_tag(source, inertial.range.clone())),
             moving: link.moving,
             inertial: values,
             engines: results,
@@ -179,34 +195,122 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
     }
 }
 
-/// Whether a jointless descendant of link `i`, reached through jointless
-/// links only, has mass and three principal moments of at least
-/// mjMINVAL: MuJoCo then accepts `i` moving without mass of its own
-/// (tests/oracle/MUJOCO-RULES.md, rule 4).
-fn carried(d: &Description, i: usize) -> bool {
-    let floor = engine::MJ_MINVAL;
-    let heavy = |l: &super::Link| {
-        l.inertial.as_ref().is_some_and(|x| {
-            x.mass >= floor && engine::principal_moments(&x.tensor).is_some_and(|m| m[0] >= floor)
-        })
-    };
-    // Breadth first over fixed children; `seen` guards a malformed file's
-    // cycle of joints.
-    let mut seen = vec![false; d.links.len()];
-    let mut queue = vec![i];
-    seen[i] = true;
-    while let Some(p) = queue.pop() {
+/// The links' tree, for the walks down from a link: each link's children
+/// that do not move.
+struct Tree {
+    fixed_children: Vec<Vec<usize>>,
+    /// Per link, the walk that last saw it (`i + 1` for the walk from link
+    /// `i`; 0 for none): one vector for every walk, not one per walk.
+    seen: Vec<usize>,
+}
+
+impl Tree {
+    fn of(d: &Description) -> Tree {
+        let mut fixed_children = vec![Vec::new(); d.links.len()];
         for (j, l) in d.links.iter().enumerate() {
-            if l.parent == Some(p) && !l.moving && !seen[j] {
-                if heavy(l) {
-                    return true;
-                }
-                seen[j] = true;
-                queue.push(j);
+            if let Some(p) = l.parent
+                && !l.moving
+            {
+                fixed_children[p].push(j);
             }
         }
+        Tree {
+            fixed_children,
+            seen: vec![0; d.links.len()],
+        }
     }
-    false
+
+    /// Whether a jointless descendant of link `i`, reached through
+    /// jointless links only, has mass and three principal moments of at
+    /// least mjMINVAL: MuJoCo then accepts `i` moving without mass of its
+    /// own (tests/oracle/MUJOCO-RULES.md, rule 4).
+    ///
+    /// NOTE: linear in the links walked: a link that does not move has one
+    /// parent, so the walks from the moving links cover each link once at
+    /// most; `seen` guards a malformed file's cycle of joints.
+    fn carried(&mut self, d: &Description, i: usize) -> bool {
+        let floor = engine::MJ_MINVAL;
+        let heavy = |l: &super::Link| {
+            l.inertial.as_ref().is_some_and(|x| {
+                x.mass >= floor
+                    && engine::principal_moments(&x.tensor).is_some_and(|m| m[0] >= floor)
+            })
+        };
+        let walk = i + 1;
+        let mut stack = vec![i];
+        self.seen[i] = walk;
+        while let Some(p) = stack.pop() {
+            for &j in &self.fixed_children[p] {
+                if self.seen[j] != walk {
+                    if heavy(&d.links[j]) {
+                        return true;
+                    }
+                    self.seen[j] = walk;
+                    stack.push(j);
+                }
+            }
+        }
+        false
+    }
+}
+
+/// `Source::span` for many ranges of one text, each in time proportional
+/// to the distance from the one before (links come in document order)
+/// rather than from the start of the text: `Source::span` counts the lines
+/// before each range, which for 10⁵ links made `check` quadratic.
+struct Spans<'t> {
+    text: &'t str,
+    /// The byte offset each line starts at.
+    line_starts: Vec<usize>,
+    /// The last offset placed and its column, to count a column on from.
+    cursor: (usize, usize),
+}
+
+impl<'t> Spans<'t> {
+    fn new(text: &'t str) -> Spans<'t> {
+        let line_starts = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Spans {
+            text,
+            line_starts,
+            cursor: (0, 1),
+        }
+    }
+
+    /// The 1-based line and column (in characters) of `offset`, as
+    /// `Source::line_col` gives them.
+    fn line_col(&mut self, offset: usize) -> (usize, usize) {
+        let offset = floor_char_boundary(self.text, offset);
+        let line = self.line_starts.partition_point(|&s| s <= offset);
+        let start = self.line_starts[line - 1];
+        let (from, col) = if self.cursor.0 >= start && self.cursor.0 <= offset {
+            self.cursor
+        } else {
+            (start, 1)
+        };
+        let col = col + self.text[from..offset].chars().count();
+        self.cursor = (offset, col);
+        (line, col)
+    }
+
+    /// `Source::span`: the first character of `range` and its last.
+    fn span(&mut self, range: std::ops::Range<usize>) -> Span {
+        let (line, column) = self.line_col(range.start);
+        let start = floor_char_boundary(self.text, range.start);
+        let end = floor_char_boundary(self.text, range.end);
+        let last = self.text[..end]
+            .char_indices()
+            .next_back()
+            .map_or(start, |(i, _)| i.max(start));
+        let (end_line, end_column) = self.line_col(last);
+        Span {
+            line,
+            column,
+            end_line,
+            end_column,
+        }
+    }
 }
 
 /// An element's start tag: where a message points (the whole element may
@@ -215,4 +319,47 @@ fn start_tag(source: &Source, range: std::ops::Range<usize>) -> std::ops::Range<
     let text = &source.text[range.clone()];
     let end = text.find('>').map_or(text.len(), |i| i + 1);
     range.start..range.start + end
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_tensor_that_overflows_in_the_link_frame_has_no_values() {
+        // Moments at f64::MAX, turned: R I Rᵀ rounds past it, though the
+        // moments as written are finite.
+        let max = "1.7976931348623157e308";
+        let text = format!(
+            "<robot name='r'><link name='a'><inertial><origin rpy='0.3 0.4 0.5'/><mass value='1'/><inertia ixx='{max}' ixy='0' ixz='0' iyy='{max}' iyz='0' izz='{max}'/></inertial></link></robot>"
+        );
+        let source = Source::new("r.urdf", text);
+        let d = super::super::read::read(&source, Format::Urdf).unwrap();
+        let i = d.links[0].inertial.as_ref().unwrap();
+        assert!(engine::principal_moments(&i.tensor).is_some());
+        let t = i.tensor_in_link();
+        assert!(
+            !(t.xx.is_finite() && t.yy.is_finite() && t.zz.is_finite()),
+            "{t:?}"
+        );
+        let r = check(&source, &d, &Engine::ALL);
+        assert_eq!(r.links[0].inertial, None);
+    }
+
+    #[test]
+    fn spans_are_those_of_the_source_in_any_order() {
+        let text = "<a>\r\n  <é b='ü'>\n<c/>…<d/>\n\n<e/>";
+        let source = Source::new("t.xml", text);
+        let mut spans = Spans::new(&source.text);
+        let n = text.len();
+        // Forwards, backwards, and ranges inside characters or past the end.
+        let ranges: Vec<std::ops::Range<usize>> = (0..=n + 1)
+            .map(|i| i..(i + 3).min(n + 2))
+            .chain((0..=n).rev().map(|i| i..i))
+            .chain([7..8, 0..n, std::ops::Range { start: 12, end: 9 }])
+            .collect();
+        for r in ranges {
+            assert_eq!(spans.span(r.clone()), source.span(r.clone()), "{r:?}");
+        }
+    }
 }

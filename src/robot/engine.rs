@@ -132,18 +132,30 @@ pub fn judge(engine: Engine, f: &Facts, compiler: &MujocoCompiler) -> Verdict {
     let Some(moments) = principal_moments(&f.tensor) else {
         // The reader refuses non-finite numbers; a sum of huge finite ones
         // can still overflow.
-        return Verdict {
-            engine,
-            valid: false,
-            rules: Vec::new(),
-            note: Some("the tensor's principal moments overflow".into()),
-        };
+        return overflow(engine, "the tensor's principal moments overflow");
     };
     let mut v = match engine {
         Engine::Mujoco => mujoco(f, moments, compiler),
         Engine::Gazebo => gazebo(f),
         Engine::Drake => drake(f, moments),
     };
+    // NOTE: values near f64::MAX make the engine's own sums and products
+    // (A + B − C, the tolerance from A + B + C, a determinant) infinite or
+    // NaN, and then its comparisons mean nothing: no verdict is given on
+    // them, and no infinite value is shown.
+    if !v
+        .rules
+        .iter()
+        .all(|r| r.value.is_finite() && r.limit.is_finite())
+    {
+        return overflow(
+            engine,
+            &format!(
+                "the values overflow f64 in {}'s rule: a sum or product of them is beyond 1.8e308",
+                engine.name()
+            ),
+        );
+    }
     // Without products every solver returns the diagonal as written: no
     // solver's rounding can decide a margin the other way.
     if f.tensor.products().iter().all(|&p| p == 0.0) {
@@ -152,6 +164,26 @@ pub fn judge(engine: Engine, f: &Facts, compiler: &MujocoCompiler) -> Verdict {
         }
     }
     v
+}
+
+/// A number in a note: as written in a file, with an exponent when it is
+/// very large or small (`Display` writes 1e300 with 300 digits).
+fn num(x: f64) -> String {
+    if x == 0.0 || (1e-5..1e16).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
+/// No verdict, invalid: the rule cannot be applied in f64.
+fn overflow(engine: Engine, why: &str) -> Verdict {
+    Verdict {
+        engine,
+        valid: false,
+        rules: Vec::new(),
+        note: Some(why.into()),
+    }
 }
 
 /// Whether `engine` accepts `f`: `judge`'s `valid`.
@@ -268,7 +300,8 @@ fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
     if f.mass < mass {
         notes.push(format!(
             "MuJoCo raises the mass {} to {} (boundmass) without a word",
-            f.mass, mass
+            num(f.mass),
+            num(mass)
         ));
     }
     let (diagonal, source) = if f.written == Written::Diagonal {
@@ -284,7 +317,7 @@ fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
     {
         notes.push(format!(
             "MuJoCo raises each {source} below {} (boundinertia) to it without a word",
-            c.boundinertia
+            num(c.boundinertia)
         ));
     }
     bounded.sort_by(f64::total_cmp);
@@ -312,9 +345,16 @@ fn mujoco(f: &Facts, moments: [f64; 3], c: &MujocoCompiler) -> Verdict {
     let breaks = a + b < cc || a + cc < b || b + cc < a;
     if c.balanceinertia && breaks {
         let mean = ((a + b) + cc) / 3.0;
+        if !mean.is_finite() {
+            return overflow(
+                Engine::Mujoco,
+                "the values overflow f64 in mujoco's rule: balanceinertia's mean of the moments is beyond 1.8e308",
+            );
+        }
         bounded = [mean; 3];
         notes.push(format!(
-            "`balanceinertia=\"true\"`: MuJoCo replaces the moments, which break the triangle inequality, by their mean {mean}"
+            "`balanceinertia=\"true\"`: MuJoCo replaces the moments, which break the triangle inequality, by their mean {}",
+            num(mean)
         ));
     } else {
         let mut r = triangle(
@@ -549,6 +589,38 @@ mod tests {
 
     fn valid(e: Engine, f: &Facts) -> bool {
         accepts(e, f, &MujocoCompiler::default())
+    }
+
+    #[test]
+    fn values_whose_sums_overflow_get_no_verdict_and_no_infinite_number() {
+        // Moments near f64::MAX: A + B − C, gz-math's and Drake's tolerance
+        // from A + B + C overflow.
+        let f = facts(1.7e308, 1.7e308, 1.7e308, Written::Full, true);
+        for e in Engine::ALL {
+            let v = judge(e, &f, &MujocoCompiler::default());
+            assert!(!v.valid && v.rules.is_empty(), "{v:?}");
+            assert!(v.note.unwrap().contains("overflow"));
+        }
+        // balanceinertia's mean of moments that break the triangle.
+        let f = facts(0.5e308, 0.5e308, 1.7e308, Written::Diagonal, false);
+        let c = MujocoCompiler {
+            balanceinertia: true,
+            ..MujocoCompiler::default()
+        };
+        let v = judge(Engine::Mujoco, &f, &c);
+        assert!(!v.valid && v.rules.is_empty(), "{v:?}");
+        // A note writes a large mean with an exponent, not 300 digits.
+        let f = facts(1.0, 1.0, 1e300, Written::Diagonal, false);
+        let note = judge(Engine::Mujoco, &f, &c).note.unwrap();
+        assert!(
+            note.ends_with("by their mean 3.3333333333333335e299"),
+            "{note}"
+        );
+        // Large but representable: judged as usual.
+        let f = facts(1e100, 1e100, 1e100, Written::Full, true);
+        for e in Engine::ALL {
+            assert!(accepts(e, &f, &MujocoCompiler::default()), "{e:?}");
+        }
     }
 
     #[test]

@@ -62,6 +62,13 @@ impl Format {
             } else if let Some(r) = rest.strip_prefix("<!--") {
                 rest = &r[r.find("-->")? + 3..];
             } else if let Some(r) = rest.strip_prefix("<!") {
+                // A doctype's internal subset, `[…]`, holds declarations
+                // that end in `>` themselves: skip to its `]` first.
+                let end = r.find('>')?;
+                let r = match r[..end].find('[') {
+                    Some(open) => &r[open + r[open..].find(']')?..],
+                    None => r,
+                };
                 rest = &r[r.find('>')? + 1..];
             } else {
                 break;
@@ -260,6 +267,15 @@ mod tests {
             Some(Format::Sdf)
         );
         assert_eq!(Format::of_text("<mujoco>"), Some(Format::Mjcf));
+        // A doctype whose internal subset declares entities, each ending
+        // in `>` (an `*.xml` with one was checked as a part file).
+        assert_eq!(
+            Format::of_text(
+                "<!DOCTYPE mujoco [\n<!ENTITY a \"1\">\n<!ENTITY b \"&a;\">\n]>\n<mujoco model='&b;'/>"
+            ),
+            Some(Format::Mjcf)
+        );
+        assert_eq!(Format::of_text("<!DOCTYPE mujoco [<!ENTITY a '1'>"), None);
         assert_eq!(Format::of_text("<robots>"), None);
         assert_eq!(Format::of_text("<project>"), None);
         assert_eq!(Format::of_text("[[part]]"), None);

@@ -23,6 +23,7 @@ mod package;
 mod physics;
 mod pipes;
 mod robots;
+mod robots_hostile;
 mod schema;
 mod shell;
 mod stress;

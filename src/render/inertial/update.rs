@@ -40,6 +40,18 @@ pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<Stri
             at: Some(offset_of(text, err.pos())),
         }
     })?;
+    // As the reader: a tree nested this deep is refused, before the
+    // recursive walk of SDFormat models below could overflow the stack.
+    if let Some(deep) = crate::robot::read::too_deep(&doc) {
+        return Err(UpdateError::Xml {
+            message: format!(
+                "`<{}>` is nested {} elements deep: no robot description nests that deep",
+                crate::diag::shorten(qname(text, deep)),
+                crate::robot::read::MAX_DEPTH
+            ),
+            at: Some(deep.range().start),
+        });
+    }
     let root = doc.root_element();
     if qname(text, root) != root_name(format) {
         return Err(UpdateError::Root {
@@ -105,32 +117,46 @@ fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String,
         Format::Sdf => {
             // Models are children of <sdf>, <world> or <model>; links
             // children of a model. Not every element is looked into: a
-            // <plugin>'s contents are free-form and may say <link>.
-            fn walk<'a, 'i>(
-                text: &str,
-                node: Node<'a, 'i>,
-                prefix: Option<&str>,
-                out: &mut Vec<(String, Node<'a, 'i>)>,
-            ) {
-                for child in node.children().filter(Node::is_element) {
-                    match (qname(text, child), prefix) {
-                        ("world", None) => walk(text, child, None, out),
-                        // The outermost model's name is left out.
-                        ("model", None) => walk(text, child, Some(""), out),
-                        ("model", Some(p)) => {
-                            let name = child.attribute("name").unwrap_or("");
-                            walk(text, child, Some(&format!("{p}{name}::")), out);
-                        }
-                        ("link", Some(p)) => {
-                            if let Some(name) = child.attribute("name") {
-                                out.push((format!("{p}{name}"), child));
-                            }
-                        }
-                        _ => {}
+            // <plugin>'s contents are free-form and may say <link>. Depth
+            // first in document order, with a stack of its own rather than
+            // recursive calls (models nest up to read::MAX_DEPTH deep).
+            // Each entry: the children still to walk, and the prefix of
+            // their names (None outside every model).
+            let top = |n: Node| n.children().filter(|c| qname(text, *c) == "model").count();
+            let worlds = root.children().filter(|c| qname(text, *c) == "world");
+            let several = top(root) + worlds.map(top).sum::<usize>() > 1;
+            let mut stack = vec![(root.children(), None::<String>)];
+            while let Some((children, prefix)) = stack.last_mut() {
+                let Some(child) = children.next() else {
+                    stack.pop();
+                    continue;
+                };
+                let prefix = prefix.clone();
+                match (qname(text, child), prefix) {
+                    ("world", None) => stack.push((child.children(), None)),
+                    // The outermost model's name is left out, unless the
+                    // file has several (robot::read's names).
+                    ("model", None) => {
+                        let name = child.attribute("name").unwrap_or("");
+                        let p = if several {
+                            format!("{name}::")
+                        } else {
+                            String::new()
+                        };
+                        stack.push((child.children(), Some(p)));
                     }
+                    ("model", Some(p)) => {
+                        let name = child.attribute("name").unwrap_or("");
+                        stack.push((child.children(), Some(format!("{p}{name}::"))));
+                    }
+                    ("link", Some(p)) => {
+                        if let Some(name) = child.attribute("name") {
+                            out.push((format!("{p}{name}"), child));
+                        }
+                    }
+                    _ => {}
                 }
             }
-            walk(text, root, None, &mut out);
         }
         Format::Mjcf => {
             for world in root.children().filter(|c| qname(text, *c) == "worldbody") {
@@ -489,6 +515,26 @@ mod tests {
         </inertial>";
 
     #[test]
+    fn links_of_several_top_level_models_are_named_with_their_model() {
+        // As robot::read names them: `a::l` and `b::l`, and `l` is none.
+        let text = "<sdf version='1.9'><world name='w'><model name='a'><link name='l'/></model><model name='b'><link name='l'/></model></world></sdf>";
+        let out = update(text, Format::Sdf, "b::l", &export()).unwrap();
+        assert!(out.starts_with(&text[..text.find("<model name='b'>").unwrap()]));
+        assert!(matches!(
+            update(text, Format::Sdf, "l", &export()),
+            Err(UpdateError::NoLink { .. })
+        ));
+        let names: Vec<String> =
+            crate::robot::read::read(&crate::diag::Source::new("w.sdf", text), Format::Sdf)
+                .unwrap()
+                .links
+                .into_iter()
+                .map(|l| l.name)
+                .collect();
+        assert_eq!(names, ["a::l", "b::l"]);
+    }
+
+    #[test]
     fn a_nested_sdformat_models_link_is_named_from_the_outermost() {
         assert_replaced(SDF, Format::Sdf, "gripper::finger", SDF_FINGER, "        ");
         assert_replaced(
@@ -659,6 +705,27 @@ mod tests {
         let text = "<robot>\n<link name=\"é\" x=1/></robot>";
         let err = update(text, Format::Urdf, "a", &export()).unwrap_err();
         assert_eq!(err.at(), text.find('1'));
+    }
+
+    #[test]
+    fn models_nested_too_deep_are_an_error_not_a_stack_overflow() {
+        // SDFormat models are walked recursively: 100,000 nested ones
+        // overflowed the stack.
+        let n = 100_000;
+        let text = format!(
+            "<sdf version='1.9'>{}{}</sdf>",
+            "<model name='m'><link name='l'/>".repeat(n),
+            "</model>".repeat(n)
+        );
+        let err = update(&text, Format::Sdf, "l", &export()).unwrap_err();
+        assert!(
+            err.to_string().contains("is nested 1000 elements deep"),
+            "{err}"
+        );
+        // The first element at depth 1000 (`<sdf>` is at 1): the link of
+        // the 998th model.
+        let model = |k: usize| "<sdf version='1.9'>".len() + 32 * (k - 1);
+        assert_eq!(err.at(), Some(model(998) + "<model name='m'>".len()));
     }
 
     #[test]

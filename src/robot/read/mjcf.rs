@@ -7,7 +7,7 @@
 //! (`orient`).
 
 use super::orient::{orientation, quat_to_matrix};
-use super::{Value, Xml, children, quoted, turn};
+use super::{Value, Xml, children, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
 use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
 use roxmltree::Node;
@@ -86,10 +86,7 @@ pub(super) fn compiler(xml: &Xml, node: Node, s: &mut Settings) -> Result<(), Di
 pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     // An included file may hold bodies and compiler settings: reading
     // around it would judge a different model than MuJoCo compiles.
-    if let Some(include) = mujoco
-        .descendants()
-        .find(|n| n.is_element() && n.tag_name().name() == "include")
-    {
+    if let Some(include) = mujoco.descendants().find(|n| qname(*n) == "include") {
         let (range, file) = match xml.attr(include, "file") {
             Some(v) => (v.range.clone(), format!(" of {}", quoted(&v.text))),
             None => (xml.tag(include), String::new()),
@@ -109,15 +106,28 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     }
     let mut links = Vec::new();
     let mut count = 0;
-    // Each body's index, to find a body's parent among those before it.
-    let mut index = std::collections::HashMap::new();
+    // Per element under a world body, the index of the body it is in (None
+    // in the world body itself), filled in document order, so that each
+    // element's parent is there before it: a body's parent is found in one
+    // step, however deep the tree (a walk up its ancestors would make a
+    // long chain of bodies quadratic).
+    let mut enclosing: std::collections::HashMap<roxmltree::NodeId, Option<usize>> =
+        std::collections::HashMap::new();
     for world in children(mujoco, "worldbody") {
+        enclosing.insert(world.id(), None);
         // Bodies at any depth, also inside `<frame>`s; the world body
         // itself is not one.
-        for body in world
-            .descendants()
-            .filter(|n| n.is_element() && n.tag_name().name() == "body")
-        {
+        for node in world.descendants().skip(1).filter(Node::is_element) {
+            let parent = node
+                .parent()
+                .and_then(|p| enclosing.get(&p.id()).copied())
+                .flatten();
+            if qname(node) != "body" {
+                enclosing.insert(node.id(), parent);
+                continue;
+            }
+            let body = node;
+            enclosing.insert(body.id(), Some(links.len()));
             count += 1;
             let (name, owner) = match body.attribute("name").filter(|n| !n.is_empty()) {
                 Some(n) => (n.to_string(), format!("body {}", quoted(n))),
@@ -138,13 +148,7 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
             // joint): MuJoCo then needs its mass and inertia.
             let moving = body
                 .children()
-                .any(|c| c.is_element() && matches!(c.tag_name().name(), "joint" | "freejoint"));
-            let parent = body
-                .ancestors()
-                .skip(1)
-                .find(|n| n.is_element() && n.tag_name().name() == "body")
-                .and_then(|n| index.get(&n.id()).copied());
-            index.insert(body.id(), links.len());
+                .any(|c| matches!(qname(c), "joint" | "freejoint"));
             links.push(Link {
                 name,
                 range: body.range(),
@@ -217,7 +221,10 @@ fn inertial(xml: &Xml, node: Node, owner: &str, s: &Settings) -> Result<Inertial
         }
     };
     let rotation = match forms.first() {
-        Some((form, v)) => turn(quat_to_matrix(orientation(xml, form, v, owner, s)?)),
+        Some((form, v)) => {
+            let m = quat_to_matrix(orientation(xml, form, v, owner, s)?);
+            turn(proper(xml, v, owner, m)?)
+        }
         None => None,
     };
     Ok(Inertial {
@@ -408,6 +415,16 @@ mod tests {
     }
 
     #[test]
+    fn a_bodys_parent_is_the_body_it_is_in_through_frames() {
+        let d = read_ok(&mujoco(
+            "",
+            "<body name='a'><frame><frame><body name='b'><body name='c'/></body></frame></frame><body name='d'/></body><frame><body name='e'/></frame>",
+        ));
+        let parents: Vec<Option<usize>> = d.links.iter().map(|l| l.parent).collect();
+        assert_eq!(parents, [None, Some(0), Some(1), Some(0), None]);
+    }
+
+    #[test]
     fn the_world_body_is_not_a_link() {
         let d = read_ok(&mujoco("", "<geom size='1'/>"));
         assert!(d.links.is_empty());
@@ -527,6 +544,28 @@ mod tests {
         let d = error(&inertial("", "diaginertia='1 1 1' quat='0 0 0 0'"));
         assert!(
             d.contains("error: `quat` of body \"b\": a zero quaternion is no orientation\n"),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_quaternion_too_small_or_too_large_to_normalise_is_refused() {
+        // MuJoCo leaves a quaternion shorter than √mjEPS as it is, and
+        // divides one whose square overflows by infinity: neither is a
+        // rotation, and either would scale the tensor without a word.
+        for q in ["1e-8 0 0 0", "1e200 0 0 0", "0 1e160 1e160 0"] {
+            let d = error(&inertial("", &format!("diaginertia='1 1 1' quat='{q}'")));
+            assert!(
+                d.contains("error: `quat` of body \"b\" gives no rotation: its length is too small or too large to normalise in f64\n"),
+                "{q}: {d}"
+            );
+        }
+        let d = error(&inertial(
+            "",
+            "diaginertia='1 1 1' axisangle='1e200 0 0 30'",
+        ));
+        assert!(
+            d.contains("`axisangle` of body \"b\" gives no rotation"),
             "{d}"
         );
     }

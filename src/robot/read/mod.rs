@@ -32,7 +32,7 @@ pub fn read(source: &Source, format: Format) -> Result<Description, Diagnostic> 
         Format::Sdf => "sdf",
         Format::Mjcf => "mujoco",
     };
-    let found = root.tag_name().name();
+    let found = qname(root);
     if found != expected {
         return Err(xml.error(
             xml.tag(root),
@@ -59,7 +59,7 @@ fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
         allow_dtd: true,
         ..ParsingOptions::default()
     };
-    Document::parse_with_options(&source.text, options).map_err(|e| {
+    let doc = Document::parse_with_options(&source.text, options).map_err(|e| {
         let pos = e.pos();
         let at = offset_of(&source.text, pos.row, pos.col);
         let width = source.text[at..].chars().next().map_or(0, char::len_utf8);
@@ -67,7 +67,64 @@ fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
         // need not repeat it.
         let message = e.to_string().replace(&format!(" at {pos}"), "");
         source.error(at..at + width, format!("not well-formed xml: {message}"))
-    })
+    })?;
+    if let Some(deep) = too_deep(&doc) {
+        let xml = Xml { source };
+        return Err(xml
+            .error(
+                xml.tag(deep),
+                format!(
+                    "`<{}>` is nested {MAX_DEPTH} elements deep: no robot description nests that deep, and the simulators' XML parser (tinyxml2) refuses it",
+                    shorten(qname(deep))
+                ),
+            )
+            .help("a chain of bodies this long is a generated or damaged file"));
+    }
+    Ok(doc)
+}
+
+/// The deepest an element may be nested (the root element is at depth 1).
+/// NOTE: deep enough for any robot (a chain of a few hundred MJCF bodies,
+/// each with a joint and a geom, stays far below it); beyond it a reader's
+/// walk of a tree, or the nested names of SDFormat models, would grow with
+/// the square of the depth. tinyxml2, which MuJoCo and libsdformat parse
+/// with, stops at a fixed depth too (`TINYXML2_MAX_ELEMENT_DEPTH`).
+pub(crate) const MAX_DEPTH: usize = 1000;
+
+/// The first element (in document order) nested `MAX_DEPTH` deep, if any;
+/// in one pass, without recursion: each node's depth is its parent's plus
+/// one, and a parent comes before its children.
+pub(crate) fn too_deep<'a, 'i>(doc: &'a Document<'i>) -> Option<Node<'a, 'i>> {
+    let mut depth: Vec<usize> = Vec::new();
+    for n in doc.root().descendants() {
+        let d = n.parent().map_or(0, |p| {
+            depth.get(p.id().get() as usize).copied().unwrap_or(0) + 1
+        });
+        let i = n.id().get() as usize;
+        if depth.len() <= i {
+            depth.resize(i + 1, 0);
+        }
+        depth[i] = d;
+        if n.is_element() && d >= MAX_DEPTH {
+            return Some(n);
+        }
+    }
+    None
+}
+
+/// An element's name as written, its prefix included: `xacro:link` is no
+/// `link`, as the simulators' parsers (tinyxml2, which knows no namespaces)
+/// read it. Empty for a node that is not an element.
+pub(crate) fn qname<'i>(node: Node<'_, 'i>) -> &'i str {
+    if !node.is_element() {
+        return "";
+    }
+    let text = node.document().input_text();
+    let tag = &text[node.range().start + 1..];
+    let end = tag
+        .find(|c: char| c.is_ascii_whitespace() || c == '>' || c == '/')
+        .unwrap_or(tag.len());
+    &tag[..end]
 }
 
 /// The byte offset of roxmltree's 1-based row and column (columns count
@@ -153,7 +210,7 @@ impl Xml<'_> {
                 self.tag(node),
                 format!(
                     "`<{}>` of {owner} is missing the required attribute `{name}`",
-                    node.tag_name().name()
+                    qname(node)
                 ),
             )
         })
@@ -170,7 +227,7 @@ impl Xml<'_> {
         let text = text.trim();
         let exact = texts.len() == 1 && &self.source.text[range.clone()] == text;
         Value {
-            name: format!("`<{}>`", node.tag_name().name()),
+            name: format!("`<{}>`", qname(node)),
             text: text.to_string(),
             range: if range.is_empty() {
                 self.tag(node)
@@ -303,8 +360,7 @@ fn trim_range(text: &str, range: Range<usize>) -> Range<usize> {
 
 /// The element children of `node` named `name`, in document order.
 fn children<'a, 'i>(node: Node<'a, 'i>, name: &'a str) -> impl Iterator<Item = Node<'a, 'i>> {
-    node.children()
-        .filter(move |c| c.is_element() && c.tag_name().name() == name)
+    node.children().filter(move |c| qname(*c) == name)
 }
 
 /// The first element child of `node` named `name`.
@@ -317,6 +373,34 @@ fn child<'a, 'i>(node: Node<'a, 'i>, name: &'a str) -> Option<Node<'a, 'i>> {
 fn turn(m: M3<f64>) -> Option<M3<f64>> {
     let identity = (0..3).all(|i| (0..3).all(|j| m[i][j] == if i == j { 1.0 } else { 0.0 }));
     (!identity).then_some(m)
+}
+
+/// `m`, formed from `v`, if it is a rotation: finite, its columns unit
+/// length and perpendicular (to 1e-9). A quaternion or axis whose length
+/// overflows f64 or is too small to normalise gives none (MuJoCo's
+/// normalisation leaves a tiny quaternion as it is, and divides a huge one
+/// by infinity): a frame that is no rotation would scale or zero the
+/// tensor in the link frame without a word.
+fn proper(xml: &Xml, v: &Value, owner: &str, m: M3<f64>) -> Result<M3<f64>, Diagnostic> {
+    let mut ok = m.iter().flatten().all(|x| x.is_finite());
+    for i in 0..3 {
+        for j in 0..3 {
+            let dot: f64 = (0..3).map(|k| m[k][i] * m[k][j]).sum();
+            let want = if i == j { 1.0 } else { 0.0 };
+            ok &= (dot - want).abs() <= 1e-9;
+        }
+    }
+    if ok {
+        Ok(m)
+    } else {
+        Err(xml.error(
+            v.range.clone(),
+            format!(
+                "{} of {owner} gives no rotation: its length is too small or too large to normalise in f64",
+                v.name
+            ),
+        ))
+    }
 }
 
 /// R = Rz(yaw)·Ry(pitch)·Rx(roll), URDF's `rpy` and SDFormat's pose angles
@@ -380,6 +464,39 @@ mod tests {
         let text = "<?xml version='1.0'?>\n<!DOCTYPE robot [<!ENTITY m '2'>]>\n<robot name='r'><link name='a'><inertial><mass value='&m;'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>";
         let d = read(&source(text), Format::Urdf).unwrap();
         assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
+    }
+
+    #[test]
+    fn elements_nested_too_deep_are_refused_at_the_first_too_deep() {
+        // The root is at depth 1: MAX_DEPTH - 1 nested bodies under the
+        // world body reach MAX_DEPTH exactly.
+        let nest = |n: usize| {
+            format!(
+                "<mujoco>\n<worldbody>\n{}{}</worldbody></mujoco>",
+                "<body>\n".repeat(n),
+                "</body>".repeat(n)
+            )
+        };
+        assert!(read(&source(&nest(MAX_DEPTH - 3)), Format::Mjcf).is_ok());
+        let d = read(&source(&nest(MAX_DEPTH - 2)), Format::Mjcf).unwrap_err();
+        assert!(
+            d.to_string().starts_with(&format!(
+                "r.xml:{}:1: error: `<body>` is nested {MAX_DEPTH} elements deep",
+                MAX_DEPTH
+            )),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn a_prefixed_element_is_not_the_element_of_that_name() {
+        // `<x:link>` is no link to urdfdom (tinyxml knows no namespaces),
+        // and `update` does not take it for one either.
+        let text = "<robot name='r' xmlns:x='u'><x:link name='a'/><link name='b'><x:inertial/></link></robot>";
+        let d = read(&source(text), Format::Urdf).unwrap();
+        assert_eq!(d.links.len(), 1);
+        assert_eq!(d.links[0].name, "b");
+        assert_eq!(d.links[0].inertial, None);
     }
 
     #[test]

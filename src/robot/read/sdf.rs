@@ -9,7 +9,7 @@
 //! `nested::link`, relative to the outermost model, whose own name is left
 //! out unless the file has several top-level models.
 
-use super::{Value, Xml, child, quoted, rpy, turn};
+use super::{Value, Xml, child, proper, qname, quoted, rpy, turn};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
@@ -81,7 +81,7 @@ fn elements<'a, 'i>(node: Node<'a, 'i>) -> impl Iterator<Item = Node<'a, 'i>> {
 }
 
 fn is(node: &Node, name: &str) -> bool {
-    node.tag_name().name() == name
+    qname(*node) == name
 }
 
 /// `scope::name`, or `name` at the top.
@@ -136,10 +136,10 @@ impl<'a, 'i> Scope<'a, 'i> {
     fn walk(&mut self, xml: &Xml) -> Result<(), Diagnostic> {
         let owner = match self.node.attribute("name") {
             Some(n) if is(&self.node, "world") => format!("world {}", quoted(n)),
-            _ => format!("`<{}>`", self.node.tag_name().name()),
+            _ => format!("`<{}>`", qname(self.node)),
         };
         for c in elements(self.node) {
-            match c.tag_name().name() {
+            match qname(c) {
                 "model" => self.model(xml, c, "", false, &owner)?,
                 // A world's own joints name links as `model::link`.
                 "joint" => self.joint(xml, c, ""),
@@ -149,6 +149,10 @@ impl<'a, 'i> Scope<'a, 'i> {
         Ok(())
     }
 
+    /// A model and the models nested in it, depth first in document order,
+    /// as a recursion would, but with a stack of its own: models nest as
+    /// deep as the reader allows (`MAX_DEPTH`), deeper than a thread's
+    /// stack of recursive calls goes in a debug build.
     fn model(
         &mut self,
         xml: &Xml,
@@ -157,20 +161,46 @@ impl<'a, 'i> Scope<'a, 'i> {
         fixed: bool,
         owner: &str,
     ) -> Result<(), Diagnostic> {
-        xml.required(model, "name", owner)?;
-        let path = join(scope, model.attribute("name").unwrap_or_default());
-        let this = format!("model {}", quoted(&path));
-        // A nested model of a static model is static with it.
-        let fixed = fixed
-            || match child(model, "static") {
-                Some(s) => flag(xml, &xml.text(s), &this)?,
-                None => false,
+        /// A model being walked: its children still to read, its path, and
+        /// whether it is static.
+        struct Open<'a, 'i> {
+            children: roxmltree::Children<'a, 'i>,
+            path: String,
+            fixed: bool,
+            this: String,
+        }
+        let mut stack: Vec<Open<'a, 'i>> = Vec::new();
+        let mut next = Some((model, scope.to_string(), fixed, owner.to_string()));
+        loop {
+            if let Some((model, scope, fixed, owner)) = next.take() {
+                xml.required(model, "name", &owner)?;
+                let path = join(&scope, model.attribute("name").unwrap_or_default());
+                let this = format!("model {}", quoted(&path));
+                // A nested model of a static model is static with it.
+                let fixed = fixed
+                    || match child(model, "static") {
+                        Some(s) => flag(xml, &xml.text(s), &this)?,
+                        None => false,
+                    };
+                self.models.insert(path.clone(), model);
+                stack.push(Open {
+                    children: model.children(),
+                    path,
+                    fixed,
+                    this,
+                });
+            }
+            let Some(open) = stack.last_mut() else {
+                return Ok(());
             };
-        self.models.insert(path.clone(), model);
-        for c in elements(model) {
-            match c.tag_name().name() {
+            let Some(c) = open.children.next() else {
+                stack.pop();
+                continue;
+            };
+            let (path, fixed) = (open.path.clone(), open.fixed);
+            match qname(c) {
                 "link" => {
-                    xml.required(c, "name", &this)?;
+                    xml.required(c, "name", &open.this)?;
                     let p = join(&path, c.attribute("name").unwrap_or_default());
                     self.links.insert(p.clone(), self.found.len());
                     self.found.push(Found {
@@ -187,11 +217,10 @@ impl<'a, 'i> Scope<'a, 'i> {
                     }
                 }
                 "joint" => self.joint(xml, c, &path),
-                "model" => self.model(xml, c, &path, fixed, &this)?,
+                "model" => next = Some((c, path, fixed, open.this.clone())),
                 _ => {}
             }
         }
-        Ok(())
     }
 
     fn joint(&mut self, xml: &Xml, joint: Node, scope: &str) {
@@ -385,7 +414,7 @@ fn pose(
             ));
         }
         // Normalised: divided by |q|², not first made unit.
-        quaternion::<f64>([w, x, y, z])
+        proper(xml, &v, owner, quaternion::<f64>([w, x, y, z]))?
     } else {
         let sc = |a: f64| if degrees { sin_cos_deg(a) } else { a.sin_cos() };
         rpy(sc(n[3]), sc(n[4]), sc(n[5]))
@@ -501,6 +530,22 @@ mod tests {
         ));
         assert_eq!(i.pos, [1.0, 2.0, 3.0]);
         assert_matrix(i.rotation.unwrap(), RZ);
+    }
+
+    #[test]
+    fn a_quaternion_whose_square_overflows_or_vanishes_is_refused() {
+        // Divided by |q|², which is infinite or 0: NaN entries, once
+        // shown as null in check's JSON.
+        for q in ["0 0 1e200 1e200", "0 0 1e-200 0"] {
+            let text = link(&format!(
+                "<inertial><pose rotation_format='quat_xyzw'>1 2 3 {q}</pose></inertial>"
+            ));
+            let d = read(&source(&text), Format::Sdf).unwrap_err().to_string();
+            assert!(
+                d.contains("error: `<pose>` of link \"l\" gives no rotation"),
+                "{q}: {d}"
+            );
+        }
     }
 
     #[test]

@@ -7,7 +7,7 @@ use super::{Value, Xml, child, children, mjcf, quoted, rpy, turn};
 use crate::diag::Diagnostic;
 use crate::robot::{Description, Format, Inertial, Link, Tensor, Written};
 use roxmltree::Node;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
     // A link moves when it is the child of a joint that lets it (revolute,
@@ -34,19 +34,28 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
         });
     }
     // Each link's parent: the parent of the first joint naming it as the
-    // child (the first link of that name).
+    // child (the first link of that name). Names looked up in a map: a
+    // search of the links per joint would make a large robot quadratic.
+    let mut first: HashMap<&str, usize> = HashMap::with_capacity(links.len());
+    for (i, l) in links.iter().enumerate() {
+        first.entry(l.name.as_str()).or_insert(i);
+    }
+    let mut parents = vec![None; links.len()];
     for j in children(robot, "joint") {
         let end = |tag| child(j, tag).and_then(|e| e.attribute("link"));
         let (Some(parent), Some(kid)) = (end("parent"), end("child")) else {
             continue;
         };
-        let p = links.iter().position(|l: &Link| l.name == parent);
-        if let Some(k) = links.iter().position(|l: &Link| l.name == kid)
-            && links[k].parent.is_none()
+        let p = first.get(parent).copied();
+        if let Some(&k) = first.get(kid)
+            && parents[k].is_none()
             && p != Some(k)
         {
-            links[k].parent = p;
+            parents[k] = p;
         }
+    }
+    for (l, p) in links.iter_mut().zip(parents) {
+        l.parent = p;
     }
     let mut settings = mjcf::Settings::default();
     for mujoco in children(robot, "mujoco") {
@@ -252,6 +261,21 @@ mod tests {
                 ("wheel", true)
             ]
         );
+    }
+
+    #[test]
+    fn a_links_parent_is_that_of_the_first_joint_naming_it_as_the_first_link_of_that_name() {
+        let text = robot(
+            "<link name='base'/><link name='arm'/><link name='arm'/><link name='tool'/>\
+             <joint name='j0' type='fixed'><parent link='nowhere'/><child link='tool'/></joint>\
+             <joint name='j1' type='revolute'><parent link='base'/><child link='arm'/></joint>\
+             <joint name='j2' type='fixed'><parent link='arm'/><child link='tool'/></joint>\
+             <joint name='j3' type='fixed'><parent link='tool'/><child link='arm'/></joint>\
+             <joint name='j4' type='fixed'><parent link='base'/><child link='base'/></joint>",
+        );
+        let d = read(&source(&text), Format::Urdf).unwrap();
+        let parents: Vec<Option<usize>> = d.links.iter().map(|l| l.parent).collect();
+        assert_eq!(parents, [None, Some(0), None, Some(1)]);
     }
 
     #[test]
