@@ -191,7 +191,7 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
             let at = at.saturating_sub(if source.bom { 3 } else { 0 });
             Err(source
                 .error(at..at + 1, format!("invalid UTF-8 (byte 0x{byte:02x})"))
-                .help("a part file is UTF-8 text; re-save it as UTF-8"))
+                .help("massprop reads UTF-8 text; re-save the file as UTF-8"))
         }
     }
 }

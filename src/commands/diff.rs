@@ -122,9 +122,10 @@ fn against_link(
         (Some(r), None) => (r, &o.new, true),
         (None, Some(r)) => (r, &o.old, false),
         _ => {
-            return Err(Diagnostic::plain(
-                "OLD and NEW are both robot descriptions: `diff` compares a part file with a link (check each with `massprop check`)",
-            ));
+            return Err(Diagnostic::plain(format!(
+                "`{}` and `{}` are both robot descriptions: `diff` compares a part file with a link (check each with `massprop check`)",
+                o.old, o.new
+            )));
         }
     };
     let (source, format) = robot;
@@ -174,7 +175,10 @@ fn against_link(
     let t = inertial.tensor_in_link().matrix();
     let moments =
         crate::robot::engine::principal_moments(&inertial.tensor_in_link()).ok_or_else(|| {
-            Diagnostic::plain(format!("link \"{name}\": its principal moments overflow"))
+            source.error(
+                crate::robot::read::start_tag(&source.text, inertial.range.clone()),
+                format!("link \"{name}\": its principal moments overflow"),
+            )
         })?;
     let link_props = Props {
         mass: inertial.mass,

@@ -45,11 +45,17 @@ pub fn failure(link: &LinkResult, e: &EngineResult) -> String {
         .filter(|r| !r.holds)
         .map(rule_text)
         .collect();
+    // A verdict without a failed rule (values that overflow) says why in
+    // its note.
+    let why = if failed.is_empty() {
+        e.verdict.note.clone().unwrap_or_default()
+    } else {
+        failed.join("; ")
+    };
     let mut s = format!(
-        "link \"{}\" is invalid under {}: {}",
+        "link \"{}\" is invalid under {}: {why}",
         link.name,
         e.verdict.engine.name(),
-        failed.join("; ")
     );
     if let Some(c) = &e.cause {
         s.push_str("; likely cause: ");

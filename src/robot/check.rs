@@ -126,7 +126,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             }
             links.push(LinkResult {
                 name: link.name.clone(),
-                span: spans.span(start_tag(source, link.range.clone())),
+                span: spans.span(super::read::start_tag(&source.text, link.range.clone())),
                 moving: link.moving,
                 inertial: None,
                 engines: results,
@@ -181,7 +181,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
         }
         links.push(LinkResult {
             name: link.name.clone(),
-            span: spans.span(start_tag(source, inertial.range.clone())),
+            span: spans.span(super::read::start_tag(&source.text, inertial.range.clone())),
             moving: link.moving,
             inertial: values,
             engines: results,
@@ -311,14 +311,6 @@ impl<'t> Spans<'t> {
             end_column,
         }
     }
-}
-
-/// An element's start tag: where a message points (the whole element may
-/// be many lines).
-fn start_tag(source: &Source, range: std::ops::Range<usize>) -> std::ops::Range<usize> {
-    let text = &source.text[range.clone()];
-    let end = text.find('>').map_or(text.len(), |i| i + 1);
-    range.start..range.start + end
 }
 
 #[cfg(test)]

@@ -195,11 +195,7 @@ fn robot_hostile(path: &Path, link: &str) -> Result<bool, String> {
             }
             Err(d) => {
                 let text = d.to_string();
-                // NOTE: a known gap, outside robot/: diff's message for a
-                // link whose moments overflow in the link frame names no
-                // file (commands/diff.rs, Diagnostic::plain).
-                let known = text.contains("its principal moments overflow");
-                if !text.contains(name) && !text.contains("--link") && !known {
+                if !text.contains(name) && !text.contains("--link") {
                     return Err(format!("{what}: diagnostic does not name the file: {text}"));
                 }
             }

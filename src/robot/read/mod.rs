@@ -91,6 +91,23 @@ fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
 /// with, stops at a fixed depth too (`TINYXML2_MAX_ELEMENT_DEPTH`).
 pub(crate) const MAX_DEPTH: usize = 1000;
 
+/// The start tag, `<name …>` (`/>` included), of the element whose bytes
+/// are `range` in `text`: found by scanning past quoted attribute values,
+/// which may hold `>`.
+pub fn start_tag(text: &str, range: Range<usize>) -> Range<usize> {
+    let bytes = &text.as_bytes()[range.clone()];
+    let mut quote = None;
+    for (i, &b) in bytes.iter().enumerate() {
+        match (quote, b) {
+            (None, b'"' | b'\'') => quote = Some(b),
+            (Some(q), _) if q == b => quote = None,
+            (None, b'>') => return range.start..range.start + i + 1,
+            _ => {}
+        }
+    }
+    range
+}
+
 /// The first element (in document order) nested `MAX_DEPTH` deep, if any;
 /// in one pass, without recursion: each node's depth is its parent's plus
 /// one, and a parent comes before its children.
@@ -172,18 +189,7 @@ impl Xml<'_> {
     /// An element's start tag, `<name …>` (`/>` included), found by
     /// scanning past quoted attribute values, which may hold `>`.
     fn tag(&self, node: Node) -> Range<usize> {
-        let start = node.range().start;
-        let bytes = &self.source.text.as_bytes()[start..node.range().end];
-        let mut quote = None;
-        for (i, &b) in bytes.iter().enumerate() {
-            match (quote, b) {
-                (None, b'"' | b'\'') => quote = Some(b),
-                (Some(q), _) if q == b => quote = None,
-                (None, b'>') => return start..start + i + 1,
-                _ => {}
-            }
-        }
-        node.range()
+        start_tag(&self.source.text, node.range())
     }
 
     /// The attribute `name` of `node`, when given.
