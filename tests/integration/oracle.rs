@@ -17,24 +17,10 @@ fn python() -> String {
     std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
 }
 
-/// Why `python` cannot run the oracle, or None when it can import mujoco.
-fn missing_mujoco(python: &str) -> Option<String> {
-    match Command::new(python).args(["-c", "import mujoco"]).output() {
-        Err(e) => Some(format!("`{python}` does not run ({e})")),
-        Ok(out) if !out.status.success() => {
-            // The traceback's last line says why (ModuleNotFoundError: …).
-            let stderr = String::from_utf8_lossy(&out.stderr);
-            let why = stderr.trim().lines().last().unwrap_or("no message");
-            Some(format!("`{python} -c \"import mujoco\"` fails: {why}"))
-        }
-        Ok(_) => None,
-    }
-}
-
 #[test]
 fn check_and_export_agree_with_mujocos_own_compiler() {
     let python = python();
-    if let Some(why) = missing_mujoco(&python) {
+    if let Some(why) = missing(&python, "mujoco") {
         eprintln!(
             "skipped: the MuJoCo oracle needs Python with the mujoco package; {why}. \
              Set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
