@@ -71,20 +71,7 @@ impl Source {
     /// last (inclusive, as GitHub's annotations and SARIF take it; an empty
     /// range ends where it starts).
     pub fn span(&self, range: Range<usize>) -> Span {
-        let (line, column) = self.line_col(range.start);
-        let start = floor_char_boundary(&self.text, range.start.min(self.text.len()));
-        let end = floor_char_boundary(&self.text, range.end.min(self.text.len()));
-        let last = self.text[..end]
-            .char_indices()
-            .next_back()
-            .map_or(start, |(i, _)| i.max(start));
-        let (end_line, end_column) = self.line_col(last);
-        Span {
-            line,
-            column,
-            end_line,
-            end_column,
-        }
+        span_by(&self.text, range, |offset| self.line_col(offset))
     }
 
     /// An error at `span` of this source.
@@ -226,6 +213,32 @@ pub fn is_bidi(c: char) -> bool {
         c,
         '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{200e}' | '\u{200f}' | '\u{61c}'
     )
+}
+
+/// The span of `range` in `text`, its first character and its last
+/// (inclusive, as GitHub's annotations and SARIF take it; an empty range
+/// ends where it starts), each placed by `line_col`: the one rule for a
+/// span, for `Source::span` and for a caller that indexes the lines itself
+/// (`robot::check`, over files of 10⁵ links).
+pub fn span_by(
+    text: &str,
+    range: Range<usize>,
+    mut line_col: impl FnMut(usize) -> (usize, usize),
+) -> Span {
+    let (line, column) = line_col(range.start);
+    let start = floor_char_boundary(text, range.start.min(text.len()));
+    let end = floor_char_boundary(text, range.end.min(text.len()));
+    let last = text[..end]
+        .char_indices()
+        .next_back()
+        .map_or(start, |(i, _)| i.max(start));
+    let (end_line, end_column) = line_col(last);
+    Span {
+        line,
+        column,
+        end_line,
+        end_column,
+    }
 }
 
 /// A path as text, for every output (messages, tables, JSON): the one rule

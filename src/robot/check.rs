@@ -150,20 +150,19 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
         ]
         .iter()
         .all(|x| x.is_finite());
-        let values = engine::principal_moments(&inertial.tensor)
-            .filter(|_| finite)
-            .map(|m| Values {
-                mass: inertial.mass,
-                center_of_mass: inertial.pos,
-                inertia: [
-                    in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
-                ],
-                principal_moments: m,
-            });
+        let moments = engine::principal_moments(&inertial.tensor);
+        let values = moments.filter(|_| finite).map(|m| Values {
+            mass: inertial.mass,
+            center_of_mass: inertial.pos,
+            inertia: [
+                in_link.xx, in_link.yy, in_link.zz, in_link.xy, in_link.xz, in_link.yz,
+            ],
+            principal_moments: m,
+        });
         let results: Vec<EngineResult> = engines
             .iter()
             .map(|&e| {
-                let verdict = engine::judge(e, &facts, &d.compiler);
+                let verdict = engine::judge_with(e, &facts, moments, &d.compiler);
                 let cause = (!verdict.valid)
                     .then(|| cause::likely(d, &mirrors, i, &facts, e))
                     .flatten();
@@ -294,22 +293,10 @@ impl<'t> Spans<'t> {
         (line, col)
     }
 
-    /// `Source::span`: the first character of `range` and its last.
+    /// `Source::span`, by the same rule (`diag::span_by`).
     fn span(&mut self, range: std::ops::Range<usize>) -> Span {
-        let (line, column) = self.line_col(range.start);
-        let start = floor_char_boundary(self.text, range.start);
-        let end = floor_char_boundary(self.text, range.end);
-        let last = self.text[..end]
-            .char_indices()
-            .next_back()
-            .map_or(start, |(i, _)| i.max(start));
-        let (end_line, end_column) = self.line_col(last);
-        Span {
-            line,
-            column,
-            end_line,
-            end_column,
-        }
+        let text = self.text;
+        crate::diag::span_by(text, range, |offset| self.line_col(offset))
     }
 }
 

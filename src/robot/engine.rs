@@ -9,15 +9,11 @@
 //! - **Drake**: `RotationalInertia::CouldBePhysicallyValid()` and the mass
 //!   as its parser takes it (tests/oracle/ENGINE-RULES.md).
 //!
-//! MuJoCo and Drake are judged on principal moments computed accurately
-//! (Jacobi in double-double, rounded once), then each engine's comparisons
-//! are made in f64 in the order its source makes them. NOTE: each finds
-//! the moments with its own solver, within a few tens of ulps of these; for
-//! a margin within that of zero its own verdict may differ from the one its
-//! rule gives on exact moments. `Rule::close` says when. gz-math's solver is
-//! not that accurate (up to ~1e-8 near a double moment), so its rule runs
-//! on its own formulas (`gz_principal_moments`), ported operation for
-//! operation. tests/oracle/ checks all three against the engines' code.
+//! MuJoCo and Drake are judged on accurate principal moments (Jacobi in
+//! double-double), each engine's comparisons made in f64 in its source's
+//! order; their own solvers are within tens of ulps (`Rule::close`).
+//! gz-math's is not (~1e-8 near a double moment): its rule runs on its own
+//! formulas (`gz_principal_moments`). tests/oracle/ checks all three.
 
 use super::{MujocoCompiler, Tensor, Written};
 use crate::numeric::{DD, Real};
@@ -129,7 +125,17 @@ fn rel(x: f64, scale: f64) -> Option<f64> {
 /// `engine`'s verdict on `f`; `compiler`: the file's MuJoCo compiler
 /// settings (MuJoCo only).
 pub fn judge(engine: Engine, f: &Facts, compiler: &MujocoCompiler) -> Verdict {
-    let Some(moments) = principal_moments(&f.tensor) else {
+    judge_with(engine, f, principal_moments(&f.tensor), compiler)
+}
+
+/// `judge` with `f`'s `principal_moments` found once for every engine.
+pub fn judge_with(
+    engine: Engine,
+    f: &Facts,
+    moments: Option<[f64; 3]>,
+    compiler: &MujocoCompiler,
+) -> Verdict {
+    let Some(moments) = moments else {
         // The reader refuses non-finite numbers; a sum of huge finite ones
         // can still overflow.
         return overflow(engine, "the tensor's principal moments overflow");

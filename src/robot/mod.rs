@@ -132,6 +132,19 @@ impl Tensor {
         }
     }
 
+    /// The entries by their URDF and SDFormat names, in the order both
+    /// write them: ixx ixy ixz iyy iyz izz.
+    pub fn named(&self) -> [(&'static str, f64); 6] {
+        [
+            ("ixx", self.xx),
+            ("ixy", self.xy),
+            ("ixz", self.xz),
+            ("iyy", self.yy),
+            ("iyz", self.yz),
+            ("izz", self.zz),
+        ]
+    }
+
     /// The three products, xy, xz, yz.
     pub fn products(&self) -> [f64; 3] {
         [self.xy, self.xz, self.yz]

@@ -27,8 +27,16 @@ fn check_and_export_agree_with_mujocos_own_compiler() {
         );
         return;
     }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/mujoco_oracle.py");
-    let out = Command::new(&python)
+    run_oracle(&python, "mujoco_oracle.py", &[], "MuJoCo");
+}
+
+/// Run `tests/oracle/SCRIPT` with `python` on 300 cases, `args` added, and
+/// fail with its report unless it agrees on every one.
+fn run_oracle(python: &str, script: &str, args: &[&str], engine: &str) {
+    let script = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/oracle")
+        .join(script);
+    let out = Command::new(python)
         .arg(&script)
         .args([
             "--massprop",
@@ -36,11 +44,12 @@ fn check_and_export_agree_with_mujocos_own_compiler() {
             "--cases",
             "300",
         ])
+        .args(args)
         .output()
         .expect("the oracle script runs");
     assert!(
         out.status.success(),
-        "the MuJoCo oracle found disagreements (exit {:?}):\n{}\n{}",
+        "the {engine} oracle found disagreements (exit {:?}):\n{}\n{}",
         out.status.code(),
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
@@ -76,26 +85,7 @@ fn engine_oracle(engine: &str, python: String, module: &str) {
         );
         return;
     }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/engines_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args([
-            "--massprop",
-            env!("CARGO_BIN_EXE_massprop"),
-            "--engine",
-            engine,
-            "--cases",
-            "300",
-        ])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the {engine} oracle found disagreements (exit {:?}):\n{}\n{}",
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    run_oracle(&python, "engines_oracle.py", &["--engine", engine], engine);
 }
 
 #[test]

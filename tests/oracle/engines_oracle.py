@@ -75,10 +75,11 @@ import math
 import os
 import random
 import shutil
-import subprocess
 import sys
 import tempfile
 from typing import Callable, Optional
+
+from oracle_common import num, nums, run, ulps  # beside this script
 
 # Files per massprop process.
 BATCH = 200
@@ -152,21 +153,7 @@ LOADERS = {"drake": load_drake, "gazebo": load_gazebo}
 # Numbers and rotations (standard library only: both interpreters run this)
 
 
-def num(x: float) -> str:
-    """A number as the file writes it: Python's shortest round-trip repr."""
-    return repr(float(x))
 
-
-def nums(xs) -> str:
-    return " ".join(num(x) for x in xs)
-
-
-def ulps(x: float, k: int) -> float:
-    """`x` moved by `k` units in the last place (k < 0: downwards)."""
-    direction = math.inf if k > 0 else -math.inf
-    for _ in range(abs(k)):
-        x = math.nextafter(x, direction)
-    return x
 
 
 def random_rotation(rng: random.Random) -> list:
@@ -650,9 +637,6 @@ VERDICTS = {"drake": drake_verdict, "gazebo": gazebo_verdict}
 # --------------------------------------------------------------------------
 # massprop's verdicts
 
-
-def run(cmd: list, timeout: float = 600) -> subprocess.CompletedProcess:
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
 
 
 @dataclasses.dataclass

@@ -54,13 +54,14 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 from fractions import Fraction
 from typing import Callable, Optional
 
 import numpy as np
+
+from oracle_common import num, nums, run, ulps  # beside this script
 
 try:
     import mujoco
@@ -94,21 +95,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 # Numbers and rotations
 
 
-def num(x: float) -> str:
-    """A number as the file writes it: Python's shortest round-trip repr."""
-    return repr(float(x))
 
-
-def nums(xs) -> str:
-    return " ".join(num(x) for x in xs)
-
-
-def ulps(x: float, k: int) -> float:
-    """`x` moved by `k` units in the last place (k < 0: downwards)."""
-    direction = math.inf if k > 0 else -math.inf
-    for _ in range(abs(k)):
-        x = float(np.nextafter(x, direction))
-    return x
 
 
 def random_quat(rng: np.random.Generator) -> np.ndarray:
@@ -945,9 +932,6 @@ def mujoco_verdict(path: str) -> Verdict:
         message = str(err).strip()
         return Verdict(False, message, any(s in message for s in INERTIAL_MESSAGES))
 
-
-def run(cmd: list, timeout: float = 600) -> subprocess.CompletedProcess:
-    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
 
 
 def massprop_verdicts(massprop: str, paths: list) -> dict:

@@ -56,14 +56,7 @@ pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {
             numbers(&mut out, &[e.mass]);
             out.push_str("\"/>\n");
             line(&mut out, indent, 1, "<inertia");
-            for (name, v) in [
-                ("ixx", t.xx),
-                ("ixy", t.xy),
-                ("ixz", t.xz),
-                ("iyy", t.yy),
-                ("iyz", t.yz),
-                ("izz", t.zz),
-            ] {
+            for (name, v) in t.named() {
                 out.push(' ');
                 out.push_str(name);
                 out.push_str("=\"");
@@ -82,14 +75,7 @@ pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {
             push_shortest(&mut out, e.mass);
             out.push_str("</mass>\n");
             line(&mut out, indent, 1, "<inertia>\n");
-            for (name, v) in [
-                ("ixx", t.xx),
-                ("ixy", t.xy),
-                ("ixz", t.xz),
-                ("iyy", t.yy),
-                ("iyz", t.yz),
-                ("izz", t.zz),
-            ] {
+            for (name, v) in t.named() {
                 line(&mut out, indent, 2, "<");
                 out.push_str(name);
                 out.push('>');
@@ -302,26 +288,11 @@ mod tests {
         }
     }
 
-    /// R of a quaternion by MuJoCo's own formula (`mju_quat2Mat`), rows.
+    /// R of a quaternion by the formula MuJoCo's `mju_quat2Mat` uses (the
+    /// parts' own, `rotation::quaternion`, which divides by |q|², 1 to a
+    /// rounding here).
     fn mujoco_matrix(q: [f64; 4]) -> [[f64; 3]; 3] {
-        let [w, x, y, z] = q;
-        [
-            [
-                w * w + x * x - y * y - z * z,
-                2.0 * (x * y - w * z),
-                2.0 * (x * z + w * y),
-            ],
-            [
-                2.0 * (x * y + w * z),
-                w * w - x * x + y * y - z * z,
-                2.0 * (y * z - w * x),
-            ],
-            [
-                2.0 * (x * z - w * y),
-                2.0 * (y * z + w * x),
-                w * w - x * x - y * y + z * z,
-            ],
-        ]
+        crate::rotation::quaternion::<f64>(q)
     }
 
     fn assert_quat(q: [f64; 4], expected: [f64; 4]) {
