@@ -11,6 +11,7 @@ use nalgebra::{Matrix3, Vector3};
 use std::ops::Range;
 
 pub mod error;
+pub mod mirror;
 
 pub use error::Own;
 

@@ -29,6 +29,11 @@ pub enum Orientation {
     /// The first turn applied after the second (R₁ R₂): a part of an
     /// included sub-assembly, turned with it.
     Then(Box<Orientation>, Box<Orientation>),
+    /// The reflection E − 2 n nᵀ/|n|² in the plane through 0 normal to a
+    /// non-zero `n` (any length). Not a turn (its determinant is −1): it
+    /// is only ever a factor of a `Then` whose product is one, S R F of a
+    /// mirrored part (`part::mirror`).
+    Reflect([f64; 3]),
 }
 
 impl Orientation {
@@ -43,6 +48,7 @@ impl Orientation {
             }
             Orientation::Matrix(m) => orthonormalised(m),
             Orientation::Then(outer, inner) => mul(&outer.matrix(), &inner.matrix()),
+            Orientation::Reflect(n) => reflection(*n),
         }
     }
 }
@@ -91,6 +97,20 @@ pub fn axis_angle<T: Real>(k: [f64; 3], deg: f64) -> M3<T> {
         std::array::from_fn(|j| {
             let d = if i == j { c } else { T::of(0.0) };
             d + s * cross[i][j] + one_c * k[i] * k[j]
+        })
+    })
+}
+
+/// The reflection E − 2 k kᵀ in the plane normal to `n` (normalised here,
+/// in T, by the one scaled norm): exact for a normal along an axis.
+pub fn reflection<T: Real>(n: [f64; 3]) -> M3<T> {
+    let k = n.map(T::of);
+    let len = norm_of(&k);
+    let k = k.map(|x| x / len);
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let d = if i == j { T::of(1.0) } else { T::of(0.0) };
+            d - T::of(2.0) * k[i] * k[j]
         })
     })
 }

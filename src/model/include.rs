@@ -100,6 +100,13 @@ pub struct Frame {
     /// The included file's length and mass units in this file's.
     pub(super) length: f64,
     mass: f64,
+    /// A copy's frame (`model::copies`): the point it turns about, taken
+    /// from each point before the turn (`origin + R (p − pivot)`); none
+    /// for an include's.
+    pivot: Option<[f64; 3]>,
+    /// A mirror's frame: R is a reflection, and a part placed by its
+    /// centre and a turn is completed as its image by `part::mirror`.
+    mirror: bool,
 }
 
 impl Frame {
@@ -109,8 +116,31 @@ impl Frame {
     }
 
     fn point(&self, p: [f64; 3]) -> [f64; 3] {
-        let d = self.dir(p);
+        let d = match self.pivot {
+            None => self.dir(p),
+            Some(o) => self.dir(std::array::from_fn(|i| p[i] - o[i])),
+        };
         std::array::from_fn(|i| self.origin[i] + d[i])
+    }
+
+    /// A copy's frame (`model::copies`), in this file's units: a point p
+    /// goes to `origin + R (p − pivot)`, R the matrix of `orientation`
+    /// (a reflection when `mirror`).
+    pub(super) fn copy(
+        origin: [f64; 3],
+        pivot: [f64; 3],
+        orientation: Orientation,
+        mirror: bool,
+    ) -> Frame {
+        Frame {
+            origin,
+            r: orientation.matrix(),
+            orientation,
+            length: 1.0,
+            mass: 1.0,
+            pivot: Some(pivot),
+            mirror,
+        }
     }
 
     /// `o` turned with this frame, in place.
@@ -166,6 +196,9 @@ impl Frame {
                 self.turn(orientation);
             }
         }
+        if self.mirror {
+            crate::part::mirror::complete(shape, &mut s.place);
+        }
         s.placed = self.rounding(s.placed, reach);
     }
 
@@ -178,7 +211,9 @@ impl Frame {
     /// there is turned (×3 in the worst direction unless the turn is
     /// exact) and scaled; the new one is R (p·L) + origin's rounding,
     /// (4 + ρ) units of |origin| + |p·L|₁ (`reach`), or one of that when
-    /// the frame is exact.
+    /// the frame is exact. A copy's frame adds the difference p − pivot
+    /// (a unit of |p|₁ + |pivot|₁, turned) and its origin's own rounding
+    /// (i·step, or the pivot itself: a unit of it).
     fn rounding(&self, old: crate::part::Placed, reach: f64) -> crate::part::Placed {
         let rho = crate::part::error::turn_error(&self.orientation, &self.r);
         let exact = rho == 0.0 && self.length == 1.0 && self.mass == 1.0;
@@ -186,6 +221,13 @@ impl Frame {
         let size = if exact { 0.0 } else { 12.0 + 2.0 * rho };
         let ops = if exact { 1.0 } else { 4.0 + rho };
         let origin = self.origin.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let (ops, reach) = match self.pivot {
+            None => (ops, reach),
+            Some(o) => (
+                ops + 2.0 + grow,
+                reach + o.iter().map(|x| x.abs()).sum::<f64>(),
+            ),
+        };
         crate::part::Placed::new(
             f64::from(old.units) + size,
             f64::from(old.at) * self.length * grow
@@ -323,14 +365,17 @@ impl Ctx<'_> {
         let max = super::MAX_PARTS as u64;
         let mut total = 0u64;
         for p in raw_parts {
+            // Its copies (`array`, `mirror`) count it again each.
+            let copies = super::copies::raw_multiplicity(p.get_ref());
             let Some(inc) = &p.get_ref().include else {
-                total += 1;
+                total = total.saturating_add(copies);
                 continue;
             };
             let (n, shown) = match self.count_include(inc, files) {
                 Some((n, shown)) => (n, shown),
                 None => (1, String::new()),
             };
+            let n = n.saturating_mul(copies);
             total = total.saturating_add(n);
             if total > max {
                 // A count that saturated is past u64.
@@ -372,7 +417,10 @@ impl Ctx<'_> {
             .read_from(t.shown.clone());
         // A file that includes nothing holds its `[[part]]` tables: counted
         // from the text, not parsed (it is parsed when it is expanded).
-        if !source.text.contains("include") {
+        if !["include", "array", "mirror"]
+            .iter()
+            .any(|k| source.text.contains(k))
+        {
             let n = super::part_tables(&source.text);
             files.counts.insert(t.canonical, n);
             return Some((n, t.shown_name));
@@ -388,10 +436,11 @@ impl Ctx<'_> {
             .push((t.canonical.clone(), t.shown_name.clone()));
         let n = raw.part.as_ref().map_or(0, |parts| {
             parts.get_ref().iter().fold(0u64, |n, p| {
-                n.saturating_add(match &p.get_ref().include {
+                let copies = super::copies::raw_multiplicity(p.get_ref());
+                n.saturating_add(copies.saturating_mul(match &p.get_ref().include {
                     None => 1,
                     Some(inc) => child.count_include(inc, files).map_or(1, |(n, _)| n),
-                })
+                }))
             })
         });
         files.stack.pop();
@@ -545,6 +594,8 @@ impl Ctx<'_> {
             orientation,
             length: ratio(Dim::LENGTH),
             mass: ratio(Dim::MASS),
+            pivot: None,
+            mirror: false,
         };
         if parts + child.count > super::MAX_PARTS {
             return Err(self.err(
@@ -560,6 +611,7 @@ impl Ctx<'_> {
             frame,
             model: child,
             span: raw.span(),
+            copies: None,
         };
         // Representable in this file's units too (the composer works in
         // them): a sub-assembly in µm and mg can underflow in km and t.

@@ -9,6 +9,7 @@
 //! the rotation forms; `toml_error` words the TOML crate's errors;
 //! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
+mod copies;
 mod ctx;
 pub mod expect;
 pub mod fast;
@@ -24,6 +25,7 @@ mod streamed;
 mod toml_error;
 mod walk;
 
+pub use copies::{Copies, push_copy_name};
 pub use include::{Frame, Includes};
 pub use walk::{Event, Leaf};
 
@@ -83,6 +85,8 @@ pub enum Item {
         /// cannot see it: the composition is the idealised one whatever
         /// this says, and only the report compares it with the solid.
         real: Option<(Solid, f64)>,
+        /// Its `array` and `mirror`, if any (`copies`).
+        copies: Option<Box<Copies>>,
     },
     Include(Box<Include>),
 }
@@ -97,6 +101,9 @@ pub struct Include {
     pub model: std::sync::Arc<Model>,
     /// Its `[[part]]` table in this file.
     pub span: Range<usize>,
+    /// Its `array` and `mirror`, if any (`copies`): each copy a
+    /// sub-assembly `name[i]`.
+    pub copies: Option<Box<Copies>>,
 }
 
 /// `[analysis]` in the file's units: reference point (file length), ω
@@ -288,19 +295,25 @@ impl Model {
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
         for (i, p) in raw_parts.into_iter().enumerate() {
+            // Its copies first: a count past the limit is refused before
+            // anything of the part is read or included.
+            let copies = ctx.copies(p.get_ref())?;
             if p.get_ref().include.is_some() {
-                let item = ctx.include(i, &p, files, count, &mut assembly_names)?;
-                if let Item::Include(inc) = &item {
-                    count += inc.model.count;
+                let mut item = ctx.include(i, &p, files, count, &mut assembly_names)?;
+                if let Item::Include(inc) = &mut item {
+                    count = ctx.count_copies(&p, count, inc.model.count, copies.as_deref())?;
                     has_real_sizes |= inc.model.has_real_sizes;
+                    inc.copies = copies;
                 }
+                ctx.copies_in_range(&item)?;
                 items.push(item);
                 continue;
             }
             let (part, real) = ctx.part(i, &p)?;
             has_real_sizes |= real.is_some();
-            count += 1;
-            items.push(Item::Part { part, real });
+            count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
+            items.push(Item::Part { part, real, copies });
+            ctx.copies_in_range(items.last().expect("just pushed"))?;
         }
         Model::rest(&ctx, raw, items, count, has_real_sizes)
     }
@@ -348,7 +361,7 @@ impl Model {
         // Every sub-assembly's path, parents first.
         let mut prefixes: Vec<Vec<String>> = Vec::new();
         self.each_assembly(&mut Vec::new(), &mut |path| {
-            prefixes.push(path.iter().map(|s| s.to_string()).collect());
+            prefixes.push(path.to_vec());
         });
         // At most this many names in a message; the rest are counted.
         const LISTED: usize = 12;
@@ -397,12 +410,26 @@ impl Model {
     }
 
     /// Each sub-assembly's path, parents before children.
-    fn each_assembly<'m>(&'m self, path: &mut Vec<&'m str>, f: &mut dyn FnMut(&[&str])) {
+    ///
+    /// NOTE: a sub-assembly with copies is listed by its own name (all its
+    /// copies) and by each copy's, `wheel[2]`, whose sub-assemblies follow.
+    fn each_assembly(&self, path: &mut Vec<String>, f: &mut dyn FnMut(&[String])) {
         for item in self.items.iter() {
             if let Item::Include(inc) = item {
-                path.push(&inc.name);
+                path.push(inc.name.clone());
                 f(path);
-                inc.model.each_assembly(path, f);
+                match &inc.copies {
+                    None => inc.model.each_assembly(path, f),
+                    Some(c) => {
+                        for i in c.indices() {
+                            let last = path.last_mut().expect("just pushed");
+                            last.clear();
+                            push_copy_name(last, &inc.name, i);
+                            f(path);
+                            inc.model.each_assembly(path, f);
+                        }
+                    }
+                }
                 path.pop();
             }
         }
@@ -417,17 +444,24 @@ impl Model {
         let mut items = Vec::new();
         let (mut count, mut has_real_sizes) = (0, false);
         for item in self.items.iter() {
-            if let Item::Include(inc) = item
-                && inc.name == *first
-            {
-                let model = std::sync::Arc::new(inc.model.keeping(rest));
-                count = model.count;
-                has_real_sizes = model.has_real_sizes;
-                items.push(Item::Include(Box::new(Include {
-                    model,
-                    ..(**inc).clone()
-                })));
-            }
+            let Item::Include(inc) = item else { continue };
+            // The sub-assembly with all its copies, or one copy of it.
+            let copies = match &inc.copies {
+                _ if inc.name == *first => inc.copies.clone(),
+                Some(c) => match c.index_in(&inc.name, first) {
+                    Some(i) => Some(Box::new(c.keeping(i))),
+                    None => continue,
+                },
+                None => continue,
+            };
+            let model = std::sync::Arc::new(inc.model.keeping(rest));
+            count = model.count * copies.as_ref().map_or(1, |c| c.indices().len());
+            has_real_sizes = model.has_real_sizes;
+            items.push(Item::Include(Box::new(Include {
+                model,
+                copies,
+                ..(**inc).clone()
+            })));
         }
         Model {
             items: std::sync::Arc::new(items),

@@ -55,6 +55,14 @@ table_only!(
 );
 table_only!(RawPart, "a part table with `shape`");
 table_only!(
+    RawArray,
+    "a table such as { count = 4, step = [1, 0, 0] } or { count = 32, axis = [0, 0, 1], step_degrees = 11.25 }"
+);
+table_only!(
+    RawMirror,
+    "a table such as { normal = [1, 0, 0], origin = [0, 0, 0] }"
+);
+table_only!(
     RawRotation,
     "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
 );
@@ -187,6 +195,52 @@ pub struct RawPart {
     /// A cut-out: subtracted from the body.
     #[schemars(with = "Option<bool>")]
     pub remove: Option<Box<Spanned<bool>>>,
+    /// Copies of the part along a step or about an axis (`model::copies`).
+    #[schemars(with = "Option<RawArray>")]
+    pub array: Option<Box<Spanned<RawArray>>>,
+    /// The part and its mirror image in a plane (`model::copies`).
+    #[schemars(with = "Option<RawMirror>")]
+    pub mirror: Option<Box<Spanned<RawMirror>>>,
+}
+
+/// `array = { count = N, step = [dx, dy, dz] }`, or `{ count = N, axis =
+/// [x, y, z], step_degrees = θ, origin = [x, y, z] }`: N copies of a part,
+/// copy i moved by i·step, or turned by i·θ about the axis through
+/// `origin`.
+#[derive(Deserialize, JsonSchema, Debug, Default, Clone)]
+#[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Array")]
+pub struct RawArray {
+    /// How many copies, the part itself the first: a positive integer.
+    #[schemars(with = "Quantity")]
+    pub count: Option<Spanned<Quantity>>,
+    /// A linear array: the step from each copy to the next (lengths).
+    #[schemars(with = "Option<[Quantity; 3]>")]
+    pub step: Option<Vector>,
+    /// A polar array: the axis the copies turn about (a direction, any
+    /// non-zero length).
+    #[schemars(with = "Option<[f64; 3]>")]
+    pub axis: Option<Floats>,
+    /// A polar array: the turn from each copy to the next, in degrees.
+    #[schemars(with = "Option<Quantity>")]
+    pub step_degrees: Option<Spanned<Quantity>>,
+    /// A polar array: a point of the axis (lengths); [0, 0, 0] if not given.
+    #[schemars(with = "Option<[Quantity; 3]>")]
+    pub origin: Option<Vector>,
+}
+
+/// `mirror = { normal = [x, y, z], origin = [x, y, z] }`: the part and its
+/// mirror image in the plane through `origin` normal to `normal`.
+#[derive(Deserialize, JsonSchema, Debug, Default, Clone)]
+#[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Mirror")]
+pub struct RawMirror {
+    /// The plane's normal (a direction, any non-zero length).
+    #[schemars(with = "[f64; 3]")]
+    pub normal: Option<Floats>,
+    /// A point of the plane (lengths); [0, 0, 0] if not given.
+    #[schemars(with = "Option<[Quantity; 3]>")]
+    pub origin: Option<Vector>,
 }
 
 #[derive(Deserialize, JsonSchema, Debug, Default)]

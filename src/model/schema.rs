@@ -70,6 +70,7 @@ pub fn schema() -> Value {
 fn part_rules() -> Vec<Value> {
     let mut include_keys = vec!["name"];
     include_keys.extend(super::include::INCLUDE_KEYS);
+    include_keys.extend(super::copies::COPY_KEYS);
     let mut rules = vec![json!({
         "if": { "required": ["include"] },
         "then": {
@@ -81,6 +82,7 @@ fn part_rules() -> Vec<Value> {
     for s in &SHAPES {
         let mut keys = vec!["name", "shape"];
         keys.extend(s.keys);
+        keys.extend(super::copies::COPY_KEYS);
         let mut then = Map::new();
         then.insert("description".into(), s.help.into());
         then.insert("propertyNames".into(), json!({ "enum": keys }));

@@ -113,7 +113,13 @@ impl Streamed {
         match made {
             Ok((part, real)) => {
                 self.has_real_sizes |= real.is_some();
-                self.items.push(Item::Part { part, real });
+                self.items.push(Item::Part {
+                    part,
+                    real,
+                    // A file with copies is read whole (`fast` declines
+                    // `array` and `mirror`).
+                    copies: None,
+                });
             }
             Err(e) => self.error = Some(e),
         }

@@ -12,9 +12,10 @@
 //! rounded once per frame (`include::Frame::place`); so results are the
 //! same to the last bit.
 
-use super::{Include, Item, Model};
+use super::{Copies, Frame, Include, Item, Model, push_copy_name};
 use crate::part::{Part, Parts, RealSize};
-use std::fmt::Write as _;
+use std::borrow::Cow;
+use std::ops::Range;
 
 impl Parts for Model {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
@@ -45,7 +46,7 @@ pub enum Event<'a> {
 impl Model {
     /// Every part of the body, named, in file order.
     pub fn each_part(&self, f: &mut dyn FnMut(Leaf<'_>)) {
-        self.walk(&mut Vec::new(), true, &mut 0, &mut |e| {
+        self.walk(true, &mut 0, &mut |e| {
             if let Event::Part(l) = e {
                 f(l);
             }
@@ -55,14 +56,14 @@ impl Model {
     /// Every part and sub-assembly, in file order; parts unnamed, as
     /// `each_body_part`'s.
     pub fn each_event(&self, f: &mut dyn FnMut(Event<'_>)) {
-        self.walk(&mut Vec::new(), false, &mut 0, f);
+        self.walk(false, &mut 0, f);
     }
 
     /// Every part of the body, in file order, for its physics only: a part
     /// of a sub-assembly has neither its name nor its sub-assemblies
     /// (nothing of them is allocated).
     pub fn each_body_part(&self, f: &mut dyn FnMut(&Part)) {
-        self.walk(&mut Vec::new(), false, &mut 0, &mut |e| {
+        self.walk(false, &mut 0, &mut |e| {
             if let Event::Part(l) = e {
                 f(l.part);
             }
@@ -98,24 +99,17 @@ impl Model {
     }
 
     fn each_body_part_real(&self, f: &mut dyn FnMut(RealSize)) {
-        self.walk(&mut Vec::new(), false, &mut 0, &mut |e| {
+        self.walk(false, &mut 0, &mut |e| {
             if let Event::Part(Leaf { real: Some(r), .. }) = e {
                 f(r);
             }
         });
     }
 
-    /// Walk the items, `frames` the includes entered (outermost first),
-    /// `next` the index of the next part.
-    pub(super) fn walk<'m>(
-        &'m self,
-        frames: &mut Vec<&'m Include>,
-        named: bool,
-        next: &mut usize,
-        f: &mut dyn FnMut(Event<'_>),
-    ) {
+    /// Walk the items, `next` the index of the next part.
+    pub(super) fn walk(&self, named: bool, next: &mut usize, f: &mut dyn FnMut(Event<'_>)) {
         let mut walk = Walk {
-            frames: std::mem::take(frames),
+            frames: Vec::new(),
             named,
             next: *next,
             prefix: String::new(),
@@ -135,8 +129,15 @@ impl Model {
         };
         walk.items(self, f);
         *next = walk.next;
-        *frames = walk.frames;
     }
+}
+
+/// A frame a part is placed through: an include's, or a copy's made as
+/// the walk reaches it (`copies::Copies::frames`); with the `[[part]]`
+/// table in this file that it comes from.
+struct Layer<'m> {
+    frame: Cow<'m, Frame>,
+    span: &'m Range<usize>,
 }
 
 /// A walk under way.
@@ -147,7 +148,8 @@ impl Model {
 /// its name or path (made afresh for each, they were 40 of the 2²⁰ parts'
 /// 42 allocations).
 struct Walk<'m> {
-    frames: Vec<&'m Include>,
+    /// The frames entered, outermost first.
+    frames: Vec<Layer<'m>>,
     named: bool,
     next: usize,
     /// `a / b / `: the names of the sub-assemblies entered.
@@ -159,74 +161,141 @@ impl<'m> Walk<'m> {
     fn items(&mut self, model: &'m Model, f: &mut dyn FnMut(Event<'_>)) {
         for (k, item) in model.items.iter().enumerate() {
             match item {
-                Item::Include(inc) => {
-                    f(Event::Enter(inc));
-                    self.frames.push(inc);
-                    let len = self.prefix.len();
-                    if self.named {
-                        self.prefix.push_str(&inc.name);
-                        self.prefix.push_str(" / ");
-                        self.placed.assembly.push(inc.name.clone());
-                    }
-                    self.items(&inc.model, f);
-                    if self.named {
-                        self.prefix.truncate(len);
-                        self.placed.assembly.pop();
-                    }
-                    self.frames.pop();
-                    f(Event::Exit);
-                }
-                Item::Part { part, real } => {
-                    let index = self.next;
-                    self.next += 1;
-                    let mut real = real.map(|(solid, size)| RealSize {
-                        part: index,
-                        solid,
-                        size,
-                    });
-                    let unnamed = self.named && !part.named;
-                    let Some(outermost) = self.frames.first() else {
-                        if !unnamed {
-                            f(Event::Part(Leaf { index, part, real }));
-                            continue;
-                        }
-                        let placed = &mut self.placed;
-                        placed.clone_from(part);
-                        placed.name = format!("part {}", k + 1);
-                        placed.named = true;
-                        f(Event::Part(Leaf {
-                            index,
-                            part: placed,
-                            real,
-                        }));
-                        continue;
-                    };
-                    let placed = &mut self.placed;
-                    placed.shape = part.shape;
-                    placed.span = outermost.span.clone();
-                    placed.spec.clone_from(&part.spec);
-                    for inc in self.frames.iter().rev() {
-                        inc.frame.place(part.shape, &mut placed.spec);
-                        if let Some(r) = &mut real {
-                            r.size *= inc.frame.length;
+                Item::Include(inc) => match &inc.copies {
+                    None => self.include(inc, None, f),
+                    Some(c) => {
+                        for i in c.indices() {
+                            let pushed = self.copy_frames(c, i, &inc.span);
+                            self.include(inc, Some(i), f);
+                            self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
-                    if self.named {
-                        placed.name.clear();
-                        placed.name.push_str(&self.prefix);
-                        if unnamed {
-                            let _ = write!(placed.name, "part {}", k + 1);
-                        } else {
-                            placed.name.push_str(&part.name);
+                },
+                Item::Part { part, real, copies } => match copies {
+                    None => self.part(k, part, *real, None, f),
+                    Some(c) => {
+                        for i in c.indices() {
+                            let pushed = self.copy_frames(c, i, &part.span);
+                            self.part(k, part, *real, Some(i), f);
+                            self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
-                    f(Event::Part(Leaf {
-                        index,
-                        part: placed,
-                        real,
-                    }));
-                }
+                },
             }
         }
+    }
+
+    /// Enter copy `i`'s frames (outermost first: its mirror's, then its
+    /// array's); how many.
+    fn copy_frames(&mut self, c: &Copies, i: usize, span: &'m Range<usize>) -> usize {
+        let [array, mirror] = c.frames(i);
+        let mut pushed = 0;
+        for frame in [mirror, array].into_iter().flatten() {
+            self.frames.push(Layer {
+                frame: Cow::Owned(frame),
+                span,
+            });
+            pushed += 1;
+        }
+        pushed
+    }
+
+    /// The sub-assembly `inc` (its copy `copy`), entered, walked and left.
+    fn include(&mut self, inc: &'m Include, copy: Option<usize>, f: &mut dyn FnMut(Event<'_>)) {
+        f(Event::Enter(inc));
+        self.frames.push(Layer {
+            frame: Cow::Borrowed(&inc.frame),
+            span: &inc.span,
+        });
+        let len = self.prefix.len();
+        if self.named {
+            let at = self.prefix.len();
+            match copy {
+                None => self.prefix.push_str(&inc.name),
+                Some(i) => push_copy_name(&mut self.prefix, &inc.name, i),
+            }
+            self.placed.assembly.push(self.prefix[at..].to_string());
+            self.prefix.push_str(" / ");
+        }
+        self.items(&inc.model, f);
+        if self.named {
+            self.prefix.truncate(len);
+            self.placed.assembly.pop();
+        }
+        self.frames.pop();
+        f(Event::Exit);
+    }
+
+    /// The part `part`, `k` its position in its file (its copy `copy`).
+    fn part(
+        &mut self,
+        k: usize,
+        part: &'m Part,
+        real: Option<(crate::part::Solid, f64)>,
+        copy: Option<usize>,
+        f: &mut dyn FnMut(Event<'_>),
+    ) {
+        let index = self.next;
+        self.next += 1;
+        let mut real = real.map(|(solid, size)| RealSize {
+            part: index,
+            solid,
+            size,
+        });
+        let unnamed = self.named && !part.named;
+        let Some(outermost) = self.frames.first() else {
+            if !unnamed && copy.is_none() {
+                f(Event::Part(Leaf { index, part, real }));
+                return;
+            }
+            let placed = &mut self.placed;
+            placed.clone_from(part);
+            if self.named {
+                placed.name.clear();
+                write_name(&mut placed.name, "", k, part, copy);
+                placed.named = true;
+            }
+            f(Event::Part(Leaf {
+                index,
+                part: &self.placed,
+                real,
+            }));
+            return;
+        };
+        let span = outermost.span.clone();
+        let placed = &mut self.placed;
+        placed.shape = part.shape;
+        placed.span = span;
+        placed.spec.clone_from(&part.spec);
+        for layer in self.frames.iter().rev() {
+            layer.frame.place(part.shape, &mut placed.spec);
+            if let Some(r) = &mut real {
+                r.size *= layer.frame.length;
+            }
+        }
+        if self.named {
+            placed.name.clear();
+            write_name(&mut placed.name, &self.prefix, k, part, copy);
+        }
+        f(Event::Part(Leaf {
+            index,
+            part: placed,
+            real,
+        }));
+    }
+}
+
+/// A part's name, after `prefix` (the path of its sub-assemblies): its
+/// own, or `part N` (`k` + 1), with its copy's index.
+fn write_name(out: &mut String, prefix: &str, k: usize, part: &Part, copy: Option<usize>) {
+    use std::fmt::Write as _;
+    out.push_str(prefix);
+    match (part.named, copy) {
+        (true, None) => out.push_str(&part.name),
+        (true, Some(i)) => push_copy_name(out, &part.name, i),
+        (false, None) => {
+            let _ = write!(out, "part {}", k + 1);
+        }
+        (false, Some(i)) => push_copy_name(out, &format!("part {}", k + 1), i),
     }
 }

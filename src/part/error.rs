@@ -209,5 +209,7 @@ fn form_error(o: &Orientation) -> f64 {
         // the model's 1e-9) and a product's roundings.
         Orientation::Matrix(_) => 16.0,
         Orientation::Then(outer, inner) => form_error(outer) + form_error(inner) + 4.0,
+        // The normal normalised (4), 2 k kᵀ and the difference (3).
+        Orientation::Reflect(_) => 8.0,
     }
 }

@@ -201,17 +201,31 @@ fn write(
 ) {
     for item in model.items.iter() {
         let Item::Include(inc) = item else { continue };
-        let s = sums[*next];
-        *next += 1;
-        row.path.push(inc.name.clone());
-        row.parts = s.parts;
-        row.mass = s.mass;
-        row.mass_fraction = s.mass / total;
-        row.center_of_mass = s.center_of_mass;
-        row.principal_moment_share = s.share;
-        f(row);
-        write(&inc.model, sums, next, row, total, f);
-        row.path.pop();
+        // A sub-assembly with copies is a row per copy, `wheel[i]`, as the
+        // walk entered them.
+        let mut one = |name: String, next: &mut usize, row: &mut AssemblySummary| {
+            let s = sums[*next];
+            *next += 1;
+            row.path.push(name);
+            row.parts = s.parts;
+            row.mass = s.mass;
+            row.mass_fraction = s.mass / total;
+            row.center_of_mass = s.center_of_mass;
+            row.principal_moment_share = s.share;
+            f(row);
+            write(&inc.model, sums, next, row, total, f);
+            row.path.pop();
+        };
+        match &inc.copies {
+            None => one(inc.name.clone(), next, row),
+            Some(c) => {
+                for i in c.indices() {
+                    let mut name = String::new();
+                    crate::model::push_copy_name(&mut name, &inc.name, i);
+                    one(name, next, row);
+                }
+            }
+        }
     }
 }
 

@@ -1,0 +1,549 @@
+//! Copies of a part or a sub-assembly: `array = { .. }` and `mirror =
+//! { .. }` on any `[[part]]`, read and checked (`Ctx::copies`), and each
+//! copy's frames (`Copies::frames`).
+//!
+//! NOTE: a copy is a frame, as an include is (`include::Frame`): nothing
+//! holds the copies; a walk (`walk`) places each as it reaches it, through
+//! the frame of its array and then its mirror's, and drops it. Copy 0 is
+//! the part as written (no frame at all, so not one bit changes); copy i
+//! of a linear array is moved by i·step; of a polar one turned by
+//! `AxisAngle(axis, i·θ)`, the very turn a part written with `rotation =
+//! { axis, degrees = i·θ }` has, about `origin` (`origin + R (p − origin)`),
+//! so an array composes to what its copies spelt out give: to the last bit
+//! at quarter turns, to the rounding of the turn otherwise. With a mirror,
+//! the copies [0, N) are the array's, [N, 2N) their images in the same
+//! order: copy N + i is the image of copy i.
+
+use super::raw::{Floats, Quantity, RawArray, RawMirror, RawPart, Vector};
+use super::{Ctx, Frame, Item, MAX_PARTS, Model};
+use crate::diag::Diagnostic;
+use crate::part::Place;
+use crate::rotation::Orientation;
+use crate::units::Dim;
+use std::ops::Range;
+use toml::Spanned;
+
+/// The keys any part may have besides its shape's or an include's (the
+/// JSON Schema reads them too: `model::schema`).
+pub(super) const COPY_KEYS: [&str; 2] = ["array", "mirror"];
+
+/// How an array places its copies.
+#[derive(Debug, Clone, PartialEq)]
+enum Pattern {
+    /// No array: the part alone (and its image, with a mirror).
+    One,
+    /// Copy i moved by i·`step` (file units).
+    Linear { count: usize, step: [f64; 3] },
+    /// Copy i turned by i·`degrees` about `axis` through `origin`.
+    Polar {
+        count: usize,
+        axis: [f64; 3],
+        degrees: f64,
+        origin: [f64; 3],
+    },
+}
+
+/// A part's copies: its array's and its mirror's.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Copies {
+    pattern: Pattern,
+    /// The mirror's plane: its normal and a point of it (file units).
+    mirror: Option<([f64; 3], [f64; 3])>,
+    /// `--only` kept this copy alone (`Model::only`).
+    only: Option<usize>,
+}
+
+impl Copies {
+    /// The array's copies (1 without an array).
+    fn count(&self) -> usize {
+        match self.pattern {
+            Pattern::One => 1,
+            Pattern::Linear { count, .. } | Pattern::Polar { count, .. } => count,
+        }
+    }
+
+    /// All the copies: the array's, twice with a mirror.
+    pub fn len(&self) -> usize {
+        self.count() * if self.mirror.is_some() { 2 } else { 1 }
+    }
+
+    /// Never: a part has at least one copy, itself.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// The copies a walk makes: all, or the one `--only` kept.
+    pub fn indices(&self) -> Range<usize> {
+        match self.only {
+            Some(i) => i..i + 1,
+            None => 0..self.len(),
+        }
+    }
+
+    /// These copies, with only copy `i` kept.
+    pub(super) fn keeping(&self, i: usize) -> Copies {
+        Copies {
+            only: Some(i),
+            ..self.clone()
+        }
+    }
+
+    /// The frames that place copy `i`, the innermost first: its array's
+    /// (none for copy 0 of the array) and its mirror's (none for the
+    /// array's own copies).
+    pub(super) fn frames(&self, i: usize) -> [Option<Frame>; 2] {
+        let n = self.count();
+        let (k, image) = (i % n, i >= n);
+        let array = match (&self.pattern, k) {
+            (_, 0) | (Pattern::One, _) => None,
+            (Pattern::Linear { step, .. }, k) => {
+                let k = k as f64;
+                Some(Frame::copy(
+                    step.map(|s| k * s),
+                    [0.0; 3],
+                    Orientation::Identity,
+                    false,
+                ))
+            }
+            (
+                Pattern::Polar {
+                    axis,
+                    degrees,
+                    origin,
+                    ..
+                },
+                k,
+            ) => Some(Frame::copy(
+                *origin,
+                *origin,
+                Orientation::AxisAngle(*axis, k as f64 * degrees),
+                false,
+            )),
+        };
+        let mirror = match (&self.mirror, image) {
+            (Some((normal, origin)), true) => Some(Frame::copy(
+                *origin,
+                *origin,
+                Orientation::Reflect(*normal),
+                true,
+            )),
+            _ => None,
+        };
+        [array, mirror]
+    }
+
+    /// The copy `name` names of the part or sub-assembly `base`
+    /// (`base[i]`), if one of these.
+    pub(super) fn index_in(&self, base: &str, name: &str) -> Option<usize> {
+        let digits = name
+            .strip_prefix(base)?
+            .strip_prefix('[')?
+            .strip_suffix(']')?;
+        // Written as the names are: no sign, no leading zeros.
+        if digits.is_empty() || (digits.len() > 1 && digits.starts_with('0')) {
+            return None;
+        }
+        let i: usize = digits
+            .bytes()
+            .all(|b| b.is_ascii_digit())
+            .then(|| digits.parse().ok())??;
+        (i < self.len()).then_some(i)
+    }
+}
+
+/// Copy `i` of `base`'s name: `base[i]`, the one form every output shows.
+pub fn push_copy_name(out: &mut String, base: &str, i: usize) {
+    use std::fmt::Write as _;
+    let _ = write!(out, "{base}[{i}]");
+}
+
+/// How many parts `p` stands for, as written, before any of it is
+/// checked (for the part limit counted before anything is expanded,
+/// `include::Ctx::check_part_count`): its array's `count` (1 if it cannot
+/// be read: the array is refused where it is read), twice with a mirror.
+pub(super) fn raw_multiplicity(p: &RawPart) -> u64 {
+    let count = p
+        .array
+        .as_deref()
+        .and_then(|a| a.get_ref().count.as_ref())
+        .and_then(|c| match c.get_ref() {
+            Quantity::Number(x) if *x >= 1.0 && x.fract() == 0.0 => Some(if *x < u64::MAX as f64 {
+                *x as u64
+            } else {
+                u64::MAX
+            }),
+            _ => None,
+        })
+        .unwrap_or(1);
+    count.saturating_mul(if p.mirror.is_some() { 2 } else { 1 })
+}
+
+impl Ctx<'_> {
+    /// A part's `array` and `mirror`, checked; `None` without either.
+    pub(super) fn copies(&self, p: &RawPart) -> Result<Option<Box<Copies>>, Diagnostic> {
+        if p.array.is_none() && p.mirror.is_none() {
+            return Ok(None);
+        }
+        let pattern = match p.array.as_deref() {
+            Some(a) => self.array(a)?,
+            None => Pattern::One,
+        };
+        let mirror = match p.mirror.as_deref() {
+            Some(m) => Some(self.mirror(m)?),
+            None => None,
+        };
+        let copies = Copies {
+            pattern,
+            mirror,
+            only: None,
+        };
+        if copies.len() > MAX_PARTS {
+            let span = p.mirror.as_deref().map_or(0..0, Spanned::span);
+            return Err(self.err(
+                span,
+                format!(
+                    "the mirror doubles the array's {} copies past the limit of {MAX_PARTS} parts",
+                    copies.count()
+                ),
+            ));
+        }
+        Ok(Some(Box::new(copies)))
+    }
+
+    fn array(&self, a: &Spanned<RawArray>) -> Result<Pattern, Diagnostic> {
+        let r = a.get_ref();
+        let help = "write `array = { count = N, step = [dx, dy, dz] }` (copies along a step) or `array = { count = N, axis = [x, y, z], step_degrees = θ, origin = [x, y, z] }` (copies about an axis)";
+        let Some(count) = &r.count else {
+            return Err(self
+                .err(a.span(), "`array` needs `count`, the number of copies")
+                .help(help));
+        };
+        let count = self.count(count)?;
+        match (&r.step, &r.axis) {
+            (Some(step), Some(axis)) => {
+                let (later, earlier, span) = if axis.span().start > step.span().start {
+                    ("axis", "step", axis.span())
+                } else {
+                    ("step", "axis", step.span())
+                };
+                Err(self
+                    .err(
+                        span,
+                        format!("`{later}` conflicts with `{earlier}`: an array is along a step or about an axis"),
+                    )
+                    .help(help))
+            }
+            (Some(step), None) => {
+                for (key, span) in [
+                    ("step_degrees", r.step_degrees.as_ref().map(Spanned::span)),
+                    ("origin", r.origin.as_ref().map(Spanned::span)),
+                ] {
+                    if let Some(span) = span {
+                        return Err(self
+                            .err(span, format!("`{key}` applies to an array about an axis (with `axis`), not along a `step`"))
+                            .help(help));
+                    }
+                }
+                let step = self.point(step, "step")?;
+                // The last copy's step, representable.
+                let last = (count - 1) as f64;
+                if step.iter().any(|s| !(last * s).is_finite()) {
+                    return Err(self.err(
+                        step_span(r),
+                        format!("`step` times {} copies overflows", count - 1),
+                    ));
+                }
+                Ok(Pattern::Linear { count, step })
+            }
+            (None, Some(axis)) => {
+                let axis = self.direction(axis, "axis")?;
+                let Some(deg) = &r.step_degrees else {
+                    return Err(self
+                        .err(a.span(), "an array about an `axis` needs `step_degrees`, the turn from each copy to the next")
+                        .help(help));
+                };
+                let degrees = self.plain(deg, "step_degrees")?;
+                if !((count - 1) as f64 * degrees).is_finite() {
+                    return Err(self.err(
+                        deg.span(),
+                        format!("`step_degrees` times {} copies overflows", count - 1),
+                    ));
+                }
+                let origin = match &r.origin {
+                    Some(o) => self.point(o, "origin")?,
+                    None => [0.0; 3],
+                };
+                Ok(Pattern::Polar {
+                    count,
+                    axis,
+                    degrees,
+                    origin,
+                })
+            }
+            (None, None) => Err(self
+                .err(
+                    a.span(),
+                    "`array` needs `step` (copies along a step) or `axis` and `step_degrees` (copies about an axis)",
+                )
+                .help(help)),
+        }
+    }
+
+    fn mirror(&self, m: &Spanned<RawMirror>) -> Result<([f64; 3], [f64; 3]), Diagnostic> {
+        let r = m.get_ref();
+        let Some(normal) = &r.normal else {
+            return Err(self
+                .err(m.span(), "`mirror` needs `normal`, the direction normal to its plane")
+                .help("write `mirror = { normal = [x, y, z], origin = [x, y, z] }` (the plane through `origin`; [0, 0, 0] if not given)"));
+        };
+        let normal = self.direction(normal, "normal")?;
+        let origin = match &r.origin {
+            Some(o) => self.point(o, "origin")?,
+            None => [0.0; 3],
+        };
+        Ok((normal, origin))
+    }
+
+    /// `count`: a whole number of copies, 1 to the part limit.
+    fn count(&self, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
+        let x = self.plain(q, "count")?;
+        if !(x >= 1.0 && x.fract() == 0.0) {
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`count` must be a whole number of copies, 1 or more, got {x}"),
+                )
+                .help("`count` counts the part itself: `count = 4` is the part and 3 copies"));
+        }
+        if x > MAX_PARTS as f64 {
+            return Err(self.err(
+                q.span(),
+                format!("`count` of {x:e} copies is past the limit of {MAX_PARTS} parts"),
+            ));
+        }
+        Ok(x as usize)
+    }
+
+    /// A plain number (no unit): a TOML number, or a string of one.
+    ///
+    /// NOTE: where parameters (`[params]`) make quantity strings
+    /// expressions, a dimensionless expression belongs here.
+    fn plain(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
+        let x = match q.get_ref() {
+            Quantity::Number(x) => *x,
+            Quantity::Text(t) => match crate::units::split_number(t) {
+                Ok((x, "")) => x,
+                _ => {
+                    return Err(self.err(
+                        q.span(),
+                        format!("`{key}` is a plain number, without a unit, got {t:?}"),
+                    ));
+                }
+            },
+        };
+        if !x.is_finite() {
+            return Err(self.err(q.span(), format!("`{key}` must be finite")));
+        }
+        Ok(x)
+    }
+
+    /// A point or step in the file's units, representable in SI too.
+    fn point(&self, v: &Vector, key: &str) -> Result<[f64; 3], Diagnostic> {
+        let p = self.file_vec3(v, key, Dim::LENGTH)?;
+        self.vec3(v, key, Dim::LENGTH)?;
+        Ok(p)
+    }
+
+    /// A direction: three finite numbers, not all zero.
+    fn direction(&self, v: &Floats, key: &str) -> Result<[f64; 3], Diagnostic> {
+        let c = self.exactly(v, 3, super::ctx::Whose::Key(key), "numbers")?;
+        let mut out = [0.0; 3];
+        for (o, x) in out.iter_mut().zip(c) {
+            if !x.get_ref().is_finite() {
+                return Err(self.err(x.span(), format!("`{key}` must be finite")));
+            }
+            *o = *x.get_ref();
+        }
+        if out.iter().all(|x| *x == 0.0) {
+            return Err(self.err(v.span(), format!("`{key}` must be a non-zero direction")));
+        }
+        Ok(out)
+    }
+}
+
+impl Ctx<'_> {
+    /// The body's parts with `raw`'s: `count` before it, `each` per copy
+    /// (1 for a part, an included file's parts), refused past the limit
+    /// before any copy is made.
+    pub(super) fn count_copies(
+        &self,
+        raw: &Spanned<RawPart>,
+        count: usize,
+        each: usize,
+        copies: Option<&Copies>,
+    ) -> Result<usize, Diagnostic> {
+        let Some(c) = copies else {
+            return Ok(count + each);
+        };
+        let total = each
+            .checked_mul(c.len())
+            .and_then(|n| n.checked_add(count))
+            .filter(|n| *n <= MAX_PARTS);
+        total.ok_or_else(|| {
+            let p = raw.get_ref();
+            let span = p
+                .array
+                .as_deref()
+                .map(Spanned::span)
+                .or_else(|| p.mirror.as_deref().map(Spanned::span))
+                .unwrap_or_else(|| raw.span());
+            self.err(
+                span,
+                format!(
+                    "with its {} copies of {each} part{} this takes the body past {MAX_PARTS} parts, the limit",
+                    c.len(),
+                    if each == 1 { "" } else { "s" }
+                ),
+            )
+            .help("each copy counts its parts again")
+        })
+    }
+
+    /// Every copy of `item` representable in the file's units and in SI:
+    /// its mass properties (as every part's are checked) and its position.
+    /// Walked once, as a body is (nothing held); the failing copy named.
+    pub(super) fn copies_in_range(&self, item: &Item) -> Result<(), Diagnostic> {
+        let (Item::Part {
+            copies: Some(_), ..
+        }
+        | Item::Include(_)) = item
+        else {
+            return Ok(());
+        };
+        if let Item::Include(inc) = item
+            && inc.copies.is_none()
+        {
+            return Ok(());
+        }
+        let span = match item {
+            Item::Part { part, .. } => part.span.clone(),
+            Item::Include(inc) => inc.span.clone(),
+        };
+        let one = Model {
+            items: std::sync::Arc::new(vec![item.clone()]),
+            ..Model::empty(self.units)
+        };
+        let si = self.units.factor(Dim::LENGTH).value();
+        let mut bad = None;
+        one.each_body_part(&mut |p| {
+            if bad.is_some() {
+                return;
+            }
+            if !positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite()) {
+                bad = Some(true);
+            } else if self.in_file_range(p.shape, &p.spec, "", 0..0).is_err() {
+                bad = Some(false);
+            }
+        });
+        let Some(far) = bad else { return Ok(()) };
+        // Again, named (the walk names only the copy that fails).
+        let mut failed = None;
+        one.each_part(&mut |l| {
+            let p = l.part;
+            if failed.is_none()
+                && (!positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite())
+                    || self.in_file_range(p.shape, &p.spec, "", 0..0).is_err())
+            {
+                failed = Some(p.clone());
+            }
+        });
+        let p = failed.expect("the walk that named it met the part that failed");
+        if far {
+            return Err(self
+                .err(
+                    span,
+                    format!(
+                        "the copy `{}` lies beyond the range of f64 (in the file's units or in SI)",
+                        p.name
+                    ),
+                )
+                .help("the array's step or the mirror's plane takes the copies too far"));
+        }
+        self.in_file_range(p.shape, &p.spec, &p.name, span)
+    }
+}
+
+/// Every coordinate of the points a placement gives, and its edges'.
+fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
+    let points: Vec<[f64; 3]> = match place {
+        Place::Centered { center, .. } | Place::Given { center, .. } => vec![*center],
+        Place::Edges { corner, edges } => std::iter::once(*corner).chain(*edges).collect(),
+        Place::FromTo { from, to } => vec![*from, *to],
+        Place::Vertices(v) => v.to_vec(),
+    };
+    points.into_iter().flatten()
+}
+
+fn step_span(r: &RawArray) -> Range<usize> {
+    r.step.as_ref().map_or(0..0, Spanned::span)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn copies(count: usize, mirror: bool) -> Copies {
+        Copies {
+            pattern: Pattern::Linear {
+                count,
+                step: [1.0, 0.0, 0.0],
+            },
+            mirror: mirror.then_some(([1.0, 0.0, 0.0], [0.0; 3])),
+            only: None,
+        }
+    }
+
+    #[test]
+    fn a_mirror_doubles_the_copies_and_copy_zero_has_no_frame() {
+        let c = copies(3, true);
+        assert_eq!(c.len(), 6);
+        assert!(c.frames(0).iter().all(Option::is_none));
+        let f = c.frames(3);
+        assert!(f[0].is_none() && f[1].is_some());
+        let f = c.frames(4);
+        assert!(f[0].is_some() && f[1].is_some());
+        let f = c.frames(2);
+        assert!(f[0].is_some() && f[1].is_none());
+    }
+
+    #[test]
+    fn a_copy_is_named_by_its_index_as_written() {
+        let c = copies(12, false);
+        assert_eq!(c.index_in("leg", "leg[11]"), Some(11));
+        assert_eq!(c.index_in("leg", "leg[0]"), Some(0));
+        for no in [
+            "leg[12]", "leg[01]", "leg[+1]", "leg[]", "leg", "leg[1", "le[1]",
+        ] {
+            assert_eq!(c.index_in("leg", no), None, "{no}");
+        }
+        let mut s = String::new();
+        push_copy_name(&mut s, "part 3", 7);
+        assert_eq!(s, "part 3[7]");
+    }
+
+    #[test]
+    fn the_raw_count_is_read_before_any_check() {
+        let mut p = RawPart::default();
+        assert_eq!(raw_multiplicity(&p), 1);
+        p.array = Some(Box::new(Spanned::new(
+            0..0,
+            RawArray {
+                count: Some(Spanned::new(0..0, Quantity::Number(1e12))),
+                ..RawArray::default()
+            },
+        )));
+        assert_eq!(raw_multiplicity(&p), 1_000_000_000_000);
+        p.mirror = Some(Box::new(Spanned::new(0..0, RawMirror::default())));
+        assert_eq!(raw_multiplicity(&p), 2_000_000_000_000);
+    }
+}
