@@ -318,7 +318,14 @@ impl Ctx<'_> {
         if x > MAX_PARTS as f64 {
             return Err(self.err(
                 q.span(),
-                format!("`count` of {x:e} copies is past the limit of {MAX_PARTS} parts"),
+                format!(
+                    "`count` of {} copies is past the limit of {MAX_PARTS} parts",
+                    if x < 1e15 {
+                        format!("{x}")
+                    } else {
+                        format!("{x:e}")
+                    }
+                ),
             ));
         }
         Ok(x as usize)
@@ -390,15 +397,8 @@ impl Ctx<'_> {
             .and_then(|n| n.checked_add(count))
             .filter(|n| *n <= MAX_PARTS);
         total.ok_or_else(|| {
-            let p = raw.get_ref();
-            let span = p
-                .array
-                .as_deref()
-                .map(Spanned::span)
-                .or_else(|| p.mirror.as_deref().map(Spanned::span))
-                .unwrap_or_else(|| raw.span());
             self.err(
-                span,
+                copies_span(raw),
                 format!(
                     "with its {} copies of {each} part{} this takes the body past {MAX_PARTS} parts, the limit",
                     c.len(),
@@ -412,7 +412,11 @@ impl Ctx<'_> {
     /// Every copy of `item` representable in the file's units and in SI:
     /// its mass properties (as every part's are checked) and its position.
     /// Walked once, as a body is (nothing held); the failing copy named.
-    pub(super) fn copies_in_range(&self, item: &Item) -> Result<(), Diagnostic> {
+    pub(super) fn copies_in_range(
+        &self,
+        item: &Item,
+        raw: &Spanned<RawPart>,
+    ) -> Result<(), Diagnostic> {
         let (Item::Part {
             copies: Some(_), ..
         }
@@ -425,10 +429,7 @@ impl Ctx<'_> {
         {
             return Ok(());
         }
-        let span = match item {
-            Item::Part { part, .. } => part.span.clone(),
-            Item::Include(inc) => inc.span.clone(),
-        };
+        let span = copies_span(raw);
         let one = Model {
             items: std::sync::Arc::new(vec![item.clone()]),
             ..Model::empty(self.units)
@@ -482,6 +483,16 @@ fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
         Place::Vertices(v) => v.to_vec(),
     };
     points.into_iter().flatten()
+}
+
+/// Where a part's copies are asked for: its `array`, else its `mirror`.
+fn copies_span(raw: &Spanned<RawPart>) -> Range<usize> {
+    let p = raw.get_ref();
+    p.array
+        .as_deref()
+        .map(Spanned::span)
+        .or_else(|| p.mirror.as_deref().map(Spanned::span))
+        .unwrap_or_else(|| raw.span())
 }
 
 fn step_span(r: &RawArray) -> Range<usize> {

@@ -305,7 +305,7 @@ impl Model {
                     has_real_sizes |= inc.model.has_real_sizes;
                     inc.copies = copies;
                 }
-                ctx.copies_in_range(&item)?;
+                ctx.copies_in_range(&item, &p)?;
                 items.push(item);
                 continue;
             }
@@ -313,7 +313,7 @@ impl Model {
             has_real_sizes |= real.is_some();
             count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
             items.push(Item::Part { part, real, copies });
-            ctx.copies_in_range(items.last().expect("just pushed"))?;
+            ctx.copies_in_range(items.last().expect("just pushed"), &p)?;
         }
         Model::rest(&ctx, raw, items, count, has_real_sizes)
     }

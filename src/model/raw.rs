@@ -195,10 +195,10 @@ pub struct RawPart {
     /// A cut-out: subtracted from the body.
     #[schemars(with = "Option<bool>")]
     pub remove: Option<Box<Spanned<bool>>>,
-    /// Copies of the part along a step or about an axis (`model::copies`).
+    /// Copies of the part along a step or about an axis, named `NAME[i]`.
     #[schemars(with = "Option<RawArray>")]
     pub array: Option<Box<Spanned<RawArray>>>,
-    /// The part and its mirror image in a plane (`model::copies`).
+    /// The part and its mirror image in a plane: `NAME[0]` and `NAME[1]`.
     #[schemars(with = "Option<RawMirror>")]
     pub mirror: Option<Box<Spanned<RawMirror>>>,
 }

@@ -62,6 +62,26 @@ pub fn schema() -> Value {
         .and_then(Value::as_object_mut)
         .expect("invariant: `RawPart` is named `Part` in `$defs`");
     part.insert("allOf".into(), Value::Array(part_rules()));
+    // An array is along a step or about an axis (`model::copies`).
+    if let Some(array) = root
+        .get_mut("$defs")
+        .and_then(|d| d.get_mut("Array"))
+        .and_then(Value::as_object_mut)
+    {
+        array.insert(
+            "oneOf".into(),
+            json!([
+                {
+                    "required": ["step"],
+                    "not": { "anyOf": each_required(&["axis", "step_degrees", "origin"]) },
+                },
+                {
+                    "required": ["axis", "step_degrees"],
+                    "not": { "required": ["step"] },
+                },
+            ]),
+        );
+    }
     root
 }
 

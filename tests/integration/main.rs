@@ -1,6 +1,7 @@
 //! massprop's integration tests, in one binary: each extra test binary is
 //! another link on a 2-core machine.
 
+mod arrays;
 mod auto;
 mod bounds;
 mod check;
