@@ -683,3 +683,26 @@ fn hostile_axes_and_normals_give_finite_results_or_located_errors() {
     ));
     assert!(err.contains("finite"), "{err}");
 }
+
+#[test]
+fn the_documented_example_is_32_spokes_and_four_legs() {
+    let doc = std::fs::read_to_string("docs/part-file.md").unwrap();
+    let section = doc
+        .split("### Arrays and mirrors")
+        .nth(1)
+        .expect("docs/part-file.md has the section");
+    let example = section
+        .split("```toml\n")
+        .nth(1)
+        .and_then(|rest| rest.split("```").next())
+        .unwrap();
+    let (m, c, _) = body(example);
+    // 32 spokes of 6 g and four legs of 1.2 kg; the legs at (±0.55, ±0.35).
+    assert!((m - (32.0 * 0.006 + 4.0 * 1.2)).abs() <= 1e-15 * m, "{m}");
+    let legs = 4.0 * 1.2 * 0.35 / m;
+    assert!((c[2] - legs).abs() <= 1e-15, "{c:?}");
+    let names = names(example);
+    assert_eq!(names.len(), 36);
+    assert_eq!(names[31], "spoke[31]");
+    assert_eq!(names[32..], ["leg[0]", "leg[1]", "leg[2]", "leg[3]"]);
+}

@@ -324,6 +324,8 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "inertia" => "[[3, 0, 0], [0, 3, 0], [0, 0, 3]]",
         "products" => "\"tensor\"",
         "remove" => "false",
+        "array" => "{ count = 2, step = [1, 0, 0] }",
+        "mirror" => "{ normal = [1, 0, 0] }",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }
