@@ -542,6 +542,24 @@ mod tests {
         assert_eq!(s, "part 3[7]");
     }
 
+    /// The fast path declines a part with copies (serde reads the file),
+    /// inline or as a sub-table: the two readers cannot disagree on them.
+    #[test]
+    fn the_fast_path_declines_arrays_and_mirrors() {
+        let part = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+        for extra in [
+            "array = { count = 2, step = [1, 0, 0] }\n",
+            "mirror = { normal = [1, 0, 0] }\n",
+            "[part.array]\ncount = 2\nstep = [1, 0, 0]\n",
+        ] {
+            let text = format!("{part}{extra}");
+            assert!(super::super::fast::read_file(&text).is_none(), "{text}");
+            let raw: super::super::raw::RawFile = toml::from_str(&text).unwrap();
+            let p = raw.part.unwrap().into_inner().remove(0).into_inner();
+            assert!(p.array.is_some() || p.mirror.is_some(), "{text}");
+        }
+    }
+
     #[test]
     fn the_raw_count_is_read_before_any_check() {
         let mut p = RawPart::default();
