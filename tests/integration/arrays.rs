@@ -706,3 +706,16 @@ fn the_documented_example_is_32_spokes_and_four_legs() {
     assert_eq!(names[31], "spoke[31]");
     assert_eq!(names[32..], ["leg[0]", "leg[1]", "leg[2]", "leg[3]"]);
 }
+
+#[test]
+fn a_hundred_thousand_copies_are_walked_not_held() {
+    // Each copy a point of 1 kg at x = i: the mass is 10⁵ and the centre
+    // (10⁵ − 1)/2, both exact sums of integers.
+    let n = 100_000;
+    let text = format!(
+        "[[part]]\nname = \"bead\"\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\narray = {{ count = {n}, step = [1, 0, 0] }}\n"
+    );
+    let (m, c, _) = body(&text);
+    assert_eq!(m, n as f64);
+    assert_eq!(c, [(n as f64 - 1.0) / 2.0, 0.0, 0.0]);
+}
