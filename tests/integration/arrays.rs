@@ -246,6 +246,27 @@ fn a_polar_array_at_quarter_turns_is_its_parts_spelt_out_to_the_last_bit() {
 fn a_polar_array_of_32_is_its_parts_spelt_out_to_1e_15() {
     let (array, spelt) = polar_pair(32, 360.0 / 32.0);
     close(body(&array), body(&spelt), 10.0, 1e-15);
+    // The copies' placement feeds the error bounds: each file's bound is
+    // against the exact value of its own numbers, and the spelt-out
+    // file's are those rounded once, so the two bounds (with the input's
+    // rounding, a unit of 10 per coordinate) cover the difference.
+    let json = |t: &str| report_json(t, &["--precision", "standard"]).0;
+    let (a, b) = (json(&array), json(&spelt));
+    for i in 0..3 {
+        for k in 0..3 {
+            let f = |v: &Value, key: &str| v[key][i][k].as_f64().unwrap();
+            let diff = (f(&a, "inertia_com") - f(&b, "inertia_com")).abs();
+            let covered =
+                f(&a["error_bounds"], "inertia_com") + f(&b["error_bounds"], "inertia_com") + 1e-14;
+            assert!(diff <= covered, "{i}{k}: {diff:e} > {covered:e}");
+            // The copies' rounding is counted: at least the spelt-out
+            // parts' own.
+            assert!(
+                f(&a["error_bounds"], "inertia_com") >= f(&b["error_bounds"], "inertia_com"),
+                "{i}{k}"
+            );
+        }
+    }
 }
 
 #[test]
