@@ -740,3 +740,92 @@ fn a_hundred_thousand_copies_are_walked_not_held() {
     assert_eq!(m, n as f64);
     assert_eq!(c, [(n as f64 - 1.0) / 2.0, 0.0, 0.0]);
 }
+
+#[test]
+fn copies_nest_through_includes_and_a_mirror_of_a_mirror_is_the_part() {
+    let dir = scratch("arrays", "nested");
+    std::fs::write(
+        dir.join("side.toml"),
+        "[[part]]\nname = \"panel\"\nshape = \"box\"\nmass = 2\nsize = [0.5, 1, 2]\ncenter = [1, 2, 3]\nmirror = { normal = [1, 0, 0] }\n\n[[part]]\nname = \"motor\"\nshape = \"inertia\"\nmass = 1\ncenter = [1, 1, 0]\ninertia = [[0.5, -0.01, 0.02], [-0.01, 0.4, 0.03], [0.02, 0.03, 0.3]]\nmirror = { normal = [1, 0, 0] }\n",
+    )
+    .unwrap();
+    let top = dir.join("top.toml");
+    std::fs::write(
+        &top,
+        "[[part]]\nname = \"side\"\ninclude = \"side.toml\"\nmirror = { normal = [0, 5, 0] }\n",
+    )
+    .unwrap();
+    // Spelt out: panels at (±1, ±2, 3), each its own image twice over (a
+    // box is symmetric in every local plane); the motors' tensors with the
+    // products of x negated, then of y.
+    let motor = |x: f64, y: f64| {
+        let (sx, sy) = (x.signum(), y.signum());
+        format!(
+            "[[part]]\nshape = \"inertia\"\nmass = 1\ncenter = [{x:?}, {y:?}, 0.0]\ninertia = [[0.5, {:?}, {:?}], [{:?}, 0.4, {:?}], [{:?}, {:?}, 0.3]]\n",
+            -0.01 * sx * sy,
+            0.02 * sx,
+            -0.01 * sx * sy,
+            0.03 * sy,
+            0.02 * sx,
+            0.03 * sy
+        )
+    };
+    let panel = |x: f64, y: f64| {
+        format!(
+            "[[part]]\nshape = \"box\"\nmass = 2\nsize = [0.5, 1, 2]\ncenter = [{x:?}, {y:?}, 3.0]\n"
+        )
+    };
+    let spelt = [
+        panel(1.0, 2.0),
+        panel(-1.0, 2.0),
+        motor(1.0, 1.0),
+        motor(-1.0, 1.0),
+        panel(1.0, -2.0),
+        panel(-1.0, -2.0),
+        motor(1.0, -1.0),
+        motor(-1.0, -1.0),
+    ]
+    .concat();
+    let spelt_file = dir.join("spelt.toml");
+    std::fs::write(&spelt_file, &spelt).unwrap();
+    let json = |p: &std::path::Path| {
+        let out = massprop(&[
+            "report",
+            "--format",
+            "json",
+            "--precision",
+            "standard",
+            p.to_str().unwrap(),
+        ]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice::<Value>(&out.stdout).unwrap()
+    };
+    let (x, y) = (json(&top), json(&spelt_file));
+    for key in ["mass", "center_of_mass", "inertia_com"] {
+        assert_eq!(x[key], y[key], "{key}");
+    }
+    let names: Vec<&str> = x["parts"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["name"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        names,
+        [
+            "side[0] / panel[0]",
+            "side[0] / panel[1]",
+            "side[0] / motor[0]",
+            "side[0] / motor[1]",
+            "side[1] / panel[0]",
+            "side[1] / panel[1]",
+            "side[1] / motor[0]",
+            "side[1] / motor[1]",
+        ]
+    );
+}
