@@ -10,7 +10,9 @@
 //! order, as when sub-assemblies were expanded once into a list: its own
 //! sub-assembly's frame first, then each enclosing one's, every coordinate
 //! rounded once per frame (`include::Frame::place`); so results are the
-//! same to the last bit.
+//! same to the last bit. A part's or a sub-assembly's copies (`array`,
+//! `mirror`: `copies`) are frames too, made as the walk reaches each copy
+//! and applied after the sub-assembly's own: the copies are never held.
 
 use super::{Copies, Frame, Include, Item, Model, push_copy_name};
 use crate::part::{Part, Parts, RealSize};
