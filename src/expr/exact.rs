@@ -209,7 +209,14 @@ mod tests {
 
     #[test]
     fn nearest_is_the_division_of_floats_where_both_are_exact() {
-        for (n, d) in [(1, 3), (2, 3), (7, 10), (-5, 7), (1, 1 << 70), (1 << 100, 3)] {
+        for (n, d) in [
+            (1, 3),
+            (2, 3),
+            (7, 10),
+            (-5, 7),
+            (1, 1 << 70),
+            (1 << 100, 3),
+        ] {
             assert_eq!(nearest(n, d), n as f64 / d as f64, "{n}/{d}");
         }
         assert_eq!(nearest(i128::MAX, 1), i128::MAX as f64);

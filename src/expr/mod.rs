@@ -315,7 +315,9 @@ impl Expr {
             }
             stack.push(v);
         }
-        Ok(stack.pop().expect("invariant: a parsed expression has a value"))
+        Ok(stack
+            .pop()
+            .expect("invariant: a parsed expression has a value"))
     }
 }
 
@@ -342,7 +344,8 @@ fn name(
     for s in units::symbol_names().chain(CONSTANTS.iter().copied()) {
         candidates.push(s);
     }
-    let help: Option<String> = units::suggest(n, candidates).map(|s| format!("did you mean `{s}`?"));
+    let help: Option<String> =
+        units::suggest(n, candidates).map(|s| format!("did you mean `{s}`?"));
     Err(Error {
         at,
         message: format!("unknown name `{n}`: not a parameter, a unit or `pi`"),
@@ -364,11 +367,7 @@ fn same_dim(op: &str, a: Value, b: Value, at: Range<usize>) -> Result<Dim, Error
     if a.dim != b.dim {
         return Err(Error {
             at,
-            message: format!(
-                "`{op}` of {} and {}",
-                describe(a.dim),
-                describe(b.dim)
-            ),
+            message: format!("`{op}` of {} and {}", describe(a.dim), describe(b.dim)),
             help: Some("both sides must have the same dimension".into()),
         });
     }
@@ -429,7 +428,10 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
     if b.dim != Dim::DIMENSIONLESS {
         return fail(
             at,
-            format!("an exponent must be a plain number, not {}", describe(b.dim)),
+            format!(
+                "an exponent must be a plain number, not {}",
+                describe(b.dim)
+            ),
         );
     }
     if a.num.is_zero() && b.num.is_zero() {
@@ -494,10 +496,7 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
             if a.dim != Dim::DIMENSIONLESS {
                 return fail(
                     at,
-                    format!(
-                        "{} can be raised only to a rational power",
-                        describe(a.dim)
-                    ),
+                    format!("{} can be raised only to a rational power", describe(a.dim)),
                 );
             }
             if a.num.negative() {
@@ -606,7 +605,12 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
         Func::Min | Func::Max => {
             let mut best = a;
             for &b in &args[1..] {
-                same_dim(if f == Func::Min { "min" } else { "max" }, best, b, at.clone())?;
+                same_dim(
+                    if f == Func::Min { "min" } else { "max" },
+                    best,
+                    b,
+                    at.clone(),
+                )?;
                 let less = match (b.num, best.num) {
                     (Num::Exact(x), Num::Exact(y)) => x.cmp(y).map(|o| o.is_lt()),
                     _ => None,
@@ -641,7 +645,11 @@ fn sin_cos(x: Num) -> (DD, DD) {
             return (DD::from(0.0), DD::from(1.0));
         }
         if q.pi == 1
-            && let Some(deg) = q.mul(Q { n: 180, d: 1, pi: 0 })
+            && let Some(deg) = q.mul(Q {
+                n: 180,
+                d: 1,
+                pi: 0,
+            })
             && (deg.n as f64) as i128 == deg.n
             && (deg.d as f64) as i128 == deg.d
         {

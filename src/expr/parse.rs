@@ -89,7 +89,11 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
     let (int, frac) = mantissa.split_once('.').unwrap_or((mantissa, ""));
     let digits = format!("{int}{frac}");
     let digits = digits.trim_start_matches('0');
-    let exp: i64 = exp.parse().unwrap_or(if exp.starts_with('-') { -100_000 } else { 100_000 });
+    let exp: i64 = exp.parse().unwrap_or(if exp.starts_with('-') {
+        -100_000
+    } else {
+        100_000
+    });
     let scale = exp - frac.len() as i64;
     let exact = (|| {
         if digits.is_empty() {
@@ -114,7 +118,10 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
         return bad();
     };
     if !x.is_finite() {
-        return fail(at, format!("the number `{text}` is beyond the range of f64"));
+        return fail(
+            at,
+            format!("the number `{text}` is beyond the range of f64"),
+        );
     }
     Ok(match of_f64(x) {
         Num::Exact(q) => Num::Exact(q),
@@ -143,12 +150,19 @@ pub(super) fn parse(text: &str) -> Result<Expr, Error> {
     p.expr(0)?;
     if let Some(t) = p.toks.get(p.i) {
         let at = t.at.clone();
+        let after_number = p.i > 0 && matches!(p.toks[p.i - 1].tok, Tok::Num(_));
+        if t.tok == Tok::Name && after_number {
+            let word = &text[at.clone()];
+            return Err(Error {
+                at,
+                message: format!("unknown unit `{word}`"),
+                help: units::suggest(word, units::symbol_names())
+                    .map(|s| format!("did you mean `{s}`?")),
+            });
+        }
         return fail(
             at,
-            format!(
-                "expected an operator before `{}`",
-                &text[t.at.clone()]
-            ),
+            format!("expected an operator before `{}`", &text[t.at.clone()]),
         );
     }
     Ok(Expr { steps: p.steps })
@@ -262,7 +276,9 @@ impl Parser<'_> {
                 self.steps.push((Op::Push(v), at.start..end));
                 Ok(())
             }
-            Some(Tok::Name) if self.toks.get(self.i + 1).map(|t| &t.tok) == Some(&Tok::Sym('(')) => {
+            Some(Tok::Name)
+                if self.toks.get(self.i + 1).map(|t| &t.tok) == Some(&Tok::Sym('(')) =>
+            {
                 self.call(depth, at)
             }
             Some(Tok::Name) => {
@@ -275,14 +291,10 @@ impl Parser<'_> {
                 self.i += 1;
                 self.expr(self.deeper(depth)?)?;
                 if !self.sym(')') {
-                    return fail(self.here(), "expected `)`")
-                        .map_err(|e| Error {
-                            help: Some(format!(
-                                "the `(` at byte {} is not closed",
-                                at.start + 1
-                            )),
-                            ..e
-                        });
+                    return fail(self.here(), "expected `)`").map_err(|e| Error {
+                        help: Some(format!("the `(` at byte {} is not closed", at.start + 1)),
+                        ..e
+                    });
                 }
                 self.i += 1;
                 Ok(())
@@ -333,10 +345,7 @@ impl Parser<'_> {
             return fail(self.here(), format!("expected `,` or `)` in `{name}(…)`"));
         }
         if arity.is_some_and(|n| n != argc) {
-            return fail(
-                at,
-                format!("`{name}` takes 1 argument, got {argc}"),
-            );
+            return fail(at, format!("`{name}` takes 1 argument, got {argc}"));
         }
         self.steps.push((Op::Call(func, argc), at));
         Ok(())

@@ -26,6 +26,10 @@ impl Params {
         self.values.get(name).copied()
     }
 
+    fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+
     fn names(&self) -> Vec<String> {
         self.values.keys().cloned().collect()
     }
@@ -62,15 +66,19 @@ pub(crate) fn flags(set: &[String]) -> Result<Vec<Pass>, Diagnostic> {
             )));
         };
         let name = name.trim();
+        // `--set 'leg="700 mm"'`: the quotes of TOML taken off.
+        let value = value.trim();
+        let value = ['"', '\'']
+            .iter()
+            .find_map(|q| value.strip_prefix(*q).and_then(|v| v.strip_suffix(*q)))
+            .unwrap_or(value);
         if !expr::is_name(name) {
             return Err(Diagnostic::plain(format!(
                 "invalid value {flag:?} for `--set`: `{name}` is not a parameter name"
             )));
         }
         if out.iter().any(|p| p.name == name) {
-            return Err(Diagnostic::plain(format!(
-                "`--set {name}` is given twice"
-            )));
+            return Err(Diagnostic::plain(format!("`--set {name}` is given twice")));
         }
         out.push(Pass {
             name: name.to_string(),
@@ -120,8 +128,8 @@ impl Ctx<'_> {
                 }
                 Quantity::Text(t) => {
                     let what = format!("parameter `{name}`");
-                    let e = Expr::parse(t)
-                        .map_err(|e| located(self.source, q.span(), t, e, &what))?;
+                    let e =
+                        Expr::parse(t).map_err(|e| located(self.source, q.span(), t, e, &what))?;
                     let params = &self.params;
                     e.eval(&|n| params.get(n), &|| params.names())
                         .map_err(|e| located(self.source, q.span(), t, e, &what))?
@@ -130,11 +138,10 @@ impl Ctx<'_> {
             out.push(Pass {
                 name: name.clone(),
                 given: Given::Value(value),
-                undefined: self
-                    .err(
-                        key.span(),
-                        format!("`params`: the included `{shown}` defines no parameter `{name}`"),
-                    ),
+                undefined: self.err(
+                    key.span(),
+                    format!("`params`: the included `{shown}` defines no parameter `{name}`"),
+                ),
             });
         }
         Ok(out)
@@ -172,7 +179,10 @@ impl Ctx<'_> {
                 }
                 if let Some(what) = expr::reserved(name) {
                     return Err(self
-                        .err(key.span(), format!("the parameter `{name}` is named as {what}"))
+                        .err(
+                            key.span(),
+                            format!("the parameter `{name}` is named as {what}"),
+                        )
                         .help("an expression reads the name as that: choose another"));
                 }
                 defs.insert(name, Def::File(key.span(), value));
@@ -230,8 +240,12 @@ impl Ctx<'_> {
                     };
                     let params = &self.params;
                     exprs[name]
-                        .eval(&|n| params.get(n), &|| defs.keys().map(|k| k.to_string()).collect())
-                        .map_err(|e| located(source, span, text, e, &format!("parameter `{name}`")))?
+                        .eval(&|n| params.get(n), &|| {
+                            defs.keys().map(|k| k.to_string()).collect()
+                        })
+                        .map_err(|e| {
+                            located(source, span, text, e, &format!("parameter `{name}`"))
+                        })?
                 }
             };
             self.params.values.insert(name.to_string(), value);
@@ -276,7 +290,9 @@ impl Ctx<'_> {
         while let Some(name) = ready.pop() {
             order.push(name);
             for u in users.get(name).map_or(&[][..], Vec::as_slice) {
-                let n = waiting.get_mut(u).expect("invariant: every user is a parameter");
+                let n = waiting
+                    .get_mut(u)
+                    .expect("invariant: every user is a parameter");
                 *n -= 1;
                 if *n == 0 {
                     ready.push(u);
@@ -289,7 +305,10 @@ impl Ctx<'_> {
         // A cycle: from a parameter left waiting, follow uses that are
         // waiting too until one repeats.
         let left = |n: &str| waiting.get(n).is_some_and(|w| *w > 0);
-        let start = *waiting.keys().find(|k| left(k)).expect("invariant: one is left");
+        let start = *waiting
+            .keys()
+            .find(|k| left(k))
+            .expect("invariant: one is left");
         let mut path = vec![start];
         loop {
             let last = *path.last().expect("invariant: not empty");
@@ -383,8 +402,12 @@ impl Ctx<'_> {
                 continue;
             }
             if !word.is_empty() {
+                // With parameters, a word that is no unit is read as a
+                // name (the error then suggests among both).
+                let unit = units::parse_unit(&word).is_ok();
                 if self.params.get(&word).is_some()
                     || expr::reserved(&word).is_some_and(|r| r != "a unit symbol")
+                    || !unit && !self.params.is_empty()
                 {
                     return false;
                 }
@@ -393,6 +416,8 @@ impl Ctx<'_> {
             }
             match c {
                 ' ' | '\t' => continue,
+                // `2 * leg`, `3 / n`: an operator before any unit.
+                '*' | '/' | '·' if prev == ' ' && !after_word => return false,
                 // A power of a unit, not of the number (`10^3 kg`).
                 '^' if !after_word => return false,
                 '*' | '/' | '·' | '^' | '²' | '³' => after_word = false,
