@@ -214,14 +214,14 @@ fn quantity_string() -> Value {
 }
 
 /// An expression (`expr`): its names are the file's parameters, which a
-/// schema of every part file cannot know, so only its characters are
-/// checked here (an operator, a parenthesis or a name among them); the
-/// reader judges the rest, with located errors.
+/// schema of every part file cannot know, so only its shape is checked
+/// here (an operator or a parenthesis in it, or a name alone); the reader
+/// judges the rest, with located errors.
 fn expression_string() -> Value {
     json!({
         "type": "string",
         "description": "an expression: + - * / ^, parentheses, numbers with units, the file's `[params]`, pi, sqrt, sin, cos, tan, abs, min, max",
-        "pattern": "^[^%\"\\\\]*[-+*/^()A-Za-z_\u{b5}\u{3bc}][^%\"\\\\]*$",
+        "pattern": "^[^%\"\\\\]*[-+*/^(),][^%\"\\\\]*$|^\\s*[A-Za-z_\u{b5}\u{3bc}][A-Za-z0-9_]*\\s*$",
     })
 }
 

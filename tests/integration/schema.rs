@@ -324,6 +324,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "inertia" => "[[3, 0, 0], [0, 3, 0], [0, 0, 3]]",
         "products" => "\"tensor\"",
         "remove" => "false",
+        "params" => "{ a = \"1 m\" }",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }
