@@ -47,11 +47,11 @@ impl Q {
         self.n == 0
     }
 
-    pub fn neg(self) -> Q {
+    pub fn negated(self) -> Q {
         Q { n: -self.n, ..self }
     }
 
-    pub fn add(self, o: Q) -> Option<Q> {
+    pub fn plus(self, o: Q) -> Option<Q> {
         if o.is_zero() {
             return Some(self);
         }
@@ -67,7 +67,7 @@ impl Q {
         Q::new(n, self.d.checked_mul(b)?, self.pi)
     }
 
-    pub fn mul(self, o: Q) -> Option<Q> {
+    pub fn times(self, o: Q) -> Option<Q> {
         // Cross-reduced first, so that products of reduced fractions
         // overflow only when the result does.
         let g1 = gcd(self.n, o.d);
@@ -89,11 +89,11 @@ impl Q {
         let mut out = Q::ONE;
         while e > 0 {
             if e & 1 == 1 {
-                out = out.mul(base)?;
+                out = out.times(base)?;
             }
             e >>= 1;
             if e > 0 {
-                base = base.mul(base)?;
+                base = base.times(base)?;
             }
         }
         Some(out)
@@ -114,7 +114,7 @@ impl Q {
     }
 
     /// Compare, exactly where both are π-free or of one power of π.
-    pub fn cmp(self, o: Q) -> Option<std::cmp::Ordering> {
+    pub fn compare(self, o: Q) -> Option<std::cmp::Ordering> {
         if self.pi != o.pi && !self.is_zero() && !o.is_zero() {
             return None;
         }
@@ -204,7 +204,7 @@ mod tests {
     fn a_tenth_plus_two_tenths_is_three_tenths() {
         let a = Q::new(1, 10, 0).unwrap();
         let b = Q::new(2, 10, 0).unwrap();
-        assert_eq!(a.add(b).unwrap().f64(), 0.3);
+        assert_eq!(a.plus(b).unwrap().f64(), 0.3);
     }
 
     #[test]

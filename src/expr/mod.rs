@@ -149,7 +149,7 @@ impl Value {
     pub fn in_units(self, factor: Factor) -> f64 {
         let (n, d, pi) = factor.parts();
         match self.num {
-            Num::Exact(q) => match Q::new(d, n, -pi).and_then(|f| q.mul(f)) {
+            Num::Exact(q) => match Q::new(d, n, -pi).and_then(|f| q.times(f)) {
                 Some(v) => v.f64(),
                 None => {
                     let v = q.dd() / factor.dd();
@@ -189,10 +189,10 @@ fn of_f64(x: f64) -> Num {
         (((bits & ((1 << 52) - 1)) | (1 << 52)) as i128, exp - 1075)
     };
     let m = if x < 0.0 { -m } else { m };
-    if (-126..0).contains(&e) {
-        if let Some(q) = Q::new(m, 1i128 << (-e), 0) {
-            return Num::Exact(q);
-        }
+    if (-126..0).contains(&e)
+        && let Some(q) = Q::new(m, 1i128 << (-e), 0)
+    {
+        return Num::Exact(q);
     }
     Num::Float(DD::from(x))
 }
@@ -357,7 +357,7 @@ fn neg(a: Value) -> Value {
     Value {
         dim: a.dim,
         num: match a.num {
-            Num::Exact(q) => Num::Exact(q.neg()),
+            Num::Exact(q) => Num::Exact(q.negated()),
             Num::Float(x) => Num::Float(-x),
         },
     }
@@ -397,15 +397,15 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
     Ok(match op {
         Op::Add => Value {
             dim: same_dim("+", a, b, at)?,
-            num: exact(Q::add, |x, y| x + y),
+            num: exact(Q::plus, |x, y| x + y),
         },
         Op::Sub => Value {
             dim: same_dim("-", a, b, at)?,
-            num: exact(|x, y| x.add(y.neg()), |x, y| x - y),
+            num: exact(|x, y| x.plus(y.negated()), |x, y| x - y),
         },
         Op::Mul => Value {
             dim: dims(a.dim, b.dim, 1, at)?,
-            num: exact(Q::mul, |x, y| x * y),
+            num: exact(Q::times, |x, y| x * y),
         },
         Op::Div => {
             if b.num.is_zero() {
@@ -413,7 +413,7 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
             }
             Value {
                 dim: dims(a.dim, b.dim, -1, at)?,
-                num: exact(|x, y| x.mul(y.recip()?), |x, y| x / y),
+                num: exact(|x, y| x.times(y.recip()?), |x, y| x / y),
             }
         }
         Op::Pow => pow(a, b, at)?,
@@ -597,7 +597,7 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
         Func::Abs => Value {
             dim: a.dim,
             num: match a.num {
-                Num::Exact(q) if q.n < 0 => Num::Exact(q.neg()),
+                Num::Exact(q) if q.n < 0 => Num::Exact(q.negated()),
                 Num::Float(x) if x.hi < 0.0 => Num::Float(-x),
                 n => n,
             },
@@ -612,12 +612,12 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
                     at.clone(),
                 )?;
                 let less = match (b.num, best.num) {
-                    (Num::Exact(x), Num::Exact(y)) => x.cmp(y).map(|o| o.is_lt()),
+                    (Num::Exact(x), Num::Exact(y)) => x.compare(y).map(|o| o.is_lt()),
                     _ => None,
                 }
                 .unwrap_or_else(|| b.num.dd() < best.num.dd());
                 let more = match (b.num, best.num) {
-                    (Num::Exact(x), Num::Exact(y)) => x.cmp(y).map(|o| o.is_gt()),
+                    (Num::Exact(x), Num::Exact(y)) => x.compare(y).map(|o| o.is_gt()),
                     _ => None,
                 }
                 .unwrap_or_else(|| b.num.dd() > best.num.dd());
@@ -645,7 +645,7 @@ fn sin_cos(x: Num) -> (DD, DD) {
             return (DD::from(0.0), DD::from(1.0));
         }
         if q.pi == 1
-            && let Some(deg) = q.mul(Q {
+            && let Some(deg) = q.times(Q {
                 n: 180,
                 d: 1,
                 pi: 0,

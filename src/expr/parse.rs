@@ -443,7 +443,7 @@ impl Parser<'_> {
 fn quantity(v: Value, u: units::Unit) -> Value {
     let (n, d, pi) = u.factor.parts();
     let num = match (v.num, Q::new(n, d, pi)) {
-        (Num::Exact(x), Some(f)) => match x.mul(f) {
+        (Num::Exact(x), Some(f)) => match x.times(f) {
             Some(q) => Num::Exact(q),
             None => Num::Float(x.dd() * u.factor.dd()),
         },
