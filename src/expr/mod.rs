@@ -394,31 +394,42 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
         },
         (x, y) => Num::Float(g(x.dd(), y.dd())),
     };
-    Ok(match op {
+    let out = match op {
         Op::Add => Value {
-            dim: same_dim("+", a, b, at)?,
+            dim: same_dim("+", a, b, at.clone())?,
             num: exact(Q::plus, |x, y| x + y),
         },
         Op::Sub => Value {
-            dim: same_dim("-", a, b, at)?,
+            dim: same_dim("-", a, b, at.clone())?,
             num: exact(|x, y| x.plus(y.negated()), |x, y| x - y),
         },
         Op::Mul => Value {
-            dim: dims(a.dim, b.dim, 1, at)?,
+            dim: dims(a.dim, b.dim, 1, at.clone())?,
             num: exact(Q::times, |x, y| x * y),
         },
         Op::Div => {
             if b.num.is_zero() {
-                return fail(at, "division by zero");
+                return fail(at.clone(), "division by zero");
             }
             Value {
-                dim: dims(a.dim, b.dim, -1, at)?,
+                dim: dims(a.dim, b.dim, -1, at.clone())?,
                 num: exact(|x, y| x.times(y.recip()?), |x, y| x / y),
             }
         }
-        Op::Pow => pow(a, b, at)?,
+        Op::Pow => pow(a, b, at.clone())?,
         _ => unreachable!("invariant: only binary operators here"),
-    })
+    };
+    // A product, quotient or power of values that are not zero is not
+    // zero: in floating point it underflowed.
+    if let Num::Float(x) = out.num
+        && x.hi == 0.0
+        && matches!(op, Op::Mul | Op::Div | Op::Pow)
+        && !a.num.is_zero()
+        && !b.num.is_zero()
+    {
+        return fail(at, "the value underflows f64 here (below 2.2e-308)");
+    }
+    Ok(out)
 }
 
 /// `a ^ b`: b dimensionless; an integer power exact where it fits, a

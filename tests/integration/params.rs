@@ -480,7 +480,13 @@ fn hostile_expressions_are_refused_quickly() {
     let pow = format!("2{}", "^2".repeat(100_000));
     assert!(eval(&pow).unwrap_err().contains("nests deeper"));
     assert!(eval("2^100000000000").unwrap_err().contains("overflows"));
-    assert!(eval("2^-100000000000 * 1").is_ok());
+    assert!(
+        eval("2^-100000000000 * 1")
+            .unwrap_err()
+            .contains("underflows")
+    );
+    assert!(eval("1e-200 * 1e-200").unwrap_err().contains("underflows"));
+    assert_eq!(eval("0 * 1e-200").unwrap(), 0.0);
     assert!(eval("1e308 * 10").unwrap_err().contains("overflows"));
     assert!(eval("1e400").unwrap_err().contains("beyond the range"));
     assert!(
