@@ -4,6 +4,7 @@
 //! `Model` that exists is valid.
 //!
 //! `raw` (and its fast path `fast`) mirror the TOML; `ctx` reads values;
+//! `params` evaluates `[params]` and expressions in quantity strings;
 //! `parts` validates a `[[part]]` against its shape's description;
 //! `include` places sub-assemblies; `expect` reads `[expect]`; `rotation`
 //! the rotation forms; `toml_error` words the TOML crate's errors;
