@@ -737,6 +737,14 @@ pub struct IncludeArgs {
     /// sat.toml --base-dir .`); without it such a file may not include.
     #[arg(long = "base-dir", value_name = "DIR")]
     pub base_dir: Option<std::path::PathBuf>,
+
+    /// Override a parameter of the part file's `[params]` (repeatable):
+    /// `--set leg="750 mm"`, `--set n=24`, `--set d="2 * r"`. VALUE is a
+    /// number or a quantity string, which may use the file's other
+    /// parameters; NAME must be one the file defines. Included files take
+    /// their parameters from `params` on the include, not from `--set`.
+    #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
+    pub set: Vec<String>,
 }
 
 impl IncludeArgs {
@@ -744,6 +752,7 @@ impl IncludeArgs {
         crate::model::Includes {
             roots: self.include_root.clone(),
             base_dir: self.base_dir.clone(),
+            set: self.set.clone(),
         }
     }
 }

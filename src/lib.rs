@@ -58,6 +58,8 @@ pub mod diag;
 #[doc(hidden)]
 pub mod eigen;
 #[doc(hidden)]
+pub mod expr;
+#[doc(hidden)]
 pub mod io;
 #[doc(hidden)]
 pub mod mass;

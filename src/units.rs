@@ -21,6 +21,8 @@ impl Dim {
     const fn new(mass: i32, length: i32, time: i32) -> Dim {
         Dim { mass, length, time }
     }
+    /// A plain number (an angle in radians, a count).
+    pub const DIMENSIONLESS: Dim = Dim::new(0, 0, 0);
     pub const LENGTH: Dim = Dim::new(0, 1, 0);
     pub const AREA: Dim = Dim::new(0, 2, 0);
     pub const MASS: Dim = Dim::new(1, 0, 0);
@@ -161,6 +163,11 @@ impl Factor {
             v = if self.pi > 0 { v * DD::PI } else { v / DD::PI };
         }
         v
+    }
+
+    /// The exact factor: numerator, denominator and power of π.
+    pub fn parts(self) -> (i128, i128, i32) {
+        (self.num, self.den, self.pi)
     }
 
     /// The SI value of one unit: `apply(1.0)`.

@@ -156,6 +156,15 @@ fn collect(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic>
 /// invalid files' errors and warnings go to standard error, in its.
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let colour = terminal.stderr.colour;
+    // NOTE: `--bless` writes what the file computes into its `[expect]`;
+    // under `--set` that would be a what-if's values, which the file
+    // without the flag does not compute.
+    if o.bless && !o.includes.set.is_empty() {
+        return Err(Diagnostic::plain(
+            "`--set` cannot be used with `--bless`: the expectations written would be those of the overridden parameters, not of the file",
+        )
+        .help("change the parameter in the file's `[params]`, then bless"));
+    }
     if let Some(t) = &o.axes {
         analysis::flag_axes(t)?;
     }

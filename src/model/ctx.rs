@@ -27,6 +27,8 @@ pub(crate) struct Ctx<'a> {
     pub(super) units: FileUnits,
     /// `[materials]`: name → density (kg/m³, and in file units).
     pub(super) materials: std::collections::BTreeMap<String, (f64, f64)>,
+    /// `[params]`, evaluated (`model::params`).
+    pub(super) params: super::params::Params,
 }
 
 impl Ctx<'_> {
@@ -81,21 +83,60 @@ impl Ctx<'_> {
                 }
                 self.units.factor(dim).apply(*x)
             }
-            Quantity::Text(t) => units::parse_quantity(t, dim).map_err(|e| {
-                let d = self.err(q.span(), format!("`{key}`: {e}"));
-                match e {
-                    UnitError::Unknown {
-                        suggestion: Some(s),
-                        ..
-                    } => d.suggest(Some(s)),
-                    _ => d.help(format!(
-                        "`{key}` is {}, e.g. {}",
-                        dim.describe(),
-                        dim.example()
-                    )),
-                }
-            })?,
+            Quantity::Text(t) => match units::parse_quantity(t, dim) {
+                Ok(v) => v,
+                Err(e) => match self.expression(q, t, key, dim, units::Factor::ONE)? {
+                    Some(v) => return self.in_file_units(q, key, dim, v),
+                    None => return Err(self.unit_error(q, key, dim, e)),
+                },
+            },
         };
+        self.checked(q, key, dim, value)
+    }
+
+    /// The unit reader's error for a plain quantity string.
+    fn unit_error(&self, q: &Spanned<Quantity>, key: &str, dim: Dim, e: UnitError) -> Diagnostic {
+        let d = self.err(q.span(), format!("`{key}`: {e}"));
+        match e {
+            UnitError::Unknown {
+                suggestion: Some(s),
+                ..
+            } => d.suggest(Some(s)),
+            _ => d.help(format!(
+                "`{key}` is {}, e.g. {}",
+                dim.describe(),
+                dim.example()
+            )),
+        }
+    }
+
+    /// An SI value of an expression, checked against the file's units
+    /// (as `checked` does for a plain quantity).
+    fn in_file_units(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+        value: f64,
+    ) -> Result<f64, Diagnostic> {
+        if !(value / self.units.factor(dim).value()).is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` is beyond the largest number in the file's units"),
+            ));
+        }
+        Ok(value)
+    }
+
+    /// A plain value in SI, checked: finite, representable, and within
+    /// the file's units too.
+    fn checked(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+        value: f64,
+    ) -> Result<f64, Diagnostic> {
         if !value.is_finite() {
             return Err(self.err(
                 q.span(),
@@ -123,8 +164,13 @@ impl Ctx<'_> {
     ) -> Result<f64, Diagnostic> {
         let value = match q.get_ref() {
             Quantity::Number(x) => *x,
-            Quantity::Text(t) => units::parse_quantity_in(t, dim, self.units)
-                .map_err(|e| self.err(q.span(), format!("`{key}`: {e}")))?,
+            Quantity::Text(t) => match units::parse_quantity_in(t, dim, self.units) {
+                Ok(v) => v,
+                Err(e) => match self.expression(q, t, key, dim, self.units.factor(dim))? {
+                    Some(v) => return Ok(v),
+                    None => return Err(self.err(q.span(), format!("`{key}`: {e}"))),
+                },
+            },
         };
         if !value.is_finite() {
             return Err(self.err(

@@ -277,6 +277,9 @@ impl<'i> Builder<'i> {
             expect: None,
             // Serde's, from the sections.
             materials: None,
+            // A file with `[params]` or a part's `params` is declined
+            // (`open_table`, `assign`): serde reads it.
+            params: None,
             sections: self.sections,
         })
     }

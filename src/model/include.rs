@@ -3,7 +3,8 @@
 //! `rotation`, converted from its units to this file's.
 //!
 //! NOTE: each distinct file is read and validated once, however often it
-//! is included, and kept once (`Include` holds it by `Arc`); its parts are
+//! is included with the same `params` (an include with other parameters
+//! is another model), and kept once (`Include` holds it by `Arc`); its parts are
 //! moved into this file's frame and units as a walk reaches them
 //! (`walk`), in f64 (each coordinate rounds once, as a unit string does); a
 //! sub-assembly placed without rotation, at an origin and in units that make
@@ -35,6 +36,10 @@ pub struct Includes {
     /// The directory that the includes of a file read from standard input
     /// or a pipe are relative to; without it, such a file may not include.
     pub base_dir: Option<PathBuf>,
+    /// `--set NAME=VALUE`, as typed: parameters of the file named (not of
+    /// the files it includes, which take theirs from `params` on the
+    /// include).
+    pub set: Vec<String>,
 }
 
 /// The files being read: the chain of includes (for cycles) and each file
@@ -42,7 +47,9 @@ pub struct Includes {
 #[derive(Default)]
 pub(super) struct Files {
     pub(super) stack: Vec<(PathBuf, String)>,
-    cache: HashMap<PathBuf, std::sync::Arc<Model>>,
+    /// By file and the parameters passed to it (`params`): an include
+    /// with other parameters is another model.
+    cache: HashMap<(PathBuf, String), std::sync::Arc<Model>>,
     /// Every file included, at any depth, as often as it is.
     read: Vec<PathBuf>,
     /// The directory trees includes must stay in (canonical): the
@@ -430,6 +437,7 @@ impl Ctx<'_> {
             source: &source,
             units: Default::default(),
             materials: Default::default(),
+            params: Default::default(),
         };
         files
             .stack
@@ -451,7 +459,7 @@ impl Ctx<'_> {
 
 /// The keys of a part that includes a file, besides `name` (the JSON
 /// Schema reads them too: `model::schema`).
-pub(super) const INCLUDE_KEYS: [&str; 3] = ["include", "origin", "rotation"];
+pub(super) const INCLUDE_KEYS: [&str; 4] = ["include", "origin", "rotation", "params"];
 
 impl Ctx<'_> {
     /// Read `[[part]] include = ".."` at position `index` into the
@@ -515,8 +523,13 @@ impl Ctx<'_> {
                 .help("a sub-assembly cannot contain itself")
                 .with_chain_in_message());
         }
+        let passes = match &p.params {
+            Some(table) => self.include_params(table, &shown_name)?,
+            None => Vec::new(),
+        };
+        let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
-        let child = match files.cache.get(&canonical) {
+        let child = match files.cache.get(&key) {
             Some(m) => m.clone(),
             None => {
                 // An error inside says where it was included from, as
@@ -548,10 +561,18 @@ impl Ctx<'_> {
                     .map_err(quoted)?
                     .read_from(shown.clone());
                 files.stack.push((canonical.clone(), shown_name.clone()));
-                let child = Model::parse_in(&source, files);
+                let child = Model::parse_in(&source, files, &passes);
                 files.stack.pop();
-                let child = std::sync::Arc::new(child.map_err(quoted)?);
-                files.cache.insert(canonical, child.clone());
+                let child = std::sync::Arc::new(child.map_err(|d| {
+                    // A name the included file does not define: said at
+                    // the include's key, in this file.
+                    if passes.iter().any(|p| p.undefined.message() == d.message()) {
+                        d
+                    } else {
+                        quoted(d)
+                    }
+                })?);
+                files.cache.insert(key, child.clone());
                 child
             }
         };

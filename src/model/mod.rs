@@ -4,6 +4,7 @@
 //! `Model` that exists is valid.
 //!
 //! `raw` (and its fast path `fast`) mirror the TOML; `ctx` reads values;
+//! `params` evaluates `[params]` and expressions in quantity strings;
 //! `parts` validates a `[[part]]` against its shape's description;
 //! `include` places sub-assemblies; `expect` reads `[expect]`; `rotation`
 //! the rotation forms; `toml_error` words the TOML crate's errors;
@@ -15,6 +16,7 @@ pub mod expect;
 pub mod fast;
 mod include;
 mod material;
+mod params;
 mod parts;
 mod place;
 pub mod raw;
@@ -176,7 +178,8 @@ impl Model {
         files
             .roots
             .extend((includes.roots.iter()).filter_map(|r| std::fs::canonicalize(r).ok()));
-        let model = Model::parse_in(source, &mut files);
+        let passed = params::flags(&includes.set)?;
+        let model = Model::parse_in(source, &mut files, &passed);
         let included = files.included();
         read.extend(included.iter().cloned());
         let mut model = model?;
@@ -201,7 +204,11 @@ impl Model {
 
     /// `parse`, inside the chain of files that include each other (for
     /// cycles).
-    fn parse_in(source: &Source, files: &mut include::Files) -> Result<Model, Diagnostic> {
+    fn parse_in(
+        source: &Source,
+        files: &mut include::Files,
+        passed: &[params::Pass],
+    ) -> Result<Model, Diagnostic> {
         // The fast path, each part made as it is read; else, or if the
         // file's units came after its parts (a `[units]` table at the end),
         // the whole file read first.
@@ -242,6 +249,7 @@ impl Model {
             source,
             units: FileUnits::default(),
             materials: Default::default(),
+            params: Default::default(),
         };
         let units = match &raw.units {
             Some(u) => ctx.file_units(u)?,
@@ -251,7 +259,9 @@ impl Model {
             source,
             units,
             materials: Default::default(),
+            params: Default::default(),
         };
+        ctx.read_params(raw.params.as_ref(), passed)?;
         if let Some(table) = &raw.materials {
             ctx.read_materials(table)?;
         }

@@ -401,7 +401,7 @@ impl Ctx<'_> {
 }
 
 /// Every key a part may have, with where it is when present.
-fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 25] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -433,6 +433,7 @@ fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
         ("area", p.area.as_deref().map(Spanned::span)),
         ("include", p.include.as_deref().map(Spanned::span)),
         ("origin", p.origin.as_deref().map(Spanned::span)),
+        ("params", p.params.as_deref().map(Spanned::span)),
     ]
 }
 
@@ -485,7 +486,7 @@ mod tests {
         let read: BTreeSet<&str> = key_spans(&RawPart::default()).iter().map(|k| k.0).collect();
         let mut accepted: BTreeSet<&str> =
             SHAPES.iter().flat_map(|s| s.keys.iter().copied()).collect();
-        accepted.extend(["include", "origin"]);
+        accepted.extend(["include", "origin", "params"]);
         assert_eq!(read, accepted);
     }
 

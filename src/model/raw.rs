@@ -96,11 +96,19 @@ pub struct RawFile {
     /// `[materials]`: name → { density }, adding to the built-in ones.
     #[schemars(with = "Option<std::collections::BTreeMap<String, RawMaterial>>")]
     pub materials: Option<Materials>,
+    /// `[params]`: named quantities that any quantity string may use
+    /// (`model::params`).
+    #[schemars(with = "Option<std::collections::BTreeMap<String, Quantity>>")]
+    pub params: Option<Params>,
     /// From the fast path: the tables it passed over, for serde to read
     /// (`expect`, `materials` are then still to be filled in).
     #[serde(skip)]
     pub sections: Vec<super::fast::Section>,
 }
+
+/// `[params]`, or an include's `params`: name → a number or a quantity
+/// string, which may be an expression over the others.
+pub type Params = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Quantity>>>;
 
 /// `[materials]`.
 pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
@@ -177,6 +185,9 @@ pub struct RawPart {
     /// Where the included file's origin goes (with `include`).
     #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Box<Vector>>,
+    /// Parameters passed to the included file (with `include`).
+    #[schemars(with = "Option<std::collections::BTreeMap<String, Quantity>>")]
+    pub params: Option<Box<Params>>,
     /// A named material instead of a density.
     #[schemars(with = "Option<super::schema::MaterialName>")]
     pub material: Option<Box<Spanned<String>>>,

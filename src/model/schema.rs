@@ -235,6 +235,18 @@ fn quantity_string() -> Value {
     json!({ "type": "string", "pattern": units::quantity_pattern() })
 }
 
+/// An expression (`expr`): its names are the file's parameters, which a
+/// schema of every part file cannot know, so only its shape is checked
+/// here (an operator or a parenthesis in it, or a name alone); the reader
+/// judges the rest, with located errors.
+fn expression_string() -> Value {
+    json!({
+        "type": "string",
+        "description": "an expression: + - * / ^, parentheses, numbers with units, the file's `[params]`, pi, sqrt, sin, cos, tan, abs, min, max",
+        "pattern": "^[^%\"\\\\]*[-+*/^(),][^%\"\\\\]*$|^\\s*[A-Za-z_\u{b5}\u{3bc}][A-Za-z0-9_]*\\s*$",
+    })
+}
+
 impl JsonSchema for Quantity {
     fn schema_name() -> Cow<'static, str> {
         "Quantity".into()
@@ -244,10 +256,10 @@ impl JsonSchema for Quantity {
         let symbols: Vec<&str> = units::symbol_names().collect();
         json_schema!({
             "description": format!(
-                "a number in the file's units, or a string with its own unit such as \"3 mm\", \"7.85 g/cm^3\" or \"3000 rpm\"; units: {}",
+                "a number in the file's units, or a string with its own unit such as \"3 mm\", \"7.85 g/cm^3\" or \"3000 rpm\", or an expression over `[params]`, numbers and units such as \"2 * leg + 5 mm\" or \"pi * d^2 / 4\"; units: {}",
                 symbols.join(", ")
             ),
-            "anyOf": [{ "type": "number" }, quantity_string()],
+            "anyOf": [{ "type": "number" }, quantity_string(), expression_string()],
         })
     }
 }

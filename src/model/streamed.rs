@@ -89,6 +89,7 @@ impl Streamed {
                 source,
                 units: FileUnits::default(),
                 materials: Default::default(),
+                params: Default::default(),
             };
             if let Some(u) = units {
                 ctx.units = ctx.file_units(u).map_err(|_| ())?;
@@ -104,6 +105,7 @@ impl Streamed {
             source,
             units: *units,
             materials: std::mem::take(materials),
+            params: Default::default(),
         };
         let made = ctx.part(index, &p);
         // Handed back: a `Ctx` owns its materials.

@@ -21,6 +21,7 @@ mod layers;
 mod library;
 mod oracle;
 mod package;
+mod params;
 mod physics;
 mod pipes;
 mod robots;

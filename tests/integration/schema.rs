@@ -326,6 +326,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "remove" => "false",
         "array" => "{ count = 2, step = [1, 0, 0] }",
         "mirror" => "{ normal = [1, 0, 0] }",
+        "params" => "{ a = \"1 m\" }",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }
@@ -427,7 +428,10 @@ fn the_schema_knows_exactly_the_keys_the_reader_reads() {
 /// reader takes (any dimension; the key's dimension is the model's).
 #[test]
 fn the_quantity_pattern_takes_what_the_unit_reader_takes() {
-    let quantity = json!({ "$ref": "#/$defs/Quantity", "$defs": SCHEMA["$defs"] });
+    // The pattern of a plain quantity string (an expression, the other
+    // string a quantity may be, is the expression reader's to judge:
+    // `an_expression_is_a_quantity_to_the_schema`).
+    let quantity = json!({ "type": "string", "pattern": massprop::units::quantity_pattern() });
     let v = jsonschema::validator_for(&quantity).unwrap();
     let reads = |s: &str| {
         massprop::units::split_number(s)
@@ -499,6 +503,27 @@ fn the_quantity_pattern_takes_what_the_unit_reader_takes() {
                 "refuses it"
             }
         );
+    }
+}
+
+/// Expressions over parameters are quantities to the schema too; a
+/// percentage (`tol`'s) is not one.
+#[test]
+fn an_expression_is_a_quantity_to_the_schema() {
+    let quantity = json!({ "$ref": "#/$defs/Quantity", "$defs": SCHEMA["$defs"] });
+    let v = jsonschema::validator_for(&quantity).unwrap();
+    for e in [
+        "2 * leg + 5 mm",
+        "pi * d^2 / 4",
+        "rim_mass / 32",
+        "(a + b) / 2",
+        "leg",
+        "-x",
+    ] {
+        assert!(v.is_valid(&json!(e)), "{e:?}");
+    }
+    for e in ["", "3", "5%", "   "] {
+        assert!(!v.is_valid(&json!(e)), "{e:?}");
     }
 }
 

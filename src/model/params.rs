@@ -1,0 +1,520 @@
+//! `[params]`: a file's named quantities, evaluated once in the order
+//! their uses need (any order in the file; a cycle is an error), with the
+//! values given from outside: `--set NAME=VALUE` for the file named on the
+//! command line, `params = { … }` on an include for the file it includes.
+//! And the one place an expression in a quantity string is evaluated for a
+//! key (`Ctx::expression`), its errors located at the token inside the
+//! string.
+
+use super::Ctx;
+use super::raw::{Params as RawParams, Quantity};
+use crate::diag::{Diagnostic, Source};
+use crate::expr::{self, Expr, Value};
+use crate::units::{self, Dim, Factor};
+use std::collections::BTreeMap;
+use std::ops::Range;
+use toml::Spanned;
+
+/// A file's parameters, evaluated.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Params {
+    values: BTreeMap<String, Value>,
+}
+
+impl Params {
+    pub(crate) fn get(&self, name: &str) -> Option<Value> {
+        self.values.get(name).copied()
+    }
+
+    fn is_empty(&self) -> bool {
+        self.values.is_empty()
+    }
+
+    fn names(&self) -> Vec<String> {
+        self.values.keys().cloned().collect()
+    }
+}
+
+/// A parameter given from outside a file.
+#[derive(Clone, Debug)]
+pub(crate) struct Pass {
+    pub(crate) name: String,
+    pub(crate) given: Given,
+    /// The error if the file does not define `name` (located where it was
+    /// given: the flag, or the include's key).
+    pub(crate) undefined: Diagnostic,
+}
+
+#[derive(Clone, Debug)]
+pub(crate) enum Given {
+    /// `--set NAME=VALUE`: VALUE replaces the definition, read in the
+    /// file's own parameters (so it may use them); the source is VALUE,
+    /// named after the flag.
+    Set(Source),
+    /// An include's `params`: a value, read in the including file.
+    Value(Value),
+}
+
+/// `--set NAME=VALUE` flags as passes; a flag without `=`, or with a name
+/// that cannot be a parameter's, is an error.
+pub(crate) fn flags(set: &[String]) -> Result<Vec<Pass>, Diagnostic> {
+    let mut out: Vec<Pass> = Vec::new();
+    for flag in set {
+        let Some((name, value)) = flag.split_once('=') else {
+            return Err(Diagnostic::plain(format!(
+                "invalid value {flag:?} for `--set`: expected NAME=VALUE, such as `--set leg=\"700 mm\"`"
+            )));
+        };
+        let name = name.trim();
+        // `--set 'leg="700 mm"'`: the quotes of TOML taken off.
+        let value = value.trim();
+        let value = ['"', '\'']
+            .iter()
+            .find_map(|q| value.strip_prefix(*q).and_then(|v| v.strip_suffix(*q)))
+            .unwrap_or(value);
+        if !expr::is_name(name) {
+            return Err(Diagnostic::plain(format!(
+                "invalid value {flag:?} for `--set`: `{name}` is not a parameter name"
+            )));
+        }
+        if out.iter().any(|p| p.name == name) {
+            return Err(Diagnostic::plain(format!("`--set {name}` is given twice")));
+        }
+        out.push(Pass {
+            name: name.to_string(),
+            given: Given::Set(Source::new(format!("--set {name}"), value)),
+            undefined: Diagnostic::plain(format!(
+                "`--set {name}`: the file defines no parameter `{name}` in `[params]`"
+            )),
+        });
+    }
+    Ok(out)
+}
+
+/// What tells two sets of passed values apart (an include's cache key):
+/// each name and its exact value.
+pub(super) fn cache_key(passes: &[Pass]) -> String {
+    let mut key = String::new();
+    for p in passes {
+        if let Given::Value(v) = &p.given {
+            key.push_str(&format!("{}={v:?};", p.name));
+        }
+    }
+    key
+}
+
+impl Ctx<'_> {
+    /// An include's `params`, each value read here (in this file's
+    /// parameters) and passed as a value; a name the included file
+    /// (`shown`) does not define is an error at its key.
+    pub(super) fn include_params(
+        &self,
+        table: &RawParams,
+        shown: &str,
+    ) -> Result<Vec<Pass>, Diagnostic> {
+        let mut out = Vec::new();
+        for (key, q) in table.get_ref() {
+            let name = key.get_ref();
+            if !expr::is_name(name) {
+                return Err(self.err(key.span(), format!("`{name}` is not a parameter name")));
+            }
+            let value = match q.get_ref() {
+                Quantity::Number(x) if x.is_finite() => Value::of_f64(*x),
+                Quantity::Number(x) => {
+                    return Err(self.err(
+                        q.span(),
+                        format!("parameter `{name}` must be a finite number, got {x}"),
+                    ));
+                }
+                Quantity::Text(t) => {
+                    let what = format!("parameter `{name}`");
+                    let e =
+                        Expr::parse(t).map_err(|e| located(self.source, q.span(), t, e, &what))?;
+                    let params = &self.params;
+                    e.eval(&|n| params.get(n), &|| params.names())
+                        .map_err(|e| located(self.source, q.span(), t, e, &what))?
+                }
+            };
+            out.push(Pass {
+                name: name.clone(),
+                given: Given::Value(value),
+                undefined: self.err(
+                    key.span(),
+                    format!("`params`: the included `{shown}` defines no parameter `{name}`"),
+                ),
+            });
+        }
+        Ok(out)
+    }
+}
+
+/// One parameter's definition, as read.
+enum Def<'a> {
+    /// In the file: the key's span and its value.
+    File(Range<usize>, &'a Spanned<Quantity>),
+    /// `--set`.
+    Set(&'a Source),
+    Value(Value),
+}
+
+impl Ctx<'_> {
+    /// Read `[params]` (if any) with the values passed in, into
+    /// `self.params`.
+    pub(super) fn read_params(
+        &mut self,
+        raw: Option<&RawParams>,
+        passed: &[Pass],
+    ) -> Result<(), Diagnostic> {
+        if raw.is_none() && passed.is_empty() {
+            return Ok(());
+        }
+        let mut defs: BTreeMap<&str, Def> = BTreeMap::new();
+        if let Some(table) = raw {
+            for (key, value) in table.get_ref() {
+                let name = key.get_ref().as_str();
+                if !expr::is_name(name) {
+                    return Err(self
+                        .err(key.span(), format!("`{name}` is not a parameter name"))
+                        .help("a name is a letter or `_`, then letters, digits and `_`"));
+                }
+                if let Some(what) = expr::reserved(name) {
+                    return Err(self
+                        .err(
+                            key.span(),
+                            format!("the parameter `{name}` is named as {what}"),
+                        )
+                        .help("an expression reads the name as that: choose another"));
+                }
+                defs.insert(name, Def::File(key.span(), value));
+            }
+        }
+        for p in passed {
+            let Some(def) = defs.get_mut(p.name.as_str()) else {
+                let near = units::suggest(&p.name, defs.keys().copied());
+                return Err(p.undefined.clone().suggest(near));
+            };
+            *def = match &p.given {
+                Given::Set(source) => Def::Set(source),
+                Given::Value(v) => Def::Value(*v),
+            };
+        }
+        // Each definition read, and the parameters it uses.
+        let mut exprs: BTreeMap<&str, Expr> = BTreeMap::new();
+        for (name, def) in &defs {
+            let (text, span, source) = match def {
+                Def::File(_, q) => match q.get_ref() {
+                    Quantity::Text(t) => (t.as_str(), q.span(), self.source),
+                    Quantity::Number(_) => continue,
+                },
+                Def::Set(source) => (source.text.as_str(), 0..source.text.len(), *source),
+                Def::Value(_) => continue,
+            };
+            let e = Expr::parse(text)
+                .map_err(|e| located(source, span, text, e, &format!("parameter `{name}`")))?;
+            exprs.insert(name, e);
+        }
+        let order = self.order(&defs, &exprs)?;
+        for name in order {
+            let value = match &defs[name] {
+                Def::Value(v) => *v,
+                Def::File(_, q) if matches!(q.get_ref(), Quantity::Number(_)) => {
+                    let Quantity::Number(x) = q.get_ref() else {
+                        unreachable!("invariant: matched above")
+                    };
+                    if !x.is_finite() {
+                        return Err(self.err(
+                            q.span(),
+                            format!("parameter `{name}` must be a finite number, got {x}"),
+                        ));
+                    }
+                    Value::of_f64(*x)
+                }
+                def => {
+                    let (text, span, source) = match def {
+                        Def::File(_, q) => match q.get_ref() {
+                            Quantity::Text(t) => (t.as_str(), q.span(), self.source),
+                            Quantity::Number(_) => unreachable!("invariant: matched above"),
+                        },
+                        Def::Set(s) => (s.text.as_str(), 0..s.text.len(), *s),
+                        Def::Value(_) => unreachable!("invariant: matched above"),
+                    };
+                    let params = &self.params;
+                    exprs[name]
+                        .eval(&|n| params.get(n), &|| {
+                            defs.keys().map(|k| k.to_string()).collect()
+                        })
+                        .map_err(|e| {
+                            located(source, span, text, e, &format!("parameter `{name}`"))
+                        })?
+                }
+            };
+            self.params.values.insert(name.to_string(), value);
+        }
+        Ok(())
+    }
+
+    /// The parameters in an order in which each comes after those it uses
+    /// (Kahn's algorithm, no recursion); a cycle is an error at the first
+    /// of its parameters, naming the cycle.
+    fn order<'n>(
+        &self,
+        defs: &BTreeMap<&'n str, Def>,
+        exprs: &BTreeMap<&'n str, Expr>,
+    ) -> Result<Vec<&'n str>, Diagnostic> {
+        let uses = |name: &str| -> Vec<&'n str> {
+            exprs.get(name).map_or_else(Vec::new, |e| {
+                let mut u: Vec<&'n str> = e
+                    .names()
+                    .filter_map(|(n, _)| defs.get_key_value(n).map(|(k, _)| *k))
+                    .collect();
+                u.sort_unstable();
+                u.dedup();
+                u
+            })
+        };
+        let mut waiting: BTreeMap<&str, usize> = BTreeMap::new();
+        let mut users: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+        for name in defs.keys() {
+            let u = uses(name);
+            waiting.insert(name, u.len());
+            for d in u {
+                users.entry(d).or_default().push(name);
+            }
+        }
+        let mut ready: Vec<&str> = waiting
+            .iter()
+            .filter(|(_, n)| **n == 0)
+            .map(|(k, _)| *k)
+            .collect();
+        let mut order = Vec::with_capacity(defs.len());
+        while let Some(name) = ready.pop() {
+            order.push(name);
+            for u in users.get(name).map_or(&[][..], Vec::as_slice) {
+                let n = waiting
+                    .get_mut(u)
+                    .expect("invariant: every user is a parameter");
+                *n -= 1;
+                if *n == 0 {
+                    ready.push(u);
+                }
+            }
+        }
+        if order.len() == defs.len() {
+            return Ok(order);
+        }
+        // A cycle: from a parameter left waiting, follow uses that are
+        // waiting too until one repeats.
+        let left = |n: &str| waiting.get(n).is_some_and(|w| *w > 0);
+        let start = *waiting
+            .keys()
+            .find(|k| left(k))
+            .expect("invariant: one is left");
+        let mut path = vec![start];
+        loop {
+            let last = *path.last().expect("invariant: not empty");
+            let next = uses(last)
+                .into_iter()
+                .find(|u| left(u))
+                .expect("invariant: a waiting parameter uses a waiting one");
+            if let Some(at) = path.iter().position(|p| *p == next) {
+                let mut cycle: Vec<&str> = path[at..].to_vec();
+                cycle.push(next);
+                let message = format!("parameters form a cycle: {}", cycle.join(" → "));
+                return Err(match &defs[cycle[0]] {
+                    Def::File(key, _) => self.err(key.clone(), message),
+                    Def::Set(s) => s.error(0..s.text.len(), message),
+                    Def::Value(_) => Diagnostic::plain(message),
+                }
+                .help("a parameter cannot be defined by itself, directly or through others"));
+            }
+            path.push(next);
+        }
+    }
+
+    /// A quantity string that the unit reader refused, read as an
+    /// expression: `Ok(None)` where it is a plain quantity after all (its
+    /// error is the unit reader's), else its value in units of `factor`
+    /// (of dimension `dim`), or the expression's located error.
+    pub(super) fn expression(
+        &self,
+        q: &Spanned<Quantity>,
+        text: &str,
+        key: &str,
+        dim: Dim,
+        factor: Factor,
+    ) -> Result<Option<f64>, Diagnostic> {
+        if dim != Dim::DIMENSIONLESS && self.looks_plain(text) {
+            return Ok(None);
+        }
+        let what = format!("`{key}`");
+        let e = Expr::parse(text).map_err(|e| located(self.source, q.span(), text, e, &what))?;
+        let params = &self.params;
+        let v = e
+            .eval(&|n| params.get(n), &|| params.names())
+            .map_err(|e| located(self.source, q.span(), text, e, &what))?;
+        if v.dim != dim {
+            return Err(self
+                .err(
+                    q.span(),
+                    format!(
+                        "`{key}` is {}, but the expression gives {}",
+                        expr::describe(dim),
+                        expr::describe(v.dim)
+                    ),
+                )
+                .help(format!("e.g. {}", dim.example())));
+        }
+        let x = v.in_units(factor);
+        if !x.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows the range of f64 in its units"),
+            ));
+        }
+        if x != 0.0 && x.abs() < f64::MIN_POSITIVE || x == 0.0 && !is_zero(v) {
+            return Err(self.err(
+                q.span(),
+                format!(
+                    "`{key}` is too small: below {:e} in its units, f64 loses precision",
+                    f64::MIN_POSITIVE
+                ),
+            ));
+        }
+        Ok(Some(x))
+    }
+
+    /// Whether `text` is a plain quantity, right or wrong (`"3 furlongs"`,
+    /// `"2 m^5"`): a number, then only unit words and their joiners, none
+    /// a parameter, a function or `pi`, and no number after `*` or `/`.
+    fn looks_plain(&self, text: &str) -> bool {
+        let Ok((_, unit)) = units::split_number(text) else {
+            return false;
+        };
+        let mut prev = ' ';
+        let mut word = String::new();
+        let mut after_word = false;
+        for c in unit.chars().chain([' ']) {
+            if c.is_alphanumeric() || c == '_' {
+                if word.is_empty() && c.is_ascii_digit() && matches!(prev, '*' | '/' | '·') {
+                    return false;
+                }
+                word.push(c);
+                continue;
+            }
+            if !word.is_empty() {
+                // With parameters, a word that is no unit is read as a
+                // name (the error then suggests among both).
+                let unit = units::parse_unit(&word).is_ok();
+                if self.params.get(&word).is_some()
+                    || expr::reserved(&word).is_some_and(|r| r != "a unit symbol")
+                    || !unit && !self.params.is_empty()
+                {
+                    return false;
+                }
+                word.clear();
+                after_word = true;
+            }
+            match c {
+                ' ' | '\t' => continue,
+                // `2 * leg`, `3 / n`: an operator before any unit.
+                '*' | '/' | '·' if prev == ' ' && !after_word => return false,
+                // A power of a unit, not of the number (`10^3 kg`).
+                '^' if !after_word => return false,
+                '*' | '/' | '·' | '^' | '²' | '³' => after_word = false,
+                '-' | '+' if prev == '^' => {}
+                _ => return false,
+            }
+            prev = c;
+        }
+        true
+    }
+}
+
+fn is_zero(v: Value) -> bool {
+    match v.num {
+        expr::Num::Exact(q) => q.is_zero(),
+        expr::Num::Float(x) => x.hi == 0.0,
+    }
+}
+
+/// An expression's error as a diagnostic at its token in the file: `span`
+/// is the string's (quotes included) in `source`, `text` its value.
+fn located(
+    source: &Source,
+    span: Range<usize>,
+    text: &str,
+    e: expr::Error,
+    what: &str,
+) -> Diagnostic {
+    let at = sub_span(&source.text, span, text, e.at);
+    let d = source.error(at, format!("{what}: {}", e.message));
+    match e.help {
+        Some(h) => d.help(h),
+        None => d,
+    }
+}
+
+/// Where bytes `at` of a string's value lie in the file, given the
+/// string's span there: a literal string (`'…'`) maps by its opening
+/// quote, a basic one (`"…"`) through its escapes; anything else (a
+/// multi-line string, a span that is not the string's) is the whole span.
+pub(super) fn sub_span(
+    file: &str,
+    span: Range<usize>,
+    value: &str,
+    at: Range<usize>,
+) -> Range<usize> {
+    let Some(raw) = file.get(span.clone()) else {
+        return span;
+    };
+    // Raw offsets of each byte of the value, and of its end.
+    let mut map: Vec<usize> = Vec::with_capacity(value.len() + 1);
+    if raw.len() == value.len() {
+        // The source itself: `--set`'s value.
+        map.extend(span.start..=span.end);
+    } else if raw.starts_with('\'') && !raw.starts_with("'''") {
+        map.extend(span.start + 1..=span.start + 1 + value.len());
+    } else if raw.starts_with('"') && !raw.starts_with("\"\"\"") {
+        let body = &raw[1..raw.len().saturating_sub(1).max(1)];
+        let mut decoded = String::with_capacity(value.len());
+        let mut chars = body.char_indices().peekable();
+        while let Some((i, c)) = chars.next() {
+            let r = span.start + 1 + i;
+            let d = if c == '\\' {
+                let Some((_, e)) = chars.next() else { break };
+                let hex = |n: usize, chars: &mut std::iter::Peekable<std::str::CharIndices>| {
+                    let s: String = (0..n).filter_map(|_| chars.next().map(|x| x.1)).collect();
+                    u32::from_str_radix(&s, 16).ok().and_then(char::from_u32)
+                };
+                match e {
+                    'b' => '\u{8}',
+                    't' => '\t',
+                    'n' => '\n',
+                    'f' => '\u{c}',
+                    'r' => '\r',
+                    'e' => '\u{1b}',
+                    '"' => '"',
+                    '\\' => '\\',
+                    'x' => hex(2, &mut chars).unwrap_or('\u{fffd}'),
+                    'u' => hex(4, &mut chars).unwrap_or('\u{fffd}'),
+                    'U' => hex(8, &mut chars).unwrap_or('\u{fffd}'),
+                    _ => '\u{fffd}',
+                }
+            } else {
+                c
+            };
+            decoded.push(d);
+            map.extend(std::iter::repeat_n(r, d.len_utf8()));
+        }
+        map.push(span.end - 1);
+        if decoded != value {
+            return span;
+        }
+    } else {
+        return span;
+    }
+    match (map.get(at.start), map.get(at.end)) {
+        (Some(&s), Some(&e)) => s..e.max(s + 1),
+        _ => span,
+    }
+}
