@@ -156,6 +156,28 @@ impl Frame {
                 *to = self.point(*to);
             }
             Place::Vertices(v) => *v = v.map(|x| self.point(x)),
+            Place::Axial {
+                center,
+                dims,
+                orientation,
+            } => {
+                *center = self.point(*center);
+                *dims = dims.map(|x| x * self.length);
+                self.turn(orientation);
+            }
+            Place::Prism {
+                origin,
+                polygon,
+                length,
+                orientation,
+            } => {
+                *origin = self.point(*origin);
+                if self.length != 1.0 {
+                    *polygon = polygon.iter().map(|v| v.map(|x| x * self.length)).collect();
+                }
+                *length *= self.length;
+                self.turn(orientation);
+            }
             Place::Given {
                 center,
                 inertia,
@@ -199,7 +221,20 @@ impl Frame {
 fn reach(place: &Place) -> f64 {
     let norm = |p: &[f64; 3]| p.iter().map(|x| x.abs()).sum::<f64>();
     match place {
-        Place::Centered { center, .. } | Place::Given { center, .. } => norm(center),
+        Place::Centered { center, .. }
+        | Place::Given { center, .. }
+        | Place::Axial { center, .. } => norm(center),
+        // Its vertices are scaled in its own frame: their rounding is
+        // relative to their distance from its origin.
+        Place::Prism {
+            origin, polygon, ..
+        } => {
+            norm(origin)
+                + polygon
+                    .iter()
+                    .map(|v| v[0].abs() + v[1].abs())
+                    .fold(0.0, f64::max)
+        }
         Place::Edges { corner, .. } => norm(corner),
         Place::FromTo { from, to } => norm(from).max(norm(to)),
         Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
