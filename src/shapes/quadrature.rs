@@ -14,12 +14,12 @@ use crate::numeric::Real;
 fn gauss(lo: f64, hi: f64) -> Vec<(f64, f64)> {
     const X: [f64; 4] = [
         0.183_434_642_495_649_8,
-        0.525_532_409_916_329_0,
+        0.525_532_409_916_329,
         0.796_666_477_413_626_7,
         0.960_289_856_497_536_2,
     ];
     const W: [f64; 4] = [
-        0.362_683_783_378_362_0,
+        0.362_683_783_378_362,
         0.313_706_645_877_887_3,
         0.222_381_034_453_374_5,
         0.101_228_536_290_376_3,
@@ -75,6 +75,7 @@ fn close(a: f64, b: f64, tol: f64, what: &str) {
 
 /// A closed form (per unit mass, about the centroid, diagonal) against the
 /// quadrature's, and its offset along z.
+#[allow(clippy::needless_range_loop)]
 fn check(shape: Shape, d: &[f64], q: &Moments, tol: f64, what: &str) {
     let c = shape.second_moments(1.0, d);
     let scale = c.iter().fold(0.0f64, |m, x| m.max(*x));
@@ -283,6 +284,7 @@ fn fan(p: &[[f64; 2]], o: [f64; 2]) -> (f64, [f64; 2], [f64; 3]) {
 }
 
 #[test]
+#[allow(clippy::needless_range_loop)]
 fn prism_polygons_match_their_triangulation() {
     // A star-shaped polygon of 40 vertices about (0.3, −0.2), either
     // orientation, and far from its origin.
@@ -324,6 +326,7 @@ fn prism_polygons_match_their_triangulation() {
 }
 
 #[test]
+#[allow(clippy::needless_range_loop)]
 fn a_rectangular_prism_is_the_box_and_an_l_two_boxes() {
     let (a, b, l) = (0.6, 0.25, 1.5);
     let p = polygon(&[[0.0, 0.0], [a, 0.0], [a, b], [0.0, b]]);

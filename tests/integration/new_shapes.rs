@@ -77,25 +77,21 @@ fn a_hollow_shape_is_the_solid_less_its_core() {
 fn a_rectangular_prism_is_the_box_and_an_l_prism_two_boxes() {
     // The rectangle [1, 1.5] × [2, 2.25] extruded 0.75, its origin moved
     // and turned: the box of that size at origin + R (1.25, 2.125, 0).
-    let prism = format!(
-        "[[part]]\nshape = \"prism\"\ndensity = 2700\npolygon = [[1, 2], [1.5, 2], [1.5, 2.25], [1, 2.25]]\nlength = 0.75\norigin = [10, 0, 0]\nrotation = {{ axis = [0, 0, 1], degrees = 90 }}\n"
-    );
+    let prism = "[[part]]\nshape = \"prism\"\ndensity = 2700\npolygon = [[1, 2], [1.5, 2], [1.5, 2.25], [1, 2.25]]\nlength = 0.75\norigin = [10, 0, 0]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n";
     let boxed = "[[part]]\nshape = \"box\"\ndensity = 2700\nsize = [0.5, 0.25, 0.75]\ncenter = [7.875, 1.25, 0]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n";
-    same_body(&prism, boxed, 1e-14);
+    same_body(prism, boxed, 1e-14);
     // An L, clockwise, far from its origin, turned.
     let l = format!(
         "[[part]]\nshape = \"prism\"\ndensity = 1000\npolygon = [[1000, 1000], [1000, 1003], [1001, 1003], [1001, 1001], [1002, 1001], [1002, 1000]]\nlength = 0.5\norigin = [-1000, -1000, 0]\n{TURN}\n"
     );
-    let boxes = format!(
-        "[[part]]\nshape = \"box\"\ndensity = 1000\ncorner = [0, 0, -0.25]\nedges = [[2, 0, 0], [0, 1, 0], [0, 0, 0.5]]\n\
-         [[part]]\nshape = \"box\"\ndensity = 1000\ncorner = [0, 1, -0.25]\nedges = [[1, 0, 0], [0, 2, 0], [0, 0, 0.5]]\n"
-    );
+    let boxes = "[[part]]\nshape = \"box\"\ndensity = 1000\ncorner = [0, 0, -0.25]\nedges = [[2, 0, 0], [0, 1, 0], [0, 0, 0.5]]\n\
+         [[part]]\nshape = \"box\"\ndensity = 1000\ncorner = [0, 1, -0.25]\nedges = [[1, 0, 0], [0, 2, 0], [0, 0, 0.5]]\n";
     // The boxes unturned: compare the L unturned too, then turned
     // against the L turned about its own origin by a turned include.
     let l_flat = l.replace(TURN, "");
-    same_body(&l_flat, &boxes, 1e-12);
+    same_body(&l_flat, boxes, 1e-12);
     let (m, _, i, _) = figures(&l, &[]);
-    let (mb, _, ib, _) = figures(&boxes, &[]);
+    let (mb, _, ib, _) = figures(boxes, &[]);
     assert!((m - mb).abs() <= 1e-12 * mb);
     // A turn keeps the principal moments: the traces and Frobenius norms.
     let tr = |i: &[[f64; 3]; 3]| i[0][0] + i[1][1] + i[2][2];
@@ -115,11 +111,8 @@ fn a_diameter_is_twice_the_radius() {
             "top_radius = 0.25\nlength = 2\ntop_inner_radius = 0.1\n",
         ),
     ] {
-        let inner_r = if shape == "cylinder" || shape == "sphere" || shape == "hemisphere" {
-            "inner_radius = 0.2\n"
-        } else {
-            "inner_radius = 0.2\n"
-        };
+        let inner_r = "inner_radius = 0.2
+";
         let by_radius = format!(
             "[[part]]\nshape = \"{shape}\"\ndensity = 1000\nradius = 0.5\n{inner_r}{extra}center = [1, 2, 3]\n{TURN}\n"
         );
