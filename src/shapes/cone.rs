@@ -17,7 +17,7 @@
 //! - V = π L (w₀ + w₁ + w₂)/3;
 //! - t̄ − ½ = (w₂ − w₀)/(4W), W = w₀ + w₁ + w₂: the centroid at
 //!   z̄ = L (w₂ − w₀)/(4W);
-//! - ∫(z − z̄)² dm = m L² Var t, and Var t = E[t²] − t̄², which written out
+//! - ∫(z − z̄)² dm = m L² Var t, and Var t = E(t²) − t̄², which written out
 //!   over the common denominator 80W² is
 //!   (3w₀² + 12w₀w₁ + 26w₀w₂ + 4w₁² + 12w₁w₂ + 3w₂²)/(80W²): every
 //!   coefficient positive, so no cancellation (a cylinder: 1/12);

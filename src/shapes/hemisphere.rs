@@ -7,8 +7,9 @@
 //! P₅ = 1 + ρ + ρ² + ρ³ + ρ⁴ (R³ − r³ = R³(1 − ρ)P₃, and so on):
 //!
 //! - V = ⅔π(R³ − r³), formed as ⅔π(R − r)(R² + Rr + r²);
-//! - the first moment: in shells of radius s, ∫z dV = ∫ s³ π s² … gives
-//!   ∫z dV = π(R⁴ − r⁴)/4, so z̄ = ⅜ (R⁴ − r⁴)/(R³ − r³)
+//! - the first moment: in shells of radius s, z = s cos φ over the half
+//!   solid angle, ∫cos φ dΩ = π, so ∫z dV = π ∫ s³ ds = π(R⁴ − r⁴)/4 and
+//!   z̄ = ⅜ (R⁴ − r⁴)/(R³ − r³)
 //!   = ⅜ R (1 + ρ)(1 + ρ²)/P₃ (⅜R solid, R/2 a thin shell);
 //! - about the sphere's centre every ∫x² dm is the whole sphere's,
 //!   k = R² P₅/(5P₃) per unit mass (the half has half the mass and half
