@@ -163,7 +163,12 @@ fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
         .keys()
         .iter()
         .copied()
-        .filter(|k| !matches!(*k, "inner_radius" | "top_inner_radius" | "inner_tube_radius"))
+        .filter(|k| {
+            !matches!(
+                *k,
+                "inner_radius" | "top_inner_radius" | "inner_tube_radius"
+            )
+        })
         .filter(|k| !(by_diameter && *k == "radius"))
         .collect();
     if s.centred.contains(&"center") {
