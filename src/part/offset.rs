@@ -167,3 +167,81 @@ pub(super) fn prism_second_moment<T: Real>(
     });
     (j, own)
 }
+
+impl Place {
+    /// A prism's mirror image in its own local x–z plane (local y → −y):
+    /// the same origin, length and turn, its polygon with y negated and
+    /// its vertices reversed (`shapes::prism::mirrored`). A mirror in any
+    /// plane of the file is this image turned by the proper rotation
+    /// S R F (S the file's reflection, R the prism's turn, F = diag(1, −1,
+    /// 1)) about the reflected origin. `None` for any other placement.
+    pub fn prism_mirrored_in_local_xz(&self) -> Option<Place> {
+        match self {
+            Place::Prism {
+                origin,
+                polygon: p,
+                length,
+                orientation,
+            } => Some(Place::Prism {
+                origin: *origin,
+                polygon: crate::shapes::prism::mirrored(p).into(),
+                length: *length,
+                orientation: orientation.clone(),
+            }),
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::part::{MassSpec, Spec};
+
+    /// The mirror image of an unturned prism: the same mass, its centroid
+    /// and its x–y product with y negated, the rest unchanged.
+    #[test]
+    fn a_mirrored_prism_negates_its_y_figures() {
+        let place = Place::Prism {
+            origin: [1.0, 2.0, 3.0],
+            polygon: vec![
+                [0.0, 0.0],
+                [2.0, 0.0],
+                [2.0, 1.0],
+                [1.0, 1.0],
+                [1.0, 3.0],
+                [0.0, 3.0],
+            ]
+            .into(),
+            length: 0.5,
+            orientation: Orientation::Identity,
+        };
+        let mirror = place.prism_mirrored_in_local_xz().expect("a prism");
+        let spec = |place: Place| Spec {
+            mass: MassSpec::Density(7.0),
+            place,
+            removed: false,
+            placed: Default::default(),
+        };
+        let (a, b) = (spec(place), spec(mirror));
+        let (ma, mb): (f64, f64) = (
+            crate::part::mass_of(Shape::Prism, &a),
+            crate::part::mass_of(Shape::Prism, &b),
+        );
+        assert_eq!(ma, mb);
+        let (ca, cb) = (
+            crate::part::centroid(Shape::Prism, &a.place),
+            crate::part::centroid(Shape::Prism, &b.place),
+        );
+        assert_eq!(ca[0].f64(), cb[0].f64());
+        assert_eq!(ca[1].f64() - 2.0, -(cb[1].f64() - 2.0));
+        let (ja, jb): (M3<f64>, M3<f64>) = (
+            crate::part::own_second_moment(Shape::Prism, &a, ma),
+            crate::part::own_second_moment(Shape::Prism, &b, mb),
+        );
+        for (k, l) in [(0, 0), (1, 1), (2, 2)] {
+            assert!((ja[k][l] - jb[k][l]).abs() <= 1e-15 * ja[k][l]);
+        }
+        assert!(ja[0][1] != 0.0 && (ja[0][1] + jb[0][1]).abs() <= 1e-15 * ja[0][0]);
+    }
+}
