@@ -189,6 +189,29 @@ impl Frame {
             }
         }
         s.placed = self.rounding(s.placed, reach);
+        // A prism's vertices, scaled in its own frame, round each by a unit
+        // of their distance from its origin: that changes its shape by
+        // 2 max|p|/shortest edge units of its sizes (and moves its
+        // centroid, in `reach`).
+        if let Place::Prism { polygon, .. } = &s.place
+            && self.length != 1.0
+        {
+            let n = polygon.len();
+            let far = polygon
+                .iter()
+                .map(|v| v[0].abs().max(v[1].abs()))
+                .fold(0.0, f64::max);
+            let short = (0..n)
+                .map(|i| {
+                    let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                    (a[0] - b[0]).hypot(a[1] - b[1])
+                })
+                .fold(f64::INFINITY, f64::min);
+            s.placed = crate::part::Placed::new(
+                f64::from(s.placed.units) + 2.0 * far / short,
+                f64::from(s.placed.at),
+            );
+        }
     }
 
     /// What placing a part through this frame adds to its rounding
@@ -224,8 +247,9 @@ fn reach(place: &Place) -> f64 {
         Place::Centered { center, .. }
         | Place::Given { center, .. }
         | Place::Axial { center, .. } => norm(center),
-        // Its vertices are scaled in its own frame: their rounding is
-        // relative to their distance from its origin.
+        // Its vertices are scaled in its own frame: their rounding moves
+        // its centroid by a unit of their distance from its origin (and
+        // changes its shape, counted in its sizes' units, `Frame::place`).
         Place::Prism {
             origin, polygon, ..
         } => {

@@ -52,13 +52,8 @@ pub fn placed_units<T: Real>(place: &Place, placed: &super::Placed) -> f64 {
             .min(length(&v[1], &v[2]))
             .min(length(&v[2], &v[0])),
         Place::FromTo { from, to } => length(from, to),
-        // A prism's vertices are placed as a triangle's are.
-        Place::Prism { polygon, .. } => (0..polygon.len())
-            .map(|i| {
-                let (a, b) = (polygon[i], polygon[(i + 1) % polygon.len()]);
-                (a[0] - b[0]).hypot(a[1] - b[1])
-            })
-            .fold(f64::INFINITY, f64::min),
+        // A prism's vertices are scaled in its own frame, not placed: their
+        // rounding is in `units` (`Frame::place`).
         _ => f64::INFINITY,
     };
     let spanned = 2.0 * f64::from(placed.at) / (U64 * shortest);
