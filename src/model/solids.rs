@@ -397,32 +397,42 @@ fn meet(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
         || (o4 == 0 && within(c, d, b))
 }
 
-/// The first pair of edges (i < j; edge k from vertex k to k + 1) that
-/// cross or touch, or, for neighbours, fold back over each other; the
-/// vertices are distinct.
+/// A pair of edges (i < j; edge k from vertex k to k + 1) that cross or
+/// touch, or of neighbours that fold back over each other, if any; the
+/// vertices are distinct. Neighbours first (O(n)), then the others by a
+/// sweep in x: the edges sorted by their left end, each compared only with
+/// those that start before it ends (O(n²) at worst, as for a comb; near
+/// O(n log n) for the usual outline).
 fn crossing(v: &[[f64; 2]]) -> Option<(usize, usize)> {
     let n = v.len();
     let e = |k: usize| (v[k], v[(k + 1) % n]);
-    for j in 1..n {
-        for i in 0..j {
-            let (a, b) = e(i);
-            let (c, d) = e(j);
-            if j == i + 1 {
-                // b = c: folded back if d lies on the ray b → a.
-                if orient(a, b, d) == 0
-                    && (a[0] - b[0]) * (d[0] - b[0]) + (a[1] - b[1]) * (d[1] - b[1]) > 0.0
-                {
-                    return Some((i, j));
-                }
-            } else if i == 0 && j == n - 1 {
-                // d = a: folded back if c lies on the ray a → b.
-                if orient(a, b, c) == 0
-                    && (b[0] - a[0]) * (c[0] - a[0]) + (b[1] - a[1]) * (c[1] - a[1]) > 0.0
-                {
-                    return Some((i, j));
-                }
-            } else if meet(a, b, c, d) {
-                return Some((i, j));
+    for i in 0..n {
+        let (j, k) = ((i + 1) % n, (i + 2) % n);
+        // Edges i and j meet at v[j]: folded back if v[k] lies on the ray
+        // v[j] → v[i].
+        let (a, b, d) = (v[i], v[j], v[k]);
+        if orient(a, b, d) == 0
+            && (a[0] - b[0]) * (d[0] - b[0]) + (a[1] - b[1]) * (d[1] - b[1]) > 0.0
+        {
+            return Some((i.min(j), i.max(j)));
+        }
+    }
+    let left = |k: usize| v[k][0].min(v[(k + 1) % n][0]);
+    let right = |k: usize| v[k][0].max(v[(k + 1) % n][0]);
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&a, &b| left(a).total_cmp(&left(b)).then(a.cmp(&b)));
+    for (at, &i) in order.iter().enumerate() {
+        for &j in &order[at + 1..] {
+            if left(j) > right(i) {
+                break;
+            }
+            let neighbours = (i + 1) % n == j || (j + 1) % n == i;
+            if neighbours {
+                continue;
+            }
+            let ((a, b), (c, d)) = (e(i), e(j));
+            if meet(a, b, c, d) {
+                return Some((i.min(j), i.max(j)));
             }
         }
     }
