@@ -9,9 +9,11 @@ use crate::shapes::Shape;
 use crate::units::{Dim, FileUnits};
 use nalgebra::{Matrix3, Vector3};
 use std::ops::Range;
+use std::sync::Arc;
 
 pub mod error;
 pub mod mirror;
+mod offset;
 
 pub use error::Own;
 
@@ -119,7 +121,7 @@ impl Part {
 
     /// Centroid in file units, in double-double (see `centroid`).
     pub fn centroid(&self) -> [DD; 3] {
-        centroid(&self.spec.place)
+        centroid(self.shape, &self.spec.place)
     }
 
     /// ∫ρρᵀ dm about the centroid, file axes and units, for the mass `m`
@@ -246,6 +248,26 @@ pub enum Place {
         inertia: Box<[[f64; 3]; 3]>,
         orientation: Orientation,
     },
+    /// A cone or a hemisphere: `center` (the middle of the cone's axis,
+    /// the centre of the hemisphere's sphere), the dimensions as
+    /// `Shape::second_moments` takes them (cone [R₀, a₀, R₁, a₁, L],
+    /// hemisphere [R, r]), padded with 0, and the turn of the local axes.
+    /// Its centroid lies off `center` along local z
+    /// (`Shape::axial_offset`).
+    Axial {
+        center: [f64; 3],
+        dims: [f64; 5],
+        orientation: Orientation,
+    },
+    /// A prism: where its local origin goes, its polygon in the local x–y
+    /// plane (file units, either orientation), its length along local z
+    /// (from −length/2 to +length/2) and the turn of the local axes.
+    Prism {
+        origin: [f64; 3],
+        polygon: Arc<[[f64; 2]]>,
+        length: f64,
+        orientation: Orientation,
+    },
 }
 
 fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
@@ -308,6 +330,19 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     .fold(T::of(1.0), |acc, e| acc * norm_of(&e.map(T::of))),
                 (Place::FromTo { from, to }, _) => norm_of(&sub::<T>(*to, *from)),
                 (Place::Given { .. }, _) => T::of(1.0),
+                (Place::Axial { dims, .. }, _) => {
+                    let d: [T; 5] = dims.map(T::of);
+                    shape.measure_of(&d[..shape.dim_count()])
+                }
+                (
+                    Place::Prism {
+                        polygon, length, ..
+                    },
+                    _,
+                ) => {
+                    let area = crate::shapes::prism::polygon(polygon).area;
+                    T::of_dd(area) * T::of(*length)
+                }
                 (Place::Vertices(v), _) => {
                     let d = triangle_offsets::<T>(v);
                     let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
@@ -327,8 +362,9 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
 /// Centroid of a part (file units), in double-double: a corner plus half
 /// its edges is not an f64 in general, and far from the origin its rounding
 /// would move the part relative to its neighbours.
-pub fn centroid(place: &Place) -> [DD; 3] {
+pub fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
     match place {
+        Place::Axial { .. } | Place::Prism { .. } => offset::centroid(shape, place),
         Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
         Place::Vertices(v) => triangle_centroid(v),
         Place::Edges { corner, edges } => std::array::from_fn(|i| {
@@ -412,13 +448,24 @@ fn own_second_moment_in<T: Real>(
             }
         }
     };
-    match &spec.place {
+    let centred = match &spec.place {
         Place::Centered {
             extent,
             orientation,
             ..
-        } => {
-            let dims: [T; 3] = extent.map(T::of);
+        } => Some((&extent[..], orientation)),
+        Place::Axial {
+            dims, orientation, ..
+        } => Some((&dims[..], orientation)),
+        _ => None,
+    };
+    match &spec.place {
+        Place::Centered { .. } | Place::Axial { .. } => {
+            let (extent, orientation) = centred.expect("matched");
+            let mut dims = [zero; 5];
+            for (d, x) in dims.iter_mut().zip(extent) {
+                *d = T::of(*x);
+            }
             let d = shape.second_moments(m, &dims[..shape.dim_count()]);
             if let Orientation::Identity = orientation {
                 let own = bound.then(|| {
@@ -468,6 +515,10 @@ fn own_second_moment_in<T: Real>(
             for d in triangle_offsets::<T>(v) {
                 add_outer(d);
             }
+        }
+        Place::Prism { .. } => {
+            let (j, own) = offset::prism_second_moment(spec, m, bound, errors);
+            return (j, own);
         }
         Place::Given {
             inertia,

@@ -262,7 +262,7 @@ impl Ctx<'_> {
                         .err(a.span(), "an array about an `axis` needs `step_degrees`, the turn from each copy to the next")
                         .help(help));
                 };
-                let degrees = self.plain(deg, "step_degrees")?;
+                let degrees = self.dimensionless(deg, "step_degrees")?;
                 if !((count - 1) as f64 * degrees).is_finite() {
                     return Err(self.err(
                         deg.span(),
@@ -306,7 +306,7 @@ impl Ctx<'_> {
 
     /// `count`: a whole number of copies, 1 to the part limit.
     fn count(&self, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
-        let x = self.plain(q, "count")?;
+        let x = self.dimensionless(q, "count")?;
         if !(x >= 1.0 && x.fract() == 0.0) {
             return Err(self
                 .err(
@@ -331,23 +331,11 @@ impl Ctx<'_> {
         Ok(x as usize)
     }
 
-    /// A plain number (no unit): a TOML number, or a string of one.
-    ///
-    /// NOTE: where parameters (`[params]`) make quantity strings
-    /// expressions, a dimensionless expression belongs here.
-    fn plain(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
-        let x = match q.get_ref() {
-            Quantity::Number(x) => *x,
-            Quantity::Text(t) => match crate::units::split_number(t) {
-                Ok((x, "")) => x,
-                _ => {
-                    return Err(self.err(
-                        q.span(),
-                        format!("`{key}` is a plain number, without a unit, got {t:?}"),
-                    ));
-                }
-            },
-        };
+    /// A plain number: a TOML number, or a dimensionless quantity string
+    /// or expression (`"32"`, `"spokes / 2"`, `"360 / n"`), read as every
+    /// quantity is (`Ctx::file_quantity`).
+    fn dimensionless(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
+        let x = self.file_quantity(q, key, Dim::DIMENSIONLESS)?;
         if !x.is_finite() {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
@@ -477,7 +465,10 @@ impl Ctx<'_> {
 /// Every coordinate of the points a placement gives, and its edges'.
 fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
     let points: Vec<[f64; 3]> = match place {
-        Place::Centered { center, .. } | Place::Given { center, .. } => vec![*center],
+        Place::Centered { center, .. }
+        | Place::Given { center, .. }
+        | Place::Axial { center, .. } => vec![*center],
+        Place::Prism { origin, .. } => vec![*origin],
         Place::Edges { corner, edges } => std::iter::once(*corner).chain(*edges).collect(),
         Place::FromTo { from, to } => vec![*from, *to],
         Place::Vertices(v) => v.to_vec(),

@@ -410,6 +410,12 @@ impl<'i> Builder<'i> {
                     "diameter" => set(&mut p.diameter, quantity(node)?),
                     "radius" => set(&mut p.radius, quantity(node)?),
                     "inner_radius" => set(&mut p.inner_radius, quantity(node)?),
+                    "inner_diameter" => set(&mut p.inner_diameter, quantity(node)?),
+                    "top_radius" => set(&mut p.top_radius, quantity(node)?),
+                    "top_inner_radius" => set(&mut p.top_inner_radius, quantity(node)?),
+                    "tube_radius" => set(&mut p.tube_radius, quantity(node)?),
+                    "inner_tube_radius" => set(&mut p.inner_tube_radius, quantity(node)?),
+                    "polygon" => set(&mut p.polygon, vectors(node)?),
                     "size" => set(&mut p.size, vector(node)?),
                     "center" => set(&mut p.center, vector(node)?),
                     "corner" => set(&mut p.corner, vector(node)?),
@@ -678,6 +684,9 @@ pub(super) mod tests {
              [[part]]\nshape = \"triangle\"\nareal_density = 2\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nremove = false\n\
              [[part]]\nshape = \"inertia\"\nmass = 2\ncenter = [1, 2, 3]\ninertia = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\nproducts = \"positive\"\n\
              [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n\
+             [[part]]\nshape = \"cone\"\ndensity = 2\ndiameter = 2\ninner_diameter = \"1 mm\"\ntop_radius = 0.5\ntop_inner_radius = 0.25\nlength = 3\ncenter = [0, 0, 0]\n\
+             [[part]]\nshape = \"torus\"\nmass = 2\nradius = 2\ntube_radius = 1\ninner_tube_radius = 0.5\ncenter = [0, 0, 0]\n\
+             [[part]]\nshape = \"prism\"\nmass = 2\npolygon = [[0, 0], [1, 0], [\"1 mm\", 1]]\nlength = 3\norigin = [1, 2, 3]\n\
              [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n",
         );
         declines("[[part]]\nshape = \"box\"\nremove = 1\n");

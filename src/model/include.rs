@@ -193,6 +193,28 @@ impl Frame {
                 *to = self.point(*to);
             }
             Place::Vertices(v) => *v = v.map(|x| self.point(x)),
+            Place::Axial {
+                center,
+                dims,
+                orientation,
+            } => {
+                *center = self.point(*center);
+                *dims = dims.map(|x| x * self.length);
+                self.turn(orientation);
+            }
+            Place::Prism {
+                origin,
+                polygon,
+                length,
+                orientation,
+            } => {
+                *origin = self.point(*origin);
+                if self.length != 1.0 {
+                    *polygon = polygon.iter().map(|v| v.map(|x| x * self.length)).collect();
+                }
+                *length *= self.length;
+                self.turn(orientation);
+            }
             Place::Given {
                 center,
                 inertia,
@@ -207,6 +229,29 @@ impl Frame {
             crate::part::mirror::complete(shape, &mut s.place);
         }
         s.placed = self.rounding(s.placed, reach);
+        // A prism's vertices, scaled in its own frame, round each by a unit
+        // of their distance from its origin: that changes its shape by
+        // 2 max|p|/shortest edge units of its sizes (and moves its
+        // centroid, in `reach`).
+        if let Place::Prism { polygon, .. } = &s.place
+            && self.length != 1.0
+        {
+            let n = polygon.len();
+            let far = polygon
+                .iter()
+                .map(|v| v[0].abs().max(v[1].abs()))
+                .fold(0.0, f64::max);
+            let short = (0..n)
+                .map(|i| {
+                    let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                    (a[0] - b[0]).hypot(a[1] - b[1])
+                })
+                .fold(f64::INFINITY, f64::min);
+            s.placed = crate::part::Placed::new(
+                f64::from(s.placed.units) + 2.0 * far / short,
+                f64::from(s.placed.at),
+            );
+        }
     }
 
     /// What placing a part through this frame adds to its rounding
@@ -248,7 +293,21 @@ impl Frame {
 fn reach(place: &Place) -> f64 {
     let norm = |p: &[f64; 3]| p.iter().map(|x| x.abs()).sum::<f64>();
     match place {
-        Place::Centered { center, .. } | Place::Given { center, .. } => norm(center),
+        Place::Centered { center, .. }
+        | Place::Given { center, .. }
+        | Place::Axial { center, .. } => norm(center),
+        // Its vertices are scaled in its own frame: their rounding moves
+        // its centroid by a unit of their distance from its origin (and
+        // changes its shape, counted in its sizes' units, `Frame::place`).
+        Place::Prism {
+            origin, polygon, ..
+        } => {
+            norm(origin)
+                + polygon
+                    .iter()
+                    .map(|v| v[0].abs() + v[1].abs())
+                    .fold(0.0, f64::max)
+        }
         Place::Edges { corner, .. } => norm(corner),
         Place::FromTo { from, to } => norm(from).max(norm(to)),
         Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),

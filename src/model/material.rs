@@ -29,9 +29,16 @@ impl Ctx<'_> {
 
     /// A density (at `span`) on a thin shell, which has no volume.
     pub(super) fn thin_shell(&self, span: Range<usize>, shape: &str) -> Diagnostic {
+        let equal = match shape {
+            "cone" => "`inner_radius` = `radius` and `top_inner_radius` = `top_radius`",
+            "torus" => "`inner_tube_radius` = `tube_radius`",
+            _ => "`inner_radius` = `radius`",
+        };
         self.err(
             span,
-            format!("this {shape} is a thin shell (`inner_radius` = `radius`): it has no volume for a density to fill"),
+            format!(
+                "this {shape} is a thin shell ({equal}): it has no volume for a density to fill"
+            ),
         )
         .help("give its `mass`")
     }
@@ -200,7 +207,15 @@ pub(super) fn material_keys(rule: MaterialRule) -> &'static [&'static str] {
     }
 }
 
-/// A cylinder, disk or sphere whose inner radius is its radius.
+/// A cylinder, disk, sphere or hemisphere whose inner radius is its
+/// radius; a cone whose inner radii are its outer ones at both ends; a
+/// torus whose inner tube is its tube: a thin shell, of no volume (its
+/// mass spread evenly over the surface).
 pub(super) fn is_thin_shell(shape: Shape, dims: &[f64]) -> bool {
-    matches!(shape.info().dims, Dims::Radii { .. }) && dims[1] == dims[0]
+    match shape.info().dims {
+        Dims::Radii { .. } => dims[1] == dims[0],
+        Dims::Cone => dims[1] == dims[0] && dims[3] == dims[2],
+        Dims::Torus => dims[2] == dims[1],
+        _ => false,
+    }
 }

@@ -23,6 +23,7 @@ pub mod raw;
 pub mod rotation;
 pub mod schema;
 mod section;
+mod solids;
 mod streamed;
 mod toml_error;
 mod walk;

@@ -97,24 +97,71 @@ impl Ctx<'_> {
                         extent[0] = self.file_quantity(l, "length", Dim::LENGTH)?;
                     }
                     Dims::Radii { length } => {
-                        let r = p.radius.as_deref().expect("`part` checked the radius");
-                        extent[0] = self.file_quantity(r, "radius", Dim::LENGTH)?;
-                        if let Some(q) = &p.inner_radius {
-                            extent[1] = self.file_quantity(q, "inner_radius", Dim::LENGTH)?;
+                        let r = self
+                            .radius_of(p, false)?
+                            .expect("`part` checked the radius");
+                        extent[0] = self.radius_file(&r)?;
+                        if let Some(q) = self.radius_of(p, true)? {
+                            extent[1] = self.radius_file(&q)?;
                         }
                         if let (true, Some(l)) = (length, &p.length) {
                             extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
                         }
                     }
+                    Dims::Torus => extent = self.torus_file(p)?,
+                    Dims::Cone => {
+                        return self.spec_of(
+                            mass,
+                            p,
+                            Place::Axial {
+                                center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
+                                dims: self.cone_file(p)?,
+                                orientation,
+                            },
+                        );
+                    }
+                    Dims::Polygon => {
+                        let l = p.length.as_deref().expect("`part` checked the length");
+                        let origin = match &p.origin {
+                            Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
+                            None => [0.0; 3],
+                        };
+                        let place = Place::Prism {
+                            origin,
+                            polygon: self.polygon_file(p)?.into(),
+                            length: self.file_quantity(l, "length", Dim::LENGTH)?,
+                            orientation,
+                        };
+                        return self.spec_of(mass, p, place);
+                    }
                     Dims::None | Dims::Given | Dims::Vertices => {}
                 }
+                let center = self.file_vec3(req(&p.center), "center", Dim::LENGTH)?;
+                if shape == Shape::Hemisphere {
+                    let mut dims = [0.0; 5];
+                    dims[..3].copy_from_slice(&extent);
+                    return self.spec_of(
+                        mass,
+                        p,
+                        Place::Axial {
+                            center,
+                            dims,
+                            orientation,
+                        },
+                    );
+                }
                 Place::Centered {
-                    center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
+                    center,
                     extent,
                     orientation,
                 }
             }
         };
+        self.spec_of(mass, p, place)
+    }
+
+    /// A part's `Spec` from its mass and placement.
+    fn spec_of(&self, mass: MassSpec, p: &RawPart, place: Place) -> Result<Spec, Diagnostic> {
         Ok(Spec {
             mass,
             place,
@@ -365,6 +412,7 @@ impl Ctx<'_> {
             Place::Centered { extent, .. } => {
                 (shape.second_moments(m, &extent[..shape.dim_count()]), 3)
             }
+            Place::Axial { dims, .. } => (shape.second_moments(m, &dims[..shape.dim_count()]), 3),
             Place::Edges { edges, .. } => (
                 // (m e) e, not m (e e): e² alone can underflow or overflow.
                 edges.map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum()),
@@ -387,7 +435,7 @@ impl Ctx<'_> {
         }
         // A triangle's one moment checked is the trace.
         let expected = match shape.info().dims {
-            Dims::Vertices => 1,
+            Dims::Vertices | Dims::Polygon => 1,
             _ => shape.nonzero_moments(),
         };
         let normal = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
@@ -401,7 +449,7 @@ impl Ctx<'_> {
 }
 
 /// Every key a part may have, with where it is when present.
-fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 25] {
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 31] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -434,6 +482,21 @@ fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 25] {
         ("include", p.include.as_deref().map(Spanned::span)),
         ("origin", p.origin.as_deref().map(Spanned::span)),
         ("params", p.params.as_deref().map(Spanned::span)),
+        (
+            "inner_diameter",
+            p.inner_diameter.as_deref().map(Spanned::span),
+        ),
+        ("top_radius", p.top_radius.as_deref().map(Spanned::span)),
+        (
+            "top_inner_radius",
+            p.top_inner_radius.as_deref().map(Spanned::span),
+        ),
+        ("tube_radius", p.tube_radius.as_deref().map(Spanned::span)),
+        (
+            "inner_tube_radius",
+            p.inner_tube_radius.as_deref().map(Spanned::span),
+        ),
+        ("polygon", p.polygon.as_deref().map(Spanned::span)),
     ]
 }
 

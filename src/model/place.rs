@@ -59,15 +59,19 @@ impl Ctx<'_> {
                 vec![self.positive(l, "length", Dim::LENGTH)?]
             }
             Dims::Radii { length } => {
-                let r = p.radius.as_deref().ok_or_else(|| missing("radius"))?;
-                let outer = self.positive(r, "radius", Dim::LENGTH)?;
-                let inner = match &p.inner_radius {
+                let r = self.radius_of(p, false)?.ok_or_else(|| missing("radius"))?;
+                let outer = self.radius_si(&r)?;
+                if !(outer > 0.0) {
+                    return Err(self.err(r.q.span(), format!("`{}` must be positive", r.key)));
+                }
+                let inner = match self.radius_of(p, true)? {
                     None => 0.0,
                     Some(q) => {
-                        let v = self.quantity(q, "inner_radius", Dim::LENGTH)?;
+                        let v = self.radius_si(&q)?;
                         if !(v >= 0.0 && v <= outer) {
+                            let (ik, ok) = (q.key, r.key);
                             return Err(self
-                                .err(q.span(), "`inner_radius` must be from 0 to `radius`")
+                                .err(q.q.span(), format!("`{ik}` must be from 0 to `{ok}`"))
                                 .help("0 (or leaving it out) is a solid; equal to `radius`, a thin shell"));
                         }
                         v
@@ -89,9 +93,19 @@ impl Ctx<'_> {
                 let area = self.triangle(p, missing("vertices"))?;
                 return Ok((Orientation::Identity, vec![area]));
             }
+            Dims::Cone => self.cone(p, span.clone())?,
+            Dims::Torus => self.torus(p, span.clone())?,
+            Dims::Polygon => self.prism(p, span.clone())?,
         };
-        let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
-        self.vec3(center, "center", Dim::LENGTH)?;
+        if shape.info().dims == Dims::Polygon {
+            // Placed by its optional `origin`.
+            if let Some(o) = &p.origin {
+                self.vec3(o, "origin", Dim::LENGTH)?;
+            }
+        } else {
+            let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
+            self.vec3(center, "center", Dim::LENGTH)?;
+        }
         let orientation = match &p.rotation {
             Some(r) => self.rotation(r)?,
             None => Orientation::Identity,

@@ -171,18 +171,40 @@ pub struct RawPart {
     /// A plate's real thickness: reported against, never composed.
     #[schemars(with = "Option<Quantity>")]
     pub thickness: Option<Box<Spanned<Quantity>>>,
-    /// A rod's real diameter: reported against, never composed.
+    /// A rod's real diameter: reported against, never composed. For a
+    /// cylinder, disk, sphere, cone or hemisphere, twice its `radius`.
     #[schemars(with = "Option<Quantity>")]
     pub diameter: Option<Box<Spanned<Quantity>>>,
-    /// Cylinder, disk and sphere: outer radius, and the optional inner one.
+    /// Cylinder, disk, sphere, cone, hemisphere (outer radius, and the
+    /// optional inner one), torus (its axis to the tube's centre).
     #[schemars(with = "Option<Quantity>")]
     pub radius: Option<Box<Spanned<Quantity>>>,
     #[schemars(with = "Option<Quantity>")]
     pub inner_radius: Option<Box<Spanned<Quantity>>>,
+    /// Cylinder, disk, sphere, cone and hemisphere: the inner diameter,
+    /// instead of `inner_radius` (`diameter` gives the outer one).
+    #[schemars(with = "Option<Quantity>")]
+    pub inner_diameter: Option<Box<Spanned<Quantity>>>,
+    /// A cone's radius at its top (local z = +length/2).
+    #[schemars(with = "Option<Quantity>")]
+    pub top_radius: Option<Box<Spanned<Quantity>>>,
+    /// A hollow cone's inner radius at its top.
+    #[schemars(with = "Option<Quantity>")]
+    pub top_inner_radius: Option<Box<Spanned<Quantity>>>,
+    /// A torus's tube radius.
+    #[schemars(with = "Option<Quantity>")]
+    pub tube_radius: Option<Box<Spanned<Quantity>>>,
+    /// A hollow torus's inner tube radius.
+    #[schemars(with = "Option<Quantity>")]
+    pub inner_tube_radius: Option<Box<Spanned<Quantity>>>,
+    /// A prism's polygon: [x, y] vertices in its local x–y plane.
+    #[schemars(with = "Option<Vec<[Quantity; 2]>>")]
+    pub polygon: Option<Box<Spanned<Vec<Vector>>>>,
     /// Another part file placed here as a sub-assembly.
     #[schemars(with = "Option<String>")]
     pub include: Option<Box<Spanned<String>>>,
-    /// Where the included file's origin goes (with `include`).
+    /// Where the included file's origin goes (with `include`), or a
+    /// prism's local origin.
     #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Box<Vector>>,
     /// Parameters passed to the included file (with `include`).

@@ -177,18 +177,43 @@ fn each_required(keys: &[&str]) -> Value {
 /// The centred placement (its dimensions, and `center` where it has one),
 /// or the spanned one (`corner` and `edges`, `from` and `to`), not both.
 fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
-    // `inner_radius` may be left out: a solid.
+    // The inner radii may be left out: a solid. A radius may be given as
+    // its diameter (not a rod's: that is its real size), one or the other.
+    let by_diameter = s.keys.contains(&"diameter") && s.real_size.is_none();
     let mut centred: Vec<&str> = s
         .dims
         .keys()
         .iter()
         .copied()
-        .filter(|k| *k != "inner_radius")
+        .filter(|k| {
+            !matches!(
+                *k,
+                "inner_radius" | "top_inner_radius" | "inner_tube_radius"
+            )
+        })
+        .filter(|k| !(by_diameter && *k == "radius"))
         .collect();
     if s.centred.contains(&"center") {
         centred.push("center");
     }
     let none_of = |keys: &[&str]| json!({ "not": { "anyOf": each_required(keys) } });
+    if by_diameter {
+        let mut all = vec![
+            json!({ "required": centred }),
+            json!({ "oneOf": each_required(&["radius", "diameter"]) }),
+            json!({ "not": { "required": ["inner_radius", "inner_diameter"] } }),
+        ];
+        // A hollow cone gives its bore at both ends.
+        if s.keys.contains(&"top_inner_radius") {
+            let base = json!({ "anyOf": each_required(&["inner_radius", "inner_diameter"]) });
+            all.push(json!({ "if": base, "then": { "required": ["top_inner_radius"] } }));
+            all.push(json!({
+                "if": { "required": ["top_inner_radius"] },
+                "then": base,
+            }));
+        }
+        return json!({ "allOf": all });
+    }
     match s.spanned {
         None => json!({ "required": centred }),
         Some(spanned) => json!({ "oneOf": [

@@ -52,6 +52,8 @@ pub fn placed_units<T: Real>(place: &Place, placed: &super::Placed) -> f64 {
             .min(length(&v[1], &v[2]))
             .min(length(&v[2], &v[0])),
         Place::FromTo { from, to } => length(from, to),
+        // A prism's vertices are scaled in its own frame, not placed: their
+        // rounding is in `units` (`Frame::place`).
         _ => f64::INFINITY,
     };
     let spanned = 2.0 * f64::from(placed.at) / (U64 * shortest);
@@ -100,8 +102,19 @@ impl Own {
 /// (3: a², m·, /12), m(R² + r²)/4 (4), the sphere's m R²/5 · (1 + ρ + … +
 /// ρ⁴)/(1 + ρ + ρ²) (≤ 18: ρ = r/R moves the ratio by at most its own
 /// rounding, its powers and sums 7 and 3, the division 3).
+///
+/// The new solids, counted the same way over the operations of their
+/// closed forms (`shapes::cone`, `torus`, `hemisphere`), every sum of terms
+/// of one sign: the cone's ∫x² dm (d, s, the Bernstein coefficients 4
+/// deep, S's ten products summed, over 40W) about 26 and its ∫z² dm
+/// (the variance's six products summed over 80W²) about 33: 40; the
+/// hemisphere's ratio of polynomials in ρ by Horner's rule (12, and ρ's
+/// own rounding six times over its degree) over 320P₃²: 40; the torus's
+/// a² + b² and R² + ¾(…) with m/2: 8.
 pub fn closed_form(shape: Shape) -> f64 {
     match shape {
+        Shape::Cone | Shape::Hemisphere => 40.0,
+        Shape::Torus => 8.0,
         Shape::Sphere => 18.0,
         Shape::Cylinder | Shape::Disk => 5.0,
         _ => 4.0,
@@ -129,9 +142,14 @@ pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
         return 0.0;
     }
     1.0 + match &spec.place {
-        Place::Centered { .. } => match shape {
+        Place::Centered { .. } | Place::Axial { .. } => match shape {
             // 4/3 and π (3), R − r (1), R² + Rr + r² (3), three products.
-            Shape::Sphere => 11.0,
+            Shape::Sphere | Shape::Hemisphere => 11.0,
+            // π, L and W (the Bernstein coefficients' sum, 6), /3, two
+            // products.
+            Shape::Cone => 14.0,
+            // 2π² (3), a − b and a + b (2), four products.
+            Shape::Torus => 10.0,
             // π (1), R − r and R + r (2), two products, the length (1).
             Shape::Cylinder | Shape::Disk => 6.0,
             _ => shape.dim_count() as f64,
@@ -142,6 +160,13 @@ pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
         Place::FromTo { .. } => 7.0,
         Place::Given { .. } => 0.0,
         Place::Vertices(v) => triangle_area(v),
+        // The polygon's area in double-double (32 of its units of the
+        // magnitudes Σ|cᵢ|/2 it is summed from, counted here as units of
+        // either arithmetic: 32 f64 units are far more than it needs),
+        // rounded once, times the length.
+        Place::Prism { polygon, .. } => {
+            3.0 + 32.0 * crate::shapes::prism::polygon(polygon).spread.area
+        }
     }
 }
 
@@ -174,10 +199,14 @@ fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
 pub fn centroid_error(spec: &Spec, centroid: &[f64; 3]) -> [f64; 3] {
     let place = &spec.place;
     let at = f64::from(spec.placed.at);
+    if let Place::Axial { .. } | Place::Prism { .. } = place {
+        return super::offset::centroid_error(place, centroid).map(|e| e + at);
+    }
     let inexact = |j: usize| match place {
         Place::Centered { .. } | Place::Given { .. } | Place::FromTo { .. } => false,
         Place::Edges { edges, .. } => edges.iter().any(|e| e[j] != 0.0),
         Place::Vertices(v) => !(v[0][j] == v[1][j] && v[1][j] == v[2][j]),
+        Place::Axial { .. } | Place::Prism { .. } => unreachable!("returned above"),
     };
     std::array::from_fn(|j| {
         at + if inexact(j) {

@@ -23,9 +23,11 @@ use crate::shapes::Shape;
 /// The local axis in whose plane through the local origin the shape, as
 /// its closed forms take it, is its own mirror image.
 ///
-/// NOTE: x for every shape placed by its centre: a box, plate or rod is
+/// NOTE: x for every shape placed by its centre (a prism: z, the
+/// extrusion it is centred in): a box, plate or rod is
 /// symmetric in all three; a cylinder's, disk's or rod's axis is local z,
-/// and every solid of revolution about z is symmetric in x; a sphere, a
+/// and every solid of revolution about z (cone, torus, hemisphere) is
+/// symmetric in x; a sphere, a
 /// point and a given tensor (flipped with it, `complete`) in any.
 pub fn symmetric_axis(shape: Shape) -> Option<usize> {
     match shape {
@@ -37,7 +39,13 @@ pub fn symmetric_axis(shape: Shape) -> Option<usize> {
         | Shape::Sphere
         | Shape::Triangle
         | Shape::Point
-        | Shape::Inertia => Some(0),
+        | Shape::Inertia
+        | Shape::Cone
+        | Shape::Torus
+        | Shape::Hemisphere => Some(0),
+        // Extruded from −length/2 to +length/2: its own image in local z,
+        // so its polygon need not be reflected.
+        Shape::Prism => Some(2),
     }
 }
 
@@ -54,7 +62,9 @@ pub fn complete(shape: Shape, place: &mut Place) {
     };
     let k = symmetric_axis(shape).unwrap_or(0);
     match place {
-        Place::Centered { orientation, .. } => flip(k, orientation),
+        Place::Centered { orientation, .. }
+        | Place::Axial { orientation, .. }
+        | Place::Prism { orientation, .. } => flip(k, orientation),
         Place::Given {
             inertia,
             orientation,

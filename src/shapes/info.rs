@@ -53,6 +53,14 @@ pub enum Dims {
     Given,
     /// None (a point).
     None,
+    /// A cone: `radius` (or `diameter`), `inner_radius`, `top_radius`,
+    /// `top_inner_radius` and `length`: [R₀, a₀, R₁, a₁, L].
+    Cone,
+    /// A torus: `radius` (centre line), `tube_radius`, `inner_tube_radius`:
+    /// [R, a, b].
+    Torus,
+    /// A prism: `polygon` and `length`; the dimensions [area, length].
+    Polygon,
 }
 
 impl Dims {
@@ -65,6 +73,9 @@ impl Dims {
             // A triangle's one "dimension" is its area (see `measure_of`).
             Dims::Length | Dims::Vertices => 1,
             Dims::Given | Dims::None => 0,
+            Dims::Cone => 5,
+            Dims::Torus => 3,
+            Dims::Polygon => 2,
         }
     }
 
@@ -78,6 +89,15 @@ impl Dims {
             Dims::Vertices => &["vertices"],
             Dims::Given => &["inertia"],
             Dims::None => &[],
+            Dims::Cone => &[
+                "radius",
+                "inner_radius",
+                "top_radius",
+                "top_inner_radius",
+                "length",
+            ],
+            Dims::Torus => &["radius", "tube_radius", "inner_tube_radius"],
+            Dims::Polygon => &["polygon", "length"],
         }
     }
 }
@@ -174,7 +194,7 @@ impl Solid {
 }
 
 /// The shapes, in the order of `Shape`'s variants.
-pub const SHAPES: [ShapeInfo; 9] = [
+pub const SHAPES: [ShapeInfo; 13] = [
     ShapeInfo {
         shape: Shape::Box,
         name: "box",
@@ -250,6 +270,8 @@ pub const SHAPES: [ShapeInfo; 9] = [
             "density",
             "radius",
             "inner_radius",
+            "diameter",
+            "inner_diameter",
             "material",
             "length",
             "center",
@@ -265,7 +287,7 @@ pub const SHAPES: [ShapeInfo; 9] = [
         real_size: None,
         nonzero_moments: 3,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
-        help: "a cylinder takes `mass` or `density`, `radius` and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
+        help: "a cylinder takes `mass` or `density`, `radius` (or `diameter`) and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
     },
     ShapeInfo {
         shape: Shape::Disk,
@@ -274,6 +296,8 @@ pub const SHAPES: [ShapeInfo; 9] = [
             "areal_density",
             "radius",
             "inner_radius",
+            "diameter",
+            "inner_diameter",
             "material",
             "thickness",
             "center",
@@ -289,7 +313,7 @@ pub const SHAPES: [ShapeInfo; 9] = [
         real_size: None,
         nonzero_moments: 2,
         degenerate: "a density on a thin ring (`inner_radius` = `radius`)",
-        help: "a disk takes `mass` or `areal_density`, and `radius` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
+        help: "a disk takes `mass` or `areal_density`, and `radius` or `diameter` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
     },
     ShapeInfo {
         shape: Shape::Sphere,
@@ -298,6 +322,8 @@ pub const SHAPES: [ShapeInfo; 9] = [
             "density",
             "radius",
             "inner_radius",
+            "diameter",
+            "inner_diameter",
             "material",
             "center",
             "rotation",
@@ -312,7 +338,7 @@ pub const SHAPES: [ShapeInfo; 9] = [
         real_size: None,
         nonzero_moments: 3,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
-        help: "a sphere takes `mass` or `density`, and `radius` with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
+        help: "a sphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     },
     ShapeInfo {
         shape: Shape::Triangle,
@@ -364,5 +390,98 @@ pub const SHAPES: [ShapeInfo; 9] = [
         nonzero_moments: 0,
         degenerate: "a tensor that is not symmetric or not physically valid",
         help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
+    },
+    ShapeInfo {
+        shape: Shape::Cone,
+        name: "cone",
+        keys: &[
+            "density",
+            "radius",
+            "inner_radius",
+            "top_radius",
+            "top_inner_radius",
+            "diameter",
+            "inner_diameter",
+            "material",
+            "length",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Cone,
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a zero `length` (a disk), both radii 0, or a density on a thin shell (each inner radius equal to its outer)",
+        help: "a cone takes `mass` or `density`, `radius` (or `diameter`) at its base, `top_radius` (0 for a full cone) and `length` along its local z, with `center` at the middle of its axis (and optional `rotation`); `inner_radius` and `top_inner_radius` make it hollow",
+    },
+    ShapeInfo {
+        shape: Shape::Torus,
+        name: "torus",
+        keys: &[
+            "density",
+            "radius",
+            "tube_radius",
+            "inner_tube_radius",
+            "material",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Torus,
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a `tube_radius` above `radius` (self-intersecting), or a density on a thin shell (`inner_tube_radius` = `tube_radius`)",
+        help: "a torus takes `mass` or `density`, `radius` (its axis to the tube's centre) and `tube_radius` (at most `radius`), with `center` (and optional `rotation`; its axis is local z); an `inner_tube_radius` makes the tube hollow",
+    },
+    ShapeInfo {
+        shape: Shape::Hemisphere,
+        name: "hemisphere",
+        keys: &[
+            "density",
+            "radius",
+            "inner_radius",
+            "diameter",
+            "inner_diameter",
+            "material",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Radii { length: false },
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
+        help: "a hemisphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`, the centre of its sphere (flat face in its local x–y plane, dome toward +z; optional `rotation`); an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
+    },
+    ShapeInfo {
+        shape: Shape::Prism,
+        name: "prism",
+        keys: &[
+            "density", "polygon", "length", "origin", "rotation", "mass", "remove", "material",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Polygon,
+        centred: &[],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "fewer than 3 vertices, a repeated vertex, crossing edges or no area",
+        help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
     },
 ];

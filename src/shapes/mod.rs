@@ -11,18 +11,33 @@
 //!   an inner radius an annulus;
 //! - sphere: radius `R` about the origin; with an inner radius a hollow
 //!   sphere, and with r = R a thin shell;
-//! - point: a point mass at the origin.
+//! - point: a point mass at the origin;
+//! - cone (`cone`): a frustum about local z from the base at z = −L/2 to
+//!   the top at +L/2, solid or hollow; its centroid off the origin on z;
+//! - torus (`torus`): its tube's centre line a circle in the local x–y
+//!   plane about the origin;
+//! - hemisphere (`hemisphere`): the half z ≥ 0 of a sphere about the
+//!   origin; its centroid off the origin on z;
+//! - prism (`prism`): a polygon in the local x–y plane extruded from
+//!   z = −L/2 to +L/2 (its second moment has an x–y product).
 //!
 //! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; box,
-//! plate and rod are products of such segments. Every shape is symmetric
-//! about its local planes, so its second moments are diagonal in local axes
-//! and need no products of inertia.
+//! plate and rod are products of such segments. Every shape but the prism
+//! is symmetric about its local x–z and y–z planes, so its second moments
+//! about its centroid are diagonal in local axes and need no products of
+//! inertia.
 //!
 //! A plate's real `thickness` and a rod's `diameter` never enter these: the
 //! composition is the idealised one, and `report::ideal` compares it with
 //! the solid box and cylinder they describe.
 
+pub mod cone;
+pub mod hemisphere;
 mod info;
+pub mod prism;
+#[cfg(test)]
+mod quadrature;
+pub mod torus;
 
 pub use info::{
     DensityKind, Dims, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, SHAPES, ShapeInfo, Solid,
@@ -48,10 +63,18 @@ pub enum Shape {
     /// A bought or previously computed component: mass, centre and inertia
     /// tensor given (no closed form here; see `model::Place::Given`).
     Inertia,
+    /// A cone or frustum, solid or hollow (`shapes::cone`).
+    Cone,
+    /// A torus, solid or hollow (`shapes::torus`).
+    Torus,
+    /// A hemisphere, solid or hollow (`shapes::hemisphere`).
+    Hemisphere,
+    /// A polygon extruded along local z (`shapes::prism`).
+    Prism,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 9] = [
+    pub const ALL: [Shape; 13] = [
         Shape::Box,
         Shape::Plate,
         Shape::Rod,
@@ -61,6 +84,10 @@ impl Shape {
         Shape::Triangle,
         Shape::Point,
         Shape::Inertia,
+        Shape::Cone,
+        Shape::Torus,
+        Shape::Hemisphere,
+        Shape::Prism,
     ];
 
     /// The shape's description.
@@ -129,13 +156,22 @@ impl Shape {
                     * (r_out * r_out + r_out * r_in + r_in * r_in)
             }
             Shape::Point | Shape::Inertia => T::of(1.0),
+            Shape::Cone => cone::measure(d),
+            Shape::Torus => torus::measure(d),
+            Shape::Hemisphere => hemisphere::measure(d),
+            // [area, length]: the area from the polygon (`part`).
+            Shape::Prism => d[0] * d[1],
         }
     }
 
     /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
     /// `m` and dimensions `d`: box [a, b, c]; plate [a, b]; rod [L];
     /// cylinder [R, r, L]; disk [R, r]; sphere [R, r] (outer and inner
-    /// radius, r = 0 for a solid, r = R for a thin shell); point [].
+    /// radius, r = 0 for a solid, r = R for a thin shell); point [];
+    /// cone [R₀, a₀, R₁, a₁, L] (base and top radii and bores);
+    /// torus [R, a, b] (centre line, tube, inner tube); hemisphere [R, r].
+    /// Each about the shape's centroid (`cone::offset`,
+    /// `hemisphere::offset`: off the origin of the local frame).
     ///
     /// - segment of length a: m a²/12;
     /// - cylinder or tube, about a diameter in its mid-plane: m (R² + r²)/4
@@ -173,7 +209,23 @@ impl Shape {
             (Shape::Point | Shape::Inertia, &[]) => [zero; 3],
             // A triangle is composed from `Place::Vertices` instead.
             (Shape::Triangle, &[_]) => [zero; 3],
+            (Shape::Cone, &[_, _, _, _, _]) => cone::second_moments(m, d),
+            (Shape::Torus, &[_, _, _]) => torus::second_moments(m, d),
+            (Shape::Hemisphere, &[_, _]) => hemisphere::second_moments(m, d),
+            // A prism is composed from `Place::Prism` instead.
+            (Shape::Prism, &[_, _]) => [zero; 3],
             _ => unreachable!("the model passes each shape its dim_count() dimensions"),
+        }
+    }
+
+    /// The offset of the centroid from the origin of the local frame,
+    /// along local z, of a shape of dimensions `d`: the cone's and the
+    /// hemisphere's; 0 for the others (a prism's is in its polygon).
+    pub fn axial_offset<T: Real>(self, d: &[T]) -> T {
+        match self {
+            Shape::Cone => cone::offset(d),
+            Shape::Hemisphere => hemisphere::offset(d),
+            _ => T::of(0.0),
         }
     }
 

@@ -249,7 +249,29 @@ fn bounds_count_the_rounding_of_an_included_frame() {
     let mut rng = Rng::new(57);
     let mut honest = Honest::default();
     for trial in 0..3 {
-        let sub = every_shape(&mut rng).in_units(Length::Mm, Mass::G);
+        // The last trial holds the far prism alone, so that its own
+        // bounds are the body's.
+        let mut scene = every_shape(&mut rng);
+        if trial == 2 {
+            scene.parts.clear();
+        }
+        // A prism drawn far from its own origin (as in a sketch's
+        // coordinates): the frame's scaling rounds its vertices relative
+        // to that distance, which changes its shape.
+        let q = rng.quaternion();
+        scene.parts.push(r::Part::prism(
+            vec![
+                [1000.1, 2000.3],
+                [1000.35, 2000.3],
+                [1000.35, 2000.55],
+                [1000.2, 2000.45],
+            ],
+            0.25,
+            [-1000.0, -2000.0, 0.5],
+            Some(r::Rotation::Quaternion(q)),
+            r::Amount::Density(2700.0),
+        ));
+        let sub = scene.in_units(Length::Mm, Mass::G);
         let quaternion = rng.quaternion();
         let origin = [0.3, -1.7, 2.9].map(|x: f64| x * (1.0 + trial as f64));
         let dir = crate::common::scratch("bounds", &format!("frame-{trial}"));

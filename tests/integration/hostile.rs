@@ -530,7 +530,19 @@ fn rotation(l: u32) -> BoxedStrategy<String> {
 /// checks the list against `massprop::shapes::SHAPES`); `"spehre"` is the
 /// unknown one, a misspelling that no shape will ever be named.
 const SHAPES: &[&str] = &[
-    "box", "plate", "rod", "cylinder", "disk", "sphere", "triangle", "point", "inertia",
+    "box",
+    "plate",
+    "rod",
+    "cylinder",
+    "disk",
+    "sphere",
+    "triangle",
+    "point",
+    "inertia",
+    "cone",
+    "torus",
+    "hemisphere",
+    "prism",
 ];
 
 /// The generator knows every shape: a shape added to massprop without its
@@ -587,6 +599,12 @@ const EXTRA_KEYS: &[&str] = &[
     "include",
     "origin",
     "colour",
+    "inner_diameter",
+    "top_radius",
+    "top_inner_radius",
+    "tube_radius",
+    "inner_tube_radius",
+    "polygon",
 ];
 
 /// One `[[part]]`: shape-appropriate keys with hostile values, plus noise.
@@ -667,7 +685,9 @@ fn part(l: u32) -> BoxedStrategy<String> {
             }
             lines.push(format!("shape = \"{shape}\""));
             let density_key = match shape {
-                "box" | "cylinder" | "sphere" => "density",
+                "box" | "cylinder" | "sphere" | "cone" | "torus" | "hemisphere" | "prism" => {
+                    "density"
+                }
                 "plate" | "disk" | "triangle" => "areal_density",
                 "rod" => "linear_density",
                 _ => "mass",
@@ -711,6 +731,19 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     lines.push(format!("to = {to}"));
                 }
                 "triangle" => lines.push(format!("vertices = {tensor}")),
+                "prism" => {
+                    // A polygon from the first two rows of the tensor and
+                    // the edges (hostile values, sometimes crossing or
+                    // degenerate), placed by `origin`.
+                    lines.push(format!(
+                        "polygon = [{size2}, {size2}, [{radius}, {length}], [0, {radius}]]"
+                    ));
+                    lines.push(format!("origin = {corner}"));
+                    lines.push(format!("length = {length}"));
+                    if let Some(r) = rot {
+                        lines.push(format!("rotation = {r}"));
+                    }
+                }
                 _ => {
                     lines.push(format!("center = {center}"));
                     if let Some(r) = rot.filter(|_| shape != "point") {
@@ -732,6 +765,36 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     }
                     if shape == "cylinder" {
                         lines.push(format!("length = {length}"));
+                    }
+                }
+                "hemisphere" => {
+                    let key = if how % 2 == 0 { "diameter" } else { "radius" };
+                    lines.push(format!("{key} = {radius}"));
+                    if let Some((_, r)) = inner {
+                        lines.push(format!("inner_radius = {r}"));
+                    }
+                }
+                "cone" => {
+                    lines.push(format!("radius = {radius}"));
+                    let top = if how % 2 == 0 { "0" } else { radius.as_str() };
+                    lines.push(format!("top_radius = {top}"));
+                    match inner {
+                        Some((0, r)) => {
+                            lines.push(format!("inner_radius = {r}\ntop_inner_radius = 0"))
+                        }
+                        Some((1, r)) => lines.push(format!("inner_diameter = {r}")),
+                        Some((_, r)) => {
+                            lines.push(format!("inner_radius = {radius}\ntop_inner_radius = {r}"))
+                        }
+                        None => {}
+                    }
+                    lines.push(format!("length = {length}"));
+                }
+                "torus" => {
+                    lines.push(format!("radius = {radius}"));
+                    lines.push(format!("tube_radius = {length}"));
+                    if let Some((_, r)) = inner {
+                        lines.push(format!("inner_tube_radius = {r}"));
                     }
                 }
                 "inertia" => lines.push(format!("inertia = {tensor}")),

@@ -122,6 +122,11 @@ enum Kind {
     Shell,
     Triangle,
     Given,
+    Cone,
+    HollowCone,
+    Torus,
+    Hemisphere,
+    Prism,
 }
 
 impl Kind {
@@ -149,7 +154,7 @@ impl Kind {
     }
 
     /// The shapes beyond box, plate, rod and point.
-    const NEW: [Kind; 9] = [
+    const NEW: [Kind; 14] = [
         Kind::Cylinder,
         Kind::Tube,
         Kind::Disk,
@@ -159,6 +164,11 @@ impl Kind {
         Kind::Shell,
         Kind::Triangle,
         Kind::Given,
+        Kind::Cone,
+        Kind::HollowCone,
+        Kind::Torus,
+        Kind::Hemisphere,
+        Kind::Prism,
     ];
 
     fn name(self) -> &'static str {
@@ -172,6 +182,11 @@ impl Kind {
             Kind::Shell => "shell",
             Kind::Triangle => "triangle",
             Kind::Given => "given inertia",
+            Kind::Cone => "cone",
+            Kind::HollowCone => "hollow cone",
+            Kind::Torus => "torus",
+            Kind::Hemisphere => "hemisphere",
+            Kind::Prism => "prism",
             _ => "box, plate, rod or point",
         }
     }
@@ -250,7 +265,11 @@ fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Par
                 // Thin walls, points and given tensors take only a mass.
                 let thin = match kind {
                     Kind::Shell => true,
-                    Kind::Tube | Kind::Annulus | Kind::HollowSphere => ratio == 1.0,
+                    Kind::Tube
+                    | Kind::Annulus
+                    | Kind::HollowSphere
+                    | Kind::Torus
+                    | Kind::Hemisphere => ratio == 1.0,
                     _ => false,
                 };
                 let amount = if by_density && !thin && !matches!(kind, Kind::Point | Kind::Given) {
@@ -282,6 +301,41 @@ fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Par
                     Kind::Sphere => Part::sphere(s[0], None, at, rotation, amount),
                     Kind::HollowSphere => Part::sphere(s[0], inner, at, rotation, amount),
                     Kind::Shell => Part::sphere(s[0], Some(s[0]), at, rotation, amount),
+                    // A full cone, apex up or down by `positive`.
+                    Kind::Cone => {
+                        let (base, top) = if positive { (s[0], 0.0) } else { (0.0, s[0]) };
+                        Part::cone(base, top, s[2], None, at, rotation, amount)
+                    }
+                    // A frustum and its bore (never a thin shell: the
+                    // reference takes none).
+                    Kind::HollowCone => {
+                        let r = ratio.min(0.99);
+                        let bore = Some((s[0] * r, s[1] * r * skew.abs().min(1.0)));
+                        Part::cone(s[0], s[1], s[2], bore, at, rotation, amount)
+                    }
+                    Kind::Torus => {
+                        Part::torus(s[0] + s[1], s[1], Some(s[1] * ratio), at, rotation, amount)
+                    }
+                    Kind::Hemisphere => Part::hemisphere(s[0], inner, at, rotation, amount),
+                    // An L in its local x–y plane, off its origin.
+                    Kind::Prism => {
+                        let (a, b) = (s[0], s[1]);
+                        let p = |x: f64, y: f64| [on_grid(x + skew, GRID), on_grid(y, GRID)];
+                        Part::prism(
+                            vec![
+                                p(0.0, 0.0),
+                                p(a, 0.0),
+                                p(a, b / 2.0),
+                                p(a / 2.0, b / 2.0),
+                                p(a / 2.0, b),
+                                p(0.0, b),
+                            ],
+                            s[2],
+                            at,
+                            rotation,
+                            amount,
+                        )
+                    }
                     // Vertices on the grid (translations stay exact): two
                     // perpendicular legs, the second 0.2 to 1 times the
                     // first and slid along it by −0.5 to 1.5 of it, so no

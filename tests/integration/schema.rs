@@ -293,6 +293,23 @@ fn samples(shape: &str) -> Vec<&'static str> {
             "mass = 1\ncenter = [0, 0, 0]\ninertia = [[2, 0, 0], [0, 2, 0], [0, 0, 2]]",
             "mass = 1\ncenter = [0, 0, 0]\ninertia = [[2, 0, 0], [0, 2, 0], [0, 0, 2]]\nproducts = \"positive\"\nrotation = { quaternion = [1, 0, 0, 0] }",
         ],
+        "cone" => vec![
+            "mass = 1\nradius = 10\ntop_radius = 0\nlength = 5\ncenter = [0, 0, 0]",
+            "density = \"1 g/cm^3\"\ndiameter = 20\ninner_diameter = 10\ntop_radius = 4\ntop_inner_radius = 2\nlength = 5\ncenter = [0, 0, 0]",
+            "material = \"steel\"\nradius = 0\ntop_radius = 3\nlength = 5\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
+        ],
+        "torus" => vec![
+            "mass = 1\nradius = 10\ntube_radius = 2\ncenter = [0, 0, 0]",
+            "density = \"1 g/cm^3\"\nradius = 10\ntube_radius = 2\ninner_tube_radius = 1\ncenter = [0, 0, 0]",
+        ],
+        "hemisphere" => vec![
+            "mass = 1\nradius = 10\ncenter = [0, 0, 0]",
+            "material = \"water\"\ndiameter = 10\ninner_diameter = 8\ncenter = [0, 0, 0]",
+        ],
+        "prism" => vec![
+            "mass = 1\npolygon = [[0, 0], [10, 0], [0, 10]]\nlength = 2",
+            "density = \"1 g/cm^3\"\npolygon = [[0, 0], [10, 0], [10, 10], [0, 10]]\nlength = 2\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 90 }",
+        ],
         other => panic!("no sample of a {other}: add one here"),
     }
 }
@@ -316,7 +333,10 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "edges" => "[[5, 0, 0], [0, 5, 0], [0, 0, 5]]",
         "thickness" | "diameter" => "1",
         "radius" => "20",
-        "inner_radius" => "1",
+        "inner_radius" | "inner_tube_radius" | "top_inner_radius" => "1",
+        "inner_diameter" => "2",
+        "top_radius" | "tube_radius" => "3",
+        "polygon" => "[[0, 0], [5, 0], [0, 5]]",
         "include" => "\"other.toml\"",
         "material" => "\"steel\"",
         "area" => "2",

@@ -7,13 +7,16 @@
 //!
 //! - [`reference`]: the exact rational reference composer and the scene
 //!   description (`Scene`, `Part`, `to_toml`) every accuracy test uses;
-//! - [`scenes`]: the stress scenes of docs/accuracy.md.
+//! - [`scenes`]: the stress scenes of docs/accuracy.md;
+//! - [`solids`]: the reference's exact forms of the cone, torus,
+//!   hemisphere and prism.
 //!
 //! It does not depend on massprop: the reference must stay independent of
 //! the code it checks.
 
 pub mod reference;
 pub mod scenes;
+pub mod solids;
 
 // The rational types' crates, so that users of `reference::Q` name its
 // traits through here.

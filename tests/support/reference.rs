@@ -281,6 +281,14 @@ pub enum Shape {
     Triangle,
     /// A given mass, centre and inertia tensor.
     Inertia,
+    /// A cone or frustum, solid or hollow (`solids::cone`).
+    Cone,
+    /// A torus, solid or hollow (`solids::torus`).
+    Torus,
+    /// A hemisphere, solid or hollow (`solids::hemisphere`).
+    Hemisphere,
+    /// A polygon extruded along local z (`solids::polygon`).
+    Prism,
 }
 
 impl Shape {
@@ -295,12 +303,22 @@ impl Shape {
             Shape::Sphere => "sphere",
             Shape::Triangle => "triangle",
             Shape::Inertia => "inertia",
+            Shape::Cone => "cone",
+            Shape::Torus => "torus",
+            Shape::Hemisphere => "hemisphere",
+            Shape::Prism => "prism",
         }
     }
 
     fn density_key(self) -> &'static str {
         match self {
-            Shape::Box | Shape::Cylinder | Shape::Sphere => "density",
+            Shape::Box
+            | Shape::Cylinder
+            | Shape::Sphere
+            | Shape::Cone
+            | Shape::Torus
+            | Shape::Hemisphere
+            | Shape::Prism => "density",
             Shape::Plate | Shape::Disk | Shape::Triangle => "areal_density",
             Shape::Rod => "linear_density",
             Shape::Point | Shape::Inertia => panic!("a {} takes only a mass", self.name()),
@@ -310,7 +328,13 @@ impl Shape {
     /// Volume, area, length: the power of length a density is per.
     fn dim(self) -> i32 {
         match self {
-            Shape::Box | Shape::Cylinder | Shape::Sphere => 3,
+            Shape::Box
+            | Shape::Cylinder
+            | Shape::Sphere
+            | Shape::Cone
+            | Shape::Torus
+            | Shape::Hemisphere
+            | Shape::Prism => 3,
             Shape::Plate | Shape::Disk | Shape::Triangle => 2,
             Shape::Rod => 1,
             Shape::Point | Shape::Inertia => 0,
@@ -375,6 +399,14 @@ pub enum Place {
         inertia: [[f64; 3]; 3],
         products: Products,
         center: [f64; 3],
+        rotation: Option<Rotation>,
+    },
+    /// Prism: its `polygon` (local x–y), `length` (local z), `origin` and
+    /// optional `rotation`.
+    Prism {
+        polygon: Vec<[f64; 2]>,
+        length: f64,
+        origin: [f64; 3],
         rotation: Option<Rotation>,
     },
 }
@@ -482,6 +514,70 @@ impl Part {
         Part::centered(Shape::Sphere, size, center, rotation, amount)
     }
 
+    /// A cone or frustum along local z, base `radius` at −length/2, `top`
+    /// at +length/2; `inner` = (base, top) bore radii.
+    pub fn cone(
+        radius: f64,
+        top: f64,
+        length: f64,
+        inner: Option<(f64, f64)>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius, top, length];
+        if let Some((a0, a1)) = inner {
+            size.extend([a0, a1]);
+        }
+        Part::centered(Shape::Cone, size, center, rotation, amount)
+    }
+
+    /// A torus about local z; `inner` the inner tube radius.
+    pub fn torus(
+        radius: f64,
+        tube: f64,
+        inner: Option<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius, tube];
+        size.extend(inner);
+        Part::centered(Shape::Torus, size, center, rotation, amount)
+    }
+
+    /// A hemisphere (dome toward local +z) of the sphere about `center`.
+    pub fn hemisphere(
+        radius: f64,
+        inner: Option<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius];
+        size.extend(inner);
+        Part::centered(Shape::Hemisphere, size, center, rotation, amount)
+    }
+
+    pub fn prism(
+        polygon: Vec<[f64; 2]>,
+        length: f64,
+        origin: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        Part {
+            shape: Shape::Prism,
+            amount,
+            place: Place::Prism {
+                polygon,
+                length,
+                origin,
+                rotation,
+            },
+        }
+    }
+
     pub fn triangle(vertices: [[f64; 3]; 3], amount: Amount) -> Part {
         Part {
             shape: Shape::Triangle,
@@ -545,7 +641,9 @@ impl Part {
     /// given inertias, only).
     pub fn with_rotation(mut self, rotation: Option<Rotation>) -> Part {
         match &mut self.place {
-            Place::Center { rotation: r, .. } | Place::Given { rotation: r, .. } => *r = rotation,
+            Place::Center { rotation: r, .. }
+            | Place::Given { rotation: r, .. }
+            | Place::Prism { rotation: r, .. } => *r = rotation,
             _ => panic!("only parts placed by `center` take a rotation"),
         }
         self
@@ -614,6 +712,17 @@ impl Scene {
                         inertia: *inertia,
                         products: *products,
                         center: point(*center),
+                        rotation: rot(*rotation, p),
+                    },
+                    Place::Prism {
+                        polygon,
+                        length,
+                        origin,
+                        rotation,
+                    } => Place::Prism {
+                        polygon: polygon.clone(),
+                        length: *length,
+                        origin: point(*origin),
                         rotation: rot(*rotation, p),
                     },
                 };
@@ -779,6 +888,17 @@ impl Scene {
                         inertia: inertia.map(|row| row.map(|x| f(&(q(x) / (&m * &l * &l))))),
                         products: *products,
                         center: pos(*center),
+                        rotation: *rotation,
+                    },
+                    Place::Prism {
+                        polygon,
+                        length,
+                        origin,
+                        rotation,
+                    } => Place::Prism {
+                        polygon: polygon.iter().map(|v| v.map(len)).collect(),
+                        length: len(*length),
+                        origin: pos(*origin),
                         rotation: *rotation,
                     },
                 };
@@ -970,8 +1090,13 @@ fn centered_form(shape: Shape, size: &[Q]) -> ([Q; 3], Option<Q>) {
                 (!volume.is_zero()).then_some(volume),
             )
         }
-        Shape::Triangle | Shape::Inertia => {
-            panic!("a {} is not placed by size", shape.name())
+        Shape::Triangle
+        | Shape::Inertia
+        | Shape::Cone
+        | Shape::Torus
+        | Shape::Hemisphere
+        | Shape::Prism => {
+            panic!("a {} has no form here (`solids`)", shape.name())
         }
     }
 }
@@ -1023,12 +1148,26 @@ pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
         } => {
             let r = rotation_matrix(rotation.as_ref());
             let size: Vec<Q> = size.iter().map(|&s| q(s) * &l).collect();
-            let (per_mass, measure) = centered_form(part.shape, &size);
+            let solid = match part.shape {
+                Shape::Cone => Some(super::solids::cone(&size)),
+                Shape::Torus => Some(super::solids::torus(&size)),
+                Shape::Hemisphere => Some(super::solids::hemisphere(&size)),
+                _ => None,
+            };
+            let (per_mass, measure, offset) = match solid {
+                Some((per_mass, offset, measure)) => (per_mass, measure, offset),
+                None => {
+                    let (per_mass, measure) = centered_form(part.shape, &size);
+                    (per_mass, measure, Q::zero())
+                }
+            };
             let mass = by_mass(measure);
+            // The centroid: off `center` along local z by `offset`.
+            let shift = mvec(&r, &[Q::zero(), Q::zero(), offset]);
             ExactPart {
                 second_moment: mscale(&turned(&r, &diag_of(per_mass)), &mass),
                 mass,
-                center: pos(center),
+                center: add(&pos(center), &shift),
             }
         }
         Place::Edges { .. } | Place::FromTo { .. } => {
@@ -1064,6 +1203,30 @@ pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
                 second_moment: mscale(&per_mass, &mass),
                 mass,
                 center,
+            }
+        }
+        Place::Prism {
+            polygon,
+            length,
+            origin,
+            rotation,
+        } => {
+            let r = rotation_matrix(rotation.as_ref());
+            let poly: Vec<[Q; 2]> = polygon.iter().map(|v| v.map(|x| q(x) * &l)).collect();
+            let len = q(*length) * &l;
+            let (area, g, s) = super::solids::polygon(&poly);
+            let mass = by_mass(Some(&area * &len));
+            let mut local = zero_m();
+            local[0][0] = s[0].clone();
+            local[1][1] = s[1].clone();
+            local[0][1] = s[2].clone();
+            local[1][0] = s[2].clone();
+            local[2][2] = &len * &len / int(12);
+            let [gx, gy] = g;
+            ExactPart {
+                second_moment: mscale(&turned(&r, &local), &mass),
+                center: add(&pos(origin), &mvec(&r, &[gx, gy, Q::zero()])),
+                mass,
             }
         }
         Place::Given {
@@ -1609,7 +1772,44 @@ pub fn to_toml(scene: &Scene) -> String {
                             writeln!(s, "inner_radius = {}", number(*r)).unwrap();
                         }
                     }
-                    Shape::Triangle | Shape::Inertia => {
+                    Shape::Cone => {
+                        writeln!(
+                            s,
+                            "radius = {}\ntop_radius = {}\nlength = {}",
+                            number(size[0]),
+                            number(size[1]),
+                            number(size[2])
+                        )
+                        .unwrap();
+                        if let [_, _, _, a0, a1] = size[..] {
+                            writeln!(
+                                s,
+                                "inner_radius = {}\ntop_inner_radius = {}",
+                                number(a0),
+                                number(a1)
+                            )
+                            .unwrap();
+                        }
+                    }
+                    Shape::Torus => {
+                        writeln!(
+                            s,
+                            "radius = {}\ntube_radius = {}",
+                            number(size[0]),
+                            number(size[1])
+                        )
+                        .unwrap();
+                        if let Some(b) = size.get(2) {
+                            writeln!(s, "inner_tube_radius = {}", number(*b)).unwrap();
+                        }
+                    }
+                    Shape::Hemisphere => {
+                        writeln!(s, "radius = {}", number(size[0])).unwrap();
+                        if let Some(r) = size.get(1) {
+                            writeln!(s, "inner_radius = {}", number(*r)).unwrap();
+                        }
+                    }
+                    Shape::Triangle | Shape::Inertia | Shape::Prism => {
                         panic!("a {} is not placed by size", p.shape.name())
                     }
                 }
@@ -1637,6 +1837,23 @@ pub fn to_toml(scene: &Scene) -> String {
                     writeln!(s, "products = \"positive\"").unwrap();
                 }
                 writeln!(s, "center = {}", array(center)).unwrap();
+                write_rotation(&mut s, rotation.as_ref());
+            }
+            Place::Prism {
+                polygon,
+                length,
+                origin,
+                rotation,
+            } => {
+                let v: Vec<String> = polygon.iter().map(|v| array(v)).collect();
+                writeln!(
+                    s,
+                    "polygon = [{}]\nlength = {}\norigin = {}",
+                    v.join(", "),
+                    number(*length),
+                    array(origin)
+                )
+                .unwrap();
                 write_rotation(&mut s, rotation.as_ref());
             }
         }

@@ -1,0 +1,247 @@
+//! The parts whose centroid lies off the point that places them: a cone or
+//! hemisphere (`Place::Axial`: off its `center` along local z) and a prism
+//! (`Place::Prism`: at its polygon's centroid, off its `origin`), and the
+//! prism's own second moment, which has a product in its local axes.
+
+use super::error::{self, Own};
+use super::{Place, Spec};
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
+use crate::shapes::Shape;
+use crate::shapes::prism::{Polygon, polygon};
+
+/// The centroid's offset from the placing point in local axes (double-
+/// double), and that point.
+fn local_offset(shape: Shape, place: &Place) -> ([DD; 3], [f64; 3], &Orientation) {
+    match place {
+        Place::Axial {
+            center,
+            dims,
+            orientation,
+        } => {
+            let d = dims.map(DD::of);
+            let z = shape.axial_offset(&d[..shape.dim_count()]);
+            ([DD::of(0.0), DD::of(0.0), z], *center, orientation)
+        }
+        Place::Prism {
+            origin,
+            polygon: p,
+            orientation,
+            ..
+        } => {
+            let g = polygon(p).centroid;
+            ([g[0], g[1], DD::of(0.0)], *origin, orientation)
+        }
+        _ => unreachable!("only an axial part or a prism has an offset centroid"),
+    }
+}
+
+/// The centroid (file units) in double-double: the placing point plus R
+/// times the local offset, so that far from the origin it keeps the digits
+/// of the offset, as a triangle's centroid does.
+pub(super) fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
+    let (l, at, orientation) = local_offset(shape, place);
+    if let Orientation::Identity = orientation {
+        return std::array::from_fn(|i| DD::of(at[i]) + l[i]);
+    }
+    let r: M3<DD> = orientation.matrix();
+    std::array::from_fn(|i| DD::of(at[i]) + (r[i][0] * l[0] + r[i][1] * l[1] + r[i][2] * l[2]))
+}
+
+/// How far each component of an offset part's centroid may lie from the
+/// exact one (see `error::centroid_error`): the local offset's own error
+/// (a few tens of double-double units of the magnitudes it is formed
+/// from: `Spread` for a prism's polygon, the larger of the radius and
+/// the length for a cone or hemisphere), its turn by R (the rotation's own
+/// error ρ per entry, two products and sums), and the sum with the
+/// placing point.
+pub(super) fn centroid_error(place: &Place, centroid: &[f64; 3]) -> [f64; 3] {
+    let (spread, offset, orientation): ([f64; 3], [f64; 3], &Orientation) = match place {
+        Place::Axial {
+            dims, orientation, ..
+        } => {
+            let big = dims[0].abs().max(dims[4].abs()).max(dims[2].abs());
+            ([0.0, 0.0, 64.0 * big], [0.0, 0.0, big], orientation)
+        }
+        Place::Prism {
+            polygon: p,
+            orientation,
+            ..
+        } => {
+            let poly = polygon(p);
+            let g = poly.centroid.map(|x| x.f64().abs());
+            let s = poly.spread.centroid;
+            (
+                [32.0 * s[0] + 4.0 * g[0], 32.0 * s[1] + 4.0 * g[1], 0.0],
+                [g[0], g[1], 0.0],
+                orientation,
+            )
+        }
+        _ => unreachable!("only an axial part or a prism has an offset centroid"),
+    };
+    let r: M3<f64> = orientation.matrix();
+    let rho = error::turn_error(orientation, &r);
+    let u = error::U_DD;
+    std::array::from_fn(|i| {
+        let turned: f64 = (0..3)
+            .map(|k| r[i][k].abs() * spread[k] + (rho + 3.0) * offset[k])
+            .sum();
+        u * (turned + 4.0 * centroid[i].abs())
+    })
+}
+
+/// The units of the arithmetic `T` by which a prism's local figures
+/// (`Polygon`, double-double) may be off, relative to the magnitudes `ell`
+/// of the diagonal: 32 double-double units of the magnitudes each entry is
+/// formed from.
+fn polygon_units<T: Real>(poly: &Polygon, ell: &[f64; 3]) -> f64 {
+    let s = poly.spread.second;
+    let ratio = |x: f64, y: f64| if y > 0.0 { x / y } else { 0.0 };
+    let worst = ratio(s[0], ell[0])
+        .max(ratio(s[1], ell[1]))
+        .max(ratio(s[2], (ell[0] * ell[1]).sqrt()));
+    32.0 * error::U_DD / error::unit_of::<T>() * worst
+}
+
+/// A prism's ∫ρρᵀ dm about its centroid in the file's axes, for the mass
+/// `m` (negative for a cut-out): in local axes the polygon's per-area
+/// second moments times m in x–y (with the product), m L²/12 along z;
+/// then R C Rᵀ. With its error model when `bound` asks (`errors` gives the
+/// frames' units and the mass's).
+pub(super) fn prism_second_moment<T: Real>(
+    spec: &Spec,
+    m: T,
+    bound: bool,
+    errors: impl Fn() -> (f64, f64),
+) -> (M3<T>, Option<Own>) {
+    let Place::Prism {
+        polygon: p,
+        length,
+        orientation,
+        ..
+    } = &spec.place
+    else {
+        unreachable!("a prism is placed as one")
+    };
+    let poly = polygon(p);
+    let zero = T::of(0.0);
+    let [xx, yy, xy] = poly.second.map(|x| m * T::of_dd(x));
+    let l = T::of(*length);
+    let local: M3<T> = [
+        [xx, xy, zero],
+        [xy, yy, zero],
+        [zero, zero, m * l * l / T::of(12.0)],
+    ];
+    let r: M3<T> = orientation.matrix();
+    let mut j = [[zero; 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut v = zero;
+            for k in 0..3 {
+                for c in 0..3 {
+                    v = v + r[a][k] * local[k][c] * r[b][c];
+                }
+            }
+            j[a][b] = v;
+            j[b][a] = v;
+        }
+    }
+    let own = bound.then(|| {
+        let mu = errors().1;
+        let r = r.map(|row| row.map(T::f64));
+        let rho = error::turn_error(orientation, &r);
+        let ell: [f64; 3] = std::array::from_fn(|k| local[k][k].f64().abs());
+        let per_area = [
+            poly.second[0].f64().abs(),
+            poly.second[1].f64().abs(),
+            (*length * *length / 12.0).abs(),
+        ];
+        // The polygon's units relative to its per-area moments (m scales
+        // both alike); each local entry then rounds once to T and takes a
+        // product with m (3), the axial one m L²/12 (4).
+        let kappa = mu + error::GIVEN + 4.0 + polygon_units::<T>(&poly, &per_area);
+        let v: [f64; 3] =
+            std::array::from_fn(|a| (0..3).map(|k| r[a][k].abs() * ell[k].sqrt()).sum());
+        let total = ell.iter().sum::<f64>() + 2.0 * local[0][1].f64().abs();
+        Own::turned(mu, kappa, v.map(|x| x * x), rho, total)
+    });
+    (j, own)
+}
+
+impl Place {
+    /// A prism's mirror image in its own local x–z plane (local y → −y):
+    /// the same origin, length and turn, its polygon with y negated and
+    /// its vertices reversed (`shapes::prism::mirrored`). A mirror in any
+    /// plane of the file is this image turned by the proper rotation
+    /// S R F (S the file's reflection, R the prism's turn, F = diag(1, −1,
+    /// 1)) about the reflected origin. `None` for any other placement.
+    pub fn prism_mirrored_in_local_xz(&self) -> Option<Place> {
+        match self {
+            Place::Prism {
+                origin,
+                polygon: p,
+                length,
+                orientation,
+            } => Some(Place::Prism {
+                origin: *origin,
+                polygon: crate::shapes::prism::mirrored(p).into(),
+                length: *length,
+                orientation: orientation.clone(),
+            }),
+            _ => None,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::part::{MassSpec, Spec};
+
+    /// The mirror image of an unturned prism: the same mass, its centroid
+    /// and its x–y product with y negated, the rest unchanged.
+    #[test]
+    fn a_mirrored_prism_negates_its_y_figures() {
+        let place = Place::Prism {
+            origin: [1.0, 2.0, 3.0],
+            polygon: vec![
+                [0.0, 0.0],
+                [2.0, 0.0],
+                [2.0, 1.0],
+                [1.0, 1.0],
+                [1.0, 3.0],
+                [0.0, 3.0],
+            ]
+            .into(),
+            length: 0.5,
+            orientation: Orientation::Identity,
+        };
+        let mirror = place.prism_mirrored_in_local_xz().expect("a prism");
+        let spec = |place: Place| Spec {
+            mass: MassSpec::Density(7.0),
+            place,
+            removed: false,
+            placed: Default::default(),
+        };
+        let (a, b) = (spec(place), spec(mirror));
+        let (ma, mb): (f64, f64) = (
+            crate::part::mass_of(Shape::Prism, &a),
+            crate::part::mass_of(Shape::Prism, &b),
+        );
+        assert_eq!(ma, mb);
+        let (ca, cb) = (
+            crate::part::centroid(Shape::Prism, &a.place),
+            crate::part::centroid(Shape::Prism, &b.place),
+        );
+        assert_eq!(ca[0].f64(), cb[0].f64());
+        assert_eq!(ca[1].f64() - 2.0, -(cb[1].f64() - 2.0));
+        let (ja, jb): (M3<f64>, M3<f64>) = (
+            crate::part::own_second_moment(Shape::Prism, &a, ma),
+            crate::part::own_second_moment(Shape::Prism, &b, mb),
+        );
+        for (k, l) in [(0, 0), (1, 1), (2, 2)] {
+            assert!((ja[k][l] - jb[k][l]).abs() <= 1e-15 * ja[k][l]);
+        }
+        assert!(ja[0][1] != 0.0 && (ja[0][1] + jb[0][1]).abs() <= 1e-15 * ja[0][0]);
+    }
+}

@@ -1,0 +1,84 @@
+//! A cone or frustum about local z, solid or hollow, from z = −L/2 (base,
+//! radius R₀, bore a₀) to z = +L/2 (top, radius R₁, bore a₁): dimensions
+//! [R₀, a₀, R₁, a₁, L]. Its centroid lies on the axis, off the origin.
+//!
+//! NOTE: the derivation. With t = z/L + ½ ∈ [0, 1], the outer and inner
+//! radii are linear in t: ρ(t) = R₀(1 − t) + R₁t, α(t) = a₀(1 − t) + a₁t.
+//! The section is the annulus α ≤ r ≤ ρ, of area π(ρ² − α²) = π d s with
+//! d = ρ − α and s = ρ + α, both linear in t and non-negative; and
+//! ∫x² dA over it is π(ρ⁴ − α⁴)/4 = π d s q/4 with q = ρ² + α². In the
+//! Bernstein basis of degree 2 (B₀ = (1 − t)², B₁ = 2t(1 − t), B₂ = t²)
+//! w = d s has the coefficients w₀ = d₀s₀, w₁ = (d₀s₁ + d₁s₀)/2, w₂ = d₁s₁
+//! and q has q₀ = R₀² + a₀², q₁ = R₀R₁ + a₀a₁, q₂ = R₁² + a₁²: each a sum of
+//! non-negative terms, with d₀ = R₀ − a₀ and d₁ = R₁ − a₁ the file's own
+//! differences, so a thin wall is no difference of large numbers. Then
+//! (∫ Bₖ dt = ⅓, ∫ t Bₖ dt = (k + 1)/12, ∫ t² Bₖ dt = 1/30, 1/10, 1/5):
+//!
+//! - V = π L (w₀ + w₁ + w₂)/3;
+//! - t̄ − ½ = (w₂ − w₀)/(4W), W = w₀ + w₁ + w₂: the centroid at
+//!   z̄ = L (w₂ − w₀)/(4W);
+//! - ∫(z − z̄)² dm = m L² Var t, and Var t = E(t²) − t̄², which written out
+//!   over the common denominator 80W² is
+//!   (3w₀² + 12w₀w₁ + 26w₀w₂ + 4w₁² + 12w₁w₂ + 3w₂²)/(80W²): every
+//!   coefficient positive, so no cancellation (a cylinder: 1/12);
+//! - ∫x² dm = m ∫ w q dt/(4 ∫ w dt), and the product of two quadratics in
+//!   Bernstein form integrates to Σᵢⱼ wᵢqⱼ C(2,i)C(2,j)/(5 C(4,i+j)):
+//!   ∫x² dm = m S/(40W), S = 6w₀q₀ + 3(w₀q₁ + w₁q₀) + (w₀q₂ + w₂q₀) +
+//!   4w₁q₁ + 3(w₁q₂ + w₂q₁) + 6w₂q₂ (a cylinder: m R²/4; a full cone:
+//!   3m R²/20).
+
+use crate::numeric::Real;
+
+/// The Bernstein coefficients w (of d s, the section's area over π) and q
+/// (of ρ² + α²) of the dimensions `d` = [R₀, a₀, R₁, a₁, L].
+///
+/// A thin shell (a₀ = R₀ and a₁ = R₁) has w = 0: its moments are the
+/// limit of a wall of even thickness, d₀ = d₁ → 0, whose mass spreads
+/// evenly over the conical surface (per unit area); its w is taken with
+/// d₀ = d₁ = 1, the scale cancelling in every ratio. Its measure is 0.
+fn coefficients<T: Real>(d: &[T], shell: bool) -> ([T; 3], [T; 3]) {
+    let (r0, a0, r1, a1) = (d[0], d[1], d[2], d[3]);
+    let (mut d0, mut d1, s0, s1) = (r0 - a0, r1 - a1, r0 + a0, r1 + a1);
+    let zero = T::of(0.0);
+    if shell && d0 == zero && d1 == zero {
+        (d0, d1) = (T::of(1.0), T::of(1.0));
+    }
+    let w = [d0 * s0, (d0 * s1 + d1 * s0) / T::of(2.0), d1 * s1];
+    let q = [r0 * r0 + a0 * a0, r0 * r1 + a0 * a1, r1 * r1 + a1 * a1];
+    (w, q)
+}
+
+/// The volume π L W/3.
+pub fn measure<T: Real>(d: &[T]) -> T {
+    let (w, _) = coefficients(d, false);
+    T::pi() * d[4] * (w[0] + w[1] + w[2]) / T::of(3.0)
+}
+
+/// The centroid's offset from the origin along local z, L (w₂ − w₀)/(4W).
+pub fn offset<T: Real>(d: &[T]) -> T {
+    let (w, _) = coefficients(d, true);
+    d[4] * (w[2] - w[0]) / (T::of(4.0) * (w[0] + w[1] + w[2]))
+}
+
+/// ∫x² dm, ∫y² dm, ∫z² dm about the centroid, local axes.
+pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    let (w, q) = coefficients(d, true);
+    let total = w[0] + w[1] + w[2];
+    let (three, six) = (T::of(3.0), T::of(6.0));
+    let s = six * w[0] * q[0]
+        + three * (w[0] * q[1] + w[1] * q[0])
+        + (w[0] * q[2] + w[2] * q[0])
+        + T::of(4.0) * w[1] * q[1]
+        + three * (w[1] * q[2] + w[2] * q[1])
+        + six * w[2] * q[2];
+    let across = m * s / (T::of(40.0) * total);
+    let var = (three * w[0] * w[0]
+        + T::of(12.0) * w[0] * w[1]
+        + T::of(26.0) * w[0] * w[2]
+        + T::of(4.0) * w[1] * w[1]
+        + T::of(12.0) * w[1] * w[2]
+        + three * w[2] * w[2])
+        / (T::of(80.0) * total * total);
+    let l = d[4];
+    [across, across, m * l * l * var]
+}

@@ -1,0 +1,63 @@
+//! A hemisphere: the half z ≥ 0 of a sphere of radius R about the origin,
+//! hollow to an inner radius r (at r = R a thin hemispherical shell):
+//! dimensions [R, r]. Its flat face lies in the local x–y plane, its dome
+//! toward +z; its centroid on the z axis, off the origin.
+//!
+//! NOTE: the derivation, with ρ = r/R in [0, 1], P₃ = 1 + ρ + ρ² and
+//! P₅ = 1 + ρ + ρ² + ρ³ + ρ⁴ (R³ − r³ = R³(1 − ρ)P₃, and so on):
+//!
+//! - V = ⅔π(R³ − r³), formed as ⅔π(R − r)(R² + Rr + r²);
+//! - the first moment: in shells of radius s, z = s cos φ over the half
+//!   solid angle, ∫cos φ dΩ = π, so ∫z dV = π ∫ s³ ds = π(R⁴ − r⁴)/4 and
+//!   z̄ = ⅜ (R⁴ − r⁴)/(R³ − r³)
+//!   = ⅜ R (1 + ρ)(1 + ρ²)/P₃ (⅜R solid, R/2 a thin shell);
+//! - about the sphere's centre every ∫x² dm is the whole sphere's,
+//!   k = R² P₅/(5P₃) per unit mass (the half has half the mass and half
+//!   the integral); about the centroid x and y keep it, and
+//!   ∫(z − z̄)² dm = m (k − z̄²). Written over 320P₃²,
+//!   k − z̄² = R² (64P₅P₃ − 45(1 + ρ)²(1 + ρ²)²)/(320P₃²), and the
+//!   numerator expands to 19 + 38ρ + 57ρ² + 12ρ³ + 57ρ⁴ + 38ρ⁵ + 19ρ⁶:
+//!   every coefficient positive, so no cancellation (19/320 solid, 1/12 a
+//!   thin shell).
+
+use crate::numeric::Real;
+
+fn powers<T: Real>(d: &[T]) -> (T, T, T) {
+    let rho = d[1] / d[0];
+    let one = T::of(1.0);
+    (rho, rho * rho, one + rho + rho * rho)
+}
+
+/// The volume ⅔π(R − r)(R² + Rr + r²).
+pub fn measure<T: Real>(d: &[T]) -> T {
+    let (r_out, r_in) = (d[0], d[1]);
+    T::of(2.0) / T::of(3.0)
+        * T::pi()
+        * (r_out - r_in)
+        * (r_out * r_out + r_out * r_in + r_in * r_in)
+}
+
+/// The centroid's offset from the sphere's centre along local z.
+pub fn offset<T: Real>(d: &[T]) -> T {
+    let (rho, rho2, p3) = powers(d);
+    let one = T::of(1.0);
+    T::of(0.375) * d[0] * (one + rho) * (one + rho2) / p3
+}
+
+/// ∫x² dm, ∫y² dm, ∫z² dm about the centroid, local axes.
+pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    let (rho, rho2, p3) = powers(d);
+    let one = T::of(1.0);
+    let rho3 = rho2 * rho;
+    let p5 = one + rho + rho2 + rho3 + rho2 * rho2;
+    let r2 = d[0] * d[0];
+    let across = m * r2 / T::of(5.0) * (p5 / p3);
+    // 19 + 38ρ + 57ρ² + 12ρ³ + 57ρ⁴ + 38ρ⁵ + 19ρ⁶ by Horner's rule: all
+    // terms positive.
+    let n = [19.0, 38.0, 57.0, 12.0, 57.0, 38.0, 19.0]
+        .iter()
+        .rev()
+        .fold(T::of(0.0), |acc, &c| acc * rho + T::of(c));
+    let axial = m * r2 * n / (T::of(320.0) * p3 * p3);
+    [across, across, axial]
+}
