@@ -245,6 +245,17 @@ pub enum Place {
         inertia: Box<[[f64; 3]; 3]>,
         orientation: Orientation,
     },
+    /// A triangle mesh's integrals (`mesh::MeshBody`, in its file's
+    /// coordinates and units), scaled by `scale` (its file's unit in this
+    /// file's length unit, exact in double-double), turned by
+    /// `orientation` and its file's origin put at `origin`, as an include
+    /// is placed.
+    Mesh {
+        origin: [f64; 3],
+        orientation: Orientation,
+        scale: DD,
+        mesh: std::sync::Arc<crate::mesh::MeshBody>,
+    },
 }
 
 fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
@@ -307,6 +318,14 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     .fold(T::of(1.0), |acc, e| acc * norm_of(&e.map(T::of))),
                 (Place::FromTo { from, to }, _) => norm_of(&sub::<T>(*to, *from)),
                 (Place::Given { .. }, _) => T::of(1.0),
+                (Place::Mesh { scale, mesh, .. }, _) => {
+                    let s = T::of_dd(*scale);
+                    let mut m = T::of_dd(mesh.measure);
+                    for _ in 0..mesh.mode.power() {
+                        m = m * s;
+                    }
+                    m
+                }
                 (Place::Vertices(v), _) => {
                     let d = triangle_offsets::<T>(v);
                     let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
@@ -338,7 +357,82 @@ pub fn centroid(place: &Place) -> [DD; 3] {
         Place::FromTo { from, to } => {
             std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
         }
+        Place::Mesh {
+            origin,
+            orientation,
+            scale,
+            mesh,
+        } => {
+            let r: M3<DD> = orientation.matrix();
+            let c = mesh.centroid.map(|x| x * *scale);
+            std::array::from_fn(|i| {
+                DD::of(origin[i]) + r[i][0] * c[0] + r[i][1] * c[1] + r[i][2] * c[2]
+            })
+        }
     }
+}
+
+/// A mesh's own second moment, C = m s² R (J/V) Rᵀ for its integrals'
+/// J about the centroid and measure V (volume or area) in its file's
+/// units and the scale s to this file's, with its error model: J/V's
+/// bound (absolute, from `mesh::Bound`) moved through R into every entry
+/// (at most 3 of it, |R| rows of 1-norm √3 twice), and the mass's.
+fn mesh_second_moment<T: Real>(
+    spec: &Spec,
+    orientation: &Orientation,
+    scale: DD,
+    mesh: &crate::mesh::MeshBody,
+    m: T,
+    bound: bool,
+) -> (M3<T>, Option<Own>) {
+    let v = T::of_dd(mesh.measure);
+    let s = T::of_dd(scale);
+    let k = m * s * s / v;
+    let local: M3<T> = mesh.second.map(|row| row.map(|x| k * T::of_dd(x)));
+    let r: M3<T> = orientation.matrix();
+    let mut j = [[T::of(0.0); 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut x = T::of(0.0);
+            for p in 0..3 {
+                for q in 0..3 {
+                    x = x + r[a][p] * local[p][q] * r[b][q];
+                }
+            }
+            j[a][b] = x;
+            j[b][a] = x;
+        }
+    }
+    let own = bound.then(|| {
+        let unit = error::unit_of::<T>();
+        let rel_v = mesh.bound.measure / mesh.measure.hi.abs();
+        let measured = match spec.mass {
+            MassSpec::Density(_) => rel_v / unit,
+            MassSpec::Given(_) => 0.0,
+        };
+        let mu = error::mass_error(Shape::Mesh, spec)
+            + error::placed_units::<T>(&spec.place, &spec.placed)
+            + measured;
+        let kf = k.f64().abs();
+        let rf = r.map(|row| row.map(T::f64));
+        let rho = error::turn_error(orientation, &rf);
+        let spread: f64 = (0..3).map(|a| local[a][a].f64().abs()).sum::<f64>()
+            + (0..3)
+                .flat_map(|p| (0..3).filter(move |q| *q != p).map(move |q| (p, q)))
+                .map(|(p, q)| local[p][q].f64().abs())
+                .sum::<f64>();
+        // J/V's relative rounding of V (its bound) and J's absolute bound.
+        let mut own = Own::turned(
+            mu,
+            mu + rel_v / unit + error::GIVEN + 4.0,
+            std::array::from_fn(|a| j[a][a].f64().abs()),
+            rho,
+            spread,
+        );
+        own.rot += 3.0 * kf * mesh.bound.second / unit + spread * rel_v / unit;
+        own
+    });
+    (j, own)
 }
 
 fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
@@ -412,6 +506,12 @@ fn own_second_moment_in<T: Real>(
         }
     };
     match &spec.place {
+        Place::Mesh {
+            orientation,
+            scale,
+            mesh,
+            ..
+        } => return mesh_second_moment(spec, orientation, *scale, mesh, m, bound),
         Place::Centered {
             extent,
             orientation,

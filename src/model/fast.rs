@@ -421,6 +421,9 @@ impl<'i> Builder<'i> {
                     "material" => set(&mut p.material, string(node)?),
                     "products" => set(&mut p.products, string(node)?),
                     "area" => set(&mut p.area, quantity(node)?),
+                    "file" => set(&mut p.file, string(node)?),
+                    "mesh_unit" => set(&mut p.mesh_unit, string(node)?),
+                    "mode" => set(&mut p.mode, string(node)?),
                     "remove" => match node {
                         Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
                         _ => None,
@@ -675,7 +678,8 @@ pub(super) mod tests {
              [[part]]\nshape = \"triangle\"\nareal_density = 2\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nremove = false\n\
              [[part]]\nshape = \"inertia\"\nmass = 2\ncenter = [1, 2, 3]\ninertia = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\nproducts = \"positive\"\n\
              [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n\
-             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n",
+             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n\
+             [[part]]\nshape = \"mesh\"\nfile = \"b.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nthickness = 2\ndensity = 3\norigin = [1, 2, 3]\n",
         );
         declines("[[part]]\nshape = \"box\"\nremove = 1\n");
         declines("[[part]]\nshape = \"box\"\nname = true\n");

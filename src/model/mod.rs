@@ -14,6 +14,7 @@ pub mod expect;
 pub mod fast;
 mod include;
 mod material;
+mod mesh;
 mod parts;
 mod place;
 pub mod raw;
@@ -295,6 +296,14 @@ impl Model {
                     has_real_sizes |= inc.model.has_real_sizes;
                 }
                 items.push(item);
+                continue;
+            }
+            if mesh::is_mesh(p.get_ref()) {
+                items.push(Item::Part {
+                    part: ctx.mesh_part(i, &p, files)?,
+                    real: None,
+                });
+                count += 1;
                 continue;
             }
             let (part, real) = ctx.part(i, &p)?;

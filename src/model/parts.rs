@@ -106,7 +106,7 @@ impl Ctx<'_> {
                             extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
                         }
                     }
-                    Dims::None | Dims::Given | Dims::Vertices => {}
+                    Dims::None | Dims::Given | Dims::Vertices | Dims::Mesh => {}
                 }
                 Place::Centered {
                     center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
@@ -401,7 +401,7 @@ impl Ctx<'_> {
 }
 
 /// Every key a part may have, with where it is when present.
-fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 27] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -433,6 +433,9 @@ fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 24] {
         ("area", p.area.as_deref().map(Spanned::span)),
         ("include", p.include.as_deref().map(Spanned::span)),
         ("origin", p.origin.as_deref().map(Spanned::span)),
+        ("file", p.file.as_deref().map(Spanned::span)),
+        ("mesh_unit", p.mesh_unit.as_deref().map(Spanned::span)),
+        ("mode", p.mode.as_deref().map(Spanned::span)),
     ]
 }
 

@@ -187,6 +187,15 @@ pub struct RawPart {
     /// A cut-out: subtracted from the body.
     #[schemars(with = "Option<bool>")]
     pub remove: Option<Box<Spanned<bool>>>,
+    /// A mesh's file (STL or OBJ), relative to the part file.
+    #[schemars(with = "Option<String>")]
+    pub file: Option<Box<Spanned<String>>>,
+    /// The length unit of a mesh file's coordinates.
+    #[schemars(with = "Option<super::schema::LengthUnit>")]
+    pub mesh_unit: Option<Box<Spanned<String>>>,
+    /// A mesh's mode: "solid" (the default) or "shell".
+    #[schemars(with = "Option<super::schema::MeshMode>")]
+    pub mode: Option<Box<Spanned<String>>>,
 }
 
 #[derive(Deserialize, JsonSchema, Debug, Default)]

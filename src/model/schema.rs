@@ -298,6 +298,16 @@ schema_only!(
 );
 
 schema_only!(
+    /// A mesh's `mode`: `mesh::Mode`'s names.
+    MeshMode,
+    "MeshMode",
+    json!({
+        "description": "what a mesh weighs: \"solid\" (the volume it encloses, the default) or \"shell\" (its surface as a thin sheet)",
+        "enum": ["solid", "shell"],
+    })
+);
+
+schema_only!(
     /// `units.mass`: one of `units::MASS_UNITS`.
     MassUnit,
     "MassUnit",

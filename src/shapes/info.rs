@@ -53,6 +53,8 @@ pub enum Dims {
     Given,
     /// None (a point).
     None,
+    /// A mesh `file` (`mesh`): its integrals come from the file.
+    Mesh,
 }
 
 impl Dims {
@@ -64,7 +66,7 @@ impl Dims {
             Dims::Radii { length: false } => 2,
             // A triangle's one "dimension" is its area (see `measure_of`).
             Dims::Length | Dims::Vertices => 1,
-            Dims::Given | Dims::None => 0,
+            Dims::Given | Dims::None | Dims::Mesh => 0,
         }
     }
 
@@ -78,6 +80,7 @@ impl Dims {
             Dims::Vertices => &["vertices"],
             Dims::Given => &["inertia"],
             Dims::None => &[],
+            Dims::Mesh => &["file"],
         }
     }
 }
@@ -174,7 +177,7 @@ impl Solid {
 }
 
 /// The shapes, in the order of `Shape`'s variants.
-pub const SHAPES: [ShapeInfo; 9] = [
+pub const SHAPES: [ShapeInfo; 10] = [
     ShapeInfo {
         shape: Shape::Box,
         name: "box",
@@ -364,5 +367,31 @@ pub const SHAPES: [ShapeInfo; 9] = [
         nonzero_moments: 0,
         degenerate: "a tensor that is not symmetric or not physically valid",
         help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
+    },
+    ShapeInfo {
+        shape: Shape::Mesh,
+        name: "mesh",
+        keys: &[
+            "file",
+            "mesh_unit",
+            "mode",
+            "origin",
+            "rotation",
+            "mass",
+            "density",
+            "areal_density",
+            "thickness",
+            "material",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Mesh,
+        centred: &["origin"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "an open, inconsistently oriented or inside-out surface, or a triangle of zero area",
+        help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     },
 ];

@@ -11,7 +11,9 @@
 //!   an inner radius an annulus;
 //! - sphere: radius `R` about the origin; with an inner radius a hollow
 //!   sphere, and with r = R a thin shell;
-//! - point: a point mass at the origin.
+//! - point: a point mass at the origin;
+//! - mesh: a triangle mesh's own file coordinates (`mesh`), placed by
+//!   `origin` and `rotation` as an include is.
 //!
 //! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; box,
 //! plate and rod are products of such segments. Every shape is symmetric
@@ -48,10 +50,13 @@ pub enum Shape {
     /// A bought or previously computed component: mass, centre and inertia
     /// tensor given (no closed form here; see `model::Place::Given`).
     Inertia,
+    /// A triangle mesh read from a file: its integrals are computed from
+    /// the file (`mesh`, `part::Place::Mesh`), no closed form here.
+    Mesh,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 9] = [
+    pub const ALL: [Shape; 10] = [
         Shape::Box,
         Shape::Plate,
         Shape::Rod,
@@ -61,6 +66,7 @@ impl Shape {
         Shape::Triangle,
         Shape::Point,
         Shape::Inertia,
+        Shape::Mesh,
     ];
 
     /// The shape's description.
@@ -128,7 +134,7 @@ impl Shape {
                     * (r_out - r_in)
                     * (r_out * r_out + r_out * r_in + r_in * r_in)
             }
-            Shape::Point | Shape::Inertia => T::of(1.0),
+            Shape::Point | Shape::Inertia | Shape::Mesh => T::of(1.0),
         }
     }
 
@@ -170,7 +176,7 @@ impl Shape {
                 [q, q, q]
             }
             // A given inertia is composed from `Place::Given` instead.
-            (Shape::Point | Shape::Inertia, &[]) => [zero; 3],
+            (Shape::Point | Shape::Inertia | Shape::Mesh, &[]) => [zero; 3],
             // A triangle is composed from `Place::Vertices` instead.
             (Shape::Triangle, &[_]) => [zero; 3],
             _ => unreachable!("the model passes each shape its dim_count() dimensions"),
