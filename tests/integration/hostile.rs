@@ -530,7 +530,7 @@ fn rotation(l: u32) -> BoxedStrategy<String> {
 /// checks the list against `massprop::shapes::SHAPES`); `"spehre"` is the
 /// unknown one, a misspelling that no shape will ever be named.
 const SHAPES: &[&str] = &[
-    "box", "plate", "rod", "cylinder", "disk", "sphere", "triangle", "point", "inertia",
+    "box", "plate", "rod", "cylinder", "disk", "sphere", "triangle", "point", "inertia", "mesh",
 ];
 
 /// The generator knows every shape: a shape added to massprop without its
@@ -667,7 +667,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
             }
             lines.push(format!("shape = \"{shape}\""));
             let density_key = match shape {
-                "box" | "cylinder" | "sphere" => "density",
+                "box" | "cylinder" | "sphere" | "mesh" => "density",
                 "plate" | "disk" | "triangle" => "areal_density",
                 "rod" => "linear_density",
                 _ => "mass",
@@ -711,6 +711,17 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     lines.push(format!("to = {to}"));
                 }
                 "triangle" => lines.push(format!("vertices = {tensor}")),
+                // A file that is not there (or, beside the hostile files
+                // of tests/integration/meshes.rs, is): its keys and
+                // placement read, its file refused.
+                "mesh" => {
+                    lines.push("file = \"m.stl\"".to_string());
+                    lines.push("mesh_unit = \"mm\"".to_string());
+                    lines.push(format!("origin = {center}"));
+                    if let Some(r) = rot {
+                        lines.push(format!("rotation = {r}"));
+                    }
+                }
                 _ => {
                     lines.push(format!("center = {center}"));
                     if let Some(r) = rot.filter(|_| shape != "point") {
