@@ -30,7 +30,15 @@ struct Mix(u64);
 
 impl Hasher for Mix {
     fn finish(&self) -> u64 {
-        self.0
+        // Murmur3's finaliser: every input bit reaches the high and the low
+        // bits the table reads (coordinates of a smooth surface differ in
+        // their low mantissa bits).
+        let mut x = self.0;
+        x ^= x >> 33;
+        x = x.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        x ^= x >> 33;
+        x = x.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        x ^ (x >> 33)
     }
     fn write(&mut self, bytes: &[u8]) {
         for b in bytes {
@@ -142,7 +150,7 @@ impl Mesh {
     /// triangle) is named.
     fn closed_and_oriented(&self) -> Result<(), MeshError> {
         // (edge key, triangle, forward): sorted, each edge's run together.
-        let mut edges: Vec<(u64, u32, bool)> = Vec::with_capacity(3 * self.faces.len());
+        let mut edges: Vec<Edge> = Vec::with_capacity(3 * self.faces.len());
         for (i, f) in self.faces.iter().enumerate() {
             for k in 0..3 {
                 let (a, b) = (f[k], f[(k + 1) % 3]);
@@ -151,7 +159,7 @@ impl Mesh {
             }
         }
         edges.sort_unstable();
-        let mut worst: Option<(u32, &[(u64, u32, bool)])> = None;
+        let mut worst: Option<(u32, &[Edge])> = None;
         for run in edges.chunk_by(|x, y| x.0 == y.0) {
             let ok = run.len() == 2 && run[0].2 != run[1].2;
             let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
@@ -245,3 +253,7 @@ impl Mesh {
 }
 
 use super::Bound;
+
+/// An edge of a triangle: its key (the two vertices, smaller first), the
+/// triangle, and whether it runs from the smaller to the larger.
+type Edge = (u64, u32, bool);

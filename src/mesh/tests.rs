@@ -90,11 +90,11 @@ fn a_box_has_the_closed_form_of_a_box() {
     assert_eq!(m.centroid.map(|x| x.f64()), [2.0, -0.5, 9.5]);
     let v = a * b * c;
     let expect = [v * a * a / 12.0, v * b * b / 12.0, v * c * c / 12.0];
-    for i in 0..3 {
-        assert!((m.second[i][i].f64() - expect[i]).abs() <= 1e-14 * expect[i]);
+    for (i, e) in expect.iter().enumerate() {
+        assert!((m.second[i][i].f64() - e).abs() <= 1e-14 * e);
         for j in 0..3 {
             if i != j {
-                assert!(m.second[i][j].f64().abs() <= 1e-14 * expect[i]);
+                assert!(m.second[i][j].f64().abs() <= 1e-14 * e);
             }
         }
     }
@@ -159,9 +159,9 @@ fn the_bound_holds_for_an_f64_evaluation_against_double_double() {
         let lo = mesh.sums::<f64>(mode, p);
         let hi = mesh.sums::<DD>(mode, p);
         let err = lo.error();
-        for k in 0..10 {
+        for (k, e) in err.iter().enumerate() {
             let d = (DD::of(lo.value[k]) - hi.value[k]).f64().abs();
-            assert!(d <= err[k], "{mode:?} sum {k}: {d:e} > {:e}", err[k]);
+            assert!(d <= *e, "{mode:?} sum {k}: {d:e} > {e:e}");
         }
         let (vl, gl, jl, bl) = finish(mode, &lo);
         let (vh, gh, jh, _) = finish(mode, &hi);
