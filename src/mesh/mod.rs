@@ -148,6 +148,15 @@ impl MeshBody {
                 MeshError::new(At::Whole, "the mesh encloses no volume")
             });
         }
+        // A closed, oriented surface that crosses itself (an inside-out
+        // part inside or beside an outward one) has a signed "volume":
+        // its second moment can be negative along an axis.
+        if (0..3).any(|k| body.second[k][k].hi < 0.0) {
+            return Err(MeshError::new(
+                At::Whole,
+                "the mesh's second moment is negative along an axis: the surface crosses itself or has a part wound inward",
+            ));
+        }
         if mode == Mode::Shell && body.measure.hi <= 0.0 {
             return Err(MeshError::new(At::Whole, "the mesh has no area"));
         }

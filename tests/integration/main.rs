@@ -18,6 +18,7 @@ mod hostile_round_two;
 mod invariants;
 mod layers;
 mod library;
+mod meshes;
 mod oracle;
 mod package;
 mod physics;
