@@ -621,3 +621,35 @@ fn own_second_moment_in<T: Real>(
     let own = bound.then(|| outer(&j));
     (j, own)
 }
+
+/// A mesh part's mirror image, for mirrors (`array`/`mirror`): its mesh's
+/// data reflected through the plane through the mesh file's origin normal
+/// to local axis `axis` (`mesh::MeshBody::reflected`: the centroid's
+/// coordinate and the products with that axis change sign). The caller
+/// composes the rest of the mirror (a proper turn and the origin's image).
+/// Returns false, changing nothing, for a part that is not a mesh.
+pub fn reflect_mesh(place: &mut Place, axis: usize) -> bool {
+    match place {
+        Place::Mesh { mesh, .. } => {
+            *mesh = std::sync::Arc::new(mesh.reflected(axis));
+            true
+        }
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::numeric::DD;
+
+    /// `mesh` counts roundings in the same unit as the error model (it
+    /// comes before `part` and keeps its own copy of the rule).
+    #[test]
+    fn mesh_and_part_count_roundings_in_one_unit() {
+        assert_eq!(
+            crate::mesh::unit_of::<f64>(),
+            super::error::unit_of::<f64>()
+        );
+        assert_eq!(crate::mesh::unit_of::<DD>(), super::error::unit_of::<DD>());
+    }
+}
