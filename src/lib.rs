@@ -34,7 +34,8 @@
 //! 1. numbers, units, diagnostics: `numeric`, `eigen`, `tolerance`,
 //!    `units`, `diag`, `io`;
 //! 2. shapes and parts: `shapes` (one description per shape and the closed
-//!    forms), `rotation` (the forms of a part's turn), `part` (a part and
+//!    forms), `rotation` (the forms of a part's turn), `mesh` (triangle
+//!    meshes read, checked and integrated), `part` (a part and
 //!    its physics), `materials`;
 //! 3. the model: `model` (the part file read and validated);
 //! 4. composition and principal axes: `compose`, `mass`, `bounds`;
@@ -65,6 +66,8 @@ pub mod io;
 pub mod mass;
 #[doc(hidden)]
 pub mod materials;
+#[doc(hidden)]
+pub mod mesh;
 #[doc(hidden)]
 pub mod model;
 #[doc(hidden)]

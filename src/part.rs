@@ -268,6 +268,17 @@ pub enum Place {
         length: f64,
         orientation: Orientation,
     },
+    /// A triangle mesh's integrals (`mesh::MeshBody`, in its file's
+    /// coordinates and units), scaled by `scale` (its file's unit in this
+    /// file's length unit, exact in double-double), turned by
+    /// `orientation` and its file's origin put at `origin`, as an include
+    /// is placed.
+    Mesh {
+        origin: [f64; 3],
+        orientation: Orientation,
+        scale: DD,
+        mesh: std::sync::Arc<crate::mesh::MeshBody>,
+    },
 }
 
 fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
@@ -343,6 +354,14 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     let area = crate::shapes::prism::polygon(polygon).area;
                     T::of_dd(area) * T::of(*length)
                 }
+                (Place::Mesh { scale, mesh, .. }, _) => {
+                    let s = T::of_dd(*scale);
+                    let mut m = T::of_dd(mesh.measure);
+                    for _ in 0..mesh.mode.power() {
+                        m = m * s;
+                    }
+                    m
+                }
                 (Place::Vertices(v), _) => {
                     let d = triangle_offsets::<T>(v);
                     let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
@@ -375,7 +394,82 @@ pub fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
         Place::FromTo { from, to } => {
             std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
         }
+        Place::Mesh {
+            origin,
+            orientation,
+            scale,
+            mesh,
+        } => {
+            let r: M3<DD> = orientation.matrix();
+            let c = mesh.centroid.map(|x| x * *scale);
+            std::array::from_fn(|i| {
+                DD::of(origin[i]) + r[i][0] * c[0] + r[i][1] * c[1] + r[i][2] * c[2]
+            })
+        }
     }
+}
+
+/// A mesh's own second moment, C = m s² R (J/V) Rᵀ for its integrals'
+/// J about the centroid and measure V (volume or area) in its file's
+/// units and the scale s to this file's, with its error model: J/V's
+/// bound (absolute, from `mesh::Bound`) moved through R into every entry
+/// (at most 3 of it, |R| rows of 1-norm √3 twice), and the mass's.
+fn mesh_second_moment<T: Real>(
+    spec: &Spec,
+    orientation: &Orientation,
+    scale: DD,
+    mesh: &crate::mesh::MeshBody,
+    m: T,
+    bound: bool,
+) -> (M3<T>, Option<Own>) {
+    let v = T::of_dd(mesh.measure);
+    let s = T::of_dd(scale);
+    let k = m * s * s / v;
+    let local: M3<T> = mesh.second.map(|row| row.map(|x| k * T::of_dd(x)));
+    let r: M3<T> = orientation.matrix();
+    let mut j = [[T::of(0.0); 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut x = T::of(0.0);
+            for p in 0..3 {
+                for q in 0..3 {
+                    x = x + r[a][p] * local[p][q] * r[b][q];
+                }
+            }
+            j[a][b] = x;
+            j[b][a] = x;
+        }
+    }
+    let own = bound.then(|| {
+        let unit = error::unit_of::<T>();
+        let rel_v = mesh.bound.measure / mesh.measure.hi.abs();
+        let measured = match spec.mass {
+            MassSpec::Density(_) => rel_v / unit,
+            MassSpec::Given(_) => 0.0,
+        };
+        let mu = error::mass_error(Shape::Mesh, spec)
+            + error::placed_units::<T>(&spec.place, &spec.placed)
+            + measured;
+        let kf = k.f64().abs();
+        let rf = r.map(|row| row.map(T::f64));
+        let rho = error::turn_error(orientation, &rf);
+        let spread: f64 = (0..3).map(|a| local[a][a].f64().abs()).sum::<f64>()
+            + (0..3)
+                .flat_map(|p| (0..3).filter(move |q| *q != p).map(move |q| (p, q)))
+                .map(|(p, q)| local[p][q].f64().abs())
+                .sum::<f64>();
+        // J/V's relative rounding of V (its bound) and J's absolute bound.
+        let mut own = Own::turned(
+            mu,
+            mu + rel_v / unit + error::GIVEN + 4.0,
+            std::array::from_fn(|a| j[a][a].f64().abs()),
+            rho,
+            spread,
+        );
+        own.rot += 3.0 * kf * mesh.bound.second / unit + spread * rel_v / unit;
+        own
+    });
+    (j, own)
 }
 
 fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
@@ -448,6 +542,15 @@ fn own_second_moment_in<T: Real>(
             }
         }
     };
+    if let Place::Mesh {
+        orientation,
+        scale,
+        mesh,
+        ..
+    } = &spec.place
+    {
+        return mesh_second_moment(spec, orientation, *scale, mesh, m, bound);
+    }
     let centred = match &spec.place {
         Place::Centered {
             extent,
@@ -520,6 +623,7 @@ fn own_second_moment_in<T: Real>(
             let (j, own) = offset::prism_second_moment(spec, m, bound, errors);
             return (j, own);
         }
+        Place::Mesh { .. } => unreachable!("a mesh returned above"),
         Place::Given {
             inertia,
             orientation,
@@ -572,4 +676,36 @@ fn own_second_moment_in<T: Real>(
     }
     let own = bound.then(|| outer(&j));
     (j, own)
+}
+
+/// A mesh part's mirror image, for mirrors (`array`/`mirror`): its mesh's
+/// data reflected through the plane through the mesh file's origin normal
+/// to local axis `axis` (`mesh::MeshBody::reflected`: the centroid's
+/// coordinate and the products with that axis change sign). The caller
+/// composes the rest of the mirror (a proper turn and the origin's image).
+/// Returns false, changing nothing, for a part that is not a mesh.
+pub fn reflect_mesh(place: &mut Place, axis: usize) -> bool {
+    match place {
+        Place::Mesh { mesh, .. } => {
+            *mesh = std::sync::Arc::new(mesh.reflected(axis));
+            true
+        }
+        _ => false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::numeric::DD;
+
+    /// `mesh` counts roundings in the same unit as the error model (it
+    /// comes before `part` and keeps its own copy of the rule).
+    #[test]
+    fn mesh_and_part_count_roundings_in_one_unit() {
+        assert_eq!(
+            crate::mesh::unit_of::<f64>(),
+            super::error::unit_of::<f64>()
+        );
+        assert_eq!(crate::mesh::unit_of::<DD>(), super::error::unit_of::<DD>());
+    }
 }

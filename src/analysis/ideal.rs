@@ -77,7 +77,11 @@ fn direction(part: &Part) -> [DD; 3] {
         }
         // Each difference of two f64 is exact in double-double.
         Place::FromTo { from, to } => std::array::from_fn(|i| DD::of(to[i]) - DD::of(from[i])),
-        Place::Given { .. } | Place::Vertices(_) | Place::Axial { .. } | Place::Prism { .. } => {
+        Place::Given { .. }
+        | Place::Vertices(_)
+        | Place::Axial { .. }
+        | Place::Prism { .. }
+        | Place::Mesh { .. } => {
             unreachable!("only plates and rods give a real size")
         }
     }

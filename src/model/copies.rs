@@ -335,8 +335,12 @@ impl Ctx<'_> {
     /// or expression (`"32"`, `"spokes / 2"`, `"360 / n"`), read as every
     /// quantity is (`Ctx::file_quantity`).
     fn dimensionless(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
+        let finite = |x: f64| x.is_finite();
+        if matches!(q.get_ref(), Quantity::Number(x) if !finite(*x)) {
+            return Err(self.err(q.span(), format!("`{key}` must be finite")));
+        }
         let x = self.file_quantity(q, key, Dim::DIMENSIONLESS)?;
-        if !x.is_finite() {
+        if !finite(x) {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
         Ok(x)
@@ -468,7 +472,7 @@ fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
         Place::Centered { center, .. }
         | Place::Given { center, .. }
         | Place::Axial { center, .. } => vec![*center],
-        Place::Prism { origin, .. } => vec![*origin],
+        Place::Prism { origin, .. } | Place::Mesh { origin, .. } => vec![*origin],
         Place::Edges { corner, edges } => std::iter::once(*corner).chain(*edges).collect(),
         Place::FromTo { from, to } => vec![*from, *to],
         Place::Vertices(v) => v.to_vec(),

@@ -430,6 +430,9 @@ impl<'i> Builder<'i> {
                     "material" => set(&mut p.material, string(node)?),
                     "products" => set(&mut p.products, string(node)?),
                     "area" => set(&mut p.area, quantity(node)?),
+                    "file" => set(&mut p.file, string(node)?),
+                    "mesh_unit" => set(&mut p.mesh_unit, string(node)?),
+                    "mode" => set(&mut p.mode, string(node)?),
                     "remove" => match node {
                         Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
                         _ => None,
@@ -687,7 +690,8 @@ pub(super) mod tests {
              [[part]]\nshape = \"cone\"\ndensity = 2\ndiameter = 2\ninner_diameter = \"1 mm\"\ntop_radius = 0.5\ntop_inner_radius = 0.25\nlength = 3\ncenter = [0, 0, 0]\n\
              [[part]]\nshape = \"torus\"\nmass = 2\nradius = 2\ntube_radius = 1\ninner_tube_radius = 0.5\ncenter = [0, 0, 0]\n\
              [[part]]\nshape = \"prism\"\nmass = 2\npolygon = [[0, 0], [1, 0], [\"1 mm\", 1]]\nlength = 3\norigin = [1, 2, 3]\n\
-             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n",
+             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n\
+             [[part]]\nshape = \"mesh\"\nfile = \"b.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nthickness = 2\ndensity = 3\norigin = [1, 2, 3]\n",
         );
         declines("[[part]]\nshape = \"box\"\nremove = 1\n");
         declines("[[part]]\nshape = \"box\"\nname = true\n");

@@ -50,8 +50,12 @@ pub(super) struct Files {
     /// By file and the parameters passed to it (`params`): an include
     /// with other parameters is another model.
     cache: HashMap<(PathBuf, String), std::sync::Arc<Model>>,
-    /// Every file included, at any depth, as often as it is.
-    read: Vec<PathBuf>,
+    /// Every file included
+    /// (and every mesh file read), at any depth, as often as it is.
+    pub(super) read: Vec<PathBuf>,
+    /// Each mesh file read once, by its canonical path and mode, however
+    /// many parts use it (`model::mesh`).
+    pub(super) meshes: HashMap<(PathBuf, crate::mesh::Mode), std::sync::Arc<crate::mesh::MeshBody>>,
     /// The directory trees includes must stay in (canonical): the
     /// top-level file's, the working directory, and any `--include-root`.
     pub(super) roots: Vec<PathBuf>,
@@ -169,7 +173,11 @@ impl Frame {
     pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
         let reach = reach(&s.place) * self.length;
         // A density per volume, area or length scales with that power.
-        let k = shape.info().density.map_or(0, |d| d.length_power);
+        let k = match &s.place {
+            // A mesh's density is per volume or per area by its mode.
+            Place::Mesh { mesh, .. } => mesh.mode.power(),
+            _ => shape.info().density.map_or(0, |d| d.length_power),
+        };
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
             MassSpec::Density(d) => *d = *d * self.mass / self.length.powi(k),
@@ -222,6 +230,16 @@ impl Frame {
             } => {
                 *center = self.point(*center);
                 **inertia = inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length));
+                self.turn(orientation);
+            }
+            Place::Mesh {
+                origin,
+                orientation,
+                scale,
+                ..
+            } => {
+                *origin = self.point(*origin);
+                *scale = scale.mul_f64(self.length);
                 self.turn(orientation);
             }
         }
@@ -308,6 +326,7 @@ fn reach(place: &Place) -> f64 {
                     .map(|v| v[0].abs() + v[1].abs())
                     .fold(0.0, f64::max)
         }
+        Place::Mesh { origin, .. } => norm(origin),
         Place::Edges { corner, .. } => norm(corner),
         Place::FromTo { from, to } => norm(from).max(norm(to)),
         Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
@@ -317,18 +336,63 @@ fn reach(place: &Place) -> f64 {
 /// Where an include points, checked.
 pub(super) struct Target {
     /// Canonical: symlinks followed.
-    canonical: PathBuf,
+    pub(super) canonical: PathBuf,
     /// As the including file names it, relative to the working directory.
-    shown: PathBuf,
-    shown_name: String,
+    pub(super) shown: PathBuf,
+    pub(super) shown_name: String,
+}
+
+/// What a path a part names is: a part file to include, or a mesh file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    Include,
+    Mesh,
+}
+
+impl Kind {
+    /// "the included `x`" or "the mesh file `x`".
+    fn the(self, shown: &str) -> String {
+        match self {
+            Kind::Include => format!("the included `{shown}`"),
+            Kind::Mesh => format!("the mesh file `{shown}`"),
+        }
+    }
+
+    fn plural(self) -> &'static str {
+        match self {
+            Kind::Include => "includes",
+            Kind::Mesh => "mesh files",
+        }
+    }
+
+    fn key(self) -> &'static str {
+        match self {
+            Kind::Include => "include",
+            Kind::Mesh => "file",
+        }
+    }
 }
 
 impl Ctx<'_> {
-    /// Resolve `include = ".."` and apply every rule on where it may point
-    /// before anything of it is read: inside the allowed directory trees, a
-    /// regular file, within the size limit. The one place these rules live:
-    /// counting and expanding both come through here.
+    /// Resolve `include = ".."` (see `target_of`).
     fn target(&self, inc: &Spanned<String>, files: &Files) -> Result<Target, Diagnostic> {
+        self.target_of(inc, files, Kind::Include)
+    }
+
+    /// Resolve a path a part names (`include = ".."`, a mesh's `file`)
+    /// and apply every rule on where it may point before anything of it is
+    /// read: relative to the part file (or `--base-dir` for a piped one),
+    /// inside the allowed directory trees, a regular file, within the size
+    /// limit, of the kind's extension. The one place these rules live:
+    /// counting and expanding includes, and reading meshes, all come
+    /// through here.
+    pub(super) fn target_of(
+        &self,
+        inc: &Spanned<String>,
+        files: &Files,
+        kind: Kind,
+    ) -> Result<Target, Diagnostic> {
+        let key = kind.key();
         let base = match (self.source.piped, &files.base_dir) {
             (false, _) => self.source.path().parent().unwrap_or(Path::new("")),
             (true, Some(dir)) => dir.as_path(),
@@ -342,18 +406,26 @@ impl Ctx<'_> {
                     "a pipe"
                 };
                 return Err(self
-                    .err(inc.span(), format!("`include` in a file read from {what}: its path has nothing to be relative to"))
-                    .help("give `--base-dir DIR`, the directory its includes are relative to, or the file by its path"));
+                    .err(inc.span(), format!("`{key}` in a file read from {what}: its path has nothing to be relative to"))
+                    .help(format!("give `--base-dir DIR`, the directory its {} are relative to, or the file by its path", kind.plural())));
             }
         };
         let shown = base.join(inc.get_ref());
         let shown_name = crate::diag::display_path(&shown);
+        let the = kind.the(&shown_name);
         let unreadable = |e: std::io::Error| {
+            let what = match kind {
+                Kind::Include => "the included file",
+                Kind::Mesh => "the mesh file",
+            };
             self.err(
                 inc.span(),
-                format!("cannot read the included file `{shown_name}`: {e}"),
+                format!("cannot read {what} `{shown_name}`: {e}"),
             )
-            .help("the path is relative to the including file")
+            .help(match kind {
+                Kind::Include => "the path is relative to the including file",
+                Kind::Mesh => "the path is relative to the part file",
+            })
         };
         let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
         // Confined: a part file from a pull request must not read, and
@@ -363,38 +435,48 @@ impl Ctx<'_> {
                 .err(
                     inc.span(),
                     format!(
-                        "the included `{shown_name}` is outside the directory of the part file and the working directory"
+                        "{the} is outside the directory of the part file and the working directory"
                     ),
                 )
-                .help("includes stay inside those directory trees (after following symlinks); `--include-root DIR` allows another"));
+                .help(format!("{} stay inside those directory trees (after following symlinks); `--include-root DIR` allows another", kind.plural())));
         }
         let meta = std::fs::metadata(&canonical).map_err(unreadable)?;
         if meta.len() > crate::io::MAX_FILE_BYTES {
             return Err(self.err(
                 inc.span(),
                 format!(
-                    "the included `{shown_name}` is larger than the limit of {} MiB",
+                    "{the} is larger than the limit of {} MiB",
                     crate::io::MAX_FILE_BYTES >> 20
                 ),
             ));
         }
         if !meta.is_file() {
             return Err(self
-                .err(
-                    inc.span(),
-                    format!("the included `{shown_name}` is not a regular file"),
-                )
-                .help("`include` names a part file"));
+                .err(inc.span(), format!("{the} is not a regular file"))
+                .help(match kind {
+                    Kind::Include => "`include` names a part file",
+                    Kind::Mesh => "`file` names a mesh file",
+                }));
         }
-        // Only part files: `.env` or `.git/config` (where a CI checkout
-        // keeps its token) would be parsed as TOML and quoted in the error.
-        if !crate::io::is_toml(&canonical) {
-            return Err(self
-                .err(
-                    inc.span(),
-                    format!("the included `{shown_name}` is not a part file (`*.toml`)"),
-                )
-                .help("`include` names a part file, after following symlinks"));
+        match kind {
+            // Only part files: `.env` or `.git/config` (where a CI checkout
+            // keeps its token) would be parsed as TOML and quoted in the error.
+            Kind::Include if !crate::io::is_toml(&canonical) => {
+                return Err(self
+                    .err(inc.span(), format!("{the} is not a part file (`*.toml`)"))
+                    .help("`include` names a part file, after following symlinks"));
+            }
+            // Only mesh files, by their extension (after following
+            // symlinks): nothing else is read and quoted as a mesh.
+            Kind::Mesh if crate::mesh::Format::of(&canonical).is_none() => {
+                return Err(self
+                    .err(
+                        inc.span(),
+                        format!("{the} is not a mesh file (`*.stl` or `*.obj`)"),
+                    )
+                    .help("`file` names an STL or Wavefront OBJ file, after following symlinks"));
+            }
+            _ => {}
         }
         Ok(Target {
             canonical,

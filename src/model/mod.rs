@@ -16,6 +16,7 @@ pub mod expect;
 pub mod fast;
 mod include;
 mod material;
+mod mesh;
 mod params;
 mod parts;
 mod place;
@@ -320,7 +321,11 @@ impl Model {
                 items.push(item);
                 continue;
             }
-            let (part, real) = ctx.part(i, &p)?;
+            let (part, real) = if mesh::is_mesh(p.get_ref()) {
+                (ctx.mesh_part(i, &p, files)?, None)
+            } else {
+                ctx.part(i, &p)?
+            };
             has_real_sizes |= real.is_some();
             count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
             items.push(Item::Part { part, real, copies });

@@ -134,7 +134,7 @@ impl Ctx<'_> {
                         };
                         return self.spec_of(mass, p, place);
                     }
-                    Dims::None | Dims::Given | Dims::Vertices => {}
+                    Dims::None | Dims::Given | Dims::Vertices | Dims::Mesh => {}
                 }
                 let center = self.file_vec3(req(&p.center), "center", Dim::LENGTH)?;
                 if shape == Shape::Hemisphere {
@@ -449,7 +449,7 @@ impl Ctx<'_> {
 }
 
 /// Every key a part may have, with where it is when present.
-fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 31] {
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 34] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -497,6 +497,9 @@ fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 31] {
             p.inner_tube_radius.as_deref().map(Spanned::span),
         ),
         ("polygon", p.polygon.as_deref().map(Spanned::span)),
+        ("file", p.file.as_deref().map(Spanned::span)),
+        ("mesh_unit", p.mesh_unit.as_deref().map(Spanned::span)),
+        ("mode", p.mode.as_deref().map(Spanned::span)),
     ]
 }
 

@@ -85,6 +85,8 @@ impl Ctx<'_> {
                 dims
             }
             Dims::None => vec![],
+            // Read with its file (`model::mesh`), never here.
+            Dims::Mesh => return Err(missing("file")),
             Dims::Given => {
                 p.inertia.as_deref().ok_or_else(|| missing("inertia"))?;
                 vec![]

@@ -234,6 +234,15 @@ pub struct RawPart {
     /// The part and its mirror image in a plane: `NAME[0]` and `NAME[1]`.
     #[schemars(with = "Option<RawMirror>")]
     pub mirror: Option<Box<Spanned<RawMirror>>>,
+    /// A mesh's file (STL or OBJ), relative to the part file.
+    #[schemars(with = "Option<String>")]
+    pub file: Option<Box<Spanned<String>>>,
+    /// The length unit of a mesh file's coordinates.
+    #[schemars(with = "Option<super::schema::LengthUnit>")]
+    pub mesh_unit: Option<Box<Spanned<String>>>,
+    /// A mesh's mode: "solid" (the default) or "shell".
+    #[schemars(with = "Option<super::schema::MeshMode>")]
+    pub mode: Option<Box<Spanned<String>>>,
 }
 
 /// `array = { count = N, step = [dx, dy, dz] }`, or `{ count = N, axis =

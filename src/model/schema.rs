@@ -135,6 +135,9 @@ fn part_rules() -> Vec<Value> {
 /// skips keywords it does not know, so those rules did not reach the
 /// editor.
 fn rules_of(s: &crate::shapes::ShapeInfo) -> Vec<Value> {
+    if s.dims == Dims::Mesh {
+        return mesh_rules();
+    }
     let mut rules = vec![mass_rule(s), placement_rule(s)];
     // A material needs exactly one of the keys that turn its density into
     // the shape's (a thickness, a section); those that do nothing else
@@ -156,6 +159,33 @@ fn rules_of(s: &crate::shapes::ShapeInfo) -> Vec<Value> {
         }
     }
     rules
+}
+
+/// A mesh's (`model::mesh`): `file` and `mesh_unit`; a solid weighed by
+/// exactly one of `mass`, `density` and `material`; a shell
+/// (`mode = "shell"`) by `mass`, `areal_density`, or `thickness` with
+/// exactly one of `density` and `material`.
+fn mesh_rules() -> Vec<Value> {
+    let only = |given: &[&str]| {
+        let others: Vec<&str> = ["mass", "density", "areal_density", "material", "thickness"]
+            .into_iter()
+            .filter(|k| !given.contains(k))
+            .collect();
+        json!({ "required": given, "not": { "anyOf": each_required(&others) } })
+    };
+    vec![
+        json!({ "required": ["file", "mesh_unit"] }),
+        json!({
+            "if": { "properties": { "mode": { "const": "shell" } }, "required": ["mode"] },
+            "then": { "oneOf": [
+                only(&["mass"]),
+                only(&["areal_density"]),
+                only(&["thickness", "density"]),
+                only(&["thickness", "material"]),
+            ] },
+            "else": { "oneOf": [only(&["mass"]), only(&["density"]), only(&["material"])] },
+        }),
+    ]
 }
 
 /// Exactly one of `mass`, the shape's density and `material`.
@@ -354,6 +384,16 @@ schema_only!(
     LengthUnit,
     "LengthUnit",
     json!({ "description": "the unit of plain lengths", "enum": units::LENGTH_UNITS })
+);
+
+schema_only!(
+    /// A mesh's `mode`: `mesh::Mode`'s names.
+    MeshMode,
+    "MeshMode",
+    json!({
+        "description": "what a mesh weighs: \"solid\" (the volume it encloses, the default) or \"shell\" (its surface as a thin sheet)",
+        "enum": ["solid", "shell"],
+    })
 );
 
 schema_only!(

@@ -72,8 +72,9 @@ impl Streamed {
     ) {
         let index = self.count;
         self.count += 1;
-        if p.get_ref().include.is_some() {
-            // Not here: `includes` sends such files to be read whole.
+        if p.get_ref().include.is_some() || super::mesh::is_mesh(p.get_ref()) {
+            // Not here: `includes` sends such files to be read whole, and
+            // a mesh is read with the files it names (`model::mesh`).
             self.off = true;
         }
         if self.off || self.error.is_some() || self.count > MAX_PARTS {

@@ -167,6 +167,9 @@ pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
         Place::Prism { polygon, .. } => {
             3.0 + 32.0 * crate::shapes::prism::polygon(polygon).spread.area
         }
+        // s^k (k products, and s's own rounding to T k times); the
+        // measure's own bound, relative, is added by `part` in T's units.
+        Place::Mesh { mesh, .. } => 2.0 * f64::from(mesh.mode.power()) + 1.0,
     }
 }
 
@@ -207,13 +210,21 @@ pub fn centroid_error(spec: &Spec, centroid: &[f64; 3]) -> [f64; 3] {
         Place::Edges { edges, .. } => edges.iter().any(|e| e[j] != 0.0),
         Place::Vertices(v) => !(v[0][j] == v[1][j] && v[1][j] == v[2][j]),
         Place::Axial { .. } | Place::Prism { .. } => unreachable!("returned above"),
+        Place::Mesh { .. } => true,
+    };
+    // A mesh's centroid: its integrals' bound, scaled and turned (a row of
+    // R has 1-norm at most √3 < 2).
+    let mesh = match place {
+        Place::Mesh { scale, mesh, .. } => 2.0 * mesh.bound.centroid * scale.hi.abs(),
+        _ => 0.0,
     };
     std::array::from_fn(|j| {
-        at + if inexact(j) {
-            centroid[j].abs() * 3.155_443_620_884_047e-30
-        } else {
-            0.0
-        }
+        at + mesh
+            + if inexact(j) {
+                centroid[j].abs() * 3.155_443_620_884_047e-30
+            } else {
+                0.0
+            }
     })
 }
 

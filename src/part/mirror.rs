@@ -46,6 +46,9 @@ pub fn symmetric_axis(shape: Shape) -> Option<usize> {
         // Extruded from −length/2 to +length/2: its own image in local z,
         // so its polygon need not be reflected.
         Shape::Prism => Some(2),
+        // Symmetric in no local plane in general: `complete` reflects its
+        // data (`part::reflect_mesh`).
+        Shape::Mesh => None,
     }
 }
 
@@ -77,6 +80,12 @@ pub fn complete(shape: Shape, place: &mut Place) {
                     inertia[j][k] = -inertia[j][k];
                 }
             }
+        }
+        Place::Mesh { orientation, .. } => {
+            flip(k, orientation);
+            // The mesh's own data reflected in the same local plane: the
+            // image is S R F (F p) = S R p, for every point p of the mesh.
+            super::reflect_mesh(place, k);
         }
         Place::Edges { .. } | Place::FromTo { .. } | Place::Vertices(_) => {}
     }

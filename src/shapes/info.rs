@@ -61,6 +61,8 @@ pub enum Dims {
     Torus,
     /// A prism: `polygon` and `length`; the dimensions [area, length].
     Polygon,
+    /// A mesh `file` (`mesh`): its integrals come from the file.
+    Mesh,
 }
 
 impl Dims {
@@ -72,7 +74,7 @@ impl Dims {
             Dims::Radii { length: false } => 2,
             // A triangle's one "dimension" is its area (see `measure_of`).
             Dims::Length | Dims::Vertices => 1,
-            Dims::Given | Dims::None => 0,
+            Dims::Given | Dims::None | Dims::Mesh => 0,
             Dims::Cone => 5,
             Dims::Torus => 3,
             Dims::Polygon => 2,
@@ -98,6 +100,7 @@ impl Dims {
             ],
             Dims::Torus => &["radius", "tube_radius", "inner_tube_radius"],
             Dims::Polygon => &["polygon", "length"],
+            Dims::Mesh => &["file"],
         }
     }
 }
@@ -194,7 +197,7 @@ impl Solid {
 }
 
 /// The shapes, in the order of `Shape`'s variants.
-pub const SHAPES: [ShapeInfo; 13] = [
+pub const SHAPES: [ShapeInfo; 14] = [
     ShapeInfo {
         shape: Shape::Box,
         name: "box",
@@ -483,5 +486,31 @@ pub const SHAPES: [ShapeInfo; 13] = [
         nonzero_moments: 0,
         degenerate: "fewer than 3 vertices, a repeated vertex, crossing edges or no area",
         help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
+    },
+    ShapeInfo {
+        shape: Shape::Mesh,
+        name: "mesh",
+        keys: &[
+            "file",
+            "mesh_unit",
+            "mode",
+            "origin",
+            "rotation",
+            "mass",
+            "density",
+            "areal_density",
+            "thickness",
+            "material",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Mesh,
+        centred: &["origin"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 0,
+        degenerate: "an open, inconsistently oriented or inside-out surface, or a triangle of zero area",
+        help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     },
 ];

@@ -20,6 +20,8 @@
 //!   origin; its centroid off the origin on z;
 //! - prism (`prism`): a polygon in the local x–y plane extruded from
 //!   z = −L/2 to +L/2 (its second moment has an x–y product).
+//! - mesh: a triangle mesh's own file coordinates (`mesh`), placed by
+//!   `origin` and `rotation` as an include is.
 //!
 //! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; box,
 //! plate and rod are products of such segments. Every shape but the prism
@@ -71,10 +73,13 @@ pub enum Shape {
     Hemisphere,
     /// A polygon extruded along local z (`shapes::prism`).
     Prism,
+    /// A triangle mesh read from a file: its integrals are computed from
+    /// the file (`mesh`, `part::Place::Mesh`), no closed form here.
+    Mesh,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 13] = [
+    pub const ALL: [Shape; 14] = [
         Shape::Box,
         Shape::Plate,
         Shape::Rod,
@@ -88,6 +93,7 @@ impl Shape {
         Shape::Torus,
         Shape::Hemisphere,
         Shape::Prism,
+        Shape::Mesh,
     ];
 
     /// The shape's description.
@@ -155,7 +161,7 @@ impl Shape {
                     * (r_out - r_in)
                     * (r_out * r_out + r_out * r_in + r_in * r_in)
             }
-            Shape::Point | Shape::Inertia => T::of(1.0),
+            Shape::Point | Shape::Inertia | Shape::Mesh => T::of(1.0),
             Shape::Cone => cone::measure(d),
             Shape::Torus => torus::measure(d),
             Shape::Hemisphere => hemisphere::measure(d),
@@ -206,7 +212,7 @@ impl Shape {
                 [q, q, q]
             }
             // A given inertia is composed from `Place::Given` instead.
-            (Shape::Point | Shape::Inertia, &[]) => [zero; 3],
+            (Shape::Point | Shape::Inertia | Shape::Mesh, &[]) => [zero; 3],
             // A triangle is composed from `Place::Vertices` instead.
             (Shape::Triangle, &[_]) => [zero; 3],
             (Shape::Cone, &[_, _, _, _, _]) => cone::second_moments(m, d),

@@ -543,6 +543,7 @@ const SHAPES: &[&str] = &[
     "torus",
     "hemisphere",
     "prism",
+    "mesh",
 ];
 
 /// The generator knows every shape: a shape added to massprop without its
@@ -685,9 +686,8 @@ fn part(l: u32) -> BoxedStrategy<String> {
             }
             lines.push(format!("shape = \"{shape}\""));
             let density_key = match shape {
-                "box" | "cylinder" | "sphere" | "cone" | "torus" | "hemisphere" | "prism" => {
-                    "density"
-                }
+                "box" | "cylinder" | "sphere" | "cone" | "torus" | "hemisphere" | "prism"
+                | "mesh" => "density",
                 "plate" | "disk" | "triangle" => "areal_density",
                 "rod" => "linear_density",
                 _ => "mass",
@@ -740,6 +740,17 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     ));
                     lines.push(format!("origin = {corner}"));
                     lines.push(format!("length = {length}"));
+                    if let Some(r) = rot {
+                        lines.push(format!("rotation = {r}"));
+                    }
+                }
+                // A file that is not there (or, beside the hostile files
+                // of tests/integration/meshes.rs, is): its keys and
+                // placement read, its file refused.
+                "mesh" => {
+                    lines.push("file = \"m.stl\"".to_string());
+                    lines.push("mesh_unit = \"mm\"".to_string());
+                    lines.push(format!("origin = {center}"));
                     if let Some(r) = rot {
                         lines.push(format!("rotation = {r}"));
                     }

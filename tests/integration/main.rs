@@ -19,6 +19,7 @@ mod hostile_round_two;
 mod invariants;
 mod layers;
 mod library;
+mod meshes;
 mod new_shapes;
 mod oracle;
 mod package;

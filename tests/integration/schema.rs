@@ -310,6 +310,14 @@ fn samples(shape: &str) -> Vec<&'static str> {
             "mass = 1\npolygon = [[0, 0], [10, 0], [0, 10]]\nlength = 2",
             "density = \"1 g/cm^3\"\npolygon = [[0, 0], [10, 0], [10, 10], [0, 10]]\nlength = 2\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 90 }",
         ],
+        // The mesh file from the working directory (the crate's root).
+        "mesh" => vec![
+            "file = \"shapes/meshes/bracket.stl\"\nmesh_unit = \"mm\"\nmass = 1",
+            "file = \"shapes/meshes/bracket.stl\"\nmesh_unit = \"mm\"\nmaterial = \"steel\"\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 30 }",
+            "file = \"shapes/meshes/bracket.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nthickness = 1\ndensity = \"1 g/cm^3\"",
+            "file = \"shapes/meshes/bracket.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nareal_density = \"5 kg/m^2\"",
+            "file = \"shapes/meshes/bracket.stl\"\nmesh_unit = \"mm\"\nmode = \"solid\"\ndensity = \"2.7 g/cm^3\"",
+        ],
         other => panic!("no sample of a {other}: add one here"),
     }
 }
@@ -347,6 +355,9 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "array" => "{ count = 2, step = [1, 0, 0] }",
         "mirror" => "{ normal = [1, 0, 0] }",
         "params" => "{ a = \"1 m\" }",
+        "file" => "\"shapes/meshes/bracket.stl\"",
+        "mesh_unit" => "\"mm\"",
+        "mode" => "\"shell\"",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }
@@ -580,6 +591,12 @@ fn a_schema_directive_on_the_first_line_changes_nothing() {
         let text = std::fs::read_to_string(&path).unwrap();
         let with = format!("#:schema ./massprop.schema.json\n{text}");
         std::fs::write(dir.join(path.file_name().unwrap()), with).unwrap();
+    }
+    // And the mesh files the examples read.
+    std::fs::create_dir_all(dir.join("meshes")).unwrap();
+    for entry in std::fs::read_dir("shapes/meshes").unwrap() {
+        let path = entry.unwrap().path();
+        std::fs::copy(&path, dir.join("meshes").join(path.file_name().unwrap())).unwrap();
     }
     for path in crate::common::example_part_files() {
         let copy = dir.join(path.file_name().unwrap());

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Benchmark (issue 17, item 4): a triangle mesh of about a million
+# triangles read, welded, checked and integrated, end to end:
+# `massprop report --format json` of a part file holding one mesh part.
+#
+#   bash benches/mesh.sh        # N = 500 latitude bands: 998,000 triangles
+#   bash benches/mesh.sh 250    # N = 250: 249,000 triangles
+#
+# Generates (python, deterministic) a UV sphere of radius 5 cm with N bands
+# and 2N longitudes as a binary STL (f32, 50 MB at N = 500) and as an ASCII
+# STL (shortest round-trip f64, 258 MB) into a temporary directory, builds
+# the release binary of the working tree, checks that both files report
+# (exit status 0) the same mass to within the binary file's f32 rounding,
+# then times each with hyperfine (median of 5) and its peak RSS with GNU
+# time. The huge files are never committed: the script makes them.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/lib.sh"
+need_bench_tools "the meshes"
+n="${1:-500}"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
+bin="$here/../target/release/massprop"
+python3 - "$tmp" "$n" <<'PY'
+import math, struct, sys
+out, n = sys.argv[1], int(sys.argv[2])
+m, r = 2 * n, 0.05
+def p(i, j):
+    if i == 0: return (0.0, 0.0, r)
+    if i == n: return (0.0, 0.0, -r)
+    th, ph = math.pi * i / n, 2 * math.pi * (j % m) / m
+    return (r * math.sin(th) * math.cos(ph), r * math.sin(th) * math.sin(ph), r * math.cos(th))
+tris = []
+for i in range(n):
+    for j in range(m):
+        a, b, c, d = p(i, j), p(i + 1, j), p(i + 1, j + 1), p(i, j + 1)
+        if i != 0: tris.append((a, b, d))
+        if i != n - 1: tris.append((b, c, d))
+with open(out + "/sphere.stl", "wb") as f:
+    f.write(b" " * 80 + struct.pack("<I", len(tris)))
+    for t in tris:
+        f.write(struct.pack("<12fH", 0, 0, 0, *t[0], *t[1], *t[2], 0))
+with open(out + "/sphere-ascii.stl", "w") as f:
+    f.write("solid s\n")
+    for t in tris:
+        f.write("facet normal 0 0 0\nouter loop\n")
+        for v in t: f.write("vertex %r %r %r\n" % v)
+        f.write("endloop\nendfacet\n")
+    f.write("endsolid s\n")
+print(len(tris), "triangles")
+PY
+for f in sphere.stl sphere-ascii.stl; do
+    printf '[[part]]\nshape = "mesh"\nfile = "%s"\nmesh_unit = "m"\ndensity = 1000\n' "$f" > "$tmp/$f.toml"
+    "$bin" report --format json "$tmp/$f.toml" > "$tmp/$f.json" 2> /dev/null
+done
+python3 - "$tmp" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1] + "/sphere.stl.json"))["mass"]
+b = json.load(open(sys.argv[1] + "/sphere-ascii.stl.json"))["mass"]
+assert abs(a - b) <= 1e-6 * b, (a, b)
+print("mass", a, "kg (binary),", b, "kg (ASCII)")
+PY
+for f in sphere.stl sphere-ascii.stl; do
+    hyperfine --runs 5 --style basic "$bin report --format json $tmp/$f.toml" 2>&1 | grep -E "Time|Range"
+    /usr/bin/time -f "$f: peak RSS %M KB" "$bin" report --format json "$tmp/$f.toml" > /dev/null 2> "$tmp/rss" || true
+    tail -1 "$tmp/rss"
+done

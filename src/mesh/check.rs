@@ -1,0 +1,259 @@
+//! A mesh's corners welded into a surface (corners with exactly equal
+//! coordinates are one vertex) and checked before anything is integrated:
+//! finite coordinates, at least one triangle, no degenerate triangle (a
+//! repeated vertex, zero area); for a solid also closed (every edge shared
+//! by exactly two triangles) and consistently oriented (the two traverse
+//! it in opposite directions). The volume's sign (outward) is checked
+//! after the integral (`MeshBody::load`).
+
+use super::read::Triangles;
+use super::{At, MeshBody, MeshError, Mode, Sums, finish};
+use crate::numeric::{DD, Real};
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// A welded mesh: its vertices, each triangle's three, and where each
+/// triangle came from in the file.
+#[derive(Debug)]
+pub struct Mesh {
+    pub vertices: Vec<[f64; 3]>,
+    pub faces: Vec<[u32; 3]>,
+    pub at: Vec<At>,
+}
+
+/// A fast hasher for the coordinates' bits (std's SipHash costs a third
+/// of a million-triangle mesh's welding; these keys are not adversarial
+/// in a way that matters: a file can only slow its own reading, within
+/// the triangle limit).
+#[derive(Default)]
+struct Mix(u64);
+
+impl Hasher for Mix {
+    fn finish(&self) -> u64 {
+        // Murmur3's finaliser: every input bit reaches the high and the low
+        // bits the table reads (coordinates of a smooth surface differ in
+        // their low mantissa bits).
+        let mut x = self.0;
+        x ^= x >> 33;
+        x = x.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        x ^= x >> 33;
+        x = x.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        x ^ (x >> 33)
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for b in bytes {
+            self.write_u64(u64::from(*b));
+        }
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+}
+
+/// "triangle 12 (line 80)": a triangle by its position in the file (from
+/// 1) and where it is.
+pub fn triangle(i: usize, at: At) -> String {
+    match at {
+        At::Whole => format!("triangle {}", i + 1),
+        at => format!("triangle {} ({at})", i + 1),
+    }
+}
+
+/// A point as the message shows it: (x, y, z), shortest round trip.
+pub fn point(p: [f64; 3]) -> String {
+    format!("({}, {}, {})", p[0], p[1], p[2])
+}
+
+impl Mesh {
+    /// Weld the corners: exactly equal coordinates are one vertex (−0 and
+    /// +0 equal). Refuses a non-finite coordinate.
+    pub fn weld(t: Triangles) -> Result<Mesh, MeshError> {
+        if t.corners.is_empty() {
+            return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
+        }
+        let mut index: HashMap<[u64; 3], u32, BuildHasherDefault<Mix>> =
+            HashMap::with_capacity_and_hasher(t.corners.len() / 2 + 3, Default::default());
+        let mut vertices = Vec::with_capacity(t.corners.len() / 2 + 3);
+        let mut faces = Vec::with_capacity(t.corners.len());
+        for (i, tri) in t.corners.iter().enumerate() {
+            let mut f = [0u32; 3];
+            for (k, p) in tri.iter().enumerate() {
+                if !p.iter().all(|x| x.is_finite()) {
+                    return Err(MeshError::new(
+                        t.at[i],
+                        format!(
+                            "{} has a coordinate that is not a finite number: {}",
+                            triangle(i, t.at[i]),
+                            point(*p)
+                        ),
+                    ));
+                }
+                let p = p.map(|x| x + 0.0);
+                let next = vertices.len() as u32;
+                f[k] = *index.entry(p.map(f64::to_bits)).or_insert_with(|| {
+                    vertices.push(p);
+                    next
+                });
+            }
+            faces.push(f);
+        }
+        Ok(Mesh {
+            vertices,
+            faces,
+            at: t.at,
+        })
+    }
+
+    fn name(&self, f: usize) -> String {
+        triangle(f, self.at[f])
+    }
+
+    /// The checks of the module comment for `mode`.
+    pub fn check(&self, mode: Mode) -> Result<(), MeshError> {
+        for (i, f) in self.faces.iter().enumerate() {
+            let [a, b, c] = f.map(|k| self.vertices[k as usize]);
+            if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
+                let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
+                return Err(MeshError::new(
+                    self.at[i],
+                    format!(
+                        "{} is degenerate: two of its corners are the point {}",
+                        self.name(i),
+                        point(same)
+                    ),
+                ));
+            }
+            let d1: [DD; 3] = std::array::from_fn(|k| DD::of(b[k]) - DD::of(a[k]));
+            let d2: [DD; 3] = std::array::from_fn(|k| DD::of(c[k]) - DD::of(a[k]));
+            let x = super::cross(d1, d2);
+            if x.iter().all(|v| v.hi == 0.0) {
+                return Err(MeshError::new(
+                    self.at[i],
+                    format!(
+                        "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
+                        self.name(i),
+                        point(a),
+                        point(b),
+                        point(c)
+                    ),
+                ));
+            }
+        }
+        if mode == Mode::Solid {
+            self.closed_and_oriented()?;
+        }
+        Ok(())
+    }
+
+    /// Every edge shared by exactly two triangles that traverse it in
+    /// opposite directions; else the first bad edge (by its first
+    /// triangle) is named.
+    fn closed_and_oriented(&self) -> Result<(), MeshError> {
+        // (edge key, triangle, forward): sorted, each edge's run together.
+        let mut edges: Vec<Edge> = Vec::with_capacity(3 * self.faces.len());
+        for (i, f) in self.faces.iter().enumerate() {
+            for k in 0..3 {
+                let (a, b) = (f[k], f[(k + 1) % 3]);
+                let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+                edges.push((key, i as u32, a < b));
+            }
+        }
+        edges.sort_unstable();
+        let mut worst: Option<(u32, &[Edge])> = None;
+        for run in edges.chunk_by(|x, y| x.0 == y.0) {
+            let ok = run.len() == 2 && run[0].2 != run[1].2;
+            let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
+            if !ok && worst.is_none_or(|(w, _)| first < w) {
+                worst = Some((first, run));
+            }
+        }
+        let Some((_, run)) = worst else {
+            return Ok(());
+        };
+        let key = run[0].0;
+        let (a, b) = (
+            self.vertices[(key >> 32) as usize],
+            self.vertices[(key & 0xffff_ffff) as usize],
+        );
+        let edge = format!("the edge {} – {}", point(a), point(b));
+        let mut faces: Vec<u32> = run.iter().map(|e| e.1).collect();
+        faces.sort_unstable();
+        let names = |fs: &[u32]| {
+            let mut list: Vec<String> = fs.iter().take(4).map(|f| self.name(*f as usize)).collect();
+            if fs.len() > 4 {
+                list.push(format!("and {} more", fs.len() - 4));
+            }
+            list.join(", ")
+        };
+        let first = faces[0] as usize;
+        Err(MeshError::new(
+            self.at[first],
+            match run.len() {
+                1 => format!(
+                    "the mesh is not closed: {edge} of {} belongs to no other triangle (a hole, or a gap between corners that are not exactly equal); a solid needs a closed surface, `mode = \"shell\"` takes an open one",
+                    names(&faces)
+                ),
+                2 => format!(
+                    "the mesh is not consistently oriented: {} and {} both traverse {edge} in the same direction (one of them is wound the other way)",
+                    self.name(first),
+                    self.name(faces[1] as usize)
+                ),
+                n => format!(
+                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), a closed surface shares each edge between exactly two",
+                    names(&faces)
+                ),
+            },
+        ))
+    }
+
+    /// The centre of the bounding box, the reference point of the sums.
+    pub fn reference(&self) -> [f64; 3] {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for v in &self.vertices {
+            for k in 0..3 {
+                lo[k] = lo[k].min(v[k]);
+                hi[k] = hi[k].max(v[k]);
+            }
+        }
+        // Halves first: no overflow near f64::MAX.
+        std::array::from_fn(|k| lo[k] / 2.0 + hi[k] / 2.0)
+    }
+
+    /// The sums of the terms about the reference point, in T.
+    pub fn sums<T: Real>(&self, mode: Mode, p: [f64; 3]) -> Sums<T> {
+        let mut sums = Sums::<T>::new();
+        let offset =
+            |v: [f64; 3]| -> [DD; 3] { std::array::from_fn(|k| DD::of(v[k]) - DD::of(p[k])) };
+        for f in &self.faces {
+            sums.add(mode, f.map(|k| offset(self.vertices[k as usize])));
+        }
+        sums
+    }
+
+    /// The mesh's integrals (see the module comment of `mesh`), in T.
+    pub fn integrate<T: Real>(&self, mode: Mode) -> MeshBody {
+        let p = self.reference();
+        let sums = self.sums::<T>(mode, p);
+        let (measure, g, second, bound) = finish(mode, &sums);
+        let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());
+        MeshBody {
+            mode,
+            triangles: self.faces.len(),
+            measure: dd(measure),
+            centroid: std::array::from_fn(|k| DD::of(p[k]) + dd(g[k])),
+            second: second.map(|r| r.map(dd)),
+            bound: Bound {
+                centroid: bound.centroid
+                    + 4.0 * super::unit_of::<DD>() * p.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
+                ..bound
+            },
+        }
+    }
+}
+
+use super::Bound;
+
+/// An edge of a triangle: its key (the two vertices, smaller first), the
+/// triangle, and whether it runs from the smaller to the larger.
+type Edge = (u64, u32, bool);

@@ -1,0 +1,339 @@
+//! A `shape = "mesh"` part: its keys checked, its `file` resolved and
+//! confined as an include's is (`include::Ctx::target_of`), read, welded,
+//! checked and integrated once per file and mode (`mesh::MeshBody`, kept in
+//! `include::Files`), and its mass and placement read into a `Part` whose
+//! `Place::Mesh` shares the integrals.
+//!
+//! Every error about the mesh file is said at the part's `file` key,
+//! naming the mesh file and where in it (a line, a byte offset, a
+//! triangle and its edge).
+
+use super::Ctx;
+use super::include::{Files, Kind};
+use super::raw::RawPart;
+use super::rotation::Orientation;
+use crate::diag::Diagnostic;
+use crate::mesh::{Format, MeshBody, Mode};
+use crate::part::{MassSpec, Part, Place, Spec};
+use crate::shapes::Shape;
+use crate::units::{self, Dim, FileUnits};
+use std::ops::Range;
+use std::sync::Arc;
+use toml::Spanned;
+
+/// Whether a raw part is a mesh (read here, with its file).
+pub(super) fn is_mesh(p: &RawPart) -> bool {
+    p.shape.as_ref().is_some_and(|s| s.get_ref() == "mesh")
+}
+
+impl Ctx<'_> {
+    /// The mesh part at position `index`.
+    pub(super) fn mesh_part(
+        &self,
+        index: usize,
+        raw: &Spanned<RawPart>,
+        files: &mut Files,
+    ) -> Result<Part, Diagnostic> {
+        let p = raw.get_ref();
+        let info = Shape::Mesh.info();
+        if let Some((key, span)) = super::parts::present_keys(p)
+            .into_iter()
+            .filter(|(k, _)| *k != "shape" && !info.keys.contains(k))
+            .find_map(|(k, s)| s.map(|s| (k, s)))
+        {
+            return Err(self
+                .err(span, format!("`{key}` does not apply to a mesh"))
+                .help(info.help));
+        }
+        let needs = |key: &str, why: &str| {
+            self.err(raw.span(), format!("this mesh needs `{key}`{why}"))
+                .help(info.help)
+        };
+        let file = p.file.as_deref().ok_or_else(|| needs("file", ""))?;
+        let unit = p.mesh_unit.as_deref().ok_or_else(|| {
+            needs(
+                "mesh_unit",
+                ", the length unit of its file's coordinates (an STL or OBJ file carries none)",
+            )
+        })?;
+        let scale = self.mesh_scale(unit)?;
+        let mode = match p.mode.as_deref() {
+            None => Mode::Solid,
+            Some(m) => match m.get_ref().as_str() {
+                "solid" => Mode::Solid,
+                "shell" => Mode::Shell,
+                other => {
+                    let d = self.err(m.span(), format!("unknown mesh mode {other:?}"));
+                    return Err(match units::suggest(other, ["solid", "shell"]) {
+                        Some(s) => d.label(format!("did you mean \"{s}\"?")),
+                        None => d.label("expected \"solid\" or \"shell\""),
+                    });
+                }
+            },
+        };
+        let density = self.mesh_density(p, mode, raw.span())?;
+        let origin = match &p.origin {
+            Some(o) => {
+                self.vec3(o, "origin", Dim::LENGTH)?;
+                self.file_vec3(o, "origin", Dim::LENGTH)?
+            }
+            None => [0.0; 3],
+        };
+        let orientation = match &p.rotation {
+            Some(r) => self.rotation(r)?,
+            None => Orientation::Identity,
+        };
+        let mesh = self.mesh_body(file, mode, files)?;
+        let mass = match density {
+            Density::Mass(m) => MassSpec::Given(m),
+            Density::Per(rho, span) => {
+                let spec = Spec {
+                    mass: MassSpec::Density(rho),
+                    place: Place::Mesh {
+                        origin,
+                        orientation: orientation.clone(),
+                        scale,
+                        mesh: mesh.clone(),
+                    },
+                    removed: false,
+                    placed: Default::default(),
+                };
+                let m: f64 = crate::part::mass_of(Shape::Mesh, &spec);
+                let si = m * self.units.factor(Dim::MASS).value();
+                if !(m >= f64::MIN_POSITIVE && m.is_finite() && si.is_finite()) {
+                    let what = if m.is_finite() {
+                        "too small"
+                    } else {
+                        "too large"
+                    };
+                    return Err(self.err(
+                        span,
+                        format!(
+                            "the density times the mesh's {} gives a mass {what} for f64",
+                            measure_name(mode)
+                        ),
+                    ));
+                }
+                MassSpec::Density(rho)
+            }
+        };
+        let name = match &p.name {
+            Some(n) => n.get_ref().clone(),
+            None => format!("part {}", index + 1),
+        };
+        let spec = Spec {
+            mass,
+            place: Place::Mesh {
+                origin,
+                orientation,
+                scale,
+                mesh,
+            },
+            removed: matches!(&p.remove, Some(r) if *r.get_ref()),
+            placed: Default::default(),
+        };
+        self.in_file_range(Shape::Mesh, &spec, &name, raw.span())?;
+        Ok(Part {
+            name: if p.name.is_some() {
+                name
+            } else {
+                String::new()
+            },
+            named: p.name.is_some(),
+            shape: Shape::Mesh,
+            spec,
+            assembly: Vec::new(),
+            span: raw.span(),
+        })
+    }
+
+    /// `mesh_unit` in this file's length unit, exactly (double-double).
+    fn mesh_scale(&self, unit: &Spanned<String>) -> Result<crate::numeric::DD, Diagnostic> {
+        let allowed = units::LENGTH_UNITS;
+        let Some(name) = allowed.iter().copied().find(|a| *a == unit.get_ref()) else {
+            let d = self.err(
+                unit.span(),
+                format!("unknown length unit {:?} in `mesh_unit`", unit.get_ref()),
+            );
+            return Err(
+                match units::suggest(unit.get_ref(), allowed.iter().copied()) {
+                    Some(s) => d.label(format!("did you mean \"{s}\"?")),
+                    None => d.label(format!("expected one of {}", allowed.join(", "))),
+                },
+            );
+        };
+        let of = FileUnits {
+            length: name,
+            mass: "kg",
+        }
+        .factor(Dim::LENGTH);
+        let ratio = of
+            .per(self.units.factor(Dim::LENGTH))
+            .expect("length units are small fractions");
+        Ok(ratio.dd())
+    }
+
+    /// The mass, or the density per volume (solid) or area (shell) in the
+    /// file's units, from exactly one of the keys the mode takes.
+    fn mesh_density(
+        &self,
+        p: &RawPart,
+        mode: Mode,
+        span: Range<usize>,
+    ) -> Result<Density, Diagnostic> {
+        let given: Vec<(&str, Range<usize>)> = [
+            ("mass", p.mass.as_ref().map(Spanned::span)),
+            ("density", p.density.as_deref().map(Spanned::span)),
+            (
+                "areal_density",
+                p.areal_density.as_deref().map(Spanned::span),
+            ),
+            ("material", p.material.as_deref().map(Spanned::span)),
+        ]
+        .into_iter()
+        .filter_map(|(k, s)| s.map(|s| (k, s)))
+        .collect();
+        if let [(first, _), (later, s), ..] = given.as_slice() {
+            let (first, later, s) = if given[0].1.start < s.start {
+                (*first, *later, s.clone())
+            } else {
+                (*later, *first, given[0].1.clone())
+            };
+            return Err(self.err(
+                s,
+                format!("`{later}` conflicts with `{first}`: give exactly one"),
+            ));
+        }
+        let thickness = p.thickness.as_deref();
+        match (mode, given.first().map(|g| g.0), thickness) {
+            (Mode::Solid, Some("areal_density"), _) | (Mode::Solid, _, Some(_)) => {
+                let (key, s) = match (&p.areal_density, thickness) {
+                    (Some(a), _) => ("areal_density", a.span()),
+                    (_, Some(t)) => ("thickness", t.span()),
+                    _ => unreachable!("one of them is given"),
+                };
+                Err(self
+                    .err(s, format!("`{key}` applies to a mesh with `mode = \"shell\"`"))
+                    .help("a solid mesh weighs the volume it encloses: `mass`, `density` or `material`"))
+            }
+            (Mode::Shell, Some("areal_density"), Some(t)) | (Mode::Shell, Some("mass"), Some(t)) => {
+                Err(self
+                    .err(t.span(), "`thickness` goes with `density` or `material`, which it turns into an areal density")
+                    .help("give `thickness` with `density` or `material`, or `mass` or `areal_density` alone"))
+            }
+            (Mode::Shell, Some(k @ ("density" | "material")), None) => Err(self
+                .err(
+                    given[0].1.clone(),
+                    format!("a shell mesh's `{k}` needs `thickness`, which turns it into an areal density"),
+                )
+                .help("or give `areal_density` or `mass`")),
+            (_, None, _) => Err(self
+                .err(
+                    span,
+                    match mode {
+                        Mode::Solid => "this mesh needs `mass`, `density` or `material`",
+                        Mode::Shell => "this shell mesh needs `mass`, `areal_density`, or `thickness` with `density` or `material`",
+                    },
+                )),
+            (_, Some("mass"), _) => {
+                let m = p.mass.as_ref().expect("given");
+                Ok(Density::Mass(self.positive_file(m, "mass", Dim::MASS)?))
+            }
+            (_, Some("areal_density"), _) => {
+                let q = p.areal_density.as_deref().expect("given");
+                let d = self.positive_file(q, "areal_density", Dim::AREAL_DENSITY)?;
+                Ok(Density::Per(d, q.span()))
+            }
+            (_, Some("density"), _) => {
+                let q = p.density.as_deref().expect("given");
+                let d = self.positive_file(q, "density", Dim::DENSITY)?;
+                self.times_thickness(d, thickness, q.span())
+            }
+            (_, Some(_), _) => {
+                let (_, file, s) = self
+                    .material(Shape::Mesh, p, span)?
+                    .expect("a material is given");
+                self.times_thickness(file, thickness, s)
+            }
+        }
+    }
+
+    /// A density per volume, times the shell's thickness if it has one.
+    fn times_thickness(
+        &self,
+        d: f64,
+        thickness: Option<&Spanned<super::raw::Quantity>>,
+        span: Range<usize>,
+    ) -> Result<Density, Diagnostic> {
+        let Some(t) = thickness else {
+            return Ok(Density::Per(d, span));
+        };
+        let t = self.positive_file(t, "thickness", Dim::LENGTH)?;
+        let a = d * t;
+        if !(a.is_finite() && a >= f64::MIN_POSITIVE) {
+            return Err(self.err(
+                span,
+                "the density times the thickness is out of the range of f64",
+            ));
+        }
+        Ok(Density::Per(a, span))
+    }
+
+    /// A positive quantity in the file's units (checked in SI too).
+    fn positive_file(
+        &self,
+        q: &Spanned<super::raw::Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<f64, Diagnostic> {
+        self.positive(q, key, dim)?;
+        self.file_quantity(q, key, dim)
+    }
+
+    /// The mesh file `file` names, read once per mode however many parts
+    /// use it.
+    fn mesh_body(
+        &self,
+        file: &Spanned<String>,
+        mode: Mode,
+        files: &mut Files,
+    ) -> Result<Arc<MeshBody>, Diagnostic> {
+        let t = self.target_of(file, files, Kind::Mesh)?;
+        files.read.push(t.canonical.clone());
+        let key = (t.canonical.clone(), mode);
+        if let Some(m) = files.meshes.get(&key) {
+            return Ok(m.clone());
+        }
+        let format = Format::of(&t.canonical).expect("`target_of` checked the extension");
+        let bytes = std::fs::read(&t.shown).map_err(|e| {
+            self.err(
+                file.span(),
+                format!("cannot read the mesh file `{}`: {e}", t.shown_name),
+            )
+        })?;
+        let body = MeshBody::load(format, &bytes, mode).map_err(|e| {
+            self.err(
+                file.span(),
+                format!("the mesh file `{}`: {}", t.shown_name, e.message),
+            )
+        })?;
+        let body = Arc::new(body);
+        files.meshes.insert(key, body.clone());
+        Ok(body)
+    }
+}
+
+/// A mesh's weight as the file gives it.
+enum Density {
+    /// `mass`, in the file's units.
+    Mass(f64),
+    /// Per volume or area in the file's units, and the key that gave it.
+    Per(f64, Range<usize>),
+}
+
+fn measure_name(mode: Mode) -> &'static str {
+    match mode {
+        Mode::Solid => "volume",
+        Mode::Shell => "area",
+    }
+}
