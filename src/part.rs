@@ -185,7 +185,7 @@ pub struct Spec {
     /// `remove = true`: a cut-out, composed with negative mass.
     pub removed: bool,
     /// How far the frames of the sub-assemblies the part is in moved its
-    /// numbers by rounding (`model::include::Frame::place`); none for a
+    /// numbers by rounding (`model::frame::Frame::place`); none for a
     /// part of the file itself.
     pub placed: Placed,
 }

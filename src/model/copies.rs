@@ -2,7 +2,7 @@
 //! { .. }` on any `[[part]]`, read and checked (`Ctx::copies`), and each
 //! copy's frames (`Copies::frames`).
 //!
-//! NOTE: a copy is a frame, as an include is (`include::Frame`): nothing
+//! NOTE: a copy is a frame, as an include is (`model::frame::Frame`): nothing
 //! holds the copies; a walk (`walk`) places each as it reaches it, through
 //! the frame of its array and then its mirror's, and drops it. Copy 0 is
 //! the part as written (no frame at all, so not one bit changes); copy i

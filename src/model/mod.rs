@@ -14,6 +14,7 @@ mod copies;
 mod ctx;
 pub mod expect;
 pub mod fast;
+mod frame;
 mod include;
 mod material;
 mod mesh;
@@ -30,7 +31,8 @@ mod toml_error;
 mod walk;
 
 pub use copies::{Copies, push_copy_name};
-pub use include::{Frame, Includes};
+pub use frame::Frame;
+pub use include::Includes;
 pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};

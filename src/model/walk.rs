@@ -9,7 +9,7 @@
 //! expanded). Each part is placed by the same arithmetic, in the same
 //! order, as when sub-assemblies were expanded once into a list: its own
 //! sub-assembly's frame first, then each enclosing one's, every coordinate
-//! rounded once per frame (`include::Frame::place`); so results are the
+//! rounded once per frame (`frame::Frame::place`); so results are the
 //! same to the last bit. A part's or a sub-assembly's copies (`array`,
 //! `mirror`: `copies`) are frames too, made as the walk reaches each copy
 //! and applied after the sub-assembly's own: the copies are never held.

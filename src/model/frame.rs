@@ -1,0 +1,241 @@
+//! A sub-assembly's or a copy's frame: where an included file's origin
+//! and axes go in the including file, in its units, and how a part is
+//! placed through it (`Frame::place`), with the rounding that adds
+//! (`Spec::placed`).
+
+use super::rotation::Orientation;
+use crate::numeric::M3;
+use crate::part::{MassSpec, Place, Spec};
+use crate::shapes::Shape;
+
+/// Where an included file's frame goes in this file's.
+#[derive(Debug, Clone)]
+pub struct Frame {
+    /// This file's units.
+    pub(super) origin: [f64; 3],
+    pub(super) r: M3<f64>,
+    pub(super) orientation: Orientation,
+    /// The included file's length and mass units in this file's.
+    pub(super) length: f64,
+    pub(super) mass: f64,
+    /// A copy's frame (`model::copies`): the point it turns about, taken
+    /// from each point before the turn (`origin + R (p − pivot)`); none
+    /// for an include's.
+    pub(super) pivot: Option<[f64; 3]>,
+    /// A mirror's frame: R is a reflection, and a part placed by its
+    /// centre and a turn is completed as its image by `part::mirror`.
+    pub(super) mirror: bool,
+}
+
+impl Frame {
+    fn dir(&self, v: [f64; 3]) -> [f64; 3] {
+        let w = v.map(|x| x * self.length);
+        std::array::from_fn(|i| self.r[i][0] * w[0] + self.r[i][1] * w[1] + self.r[i][2] * w[2])
+    }
+
+    fn point(&self, p: [f64; 3]) -> [f64; 3] {
+        let d = match self.pivot {
+            None => self.dir(p),
+            Some(o) => self.dir(std::array::from_fn(|i| p[i] - o[i])),
+        };
+        std::array::from_fn(|i| self.origin[i] + d[i])
+    }
+
+    /// A copy's frame (`model::copies`), in this file's units: a point p
+    /// goes to `origin + R (p − pivot)`, R the matrix of `orientation`
+    /// (a reflection when `mirror`).
+    pub(super) fn copy(
+        origin: [f64; 3],
+        pivot: [f64; 3],
+        orientation: Orientation,
+        mirror: bool,
+    ) -> Frame {
+        Frame {
+            origin,
+            r: orientation.matrix(),
+            orientation,
+            length: 1.0,
+            mass: 1.0,
+            pivot: Some(pivot),
+            mirror,
+        }
+    }
+
+    /// `o` turned with this frame, in place.
+    fn turn(&self, o: &mut Orientation) {
+        match (&self.orientation, &*o) {
+            (Orientation::Identity, _) => {}
+            (f, Orientation::Identity) => *o = f.clone(),
+            (f, _) => {
+                let inner = std::mem::replace(o, Orientation::Identity);
+                *o = Orientation::Then(Box::new(f.clone()), Box::new(inner));
+            }
+        }
+    }
+
+    /// A part of the included file (`shape`, `s`), moved into this file's
+    /// frame and units, in place (a walk places each part through every
+    /// frame above it: a copy of the part per frame was a quarter of the
+    /// time of a report of 2²⁰ instances).
+    pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
+        let reach = reach(&s.place) * self.length;
+        // A density per volume, area or length scales with that power.
+        let k = match &s.place {
+            // A mesh's density is per volume or per area by its mode.
+            Place::Mesh { mesh, .. } => mesh.mode.power(),
+            _ => shape.info().density.map_or(0, |d| d.length_power),
+        };
+        match &mut s.mass {
+            MassSpec::Given(m) => *m *= self.mass,
+            MassSpec::Density(d) => *d = *d * self.mass / self.length.powi(k),
+        }
+        match &mut s.place {
+            Place::Centered {
+                center,
+                extent,
+                orientation,
+            } => {
+                *center = self.point(*center);
+                *extent = extent.map(|x| x * self.length);
+                self.turn(orientation);
+            }
+            Place::Edges { corner, edges } => {
+                *corner = self.point(*corner);
+                *edges = edges.map(|e| self.dir(e));
+            }
+            Place::FromTo { from, to } => {
+                *from = self.point(*from);
+                *to = self.point(*to);
+            }
+            Place::Vertices(v) => *v = v.map(|x| self.point(x)),
+            Place::Axial {
+                center,
+                dims,
+                orientation,
+            } => {
+                *center = self.point(*center);
+                *dims = dims.map(|x| x * self.length);
+                self.turn(orientation);
+            }
+            Place::Prism {
+                origin,
+                polygon,
+                length,
+                orientation,
+            } => {
+                *origin = self.point(*origin);
+                if self.length != 1.0 {
+                    *polygon = polygon.iter().map(|v| v.map(|x| x * self.length)).collect();
+                }
+                *length *= self.length;
+                self.turn(orientation);
+            }
+            Place::Given {
+                center,
+                inertia,
+                orientation,
+            } => {
+                *center = self.point(*center);
+                **inertia = inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length));
+                self.turn(orientation);
+            }
+            Place::Mesh {
+                origin,
+                orientation,
+                scale,
+                ..
+            } => {
+                *origin = self.point(*origin);
+                *scale = scale.mul_f64(self.length);
+                self.turn(orientation);
+            }
+        }
+        if self.mirror {
+            crate::part::mirror::complete(shape, &mut s.place);
+        }
+        s.placed = self.rounding(s.placed, reach);
+        // A prism's vertices, scaled in its own frame, round each by a unit
+        // of their distance from its origin: that changes its shape by
+        // 2 max|p|/shortest edge units of its sizes (and moves its
+        // centroid, in `reach`).
+        if let Place::Prism { polygon, .. } = &s.place
+            && self.length != 1.0
+        {
+            let n = polygon.len();
+            let far = polygon
+                .iter()
+                .map(|v| v[0].abs().max(v[1].abs()))
+                .fold(0.0, f64::max);
+            let short = (0..n)
+                .map(|i| {
+                    let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                    (a[0] - b[0]).hypot(a[1] - b[1])
+                })
+                .fold(f64::INFINITY, f64::min);
+            s.placed = crate::part::Placed::new(
+                f64::from(s.placed.units) + 2.0 * far / short,
+                f64::from(s.placed.at),
+            );
+        }
+    }
+
+    /// What placing a part through this frame adds to its rounding
+    /// (`part::Placed`): none to its sizes when the frame neither turns
+    /// (but by quarter turns, which are exact) nor scales; else a product
+    /// per size and per mass, density (with its power of the length) or
+    /// tensor entry, and an edge's turn (R w, three products summed, and
+    /// the turn's own error ρ): 12 + 2ρ units. A position error already
+    /// there is turned (×3 in the worst direction unless the turn is
+    /// exact) and scaled; the new one is R (p·L) + origin's rounding,
+    /// (4 + ρ) units of |origin| + |p·L|₁ (`reach`), or one of that when
+    /// the frame is exact. A copy's frame adds the difference p − pivot
+    /// (a unit of |p|₁ + |pivot|₁, turned) and its origin's own rounding
+    /// (i·step, or the pivot itself: a unit of it).
+    fn rounding(&self, old: crate::part::Placed, reach: f64) -> crate::part::Placed {
+        let rho = crate::part::error::turn_error(&self.orientation, &self.r);
+        let exact = rho == 0.0 && self.length == 1.0 && self.mass == 1.0;
+        let grow = if rho == 0.0 { 1.0 } else { 3.0 };
+        let size = if exact { 0.0 } else { 12.0 + 2.0 * rho };
+        let ops = if exact { 1.0 } else { 4.0 + rho };
+        let origin = self.origin.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let (ops, reach) = match self.pivot {
+            None => (ops, reach),
+            Some(o) => (
+                ops + 2.0 + grow,
+                reach + o.iter().map(|x| x.abs()).sum::<f64>(),
+            ),
+        };
+        crate::part::Placed::new(
+            f64::from(old.units) + size,
+            f64::from(old.at) * self.length * grow
+                + ops * crate::part::error::U64 * (origin + reach),
+        )
+    }
+}
+
+/// The largest |p|₁ of the points a placement gives (its centre, corner,
+/// ends or vertices), before a frame moves them.
+fn reach(place: &Place) -> f64 {
+    let norm = |p: &[f64; 3]| p.iter().map(|x| x.abs()).sum::<f64>();
+    match place {
+        Place::Centered { center, .. }
+        | Place::Given { center, .. }
+        | Place::Axial { center, .. } => norm(center),
+        // Its vertices are scaled in its own frame: their rounding moves
+        // its centroid by a unit of their distance from its origin (and
+        // changes its shape, counted in its sizes' units, `Frame::place`).
+        Place::Prism {
+            origin, polygon, ..
+        } => {
+            norm(origin)
+                + polygon
+                    .iter()
+                    .map(|v| v[0].abs() + v[1].abs())
+                    .fold(0.0, f64::max)
+        }
+        Place::Mesh { origin, .. } => norm(origin),
+        Place::Edges { corner, .. } => norm(corner),
+        Place::FromTo { from, to } => norm(from).max(norm(to)),
+        Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
+    }
+}
