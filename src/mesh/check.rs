@@ -221,18 +221,72 @@ impl Mesh {
     }
 
     /// The sums of the terms about the reference point, in T.
-    pub fn sums<T: Real>(&self, mode: Mode, p: [f64; 3]) -> Sums<T> {
-        let mut sums = Sums::<T>::new();
+    ///
+    /// NOTE: the triangles are summed in chunks of `CHUNK`, on every core,
+    /// and the chunks' sums then added in their order: the result is the
+    /// same bits whatever the number of cores (it depends on `CHUNK`
+    /// alone), and the integrals of a million triangles, most of a mesh's
+    /// cost, take half the time on two cores. The error bound stays that
+    /// of one recursive sum of all n terms (`Sums::error`), which a chunked
+    /// sum never exceeds: its terms pass through at most CHUNK + n/CHUNK ≤ n
+    /// additions.
+    pub fn sums<T: Real + Send>(&self, mode: Mode, p: [f64; 3]) -> Sums<T> {
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        self.sums_on(mode, p, threads)
+    }
+
+    /// `sums` on at most `threads` threads.
+    pub fn sums_on<T: Real + Send>(&self, mode: Mode, p: [f64; 3], threads: usize) -> Sums<T> {
         let offset =
             |v: [f64; 3]| -> [DD; 3] { std::array::from_fn(|k| DD::of(v[k]) - DD::of(p[k])) };
-        for f in &self.faces {
-            sums.add(mode, f.map(|k| offset(self.vertices[k as usize])));
+        let chunk = |faces: &[[u32; 3]]| {
+            let mut sums = Sums::<T>::new();
+            for f in faces {
+                sums.add(mode, f.map(|k| offset(self.vertices[k as usize])));
+            }
+            sums
+        };
+        let chunks: Vec<&[[u32; 3]]> = self.faces.chunks(CHUNK).collect();
+        let threads = threads.clamp(1, chunks.len().max(1));
+        let mut parts: Vec<Option<Sums<T>>> = vec![None; chunks.len()];
+        if threads == 1 {
+            for (part, c) in parts.iter_mut().zip(&chunks) {
+                *part = Some(chunk(c));
+            }
+        } else {
+            std::thread::scope(|scope| {
+                let handles: Vec<_> = (0..threads)
+                    .map(|t| {
+                        let (chunks, chunk) = (&chunks, &chunk);
+                        scope.spawn(move || {
+                            (t..chunks.len())
+                                .step_by(threads)
+                                .map(|i| (i, chunk(chunks[i])))
+                                .collect::<Vec<_>>()
+                        })
+                    })
+                    .collect();
+                for h in handles {
+                    for (i, sums) in h.join().expect("invariant: summing a chunk does not panic") {
+                        parts[i] = Some(sums);
+                    }
+                }
+            });
+        }
+        let mut sums = Sums::<T>::new();
+        for part in parts {
+            let part = part.expect("invariant: every chunk was summed");
+            for k in 0..10 {
+                sums.value[k] = sums.value[k] + part.value[k];
+                sums.magnitude[k] += part.magnitude[k];
+            }
+            sums.n += part.n;
         }
         sums
     }
 
     /// The mesh's integrals (see the module comment of `mesh`), in T.
-    pub fn integrate<T: Real>(&self, mode: Mode) -> MeshBody {
+    pub fn integrate<T: Real + Send>(&self, mode: Mode) -> MeshBody {
         let p = self.reference();
         let sums = self.sums::<T>(mode, p);
         let (measure, g, second, bound) = finish(mode, &sums);
@@ -253,6 +307,9 @@ impl Mesh {
 }
 
 use super::Bound;
+
+/// The triangles summed as one chunk (`Mesh::sums`).
+const CHUNK: usize = 1 << 15;
 
 /// An edge of a triangle: its key (the two vertices, smaller first), the
 /// triangle, and whether it runs from the smaller to the larger.

@@ -324,3 +324,44 @@ fn a_reflection_flips_the_centroid_and_the_products_of_its_axis() {
         }
     }
 }
+
+/// Summed in chunks on any number of threads, the same bits; and the
+/// chunked f64 sums within the bound of one recursive sum of all terms,
+/// against double-double.
+#[test]
+fn the_sums_are_the_same_bits_on_any_number_of_threads_and_within_their_bound() {
+    let mut t = Vec::new();
+    for k in 0..10_000 {
+        let o = [
+            (k % 100) as f64 * 1.5,
+            (k / 100) as f64 * 1.5,
+            (k as f64 * 0.1).sin(),
+        ];
+        t.extend(box_triangles(1.0, 0.5 + (k as f64).cos() * 0.1, 0.75, o));
+    }
+    assert!(t.len() > 3 * 32_768, "more than three chunks");
+    let mesh = check::Mesh::weld(read::Triangles {
+        at: vec![At::Whole; t.len()],
+        corners: t,
+    })
+    .unwrap();
+    let p = mesh.reference();
+    let one = mesh.sums_on::<f64>(Mode::Solid, p, 1);
+    for threads in [2, 3, 8] {
+        let many = mesh.sums_on::<f64>(Mode::Solid, p, threads);
+        for k in 0..10 {
+            assert_eq!(
+                one.value[k].to_bits(),
+                many.value[k].to_bits(),
+                "sum {k}, {threads} threads"
+            );
+            assert_eq!(one.magnitude[k].to_bits(), many.magnitude[k].to_bits());
+        }
+        assert_eq!(one.n, many.n);
+    }
+    let hi = mesh.sums_on::<DD>(Mode::Solid, p, 1);
+    for (k, e) in one.error().iter().enumerate() {
+        let d = (DD::of(one.value[k]) - hi.value[k]).f64().abs();
+        assert!(d <= *e, "sum {k}: {d:e} > {e:e}");
+    }
+}

@@ -838,10 +838,7 @@ fn copies_nest_through_includes_and_a_mirror_of_a_mirror_is_the_part() {
 /// x, a prism in z, a mesh's own data reflected).
 #[test]
 fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
-    let mesh = format!(
-        "{}/shapes/meshes/bracket.stl",
-        env!("CARGO_MANIFEST_DIR")
-    );
+    let mesh = format!("{}/shapes/meshes/bracket.stl", env!("CARGO_MANIFEST_DIR"));
     let shapes = [
         "shape = \"cone\"\nmass = 2.0\nradius = 1.5\ntop_radius = 0.5\ninner_radius = 1.0\ntop_inner_radius = 0.25\nlength = 3\ncenter = [2, 1, -0.5]".to_string(),
         "shape = \"torus\"\nmass = 2.0\nradius = 2\ntube_radius = 0.5\ncenter = [2, 1, -0.5]".to_string(),
@@ -859,11 +856,14 @@ fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
             "[[part]]\nname = \"p\"\n{shape}\nrotation = {{ axis = [1, 2, 3], degrees = 37 }}\n"
         );
         let (m, c, j) = body(&part);
-        let mirrored = format!("{part}mirror = {{ normal = {}, origin = {} }}\n", v(normal), v(o));
+        let mirrored = format!(
+            "{part}mirror = {{ normal = {}, origin = {} }}\n",
+            v(normal),
+            v(o)
+        );
         let sj = mul(&mul(&s, &j), &s);
-        let image: [f64; 3] = std::array::from_fn(|i| {
-            o[i] + (0..3).map(|k| s[i][k] * (c[k] - o[k])).sum::<f64>()
-        });
+        let image: [f64; 3] =
+            std::array::from_fn(|i| o[i] + (0..3).map(|k| s[i][k] * (c[k] - o[k])).sum::<f64>());
         let g: [f64; 3] = std::array::from_fn(|i| (c[i] + image[i]) / 2.0);
         let h: [f64; 3] = std::array::from_fn(|i| c[i] - g[i]);
         let hh: f64 = h.iter().map(|x| x * x).sum();
