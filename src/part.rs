@@ -487,6 +487,26 @@ fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
     std::array::from_fn(|i| a[i] - b[i])
 }
 
+/// R C Rᵀ, symmetric by construction (the upper triangle formed, the
+/// lower its mirror): a full local tensor C in the file's axes (a given
+/// inertia, a prism's).
+fn turned<T: Real>(r: &M3<T>, local: &M3<T>) -> M3<T> {
+    let mut j = [[T::of(0.0); 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut v = T::of(0.0);
+            for k in 0..3 {
+                for l in 0..3 {
+                    v = v + r[a][k] * local[k][l] * r[b][l];
+                }
+            }
+            j[a][b] = v;
+            j[b][a] = v;
+        }
+    }
+    j
+}
+
 /// ∫ρρᵀ dm of a part about its own centroid, in the file's axes and units.
 ///
 /// A uniform segment of length a centred on 0 has ∫x² dm = m a²/12, and each
@@ -642,18 +662,7 @@ fn own_second_moment_in<T: Real>(
                 })
             });
             let r: M3<T> = orientation.matrix();
-            for a in 0..3 {
-                for b in a..3 {
-                    let mut v = zero;
-                    for k in 0..3 {
-                        for l in 0..3 {
-                            v = v + r[a][k] * local[k][l] * r[b][l];
-                        }
-                    }
-                    j[a][b] = v;
-                    j[b][a] = v;
-                }
-            }
+            let j = turned(&r, &local);
             let own = bound.then(|| {
                 let mu = errors().1;
                 let r = r.map(|row| row.map(T::f64));

@@ -405,23 +405,17 @@ pub fn quantity_pattern() -> String {
     format!("^\\s*{number}\\s*(?:1|{terms})(?:\\s*/\\s*{terms})?\\s*$")
 }
 
-/// Split `"7.85 g/cm^3"` into the number and the unit text.
-pub fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
-    let t = text.trim_start();
-    let b = t.as_bytes();
-    let mut i = 0;
-    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
-        i += 1;
-    }
-    let digits_start = i;
+/// Where the unsigned number that starts at `i` in `b` ends: digits, `.`
+/// and `_`, then an exponent only if digits follow it (so "3 m" is not
+/// read as "3 e…"); `i` itself if no digit or point is there. The one rule
+/// of a number's extent, for quantities (`split_number`) and expressions
+/// (`expr`).
+pub fn number_end(b: &[u8], mut i: usize) -> usize {
+    let start = i;
     while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.' || b[i] == b'_') {
         i += 1;
     }
-    if i == digits_start {
-        return Err(UnitError::NoNumber);
-    }
-    // An exponent only if digits follow it, so "3 m" is not read as "3 e…".
-    if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
+    if i > start && i < b.len() && (b[i] == b'e' || b[i] == b'E') {
         let mut j = i + 1;
         if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
             j += 1;
@@ -432,6 +426,22 @@ pub fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
             }
             i = j;
         }
+    }
+    i
+}
+
+/// Split `"7.85 g/cm^3"` into the number and the unit text.
+pub fn split_number(text: &str) -> Result<(f64, &str), UnitError> {
+    let t = text.trim_start();
+    let b = t.as_bytes();
+    let mut i = 0;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let digits_start = i;
+    i = number_end(b, i);
+    if i == digits_start {
+        return Err(UnitError::NoNumber);
     }
     let number: f64 = t[..i]
         .replace('_', "")

@@ -30,23 +30,8 @@ fn tokens(text: &str) -> Result<Vec<Token>, Error> {
         if c.is_whitespace() {
             i += c.len_utf8();
         } else if c.is_ascii_digit() || c == '.' {
-            while i < b.len() && (b[i].is_ascii_digit() || b[i] == b'.' || b[i] == b'_') {
-                i += 1;
-            }
-            // An exponent only if digits follow it, so "3 e" is not read
-            // as "3e…" (as `units::split_number` reads it).
-            if i < b.len() && (b[i] == b'e' || b[i] == b'E') {
-                let mut j = i + 1;
-                if j < b.len() && (b[j] == b'+' || b[j] == b'-') {
-                    j += 1;
-                }
-                if j < b.len() && b[j].is_ascii_digit() {
-                    while j < b.len() && b[j].is_ascii_digit() {
-                        j += 1;
-                    }
-                    i = j;
-                }
-            }
+            // Where a quantity's number ends (`units::number_end`).
+            i = crate::units::number_end(b, i);
             out.push(Token {
                 tok: Tok::Num(number(&text[start..i], start..i)?),
                 at: start..i,

@@ -133,19 +133,7 @@ pub(super) fn prism_second_moment<T: Real>(
         [zero, zero, m * l * l / T::of(12.0)],
     ];
     let r: M3<T> = orientation.matrix();
-    let mut j = [[zero; 3]; 3];
-    for a in 0..3 {
-        for b in a..3 {
-            let mut v = zero;
-            for k in 0..3 {
-                for c in 0..3 {
-                    v = v + r[a][k] * local[k][c] * r[b][c];
-                }
-            }
-            j[a][b] = v;
-            j[b][a] = v;
-        }
-    }
+    let j = super::turned(&r, &local);
     let own = bound.then(|| {
         let mu = errors().1;
         let r = r.map(|row| row.map(T::f64));

@@ -391,6 +391,37 @@ fn t(a: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
     std::array::from_fn(|i| std::array::from_fn(|j| a[j][i]))
 }
 
+/// S = E − 2 n nᵀ/|n|².
+fn reflection(normal: [f64; 3]) -> [[f64; 3]; 3] {
+    let nn: f64 = normal.iter().map(|x| x * x).sum();
+    std::array::from_fn(|i| {
+        std::array::from_fn(|k| (if i == k { 1.0 } else { 0.0 }) - 2.0 * normal[i] * normal[k] / nn)
+    })
+}
+
+/// A body (m, c, J about c) and its mirror image in the plane through `o`
+/// normal to `normal`, formed here: the image's centre o + S (c − o) and
+/// tensor S J S, the pair's centre midway and its tensor by parallel axes.
+fn pair_with_image(
+    (m, c, j): (f64, [f64; 3], [[f64; 3]; 3]),
+    normal: [f64; 3],
+    o: [f64; 3],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    let s = reflection(normal);
+    let sj = mul(&mul(&s, &j), &s);
+    let image: [f64; 3] =
+        std::array::from_fn(|i| o[i] + (0..3).map(|k| s[i][k] * (c[k] - o[k])).sum::<f64>());
+    let g: [f64; 3] = std::array::from_fn(|i| (c[i] + image[i]) / 2.0);
+    let h: [f64; 3] = std::array::from_fn(|i| c[i] - g[i]);
+    let hh: f64 = h.iter().map(|x| x * x).sum();
+    let want = std::array::from_fn(|i| {
+        std::array::from_fn(|k| {
+            j[i][k] + sj[i][k] + 2.0 * m * ((if i == k { hh } else { 0.0 }) - h[i] * h[k])
+        })
+    });
+    (2.0 * m, g, want)
+}
+
 #[test]
 fn a_mirrored_box_is_s_j_s_and_the_hand_mirrored_file() {
     let (m, size, c) = (3.0, [1.0, 2.0, 3.0], [2.0, 1.0, -0.5]);
@@ -412,23 +443,12 @@ fn a_mirrored_box_is_s_j_s_and_the_hand_mirrored_file() {
     let dm: [[f64; 3]; 3] =
         std::array::from_fn(|i| std::array::from_fn(|j| if i == j { d[i] } else { 0.0 }));
     let j = mul(&mul(&r, &dm), &t(&r));
-    let nn: f64 = normal.iter().map(|x| x * x).sum();
-    let s: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|k| (if i == k { 1.0 } else { 0.0 }) - 2.0 * normal[i] * normal[k] / nn)
-    });
-    let sj = mul(&mul(&s, &j), &s);
-    let sc = mul(&s, &[[c[0] - o[0]; 3], [c[1] - o[1]; 3], [c[2] - o[2]; 3]]);
-    let image: [f64; 3] = std::array::from_fn(|i| o[i] + sc[i][0]);
-    let g: [f64; 3] = std::array::from_fn(|i| (c[i] + image[i]) / 2.0);
-    let h: [f64; 3] = std::array::from_fn(|i| c[i] - g[i]);
-    let hh: f64 = h.iter().map(|x| x * x).sum();
-    let want: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|k| {
-            j[i][k] + sj[i][k] + 2.0 * m * ((if i == k { hh } else { 0.0 }) - h[i] * h[k])
-        })
-    });
+    let s = reflection(normal);
+    let pair = pair_with_image((m, c, j), normal, o);
+    // The image's centre, 2 g − c.
+    let image: [f64; 3] = std::array::from_fn(|i| 2.0 * pair.1[i] - c[i]);
     let got = body(&mirrored);
-    close(got, (2.0 * m, g, want), 4.0, 1e-14);
+    close(got, pair, 4.0, 1e-14);
     // The image written by hand: S R F (F flips local x) as a matrix.
     let f = [[-1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
     let srf = mul(&mul(&s, &r), &f);
@@ -847,10 +867,6 @@ fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
         format!("shape = \"mesh\"\nfile = \"{mesh}\"\nmesh_unit = \"m\"\nmass = 2.0\norigin = [2, 1, -0.5]"),
     ];
     let (normal, o) = ([1.0, -2.0, 2.0], [0.5, 1.0, -1.0]);
-    let nn: f64 = normal.iter().map(|x| x * x).sum();
-    let s: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        std::array::from_fn(|k| (if i == k { 1.0 } else { 0.0 }) - 2.0 * normal[i] * normal[k] / nn)
-    });
     for shape in shapes {
         let part = format!(
             "[[part]]\nname = \"p\"\n{shape}\nrotation = {{ axis = [1, 2, 3], degrees = 37 }}\n"
@@ -861,18 +877,12 @@ fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
             v(normal),
             v(o)
         );
-        let sj = mul(&mul(&s, &j), &s);
-        let image: [f64; 3] =
-            std::array::from_fn(|i| o[i] + (0..3).map(|k| s[i][k] * (c[k] - o[k])).sum::<f64>());
-        let g: [f64; 3] = std::array::from_fn(|i| (c[i] + image[i]) / 2.0);
-        let h: [f64; 3] = std::array::from_fn(|i| c[i] - g[i]);
-        let hh: f64 = h.iter().map(|x| x * x).sum();
-        let want: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|k| {
-                j[i][k] + sj[i][k] + 2.0 * m * ((if i == k { hh } else { 0.0 }) - h[i] * h[k])
-            })
-        });
-        close(body(&mirrored), (2.0 * m, g, want), 4.0, 1e-13);
+        close(
+            body(&mirrored),
+            pair_with_image((m, c, j), normal, o),
+            4.0,
+            1e-13,
+        );
         assert_eq!(names(&mirrored), ["p[0]", "p[1]"], "{shape}");
     }
 }
