@@ -191,7 +191,12 @@ fn onto_input(path: &str, input: &Path) -> Diagnostic {
     let input = if input == Path::new("-") {
         "the file on standard input".to_string()
     } else {
-        format!("the part file `{}`", crate::diag::display_path(input))
+        let what = if crate::mesh::Format::of(input).is_some() {
+            "the mesh file"
+        } else {
+            "the part file"
+        };
+        format!("{what} `{}`", crate::diag::display_path(input))
     };
     Diagnostic::plain(format!(
         "`-o {path}` is {input}: the report would replace it"

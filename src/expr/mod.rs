@@ -81,6 +81,11 @@ pub fn is_name(name: &str) -> bool {
 pub struct Value {
     pub dim: Dim,
     pub num: Num,
+    /// Whether an angle unit (`rad`, `deg`, `rev`: dimensionless, as
+    /// angles are) went into it other than through `sin`, `cos` or `tan`,
+    /// for a key that is a plain number of its own unit (`step_degrees`):
+    /// `"90 deg"` there would be read as 1.5708.
+    pub angle: bool,
 }
 
 /// Exact while it can be, double-double after.
@@ -132,6 +137,7 @@ impl Value {
         Value {
             dim,
             num: Num::Exact(q),
+            angle: false,
         }
     }
 
@@ -141,6 +147,7 @@ impl Value {
         Value {
             dim: Dim::DIMENSIONLESS,
             num: of_f64(x),
+            angle: false,
         }
     }
 
@@ -336,7 +343,10 @@ fn name(
     if let Ok(u) = units::parse_unit(n) {
         let (num, den, pi) = u.factor.parts();
         if let Some(q) = Q::new(num, den, pi) {
-            return Ok(Value::exact(u.dim, q));
+            return Ok(Value {
+                angle: u.dim == Dim::DIMENSIONLESS,
+                ..Value::exact(u.dim, q)
+            });
         }
     }
     let names = known();
@@ -360,6 +370,7 @@ fn neg(a: Value) -> Value {
             Num::Exact(q) => Num::Exact(q.negated()),
             Num::Float(x) => Num::Float(-x),
         },
+        angle: a.angle,
     }
 }
 
@@ -398,14 +409,17 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
         Op::Add => Value {
             dim: same_dim("+", a, b, at.clone())?,
             num: exact(Q::plus, |x, y| x + y),
+            angle: a.angle || b.angle,
         },
         Op::Sub => Value {
             dim: same_dim("-", a, b, at.clone())?,
             num: exact(|x, y| x.plus(y.negated()), |x, y| x - y),
+            angle: a.angle || b.angle,
         },
         Op::Mul => Value {
             dim: dims(a.dim, b.dim, 1, at.clone())?,
             num: exact(Q::times, |x, y| x * y),
+            angle: a.angle || b.angle,
         },
         Op::Div => {
             if b.num.is_zero() {
@@ -414,6 +428,7 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
             Value {
                 dim: dims(a.dim, b.dim, -1, at.clone())?,
                 num: exact(|x, y| x.times(y.recip()?), |x, y| x / y),
+                angle: a.angle || b.angle,
             }
         }
         Op::Pow => pow(a, b, at.clone())?,
@@ -486,7 +501,11 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
                 },
                 Num::Float(x) => Num::Float(powi_dd(x, k)),
             };
-            Ok(Value { dim, num })
+            Ok(Value {
+                dim,
+                num,
+                angle: a.angle,
+            })
         }
         Some((p, q)) => {
             let dim = scaled(p, q)?;
@@ -501,7 +520,11 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
                 (x, 2) => Num::Float(powi_dd(x.dd().sqrt(), p as i64)),
                 (x, _) => Num::Float(DD::from(x.dd().f64().powf(p as f64 / q as f64))),
             };
-            Ok(Value { dim, num })
+            Ok(Value {
+                dim,
+                num,
+                angle: a.angle,
+            })
         }
         None => {
             if a.dim != Dim::DIMENSIONLESS {
@@ -517,6 +540,7 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
             Ok(Value {
                 dim: a.dim,
                 num: Num::Float(DD::from(v)),
+                angle: a.angle || b.angle,
             })
         }
     }
@@ -584,6 +608,7 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
                     time: t / 2,
                 },
                 num,
+                angle: a.angle,
             }
         }
         Func::Sin | Func::Cos | Func::Tan => {
@@ -612,6 +637,7 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
                 Num::Float(x) if x.hi < 0.0 => Num::Float(-x),
                 n => n,
             },
+            angle: a.angle,
         },
         Func::Min | Func::Max => {
             let mut best = a;
@@ -633,7 +659,12 @@ fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {
                 }
                 .unwrap_or_else(|| b.num.dd() > best.num.dd());
                 if (f == Func::Min && less) || (f == Func::Max && more) {
-                    best = b;
+                    best = Value {
+                        angle: best.angle || b.angle,
+                        ..b
+                    };
+                } else {
+                    best.angle |= b.angle;
                 }
             }
             best

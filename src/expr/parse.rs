@@ -236,6 +236,7 @@ impl Parser<'_> {
                 let one = Value {
                     dim: Dim::DIMENSIONLESS,
                     num: Num::Exact(Q::ONE),
+                    angle: false,
                 };
                 self.steps.push((Op::Push(quantity(one, u)), first..end));
                 self.steps.push((Op::Mul, first..end));
@@ -252,6 +253,7 @@ impl Parser<'_> {
                 let mut v = Value {
                     dim: Dim::DIMENSIONLESS,
                     num: n,
+                    angle: false,
                 };
                 let mut end = at.end;
                 if !bare && let Some((u, e)) = self.unit() {
@@ -434,5 +436,10 @@ fn quantity(v: Value, u: units::Unit) -> Value {
         },
         (x, _) => Num::Float(x.dd() * u.factor.dd()),
     };
-    Value { dim: u.dim, num }
+    // The only dimensionless units are the angles'.
+    Value {
+        dim: u.dim,
+        num,
+        angle: v.angle || u.dim == Dim::DIMENSIONLESS,
+    }
 }

@@ -61,7 +61,12 @@ fn is_binary_stl(bytes: &[u8]) -> bool {
         }
     }
     let start = bytes.iter().position(|b| !b.is_ascii_whitespace());
-    !start.is_some_and(|s| bytes[s..].starts_with(b"solid"))
+    // Keywords in any case, as most readers take them (`SOLID`).
+    !start.is_some_and(|s| {
+        bytes[s..]
+            .get(..5)
+            .is_some_and(|w| w.eq_ignore_ascii_case(b"solid"))
+    })
 }
 
 fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
@@ -182,6 +187,13 @@ fn ascii_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
         last = n;
         let mut ws = words(line);
         let Some(key) = ws.next() else { continue };
+        let upper;
+        let key = if key.iter().any(u8::is_ascii_uppercase) {
+            upper = key.to_ascii_lowercase();
+            &upper[..]
+        } else {
+            key
+        };
         match key {
             b"solid" | b"endsolid" if facet.is_none() => {}
             b"facet" if facet.is_none() => facet = Some((n, Vec::with_capacity(3))),

@@ -115,8 +115,12 @@ fn binary_and_ascii_stl_and_obj_of_one_mesh_agree_exactly() {
     let x = load(Format::Stl, &ascii(&t), Mode::Solid).unwrap();
     let y = load(Format::Stl, &binary(&t), Mode::Solid).unwrap();
     let z = load(Format::Obj, &obj(&t), Mode::Solid).unwrap();
+    // ASCII keywords in capitals, as some exporters write them: the same.
+    let upper = ascii(&t).to_ascii_uppercase();
+    let u = load(Format::Stl, &upper, Mode::Solid).unwrap();
     assert_eq!(x, y);
     assert_eq!(x, z);
+    assert_eq!(x, u);
 }
 
 #[test]

@@ -164,6 +164,11 @@ impl Ctx<'_> {
     ) -> Result<f64, Diagnostic> {
         let value = match q.get_ref() {
             Quantity::Number(x) => *x,
+            // A plain number's string (`count = "32"`) is read as an
+            // expression, whose angle units are refused there (`"4 rad"`).
+            Quantity::Text(t) if dim == Dim::DIMENSIONLESS => self
+                .expression(q, t, key, dim, self.units.factor(dim))?
+                .expect("invariant: a dimensionless key's string is always an expression"),
             Quantity::Text(t) => match units::parse_quantity_in(t, dim, self.units) {
                 Ok(v) => v,
                 Err(e) => match self.expression(q, t, key, dim, self.units.factor(dim))? {

@@ -364,6 +364,16 @@ impl Ctx<'_> {
                 )
                 .help(format!("e.g. {}", dim.example())));
         }
+        if dim == Dim::DIMENSIONLESS && v.angle {
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`{key}` is a plain number, but the expression has an angle unit in it"),
+                )
+                .help(format!(
+                    "angles are dimensionless, so `90 deg` would be read as 1.5708 (radians); write `{key}` without `deg`, `rad` or `rev` (in a parameter too)"
+                )));
+        }
         let x = v.in_units(factor);
         if !x.is_finite() {
             return Err(self.err(

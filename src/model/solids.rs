@@ -134,13 +134,18 @@ impl Ctx<'_> {
     pub(super) fn cone(&self, p: &RawPart, span: Range<usize>) -> Result<Vec<f64>, Diagnostic> {
         let info = crate::shapes::Shape::Cone.info();
         let missing = |key: &str| {
-            self.err(span.clone(), format!("this cone needs `{key}`"))
+            let what = if key == "top_radius" {
+                "`top_radius` (0 for a full cone)".to_string()
+            } else {
+                format!("`{key}`")
+            };
+            self.err(span.clone(), format!("this cone needs {what}"))
                 .help(info.help)
         };
         let base = self.radius_of(p, false)?.ok_or_else(|| missing("radius"))?;
         let top = self
             .plain(p, "top_radius")
-            .ok_or_else(|| missing("top_radius` (0 for a full cone)"))?;
+            .ok_or_else(|| missing("top_radius"))?;
         let mut out = [0.0; 5];
         for (i, r) in [(0, &base), (2, &top)] {
             let v = self.radius_si(r)?;

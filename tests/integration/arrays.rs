@@ -886,3 +886,46 @@ fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
         assert_eq!(names(&mirrored), ["p[0]", "p[1]"], "{shape}");
     }
 }
+
+/// Angles are dimensionless, so an angle unit in `step_degrees` (or
+/// `count`), directly or through a parameter, would be read in radians as
+/// degrees: refused at the key. Plain numbers and expressions of them work,
+/// and `sin(30 deg)` (an angle turned into a ratio) is a plain number.
+#[test]
+fn an_angle_unit_in_step_degrees_or_count_is_refused() {
+    let part = "[[part]]\nname = \"p\"\nshape = \"point\"\nmass = 1\ncenter = [1, 0, 0]\n";
+    for (params, array, col) in [
+        (
+            "",
+            "{ count = 4, axis = [0, 0, 1], step_degrees = \"90 deg\" }",
+            55,
+        ),
+        (
+            "",
+            "{ count = 4, axis = [0, 0, 1], step_degrees = \"pi / 2 rad\" }",
+            55,
+        ),
+        ("", "{ count = \"4 rad\", step = [1, 0, 0] }", 19),
+        (
+            "[params]\nn = 4\nturn = \"360 deg / n\"\n",
+            "{ count = \"n\", axis = [0, 0, 1], step_degrees = \"turn\" }",
+            57,
+        ),
+    ] {
+        let text = format!("{params}{part}array = {array}\n");
+        let err = refused(&text);
+        let line = 6 + params.lines().count();
+        assert!(
+            err.contains(&format!("bad.toml:{line}:{col}:")),
+            "{text}\n{err}"
+        );
+        assert!(err.contains("angle unit"), "{err}");
+    }
+    let ok = format!(
+        "[params]\nn = 4\n{part}array = {{ count = \"n\", axis = [0, 0, 1], step_degrees = \"sin(30 deg) * 720 / n\" }}\n"
+    );
+    let spelt = format!(
+        "{part}\n[[part]]\nname = \"q\"\nshape = \"point\"\nmass = 1\ncenter = [0, 1, 0]\n\n[[part]]\nname = \"r\"\nshape = \"point\"\nmass = 1\ncenter = [-1, 0, 0]\n\n[[part]]\nname = \"s\"\nshape = \"point\"\nmass = 1\ncenter = [0, -1, 0]\n"
+    );
+    close(body(&ok), body(&spelt), 1.0, 1e-15);
+}
