@@ -191,7 +191,16 @@ impl Ctx<'_> {
         for p in passed {
             let Some(def) = defs.get_mut(p.name.as_str()) else {
                 let near = units::suggest(&p.name, defs.keys().copied());
-                return Err(p.undefined.clone().suggest(near));
+                // `--set` names the file (a `diff` reads two), an include's
+                // `params` is said at its key.
+                let d = match &p.given {
+                    Given::Set(_) => Diagnostic::plain(format!(
+                        "`--set {}`: {} defines no parameter `{}` in `[params]`",
+                        p.name, self.source.name, p.name
+                    )),
+                    Given::Value(_) => p.undefined.clone(),
+                };
+                return Err(d.suggest(near));
             };
             *def = match &p.given {
                 Given::Set(source) => Def::Set(source),

@@ -341,7 +341,7 @@ fn set_refuses_a_name_the_file_does_not_define() {
     );
     let e = refused(&text, &["--set", "lge=1 m"]);
     assert!(
-        e.starts_with("error: `--set lge`: the file defines no parameter `lge`"),
+        e.starts_with("error: `--set lge`: ") && e.contains(".toml defines no parameter `lge`"),
         "{e}"
     );
     assert!(e.contains("did you mean `leg`?"), "{e}");
