@@ -488,6 +488,7 @@ mod tests {
                         },
                         span: 0..0,
                         assembly: Vec::new(),
+                        tol: None,
                     });
                 }
             }

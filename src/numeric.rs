@@ -59,6 +59,19 @@ pub trait Real:
     fn pi() -> Self;
     /// A double-double rounded to the type.
     fn of_dd(x: DD) -> Self;
+    /// An input `x` moving at the rate `dx` (per unit of a tolerance):
+    /// `x` itself for a number that carries no derivative (f64, DD), a
+    /// dual number `x + dx ε` for `dual::Dual` (forward-mode automatic
+    /// differentiation through the same arithmetic).
+    #[inline]
+    fn var(x: f64, _dx: f64) -> Self {
+        Self::of(x)
+    }
+    /// `var` for an input formed in double-double.
+    #[inline]
+    fn var_dd(x: DD, _dx: f64) -> Self {
+        Self::of_dd(x)
+    }
 }
 
 /// Reduce degrees to x in [−45°, 45°] and a quarter-turn count q: both steps

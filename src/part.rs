@@ -53,6 +53,9 @@ pub struct Part {
     /// Its `[[part]]` table in the file (for a part of a sub-assembly, the
     /// table that includes it), to point at it when a sum overflows.
     pub span: Range<usize>,
+    /// How its numbers move with its file's tolerances (none for most
+    /// parts), in its own file's units and frame.
+    pub tol: Option<Arc<[Dep]>>,
 }
 
 /// A body's parts, for the passes of the composer and of the per-part
@@ -72,6 +75,81 @@ impl Parts for Vec<Part> {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
         self.iter().for_each(f);
     }
+}
+
+/// One number of a part's `Spec` that a tolerance can move: the model
+/// records which a toleranced key fills (`model::tolerance`), and
+/// `uncertainty` moves it (Monte Carlo) or differentiates by it (linear).
+/// `Spec::number_mut` is the one map from a slot to its number.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Slot {
+    /// The given mass, or the density (`MassSpec`).
+    Mass,
+    /// Coordinate i of the placing point: `center`, `corner`, `from`, or a
+    /// prism's or mesh's `origin`.
+    At(u8),
+    /// Dimension k: `Place::Centered`'s `extent[k]`, `Place::Axial`'s
+    /// `dims[k]`; a prism's `length` is `Dim(0)`.
+    Dim(u8),
+    /// Component i of edge e (`Place::Edges`).
+    Edge(u8, u8),
+    /// Coordinate i of a rod's `to`.
+    To(u8),
+    /// Coordinate i of a triangle's vertex v.
+    Vertex(u8, u8),
+}
+
+/// How one number of a part moves with a source of uncertainty (a
+/// toleranced quantity, `model::tolerance`): ∂(number)/∂z in the file's
+/// units, z the source's standardised variable (mean 0, standard
+/// deviation 1).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dep {
+    pub slot: Slot,
+    /// Index in its file's `Model::sources`.
+    pub source: u32,
+    pub rate: f64,
+}
+
+/// How a part's physics reads the numbers of its `Spec`: each as it is
+/// (`Fixed`), or one of them seeded with a unit derivative (`Seed`), so
+/// that evaluated in `dual::Dual` every result carries its derivative by
+/// that number (`Real::var`).
+pub trait Lift: Copy {
+    /// The rate at which the number in `slot` moves.
+    fn rate(self, slot: Slot) -> f64;
+}
+
+/// Every number as it is: what the composer and every report read.
+#[derive(Clone, Copy, Debug)]
+pub struct Fixed;
+
+impl Lift for Fixed {
+    #[inline(always)]
+    fn rate(self, _: Slot) -> f64 {
+        0.0
+    }
+}
+
+/// The number in one slot seeded with the rate 1.
+#[derive(Clone, Copy, Debug)]
+pub struct Seed(pub Slot);
+
+impl Lift for Seed {
+    #[inline]
+    fn rate(self, slot: Slot) -> f64 {
+        if slot == self.0 { 1.0 } else { 0.0 }
+    }
+}
+
+/// The slots of a coordinate triple.
+fn xyz(f: impl Fn(u8) -> Slot) -> [Slot; 3] {
+    [f(0), f(1), f(2)]
+}
+
+/// Three coordinates read through `l`.
+fn lift3<T: Real, L: Lift>(l: L, v: &[f64; 3], slots: [Slot; 3]) -> [T; 3] {
+    std::array::from_fn(|i| T::var(v[i], l.rate(slots[i])))
 }
 
 /// A part's mass properties in SI, derived from its `Spec` by exact unit
@@ -190,6 +268,41 @@ pub struct Spec {
     pub placed: Placed,
 }
 
+impl Spec {
+    /// The number in `slot`, if the part has it (the one map from a
+    /// `Slot` to a `Spec`'s number).
+    pub fn number_mut(&mut self, slot: Slot) -> Option<&mut f64> {
+        let three = |i: u8| usize::from(i).min(3);
+        match (slot, &mut self.place) {
+            (Slot::Mass, _) => Some(match &mut self.mass {
+                MassSpec::Given(m) => m,
+                MassSpec::Density(d) => d,
+            }),
+            (
+                Slot::At(i),
+                Place::Centered { center: p, .. }
+                | Place::Given { center: p, .. }
+                | Place::Axial { center: p, .. }
+                | Place::Edges { corner: p, .. }
+                | Place::FromTo { from: p, .. }
+                | Place::Prism { origin: p, .. }
+                | Place::Mesh { origin: p, .. },
+            ) => p.get_mut(three(i)),
+            (Slot::Dim(k), Place::Centered { extent, .. }) => extent.get_mut(usize::from(k)),
+            (Slot::Dim(k), Place::Axial { dims, .. }) => dims.get_mut(usize::from(k)),
+            (Slot::Dim(0), Place::Prism { length, .. }) => Some(length),
+            (Slot::Edge(e, i), Place::Edges { edges, .. }) => edges
+                .get_mut(usize::from(e))
+                .and_then(|v| v.get_mut(three(i))),
+            (Slot::To(i), Place::FromTo { to, .. }) => to.get_mut(three(i)),
+            (Slot::Vertex(v, i), Place::Vertices(p)) => {
+                p.get_mut(usize::from(v)).and_then(|v| v.get_mut(three(i)))
+            }
+            _ => None,
+        }
+    }
+}
+
 /// The rounding of a part's numbers by the frames that placed it, for its
 /// error bounds (`part::error`): `units` of f64's unit roundoff, relative,
 /// in its sizes, edges, mass or density and tensor entries; `at`, absolute
@@ -281,10 +394,6 @@ pub enum Place {
     },
 }
 
-fn sub<T: Real>(a: [f64; 3], b: [f64; 3]) -> [T; 3] {
-    std::array::from_fn(|i| T::of(a[i]) - T::of(b[i]))
-}
-
 /// The diagonal entry `a` of ∫ρρᵀ dm = tr(I)/2 E − I of a given tensor:
 /// (I_jj + I_kk − I_aa)/2, formed as ((I_jj − I_aa) + I_kk)/2 with I_jj
 /// the one of the other two closer to I_aa.
@@ -323,26 +432,48 @@ fn diagonal_magnitude<T: Real>(i: &M3<T>, a: usize) -> f64 {
 /// Mass of a part (file units): given, or density times volume, area or
 /// length; negative for a cut-out.
 pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
-    let m: T = unsigned_mass_of(shape, spec);
+    mass_in(shape, spec, Fixed)
+}
+
+/// `mass_of`, the spec's numbers read through `l`.
+pub fn mass_in<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> T {
+    let m: T = unsigned_mass_of(shape, spec, l);
     if spec.removed { -m } else { m }
 }
 
-fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
+/// The dimensions of a centred or axial part, read through `l`.
+fn dims_in<T: Real, L: Lift, const N: usize>(d: &[f64; N], l: L) -> [T; N] {
+    std::array::from_fn(|k| T::var(d[k], l.rate(Slot::Dim(k as u8))))
+}
+
+/// A corner-and-edges part's edges, read through `l`.
+fn edges_in<T: Real, L: Lift>(edges: &[[f64; 3]; 3], l: L) -> [[T; 3]; 3] {
+    std::array::from_fn(|e| lift3(l, &edges[e], xyz(|i| Slot::Edge(e as u8, i))))
+}
+
+/// A rod's `to − from`, read through `l`.
+fn span_in<T: Real, L: Lift>(from: &[f64; 3], to: &[f64; 3], l: L) -> [T; 3] {
+    let a: [T; 3] = lift3(l, from, xyz(Slot::At));
+    let b: [T; 3] = lift3(l, to, xyz(Slot::To));
+    std::array::from_fn(|i| b[i] - a[i])
+}
+
+fn unsigned_mass_of<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> T {
     match spec.mass {
-        MassSpec::Given(m) => T::of(m),
+        MassSpec::Given(m) => T::var(m, l.rate(Slot::Mass)),
         MassSpec::Density(rho) => {
             let measure = match (&spec.place, shape) {
                 (Place::Centered { extent: e, .. }, _) => {
-                    let e: [T; 3] = e.map(T::of);
+                    let e: [T; 3] = dims_in(e, l);
                     shape.measure_of(&e[..shape.dim_count()])
                 }
-                (Place::Edges { edges, .. }, _) => edges[..shape.edge_count()]
+                (Place::Edges { edges, .. }, _) => edges_in::<T, L>(edges, l)[..shape.edge_count()]
                     .iter()
-                    .fold(T::of(1.0), |acc, e| acc * norm_of(&e.map(T::of))),
-                (Place::FromTo { from, to }, _) => norm_of(&sub::<T>(*to, *from)),
+                    .fold(T::of(1.0), |acc, e| acc * norm_of(e)),
+                (Place::FromTo { from, to }, _) => norm_of(&span_in::<T, L>(from, to, l)),
                 (Place::Given { .. }, _) => T::of(1.0),
                 (Place::Axial { dims, .. }, _) => {
-                    let d: [T; 5] = dims.map(T::of);
+                    let d: [T; 5] = dims_in(dims, l);
                     shape.measure_of(&d[..shape.dim_count()])
                 }
                 (
@@ -352,7 +483,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     _,
                 ) => {
                     let area = crate::shapes::prism::polygon(polygon).area;
-                    T::of_dd(area) * T::of(*length)
+                    T::of_dd(area) * T::var(*length, l.rate(Slot::Dim(0)))
                 }
                 (Place::Mesh { scale, mesh, .. }, _) => {
                     let s = T::of_dd(*scale);
@@ -363,7 +494,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     m
                 }
                 (Place::Vertices(v), _) => {
-                    let d = triangle_offsets::<T>(v);
+                    let d = triangle_offsets::<T, L>(v, l);
                     let (a, b) = (sub3(d[1], d[0]), sub3(d[2], d[0]));
                     let c = [
                         a[1] * b[2] - a[2] * b[1],
@@ -373,7 +504,7 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
                     norm_of(&c) / T::of(2.0)
                 }
             };
-            T::of(rho) * measure
+            T::var(rho, l.rate(Slot::Mass)) * measure
         }
     }
 }
@@ -382,17 +513,28 @@ fn unsigned_mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
 /// its edges is not an f64 in general, and far from the origin its rounding
 /// would move the part relative to its neighbours.
 pub fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
+    centroid_in(shape, place, Fixed)
+}
+
+/// `centroid` in the arithmetic `T`, the numbers read through `l` (in
+/// double-double with `Fixed`, the same operations as `centroid`).
+pub fn centroid_in<T: Real, L: Lift>(shape: Shape, place: &Place, l: L) -> [T; 3] {
+    let half = T::of(0.5);
     match place {
-        Place::Axial { .. } | Place::Prism { .. } => offset::centroid(shape, place),
-        Place::Centered { center, .. } | Place::Given { center, .. } => center.map(DD::of),
-        Place::Vertices(v) => triangle_centroid(v),
-        Place::Edges { corner, edges } => std::array::from_fn(|i| {
-            edges
-                .iter()
-                .fold(DD::of(corner[i]), |acc, e| acc + DD::of(e[i] * 0.5))
-        }),
+        Place::Axial { .. } | Place::Prism { .. } => offset::centroid(shape, place, l),
+        Place::Centered { center, .. } | Place::Given { center, .. } => {
+            lift3(l, center, xyz(Slot::At))
+        }
+        Place::Vertices(v) => triangle_centroid(v, l),
+        Place::Edges { corner, edges } => {
+            let c: [T; 3] = lift3(l, corner, xyz(Slot::At));
+            let e: [[T; 3]; 3] = edges_in(edges, l);
+            std::array::from_fn(|i| e.iter().fold(c[i], |acc, e| acc + e[i] * half))
+        }
         Place::FromTo { from, to } => {
-            std::array::from_fn(|i| (DD::of(from[i]) + DD::of(to[i])).mul_f64(0.5))
+            let a: [T; 3] = lift3(l, from, xyz(Slot::At));
+            let b: [T; 3] = lift3(l, to, xyz(Slot::To));
+            std::array::from_fn(|i| (a[i] + b[i]) * half)
         }
         Place::Mesh {
             origin,
@@ -400,11 +542,10 @@ pub fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
             scale,
             mesh,
         } => {
-            let r: M3<DD> = orientation.matrix();
-            let c = mesh.centroid.map(|x| x * *scale);
-            std::array::from_fn(|i| {
-                DD::of(origin[i]) + r[i][0] * c[0] + r[i][1] * c[1] + r[i][2] * c[2]
-            })
+            let r: M3<T> = orientation.matrix();
+            let c = mesh.centroid.map(|x| T::of_dd(x * *scale));
+            let o: [T; 3] = lift3(l, origin, xyz(Slot::At));
+            std::array::from_fn(|i| o[i] + r[i][0] * c[0] + r[i][1] * c[1] + r[i][2] * c[2])
         }
     }
 }
@@ -472,15 +613,24 @@ fn mesh_second_moment<T: Real>(
     (j, own)
 }
 
-fn triangle_centroid(v: &[[f64; 3]; 3]) -> [DD; 3] {
-    std::array::from_fn(|i| (DD::of(v[0][i]) + DD::of(v[1][i]) + DD::of(v[2][i])) / DD::of(3.0))
+fn triangle_centroid<T: Real, L: Lift>(v: &[[f64; 3]; 3], l: L) -> [T; 3] {
+    let p: [[T; 3]; 3] =
+        std::array::from_fn(|k| lift3(l, &v[k], xyz(|i| Slot::Vertex(k as u8, i))));
+    std::array::from_fn(|i| (p[0][i] + p[1][i] + p[2][i]) / T::of(3.0))
 }
 
 /// A triangle's vertices less its centroid, in double-double before the
-/// rounding to T: far from the origin the offsets keep their digits.
-fn triangle_offsets<T: Real>(v: &[[f64; 3]; 3]) -> [[T; 3]; 3] {
-    let g = triangle_centroid(v);
-    v.map(|p| std::array::from_fn(|i| T::of_dd(DD::of(p[i]) - g[i])))
+/// rounding to T: far from the origin the offsets keep their digits (the
+/// rates through `l` beside them: the vertex's less the centroid's).
+fn triangle_offsets<T: Real, L: Lift>(v: &[[f64; 3]; 3], l: L) -> [[T; 3]; 3] {
+    let g: [DD; 3] = triangle_centroid(v, Fixed);
+    let rate = |k: usize, i: usize| l.rate(Slot::Vertex(k as u8, i as u8));
+    std::array::from_fn(|k| {
+        std::array::from_fn(|i| {
+            let mean = (rate(0, i) + rate(1, i) + rate(2, i)) / 3.0;
+            T::var_dd(DD::of(v[k][i]) - g[i], rate(k, i) - mean)
+        })
+    })
 }
 
 fn sub3<T: Real>(a: [T; 3], b: [T; 3]) -> [T; 3] {
@@ -514,23 +664,36 @@ fn turned<T: Real>(r: &M3<T>, local: &M3<T>) -> M3<T> {
 /// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
 /// needs neither their lengths nor a rotation.
 pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
-    own_second_moment_in(shape, spec, m, false).0
+    own_second_moment_in(shape, spec, m, false, Fixed).0
+}
+
+/// A part's mass, centroid and own second moment (file units and axes)
+/// in the arithmetic `T`, its numbers read through `l`: in `dual::Dual`
+/// with a `Seed`, each with its derivative by the seeded number (the
+/// same functions as the composer's, so the derivatives are those of
+/// the figures it composes).
+pub fn physics_in<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> (T, [T; 3], M3<T>) {
+    let m: T = mass_in(shape, spec, l);
+    let c = centroid_in(shape, &spec.place, l);
+    let (j, _) = own_second_moment_in(shape, spec, m, false, l);
+    (m, c, j)
 }
 
 /// `own_second_moment`, with the error model of the arithmetic that formed
 /// it (`part::error`): the error bounds' share of each part.
 pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
-    let (j, own) = own_second_moment_in(shape, spec, m, true);
+    let (j, own) = own_second_moment_in(shape, spec, m, true, Fixed);
     (j, own.expect("invariant: the error model was asked for"))
 }
 
 /// The one path of both: the error model formed only when `bound` asks
 /// (the per-part figures and the checks on the input need none of it).
-fn own_second_moment_in<T: Real>(
+fn own_second_moment_in<T: Real, L: Lift>(
     shape: Shape,
     spec: &Spec,
     m: T,
     bound: bool,
+    l: L,
 ) -> (M3<T>, Option<Own>) {
     // The frames' rounding of the part's numbers, on top of its own: its
     // sizes and mass relative; a shape spanned by vectors the frames
@@ -586,8 +749,8 @@ fn own_second_moment_in<T: Real>(
         Place::Centered { .. } | Place::Axial { .. } => {
             let (extent, orientation) = centred.expect("matched");
             let mut dims = [zero; 5];
-            for (d, x) in dims.iter_mut().zip(extent) {
-                *d = T::of(*x);
+            for (k, (d, x)) in dims.iter_mut().zip(extent).enumerate() {
+                *d = T::var(*x, l.rate(Slot::Dim(k as u8)));
             }
             let d = shape.second_moments(m, &dims[..shape.dim_count()]);
             if let Orientation::Identity = orientation {
@@ -626,21 +789,21 @@ fn own_second_moment_in<T: Real>(
             return (j, own);
         }
         Place::Edges { edges, .. } => {
-            for e in &edges[..shape.edge_count()] {
-                add_outer(e.map(T::of));
+            for e in &edges_in::<T, L>(edges, l)[..shape.edge_count()] {
+                add_outer(*e);
             }
         }
-        Place::FromTo { from, to } => add_outer(sub(*to, *from)),
+        Place::FromTo { from, to } => add_outer(span_in(from, to, l)),
         // ∫ρρᵀ dm of a uniform triangle about its centroid g is
         // (m/12) Σ dᵢdᵢᵀ with dᵢ = vᵢ − g (from ∫ρρᵀ dA = (A/12)(Σ vᵢvᵢᵀ + s sᵀ),
         // s = Σ vᵢ, about any origin).
         Place::Vertices(v) => {
-            for d in triangle_offsets::<T>(v) {
+            for d in triangle_offsets::<T, L>(v, l) {
                 add_outer(d);
             }
         }
         Place::Prism { .. } => {
-            let (j, own) = offset::prism_second_moment(spec, m, bound, errors);
+            let (j, own) = offset::prism_second_moment(spec, m, bound, errors, l);
             return (j, own);
         }
         Place::Mesh { .. } => unreachable!("a mesh returned above"),

@@ -13,6 +13,7 @@ pub mod check;
 pub mod diff;
 pub mod ideal;
 pub mod summary;
+pub mod uncertainty;
 
 use crate::diag::{Diagnostic, Source};
 use crate::model::{self, Analysis, Model};
@@ -54,6 +55,8 @@ pub struct Settings {
     /// to (`--include-root`, `--base-dir`).
     pub includes: crate::model::Includes,
     pub overrides: Overrides,
+    /// Propagate the file's tolerances (`--uncertainty`).
+    pub uncertainty: Option<uncertainty::Method>,
 }
 
 /// A part file read, validated, resolved and summarized.
@@ -96,6 +99,9 @@ pub fn load_source_reading(
         summary.sub_assembly = Some(path);
     }
     summary.source = Some(source.name.clone());
+    if let Some(method) = settings.uncertainty {
+        summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source));
+    }
     Ok(Loaded {
         source,
         model,

@@ -153,6 +153,9 @@ pub struct Summary {
     /// present only when a part gives its `thickness` or `diameter`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub idealisation: Option<ideal::Idealisation>,
+    /// The uncertainty from the file's tolerances (`--uncertainty`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub uncertainty: Option<super::uncertainty::Uncertainty>,
     /// How far each value may lie from the exact value for the file's
     /// numbers, for the arithmetic used (`bounds`): absolute, SI.
     pub error_bounds: bounds::ErrorBounds,
@@ -504,6 +507,7 @@ fn summarize_in(
         alpha: analysis.alpha.as_ref().map(arr),
         euler_moment: m,
         idealisation,
+        uncertainty: None,
         error_bounds,
         rtol: 0.0,
         accuracy_warnings: Vec::new(),

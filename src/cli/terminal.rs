@@ -84,7 +84,12 @@ impl Cli {
         let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
         let mut command = Cli::command().color(asked_colour(&args));
         let mut matches = command.try_get_matches_from_mut(args)?;
-        Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))
+        let cli = Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))?;
+        if let super::Command::Report(a) = &cli.command {
+            a.check_rules()
+                .map_err(|m| command.error(clap::error::ErrorKind::ArgumentConflict, m))?;
+        }
+        Ok(cli)
     }
 
     /// How each stream's output is dressed: `--color` and `--width`

@@ -29,6 +29,8 @@ pub(crate) struct Ctx<'a> {
     pub(super) materials: std::collections::BTreeMap<String, (f64, f64)>,
     /// `[params]`, evaluated (`model::params`).
     pub(super) params: super::params::Params,
+    /// The tolerances of the part being read (`model::tolerance`).
+    pub(super) tol: std::cell::RefCell<super::tolerance::Recorder>,
 }
 
 impl Ctx<'_> {
@@ -83,13 +85,16 @@ impl Ctx<'_> {
                 }
                 self.units.factor(dim).apply(*x)
             }
-            Quantity::Text(t) => match units::parse_quantity(t, dim) {
-                Ok(v) => v,
-                Err(e) => match self.expression(q, t, key, dim, units::Factor::ONE)? {
-                    Some(v) => return self.in_file_units(q, key, dim, v),
-                    None => return Err(self.unit_error(q, key, dim, e)),
-                },
-            },
+            Quantity::Text(t) => {
+                let (t, _) = self.tolerance_of(q, t, key, dim)?;
+                match units::parse_quantity(t, dim) {
+                    Ok(v) => v,
+                    Err(e) => match self.expression(q, t, key, dim, units::Factor::ONE)? {
+                        Some(v) => return self.in_file_units(q, key, dim, v),
+                        None => return Err(self.unit_error(q, key, dim, e)),
+                    },
+                }
+            }
         };
         self.checked(q, key, dim, value)
     }
@@ -166,16 +171,29 @@ impl Ctx<'_> {
             Quantity::Number(x) => *x,
             // A plain number's string (`count = "32"`) is read as an
             // expression, whose angle units are refused there (`"4 rad"`).
-            Quantity::Text(t) if dim == Dim::DIMENSIONLESS => self
-                .expression(q, t, key, dim, self.units.factor(dim))?
-                .expect("invariant: a dimensionless key's string is always an expression"),
-            Quantity::Text(t) => match units::parse_quantity_in(t, dim, self.units) {
-                Ok(v) => v,
-                Err(e) => match self.expression(q, t, key, dim, self.units.factor(dim))? {
-                    Some(v) => return Ok(v),
-                    None => return Err(self.err(q.span(), format!("`{key}`: {e}"))),
-                },
-            },
+            Quantity::Text(t) if dim == Dim::DIMENSIONLESS => {
+                let (t, _) = self.tolerance_of(q, t, key, dim)?;
+                self.expression(q, t, key, dim, self.units.factor(dim))?
+                    .expect("invariant: a dimensionless key's string is always an expression")
+            }
+            Quantity::Text(t) => {
+                let (t, tol) = self.tolerance_of(q, t, key, dim)?;
+                // An expression's value comes checked.
+                let (v, checked) = match units::parse_quantity_in(t, dim, self.units) {
+                    Ok(v) => (v, false),
+                    Err(e) => match self.expression(q, t, key, dim, self.units.factor(dim))? {
+                        Some(v) => (v, true),
+                        None => return Err(self.err(q.span(), format!("`{key}`: {e}"))),
+                    },
+                };
+                if let Some(tol) = tol {
+                    self.record(q, key, v, tol);
+                }
+                if checked {
+                    return Ok(v);
+                }
+                v
+            }
         };
         if !value.is_finite() {
             return Err(self.err(
@@ -216,7 +234,8 @@ impl Ctx<'_> {
     ) -> Result<[f64; 3], Diagnostic> {
         let items = self.exactly(v, 3, Whose::Key(key), "components")?;
         let mut out = [0.0; 3];
-        for (o, q) in out.iter_mut().zip(items) {
+        for (i, (o, q)) in out.iter_mut().zip(items).enumerate() {
+            self.tol.borrow_mut().component = i;
             *o = self.file_quantity(q, key, dim)?;
         }
         Ok(out)

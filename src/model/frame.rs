@@ -27,7 +27,67 @@ pub struct Frame {
     pub(super) mirror: bool,
 }
 
+/// The linear part of placing a part through frames: its mass scales by
+/// `mass`, a displacement d goes to `length` R d, and a second moment C
+/// to `mass` `length`² R C Rᵀ (R a turn or a reflection). How a change
+/// of a part's figures in its own file moves them in this one.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Linear {
+    pub mass: f64,
+    pub length: f64,
+    pub r: M3<f64>,
+}
+
+impl Linear {
+    pub const IDENTITY: Linear = Linear {
+        mass: 1.0,
+        length: 1.0,
+        r: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+    };
+
+    /// This map after `inner`.
+    pub fn after(&self, inner: &Linear) -> Linear {
+        Linear {
+            mass: self.mass * inner.mass,
+            length: self.length * inner.length,
+            r: std::array::from_fn(|i| {
+                std::array::from_fn(|j| (0..3).map(|k| self.r[i][k] * inner.r[k][j]).sum())
+            }),
+        }
+    }
+
+    /// A displacement moved: `length` R d.
+    pub fn dir(&self, d: [f64; 3]) -> [f64; 3] {
+        std::array::from_fn(|i| self.length * (0..3).map(|k| self.r[i][k] * d[k]).sum::<f64>())
+    }
+
+    /// A second moment moved: `mass` `length`² R C Rᵀ.
+    pub fn second(&self, c: &M3<f64>) -> M3<f64> {
+        let k = self.mass * self.length * self.length;
+        std::array::from_fn(|a| {
+            std::array::from_fn(|b| {
+                k * (0..3)
+                    .map(|p| {
+                        (0..3)
+                            .map(|q| self.r[a][p] * c[p][q] * self.r[b][q])
+                            .sum::<f64>()
+                    })
+                    .sum::<f64>()
+            })
+        })
+    }
+}
+
 impl Frame {
+    /// The linear part of placing through this frame.
+    pub fn linear(&self) -> Linear {
+        Linear {
+            mass: self.mass,
+            length: self.length,
+            r: self.r,
+        }
+    }
+
     fn dir(&self, v: [f64; 3]) -> [f64; 3] {
         let w = v.map(|x| x * self.length);
         std::array::from_fn(|i| self.r[i][0] * w[0] + self.r[i][1] * w[1] + self.r[i][2] * w[2])

@@ -345,6 +345,7 @@ impl Ctx<'_> {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
+            tol: Default::default(),
         };
         files
             .stack

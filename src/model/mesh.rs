@@ -71,6 +71,7 @@ impl Ctx<'_> {
                 }
             },
         };
+        self.enter_part();
         let density = self.mesh_density(p, mode, raw.span())?;
         let origin = match &p.origin {
             Some(o) => {
@@ -133,7 +134,9 @@ impl Ctx<'_> {
             placed: Default::default(),
         };
         self.in_file_range(Shape::Mesh, &spec, &name, raw.span())?;
+        let tol = self.leave_part(Shape::Mesh, &spec.place);
         Ok(Part {
+            tol,
             name: if p.name.is_some() {
                 name
             } else {

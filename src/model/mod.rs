@@ -14,7 +14,7 @@ mod copies;
 mod ctx;
 pub mod expect;
 pub mod fast;
-mod frame;
+pub mod frame;
 mod include;
 mod material;
 mod mesh;
@@ -27,8 +27,9 @@ pub mod schema;
 mod section;
 mod solids;
 mod streamed;
+pub mod tolerance;
 mod toml_error;
-mod walk;
+pub mod walk;
 
 pub use copies::{Copies, push_copy_name};
 pub use frame::Frame;
@@ -73,6 +74,9 @@ pub struct Model {
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
+    /// The file's toleranced quantities, in file order (a part's
+    /// `Part::tol` points into them).
+    pub sources: Vec<tolerance::Source>,
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
@@ -143,6 +147,7 @@ impl Model {
             has_real_sizes: false,
             materials: Default::default(),
             included: Vec::new(),
+            sources: Vec::new(),
         }
     }
 
@@ -218,7 +223,8 @@ impl Model {
         // the whole file read first.
         // A file with includes is read whole first: its includes are
         // counted before any is read (`include::Ctx::check_part_count`).
-        let includes = source.text.contains("include");
+        // So is a file with tolerances: their sources are the file's.
+        let includes = source.text.contains("include") || tolerance::may_have(&source.text);
         let mut streamed = if includes {
             Streamed::off()
         } else {
@@ -254,6 +260,7 @@ impl Model {
             units: FileUnits::default(),
             materials: Default::default(),
             params: Default::default(),
+            tol: Default::default(),
         };
         let units = match &raw.units {
             Some(u) => ctx.file_units(u)?,
@@ -264,6 +271,7 @@ impl Model {
             units,
             materials: Default::default(),
             params: Default::default(),
+            tol: Default::default(),
         };
         ctx.read_params(raw.params.as_ref(), passed)?;
         if let Some(table) = &raw.materials {
@@ -367,6 +375,7 @@ impl Model {
             has_real_sizes,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
+            sources: std::mem::take(&mut ctx.tol.borrow_mut().sources),
         })
     }
 }

@@ -48,7 +48,8 @@ impl Ctx<'_> {
             (Dims::Vertices, _) => {
                 let rows = p.vertices.as_deref().expect("`part` checked the vertices");
                 let mut vertices = [[0.0; 3]; 3];
-                for (v, raw) in vertices.iter_mut().zip(rows.get_ref()) {
+                for (k, (v, raw)) in vertices.iter_mut().zip(rows.get_ref()).enumerate() {
+                    self.tol.borrow_mut().row = k;
                     *v = self.file_vec3(raw, "vertices", Dim::LENGTH)?;
                 }
                 Place::Vertices(vertices)
@@ -75,7 +76,8 @@ impl Ctx<'_> {
                     .edges
                     .as_deref()
                     .expect("`part` checked the placement keys");
-                for (e, r) in edges.iter_mut().zip(raw.get_ref()) {
+                for (k, (e, r)) in edges.iter_mut().zip(raw.get_ref()).enumerate() {
+                    self.tol.borrow_mut().row = k;
                     *e = self.file_vec3(r, "edges", Dim::LENGTH)?;
                 }
                 Place::Edges {
@@ -88,7 +90,8 @@ impl Ctx<'_> {
                 match info.dims {
                     Dims::Size(_) => {
                         let size = p.size.as_ref().expect("`part` checked the size");
-                        for (e, q) in extent.iter_mut().zip(size.get_ref()) {
+                        for (k, (e, q)) in extent.iter_mut().zip(size.get_ref()).enumerate() {
+                            self.tol.borrow_mut().component = k;
                             *e = self.file_quantity(q, "size", Dim::LENGTH)?;
                         }
                     }
@@ -179,6 +182,7 @@ impl Ctx<'_> {
         raw: &Spanned<RawPart>,
     ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
         let p = raw.get_ref();
+        self.enter_part();
         let Some(shape_raw) = &p.shape else {
             return Err(self.err(raw.span(), "missing key `shape`").help(format!(
                 "every part needs `shape`, one of {} (or `include` of another part file)",
@@ -371,7 +375,9 @@ impl Ctx<'_> {
             material.map(|m| m.1),
         )?;
         self.in_file_range(shape, &spec, &name, raw.span())?;
+        let tol = self.leave_part(shape, &spec.place);
         let part = Part {
+            tol,
             // NOTE: a part the file does not name keeps no name: the walk
             // names it `part N` when a name is asked for (`model::walk`).
             // A string of its own for each of a million parts, made

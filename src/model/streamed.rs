@@ -91,6 +91,7 @@ impl Streamed {
                 units: FileUnits::default(),
                 materials: Default::default(),
                 params: Default::default(),
+                tol: Default::default(),
             };
             if let Some(u) = units {
                 ctx.units = ctx.file_units(u).map_err(|_| ())?;
@@ -107,6 +108,7 @@ impl Streamed {
             units: *units,
             materials: std::mem::take(materials),
             params: Default::default(),
+            tol: Default::default(),
         };
         let made = ctx.part(index, &p);
         // Handed back: a `Ctx` owns its materials.

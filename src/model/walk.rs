@@ -35,6 +35,52 @@ pub struct Leaf<'a> {
     pub part: &'a Part,
     /// Its real thickness or diameter, in this file's length unit.
     pub real: Option<RealSize>,
+    /// The part as its own file gives it, and the frames that place it
+    /// in this one (`Placing`).
+    pub own: &'a Part,
+    pub placing: Placing<'a>,
+}
+
+/// The frames a part is placed through, outermost first, and which copy
+/// of its file and of itself it is.
+#[derive(Clone, Copy)]
+pub struct Placing<'a> {
+    layers: &'a [Layer<'a>],
+    /// Which instance of the part's file this is (its includes and their
+    /// copies, from the root), and of the part itself (its copy too): the
+    /// same on every run, the keys of its sources of uncertainty.
+    pub file: u64,
+    pub part: u64,
+    /// The model of the file the part is in.
+    pub model: &'a Model,
+}
+
+impl Placing<'_> {
+    /// A spec of the part's own file placed in this one, as the walk
+    /// places it.
+    pub fn place(&self, shape: crate::shapes::Shape, spec: &mut crate::part::Spec) {
+        for layer in self.layers.iter().rev() {
+            layer.frame.place(shape, spec);
+        }
+    }
+
+    /// The linear part of the placing (`frame::Linear`).
+    pub fn linear(&self) -> super::frame::Linear {
+        self.layers
+            .iter()
+            .fold(super::frame::Linear::IDENTITY, |acc, l| {
+                acc.after(&l.frame.linear())
+            })
+    }
+}
+
+/// A key mixed with two numbers (splitmix64's finaliser): an instance's
+/// key from its parent's, its item and its copy.
+pub fn mix(key: u64, a: u64, b: u64) -> u64 {
+    let mut z = key ^ a.wrapping_mul(0x9E37_79B9_7F4A_7C15) ^ b.wrapping_mul(0xC2B2_AE3D_27D4_EB4F);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
 }
 
 /// What a walk of the tree meets, in file order: a sub-assembly entered,
@@ -112,6 +158,7 @@ impl Model {
     pub(super) fn walk(&self, named: bool, next: &mut usize, f: &mut dyn FnMut(Event<'_>)) {
         let mut walk = Walk {
             frames: Vec::new(),
+            keys: vec![0],
             named,
             next: *next,
             prefix: String::new(),
@@ -127,6 +174,7 @@ impl Model {
                 },
                 assembly: Vec::new(),
                 span: 0..0,
+                tol: None,
             },
         };
         walk.items(self, f);
@@ -152,6 +200,9 @@ struct Layer<'m> {
 struct Walk<'m> {
     /// The frames entered, outermost first.
     frames: Vec<Layer<'m>>,
+    /// The instance key of each file entered (`Placing::file`), the root's
+    /// first.
+    keys: Vec<u64>,
     named: bool,
     next: usize,
     /// `a / b / `: the names of the sub-assemblies entered.
@@ -164,21 +215,21 @@ impl<'m> Walk<'m> {
         for (k, item) in model.items.iter().enumerate() {
             match item {
                 Item::Include(inc) => match &inc.copies {
-                    None => self.include(inc, None, f),
+                    None => self.include(k, inc, None, f),
                     Some(c) => {
                         for i in c.indices() {
                             let pushed = self.copy_frames(c, i, &inc.span);
-                            self.include(inc, Some(i), f);
+                            self.include(k, inc, Some(i), f);
                             self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
                 },
                 Item::Part { part, real, copies } => match copies {
-                    None => self.part(k, part, *real, None, f),
+                    None => self.part(model, k, part, *real, None, f),
                     Some(c) => {
                         for i in c.indices() {
                             let pushed = self.copy_frames(c, i, &part.span);
-                            self.part(k, part, *real, Some(i), f);
+                            self.part(model, k, part, *real, Some(i), f);
                             self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
@@ -203,8 +254,20 @@ impl<'m> Walk<'m> {
     }
 
     /// The sub-assembly `inc` (its copy `copy`), entered, walked and left.
-    fn include(&mut self, inc: &'m Include, copy: Option<usize>, f: &mut dyn FnMut(Event<'_>)) {
+    fn include(
+        &mut self,
+        k: usize,
+        inc: &'m Include,
+        copy: Option<usize>,
+        f: &mut dyn FnMut(Event<'_>),
+    ) {
         f(Event::Enter(inc));
+        let key = mix(
+            *self.keys.last().expect("the root's key"),
+            k as u64,
+            copy.map_or(u64::MAX, |i| i as u64),
+        );
+        self.keys.push(key);
         self.frames.push(Layer {
             frame: Cow::Borrowed(&inc.frame),
             span: &inc.span,
@@ -225,12 +288,14 @@ impl<'m> Walk<'m> {
             self.placed.assembly.pop();
         }
         self.frames.pop();
+        self.keys.pop();
         f(Event::Exit);
     }
 
     /// The part `part`, `k` its position in its file (its copy `copy`).
     fn part(
         &mut self,
+        model: &'m Model,
         k: usize,
         part: &'m Part,
         real: Option<(crate::part::Solid, f64)>,
@@ -245,9 +310,22 @@ impl<'m> Walk<'m> {
             size,
         });
         let unnamed = self.named && !part.named;
+        let file = *self.keys.last().expect("the root's key");
+        let placing = Placing {
+            layers: &self.frames,
+            file,
+            part: mix(file, k as u64, copy.map_or(u64::MAX, |i| i as u64)),
+            model,
+        };
         let Some(outermost) = self.frames.first() else {
             if !unnamed && copy.is_none() {
-                f(Event::Part(Leaf { index, part, real }));
+                f(Event::Part(Leaf {
+                    index,
+                    part,
+                    real,
+                    own: part,
+                    placing,
+                }));
                 return;
             }
             let placed = &mut self.placed;
@@ -261,6 +339,8 @@ impl<'m> Walk<'m> {
                 index,
                 part: &self.placed,
                 real,
+                own: part,
+                placing,
             }));
             return;
         };
@@ -283,6 +363,8 @@ impl<'m> Walk<'m> {
             index,
             part: placed,
             real,
+            own: part,
+            placing,
         }));
     }
 }

@@ -4,24 +4,28 @@
 //! prism's own second moment, which has a product in its local axes.
 
 use super::error::{self, Own};
-use super::{Place, Spec};
-use crate::numeric::{DD, M3, Real};
+use super::{Lift, Place, Slot, Spec};
+use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
 use crate::shapes::Shape;
 use crate::shapes::prism::{Polygon, polygon};
 
 /// The centroid's offset from the placing point in local axes (double-
 /// double), and that point.
-fn local_offset(shape: Shape, place: &Place) -> ([DD; 3], [f64; 3], &Orientation) {
+fn local_offset<T: Real, L: Lift>(
+    shape: Shape,
+    place: &Place,
+    l: L,
+) -> ([T; 3], [f64; 3], &Orientation) {
     match place {
         Place::Axial {
             center,
             dims,
             orientation,
         } => {
-            let d = dims.map(DD::of);
+            let d: [T; 5] = super::dims_in(dims, l);
             let z = shape.axial_offset(&d[..shape.dim_count()]);
-            ([DD::of(0.0), DD::of(0.0), z], *center, orientation)
+            ([T::of(0.0), T::of(0.0), z], *center, orientation)
         }
         Place::Prism {
             origin,
@@ -30,7 +34,11 @@ fn local_offset(shape: Shape, place: &Place) -> ([DD; 3], [f64; 3], &Orientation
             ..
         } => {
             let g = polygon(p).centroid;
-            ([g[0], g[1], DD::of(0.0)], *origin, orientation)
+            (
+                [T::of_dd(g[0]), T::of_dd(g[1]), T::of(0.0)],
+                *origin,
+                orientation,
+            )
         }
         _ => unreachable!("only an axial part or a prism has an offset centroid"),
     }
@@ -39,13 +47,14 @@ fn local_offset(shape: Shape, place: &Place) -> ([DD; 3], [f64; 3], &Orientation
 /// The centroid (file units) in double-double: the placing point plus R
 /// times the local offset, so that far from the origin it keeps the digits
 /// of the offset, as a triangle's centroid does.
-pub(super) fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
-    let (l, at, orientation) = local_offset(shape, place);
+pub(super) fn centroid<T: Real, L: Lift>(shape: Shape, place: &Place, lift: L) -> [T; 3] {
+    let (l, at, orientation) = local_offset::<T, L>(shape, place, lift);
+    let at: [T; 3] = super::lift3(lift, &at, super::xyz(Slot::At));
     if let Orientation::Identity = orientation {
-        return std::array::from_fn(|i| DD::of(at[i]) + l[i]);
+        return std::array::from_fn(|i| at[i] + l[i]);
     }
-    let r: M3<DD> = orientation.matrix();
-    std::array::from_fn(|i| DD::of(at[i]) + (r[i][0] * l[0] + r[i][1] * l[1] + r[i][2] * l[2]))
+    let r: M3<T> = orientation.matrix();
+    std::array::from_fn(|i| at[i] + (r[i][0] * l[0] + r[i][1] * l[1] + r[i][2] * l[2]))
 }
 
 /// How far each component of an offset part's centroid may lie from the
@@ -108,11 +117,12 @@ fn polygon_units<T: Real>(poly: &Polygon, ell: &[f64; 3]) -> f64 {
 /// second moments times m in x–y (with the product), m L²/12 along z;
 /// then R C Rᵀ. With its error model when `bound` asks (`errors` gives the
 /// frames' units and the mass's).
-pub(super) fn prism_second_moment<T: Real>(
+pub(super) fn prism_second_moment<T: Real, L: Lift>(
     spec: &Spec,
     m: T,
     bound: bool,
     errors: impl Fn() -> (f64, f64),
+    lift: L,
 ) -> (M3<T>, Option<Own>) {
     let Place::Prism {
         polygon: p,
@@ -126,7 +136,7 @@ pub(super) fn prism_second_moment<T: Real>(
     let poly = polygon(p);
     let zero = T::of(0.0);
     let [xx, yy, xy] = poly.second.map(|x| m * T::of_dd(x));
-    let l = T::of(*length);
+    let l = T::var(*length, lift.rate(Slot::Dim(0)));
     let local: M3<T> = [
         [xx, xy, zero],
         [xy, yy, zero],

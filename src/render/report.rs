@@ -408,7 +408,98 @@ pub fn write_table_to(
     if let Some(i) = &s.idealisation {
         idealisation(&mut out, i, &u, width);
     }
+    if let Some(x) = &s.uncertainty {
+        uncertainty(&mut out, x, &u, width);
+    }
     w.write_all(out.as_bytes())
+}
+
+/// The uncertainty section: each output's nominal value and standard
+/// deviation (Monte Carlo: mean and percentiles too) in the file's units,
+/// the sources that contribute most, the chance of each `[expect]` entry
+/// to fail.
+fn uncertainty(
+    out: &mut String,
+    x: &crate::analysis::uncertainty::Uncertainty,
+    u: &DisplayUnits,
+    width: Option<usize>,
+) {
+    let how = match x.samples {
+        Some(n) => format!(
+            "Monte Carlo, {n} samples, seed {}",
+            x.seed.unwrap_or_default()
+        ),
+        None => "linear, first order with exact derivatives".to_string(),
+    };
+    let _ = writeln!(
+        out,
+        "\nuncertainty ({how}; {} independent sources)",
+        x.sources
+    );
+    let mc = x.samples.is_some();
+    let mut header = vec!["quantity", "unit", "nominal", "σ"];
+    if mc {
+        header.extend(["mean", "5 %", "50 %", "95 %"]);
+    }
+    header.push("most of the variance from");
+    let header: Vec<String> = header.into_iter().map(String::from).collect();
+    let mut cells = Cells::with_capacity(x.outputs.len() * header.len());
+    for o in &x.outputs {
+        let (scale, unit) = if o.quantity == "mass" {
+            (u.mass, u.mass_label)
+        } else if o.quantity.starts_with("center") {
+            (u.length, u.length_label)
+        } else {
+            (u.inertia, u.inertia_label.as_str())
+        };
+        cells.text.push_str(o.quantity);
+        cells.end();
+        cells.text.push_str(unit);
+        cells.end();
+        let mut num = |v: f64| {
+            cells.text.push_str(&fmt_num(v / scale));
+            cells.end();
+        };
+        num(o.nominal);
+        num(o.sigma);
+        if let (Some(m), Some(p)) = (o.mean, o.percentiles) {
+            num(m);
+            p.iter().for_each(|v| num(*v));
+        }
+        for (k, c) in o.contributors.iter().enumerate() {
+            if k > 0 {
+                cells.text.push_str("; ");
+            }
+            let _ = write!(cells.text, "{} ", name(&c.source));
+            push_percent(&mut cells.text, Some(c.share));
+        }
+        cells.end();
+    }
+    let right: Vec<bool> = (0..header.len())
+        .map(|i| i >= 2 && i + 1 < header.len())
+        .collect();
+    write_table(out, &header, &cells, &right, fit(width));
+    if let Some(r) = x.rejected.filter(|r| *r > 0) {
+        let _ = writeln!(
+            out,
+            "note: {r} samples left out, in which a size, radius, density or mass fell to zero or below"
+        );
+    }
+    if !x.equal_moments.is_empty() {
+        let _ = writeln!(
+            out,
+            "note: equal principal moments have no derivative; their σ is first order in a direction the tolerances choose"
+        );
+    }
+    for e in &x.exceed {
+        let _ = write!(
+            out,
+            "chance that `{}` (line {}) is outside its [expect] bounds: ",
+            e.quantity, e.line
+        );
+        push_percent(out, Some(e.probability));
+        out.push('\n');
+    }
 }
 
 /// The cells a part's and a sub-assembly's rows share: mass and its share,

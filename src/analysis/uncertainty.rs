@@ -1,0 +1,742 @@
+//! The uncertainty of a body's mass properties from the tolerances of its
+//! parts' quantities (`model::tolerance`): first-order propagation with
+//! exact derivatives (`Method::Linear`: forward-mode automatic
+//! differentiation through the parts' own physics, `dual::Dual`), or Monte
+//! Carlo sampling (`Method::MonteCarlo`: reproducible, on every core).
+//!
+//! The outputs are the mass, the centre of mass, the inertia tensor about
+//! the centre of mass (in the report axes and products convention) and the
+//! principal moments, in SI (`OUTPUTS`). Each toleranced quantity is an
+//! independent source for each copy of the part it is on (an array's
+//! copies, each instance of an included file).
+//!
+//! NOTE: both methods work on the body's three sums about the nominal
+//! centre of mass c₀ (file units): M = Σ m, S = Σ m d and
+//! P = Σ (Cᵢ + m d dᵀ), d = cᵢ − c₀, of which the outputs are functions:
+//! c = c₀ + S/M and C = P − S Sᵀ/M. A part's derivative by a source moves
+//! only its own terms, and reaches them through the linear part of the
+//! frames that place it (`frame::Linear`): its own file's figures are
+//! differentiated once, wherever it is included.
+
+use super::Products;
+use super::summary::Summary;
+use crate::dual::Dual;
+use crate::model::Model;
+use crate::model::expect::{Check, Target};
+use crate::model::walk::Leaf;
+use crate::numeric::{M3, Real};
+use crate::part::{Fixed, Seed, Slot, Spec, physics_in};
+use serde::Serialize;
+
+/// How the tolerances are propagated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Method {
+    Linear,
+    MonteCarlo { samples: usize, seed: u64 },
+}
+
+/// The outputs, as `[expect]` names their components.
+pub const OUTPUTS: [&str; 13] = [
+    "mass",
+    "center_of_mass.x",
+    "center_of_mass.y",
+    "center_of_mass.z",
+    "inertia_com.xx",
+    "inertia_com.yy",
+    "inertia_com.zz",
+    "inertia_com.xy",
+    "inertia_com.xz",
+    "inertia_com.yz",
+    "principal_moments.1",
+    "principal_moments.2",
+    "principal_moments.3",
+];
+const N: usize = OUTPUTS.len();
+/// The tensor entries of outputs 4..10.
+const ENTRIES: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
+/// How many sources each output names as contributing most.
+const TOP: usize = 3;
+
+/// One output's uncertainty.
+#[derive(Debug, Clone, Serialize)]
+pub struct Output {
+    /// As `[expect]` names it: `mass`, `center_of_mass.z`, …
+    pub quantity: &'static str,
+    /// SI: kg, m or kg·m².
+    pub nominal: f64,
+    /// One standard deviation, SI.
+    pub sigma: f64,
+    /// Monte Carlo: the samples' mean and 5th, 50th and 95th percentiles.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mean: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub percentiles: Option<[f64; 3]>,
+    /// The sources that contribute most to its variance, largest first.
+    pub contributors: Vec<Contributor>,
+}
+
+#[derive(Debug, Clone, Serialize)]
+pub struct Contributor {
+    /// `PART: KEY ± AMOUNT`, the part by its path.
+    pub source: String,
+    /// Its share of the variance, from 0 to 1.
+    pub share: f64,
+}
+
+/// The chance that an `[expect]` entry's value falls outside its bounds.
+#[derive(Debug, Clone, Serialize)]
+pub struct Exceed {
+    pub quantity: String,
+    pub line: usize,
+    pub column: usize,
+    pub probability: f64,
+}
+
+/// The uncertainty of a body: JSON `uncertainty`.
+#[derive(Debug, Clone, Serialize)]
+pub struct Uncertainty {
+    /// `linear` or `montecarlo`.
+    pub method: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub samples: Option<usize>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seed: Option<u64>,
+    /// Monte Carlo: samples in which a part's size, radius or mass fell to
+    /// zero or below (left out of the statistics).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rejected: Option<usize>,
+    /// Independent sources of uncertainty (toleranced quantities, each
+    /// copy of a part its own).
+    pub sources: usize,
+    pub outputs: Vec<Output>,
+    /// The covariance of the outputs, rows and columns in `outputs`'
+    /// order, SI.
+    pub covariance: Vec<Vec<f64>>,
+    /// For each `[expect]` entry on an output.
+    pub exceed: Vec<Exceed>,
+    /// Principal moments equal within tolerance: their derivatives are
+    /// not defined, and their σ is that of their mean.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub equal_moments: Vec<usize>,
+}
+
+/// A source of uncertainty met in a walk: its label, and how the body's
+/// sums move with its standardised variable.
+struct Source {
+    label: String,
+    /// How the body's sums move with it (file units).
+    d: Sums,
+    /// Monte Carlo: its spread.
+    uniform: bool,
+}
+
+/// The body's sums about c₀, or their derivatives.
+#[derive(Clone, Copy, Default)]
+struct Sums {
+    m: f64,
+    s: [f64; 3],
+    p: M3<f64>,
+}
+
+impl Sums {
+    fn add_part(&mut self, m: f64, d: [f64; 3], c: &M3<f64>) {
+        self.m += m;
+        for i in 0..3 {
+            self.s[i] += m * d[i];
+            for j in 0..3 {
+                self.p[i][j] += c[i][j] + m * d[i] * d[j];
+            }
+        }
+    }
+
+    fn plus(&mut self, o: &Sums, k: f64) {
+        self.m += k * o.m;
+        for i in 0..3 {
+            self.s[i] += k * o.s[i];
+            for j in 0..3 {
+                self.p[i][j] += k * o.p[i][j];
+            }
+        }
+    }
+}
+
+/// The conversions from the file's units and frame to what is reported.
+struct Frame {
+    mass: f64,
+    length: f64,
+    inertia: f64,
+    /// The report axes' rows, in the file's frame.
+    axes: M3<f64>,
+    positive: bool,
+    /// The principal axes (rows, report axes) of the nominal body.
+    principal: M3<f64>,
+}
+
+impl Frame {
+    fn new(model: &Model, summary: &Summary) -> Frame {
+        let f = crate::part::SiFactors::of(model.units);
+        Frame {
+            mass: f.mass.f64(),
+            length: f.length.f64(),
+            inertia: f.inertia,
+            axes: summary.axes,
+            positive: summary.products_convention == Products::Positive,
+            principal: summary.principal_axes,
+        }
+    }
+
+    /// The inertia tensor (SI, report axes, its convention) of a second
+    /// moment about the centre of mass (file units and axes).
+    fn inertia(&self, c: &M3<f64>) -> M3<f64> {
+        let tr = c[0][0] + c[1][1] + c[2][2];
+        let i: M3<f64> = std::array::from_fn(|a| {
+            std::array::from_fn(|b| if a == b { tr } else { 0.0 } - c[a][b])
+        });
+        let a = &self.axes;
+        std::array::from_fn(|p| {
+            std::array::from_fn(|q| {
+                let v: f64 = (0..3)
+                    .map(|k| (0..3).map(|l| a[p][k] * i[k][l] * a[q][l]).sum::<f64>())
+                    .sum();
+                let sign = if self.positive && p != q { -1.0 } else { 1.0 };
+                sign * v * self.inertia
+            })
+        })
+    }
+
+    /// The tensor outputs (entries 4..10) of a tensor.
+    fn entries(i: &M3<f64>, out: &mut [f64; N]) {
+        for (k, (a, b)) in ENTRIES.iter().enumerate() {
+            out[4 + k] = i[*a][*b];
+        }
+    }
+
+    /// A change of the sums (file units) as a change of the outputs, to
+    /// first order at the nominal body (S = 0 there).
+    fn linear(&self, d: &Sums, m: f64) -> [f64; N] {
+        let mut out = [0.0; N];
+        out[0] = d.m * self.mass;
+        for i in 0..3 {
+            out[1 + i] = d.s[i] / m * self.length;
+        }
+        // I in the report convention is linear in C: its derivative is
+        // the same map of dC, less the sign of a product under `positive`
+        // (which `inertia` applies to the entries alike).
+        let di = self.inertia(&d.p);
+        Frame::entries(&di, &mut out);
+        // First-order perturbation of a simple eigenvalue: dλ = pᵀ dI p
+        // (in the tensor convention, whatever is shown).
+        let t = self.tensor(&di);
+        for (k, p) in self.principal.iter().enumerate() {
+            out[10 + k] = (0..3)
+                .map(|a| (0..3).map(|b| p[a] * t[a][b] * p[b]).sum::<f64>())
+                .sum();
+        }
+        out
+    }
+
+    /// A tensor in the report convention back in the tensor convention.
+    fn tensor(&self, i: &M3<f64>) -> M3<f64> {
+        std::array::from_fn(|a| {
+            std::array::from_fn(|b| {
+                if self.positive && a != b {
+                    -i[a][b]
+                } else {
+                    i[a][b]
+                }
+            })
+        })
+    }
+
+    /// The outputs of a body's sums about c₀ (`c0` the nominal centre in
+    /// SI), for a sample.
+    fn outputs(&self, sums: &Sums, c0: [f64; 3]) -> Option<[f64; N]> {
+        let m = sums.m;
+        if !(m > 0.0) {
+            return None;
+        }
+        let mut out = [0.0; N];
+        out[0] = m * self.mass;
+        for i in 0..3 {
+            out[1 + i] = c0[i] + sums.s[i] / m * self.length;
+        }
+        let c: M3<f64> = std::array::from_fn(|a| {
+            std::array::from_fn(|b| sums.p[a][b] - sums.s[a] * (sums.s[b] / m))
+        });
+        let i = self.inertia(&c);
+        Frame::entries(&i, &mut out);
+        let t = self.tensor(&i);
+        let (mut moments, _) = crate::eigen::jacobi::<f64>(t)?;
+        moments.sort_by(f64::total_cmp);
+        out[10..13].copy_from_slice(&moments);
+        Some(out)
+    }
+}
+
+/// A toleranced part for Monte Carlo: its own spec, how its numbers move,
+/// and the affine map that places its figures.
+struct Moving {
+    shape: crate::shapes::Shape,
+    spec: Spec,
+    /// (slot, source index, rate).
+    deps: Vec<(Slot, usize, f64)>,
+    linear: crate::model::frame::Linear,
+    /// Where its own centroid's image lies less the map of it: c' =
+    /// `linear.dir(c)` + `shift` − c₀ (file units of the root).
+    shift: [f64; 3],
+}
+
+/// The uncertainty of `model`'s body (`summary` its nominal figures).
+pub fn propagate(
+    model: &Model,
+    summary: &Summary,
+    method: Method,
+    source: &crate::diag::Source,
+) -> Uncertainty {
+    let frame = Frame::new(model, summary);
+    let c0: [f64; 3] = std::array::from_fn(|i| summary.center_of_mass[i] / frame.length);
+    let m_nominal = summary.mass / frame.mass;
+    let mut sources: Vec<Source> = Vec::new();
+    let mut index: std::collections::HashMap<u64, usize> = Default::default();
+    let mut fixed = Sums::default();
+    let mut moving: Vec<Moving> = Vec::new();
+    let monte_carlo = matches!(method, Method::MonteCarlo { .. });
+    model.each_part(&mut |leaf: Leaf<'_>| {
+        let placed = leaf.part;
+        let m: f64 = placed.mass();
+        let cen = placed.centroid();
+        let d: [f64; 3] = std::array::from_fn(|i| (cen[i] - crate::numeric::DD::of(c0[i])).f64());
+        let Some(deps) = &leaf.own.tol else {
+            if monte_carlo {
+                let own: M3<f64> = placed.own_second_moment(m);
+                fixed.add_part(m, d, &own);
+            }
+            return;
+        };
+        let file_sources = &leaf.placing.model.sources;
+        let mut ids = Vec::with_capacity(deps.len());
+        for dep in deps.iter() {
+            let key = crate::model::walk::mix(leaf.placing.part, u64::from(dep.source), 0);
+            let id = *index.entry(key).or_insert_with(|| {
+                let s = &file_sources[dep.source as usize];
+                sources.push(Source {
+                    label: format!("{}: {} ± {}", placed.name, s.key, s.written),
+                    d: Sums::default(),
+                    uniform: s.spread == crate::model::tolerance::Spread::Uniform,
+                });
+                sources.len() - 1
+            });
+            ids.push(id);
+        }
+        let linear = leaf.placing.linear();
+        if monte_carlo {
+            let (_, own_c, _) = physics_in::<f64, Fixed>(leaf.own.shape, &leaf.own.spec, Fixed);
+            let mapped = linear.dir(own_c);
+            moving.push(Moving {
+                shape: leaf.own.shape,
+                spec: leaf.own.spec.clone(),
+                deps: deps
+                    .iter()
+                    .zip(&ids)
+                    .map(|(d, id)| (d.slot, *id, d.rate))
+                    .collect(),
+                linear,
+                shift: std::array::from_fn(|i| d[i] - mapped[i]),
+            });
+            return;
+        }
+        // Linear: one dual evaluation per slot the part's tolerances move.
+        let mut done: Vec<Slot> = Vec::new();
+        for dep in deps.iter() {
+            if done.contains(&dep.slot) {
+                continue;
+            }
+            done.push(dep.slot);
+            let (dm, dc, dj) =
+                physics_in::<Dual<f64>, Seed>(leaf.own.shape, &leaf.own.spec, Seed(dep.slot));
+            let dm = linear.mass * dm.d;
+            let dc = linear.dir(dc.map(|x| x.d));
+            let dj = linear.second(&dj.map(|r| r.map(|x| x.d)));
+            let mut per = Sums {
+                m: dm,
+                ..Sums::default()
+            };
+            for i in 0..3 {
+                per.s[i] = dm * d[i] + m * dc[i];
+                for j in 0..3 {
+                    per.p[i][j] = dj[i][j] + dm * d[i] * d[j] + m * (dc[i] * d[j] + d[i] * dc[j]);
+                }
+            }
+            for (other, id) in deps.iter().zip(&ids) {
+                if other.slot == dep.slot {
+                    sources[*id].d.plus(&per, other.rate);
+                }
+            }
+        }
+    });
+    let nominal = nominal_outputs(summary);
+    // The chance of each `[expect]` entry on an output to fail.
+    let checks: Vec<(&Check, usize)> = model
+        .expect
+        .iter()
+        .filter_map(|c| Some((c, output_of(c.target)?)))
+        .collect();
+    let (mut out, outside) = match method {
+        Method::Linear => {
+            let u = linear(&frame, &sources, m_nominal, nominal);
+            let p = checks
+                .iter()
+                .map(|(c, o)| {
+                    let (lo, hi) = super::check::limits(&c.bound);
+                    outside_normal(nominal[*o], u.outputs[*o].sigma, lo, hi)
+                })
+                .collect();
+            (u, p)
+        }
+        Method::MonteCarlo { samples, seed } => {
+            let (u, all) = monte_carlo_run(
+                &frame, &sources, &moving, &fixed, summary, nominal, samples, seed,
+            );
+            let p = checks
+                .iter()
+                .map(|(c, o)| {
+                    let (lo, hi) = super::check::limits(&c.bound);
+                    let out = all.iter().filter(|r| !(r[*o] >= lo && r[*o] <= hi)).count();
+                    out as f64 / all.len().max(1) as f64
+                })
+                .collect::<Vec<f64>>();
+            (u, p)
+        }
+    };
+    out.exceed = checks
+        .iter()
+        .zip(outside)
+        .map(|((c, _), probability)| {
+            let (line, column) = source.line_col(c.span.start);
+            Exceed {
+                quantity: c.name.clone(),
+                line,
+                column,
+                probability,
+            }
+        })
+        .collect();
+    out.equal_moments = summary.equal_moments.clone();
+    out
+}
+
+/// P(X ∉ [lo, hi]) for X normal with mean `mu` and deviation `sigma`.
+fn outside_normal(mu: f64, sigma: f64, lo: f64, hi: f64) -> f64 {
+    if !(sigma > 0.0) {
+        return if mu >= lo && mu <= hi { 0.0 } else { 1.0 };
+    }
+    // Φ(−x) = erfc(x/√2)/2 for each tail.
+    let below = if lo.is_finite() {
+        0.5 * erfc((mu - lo) / (sigma * std::f64::consts::SQRT_2))
+    } else {
+        0.0
+    };
+    let above = if hi.is_finite() {
+        0.5 * erfc((hi - mu) / (sigma * std::f64::consts::SQRT_2))
+    } else {
+        0.0
+    };
+    (below + above).min(1.0)
+}
+
+/// The complementary error function, to a relative 1.2e-7 everywhere
+/// (Chebyshev fit; Press et al., Numerical Recipes, §6.2, `erfcc`):
+/// enough for a probability.
+fn erfc(x: f64) -> f64 {
+    let z = x.abs();
+    let t = 1.0 / (1.0 + 0.5 * z);
+    let poly = -z * z - 1.265_512_23
+        + t * (1.000_023_68
+            + t * (0.374_091_96
+                + t * (0.096_784_18
+                    + t * (-0.186_288_06
+                        + t * (0.278_868_07
+                            + t * (-1.135_203_98
+                                + t * (1.488_515_87 + t * (-0.822_152_23 + t * 0.170_872_77))))))));
+    let r = t * poly.exp();
+    if x >= 0.0 { r } else { 2.0 - r }
+}
+
+fn nominal_outputs(s: &Summary) -> [f64; N] {
+    let mut out = [0.0; N];
+    out[0] = s.mass;
+    out[1..4].copy_from_slice(&s.center_of_mass);
+    Frame::entries(&s.inertia_com, &mut out);
+    out[10..13].copy_from_slice(&s.principal_moments);
+    out
+}
+
+fn top(
+    shares: impl Iterator<Item = (usize, f64)>,
+    labels: &dyn Fn(usize) -> String,
+) -> Vec<Contributor> {
+    let mut v: Vec<(usize, f64)> = shares.filter(|(_, s)| *s > 0.0).collect();
+    v.sort_by(|a, b| b.1.total_cmp(&a.1).then(a.0.cmp(&b.0)));
+    v.truncate(TOP);
+    v.into_iter()
+        .map(|(k, share)| Contributor {
+            source: labels(k),
+            share,
+        })
+        .collect()
+}
+
+fn linear(frame: &Frame, sources: &[Source], m: f64, nominal: [f64; N]) -> Uncertainty {
+    let rows: Vec<[f64; N]> = sources.iter().map(|s| frame.linear(&s.d, m)).collect();
+    let covariance: Vec<Vec<f64>> = (0..N)
+        .map(|a| {
+            (0..N)
+                .map(|b| rows.iter().map(|r| r[a] * r[b]).sum())
+                .collect()
+        })
+        .collect();
+    let outputs = (0..N)
+        .map(|o| {
+            let var = covariance[o][o];
+            Output {
+                quantity: OUTPUTS[o],
+                nominal: nominal[o],
+                sigma: var.sqrt(),
+                mean: None,
+                percentiles: None,
+                contributors: top(
+                    rows.iter()
+                        .enumerate()
+                        .map(|(k, r)| (k, if var > 0.0 { r[o] * r[o] / var } else { 0.0 })),
+                    &|k| sources[k].label.clone(),
+                ),
+            }
+        })
+        .collect();
+    Uncertainty {
+        method: "linear",
+        samples: None,
+        seed: None,
+        rejected: None,
+        sources: sources.len(),
+        outputs,
+        covariance,
+        exceed: Vec::new(),
+        equal_moments: Vec::new(),
+    }
+}
+
+/// A uniform number in (0, 1) from a key: the same for the same key on
+/// every run and core (a counter-based generator: splitmix64's finaliser).
+fn uniform(key: u64) -> f64 {
+    let z = crate::model::walk::mix(key, 0x5851_F42D_4C95_7F2D, 0x1405_7B7E_F767_814F);
+    ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+}
+
+/// The standardised variable of source `k` in sample `s`: normal (Box–
+/// Muller) or uniform on [−√3, √3], mean 0 and variance 1 both.
+fn draw(seed: u64, s: usize, k: usize, uniform_spread: bool) -> f64 {
+    let key = crate::model::walk::mix(seed, s as u64, k as u64);
+    if uniform_spread {
+        return (2.0 * uniform(key) - 1.0) * 3f64.sqrt();
+    }
+    let (u1, u2) = (uniform(key), uniform(key ^ 0xA076_1D64_78BD_642F));
+    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
+}
+
+/// A block's samples' outputs, its sums for the contributions (Σ (out −
+/// nominal) z per source, Σ z last) and its samples left out.
+type Block = (Vec<[f64; N]>, Vec<[f64; N + 1]>, usize);
+
+/// Samples per block: blocks are drawn on every core and combined in
+/// order, so the result is the same on any number of cores.
+const BLOCK: usize = 256;
+
+#[allow(clippy::too_many_arguments)]
+fn monte_carlo_run(
+    frame: &Frame,
+    sources: &[Source],
+    moving: &[Moving],
+    fixed: &Sums,
+    summary: &Summary,
+    nominal: [f64; N],
+    samples: usize,
+    seed: u64,
+) -> (Uncertainty, Vec<[f64; N]>) {
+    let blocks = samples.div_ceil(BLOCK);
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let c0 = summary.center_of_mass;
+    let run_block = |b: usize| -> Block {
+        let mut outs = Vec::with_capacity(BLOCK);
+        let mut cov = vec![[0.0; N + 1]; sources.len()];
+        let mut rejected = 0;
+        let mut z = vec![0.0; sources.len()];
+        for s in b * BLOCK..((b + 1) * BLOCK).min(samples) {
+            for (k, src) in sources.iter().enumerate() {
+                z[k] = draw(seed, s, k, src.uniform);
+            }
+            let mut sums = *fixed;
+            let mut ok = true;
+            for part in moving {
+                let mut spec = part.spec.clone();
+                for &(slot, k, rate) in &part.deps {
+                    let x = spec.number_mut(slot).expect("a recorded slot exists");
+                    let before = *x;
+                    *x += rate * z[k];
+                    if !matches!(
+                        slot,
+                        Slot::At(_) | Slot::Edge(..) | Slot::To(_) | Slot::Vertex(..)
+                    ) && (before > 0.0) != (*x > 0.0)
+                    {
+                        ok = false;
+                    }
+                }
+                let (m, c, j) = physics_in::<f64, Fixed>(part.shape, &spec, Fixed);
+                let l = &part.linear;
+                let mc = l.dir(c);
+                let d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[i]);
+                sums.add_part(l.mass * m, d, &l.second(&j));
+            }
+            match ok.then(|| frame.outputs(&sums, c0)).flatten() {
+                Some(o) => {
+                    // Σ (out − nominal) z and, in the last column, Σ z:
+                    // centred on the nominal value so that the sums keep
+                    // the digits of the deviations.
+                    for (k, row) in cov.iter_mut().enumerate() {
+                        for (r, (v, n)) in row.iter_mut().zip(o.iter().zip(&nominal)) {
+                            *r += (v - n) * z[k];
+                        }
+                        row[N] += z[k];
+                    }
+                    outs.push(o);
+                }
+                None => rejected += 1,
+            }
+        }
+        (outs, cov, rejected)
+    };
+    let workers = std::thread::available_parallelism()
+        .map_or(1, usize::from)
+        .min(blocks.max(1));
+    let mut results: Vec<Option<Block>> = vec![None; blocks];
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let b = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        if b >= blocks {
+                            break;
+                        }
+                        mine.push((b, run_block(b)));
+                    }
+                    mine
+                })
+            })
+            .collect();
+        for h in handles {
+            for (b, r) in h.join().expect("a Monte Carlo worker does not panic") {
+                results[b] = Some(r);
+            }
+        }
+    });
+    let mut all: Vec<[f64; N]> = Vec::with_capacity(samples);
+    let mut cov = vec![[0.0; N + 1]; sources.len()];
+    let mut rejected = 0;
+    for (outs, c, r) in results.into_iter().flatten() {
+        all.extend(outs);
+        for (acc, add) in cov.iter_mut().zip(&c) {
+            for (a, x) in acc.iter_mut().zip(add) {
+                *a += x;
+            }
+        }
+        rejected += r;
+    }
+    let n = all.len();
+    let mean: [f64; N] =
+        std::array::from_fn(|o| all.iter().map(|r| r[o]).sum::<f64>() / n.max(1) as f64);
+    let covariance: Vec<Vec<f64>> = (0..N)
+        .map(|a| {
+            (0..N)
+                .map(|b| {
+                    all.iter()
+                        .map(|r| (r[a] - mean[a]) * (r[b] - mean[b]))
+                        .sum::<f64>()
+                        / (n.max(2) - 1) as f64
+                })
+                .collect()
+        })
+        .collect();
+    let outputs = (0..N)
+        .map(|o| {
+            let mut v: Vec<f64> = all.iter().map(|r| r[o]).collect();
+            v.sort_by(f64::total_cmp);
+            let var = covariance[o][o];
+            Output {
+                quantity: OUTPUTS[o],
+                nominal: nominal[o],
+                sigma: var.sqrt(),
+                mean: Some(mean[o]),
+                percentiles: Some([
+                    percentile(&v, 0.05),
+                    percentile(&v, 0.5),
+                    percentile(&v, 0.95),
+                ]),
+                // cov(out, z) estimates ∂out/∂z (E z = 0, var z = 1): its
+                // square over the variance is the source's share.
+                contributors: top(
+                    cov.iter().enumerate().map(|(k, c)| {
+                        // The sample covariance of the output and z.
+                        let g = (c[o] - (mean[o] - nominal[o]) * c[N]) / n.max(1) as f64;
+                        (
+                            k,
+                            if var > 0.0 {
+                                (g * g / var).min(1.0)
+                            } else {
+                                0.0
+                            },
+                        )
+                    }),
+                    &|k| sources[k].label.clone(),
+                ),
+            }
+        })
+        .collect();
+    let u = Uncertainty {
+        method: "montecarlo",
+        samples: Some(samples),
+        seed: Some(seed),
+        rejected: Some(rejected),
+        sources: sources.len(),
+        outputs,
+        covariance,
+        exceed: Vec::new(),
+        equal_moments: Vec::new(),
+    };
+    (u, all)
+}
+
+/// The p-quantile of sorted values (linear between order statistics).
+fn percentile(sorted: &[f64], p: f64) -> f64 {
+    if sorted.is_empty() {
+        return f64::NAN;
+    }
+    let h = p * (sorted.len() - 1) as f64;
+    let (lo, hi) = (h.floor() as usize, h.ceil() as usize);
+    sorted[lo] + (h - lo as f64) * (sorted[hi] - sorted[lo])
+}
+
+/// The output an `[expect]` target reads, if it is one.
+pub fn output_of(t: Target) -> Option<usize> {
+    match t {
+        Target::Mass => Some(0),
+        Target::CenterOfMass(i) => Some(1 + i),
+        Target::InertiaCom(a, b) => ENTRIES
+            .iter()
+            .position(|e| *e == (a.min(b), a.max(b)))
+            .map(|k| 4 + k),
+        Target::PrincipalMoment(i) => Some(10 + i),
+        _ => None,
+    }
+}
