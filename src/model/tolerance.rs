@@ -144,7 +144,7 @@ impl Ctx<'_> {
                     here(at, at + (text.len() - at).min(3)),
                     format!("a tolerance is not allowed on `{key}`"),
                 )
-                .help("tolerances go on a part's mass, density, sizes, radii and position (docs/budget.md)"));
+                .help("tolerances go on a part's mass, density, sizes, radii and position (docs/uncertainty.md)"));
         }
         let start = text.len() - amount.len();
         let trimmed = amount.trim();

@@ -31,6 +31,7 @@ mod robots_hostile;
 mod schema;
 mod shell;
 mod stress;
+mod uncertainty;
 // Shared with the benchmark and an example, each using a part.
 #[path = "../support/mod.rs"]
 #[allow(dead_code)]

@@ -1,0 +1,367 @@
+//! Tolerances and their propagation (`report --uncertainty`): hand-derived
+//! standard deviations, linear against Monte Carlo, independence of
+//! copies, invariance under rigid motion, reproducibility, refusals.
+
+use super::common::{massprop, report_json, scratch};
+use serde_json::Value;
+
+/// σ of output `q` in a report's `uncertainty`.
+fn sigma(v: &Value, q: &str) -> f64 {
+    output(v, q)["sigma"].as_f64().unwrap()
+}
+
+fn output<'v>(v: &'v Value, q: &str) -> &'v Value {
+    v["uncertainty"]["outputs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["quantity"] == q)
+        .unwrap_or_else(|| panic!("no output {q}"))
+}
+
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs())
+}
+
+#[test]
+fn one_toleranced_mass_gives_its_own_deviation_and_no_other() {
+    // M = 2 + 3 kg; σ_M = 0.1 kg; the centre x̄ = 3·1/M moves with the
+    // first mass: ∂x̄/∂m₁ = −x̄/M = −0.12 m/kg, so σ_x̄ = 0.012 m.
+    let text = r#"
+[[part]]
+shape = "point"
+mass = "2 kg ± 0.1 kg"
+center = [0, 0, 0]
+[[part]]
+shape = "point"
+mass = 3
+center = [1, 0, 0]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    assert!(close(sigma(&v, "mass"), 0.1, 1e-15));
+    assert!(close(sigma(&v, "center_of_mass.x"), 0.012, 1e-14));
+    assert_eq!(sigma(&v, "center_of_mass.y"), 0.0);
+    assert_eq!(v["uncertainty"]["sources"], 1);
+    let c = &output(&v, "mass")["contributors"][0];
+    assert_eq!(c["share"].as_f64().unwrap(), 1.0);
+    assert!(c["source"].as_str().unwrap().contains("mass ± 0.1 kg"));
+}
+
+#[test]
+fn a_relative_tolerance_and_a_uniform_one_have_their_deviations() {
+    // ± 2 % of 7850 kg/m³ on a 0.1 m cube: σ_m = 0.02 · 7.85 kg.
+    // A uniform ± 3 mm of a centre: σ = 3/√3 mm, and x̄ moves 1:1.
+    let text = r#"
+units = { length = "mm", mass = "kg" }
+[[part]]
+shape = "box"
+density = "7850 kg/m^3 ± 2 %"
+size = [100, 100, 100]
+center = ["0 mm ± 3 mm uniform", 0, 0]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    assert!(close(sigma(&v, "mass"), 0.02 * 7.85, 1e-14));
+    assert!(close(
+        sigma(&v, "center_of_mass.x"),
+        3e-3 / 3f64.sqrt(),
+        1e-14
+    ));
+}
+
+#[test]
+fn a_size_tolerance_moves_mass_and_inertia_by_the_closed_forms_derivatives() {
+    // A box of density ρ, sides a, b, c: m = ρabc, ∂m/∂a = ρbc; I_xx =
+    // m(b² + c²)/12, ∂I_xx/∂a = ρbc(b² + c²)/12; I_yy = m(a² + c²)/12,
+    // ∂I_yy/∂a = ρbc(3a² + c²)/12.
+    let (rho, a, b, c, s) = (1000.0, 0.3, 0.2, 0.1, 0.001);
+    let text = format!(
+        r#"
+[[part]]
+shape = "box"
+density = {rho}
+size = ["{a} m ± {s} m", {b}, {c}]
+center = [0, 0, 0]
+"#
+    );
+    let (v, _) = report_json(&text, &["--uncertainty", "linear"]);
+    let k = rho * b * c * s;
+    assert!(close(sigma(&v, "mass"), k, 1e-14));
+    assert!(close(
+        sigma(&v, "inertia_com.xx"),
+        k * (b * b + c * c) / 12.0,
+        1e-14
+    ));
+    assert!(close(
+        sigma(&v, "inertia_com.yy"),
+        k * (3.0 * a * a + c * c) / 12.0,
+        1e-14
+    ));
+    assert!(close(
+        sigma(&v, "inertia_com.zz"),
+        k * (3.0 * a * a + b * b) / 12.0,
+        1e-14
+    ));
+    // I₁ = I_xx here (the smallest): its derivative is the same.
+    assert!(close(
+        sigma(&v, "principal_moments.1"),
+        k * (b * b + c * c) / 12.0,
+        1e-13
+    ));
+}
+
+#[test]
+fn a_diameter_tolerance_is_half_a_radius_one() {
+    // A solid sphere: m = (4/3)πρR³, ∂m/∂R = 4πρR²; with σ_D = 2 mm,
+    // σ_R = 1 mm. ∫x² dm = mR²/5, I = 2mR²/5: ∂I/∂R = (4/3)·2πρR⁴·… =
+    // 2(∂m/∂R R² + 2mR)/5 = 2(4πρR⁴ + (8/3)πρR⁴)/5 = (8/3)πρR⁴.
+    let (rho, r) = (2700.0, 0.05);
+    let text = format!(
+        "[[part]]\nshape = \"sphere\"\ndensity = {rho}\ndiameter = \"{} m ± 2 mm\"\ncenter = [0, 0, 0]\n",
+        2.0 * r
+    );
+    let (v, _) = report_json(&text, &["--uncertainty", "linear"]);
+    let pi = std::f64::consts::PI;
+    assert!(close(
+        sigma(&v, "mass"),
+        4.0 * pi * rho * r * r * 1e-3,
+        1e-14
+    ));
+    assert!(close(
+        sigma(&v, "inertia_com.xx"),
+        8.0 / 3.0 * pi * rho * r.powi(4) * 1e-3,
+        1e-13
+    ));
+}
+
+#[test]
+fn copies_of_a_toleranced_part_are_independent() {
+    // Four copies of ± 0.5 kg: σ = 0.5 √4 = 1 kg (not 4 · 0.5).
+    let text = r#"
+[[part]]
+shape = "point"
+mass = "10 kg ± 0.5 kg"
+center = [0, 0, 0]
+array = { count = 4, step = [1, 0, 0] }
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    assert!(close(sigma(&v, "mass"), 1.0, 1e-15));
+    assert_eq!(v["uncertainty"]["sources"], 4);
+}
+
+/// A body of several shapes with tolerances on sizes, densities, masses
+/// and positions, placed by `origin` and a turn inside an include.
+fn body(dir: &std::path::Path, origin: &str, turn: &str) -> std::path::PathBuf {
+    std::fs::write(
+        dir.join("inner.toml"),
+        r#"
+units = { length = "mm", mass = "kg" }
+[[part]]
+name = "plate"
+shape = "box"
+density = "2700 kg/m^3 ± 1 %"
+size = ["200 mm ± 0.5 mm", "120 mm ± 0.5 mm", "6 mm ± 0.1 mm"]
+center = [0, 0, 0]
+[[part]]
+name = "motor"
+shape = "cylinder"
+mass = "1.2 kg ± 0.05 kg"
+radius = "30 mm ± 0.2 mm"
+length = 80
+center = ["60 mm ± 1 mm", "-20 mm ± 1 mm", 40]
+[[part]]
+name = "bolt"
+shape = "rod"
+linear_density = "0.1 kg/m ± 5 %"
+from = [-90, -50, 0]
+to = [-90, "-50 mm ± 0.5 mm", "60 mm ± 0.5 mm"]
+"#,
+    )
+    .unwrap();
+    let path = dir.join("outer.toml");
+    std::fs::write(
+        &path,
+        format!(
+            "[[part]]\ninclude = \"inner.toml\"\norigin = [{origin}]\nrotation = {{ {turn} }}\n"
+        ),
+    )
+    .unwrap();
+    path
+}
+
+fn run(path: &std::path::Path, args: &[&str]) -> Value {
+    let mut argv = vec!["report", "--format", "json"];
+    argv.extend(args);
+    argv.push(path.to_str().unwrap());
+    let out = massprop(&argv);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn deviations_are_invariant_under_a_rigid_motion_of_the_whole_body() {
+    let dir = scratch("uncertainty", "rigid");
+    let here = body(&dir, "0, 0, 0", "axis = [0, 0, 1], degrees = 0");
+    let a = run(&here, &["--uncertainty", "linear"]);
+    let dir2 = scratch("uncertainty", "rigid-moved");
+    let far = body(&dir2, "1e6, -2e6, 3e5", "axis = [1, 2, 3], degrees = 37");
+    let b = run(&far, &["--uncertainty", "linear"]);
+    // The far body's nominal centre and principal axes carry roundings
+    // of its offset (2e6 mm against sizes of 1e2: 2e4 units), and an
+    // axis's error grows by ‖I‖/gap (≈ 50 here): 1e-8 of each σ.
+    for q in [
+        "mass",
+        "principal_moments.1",
+        "principal_moments.2",
+        "principal_moments.3",
+    ] {
+        assert!(
+            close(sigma(&a, q), sigma(&b, q), 1e-8),
+            "{q}: {} {}",
+            sigma(&a, q),
+            sigma(&b, q)
+        );
+    }
+    // The centre's covariance turns with the body: its trace does not.
+    let trace = |v: &Value| -> f64 {
+        let c = &v["uncertainty"]["covariance"];
+        (1..4).map(|i| c[i][i].as_f64().unwrap()).sum()
+    };
+    assert!(close(trace(&a), trace(&b), 1e-9));
+}
+
+#[test]
+fn linear_and_monte_carlo_agree_for_small_tolerances() {
+    // For tolerances small enough that the body is linear in them, the
+    // sampled σ estimates the linear one with a relative standard error
+    // of 1/√(2(N − 1)) ≈ 0.5 % at N = 20,000: 5 of those, 2.5 %.
+    let dir = scratch("uncertainty", "linear-mc");
+    let path = body(&dir, "10, 20, 30", "axis = [0, 1, 1], degrees = 20");
+    let lin = run(&path, &["--uncertainty", "linear"]);
+    let mc = run(
+        &path,
+        &[
+            "--uncertainty",
+            "montecarlo",
+            "--samples",
+            "20000",
+            "--seed",
+            "7",
+        ],
+    );
+    assert_eq!(mc["uncertainty"]["rejected"], 0);
+    for o in lin["uncertainty"]["outputs"].as_array().unwrap() {
+        let q = o["quantity"].as_str().unwrap();
+        let (s1, s2) = (sigma(&lin, q), sigma(&mc, q));
+        assert!(close(s1, s2, 0.025), "{q}: linear {s1}, Monte Carlo {s2}");
+        let p = output(&mc, q)["percentiles"].as_array().unwrap();
+        let (lo, mid, hi) = (
+            p[0].as_f64().unwrap(),
+            p[1].as_f64().unwrap(),
+            p[2].as_f64().unwrap(),
+        );
+        // A normal's 5 % and 95 % lie 1.645 σ from its median.
+        assert!(close(hi - lo, 2.0 * 1.645 * s1, 0.05), "{q}");
+        assert!(
+            (mid - o["nominal"].as_f64().unwrap()).abs() <= 0.1 * s1 + 1e-15,
+            "{q}"
+        );
+    }
+}
+
+#[test]
+fn monte_carlo_is_reproducible_by_its_seed() {
+    let dir = scratch("uncertainty", "seed");
+    let path = body(&dir, "0, 0, 0", "axis = [0, 0, 1], degrees = 0");
+    let a = run(
+        &path,
+        &[
+            "--uncertainty",
+            "montecarlo",
+            "--samples",
+            "3000",
+            "--seed",
+            "3",
+        ],
+    );
+    let b = run(
+        &path,
+        &[
+            "--uncertainty",
+            "montecarlo",
+            "--samples",
+            "3000",
+            "--seed",
+            "3",
+        ],
+    );
+    let c = run(
+        &path,
+        &[
+            "--uncertainty",
+            "montecarlo",
+            "--samples",
+            "3000",
+            "--seed",
+            "4",
+        ],
+    );
+    assert_eq!(a["uncertainty"], b["uncertainty"]);
+    assert_ne!(a["uncertainty"], c["uncertainty"]);
+}
+
+#[test]
+fn the_chance_to_exceed_a_limit_is_the_normal_tail() {
+    // M ~ N(5, 0.1²) against max 5.1: P = 1 − Φ(1) = 0.158655.
+    let text = r#"
+[[part]]
+shape = "point"
+mass = "5 kg ± 0.1 kg"
+center = [0, 0, 0]
+[expect]
+mass = { max = 5.1 }
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    let p = v["uncertainty"]["exceed"][0]["probability"]
+        .as_f64()
+        .unwrap();
+    assert!((p - 0.158_655_253_931_457).abs() < 1e-6, "{p}");
+}
+
+#[test]
+fn a_tolerance_where_none_may_stand_is_refused_at_its_sign() {
+    let text = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n[analysis]\nomega = [0, 0, \"3 rad/s ± 1 rad/s\"]\n";
+    let dir = scratch("uncertainty", "refused");
+    let path = dir.join("f.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("f.toml:6:25") && err.contains("a tolerance is not allowed on `omega`"),
+        "{err}"
+    );
+}
+
+#[test]
+fn samples_without_monte_carlo_are_refused() {
+    let out = massprop(&[
+        "report",
+        "shapes/bent-plate.toml",
+        "--uncertainty",
+        "linear",
+        "--samples",
+        "10",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(
+        String::from_utf8_lossy(&out.stderr)
+            .contains("`--samples` needs `--uncertainty montecarlo`")
+    );
+}
