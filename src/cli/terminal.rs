@@ -86,7 +86,8 @@ impl Cli {
         let mut matches = command.try_get_matches_from_mut(args)?;
         let cli = Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))?;
         if let super::Command::Report(a) = &cli.command {
-            a.check_rules()
+            a.uncertainty
+                .check_rules()
                 .map_err(|m| command.error(clap::error::ErrorKind::ArgumentConflict, m))?;
         }
         Ok(cli)
