@@ -316,11 +316,23 @@ pub fn propagate(
         let file_sources = &leaf.placing.model.sources;
         let mut ids = Vec::with_capacity(deps.len());
         for dep in deps.iter() {
-            let key = crate::model::walk::mix(leaf.placing.part, u64::from(dep.source), 0);
+            let s = &file_sources[dep.source as usize];
+            // A parameter's source is one per instance of its file, a
+            // part's own one per copy of the part.
+            let instance = if s.shared {
+                leaf.placing.file
+            } else {
+                leaf.placing.part
+            };
+            let key = crate::model::walk::mix(instance, u64::from(dep.source), 0);
             let id = *index.entry(key).or_insert_with(|| {
-                let s = &file_sources[dep.source as usize];
+                let label = match (s.shared, placed.assembly.last()) {
+                    (false, _) => format!("{}: {} ± {}", placed.name, s.key, s.written),
+                    (true, Some(file)) => format!("{file}: {} ± {}", s.key, s.written),
+                    (true, None) => format!("{} ± {}", s.key, s.written),
+                };
                 sources.push(Source {
-                    label: format!("{}: {} ± {}", placed.name, s.key, s.written),
+                    label,
                     d: Sums::default(),
                     uniform: s.spread == crate::model::tolerance::Spread::Uniform,
                 });

@@ -151,6 +151,11 @@ impl Value {
         }
     }
 
+    /// The value (SI) as the nearest f64.
+    pub fn num_f64(self) -> f64 {
+        self.num.dd().f64()
+    }
+
     /// The value in units of `factor` (of the value's dimension), rounded
     /// once to the nearest f64 where it is exact and the ratio is too.
     pub fn in_units(self, factor: Factor) -> f64 {
@@ -265,6 +270,7 @@ pub struct Expr {
 }
 
 mod parse;
+pub mod tangent;
 
 impl Expr {
     /// Read `text`; nothing is looked up yet.

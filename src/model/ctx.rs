@@ -181,13 +181,16 @@ impl Ctx<'_> {
                 // An expression's value comes checked.
                 let (v, checked) = match units::parse_quantity_in(t, dim, self.units) {
                     Ok(v) => (v, false),
-                    Err(e) => match self.expression(q, t, key, dim, self.units.factor(dim))? {
-                        Some(v) => (v, true),
+                    Err(e) => match self.expression_grad(q, t, key, dim, self.units.factor(dim))? {
+                        Some((v, grad)) => {
+                            self.record_grad(key, &grad);
+                            (v, true)
+                        }
                         None => return Err(self.err(q.span(), format!("`{key}`: {e}"))),
                     },
                 };
                 if let Some(tol) = tol {
-                    self.record(q, key, v, tol);
+                    self.record(q, key, dim, v, tol);
                 }
                 if checked {
                     return Ok(v);

@@ -9,6 +9,7 @@
 use super::Ctx;
 use super::raw::{Params as RawParams, Quantity};
 use crate::diag::{Diagnostic, Source};
+use crate::expr::tangent::{Grad, axpy};
 use crate::expr::{self, Expr, Value};
 use crate::units::{self, Dim, Factor};
 use std::collections::BTreeMap;
@@ -19,11 +20,29 @@ use toml::Spanned;
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Params {
     values: BTreeMap<String, Value>,
+    /// How the parameters with a tolerance (their own, or of the
+    /// parameters they use) move with the file's sources (SI per z).
+    grads: BTreeMap<String, Grad>,
 }
 
 impl Params {
     pub(crate) fn get(&self, name: &str) -> Option<Value> {
         self.values.get(name).copied()
+    }
+
+    /// A parameter's value and gradient (empty without a tolerance).
+    fn with_grad(&self, name: &str) -> Option<(Value, Grad)> {
+        let v = self.get(name)?;
+        Some((v, self.grads.get(name).cloned().unwrap_or_default()))
+    }
+
+    /// The gradient of an expression evaluated in these parameters (empty
+    /// when none of them has a tolerance).
+    fn grad_of(&self, e: &Expr) -> Grad {
+        if self.grads.is_empty() || !e.names().any(|(n, _)| self.grads.contains_key(n)) {
+            return Grad::new();
+        }
+        e.tangent(&|n| self.with_grad(n))
     }
 
     fn is_empty(&self) -> bool {
@@ -128,11 +147,29 @@ impl Ctx<'_> {
                 }
                 Quantity::Text(t) => {
                     let what = format!("parameter `{name}`");
+                    // NOTE: a tolerance's source belongs to one file's
+                    // instance; carried into another file it would need
+                    // the including instance's key. Refused, not dropped.
+                    if let Some((_, _, at)) = super::tolerance::split(t) {
+                        return Err(self
+                            .not_allowed(self.source, q.span(), t, at, "params")
+                            .help("a tolerance cannot be passed to an included file yet: give it in that file's `[params]`"));
+                    }
                     let e =
                         Expr::parse(t).map_err(|e| located(self.source, q.span(), t, e, &what))?;
                     let params = &self.params;
-                    e.eval(&|n| params.get(n), &|| params.names())
-                        .map_err(|e| located(self.source, q.span(), t, e, &what))?
+                    let v = e
+                        .eval(&|n| params.get(n), &|| params.names())
+                        .map_err(|e| located(self.source, q.span(), t, e, &what))?;
+                    if !params.grad_of(&e).is_empty() {
+                        return Err(self
+                            .err(
+                                q.span(),
+                                format!("{what} uses a parameter with a tolerance, which cannot be passed to an included file yet"),
+                            )
+                            .help("give the tolerance in the included file's `[params]`"));
+                    }
+                    v
                 }
             };
             out.push(Pass {
@@ -218,6 +255,8 @@ impl Ctx<'_> {
                 Def::Set(source) => (source.text.as_str(), 0..source.text.len(), *source),
                 Def::Value(_) => continue,
             };
+            // The value before a tolerance (`"2 mm ± 0.1 mm"`): read after.
+            let text = super::tolerance::split(text).map_or(text, |s| s.0);
             let e = Expr::parse(text)
                 .map_err(|e| located(source, span, text, e, &format!("parameter `{name}`")))?;
             exprs.insert(name, e);
@@ -248,13 +287,28 @@ impl Ctx<'_> {
                         Def::Value(_) => unreachable!("invariant: matched above"),
                     };
                     let params = &self.params;
-                    exprs[name]
+                    let value = exprs[name]
                         .eval(&|n| params.get(n), &|| {
                             defs.keys().map(|k| k.to_string()).collect()
                         })
                         .map_err(|e| {
-                            located(source, span, text, e, &format!("parameter `{name}`"))
-                        })?
+                            located(source, span.clone(), text, e, &format!("parameter `{name}`"))
+                        })?;
+                    // Its gradient: through the parameters it uses, and
+                    // its own tolerance, a source shared by every use.
+                    let mut grad = self.params.grad_of(&exprs[name]);
+                    if super::tolerance::split(text).is_some() {
+                        let key = format!("param `{name}`");
+                        let tol = self.amount(source, span.clone(), text, value.dim, &key)?;
+                        let si = value.num_f64();
+                        let at = if std::ptr::eq(source, self.source) { span } else { 0..0 };
+                        let k = self.shared_source(name, at, &tol);
+                        axpy(&mut grad, 1.0, &vec![(k, tol.sigma_of(si))]);
+                    }
+                    if !grad.is_empty() {
+                        self.params.grads.insert(name.to_string(), grad);
+                    }
+                    value
                 }
             };
             self.params.values.insert(name.to_string(), value);
@@ -352,6 +406,22 @@ impl Ctx<'_> {
         dim: Dim,
         factor: Factor,
     ) -> Result<Option<f64>, Diagnostic> {
+        Ok(self
+            .expression_grad(q, text, key, dim, factor)?
+            .map(|(x, _)| x))
+    }
+
+    /// `expression`, with the gradient of its value by the sources of the
+    /// parameters it uses (in units of `factor`; empty without), refused
+    /// where no tolerance may stand.
+    pub(super) fn expression_grad(
+        &self,
+        q: &Spanned<Quantity>,
+        text: &str,
+        key: &str,
+        dim: Dim,
+        factor: Factor,
+    ) -> Result<Option<(f64, Grad)>, Diagnostic> {
         if dim != Dim::DIMENSIONLESS && self.looks_plain(text) {
             return Ok(None);
         }
@@ -383,6 +453,12 @@ impl Ctx<'_> {
                     "angles are dimensionless, so `90 deg` would be read as 1.5708 (radians); write `{key}` without `deg`, `rad` or `rev` (in a parameter too)"
                 )));
         }
+        let mut grad = params.grad_of(&e);
+        if !grad.is_empty() {
+            self.tolerable_grad(q, key, &grad)?;
+            let f = factor.value();
+            grad.iter_mut().for_each(|(_, d)| *d /= f);
+        }
         let x = v.in_units(factor);
         if !x.is_finite() {
             return Err(self.err(
@@ -399,7 +475,7 @@ impl Ctx<'_> {
                 ),
             ));
         }
-        Ok(Some(x))
+        Ok(Some((x, grad)))
     }
 
     /// Whether `text` is a plain quantity, right or wrong (`"3 furlongs"`,

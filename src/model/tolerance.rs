@@ -51,6 +51,9 @@ pub struct Source {
     pub spread: Spread,
     /// The quantity's string in the file.
     pub span: Range<usize>,
+    /// A parameter's: one variable for each instance of the file, shared
+    /// by every key that uses it (else one for each copy of the part).
+    pub shared: bool,
 }
 
 /// The tolerances read while a part's numbers are read (`Ctx::spec`).
@@ -72,9 +75,17 @@ struct Reading {
     key: String,
     row: usize,
     component: usize,
-    /// One standard deviation, in the key's file units.
-    sigma: f64,
-    source: Source,
+    /// ∂value/∂z in the key's file units: one standard deviation of its
+    /// own tolerance, or its derivative by a parameter's source.
+    rate: f64,
+    origin: Origin,
+}
+
+/// Where a reading's source is: its own tolerance, or a parameter's.
+#[derive(Debug)]
+enum Origin {
+    New(Source),
+    Shared(u32),
 }
 
 /// The keys of a part that fill a number of its `Spec` (a tolerance
@@ -121,9 +132,8 @@ pub fn split(text: &str) -> Option<(&str, &str, usize)> {
 
 impl Ctx<'_> {
     /// The value's text of a quantity string, and its tolerance if it has
-    /// one (refused where no tolerance may stand), as (amount's text,
-    /// spread, whether relative, amount: a fraction if relative, else in
-    /// the key's file units).
+    /// one (refused where no tolerance may stand: outside a part's keys
+    /// that fill its numbers, `TOLERABLE`).
     pub(super) fn tolerance_of<'t>(
         &self,
         q: &Spanned<Quantity>,
@@ -131,21 +141,46 @@ impl Ctx<'_> {
         key: &str,
         dim: Dim,
     ) -> Result<(&'t str, Option<Tol>), Diagnostic> {
-        let Some((value, amount, at)) = split(text) else {
+        let Some((value, _, at)) = split(text) else {
             return Ok((text, None));
-        };
-        let here = |from: usize, to: usize| {
-            super::params::sub_span(&self.source.text, q.span(), text, from..to)
         };
         let allowed = self.tol.borrow().in_part && TOLERABLE.contains(&key);
         if !allowed {
-            return Err(self
-                .err(
-                    here(at, at + (text.len() - at).min(3)),
-                    format!("a tolerance is not allowed on `{key}`"),
-                )
-                .help("tolerances go on a part's mass, density, sizes, radii and position (docs/uncertainty.md)"));
+            return Err(self.not_allowed(self.source, q.span(), text, at, key));
         }
+        let tol = self.amount(self.source, q.span(), text, dim, key)?;
+        Ok((value, Some(tol)))
+    }
+
+    /// The error for a tolerance at byte `at` of `text` (the string at
+    /// `span` of `source`) where none may stand.
+    pub(super) fn not_allowed(
+        &self,
+        source: &crate::diag::Source,
+        span: Range<usize>,
+        text: &str,
+        at: usize,
+        key: &str,
+    ) -> Diagnostic {
+        let here = super::params::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
+        source
+            .error(here, format!("a tolerance is not allowed on `{key}`"))
+            .help("tolerances go on a part's mass, density, sizes, radii and position, and on `[params]` (docs/uncertainty.md)")
+    }
+
+    /// The tolerance of `text` (which has one: `split`), the string at
+    /// `span` of `source`, for a value of dimension `dim`: its amount in
+    /// SI, or a fraction if relative.
+    pub(super) fn amount(
+        &self,
+        source: &crate::diag::Source,
+        span: Range<usize>,
+        text: &str,
+        dim: Dim,
+        key: &str,
+    ) -> Result<Tol, Diagnostic> {
+        let (value, amount, at) = split(text).expect("invariant: the text has a tolerance");
+        let here = |from: usize, to: usize| super::params::sub_span(&source.text, span.clone(), text, from..to);
         let start = text.len() - amount.len();
         let trimmed = amount.trim();
         let (body, spread) = match trimmed.rsplit_once(char::is_whitespace) {
@@ -153,16 +188,16 @@ impl Ctx<'_> {
             Some((b, "normal")) => (b.trim_end(), Spread::Normal),
             _ => (trimmed, Spread::Normal),
         };
+        let example = dim.example();
+        let example = example.trim_matches('"');
         let bad = |message: String| {
-            self.err(here(start, text.len()), message).help(format!(
-                "a tolerance is an amount of the value's unit or a percentage, then `uniform` or `normal` (the default): `± {}`, `± 2 %`, `± {} uniform`",
-                dim.example().trim_matches('"'),
-                dim.example().trim_matches('"'),
+            source.error(here(start, text.len()), message).help(format!(
+                "a tolerance is an amount of the value's unit or a percentage, then `uniform` or `normal` (the default): `± {example}`, `± 2 %`, `± {example} uniform`"
             ))
         };
         if value.is_empty() {
-            return Err(self.err(
-                here(0, at),
+            return Err(source.error(
+                here(0, at.max(1)),
                 format!("`{key}`: a value must stand before the tolerance"),
             ));
         }
@@ -170,15 +205,13 @@ impl Ctx<'_> {
             match p.trim().parse::<f64>() {
                 Ok(x) => (true, x / 100.0),
                 Err(_) => {
-                    return Err(bad(format!(
-                        "`{key}`: the tolerance {body:?} is not a percentage"
-                    )));
+                    return Err(bad(format!("`{key}`: the tolerance {body:?} is not a percentage")));
                 }
             }
         } else if let Ok(x) = body.parse::<f64>() {
-            (false, x)
+            (false, self.units.factor(dim).apply(x))
         } else {
-            match units::parse_quantity_in(body, dim, self.units) {
+            match units::parse_quantity(body, dim) {
                 Ok(x) => (false, x),
                 Err(e) => return Err(bad(format!("`{key}`: the tolerance: {e}"))),
             }
@@ -188,25 +221,30 @@ impl Ctx<'_> {
                 "`{key}`: a tolerance must be a finite amount, zero or more"
             )));
         }
-        Ok((
-            value,
-            Some(Tol {
-                written: trimmed.to_string(),
-                spread,
-                relative,
-                amount: x,
-            }),
-        ))
+        Ok(Tol {
+            written: trimmed.to_string(),
+            spread,
+            relative,
+            amount: x,
+        })
     }
 
     /// Record the tolerance `tol` of the value `value` (file units) read
     /// for `key`, if a part's numbers are being recorded.
-    pub(super) fn record(&self, q: &Spanned<Quantity>, key: &str, value: f64, tol: Tol) {
+    pub(super) fn record(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+        value: f64,
+        tol: Tol,
+    ) {
         let mut r = self.tol.borrow_mut();
+        // In the key's file units, as `value`.
         let amount = if tol.relative {
             tol.amount * value.abs()
         } else {
-            tol.amount
+            tol.amount / self.units.factor(dim).value()
         };
         let (row, component) = (r.row, r.component);
         let key_text = match key {
@@ -218,14 +256,76 @@ impl Ctx<'_> {
             key: key.to_string(),
             row,
             component,
-            sigma: tol.spread.sigma(amount),
-            source: Source {
+            rate: tol.spread.sigma(amount),
+            origin: Origin::New(Source {
                 key: key_text,
                 written: tol.written,
                 spread: tol.spread,
                 span: q.span(),
-            },
+                shared: false,
+            }),
         });
+    }
+
+    /// Record how the value read for `key` moves with the sources of the
+    /// parameters its expression uses: `grad` in SI, `factor` the key's
+    /// unit (refused where no tolerance may stand).
+    /// Refuse a value that moves with a parameter's tolerance (`grad`,
+    /// not empty) where no tolerance may stand, or where it has no
+    /// derivative.
+    pub(super) fn tolerable_grad(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        grad: &crate::expr::tangent::Grad,
+    ) -> Result<(), Diagnostic> {
+        let r = self.tol.borrow();
+        if !(r.in_part && TOLERABLE.contains(&key)) {
+            let names = r.sources[grad[0].0 as usize].key.clone();
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`{key}` uses a parameter with a tolerance ({names}), and a tolerance is not allowed on `{key}`"),
+                )
+                .help("tolerances go on a part's mass, density, sizes, radii and position (docs/uncertainty.md)"));
+        }
+        if grad.iter().any(|(_, d)| !d.is_finite()) {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` has no derivative by its parameters' tolerances here (a square root of 0?)"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Record how the value read for `key` moves with the sources of the
+    /// parameters its expression uses (`grad`, in the key's file units).
+    pub(super) fn record_grad(&self, key: &str, grad: &crate::expr::tangent::Grad) {
+        let mut r = self.tol.borrow_mut();
+        let (row, component) = (r.row, r.component);
+        for &(source, d) in grad {
+            r.readings.push(Reading {
+                key: key.to_string(),
+                row,
+                component,
+                rate: d,
+                origin: Origin::Shared(source),
+            });
+        }
+    }
+
+    /// A parameter's own tolerance as a source shared by every key that
+    /// uses it, in this instance of the file; its index.
+    pub(super) fn shared_source(&self, name: &str, span: Range<usize>, tol: &Tol) -> u32 {
+        let mut r = self.tol.borrow_mut();
+        r.sources.push(Source {
+            key: format!("param `{name}`"),
+            written: tol.written.clone(),
+            spread: tol.spread,
+            span,
+            shared: true,
+        });
+        (r.sources.len() - 1) as u32
     }
 
     /// Start reading a part's keys: tolerances are allowed and recorded.
@@ -249,24 +349,43 @@ impl Ctx<'_> {
         for reading in r.readings.drain(..) {
             let (slot, factor) = slot(shape, place, &reading.key, reading.row, reading.component)
                 .expect("invariant: every key a tolerance is allowed on fills a slot");
+            let source = match reading.origin {
+                Origin::New(s) => {
+                    sources.push(s);
+                    (sources.len() - 1) as u32
+                }
+                Origin::Shared(k) => k,
+            };
             deps.push(Dep {
                 slot,
-                source: sources.len() as u32,
-                rate: factor * reading.sigma,
+                source,
+                rate: factor * reading.rate,
             });
-            sources.push(reading.source);
         }
         (!deps.is_empty()).then(|| deps.into())
     }
 }
 
-/// A tolerance read from a quantity string (see `Ctx::tolerance_of`).
+/// A tolerance read from a quantity string (see `Ctx::amount`).
 #[derive(Debug, Clone)]
 pub(super) struct Tol {
     written: String,
     spread: Spread,
     relative: bool,
+    /// SI, or a fraction of the value if `relative`.
     amount: f64,
+}
+
+impl Tol {
+    /// One standard deviation for a value `value` (SI).
+    pub(super) fn sigma_of(&self, value: f64) -> f64 {
+        let amount = if self.relative {
+            self.amount * value.abs()
+        } else {
+            self.amount
+        };
+        self.spread.sigma(amount)
+    }
 }
 
 /// The number of a part's `Spec` that `key` (its `row` and `component`)
