@@ -16,7 +16,8 @@ pub use terminal::{OutputArgs, Streams};
 const EXIT_STATUS: &str = "\
 Exit status:
   0  success
-  1  `check`: an expectation or validity check failed; `diff`: something changed beyond --tol
+  1  `check`: an expectation or validity check failed; `diff`: something changed beyond --tol;
+     `budget`: the predicted mass exceeds the limit
   2  an error: bad input, unreadable file, bad flag (nothing is printed on stdout)";
 
 /// Mass properties of composite rigid bodies described by TOML part files.
@@ -40,6 +41,9 @@ pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
     #[command(after_help = REPORT_HELP)]
     Report(ReportArgs),
+    /// The weight statement: basic mass, growth by maturity and predicted mass per group, the margin against the limit.
+    #[command(after_help = BUDGET_HELP)]
+    Budget(BudgetArgs),
     /// Check part files' `[expect]` blocks and physical validity, and robot descriptions' inertials by each engine's rule (for CI).
     #[command(after_help = CHECK_HELP)]
     Check(CheckArgs),
@@ -71,6 +75,14 @@ Examples:
   massprop report arm.toml                        the table, in the file's units
   massprop report arm.toml --format json | jq .mass SI, each value with its error bound
   massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"";
+
+const BUDGET_HELP: &str = "\
+Examples:
+  massprop budget sat.toml                        groups, growth, predicted mass and margin
+  massprop budget sat.toml --format json | jq .limit   SI
+  massprop budget sat.toml --only payload         one sub-assembly (no limit: the limit is the whole body's)
+
+Exit status 1 when `[budget] limit` (else `[expect] mass`'s `max`) is below the predicted mass.";
 
 const CHECK_HELP: &str = "\
 Examples:
@@ -412,6 +424,38 @@ pub struct ReportArgs {
     pub includes: IncludeArgs,
 }
 
+#[derive(Args, Debug)]
+pub struct BudgetArgs {
+    /// The part file (`-` reads standard input).
+    #[arg(value_name = "FILE")]
+    pub file: String,
+
+    /// Output format.
+    #[arg(long, value_enum, default_value_t)]
+    pub format: Format,
+
+    /// Write the output to FILE instead of standard output, atomically.
+    #[arg(short = 'o', long = "output", value_name = "FILE")]
+    pub output: Option<String>,
+
+    /// Sign convention of products of inertia in the output.
+    #[arg(long, value_enum, default_value_t)]
+    pub products: Products,
+
+    /// The statement of one sub-assembly (an `include`, by its name) alone.
+    #[arg(long, value_name = "NAME")]
+    pub only: Option<String>,
+
+    #[command(flatten)]
+    pub accuracy: AccuracyArgs,
+
+    #[command(flatten)]
+    pub axes: AxesArgs,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
+}
+
 impl ValueEnum for Format {
     fn value_variants<'a>() -> &'a [Self] {
         &[Format::Table, Format::Json]
@@ -578,6 +622,21 @@ impl Cli {
                         omega: a.omega.clone(),
                         alpha: a.alpha.clone(),
                         axes: a.axes.axes.clone(),
+                    },
+                },
+            }),
+            Command::Budget(a) => Request::Budget(commands::report::Options {
+                file: a.file.clone(),
+                format: a.format,
+                output: a.output.clone(),
+                settings: Settings {
+                    products: a.products,
+                    accuracy: a.accuracy.accuracy(),
+                    only: a.only.clone(),
+                    includes: a.includes.includes(),
+                    overrides: Overrides {
+                        axes: a.axes.axes.clone(),
+                        ..Default::default()
                     },
                 },
             }),

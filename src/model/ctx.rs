@@ -29,6 +29,8 @@ pub(crate) struct Ctx<'a> {
     pub(super) materials: std::collections::BTreeMap<String, (f64, f64)>,
     /// `[params]`, evaluated (`model::params`).
     pub(super) params: super::params::Params,
+    /// `[growth]`: maturity → allowance (`model::budget`).
+    pub(super) growth: super::budget::Allowances,
 }
 
 impl Ctx<'_> {

@@ -345,6 +345,7 @@ impl Ctx<'_> {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
+            growth: Default::default(),
         };
         files
             .stack
@@ -540,6 +541,7 @@ impl Ctx<'_> {
             model: child,
             span: raw.span(),
             copies: None,
+            tag: self.tag(p, false)?,
         };
         // Representable in this file's units too (the composer works in
         // them): a sub-assembly in µm and mg can underflow in km and t.

@@ -14,6 +14,7 @@
 //! `mirror`: `copies`) are frames too, made as the walk reaches each copy
 //! and applied after the sub-assembly's own: the copies are never held.
 
+use super::budget::Tag;
 use super::{Copies, Frame, Include, Item, Model, push_copy_name};
 use crate::part::{Part, Parts, RealSize};
 use std::borrow::Cow;
@@ -35,6 +36,9 @@ pub struct Leaf<'a> {
     pub part: &'a Part,
     /// Its real thickness or diameter, in this file's length unit.
     pub real: Option<RealSize>,
+    /// Its own `group` and `maturity` (`budget`); the sub-assemblies'
+    /// that hold it come with `Event::Enter`.
+    pub tag: Option<&'a Tag>,
 }
 
 /// What a walk of the tree meets, in file order: a sub-assembly entered,
@@ -173,12 +177,17 @@ impl<'m> Walk<'m> {
                         }
                     }
                 },
-                Item::Part { part, real, copies } => match copies {
-                    None => self.part(k, part, *real, None, f),
+                Item::Part {
+                    part,
+                    real,
+                    copies,
+                    tag,
+                } => match copies {
+                    None => self.part(k, (part, tag.as_deref()), *real, None, f),
                     Some(c) => {
                         for i in c.indices() {
                             let pushed = self.copy_frames(c, i, &part.span);
-                            self.part(k, part, *real, Some(i), f);
+                            self.part(k, (part, tag.as_deref()), *real, Some(i), f);
                             self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
@@ -228,11 +237,12 @@ impl<'m> Walk<'m> {
         f(Event::Exit);
     }
 
-    /// The part `part`, `k` its position in its file (its copy `copy`).
+    /// The part `part` with its tag, `k` its position in its file (its
+    /// copy `copy`).
     fn part(
         &mut self,
         k: usize,
-        part: &'m Part,
+        (part, tag): (&'m Part, Option<&'m Tag>),
         real: Option<(crate::part::Solid, f64)>,
         copy: Option<usize>,
         f: &mut dyn FnMut(Event<'_>),
@@ -247,7 +257,12 @@ impl<'m> Walk<'m> {
         let unnamed = self.named && !part.named;
         let Some(outermost) = self.frames.first() else {
             if !unnamed && copy.is_none() {
-                f(Event::Part(Leaf { index, part, real }));
+                f(Event::Part(Leaf {
+                    index,
+                    part,
+                    real,
+                    tag,
+                }));
                 return;
             }
             let placed = &mut self.placed;
@@ -261,6 +276,7 @@ impl<'m> Walk<'m> {
                 index,
                 part: &self.placed,
                 real,
+                tag,
             }));
             return;
         };
@@ -283,6 +299,7 @@ impl<'m> Walk<'m> {
             index,
             part: placed,
             real,
+            tag,
         }));
     }
 }

@@ -29,7 +29,7 @@ fn numbers(n: usize) -> Vec<bool> {
 
 /// Entries to the digits their bounds `b` guarantee, read against the
 /// largest entry (`fmt_bounded`).
-fn matrix_table(
+pub(super) fn matrix_table(
     out: &mut String,
     (m, b): (&[[f64; 3]; 3], &[[f64; 3]; 3]),
     scale: f64,
@@ -103,7 +103,7 @@ fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Opti
 
 /// Which axes the values are in: the file's, or the report axes given
 /// (`axes`), each as its direction in the file's frame.
-fn axes_line(axes: &[[f64; 3]; 3]) -> String {
+pub(super) fn axes_line(axes: &[[f64; 3]; 3]) -> String {
     if file_axes(axes) {
         return "axes: the file's".to_string();
     }
