@@ -2,11 +2,10 @@
 //! the file's units (as `report`'s), and JSON in SI (docs/budget.md).
 
 use super::format::{
-    DisplayUnits, fmt_bounded, fmt_num, name, precision_label, products_label, push_name,
-    push_percent,
+    DisplayUnits, fmt_bounded, fmt_num, precision_label, products_label, push_name, push_percent,
 };
 use super::grid::{Cells, Fit, write_rows, write_table};
-use super::report::{axes_line, matrix_table};
+use super::report::{axes_line, matrix_table, title};
 use crate::analysis::budget::{LimitSource, Statement};
 use std::fmt::Write;
 
@@ -23,17 +22,7 @@ pub const NO_GROUP: &str = "(no group)";
 pub fn table(s: &Statement, width: Option<usize>) -> String {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
-    let source = name(&s.source);
-    let _ = match (&s.name, &s.sub_assembly) {
-        (Some(n), Some(path)) => writeln!(
-            out,
-            "{} (sub-assembly `{}` of {source})",
-            name(n),
-            name(&path.join(" / "))
-        ),
-        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
-        (None, _) => writeln!(out, "{source}"),
-    };
+    title(&mut out, &s.name, &s.sub_assembly, &s.source);
     let _ = writeln!(
         out,
         "units: mass {}, length {}, inertia {}",

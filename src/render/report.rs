@@ -101,6 +101,27 @@ fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Opti
     write_rows(out, &header, &rows, &numbers(header.len()), fit);
 }
 
+/// The first line: the body's name and the file (and the sub-assembly,
+/// with `--only`), or the file alone.
+pub(super) fn title(
+    out: &mut String,
+    body: &Option<String>,
+    sub_assembly: &Option<Vec<String>>,
+    source: &str,
+) {
+    let source = name(source);
+    let _ = match (body, sub_assembly) {
+        (Some(n), Some(path)) => writeln!(
+            out,
+            "{} (sub-assembly `{}` of {source})",
+            name(n),
+            name(&path.join(" / "))
+        ),
+        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
+        (None, _) => writeln!(out, "{source}"),
+    };
+}
+
 /// Which axes the values are in: the file's, or the report axes given
 /// (`axes`), each as its direction in the file's frame.
 pub(super) fn axes_line(axes: &[[f64; 3]; 3]) -> String {
@@ -171,17 +192,7 @@ pub fn write_table_to(
 ) -> std::io::Result<()> {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
-    let source = name(source);
-    let _ = match (&s.name, &s.sub_assembly) {
-        (Some(n), Some(path)) => writeln!(
-            out,
-            "{} (sub-assembly `{}` of {source})",
-            name(n),
-            name(&path.join(" / "))
-        ),
-        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
-        (None, _) => writeln!(out, "{source}"),
-    };
+    title(&mut out, &s.name, &s.sub_assembly, source);
     let _ = writeln!(
         out,
         "units: mass {}, length {}, inertia {}; ω, H, T, α and M in SI",
