@@ -10,15 +10,11 @@ use crate::render::Format;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod help;
 mod terminal;
 mod uncertainty;
+use help::*;
 pub use terminal::{OutputArgs, Streams};
-
-const EXIT_STATUS: &str = "\
-Exit status:
-  0  success
-  1  `check`: an expectation or validity check failed; `diff`: something changed beyond --tol
-  2  an error: bad input, unreadable file, bad flag (nothing is printed on stdout)";
 
 /// Mass properties of composite rigid bodies described by TOML part files.
 #[derive(Parser, Debug)]
@@ -41,6 +37,9 @@ pub enum Command {
     /// Report mass, centre of mass, inertia, principal axes, H, T and M of a part file.
     #[command(after_help = REPORT_HELP)]
     Report(ReportArgs),
+    /// The weight statement: basic mass, growth by maturity and predicted mass per group, the margin against the limit.
+    #[command(after_help = BUDGET_HELP)]
+    Budget(BudgetArgs),
     /// Check part files' `[expect]` blocks and physical validity, and robot descriptions' inertials by each engine's rule (for CI).
     #[command(after_help = CHECK_HELP)]
     Check(CheckArgs),
@@ -66,58 +65,6 @@ pub enum Command {
     #[command(after_help = INIT_HELP)]
     Init(InitArgs),
 }
-
-const REPORT_HELP: &str = "\
-Examples:
-  massprop report arm.toml                        the table, in the file's units
-  massprop report arm.toml --format json | jq .mass SI, each value with its error bound
-  massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"";
-
-const CHECK_HELP: &str = "\
-Examples:
-  massprop check .                      every part file here (ignored and hidden ones not)
-  massprop check . --format github      annotations on a GitHub pull request
-  massprop check --bless arm.toml       write today's values into [expect]
-  massprop check robot.urdf --engine mujoco   each link's inertial by MuJoCo's rule";
-
-const DIFF_HELP: &str = "\
-Examples:
-  massprop diff old.toml new.toml
-  massprop diff old.toml new.toml --tol 1e-6 --format json
-  massprop diff arm.toml robot.urdf --link forearm   a part file against a link's inertial";
-
-const EXPORT_HELP: &str = "\
-Examples:
-  massprop export arm.toml --to urdf                       the <inertial> element
-  massprop export arm.toml --to mjcf --principal           diaginertia and quat
-  massprop export arm.toml --update robot.urdf --link forearm --dry-run   the change, as a diff";
-
-const MATERIALS_HELP: &str = "\
-Examples:
-  massprop materials
-  massprop materials arm.toml           with arm.toml's own [materials]";
-
-const COMPLETIONS_HELP: &str = "\
-Examples:
-  massprop completions bash > ~/.local/share/bash-completion/completions/massprop
-  massprop completions zsh > ~/.zfunc/_massprop      # with fpath+=~/.zfunc
-  massprop completions fish > ~/.config/fish/completions/massprop.fish";
-
-const MAN_HELP: &str = "\
-Examples:
-  massprop man > ~/.local/share/man/man1/massprop.1 && man massprop
-  massprop man | man -l -";
-
-const SCHEMA_HELP: &str = "\
-Examples:
-  massprop schema > massprop.schema.json          then `#:schema ./massprop.schema.json` atop a part file
-  massprop schema | jq '.\"$defs\".ShapeName.enum'  the shape names";
-
-const INIT_HELP: &str = "\
-Examples:
-  massprop init arm.toml                a new file (an existing one is left alone: exit 2)
-  massprop init                         the starter on standard output
-  massprop init arm.toml && massprop check arm.toml";
 
 #[derive(Args, Debug)]
 pub struct InitArgs {
@@ -365,6 +312,38 @@ fn engines(args: &[EngineArg]) -> Vec<crate::robot::engine::Engine> {
 
 #[derive(Args, Debug)]
 pub struct ReportArgs {
+    #[command(flatten)]
+    pub body: BodyArgs,
+
+    /// Reference point, overriding `[analysis].about`: x,y,z in the file's
+    /// length unit, or with units, e.g. "0,0,10 mm".
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub about: Option<String>,
+
+    /// Angular velocity ω, overriding `[analysis].omega`: x,y,z in rad/s, or
+    /// with units, e.g. "0,0,3000 rpm".
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub omega: Option<String>,
+
+    /// Angular acceleration α, overriding `[analysis].alpha`: x,y,z in
+    /// rad/s², or with units, e.g. "0,0,90 deg/s^2". Needs ω.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub alpha: Option<String>,
+
+    #[command(flatten)]
+    pub axes: AxesArgs,
+
+    #[command(flatten)]
+    pub includes: IncludeArgs,
+
+    #[command(flatten)]
+    pub uncertainty: uncertainty::UncertaintyArgs,
+}
+
+/// What every command that reports one body takes: the file, the output
+/// and how the body is computed (`report`, `budget`).
+#[derive(Args, Debug)]
+pub struct BodyArgs {
     /// The part file (`-` reads standard input).
     #[arg(value_name = "FILE")]
     pub file: String,
@@ -390,30 +369,38 @@ pub struct ReportArgs {
 
     #[command(flatten)]
     pub accuracy: AccuracyArgs,
+}
 
-    /// Reference point, overriding `[analysis].about`: x,y,z in the file's
-    /// length unit, or with units, e.g. "0,0,10 mm".
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
-    pub about: Option<String>,
+impl BodyArgs {
+    /// `report`'s options (which `budget` takes too), with the
+    /// `[analysis]` overrides and the includes the command has.
+    fn options(&self, overrides: Overrides, includes: &IncludeArgs) -> commands::report::Options {
+        commands::report::Options {
+            file: self.file.clone(),
+            format: self.format,
+            output: self.output.clone(),
+            settings: Settings {
+                products: self.products,
+                accuracy: self.accuracy.accuracy(),
+                only: self.only.clone(),
+                includes: includes.includes(),
+                overrides,
+                uncertainty: None,
+            },
+        }
+    }
+}
 
-    /// Angular velocity ω, overriding `[analysis].omega`: x,y,z in rad/s, or
-    /// with units, e.g. "0,0,3000 rpm".
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
-    pub omega: Option<String>,
-
-    /// Angular acceleration α, overriding `[analysis].alpha`: x,y,z in
-    /// rad/s², or with units, e.g. "0,0,90 deg/s^2". Needs ω.
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
-    pub alpha: Option<String>,
+#[derive(Args, Debug)]
+pub struct BudgetArgs {
+    #[command(flatten)]
+    pub body: BodyArgs,
 
     #[command(flatten)]
     pub axes: AxesArgs,
 
     #[command(flatten)]
     pub includes: IncludeArgs,
-
-    #[command(flatten)]
-    pub uncertainty: uncertainty::UncertaintyArgs,
 }
 
 impl ValueEnum for Format {
@@ -568,25 +555,27 @@ impl Cli {
     /// What was typed, as the library's options.
     pub fn request(&self) -> Request {
         match &self.command {
-            Command::Report(a) => Request::Report(commands::report::Options {
-                file: a.file.clone(),
-                format: a.format,
-                output: a.output.clone(),
-                settings: Settings {
-                    products: a.products,
-                    accuracy: a.accuracy.accuracy(),
-                    only: a.only.clone(),
-                    includes: a.includes.includes(),
-                    overrides: Overrides {
+            Command::Report(a) => {
+                let mut options = a.body.options(
+                    Overrides {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
                         alpha: a.alpha.clone(),
                         axes: a.axes.axes.clone(),
                     },
-                    // Checked as the command line was parsed (`check_rules`).
-                    uncertainty: a.uncertainty.method().ok().flatten(),
+                    &a.includes,
+                );
+                // Checked as the command line was parsed (`check_rules`).
+                options.settings.uncertainty = a.uncertainty.method().ok().flatten();
+                Request::Report(options)
+            }
+            Command::Budget(a) => Request::Budget(a.body.options(
+                Overrides {
+                    axes: a.axes.axes.clone(),
+                    ..Default::default()
                 },
-            }),
+                &a.includes,
+            )),
             Command::Check(a) => Request::Check(commands::check::Options {
                 paths: a.paths.clone(),
                 output: a.output.clone(),
@@ -782,7 +771,7 @@ mod tests {
             panic!("a report")
         };
         assert_eq!(
-            a.accuracy.rtol,
+            a.body.accuracy.rtol,
             crate::analysis::summary::accuracy::DEFAULT_RTOL
         );
     }

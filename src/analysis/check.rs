@@ -12,6 +12,8 @@ use serde::Serialize;
 
 /// The measured value of one check, SI.
 pub fn measured(s: &Summary, t: Target) -> f64 {
+    // The predicted body's, `load` made when the file expects it.
+    let predicted = |f: &dyn Fn(&Summary) -> f64| s.predicted.as_deref().map_or(f64::NAN, f);
     match t {
         Target::Mass => s.mass,
         Target::CenterOfMass(i) => s.center_of_mass[i],
@@ -22,6 +24,9 @@ pub fn measured(s: &Summary, t: Target) -> f64 {
         Target::RadiusOfGyrationAxis(i) => s.radii_of_gyration_axes[i],
         Target::AngularMomentum(i) => s.angular_momentum.map_or(f64::NAN, |h| h[i]),
         Target::KineticEnergy => s.kinetic_energy.unwrap_or(f64::NAN),
+        Target::PredictedMass => predicted(&|p| p.mass),
+        Target::PredictedCenterOfMass(i) => predicted(&|p| p.center_of_mass[i]),
+        Target::PredictedInertiaCom(i, j) => predicted(&|p| p.inertia_com[i][j]),
     }
 }
 

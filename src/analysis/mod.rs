@@ -9,6 +9,7 @@
 //! and the other way round. The commands add only what is theirs: `check`
 //! evaluates expectations (`check`), `diff` compares two summaries (`diff`).
 
+pub mod budget;
 pub mod check;
 pub mod diff;
 pub mod ideal;
@@ -101,6 +102,10 @@ pub fn load_source_reading(
     summary.source = Some(source.name.clone());
     if let Some(method) = settings.uncertainty {
         summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source));
+    }
+    if budget::expects_predicted(&model) {
+        let predicted = budget::predicted(&model, &analysis, settings, &source)?;
+        summary.predicted = Some(Box::new(predicted));
     }
     Ok(Loaded {
         source,

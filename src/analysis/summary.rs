@@ -177,6 +177,11 @@ pub struct Summary {
     /// The file's units, for the table.
     #[serde(skip)]
     pub file_units: FileUnits,
+    /// The predicted body's summary (basic mass and growth,
+    /// `analysis::budget`), made by `load` only for a file that expects
+    /// something of it (`predicted_mass`, …).
+    #[serde(skip)]
+    pub predicted: Option<Box<Summary>>,
 }
 
 fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
@@ -514,6 +519,7 @@ fn summarize_in(
         requested: PrecisionChoice::Auto,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
+        predicted: None,
     })
 }
 

@@ -4,6 +4,7 @@
 //! (`render`). Only `main.rs` turns an `Outcome` into a process exit.
 
 pub mod bless;
+pub mod budget;
 pub mod check;
 pub mod diff;
 pub mod export;
@@ -125,6 +126,7 @@ pub struct Terminal {
 #[derive(Debug, Clone)]
 pub enum Request {
     Report(report::Options),
+    Budget(budget::Options),
     Check(check::Options),
     Diff(diff::Options),
     Export(export::Options),
@@ -142,7 +144,7 @@ impl Request {
     /// as `-` is standard input wherever a file is read.
     fn output(&self) -> Option<&str> {
         let o = match self {
-            Request::Report(o) => o.output.as_deref(),
+            Request::Report(o) | Request::Budget(o) => o.output.as_deref(),
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
             Request::Export(o) => o.output.as_deref(),
@@ -154,7 +156,7 @@ impl Request {
     /// The part files the command reads, as named.
     fn inputs(&self) -> Vec<&str> {
         match self {
-            Request::Report(o) => vec![&o.file],
+            Request::Report(o) | Request::Budget(o) => vec![&o.file],
             // A name that is not UTF-8 is left to the check after the run,
             // against every file read.
             Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
@@ -254,6 +256,7 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
     };
     let out = match request {
         Request::Report(o) => report::run(o, terminal)?,
+        Request::Budget(o) => budget::run(o, terminal)?,
         Request::Check(o) => check::run(o, terminal)?,
         Request::Diff(o) => diff::run(o, terminal)?,
         Request::Export(o) => export::run(o, terminal)?,

@@ -147,7 +147,9 @@ mod tests {
 
     fn close(g: &Grad, want: &[(u32, f64)]) -> bool {
         g.len() == want.len()
-            && g.iter().zip(want).all(|(a, b)| a.0 == b.0 && (a.1 - b.1).abs() <= 1e-15 * b.1.abs().max(1.0))
+            && g.iter()
+                .zip(want)
+                .all(|(a, b)| a.0 == b.0 && (a.1 - b.1).abs() <= 1e-15 * b.1.abs().max(1.0))
     }
 
     #[test]
@@ -162,7 +164,10 @@ mod tests {
     #[test]
     fn powers_roots_and_functions_follow_their_rules() {
         // ∂(π d²/4)/∂d = π d/2.
-        assert!(close(&grad("pi * d^2 / 4"), &[(0, std::f64::consts::PI * 0.25)]));
+        assert!(close(
+            &grad("pi * d^2 / 4"),
+            &[(0, std::f64::consts::PI * 0.25)]
+        ));
         // ∂√d/∂d = 1/(2√d).
         assert!(close(&grad("sqrt(d)"), &[(0, 0.5 / 0.5f64.sqrt())]));
         assert!(close(&grad("sin(d)"), &[(0, 0.5f64.cos())]));

@@ -31,6 +31,8 @@ pub(crate) struct Ctx<'a> {
     pub(super) params: super::params::Params,
     /// The tolerances of the part being read (`model::tolerance`).
     pub(super) tol: std::cell::RefCell<super::tolerance::Recorder>,
+    /// `[growth]`: maturity → allowance (`model::budget`).
+    pub(super) growth: super::budget::Allowances,
 }
 
 impl Ctx<'_> {

@@ -25,6 +25,23 @@ pub enum Target {
     RadiusOfGyrationAxis(usize),
     AngularMomentum(usize),
     KineticEnergy,
+    /// The predicted body's (basic and growth, `analysis::budget`).
+    PredictedMass,
+    PredictedCenterOfMass(usize),
+    PredictedInertiaCom(usize, usize),
+}
+
+impl Target {
+    /// Whether it reads the predicted body, which is composed only when a
+    /// file expects something of it.
+    pub fn is_predicted(self) -> bool {
+        matches!(
+            self,
+            Target::PredictedMass
+                | Target::PredictedCenterOfMass(_)
+                | Target::PredictedInertiaCom(..)
+        )
+    }
 }
 
 /// A tolerance: absolute (SI) or relative (a fraction of the value).
@@ -115,7 +132,7 @@ impl Ctx<'_> {
     ) -> Result<Vec<Check>, Diagnostic> {
         let e = raw.get_ref();
         let mut out = Vec::new();
-        let entries: [Entry<'_>; 15] = [
+        let entries: [Entry<'_>; 18] = [
             ("mass", &e.mass, Shape::Scalar, Dim::MASS, |_, _| {
                 Target::Mass
             }),
@@ -174,6 +191,27 @@ impl Ctx<'_> {
                 Shape::Scalar,
                 Dim::ENERGY,
                 |_, _| Target::KineticEnergy,
+            ),
+            (
+                "predicted_mass",
+                &e.predicted_mass,
+                Shape::Scalar,
+                Dim::MASS,
+                |_, _| Target::PredictedMass,
+            ),
+            (
+                "predicted_center_of_mass",
+                &e.predicted_center_of_mass,
+                Shape::Vector,
+                Dim::LENGTH,
+                |i, _| Target::PredictedCenterOfMass(i),
+            ),
+            (
+                "predicted_inertia_com",
+                &e.predicted_inertia_com,
+                Shape::Matrix,
+                Dim::INERTIA,
+                Target::PredictedInertiaCom,
             ),
             ("Ixx", &e.ixx, Shape::Scalar, Dim::INERTIA, |_, _| {
                 Target::InertiaCom(0, 0)

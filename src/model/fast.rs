@@ -280,6 +280,10 @@ impl<'i> Builder<'i> {
             // A file with `[params]` or a part's `params` is declined
             // (`open_table`, `assign`): serde reads it.
             params: None,
+            // A file with `[growth]` or `[budget]` is declined
+            // (`open_table`): serde reads it.
+            growth: None,
+            budget: None,
             sections: self.sections,
         })
     }
@@ -433,6 +437,8 @@ impl<'i> Builder<'i> {
                     "file" => set(&mut p.file, string(node)?),
                     "mesh_unit" => set(&mut p.mesh_unit, string(node)?),
                     "mode" => set(&mut p.mode, string(node)?),
+                    "group" => set(&mut p.group, string(node)?),
+                    "maturity" => set(&mut p.maturity, string(node)?),
                     "remove" => match node {
                         Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
                         _ => None,

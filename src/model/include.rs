@@ -346,6 +346,7 @@ impl Ctx<'_> {
             materials: Default::default(),
             params: Default::default(),
             tol: Default::default(),
+            growth: Default::default(),
         };
         files
             .stack
@@ -541,6 +542,7 @@ impl Ctx<'_> {
             model: child,
             span: raw.span(),
             copies: None,
+            tag: self.tag(p, false)?,
         };
         // Representable in this file's units too (the composer works in
         // them): a sub-assembly in µm and mg can underflow in km and t.

@@ -10,6 +10,7 @@
 //! the rotation forms; `toml_error` words the TOML crate's errors;
 //! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
+pub mod budget;
 mod copies;
 mod ctx;
 pub mod expect;
@@ -71,6 +72,8 @@ pub struct Model {
     pub has_real_sizes: bool,
     /// `[materials]`: name → density, kg/m³.
     pub materials: std::collections::BTreeMap<String, f64>,
+    /// `[budget]`'s limit of the predicted mass, if given.
+    pub budget: Option<budget::Limit>,
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
@@ -97,6 +100,8 @@ pub enum Item {
         real: Option<(Solid, f64)>,
         /// Its `array` and `mirror`, if any (`copies`).
         copies: Option<Box<Copies>>,
+        /// Its `group` and `maturity`, if any (`budget`).
+        tag: Option<Box<budget::Tag>>,
     },
     Include(Box<Include>),
 }
@@ -114,6 +119,9 @@ pub struct Include {
     /// Its `array` and `mirror`, if any (`copies`): each copy a
     /// sub-assembly `name[i]`.
     pub copies: Option<Box<Copies>>,
+    /// Its `group` (its parts' groups go under it) and `maturity` (the
+    /// default of its parts that have none), if any (`budget`).
+    pub tag: Option<Box<budget::Tag>>,
 }
 
 /// `[analysis]` in the file's units: reference point (file length), ω
@@ -146,6 +154,7 @@ impl Model {
             expect: Vec::new(),
             has_real_sizes: false,
             materials: Default::default(),
+            budget: None,
             included: Vec::new(),
             sources: Vec::new(),
         }
@@ -261,6 +270,7 @@ impl Model {
             materials: Default::default(),
             params: Default::default(),
             tol: Default::default(),
+            growth: Default::default(),
         };
         let units = match &raw.units {
             Some(u) => ctx.file_units(u)?,
@@ -272,11 +282,13 @@ impl Model {
             materials: Default::default(),
             params: Default::default(),
             tol: Default::default(),
+            growth: Default::default(),
         };
         ctx.read_params(raw.params.as_ref(), passed)?;
         if let Some(table) = &raw.materials {
             ctx.read_materials(table)?;
         }
+        ctx.read_growth(raw.growth.as_ref())?;
         let ctx = ctx;
         if !streamed.off {
             return streamed.model(&ctx, raw);
@@ -338,7 +350,13 @@ impl Model {
             };
             has_real_sizes |= real.is_some();
             count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
-            items.push(Item::Part { part, real, copies });
+            let tag = ctx.tag(p.get_ref(), part.spec.removed)?;
+            items.push(Item::Part {
+                part,
+                real,
+                copies,
+                tag,
+            });
             ctx.copies_in_range(items.last().expect("just pushed"), &p)?;
         }
         Model::rest(&ctx, raw, items, count, has_real_sizes)
@@ -360,6 +378,7 @@ impl Model {
             Some(e) => ctx.expectations(e, analysis.omega.is_some())?,
             None => Vec::new(),
         };
+        let budget = raw.budget.as_ref().map(|b| ctx.budget(b)).transpose()?;
         Ok(Model {
             name: raw.name.map(|n| n.into_inner()),
             units: ctx.units,
@@ -373,6 +392,7 @@ impl Model {
                 .map(|(k, v)| (k.clone(), v.0))
                 .collect(),
             has_real_sizes,
+            budget,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
             sources: std::mem::take(&mut ctx.tol.borrow_mut().sources),
@@ -505,6 +525,7 @@ impl Model {
             analysis: self.analysis.clone(),
             expect: self.expect.clone(),
             materials: self.materials.clone(),
+            budget: self.budget.clone(),
             included: self.included.clone(),
             ..Model::empty(self.units)
         }

@@ -292,7 +292,13 @@ impl Ctx<'_> {
                             defs.keys().map(|k| k.to_string()).collect()
                         })
                         .map_err(|e| {
-                            located(source, span.clone(), text, e, &format!("parameter `{name}`"))
+                            located(
+                                source,
+                                span.clone(),
+                                text,
+                                e,
+                                &format!("parameter `{name}`"),
+                            )
                         })?;
                     // Its gradient: through the parameters it uses, and
                     // its own tolerance, a source shared by every use.
@@ -301,7 +307,11 @@ impl Ctx<'_> {
                         let key = format!("param `{name}`");
                         let tol = self.amount(source, span.clone(), text, value.dim, &key)?;
                         let si = value.num_f64();
-                        let at = if std::ptr::eq(source, self.source) { span } else { 0..0 };
+                        let at = if std::ptr::eq(source, self.source) {
+                            span
+                        } else {
+                            0..0
+                        };
                         let k = self.shared_source(name, at, &tol);
                         axpy(&mut grad, 1.0, &vec![(k, tol.sigma_of(si))]);
                     }

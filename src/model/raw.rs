@@ -75,6 +75,7 @@ table_only!(
     "a table such as { x = [1, 0, 0], y = [0, -1, 0] } or a rotation such as { axis = [0, 0, 1], degrees = 90 }"
 );
 table_only!(RawExpect, "a table of expected quantities");
+table_only!(RawBudget, "a table such as { limit = \"120 kg\" }");
 table_only!(
     RawExpectation,
     "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
@@ -100,6 +101,13 @@ pub struct RawFile {
     /// (`model::params`).
     #[schemars(with = "Option<std::collections::BTreeMap<String, Quantity>>")]
     pub params: Option<Params>,
+    /// `[growth]`: maturity name → mass growth allowance, a percentage
+    /// string (`estimated = "15 %"`; `model::budget`).
+    #[schemars(with = "Option<std::collections::BTreeMap<String, super::schema::Percentage>>")]
+    pub growth: Option<Growth>,
+    /// `[budget]`: the not-to-exceed limit of the predicted mass.
+    #[schemars(with = "Option<RawBudget>")]
+    pub budget: Option<Spanned<RawBudget>>,
     /// From the fast path: the tables it passed over, for serde to read
     /// (`expect`, `materials` are then still to be filled in).
     #[serde(skip)]
@@ -109,6 +117,20 @@ pub struct RawFile {
 /// `[params]`, or an include's `params`: name → a number or a quantity
 /// string, which may be an expression over the others.
 pub type Params = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Quantity>>>;
+
+/// `[growth]`: maturity name → allowance (a percentage string; a plain
+/// number is read only to be refused with a hint).
+pub type Growth = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Quantity>>>;
+
+/// `[budget]`.
+#[derive(Deserialize, JsonSchema, Debug)]
+#[serde(remote = "Self", deny_unknown_fields)]
+#[schemars(rename = "Budget")]
+pub struct RawBudget {
+    /// The not-to-exceed limit of the predicted mass: a mass.
+    #[schemars(with = "Quantity")]
+    pub limit: Spanned<Quantity>,
+}
 
 /// `[materials]`.
 pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
@@ -243,6 +265,13 @@ pub struct RawPart {
     /// A mesh's mode: "solid" (the default) or "shell".
     #[schemars(with = "Option<super::schema::MeshMode>")]
     pub mode: Option<Box<Spanned<String>>>,
+    /// The part's group in the weight statement: a path of names joined
+    /// by `/` (`propulsion/tanks`; `model::budget`).
+    #[schemars(with = "Option<super::schema::GroupPath>")]
+    pub group: Option<Box<Spanned<String>>>,
+    /// Its design maturity: a key of the file's `[growth]`.
+    #[schemars(with = "Option<String>")]
+    pub maturity: Option<Box<Spanned<String>>>,
 }
 
 /// `array = { count = N, step = [dx, dy, dz] }`, or `{ count = N, axis =
@@ -451,6 +480,13 @@ pub struct RawExpect {
     pub angular_momentum: Option<Spanned<RawExpectation>>,
     #[schemars(with = "Option<RawExpectation>")]
     pub kinetic_energy: Option<Spanned<RawExpectation>>,
+    /// The predicted body's (basic mass and growth: `massprop budget`).
+    #[schemars(with = "Option<RawExpectation>")]
+    pub predicted_mass: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
+    pub predicted_center_of_mass: Option<Spanned<RawExpectation>>,
+    #[schemars(with = "Option<RawExpectation>")]
+    pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixx")]
     #[schemars(with = "Option<RawExpectation>")]
     pub ixx: Option<Spanned<RawExpectation>>,
@@ -662,6 +698,9 @@ impl Shift for RawExpect {
             radii_of_gyration_axes,
             angular_momentum,
             kinetic_energy,
+            predicted_mass,
+            predicted_center_of_mass,
+            predicted_inertia_com,
             ixx,
             iyy,
             izz,
@@ -679,6 +718,9 @@ impl Shift for RawExpect {
             radii_of_gyration_axes: radii_of_gyration_axes.shift(by),
             angular_momentum: angular_momentum.shift(by),
             kinetic_energy: kinetic_energy.shift(by),
+            predicted_mass: predicted_mass.shift(by),
+            predicted_center_of_mass: predicted_center_of_mass.shift(by),
+            predicted_inertia_com: predicted_inertia_com.shift(by),
             ixx: ixx.shift(by),
             iyy: iyy.shift(by),
             izz: izz.shift(by),

@@ -343,6 +343,7 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
         materials: Default::default(),
         params: Default::default(),
         tol: Default::default(),
+        growth: Default::default(),
     };
     ctx.axes(&flag.axes).map_err(|d| match d.help_text() {
         Some(help) => format!("{} ({help})", d.message()),

@@ -90,6 +90,7 @@ pub fn schema() -> Value {
 fn part_rules() -> Vec<Value> {
     let mut include_keys = vec!["name"];
     include_keys.extend(super::include::INCLUDE_KEYS);
+    include_keys.extend(super::budget::TAG_KEYS);
     include_keys.extend(super::copies::COPY_KEYS);
     let mut rules = vec![json!({
         "if": { "required": ["include"] },
@@ -102,6 +103,7 @@ fn part_rules() -> Vec<Value> {
     for s in &SHAPES {
         let mut keys = vec!["name", "shape"];
         keys.extend(s.keys);
+        keys.extend(super::budget::TAG_KEYS);
         keys.extend(super::copies::COPY_KEYS);
         let mut then = Map::new();
         then.insert("description".into(), s.help.into());
@@ -393,6 +395,28 @@ schema_only!(
     json!({
         "description": "what a mesh weighs: \"solid\" (the volume it encloses, the default) or \"shell\" (its surface as a thin sheet)",
         "enum": ["solid", "shell"],
+    })
+);
+
+schema_only!(
+    /// `[growth]`'s values: a percentage (`model::budget::percentage`).
+    Percentage,
+    "Percentage",
+    json!({
+        "description": "a mass growth allowance as a percentage, such as \"15 %\"",
+        "type": "string",
+        "pattern": "^\\s*[+]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?\\s*%\\s*$",
+    })
+);
+
+schema_only!(
+    /// `group`: names joined by `/`, none empty (`model::budget::group_path`).
+    GroupPath,
+    "GroupPath",
+    json!({
+        "description": "the part's group: names joined by `/`, such as \"propulsion/tanks\"",
+        "type": "string",
+        "pattern": "^[^/]*[^/\\s][^/]*(?:/[^/]*[^/\\s][^/]*)*$",
     })
 );
 

@@ -92,6 +92,7 @@ impl Streamed {
                 materials: Default::default(),
                 params: Default::default(),
                 tol: Default::default(),
+                growth: Default::default(),
             };
             if let Some(u) = units {
                 ctx.units = ctx.file_units(u).map_err(|_| ())?;
@@ -109,18 +110,23 @@ impl Streamed {
             materials: std::mem::take(materials),
             params: Default::default(),
             tol: Default::default(),
+            growth: Default::default(),
         };
-        let made = ctx.part(index, &p);
+        let made = ctx.part(index, &p).and_then(|(part, real)| {
+            let tag = ctx.tag(p.get_ref(), part.spec.removed)?;
+            Ok((part, real, tag))
+        });
         // Handed back: a `Ctx` owns its materials.
         if let Some(Ok((_, m))) = &mut self.ctx {
             *m = ctx.materials;
         }
         match made {
-            Ok((part, real)) => {
+            Ok((part, real, tag)) => {
                 self.has_real_sizes |= real.is_some();
                 self.items.push(Item::Part {
                     part,
                     real,
+                    tag,
                     // A file with copies is read whole (`fast` declines
                     // `array` and `mirror`).
                     copies: None,

@@ -162,7 +162,8 @@ impl Ctx<'_> {
         at: usize,
         key: &str,
     ) -> Diagnostic {
-        let here = super::params::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
+        let here =
+            super::params::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
         source
             .error(here, format!("a tolerance is not allowed on `{key}`"))
             .help("tolerances go on a part's mass, density, sizes, radii and position, and on `[params]` (docs/uncertainty.md)")
@@ -180,7 +181,9 @@ impl Ctx<'_> {
         key: &str,
     ) -> Result<Tol, Diagnostic> {
         let (value, amount, at) = split(text).expect("invariant: the text has a tolerance");
-        let here = |from: usize, to: usize| super::params::sub_span(&source.text, span.clone(), text, from..to);
+        let here = |from: usize, to: usize| {
+            super::params::sub_span(&source.text, span.clone(), text, from..to)
+        };
         let start = text.len() - amount.len();
         let trimmed = amount.trim();
         let (body, spread) = match trimmed.rsplit_once(char::is_whitespace) {
@@ -205,7 +208,9 @@ impl Ctx<'_> {
             match p.trim().parse::<f64>() {
                 Ok(x) => (true, x / 100.0),
                 Err(_) => {
-                    return Err(bad(format!("`{key}`: the tolerance {body:?} is not a percentage")));
+                    return Err(bad(format!(
+                        "`{key}`: the tolerance {body:?} is not a percentage"
+                    )));
                 }
             }
         } else if let Ok(x) = body.parse::<f64>() {
@@ -231,14 +236,7 @@ impl Ctx<'_> {
 
     /// Record the tolerance `tol` of the value `value` (file units) read
     /// for `key`, if a part's numbers are being recorded.
-    pub(super) fn record(
-        &self,
-        q: &Spanned<Quantity>,
-        key: &str,
-        dim: Dim,
-        value: f64,
-        tol: Tol,
-    ) {
+    pub(super) fn record(&self, q: &Spanned<Quantity>, key: &str, dim: Dim, value: f64, tol: Tol) {
         let mut r = self.tol.borrow_mut();
         // In the key's file units, as `value`.
         let amount = if tol.relative {

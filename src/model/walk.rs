@@ -14,6 +14,7 @@
 //! `mirror`: `copies`) are frames too, made as the walk reaches each copy
 //! and applied after the sub-assembly's own: the copies are never held.
 
+use super::budget::Tag;
 use super::{Copies, Frame, Include, Item, Model, push_copy_name};
 use crate::part::{Part, Parts, RealSize};
 use std::borrow::Cow;
@@ -35,6 +36,9 @@ pub struct Leaf<'a> {
     pub part: &'a Part,
     /// Its real thickness or diameter, in this file's length unit.
     pub real: Option<RealSize>,
+    /// Its own `group` and `maturity` (`budget`); the sub-assemblies'
+    /// that hold it come with `Event::Enter`.
+    pub tag: Option<&'a Tag>,
     /// The part as its own file gives it, and the frames that place it
     /// in this one (`Placing`).
     pub own: &'a Part,
@@ -224,12 +228,17 @@ impl<'m> Walk<'m> {
                         }
                     }
                 },
-                Item::Part { part, real, copies } => match copies {
-                    None => self.part(model, k, part, *real, None, f),
+                Item::Part {
+                    part,
+                    real,
+                    copies,
+                    tag,
+                } => match copies {
+                    None => self.part(model, k, (part, tag.as_deref()), *real, None, f),
                     Some(c) => {
                         for i in c.indices() {
                             let pushed = self.copy_frames(c, i, &part.span);
-                            self.part(model, k, part, *real, Some(i), f);
+                            self.part(model, k, (part, tag.as_deref()), *real, Some(i), f);
                             self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
@@ -292,12 +301,13 @@ impl<'m> Walk<'m> {
         f(Event::Exit);
     }
 
-    /// The part `part`, `k` its position in its file (its copy `copy`).
+    /// The part `part` with its tag, `k` its position in its file (its
+    /// copy `copy`).
     fn part(
         &mut self,
         model: &'m Model,
         k: usize,
-        part: &'m Part,
+        (part, tag): (&'m Part, Option<&'m Tag>),
         real: Option<(crate::part::Solid, f64)>,
         copy: Option<usize>,
         f: &mut dyn FnMut(Event<'_>),
@@ -325,6 +335,7 @@ impl<'m> Walk<'m> {
                     real,
                     own: part,
                     placing,
+                    tag,
                 }));
                 return;
             }
@@ -341,6 +352,7 @@ impl<'m> Walk<'m> {
                 real,
                 own: part,
                 placing,
+                tag,
             }));
             return;
         };
@@ -365,6 +377,7 @@ impl<'m> Walk<'m> {
             real,
             own: part,
             placing,
+            tag,
         }));
     }
 }

@@ -204,11 +204,17 @@ mod tests {
         let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(0));
         let dm_dr = 2.0 * PI * rho * r_out * l;
         close(dm, dm_dr);
-        close(dj[0][0], dm_dr * (r_out * r_out + r_in * r_in) / 4.0 + m * r_out / 2.0);
+        close(
+            dj[0][0],
+            dm_dr * (r_out * r_out + r_in * r_in) / 4.0 + m * r_out / 2.0,
+        );
         let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(1));
         let dm_di = -2.0 * PI * rho * r_in * l;
         close(dm, dm_di);
-        close(dj[1][1], dm_di * (r_out * r_out + r_in * r_in) / 4.0 + m * r_in / 2.0);
+        close(
+            dj[1][1],
+            dm_di * (r_out * r_out + r_in * r_in) / 4.0 + m * r_in / 2.0,
+        );
         let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(2));
         close(dm, m / l);
         close(dj[2][2], m * l / 4.0);
@@ -226,7 +232,10 @@ mod tests {
         let (dm, _, dj) = d(Shape::Sphere, &centred(rho, [r, 0.0, 0.0]), Slot::Dim(0));
         let m = 4.0 / 3.0 * PI * rho * r.powi(3);
         close(dm, 4.0 * PI * rho * r * r);
-        close(dj[2][2], 4.0 * PI * rho * r.powi(4) / 5.0 + 2.0 * m * r / 5.0);
+        close(
+            dj[2][2],
+            4.0 * PI * rho * r.powi(4) / 5.0 + 2.0 * m * r / 5.0,
+        );
     }
 
     #[test]
@@ -245,7 +254,10 @@ mod tests {
         let (rho, r0, r1, l) = (3.0, 0.2, 0.1, 0.5);
         let s = axial(rho, [r0, 0.0, r1, 0.0, l]);
         let m = rho * PI * l * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
-        close(d(Shape::Cone, &s, Slot::Dim(0)).0, rho * PI * l * (2.0 * r0 + r1) / 3.0);
+        close(
+            d(Shape::Cone, &s, Slot::Dim(0)).0,
+            rho * PI * l * (2.0 * r0 + r1) / 3.0,
+        );
         close(d(Shape::Cone, &s, Slot::Dim(4)).0, m / l);
         // A full cone's centroid lies L/4 from its base, a quarter of L
         // from the middle of its axis: it moves a quarter as fast as L.

@@ -12,6 +12,7 @@
 //! dressed for where it goes (colour, a terminal's width) is a `Style`,
 //! handed in with it.
 
+pub mod budget;
 pub mod check;
 pub mod ci;
 pub mod diff;
@@ -64,6 +65,8 @@ pub enum Output<'a> {
     /// `diff` of a part file and a robot description's link.
     LinkDiff(&'a crate::analysis::diff::LinkDiff),
     Materials(&'a [materials::Listed]),
+    /// `budget`: the weight statement.
+    Budget(&'a crate::analysis::budget::Statement),
 }
 
 /// `output` in `format` and `style`, in memory.
@@ -107,6 +110,8 @@ pub fn write(
         (Format::Json, Output::LinkDiff(d)) => diff::link_json(d),
         (Format::Table, Output::Materials(l)) => materials::table(l),
         (Format::Json, Output::Materials(l)) => materials::json(l),
+        (Format::Table, Output::Budget(b)) => budget::table(b, style.width),
+        (Format::Json, Output::Budget(b)) => budget::json(b),
     };
     w.write_all(text.as_bytes())
 }

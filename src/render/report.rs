@@ -29,7 +29,7 @@ fn numbers(n: usize) -> Vec<bool> {
 
 /// Entries to the digits their bounds `b` guarantee, read against the
 /// largest entry (`fmt_bounded`).
-fn matrix_table(
+pub(super) fn matrix_table(
     out: &mut String,
     (m, b): (&[[f64; 3]; 3], &[[f64; 3]; 3]),
     scale: f64,
@@ -101,9 +101,30 @@ fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Opti
     write_rows(out, &header, &rows, &numbers(header.len()), fit);
 }
 
+/// The first line: the body's name and the file (and the sub-assembly,
+/// with `--only`), or the file alone.
+pub(super) fn title(
+    out: &mut String,
+    body: &Option<String>,
+    sub_assembly: &Option<Vec<String>>,
+    source: &str,
+) {
+    let source = name(source);
+    let _ = match (body, sub_assembly) {
+        (Some(n), Some(path)) => writeln!(
+            out,
+            "{} (sub-assembly `{}` of {source})",
+            name(n),
+            name(&path.join(" / "))
+        ),
+        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
+        (None, _) => writeln!(out, "{source}"),
+    };
+}
+
 /// Which axes the values are in: the file's, or the report axes given
 /// (`axes`), each as its direction in the file's frame.
-fn axes_line(axes: &[[f64; 3]; 3]) -> String {
+pub(super) fn axes_line(axes: &[[f64; 3]; 3]) -> String {
     if file_axes(axes) {
         return "axes: the file's".to_string();
     }
@@ -171,17 +192,7 @@ pub fn write_table_to(
 ) -> std::io::Result<()> {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
-    let source = name(source);
-    let _ = match (&s.name, &s.sub_assembly) {
-        (Some(n), Some(path)) => writeln!(
-            out,
-            "{} (sub-assembly `{}` of {source})",
-            name(n),
-            name(&path.join(" / "))
-        ),
-        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
-        (None, _) => writeln!(out, "{source}"),
-    };
+    title(&mut out, &s.name, &s.sub_assembly, source);
     let _ = writeln!(
         out,
         "units: mass {}, length {}, inertia {}; ω, H, T, α and M in SI",

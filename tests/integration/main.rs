@@ -4,6 +4,7 @@
 mod arrays;
 mod auto;
 mod bounds;
+mod budget;
 mod check;
 mod ci;
 mod cli;

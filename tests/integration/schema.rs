@@ -59,8 +59,10 @@ fn both_reject(text: &str) {
 
 const HEAD: &str = "units = { length = \"mm\", mass = \"kg\" }\n";
 
+/// A part file of one part; its `[growth]` gives `maturity`'s sample a
+/// meaning.
 fn one_part(lines: &str) -> String {
-    format!("{HEAD}\n[[part]]\n{lines}\n")
+    format!("{HEAD}\n[growth]\nsample = \"5 %\"\n\n[[part]]\n{lines}\n")
 }
 
 #[test]
@@ -358,6 +360,8 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "file" => "\"shapes/meshes/bracket.stl\"",
         "mesh_unit" => "\"mm\"",
         "mode" => "\"shell\"",
+        "group" => "\"structure/panels\"",
+        "maturity" => "\"sample\"",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }

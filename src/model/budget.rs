@@ -1,0 +1,188 @@
+//! The weight statement's inputs: a part's `group` and `maturity`, the
+//! file's `[growth]` table (maturity → mass growth allowance) and its
+//! `[budget]` limit, validated. `analysis::budget` forms the statement.
+//!
+//! A maturity is resolved to its allowance here, in the file that names it:
+//! a sub-assembly's parts use their own file's `[growth]`, an include's
+//! `maturity` the including file's.
+
+use super::Ctx;
+use super::raw::{Growth, Quantity, RawBudget, RawPart};
+use crate::diag::Diagnostic;
+use crate::units::{self, Dim};
+use std::ops::Range;
+use toml::Spanned;
+
+/// The keys every part and include may have, besides `name`: they place
+/// it in the weight statement, not in space (`model::schema` reads them).
+pub const TAG_KEYS: [&str; 2] = ["group", "maturity"];
+
+/// A part's (or an include's) place in the weight statement, as its
+/// `[[part]]` gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tag {
+    /// `group`, split at `/`, each name trimmed: `["propulsion", "tanks"]`.
+    pub group: Option<Vec<String>>,
+    pub maturity: Option<Maturity>,
+}
+
+/// A design maturity and the allowance its file's `[growth]` gives it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Maturity {
+    pub name: String,
+    /// The mass growth allowance, a fraction of the basic mass (0.15 for
+    /// `"15 %"`), ≥ 0.
+    pub allowance: f64,
+}
+
+/// `[budget]`, read: the not-to-exceed limit of the predicted mass.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Limit {
+    /// kg.
+    pub mass: f64,
+    pub span: Range<usize>,
+}
+
+/// `[growth]`, read: maturity name → allowance (a fraction).
+pub(super) type Allowances = std::collections::BTreeMap<String, f64>;
+
+/// A percentage as `[growth]` writes it, `"15 %"` or `"15%"`, as a
+/// fraction; `None` if `text` is not a number followed by one `%`.
+pub fn percentage(text: &str) -> Option<f64> {
+    let number = text.trim().strip_suffix('%')?.trim_end();
+    number.parse::<f64>().ok().map(|p| p / 100.0)
+}
+
+impl Ctx<'_> {
+    /// `[growth]`: each value a percentage, finite and not negative.
+    pub(super) fn read_growth(&mut self, growth: Option<&Growth>) -> Result<(), Diagnostic> {
+        let Some(table) = growth else { return Ok(()) };
+        for (name, value) in table.get_ref() {
+            let key = name.get_ref();
+            let text = match value.get_ref() {
+                Quantity::Text(t) => t,
+                Quantity::Number(x) => {
+                    return Err(self
+                        .err(
+                            value.span(),
+                            format!("`growth.{key}` must be a percentage string, got {x}"),
+                        )
+                        .help(format!(
+                            "write the allowance as a percentage: `{key} = \"{x} %\"`"
+                        )));
+                }
+            };
+            let allowance = match percentage(text) {
+                Some(a) if a.is_finite() && a >= 0.0 && !a.is_sign_negative() => a,
+                Some(_) => {
+                    return Err(self
+                        .err(
+                            value.span(),
+                            format!("`growth.{key}` must be a finite percentage ≥ 0, got {text:?}"),
+                        )
+                        .help("a growth allowance adds mass: 0 % for a part that is weighed, more for one less mature"));
+                }
+                None => {
+                    return Err(self
+                        .err(
+                            value.span(),
+                            format!("`growth.{key}`: cannot read {text:?} as a percentage"),
+                        )
+                        .help("write a number and `%`, e.g. \"15 %\""));
+                }
+            };
+            self.growth.insert(key.clone(), allowance);
+        }
+        Ok(())
+    }
+
+    /// `[budget]`: its `limit`, a positive mass.
+    pub(super) fn budget(&self, raw: &Spanned<RawBudget>) -> Result<Limit, Diagnostic> {
+        let limit = &raw.get_ref().limit;
+        Ok(Limit {
+            mass: self.positive(limit, "limit", Dim::MASS)?,
+            span: limit.span(),
+        })
+    }
+
+    /// A part's or an include's `group` and `maturity`; `None` if it has
+    /// neither. `removed`: a cut-out, which takes no maturity.
+    pub(super) fn tag(&self, p: &RawPart, removed: bool) -> Result<Option<Box<Tag>>, Diagnostic> {
+        let group = p.group.as_deref().map(|g| self.group_path(g)).transpose()?;
+        let maturity = match p.maturity.as_deref() {
+            None => None,
+            Some(m) if removed => {
+                return Err(self
+                    .err(m.span(), "`maturity` does not apply to a cut-out: a hole does not grow")
+                    .help("a cut-out's mass counts in the basic mass, without growth; remove `maturity` here"));
+            }
+            Some(m) => Some(self.maturity(m)?),
+        };
+        Ok((group.is_some() || maturity.is_some()).then(|| Box::new(Tag { group, maturity })))
+    }
+
+    /// `group = "a/b"`: names joined by `/`, none empty.
+    fn group_path(&self, g: &Spanned<String>) -> Result<Vec<String>, Diagnostic> {
+        let text = g.get_ref();
+        let names: Vec<String> = text.split('/').map(|n| n.trim().to_string()).collect();
+        if names.iter().any(String::is_empty) {
+            let what = if text.trim().is_empty() {
+                "`group` is empty".to_string()
+            } else if text.trim_start().starts_with('/') || text.trim_end().ends_with('/') {
+                format!("`group` {text:?} begins or ends with `/`")
+            } else {
+                format!("`group` {text:?} has an empty name between two `/`")
+            };
+            return Err(self.err(g.span(), what).help(
+                "a group is a subsystem and its sub-groups, names joined by `/`, e.g. \"propulsion/tanks\"",
+            ));
+        }
+        Ok(names)
+    }
+
+    /// `maturity = "NAME"`: a key of this file's `[growth]`.
+    fn maturity(&self, m: &Spanned<String>) -> Result<Maturity, Diagnostic> {
+        let name = m.get_ref();
+        if let Some(a) = self.growth.get(name) {
+            return Ok(Maturity {
+                name: name.clone(),
+                allowance: *a,
+            });
+        }
+        let known = || {
+            self.growth
+                .keys()
+                .map(|k| format!("`{k}`"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        let d = if self.growth.is_empty() {
+            self.err(m.span(), format!("unknown maturity {name:?}: the file has no `[growth]` table"))
+                .help("add a `[growth]` table giving each maturity its allowance, e.g. `[growth]` with `estimated = \"15 %\"`")
+        } else {
+            self.err(m.span(), format!("unknown maturity {name:?}"))
+                .help(format!("the file's `[growth]` table has {}", known()))
+        };
+        Err(
+            match units::suggest(name, self.growth.keys().map(String::as_str)) {
+                Some(s) => d.label(format!("did you mean \"{s}\"?")),
+                None => d,
+            },
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::percentage;
+
+    #[test]
+    fn a_percentage_is_a_number_and_one_percent_sign() {
+        assert_eq!(percentage("15 %"), Some(0.15));
+        assert_eq!(percentage(" 15%"), Some(0.15));
+        assert_eq!(percentage("0 %"), Some(0.0));
+        assert_eq!(percentage("15"), None);
+        assert_eq!(percentage("15 %%"), None);
+        assert_eq!(percentage("% 15"), None);
+    }
+}
