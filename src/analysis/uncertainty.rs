@@ -406,9 +406,12 @@ pub fn propagate(
             (u, p)
         }
         Method::MonteCarlo { samples, seed } => {
-            let (u, all) = monte_carlo_run(
-                &frame, &sources, &moving, &fixed, summary, nominal, samples, seed,
-            );
+            let sampled = Sampled {
+                sources: &sources,
+                moving: &moving,
+                fixed: &fixed,
+            };
+            let (u, all) = monte_carlo_run(&frame, &sampled, summary, nominal, (samples, seed));
             let p = checks
                 .iter()
                 .map(|(c, o)| {
@@ -564,17 +567,26 @@ type Block = (Vec<[f64; N]>, Vec<[f64; N + 1]>, usize);
 /// order, so the result is the same on any number of cores.
 const BLOCK: usize = 256;
 
-#[allow(clippy::too_many_arguments)]
+/// What a Monte Carlo run samples: the sources, the parts they move and
+/// the sums of the parts they do not.
+struct Sampled<'a> {
+    sources: &'a [Source],
+    moving: &'a [Moving],
+    fixed: &'a Sums,
+}
+
 fn monte_carlo_run(
     frame: &Frame,
-    sources: &[Source],
-    moving: &[Moving],
-    fixed: &Sums,
+    sampled: &Sampled<'_>,
     summary: &Summary,
     nominal: [f64; N],
-    samples: usize,
-    seed: u64,
+    (samples, seed): (usize, u64),
 ) -> (Uncertainty, Vec<[f64; N]>) {
+    let Sampled {
+        sources,
+        moving,
+        fixed,
+    } = *sampled;
     let blocks = samples.div_ceil(BLOCK);
     let next = std::sync::atomic::AtomicUsize::new(0);
     let c0 = summary.center_of_mass;

@@ -439,6 +439,7 @@ impl<'i> Builder<'i> {
                     "mode" => set(&mut p.mode, string(node)?),
                     "group" => set(&mut p.group, string(node)?),
                     "maturity" => set(&mut p.maturity, string(node)?),
+                    "tol" => set(&mut p.tol, quantity(node)?),
                     "remove" => match node {
                         Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
                         _ => None,

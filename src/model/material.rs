@@ -20,8 +20,11 @@ impl Ctx<'_> {
     ) -> Result<(), Diagnostic> {
         for (name, m) in table.get_ref() {
             let key = format!("density` of material `{name}");
+            self.tol.borrow_mut().in_materials = true;
             let si = self.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
             let file = self.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
+            self.tol.borrow_mut().in_materials = false;
+            self.material_tolerance(name, file);
             self.materials.insert(name.clone(), (si, file));
         }
         Ok(())

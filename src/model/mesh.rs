@@ -72,6 +72,7 @@ impl Ctx<'_> {
             },
         };
         self.enter_part();
+        self.tol_needs_mass(p)?;
         let density = self.mesh_density(p, mode, raw.span())?;
         let origin = match &p.origin {
             Some(o) => {
@@ -134,6 +135,7 @@ impl Ctx<'_> {
             placed: Default::default(),
         };
         self.in_file_range(Shape::Mesh, &spec, &name, raw.span())?;
+        self.record_material(p, &spec);
         let tol = self.leave_part(Shape::Mesh, &spec.place);
         Ok(Part {
             tol,
@@ -240,7 +242,8 @@ impl Ctx<'_> {
                 )),
             (_, Some("mass"), _) => {
                 let m = p.mass.as_ref().expect("given");
-                Ok(Density::Mass(self.positive_file(m, "mass", Dim::MASS)?))
+                self.positive(m, "mass", Dim::MASS)?;
+                Ok(Density::Mass(self.mass_with_tol(p, m)?))
             }
             (_, Some("areal_density"), _) => {
                 let q = p.areal_density.as_deref().expect("given");

@@ -30,7 +30,7 @@ impl Ctx<'_> {
             .density
             .and_then(|k| Some((quantity_key(p, k.key)?, k)));
         let mass = match (&p.mass, density) {
-            (Some(m), _) => MassSpec::Given(self.file_quantity(m, "mass", Dim::MASS)?),
+            (Some(m), _) => MassSpec::Given(self.mass_with_tol(p, m)?),
             (None, Some((d, kind))) => {
                 MassSpec::Density(self.file_quantity(d, kind.key, kind.dim)?)
             }
@@ -183,6 +183,7 @@ impl Ctx<'_> {
     ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
         let p = raw.get_ref();
         self.enter_part();
+        self.tol_needs_mass(p)?;
         let Some(shape_raw) = &p.shape else {
             return Err(self.err(raw.span(), "missing key `shape`").help(format!(
                 "every part needs `shape`, one of {} (or `include` of another part file)",
@@ -210,7 +211,7 @@ impl Ctx<'_> {
         let accepted = info.keys;
         if let Some((key, span)) = keys
             .iter()
-            .filter(|(k, _)| !accepted.contains(k))
+            .filter(|(k, _)| !super::tolerance::accepts(accepted, k))
             .find_map(|(k, s)| s.clone().map(|s| (*k, s)))
         {
             return Err(self
@@ -375,6 +376,7 @@ impl Ctx<'_> {
             material.map(|m| m.1),
         )?;
         self.in_file_range(shape, &spec, &name, raw.span())?;
+        self.record_material(p, &spec);
         let tol = self.leave_part(shape, &spec.place);
         let part = Part {
             tol,
@@ -455,7 +457,7 @@ impl Ctx<'_> {
 }
 
 /// Every key a part may have, with where it is when present.
-fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 34] {
+fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 35] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -506,6 +508,7 @@ fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 34] {
         ("file", p.file.as_deref().map(Spanned::span)),
         ("mesh_unit", p.mesh_unit.as_deref().map(Spanned::span)),
         ("mode", p.mode.as_deref().map(Spanned::span)),
+        ("tol", p.tol.as_deref().map(Spanned::span)),
     ]
 }
 

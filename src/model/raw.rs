@@ -272,6 +272,10 @@ pub struct RawPart {
     /// Its design maturity: a key of the file's `[growth]`.
     #[schemars(with = "Option<String>")]
     pub maturity: Option<Box<Spanned<String>>>,
+    /// The tolerance of `mass` (`model::tolerance`): `0.1`, `"0.1 kg"`,
+    /// `"2 %"`, `"± 0.1 kg uniform"`.
+    #[schemars(with = "Option<Quantity>")]
+    pub tol: Option<Box<Spanned<Quantity>>>,
 }
 
 /// `array = { count = N, step = [dx, dy, dz] }`, or `{ count = N, axis =

@@ -103,6 +103,9 @@ fn part_rules() -> Vec<Value> {
     for s in &SHAPES {
         let mut keys = vec!["name", "shape"];
         keys.extend(s.keys);
+        if super::tolerance::accepts(s.keys, super::tolerance::TOL_KEY) {
+            keys.push(super::tolerance::TOL_KEY);
+        }
         keys.extend(super::budget::TAG_KEYS);
         keys.extend(super::copies::COPY_KEYS);
         let mut then = Map::new();
@@ -118,7 +121,13 @@ fn part_rules() -> Vec<Value> {
         if !counts.is_empty() {
             then.insert("properties".into(), Value::Object(counts));
         }
-        then.insert("allOf".into(), Value::Array(rules_of(s)));
+        let mut own = rules_of(s);
+        // `tol` is the tolerance of a given mass.
+        own.push(json!({
+            "if": { "required": [super::tolerance::TOL_KEY] },
+            "then": { "required": ["mass"] },
+        }));
+        then.insert("allOf".into(), Value::Array(own));
         rules.push(json!({
             "if": {
                 "properties": { "shape": { "const": s.name } },
@@ -304,6 +313,17 @@ fn expression_string() -> Value {
     })
 }
 
+/// A value with a tolerance (`model::tolerance`): a quantity or an
+/// expression, `±` or `+/-`, an amount or a percentage, maybe `uniform`
+/// or `normal`. Where a tolerance may stand is the reader's to judge.
+fn toleranced_string() -> Value {
+    json!({
+        "type": "string",
+        "description": "a value with a tolerance: \"700 mm ± 0.5 mm\", \"7850 kg/m^3 ± 2 %\", \"10 mm +/- 1 mm uniform\" (one standard deviation of a normal, or `uniform` within ± the amount)",
+        "pattern": "^[^±%\"\\\\]*[^±%\"\\\\\\s][^±%\"\\\\]*(?:±|\\+/-)\\s*[^±\\s][^±]*$",
+    })
+}
+
 impl JsonSchema for Quantity {
     fn schema_name() -> Cow<'static, str> {
         "Quantity".into()
@@ -316,7 +336,7 @@ impl JsonSchema for Quantity {
                 "a number in the file's units, or a string with its own unit such as \"3 mm\", \"7.85 g/cm^3\" or \"3000 rpm\", or an expression over `[params]`, numbers and units such as \"2 * leg + 5 mm\" or \"pi * d^2 / 4\"; units: {}",
                 symbols.join(", ")
             ),
-            "anyOf": [{ "type": "number" }, quantity_string(), expression_string()],
+            "anyOf": [{ "type": "number" }, quantity_string(), expression_string(), toleranced_string()],
         })
     }
 }

@@ -62,6 +62,11 @@ pub(super) struct Recorder {
     /// Whether the reader is inside a part's keys (else a tolerance is
     /// refused whatever the key).
     pub(super) in_part: bool,
+    /// Whether `[materials]` is being read: a density's tolerance is the
+    /// material's, shared by every part made of it.
+    pub(super) in_materials: bool,
+    /// The materials with a tolerance: name → (source, σ relative).
+    materials: std::collections::BTreeMap<String, (u32, f64)>,
     /// The row (`edges`, `vertices`) and component being read.
     pub(super) row: usize,
     pub(super) component: usize,
@@ -113,6 +118,16 @@ const TOLERABLE: &[&str] = &[
     "vertices",
 ];
 
+/// The key of a given mass's tolerance, beside `mass`.
+pub const TOL_KEY: &str = "tol";
+
+/// Whether a part whose shape takes `keys` takes `key`: its own keys, and
+/// `tol` wherever `mass` is one (the one rule, for the reader and the
+/// schema).
+pub fn accepts(keys: &[&str], key: &str) -> bool {
+    keys.contains(&key) || (key == TOL_KEY && keys.contains(&"mass"))
+}
+
 /// Whether a file's text may hold a tolerance.
 pub fn may_have(text: &str) -> bool {
     text.contains('±') || text.contains("+/-")
@@ -144,7 +159,10 @@ impl Ctx<'_> {
         let Some((value, _, at)) = split(text) else {
             return Ok((text, None));
         };
-        let allowed = self.tol.borrow().in_part && TOLERABLE.contains(&key);
+        let allowed = {
+            let r = self.tol.borrow();
+            (r.in_part && TOLERABLE.contains(&key)) || r.in_materials
+        };
         if !allowed {
             return Err(self.not_allowed(self.source, q.span(), text, at, key));
         }
@@ -169,6 +187,108 @@ impl Ctx<'_> {
             .help("tolerances go on a part's mass, density, sizes, radii and position, and on `[params]` (docs/uncertainty.md)")
     }
 
+    /// The tolerance just read for material `name`'s density (`file`, in
+    /// the file's units), if it has one, as a source shared by every part
+    /// made of it.
+    pub(super) fn material_tolerance(&self, name: &str, file: f64) {
+        let mut guard = self.tol.borrow_mut();
+        let r = &mut *guard;
+        let Some(reading) = r.readings.pop() else {
+            return;
+        };
+        let Origin::New(mut source) = reading.origin else {
+            return;
+        };
+        source.key = format!("material `{name}`");
+        source.shared = true;
+        r.sources.push(source);
+        let k = (r.sources.len() - 1) as u32;
+        r.materials
+            .insert(name.to_string(), (k, reading.rate / file));
+    }
+
+    /// Record how a part made of a material with a tolerance moves with
+    /// it: its density (`spec`'s, the material's made the shape's) in the
+    /// same ratio.
+    pub(super) fn record_material(&self, p: &super::raw::RawPart, spec: &crate::part::Spec) {
+        let (Some(name), crate::part::MassSpec::Density(d)) = (&p.material, spec.mass) else {
+            return;
+        };
+        let mut r = self.tol.borrow_mut();
+        let Some(&(k, rel)) = r.materials.get(name.get_ref()) else {
+            return;
+        };
+        r.readings.push(Reading {
+            key: "material".to_string(),
+            row: 0,
+            component: 0,
+            rate: d * rel,
+            origin: Origin::Shared(k),
+        });
+    }
+
+    /// Refuse `tol` on a part without `mass` (a density's tolerance goes
+    /// in its string).
+    pub(super) fn tol_needs_mass(&self, p: &super::raw::RawPart) -> Result<(), Diagnostic> {
+        match (&p.tol, &p.mass) {
+            (Some(t), None) => Err(self
+                .err(t.span(), "`tol` is the tolerance of `mass`, and this part gives none")
+                .help("a density's or a size's tolerance goes in its string: `density = \"7850 kg/m^3 ± 2 %\"`")),
+            _ => Ok(()),
+        }
+    }
+
+    /// The given mass (file units) of a part with `mass` = `m`, its
+    /// tolerance recorded: in the string, or `tol` beside it (not both).
+    pub(super) fn mass_with_tol(
+        &self,
+        p: &super::raw::RawPart,
+        m: &Spanned<Quantity>,
+    ) -> Result<f64, Diagnostic> {
+        let value = self.file_quantity(m, "mass", Dim::MASS)?;
+        let Some(tol) = p.tol.as_deref() else {
+            return Ok(value);
+        };
+        if matches!(m.get_ref(), Quantity::Text(t) if split(t).is_some()) {
+            return Err(self.err(
+                tol.span(),
+                "`tol` conflicts with the tolerance in `mass`: give one",
+            ));
+        }
+        let t = match tol.get_ref() {
+            Quantity::Number(x) => {
+                if !(x.is_finite() && *x >= 0.0) {
+                    return Err(self.err(
+                        tol.span(),
+                        "`tol`: a tolerance must be a finite amount, zero or more",
+                    ));
+                }
+                Tol {
+                    written: format!("{x}"),
+                    spread: Spread::Normal,
+                    relative: false,
+                    amount: self.units.factor(Dim::MASS).apply(*x),
+                }
+            }
+            Quantity::Text(text) => {
+                let body = text.trim_start();
+                let sign = ["±", "+/-"]
+                    .iter()
+                    .find_map(|s| body.strip_prefix(s).map(|_| s.len()))
+                    .unwrap_or(0);
+                let start = text.len() - body.len() + sign;
+                let at = Written {
+                    source: self.source,
+                    span: tol.span(),
+                    text,
+                };
+                self.amount_at(&at, start, None, Dim::MASS, "tol")?
+            }
+        };
+        self.record(m, "mass", Dim::MASS, value, t);
+        Ok(value)
+    }
+
     /// The tolerance of `text` (which has one: `split`), the string at
     /// `span` of `source`, for a value of dimension `dim`: its amount in
     /// SI, or a fraction if relative.
@@ -181,10 +301,26 @@ impl Ctx<'_> {
         key: &str,
     ) -> Result<Tol, Diagnostic> {
         let (value, amount, at) = split(text).expect("invariant: the text has a tolerance");
+        let start = text.len() - amount.len();
+        let written = Written { source, span, text };
+        self.amount_at(&written, start, Some((value, at)), dim, key)
+    }
+
+    /// The amount of a tolerance that starts at byte `start` of the
+    /// string (after the value and its `±` at `before`, if it has them).
+    fn amount_at(
+        &self,
+        w: &Written<'_>,
+        start: usize,
+        before: Option<(&str, usize)>,
+        dim: Dim,
+        key: &str,
+    ) -> Result<Tol, Diagnostic> {
+        let (source, span, text) = (w.source, w.span.clone(), w.text);
+        let amount = &text[start..];
         let here = |from: usize, to: usize| {
             super::params::sub_span(&source.text, span.clone(), text, from..to)
         };
-        let start = text.len() - amount.len();
         let trimmed = amount.trim();
         let (body, spread) = match trimmed.rsplit_once(char::is_whitespace) {
             Some((b, "uniform")) => (b.trim_end(), Spread::Uniform),
@@ -198,7 +334,7 @@ impl Ctx<'_> {
                 "a tolerance is an amount of the value's unit or a percentage, then `uniform` or `normal` (the default): `± {example}`, `± 2 %`, `± {example} uniform`"
             ))
         };
-        if value.is_empty() {
+        if let Some(("", at)) = before {
             return Err(source.error(
                 here(0, at.max(1)),
                 format!("`{key}`: a value must stand before the tolerance"),
@@ -364,6 +500,13 @@ impl Ctx<'_> {
     }
 }
 
+/// A string as written: its text, and where it is.
+struct Written<'a> {
+    source: &'a crate::diag::Source,
+    span: Range<usize>,
+    text: &'a str,
+}
+
 /// A tolerance read from a quantity string (see `Ctx::amount`).
 #[derive(Debug, Clone)]
 pub(super) struct Tol {
@@ -405,7 +548,9 @@ fn slot(
             .map(|i| Slot::Dim(i as u8))
     };
     Some(match (key, place) {
-        ("mass" | "density" | "areal_density" | "linear_density", _) => (Slot::Mass, 1.0),
+        ("mass" | "density" | "areal_density" | "linear_density" | "material", _) => {
+            (Slot::Mass, 1.0)
+        }
         ("center" | "corner" | "from", _) => (Slot::At(c), 1.0),
         ("to", _) => (Slot::To(c), 1.0),
         ("edges", _) => (Slot::Edge(r, c), 1.0),
