@@ -38,7 +38,7 @@ impl Ctx<'_> {
         let info = Shape::Mesh.info();
         if let Some((key, span)) = super::parts::present_keys(p)
             .into_iter()
-            .filter(|(k, _)| *k != "shape" && !info.keys.contains(k))
+            .filter(|(k, _)| *k != "shape" && !super::tolerance::accepts(info.keys, k))
             .find_map(|(k, s)| s.map(|s| (k, s)))
         {
             return Err(self

@@ -562,6 +562,8 @@ mod tests {
         let mut accepted: BTreeSet<&str> =
             SHAPES.iter().flat_map(|s| s.keys.iter().copied()).collect();
         accepted.extend(["include", "origin", "params"]);
+        // `tol` goes wherever `mass` does (`tolerance::accepts`).
+        accepted.insert(crate::model::tolerance::TOL_KEY);
         assert_eq!(read, accepted);
     }
 

@@ -274,7 +274,7 @@ pub struct RawPart {
     pub maturity: Option<Box<Spanned<String>>>,
     /// The tolerance of `mass` (`model::tolerance`): `0.1`, `"0.1 kg"`,
     /// `"2 %"`, `"± 0.1 kg uniform"`.
-    #[schemars(with = "Option<Quantity>")]
+    #[schemars(with = "Option<super::schema::TolAmount>")]
     pub tol: Option<Box<Spanned<Quantity>>>,
 }
 

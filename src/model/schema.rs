@@ -441,6 +441,19 @@ schema_only!(
 );
 
 schema_only!(
+    /// `tol`: a given mass's tolerance (`model::tolerance`).
+    TolAmount,
+    "TolAmount",
+    json!({
+        "description": "the tolerance of `mass`: a number in the file's mass unit, or \"0.1 kg\", \"3 %\", \"± 0.1 kg uniform\" (one standard deviation of a normal, or `uniform` within ± the amount)",
+        "anyOf": [
+            { "type": "number", "minimum": 0 },
+            { "type": "string", "pattern": "^\\s*(?:±|\\+/-)?\\s*[^±\\s][^±]*$" },
+        ],
+    })
+);
+
+schema_only!(
     /// `units.mass`: one of `units::MASS_UNITS`.
     MassUnit,
     "MassUnit",

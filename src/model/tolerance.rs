@@ -317,6 +317,8 @@ impl Ctx<'_> {
         key: &str,
     ) -> Result<Tol, Diagnostic> {
         let (source, span, text) = (w.source, w.span.clone(), w.text);
+        // The amount's first character, past the spaces after `±`.
+        let start = start + (text.len() - start - text[start..].trim_start().len());
         let amount = &text[start..];
         let here = |from: usize, to: usize| {
             super::params::sub_span(&source.text, span.clone(), text, from..to)

@@ -362,6 +362,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "mode" => "\"shell\"",
         "group" => "\"structure/panels\"",
         "maturity" => "\"sample\"",
+        "tol" => "\"1 %\"",
         other => panic!("no sample value for `{other}`: add one here"),
     }
 }

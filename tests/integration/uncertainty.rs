@@ -365,3 +365,144 @@ fn samples_without_monte_carlo_are_refused() {
             .contains("`--samples` needs `--uncertainty montecarlo`")
     );
 }
+
+#[test]
+fn a_parameters_tolerance_moves_every_key_that_uses_it_together() {
+    // Two plates of 100 mm × 100 mm, 7.85e-6 kg/mm³, thick `th` and `2 th`,
+    // th = 3 ± 0.1 mm: m = ρA·3th, σ_m = ρA·3·0.1 mm (correlated; two
+    // independent tolerances would give ρA·√5·0.1 mm).
+    let text = r#"
+units = { length = "mm", mass = "kg" }
+[params]
+th = "3 mm ± 0.1 mm"
+twice = "2 * th"
+[[part]]
+shape = "box"
+density = 7.85e-6
+size = [100, 100, "th"]
+center = [0, 0, 0]
+[[part]]
+shape = "box"
+density = 7.85e-6
+size = [100, 100, "twice"]
+center = [0, 0, 50]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    assert!(close(sigma(&v, "mass"), 7.85e-6 * 1e4 * 3.0 * 0.1, 1e-14));
+    assert_eq!(v["uncertainty"]["sources"], 1);
+    let c = &output(&v, "mass")["contributors"][0];
+    assert!(c["source"].as_str().unwrap().contains("param `th`"), "{c}");
+}
+
+#[test]
+fn a_materials_tolerance_is_shared_by_its_parts() {
+    // Both parts of one aluminium ± 3 %: σ_m = 3 % of the total mass.
+    let text = r#"
+units = { length = "mm", mass = "kg" }
+[materials]
+alu = { density = "2700 kg/m^3 ± 3 %" }
+[[part]]
+shape = "box"
+material = "alu"
+size = [100, 100, 10]
+center = [0, 0, 0]
+[[part]]
+shape = "plate"
+material = "alu"
+thickness = 2
+size = [100, 100]
+center = [0, 0, 100]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    let m = v["mass"].as_f64().unwrap();
+    assert!(close(sigma(&v, "mass"), 0.03 * m, 1e-14));
+}
+
+#[test]
+fn tol_beside_mass_is_the_masss_tolerance() {
+    // 5 % of 3 kg (normal) and ± 0.1 kg uniform: σ² = 0.15² + 0.1²/3.
+    let text = r#"
+[[part]]
+shape = "box"
+mass = 3
+tol = "5 %"
+size = [1, 1, 1]
+center = [0, 0, 0]
+[[part]]
+shape = "point"
+mass = 2
+tol = "± 0.1 kg uniform"
+center = [1, 0, 0]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "linear"]);
+    assert!(close(
+        sigma(&v, "mass"),
+        (0.15f64.powi(2) + 0.01 / 3.0).sqrt(),
+        1e-15
+    ));
+}
+
+#[test]
+fn each_instance_of_an_included_file_has_its_own_parameters_tolerance() {
+    // Two wheels of one file whose `rim` mass is a parameter ± 0.2 kg:
+    // independent wheels, σ = 0.2 √2.
+    let dir = scratch("uncertainty", "instances");
+    std::fs::write(
+        dir.join("wheel.toml"),
+        "[params]\nrim = \"1.5 kg ± 0.2 kg\"\n[[part]]\nshape = \"point\"\nmass = \"rim\"\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    let path = dir.join("bike.toml");
+    std::fs::write(
+        &path,
+        "[[part]]\ninclude = \"wheel.toml\"\norigin = [0, 0, 0]\n[[part]]\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n",
+    )
+    .unwrap();
+    let v = run(&path, &["--uncertainty", "linear"]);
+    assert!(close(sigma(&v, "mass"), 0.2 * 2f64.sqrt(), 1e-15));
+    assert_eq!(v["uncertainty"]["sources"], 2);
+}
+
+/// `report FILE` on `text`: status 2, nothing on stdout, and stderr
+/// containing each of `want`.
+fn refused(name: &str, text: &str, want: &[&str]) {
+    let dir = scratch("uncertainty", name);
+    let path = dir.join("f.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    for w in want {
+        assert!(err.contains(w), "{w:?} not in {err}");
+    }
+}
+
+#[test]
+fn misplaced_tolerances_are_refused_where_they_stand() {
+    refused(
+        "tol-without-mass",
+        "[[part]]\nshape = \"box\"\ndensity = 1\ntol = 0.1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n",
+        &["f.toml:4:7", "`tol` is the tolerance of `mass`"],
+    );
+    refused(
+        "tol-twice",
+        "[[part]]\nshape = \"point\"\nmass = \"1 kg ± 0.1 kg\"\ntol = 0.1\ncenter = [0, 0, 0]\n",
+        &["f.toml:4:7", "`tol` conflicts with the tolerance in `mass`"],
+    );
+    refused(
+        "param-in-count",
+        "[params]\nn = \"4 ± 1\"\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\narray = { count = \"n\", step = [1, 0, 0] }\n",
+        &["f.toml:7:19", "a tolerance is not allowed on `count`"],
+    );
+    refused(
+        "bad-amount",
+        "[[part]]\nshape = \"point\"\nmass = \"1 kg ± 3 furlongs\"\ncenter = [0, 0, 0]\n",
+        &["f.toml:3:16", "`mass`: the tolerance"],
+    );
+    refused(
+        "no-value",
+        "[[part]]\nshape = \"point\"\nmass = \"± 1 kg\"\ncenter = [0, 0, 0]\n",
+        &["f.toml:3", "a value must stand before the tolerance"],
+    );
+}
