@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# Benchmark (issue 18, item 6): the cost of propagating tolerances.
+#
+#   bash benches/uncertainty.sh          # 1,000 parts; 100,000 for linear
+#   bash benches/uncertainty.sh 2000     # 2,000 parts
+#
+# Generates (python, deterministic) a part file of N parts, each with one
+# to three tolerances (sizes, masses, densities, positions) and a shared
+# parameter ± (a sheet thickness four in ten parts use), and a second file
+# of 100 N parts; builds the release binary of the working tree, and
+# times with hyperfine (median of 5): a plain report, `--uncertainty
+# linear` (target: within 3× the plain report) and `--uncertainty
+# montecarlo` of 10,000 samples (target: about a second for 1,000 parts
+# on two cores), and linear on the large file.
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/lib.sh"
+need_bench_tools "the part files"
+n="${1:-1000}"
+tmp="$(mktemp -d)"
+trap 'rm -rf "$tmp"' EXIT
+cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
+bin="$here/../target/release/massprop"
+python3 - "$tmp" "$n" <<'PY'
+import random, sys
+out, n = sys.argv[1], int(sys.argv[2])
+def write(path, count):
+    random.seed(1)
+    lines = ['units = { length = "mm", mass = "kg" }', '[params]', 'sheet = "2 mm ± 0.05 mm"']
+    for i in range(count):
+        x, y, z = (random.uniform(-500, 500) for _ in range(3))
+        k = i % 4
+        lines.append("[[part]]")
+        if k == 0:
+            lines += ['shape = "box"', 'density = "2700 kg/m^3 ± 1 %"',
+                      f'size = ["{random.uniform(10, 50):.2f} mm ± 0.1 mm", {random.uniform(10, 50):.2f}, "sheet"]',
+                      f'center = [{x:.3f}, {y:.3f}, "{z:.3f} mm ± 0.5 mm"]']
+        elif k == 1:
+            lines += ['shape = "cylinder"', 'density = 7.85e-6',
+                      f'radius = "{random.uniform(5, 20):.2f} mm ± 0.05 mm"', 'inner_radius = 3',
+                      f'length = {random.uniform(20, 200):.1f}', f'center = [{x:.3f}, {y:.3f}, {z:.3f}]']
+        elif k == 2:
+            lines += ['shape = "point"', f'mass = "{random.uniform(0.1, 2):.3f} kg ± 0.02 kg"',
+                      f'center = ["{x:.3f} mm ± 2 mm", {y:.3f}, {z:.3f}]']
+        else:
+            lines += ['shape = "box"', 'density = 2.7e-6',
+                      f'size = [{random.uniform(50, 100):.1f}, {random.uniform(50, 100):.1f}, "sheet"]',
+                      f'center = [{x:.3f}, {y:.3f}, {z:.3f}]']
+    open(path, "w").write("\n".join(lines) + "\n")
+write(out + "/small.toml", n)
+write(out + "/large.toml", 100 * n)
+PY
+run() {
+    hyperfine --runs 5 --warmup 1 --style basic "$bin report --format json $*" 2>&1 | grep -E "Time|Range"
+}
+echo "== $n parts: plain report"; run "$tmp/small.toml"
+echo "== $n parts: --uncertainty linear"; run "$tmp/small.toml --uncertainty linear"
+echo "== $n parts: --uncertainty montecarlo (10,000 samples)"; run "$tmp/small.toml --uncertainty montecarlo"
+echo "== $((100 * n)) parts: plain report"; run "$tmp/large.toml"
+echo "== $((100 * n)) parts: --uncertainty linear"; run "$tmp/large.toml --uncertainty linear"
