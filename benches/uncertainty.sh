@@ -6,7 +6,7 @@
 #
 # Generates (python, deterministic) a part file of N parts, each with one
 # to three tolerances (sizes, masses, densities, positions) and a shared
-# parameter ± (a sheet thickness four in ten parts use), and a second file
+# parameter ± (a sheet thickness half the parts use), and a second file
 # of 100 N parts; builds the release binary of the working tree, and
 # times with hyperfine (median of 5): a plain report, `--uncertainty
 # linear` (target: within 3× the plain report) and `--uncertainty

@@ -1,11 +1,9 @@
 //! `budget`'s weight statement: a table for people, masses and lengths in
 //! the file's units (as `report`'s), and JSON in SI (docs/budget.md).
 
-use super::format::{
-    DisplayUnits, fmt_bounded, fmt_num, precision_label, products_label, push_name, push_percent,
-};
+use super::format::{DisplayUnits, fmt_bounded, fmt_num, precision_label, push_name, push_percent};
 use super::grid::{Cells, Fit, write_rows, write_table};
-use super::report::{axes_line, matrix_table, title};
+use super::report::{conventions, matrix_table, title};
 use crate::analysis::budget::{LimitSource, Statement};
 use std::fmt::Write;
 
@@ -23,17 +21,7 @@ pub fn table(s: &Statement, width: Option<usize>) -> String {
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
     title(&mut out, &s.name, &s.sub_assembly, &s.source);
-    let _ = writeln!(
-        out,
-        "units: mass {}, length {}, inertia {}",
-        u.mass_label, u.length_label, u.inertia_label
-    );
-    let _ = writeln!(
-        out,
-        "products of inertia: {}",
-        products_label(s.products_convention)
-    );
-    let _ = writeln!(out, "{}", axes_line(&s.axes));
+    conventions(&mut out, &u, "", s.products_convention, &s.axes);
     let _ = writeln!(
         out,
         "precision: basic body {}, predicted body {}; --rtol {:e}",

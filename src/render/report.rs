@@ -122,6 +122,25 @@ pub(super) fn title(
     };
 }
 
+/// The lines under a title that say how to read a table's numbers: the
+/// units (`units` after the file's own: `report`'s dynamics in SI), the
+/// convention of the products of inertia and the axes.
+pub(super) fn conventions(
+    out: &mut String,
+    u: &DisplayUnits,
+    units: &str,
+    products: crate::analysis::Products,
+    axes: &[[f64; 3]; 3],
+) {
+    let _ = writeln!(
+        out,
+        "units: mass {}, length {}, inertia {}{units}",
+        u.mass_label, u.length_label, u.inertia_label
+    );
+    let _ = writeln!(out, "products of inertia: {}", products_label(products));
+    let _ = writeln!(out, "{}", axes_line(axes));
+}
+
 /// Which axes the values are in: the file's, or the report axes given
 /// (`axes`), each as its direction in the file's frame.
 pub(super) fn axes_line(axes: &[[f64; 3]; 3]) -> String {
@@ -193,17 +212,13 @@ pub fn write_table_to(
     let u = DisplayUnits::of(s.file_units);
     let mut out = String::new();
     title(&mut out, &s.name, &s.sub_assembly, source);
-    let _ = writeln!(
-        out,
-        "units: mass {}, length {}, inertia {}; ω, H, T, α and M in SI",
-        u.mass_label, u.length_label, u.inertia_label
+    conventions(
+        &mut out,
+        &u,
+        "; ω, H, T, α and M in SI",
+        s.products_convention,
+        &s.axes,
     );
-    let _ = writeln!(
-        out,
-        "products of inertia: {}",
-        products_label(s.products_convention)
-    );
-    let _ = writeln!(out, "{}", axes_line(&s.axes));
     let _ = writeln!(out, "{}", precision_line(s));
     let b = &s.error_bounds;
     let own = |v: f64, e: f64, scale: f64| fmt_bounded(v / scale, e / scale, (v / scale).abs());
