@@ -101,8 +101,9 @@ pub struct Uncertainty {
     pub samples: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seed: Option<u64>,
-    /// Monte Carlo: samples in which a part's size, radius or mass fell to
-    /// zero or below (left out of the statistics).
+    /// Monte Carlo: samples in which a part's size, radius, density or
+    /// mass fell to zero or below, or its inner radius past its outer
+    /// (left out of the statistics).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rejected: Option<usize>,
     /// Independent sources of uncertainty (toleranced quantities, each
@@ -616,6 +617,12 @@ fn monte_carlo_run(
                     }
                 }
                 let (m, c, j) = physics_in::<f64, Fixed>(part.shape, &spec, Fixed);
+                // A drawn body that is no body (an inner radius past the
+                // outer, a mass of the wrong sign) is left out, counted.
+                let sign = if spec.removed { -1.0 } else { 1.0 };
+                if !(m * sign > 0.0) || (0..3).any(|a| j[a][a] * sign < 0.0) {
+                    ok = false;
+                }
                 let l = &part.linear;
                 let mc = l.dir(c);
                 let d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[i]);

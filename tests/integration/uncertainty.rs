@@ -544,3 +544,26 @@ fn the_satellites_mass_deviation_is_the_sum_of_its_tolerances_variances() {
     );
     assert_eq!(v["uncertainty"]["sources"], 16);
 }
+
+#[test]
+fn monte_carlo_leaves_out_the_samples_that_are_no_body() {
+    // A tube whose wall (1 mm) is about its inner radius's σ (1 mm): in
+    // about a sixth of the draws the inner radius passes the outer
+    // (P(z > 1) = 0.159); those are left out and counted, never composed.
+    let text = r#"
+units = { length = "mm", mass = "kg" }
+[[part]]
+shape = "cylinder"
+density = 7.85e-6
+radius = 20
+inner_radius = "19 mm ± 1 mm"
+length = 100
+center = [0, 0, 0]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "montecarlo", "--samples", "4000"]);
+    let rejected = v["uncertainty"]["rejected"].as_f64().unwrap() / 4000.0;
+    // Binomial: σ of the fraction √(p(1 − p)/n) = 0.0058; 5 of those.
+    assert!((rejected - 0.158_655).abs() < 0.029, "{rejected}");
+    let p = output(&v, "mass")["percentiles"][0].as_f64().unwrap();
+    assert!(p > 0.0);
+}
