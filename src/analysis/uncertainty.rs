@@ -281,6 +281,9 @@ struct Moving {
     spec: Spec,
     /// (slot, source index, rate).
     deps: Vec<(Slot, usize, f64)>,
+    /// Its sub-assemblies' origins' tolerances: (source index, the shift
+    /// per unit of its variable, root file's frame and units).
+    shifts: Vec<(usize, [f64; 3])>,
     linear: crate::model::frame::Linear,
     /// Where its own centroid's image lies less the map of it: c' =
     /// `linear.dir(c)` + `shift` − c₀ (file units of the root).
@@ -307,39 +310,50 @@ pub fn propagate(
         let m: f64 = placed.mass();
         let cen = placed.centroid();
         let d: [f64; 3] = std::array::from_fn(|i| (cen[i] - crate::numeric::DD::of(c0[i])).f64());
-        let Some(deps) = &leaf.own.tol else {
+        // The source of a key, met for the first time or again.
+        let mut source_of = |key: u64, label: &dyn Fn() -> String, spread| {
+            *index.entry(key).or_insert_with(|| {
+                sources.push(Source {
+                    label: label(),
+                    d: Sums::default(),
+                    uniform: spread == crate::model::tolerance::Spread::Uniform,
+                });
+                sources.len() - 1
+            })
+        };
+        // Its sub-assemblies' origins' tolerances move it whole.
+        let mut shifts: Vec<(usize, [f64; 3])> = Vec::new();
+        leaf.placing.shifts(&mut |s| {
+            let label = || format!("{}: {} ± {}", s.include, s.source.key, s.source.written);
+            shifts.push((source_of(s.key, &label, s.source.spread), s.dir));
+        });
+        let no_deps: &[crate::part::Dep] = &[];
+        let deps = leaf.own.tol.as_deref().unwrap_or(no_deps);
+        if deps.is_empty() && shifts.is_empty() {
             if monte_carlo {
                 let own: M3<f64> = placed.own_second_moment(m);
                 fixed.add_part(m, d, &own);
             }
             return;
-        };
+        }
         let file_sources = &leaf.placing.model.sources;
         let mut ids = Vec::with_capacity(deps.len());
-        for dep in deps.iter() {
+        for dep in deps {
             let s = &file_sources[dep.source as usize];
-            // A parameter's source is one per instance of its file, a
-            // part's own one per copy of the part.
+            // A parameter's or a material's source is one per instance of
+            // its file, a part's own one per copy of the part.
             let instance = if s.shared {
                 leaf.placing.file
             } else {
                 leaf.placing.part
             };
             let key = crate::model::walk::mix(instance, u64::from(dep.source), 0);
-            let id = *index.entry(key).or_insert_with(|| {
-                let label = match (s.shared, placed.assembly.last()) {
-                    (false, _) => format!("{}: {} ± {}", placed.name, s.key, s.written),
-                    (true, Some(file)) => format!("{file}: {} ± {}", s.key, s.written),
-                    (true, None) => format!("{} ± {}", s.key, s.written),
-                };
-                sources.push(Source {
-                    label,
-                    d: Sums::default(),
-                    uniform: s.spread == crate::model::tolerance::Spread::Uniform,
-                });
-                sources.len() - 1
-            });
-            ids.push(id);
+            let label = || match (s.shared, placed.assembly.last()) {
+                (false, _) => format!("{}: {} ± {}", placed.name, s.key, s.written),
+                (true, Some(file)) => format!("{file}: {} ± {}", s.key, s.written),
+                (true, None) => format!("{} ± {}", s.key, s.written),
+            };
+            ids.push(source_of(key, &label, s.spread));
         }
         let linear = leaf.placing.linear();
         if monte_carlo {
@@ -353,14 +367,26 @@ pub fn propagate(
                     .zip(&ids)
                     .map(|(d, id)| (d.slot, *id, d.rate))
                     .collect(),
+                shifts,
                 linear,
                 shift: std::array::from_fn(|i| d[i] - mapped[i]),
             });
             return;
         }
-        // Linear: one dual evaluation per slot the part's tolerances move.
+        // Linear: a shift v moves S by m v and P by m (v dᵀ + d vᵀ).
+        for (id, v) in &shifts {
+            let mut per = Sums::default();
+            for i in 0..3 {
+                per.s[i] = m * v[i];
+                for j in 0..3 {
+                    per.p[i][j] = m * (v[i] * d[j] + d[i] * v[j]);
+                }
+            }
+            sources[*id].d.plus(&per, 1.0);
+        }
+        // One dual evaluation per slot the part's own tolerances move.
         let mut done: Vec<Slot> = Vec::new();
-        for dep in deps.iter() {
+        for dep in deps {
             if done.contains(&dep.slot) {
                 continue;
             }
@@ -625,7 +651,12 @@ fn monte_carlo_run(
                 }
                 let l = &part.linear;
                 let mc = l.dir(c);
-                let d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[i]);
+                let mut d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[i]);
+                for &(k, v) in &part.shifts {
+                    for i in 0..3 {
+                        d[i] += z[k] * v[i];
+                    }
+                }
                 sums.add_part(l.mass * m, d, &l.second(&j));
             }
             match ok.then(|| frame.outputs(&sums, c0)).flatten() {

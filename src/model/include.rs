@@ -510,6 +510,8 @@ impl Ctx<'_> {
             None => Orientation::Identity,
         };
         let r: M3<f64> = orientation.matrix();
+        // Its origin may carry tolerances: the sub-assembly's place.
+        self.enter_origin();
         let origin = match &p.origin {
             Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
             None => [0.0; 3],
@@ -518,6 +520,7 @@ impl Ctx<'_> {
         if let Some(o) = &p.origin {
             self.vec3(o, "origin", Dim::LENGTH)?;
         }
+        let tol = self.leave_origin();
         let frame = Frame {
             origin,
             r,
@@ -543,6 +546,7 @@ impl Ctx<'_> {
             span: raw.span(),
             copies: None,
             tag: self.tag(p, false)?,
+            tol,
         };
         // Representable in this file's units too (the composer works in
         // them): a sub-assembly in µm and mg can underflow in km and t.

@@ -119,6 +119,9 @@ pub struct Include {
     /// Its `array` and `mirror`, if any (`copies`): each copy a
     /// sub-assembly `name[i]`.
     pub copies: Option<Box<Copies>>,
+    /// How its origin moves with this file's tolerances (`Slot::At`),
+    /// in this file's units and frame.
+    pub tol: Option<std::sync::Arc<[crate::part::Dep]>>,
     /// Its `group` (its parts' groups go under it) and `maturity` (the
     /// default of its parts that have none), if any (`budget`).
     pub tag: Option<Box<budget::Tag>>,

@@ -62,6 +62,9 @@ pub(super) struct Recorder {
     /// Whether the reader is inside a part's keys (else a tolerance is
     /// refused whatever the key).
     pub(super) in_part: bool,
+    /// Whether an include's `origin` is being read: its tolerances move
+    /// the sub-assembly.
+    in_origin: bool,
     /// Whether `[materials]` is being read: a density's tolerance is the
     /// material's, shared by every part made of it.
     pub(super) in_materials: bool,
@@ -116,6 +119,7 @@ const TOLERABLE: &[&str] = &[
     "from",
     "to",
     "vertices",
+    "origin",
 ];
 
 /// The key of a given mass's tolerance, beside `mass`.
@@ -161,7 +165,9 @@ impl Ctx<'_> {
         };
         let allowed = {
             let r = self.tol.borrow();
-            (r.in_part && TOLERABLE.contains(&key)) || r.in_materials
+            (r.in_part && TOLERABLE.contains(&key))
+                || r.in_materials
+                || (r.in_origin && key == "origin")
         };
         if !allowed {
             return Err(self.not_allowed(self.source, q.span(), text, at, key));
@@ -225,6 +231,37 @@ impl Ctx<'_> {
             rate: d * rel,
             origin: Origin::Shared(k),
         });
+    }
+
+    /// Start reading an include's `origin`: its tolerances are recorded.
+    pub(super) fn enter_origin(&self) {
+        let mut r = self.tol.borrow_mut();
+        r.in_origin = true;
+        r.readings.clear();
+    }
+
+    /// Stop reading an include's `origin`, and turn its tolerances into
+    /// `Dep`s on the point (`Slot::At`), its sources appended.
+    pub(super) fn leave_origin(&self) -> Option<std::sync::Arc<[Dep]>> {
+        let mut guard = self.tol.borrow_mut();
+        let r = &mut *guard;
+        r.in_origin = false;
+        let deps = r.readings.drain(..).map(|reading| {
+            let source = match reading.origin {
+                Origin::New(s) => {
+                    r.sources.push(s);
+                    (r.sources.len() - 1) as u32
+                }
+                Origin::Shared(k) => k,
+            };
+            Dep {
+                slot: Slot::At(reading.component.min(2) as u8),
+                source,
+                rate: reading.rate,
+            }
+        });
+        let deps: Vec<Dep> = deps.collect();
+        (!deps.is_empty()).then(|| deps.into())
     }
 
     /// Refuse `tol` on a part without `mass` (a density's tolerance goes
@@ -385,7 +422,9 @@ impl Ctx<'_> {
         let (row, component) = (r.row, r.component);
         let key_text = match key {
             "edges" | "vertices" => format!("{key}[{row}][{component}]"),
-            "size" | "center" | "corner" | "from" | "to" => format!("{key}[{component}]"),
+            "size" | "center" | "corner" | "from" | "to" | "origin" => {
+                format!("{key}[{component}]")
+            }
             _ => key.to_string(),
         };
         r.readings.push(Reading {
@@ -416,7 +455,7 @@ impl Ctx<'_> {
         grad: &crate::expr::tangent::Grad,
     ) -> Result<(), Diagnostic> {
         let r = self.tol.borrow();
-        if !(r.in_part && TOLERABLE.contains(&key)) {
+        if !((r.in_part && TOLERABLE.contains(&key)) || (r.in_origin && key == "origin")) {
             let names = r.sources[grad[0].0 as usize].key.clone();
             return Err(self
                 .err(
@@ -553,7 +592,7 @@ fn slot(
         ("mass" | "density" | "areal_density" | "linear_density" | "material", _) => {
             (Slot::Mass, 1.0)
         }
-        ("center" | "corner" | "from", _) => (Slot::At(c), 1.0),
+        ("center" | "corner" | "from" | "origin", _) => (Slot::At(c), 1.0),
         ("to", _) => (Slot::To(c), 1.0),
         ("edges", _) => (Slot::Edge(r, c), 1.0),
         ("vertices", _) => (Slot::Vertex(r, c), 1.0),

@@ -68,6 +68,34 @@ impl Placing<'_> {
         }
     }
 
+    /// The shifts of the part by the tolerances of its sub-assemblies'
+    /// origins (none for most parts).
+    pub fn shifts(&self, f: &mut dyn FnMut(Shift<'_>)) {
+        for (i, layer) in self.layers.iter().enumerate() {
+            let Some(m) = &layer.moved else { continue };
+            // The frames outside this include move its origin's shift.
+            let outer = self.layers[..i]
+                .iter()
+                .fold(super::frame::Linear::IDENTITY, |acc, l| {
+                    acc.after(&l.frame.linear())
+                });
+            for dep in m.deps {
+                let crate::part::Slot::At(c) = dep.slot else {
+                    continue;
+                };
+                // In the including file's units; `outer` takes them on.
+                let mut d = [0.0; 3];
+                d[usize::from(c)] = dep.rate;
+                f(Shift {
+                    key: mix(m.key, u64::from(dep.source), 2),
+                    source: &m.model.sources[dep.source as usize],
+                    include: &m.include.name,
+                    dir: outer.dir(d),
+                });
+            }
+        }
+    }
+
     /// The linear part of the placing (`frame::Linear`).
     pub fn linear(&self) -> super::frame::Linear {
         self.layers
@@ -192,6 +220,31 @@ impl Model {
 struct Layer<'m> {
     frame: Cow<'m, Frame>,
     span: &'m Range<usize>,
+    /// An include's: the tolerances of its origin, in the including file.
+    moved: Option<Moved<'m>>,
+}
+
+/// A sub-assembly whose origin carries tolerances, as a walk enters it.
+#[derive(Clone, Copy)]
+struct Moved<'m> {
+    deps: &'m [crate::part::Dep],
+    /// The including file's model (its `sources`).
+    model: &'m Model,
+    /// This instance of the include (its copy too).
+    key: u64,
+    include: &'m Include,
+}
+
+/// A shift of a part with a source of uncertainty: its sub-assembly's
+/// origin moved, in the root file's frame and units, per unit of the
+/// source's standardised variable.
+pub struct Shift<'a> {
+    /// The source's key: the same on every run, one per instance.
+    pub key: u64,
+    pub source: &'a super::tolerance::Source,
+    /// The sub-assembly's name in its including file.
+    pub include: &'a str,
+    pub dir: [f64; 3],
 }
 
 /// A walk under way.
@@ -219,11 +272,11 @@ impl<'m> Walk<'m> {
         for (k, item) in model.items.iter().enumerate() {
             match item {
                 Item::Include(inc) => match &inc.copies {
-                    None => self.include(k, inc, None, f),
+                    None => self.include(model, k, inc, None, f),
                     Some(c) => {
                         for i in c.indices() {
                             let pushed = self.copy_frames(c, i, &inc.span);
-                            self.include(k, inc, Some(i), f);
+                            self.include(model, k, inc, Some(i), f);
                             self.frames.truncate(self.frames.len() - pushed);
                         }
                     }
@@ -256,6 +309,7 @@ impl<'m> Walk<'m> {
             self.frames.push(Layer {
                 frame: Cow::Owned(frame),
                 span,
+                moved: None,
             });
             pushed += 1;
         }
@@ -265,6 +319,7 @@ impl<'m> Walk<'m> {
     /// The sub-assembly `inc` (its copy `copy`), entered, walked and left.
     fn include(
         &mut self,
+        model: &'m Model,
         k: usize,
         inc: &'m Include,
         copy: Option<usize>,
@@ -280,6 +335,12 @@ impl<'m> Walk<'m> {
         self.frames.push(Layer {
             frame: Cow::Borrowed(&inc.frame),
             span: &inc.span,
+            moved: inc.tol.as_deref().map(|deps| Moved {
+                deps,
+                model,
+                key,
+                include: inc,
+            }),
         });
         let len = self.prefix.len();
         if self.named {

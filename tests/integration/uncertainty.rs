@@ -567,3 +567,45 @@ center = [0, 0, 0]
     let p = output(&v, "mass")["percentiles"][0].as_f64().unwrap();
     assert!(p > 0.0);
 }
+
+#[test]
+fn a_sub_assemblys_origin_tolerance_moves_it_whole_through_the_frames_outside() {
+    // Two 2 kg points 1 m apart, one of them a sub-assembly two levels
+    // down whose origin is ± 2 mm along its including file's x; that file
+    // is turned a quarter about z, so the shift is along the root's y.
+    // The centre moves by half of it (m_sub/M = 1/2): σ_ȳ = 1 mm, σ_x̄ = 0;
+    // I_xx about the centre is μ y² (μ = m₁m₂/M = 1 kg), σ = 2μ y σ_y.
+    let dir = scratch("uncertainty", "origin");
+    std::fs::write(
+        dir.join("point.toml"),
+        "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.join("mid.toml"),
+        "units = { length = \"mm\", mass = \"kg\" }\n[[part]]\ninclude = \"point.toml\"\norigin = [\"1000 mm ± 2 mm\", 0, 0]\n",
+    )
+    .unwrap();
+    let path = dir.join("top.toml");
+    std::fs::write(
+        &path,
+        "[[part]]\ninclude = \"mid.toml\"\nrotation = { axis = [0, 0, 1], degrees = 90 }\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    for method in [
+        &["--uncertainty", "linear"][..],
+        &["--uncertainty", "montecarlo", "--samples", "20000"],
+    ] {
+        let v = run(&path, method);
+        let rel = if method.len() == 2 { 1e-12 } else { 0.025 };
+        assert!(
+            close(sigma(&v, "center_of_mass.y"), 1e-3, rel),
+            "{method:?}"
+        );
+        assert!(sigma(&v, "center_of_mass.x") < 1e-12, "{method:?}");
+        assert!(
+            close(sigma(&v, "inertia_com.xx"), 2.0 * 1.0 * 1.0 * 2e-3, rel),
+            "{method:?}"
+        );
+    }
+}
