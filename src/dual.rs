@@ -14,7 +14,7 @@ use std::fmt;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// `v + d ε`: a value and its derivative with respect to one input.
-#[derive(Clone, Copy, Default, PartialEq)]
+#[derive(Clone, Copy, Default)]
 pub struct Dual<T> {
     pub v: T,
     pub d: T,
@@ -32,8 +32,15 @@ impl<T: Real> fmt::Debug for Dual<T> {
     }
 }
 
-/// Ordered by value: the branches a closed form takes (a sign, the closer
-/// of two moments) are those of the nominal input.
+/// Equal and ordered by value alone: the branches a closed form takes (a
+/// sign, the closer of two moments, an exact zero) are those of the
+/// nominal input.
+impl<T: Real> PartialEq for Dual<T> {
+    fn eq(&self, o: &Self) -> bool {
+        self.v == o.v
+    }
+}
+
 impl<T: Real> PartialOrd for Dual<T> {
     fn partial_cmp(&self, o: &Self) -> Option<std::cmp::Ordering> {
         self.v.partial_cmp(&o.v)

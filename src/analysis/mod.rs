@@ -101,7 +101,7 @@ pub fn load_source_reading(
     }
     summary.source = Some(source.name.clone());
     if let Some(method) = settings.uncertainty {
-        summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source));
+        summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source)?);
     }
     if budget::expects_predicted(&model) {
         let predicted = budget::predicted(&model, &analysis, settings, &source)?;

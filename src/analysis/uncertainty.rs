@@ -119,7 +119,8 @@ pub struct Uncertainty {
     /// For each `[expect]` entry on an output.
     pub exceed: Vec<Exceed>,
     /// Principal moments equal within tolerance: their derivatives are
-    /// not defined, and their σ is that of their mean.
+    /// not defined, and their σ is first order in a direction the
+    /// tolerances choose (the axis the nominal solution picked).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub equal_moments: Vec<usize>,
 }
@@ -165,7 +166,7 @@ impl Sums {
 }
 
 /// The conversions from the file's units and frame to what is reported.
-struct Frame {
+struct Reported {
     mass: f64,
     length: f64,
     inertia: f64,
@@ -176,10 +177,10 @@ struct Frame {
     principal: M3<f64>,
 }
 
-impl Frame {
-    fn new(model: &Model, summary: &Summary) -> Frame {
+impl Reported {
+    fn new(model: &Model, summary: &Summary) -> Reported {
         let f = crate::part::SiFactors::of(model.units);
-        Frame {
+        Reported {
             mass: f.mass.f64(),
             length: f.length.f64(),
             inertia: f.inertia,
@@ -227,7 +228,7 @@ impl Frame {
         // the same map of dC, less the sign of a product under `positive`
         // (which `inertia` applies to the entries alike).
         let di = self.inertia(&d.p);
-        Frame::entries(&di, &mut out);
+        Reported::entries(&di, &mut out);
         // First-order perturbation of a simple eigenvalue: dλ = pᵀ dI p
         // (in the tensor convention, whatever is shown).
         let t = self.tensor(&di);
@@ -268,7 +269,7 @@ impl Frame {
             std::array::from_fn(|b| sums.p[a][b] - sums.s[a] * (sums.s[b] / m))
         });
         let i = self.inertia(&c);
-        Frame::entries(&i, &mut out);
+        Reported::entries(&i, &mut out);
         let t = self.tensor(&i);
         let (mut moments, _) = crate::eigen::jacobi::<f64>(t)?;
         moments.sort_by(f64::total_cmp);
@@ -299,8 +300,8 @@ pub fn propagate(
     summary: &Summary,
     method: Method,
     source: &crate::diag::Source,
-) -> Uncertainty {
-    let frame = Frame::new(model, summary);
+) -> Result<Uncertainty, crate::diag::Diagnostic> {
+    let frame = Reported::new(model, summary);
     let c0: [f64; 3] = std::array::from_fn(|i| summary.center_of_mass[i] / frame.length);
     let m_nominal = summary.mass / frame.mass;
     let mut sources: Vec<Source> = Vec::new();
@@ -442,6 +443,13 @@ pub fn propagate(
                 fixed: &fixed,
             };
             let (u, all) = monte_carlo_run(&frame, &sampled, summary, nominal, (samples, seed));
+            if all.is_empty() {
+                return Err(crate::diag::Diagnostic::plain(format!(
+                    "{}: every one of the {samples} Monte Carlo samples was left out: in each, a part's size, radius, density or mass was drawn to zero or below (or an inner radius past its outer)",
+                    source.name
+                ))
+                .help("are the tolerances as large as the values they are on? `--uncertainty linear` gives the first-order σ"));
+            }
             let p = checks
                 .iter()
                 .map(|(c, o)| {
@@ -467,7 +475,20 @@ pub fn propagate(
         })
         .collect();
     out.equal_moments = summary.equal_moments.clone();
-    out
+    // Never an `inf` or a NaN printed as a result.
+    let finite = out.covariance.iter().flatten().all(|x| x.is_finite())
+        && out
+            .outputs
+            .iter()
+            .all(|o| o.sigma.is_finite() && o.mean.is_none_or(f64::is_finite));
+    if !finite {
+        return Err(crate::diag::Diagnostic::plain(format!(
+            "{}: the propagated uncertainty overflows the range of f64",
+            source.name
+        ))
+        .help("are the tolerances as large as meant? (a percentage's `%` is of the value)"));
+    }
+    Ok(out)
 }
 
 /// P(X ∉ [lo, hi]) for X normal with mean `mu` and deviation `sigma`.
@@ -511,7 +532,7 @@ fn nominal_outputs(s: &Summary) -> [f64; N] {
     let mut out = [0.0; N];
     out[0] = s.mass;
     out[1..4].copy_from_slice(&s.center_of_mass);
-    Frame::entries(&s.inertia_com, &mut out);
+    Reported::entries(&s.inertia_com, &mut out);
     out[10..13].copy_from_slice(&s.principal_moments);
     out
 }
@@ -531,7 +552,7 @@ fn top(
         .collect()
 }
 
-fn linear(frame: &Frame, sources: &[Source], m: f64, nominal: [f64; N]) -> Uncertainty {
+fn linear(frame: &Reported, sources: &[Source], m: f64, nominal: [f64; N]) -> Uncertainty {
     let rows: Vec<[f64; N]> = sources.iter().map(|s| frame.linear(&s.d, m)).collect();
     let covariance: Vec<Vec<f64>> = (0..N)
         .map(|a| {

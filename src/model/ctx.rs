@@ -192,7 +192,7 @@ impl Ctx<'_> {
                     },
                 };
                 if let Some(tol) = tol {
-                    self.record(q, key, dim, v, tol);
+                    self.record(q, key, dim, v, tol)?;
                 }
                 if checked {
                     return Ok(v);

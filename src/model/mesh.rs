@@ -71,7 +71,7 @@ impl Ctx<'_> {
                 }
             },
         };
-        self.enter_part();
+        self.enter_part(Shape::Mesh);
         self.tol_needs_mass(p)?;
         let density = self.mesh_density(p, mode, raw.span())?;
         let origin = match &p.origin {
@@ -136,7 +136,7 @@ impl Ctx<'_> {
         };
         self.in_file_range(Shape::Mesh, &spec, &name, raw.span())?;
         self.record_material(p, &spec);
-        let tol = self.leave_part(Shape::Mesh, &spec.place);
+        let tol = self.leave_part();
         Ok(Part {
             tol,
             name: if p.name.is_some() {
@@ -275,6 +275,9 @@ impl Ctx<'_> {
             return Ok(Density::Per(d, span));
         };
         let t = self.positive_file(t, "thickness", Dim::LENGTH)?;
+        // The number kept is the areal density: a density's tolerance
+        // moves it t times as fast.
+        self.scale_readings("density", t);
         let a = d * t;
         if !(a.is_finite() && a >= f64::MIN_POSITIVE) {
             return Err(self.err(

@@ -182,8 +182,6 @@ impl Ctx<'_> {
         raw: &Spanned<RawPart>,
     ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
         let p = raw.get_ref();
-        self.enter_part();
-        self.tol_needs_mass(p)?;
         let Some(shape_raw) = &p.shape else {
             return Err(self.err(raw.span(), "missing key `shape`").help(format!(
                 "every part needs `shape`, one of {} (or `include` of another part file)",
@@ -204,6 +202,8 @@ impl Ctx<'_> {
             )
         })?;
         let s = shape.name();
+        self.enter_part(shape);
+        self.tol_needs_mass(p)?;
 
         // Keys that exist in part files but do not apply to this shape.
         let keys = key_spans(p);
@@ -377,7 +377,7 @@ impl Ctx<'_> {
         )?;
         self.in_file_range(shape, &spec, &name, raw.span())?;
         self.record_material(p, &spec);
-        let tol = self.leave_part(shape, &spec.place);
+        let tol = self.leave_part();
         let part = Part {
             tol,
             // NOTE: a part the file does not name keeps no name: the walk

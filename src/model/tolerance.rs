@@ -13,7 +13,8 @@
 use super::Ctx;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
-use crate::part::{Dep, Place, Slot};
+use crate::part::{Dep, Slot};
+use crate::shapes::Dims;
 use crate::shapes::Shape;
 use crate::units::{self, Dim};
 use std::ops::Range;
@@ -59,17 +60,18 @@ pub struct Source {
 /// The tolerances read while a part's numbers are read (`Ctx::spec`).
 #[derive(Debug, Default)]
 pub(super) struct Recorder {
-    /// Whether the reader is inside a part's keys (else a tolerance is
-    /// refused whatever the key).
-    pub(super) in_part: bool,
+    /// The shape of the part whose keys are being read, if any (else a
+    /// tolerance is refused on a part key).
+    part: Option<Shape>,
     /// Whether an include's `origin` is being read: its tolerances move
     /// the sub-assembly.
     in_origin: bool,
     /// Whether `[materials]` is being read: a density's tolerance is the
     /// material's, shared by every part made of it.
     pub(super) in_materials: bool,
-    /// The materials with a tolerance: name → (source, σ relative).
-    materials: std::collections::BTreeMap<String, (u32, f64)>,
+    /// The materials with a tolerance: name → (source, rate relative to
+    /// the density) for each source it moves with.
+    materials: std::collections::BTreeMap<String, Vec<(u32, f64)>>,
     /// The row (`edges`, `vertices`) and component being read.
     pub(super) row: usize,
     pub(super) component: usize,
@@ -96,32 +98,6 @@ enum Origin {
     Shared(u32),
 }
 
-/// The keys of a part that fill a number of its `Spec` (a tolerance
-/// anywhere else is refused).
-const TOLERABLE: &[&str] = &[
-    "mass",
-    "density",
-    "areal_density",
-    "linear_density",
-    "size",
-    "length",
-    "radius",
-    "diameter",
-    "inner_radius",
-    "inner_diameter",
-    "top_radius",
-    "top_inner_radius",
-    "tube_radius",
-    "inner_tube_radius",
-    "center",
-    "corner",
-    "edges",
-    "from",
-    "to",
-    "vertices",
-    "origin",
-];
-
 /// The key of a given mass's tolerance, beside `mass`.
 pub const TOL_KEY: &str = "tol";
 
@@ -131,6 +107,9 @@ pub const TOL_KEY: &str = "tol";
 pub fn accepts(keys: &[&str], key: &str) -> bool {
     keys.contains(&key) || (key == TOL_KEY && keys.contains(&"mass"))
 }
+
+/// Where a tolerance may stand, for the help of an error.
+const TOLERANCES_GO: &str = "tolerances go on a part's mass, density, sizes, radii and position, a sub-assembly's `origin`, `[params]` and `[materials]` densities (docs/uncertainty.md)";
 
 /// Whether a file's text may hold a tolerance.
 pub fn may_have(text: &str) -> bool {
@@ -149,10 +128,27 @@ pub fn split(text: &str) -> Option<(&str, &str, usize)> {
     Some((text[..at].trim_end(), &text[at + sign..], at))
 }
 
+impl Recorder {
+    /// The slot `key` fills where a tolerance may stand on it: a part's
+    /// key that fills a number of its `Spec`, an include's `origin`, a
+    /// material's density (no slot of a part: `Slot::Mass` stands for it).
+    fn allows(&self, key: &str) -> Option<Slot> {
+        let (row, component) = (self.row, self.component);
+        if let Some(shape) = self.part {
+            return slot(Some(shape), key, row, component).map(|s| s.0);
+        }
+        if self.in_origin {
+            return slot(None, key, row, component).map(|s| s.0);
+        }
+        self.in_materials.then_some(Slot::Mass)
+    }
+}
+
 impl Ctx<'_> {
     /// The value's text of a quantity string, and its tolerance if it has
-    /// one (refused where no tolerance may stand: outside a part's keys
-    /// that fill its numbers, `TOLERABLE`).
+    /// one (refused where no tolerance may stand: `Recorder::allows`; a
+    /// percentage of a point's coordinate, which depends on where the
+    /// origin is).
     pub(super) fn tolerance_of<'t>(
         &self,
         q: &Spanned<Quantity>,
@@ -163,16 +159,18 @@ impl Ctx<'_> {
         let Some((value, _, at)) = split(text) else {
             return Ok((text, None));
         };
-        let allowed = {
-            let r = self.tol.borrow();
-            (r.in_part && TOLERABLE.contains(&key))
-                || r.in_materials
-                || (r.in_origin && key == "origin")
-        };
-        if !allowed {
+        let Some(slot) = self.tol.borrow().allows(key) else {
             return Err(self.not_allowed(self.source, q.span(), text, at, key));
-        }
+        };
         let tol = self.amount(self.source, q.span(), text, dim, key)?;
+        if tol.relative && slot.is_point() {
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`{key}`: a percentage of a coordinate depends on where the origin is"),
+                )
+                .help("give the tolerance of a position as a length: `± 0.5 mm`"));
+        }
         Ok((value, Some(tol)))
     }
 
@@ -190,7 +188,7 @@ impl Ctx<'_> {
             super::params::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
         source
             .error(here, format!("a tolerance is not allowed on `{key}`"))
-            .help("tolerances go on a part's mass, density, sizes, radii and position, and on `[params]` (docs/uncertainty.md)")
+            .help(TOLERANCES_GO)
     }
 
     /// The tolerance just read for material `name`'s density (`file`, in
@@ -199,18 +197,22 @@ impl Ctx<'_> {
     pub(super) fn material_tolerance(&self, name: &str, file: f64) {
         let mut guard = self.tol.borrow_mut();
         let r = &mut *guard;
-        let Some(reading) = r.readings.pop() else {
-            return;
-        };
-        let Origin::New(mut source) = reading.origin else {
-            return;
-        };
-        source.key = format!("material `{name}`");
-        source.shared = true;
-        r.sources.push(source);
-        let k = (r.sources.len() - 1) as u32;
-        r.materials
-            .insert(name.to_string(), (k, reading.rate / file));
+        let mut moves = Vec::new();
+        for reading in r.readings.drain(..) {
+            let k = match reading.origin {
+                Origin::New(mut source) => {
+                    source.key = format!("material `{name}`");
+                    source.shared = true;
+                    r.sources.push(source);
+                    (r.sources.len() - 1) as u32
+                }
+                Origin::Shared(k) => k,
+            };
+            moves.push((k, reading.rate / file));
+        }
+        if !moves.is_empty() {
+            r.materials.insert(name.to_string(), moves);
+        }
     }
 
     /// Record how a part made of a material with a tolerance moves with
@@ -220,17 +222,20 @@ impl Ctx<'_> {
         let (Some(name), crate::part::MassSpec::Density(d)) = (&p.material, spec.mass) else {
             return;
         };
-        let mut r = self.tol.borrow_mut();
-        let Some(&(k, rel)) = r.materials.get(name.get_ref()) else {
+        let mut guard = self.tol.borrow_mut();
+        let r = &mut *guard;
+        let Some(moves) = r.materials.get(name.get_ref()) else {
             return;
         };
-        r.readings.push(Reading {
-            key: "material".to_string(),
-            row: 0,
-            component: 0,
-            rate: d * rel,
-            origin: Origin::Shared(k),
-        });
+        for &(k, rel) in moves {
+            r.readings.push(Reading {
+                key: "material".to_string(),
+                row: 0,
+                component: 0,
+                rate: d * rel,
+                origin: Origin::Shared(k),
+            });
+        }
     }
 
     /// Start reading an include's `origin`: its tolerances are recorded.
@@ -243,25 +248,18 @@ impl Ctx<'_> {
     /// Stop reading an include's `origin`, and turn its tolerances into
     /// `Dep`s on the point (`Slot::At`), its sources appended.
     pub(super) fn leave_origin(&self) -> Option<std::sync::Arc<[Dep]>> {
-        let mut guard = self.tol.borrow_mut();
-        let r = &mut *guard;
+        let mut r = self.tol.borrow_mut();
         r.in_origin = false;
-        let deps = r.readings.drain(..).map(|reading| {
-            let source = match reading.origin {
-                Origin::New(s) => {
-                    r.sources.push(s);
-                    (r.sources.len() - 1) as u32
-                }
-                Origin::Shared(k) => k,
-            };
-            Dep {
-                slot: Slot::At(reading.component.min(2) as u8),
-                source,
-                rate: reading.rate,
-            }
-        });
-        let deps: Vec<Dep> = deps.collect();
-        (!deps.is_empty()).then(|| deps.into())
+        r.deps(None)
+    }
+
+    /// Scale the rates recorded so far for `key` by `factor`: the key's
+    /// value enters the part's number multiplied by it.
+    pub(super) fn scale_readings(&self, key: &str, factor: f64) {
+        let mut r = self.tol.borrow_mut();
+        for reading in r.readings.iter_mut().filter(|x| x.key == key) {
+            reading.rate *= factor;
+        }
     }
 
     /// Refuse `tol` on a part without `mass` (a density's tolerance goes
@@ -322,7 +320,7 @@ impl Ctx<'_> {
                 self.amount_at(&at, start, None, Dim::MASS, "tol")?
             }
         };
-        self.record(m, "mass", Dim::MASS, value, t);
+        self.record(m, "mass", Dim::MASS, value, t)?;
         Ok(value)
     }
 
@@ -389,6 +387,16 @@ impl Ctx<'_> {
                 }
             }
         } else if let Ok(x) = body.parse::<f64>() {
+            // A bare number is in the file's units, as a bare value is: a
+            // value with its own unit wants its tolerance's too
+            // (`"2 g ± 0.1"` is not 0.1 kg).
+            if let Some((value, _)) = before
+                && value.trim().parse::<f64>().is_err()
+            {
+                return Err(bad(format!(
+                    "`{key}`: the tolerance {body:?} has no unit, and its value has one"
+                )));
+            }
             (false, self.units.factor(dim).apply(x))
         } else {
             match units::parse_quantity(body, dim) {
@@ -411,7 +419,14 @@ impl Ctx<'_> {
 
     /// Record the tolerance `tol` of the value `value` (file units) read
     /// for `key`, if a part's numbers are being recorded.
-    pub(super) fn record(&self, q: &Spanned<Quantity>, key: &str, dim: Dim, value: f64, tol: Tol) {
+    pub(super) fn record(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+        value: f64,
+        tol: Tol,
+    ) -> Result<(), Diagnostic> {
         let mut r = self.tol.borrow_mut();
         // In the key's file units, as `value`.
         let amount = if tol.relative {
@@ -419,12 +434,18 @@ impl Ctx<'_> {
         } else {
             tol.amount / self.units.factor(dim).value()
         };
+        if !amount.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}`: the tolerance overflows the range of f64 in the file's units"),
+            ));
+        }
         let (row, component) = (r.row, r.component);
-        let key_text = match key {
-            "edges" | "vertices" => format!("{key}[{row}][{component}]"),
-            "size" | "center" | "corner" | "from" | "to" | "origin" => {
-                format!("{key}[{component}]")
-            }
+        // Named by its component as the file indexes it.
+        let key_text = match r.allows(key) {
+            Some(Slot::Edge(..) | Slot::Vertex(..)) => format!("{key}[{row}][{component}]"),
+            Some(Slot::At(_) | Slot::To(_)) => format!("{key}[{component}]"),
+            Some(Slot::Dim(_)) if key == "size" => format!("{key}[{component}]"),
             _ => key.to_string(),
         };
         r.readings.push(Reading {
@@ -440,11 +461,9 @@ impl Ctx<'_> {
                 shared: false,
             }),
         });
+        Ok(())
     }
 
-    /// Record how the value read for `key` moves with the sources of the
-    /// parameters its expression uses: `grad` in SI, `factor` the key's
-    /// unit (refused where no tolerance may stand).
     /// Refuse a value that moves with a parameter's tolerance (`grad`,
     /// not empty) where no tolerance may stand, or where it has no
     /// derivative.
@@ -455,20 +474,20 @@ impl Ctx<'_> {
         grad: &crate::expr::tangent::Grad,
     ) -> Result<(), Diagnostic> {
         let r = self.tol.borrow();
-        if !((r.in_part && TOLERABLE.contains(&key)) || (r.in_origin && key == "origin")) {
+        if r.allows(key).is_none() {
             let names = r.sources[grad[0].0 as usize].key.clone();
             return Err(self
                 .err(
                     q.span(),
                     format!("`{key}` uses a parameter with a tolerance ({names}), and a tolerance is not allowed on `{key}`"),
                 )
-                .help("tolerances go on a part's mass, density, sizes, radii and position (docs/uncertainty.md)"));
+                .help(TOLERANCES_GO));
         }
         if grad.iter().any(|(_, d)| !d.is_finite()) {
             return Err(self.err(
                 q.span(),
-                format!("`{key}` has no derivative by its parameters' tolerances here (a square root of 0?)"),
-            ));
+                format!("`{key}`: its expression has no finite derivative by its parameters' tolerances at their values"),
+            ).help("a square root of 0, or a power of 0, changes infinitely fast there"));
         }
         Ok(())
     }
@@ -503,27 +522,36 @@ impl Ctx<'_> {
         (r.sources.len() - 1) as u32
     }
 
-    /// Start reading a part's keys: tolerances are allowed and recorded.
-    pub(super) fn enter_part(&self) {
+    /// Start reading a part's keys, of a `shape`: tolerances are allowed
+    /// on those that fill its numbers, and recorded.
+    pub(super) fn enter_part(&self, shape: Shape) {
         let mut r = self.tol.borrow_mut();
-        r.in_part = true;
+        r.part = Some(shape);
         r.readings.clear();
     }
 
     /// Stop reading a part's keys, and turn what was recorded into the
     /// part's `Dep`s, its sources appended to `sources`.
-    pub(super) fn leave_part(&self, shape: Shape, place: &Place) -> Option<std::sync::Arc<[Dep]>> {
+    pub(super) fn leave_part(&self) -> Option<std::sync::Arc<[Dep]>> {
         let mut guard = self.tol.borrow_mut();
         let r = &mut *guard;
-        r.in_part = false;
-        if r.readings.is_empty() {
+        let shape = r.part.take();
+        r.deps(shape)
+    }
+}
+
+impl Recorder {
+    /// The readings recorded, as `Dep`s of a part of `shape` (`None`: an
+    /// include's origin), their new sources appended.
+    fn deps(&mut self, shape: Option<Shape>) -> Option<std::sync::Arc<[Dep]>> {
+        if self.readings.is_empty() {
             return None;
         }
         let mut deps = Vec::new();
-        let sources = &mut r.sources;
-        for reading in r.readings.drain(..) {
-            let (slot, factor) = slot(shape, place, &reading.key, reading.row, reading.component)
-                .expect("invariant: every key a tolerance is allowed on fills a slot");
+        let sources = &mut self.sources;
+        for reading in self.readings.drain(..) {
+            let (slot, factor) = slot(shape, &reading.key, reading.row, reading.component)
+                .expect("invariant: a key a tolerance was allowed on fills a slot");
             let source = match reading.origin {
                 Origin::New(s) => {
                     sources.push(s);
@@ -571,35 +599,38 @@ impl Tol {
 }
 
 /// The number of a part's `Spec` that `key` (its `row` and `component`)
-/// fills, and its factor (a diameter fills a radius, halved). The one
-/// map from a key to a slot.
-fn slot(
-    shape: Shape,
-    place: &Place,
-    key: &str,
-    row: usize,
-    component: usize,
-) -> Option<(Slot, f64)> {
+/// fills, of a part of `shape` (`None`: an include, whose `origin` is its
+/// point), and its factor (a diameter fills a radius, halved). The one
+/// map from a key to a slot: a key without one takes no tolerance.
+fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
     let c = component.min(2) as u8;
     let r = row.min(2) as u8;
+    let Some(shape) = shape else {
+        return (key == "origin").then_some((Slot::At(c), 1.0));
+    };
+    // The dimensions kept as numbers of the spec, in `Dims::keys` order
+    // (not a given tensor's, a polygon's or a mesh's).
+    let info = shape.info();
+    let dims: &[&str] = match info.dims {
+        Dims::Length | Dims::Radii { .. } | Dims::Cone | Dims::Torus => info.dims.keys(),
+        _ => &[],
+    };
     let dim = |k: &str| {
-        let keys = shape.info().dims.keys();
-        keys.iter()
+        dims.iter()
             .position(|x| *x == k)
             .map(|i| Slot::Dim(i as u8))
     };
-    Some(match (key, place) {
-        ("mass" | "density" | "areal_density" | "linear_density" | "material", _) => {
-            (Slot::Mass, 1.0)
-        }
-        ("center" | "corner" | "from" | "origin", _) => (Slot::At(c), 1.0),
-        ("to", _) => (Slot::To(c), 1.0),
-        ("edges", _) => (Slot::Edge(r, c), 1.0),
-        ("vertices", _) => (Slot::Vertex(r, c), 1.0),
-        ("size", _) => (Slot::Dim(c), 1.0),
-        ("length", Place::Prism { .. }) => (Slot::Dim(0), 1.0),
-        ("diameter", _) => (dim("radius")?, 0.5),
-        ("inner_diameter", _) => (dim("inner_radius")?, 0.5),
-        (k, _) => (dim(k)?, 1.0),
+    Some(match key {
+        "mass" | "material" => (Slot::Mass, 1.0),
+        k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
+        "center" | "corner" | "from" | "origin" => (Slot::At(c), 1.0),
+        "to" => (Slot::To(c), 1.0),
+        "edges" => (Slot::Edge(r, c), 1.0),
+        "vertices" => (Slot::Vertex(r, c), 1.0),
+        "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Dim(c), 1.0),
+        "length" if info.dims == Dims::Polygon => (Slot::Dim(0), 1.0),
+        "diameter" => (dim("radius")?, 0.5),
+        "inner_diameter" => (dim("inner_radius")?, 0.5),
+        k => (dim(k)?, 1.0),
     })
 }

@@ -86,9 +86,17 @@ impl Placing<'_> {
                 // In the including file's units; `outer` takes them on.
                 let mut d = [0.0; 3];
                 d[usize::from(c)] = dep.rate;
+                let source = &m.model.sources[dep.source as usize];
+                // A parameter's source is the including file's instance's,
+                // the origin's own this include's.
+                let key = if source.shared {
+                    mix(m.file, u64::from(dep.source), 0)
+                } else {
+                    mix(m.key, u64::from(dep.source), 2)
+                };
                 f(Shift {
-                    key: mix(m.key, u64::from(dep.source), 2),
-                    source: &m.model.sources[dep.source as usize],
+                    key,
+                    source,
                     include: &m.include.name,
                     dir: outer.dir(d),
                 });
@@ -230,8 +238,10 @@ struct Moved<'m> {
     deps: &'m [crate::part::Dep],
     /// The including file's model (its `sources`).
     model: &'m Model,
-    /// This instance of the include (its copy too).
+    /// This instance of the include (its copy too), and of the file that
+    /// includes it (whose parameters' sources are one per instance).
     key: u64,
+    file: u64,
     include: &'m Include,
 }
 
@@ -326,11 +336,8 @@ impl<'m> Walk<'m> {
         f: &mut dyn FnMut(Event<'_>),
     ) {
         f(Event::Enter(inc));
-        let key = mix(
-            *self.keys.last().expect("the root's key"),
-            k as u64,
-            copy.map_or(u64::MAX, |i| i as u64),
-        );
+        let file = *self.keys.last().expect("the root's key");
+        let key = mix(file, k as u64, copy.map_or(u64::MAX, |i| i as u64));
         self.keys.push(key);
         self.frames.push(Layer {
             frame: Cow::Borrowed(&inc.frame),
@@ -339,6 +346,7 @@ impl<'m> Walk<'m> {
                 deps,
                 model,
                 key,
+                file,
                 include: inc,
             }),
         });

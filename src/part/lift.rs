@@ -27,6 +27,21 @@ pub enum Slot {
     Vertex(u8, u8),
 }
 
+impl Slot {
+    /// A coordinate of a point (a centre, a corner, an end, a vertex, an
+    /// origin): where the origin is decides its value, so a percentage of
+    /// it means nothing.
+    pub fn is_point(self) -> bool {
+        matches!(self, Slot::At(_) | Slot::To(_) | Slot::Vertex(..))
+    }
+
+    /// A coordinate of a point or a vector's component: any sign is a
+    /// body (a size, a radius, a mass or a density below zero is none).
+    pub fn is_signed(self) -> bool {
+        self.is_point() || matches!(self, Slot::Edge(..))
+    }
+}
+
 /// How one number of a part moves with a source of uncertainty (a
 /// toleranced quantity, `model::tolerance`): ∂(number)/∂z in the file's
 /// units, z the source's standardised variable (mean 0, standard

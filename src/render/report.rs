@@ -459,8 +459,9 @@ fn uncertainty(
     };
     let _ = writeln!(
         out,
-        "\nuncertainty ({how}; {} independent sources)",
-        x.sources
+        "\nuncertainty ({how}; {} independent source{})",
+        x.sources,
+        if x.sources == 1 { "" } else { "s" }
     );
     let mc = x.samples.is_some();
     let mut header = vec!["quantity", "unit", "nominal", "σ"];

@@ -609,3 +609,193 @@ fn a_sub_assemblys_origin_tolerance_moves_it_whole_through_the_frames_outside() 
         );
     }
 }
+
+#[test]
+fn tolerances_the_model_cannot_place_are_refused_not_crashed_on() {
+    // A rod's `diameter` is its real size, no number of the composed rod.
+    refused(
+        "rod-diameter",
+        "[[part]]\nshape = \"rod\"\nlinear_density = 1\nlength = 1\ndiameter = \"10 mm ± 1 mm\"\ncenter = [0, 0, 0]\n",
+        &["f.toml:5:19", "a tolerance is not allowed on `diameter`"],
+    );
+    // A percentage of a coordinate depends on where the origin is.
+    refused(
+        "percent-of-a-point",
+        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [\"5 m ± 1 %\", 0, 0]\n",
+        &["f.toml:4:11", "a percentage of a coordinate"],
+    );
+    // A bare amount after a value with its own unit would be read in the
+    // file's (here 0.1 kg against 2 g).
+    refused(
+        "bare-amount",
+        "[[part]]\nshape = \"point\"\nmass = \"2 g ± 0.1\"\ncenter = [0, 0, 0]\n",
+        &["f.toml:3:15", "has no unit, and its value has one"],
+    );
+    // A σ beyond f64 is said, never printed as inf.
+    let dir = scratch("uncertainty", "overflow");
+    let path = dir.join("f.toml");
+    std::fs::write(&path, "[[part]]\nshape = \"point\"\nmass = \"1 kg ± 1e300 kg\"\ncenter = [0, 0, 0]\n[[part]]\nshape = \"point\"\nmass = \"1 kg ± 1e300 kg\"\ncenter = [1, 0, 0]\n").unwrap();
+    let out = massprop(&["report", path.to_str().unwrap(), "--uncertainty", "linear"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("overflows the range of f64"));
+}
+
+#[test]
+fn a_parameter_in_an_include_origin_stays_one_variable() {
+    // A 1 kg point at x = off and an included 1 kg point at x = −off, off =
+    // 100 ± 1 mm: the centre stays at 0 (σ 0), and I_zz = Σ m x² about it
+    // = 2 off², σ = 4 off σ_off = 4 · 0.1 m · 0.001 m = 4e-4 kg·m².
+    let dir = scratch("uncertainty", "origin-param");
+    std::fs::write(
+        dir.join("p.toml"),
+        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    let path = dir.join("top.toml");
+    std::fs::write(
+        &path,
+        "units = { length = \"mm\", mass = \"kg\" }\n[params]\noff = \"100 mm ± 1 mm\"\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [\"off\", 0, 0]\n[[part]]\ninclude = \"p.toml\"\norigin = [\"-off\", 0, 0]\n",
+    )
+    .unwrap();
+    let v = run(&path, &["--uncertainty", "linear"]);
+    assert_eq!(v["uncertainty"]["sources"], 1);
+    assert!(sigma(&v, "center_of_mass.x") < 1e-15);
+    assert!(close(sigma(&v, "inertia_com.zz"), 4e-4, 1e-12));
+}
+
+#[test]
+fn a_shells_density_tolerance_moves_its_areal_density_by_the_thickness() {
+    // mass = ρ t A: a density ± 10 % is a mass ± 10 %, whatever t is.
+    let dir = scratch("uncertainty", "shell");
+    std::fs::copy("shapes/meshes/bracket.stl", dir.join("b.stl")).unwrap();
+    let path = dir.join("f.toml");
+    std::fs::write(
+        &path,
+        "[[part]]\nshape = \"mesh\"\nfile = \"b.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nthickness = \"2 mm\"\ndensity = \"1000 kg/m^3 ± 10 %\"\n",
+    )
+    .unwrap();
+    let v = run(&path, &["--uncertainty", "linear"]);
+    let m = v["mass"].as_f64().unwrap();
+    assert!(
+        close(sigma(&v, "mass"), 0.1 * m, 1e-14),
+        "{} {m}",
+        sigma(&v, "mass")
+    );
+}
+
+#[test]
+fn monte_carlo_keeps_the_draws_of_a_zero_size_that_make_a_body() {
+    // A full cone's top radius 0 ± 1 mm: half the draws are below 0 (no
+    // body, left out), half above (a frustum, heavier): every kept sample
+    // weighs at least the cone.
+    let text = r#"
+units = { length = "mm", mass = "kg" }
+[[part]]
+shape = "cone"
+density = 7.85e-6
+radius = 20
+top_radius = "0 mm ± 1 mm"
+length = 100
+center = [0, 0, 0]
+"#;
+    let (v, _) = report_json(text, &["--uncertainty", "montecarlo", "--samples", "4000"]);
+    let rejected = v["uncertainty"]["rejected"].as_f64().unwrap() / 4000.0;
+    assert!(
+        (rejected - 0.5).abs() < 5.0 * (0.25f64 / 4000.0).sqrt(),
+        "{rejected}"
+    );
+    let low = output(&v, "mass")["percentiles"][0].as_f64().unwrap();
+    assert!(low >= v["mass"].as_f64().unwrap());
+}
+
+#[test]
+fn monte_carlo_with_every_sample_left_out_is_an_error() {
+    // 60 masses ± 100 %: a sample is kept when all 60 draws are above −1σ,
+    // (0.841)^60 ≈ 3e-5 of them; of 100 samples (seeded: the same every
+    // run) none is.
+    let mut text = String::new();
+    for i in 0..60 {
+        text.push_str(&format!(
+            "[[part]]\nshape = \"point\"\nmass = \"1 kg ± 100 %\"\ncenter = [{i}, 0, 0]\n"
+        ));
+    }
+    let dir = scratch("uncertainty", "all-out");
+    let path = dir.join("f.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = massprop(&[
+        "report",
+        path.to_str().unwrap(),
+        "--uncertainty",
+        "montecarlo",
+        "--samples",
+        "100",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("every one of the 100 Monte Carlo samples was left out"),
+        "{err}"
+    );
+}
+
+/// The 13 outputs of a report's JSON, as `uncertainty` orders them.
+fn outputs_of(v: &Value) -> Vec<f64> {
+    let f = |x: &Value| x.as_f64().unwrap();
+    let i = &v["inertia_com"];
+    let mut out = vec![f(&v["mass"])];
+    out.extend((0..3).map(|k| f(&v["center_of_mass"][k])));
+    for (a, b) in [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)] {
+        out.push(f(&i[a][b]));
+    }
+    out.extend((0..3).map(|k| f(&v["principal_moments"][k])));
+    out
+}
+
+#[test]
+fn linear_deviations_are_the_central_differences_of_the_report() {
+    // One source, a parameter w = 3 mm ± 0.1 mm used by a mirrored plate's
+    // thickness, a tube's radius and a sub-assembly's origin (a file in g
+    // and mm included into one in kg and m), reported with positive
+    // products in turned axes: σ of each output is |∂out/∂w| · 0.1 mm, its
+    // derivative the central difference of two reports at w ± h. The
+    // difference's error is h²/6 · out‴ plus rounding u·out/h: at h = 1e-4
+    // mm (3e-5 of w) both are below 1e-7 of σ here; 1e-6 allows for it.
+    let dir = scratch("uncertainty", "central");
+    std::fs::write(
+        dir.join("sub.toml"),
+        "units = { length = \"mm\", mass = \"g\" }\n[[part]]\nshape = \"box\"\nmass = 500\nsize = [40, 30, 20]\ncenter = [10, 5, 0]\nrotation = { axis = [1, 1, 0], degrees = 30 }\n",
+    )
+    .unwrap();
+    let file = |w: &str| {
+        format!(
+            "units = {{ length = \"m\", mass = \"kg\" }}\n[params]\nw = \"{w}\"\n\
+             [[part]]\nshape = \"box\"\ndensity = 2700\nsize = [0.2, 0.1, \"w\"]\ncenter = [0.3, 0.1, 0.05]\nmirror = {{ normal = [1, 0, 0] }}\n\
+             [[part]]\nshape = \"cylinder\"\ndensity = 7850\nradius = \"10 * w\"\nlength = 0.3\ncenter = [0, -0.2, 0.1]\nrotation = {{ axis = [0, 1, 0], degrees = 20 }}\n\
+             [[part]]\ninclude = \"sub.toml\"\norigin = [\"40 * w\", 0.2, 0]\nrotation = {{ axis = [0, 0, 1], degrees = 45 }}\n"
+        )
+    };
+    let flags = ["--products", "positive", "--axes", "axis=1,2,3;degrees=25"];
+    let report = |w: &str, extra: &[&str]| {
+        let path = dir.join("top.toml");
+        std::fs::write(&path, file(w)).unwrap();
+        let mut args: Vec<&str> = flags.to_vec();
+        args.extend(extra);
+        run(&path, &args)
+    };
+    let lin = report("3 mm ± 0.1 mm", &["--uncertainty", "linear"]);
+    let h = 1e-4;
+    let up = outputs_of(&report(&format!("{} mm", 3.0 + h), &[]));
+    let down = outputs_of(&report(&format!("{} mm", 3.0 - h), &[]));
+    for (k, o) in lin["uncertainty"]["outputs"].as_array().unwrap().iter().enumerate() {
+        let derivative = (up[k] - down[k]) / (2.0 * h);
+        let want = (derivative * 0.1).abs();
+        let got = o["sigma"].as_f64().unwrap();
+        assert!(
+            (got - want).abs() <= 1e-6 * want.max(1e-12 * lin["mass"].as_f64().unwrap()),
+            "{}: linear {got}, central difference {want}",
+            o["quantity"]
+        );
+    }
+}

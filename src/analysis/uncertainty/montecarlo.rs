@@ -3,8 +3,8 @@
 //! order, and the statistics of the outputs.
 
 use super::super::summary::Summary;
-use super::{Frame, Moving, N, OUTPUTS, Output, Source, Sums, Uncertainty, top};
-use crate::part::{Fixed, Slot, physics_in};
+use super::{Moving, N, OUTPUTS, Output, Reported, Source, Sums, Uncertainty, top};
+use crate::part::{Fixed, physics_in};
 
 /// A uniform number in (0, 1) from a key: the same for the same key on
 /// every run and core (a counter-based generator: splitmix64's finaliser).
@@ -41,7 +41,7 @@ pub(super) struct Sampled<'a> {
 }
 
 pub(super) fn monte_carlo_run(
-    frame: &Frame,
+    frame: &Reported,
     sampled: &Sampled<'_>,
     summary: &Summary,
     nominal: [f64; N],
@@ -72,11 +72,9 @@ pub(super) fn monte_carlo_run(
                     let x = spec.number_mut(slot).expect("a recorded slot exists");
                     let before = *x;
                     *x += rate * z[k];
-                    if !matches!(
-                        slot,
-                        Slot::At(_) | Slot::Edge(..) | Slot::To(_) | Slot::Vertex(..)
-                    ) && (before > 0.0) != (*x > 0.0)
-                    {
+                    // A size, radius, mass or density drawn below zero
+                    // (or to zero from above) is no body.
+                    if !slot.is_signed() && (*x < 0.0 || (*x == 0.0 && before > 0.0)) {
                         ok = false;
                     }
                 }
