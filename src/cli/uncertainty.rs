@@ -13,8 +13,8 @@ pub struct UncertaintyArgs {
     #[arg(long = "uncertainty", value_enum, value_name = "METHOD")]
     pub method: Option<UncertaintyChoice>,
 
-    /// Monte Carlo: how many samples [default: 10000].
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(2..=100_000_000))]
+    /// Monte Carlo: how many samples, 2 to 10,000,000 [default: 10000].
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(2..=10_000_000))]
     pub samples: Option<u64>,
 
     /// Monte Carlo: the seed; the same seed gives the same samples on any

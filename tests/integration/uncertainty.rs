@@ -788,7 +788,12 @@ fn linear_deviations_are_the_central_differences_of_the_report() {
     let h = 1e-4;
     let up = outputs_of(&report(&format!("{} mm", 3.0 + h), &[]));
     let down = outputs_of(&report(&format!("{} mm", 3.0 - h), &[]));
-    for (k, o) in lin["uncertainty"]["outputs"].as_array().unwrap().iter().enumerate() {
+    for (k, o) in lin["uncertainty"]["outputs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .enumerate()
+    {
         let derivative = (up[k] - down[k]) / (2.0 * h);
         let want = (derivative * 0.1).abs();
         let got = o["sigma"].as_f64().unwrap();
