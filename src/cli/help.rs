@@ -12,7 +12,9 @@ pub(super) const REPORT_HELP: &str = "\
 Examples:
   massprop report arm.toml                        the table, in the file's units
   massprop report arm.toml --format json | jq .mass SI, each value with its error bound
-  massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"";
+  massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"
+  massprop report sat.toml --uncertainty linear   σ of each value from the file's tolerances
+  massprop report sat.toml --uncertainty montecarlo --samples 20000 --seed 7";
 
 pub(super) const BUDGET_HELP: &str = "\
 Examples:
