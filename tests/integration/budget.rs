@@ -344,6 +344,22 @@ fn bless_writes_the_predicted_values_the_file_expects() {
     assert!(!blessed.contains("predicted_center_of_mass"), "{blessed}");
 }
 
+/// `files` (name, text) written to the scratch directory `name`; the
+/// last one's statement (JSON) and exit status.
+fn statement_of(name: &str, files: &[(&str, &str)]) -> (Value, Option<i32>) {
+    let dir = scratch("budget", name);
+    for (file, text) in files {
+        std::fs::write(dir.join(file), text).unwrap();
+    }
+    let (last, _) = files.last().expect("a file");
+    json_of(&[
+        "budget",
+        dir.join(last).to_str().unwrap(),
+        "--format",
+        "json",
+    ])
+}
+
 fn run_text(args: &[&str]) -> (String, String, Option<i32>) {
     let out = massprop(args);
     (
@@ -645,8 +661,6 @@ fn only_says_the_limit_is_not_applied() {
 /// (masses and growths 1, 2, 4 and 0.5, 1, 2 kg: sums exact in binary).
 #[test]
 fn a_parent_group_is_its_own_parts_and_its_children() {
-    let dir = scratch("budget", "three-levels");
-    let file = dir.join("p.toml");
     let part = |mass: u32, group: &str| {
         format!(
             "[[part]]\nshape = \"point\"\nmass = {mass}\ncenter = [0, 0, {mass}]\ngroup = \"{group}\"\nmaturity = \"half\"\n\n"
@@ -659,8 +673,7 @@ fn a_parent_group_is_its_own_parts_and_its_children() {
         part(2, "a/b"),
         part(8, "d"),
     );
-    std::fs::write(&file, text).unwrap();
-    let (v, _) = json_of(&["budget", file.to_str().unwrap(), "--format", "json"]);
+    let (v, _) = statement_of("three-levels", &[("p.toml", &text)]);
     let row = |path: &[&str]| {
         let g = group(&v, path);
         (
@@ -697,24 +710,23 @@ fn a_parent_group_is_its_own_parts_and_its_children() {
 /// file's own part takes the outer include's (`outer`, 20 %, the root's).
 #[test]
 fn the_innermost_include_maturity_wins_and_a_parts_own_over_both() {
-    let dir = scratch("budget", "nested");
-    std::fs::write(
-        dir.join("leaf.toml"),
-        "[growth]\nown = \"1 %\"\n\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\ngroup = \"default\"\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\ngroup = \"own\"\nmaturity = \"own\"\n",
-    )
-    .unwrap();
-    std::fs::write(
-        dir.join("mid.toml"),
-        "[growth]\ninner = \"10 %\"\n\n[[part]]\nname = \"leaf\"\ninclude = \"leaf.toml\"\nmaturity = \"inner\"\n\n[[part]]\nshape = \"point\"\nmass = 4\ncenter = [0, 0, 0]\ngroup = \"mid\"\n",
-    )
-    .unwrap();
-    let root = dir.join("root.toml");
-    std::fs::write(
-        &root,
-        "[growth]\nouter = \"20 %\"\n\n[[part]]\nname = \"mid\"\ninclude = \"mid.toml\"\nmaturity = \"outer\"\n",
-    )
-    .unwrap();
-    let (v, status) = json_of(&["budget", root.to_str().unwrap(), "--format", "json"]);
+    let (v, status) = statement_of(
+        "nested",
+        &[
+            (
+                "leaf.toml",
+                "[growth]\nown = \"1 %\"\n\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\ngroup = \"default\"\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\ngroup = \"own\"\nmaturity = \"own\"\n",
+            ),
+            (
+                "mid.toml",
+                "[growth]\ninner = \"10 %\"\n\n[[part]]\nname = \"leaf\"\ninclude = \"leaf.toml\"\nmaturity = \"inner\"\n\n[[part]]\nshape = \"point\"\nmass = 4\ncenter = [0, 0, 0]\ngroup = \"mid\"\n",
+            ),
+            (
+                "root.toml",
+                "[growth]\nouter = \"20 %\"\n\n[[part]]\nname = \"mid\"\ninclude = \"mid.toml\"\nmaturity = \"outer\"\n",
+            ),
+        ],
+    );
     assert_eq!(status, Some(0), "{v}");
     close(
         num(&group(&v, &["default"])["growth_mass"]),
@@ -730,19 +742,19 @@ fn the_innermost_include_maturity_wins_and_a_parts_own_over_both() {
 /// include's maturity: 3 × (1 kg + 2 kg) at 20 %.
 #[test]
 fn an_array_of_includes_carries_its_group() {
-    let dir = scratch("budget", "array-include");
-    std::fs::write(
-        dir.join("unit.toml"),
-        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 1]\ngroup = \"cells\"\n",
-    )
-    .unwrap();
-    let root = dir.join("root.toml");
-    std::fs::write(
-        &root,
-        "[growth]\nestimated = \"20 %\"\n\n[[part]]\nname = \"unit\"\ninclude = \"unit.toml\"\ngroup = \"battery\"\nmaturity = \"estimated\"\narray = { count = 3, step = [1, 0, 0] }\n",
-    )
-    .unwrap();
-    let (v, status) = json_of(&["budget", root.to_str().unwrap(), "--format", "json"]);
+    let (v, status) = statement_of(
+        "array-include",
+        &[
+            (
+                "unit.toml",
+                "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 1]\ngroup = \"cells\"\n",
+            ),
+            (
+                "root.toml",
+                "[growth]\nestimated = \"20 %\"\n\n[[part]]\nname = \"unit\"\ninclude = \"unit.toml\"\ngroup = \"battery\"\nmaturity = \"estimated\"\narray = { count = 3, step = [1, 0, 0] }\n",
+            ),
+        ],
+    );
     assert_eq!(status, Some(0), "{v}");
     let b = group(&v, &["battery"]);
     assert_eq!(b["parts"], 6);
@@ -796,14 +808,13 @@ fn a_file_in_grams_shows_its_statement_in_grams() {
 /// (else `maturity` would be unknown here).
 #[test]
 fn a_growth_table_after_the_parts_is_read() {
-    let dir = scratch("budget", "growth-last");
-    let file = dir.join("p.toml");
-    std::fs::write(
-        &file,
-        "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n\n[growth]\nestimated = \"25 %\"\n\n[budget]\nlimit = 3\n",
-    )
-    .unwrap();
-    let (v, status) = json_of(&["budget", file.to_str().unwrap(), "--format", "json"]);
+    let (v, status) = statement_of(
+        "growth-last",
+        &[(
+            "p.toml",
+            "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n\n[growth]\nestimated = \"25 %\"\n\n[budget]\nlimit = 3\n",
+        )],
+    );
     assert_eq!(status, Some(0), "{v}");
     close(num(&v["total"]["predicted_mass"]), 2.5, "predicted");
 }
