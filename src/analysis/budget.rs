@@ -24,17 +24,11 @@ use serde::Serialize;
 
 /// A part's mass growth: its basic mass times its maturity's allowance
 /// (a fraction). The one place a growth is formed: the statement's rows
-/// and the predicted body's point masses both come from it.
+/// and the predicted body's point masses both come from it. A cut-out's
+/// basic mass is negative, and so is its growth: the part it is cut from
+/// grows net of the hole.
 pub fn growth(basic: f64, allowance: f64) -> f64 {
     basic * allowance
-}
-
-/// SI unit of each kind of value in the statement's JSON.
-#[derive(Debug, Clone, Serialize)]
-pub struct Units {
-    pub mass: &'static str,
-    pub length: &'static str,
-    pub inertia: &'static str,
 }
 
 /// One group of the statement (SI): a subsystem or a sub-group, the sum of
@@ -69,8 +63,8 @@ pub struct Total {
 }
 
 /// The parts with no maturity: zero growth, said so a weight engineer sees
-/// what is not yet classified. Cut-outs, which take no maturity, are not
-/// counted here.
+/// what is not yet classified. A cut-out counts as any part, by its signed
+/// (negative) basic mass.
 #[derive(Debug, Clone, Serialize)]
 pub struct Unclassified {
     pub parts: usize,
@@ -145,7 +139,7 @@ pub struct Statement {
     pub precision: crate::compose::Precision,
     pub predicted_precision: crate::compose::Precision,
     pub products_convention: Products,
-    pub units: Units,
+    pub units: summary::BodyUnits,
     /// The report axes, rows in the file's frame (`report`'s `axes`).
     pub axes: [[f64; 3]; 3],
     /// Parents before children, each group's sub-groups in the order they
@@ -157,6 +151,10 @@ pub struct Statement {
     /// whole body's).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub limit: Option<Margin>,
+    /// The file has a limit, not applied because of `--only` (for the
+    /// table's wording).
+    #[serde(skip)]
+    pub limit_with_only: bool,
     pub basic: Body,
     pub predicted: Body,
     /// Both bodies' values whose bound exceeds `rtol` (`report`'s).
@@ -250,22 +248,19 @@ fn walk(model: &Model) -> Walked {
                         .find_map(|t| t.maturity.as_ref())
                 });
             let p = leaf.part;
+            // Signed: a cut-out's is negative, and so is its growth.
             let basic = p.mass_si(&factors);
-            // A cut-out does not grow, whatever its sub-assembly's maturity.
             let grown = match maturity {
-                Some(m) if !p.spec.removed => {
+                Some(m) => {
                     let g = growth(p.mass::<f64>(), m.allowance);
                     if g != 0.0 {
                         w.points.push(point(p, g));
                     }
                     (DD::of(g) * factors.mass).f64()
                 }
-                Some(_) => 0.0,
                 None => {
-                    if !p.spec.removed {
-                        w.unclassified.0 += 1;
-                        w.unclassified.1.add(basic);
-                    }
+                    w.unclassified.0 += 1;
+                    w.unclassified.1.add(basic);
                     0.0
                 }
             };
@@ -289,7 +284,9 @@ fn walk(model: &Model) -> Walked {
     w
 }
 
-/// The point mass `g` (file units) at `p`'s centroid.
+/// The point mass `g` (file units, signed) at `p`'s centroid: a cut-out's
+/// growth is negative, a removed point (`remove = true`), so the part it
+/// is cut from grows net of the hole.
 ///
 /// NOTE: the point stands at the centroid rounded to f64; its `placed.at`
 /// bounds how far that lies from the exact centroid (the centroid's own
@@ -303,17 +300,18 @@ fn point(p: &Part, g: f64) -> Part {
         .map(|j| error[j] + (c[j] - DD::of(center[j])).f64().abs())
         .fold(0.0, f64::max);
     Part {
-        name: String::new(),
+        // Whose growth it is, for a message (`growth_error`).
+        name: p.name.clone(),
         named: false,
         shape: Shape::Point,
         spec: Spec {
-            mass: MassSpec::Given(g),
+            mass: MassSpec::Given(g.abs()),
             place: Place::Centered {
                 center,
                 extent: [0.0; 3],
                 orientation: Orientation::Identity,
             },
-            removed: false,
+            removed: g < 0.0,
             placed: Placed::new(0.0, at),
         },
         assembly: Vec::new(),
@@ -349,9 +347,45 @@ fn summarize_predicted(
     settings: &Settings,
     source: &Source,
 ) -> Result<Summary, Diagnostic> {
+    // The largest growth, for a message: whose (the point carries its
+    // part's name) and how much, in kg.
+    let factors = SiFactors::of(model.units);
+    let largest = points
+        .iter()
+        .map(|p| (&p.name, p.mass_si(&factors)))
+        .max_by(|a, b| a.1.abs().total_cmp(&b.1.abs()))
+        .map(|(name, g)| (crate::diag::shorten(name), g));
     let predicted = predicted_model(model, points);
     summary::summarize(&predicted, analysis, settings.products, &settings.accuracy)
-        .map_err(|e| e.diagnostic(&predicted, analysis, source))
+        .map_err(|e| growth_error(&e, largest, source))
+}
+
+/// Why the predicted body cannot be formed. The basic body was formed, so
+/// it is the growth that breaks it: the message names the growth and the
+/// largest one, never a part as the cause (the part is valid; its growth's
+/// point has no place in the file of its own).
+fn growth_error(
+    e: &summary::SummaryError,
+    largest: Option<(String, f64)>,
+    source: &Source,
+) -> Diagnostic {
+    let what = match e {
+        summary::SummaryError::NotFinite { what, .. } => {
+            format!("the {what} of the predicted body overflows the range of f64")
+        }
+        summary::SummaryError::NotPhysical { .. } => {
+            "the predicted body is not physical: the cut-outs' growth removes more than the body has".to_string()
+        }
+    };
+    let largest = match largest {
+        Some((name, g)) => format!("; the largest growth is `{name}`'s, {g:e} kg"),
+        None => String::new(),
+    };
+    Diagnostic::file(
+        &source.name,
+        format!("{what} once its growth is added (the basic body's does not{largest})"),
+    )
+    .help("a part's growth is its basic mass × its maturity's allowance (`[growth]`); are the allowances, and the masses' units, right?")
 }
 
 /// The predicted body's summary of a model (`load` makes it for a file
@@ -365,9 +399,33 @@ pub fn predicted(
     summarize_predicted(model, walk(model).points, analysis, settings, source)
 }
 
-/// Whether `model` expects something of its predicted body.
-pub fn expects_predicted(model: &Model) -> bool {
-    model.expect.iter().any(|c| c.target.is_predicted())
+/// Whether `load` composes the predicted body: the file expects something
+/// of it (`predicted_*`), or has a `[budget] limit`, which `check` holds
+/// against it (and `budget` needs it in any case).
+///
+/// NOTE: `report` of such a file composes it too, unused: one more
+/// composition of a file that states a weight budget, for one rule of
+/// when the predicted body exists rather than one per command.
+pub fn composes_predicted(model: &Model) -> bool {
+    model.budget.is_some() || model.expect.iter().any(|c| c.target.is_predicted())
+}
+
+/// The values of `s`, and of its predicted body where it has one, whose
+/// error bound exceeds `rtol`: the predicted body's prefixed `predicted.`.
+pub fn accuracy_warnings(s: &Summary) -> Vec<summary::AccuracyWarning> {
+    let mut out = s.accuracy_warnings.clone();
+    if let Some(p) = &s.predicted {
+        out.extend(
+            p.accuracy_warnings
+                .iter()
+                .map(|w| summary::AccuracyWarning {
+                    quantity: format!("predicted.{}", w.quantity),
+                    message: format!("the predicted body's {}", w.message),
+                    ..w.clone()
+                }),
+        );
+    }
+    out
 }
 
 /// The not-to-exceed limit: `[budget] limit`, else `[expect] mass`'s `max`.
@@ -421,9 +479,11 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
         todo.extend(n.children.iter().rev());
     }
     let growth_mass = w.growth.value();
+    let given = limit(&model);
+    let limit_with_only = settings.only.is_some() && given.is_some();
     let limit = match settings.only {
         Some(_) => None,
-        None => limit(&model),
+        None => given,
     }
     .map(|(source, limit)| {
         let margin = limit - total_predicted;
@@ -435,14 +495,12 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
             met: margin >= 0.0,
         }
     });
-    let mut accuracy_warnings = summary.accuracy_warnings.clone();
-    accuracy_warnings.extend(predicted.accuracy_warnings.iter().map(|w| {
-        summary::AccuracyWarning {
-            quantity: format!("predicted.{}", w.quantity),
-            message: format!("the predicted body's {}", w.message),
-            ..w.clone()
-        }
-    }));
+    summary.predicted = Some(Box::new(predicted));
+    let accuracy_warnings = accuracy_warnings(&summary);
+    let predicted = summary
+        .predicted
+        .as_deref()
+        .expect("invariant: the predicted body was just put in place");
     Ok(Statement {
         format_version: FORMAT_VERSION,
         massprop_version: MASSPROP_VERSION,
@@ -452,11 +510,7 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
         precision: summary.precision,
         predicted_precision: predicted.precision,
         products_convention: summary.products_convention,
-        units: Units {
-            mass: "kg",
-            length: "m",
-            inertia: "kg*m^2",
-        },
+        units: summary::BODY_UNITS,
         axes: summary.axes,
         groups,
         total: Total {
@@ -471,8 +525,9 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
             basic_mass: w.unclassified.1.value(),
         },
         limit,
+        limit_with_only,
         basic: Body::of(&summary),
-        predicted: Body::of(&predicted),
+        predicted: Body::of(predicted),
         accuracy_warnings,
         file_units: model.units,
         requested: summary.requested,

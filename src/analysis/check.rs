@@ -5,6 +5,7 @@
 use super::Loaded;
 use super::summary::Summary;
 use crate::diag::{Diagnostic, Source, Span};
+use crate::model::budget::Limit;
 use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
@@ -77,6 +78,20 @@ pub struct CheckResult {
     /// The file's units, in which the message shows the values.
     #[serde(skip)]
     pub file_units: FileUnits,
+    /// What the value is held against: an `[expect]` entry, or `[budget]
+    /// limit` (`quantity` `budget.limit`).
+    #[serde(skip)]
+    pub against: Against,
+}
+
+/// What a check holds a value against.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Against {
+    /// An `[expect]` entry.
+    Expect,
+    /// `[budget] limit`: the not-to-exceed limit of the predicted mass
+    /// (docs/budget.md), held by `check` as `budget` holds it.
+    BudgetLimit,
 }
 
 impl CheckResult {
@@ -178,6 +193,27 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
         bound: c.bound,
         dim: c.dim,
         file_units: s.file_units,
+        against: Against::Expect,
+    }
+}
+
+/// `[budget] limit` against the predicted mass, at the `limit` entry: the
+/// check `budget`'s exit status makes. (`[expect] mass` holds the basic
+/// mass; `--bless` writes neither a limit nor anything of it.)
+pub fn budget_limit(source: &Source, s: &Summary, limit: &Limit) -> CheckResult {
+    let c = Check {
+        name: "budget.limit".to_string(),
+        target: Target::PredictedMass,
+        bound: Bound::Range {
+            min: None,
+            max: Some(limit.mass),
+        },
+        dim: Dim::MASS,
+        span: limit.span.clone(),
+    };
+    CheckResult {
+        against: Against::BudgetLimit,
+        ..evaluate(source, s, &c)
     }
 }
 
@@ -216,12 +252,15 @@ pub fn validity_failures(s: &Summary) -> Vec<String> {
 /// The expectations and validity of a file that loaded.
 pub fn check_loaded(loaded: &Loaded) -> FileResult {
     let validity = validity(&loaded.summary);
-    let checks: Vec<CheckResult> = loaded
+    let mut checks: Vec<CheckResult> = loaded
         .model
         .expect
         .iter()
         .map(|c| evaluate(&loaded.source, &loaded.summary, c))
         .collect();
+    if let Some(limit) = &loaded.model.budget {
+        checks.push(budget_limit(&loaded.source, &loaded.summary, limit));
+    }
     let ok = validity.iter().all(|v| v.failure.is_none()) && checks.iter().all(|c| c.pass);
     FileResult {
         path: loaded.source.name.clone(),
@@ -230,7 +269,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         checks,
         validity,
         precision: Some(loaded.summary.precision),
-        accuracy_warnings: loaded.summary.accuracy_warnings.clone(),
+        accuracy_warnings: super::budget::accuracy_warnings(&loaded.summary),
         robot: None,
         format: None,
     }

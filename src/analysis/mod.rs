@@ -103,7 +103,7 @@ pub fn load_source_reading(
     if let Some(method) = settings.uncertainty {
         summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source)?);
     }
-    if budget::expects_predicted(&model) {
+    if budget::composes_predicted(&model) {
         let predicted = budget::predicted(&model, &analysis, settings, &source)?;
         summary.predicted = Some(Box::new(predicted));
     }

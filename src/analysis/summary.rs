@@ -47,10 +47,26 @@ pub struct SiUnits {
     pub moment: &'static str,
 }
 
-const SI_UNITS: SiUnits = SiUnits {
+/// The SI units of a body's mass, length and inertia: the `units` object
+/// of the JSON outputs that give only those (`budget`'s, `diff`'s), and
+/// the first three of `SiUnits`. One definition of each unit's name.
+#[derive(Debug, Clone, Copy, Serialize)]
+pub struct BodyUnits {
+    pub mass: &'static str,
+    pub length: &'static str,
+    pub inertia: &'static str,
+}
+
+pub const BODY_UNITS: BodyUnits = BodyUnits {
     mass: "kg",
     length: "m",
     inertia: "kg*m^2",
+};
+
+const SI_UNITS: SiUnits = SiUnits {
+    mass: BODY_UNITS.mass,
+    length: BODY_UNITS.length,
+    inertia: BODY_UNITS.inertia,
     angular_velocity: "rad/s",
     angular_acceleration: "rad/s^2",
     angular_momentum: "N*m*s",

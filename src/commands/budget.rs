@@ -15,8 +15,13 @@ pub type Options = super::report::Options;
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
     let read = super::files_of(&loaded);
-    let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
     let statement = analysis::budget::statement(loaded, &o.settings)?;
+    // Both bodies' warnings: the statement's own.
+    let stderr = super::warning_lines(
+        &statement.source,
+        &statement.accuracy_warnings,
+        terminal.stderr.colour,
+    );
     let met = statement.limit.as_ref().is_none_or(|l| l.met);
     Ok(Outcome {
         stdout: super::Stdout::Text(render::render(

@@ -306,8 +306,14 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             .unwrap_or_else(|| crate::io::read_source_at(&path))
             .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
             .map(|l| {
-                stderr.push_str(&super::accuracy_warnings(&l, colour));
-                check_loaded(&l)
+                let r = check_loaded(&l);
+                // The predicted body's too, where the file has one.
+                stderr.push_str(&super::warning_lines(
+                    &l.source.name,
+                    &r.accuracy_warnings,
+                    colour,
+                ));
+                r
             });
         let checked = match (loaded, not_blessed) {
             (Ok(_), Some(d)) => {

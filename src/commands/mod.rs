@@ -99,11 +99,23 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
 /// each for standard error: `warning: FILE: …`, `warning` coloured when
 /// `colour`.
 pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> String {
-    let file = crate::diag::visible(&loaded.source.name);
+    warning_lines(
+        &loaded.source.name,
+        &loaded.summary.accuracy_warnings,
+        colour,
+    )
+}
+
+/// `warning: FILE: …`, one line per value of `file` not certified to
+/// `--rtol`.
+pub fn warning_lines(
+    file: &str,
+    warnings: &[crate::analysis::summary::AccuracyWarning],
+    colour: bool,
+) -> String {
+    let file = crate::diag::visible(file);
     let palette = crate::diag::Palette::of(colour);
-    loaded
-        .summary
-        .accuracy_warnings
+    warnings
         .iter()
         .map(|w| palette.warning_line(&format!("{file}: {}", w.message)))
         .collect()

@@ -31,9 +31,14 @@ pub struct Tag {
 pub struct Maturity {
     pub name: String,
     /// The mass growth allowance, a fraction of the basic mass (0.15 for
-    /// `"15 %"`), ≥ 0.
+    /// `"15 %"`), from 0 to `MAX_ALLOWANCE`.
     pub allowance: f64,
 }
+
+/// The largest allowance `[growth]` takes, 1000 % (a fraction): past it a
+/// "growth" is no allowance but a basic mass not yet known, and a body
+/// eleven times its basic mass would no longer be the design weighed.
+pub const MAX_ALLOWANCE: f64 = 10.0;
 
 /// `[budget]`, read: the not-to-exceed limit of the predicted mass.
 #[derive(Debug, Clone, PartialEq)]
@@ -73,7 +78,17 @@ impl Ctx<'_> {
                 }
             };
             let allowance = match percentage(text) {
-                Some(a) if a.is_finite() && a >= 0.0 && !a.is_sign_negative() => a,
+                // NOTE: "-0 %" is 0 %; `abs` keeps its sign from showing
+                // as a growth of "-0".
+                Some(a) if (0.0..=MAX_ALLOWANCE).contains(&a) => a.abs(),
+                Some(a) if a > MAX_ALLOWANCE && a.is_finite() => {
+                    return Err(self
+                        .err(
+                            value.span(),
+                            format!("`growth.{key}` is {text:?}, above 1000 %: a growth that large is not an allowance"),
+                        )
+                        .help("an allowance covers what a part's mass will still grow, a fraction of it; a part expected to weigh more than eleven times its basic mass needs a new basic mass"));
+                }
                 Some(_) => {
                     return Err(self
                         .err(
@@ -106,18 +121,15 @@ impl Ctx<'_> {
     }
 
     /// A part's or an include's `group` and `maturity`; `None` if it has
-    /// neither. `removed`: a cut-out, which takes no maturity.
-    pub(super) fn tag(&self, p: &RawPart, removed: bool) -> Result<Option<Box<Tag>>, Diagnostic> {
+    /// neither. A cut-out takes both like any part: it grows by its
+    /// (negative) mass, so the part it is cut from grows as a whole.
+    pub(super) fn tag(&self, p: &RawPart) -> Result<Option<Box<Tag>>, Diagnostic> {
         let group = p.group.as_deref().map(|g| self.group_path(g)).transpose()?;
-        let maturity = match p.maturity.as_deref() {
-            None => None,
-            Some(m) if removed => {
-                return Err(self
-                    .err(m.span(), "`maturity` does not apply to a cut-out: a hole does not grow")
-                    .help("a cut-out's mass counts in the basic mass, without growth; remove `maturity` here"));
-            }
-            Some(m) => Some(self.maturity(m)?),
-        };
+        let maturity = p
+            .maturity
+            .as_deref()
+            .map(|m| self.maturity(m))
+            .transpose()?;
         Ok((group.is_some() || maturity.is_some()).then(|| Box::new(Tag { group, maturity })))
     }
 

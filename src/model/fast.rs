@@ -704,6 +704,20 @@ pub(super) mod tests {
         declines("[[part]]\nshape = \"box\"\nname = true\n");
     }
 
+    /// `streamed` makes parts with an empty `[growth]` table: a file that
+    /// has one, or a `[budget]`, must never reach it.
+    #[test]
+    fn a_file_with_a_weight_statement_is_left_to_serde() {
+        let part =
+            "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n";
+        // The tag keys alone are the fast path's.
+        same(&format!("{part}group = \"a/b\"\n"));
+        for table in ["[growth]\nestimated = \"15 %\"\n", "[budget]\nlimit = 10\n"] {
+            declines(&format!("{table}{part}"));
+            declines(&format!("{part}{table}"));
+        }
+    }
+
     #[test]
     fn anything_else_is_left_to_serde() {
         // Not covered: dotted keys, inline `part`, other tables.

@@ -545,7 +545,7 @@ impl Ctx<'_> {
             model: child,
             span: raw.span(),
             copies: None,
-            tag: self.tag(p, false)?,
+            tag: self.tag(p)?,
             tol,
         };
         // Representable in this file's units too (the composer works in

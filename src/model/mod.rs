@@ -353,7 +353,7 @@ impl Model {
             };
             has_real_sizes |= real.is_some();
             count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
-            let tag = ctx.tag(p.get_ref(), part.spec.removed)?;
+            let tag = ctx.tag(p.get_ref())?;
             items.push(Item::Part {
                 part,
                 real,

@@ -102,6 +102,12 @@ pub fn table(s: &Statement, width: Option<usize>) -> String {
         );
     }
     match &s.limit {
+        None if s.limit_with_only => {
+            let _ = writeln!(
+                out,
+                "limit: not applied with --only (it is the whole body's)"
+            );
+        }
         None => {
             let _ = writeln!(out, "limit: none given ([budget] limit)");
         }

@@ -3,7 +3,7 @@
 //! The CI formats (GitHub annotations, JUnit, SARIF) are in `ci`.
 
 use super::format::{DisplayUnits, fmt_num};
-use crate::analysis::check::{CheckResult, FileResult, Status, limits};
+use crate::analysis::check::{Against, CheckResult, FileResult, Status, limits};
 use crate::analysis::summary::{AccuracyWarning, MASSPROP_VERSION};
 use crate::diag::{Diagnostic, Palette, Span, visible};
 use crate::model::expect::{Bound, Tol};
@@ -227,6 +227,14 @@ pub fn failure(c: &CheckResult) -> String {
     let show = |x: f64| units.show(x, c.dim);
     let m = c.measured;
     let (lo, hi) = limits(&c.bound);
+    if c.against == Against::BudgetLimit {
+        return format!(
+            "the predicted mass {} exceeds `[budget] limit` {} (by {})",
+            show(m),
+            show(hi),
+            show(m - hi)
+        );
+    }
     match c.bound {
         Bound::Value { value, tol } => {
             let tol_text = match tol {

@@ -8,7 +8,7 @@
 //! - `sarif`: SARIF 2.1.0, for code scanning.
 //!
 //! Each reports the same things: every failed expectation at its `[expect]`
-//! entry, every failed validity check on its file, every invalid file at its
+//! entry, a predicted mass over `[budget] limit` at the `limit` entry, every failed validity check on its file, every invalid file at its
 //! error's span, every value not certified to `--rtol` as a warning, and
 //! for a robot description each link an engine refuses, at its
 //! `<inertial>`, with the likely cause (a JUnit test case per link and
@@ -16,7 +16,7 @@
 
 use super::check::{Counts, failure, message};
 use super::robot;
-use crate::analysis::check::FileResult;
+use crate::analysis::check::{Against, CheckResult, FileResult};
 use crate::analysis::summary::MASSPROP_VERSION;
 use crate::diag::{Diagnostic, Span, visible};
 use serde_json::{Value, json};
@@ -213,7 +213,7 @@ pub fn junit(results: &[FileResult]) -> String {
             } else {
                 failed(
                     NonSuccessKind::Failure,
-                    "expectation",
+                    rule_of(c),
                     &visible(&failure(c)),
                     &visible(&message(&r.path, c)),
                 )
@@ -260,8 +260,16 @@ pub fn junit(results: &[FileResult]) -> String {
     xml
 }
 
+/// A failed check's rule (SARIF's `ruleId`, JUnit's failure `type`).
+fn rule_of(c: &CheckResult) -> &'static str {
+    match c.against {
+        Against::Expect => "expectation",
+        Against::BudgetLimit => "budget-limit",
+    }
+}
+
 /// The rules a SARIF result names (`ruleId`), in `ruleIndex` order.
-const RULES: [(&str, &str); 6] = [
+const RULES: [(&str, &str); 7] = [
     (
         "expectation",
         "A value computed from the part file is outside its [expect] entry's tolerance or bounds",
@@ -285,6 +293,10 @@ const RULES: [(&str, &str); 6] = [
     (
         "inertial-warning",
         "A robot description's inertial looks wrong (mirrored links whose products disagree, a duplicate name, no inertial)",
+    ),
+    (
+        "budget-limit",
+        "The predicted mass (basic mass and growth) exceeds the part file's [budget] limit",
     ),
 ];
 
@@ -334,7 +346,7 @@ pub fn sarif(results: &[FileResult]) -> String {
         for c in r.checks.iter().filter(|c| !c.pass) {
             let span = c.span();
             let text = visible(&failure(c));
-            out.push(result("expectation", "error", &text, &r.path, Some(span)));
+            out.push(result(rule_of(c), "error", &text, &r.path, Some(span)));
         }
         for w in &r.accuracy_warnings {
             let text = visible(&w.message);

@@ -7,16 +7,10 @@ use super::format::{
 use super::grid::{Fit, new_table, write_rows};
 use crate::analysis::Products;
 use crate::analysis::diff::{Change, Diff, FORMAT_VERSION, LinkDiff, PartView, QuantityDiff, Side};
+use crate::analysis::summary::{BODY_UNITS, BodyUnits};
 use crate::numeric::norm;
 use serde::Serialize;
 use std::fmt::Write;
-
-#[derive(Serialize)]
-struct JsonUnits {
-    mass: &'static str,
-    length: &'static str,
-    inertia: &'static str,
-}
 
 #[derive(Serialize)]
 struct JsonPartChange<'a> {
@@ -39,7 +33,7 @@ struct JsonDiff<'a> {
     old: &'a str,
     new: &'a str,
     products_convention: Products,
-    units: JsonUnits,
+    units: BodyUnits,
     tolerance: f64,
     /// The arithmetic each side was computed in (`--precision auto`
     /// chooses per file).
@@ -64,11 +58,7 @@ pub fn json(d: &Diff) -> String {
         old: &d.old.loaded.source.name,
         new: &d.new.loaded.source.name,
         products_convention: Products::Tensor,
-        units: JsonUnits {
-            mass: "kg",
-            length: "m",
-            inertia: "kg*m^2",
-        },
+        units: BODY_UNITS,
         tolerance: d.tol,
         precision: JsonPrecision {
             old: d.old.loaded.summary.precision,
@@ -114,7 +104,7 @@ pub fn link_json(d: &LinkDiff) -> String {
         new: &'a str,
         link: &'a str,
         products_convention: Products,
-        units: JsonUnits,
+        units: BodyUnits,
         tolerance: f64,
         changed: bool,
         quantities: &'a [QuantityDiff],
@@ -126,11 +116,7 @@ pub fn link_json(d: &LinkDiff) -> String {
         new: &d.new,
         link: &d.link,
         products_convention: Products::Tensor,
-        units: JsonUnits {
-            mass: "kg",
-            length: "m",
-            inertia: "kg*m^2",
-        },
+        units: BODY_UNITS,
         tolerance: d.tol,
         changed: d.changed,
         quantities: &d.quantities,

@@ -343,3 +343,478 @@ fn bless_writes_the_predicted_values_the_file_expects() {
     );
     assert!(!blessed.contains("predicted_center_of_mass"), "{blessed}");
 }
+
+/// `files` (name, text) written to the scratch directory `name`; the
+/// last one's statement (JSON) and exit status.
+fn statement_of(name: &str, files: &[(&str, &str)]) -> (Value, Option<i32>) {
+    let dir = scratch("budget", name);
+    for (file, text) in files {
+        std::fs::write(dir.join(file), text).unwrap();
+    }
+    let (last, _) = files.last().expect("a file");
+    json_of(&[
+        "budget",
+        dir.join(last).to_str().unwrap(),
+        "--format",
+        "json",
+    ])
+}
+
+fn run_text(args: &[&str]) -> (String, String, Option<i32>) {
+    let out = massprop(args);
+    (
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+        out.status.code(),
+    )
+}
+
+/// hole.toml, by hand (SI): a plate, box 2 × 2 × 0.1 of 10 kg at the
+/// origin, less a hole, box 1 × 1.6 × 0.1 of 4 kg centred at (0.5, 0, 0)
+/// (the plate's density: 0.16 of its 0.4 m³), both `structure` at 10 %.
+///
+/// basic 10 − 4 = 6; growth 1 − 0.4 = 0.6; predicted 6.6. Centre of mass
+/// x: basic (0 − 4 · 0.5)/6 = −1/3; predicted (−2 + 1 · 0 − 0.4 · 0.5)/6.6
+/// = −2.2/6.6 = −1/3, the same: the net part grown by 10 % everywhere.
+/// (A hole that did not grow would give −2/7.) Inertia about (−1/3, 0, 0):
+/// each body's own (m (b² + c²)/12 and so on, the hole's negative) and
+/// m d² for the x offsets d = 1/3 (plate and its growth) and 5/6 (hole and
+/// its growth), the hole's terms negative.
+#[test]
+fn a_cut_out_grows_by_its_negative_mass() {
+    let (v, status) = json_of(&[
+        "budget",
+        "tests/cmd/budget.in/hole.toml",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(status, Some(0));
+    let t = &v["total"];
+    close(num(&t["basic_mass"]), 6.0, "basic");
+    close(num(&t["growth_mass"]), 0.6, "growth");
+    close(num(&t["predicted_mass"]), 6.6, "predicted");
+    let g = group(&v, &["structure"]);
+    assert_eq!(g["parts"], 2);
+    close(num(&g["basic_mass"]), 6.0, "structure basic");
+    close(num(&g["growth_mass"]), 0.6, "structure growth");
+    assert_eq!(v["no_maturity"]["parts"], 0);
+    close(num(&v["basic"]["center_of_mass"][0]), -1.0 / 3.0, "basic x");
+    close(num(&v["predicted"]["center_of_mass"][0]), -1.0 / 3.0, "x");
+    close(num(&v["predicted"]["center_of_mass"][1]), 0.0, "y");
+    close(num(&v["predicted"]["center_of_mass"][2]), 0.0, "z");
+    // (mass, own [Ixx, Iyy, Izz], x offset from the centre of mass).
+    let box_own = |m: f64, [a, b, c]: [f64; 3]| {
+        [
+            m * (b * b + c * c) / 12.0,
+            m * (a * a + c * c) / 12.0,
+            m * (a * a + b * b) / 12.0,
+        ]
+    };
+    let bodies = [
+        (10.0, box_own(10.0, [2.0, 2.0, 0.1]), 1.0 / 3.0),
+        (-4.0, box_own(-4.0, [1.0, 1.6, 0.1]), 5.0 / 6.0),
+        (1.0, [0.0; 3], 1.0 / 3.0),
+        (-0.4, [0.0; 3], 5.0 / 6.0),
+    ];
+    for k in 0..3 {
+        // An x offset adds m d² to Iyy and Izz, nothing to Ixx.
+        let want: f64 = bodies
+            .iter()
+            .map(|(m, own, d)| own[k] + if k == 0 { 0.0 } else { m * d * d })
+            .sum();
+        let got = num(&v["predicted"]["inertia_com"][k][k]);
+        assert!(
+            (got - want).abs() <= 1e-12 * 10.0,
+            "I[{k}][{k}]: {got} against {want}"
+        );
+    }
+}
+
+/// A hole grouped apart from its part: its group's basic mass and growth
+/// are negative; a hole with no maturity counts in `no_maturity` by its
+/// negative mass, with no growth.
+#[test]
+fn a_cut_out_counts_by_its_signed_mass_in_its_group_and_unclassified() {
+    let text = std::fs::read_to_string("tests/cmd/budget.in/hole.toml").unwrap();
+    let (head, hole) = text.split_at(text.rfind("[[part]]").unwrap());
+    let dir = scratch("budget", "signed-cut-out");
+    let apart = dir.join("apart.toml");
+    std::fs::write(
+        &apart,
+        format!("{head}{}", hole.replace("\"structure\"", "\"holes\"")),
+    )
+    .unwrap();
+    let (v, _) = json_of(&["budget", apart.to_str().unwrap(), "--format", "json"]);
+    close(
+        num(&group(&v, &["holes"])["basic_mass"]),
+        -4.0,
+        "holes basic",
+    );
+    close(
+        num(&group(&v, &["holes"])["growth_mass"]),
+        -0.4,
+        "holes growth",
+    );
+    close(
+        num(&group(&v, &["structure"])["basic_mass"]),
+        10.0,
+        "structure",
+    );
+    close(num(&v["total"]["predicted_mass"]), 6.6, "predicted");
+    let bare = dir.join("bare.toml");
+    std::fs::write(
+        &bare,
+        format!("{head}{}", hole.replace("maturity = \"calculated\"\n", "")),
+    )
+    .unwrap();
+    let (v, _) = json_of(&["budget", bare.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(v["no_maturity"]["parts"], 1);
+    close(num(&v["no_maturity"]["basic_mass"]), -4.0, "unclassified");
+    // Only the plate grows: 1 kg at its centre, x = −2/7.
+    close(num(&v["total"]["growth_mass"]), 1.0, "growth");
+    close(num(&v["predicted"]["center_of_mass"][0]), -2.0 / 7.0, "x");
+}
+
+/// A file whose predicted mass is 10 kg + 50 % = 15 kg, with `[budget]`
+/// at `limit` (line 5, column 9: `limit = ` is 8 characters).
+fn limited(limit: &str, expect: &str) -> String {
+    format!(
+        "[growth]\nestimated = \"50 %\"\n\n[budget]\nlimit = {limit}\n\n[[part]]\nshape = \"point\"\nmass = 10\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n{expect}"
+    )
+}
+
+/// `check` holds `[budget] limit` against the predicted mass, at the
+/// `limit` entry, in every format; a limit met passes.
+#[test]
+fn check_fails_a_predicted_mass_above_the_budget_limit() {
+    let dir = scratch("budget", "check-limit");
+    let file = dir.join("p.toml");
+    let path = file.to_str().unwrap();
+    std::fs::write(&file, limited("\"1 kg\"", "")).unwrap();
+    let (out, _, status) = run_text(&["check", path]);
+    assert_eq!(status, Some(1), "{out}");
+    let line = format!(
+        "{path}:5:9: error: the predicted mass 15 kg exceeds `[budget] limit` 1 kg (by 14 kg)"
+    );
+    assert!(out.contains(&line), "{out}");
+    let (v, status) = json_of(&["check", path, "--format", "json"]);
+    assert_eq!(status, Some(1));
+    let c = &v["files"][0]["checks"][0];
+    assert_eq!(c["quantity"], "budget.limit");
+    assert_eq!(
+        (c["line"].as_u64(), c["column"].as_u64()),
+        (Some(5), Some(9))
+    );
+    close(num(&c["measured"]), 15.0, "measured");
+    close(num(&c["max"]), 1.0, "max");
+    assert_eq!(c["pass"], false);
+    let (gh, _, status) = run_text(&["check", path, "--format", "github"]);
+    assert_eq!(status, Some(1));
+    assert!(
+        gh.contains(",line=5,col=9,") && gh.contains("budget.limit"),
+        "{gh}"
+    );
+    let (xml, _, status) = run_text(&["check", path, "--format", "junit"]);
+    assert_eq!(status, Some(1));
+    assert!(
+        xml.contains("type=\"budget-limit\"") && xml.contains(":5:9: error"),
+        "{xml}"
+    );
+    let (sarif, _, status) = run_text(&["check", path, "--format", "sarif"]);
+    assert_eq!(status, Some(1));
+    let s: Value = serde_json::from_str(&sarif).unwrap();
+    let r = &s["runs"][0]["results"][0];
+    assert_eq!(r["ruleId"], "budget-limit");
+    assert_eq!(
+        r["locations"][0]["physicalLocation"]["region"]["startLine"],
+        5
+    );
+    assert_eq!(
+        r["locations"][0]["physicalLocation"]["region"]["startColumn"],
+        9
+    );
+    // 15 kg against 15 kg and 20 kg: met.
+    for limit in ["15", "\"20 kg\""] {
+        std::fs::write(&file, limited(limit, "")).unwrap();
+        let (out, _, status) = run_text(&["check", path]);
+        assert_eq!(status, Some(0), "{limit}: {out}");
+    }
+}
+
+/// `[expect] mass`'s `max` is the basic mass's in `check` (10 kg, under
+/// 12), the predicted mass's limit in `budget` (15 kg, over 12).
+#[test]
+fn expect_mass_max_is_the_basic_mass_in_check_and_the_limit_in_budget() {
+    let dir = scratch("budget", "expect-max");
+    let file = dir.join("p.toml");
+    let text = limited("\"100 kg\"", "\n[expect]\nmass = { max = 12 }\n")
+        .replace("[budget]\nlimit = \"100 kg\"\n", "");
+    std::fs::write(&file, text).unwrap();
+    let path = file.to_str().unwrap();
+    assert_eq!(run_text(&["check", path]).2, Some(0));
+    let (v, status) = json_of(&["budget", path, "--format", "json"]);
+    assert_eq!(status, Some(1));
+    assert_eq!(v["limit"]["source"], "expect_mass_max");
+}
+
+/// `check --bless` writes nothing of the limit: the `[expect]` it adds has
+/// the basic mass, and a limit not met still fails.
+#[test]
+fn bless_does_not_write_the_budget_limit() {
+    let dir = scratch("budget", "bless-limit");
+    let file = dir.join("p.toml");
+    std::fs::write(&file, limited("\"1 kg\"", "")).unwrap();
+    let out = massprop(&["check", "--bless", file.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    let blessed = std::fs::read_to_string(&file).unwrap();
+    assert!(
+        blessed.contains("[budget]\nlimit = \"1 kg\"\n"),
+        "{blessed}"
+    );
+    let expect = &blessed[blessed.find("[expect]").expect("an [expect] added")..];
+    assert!(expect.contains("mass = { value = 10"), "{expect}");
+    assert!(
+        !expect.contains("predicted") && !expect.contains("15"),
+        "{expect}"
+    );
+}
+
+/// The predicted body's accuracy warnings reach standard error in the
+/// table's run, as the basic body's do (statement.toml in f64 is within a
+/// few ulps, not 3e-16).
+#[test]
+fn the_predicted_bodys_accuracy_warnings_reach_standard_error() {
+    let (_, err, status) = run_text(&[
+        "budget",
+        STATEMENT,
+        "--precision",
+        "standard",
+        "--rtol",
+        "3e-16",
+    ]);
+    assert_eq!(status, Some(0));
+    assert!(err.contains(": `mass` = "), "{err}");
+    assert!(err.contains(": the predicted body's `mass` = "), "{err}");
+}
+
+/// An allowance of 1000 % is the largest: 1001 % is refused at its value.
+#[test]
+fn an_allowance_above_1000_percent_is_refused_where_it_is_written() {
+    let dir = scratch("budget", "allowance");
+    let file = dir.join("p.toml");
+    let path = file.to_str().unwrap();
+    std::fs::write(&file, limited("200", "").replace("50 %", "1000 %")).unwrap();
+    let (v, status) = json_of(&["budget", path, "--format", "json"]);
+    assert_eq!(status, Some(0));
+    close(num(&v["total"]["predicted_mass"]), 110.0, "eleven times");
+    std::fs::write(&file, limited("200", "").replace("50 %", "1001 %")).unwrap();
+    let (_, err, status) = run_text(&["budget", path]);
+    assert_eq!(status, Some(2));
+    assert!(err.contains(":2:13: error: `growth.estimated` is \"1001 %\", above 1000 %: a growth that large is not an allowance"), "{err}");
+}
+
+/// A basic body that fits f64 and a growth that takes it past: the error
+/// names the growth, and blames no part.
+#[test]
+fn a_predicted_body_that_overflows_names_the_growth() {
+    let dir = scratch("budget", "overflow");
+    let file = dir.join("p.toml");
+    std::fs::write(
+        &file,
+        "[growth]\nestimated = \"100 %\"\n\n[[part]]\nname = \"big\"\nshape = \"point\"\nmass = 1.5e308\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    assert_eq!(run_text(&["report", path]).2, Some(0));
+    let (_, err, status) = run_text(&["budget", path]);
+    assert_eq!(status, Some(2));
+    assert!(
+        err.contains("of the predicted body overflows the range of f64 once its growth is added"),
+        "{err}"
+    );
+    assert!(
+        err.contains("the largest growth is `big`'s, 1.5e308 kg"),
+        "{err}"
+    );
+    assert!(!err.contains("contributes the most"), "{err}");
+}
+
+/// `--only` of a file with a limit says why no limit is shown.
+#[test]
+fn only_says_the_limit_is_not_applied() {
+    let args = ["budget", "tests/cmd/budget.in/stage.toml"];
+    let (out, _, _) = run_text(&args);
+    assert!(out.contains("limit: 8 kg ([budget] limit)"), "{out}");
+    let (out, _, _) = run_text(&[args[0], args[1], "--only", "main tank"]);
+    assert!(
+        out.contains("limit: not applied with --only (it is the whole body's)\n"),
+        "{out}"
+    );
+    let (out, _, _) = run_text(&["budget", "tests/cmd/budget.in/hole.toml"]);
+    assert!(
+        out.contains("limit: none given ([budget] limit)\n"),
+        "{out}"
+    );
+}
+
+/// Three levels: each parent is its own parts and its children, exactly
+/// (masses and growths 1, 2, 4 and 0.5, 1, 2 kg: sums exact in binary).
+#[test]
+fn a_parent_group_is_its_own_parts_and_its_children() {
+    let part = |mass: u32, group: &str| {
+        format!(
+            "[[part]]\nshape = \"point\"\nmass = {mass}\ncenter = [0, 0, {mass}]\ngroup = \"{group}\"\nmaturity = \"half\"\n\n"
+        )
+    };
+    let text = format!(
+        "[growth]\nhalf = \"50 %\"\n\n{}{}{}{}",
+        part(4, "a/b/c"),
+        part(1, "a"),
+        part(2, "a/b"),
+        part(8, "d"),
+    );
+    let (v, _) = statement_of("three-levels", &[("p.toml", &text)]);
+    let row = |path: &[&str]| {
+        let g = group(&v, path);
+        (
+            g["parts"].as_u64().unwrap(),
+            num(&g["basic_mass"]),
+            num(&g["growth_mass"]),
+        )
+    };
+    // NOTE: compared exactly: each sum is of small integers and halves.
+    assert_eq!(row(&["a", "b", "c"]), (1, 4.0, 2.0));
+    assert_eq!(row(&["a", "b"]), (2, 2.0 + 4.0, 1.0 + 2.0));
+    assert_eq!(row(&["a"]), (3, 1.0 + 6.0, 0.5 + 3.0));
+    assert_eq!(row(&["d"]), (1, 8.0, 4.0));
+    let order: Vec<&Value> = v["groups"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|g| &g["path"])
+        .collect();
+    assert_eq!(
+        order,
+        [
+            &serde_json::json!(["a"]),
+            &serde_json::json!(["a", "b"]),
+            &serde_json::json!(["a", "b", "c"]),
+            &serde_json::json!(["d"]),
+        ]
+    );
+}
+
+/// Includes two deep, each with a `maturity`: a part with none takes the
+/// innermost include's (`inner`, 10 %, from the middle file's `[growth]`),
+/// a part's own wins over both (`own`, 1 %, its file's); the middle
+/// file's own part takes the outer include's (`outer`, 20 %, the root's).
+#[test]
+fn the_innermost_include_maturity_wins_and_a_parts_own_over_both() {
+    let (v, status) = statement_of(
+        "nested",
+        &[
+            (
+                "leaf.toml",
+                "[growth]\nown = \"1 %\"\n\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\ngroup = \"default\"\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\ngroup = \"own\"\nmaturity = \"own\"\n",
+            ),
+            (
+                "mid.toml",
+                "[growth]\ninner = \"10 %\"\n\n[[part]]\nname = \"leaf\"\ninclude = \"leaf.toml\"\nmaturity = \"inner\"\n\n[[part]]\nshape = \"point\"\nmass = 4\ncenter = [0, 0, 0]\ngroup = \"mid\"\n",
+            ),
+            (
+                "root.toml",
+                "[growth]\nouter = \"20 %\"\n\n[[part]]\nname = \"mid\"\ninclude = \"mid.toml\"\nmaturity = \"outer\"\n",
+            ),
+        ],
+    );
+    assert_eq!(status, Some(0), "{v}");
+    close(
+        num(&group(&v, &["default"])["growth_mass"]),
+        0.1,
+        "innermost",
+    );
+    close(num(&group(&v, &["own"])["growth_mass"]), 0.02, "own");
+    close(num(&group(&v, &["mid"])["growth_mass"]), 0.8, "outer");
+    assert_eq!(v["no_maturity"]["parts"], 0);
+}
+
+/// An array of includes under a group: each copy's parts in it, with the
+/// include's maturity: 3 × (1 kg + 2 kg) at 20 %.
+#[test]
+fn an_array_of_includes_carries_its_group() {
+    let (v, status) = statement_of(
+        "array-include",
+        &[
+            (
+                "unit.toml",
+                "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 1]\ngroup = \"cells\"\n",
+            ),
+            (
+                "root.toml",
+                "[growth]\nestimated = \"20 %\"\n\n[[part]]\nname = \"unit\"\ninclude = \"unit.toml\"\ngroup = \"battery\"\nmaturity = \"estimated\"\narray = { count = 3, step = [1, 0, 0] }\n",
+            ),
+        ],
+    );
+    assert_eq!(status, Some(0), "{v}");
+    let b = group(&v, &["battery"]);
+    assert_eq!(b["parts"], 6);
+    close(num(&b["basic_mass"]), 9.0, "battery");
+    close(num(&b["growth_mass"]), 1.8, "battery growth");
+    let c = group(&v, &["battery", "cells"]);
+    assert_eq!(c["parts"], 3);
+    close(num(&c["basic_mass"]), 6.0, "cells");
+    close(num(&c["growth_mass"]), 1.2, "cells growth");
+    // The copies at x = 0, 1, 2: the predicted centre x is 1.
+    close(num(&v["predicted"]["center_of_mass"][0]), 1.0, "x");
+}
+
+/// A file in g and mm: the table in g (1000 g + 500 g at 10 %), the JSON
+/// in kg.
+#[test]
+fn a_file_in_grams_shows_its_statement_in_grams() {
+    let dir = scratch("budget", "grams");
+    let file = dir.join("p.toml");
+    std::fs::write(
+        &file,
+        "units = { mass = \"g\", length = \"mm\" }\n\n[growth]\nestimated = \"10 %\"\n\n[[part]]\nshape = \"point\"\nmass = 1000\ncenter = [0, 0, 0]\ngroup = \"a\"\nmaturity = \"estimated\"\n\n[[part]]\nshape = \"point\"\nmass = 500\ncenter = [30, 0, 0]\ngroup = \"a\"\nmaturity = \"estimated\"\n",
+    )
+    .unwrap();
+    let path = file.to_str().unwrap();
+    let (out, _, status) = run_text(&["budget", path]);
+    assert_eq!(status, Some(0));
+    assert!(out.contains("weight statement (g)\n"), "{out}");
+    let total: Vec<&str> = out
+        .lines()
+        .find(|l| l.contains(" total "))
+        .unwrap()
+        .split(['│', '┆'])
+        .map(str::trim)
+        .filter(|c| !c.is_empty())
+        .collect();
+    assert_eq!(
+        total,
+        ["total", "2", "1500", "150", "10 %", "1650", "100 %"],
+        "{out}"
+    );
+    // Centre of mass x: 500 · 30 / 1500 = 10 mm, in mm.
+    assert!(out.contains("centre of mass x (mm)"), "{out}");
+    let (v, _) = json_of(&["budget", path, "--format", "json"]);
+    close(num(&v["total"]["predicted_mass"]), 1.65, "kg");
+    close(num(&v["predicted"]["center_of_mass"][0]), 0.01, "m");
+}
+
+/// A `[growth]` table after the parts that use it: the fast streaming
+/// reader, whose parts have no `[growth]`, must leave the file to serde
+/// (else `maturity` would be unknown here).
+#[test]
+fn a_growth_table_after_the_parts_is_read() {
+    let (v, status) = statement_of(
+        "growth-last",
+        &[(
+            "p.toml",
+            "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n\n[growth]\nestimated = \"25 %\"\n\n[budget]\nlimit = 3\n",
+        )],
+    );
+    assert_eq!(status, Some(0), "{v}");
+    close(num(&v["total"]["predicted_mass"]), 2.5, "predicted");
+}
