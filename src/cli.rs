@@ -386,6 +386,7 @@ impl BodyArgs {
                 includes: includes.includes(),
                 overrides,
                 uncertainty: None,
+                predicted: false,
             },
         }
     }

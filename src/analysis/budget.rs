@@ -403,9 +403,8 @@ pub fn predicted(
 /// of it (`predicted_*`), or has a `[budget] limit`, which `check` holds
 /// against it (and `budget` needs it in any case).
 ///
-/// NOTE: `report` of such a file composes it too, unused: one more
-/// composition of a file that states a weight budget, for one rule of
-/// when the predicted body exists rather than one per command.
+/// (`load` composes it only where `Settings::predicted` asks: `check`;
+/// `budget` composes its own with the statement.)
 pub fn composes_predicted(model: &Model) -> bool {
     model.budget.is_some() || model.expect.iter().any(|c| c.target.is_predicted())
 }

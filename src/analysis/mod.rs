@@ -58,6 +58,10 @@ pub struct Settings {
     pub overrides: Overrides,
     /// Propagate the file's tolerances (`--uncertainty`).
     pub uncertainty: Option<uncertainty::Method>,
+    /// Compose the predicted body of a file that asks for it (`check`:
+    /// `predicted_*` expectations, `[budget] limit`); the commands that
+    /// show no predicted value leave it out.
+    pub predicted: bool,
 }
 
 /// A part file read, validated, resolved and summarized.
@@ -103,7 +107,7 @@ pub fn load_source_reading(
     if let Some(method) = settings.uncertainty {
         summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source)?);
     }
-    if budget::composes_predicted(&model) {
+    if settings.predicted && budget::composes_predicted(&model) {
         let predicted = budget::predicted(&model, &analysis, settings, &source)?;
         summary.predicted = Some(Box::new(predicted));
     }

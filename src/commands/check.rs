@@ -178,6 +178,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             axes: o.axes.clone(),
             ..Default::default()
         },
+        // `predicted_*` expectations and `[budget] limit` read it.
+        predicted: true,
         ..Settings::default()
     };
     let invalid = |path: String, d: Diagnostic, stderr: &mut String| {
