@@ -23,6 +23,18 @@ fn close(a: f64, b: f64, rel: f64) -> bool {
     (a - b).abs() <= rel * a.abs().max(b.abs())
 }
 
+/// `files` (name, text) written into a scratch directory `name`; the path
+/// of the last, the one to run.
+fn written(name: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
+    let dir = scratch("uncertainty", name);
+    let mut last = dir.clone();
+    for (file, text) in files {
+        last = dir.join(file);
+        std::fs::write(&last, text).unwrap();
+    }
+    last
+}
+
 #[test]
 fn one_toleranced_mass_gives_its_own_deviation_and_no_other() {
     // M = 2 + 3 kg; σ_M = 0.1 kg; the centre x̄ = 3·1/M moves with the
@@ -451,18 +463,19 @@ center = [1, 0, 0]
 fn each_instance_of_an_included_file_has_its_own_parameters_tolerance() {
     // Two wheels of one file whose `rim` mass is a parameter ± 0.2 kg:
     // independent wheels, σ = 0.2 √2.
-    let dir = scratch("uncertainty", "instances");
-    std::fs::write(
-        dir.join("wheel.toml"),
-        "[params]\nrim = \"1.5 kg ± 0.2 kg\"\n[[part]]\nshape = \"point\"\nmass = \"rim\"\ncenter = [0, 0, 0]\n",
-    )
-    .unwrap();
-    let path = dir.join("bike.toml");
-    std::fs::write(
-        &path,
-        "[[part]]\ninclude = \"wheel.toml\"\norigin = [0, 0, 0]\n[[part]]\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n",
-    )
-    .unwrap();
+    let path = written(
+        "instances",
+        &[
+            (
+                "wheel.toml",
+                "[params]\nrim = \"1.5 kg ± 0.2 kg\"\n[[part]]\nshape = \"point\"\nmass = \"rim\"\ncenter = [0, 0, 0]\n",
+            ),
+            (
+                "bike.toml",
+                "[[part]]\ninclude = \"wheel.toml\"\norigin = [0, 0, 0]\n[[part]]\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n",
+            ),
+        ],
+    );
     let v = run(&path, &["--uncertainty", "linear"]);
     assert!(close(sigma(&v, "mass"), 0.2 * 2f64.sqrt(), 1e-15));
     assert_eq!(v["uncertainty"]["sources"], 2);
@@ -471,9 +484,7 @@ fn each_instance_of_an_included_file_has_its_own_parameters_tolerance() {
 /// `report FILE` on `text`: status 2, nothing on stdout, and stderr
 /// containing each of `want`.
 fn refused(name: &str, text: &str, want: &[&str]) {
-    let dir = scratch("uncertainty", name);
-    let path = dir.join("f.toml");
-    std::fs::write(&path, text).unwrap();
+    let path = written(name, &[("f.toml", text)]);
     let out = massprop(&["report", path.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
@@ -575,23 +586,23 @@ fn a_sub_assemblys_origin_tolerance_moves_it_whole_through_the_frames_outside() 
     // is turned a quarter about z, so the shift is along the root's y.
     // The centre moves by half of it (m_sub/M = 1/2): σ_ȳ = 1 mm, σ_x̄ = 0;
     // I_xx about the centre is μ y² (μ = m₁m₂/M = 1 kg), σ = 2μ y σ_y.
-    let dir = scratch("uncertainty", "origin");
-    std::fs::write(
-        dir.join("point.toml"),
-        "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
-    )
-    .unwrap();
-    std::fs::write(
-        dir.join("mid.toml"),
-        "units = { length = \"mm\", mass = \"kg\" }\n[[part]]\ninclude = \"point.toml\"\norigin = [\"1000 mm ± 2 mm\", 0, 0]\n",
-    )
-    .unwrap();
-    let path = dir.join("top.toml");
-    std::fs::write(
-        &path,
-        "[[part]]\ninclude = \"mid.toml\"\nrotation = { axis = [0, 0, 1], degrees = 90 }\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
-    )
-    .unwrap();
+    let path = written(
+        "origin",
+        &[
+            (
+                "point.toml",
+                "[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
+            ),
+            (
+                "mid.toml",
+                "units = { length = \"mm\", mass = \"kg\" }\n[[part]]\ninclude = \"point.toml\"\norigin = [\"1000 mm ± 2 mm\", 0, 0]\n",
+            ),
+            (
+                "top.toml",
+                "[[part]]\ninclude = \"mid.toml\"\nrotation = { axis = [0, 0, 1], degrees = 90 }\n[[part]]\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n",
+            ),
+        ],
+    );
     for method in [
         &["--uncertainty", "linear"][..],
         &["--uncertainty", "montecarlo", "--samples", "20000"],
@@ -646,18 +657,19 @@ fn a_parameter_in_an_include_origin_stays_one_variable() {
     // A 1 kg point at x = off and an included 1 kg point at x = −off, off =
     // 100 ± 1 mm: the centre stays at 0 (σ 0), and I_zz = Σ m x² about it
     // = 2 off², σ = 4 off σ_off = 4 · 0.1 m · 0.001 m = 4e-4 kg·m².
-    let dir = scratch("uncertainty", "origin-param");
-    std::fs::write(
-        dir.join("p.toml"),
-        "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
-    )
-    .unwrap();
-    let path = dir.join("top.toml");
-    std::fs::write(
-        &path,
-        "units = { length = \"mm\", mass = \"kg\" }\n[params]\noff = \"100 mm ± 1 mm\"\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [\"off\", 0, 0]\n[[part]]\ninclude = \"p.toml\"\norigin = [\"-off\", 0, 0]\n",
-    )
-    .unwrap();
+    let path = written(
+        "origin-param",
+        &[
+            (
+                "p.toml",
+                "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n",
+            ),
+            (
+                "top.toml",
+                "units = { length = \"mm\", mass = \"kg\" }\n[params]\noff = \"100 mm ± 1 mm\"\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [\"off\", 0, 0]\n[[part]]\ninclude = \"p.toml\"\norigin = [\"-off\", 0, 0]\n",
+            ),
+        ],
+    );
     let v = run(&path, &["--uncertainty", "linear"]);
     assert_eq!(v["uncertainty"]["sources"], 1);
     assert!(sigma(&v, "center_of_mass.x") < 1e-15);
