@@ -6,9 +6,11 @@
 //!
 //! The outputs are the mass, the centre of mass, the inertia tensor about
 //! the centre of mass (in the report axes and products convention) and the
-//! principal moments, in SI (`OUTPUTS`). Each toleranced quantity is an
-//! independent source for each copy of the part it is on (an array's
-//! copies, each instance of an included file).
+//! principal moments, in SI (`OUTPUTS`). A tolerance on a part's key is
+//! an independent source for each copy of the part (an array's copies,
+//! each instance of an included file); one on a parameter or a material
+//! is one source per instance of its file, shared by every key that uses
+//! it; one on a sub-assembly's origin one per instance of the include.
 //!
 //! NOTE: both methods work on the body's three sums about the nominal
 //! centre of mass c₀ (file units): M = Σ m, S = Σ m d and
@@ -109,8 +111,7 @@ pub struct Uncertainty {
     /// (left out of the statistics).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rejected: Option<usize>,
-    /// Independent sources of uncertainty (toleranced quantities, each
-    /// copy of a part its own).
+    /// Independent sources of uncertainty (see the module's comment).
     pub sources: usize,
     pub outputs: Vec<Output>,
     /// The covariance of the outputs, rows and columns in `outputs`'
