@@ -816,3 +816,81 @@ fn linear_deviations_are_the_central_differences_of_the_report() {
         );
     }
 }
+
+/// A quantity string with a tolerance, of tokens people type and mistype.
+fn toleranced() -> impl proptest::strategy::Strategy<Value = String> {
+    use proptest::prelude::*;
+    let value = prop_oneof![
+        Just("5"),
+        Just("5 mm"),
+        Just("0"),
+        Just("-2 mm"),
+        Just("1e300 m"),
+        Just("2 * w"),
+        Just(""),
+        Just("3 kg"),
+    ];
+    let sign = prop_oneof![Just("±"), Just("+/-"), Just("±±"), Just("+/")];
+    let amount = prop_oneof![
+        Just("0.1 mm"),
+        Just("1 %"),
+        Just("1e308 %"),
+        Just("-1 mm"),
+        Just("0"),
+        Just("0.1"),
+        Just("nan"),
+        Just("inf mm"),
+        Just("1 mm uniform"),
+        Just("1 mm normal"),
+        Just("1 kg"),
+        Just(" "),
+        Just("% %"),
+    ];
+    (value, sign, amount).prop_map(|(v, s, a)| format!("{v} {s} {a}"))
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 300, ..Default::default() })]
+
+    /// Any tolerance in any key is read, or refused with a located error:
+    /// never a panic, and never a σ that is not finite in the output.
+    #[test]
+    fn hostile_tolerances_are_read_or_refused_with_their_place(
+        text in toleranced(),
+        key in proptest::sample::select(vec!["mass", "size", "center", "radius", "w", "omega", "step"]),
+        monte_carlo in proptest::bool::ANY,
+    ) {
+        let quoted = format!("{text:?}");
+        let (params, part) = match key {
+            "w" => (format!("[params]\nw = {quoted}\n"), "shape = \"box\"\nmass = 1\nsize = [\"w\", 1, 1]\ncenter = [0, 0, 0]\n".to_string()),
+            "mass" => (String::new(), format!("shape = \"box\"\nmass = {quoted}\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n")),
+            "size" => (String::new(), format!("shape = \"box\"\nmass = 1\nsize = [{quoted}, 1, 1]\ncenter = [0, 0, 0]\n")),
+            "center" => (String::new(), format!("shape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [{quoted}, 0, 0]\n")),
+            "radius" => (String::new(), format!("shape = \"cylinder\"\nmass = 1\nradius = {quoted}\nlength = 1\ncenter = [0, 0, 0]\n")),
+            "omega" => (String::new(), format!("shape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n[analysis]\nomega = [0, 0, {quoted}]\n")),
+            _ => (String::new(), format!("shape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\narray = {{ count = 2, step = [{quoted}, 0, 0] }}\n")),
+        };
+        let file = format!("units = {{ length = \"mm\", mass = \"kg\" }}\n{params}[[part]]\n{part}");
+        let path = std::env::temp_dir().join(format!("massprop-hostile-tol-{}.toml", std::process::id()));
+        std::fs::write(&path, &file).unwrap();
+        let mut argv = vec!["massprop", "report", "--format", "json", "--uncertainty"];
+        argv.extend(if monte_carlo { &["montecarlo", "--samples", "50"][..] } else { &["linear"][..] });
+        argv.push(path.to_str().unwrap());
+        let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+        match massprop::run(&cli) {
+            Ok(out) => {
+                let v: Value = serde_json::from_str(&out.stdout.text()).unwrap();
+                for o in v["uncertainty"]["outputs"].as_array().unwrap() {
+                    proptest::prop_assert!(o["sigma"].as_f64().is_some_and(f64::is_finite), "{file}\n{o}");
+                }
+            }
+            Err(d) => {
+                let text = d.to_string();
+                proptest::prop_assert!(
+                    text.contains(".toml:") || text.contains("Monte Carlo") || text.contains("overflows"),
+                    "{file}\n{text}"
+                );
+            }
+        }
+    }
+}
