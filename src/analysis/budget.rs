@@ -218,6 +218,35 @@ impl Walked {
     }
 }
 
+/// A part's maturity: its own, else the innermost sub-assembly's that
+/// gives one (`stack`: the tags of the sub-assemblies entered, outermost
+/// first). The one rule, for the statement and the uncertainty.
+fn maturity_of<'a>(stack: &'a [Option<Tag>], own: Option<&'a Tag>) -> Option<&'a Maturity> {
+    own.and_then(|t| t.maturity.as_ref()).or_else(|| {
+        stack
+            .iter()
+            .rev()
+            .flatten()
+            .find_map(|t| t.maturity.as_ref())
+    })
+}
+
+/// Each part's growth allowance (a fraction; 0 without a maturity), by
+/// its index in the body (`walk::Leaf::index`): what the predicted body
+/// adds to it, for `uncertainty`.
+pub fn allowances(model: &Model) -> Vec<f64> {
+    let mut out = Vec::with_capacity(model.count);
+    let mut stack: Vec<Option<Tag>> = Vec::new();
+    model.each_event(&mut |e| match e {
+        Event::Enter(inc) => stack.push(inc.tag.as_deref().cloned()),
+        Event::Exit => {
+            stack.pop();
+        }
+        Event::Part(leaf) => out.push(maturity_of(&stack, leaf.tag).map_or(0.0, |m| m.allowance)),
+    });
+    out
+}
+
 /// Walk the body once: each part's group (its sub-assemblies' groups, then
 /// its own) and maturity (its own, else the innermost sub-assembly's that
 /// gives one), its basic mass and growth, in SI.
@@ -239,14 +268,7 @@ fn walk(model: &Model) -> Walked {
             for t in groups {
                 path.extend(t.group.iter().flatten().cloned());
             }
-            let maturity: Option<&Maturity> =
-                leaf.tag.and_then(|t| t.maturity.as_ref()).or_else(|| {
-                    stack
-                        .iter()
-                        .rev()
-                        .flatten()
-                        .find_map(|t| t.maturity.as_ref())
-                });
+            let maturity = maturity_of(&stack, leaf.tag);
             let p = leaf.part;
             // Signed: a cut-out's is negative, and so is its growth.
             let basic = p.mass_si(&factors);

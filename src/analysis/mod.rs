@@ -99,17 +99,28 @@ pub fn load_source_reading(
     let analysis = resolve(&model, &source, &settings.overrides)?;
     let mut summary = summary::summarize(&model, &analysis, settings.products, &settings.accuracy)
         .map_err(|e| e.diagnostic(&model, &analysis, &source))?;
-    if let Some(path) = only {
+    if let Some(path) = &only {
         summary.name = path.last().cloned();
-        summary.sub_assembly = Some(path);
+        summary.sub_assembly = Some(path.clone());
     }
     summary.source = Some(source.name.clone());
+    // The predicted body where the command reads it, or the uncertainty
+    // of a whole weight-budgeted body (the limit is the whole body's).
+    let budgeted = budget::composes_predicted(&model);
+    let predicted =
+        if budgeted && (settings.predicted || (settings.uncertainty.is_some() && only.is_none())) {
+            Some(budget::predicted(&model, &analysis, settings, &source)?)
+        } else {
+            None
+        };
     if let Some(method) = settings.uncertainty {
-        summary.uncertainty = Some(uncertainty::propagate(&model, &summary, method, &source)?);
+        let whole = predicted.as_ref().filter(|_| only.is_none());
+        summary.uncertainty = Some(uncertainty::propagate(
+            &model, &summary, whole, method, &source,
+        )?);
     }
-    if settings.predicted && budget::composes_predicted(&model) {
-        let predicted = budget::predicted(&model, &analysis, settings, &source)?;
-        summary.predicted = Some(Box::new(predicted));
+    if settings.predicted {
+        summary.predicted = predicted.map(Box::new);
     }
     Ok(Loaded {
         source,

@@ -24,7 +24,7 @@ use super::Products;
 use super::summary::Summary;
 use crate::dual::Dual;
 use crate::model::Model;
-use crate::model::expect::{Check, Target};
+use crate::model::expect::Target;
 use crate::model::walk::Leaf;
 use crate::numeric::{M3, Real};
 use crate::part::{Fixed, Seed, Slot, Spec, physics_in};
@@ -57,6 +57,31 @@ pub const OUTPUTS: [&str; 13] = [
     "principal_moments.3",
 ];
 const N: usize = OUTPUTS.len();
+/// The predicted body's outputs (a weight statement's, `budget`), as
+/// `[expect]` names those it holds.
+pub const PREDICTED: [&str; N] = [
+    "predicted_mass",
+    "predicted_center_of_mass.x",
+    "predicted_center_of_mass.y",
+    "predicted_center_of_mass.z",
+    "predicted_inertia_com.xx",
+    "predicted_inertia_com.yy",
+    "predicted_inertia_com.zz",
+    "predicted_inertia_com.xy",
+    "predicted_inertia_com.xz",
+    "predicted_inertia_com.yz",
+    "predicted_principal_moments.1",
+    "predicted_principal_moments.2",
+    "predicted_principal_moments.3",
+];
+/// The outputs of both bodies, the basic's first (the predicted body's
+/// are zero where the file has none).
+const W: usize = 2 * N;
+
+/// The name of output `o` of `W`.
+fn name_of(o: usize) -> &'static str {
+    if o < N { OUTPUTS[o] } else { PREDICTED[o - N] }
+}
 /// The tensor entries of outputs 4..10.
 const ENTRIES: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
 /// How many sources each output names as contributing most.
@@ -117,7 +142,11 @@ pub struct Uncertainty {
     /// The covariance of the outputs, rows and columns in `outputs`'
     /// order, SI.
     pub covariance: Vec<Vec<f64>>,
-    /// For each `[expect]` entry on an output.
+    /// The predicted body's (a file with a weight statement that `check`
+    /// holds: `predicted_*` expectations or `[budget] limit`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub predicted: Option<Predicted>,
+    /// For each `[expect]` entry on an output, and `[budget] limit`.
     pub exceed: Vec<Exceed>,
     /// Principal moments equal within tolerance: their derivatives are
     /// not defined, and their σ is first order in a direction the
@@ -126,12 +155,21 @@ pub struct Uncertainty {
     pub equal_moments: Vec<usize>,
 }
 
+/// The predicted body's uncertainty: its outputs (`PREDICTED`) and their
+/// covariance.
+#[derive(Debug, Clone, Serialize)]
+pub struct Predicted {
+    pub outputs: Vec<Output>,
+    pub covariance: Vec<Vec<f64>>,
+}
+
 /// A source of uncertainty met in a walk: its label, and how the body's
 /// sums move with its standardised variable.
 struct Source {
     label: String,
-    /// How the body's sums move with it (file units).
-    d: Sums,
+    /// How the bodies' sums move with it (file units): the basic's, the
+    /// predicted's.
+    d: [Sums; 2],
     /// Monte Carlo: its spread.
     uniform: bool,
 }
@@ -291,36 +329,84 @@ struct Moving {
     shifts: Vec<(usize, [f64; 3])>,
     linear: crate::model::frame::Linear,
     /// Where its own centroid's image lies less the map of it: c' =
-    /// `linear.dir(c)` + `shift` − c₀ (file units of the root).
-    shift: [f64; 3],
+    /// `linear.dir(c)` + `shift` − c₀ (file units of the root), about
+    /// each body's centre.
+    shift: [[f64; 3]; 2],
+    /// 1 + its growth allowance: its mass in the predicted body.
+    grow: f64,
 }
 
-/// The uncertainty of `model`'s body (`summary` its nominal figures).
+/// One body whose outputs are propagated: how they are reported, its
+/// nominal centre (file units) and mass (file units).
+struct View {
+    reported: Reported,
+    c0: [f64; 3],
+    m: f64,
+}
+
+impl View {
+    fn new(model: &Model, summary: &Summary) -> View {
+        let reported = Reported::new(model, summary);
+        View {
+            c0: std::array::from_fn(|i| summary.center_of_mass[i] / reported.length),
+            m: summary.mass / reported.mass,
+            reported,
+        }
+    }
+}
+
+/// How a part's figures move a body's sums, `k` its mass's factor in the
+/// body (1, or 1 + its growth allowance: the growth a point mass at its
+/// centroid): dm, dc and dC of the part (root frame), m its mass, d its
+/// centroid from the body's pivot.
+fn moved(dm: f64, dc: [f64; 3], dj: &M3<f64>, m: f64, d: [f64; 3], k: f64) -> Sums {
+    let mut per = Sums {
+        m: k * dm,
+        ..Sums::default()
+    };
+    for i in 0..3 {
+        per.s[i] = k * (dm * d[i] + m * dc[i]);
+        for j in 0..3 {
+            per.p[i][j] = dj[i][j] + k * (dm * d[i] * d[j] + m * (dc[i] * d[j] + d[i] * dc[j]));
+        }
+    }
+    per
+}
+
+/// The uncertainty of `model`'s body (`summary` its nominal figures), and
+/// of its predicted body where `predicted` gives its nominal figures.
 pub fn propagate(
     model: &Model,
     summary: &Summary,
+    predicted: Option<&Summary>,
     method: Method,
     source: &crate::diag::Source,
 ) -> Result<Uncertainty, crate::diag::Diagnostic> {
-    let frame = Reported::new(model, summary);
-    let c0: [f64; 3] = std::array::from_fn(|i| summary.center_of_mass[i] / frame.length);
-    let m_nominal = summary.mass / frame.mass;
+    let mut views = vec![View::new(model, summary)];
+    views.extend(predicted.map(|p| View::new(model, p)));
+    let allowances = predicted.map(|_| super::budget::allowances(model));
     let mut sources: Vec<Source> = Vec::new();
     let mut index: std::collections::HashMap<u64, usize> = Default::default();
-    let mut fixed = Sums::default();
+    let mut fixed = [Sums::default(); 2];
     let mut moving: Vec<Moving> = Vec::new();
     let monte_carlo = matches!(method, Method::MonteCarlo { .. });
     model.each_part(&mut |leaf: Leaf<'_>| {
         let placed = leaf.part;
         let m: f64 = placed.mass();
         let cen = placed.centroid();
-        let d: [f64; 3] = std::array::from_fn(|i| (cen[i] - crate::numeric::DD::of(c0[i])).f64());
+        // Its centroid from each body's pivot, and its mass's factor there.
+        let mut ds = [[0.0; 3]; 2];
+        for (d, v) in ds.iter_mut().zip(&views) {
+            *d = std::array::from_fn(|i| (cen[i] - crate::numeric::DD::of(v.c0[i])).f64());
+        }
+        let grow = 1.0 + allowances.as_ref().map_or(0.0, |a| a[leaf.index]);
+        let ks = [1.0, grow];
         // The source of a key, met for the first time or again.
         let mut source_of = |key: u64, label: &dyn Fn() -> String, spread| {
             *index.entry(key).or_insert_with(|| {
                 sources.push(Source {
                     label: label(),
-                    d: Sums::default(),
+                    d: [Sums::default(); 2],
                     uniform: spread == crate::model::tolerance::Spread::Uniform,
                 });
                 sources.len() - 1
@@ -337,7 +423,9 @@ pub fn propagate(
         if deps.is_empty() && shifts.is_empty() {
             if monte_carlo {
                 let own: M3<f64> = placed.own_second_moment(m);
-                fixed.add_part(m, d, &own);
+                for v in 0..views.len() {
+                    fixed[v].add_part(ks[v] * m, ds[v], &own);
+                }
             }
             return;
         }
@@ -374,20 +462,17 @@ pub fn propagate(
                     .collect(),
                 shifts,
                 linear,
-                shift: std::array::from_fn(|i| d[i] - mapped[i]),
+                shift: ds.map(|d| std::array::from_fn(|i| d[i] - mapped[i])),
+                grow,
             });
             return;
         }
-        // Linear: a shift v moves S by m v and P by m (v dᵀ + d vᵀ).
+        // Linear: a shift v moves the centroid by v, the rest stays.
         for (id, v) in &shifts {
-            let mut per = Sums::default();
-            for i in 0..3 {
-                per.s[i] = m * v[i];
-                for j in 0..3 {
-                    per.p[i][j] = m * (v[i] * d[j] + d[i] * v[j]);
-                }
+            for b in 0..views.len() {
+                let per = moved(0.0, *v, &[[0.0; 3]; 3], m, ds[b], ks[b]);
+                sources[*id].d[b].plus(&per, 1.0);
             }
-            sources[*id].d.plus(&per, 1.0);
         }
         // One dual evaluation per slot the part's own tolerances move.
         let mut done: Vec<Slot> = Vec::new();
@@ -401,39 +486,59 @@ pub fn propagate(
             let dm = linear.mass * dm.d;
             let dc = linear.dir(dc.map(|x| x.d));
             let dj = linear.second(&dj.map(|r| r.map(|x| x.d)));
-            let mut per = Sums {
-                m: dm,
-                ..Sums::default()
-            };
-            for i in 0..3 {
-                per.s[i] = dm * d[i] + m * dc[i];
-                for j in 0..3 {
-                    per.p[i][j] = dj[i][j] + dm * d[i] * d[j] + m * (dc[i] * d[j] + d[i] * dc[j]);
-                }
-            }
-            for (other, id) in deps.iter().zip(&ids) {
-                if other.slot == dep.slot {
-                    sources[*id].d.plus(&per, other.rate);
+            for b in 0..views.len() {
+                let per = moved(dm, dc, &dj, m, ds[b], ks[b]);
+                for (other, id) in deps.iter().zip(&ids) {
+                    if other.slot == dep.slot {
+                        sources[*id].d[b].plus(&per, other.rate);
+                    }
                 }
             }
         }
     });
-    let nominal = nominal_outputs(summary);
-    // The chance of each `[expect]` entry on an output to fail.
-    let checks: Vec<(&Check, usize)> = model
+    let mut nominal = [0.0; W];
+    nominal[..N].copy_from_slice(&nominal_outputs(summary));
+    if let Some(p) = predicted {
+        nominal[N..].copy_from_slice(&nominal_outputs(p));
+    }
+    // The chance of each `[expect]` entry on an output to fail, and of the
+    // predicted mass to pass `[budget] limit`: (name, where, bounds, output).
+    let mut checks: Vec<(String, usize, (f64, f64), usize)> = model
         .expect
         .iter()
-        .filter_map(|c| Some((c, output_of(c.target)?)))
+        .filter_map(|c| {
+            let o = output_of(c.target)?;
+            (o < N * views.len()).then(|| {
+                (
+                    c.name.clone(),
+                    c.span.start,
+                    super::check::limits(&c.bound),
+                    o,
+                )
+            })
+        })
         .collect();
+    if let (Some(limit), true) = (&model.budget, views.len() == 2) {
+        checks.push((
+            "budget.limit".into(),
+            limit.span.start,
+            (f64::NEG_INFINITY, limit.mass),
+            N,
+        ));
+    }
     let (mut out, outside) = match method {
         Method::Linear => {
-            let u = linear(&frame, &sources, m_nominal, nominal);
+            let u = linear(&views, &sources, nominal);
+            let sigma = |o: usize| {
+                if o < N {
+                    u.outputs[o].sigma
+                } else {
+                    u.predicted.as_ref().map_or(0.0, |p| p.outputs[o - N].sigma)
+                }
+            };
             let p = checks
                 .iter()
-                .map(|(c, o)| {
-                    let (lo, hi) = super::check::limits(&c.bound);
-                    outside_normal(nominal[*o], u.outputs[*o].sigma, lo, hi)
-                })
+                .map(|(_, _, (lo, hi), o)| outside_normal(nominal[*o], sigma(*o), *lo, *hi))
                 .collect();
             (u, p)
         }
@@ -442,8 +547,9 @@ pub fn propagate(
                 sources: &sources,
                 moving: &moving,
                 fixed: &fixed,
+                views: &views,
             };
-            let (u, all) = monte_carlo_run(&frame, &sampled, summary, nominal, (samples, seed));
+            let (u, all) = monte_carlo_run(&sampled, nominal, (samples, seed));
             if all.is_empty() {
                 return Err(crate::diag::Diagnostic::plain(format!(
                     "{}: every one of the {samples} Monte Carlo samples was left out: in each, a part's size, radius, density or mass was drawn to zero or below (or an inner radius past its outer)",
@@ -453,9 +559,11 @@ pub fn propagate(
             }
             let p = checks
                 .iter()
-                .map(|(c, o)| {
-                    let (lo, hi) = super::check::limits(&c.bound);
-                    let out = all.iter().filter(|r| !(r[*o] >= lo && r[*o] <= hi)).count();
+                .map(|(_, _, (lo, hi), o)| {
+                    let out = all
+                        .iter()
+                        .filter(|r| !(r[*o] >= *lo && r[*o] <= *hi))
+                        .count();
                     out as f64 / all.len().max(1) as f64
                 })
                 .collect::<Vec<f64>>();
@@ -465,10 +573,10 @@ pub fn propagate(
     out.exceed = checks
         .iter()
         .zip(outside)
-        .map(|((c, _), probability)| {
-            let (line, column) = source.line_col(c.span.start);
+        .map(|((name, at, _, _), probability)| {
+            let (line, column) = source.line_col(*at);
             Exceed {
-                quantity: c.name.clone(),
+                quantity: name.clone(),
                 line,
                 column,
                 probability,
@@ -477,12 +585,18 @@ pub fn propagate(
         .collect();
     out.equal_moments = summary.equal_moments.clone();
     // Never an `inf` or a NaN printed as a result.
-    let finite = out.covariance.iter().flatten().all(|x| x.is_finite())
+    let finite = |outputs: &[Output], covariance: &[Vec<f64>]| {
+        covariance.iter().flatten().all(|x| x.is_finite())
+            && outputs
+                .iter()
+                .all(|o| o.sigma.is_finite() && o.mean.is_none_or(f64::is_finite))
+    };
+    let all_finite = finite(&out.outputs, &out.covariance)
         && out
-            .outputs
-            .iter()
-            .all(|o| o.sigma.is_finite() && o.mean.is_none_or(f64::is_finite));
-    if !finite {
+            .predicted
+            .as_ref()
+            .is_none_or(|p| finite(&p.outputs, &p.covariance));
+    if !all_finite {
         return Err(crate::diag::Diagnostic::plain(format!(
             "{}: the propagated uncertainty overflows the range of f64",
             source.name
@@ -553,33 +667,92 @@ fn top(
         .collect()
 }
 
-fn linear(frame: &Reported, sources: &[Source], m: f64, nominal: [f64; N]) -> Uncertainty {
-    let rows: Vec<[f64; N]> = sources.iter().map(|s| frame.linear(&s.d, m)).collect();
-    let covariance: Vec<Vec<f64>> = (0..N)
+/// The outputs `range` of `W` as reported: each one's σ from `cov` and
+/// its three largest contributors from `share` (its source's share of
+/// output o's variance `var`); Monte Carlo's mean and percentiles from
+/// `stats`.
+fn outputs_of(
+    range: std::ops::Range<usize>,
+    nominal: &[f64; W],
+    cov: &[Vec<f64>],
+    share: &dyn Fn(usize, f64) -> Vec<(usize, f64)>,
+    stats: &dyn Fn(usize) -> (Option<f64>, Option<[f64; 3]>),
+    labels: &dyn Fn(usize) -> String,
+) -> (Vec<Output>, Vec<Vec<f64>>) {
+    let outputs = range
+        .clone()
+        .map(|o| {
+            let var = cov[o][o];
+            let (mean, percentiles) = stats(o);
+            Output {
+                quantity: name_of(o),
+                nominal: nominal[o],
+                sigma: var.sqrt(),
+                mean,
+                percentiles,
+                contributors: top(share(o, var).into_iter(), labels),
+            }
+        })
+        .collect();
+    let block = range
+        .clone()
+        .map(|a| range.clone().map(|b| cov[a][b]).collect())
+        .collect();
+    (outputs, block)
+}
+
+/// The basic body's outputs and, with a second view, the predicted's.
+fn split(
+    views: usize,
+    nominal: &[f64; W],
+    cov: &[Vec<f64>],
+    share: &dyn Fn(usize, f64) -> Vec<(usize, f64)>,
+    stats: &dyn Fn(usize) -> (Option<f64>, Option<[f64; 3]>),
+    labels: &dyn Fn(usize) -> String,
+) -> (Vec<Output>, Vec<Vec<f64>>, Option<Predicted>) {
+    let (outputs, covariance) = outputs_of(0..N, nominal, cov, share, stats, labels);
+    let predicted = (views == 2).then(|| {
+        let (outputs, covariance) = outputs_of(N..W, nominal, cov, share, stats, labels);
+        Predicted {
+            outputs,
+            covariance,
+        }
+    });
+    (outputs, covariance, predicted)
+}
+
+fn linear(views: &[View], sources: &[Source], nominal: [f64; W]) -> Uncertainty {
+    let rows: Vec<[f64; W]> = sources
+        .iter()
+        .map(|s| {
+            let mut row = [0.0; W];
+            for (b, v) in views.iter().enumerate() {
+                row[b * N..(b + 1) * N].copy_from_slice(&v.reported.linear(&s.d[b], v.m));
+            }
+            row
+        })
+        .collect();
+    let cov: Vec<Vec<f64>> = (0..W)
         .map(|a| {
-            (0..N)
+            (0..W)
                 .map(|b| rows.iter().map(|r| r[a] * r[b]).sum())
                 .collect()
         })
         .collect();
-    let outputs = (0..N)
-        .map(|o| {
-            let var = covariance[o][o];
-            Output {
-                quantity: OUTPUTS[o],
-                nominal: nominal[o],
-                sigma: var.sqrt(),
-                mean: None,
-                percentiles: None,
-                contributors: top(
-                    rows.iter()
-                        .enumerate()
-                        .map(|(k, r)| (k, if var > 0.0 { r[o] * r[o] / var } else { 0.0 })),
-                    &|k| sources[k].label.clone(),
-                ),
-            }
-        })
-        .collect();
+    let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
+        rows.iter()
+            .enumerate()
+            .map(|(k, r)| (k, if var > 0.0 { r[o] * r[o] / var } else { 0.0 }))
+            .collect()
+    };
+    let (outputs, covariance, predicted) = split(
+        views.len(),
+        &nominal,
+        &cov,
+        &share,
+        &|_| (None, None),
+        &|k| sources[k].label.clone(),
+    );
     Uncertainty {
         method: "linear",
         samples: None,
@@ -588,6 +761,7 @@ fn linear(frame: &Reported, sources: &[Source], m: f64, nominal: [f64; N]) -> Un
         sources: sources.len(),
         outputs,
         covariance,
+        predicted,
         exceed: Vec::new(),
         equal_moments: Vec::new(),
     }
@@ -603,6 +777,12 @@ pub fn output_of(t: Target) -> Option<usize> {
             .position(|e| *e == (a.min(b), a.max(b)))
             .map(|k| 4 + k),
         Target::PrincipalMoment(i) => Some(10 + i),
+        Target::PredictedMass => Some(N),
+        Target::PredictedCenterOfMass(i) => Some(N + 1 + i),
+        Target::PredictedInertiaCom(a, b) => ENTRIES
+            .iter()
+            .position(|e| *e == (a.min(b), a.max(b)))
+            .map(|k| N + 4 + k),
         _ => None,
     }
 }

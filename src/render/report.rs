@@ -471,10 +471,12 @@ fn uncertainty(
     header.push("most of the variance from");
     let header: Vec<String> = header.into_iter().map(String::from).collect();
     let mut cells = Cells::with_capacity(x.outputs.len() * header.len());
-    for o in &x.outputs {
-        let (scale, unit) = if o.quantity == "mass" {
+    let predicted = x.predicted.iter().flat_map(|p| p.outputs.iter());
+    for o in x.outputs.iter().chain(predicted) {
+        let what = o.quantity.trim_start_matches("predicted_");
+        let (scale, unit) = if what == "mass" {
             (u.mass, u.mass_label)
-        } else if o.quantity.starts_with("center") {
+        } else if what.starts_with("center") {
             (u.length, u.length_label)
         } else {
             (u.inertia, u.inertia_label.as_str())
@@ -519,11 +521,19 @@ fn uncertainty(
         );
     }
     for e in &x.exceed {
-        let _ = write!(
-            out,
-            "chance that `{}` (line {}) is outside its [expect] bounds: ",
-            e.quantity, e.line
-        );
+        let _ = if e.quantity == "budget.limit" {
+            write!(
+                out,
+                "chance that the predicted mass exceeds `[budget] limit` (line {}): ",
+                e.line
+            )
+        } else {
+            write!(
+                out,
+                "chance that `{}` (line {}) is outside its [expect] bounds: ",
+                e.quantity, e.line
+            )
+        };
         push_percent(out, Some(e.probability));
         out.push('\n');
     }

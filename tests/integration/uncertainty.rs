@@ -894,3 +894,56 @@ proptest::proptest! {
         }
     }
 }
+
+#[test]
+fn the_predicted_bodys_deviation_grows_each_tolerance_with_its_allowance() {
+    // shapes/smallsat.toml's predicted mass is Σ (1 + gᵢ) mᵢ: each
+    // tolerance's σ grows by its part's allowance (calculated 8 %,
+    // estimated 15 %, measured 1 %; the harness has none).
+    let (c, e, m) = (1.08, 1.15, 1.01);
+    let normal = [
+        c * 0.03 * 3.2,
+        c * 2.0 * 0.03,
+        m * 0.005,
+        e * 0.1,
+        e * 0.1,
+        m * 0.005 * 2.1,
+        c * 0.02 * 1.2,
+        e * 0.05,
+        m * 0.005,
+        e * 0.2,
+    ];
+    let uniform = [c * 0.05, e * 0.1, 0.15];
+    let var: f64 = normal.iter().map(|s| s * s).sum::<f64>()
+        + uniform.iter().map(|a| a * a / 3.0).sum::<f64>();
+    let path = std::path::Path::new("shapes/smallsat.toml");
+    let v = run(path, &["--uncertainty", "linear"]);
+    let p = &v["uncertainty"]["predicted"]["outputs"][0];
+    assert_eq!(p["quantity"], "predicted_mass");
+    let sigma = p["sigma"].as_f64().unwrap();
+    assert!(close(sigma, var.sqrt(), 1e-14), "{sigma} {}", var.sqrt());
+    // The chance of passing the 20 kg limit: the normal tail beyond it.
+    let nominal = p["nominal"].as_f64().unwrap();
+    let limit = v["uncertainty"]["exceed"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["quantity"] == "budget.limit")
+        .unwrap();
+    // Φ(−z) by its asymptotic series φ(z)/z (1 − 1/z² + 3/z⁴ − 15/z⁶),
+    // whose next term (105/z⁸ ≈ 4e-3 at z ≈ 4.1) bounds its error.
+    let z = (20.0 - nominal) / sigma;
+    let phi = (-z * z / 2.0).exp() / (2.0 * std::f64::consts::PI).sqrt();
+    let want = phi / z * (1.0 - 1.0 / z.powi(2) + 3.0 / z.powi(4) - 15.0 / z.powi(6));
+    let got = limit["probability"].as_f64().unwrap();
+    assert!(
+        close(got, want, 105.0 / z.powi(8) + 1e-6),
+        "{got} {want} at z = {z}"
+    );
+    // Monte Carlo agrees within the sampling error of σ (1/√(2N)).
+    let mc = run(path, &["--uncertainty", "montecarlo", "--samples", "20000"]);
+    let s_mc = mc["uncertainty"]["predicted"]["outputs"][0]["sigma"]
+        .as_f64()
+        .unwrap();
+    assert!(close(s_mc, sigma, 0.025), "{s_mc} {sigma}");
+}

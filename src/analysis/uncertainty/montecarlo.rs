@@ -2,8 +2,7 @@
 //! on every run and core), blocks of samples on every core combined in
 //! order, and the statistics of the outputs.
 
-use super::super::summary::Summary;
-use super::{Moving, N, OUTPUTS, Output, Reported, Source, Sums, Uncertainty, top};
+use super::{Moving, N, Source, Sums, Uncertainty, View, W, split};
 use crate::part::{Fixed, physics_in};
 
 /// A uniform number in (0, 1) from a key: the same for the same key on
@@ -26,76 +25,84 @@ fn draw(seed: u64, s: usize, k: usize, uniform_spread: bool) -> f64 {
 
 /// A block's samples' outputs, its sums for the contributions (Σ (out −
 /// nominal) z per source, Σ z last) and its samples left out.
-type Block = (Vec<[f64; N]>, Vec<[f64; N + 1]>, usize);
+type Block = (Vec<[f64; W]>, Vec<[f64; W + 1]>, usize);
 
 /// Samples per block: blocks are drawn on every core and combined in
 /// order, so the result is the same on any number of cores.
 const BLOCK: usize = 256;
 
-/// What a Monte Carlo run samples: the sources, the parts they move and
-/// the sums of the parts they do not.
+/// What a Monte Carlo run samples: the sources, the parts they move, the
+/// sums of the parts they do not, and the bodies (basic, predicted).
 pub(super) struct Sampled<'a> {
     pub(super) sources: &'a [Source],
     pub(super) moving: &'a [Moving],
-    pub(super) fixed: &'a Sums,
+    pub(super) fixed: &'a [Sums; 2],
+    pub(super) views: &'a [View],
+}
+
+/// One sample's outputs of each body, or none when a drawn part is no
+/// body (a size, radius, mass or density below zero, or to zero from
+/// above; an inner radius past the outer).
+fn sample(sampled: &Sampled<'_>, z: &[f64]) -> Option<[f64; W]> {
+    let mut sums = *sampled.fixed;
+    for part in sampled.moving {
+        let mut spec = part.spec.clone();
+        for &(slot, k, rate) in &part.deps {
+            let x = spec.number_mut(slot).expect("a recorded slot exists");
+            let before = *x;
+            *x += rate * z[k];
+            if !slot.is_signed() && (*x < 0.0 || (*x == 0.0 && before > 0.0)) {
+                return None;
+            }
+        }
+        let (m, c, j) = physics_in::<f64, Fixed>(part.shape, &spec, Fixed);
+        let sign = if spec.removed { -1.0 } else { 1.0 };
+        if !(m * sign > 0.0) || (0..3).any(|a| j[a][a] * sign < 0.0) {
+            return None;
+        }
+        let l = &part.linear;
+        let mc = l.dir(c);
+        let j = l.second(&j);
+        for (b, k) in [1.0, part.grow]
+            .into_iter()
+            .enumerate()
+            .take(sampled.views.len())
+        {
+            let mut d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[b][i]);
+            for &(s, v) in &part.shifts {
+                for i in 0..3 {
+                    d[i] += z[s] * v[i];
+                }
+            }
+            sums[b].add_part(k * l.mass * m, d, &j);
+        }
+    }
+    let mut out = [0.0; W];
+    for (b, v) in sampled.views.iter().enumerate() {
+        let c0 = v.c0.map(|x| x * v.reported.length);
+        out[b * N..(b + 1) * N].copy_from_slice(&v.reported.outputs(&sums[b], c0)?);
+    }
+    Some(out)
 }
 
 pub(super) fn monte_carlo_run(
-    frame: &Reported,
     sampled: &Sampled<'_>,
-    summary: &Summary,
-    nominal: [f64; N],
+    nominal: [f64; W],
     (samples, seed): (usize, u64),
-) -> (Uncertainty, Vec<[f64; N]>) {
-    let Sampled {
-        sources,
-        moving,
-        fixed,
-    } = *sampled;
+) -> (Uncertainty, Vec<[f64; W]>) {
+    let sources = sampled.sources;
     let blocks = samples.div_ceil(BLOCK);
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let c0 = summary.center_of_mass;
     let run_block = |b: usize| -> Block {
         let mut outs = Vec::with_capacity(BLOCK);
-        let mut cov = vec![[0.0; N + 1]; sources.len()];
+        let mut cov = vec![[0.0; W + 1]; sources.len()];
         let mut rejected = 0;
         let mut z = vec![0.0; sources.len()];
         for s in b * BLOCK..((b + 1) * BLOCK).min(samples) {
             for (k, src) in sources.iter().enumerate() {
                 z[k] = draw(seed, s, k, src.uniform);
             }
-            let mut sums = *fixed;
-            let mut ok = true;
-            for part in moving {
-                let mut spec = part.spec.clone();
-                for &(slot, k, rate) in &part.deps {
-                    let x = spec.number_mut(slot).expect("a recorded slot exists");
-                    let before = *x;
-                    *x += rate * z[k];
-                    // A size, radius, mass or density drawn below zero
-                    // (or to zero from above) is no body.
-                    if !slot.is_signed() && (*x < 0.0 || (*x == 0.0 && before > 0.0)) {
-                        ok = false;
-                    }
-                }
-                let (m, c, j) = physics_in::<f64, Fixed>(part.shape, &spec, Fixed);
-                // A drawn body that is no body (an inner radius past the
-                // outer, a mass of the wrong sign) is left out, counted.
-                let sign = if spec.removed { -1.0 } else { 1.0 };
-                if !(m * sign > 0.0) || (0..3).any(|a| j[a][a] * sign < 0.0) {
-                    ok = false;
-                }
-                let l = &part.linear;
-                let mc = l.dir(c);
-                let mut d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[i]);
-                for &(k, v) in &part.shifts {
-                    for i in 0..3 {
-                        d[i] += z[k] * v[i];
-                    }
-                }
-                sums.add_part(l.mass * m, d, &l.second(&j));
-            }
-            match ok.then(|| frame.outputs(&sums, c0)).flatten() {
+            match sample(sampled, &z) {
                 Some(o) => {
                     // Σ (out − nominal) z and, in the last column, Σ z:
                     // centred on the nominal value so that the sums keep
@@ -104,7 +111,7 @@ pub(super) fn monte_carlo_run(
                         for (r, (v, n)) in row.iter_mut().zip(o.iter().zip(&nominal)) {
                             *r += (v - n) * z[k];
                         }
-                        row[N] += z[k];
+                        row[W] += z[k];
                     }
                     outs.push(o);
                 }
@@ -139,8 +146,8 @@ pub(super) fn monte_carlo_run(
             }
         }
     });
-    let mut all: Vec<[f64; N]> = Vec::with_capacity(samples);
-    let mut cov = vec![[0.0; N + 1]; sources.len()];
+    let mut all: Vec<[f64; W]> = Vec::with_capacity(samples);
+    let mut cov = vec![[0.0; W + 1]; sources.len()];
     let mut rejected = 0;
     for (outs, c, r) in results.into_iter().flatten() {
         all.extend(outs);
@@ -152,12 +159,16 @@ pub(super) fn monte_carlo_run(
         rejected += r;
     }
     let n = all.len();
-    let mean: [f64; N] =
+    let width = N * sampled.views.len();
+    let mean: [f64; W] =
         std::array::from_fn(|o| all.iter().map(|r| r[o]).sum::<f64>() / n.max(1) as f64);
-    let covariance: Vec<Vec<f64>> = (0..N)
+    let covariance: Vec<Vec<f64>> = (0..W)
         .map(|a| {
-            (0..N)
+            (0..W)
                 .map(|b| {
+                    if a >= width || b >= width {
+                        return 0.0;
+                    }
                     all.iter()
                         .map(|r| (r[a] - mean[a]) * (r[b] - mean[b]))
                         .sum::<f64>()
@@ -166,41 +177,44 @@ pub(super) fn monte_carlo_run(
                 .collect()
         })
         .collect();
-    let outputs = (0..N)
-        .map(|o| {
-            let mut v: Vec<f64> = all.iter().map(|r| r[o]).collect();
-            v.sort_by(f64::total_cmp);
-            let var = covariance[o][o];
-            Output {
-                quantity: OUTPUTS[o],
-                nominal: nominal[o],
-                sigma: var.sqrt(),
-                mean: Some(mean[o]),
-                percentiles: Some([
-                    percentile(&v, 0.05),
-                    percentile(&v, 0.5),
-                    percentile(&v, 0.95),
-                ]),
-                // cov(out, z) estimates ∂out/∂z (E z = 0, var z = 1): its
-                // square over the variance is the source's share.
-                contributors: top(
-                    cov.iter().enumerate().map(|(k, c)| {
-                        // The sample covariance of the output and z.
-                        let g = (c[o] - (mean[o] - nominal[o]) * c[N]) / n.max(1) as f64;
-                        (
-                            k,
-                            if var > 0.0 {
-                                (g * g / var).min(1.0)
-                            } else {
-                                0.0
-                            },
-                        )
-                    }),
-                    &|k| sources[k].label.clone(),
-                ),
-            }
-        })
-        .collect();
+    // cov(out, z) estimates ∂out/∂z (E z = 0, var z = 1): its square over
+    // the variance is the source's share.
+    let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
+        cov.iter()
+            .enumerate()
+            .map(|(k, c)| {
+                let g = (c[o] - (mean[o] - nominal[o]) * c[W]) / n.max(1) as f64;
+                (
+                    k,
+                    if var > 0.0 {
+                        (g * g / var).min(1.0)
+                    } else {
+                        0.0
+                    },
+                )
+            })
+            .collect()
+    };
+    let stats = |o: usize| {
+        let mut v: Vec<f64> = all.iter().map(|r| r[o]).collect();
+        v.sort_by(f64::total_cmp);
+        (
+            Some(mean[o]),
+            Some([
+                percentile(&v, 0.05),
+                percentile(&v, 0.5),
+                percentile(&v, 0.95),
+            ]),
+        )
+    };
+    let (outputs, covariance, predicted) = split(
+        sampled.views.len(),
+        &nominal,
+        &covariance,
+        &share,
+        &stats,
+        &|k| sources[k].label.clone(),
+    );
     let u = Uncertainty {
         method: "montecarlo",
         samples: Some(samples),
@@ -209,6 +223,7 @@ pub(super) fn monte_carlo_run(
         sources: sources.len(),
         outputs,
         covariance,
+        predicted,
         exceed: Vec::new(),
         equal_moments: Vec::new(),
     };
