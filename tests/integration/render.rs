@@ -451,3 +451,61 @@ fn only_draws_the_sub_assembly_in_the_files_frame() {
     let at = on_page(&svg, "front", [10.0, 0.0, 0.0]);
     assert_eq!(pixel(&map, [at[0] + 3.0, at[1] - 3.0]), BLACK);
 }
+
+/// Whether a pixel within one of `p` is near `colour`.
+fn drawn_near(map: &resvg::tiny_skia::Pixmap, p: [f64; 2], colour: [u8; 3]) -> bool {
+    (-1..=1).any(|dx| {
+        (-1..=1).any(|dy| {
+            near(
+                pixel(map, [p[0] + f64::from(dx), p[1] + f64::from(dy)]),
+                colour,
+                60,
+            )
+        })
+    })
+}
+
+#[test]
+fn a_cylinders_rims_and_sides_are_drawn_where_they_project() {
+    // Radius 1, length 4 along z: from the front and the side a 2 × 4
+    // rectangle, from the top a circle of radius 1.
+    let svg = render(
+        "[[part]]\nshape = \"cylinder\"\nradius = 1\nlength = 4\ncenter = [0, 0, 0]\nmass = 1\n",
+        &[],
+    );
+    let map = raster(&svg);
+    let colour = hex("#1b9e77");
+    for (view, points) in [
+        (
+            "front",
+            vec![
+                [1.0, 0.0, 0.5],
+                [-1.0, 0.0, -0.5],
+                [0.3, 0.0, 2.0],
+                [-0.3, 0.0, -2.0],
+            ],
+        ),
+        (
+            "side",
+            vec![[0.0, 1.0, 0.5], [0.0, -1.0, -0.5], [0.0, 0.3, 2.0]],
+        ),
+        ("top", {
+            let h = 0.5f64.sqrt();
+            vec![[h, h, 0.0], [-h, h, 0.0], [-h, -h, 0.0], [h, -h, 0.0]]
+        }),
+    ] {
+        for p in points {
+            let at = on_page(&svg, view, p);
+            assert!(
+                drawn_near(&map, at, colour),
+                "{view}: nothing at {p:?} ({at:?})"
+            );
+        }
+        // Inside the outline, away from the symbols: nothing.
+        let inside = on_page(&svg, view, [0.45, 0.45, 0.9]);
+        assert!(
+            !drawn_near(&map, inside, colour),
+            "{view}: ink inside at {inside:?}"
+        );
+    }
+}

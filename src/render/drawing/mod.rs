@@ -143,7 +143,7 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         frame(&mut s, cell, model.units.length);
         s.push_str("</g>\n");
     }
-    write_legend(&mut s, &legend);
+    write_legend(&mut s, &legend, cells.len() > 1);
     s.push_str("</svg>\n");
     s
 }
@@ -606,14 +606,19 @@ enum Entry {
     Marker(Marker),
 }
 
-fn write_legend(s: &mut String, lines: &[Entry]) {
+fn write_legend(s: &mut String, lines: &[Entry], grid: bool) {
     s.push_str("<g id=\"legend\">\n");
-    let _ = writeln!(
-        s,
-        "<path d=\"M0 {GRID_HEIGHT}h{WIDTH}M{} 0v{GRID_HEIGHT}M0 {}h{WIDTH}\" style=\"stroke:#ccc;stroke-width:1\"/>",
-        WIDTH / 2.0,
-        GRID_HEIGHT / 2.0
-    );
+    // The cells' borders: the grid's middle lines for four views.
+    let _ = write!(s, "<path d=\"M0 {GRID_HEIGHT}h{WIDTH}");
+    if grid {
+        let _ = write!(
+            s,
+            "M{} 0v{GRID_HEIGHT}M0 {}h{WIDTH}",
+            WIDTH / 2.0,
+            GRID_HEIGHT / 2.0
+        );
+    }
+    s.push_str("\" style=\"stroke:#ccc;stroke-width:1\"/>\n");
     for (row, line) in lines.iter().enumerate() {
         let y = GRID_HEIGHT + LINE * (row as f64 + 1.2);
         match line {
