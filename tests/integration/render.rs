@@ -509,3 +509,38 @@ fn a_cylinders_rims_and_sides_are_drawn_where_they_project() {
         );
     }
 }
+
+#[test]
+fn a_boxs_equivalent_ellipsoid_has_its_edges_times_the_root_of_five_twelfths() {
+    // A uniform box a × b × c: I_x = m (b² + c²)/12, so
+    // a_x² = 5/(2m) (I_y + I_z − I_x) = 5 a²/12; seen from the front the
+    // outline's semi-axes are those along x and z.
+    let svg = render(
+        "[[part]]\nshape = \"box\"\nsize = [6, 3, 1.5]\ncenter = [0, 0, 0]\nmass = 2\n",
+        &["--view", "front"],
+    );
+    let (scale, _) = placing(&svg, "front");
+    let doc = roxmltree::Document::parse(&svg).unwrap();
+    let d = doc
+        .descendants()
+        .find(|n| n.attribute("style").is_some_and(|s| s.contains("#444444")))
+        .and_then(|n| n.attribute("d"))
+        .expect("the ellipsoid's path");
+    // M x y A rx ry angle …
+    let arc: Vec<f64> = d
+        .split('A')
+        .nth(1)
+        .unwrap()
+        .split(' ')
+        .take(3)
+        .map(|x| x.parse().unwrap())
+        .collect();
+    let k = (5.0f64 / 12.0).sqrt() * scale;
+    let (rx, rz, angle) = (arc[0], arc[1], arc[2]);
+    assert!((rx - 6.0 * k).abs() < 0.01, "{rx} against {}", 6.0 * k);
+    assert!((rz - 1.5 * k).abs() < 0.01, "{rz} against {}", 1.5 * k);
+    assert!(
+        angle.abs() < 0.01 || (angle.abs() - 180.0).abs() < 0.01,
+        "{angle}"
+    );
+}
