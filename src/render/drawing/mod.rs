@@ -68,55 +68,20 @@ pub const CG_RADIUS: f64 = 7.0;
 
 /// The body drawn: an SVG document.
 pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
-    let body = Body::of(model, summary, o);
+    let survey = Survey::of(model);
+    let body = Body::of(model, summary, o, survey.extent);
     let views: Vec<View> = o.view.map_or(View::ALL.to_vec(), |v| vec![v]);
     let cells = layout(&views, &body);
     let min_scale = cells
         .iter()
         .map(|c| c.projector.scale)
         .fold(f64::INFINITY, f64::min);
+    let drawn = |size: f64| size * min_scale >= 1.0;
+    let small = survey.sizes.iter().filter(|s| !drawn(**s)).count();
+    let legend = legend_lines(&survey, small, &body, o);
 
-    let mut keys = Keys::default();
-    let mut paths: Vec<String> = vec![String::new(); cells.len()];
-    let mut seen = Seen::default();
-    let mut d = String::new();
-    each_part(model, &mut |part, group| {
-        let outline = outline::of(part);
-        let class = keys.index(group.unwrap_or_else(|| part.shape.name()));
-        let cut = if part.spec.removed { " cut" } else { "" };
-        seen.cut |= part.spec.removed;
-        match &outline {
-            Outline::Marker(kind, at) => {
-                seen.markers[*kind as usize] = true;
-                for (cell, out) in cells.iter().zip(&mut paths) {
-                    marker(
-                        out,
-                        *kind,
-                        cell.projector.point(at),
-                        PALETTE[class % 9],
-                        cut,
-                    );
-                }
-            }
-            Outline::Pieces(pieces) => {
-                let [lo, hi] = outline.extent();
-                let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
-                if !(size * min_scale >= 1.0) {
-                    seen.small += 1;
-                    return;
-                }
-                for (cell, out) in cells.iter().zip(&mut paths) {
-                    d.clear();
-                    pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                    let _ = writeln!(out, "<path class=\"c{}{cut}\" d=\"{d}\"/>", class % 9);
-                }
-            }
-        }
-    });
-
-    let legend = legend_lines(&keys, &seen, &body, o);
     let height = GRID_HEIGHT + LINE * (legend.len() as f64 + 2.0);
-    let mut s = String::with_capacity(paths.iter().map(String::len).sum::<usize>() + 8192);
+    let mut s = String::new();
     let _ = writeln!(
         s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\">"
@@ -130,7 +95,11 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         s,
         "<rect width=\"{WIDTH}\" height=\"{height}\" fill=\"#fff\"/>"
     );
-    for (cell, parts) in cells.iter().zip(&paths) {
+    // NOTE: a walk per view, each written straight into the document:
+    // a view's parts held apart until the end would hold the SVG twice
+    // (187 MB for 100,000 parts); a walk costs a small part of that time.
+    let mut d = String::new();
+    for cell in &cells {
         // The view's placing, for tools (and the tests): pixels per
         // length unit, and where the file's origin lies on the page.
         let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
@@ -138,7 +107,24 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         s.push_str("\" data-origin=\"");
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
-        s.push_str(parts);
+        each_part(model, &mut |part, group| {
+            let class = survey.keys.index[group.unwrap_or_else(|| part.shape.name())] % 9;
+            let cut = if part.spec.removed { " cut" } else { "" };
+            let outline = outline::of(part);
+            match &outline {
+                Outline::Marker(kind, at) => {
+                    marker(&mut s, *kind, cell.projector.point(at), PALETTE[class], cut);
+                }
+                Outline::Pieces(pieces) => {
+                    if !drawn(outline.size()) {
+                        return;
+                    }
+                    d.clear();
+                    pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
+                    let _ = writeln!(s, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                }
+            }
+        });
         symbols(&mut s, &cell.projector, &body, o);
         frame(&mut s, cell, model.units.length);
         s.push_str("</g>\n");
@@ -146,6 +132,43 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
     write_legend(&mut s, &legend, cells.len() > 1);
     s.push_str("</svg>\n");
     s
+}
+
+/// What one walk of the parts finds before anything is drawn: the
+/// legend's keys and what it must explain, the box that holds the parts,
+/// and each outline's size (its largest extent), to count those that will
+/// be smaller than a pixel once the scale is known.
+struct Survey {
+    keys: Keys,
+    seen: Seen,
+    extent: [V3; 2],
+    sizes: Vec<f64>,
+}
+
+impl Survey {
+    fn of(model: &Model) -> Survey {
+        let mut v = Survey {
+            keys: Keys::default(),
+            seen: Seen::default(),
+            extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            sizes: Vec::new(),
+        };
+        each_part(model, &mut |part, group| {
+            v.keys.index(group.unwrap_or_else(|| part.shape.name()));
+            v.seen.cut |= part.spec.removed;
+            let outline = outline::of(part);
+            match &outline {
+                Outline::Marker(kind, _) => v.seen.markers[*kind as usize] = true,
+                Outline::Pieces(_) => v.sizes.push(outline.size()),
+            }
+            let [lo, hi] = outline.extent();
+            for k in 0..3 {
+                v.extent[0][k] = v.extent[0][k].min(lo[k]);
+                v.extent[1][k] = v.extent[1][k].max(hi[k]);
+            }
+        });
+        v
+    }
 }
 
 /// Each part in file order with its group (its sub-assemblies' groups,
@@ -197,8 +220,6 @@ struct Seen {
     cut: bool,
     /// Point masses, given inertias (`Marker as usize`).
     markers: [bool; 2],
-    /// Parts smaller than a pixel, not drawn.
-    small: usize,
 }
 
 /// The body's figures in the file's frame and length unit.
@@ -214,7 +235,8 @@ struct Body {
 }
 
 impl Body {
-    fn of(model: &Model, s: &Summary, o: &Options) -> Body {
+    /// The body's symbols and the box that holds them and `parts`.
+    fn of(model: &Model, s: &Summary, o: &Options, parts: [V3; 2]) -> Body {
         let f = model.units.factor(Dim::LENGTH).value();
         let cg = s.center_of_mass.map(|x| x / f);
         // Rows of `axes` are the report axes in the file's frame.
@@ -243,11 +265,8 @@ impl Body {
                 }
             }
         };
-        each_part(model, &mut |part, _| {
-            let [lo, hi] = outline::of(part).extent();
-            add(lo);
-            add(hi);
-        });
+        add(parts[0]);
+        add(parts[1]);
         for (e, k) in &axes {
             add(std::array::from_fn(|j| cg[j] + k * e[j]));
             add(std::array::from_fn(|j| cg[j] - k * e[j]));
@@ -551,8 +570,10 @@ fn frame(s: &mut String, cell: &Cell, unit: &str) {
 
 /// The legend's lines: what each colour is, each symbol, and what was
 /// left out.
-fn legend_lines(keys: &Keys, seen: &Seen, body: &Body, o: &Options) -> Vec<Entry> {
-    let mut e: Vec<Entry> = keys
+fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Options) -> Vec<Entry> {
+    let seen = &survey.seen;
+    let mut e: Vec<Entry> = survey
+        .keys
         .order
         .iter()
         .enumerate()
@@ -583,11 +604,10 @@ fn legend_lines(keys: &Keys, seen: &Seen, body: &Body, o: &Options) -> Vec<Entry
     ))];
     // Four entries a line.
     lines.extend(e.chunks(4).map(|c| Entry::Row(c.to_vec())));
-    if seen.small > 0 {
-        let s = if seen.small == 1 { "" } else { "s" };
+    if small > 0 {
+        let s = if small == 1 { "" } else { "s" };
         lines.push(Entry::Text(format!(
-            "{} part{s} smaller than a pixel not drawn",
-            seen.small
+            "{small} part{s} smaller than a pixel not drawn"
         )));
     }
     lines

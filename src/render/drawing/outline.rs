@@ -101,6 +101,14 @@ impl Outline {
     }
 }
 
+impl Outline {
+    /// Its largest extent along x, y or z (0 for a marker).
+    pub fn size(&self) -> f64 {
+        let [lo, hi] = self.extent();
+        (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max)
+    }
+}
+
 /// The half-extent of the circle c + r(u cos t + v sin t) along each axis,
 /// plus `pad`.
 fn rim_half(r: f64, u: &V3, v: &V3, pad: f64) -> V3 {
