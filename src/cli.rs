@@ -11,9 +11,11 @@ use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod help;
+mod render;
 mod terminal;
 mod uncertainty;
 use help::*;
+pub use render::{RenderArgs, ViewArg};
 pub use terminal::{OutputArgs, Streams};
 
 /// Mass properties of composite rigid bodies described by TOML part files.
@@ -49,6 +51,9 @@ pub enum Command {
     /// Write the body's `<inertial>` for URDF, SDFormat or MJCF, or put it in place of a link's.
     #[command(after_help = EXPORT_HELP)]
     Export(ExportArgs),
+    /// Draw the body as SVG: front, top, side and isometric views, each part's outline, the centre of mass, the principal axes and the inertia ellipsoid.
+    #[command(after_help = RENDER_HELP)]
+    Render(RenderArgs),
     /// List the materials `material = "NAME"` may name, with their densities.
     #[command(after_help = MATERIALS_HELP)]
     Materials(MaterialsArgs),
@@ -622,6 +627,7 @@ impl Cli {
                 link: a.link.clone(),
                 includes: a.includes.includes(),
             }),
+            Command::Render(a) => Request::Render(a.options()),
             Command::Materials(a) => Request::Materials(commands::materials::Options {
                 file: a.file.clone(),
                 format: a.format,

@@ -43,6 +43,16 @@ Examples:
   massprop export arm.toml --to mjcf --principal           diaginertia and quat
   massprop export arm.toml --update robot.urdf --link forearm --dry-run   the change, as a diff";
 
+pub(super) const RENDER_HELP: &str = "\
+Examples:
+  massprop render arm.toml -o arm.svg             four views, legend, centre of mass, axes
+  massprop render sat.toml --view iso > sat.svg   one view, larger
+  massprop render sat.toml --only payload -o payload.svg   one sub-assembly
+  massprop render plate.toml --omega \"0,0,30\" --about 0,0,0   with ω and the reference point
+
+Views: front (x right, z up), top (x right, y up), side (y right, z up), iso (from (1, -1, 1)).
+Colours by `group`, else by shape; cut-outs dashed; a legend names each colour and symbol.";
+
 pub(super) const MATERIALS_HELP: &str = "\
 Examples:
   massprop materials

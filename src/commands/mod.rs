@@ -10,6 +10,7 @@ pub mod diff;
 pub mod export;
 pub mod init;
 pub mod materials;
+pub mod render;
 pub mod report;
 
 use crate::diag::Diagnostic;
@@ -143,6 +144,7 @@ pub enum Request {
     Diff(diff::Options),
     Export(export::Options),
     Materials(materials::Options),
+    Render(render::Options),
     Init(init::Options),
     /// A text made before the run, printed as it is: `completions` and
     /// `man` from the command line's own definition (`cli` makes them, the
@@ -160,6 +162,7 @@ impl Request {
             Request::Check(o) => o.output.as_deref(),
             Request::Diff(o) => o.output.as_deref(),
             Request::Export(o) => o.output.as_deref(),
+            Request::Render(o) => o.output.as_deref(),
             Request::Materials(_) | Request::Init(_) | Request::Text(_) => None,
         };
         o.filter(|o| *o != "-")
@@ -174,6 +177,7 @@ impl Request {
             Request::Check(o) => o.paths.iter().filter_map(|p| p.to_str()).collect(),
             Request::Diff(o) => vec![&o.old, &o.new],
             Request::Export(o) => vec![&o.file],
+            Request::Render(o) => vec![&o.file],
             Request::Materials(_) | Request::Init(_) | Request::Text(_) => Vec::new(),
         }
     }
@@ -273,6 +277,7 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
         Request::Diff(o) => diff::run(o, terminal)?,
         Request::Export(o) => export::run(o, terminal)?,
         Request::Materials(o) => materials::run(o, terminal)?,
+        Request::Render(o) => render::run(o, terminal)?,
         Request::Init(o) => init::run(o)?,
         Request::Text(text) => Outcome {
             stdout: Stdout::Text(text.clone()),

@@ -302,6 +302,15 @@ impl Mesh {
                     + 4.0 * super::unit_of::<DD>() * p.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
                 ..bound
             },
+            extent: self.vertices.iter().fold(
+                [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+                |[lo, hi], v| {
+                    [
+                        std::array::from_fn(|k| lo[k].min(v[k])),
+                        std::array::from_fn(|k| hi[k].max(v[k])),
+                    ]
+                },
+            ),
         }
     }
 }

@@ -119,6 +119,9 @@ pub struct MeshBody {
     /// How far each stored value may lie from the exact integral of the
     /// file's numbers: absolute, in the file's units.
     pub bound: Bound,
+    /// The box of its vertices, least then greatest coordinates, in the
+    /// file's coordinates (`render` draws a mesh as this box).
+    pub extent: [[f64; 3]; 2],
 }
 
 /// Absolute error bounds of a `MeshBody`'s values.
@@ -170,6 +173,9 @@ impl MeshBody {
     pub fn reflected(&self, axis: usize) -> MeshBody {
         let mut m = self.clone();
         m.centroid[axis] = -m.centroid[axis];
+        let [lo, hi] = self.extent;
+        m.extent[0][axis] = -hi[axis];
+        m.extent[1][axis] = -lo[axis];
         for k in 0..3 {
             if k != axis {
                 m.second[axis][k] = -m.second[axis][k];

@@ -5,7 +5,8 @@
 //!   place a value's look is decided;
 //! - `grid`: the one table writer;
 //! - one module per command (`report`, `check`, `diff`, `materials`), each
-//!   with a `table` and a `json` renderer that return strings.
+//!   with a `table` and a `json` renderer that return strings;
+//! - `drawing`: `render`'s SVG of the body (its own output: no `Format`).
 //!
 //! `Format` is matched in one place, `render`: a command hands over its
 //! result as an `Output` and never looks at the format. How the text is
@@ -16,6 +17,7 @@ pub mod budget;
 pub mod check;
 pub mod ci;
 pub mod diff;
+pub mod drawing;
 pub mod format;
 pub mod grid;
 pub mod inertial;

@@ -171,10 +171,42 @@ pub struct ShapeInfo {
     /// How many of the three local second moments are non-zero (0 where
     /// the model checks the shape's own way: a triangle, a given tensor).
     pub nonzero_moments: usize,
+    /// How `render` draws it (`render::drawing::outline`).
+    pub drawn: Drawn,
     /// What makes it degenerate, for the docs and messages.
     pub degenerate: &'static str,
     /// The help shown with an error about its keys.
     pub help: &'static str,
+}
+
+/// How `render` draws a shape (`render::drawing::outline`) from its
+/// placed dimensions (`part::Place`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Drawn {
+    /// The convex hull of its corners (box, plate).
+    Corners,
+    /// Its segment along local z (rod).
+    Segment,
+    /// Its rims at ±L/2 and the lines tangent to both (cylinder, cone).
+    Frustum,
+    /// Its rims in the local x–y plane (disk).
+    Rims,
+    /// Its outline circle (sphere).
+    Ball,
+    /// Its rim and its dome's outline (hemisphere).
+    Dome,
+    /// Its tube's outline (torus).
+    Ring,
+    /// Its three edges (triangle).
+    Edges,
+    /// Its end polygons and the edges between them (prism).
+    Extruded,
+    /// The box of its vertices (mesh).
+    MeshBox,
+    /// A dot (point mass).
+    Point,
+    /// A square with its diagonals (a given inertia).
+    Given,
 }
 
 /// The solid that a thin plate or slender rod idealises.
@@ -212,6 +244,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Corners,
         degenerate: "a zero or non-perpendicular edge",
         help: "a box takes `mass` or `density`, and `size` with `center` (and optional `rotation`), or `corner` with three `edges`",
     },
@@ -237,6 +270,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Thickness,
         real_size: Some(("thickness", Solid::Box)),
         nonzero_moments: 2,
+        drawn: Drawn::Corners,
         degenerate: "a zero or non-perpendicular edge",
         help: "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`; optionally its real `thickness`",
     },
@@ -263,6 +297,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Section,
         real_size: Some(("diameter", Solid::Cylinder)),
         nonzero_moments: 1,
+        drawn: Drawn::Segment,
         degenerate: "`to` equal to `from`",
         help: "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`; optionally its real `diameter`",
     },
@@ -289,6 +324,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Frustum,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
         help: "a cylinder takes `mass` or `density`, `radius` (or `diameter`) and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
     },
@@ -315,6 +351,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Thickness,
         real_size: None,
         nonzero_moments: 2,
+        drawn: Drawn::Rims,
         degenerate: "a density on a thin ring (`inner_radius` = `radius`)",
         help: "a disk takes `mass` or `areal_density`, and `radius` or `diameter` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
     },
@@ -340,6 +377,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Ball,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
         help: "a sphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     },
@@ -361,6 +399,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Thickness,
         real_size: None,
         nonzero_moments: 0,
+        drawn: Drawn::Edges,
         degenerate: "(nearly) collinear vertices",
         help: "a triangle takes `mass` or `areal_density`, and three `vertices` = [[x, y, z], [x, y, z], [x, y, z]] in the file's frame",
     },
@@ -375,6 +414,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::None,
         real_size: None,
         nonzero_moments: 0,
+        drawn: Drawn::Point,
         degenerate: "none",
         help: "a point takes `mass` and `center`",
     },
@@ -391,6 +431,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::None,
         real_size: None,
         nonzero_moments: 0,
+        drawn: Drawn::Given,
         degenerate: "a tensor that is not symmetric or not physically valid",
         help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
     },
@@ -419,6 +460,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Frustum,
         degenerate: "a zero `length` (a disk), both radii 0, or a density on a thin shell (each inner radius equal to its outer)",
         help: "a cone takes `mass` or `density`, `radius` (or `diameter`) at its base, `top_radius` (0 for a full cone) and `length` along its local z, with `center` at the middle of its axis (and optional `rotation`); `inner_radius` and `top_inner_radius` make it hollow",
     },
@@ -443,6 +485,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Ring,
         degenerate: "a `tube_radius` above `radius` (self-intersecting), or a density on a thin shell (`inner_tube_radius` = `tube_radius`)",
         help: "a torus takes `mass` or `density`, `radius` (its axis to the tube's centre) and `tube_radius` (at most `radius`), with `center` (and optional `rotation`; its axis is local z); an `inner_tube_radius` makes the tube hollow",
     },
@@ -468,6 +511,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
+        drawn: Drawn::Dome,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
         help: "a hemisphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`, the centre of its sphere (flat face in its local x–y plane, dome toward +z; optional `rotation`); an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     },
@@ -484,6 +528,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 0,
+        drawn: Drawn::Extruded,
         degenerate: "fewer than 3 vertices, a repeated vertex, crossing edges or no area",
         help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
     },
@@ -510,6 +555,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 0,
+        drawn: Drawn::MeshBox,
         degenerate: "an open, inconsistently oriented or inside-out surface, or a triangle of zero area",
         help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     },

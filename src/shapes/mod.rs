@@ -42,8 +42,8 @@ mod quadrature;
 pub mod torus;
 
 pub use info::{
-    DensityKind, Dims, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, SHAPES, ShapeInfo, Solid,
-    Spanned,
+    DensityKind, Dims, Drawn, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, SHAPES, ShapeInfo,
+    Solid, Spanned,
 };
 
 use crate::numeric::Real;

@@ -27,6 +27,7 @@ mod package;
 mod params;
 mod physics;
 mod pipes;
+mod render;
 mod robots;
 mod robots_hostile;
 mod schema;

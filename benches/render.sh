@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Benchmark (issue 19, item 3): `massprop render` of a generated part file
+# of 100,000 parts, end to end (read, compose, draw four views, write the
+# SVG), beside `massprop report` of the same file for scale.
+#
+#   bash benches/render.sh              # 100,000 parts
+#   PARTS=20000 bash benches/render.sh
+#
+# Target: about two seconds (release build). Generates (python,
+# deterministic, fixed seed) boxes, plates, rods, cylinders, tubes, disks,
+# spheres, cones, tori and point masses, 1 to 60 mm, in a 2 m cube, units
+# mm and kg (at the drawing's scale, ~0.17 px/mm, the parts under ~6 mm
+# are smaller than a pixel: counted, not drawn); checks that render exits
+# 0 and that its legend counts them; times both commands with hyperfine
+# (median of RUNS) and the render's peak RSS with GNU time. Everything
+# but the cargo build lives in a temporary directory, removed on exit.
+#
+# Needs python3, hyperfine and GNU time (the latter two installed with
+# apt-get when missing, as root). Environment: PARTS (default 100000),
+# RUNS (default 5), WARMUP (default 1).
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+. "$here/lib.sh"
+need_bench_tools "the part file"
+PARTS="${PARTS:-100000}"
+RUNS="${RUNS:-5}"
+WARMUP="${WARMUP:-1}"
+tmp="$(mktemp -d "${TMPDIR:-/tmp}/massprop-render.XXXXXX")"
+trap 'rm -rf "$tmp"' EXIT
+cargo build --release --locked --quiet --manifest-path "$here/../Cargo.toml" --bin massprop
+cp "$here/../target/release/massprop" "$tmp/massprop"
+python3 - "$tmp/parts.toml" "$PARTS" << 'PY'
+import random, sys
+out, n = sys.argv[1], int(sys.argv[2])
+rng = random.Random(20261127)
+def v(xs): return "[" + ", ".join("%.6g" % x for x in xs) + "]"
+def at(): return v([rng.uniform(-1000, 1000) for _ in range(3)])
+def turn(): return "{ axis = %s, degrees = %.6g }" % (v([rng.gauss(0, 1) for _ in range(3)]), rng.uniform(0, 360))
+def size(): return rng.uniform(1, 60)
+lines = ['name = "generated"', 'units = { length = "mm", mass = "kg" }']
+for j in range(n):
+    s = rng.choice(["box", "plate", "rod", "cylinder", "tube", "disk", "sphere", "cone", "torus", "point"])
+    p = ["", "[[part]]", 'mass = %.6g' % rng.uniform(0.001, 2), 'group = "g%d"' % (j % 7)]
+    if s == "box": p += ['shape = "box"', "size = " + v([size() for _ in range(3)]), "center = " + at(), "rotation = " + turn()]
+    elif s == "plate": p += ['shape = "plate"', "size = " + v([size(), size()]), "center = " + at(), "rotation = " + turn()]
+    elif s == "rod": p += ['shape = "rod"', "length = %.6g" % size(), "center = " + at(), "rotation = " + turn()]
+    elif s in ("cylinder", "tube"):
+        r = size()
+        p += ['shape = "cylinder"', "radius = %.6g" % r, "length = %.6g" % size(), "center = " + at(), "rotation = " + turn()]
+        if s == "tube": p += ["inner_radius = %.6g" % (0.8 * r)]
+    elif s == "disk": p += ['shape = "disk"', "radius = %.6g" % size(), "center = " + at(), "rotation = " + turn()]
+    elif s == "sphere": p += ['shape = "sphere"', "radius = %.6g" % size(), "center = " + at()]
+    elif s == "cone": p += ['shape = "cone"', "radius = %.6g" % size(), "top_radius = 0", "length = %.6g" % size(), "center = " + at(), "rotation = " + turn()]
+    elif s == "torus":
+        r = size()
+        p += ['shape = "torus"', "radius = %.6g" % r, "tube_radius = %.6g" % (0.3 * r), "center = " + at(), "rotation = " + turn()]
+    else: p += ['shape = "point"', "center = " + at()]
+    lines += p
+open(out, "w").write("\n".join(lines) + "\n")
+PY
+"$tmp/massprop" render "$tmp/parts.toml" -o "$tmp/parts.svg"
+grep -o '[0-9]* parts smaller than a pixel not drawn' "$tmp/parts.svg" >&2 || true
+echo "SVG: $(du -h "$tmp/parts.svg" | cut -f1)" >&2
+hyperfine --runs "$RUNS" --warmup "$WARMUP" --export-json "$tmp/times.json" \
+    "$tmp/massprop render $tmp/parts.toml -o $tmp/out.svg" \
+    "$tmp/massprop report $tmp/parts.toml -o $tmp/out.txt"
+python3 - "$tmp/times.json" << 'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))["results"]
+print("render median %.2f s, report median %.2f s" % (r[0]["median"], r[1]["median"]))
+PY
+rss=()
+for _ in 1 2 3; do
+    rss+=("$(/usr/bin/time -f '%M' "$tmp/massprop" render "$tmp/parts.toml" -o "$tmp/out.svg" 2>&1 > /dev/null | tail -1)")
+done
+printf '%s\n' "${rss[@]}" | sort -n | sed -n 2p | awk '{ printf "render peak RSS (median of 3): %.0f MB\n", $1 / 1024 }'

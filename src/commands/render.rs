@@ -1,0 +1,40 @@
+//! `massprop render FILE`: the body drawn as SVG (docs/render.md).
+
+use super::Outcome;
+use crate::analysis::{self, Settings};
+use crate::diag::Diagnostic;
+use crate::render::drawing::{self, View};
+
+#[derive(Debug, Clone, Default)]
+pub struct Options {
+    /// The part file; `-` is standard input.
+    pub file: String,
+    /// `-o FILE`.
+    pub output: Option<String>,
+    /// `--view`: one view, else all four.
+    pub view: Option<View>,
+    /// `--only`, `--about`, `--omega`, the includes: as `report`'s.
+    pub settings: Settings,
+}
+
+pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
+    let loaded = analysis::load(&o.file, &o.settings)?;
+    let s = &loaded.summary;
+    // Report axes to the file's frame: their rows are they in it.
+    let to_file = |v: [f64; 3]| std::array::from_fn(|j| (0..3).map(|k| v[k] * s.axes[k][j]).sum());
+    let f = loaded.model.units.factor(crate::units::Dim::LENGTH).value();
+    let title = s.name.clone().unwrap_or_else(|| loaded.source.name.clone());
+    let options = drawing::Options {
+        view: o.view,
+        about: loaded
+            .analysis
+            .about
+            .map(|_| s.reference_point.map(|x| x / f)),
+        omega: s.omega.map(to_file),
+        title,
+    };
+    let svg = drawing::svg(&loaded.model, s, &options);
+    let mut out = Outcome::ok(svg, super::files_of(&loaded));
+    out.stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
+    Ok(out)
+}

@@ -1,0 +1,745 @@
+//! `massprop render`'s drawing: the body's parts, its centre of mass, its
+//! principal axes and its equivalent inertia ellipsoid, in three
+//! orthographic views and an isometric one, as one SVG document
+//! (docs/render.md).
+//!
+//! - `outline`: each part's outline in 3-D (the one place a shape's look
+//!   is decided);
+//! - `view`: the views, the projection, each piece's silhouette as path
+//!   data.
+//!
+//! Deterministic: numbers to two decimals in pixels, parts in file order,
+//! nothing from the clock or the machine; a snapshot test pins the
+//! README's images byte for byte.
+
+pub mod outline;
+pub mod view;
+
+use crate::analysis::summary::Summary;
+use crate::model::Model;
+use crate::model::walk::Event;
+use crate::units::Dim;
+use outline::{Marker, Outline, V3};
+use std::collections::HashMap;
+use std::fmt::Write as _;
+pub use view::View;
+use view::{Projector, num, pair};
+
+/// What to draw besides the body.
+#[derive(Debug, Clone, Default)]
+pub struct Options {
+    /// One view (`--view`), else all four.
+    pub view: Option<View>,
+    /// The reference point, file frame and length unit (`about`), if given.
+    pub about: Option<V3>,
+    /// ω in the file's frame (rad/s), if given.
+    pub omega: Option<V3>,
+    /// The title: the file's or the sub-assembly's name, or the file.
+    pub title: String,
+}
+
+/// The page: 1200 px wide; four views in a 2×2 grid of 600 × 400 cells
+/// (one view: one 1200 × 800 cell), the legend below.
+const WIDTH: f64 = 1200.0;
+const GRID_HEIGHT: f64 = 800.0;
+/// Room in a cell: at each side, above (the label) and below (the scale
+/// bar).
+const SIDE: f64 = 30.0;
+const ABOVE: f64 = 30.0;
+const BELOW: f64 = 40.0;
+/// The legend's lines and columns.
+const LINE: f64 = 18.0;
+const COLUMN: f64 = 300.0;
+
+/// The colours of the groups (or shapes), in order of first appearance,
+/// repeated past the ninth: each at least 3:1 against white (ColorBrewer's
+/// Dark2 and two more). The principal axes, the centre of mass and the
+/// ellipsoid have their own, outside this list.
+const PALETTE: [&str; 9] = [
+    "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#b8860b", "#a6761d", "#666666",
+    "#1f78b4",
+];
+/// I1, I2, I3.
+pub const AXIS_COLOURS: [&str; 3] = ["#e00000", "#00a000", "#0000e0"];
+const ELLIPSOID_COLOUR: &str = "#444444";
+const OMEGA_COLOUR: &str = "#8a2be2";
+/// The centre-of-mass symbol's radius, px.
+pub const CG_RADIUS: f64 = 7.0;
+
+/// The body drawn: an SVG document.
+pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
+    let survey = Survey::of(model);
+    let body = Body::of(model, summary, o, survey.extent);
+    let views: Vec<View> = o.view.map_or(View::ALL.to_vec(), |v| vec![v]);
+    let cells = layout(&views, &body);
+    let min_scale = cells
+        .iter()
+        .map(|c| c.projector.scale)
+        .fold(f64::INFINITY, f64::min);
+    let drawn = |size: f64| size * min_scale >= 1.0;
+    let small = survey.sizes.iter().filter(|s| !drawn(**s)).count();
+    let legend = legend_lines(&survey, small, &body, o);
+
+    let height = GRID_HEIGHT + LINE * (legend.len() as f64 + 2.0);
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\">"
+    );
+    s.push_str("<style>\npath{fill:none;stroke-width:1.2;stroke-linejoin:round}\n.cut{stroke-dasharray:5 3}\ntext{font-family:sans-serif;font-size:13px;fill:#000}\n");
+    for (k, c) in PALETTE.iter().enumerate() {
+        let _ = writeln!(s, ".c{k}{{stroke:{c}}}");
+    }
+    s.push_str("</style>\n");
+    let _ = writeln!(
+        s,
+        "<rect width=\"{WIDTH}\" height=\"{height}\" fill=\"#fff\"/>"
+    );
+    // NOTE: a walk per view, each written straight into the document:
+    // a view's parts held apart until the end would hold the SVG twice
+    // (187 MB for 100,000 parts); a walk costs a small part of that time.
+    let mut d = String::new();
+    for cell in &cells {
+        // The view's placing, for tools (and the tests): pixels per
+        // length unit, and where the file's origin lies on the page.
+        let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
+        let _ = write!(s, "{}", cell.projector.scale);
+        s.push_str("\" data-origin=\"");
+        let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
+        s.push_str("\">\n");
+        each_part(model, &mut |part, group| {
+            let class = survey.keys.index[group.unwrap_or_else(|| part.shape.name())] % 9;
+            let cut = if part.spec.removed { " cut" } else { "" };
+            let outline = outline::of(part);
+            match &outline {
+                Outline::Marker(kind, at) => {
+                    marker(&mut s, *kind, cell.projector.point(at), PALETTE[class], cut);
+                }
+                Outline::Pieces(pieces) => {
+                    if !drawn(outline.size()) {
+                        return;
+                    }
+                    d.clear();
+                    pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
+                    let _ = writeln!(s, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                }
+            }
+        });
+        symbols(&mut s, &cell.projector, &body, o);
+        frame(&mut s, cell, model.units.length);
+        s.push_str("</g>\n");
+    }
+    write_legend(&mut s, &legend, cells.len() > 1);
+    s.push_str("</svg>\n");
+    s
+}
+
+/// What one walk of the parts finds before anything is drawn: the
+/// legend's keys and what it must explain, the box that holds the parts,
+/// and each outline's size (its largest extent), to count those that will
+/// be smaller than a pixel once the scale is known.
+struct Survey {
+    keys: Keys,
+    seen: Seen,
+    extent: [V3; 2],
+    sizes: Vec<f64>,
+}
+
+impl Survey {
+    fn of(model: &Model) -> Survey {
+        let mut v = Survey {
+            keys: Keys::default(),
+            seen: Seen::default(),
+            extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            sizes: Vec::new(),
+        };
+        each_part(model, &mut |part, group| {
+            v.keys.index(group.unwrap_or_else(|| part.shape.name()));
+            v.seen.cut |= part.spec.removed;
+            let outline = outline::of(part);
+            match &outline {
+                Outline::Marker(kind, _) => v.seen.markers[*kind as usize] = true,
+                Outline::Pieces(_) => v.sizes.push(outline.size()),
+            }
+            let [lo, hi] = outline.extent();
+            for k in 0..3 {
+                v.extent[0][k] = v.extent[0][k].min(lo[k]);
+                v.extent[1][k] = v.extent[1][k].max(hi[k]);
+            }
+        });
+        v
+    }
+}
+
+/// Each part in file order with its group (its sub-assemblies' groups,
+/// then its own, joined by ` / `), if any.
+fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>)) {
+    let mut stack: Vec<Option<Vec<String>>> = Vec::new();
+    let mut path = String::new();
+    model.each_event(&mut |e| match e {
+        Event::Enter(inc) => stack.push(inc.tag.as_ref().and_then(|t| t.group.clone())),
+        Event::Exit => {
+            stack.pop();
+        }
+        Event::Part(leaf) => {
+            path.clear();
+            let own = leaf.tag.and_then(|t| t.group.as_ref());
+            for name in stack.iter().flatten().chain(own).flatten() {
+                if !path.is_empty() {
+                    path.push_str(" / ");
+                }
+                path.push_str(name);
+            }
+            f(leaf.part, (!path.is_empty()).then_some(path.as_str()));
+        }
+    });
+}
+
+/// The legend's keys, in order of first appearance.
+#[derive(Default)]
+struct Keys {
+    order: Vec<String>,
+    index: HashMap<String, usize>,
+}
+
+impl Keys {
+    fn index(&mut self, key: &str) -> usize {
+        if let Some(&k) = self.index.get(key) {
+            return k;
+        }
+        let k = self.order.len();
+        self.order.push(key.to_string());
+        self.index.insert(key.to_string(), k);
+        k
+    }
+}
+
+/// What the legend must explain.
+#[derive(Default)]
+struct Seen {
+    cut: bool,
+    /// Point masses, given inertias (`Marker as usize`).
+    markers: [bool; 2],
+}
+
+/// The body's figures in the file's frame and length unit.
+struct Body {
+    cg: V3,
+    /// Principal axes (unit, file frame), each with its radius of gyration.
+    axes: [(V3, f64); 3],
+    /// The equivalent ellipsoid's semi-axes along `axes`.
+    semi: [f64; 3],
+    /// The box that holds everything drawn.
+    extent: [V3; 2],
+    unit: &'static str,
+}
+
+impl Body {
+    /// The body's symbols and the box that holds them and `parts`.
+    fn of(model: &Model, s: &Summary, o: &Options, parts: [V3; 2]) -> Body {
+        let f = model.units.factor(Dim::LENGTH).value();
+        let cg = s.center_of_mass.map(|x| x / f);
+        // Rows of `axes` are the report axes in the file's frame.
+        let to_file = |v: &[f64; 3]| -> V3 {
+            std::array::from_fn(|j| (0..3).map(|k| v[k] * s.axes[k][j]).sum())
+        };
+        let axes = std::array::from_fn(|i| {
+            (
+                to_file(&s.principal_axes[i]),
+                finite(s.radii_of_gyration[i] / f),
+            )
+        });
+        // The uniform solid ellipsoid of the same mass and principal
+        // moments: I_i = m/5 (a_j² + a_k²), so a_i² = 5/(2m) (I_j + I_k − I_i).
+        let m = s.mass;
+        let semi = std::array::from_fn(|i| {
+            let [a, b, c] = [i, (i + 1) % 3, (i + 2) % 3].map(|k| s.principal_moments[k]);
+            finite((5.0 / (2.0 * m) * (b + c - a)).max(0.0).sqrt() / f)
+        });
+        let mut extent = [cg, cg];
+        let mut add = |p: V3| {
+            for k in 0..3 {
+                if p[k].is_finite() {
+                    extent[0][k] = extent[0][k].min(p[k]);
+                    extent[1][k] = extent[1][k].max(p[k]);
+                }
+            }
+        };
+        add(parts[0]);
+        add(parts[1]);
+        for (e, k) in &axes {
+            add(std::array::from_fn(|j| cg[j] + k * e[j]));
+            add(std::array::from_fn(|j| cg[j] - k * e[j]));
+        }
+        let [lo, hi] = Outline::Pieces(vec![ellipsoid(cg, &axes, &semi)]).extent();
+        add(lo);
+        add(hi);
+        if let Some(p) = o.about {
+            add(p);
+        }
+        Body {
+            cg,
+            axes,
+            semi,
+            extent,
+            unit: model.units.length,
+        }
+    }
+}
+
+/// The equivalent ellipsoid about `cg`: semi-axes `semi` along the
+/// principal axes.
+fn ellipsoid(cg: V3, axes: &[(V3, f64); 3], semi: &[f64; 3]) -> outline::Piece {
+    outline::Piece::Ellipsoid {
+        c: cg,
+        m: std::array::from_fn(|i| axes[i].0.map(|x| x * semi[i])),
+    }
+}
+
+fn finite(x: f64) -> f64 {
+    if x.is_finite() { x } else { 0.0 }
+}
+
+/// A view placed on the page.
+struct Cell {
+    view: View,
+    /// Its top-left corner and size, px.
+    at: [f64; 2],
+    size: [f64; 2],
+    projector: Projector,
+}
+
+/// Where each view goes and its scale: the orthographic views share one
+/// scale, the largest at which each fits its cell; the isometric view is
+/// fitted alone. Third-angle: top above front, side right of front, so
+/// that x lines up between top and front and z between front and side.
+fn layout(views: &[View], body: &Body) -> Vec<Cell> {
+    let [lo, hi] = body.extent;
+    let mid: V3 = std::array::from_fn(|k| (lo[k] + hi[k]) / 2.0);
+    let mut half: V3 = std::array::from_fn(|k| (hi[k] - lo[k]) / 2.0);
+    if half.iter().all(|h| *h <= 0.0) {
+        half = [0.5; 3]; // a single point: one length unit across.
+    }
+    let single = views.len() == 1;
+    let size = if single {
+        [WIDTH, GRID_HEIGHT]
+    } else {
+        [WIDTH / 2.0, GRID_HEIGHT / 2.0]
+    };
+    let room = [size[0] - 2.0 * SIDE, size[1] - ABOVE - BELOW];
+    // Half the width and height of the box seen in a view.
+    let seen = |v: View| {
+        v.plane()
+            .map(|d| (0..3).map(|k| d[k].abs() * half[k]).sum::<f64>())
+    };
+    let fit = |v: View| {
+        let [w, h] = seen(v);
+        let sx = if w > 0.0 {
+            room[0] / (2.0 * w)
+        } else {
+            f64::INFINITY
+        };
+        let sy = if h > 0.0 {
+            room[1] / (2.0 * h)
+        } else {
+            f64::INFINITY
+        };
+        sx.min(sy)
+    };
+    let ortho = views
+        .iter()
+        .filter(|v| **v != View::Iso)
+        .map(|v| fit(*v))
+        .fold(f64::INFINITY, f64::min);
+    views
+        .iter()
+        .map(|&view| {
+            let pos = match (single, view) {
+                (true, _) | (false, View::Top) => [0.0, 0.0],
+                (false, View::Iso) => [size[0], 0.0],
+                (false, View::Front) => [0.0, size[1]],
+                (false, View::Side) => [size[0], size[1]],
+            };
+            let scale = if view == View::Iso || !ortho.is_finite() {
+                fit(view)
+            } else {
+                ortho
+            };
+            let scale = if scale.is_finite() { scale } else { 1.0 };
+            let [r, u] = view.plane();
+            let centre = [
+                pos[0] + SIDE + room[0] / 2.0,
+                pos[1] + ABOVE + room[1] / 2.0,
+            ];
+            let dot = |a: &V3| (0..3).map(|k| a[k] * mid[k]).sum::<f64>();
+            Cell {
+                view,
+                at: pos,
+                size,
+                projector: Projector {
+                    plane: [r, u],
+                    scale,
+                    at: [centre[0] - scale * dot(&r), centre[1] + scale * dot(&u)],
+                },
+            }
+        })
+        .collect()
+}
+
+/// A point mass (a filled dot) or a given inertia (a square with its
+/// diagonals), 3.5 px across its centre.
+fn marker(out: &mut String, kind: Marker, p: [f64; 2], colour: &str, cut: &str) {
+    let mut d = String::new();
+    match kind {
+        Marker::Point => {
+            circle(out, p, 3.5, &format!("fill:{colour}"));
+            return;
+        }
+        Marker::Inertia => {
+            for (dx, dy) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
+                d.push(if dx < 0.0 && dy < 0.0 { 'M' } else { 'L' });
+                num(&mut d, p[0] + 4.0 * dx);
+                d.push(' ');
+                num(&mut d, p[1] + 4.0 * dy);
+            }
+            d.push('Z');
+            for (a, b) in [((-1.0, -1.0), (1.0, 1.0)), ((1.0, -1.0), (-1.0, 1.0))] {
+                d.push('M');
+                num(&mut d, p[0] + 4.0 * a.0);
+                d.push(' ');
+                num(&mut d, p[1] + 4.0 * a.1);
+                d.push('L');
+                num(&mut d, p[0] + 4.0 * b.0);
+                d.push(' ');
+                num(&mut d, p[1] + 4.0 * b.1);
+            }
+        }
+    }
+    let _ = writeln!(
+        out,
+        "<path class=\"{}\" style=\"stroke:{colour}\" d=\"{d}\"/>",
+        cut.trim()
+    );
+}
+
+/// The ellipsoid, the principal axes, ω, the reference point and the
+/// centre of mass (on top), in one view.
+fn symbols(s: &mut String, p: &Projector, body: &Body, o: &Options) {
+    let mut d = String::new();
+    p.piece(&ellipsoid(body.cg, &body.axes, &body.semi), &mut d);
+    let _ = writeln!(
+        s,
+        "<path d=\"{d}\" style=\"stroke:{ELLIPSOID_COLOUR};stroke-width:1;stroke-dasharray:2 3\"/>"
+    );
+    let c = p.point(&body.cg);
+    for (i, (e, k)) in body.axes.iter().enumerate() {
+        let tip = p.point(&std::array::from_fn(|j| body.cg[j] + k * e[j]));
+        let colour = AXIS_COLOURS[i];
+        s.push_str("<path d=\"M");
+        pair(s, c);
+        s.push('L');
+        pair(s, tip);
+        let _ = writeln!(s, "\" style=\"stroke:{colour};stroke-width:2.5\"/>");
+        text(
+            s,
+            [tip[0] + 4.0, tip[1] - 4.0],
+            &format!("I{}", i + 1),
+            Some(colour),
+        );
+    }
+    if let Some(w) = o.omega {
+        omega(s, p, o.about.unwrap_or(body.cg), w, body);
+    }
+    if let Some(a) = o.about {
+        let q = p.point(&a);
+        s.push_str("<path d=\"M");
+        pair(s, [q[0] - 6.0, q[1]]);
+        s.push_str("h12M");
+        pair(s, [q[0], q[1] - 6.0]);
+        s.push_str("v12\" style=\"stroke:#000;stroke-width:1.5\"/>\n");
+        text(s, [q[0] + 5.0, q[1] + 14.0], "ref", None);
+    }
+    cg_symbol(s, c);
+}
+
+/// The centre-of-mass symbol: a circle, its upper-right and lower-left
+/// quarters filled.
+fn cg_symbol(s: &mut String, c: [f64; 2]) {
+    let r = CG_RADIUS;
+    circle(s, c, r, "fill:#fff;stroke:#000;stroke-width:1.5");
+    s.push_str("<path d=\"M");
+    pair(s, c);
+    // Right, then up (page y down): arcs against the clock on the page.
+    let _ = write!(s, "h{r}a{r} {r} 0 0 0 -{r} -{r}ZM");
+    pair(s, c);
+    let _ = writeln!(
+        s,
+        "h-{r}a{r} {r} 0 0 0 {r} {r}Z\" style=\"fill:#000;stroke:none\"/>"
+    );
+}
+
+/// ω: an arrow from `from`, a third of the body's size long; seen along
+/// its line, ⊙ (toward the viewer) or ⊗.
+fn omega(s: &mut String, p: &Projector, from: V3, w: V3, body: &Body) {
+    let n = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
+    if !(n > 0.0) {
+        return;
+    }
+    let [lo, hi] = body.extent;
+    let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    let len = if size > 0.0 { size / 3.0 } else { 1.0 };
+    let a = p.point(&from);
+    let v = p.vector(&w.map(|x| x / n * len));
+    let l = v[0].hypot(v[1]);
+    let style = format!("style=\"stroke:{OMEGA_COLOUR};stroke-width:2\"");
+    if l < 8.0 {
+        let [r, u] = p.plane;
+        let toward = (r[1] * u[2] - r[2] * u[1]) * w[0]
+            + (r[2] * u[0] - r[0] * u[2]) * w[1]
+            + (r[0] * u[1] - r[1] * u[0]) * w[2];
+        let ring = format!("fill:none;stroke:{OMEGA_COLOUR};stroke-width:2");
+        circle(s, a, 6.0, &ring);
+        if toward > 0.0 {
+            circle(s, a, 2.0, &format!("fill:{OMEGA_COLOUR}"));
+        } else {
+            s.push_str("<path d=\"M");
+            pair(s, [a[0] - 4.0, a[1] - 4.0]);
+            let _ = writeln!(s, "l8 8m0 -8l-8 8\" {style}/>");
+        }
+        text(s, [a[0] + 8.0, a[1] - 8.0], "ω", Some(OMEGA_COLOUR));
+        return;
+    }
+    let tip = [a[0] + v[0], a[1] + v[1]];
+    let (ux, uy) = (v[0] / l, v[1] / l);
+    let head = |side: f64| {
+        [
+            tip[0] - 10.0 * ux + side * 4.0 * uy,
+            tip[1] - 10.0 * uy - side * 4.0 * ux,
+        ]
+    };
+    s.push_str("<path d=\"M");
+    pair(s, a);
+    s.push('L');
+    pair(s, tip);
+    s.push('M');
+    pair(s, head(1.0));
+    s.push('L');
+    pair(s, tip);
+    s.push('L');
+    pair(s, head(-1.0));
+    let _ = writeln!(s, "\" {style}/>");
+    text(s, [tip[0] + 6.0, tip[1] + 4.0], "ω", Some(OMEGA_COLOUR));
+}
+
+/// The view's label and its scale bar: a round length (1, 2 or 5 × 10ⁿ
+/// file units) near a fifth of the cell.
+fn frame(s: &mut String, cell: &Cell, unit: &str) {
+    text(
+        s,
+        [cell.at[0] + 10.0, cell.at[1] + 20.0],
+        cell.view.label(),
+        None,
+    );
+    let scale = cell.projector.scale;
+    let want = cell.size[0] / 5.0 / scale;
+    let ten = 10f64.powf(want.log10().floor());
+    let len = [5.0, 2.0, 1.0]
+        .iter()
+        .map(|m| m * ten)
+        .find(|l| *l <= want)
+        .unwrap_or(ten);
+    let px = len * scale;
+    let y = cell.at[1] + cell.size[1] - 18.0;
+    let x = cell.at[0] + SIDE;
+    s.push_str("<path d=\"M");
+    pair(s, [x, y - 4.0]);
+    s.push_str("v4h");
+    num(s, px);
+    s.push_str("v-4\" style=\"stroke:#000;stroke-width:1.5\"/>\n");
+    let label = format!("{} {unit}", crate::render::format::fmt_sig(len, 6));
+    text(s, [x + px + 6.0, y + 4.0], &label, None);
+    if cell.view == View::Iso {
+        text(
+            s,
+            [x, y + 14.0],
+            "lengths parallel to the page; x, y and z appear ×0.82",
+            None,
+        );
+    }
+}
+
+/// The legend's lines: what each colour is, each symbol, and what was
+/// left out.
+fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Options) -> Vec<Entry> {
+    let seen = &survey.seen;
+    let mut e: Vec<Entry> = survey
+        .keys
+        .order
+        .iter()
+        .enumerate()
+        .map(|(k, name)| Entry::Colour(PALETTE[k % 9], crate::render::format::name(name)))
+        .collect();
+    e.push(Entry::Cg);
+    e.push(Entry::Axes);
+    e.push(Entry::Ellipsoid);
+    if seen.cut {
+        e.push(Entry::Cut);
+    }
+    if seen.markers[Marker::Point as usize] {
+        e.push(Entry::Marker(Marker::Point));
+    }
+    if seen.markers[Marker::Inertia as usize] {
+        e.push(Entry::Marker(Marker::Inertia));
+    }
+    if o.about.is_some() {
+        e.push(Entry::Text("+ ref: the reference point (`about`)".into()));
+    }
+    if o.omega.is_some() {
+        e.push(Entry::Text("ω: the angular velocity's direction".into()));
+    }
+    let mut lines = vec![Entry::Text(format!(
+        "{}: lengths in {}, third-angle views",
+        crate::render::format::name(&o.title),
+        body.unit
+    ))];
+    // Four entries a line.
+    lines.extend(e.chunks(4).map(|c| Entry::Row(c.to_vec())));
+    if small > 0 {
+        let s = if small == 1 { "" } else { "s" };
+        lines.push(Entry::Text(format!(
+            "{small} part{s} smaller than a pixel not drawn"
+        )));
+    }
+    lines
+}
+
+/// A line of the legend, or an entry of a row.
+#[derive(Clone)]
+enum Entry {
+    Text(String),
+    Row(Vec<Entry>),
+    Colour(&'static str, String),
+    Cg,
+    Axes,
+    Ellipsoid,
+    Cut,
+    Marker(Marker),
+}
+
+fn write_legend(s: &mut String, lines: &[Entry], grid: bool) {
+    s.push_str("<g id=\"legend\">\n");
+    // The cells' borders: the grid's middle lines for four views.
+    let _ = write!(s, "<path d=\"M0 {GRID_HEIGHT}h{WIDTH}");
+    if grid {
+        let _ = write!(
+            s,
+            "M{} 0v{GRID_HEIGHT}M0 {}h{WIDTH}",
+            WIDTH / 2.0,
+            GRID_HEIGHT / 2.0
+        );
+    }
+    s.push_str("\" style=\"stroke:#ccc;stroke-width:1\"/>\n");
+    for (row, line) in lines.iter().enumerate() {
+        let y = GRID_HEIGHT + LINE * (row as f64 + 1.2);
+        match line {
+            Entry::Row(items) => {
+                for (col, item) in items.iter().enumerate() {
+                    entry(s, [10.0 + COLUMN * col as f64, y], item);
+                }
+            }
+            other => entry(s, [10.0, y], other),
+        }
+    }
+    s.push_str("</g>\n");
+}
+
+/// One legend entry, its sample 24 px wide left of its words, `at` the
+/// baseline's start.
+fn entry(s: &mut String, at: [f64; 2], e: &Entry) {
+    let (x, y) = (at[0], at[1]);
+    let mid = y - 4.0;
+    let line = |s: &mut String, style: &str| {
+        s.push_str("<path d=\"M");
+        pair(s, [x, mid]);
+        let _ = writeln!(s, "h24\" style=\"{style}\"/>");
+    };
+    let words = [x + 30.0, y];
+    match e {
+        Entry::Text(t) => text(s, at, t, None),
+        Entry::Row(_) => {}
+        Entry::Colour(c, name) => {
+            line(s, &format!("stroke:{c};stroke-width:3"));
+            text(s, words, name, None);
+        }
+        Entry::Cg => {
+            cg_symbol(s, [x + 12.0, mid]);
+            text(s, words, "centre of mass", None);
+        }
+        Entry::Axes => {
+            for (i, c) in AXIS_COLOURS.iter().enumerate() {
+                s.push_str("<path d=\"M");
+                pair(s, [x + 9.0 * i as f64, mid]);
+                let _ = writeln!(s, "h7\" style=\"stroke:{c};stroke-width:2.5\"/>");
+            }
+            text(
+                s,
+                words,
+                "I1 I2 I3: principal axes, radius of gyration long",
+                None,
+            );
+        }
+        Entry::Ellipsoid => {
+            line(
+                s,
+                &format!("stroke:{ELLIPSOID_COLOUR};stroke-width:1;stroke-dasharray:2 3"),
+            );
+            text(s, words, "equivalent inertia ellipsoid", None);
+        }
+        Entry::Cut => {
+            line(s, "stroke:#000;stroke-width:1.2;stroke-dasharray:5 3");
+            text(s, words, "cut-out (remove = true)", None);
+        }
+        Entry::Marker(m) => {
+            marker(s, *m, [x + 12.0, mid], "#000", "");
+            let what = match m {
+                Marker::Point => "point mass",
+                Marker::Inertia => "given inertia (shape = \"inertia\")",
+            };
+            text(s, words, what, None);
+        }
+    }
+}
+
+/// A circle about `c` of radius `r` px, styled.
+fn circle(s: &mut String, c: [f64; 2], r: f64, style: &str) {
+    s.push_str("<circle cx=\"");
+    num(s, c[0]);
+    s.push_str("\" cy=\"");
+    num(s, c[1]);
+    s.push_str("\" r=\"");
+    num(s, r);
+    let _ = writeln!(s, "\" style=\"{style}\"/>");
+}
+
+/// Text at `at` (its baseline's start), escaped for XML.
+fn text(s: &mut String, at: [f64; 2], t: &str, colour: Option<&str>) {
+    s.push_str("<text x=\"");
+    num(s, at[0]);
+    s.push_str("\" y=\"");
+    num(s, at[1]);
+    s.push('"');
+    if let Some(c) = colour {
+        let _ = write!(s, " style=\"fill:{c}\"");
+    }
+    s.push('>');
+    for ch in t.chars() {
+        match ch {
+            '&' => s.push_str("&amp;"),
+            '<' => s.push_str("&lt;"),
+            '>' => s.push_str("&gt;"),
+            '"' => s.push_str("&quot;"),
+            c => s.push(c),
+        }
+    }
+    s.push_str("</text>\n");
+}
