@@ -559,9 +559,10 @@ fn frame(s: &mut String, cell: &Cell, unit: &str) {
     let label = format!("{} {unit}", crate::render::format::fmt_sig(len, 6));
     text(s, [x + px + 6.0, y + 4.0], &label, None);
     if cell.view == View::Iso {
+        // Beside the bar's label, inside the view.
         text(
             s,
-            [x, y + 14.0],
+            [x + px + 70.0, y + 4.0],
             "lengths parallel to the page; x, y and z appear ×0.82",
             None,
         );
@@ -681,12 +682,7 @@ fn entry(s: &mut String, at: [f64; 2], e: &Entry) {
                 pair(s, [x + 9.0 * i as f64, mid]);
                 let _ = writeln!(s, "h7\" style=\"stroke:{c};stroke-width:2.5\"/>");
             }
-            text(
-                s,
-                words,
-                "I1 I2 I3: principal axes, radius of gyration long",
-                None,
-            );
+            text(s, words, "I1 I2 I3: principal axes, k long", None);
         }
         Entry::Ellipsoid => {
             line(
