@@ -489,6 +489,7 @@ mod tests {
                         span: 0..0,
                         assembly: Vec::new(),
                         tol: None,
+                        material: None,
                     });
                 }
             }

@@ -59,6 +59,8 @@ pub struct Part {
     /// How its numbers move with its file's tolerances (none for most
     /// parts), in its own file's units and frame.
     pub tol: Option<Arc<[Dep]>>,
+    /// The `material` it is made of, by name (drawings colour by it).
+    pub material: Option<Arc<str>>,
 }
 
 /// A body's parts, for the passes of the composer and of the per-part

@@ -339,6 +339,7 @@ fn point(p: &Part, g: f64) -> Part {
         assembly: Vec::new(),
         span: p.span.clone(),
         tol: None,
+        material: None,
     }
 }
 

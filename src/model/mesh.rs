@@ -139,6 +139,7 @@ impl Ctx<'_> {
         let tol = self.leave_part();
         Ok(Part {
             tol,
+            material: p.material.as_deref().map(|m| m.get_ref().as_str().into()),
             name: if p.name.is_some() {
                 name
             } else {

@@ -380,6 +380,7 @@ impl Ctx<'_> {
         let tol = self.leave_part();
         let part = Part {
             tol,
+            material: p.material.as_deref().map(|m| m.get_ref().as_str().into()),
             // NOTE: a part the file does not name keeps no name: the walk
             // names it `part N` when a name is asked for (`model::walk`).
             // A string of its own for each of a million parts, made

@@ -215,6 +215,7 @@ impl Model {
                 assembly: Vec::new(),
                 span: 0..0,
                 tol: None,
+                material: None,
             },
         };
         walk.items(self, f);
@@ -430,6 +431,7 @@ impl<'m> Walk<'m> {
         placed.shape = part.shape;
         placed.span = span;
         placed.spec.clone_from(&part.spec);
+        placed.material.clone_from(&part.material);
         for layer in self.frames.iter().rev() {
             layer.frame.place(part.shape, &mut placed.spec);
             if let Some(r) = &mut real {

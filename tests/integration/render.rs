@@ -367,6 +367,53 @@ group = "payload"
 }
 
 #[test]
+fn materials_colour_the_parts_without_a_group() {
+    // Two aluminium parts (one inside a sub-assembly, which the walk
+    // places), a steel one, and a grouped steel one: the group wins.
+    let dir = super::common::scratch("render", "materials");
+    std::fs::write(
+        dir.join("sub.toml"),
+        "[[part]]\nshape = \"box\"\nmaterial = \"aluminium-6061\"\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    let path = dir.join("top.toml");
+    std::fs::write(
+        &path,
+        r#"
+[[part]]
+shape = "sphere"
+material = "steel"
+radius = 0.5
+center = [2, 0, 0]
+[[part]]
+include = "sub.toml"
+origin = [0, 3, 0]
+[[part]]
+shape = "box"
+material = "aluminium-6061"
+size = [1, 1, 1]
+center = [0, 0, 0]
+[[part]]
+shape = "box"
+material = "steel"
+size = [1, 1, 1]
+center = [0, 0, 5]
+group = "payload"
+"#,
+    )
+    .unwrap();
+    let out = super::common::massprop(&["render", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0));
+    let svg = String::from_utf8(out.stdout).unwrap();
+    for name in ["steel", "aluminium-6061", "payload"] {
+        assert!(svg.contains(&format!(">{name}</text>")), "{name}");
+    }
+    // steel c0, aluminium c1 (both of its parts, four views each), payload c2.
+    assert_eq!(svg.matches("class=\"c1\"").count(), 8);
+    assert_eq!(svg.matches("class=\"c2\"").count(), 4);
+}
+
+#[test]
 fn one_view_is_drawn_alone() {
     let svg = render(BOX, &["--view", "iso"]);
     assert!(svg.contains("<g id=\"iso\""));

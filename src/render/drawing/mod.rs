@@ -108,7 +108,7 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
         each_part(model, &mut |part, group| {
-            let class = survey.keys.index[group.unwrap_or_else(|| part.shape.name())] % 9;
+            let class = survey.keys.index[key(part, group)] % 9;
             let cut = if part.spec.removed { " cut" } else { "" };
             let outline = outline::of(part);
             match &outline {
@@ -154,7 +154,7 @@ impl Survey {
             sizes: Vec::new(),
         };
         each_part(model, &mut |part, group| {
-            v.keys.index(group.unwrap_or_else(|| part.shape.name()));
+            v.keys.index(key(part, group));
             v.seen.cut |= part.spec.removed;
             let outline = outline::of(part);
             match &outline {
@@ -169,6 +169,14 @@ impl Survey {
         });
         v
     }
+}
+
+/// What a part is coloured by: its group, else its material, else its
+/// shape.
+fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
+    group
+        .or(part.material.as_deref())
+        .unwrap_or_else(|| part.shape.name())
 }
 
 /// Each part in file order with its group (its sub-assemblies' groups,
