@@ -302,6 +302,8 @@ impl Mesh {
                     + 4.0 * super::unit_of::<DD>() * p.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
                 ..bound
             },
+            points: self.vertices.as_slice().into(),
+            faces: self.faces.as_slice().into(),
             extent: self.vertices.iter().fold(
                 [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
                 |[lo, hi], v| {

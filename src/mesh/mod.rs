@@ -120,8 +120,13 @@ pub struct MeshBody {
     /// file's numbers: absolute, in the file's units.
     pub bound: Bound,
     /// The box of its vertices, least then greatest coordinates, in the
-    /// file's coordinates (`render` draws a mesh as this box).
+    /// file's coordinates.
     pub extent: [[f64; 3]; 2],
+    /// Its welded corners (the file's coordinates) and triangles (indices,
+    /// outward by the right-hand rule): `render` draws its silhouette.
+    /// Shared: a mesh's copies and the model's clones hold them once.
+    pub points: std::sync::Arc<[[f64; 3]]>,
+    pub faces: std::sync::Arc<[[u32; 3]]>,
 }
 
 /// Absolute error bounds of a `MeshBody`'s values.
@@ -176,6 +181,18 @@ impl MeshBody {
         let [lo, hi] = self.extent;
         m.extent[0][axis] = -hi[axis];
         m.extent[1][axis] = -lo[axis];
+        // The image's corners, and its triangles wound the other way so
+        // that they face out still.
+        m.points = self
+            .points
+            .iter()
+            .map(|p| {
+                let mut q = *p;
+                q[axis] = -q[axis];
+                q
+            })
+            .collect();
+        m.faces = self.faces.iter().map(|f| [f[0], f[2], f[1]]).collect();
         for k in 0..3 {
             if k != axis {
                 m.second[axis][k] = -m.second[axis][k];

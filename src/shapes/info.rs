@@ -201,8 +201,8 @@ pub enum Drawn {
     Edges,
     /// Its end polygons and the edges between them (prism).
     Extruded,
-    /// The box of its vertices (mesh).
-    MeshBox,
+    /// Its silhouette edges in each view (mesh).
+    Silhouette,
     /// A dot (point mass).
     Point,
     /// A square with its diagonals (a given inertia).
@@ -555,7 +555,7 @@ pub const SHAPES: [ShapeInfo; 14] = [
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 0,
-        drawn: Drawn::MeshBox,
+        drawn: Drawn::Silhouette,
         degenerate: "an open, inconsistently oriented or inside-out surface, or a triangle of zero area",
         help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     },

@@ -591,3 +591,67 @@ fn a_boxs_equivalent_ellipsoid_has_its_edges_times_the_root_of_five_twelfths() {
         "{angle}"
     );
 }
+
+/// An L-shaped prism as an OBJ mesh: the L (0,0)–(2,0)–(2,1)–(1,1)–(1,2)–
+/// (0,2) in x–z, extruded 1 along y, its faces wound outward.
+fn l_prism_obj() -> String {
+    let l = [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]];
+    let mut obj = String::new();
+    for y in [0, 1] {
+        for [x, z] in l {
+            obj.push_str(&format!("v {x} {y} {z}\n"));
+        }
+    }
+    // The ends (fans from a convex split: 0 1 2 3, 0 3 4 5), one end
+    // wound against the other; the six sides.
+    let mut faces: Vec<[usize; 3]> = Vec::new();
+    for t in [[0, 3, 2], [0, 2, 1], [0, 5, 4], [0, 4, 3]] {
+        faces.push(t);
+        faces.push([t[0] + 6, t[2] + 6, t[1] + 6]);
+    }
+    for i in 0..6 {
+        let j = (i + 1) % 6;
+        faces.push([i, j, j + 6]);
+        faces.push([i, j + 6, i + 6]);
+    }
+    // (Each triangle as c b a: the order above turns inward.)
+    for f in faces {
+        obj.push_str(&format!("f {} {} {}\n", f[2] + 1, f[1] + 1, f[0] + 1));
+    }
+    obj
+}
+
+#[test]
+fn a_mesh_is_drawn_by_its_silhouette_not_its_box() {
+    // Seen from the front (along y) the L prism's silhouette is the L:
+    // six edges, the inner corner (1, 1) among their ends; its box would
+    // be four edges with no corner there. From the top (along z) it is
+    // the 2 × 1 rectangle, its long sides two edges each (split at x = 1
+    // by the mesh), its short sides one, and the step at x = 1 twice:
+    // the top of the low part (z = 1) and of the tall part (z = 2) each
+    // meet the wall between them there: 8 edges.
+    let dir = scratch("render", "mesh-silhouette");
+    std::fs::write(dir.join("l.obj"), l_prism_obj()).unwrap();
+    let path = dir.join("l.toml");
+    std::fs::write(
+        &path,
+        "[[part]]\nshape = \"mesh\"\nfile = \"l.obj\"\nmesh_unit = \"m\"\ndensity = 1000\n",
+    )
+    .unwrap();
+    for (view, edges) in [("front", 6), ("top", 8)] {
+        let out = massprop(&["render", path.to_str().unwrap(), "--view", view]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let svg = String::from_utf8(out.stdout).unwrap();
+        parse(&svg);
+        let d = svg
+            .lines()
+            .find(|l| l.starts_with("<path class=\"c0\""))
+            .expect("the mesh's path");
+        assert_eq!(d.matches('M').count(), edges, "{view}: {d}");
+    }
+}

@@ -3,8 +3,8 @@
 //! that turns a placed part into lines, by its `Place` and its shape's
 //! `Drawn` (`shapes::SHAPES`); `view` projects the pieces.
 //!
-//! - box, plate, a mesh's box: the convex hull of the corners (the exact
-//!   silhouette of a convex solid);
+//! - box, plate: the convex hull of the corners (the exact silhouette of
+//!   a convex solid); a mesh: its silhouette edges in each view;
 //! - rod: its segment; triangle: its three edges; prism: both ends'
 //!   polygons and the edges between them (a polygon may be concave);
 //! - cylinder, tube, cone: each rim a circle (an ellipse once projected),
@@ -35,6 +35,12 @@ pub enum Piece {
     Line { points: Vec<V3>, closed: bool },
     /// The convex hull of the points' projections.
     Hull(Vec<V3>),
+    /// A triangle mesh's silhouette: the edges between a triangle that
+    /// faces the viewer and one that does not, and its open edges.
+    Silhouette {
+        points: Vec<V3>,
+        faces: std::sync::Arc<[[u32; 3]]>,
+    },
     /// The outline of the ellipsoid {c + M u : |u| ≤ 1}, `m` its columns
     /// (a zero column: a flat ellipse, the rim of a circle).
     Ellipsoid { c: V3, m: [V3; 3] },
@@ -77,7 +83,9 @@ impl Outline {
             Outline::Pieces(pieces) => {
                 for p in pieces {
                     match p {
-                        Piece::Line { points, .. } | Piece::Hull(points) => {
+                        Piece::Line { points, .. }
+                        | Piece::Hull(points)
+                        | Piece::Silhouette { points, .. } => {
                             points.iter().for_each(|q| add(*q, [0.0; 3]));
                         }
                         Piece::Ellipsoid { c, m } => add(
@@ -182,17 +190,20 @@ pub fn of(part: &Part) -> Outline {
         } => {
             let [x, y, z] = axes(&orientation.matrix());
             let s = crate::numeric::Real::f64(*scale);
-            let [lo, hi] = mesh.extent;
-            let corner = add(
-                *origin,
-                comb(&[(lo[0] * s, x), (lo[1] * s, y), (lo[2] * s, z)]),
-            );
-            let edges = [
-                scaled((hi[0] - lo[0]) * s, x),
-                scaled((hi[1] - lo[1]) * s, y),
-                scaled((hi[2] - lo[2]) * s, z),
-            ];
-            Outline::Pieces(vec![Piece::Hull(corners(corner, &edges))])
+            let points = mesh
+                .points
+                .iter()
+                .map(|p| {
+                    add(
+                        *origin,
+                        comb(&[(p[0] * s, x), (p[1] * s, y), (p[2] * s, z)]),
+                    )
+                })
+                .collect();
+            Outline::Pieces(vec![Piece::Silhouette {
+                points,
+                faces: mesh.faces.clone(),
+            }])
         }
     }
 }
@@ -258,7 +269,7 @@ fn centred(drawn: Drawn, c: V3, e: &[f64; 3], [x, y, z]: &[V3; 3]) -> Outline {
         }],
         // Not placed by a centre and dimensions (`model::place`): drawn
         // as the point their centre is, should one ever be.
-        Drawn::Edges | Drawn::Given | Drawn::Dome | Drawn::Extruded | Drawn::MeshBox => {
+        Drawn::Edges | Drawn::Given | Drawn::Dome | Drawn::Extruded | Drawn::Silhouette => {
             return Outline::Marker(Marker::Point, c);
         }
     };

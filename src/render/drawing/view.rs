@@ -126,6 +126,67 @@ impl Projector {
                 polyline(d, &hull(pts), true);
             }
             Piece::Torus { c, r, a, u, v } => self.torus(d, c, *r, *a, u, v),
+            Piece::Silhouette { points, faces } => self.silhouette(d, points, faces),
+        }
+    }
+
+    /// A triangle mesh's silhouette in this view: each edge between a
+    /// triangle that faces the viewer and one that does not (the exact
+    /// outline of an orthographic projection, inner folds included), and
+    /// each edge of one triangle only (a shell's rim), in face order.
+    fn silhouette(&self, d: &mut String, points: &[V3], faces: &[[u32; 3]]) {
+        let [r, u] = self.plane;
+        let toward = [
+            r[1] * u[2] - r[2] * u[1],
+            r[2] * u[0] - r[0] * u[2],
+            r[0] * u[1] - r[1] * u[0],
+        ];
+        let facing = |f: &[u32; 3]| {
+            let [a, b, c] = f.map(|i| points[i as usize]);
+            let (e, g) = (
+                [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+                [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+            );
+            let n = [
+                e[1] * g[2] - e[2] * g[1],
+                e[2] * g[0] - e[0] * g[2],
+                e[0] * g[1] - e[1] * g[0],
+            ];
+            dot(&n, &toward) > 0.0
+        };
+        let key = |a: u32, b: u32| (a.min(b), a.max(b));
+        let mut first: std::collections::HashMap<(u32, u32), bool> =
+            std::collections::HashMap::with_capacity(faces.len() * 3 / 2);
+        let mut edges: Vec<(u32, u32)> = Vec::new();
+        for f in faces {
+            let side = facing(f);
+            for e in 0..3 {
+                let k = key(f[e], f[(e + 1) % 3]);
+                match first.remove(&k) {
+                    Some(other) if other != side => edges.push(k),
+                    Some(_) => {}
+                    None => {
+                        first.insert(k, side);
+                    }
+                }
+            }
+        }
+        // The edges of one triangle only, in face order (a map's order is
+        // not the same on every run).
+        for f in faces {
+            for e in 0..3 {
+                let k = key(f[e], f[(e + 1) % 3]);
+                if first.remove(&k).is_some() {
+                    edges.push(k);
+                }
+            }
+        }
+        for (a, b) in edges {
+            let pts = [
+                self.point(&points[a as usize]),
+                self.point(&points[b as usize]),
+            ];
+            polyline(d, &pts, false);
         }
     }
 
