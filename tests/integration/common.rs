@@ -41,6 +41,18 @@ pub fn scratch(group: &str, name: &str) -> PathBuf {
     dir
 }
 
+/// `files` (name, text) written into the scratch directory
+/// `group/name`; the path of the last, the one to run.
+pub fn scratch_files(group: &str, name: &str, files: &[(&str, &str)]) -> PathBuf {
+    let dir = scratch(group, name);
+    let mut last = dir.clone();
+    for (file, text) in files {
+        last = dir.join(file);
+        std::fs::write(&last, text).unwrap();
+    }
+    last
+}
+
 /// A run refused for `-o` onto one of its inputs: status 2, nothing on
 /// stdout, the reason on stderr.
 pub fn assert_refused(out: &std::process::Output, args: &[&str]) {

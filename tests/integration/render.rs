@@ -3,7 +3,7 @@
 //! be, by projection maths written here from docs/render.md's conventions
 //! (not the renderer's own).
 
-use super::common::{massprop, massprop_stdin, scratch};
+use super::common::{massprop, massprop_stdin, scratch, scratch_files};
 
 /// `massprop render - ARGS…` on `text`: the SVG, checked to parse.
 fn render(text: &str, args: &[&str]) -> String {
@@ -370,16 +370,17 @@ group = "payload"
 fn materials_colour_the_parts_without_a_group() {
     // Two aluminium parts (one inside a sub-assembly, which the walk
     // places), a steel one, and a grouped steel one: the group wins.
-    let dir = super::common::scratch("render", "materials");
-    std::fs::write(
-        dir.join("sub.toml"),
-        "[[part]]\nshape = \"box\"\nmaterial = \"aluminium-6061\"\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n",
-    )
-    .unwrap();
-    let path = dir.join("top.toml");
-    std::fs::write(
-        &path,
-        r#"
+    let path = scratch_files(
+        "render",
+        "materials",
+        &[
+            (
+                "sub.toml",
+                "[[part]]\nshape = \"box\"\nmaterial = \"aluminium-6061\"\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n",
+            ),
+            (
+                "top.toml",
+                r#"
 [[part]]
 shape = "sphere"
 material = "steel"
@@ -400,8 +401,9 @@ size = [1, 1, 1]
 center = [0, 0, 5]
 group = "payload"
 "#,
-    )
-    .unwrap();
+            ),
+        ],
+    );
     let out = super::common::massprop(&["render", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(0));
     let svg = String::from_utf8(out.stdout).unwrap();
@@ -630,14 +632,18 @@ fn a_mesh_is_drawn_by_its_silhouette_not_its_box() {
     // by the mesh), its short sides one, and the step at x = 1 twice:
     // the top of the low part (z = 1) and of the tall part (z = 2) each
     // meet the wall between them there: 8 edges.
-    let dir = scratch("render", "mesh-silhouette");
-    std::fs::write(dir.join("l.obj"), l_prism_obj()).unwrap();
-    let path = dir.join("l.toml");
-    std::fs::write(
-        &path,
-        "[[part]]\nshape = \"mesh\"\nfile = \"l.obj\"\nmesh_unit = \"m\"\ndensity = 1000\n",
-    )
-    .unwrap();
+    let obj = l_prism_obj();
+    let path = scratch_files(
+        "render",
+        "mesh-silhouette",
+        &[
+            ("l.obj", &obj),
+            (
+                "l.toml",
+                "[[part]]\nshape = \"mesh\"\nfile = \"l.obj\"\nmesh_unit = \"m\"\ndensity = 1000\n",
+            ),
+        ],
+    );
     for (view, edges) in [("front", 6), ("top", 8)] {
         let out = massprop(&["render", path.to_str().unwrap(), "--view", view]);
         assert_eq!(

@@ -26,13 +26,7 @@ fn close(a: f64, b: f64, rel: f64) -> bool {
 /// `files` (name, text) written into a scratch directory `name`; the path
 /// of the last, the one to run.
 fn written(name: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
-    let dir = scratch("uncertainty", name);
-    let mut last = dir.clone();
-    for (file, text) in files {
-        last = dir.join(file);
-        std::fs::write(&last, text).unwrap();
-    }
-    last
+    super::common::scratch_files("uncertainty", name, files)
 }
 
 #[test]
