@@ -2,7 +2,9 @@
 //! `[expect]` entries, keeping everything else byte for byte (toml_edit).
 //!
 //! - An entry with `value` gets the measured value, in the file's units
-//!   (SI for H and T); its `tol` is kept, or a default one is added.
+//!   (SI for H and T); its `tol` is kept, or a default one is added,
+//!   computed from the value written (`default_tol`), never from the stale
+//!   one the file had, and never zero.
 //! - Entries with only `min`/`max` are design limits and are never changed.
 //! - A file without `[expect]` gets one for its mass, centre of mass and
 //!   principal moments.
@@ -20,9 +22,10 @@ use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
-use crate::model::expect::{Bound, Check};
+use crate::model::expect::{Bound, Check, Target};
 use crate::render::format::DisplayUnits;
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
+use crate::units::Dim;
 use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
 
@@ -48,18 +51,19 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
                 .unwrap_or_else(|| Diagnostic::file(path, "cannot parse")));
         }
     };
-    // Entries with `value` but no `tol` get the default tolerance first, so
-    // that the file parses as a model.
-    let added_tol = add_default_tols(&mut doc);
+    // Entries with `value` but no `tol` get a placeholder first, so that
+    // the file parses as a model; their tolerance is computed from the
+    // value written in its place (`write_values`).
+    let untoleranced = add_placeholder_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
     let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, settings)?;
 
-    let mut changed = added_tol;
+    let mut changed = !untoleranced.is_empty();
     if doc.get("expect").is_none() {
         add_default_expect(&mut doc, &summary);
         changed = true;
     } else {
-        changed |= write_values(&mut doc, &model.expect, &summary);
+        changed |= write_values(&mut doc, &model.expect, &summary, &untoleranced);
     }
     let text = endings.restore(&doc.to_string());
     if text == source.text {
@@ -164,45 +168,29 @@ impl Endings {
     }
 }
 
-fn tables_mut(item: &mut Item) -> Vec<&mut Item> {
-    // Every expectation entry: top-level entries and their components.
-    let mut out = Vec::new();
-    if let Some(t) = item.as_table_like_mut() {
-        for (_, entry) in t.iter_mut() {
-            out.push(entry);
-        }
-    }
-    out
-}
+/// The key path of an `[expect]` entry: `["center_of_mass"]`, or
+/// `["center_of_mass", "z"]` for a component.
+type EntryPath = Vec<String>;
 
-/// Add `tol` to entries (and component entries) with a `value` but none.
-fn add_default_tols(doc: &mut DocumentMut) -> bool {
+/// Give every entry (and component entry) with a `value` but no `tol` a
+/// placeholder tolerance, so that the file parses as a model; returns
+/// their paths, whose tolerance `write_values` then computes from the
+/// value it writes.
+fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
     let Some(expect) = doc.get_mut("expect") else {
-        return false;
+        return Vec::new();
     };
-    let mut changed = false;
-    fn visit(entry: &mut Item, changed: &mut bool) {
+    let mut added = Vec::new();
+    fn visit(entry: &mut Item, path: &mut EntryPath, added: &mut Vec<EntryPath>) {
         let Some(t) = entry.as_table_like_mut() else {
             return;
         };
-        let has_value = t.get("value").is_some();
-        if has_value && t.get("tol").is_none() {
-            let tol = match t.get("value").and_then(Item::as_value) {
-                Some(Value::Array(a)) => {
-                    let max = a
-                        .iter()
-                        .flat_map(|v| match v {
-                            Value::Array(r) => r.iter().filter_map(as_f64).collect::<Vec<_>>(),
-                            v => as_f64(v).into_iter().collect(),
-                        })
-                        .fold(0.0f64, |m, x| m.max(x.abs()));
-                    Value::from(round1(max * DEFAULT_VECTOR_TOL))
-                }
-                _ => Value::from(DEFAULT_RELATIVE_TOL),
-            };
+        if t.get("value").is_some() && t.get("tol").is_none() {
+            // Any tolerance the reader takes: it is replaced before the
+            // file is written.
+            let mut tol = Value::from(DEFAULT_RELATIVE_TOL);
             // In an inline table the space before `}` trails the last value;
             // move it after the new `tol`.
-            let mut tol = tol;
             if let Some(Item::Value(v)) = t.get_mut("value") {
                 let suffix = v.decor().suffix().cloned();
                 if let Some(sfx) = suffix {
@@ -211,20 +199,80 @@ fn add_default_tols(doc: &mut DocumentMut) -> bool {
                 }
             }
             t.insert("tol", Item::Value(tol));
-            *changed = true;
+            added.push(path.clone());
         }
         for key in [
             "x", "y", "z", "xx", "yy", "zz", "xy", "xz", "yz", "1", "2", "3",
         ] {
             if let Some(c) = t.get_mut(key) {
-                visit(c, changed);
+                path.push(key.to_string());
+                visit(c, path, added);
+                path.pop();
             }
         }
     }
-    for entry in tables_mut(expect) {
-        visit(entry, &mut changed);
+    if let Some(t) = expect.as_table_like_mut() {
+        for (key, entry) in t.iter_mut() {
+            visit(entry, &mut vec![key.get().to_string()], &mut added);
+        }
     }
-    changed
+    added
+}
+
+/// The default tolerance of an entry whose new value is `values` (in the
+/// unit it is written in, `scale` SI per that unit), of dimension `dim`:
+/// - the mass, the predicted mass and the kinetic energy: `"0.0001%"`
+///   (1e-6 of the value), unless the value is zero;
+/// - anything else (a vector, a matrix, one of their components) and a
+///   zero scalar: absolute, 1e-6 of the larger of its largest component
+///   and the body's own size in its dimension (`body_size`), rounded to
+///   one digit. So a centre of mass at (or by rounding near) the origin,
+///   or a product of inertia that is zero, is not held to a zero
+///   tolerance, which rounding on another machine would fail; only a
+///   user writes `tol = 0`.
+fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary) -> Value {
+    let largest = values.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let whole_scalar = matches!(
+        target,
+        Target::Mass | Target::PredictedMass | Target::KineticEnergy
+    );
+    if whole_scalar && largest > 0.0 {
+        return Value::from(DEFAULT_RELATIVE_TOL);
+    }
+    let size = body_size(s, dim) / scale;
+    // NOTE: a body without extent (a lone point mass) or at rest has no
+    // size in its dimension; 1e-6 of the unit the value is written in is
+    // then the floor, so the tolerance is never zero.
+    let size = if size.is_finite() && size > 0.0 {
+        size
+    } else {
+        1.0
+    };
+    Value::from(round1(largest.max(size) * DEFAULT_VECTOR_TOL))
+}
+
+/// The body's own size in dimension `dim`, SI: its largest radius of
+/// gyration (a length), its largest principal moment (an inertia; the
+/// largest component an inertia tensor can have), its mass, and that moment
+/// times |ω| (angular momentum) or times |ω|²/2 (energy); 0 for anything
+/// else.
+fn body_size(s: &Summary, dim: Dim) -> f64 {
+    let largest = |v: [f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let moment = largest(s.principal_moments);
+    let omega = s.omega.map_or(0.0, |w| w.iter().map(|x| x * x).sum::<f64>().sqrt());
+    if dim == Dim::LENGTH {
+        largest(s.radii_of_gyration)
+    } else if dim == Dim::INERTIA {
+        moment
+    } else if dim == Dim::MASS {
+        s.mass
+    } else if dim == Dim::ANGULAR_MOMENTUM {
+        moment * omega
+    } else if dim == Dim::ENERGY {
+        moment * omega * omega / 2.0
+    } else {
+        0.0
+    }
 }
 
 /// `x` to one significant digit, so a default tolerance reads `6e-5`.
@@ -232,12 +280,14 @@ fn round1(x: f64) -> f64 {
     format!("{x:.0e}").parse().unwrap_or(x)
 }
 
-fn as_f64(v: &Value) -> Option<f64> {
-    v.as_float().or_else(|| v.as_integer().map(|i| i as f64))
-}
-
-/// Write measured values into every entry that has a `value`.
-fn write_values(doc: &mut DocumentMut, checks: &[Check], s: &Summary) -> bool {
+/// Write measured values into every entry that has a `value`, and into
+/// each of `untoleranced` its default tolerance, from the value written.
+fn write_values(
+    doc: &mut DocumentMut,
+    checks: &[Check],
+    s: &Summary,
+    untoleranced: &[EntryPath],
+) -> bool {
     // Checks of one entry share its span; group them in order.
     let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
     for c in checks
@@ -260,6 +310,10 @@ fn write_values(doc: &mut DocumentMut, checks: &[Check], s: &Summary) -> bool {
         if group.len() > 1 {
             path.pop();
         }
+        let tol = untoleranced
+            .iter()
+            .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
+            .then(|| default_tol(&measured, first.target, first.dim, scale, s));
         let value = match measured.len() {
             1 => Value::from(measured[0]),
             3 => Value::Array(measured.iter().copied().collect::<Array>()),
@@ -280,6 +334,14 @@ fn write_values(doc: &mut DocumentMut, checks: &[Check], s: &Summary) -> bool {
             }
             if old.as_value().map(|v| v.to_string()) != Some(new.to_string()) {
                 *old = Item::Value(new);
+                changed = true;
+            }
+            if let Some(tol) = tol
+                && let Some(Item::Value(placeholder)) = t.get_mut("tol")
+            {
+                let mut tol = tol;
+                *tol.decor_mut() = placeholder.decor().clone();
+                *placeholder = tol;
                 changed = true;
             }
         }
@@ -306,24 +368,27 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
         t.insert("tol", tol);
         Item::Value(Value::InlineTable(t))
     };
-    let vector = |v: [f64; 3], scale: f64| {
+    let vector = |v: [f64; 3], scale: f64, target: Target, dim: Dim| {
         let v = v.map(|x| x / scale);
-        let max = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
         (
             Value::Array(v.into_iter().collect()),
-            Value::from(round1(max * DEFAULT_VECTOR_TOL)),
+            default_tol(&v, target, dim, scale, s),
         )
     };
     let mut t = toml_edit::Table::new();
     t.decor_mut()
         .set_prefix("\n# Expected mass properties, written by `massprop check --bless`.\n");
-    t.insert(
-        "mass",
-        entry(Value::from(s.mass / m), Value::from(DEFAULT_RELATIVE_TOL)),
-    );
-    let (c, ct) = vector(s.center_of_mass, l);
+    let mass = s.mass / m;
+    let mass_tol = default_tol(&[mass], Target::Mass, Dim::MASS, m, s);
+    t.insert("mass", entry(Value::from(mass), mass_tol));
+    let (c, ct) = vector(s.center_of_mass, l, Target::CenterOfMass(0), Dim::LENGTH);
     t.insert("center_of_mass", entry(c, ct));
-    let (p, pt) = vector(s.principal_moments, i);
+    let (p, pt) = vector(
+        s.principal_moments,
+        i,
+        Target::PrincipalMoment(0),
+        Dim::INERTIA,
+    );
     t.insert("principal_moments", entry(p, pt));
     doc.insert("expect", Item::Table(t));
 }
