@@ -18,9 +18,19 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => {
             // Help and version go to stdout, usage errors to stderr; a
-            // closed pipe on either is not a panic.
-            let _ = e.print();
-            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+            // closed pipe on either is not a panic, nor an error. Help that
+            // cannot be written (`--help > /dev/full`) is one: exit 2.
+            let status = u8::try_from(e.exit_code()).unwrap_or(2);
+            return match e.print().and_then(|()| std::io::stdout().flush()) {
+                Ok(()) => ExitCode::from(status),
+                Err(w) if w.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(status),
+                Err(w) => {
+                    let d = massprop::diag::Diagnostic::plain(format!("cannot write output: {w}"));
+                    let colour = massprop::cli::Streams::of_process().stderr_colour;
+                    to_stderr(&d.render(colour));
+                    ExitCode::from(2)
+                }
+            };
         }
     };
     // Standard error's colour, for what `main` itself prints.

@@ -90,6 +90,18 @@ impl Cli {
                 .check_rules()
                 .map_err(|m| command.error(clap::error::ErrorKind::ArgumentConflict, m))?;
         }
+        if let super::Command::Check(a) = &cli.command
+            && a.paths.iter().filter(|p| p.as_os_str() == "-").count() > 1
+        {
+            // Located as clap locates its own: the usage of `check`.
+            let check = command
+                .find_subcommand_mut("check")
+                .expect("invariant: `check` is a subcommand");
+            return Err(check.error(
+                clap::error::ErrorKind::ArgumentConflict,
+                "`-` (standard input) is given twice among `check`'s PATHs: standard input can be read only once",
+            ));
+        }
         Ok(cli)
     }
 

@@ -221,24 +221,19 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
 
 /// The default tolerance of an entry whose new value is `values` (in the
 /// unit it is written in, `scale` SI per that unit), of dimension `dim`:
-/// - the mass, the predicted mass and the kinetic energy: `"0.0001%"`
-///   (1e-6 of the value), unless the value is zero;
-/// - anything else (a vector, a matrix, one of their components) and a
-///   zero scalar: absolute, 1e-6 of the larger of its largest component
-///   and the body's own size in its dimension (`body_size`), rounded to
-///   one digit. So a centre of mass at (or by rounding near) the origin,
-///   or a product of inertia that is zero, is not held to a zero
-///   tolerance, which rounding on another machine would fail; only a
-///   user writes `tol = 0`.
+/// 1e-6 of the larger of its largest component and the body's own size in
+/// its dimension (`body_size`). A single number whose own value is the
+/// larger gets it as `"0.0001%"`, and so do the mass, the predicted mass
+/// and the kinetic energy whenever they are not zero; anything else (a
+/// vector, a matrix, a component small beside the body) gets it as an
+/// absolute tolerance, rounded to one digit, since a relative tolerance
+/// per component would trip on rounding noise in zero components.
+///
+/// So a centre of mass at (or by rounding near) the origin, or a product
+/// of inertia that is zero, is not held to a zero tolerance, which
+/// rounding on another machine would fail: only a user writes `tol = 0`.
 fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary) -> Value {
     let largest = values.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let whole_scalar = matches!(
-        target,
-        Target::Mass | Target::PredictedMass | Target::KineticEnergy
-    );
-    if whole_scalar && largest > 0.0 {
-        return Value::from(DEFAULT_RELATIVE_TOL);
-    }
     let size = body_size(s, dim) / scale;
     // NOTE: a body without extent (a lone point mass) or at rest has no
     // size in its dimension; 1e-6 of the unit the value is written in is
@@ -248,7 +243,15 @@ fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary
     } else {
         1.0
     };
-    Value::from(round1(largest.max(size) * DEFAULT_VECTOR_TOL))
+    let whole_scalar = matches!(
+        target,
+        Target::Mass | Target::PredictedMass | Target::KineticEnergy
+    );
+    if values.len() == 1 && largest > 0.0 && (whole_scalar || largest >= size) {
+        Value::from(DEFAULT_RELATIVE_TOL)
+    } else {
+        Value::from(round1(largest.max(size) * DEFAULT_VECTOR_TOL))
+    }
 }
 
 /// The body's own size in dimension `dim`, SI: its largest radius of

@@ -1,10 +1,13 @@
 //! `massprop materials [FILE]`: the built-in materials, and a file's own
-//! `[materials]` (marked as overriding where they share a name).
+//! `[materials]` (marked as overriding where they share a name): a part
+//! file's, or a materials file's (`[materials]` with no parts,
+//! `Model::materials_file`).
 
 use super::Outcome;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
 use crate::materials::BUILT_IN;
+use crate::model::Model;
 use crate::render::materials::Listed;
 use crate::render::{self, Format};
 
@@ -27,13 +30,20 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         })
         .collect();
     if let Some(path) = &o.file {
-        // The whole pipeline: a file `report` rejects is rejected here too.
         let settings = Settings {
             includes: o.includes.clone(),
             ..Settings::default()
         };
-        let model = analysis::load(path, &settings)?.model;
-        for (name, &density) in &model.materials {
+        // A materials file (`[materials]`, with its `[units]` and
+        // `[params]`, no parts) is read for its materials alone; any other
+        // file through the whole pipeline: a file `report` rejects is
+        // rejected here too.
+        let source = crate::io::read_source(path)?;
+        let materials = match Model::materials_file(&source, &o.includes)? {
+            Some(materials) => materials,
+            None => analysis::load_source(source, &settings)?.model.materials,
+        };
+        for (name, &density) in &materials {
             match list.iter_mut().find(|l| &l.name == name) {
                 Some(l) => {
                     l.density = density;

@@ -246,6 +246,14 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
     // any part file: one that a file includes is not known to be read when
     // that file is refused before its includes are (`check` goes on).
     let output = request.output();
+    // NOTE: an empty name would reach the file system as "" and come back
+    // as "No such file or directory" after a colon with nothing before it.
+    if output == Some("") {
+        return Err(
+            Diagnostic::plain("`-o` (`--output`) was given an empty file name")
+                .help("name a file, or give `-o -` for standard output"),
+        );
+    }
     let named = || request.inputs().into_iter().map(Path::new);
     if let Some(path) = output
         && let Some(i) = input_named_by(path, named())

@@ -346,7 +346,7 @@ impl Ctx<'_> {
 
 /// Whether a number as written (`1e-400`, `"-3e-330 mm"`) is not zero: a
 /// non-zero digit before any exponent, whatever its sign.
-fn nonzero_literal(text: &str) -> bool {
+pub(super) fn nonzero_literal(text: &str) -> bool {
     let t = text
         .trim()
         .trim_matches('"')

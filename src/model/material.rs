@@ -12,6 +12,52 @@ use crate::units::{self, Dim};
 use std::ops::Range;
 use toml::Spanned;
 
+impl super::Model {
+    /// A materials file's `[materials]`, name → density (kg/m³): a file
+    /// with no parts whose tables are `[materials]` and, for its densities,
+    /// `[units]` and `[params]` alone (materials kept apart from the part
+    /// files that use them; `massprop materials FILE`). Each density is
+    /// checked as in a part file. `Ok(None)` for any other file: it is read
+    /// as the part file it is.
+    pub fn materials_file(
+        source: &crate::diag::Source,
+        includes: &super::Includes,
+    ) -> Result<Option<std::collections::BTreeMap<String, f64>>, Diagnostic> {
+        if super::looks_like_a_part_file(&source.text) {
+            return Ok(None);
+        }
+        let raw = super::Model::serde(source)?;
+        let only_materials = raw.part.is_none()
+            && raw.name.is_none()
+            && raw.analysis.is_none()
+            && raw.expect.is_none()
+            && raw.growth.is_none()
+            && raw.budget.is_none();
+        let Some(table) = raw.materials.as_ref().filter(|_| only_materials) else {
+            return Ok(None);
+        };
+        let mut ctx = Ctx {
+            source,
+            units: units::FileUnits::default(),
+            materials: Default::default(),
+            params: Default::default(),
+            tol: Default::default(),
+            growth: Default::default(),
+        };
+        if let Some(u) = &raw.units {
+            ctx.units = ctx.file_units(u)?;
+        }
+        ctx.read_params(raw.params.as_ref(), &super::params::flags(&includes.set)?)?;
+        ctx.read_materials(table)?;
+        Ok(Some(
+            ctx.materials
+                .into_iter()
+                .map(|(name, (si, _))| (name, si))
+                .collect(),
+        ))
+    }
+}
+
 impl Ctx<'_> {
     /// The file's `[materials]`, each density checked, into `materials`.
     pub(super) fn read_materials(

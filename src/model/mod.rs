@@ -626,6 +626,15 @@ pub fn parse_flag_vector(text: &str, units: FileUnits, dim: Dim) -> Result<Vecto
                 i + 1
             ));
         }
+        // As in a file (`Ctx::representable`): a number that is not zero
+        // as written, but zero or subnormal in f64 or in the file's units.
+        if v.abs() < f64::MIN_POSITIVE && (v != 0.0 || ctx::nonzero_literal(p)) {
+            return Err(format!(
+                "component {} is too small: below {:e} in the file's units, f64 loses precision",
+                i + 1,
+                f64::MIN_POSITIVE
+            ));
+        }
         out[i] = v;
     }
     Ok(out)

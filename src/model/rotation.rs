@@ -298,14 +298,23 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
                     .trim_end_matches(']')
                     .split(',')
                     .map(|n| {
-                        n.trim()
-                            .parse::<f64>()
-                            .ok()
-                            .filter(|x| x.is_finite())
-                            .map(|x| format!("{x:?}"))
-                            .ok_or_else(|| {
-                                format!("`{key}`: {:?} is not a finite number", n.trim())
-                            })
+                        let x = n.trim().parse::<f64>().ok().filter(|x| x.is_finite());
+                        match x {
+                            // As in a file: not zero as written, zero or
+                            // subnormal in f64.
+                            Some(x)
+                                if x.abs() < f64::MIN_POSITIVE
+                                    && (x != 0.0 || super::ctx::nonzero_literal(n)) =>
+                            {
+                                Err(format!(
+                                    "`{key}`: {:?} is too small: below {:e}, f64 loses precision",
+                                    n.trim(),
+                                    f64::MIN_POSITIVE
+                                ))
+                            }
+                            Some(x) => Ok(format!("{x:?}")),
+                            None => Err(format!("`{key}`: {:?} is not a finite number", n.trim())),
+                        }
                     })
                     .collect::<Result<Vec<_>, _>>()?;
                 match (key, numbers.len()) {
