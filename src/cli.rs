@@ -119,7 +119,7 @@ pub struct CheckArgs {
 
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
-    /// leaves FILE as it was.
+    /// leaves FILE as it was. `-o -` is standard output.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<String>,
 
@@ -176,7 +176,7 @@ pub struct DiffArgs {
 
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
-    /// leaves FILE as it was.
+    /// leaves FILE as it was. `-o -` is standard output.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<String>,
 
@@ -251,7 +251,8 @@ pub struct ExportArgs {
     #[arg(long, requires = "update")]
     pub dry_run: bool,
 
-    /// Write the element to FILE instead of standard output, atomically.
+    /// Write the element to FILE instead of standard output, atomically
+    /// (`-o -`: standard output).
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<String>,
 
@@ -359,7 +360,7 @@ pub struct BodyArgs {
 
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
-    /// leaves FILE as it was.
+    /// leaves FILE as it was. `-o -` is standard output.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<String>,
 

@@ -13,7 +13,7 @@ pub struct RenderArgs {
     pub file: String,
 
     /// Write the SVG to FILE instead of standard output, atomically
-    /// (through a temporary file and a rename).
+    /// (through a temporary file and a rename). `-o -` is standard output.
     #[arg(short = 'o', long = "output", value_name = "FILE")]
     pub output: Option<String>,
 

@@ -262,7 +262,9 @@ fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary
 fn body_size(s: &Summary, dim: Dim) -> f64 {
     let largest = |v: [f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let moment = largest(s.principal_moments);
-    let omega = s.omega.map_or(0.0, |w| w.iter().map(|x| x * x).sum::<f64>().sqrt());
+    let omega = s
+        .omega
+        .map_or(0.0, |w| w.iter().map(|x| x * x).sum::<f64>().sqrt());
     if dim == Dim::LENGTH {
         largest(s.radii_of_gyration)
     } else if dim == Dim::INERTIA {

@@ -19,6 +19,7 @@ mod hostile;
 mod hostile_round_two;
 mod invariants;
 mod layers;
+mod leftovers;
 mod library;
 mod meshes;
 mod new_shapes;
