@@ -62,6 +62,19 @@ pub fn schema() -> Value {
         .and_then(Value::as_object_mut)
         .expect("invariant: `RawPart` is named `Part` in `$defs`");
     part.insert("allOf".into(), Value::Array(part_rules()));
+    // A plain number may be written as a string (`count = "32"`): a
+    // count, an angle in degrees, a parameter.
+    let defs = root
+        .get_mut("$defs")
+        .and_then(Value::as_object_mut)
+        .expect("invariant: the schema has `$defs`");
+    defs.insert("PlainNumber".into(), plain_number());
+    for (def, key) in [("Array", "count"), ("Array", "step_degrees")] {
+        defs[def]["properties"][key]["$ref"] = "#/$defs/PlainNumber".into();
+    }
+    defs["Part"]["properties"]["params"]["additionalProperties"] =
+        json!({ "$ref": "#/$defs/PlainNumber" });
+    root["properties"]["params"]["additionalProperties"] = json!({ "$ref": "#/$defs/PlainNumber" });
     // An array is along a step or about an axis (`model::copies`).
     if let Some(array) = root
         .get_mut("$defs")
@@ -303,13 +316,35 @@ fn quantity_string() -> Value {
 
 /// An expression (`expr`): its names are the file's parameters, which a
 /// schema of every part file cannot know, so only its shape is checked
-/// here (an operator or a parenthesis in it, or a name alone); the reader
+/// here (an operator — `·` is `*` — or a parenthesis in it, or a name
+/// alone: letters of any script, digits, `_`, `²`, `³`); the reader
 /// judges the rest, with located errors.
 fn expression_string() -> Value {
     json!({
         "type": "string",
         "description": "an expression: + - * / ^, parentheses, numbers with units, the file's `[params]`, pi, sqrt, sin, cos, tan, abs, min, max",
-        "pattern": "^[^%\"\\\\]*[-+*/^(),][^%\"\\\\]*$|^\\s*[A-Za-z_\u{b5}\u{3bc}][A-Za-z0-9_]*\\s*$",
+        "pattern": "^[^%\"\\\\]*[-+*/^(),\u{b7}][^%\"\\\\]*$|^\\s*[A-Za-z_\\u0080-\\uFFFF][A-Za-z0-9_\\u0080-\\uFFFF]*\\s*$",
+    })
+}
+
+/// A number written as a string without a unit (`"32"`, `" 1e3 "`): the
+/// number `units::split_number` reads (digits, `.` and `_`, an exponent),
+/// with blanks around it.
+fn number_string() -> Value {
+    json!({
+        "type": "string",
+        "pattern": "^\\s*[+-]?(?:[0-9_]*[0-9][0-9_]*(?:\\.[0-9_]*)?|[0-9_]*\\.[0-9_]*[0-9][0-9_]*)(?:[eE][+-]?[0-9]+)?\\s*$",
+    })
+}
+
+/// What a plain-number key takes (an array's `count` and `step_degrees`,
+/// a parameter): a quantity in any of its forms, or a number written as a
+/// string without a unit (`count = "32"`), which the reader takes where
+/// the number has no dimension.
+fn plain_number() -> Value {
+    json!({
+        "description": "a number, or a string giving one: \"32\", \"n / 2\", a parameter's name",
+        "anyOf": [{ "$ref": "#/$defs/Quantity" }, number_string()],
     })
 }
 
@@ -364,10 +399,11 @@ impl JsonSchema for ExpectValue {
 
     fn json_schema(generator: &mut SchemaGenerator) -> Schema {
         json_schema!({
-            "description": "a quantity, or an array (of arrays) of them for a vector or matrix",
+            "description": "a quantity (a number, a string with its unit, an expression), or an array (of arrays) of them for a vector or matrix",
             "anyOf": [
                 { "type": "number" },
                 quantity_string(),
+                expression_string(),
                 { "type": "array", "items": generator.subschema_for::<ExpectValue>() },
             ],
         })
@@ -504,6 +540,7 @@ schema_only!(
         "anyOf": [
             { "type": "number" },
             quantity_string(),
+            expression_string(),
             // `tolerance`: the text before its trailing `%`s is an f64.
             { "type": "string", "pattern": "^\\s*[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?\\s*%+\\s*$" },
         ],
