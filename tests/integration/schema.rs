@@ -919,19 +919,7 @@ impl Gen<'_, '_> {
                 if dim != Dim::DIMENSIONLESS && !value.starts_with(['"', '\'']) {
                     value = q(format!("{n} {u}"));
                 }
-                // NOTE: letters only: a digit in the name of a parameter
-                // that is zero makes the reader call it too small (a
-                // nonzero literal read to zero), a reader bug of its own.
-                let mut name: String = format!("p{}", self.params.len())
-                    .chars()
-                    .map(|c| {
-                        if c.is_ascii_digit() {
-                            (b'a' + c as u8 - b'0') as char
-                        } else {
-                            c
-                        }
-                    })
-                    .collect();
+                let mut name = format!("p{}", self.params.len());
                 // A name in another script, a quoted key in TOML.
                 if self.p.one_in(4) {
                     name = format!("länge_{name}");
