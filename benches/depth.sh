@@ -94,7 +94,9 @@ echo "== peak memory and output size" >&2
 for c in "${commands[@]}"; do
     # shellcheck disable=SC2086
     /usr/bin/time -f "%M" -o one.txt $c > out.txt 2> /dev/null || true
-    echo "$(cat one.txt) $(wc -c < out.txt)" >> rss.txt
+    # GNU time writes "Command exited with non-zero status N" first for
+    # a refusal: the figure is the last line.
+    echo "$(tail -1 one.txt) $(wc -c < out.txt)" >> rss.txt
 done
 
 python3 - hf.json rss.txt << 'PY'
