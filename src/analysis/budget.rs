@@ -33,11 +33,22 @@ pub fn growth(basic: f64, allowance: f64) -> f64 {
 
 /// One group of the statement (SI): a subsystem or a sub-group, the sum of
 /// its own parts and its sub-groups'.
-#[derive(Debug, Clone, Serialize)]
+///
+/// NOTE: a group keeps its own name and its parent's place, not its path:
+/// a path of n names is n groups of one name each, however many parts
+/// share it (a path per group would cost n² names). JSON writes each
+/// group's `path`, made from the parents as it is written (`groups_json`).
+#[derive(Debug, Clone)]
 pub struct Group {
-    /// Names, outermost first: `["propulsion", "tanks"]`; `[]` for the
-    /// parts that have no group.
-    pub path: Vec<String>,
+    /// Its own name, the last of its path; `None` for the parts that have
+    /// no group (JSON: `path` `[]`).
+    pub name: Option<String>,
+    /// Its parent's index in `Statement::groups` (parents come first);
+    /// `None` for a subsystem.
+    pub parent: Option<usize>,
+    /// The names in its path: 1 for a subsystem, 0 for the parts with no
+    /// group.
+    pub depth: usize,
     /// Its parts, copies counted, its sub-groups' included.
     pub parts: usize,
     pub basic_mass: f64,
@@ -47,6 +58,45 @@ pub struct Group {
     pub predicted_mass: f64,
     /// Of the total predicted mass; `None` (null) where that is zero.
     pub share: Option<f64>,
+}
+
+impl Group {
+    /// Its path, outermost name first: `["propulsion", "tanks"]`; `[]` for
+    /// the parts that have no group. `groups` is the statement's.
+    pub fn path<'a>(&'a self, groups: &'a [Group]) -> Vec<&'a str> {
+        let mut names = Vec::with_capacity(self.depth);
+        let mut at = Some(self);
+        while let Some(g) = at {
+            names.extend(g.name.as_deref());
+            at = g.parent.map(|p| &groups[p]);
+        }
+        names.reverse();
+        names
+    }
+}
+
+/// `Statement::groups` as JSON: each group's fields with its `path`
+/// (docs/budget.md).
+fn groups_json<S: serde::Serializer>(groups: &[Group], s: S) -> Result<S::Ok, S::Error> {
+    #[derive(Serialize)]
+    struct Shown<'a> {
+        path: Vec<&'a str>,
+        parts: usize,
+        basic_mass: f64,
+        growth_mass: f64,
+        growth_fraction: Option<f64>,
+        predicted_mass: f64,
+        share: Option<f64>,
+    }
+    s.collect_seq(groups.iter().map(|g| Shown {
+        path: g.path(groups),
+        parts: g.parts,
+        basic_mass: g.basic_mass,
+        growth_mass: g.growth_mass,
+        growth_fraction: g.growth_fraction,
+        predicted_mass: g.predicted_mass,
+        share: g.share,
+    }))
 }
 
 /// The totals of the statement (SI).
@@ -144,6 +194,7 @@ pub struct Statement {
     pub axes: [[f64; 3]; 3],
     /// Parents before children, each group's sub-groups in the order they
     /// first appear in the file.
+    #[serde(serialize_with = "groups_json")]
     pub groups: Vec<Group>,
     pub total: Total,
     pub no_maturity: Unclassified,
@@ -169,41 +220,53 @@ pub struct Statement {
     pub rtol: f64,
 }
 
-/// A group being summed.
+/// A group being summed: its own name and its parent (`Walked::nodes`).
 struct Node {
-    path: Vec<String>,
+    /// `None`: the parts with no group.
+    name: Option<String>,
+    parent: Option<usize>,
+    depth: usize,
     children: Vec<usize>,
+    /// Its own parts, then (`Walked::total`) its sub-groups' too.
     parts: usize,
     basic: Sum,
     growth: Sum,
 }
 
-/// What one walk of the body finds: the groups (a tree, `nodes[..roots]`
-/// reached through `roots`), the unclassified parts, the total growth and
-/// the growth's point masses.
+/// What one walk of the body finds: the groups (a tree, `nodes` reached
+/// through `roots`; a parent before its children), the unclassified parts,
+/// the total growth and the growth's point masses.
+///
+/// NOTE: nothing here recurses or copies a path: a group is found from its
+/// parent by its name (`named`), and the group a tag's path leads to from
+/// a group is remembered by the tag's address (`reached`: the model holds
+/// every tag for the whole walk), so the copies of a part, and the parts
+/// of a file included many times, find their group at once, however deep
+/// it is. A part adds to its own group only; `total` adds each group into
+/// its parent once, at the end.
 #[derive(Default)]
 struct Walked {
     nodes: Vec<Node>,
     roots: Vec<usize>,
-    index: std::collections::HashMap<Vec<String>, usize>,
+    /// (parent, or `usize::MAX` for a subsystem; name) → group.
+    named: std::collections::HashMap<(usize, String), usize>,
+    /// (group, tag's address) → the group its path leads to.
+    reached: std::collections::HashMap<(Option<usize>, *const Tag), Option<usize>>,
+    /// The parts with no group's node, once one is met.
+    no_group: Option<usize>,
     unclassified: (usize, Sum),
     growth: Sum,
     points: Vec<Part>,
 }
 
 impl Walked {
-    /// The node of `path`, made (with its parents) where new.
-    fn node(&mut self, path: &[String]) -> usize {
-        if let Some(&i) = self.index.get(path) {
-            return i;
-        }
-        let parent = match path {
-            [] | [_] => None,
-            [rest @ .., _] => Some(self.node(rest)),
-        };
+    /// A new group, a child of `parent` (or a subsystem).
+    fn push(&mut self, name: Option<String>, parent: Option<usize>) -> usize {
         let i = self.nodes.len();
         self.nodes.push(Node {
-            path: path.to_vec(),
+            name,
+            parent,
+            depth: parent.map_or(0, |p| self.nodes[p].depth) + 1,
             children: Vec::new(),
             parts: 0,
             basic: Sum::default(),
@@ -213,22 +276,93 @@ impl Walked {
             Some(p) => self.nodes[p].children.push(i),
             None => self.roots.push(i),
         }
-        self.index.insert(path.to_vec(), i);
         i
+    }
+
+    /// The group `name` under `parent` (or the subsystem), made where new.
+    fn child(&mut self, parent: Option<usize>, name: &str) -> usize {
+        let key = (parent.unwrap_or(usize::MAX), name.to_string());
+        if let Some(&i) = self.named.get(&key) {
+            return i;
+        }
+        let i = self.push(Some(key.1.clone()), parent);
+        self.named.insert(key, i);
+        i
+    }
+
+    /// The group `tag`'s path leads to from `from` (a sub-assembly's
+    /// group; `None` at the top): `from` itself if it has no group.
+    fn reach(&mut self, from: Option<usize>, tag: Option<&Tag>) -> Option<usize> {
+        let Some((tag, names)) = tag.and_then(|t| Some((t, t.group.as_ref()?))) else {
+            return from;
+        };
+        let key = (from, std::ptr::from_ref(tag));
+        if let Some(&to) = self.reached.get(&key) {
+            return to;
+        }
+        let mut at = from;
+        for name in names {
+            at = Some(self.child(at, name));
+        }
+        self.reached.insert(key, at);
+        at
+    }
+
+    /// The group of a part whose path leads to `at`: the parts with no
+    /// group are a group of their own (`[]`), not every group's parent.
+    fn group_of(&mut self, at: Option<usize>) -> usize {
+        match (at, self.no_group) {
+            (Some(i), _) | (None, Some(i)) => i,
+            (None, None) => {
+                let i = self.push(None, None);
+                self.nodes[i].depth = 0;
+                self.no_group = Some(i);
+                i
+            }
+        }
+    }
+
+    /// Each group's figures with its sub-groups' added: children after
+    /// their parents in `nodes`, so each is complete before it is added.
+    fn total(&mut self) {
+        for i in (0..self.nodes.len()).rev() {
+            let Some(p) = self.nodes[i].parent else {
+                continue;
+            };
+            let (parts, basic, growth) = {
+                let n = &self.nodes[i];
+                (n.parts, n.basic.dd(), n.growth.dd())
+            };
+            let parent = &mut self.nodes[p];
+            parent.parts += parts;
+            for (sum, x) in [(&mut parent.basic, basic), (&mut parent.growth, growth)] {
+                sum.add(x.hi);
+                sum.add(x.lo);
+            }
+        }
     }
 }
 
-/// A part's maturity: its own, else the innermost sub-assembly's that
-/// gives one (`stack`: the tags of the sub-assemblies entered, outermost
-/// first). The one rule, for the statement and the uncertainty.
-fn maturity_of<'a>(stack: &'a [Option<Tag>], own: Option<&'a Tag>) -> Option<&'a Maturity> {
-    own.and_then(|t| t.maturity.as_ref()).or_else(|| {
-        stack
-            .iter()
-            .rev()
-            .flatten()
-            .find_map(|t| t.maturity.as_ref())
-    })
+/// What a walk keeps of each sub-assembly entered: the group its parts go
+/// under, and its maturity's allowance (the default of its parts).
+#[derive(Clone, Copy)]
+struct Entered {
+    group: Option<usize>,
+    allowance: Option<f64>,
+}
+
+/// A part's allowance: its own maturity's, else the innermost
+/// sub-assembly's that gives one (`stack`, outermost first). The one rule,
+/// for the statement and the uncertainty.
+fn allowance_of(stack: &[Entered], own: Option<&Tag>) -> Option<f64> {
+    own.and_then(|t| t.maturity.as_ref())
+        .map(|m: &Maturity| m.allowance)
+        .or_else(|| stack.iter().rev().find_map(|e| e.allowance))
+}
+
+/// A sub-assembly's maturity's allowance, if it gives one.
+fn own_allowance(tag: Option<&Tag>) -> Option<f64> {
+    tag.and_then(|t| t.maturity.as_ref()).map(|m| m.allowance)
 }
 
 /// Each part's growth allowance (a fraction; 0 without a maturity), by
@@ -236,13 +370,16 @@ fn maturity_of<'a>(stack: &'a [Option<Tag>], own: Option<&'a Tag>) -> Option<&'a
 /// adds to it, for `uncertainty`.
 pub fn allowances(model: &Model) -> Vec<f64> {
     let mut out = Vec::with_capacity(model.count);
-    let mut stack: Vec<Option<Tag>> = Vec::new();
+    let mut stack: Vec<Entered> = Vec::new();
     model.each_event(&mut |e| match e {
-        Event::Enter(inc) => stack.push(inc.tag.as_deref().cloned()),
+        Event::Enter(inc) => stack.push(Entered {
+            group: None,
+            allowance: own_allowance(inc.tag.as_deref()),
+        }),
         Event::Exit => {
             stack.pop();
         }
-        Event::Part(leaf) => out.push(maturity_of(&stack, leaf.tag).map_or(0.0, |m| m.allowance)),
+        Event::Part(leaf) => out.push(allowance_of(&stack, leaf.tag).unwrap_or(0.0)),
     });
     out
 }
@@ -253,28 +390,29 @@ pub fn allowances(model: &Model) -> Vec<f64> {
 fn walk(model: &Model) -> Walked {
     let factors = SiFactors::of(model.units);
     let mut w = Walked::default();
-    // The tags of the sub-assemblies entered, outermost first (copied: a
-    // walk's events live only as long as each call).
-    let mut stack: Vec<Option<Tag>> = Vec::new();
-    let mut path: Vec<String> = Vec::new();
+    // The sub-assemblies entered, outermost first.
+    let mut stack: Vec<Entered> = Vec::new();
     model.each_event(&mut |e| match e {
-        Event::Enter(inc) => stack.push(inc.tag.as_deref().cloned()),
+        Event::Enter(inc) => {
+            let from = stack.last().and_then(|e| e.group);
+            stack.push(Entered {
+                group: w.reach(from, inc.tag.as_deref()),
+                allowance: own_allowance(inc.tag.as_deref()),
+            });
+        }
         Event::Exit => {
             stack.pop();
         }
         Event::Part(leaf) => {
-            path.clear();
-            let groups = stack.iter().flatten().chain(leaf.tag);
-            for t in groups {
-                path.extend(t.group.iter().flatten().cloned());
-            }
-            let maturity = maturity_of(&stack, leaf.tag);
+            let from = stack.last().and_then(|e| e.group);
+            let at = w.reach(from, leaf.tag);
+            let i = w.group_of(at);
             let p = leaf.part;
             // Signed: a cut-out's is negative, and so is its growth.
             let basic = p.mass_si(&factors);
-            let grown = match maturity {
-                Some(m) => {
-                    let g = growth(p.mass::<f64>(), m.allowance);
+            let grown = match allowance_of(&stack, leaf.tag) {
+                Some(allowance) => {
+                    let g = growth(p.mass::<f64>(), allowance);
                     if g != 0.0 {
                         w.points.push(point(p, g));
                     }
@@ -287,22 +425,13 @@ fn walk(model: &Model) -> Walked {
                 }
             };
             w.growth.add(grown);
-            // Its group and each group above it; the parts with no group
-            // are a group of their own (`[]`), not every group's parent.
-            let mut at = path.len();
-            loop {
-                let i = w.node(&path[..at]);
-                let n = &mut w.nodes[i];
-                n.parts += 1;
-                n.basic.add(basic);
-                n.growth.add(grown);
-                if at <= 1 {
-                    break;
-                }
-                at -= 1;
-            }
+            let n = &mut w.nodes[i];
+            n.parts += 1;
+            n.basic.add(basic);
+            n.growth.add(grown);
         }
     });
+    w.total();
     w
 }
 
@@ -483,14 +612,19 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
     let total_predicted = predicted.mass;
     let ratio = |a: f64, b: f64| (b != 0.0).then(|| a / b);
     let mut groups = Vec::with_capacity(w.nodes.len());
-    // Depth first, each level in order of first appearance.
+    // Depth first, each level in order of first appearance; `at[i]`, node
+    // i's place in `groups` (a parent's is known before its children's).
+    let mut at = vec![0; w.nodes.len()];
     let mut todo: Vec<usize> = w.roots.iter().rev().copied().collect();
     while let Some(i) = todo.pop() {
-        let n = &w.nodes[i];
+        let n = &mut w.nodes[i];
         let (basic, grown) = (n.basic.value(), n.growth.value());
         let predicted_mass = basic + grown;
+        at[i] = groups.len();
         groups.push(Group {
-            path: n.path.clone(),
+            name: n.name.take(),
+            parent: n.parent.map(|p| at[p]),
+            depth: n.depth,
             parts: n.parts,
             basic_mass: basic,
             growth_mass: grown,
@@ -498,7 +632,7 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
             predicted_mass,
             share: ratio(predicted_mass, total_predicted),
         });
-        todo.extend(n.children.iter().rev());
+        todo.extend(w.nodes[i].children.iter().rev());
     }
     let growth_mass = w.growth.value();
     let given = limit(&model);

@@ -169,8 +169,6 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         analysis::flag_axes(t)?;
     }
     let found = collect(&o.paths, &o.search)?;
-    let mut results = Vec::new();
-    let mut stderr = String::new();
     let settings = Settings {
         accuracy: o.accuracy,
         includes: o.includes.clone(),
@@ -182,29 +180,109 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         predicted: true,
         ..Settings::default()
     };
-    let invalid = |path: String, d: Diagnostic, stderr: &mut String| {
-        stderr.push_str(&d.render(colour));
-        FileResult {
-            path,
-            status: Status::Invalid,
-            error: Some(d),
-            checks: Vec::new(),
-            validity: Vec::new(),
-            precision: None,
-            accuracy_warnings: Vec::new(),
-            robot: None,
-            format: None,
-        }
+    let each = Each {
+        o,
+        settings: &settings,
+        colour,
     };
-    // Every file found, valid or not, and every file those include.
-    let mut read: Vec<PathBuf> = Vec::new();
-    for found in found {
+    let (results, stderr, read) = each.all(found);
+    if results.is_empty() {
+        return Err(Diagnostic::plain(
+            "no part files or robot descriptions found (a directory is searched for `*.toml` files with a `[[part]]` table, and for `*.urdf`, `*.sdf` and `*.xml` robot descriptions; hidden and ignored ones are passed over)",
+        ));
+    }
+    let worst = |s: Status| results.iter().any(|r| r.status == s);
+    let status = if worst(Status::Invalid) {
+        2
+    } else if worst(Status::Failed) {
+        1
+    } else {
+        0
+    };
+    Ok(Outcome {
+        stdout: super::Stdout::Text(render::render(
+            &render::Output::Check(&results),
+            o.format,
+            terminal.stdout,
+        )),
+        stderr,
+        status,
+        read,
+    })
+}
+
+/// The stack of the thread that checks the files: far more than any
+/// check needs. NOTE: no reader recurses on a depth the input chooses
+/// (group paths, expressions, TOML and XML are bounded or walked with
+/// stacks of their own); this is the margin for one that someday does,
+/// as `guarded` is for a panic: one file must never take the other files'
+/// results, and the report, with it. Reserved, not committed: the pages
+/// never touched cost nothing.
+const STACK: usize = 256 << 20;
+
+/// What the check of every file shares.
+struct Each<'a> {
+    o: &'a Options,
+    settings: &'a Settings,
+    colour: bool,
+}
+
+impl Each<'_> {
+    /// Every file found, in order, on a thread of a large stack (`STACK`),
+    /// a file's panic its own result (`guarded`): the results, standard
+    /// error, and every file read (those the files include too, valid or
+    /// not: `-o` may write onto none of them).
+    fn all(&self, found: Vec<Found>) -> (Vec<FileResult>, String, Vec<PathBuf>) {
+        let found = std::sync::Mutex::new(Some(found));
+        let work = || {
+            let found = found.lock().ok().and_then(|mut f| f.take());
+            self.each(found.unwrap_or_default())
+        };
+        std::thread::scope(|scope| {
+            let w = &work;
+            match std::thread::Builder::new()
+                .name("check".to_string())
+                .stack_size(STACK)
+                .spawn_scoped(scope, w)
+            {
+                Ok(thread) => thread
+                    .join()
+                    .expect("invariant: a file's panic is caught by `guarded`"),
+                // No thread to be had (a limit on threads or memory): the
+                // files are checked here, on this thread's stack.
+                Err(_) => work(),
+            }
+        })
+    }
+
+    fn each(&self, found: Vec<Found>) -> (Vec<FileResult>, String, Vec<PathBuf>) {
+        let (mut results, mut stderr, mut read) = (Vec::new(), String::new(), Vec::new());
+        for found in found {
+            let name = match &found {
+                Found::File(path, _) if path.as_os_str() == "-" => "<stdin>".to_string(),
+                Found::File(path, _) => display_path(path),
+                Found::Skipped(name, _) => name.clone(),
+            };
+            let r = guarded(&name, self.colour, &mut stderr, |stderr| {
+                self.one(found, stderr, &mut read)
+            });
+            results.extend(r);
+        }
+        (results, stderr, read)
+    }
+
+    /// One file checked: its result, or `None` for a file a directory's
+    /// search passes over (a `*.toml` that is no part file).
+    fn one(
+        &self,
+        found: Found,
+        stderr: &mut String,
+        read: &mut Vec<PathBuf>,
+    ) -> Option<FileResult> {
+        let (o, settings, colour) = (self.o, self.settings, self.colour);
         let (path, found) = match found {
             Found::File(path, found) => (path, found),
-            Found::Skipped(path, d) => {
-                results.push(invalid(path, d, &mut stderr));
-                continue;
-            }
+            Found::Skipped(path, d) => return Some(invalid(path, d, stderr, colour)),
         };
         read.extend(std::fs::canonicalize(&path).ok());
         let f = if path.as_os_str() == "-" {
@@ -236,7 +314,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
                     let d = crate::robot::read::read(&s, format)?;
                     Ok(crate::robot::check::check(&s, &d, &o.engines))
                 });
-                results.push(match r {
+                return Some(match r {
                     Ok(r) => FileResult {
                         path: f,
                         status: if r.failed() {
@@ -254,13 +332,12 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
                     },
                     Err(d) => FileResult {
                         format: Some(format),
-                        ..invalid(f, d, &mut stderr)
+                        ..invalid(f, d, stderr, colour)
                     },
                 });
-                continue;
             }
             if found {
-                continue;
+                return None;
             }
             if path.as_os_str() == "-" {
                 stdin = Some(source);
@@ -278,7 +355,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         });
         if found && matches!(&source, Some(Ok(s)) if !crate::model::looks_like_a_part_file(&s.text))
         {
-            continue;
+            return None;
         }
         // A file that cannot be blessed is left untouched. If it is invalid
         // the check below says why; if it is valid, the bless failure
@@ -288,7 +365,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             // NOTE: `bless_file` takes a UTF-8 path; a name that is not
             // UTF-8 is checked, not blessed.
             let blessed = match path.to_str() {
-                Some(p) => bless::bless_file(p, &settings),
+                Some(p) => bless::bless_file(p, settings),
                 None => Err(Diagnostic::file(
                     &f,
                     "`--bless` cannot write a file whose name is not UTF-8; rename it to bless it",
@@ -306,7 +383,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         let loaded = source
             .or(stdin)
             .unwrap_or_else(|| crate::io::read_source_at(&path))
-            .and_then(|source| analysis::load_source_reading(source, &settings, &mut read))
+            .and_then(|source| analysis::load_source_reading(source, settings, read))
             .map(|l| {
                 let r = check_loaded(&l);
                 // The predicted body's too, where the file has one.
@@ -331,32 +408,90 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             }
             (checked, None) => checked,
         };
-        match checked {
-            Ok(r) => results.push(r),
-            Err(d) => results.push(invalid(f, d, &mut stderr)),
+        Some(match checked {
+            Ok(r) => r,
+            Err(d) => invalid(f, d, stderr, colour),
+        })
+    }
+}
+
+/// `check` of one file (`name`, as shown), a panic in it (a bug) made its
+/// result: invalid, with an internal error that says so, so that the
+/// other files are still checked and reported.
+fn guarded(
+    name: &str,
+    colour: bool,
+    stderr: &mut String,
+    check: impl FnOnce(&mut String) -> Option<FileResult>,
+) -> Option<FileResult> {
+    match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| check(&mut *stderr))) {
+        Ok(r) => r,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            let d = Diagnostic::file(
+                name,
+                format!(
+                    "internal error while checking this file: {}",
+                    crate::diag::shorten(&visible(&what))
+                ),
+            )
+            .help("a bug in massprop, not in the file: please report it, with the file; the other files are checked");
+            Some(invalid(name.to_string(), d, stderr, colour))
         }
     }
-    if results.is_empty() {
-        return Err(Diagnostic::plain(
-            "no part files or robot descriptions found (a directory is searched for `*.toml` files with a `[[part]]` table, and for `*.urdf`, `*.sdf` and `*.xml` robot descriptions; hidden and ignored ones are passed over)",
-        ));
+}
+
+/// A file that cannot be checked: its error, on standard error too.
+fn invalid(path: String, d: Diagnostic, stderr: &mut String, colour: bool) -> FileResult {
+    stderr.push_str(&d.render(colour));
+    FileResult {
+        path,
+        status: Status::Invalid,
+        error: Some(d),
+        checks: Vec::new(),
+        validity: Vec::new(),
+        precision: None,
+        accuracy_warnings: Vec::new(),
+        robot: None,
+        format: None,
     }
-    let worst = |s: Status| results.iter().any(|r| r.status == s);
-    let status = if worst(Status::Invalid) {
-        2
-    } else if worst(Status::Failed) {
-        1
-    } else {
-        0
-    };
-    Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(
-            &render::Output::Check(&results),
-            o.format,
-            terminal.stdout,
-        )),
-        stderr,
-        status,
-        read,
-    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_panic_while_checking_a_file_is_that_files_internal_error() {
+        let mut stderr = String::from("before\n");
+        let r = guarded("bad.toml", false, &mut stderr, |stderr| {
+            stderr.push_str("partly written\n");
+            panic!("a bug at \u{1b}[31m this place")
+        })
+        .expect("a result for the file");
+        assert_eq!(r.path, "bad.toml");
+        assert_eq!(r.status, Status::Invalid);
+        let message = r.error.expect("an error").to_string();
+        assert!(
+            message
+                .starts_with("bad.toml: error: internal error while checking this file: a bug at "),
+            "{message}"
+        );
+        assert!(!message.contains('\u{1b}'), "{message}");
+        assert!(
+            stderr.starts_with("before\npartly written\nbad.toml: error: internal error"),
+            "{stderr}"
+        );
+    }
+
+    #[test]
+    fn a_file_checked_without_a_panic_keeps_its_own_result() {
+        let mut stderr = String::new();
+        assert!(guarded("passed-over.toml", false, &mut stderr, |_| None).is_none());
+        assert!(stderr.is_empty());
+    }
 }

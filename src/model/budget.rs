@@ -26,6 +26,17 @@ pub struct Tag {
     pub maturity: Option<Maturity>,
 }
 
+/// The most names a part's group path may have, the groups of the
+/// sub-assemblies that hold it counted (`"a/b"` in a sub-assembly of group
+/// `"c"` is three: `c/a/b`).
+///
+/// NOTE: a weight statement's groups nest a few levels deep (SAWE RP-8's
+/// and MIL-STD-1374's are three or four); each group's row and JSON `path`
+/// name every group above it, so a statement's size grows with the
+/// depth times the number of groups, and the bound keeps it within a fixed
+/// multiple of the file's text.
+pub const MAX_GROUP_DEPTH: usize = 64;
+
 /// A design maturity and the allowance its file's `[growth]` gives it.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Maturity {
@@ -39,6 +50,26 @@ pub struct Maturity {
 /// "growth" is no allowance but a basic mass not yet known, and a body
 /// eleven times its basic mass would no longer be the design weighed.
 pub const MAX_ALLOWANCE: f64 = 10.0;
+
+const GROUP_DEPTH_HELP: &str = "a group path names a subsystem and its sub-groups, a few levels deep (\"propulsion/tanks\"); each level is a row of the weight statement";
+
+/// The deepest group path of `items`' parts, in names, their
+/// sub-assemblies' groups counted (`Model::group_depth`).
+pub(super) fn group_depth(items: &[super::Item]) -> usize {
+    let len = |tag: &Option<Box<Tag>>| {
+        tag.as_ref()
+            .and_then(|t| t.group.as_ref())
+            .map_or(0, Vec::len)
+    };
+    items
+        .iter()
+        .map(|item| match item {
+            super::Item::Part { tag, .. } => len(tag),
+            super::Item::Include(inc) => len(&inc.tag) + inc.model.group_depth,
+        })
+        .max()
+        .unwrap_or(0)
+}
 
 /// `[budget]`, read: the not-to-exceed limit of the predicted mass.
 #[derive(Debug, Clone, PartialEq)]
@@ -133,9 +164,50 @@ impl Ctx<'_> {
         Ok((group.is_some() || maturity.is_some()).then(|| Box::new(Tag { group, maturity })))
     }
 
-    /// `group = "a/b"`: names joined by `/`, none empty.
+    /// An include's `group` and `maturity`, as `tag`; its group and the
+    /// included file's deepest group path (`child`) together at most
+    /// `MAX_GROUP_DEPTH` names.
+    pub(super) fn include_tag(
+        &self,
+        p: &RawPart,
+        child: &super::Model,
+    ) -> Result<Option<Box<Tag>>, Diagnostic> {
+        let tag = self.tag(p)?;
+        let own = tag
+            .as_ref()
+            .and_then(|t| t.group.as_ref())
+            .map_or(0, Vec::len);
+        if let Some(g) = p.group.as_deref()
+            && own + child.group_depth > MAX_GROUP_DEPTH
+        {
+            return Err(self
+                .err(
+                    g.span(),
+                    format!(
+                        "`group` puts the included parts {} groups deep ({own} here, {} in the included file), past the limit of {MAX_GROUP_DEPTH}",
+                        own + child.group_depth,
+                        child.group_depth
+                    ),
+                )
+                .help(GROUP_DEPTH_HELP));
+        }
+        Ok(tag)
+    }
+
+    /// `group = "a/b"`: names joined by `/`, none empty, at most
+    /// `MAX_GROUP_DEPTH`.
     fn group_path(&self, g: &Spanned<String>) -> Result<Vec<String>, Diagnostic> {
         let text = g.get_ref();
+        // Counted before any name is copied.
+        let depth = text.split('/').count();
+        if depth > MAX_GROUP_DEPTH {
+            return Err(self
+                .err(
+                    g.span(),
+                    format!("`group` has {depth} names, past the limit of {MAX_GROUP_DEPTH}"),
+                )
+                .help(GROUP_DEPTH_HELP));
+        }
         let names: Vec<String> = text.split('/').map(|n| n.trim().to_string()).collect();
         if names.iter().any(String::is_empty) {
             let what = if text.trim().is_empty() {

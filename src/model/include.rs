@@ -539,13 +539,14 @@ impl Ctx<'_> {
                 ),
             ));
         }
+        let tag = self.include_tag(p, &child)?;
         let include = Include {
             name,
             frame,
             model: child,
             span: raw.span(),
             copies: None,
-            tag: self.tag(p)?,
+            tag,
             tol,
         };
         // Representable in this file's units too (the composer works in

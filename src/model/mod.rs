@@ -80,6 +80,9 @@ pub struct Model {
     /// The file's toleranced quantities, in file order (a part's
     /// `Part::tol` points into them).
     pub sources: Vec<tolerance::Source>,
+    /// The most names in a part's group path, its sub-assemblies' groups
+    /// counted: at most `budget::MAX_GROUP_DEPTH`.
+    pub group_depth: usize,
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
@@ -160,6 +163,7 @@ impl Model {
             budget: None,
             included: Vec::new(),
             sources: Vec::new(),
+            group_depth: 0,
         }
     }
 
@@ -383,6 +387,7 @@ impl Model {
         };
         let budget = raw.budget.as_ref().map(|b| ctx.budget(b)).transpose()?;
         Ok(Model {
+            group_depth: budget::group_depth(&items),
             name: raw.name.map(|n| n.into_inner()),
             units: ctx.units,
             items: std::sync::Arc::new(items),
@@ -514,6 +519,7 @@ impl Model {
             })));
         }
         Model {
+            group_depth: budget::group_depth(&items),
             items: std::sync::Arc::new(items),
             count,
             has_real_sizes,

@@ -45,7 +45,12 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         .replace("invalid type: map", "invalid type: table")
         .replace("expected a map", "expected a table")
         .replace("invalid type: sequence", "invalid type: array")
-        .replace("a sequence", "an array");
+        .replace("a sequence", "an array")
+        // The toml crate's limit of nesting (80 levels), in its words.
+        .replace(
+            "cannot recurse further; max recursion depth met",
+            "arrays and inline tables nested more than 80 deep, the most the TOML reader takes",
+        );
     // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
     // length", or an unknown key inside it) would name neither the table
     // nor the fix. Such a header is an error wherever serde stumbled.

@@ -64,10 +64,10 @@ pub fn table(s: &Statement, width: Option<usize>) -> String {
     };
     for g in &s.groups {
         row(
-            &|t: &mut String| match g.path.split_last() {
+            &|t: &mut String| match &g.name {
                 None => t.push_str(NO_GROUP),
-                Some((own, above)) => {
-                    t.push_str(&"  ".repeat(above.len()));
+                Some(own) => {
+                    t.push_str(&"  ".repeat(g.depth - 1));
                     push_name(t, own);
                 }
             },

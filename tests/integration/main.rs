@@ -11,6 +11,7 @@ mod cli;
 mod colour;
 mod common;
 mod cost;
+mod depth;
 mod diff;
 mod docs;
 mod files;

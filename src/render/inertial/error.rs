@@ -12,6 +12,9 @@ use std::fmt;
 pub enum UpdateError {
     /// The text is not well-formed XML: roxmltree's message.
     Xml { message: String, at: Option<usize> },
+    /// A reference to an entity the doctype declares, which the
+    /// simulators do not expand (`robot::read::entity_in_use`'s message).
+    Entity { message: String, at: usize },
     /// The root element is not the format's (`<robot>`, `<sdf>`,
     /// `<mujoco>`).
     Root {
@@ -55,6 +58,7 @@ impl UpdateError {
             | UpdateError::Root { at, .. }
             | UpdateError::Duplicate { at, .. }
             | UpdateError::Inertials { at, .. } => *at,
+            UpdateError::Entity { at, .. } => Some(*at),
             UpdateError::NoLink { .. } => None,
         }
     }
@@ -82,6 +86,7 @@ impl fmt::Display for UpdateError {
         use crate::diag::shorten;
         match self {
             UpdateError::Xml { message, .. } => write!(f, "not well-formed XML: {message}"),
+            UpdateError::Entity { message, .. } => f.write_str(message),
             UpdateError::Root { format, found, .. } => write!(
                 f,
                 "the root element is <{}>, not the <{}> of a {} file",

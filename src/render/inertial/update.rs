@@ -52,6 +52,14 @@ pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<Stri
             at: Some(deep.range().start),
         });
     }
+    // As the reader: a reference to an entity the doctype declares is
+    // refused (the simulators would not expand it).
+    if let Some(e) = crate::robot::read::entity_in_use(text, &doc) {
+        return Err(UpdateError::Entity {
+            message: e.message(text),
+            at: e.at.start,
+        });
+    }
     let root = doc.root_element();
     if qname(text, root) != root_name(format) {
         return Err(UpdateError::Root {

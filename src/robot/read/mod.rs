@@ -53,8 +53,9 @@ pub fn read(source: &Source, format: Format) -> Result<Description, Diagnostic> 
 /// The document, or roxmltree's message at the place it names.
 fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
     // NOTE: a DTD is allowed (some exporters write one, and MuJoCo's and
-    // urdfdom's parsers accept it); roxmltree still guards against entity
-    // expansion bombs.
+    // urdfdom's parsers accept it), and so are the entities it declares,
+    // but not a reference to one (`entity_in_use`); roxmltree still guards
+    // against entity expansion bombs.
     let options = ParsingOptions {
         allow_dtd: true,
         ..ParsingOptions::default()
@@ -80,7 +81,129 @@ fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
             )
             .help("a chain of bodies this long is a generated or damaged file"));
     }
+    if let Some(e) = entity_in_use(&source.text, &doc) {
+        return Err(e.diagnostic(source));
+    }
     Ok(doc)
+}
+
+/// A reference to an entity the document's doctype declares (`&name;`),
+/// where it is and where the entity is declared.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub(crate) struct EntityInUse {
+    /// The reference's bytes, `&name;`.
+    pub at: Range<usize>,
+    /// Where the doctype declares it (`<!ENTITY name`), if found.
+    pub declared: Option<usize>,
+}
+
+impl EntityInUse {
+    /// Why the file is refused, in a sentence for `export --update` too.
+    pub(crate) fn message(&self, text: &str) -> String {
+        let reference = &text[self.at.clone()];
+        let declared = match self.declared {
+            Some(d) => {
+                let line = text[..d].matches('\n').count() + 1;
+                format!(" (declared on line {line})")
+            }
+            None => String::new(),
+        };
+        format!(
+            "`{}` refers to an entity of the doctype{declared}: the simulators' XML parser (tinyxml2, in MuJoCo and Gazebo) does not expand it, and reads `{}` itself",
+            shorten(reference),
+            shorten(reference)
+        )
+    }
+
+    pub(crate) const HELP: &'static str = "write the entity's text in place of each reference (`xmllint --noent FILE` prints the file so); XML's own `&lt;` `&gt;` `&amp;` `&apos;` `&quot;` and character references such as `&#48;` are read alike everywhere";
+
+    fn diagnostic(&self, source: &Source) -> Diagnostic {
+        source
+            .error(self.at.clone(), self.message(&source.text))
+            .help(Self::HELP)
+    }
+}
+
+/// The first reference (in document order) to an entity other than XML's
+/// five (`lt`, `gt`, `amp`, `apos`, `quot`) and character references
+/// (`&#48;`): an entity the doctype declares, which roxmltree expands and
+/// tinyxml2 (MuJoCo, libsdformat) does not. MuJoCo 4 refuses
+/// `mass="&m;"` ("bad format in attribute 'mass'") and names a body
+/// `name="&n;"` literally `&n;`; so a reference is refused, while a
+/// declaration no element uses is read as the simulators read it, passed
+/// over.
+///
+/// NOTE: `doc` is well-formed, so in the root element every `&` outside a
+/// comment, CDATA section or processing instruction begins a reference
+/// ending at the next `;` (an attribute value holds no `<`, so neither of
+/// those can begin inside one). Without a doctype roxmltree has already
+/// refused any reference but the predefined ones.
+pub(crate) fn entity_in_use(text: &str, doc: &Document) -> Option<EntityInUse> {
+    let root = doc.root_element().range();
+    let prolog = &text[..root.start];
+    if !prolog.contains("<!DOCTYPE") {
+        return None;
+    }
+    let bytes = text.as_bytes();
+    let mut i = root.start;
+    while i < root.end {
+        match bytes[i] {
+            b'<' => {
+                let rest = &text[i..root.end];
+                let close = if rest.starts_with("<!--") {
+                    "-->"
+                } else if rest.starts_with("<![CDATA[") {
+                    "]]>"
+                } else if rest.starts_with("<?") {
+                    "?>"
+                } else {
+                    i += 1;
+                    continue;
+                };
+                i += rest.find(close).map_or(rest.len(), |k| k + close.len());
+            }
+            b'&' => {
+                let end = i + text[i..root.end].find(';')?;
+                let name = &text[i + 1..end];
+                if !name.starts_with('#') && !matches!(name, "lt" | "gt" | "amp" | "apos" | "quot")
+                {
+                    return Some(EntityInUse {
+                        at: i..end + 1,
+                        declared: declaration(prolog, name),
+                    });
+                }
+                i = end + 1;
+            }
+            _ => i += 1,
+        }
+    }
+    None
+}
+
+/// Where the prolog declares the general entity `name` (`<!ENTITY name`),
+/// comments passed over.
+fn declaration(prolog: &str, name: &str) -> Option<usize> {
+    let mut from = 0;
+    while let Some(k) = prolog[from..].find("<!") {
+        let at = from + k;
+        let rest = &prolog[at..];
+        if rest.starts_with("<!--") {
+            from = at + rest.find("-->").map_or(rest.len(), |e| e + 3);
+            continue;
+        }
+        if let Some(decl) = rest.strip_prefix("<!ENTITY") {
+            let decl = decl.trim_start_matches(|c: char| c.is_ascii_whitespace());
+            let declared = decl
+                .split(|c: char| c.is_ascii_whitespace())
+                .next()
+                .unwrap_or("");
+            if declared == name {
+                return Some(at);
+            }
+        }
+        from = at + 2;
+    }
+    None
 }
 
 /// The deepest an element may be nested (the root element is at depth 1).
@@ -465,11 +588,62 @@ mod tests {
         );
     }
 
+    /// A URDF of one link of mass `mass`, after the doctype `doctype`.
+    fn with_doctype(doctype: &str, mass: &str) -> String {
+        format!(
+            "<?xml version='1.0'?>\n{doctype}\n<robot name='r'><link name='a'><inertial><mass value='{mass}'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>"
+        )
+    }
+
     #[test]
-    fn a_doctype_is_allowed() {
-        let text = "<?xml version='1.0'?>\n<!DOCTYPE robot [<!ENTITY m '2'>]>\n<robot name='r'><link name='a'><inertial><mass value='&m;'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>";
-        let d = read(&source(text), Format::Urdf).unwrap();
+    fn a_doctype_declaring_entities_no_element_uses_is_allowed() {
+        let text = with_doctype("<!DOCTYPE robot [<!ENTITY m '2'>]>", "2");
+        let d = read(&source(&text), Format::Urdf).unwrap();
         assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
+    }
+
+    #[test]
+    fn a_reference_to_a_declared_entity_is_refused_at_the_reference() {
+        let text = with_doctype("<!DOCTYPE robot [\n<!ENTITY m '2'>\n]>", "&m;");
+        let d = read(&source(&text), Format::Urdf).unwrap_err().to_string();
+        // Line 5 (the declaration, the doctype's lines, then the robot),
+        // column of `&m;` in `<mass value='&m;'/>`.
+        let column = text.lines().nth(4).unwrap().find("&m;").unwrap() + 1;
+        assert!(
+            d.starts_with(&format!(
+                "r.xml:5:{column}: error: `&m;` refers to an entity of the doctype (declared on line 3): "
+            )),
+            "{d}"
+        );
+    }
+
+    #[test]
+    fn xmls_own_entities_and_character_references_are_read() {
+        let text = with_doctype("<!DOCTYPE robot [<!ENTITY m '3'>]>", "&#50;");
+        let d = read(&source(&text), Format::Urdf).unwrap();
+        assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
+        let text = text.replace("name='a'", "name='a&amp;b&lt;&gt;&apos;&quot;'");
+        let d = read(&source(&text), Format::Urdf).unwrap();
+        assert_eq!(d.links[0].name, "a&b<>'\"");
+    }
+
+    #[test]
+    fn an_ampersand_in_a_comment_or_cdata_is_no_reference() {
+        let text = with_doctype("<!DOCTYPE robot [<!ENTITY m '2'>]>", "2").replace(
+            "<link name='a'>",
+            "<!-- &m; --><link name='a'><![CDATA[&m;]]><?pi &m;?>",
+        );
+        assert!(read(&source(&text), Format::Urdf).is_ok());
+    }
+
+    #[test]
+    fn a_declaration_inside_a_comment_is_not_the_one_named() {
+        let text = with_doctype(
+            "<!DOCTYPE robot [\n<!-- <!ENTITY m 'no'> -->\n<!ENTITY m '2'>\n]>",
+            "&m;",
+        );
+        let d = read(&source(&text), Format::Urdf).unwrap_err().to_string();
+        assert!(d.contains("(declared on line 4)"), "{d}");
     }
 
     #[test]
