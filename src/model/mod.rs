@@ -44,7 +44,26 @@ use ctx::Ctx;
 use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
+use toml::Spanned;
 use streamed::{Streamed, with_sections};
+
+thread_local! {
+    /// Part files parsed on this thread (`files_parsed_on_this_thread`).
+    static PARSED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+fn count_parse() {
+    PARSED.with(|n| n.set(n.get() + 1));
+}
+
+/// How many part files' texts this thread has parsed (the top-level file,
+/// each include read, each file counted for the part limit): the tests
+/// count the work an include costs with it, not the time. Per thread, so
+/// that tests running side by side do not count each other's.
+#[doc(hidden)]
+pub fn files_parsed_on_this_thread() -> u64 {
+    PARSED.with(std::cell::Cell::get)
+}
 
 /// The most parts a body may have, included ones counted: ~1 KB of memory
 /// each while reading.
@@ -212,6 +231,7 @@ impl Model {
     /// else, and for every error in the TOML, serde via the toml crate's
     /// value tree.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
+        count_parse();
         match fast::read_file(&source.text) {
             Some(raw) => Ok(raw),
             None => Model::serde(source),
@@ -236,6 +256,7 @@ impl Model {
         // A file with includes is read whole first: its includes are
         // counted before any is read (`include::Ctx::check_part_count`).
         // So is a file with tolerances: their sources are the file's.
+        count_parse();
         let includes = source.text.contains("include") || tolerance::may_have(&source.text);
         let mut streamed = if includes {
             Streamed::off()
@@ -267,6 +288,44 @@ impl Model {
                 Model::serde(source)?
             }
         };
+        let ctx = Model::context(source, &raw, passed, None)?;
+        if !streamed.off {
+            return streamed.model(&ctx, raw);
+        }
+        Model::check_parts(&ctx, &raw, files)?;
+        // Each raw part dropped once read: its vectors and rare keys are
+        // freed as the parts are made, not after all of them.
+        let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
+        let (items, count, has_real_sizes) = Model::items(&ctx, raw_parts.into_iter(), files)?;
+        Model::rest(&ctx, &raw, items, count, has_real_sizes)
+    }
+
+    /// The model of a file already parsed into `raw`, with the parameter
+    /// values `passed`: the conversion step alone, everything that depends
+    /// on a parameter's value (an included file parsed once is converted
+    /// again for each distinct set of `params`, `include::Parsed`).
+    fn from_raw(
+        source: &Source,
+        raw: &RawFile,
+        files: &mut include::Files,
+        passed: &[params::Pass],
+        base: Option<&params::Base>,
+    ) -> Result<Model, Diagnostic> {
+        let ctx = Model::context(source, raw, passed, base)?;
+        Model::check_parts(&ctx, raw, files)?;
+        let parts = raw.part.as_ref().expect("parts, checked above").get_ref();
+        let (items, count, has_real_sizes) = Model::items(&ctx, parts.iter(), files)?;
+        Model::rest(&ctx, raw, items, count, has_real_sizes)
+    }
+
+    /// What the parts of a file are read in: its units, its parameters
+    /// (with the values `passed`), its materials and its growth.
+    fn context<'s>(
+        source: &'s Source,
+        raw: &RawFile,
+        passed: &[params::Pass],
+        base: Option<&params::Base>,
+    ) -> Result<Ctx<'s>, Diagnostic> {
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
@@ -287,15 +346,20 @@ impl Model {
             tol: Default::default(),
             growth: Default::default(),
         };
-        ctx.read_params(raw.params.as_ref(), passed)?;
+        match base {
+            Some(base) => ctx.read_params_over(raw.params.as_ref(), passed, base)?,
+            None => ctx.read_params(raw.params.as_ref(), passed)?,
+        }
         if let Some(table) = &raw.materials {
             ctx.read_materials(table)?;
         }
         ctx.read_growth(raw.growth.as_ref())?;
-        let ctx = ctx;
-        if !streamed.off {
-            return streamed.model(&ctx, raw);
-        }
+        Ok(ctx)
+    }
+
+    /// The file has parts, within the limit, its includes counted (by the
+    /// file read first) before any is expanded.
+    fn check_parts(ctx: &Ctx, raw: &RawFile, files: &mut include::Files) -> Result<(), Diagnostic> {
         let raw_parts = match &raw.part {
             Some(p) if !p.get_ref().is_empty() => p.get_ref(),
             Some(p) => {
@@ -324,35 +388,56 @@ impl Model {
         if files.stack.len() <= 1 {
             ctx.check_part_count(raw_parts, files)?;
         }
+        Ok(())
+    }
+
+    /// The file's parts and sub-assemblies, made from its raw parts (owned,
+    /// each dropped once made, or borrowed from a file kept parsed); with
+    /// the body's part count and whether any gives its real size.
+    fn items<P: std::borrow::Borrow<Spanned<raw::RawPart>>>(
+        ctx: &Ctx,
+        raw_parts: impl ExactSizeIterator<Item = P>,
+        files: &mut include::Files,
+    ) -> Result<(Vec<Item>, usize, bool), Diagnostic> {
         let mut items = Vec::with_capacity(raw_parts.len());
-        // Each raw part dropped once read: its vectors and rare keys are
-        // freed as the parts are made, not after all of them.
-        let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
         let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
-        for (i, p) in raw_parts.into_iter().enumerate() {
+        for (i, p) in raw_parts.enumerate() {
+            let p = p.borrow();
             // Its copies first: a count past the limit is refused before
             // anything of the part is read or included.
             let copies = ctx.copies(p.get_ref())?;
             if p.get_ref().include.is_some() {
-                let mut item = ctx.include(i, &p, files, count, &mut assembly_names)?;
+                let mut item = ctx.include(i, p, files, count, &mut assembly_names)?;
                 if let Item::Include(inc) = &mut item {
-                    count = ctx.count_copies(&p, count, inc.model.count, copies.as_deref())?;
+                    count = ctx.count_copies(p, count, inc.model.count, copies.as_deref())?;
                     has_real_sizes |= inc.model.has_real_sizes;
                     inc.copies = copies;
                 }
-                ctx.copies_in_range(&item, &p)?;
+                ctx.copies_in_range(&item, p)?;
                 items.push(item);
                 continue;
             }
+            // NOTE: a part alone counts too, checked before it is made: after
+            // an array or an include that reached the limit, each part
+            // written alone was added unchecked (2,000,002 parts were read).
+            if copies.is_none() && count >= MAX_PARTS {
+                let at = p.get_ref().shape.as_ref().map_or(p.span(), Spanned::span);
+                return Err(ctx
+                    .err(
+                        at,
+                        format!("this part takes the body past {MAX_PARTS} parts, the limit"),
+                    )
+                    .help("the parts before it, with their copies and includes, already reach the limit"));
+            }
             let (part, real) = if mesh::is_mesh(p.get_ref()) {
-                (ctx.mesh_part(i, &p, files)?, None)
+                (ctx.mesh_part(i, p, files)?, None)
             } else {
-                ctx.part(i, &p)?
+                ctx.part(i, p)?
             };
             has_real_sizes |= real.is_some();
-            count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
+            count = ctx.count_copies(p, count, 1, copies.as_deref())?;
             let tag = ctx.tag(p.get_ref())?;
             items.push(Item::Part {
                 part,
@@ -360,15 +445,15 @@ impl Model {
                 copies,
                 tag,
             });
-            ctx.copies_in_range(items.last().expect("just pushed"), &p)?;
+            ctx.copies_in_range(items.last().expect("just pushed"), p)?;
         }
-        Model::rest(&ctx, raw, items, count, has_real_sizes)
+        Ok((items, count, has_real_sizes))
     }
 
     /// The model of `raw`'s keys other than its parts, with `items`.
     fn rest(
         ctx: &Ctx,
-        raw: RawFile,
+        raw: &RawFile,
         items: Vec<Item>,
         count: usize,
         has_real_sizes: bool,
@@ -383,7 +468,7 @@ impl Model {
         };
         let budget = raw.budget.as_ref().map(|b| ctx.budget(b)).transpose()?;
         Ok(Model {
-            name: raw.name.map(|n| n.into_inner()),
+            name: raw.name.as_ref().map(|n| n.get_ref().clone()),
             units: ctx.units,
             items: std::sync::Arc::new(items),
             count,
@@ -408,19 +493,43 @@ impl Model {
     /// depth, if only one sub-assembly has it, or its path
     /// (`front / wheel #2`). Returns the sub-assembly's path.
     pub fn only(&mut self, name: &str) -> Result<Vec<String>, String> {
-        // Every sub-assembly's path, parents first.
-        let mut prefixes: Vec<Vec<String>> = Vec::new();
-        self.each_assembly(&mut Vec::new(), &mut |path| {
-            prefixes.push(path.to_vec());
-        });
         // At most this many names in a message; the rest are counted.
         const LISTED: usize = 12;
-        let list = |names: Vec<String>| {
-            let more = names.len().saturating_sub(LISTED);
+        // NOTE: the paths are walked, not gathered: a file whose copies
+        // make 2,000,000 sub-assemblies held each path (and again each
+        // joined) to answer one name. What is kept is bounded: the first
+        // matches, the first `LISTED` paths for the message, and, for a
+        // name short enough for "did you mean" (`units::suggest` compares
+        // names of up to 256 characters), the paths short enough too.
+        let mut matching: Vec<Vec<String>> = Vec::new();
+        let mut matches = 0usize;
+        let (mut listed, mut total) = (Vec::new(), 0usize);
+        let mut near: Vec<String> = Vec::new();
+        let short = name.len() <= 1024;
+        self.each_assembly(&mut Vec::new(), &mut |path| {
+            total += 1;
+            let joined_len =
+                path.iter().map(String::len).sum::<usize>() + 3 * path.len().saturating_sub(1);
+            let is = path.last().is_some_and(|l| l == name)
+                || (joined_len == name.len() && path.join(" / ") == name);
+            if is {
+                matches += 1;
+                if matching.len() < LISTED {
+                    matching.push(path.to_vec());
+                }
+            }
+            if listed.len() < LISTED {
+                listed.push(path.join(" / "));
+            }
+            if short && joined_len <= 4 * 1024 {
+                near.push(path.join(" / "));
+            }
+        });
+        let list = |names: &[String], total: usize| {
+            let more = total.saturating_sub(names.len());
             let mut text = names
-                .into_iter()
-                .take(LISTED)
-                .map(|n| format!("`{n}`"))
+                .iter()
+                .map(|n| format!("`{}`", crate::diag::shorten(n)))
                 .collect::<Vec<_>>()
                 .join(", ");
             if more > 0 {
@@ -428,30 +537,28 @@ impl Model {
             }
             text
         };
-        let matching: Vec<&Vec<String>> = prefixes
-            .iter()
-            .filter(|q| q.join(" / ") == name || q.last().is_some_and(|l| l == name))
-            .collect();
-        let target: Vec<String> = match matching.as_slice() {
-            [one] => one.to_vec(),
-            [] => {
-                let names: Vec<String> = prefixes.iter().map(|q| q.join(" / ")).collect();
-                return Err(if names.is_empty() {
-                    format!("`--only {name}`: the file has no sub-assemblies (`include`)")
+        let shown = crate::diag::shorten(name);
+        let target: Vec<String> = match (matches, matching.pop()) {
+            (1, Some(one)) => one,
+            (0, _) | (_, None) => {
+                return Err(if total == 0 {
+                    format!("`--only {shown}`: the file has no sub-assemblies (`include`)")
                 } else {
-                    let near = units::suggest(name, names.iter().map(String::as_str))
-                        .map(|s| format!("; did you mean `{s}`?"))
+                    let near = units::suggest(name, near.iter().map(String::as_str))
+                        .map(|s| format!("; did you mean `{}`?", crate::diag::shorten(s)))
                         .unwrap_or_default();
                     format!(
-                        "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
-                        list(names)
+                        "`--only {shown}`: no sub-assembly of that name{near} (the file has {})",
+                        list(&listed, total)
                     )
                 });
             }
-            many => {
+            (many, Some(last)) => {
+                matching.push(last);
+                let names: Vec<String> = matching.iter().map(|q| q.join(" / ")).collect();
                 return Err(format!(
-                    "`--only {name}` is ambiguous: {}; give the path",
-                    list(many.iter().map(|q| q.join(" / ")).collect())
+                    "`--only {shown}` is ambiguous: {}; give the path",
+                    list(&names, many)
                 ));
             }
         };
