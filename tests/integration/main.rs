@@ -20,6 +20,7 @@ mod hostile_round_two;
 mod invariants;
 mod layers;
 mod library;
+mod limits;
 mod meshes;
 mod new_shapes;
 mod oracle;
