@@ -509,7 +509,9 @@ pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     }
     candidates
         .into_iter()
-        .filter(|c| c.len() <= 4 * 2 * COMPARED && n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3))
+        .filter(|c| {
+            c.len() <= 4 * 2 * COMPARED && n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3)
+        })
         .map(|c| (strsim::damerau_levenshtein(word, c), c))
         .filter(|&(d, c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
         .min_by_key(|&(d, _)| d)

@@ -4,7 +4,9 @@
 //!
 //! NOTE: each distinct file is read and validated once, however often it
 //! is included with the same `params` (an include with other parameters
-//! is another model), and kept once (`Include` holds it by `Arc`); its parts are
+//! is another model: a file with `[params]` is parsed once all the same,
+//! and converted again with only its changed parameters re-evaluated,
+//! `Parsed`), and kept once (`Include` holds it by `Arc`); its parts are
 //! moved into this file's frame and units as a walk reaches them
 //! (`walk`), in f64 (each coordinate rounds once, as a unit string does); a
 //! sub-assembly placed without rotation, at an origin and in units that make

@@ -101,7 +101,10 @@ impl Ctx<'_> {
                         .collect();
                     let d = self.err(
                         name.span(),
-                        format!("unknown material {:?}", crate::diag::shorten(name.get_ref())),
+                        format!(
+                            "unknown material {:?}",
+                            crate::diag::shorten(name.get_ref())
+                        ),
                     );
                     return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
                         Some(s) => d.label(format!("did you mean \"{s}\"?")),

@@ -44,8 +44,8 @@ use ctx::Ctx;
 use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
-use toml::Spanned;
 use streamed::{Streamed, with_sections};
+use toml::Spanned;
 
 thread_local! {
     /// Part files parsed on this thread (`files_parsed_on_this_thread`).

@@ -30,7 +30,10 @@ pub(crate) struct Params {
 
 impl Params {
     pub(crate) fn get(&self, name: &str) -> Option<Value> {
-        self.values.get(name).or_else(|| self.base.get(name)).copied()
+        self.values
+            .get(name)
+            .or_else(|| self.base.get(name))
+            .copied()
     }
 
     /// A parameter's value and gradient (empty without a tolerance).
@@ -54,7 +57,12 @@ impl Params {
 
     fn names(&self) -> Vec<String> {
         let mut names: Vec<String> = self.values.keys().cloned().collect();
-        names.extend(self.base.keys().filter(|k| !self.values.contains_key(*k)).cloned());
+        names.extend(
+            self.base
+                .keys()
+                .filter(|k| !self.values.contains_key(*k))
+                .cloned(),
+        );
         names.sort_unstable();
         names
     }
@@ -690,7 +698,10 @@ impl Base {
             used.sort_unstable();
             used.dedup();
             for u in used {
-                users.entry(u.to_string()).or_default().push(name.to_string());
+                users
+                    .entry(u.to_string())
+                    .or_default()
+                    .push(name.to_string());
             }
         }
         Some(Base {

@@ -90,11 +90,7 @@ fn each_set_of_params_gives_the_values_that_use_it() {
     );
     let m = parse(&top).unwrap();
     // Include k weighs 2 (k + 1) kg: in all 2 · (1 + … + 40) = 1640 kg.
-    let masses: Vec<f64> = m
-        .flattened()
-        .iter()
-        .map(|p| p.si(m.units).mass)
-        .collect();
+    let masses: Vec<f64> = m.flattened().iter().map(|p| p.si(m.units).mass).collect();
     let expected: Vec<f64> = (1..=40).map(|k| 2.0 * k as f64).collect();
     assert_eq!(masses, expected);
 }
@@ -148,7 +144,11 @@ fn an_error_in_a_parameter_evaluated_again_is_said_where_the_file_says_it() {
     let lib = "[params]\nleg = 1\ninverse = \"1 / leg\"\n[[part]]\nshape = \"point\"\nmass = \"inverse * 1 kg\"\ncenter = [0, 0, 0]\n";
     let zero = "[[part]]\ninclude = \"lib.toml\"\nparams = { leg = 0 }\n";
     let one = "[[part]]\ninclude = \"lib.toml\"\nparams = { leg = 1 }\n";
-    let alone = scratch_files("limits", "params-error-alone", &[("lib.toml", lib), ("top.toml", zero)]);
+    let alone = scratch_files(
+        "limits",
+        "params-error-alone",
+        &[("lib.toml", lib), ("top.toml", zero)],
+    );
     let after = scratch_files(
         "limits",
         "params-error-after",
@@ -156,7 +156,13 @@ fn an_error_in_a_parameter_evaluated_again_is_said_where_the_file_says_it() {
     );
     let alone = parse(&alone).unwrap_err();
     let after = parse(&after).unwrap_err();
-    let at = |err: &str| first_line(err).split_once("lib.toml").unwrap().1.to_string();
+    let at = |err: &str| {
+        first_line(err)
+            .split_once("lib.toml")
+            .unwrap()
+            .1
+            .to_string()
+    };
     assert!(at(&alone).starts_with(":3:"), "{alone}");
     assert_eq!(at(&alone), at(&after), "{after}");
 }
@@ -185,14 +191,17 @@ fn point(extra: &str) -> String {
 
 /// Whether `err` is the part limit's error at `file:line:col`.
 fn refused_at(err: &str, file: &str, line: usize, col: usize) -> bool {
-    first_line(err).contains(&format!("{file}:{line}:{col}: error:")) && err.contains(&MAX_PARTS.to_string())
+    first_line(err).contains(&format!("{file}:{line}:{col}: error:"))
+        && err.contains(&MAX_PARTS.to_string())
 }
 
 #[test]
 fn a_part_written_alone_after_an_array_at_the_limit_is_refused_at_its_shape() {
     let text = format!(
         "{}{}",
-        point(&format!("array = {{ count = {MAX_PARTS}, step = [1, 0, 0] }}\n")),
+        point(&format!(
+            "array = {{ count = {MAX_PARTS}, step = [1, 0, 0] }}\n"
+        )),
         point("")
     );
     let top = scratch_files("limits", "alone-after-array", &[("top.toml", &text)]);
@@ -295,7 +304,10 @@ fn a_long_unknown_material_against_a_long_defined_one_gets_its_error() {
     );
     let top = scratch_files("limits", "long-material", &[("top.toml", &text)]);
     let err = within_minutes(move || parse(&top).unwrap_err());
-    assert!(first_line(&err).contains("top.toml:7:12: error: unknown material"), "{err}");
+    assert!(
+        first_line(&err).contains("top.toml:7:12: error: unknown material"),
+        "{err}"
+    );
     // The name said in 64 characters, its length counted.
     assert!(err.contains("(100001 characters)"), "{err}");
     assert!(first_line(&err).chars().count() < 200, "{err}");
@@ -303,7 +315,10 @@ fn a_long_unknown_material_against_a_long_defined_one_gets_its_error() {
 
 #[test]
 fn a_long_unknown_only_name_against_a_long_sub_assembly_gets_its_error() {
-    let text = format!("[[part]]\nname = \"{}\"\ninclude = \"sub.toml\"\n", long('b'));
+    let text = format!(
+        "[[part]]\nname = \"{}\"\ninclude = \"sub.toml\"\n",
+        long('b')
+    );
     let top = scratch_files(
         "limits",
         "long-only",
