@@ -98,21 +98,29 @@ impl Parsed {
         })
     }
 
-    /// Its model with the values `passes`, its errors said in the file
-    /// as `shown_name` names it (each include names it its own way).
+    /// Its model with the values `passes`, as the include of `target`
+    /// reads it: its errors said in the file as it names it, its own
+    /// includes relative to that path (each include names it its own way,
+    /// through a symlink perhaps).
     fn convert(
         &self,
-        shown_name: &str,
+        target: &Target,
         files: &mut Files,
-        canonical: &Path,
         passes: &[super::params::Pass],
     ) -> Result<Model, Diagnostic> {
+        let Target {
+            canonical,
+            shown,
+            shown_name,
+        } = target;
         let renamed;
-        let source = if self.source.name == shown_name {
+        let source = if self.source.name == *shown_name && self.source.file.as_ref() == Some(shown)
+        {
             &self.source
         } else {
             renamed = crate::diag::Source {
-                name: shown_name.to_string(),
+                name: shown_name.clone(),
+                file: Some(shown.clone()),
                 ..self.source.clone()
             };
             &renamed
@@ -120,9 +128,7 @@ impl Parsed {
         let base = self
             .base
             .get_or_init(|| super::params::Base::of(&self.source, self.raw.params.as_ref()));
-        files
-            .stack
-            .push((canonical.to_path_buf(), shown_name.to_string()));
+        files.stack.push((canonical.clone(), shown_name.clone()));
         let child = Model::from_raw(source, &self.raw, files, passes, base.as_ref());
         files.stack.pop();
         child
@@ -472,11 +478,12 @@ impl Ctx<'_> {
                 "an include takes `include`, and optionally `name`, `origin` and `rotation`",
             ));
         }
-        let Target {
-            canonical,
-            shown,
-            shown_name,
-        } = self.target(inc, files)?;
+        let target = self.target(inc, files)?;
+        let (canonical, shown, shown_name) = (
+            target.canonical.clone(),
+            target.shown.clone(),
+            target.shown_name.clone(),
+        );
         let unreadable = |e: std::io::Error| {
             self.err(
                 inc.span(),
@@ -542,7 +549,7 @@ impl Ctx<'_> {
                 };
                 let (child, looks_like_a_part_file) = match files.parsed.get(&canonical).cloned() {
                     Some(parsed) => (
-                        parsed.convert(&shown_name, files, &canonical, &passes),
+                        parsed.convert(&target, files, &passes),
                         parsed.looks_like_a_part_file,
                     ),
                     None => {
@@ -562,7 +569,7 @@ impl Ctx<'_> {
                                 if parsed.raw.params.is_some() {
                                     files.parsed.insert(canonical.clone(), parsed.clone());
                                 }
-                                parsed.convert(&shown_name, files, &canonical, &passes)
+                                parsed.convert(&target, files, &passes)
                             })
                         } else {
                             files.stack.push((canonical.clone(), shown_name.clone()));
