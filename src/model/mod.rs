@@ -6,7 +6,8 @@
 //! `raw` (and its fast path `fast`) mirror the TOML; `ctx` reads values;
 //! `params` evaluates `[params]` and expressions in quantity strings;
 //! `parts` validates a `[[part]]` against its shape's description;
-//! `include` places sub-assemblies; `expect` reads `[expect]`; `rotation`
+//! `include` places sub-assemblies (`only` keeps one, for `--only`);
+//! `expect` reads `[expect]`; `rotation`
 //! the rotation forms; `toml_error` words the TOML crate's errors;
 //! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
