@@ -498,10 +498,20 @@ pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     // a candidate whose length is too far off is not compared at all: a
     // 200 KB key or name costs one count of its characters, not a
     // quadratic comparison with every candidate.
+    // And a word longer than `COMPARED` characters is compared with
+    // nothing: the distance costs the product of the lengths, and a
+    // 100,000-character material or sub-assembly name misspelt against
+    // its definition cost 10¹⁰ steps, for a suggestion no one needs.
+    const COMPARED: usize = 256;
     let n = word.chars().count();
+    if n > COMPARED {
+        return None;
+    }
     candidates
         .into_iter()
-        .filter(|c| n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3))
+        .filter(|c| {
+            c.len() <= 4 * 2 * COMPARED && n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3)
+        })
         .map(|c| (strsim::damerau_levenshtein(word, c), c))
         .filter(|&(d, c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
         .min_by_key(|&(d, _)| d)

@@ -4,7 +4,9 @@
 //!
 //! NOTE: each distinct file is read and validated once, however often it
 //! is included with the same `params` (an include with other parameters
-//! is another model), and kept once (`Include` holds it by `Arc`); its parts are
+//! is another model: a file with `[params]` is parsed once all the same,
+//! and converted again with only its changed parameters re-evaluated,
+//! `Parsed`), and kept once (`Include` holds it by `Arc`); its parts are
 //! moved into this file's frame and units as a walk reaches them
 //! (`walk`), in f64 (each coordinate rounds once, as a unit string does); a
 //! sub-assembly placed without rotation, at an origin and in units that make
@@ -20,6 +22,7 @@ use crate::units::Dim;
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
+use std::rc::Rc;
 use toml::Spanned;
 
 /// Includes may nest this deep.
@@ -62,6 +65,74 @@ pub(super) struct Files {
     /// The parts each file holds with its includes, counted before any is
     /// expanded (`Ctx::count_includes`).
     counts: HashMap<PathBuf, u64>,
+    /// Each included file that has parameters, parsed once, by its
+    /// canonical path: another set of `params` converts it again without
+    /// reading or parsing it.
+    parsed: HashMap<PathBuf, Rc<Parsed>>,
+}
+
+/// An included file with `[params]`, parsed: its text, its raw TOML and
+/// its own parameters evaluated (`params::Base`, made when it is first
+/// converted).
+///
+/// NOTE: kept while the body is read, so its raw parts are not freed as
+/// its parts are made (as a file read once has them): the price of not
+/// parsing it again per set of `params` (40 includes of a file of 100,000
+/// parameters took 50 s).
+pub(super) struct Parsed {
+    source: crate::diag::Source,
+    raw: super::raw::RawFile,
+    looks_like_a_part_file: bool,
+    base: std::cell::OnceCell<Option<super::params::Base>>,
+}
+
+impl Parsed {
+    /// Kept if it has parameters (only then may it be included with
+    /// other values); the file `source` parsed into `raw`.
+    fn keep(source: crate::diag::Source, raw: super::raw::RawFile) -> Rc<Parsed> {
+        Rc::new(Parsed {
+            looks_like_a_part_file: super::looks_like_a_part_file(&source.text),
+            source,
+            raw,
+            base: std::cell::OnceCell::new(),
+        })
+    }
+
+    /// Its model with the values `passes`, as the include of `target`
+    /// reads it: its errors said in the file as it names it, its own
+    /// includes relative to that path (each include names it its own way,
+    /// through a symlink perhaps).
+    fn convert(
+        &self,
+        target: &Target,
+        files: &mut Files,
+        passes: &[super::params::Pass],
+    ) -> Result<Model, Diagnostic> {
+        let Target {
+            canonical,
+            shown,
+            shown_name,
+        } = target;
+        let renamed;
+        let source = if self.source.name == *shown_name && self.source.file.as_ref() == Some(shown)
+        {
+            &self.source
+        } else {
+            renamed = crate::diag::Source {
+                name: shown_name.clone(),
+                file: Some(shown.clone()),
+                ..self.source.clone()
+            };
+            &renamed
+        };
+        let base = self
+            .base
+            .get_or_init(|| super::params::Base::of(&self.source, self.raw.params.as_ref()));
+        files.stack.push((canonical.clone(), shown_name.clone()));
+        let child = Model::from_raw(source, &self.raw, files, passes, base.as_ref());
+        files.stack.pop();
+        child
+    }
 }
 
 impl Files {
@@ -340,6 +411,16 @@ impl Ctx<'_> {
             return Some((n, t.shown_name));
         }
         let raw = Model::raw(&source).ok()?;
+        // Kept, not parsed again when it is expanded, if it has parameters.
+        let (raw, kept) = match raw.params {
+            Some(_) => {
+                let kept = Parsed::keep(source.clone(), raw);
+                files.parsed.insert(t.canonical.clone(), kept.clone());
+                (None, Some(kept))
+            }
+            None => (Some(raw), None),
+        };
+        let raw = raw.as_ref().or(kept.as_ref().map(|k| &k.raw))?;
         let child = Ctx {
             source: &source,
             units: Default::default(),
@@ -397,11 +478,12 @@ impl Ctx<'_> {
                 "an include takes `include`, and optionally `name`, `origin` and `rotation`",
             ));
         }
-        let Target {
-            canonical,
-            shown,
-            shown_name,
-        } = self.target(inc, files)?;
+        let target = self.target(inc, files)?;
+        let (canonical, shown, shown_name) = (
+            target.canonical.clone(),
+            target.shown.clone(),
+            target.shown_name.clone(),
+        );
         let unreadable = |e: std::io::Error| {
             self.err(
                 inc.span(),
@@ -447,7 +529,6 @@ impl Ctx<'_> {
                     let (line, col) = self.source.line_col(inc.span().start);
                     d.included_from(format!("{}:{line}:{col}", self.source.name))
                 };
-                let bytes = std::fs::read(&shown).map_err(unreadable)?;
                 // An error inside a file that is not a part file at all
                 // (a `secrets.toml`) is said without quoting any of it.
                 let not_a_part_file = || {
@@ -457,28 +538,55 @@ impl Ctx<'_> {
                     )
                     .help("`include` names a part file; its contents are not shown")
                 };
-                let looks_like_a_part_file =
-                    super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
-                let quoted = |d: Diagnostic| {
-                    if looks_like_a_part_file {
-                        included_here(d)
-                    } else {
-                        not_a_part_file()
+                let quoted = |looks_like_a_part_file: bool| {
+                    move |d: Diagnostic| {
+                        if looks_like_a_part_file {
+                            included_here(d)
+                        } else {
+                            not_a_part_file()
+                        }
                     }
                 };
-                let source = crate::io::source_of(&shown_name, bytes)
-                    .map_err(quoted)?
-                    .read_from(shown.clone());
-                files.stack.push((canonical.clone(), shown_name.clone()));
-                let child = Model::parse_in(&source, files, &passes);
-                files.stack.pop();
+                let (child, looks_like_a_part_file) = match files.parsed.get(&canonical).cloned() {
+                    Some(parsed) => (
+                        parsed.convert(&target, files, &passes),
+                        parsed.looks_like_a_part_file,
+                    ),
+                    None => {
+                        let bytes = std::fs::read(&shown).map_err(unreadable)?;
+                        let looks_like_a_part_file =
+                            super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
+                        let source = crate::io::source_of(&shown_name, bytes)
+                            .map_err(quoted(looks_like_a_part_file))?
+                            .read_from(shown.clone());
+                        // NOTE: a file that may have parameters is parsed
+                        // once and kept (`Parsed`): each other set of
+                        // `params` converts it again, re-evaluating only
+                        // the parameters that change.
+                        let child = if source.text.contains("params") {
+                            Model::raw(&source).and_then(|raw| {
+                                let parsed = Parsed::keep(source, raw);
+                                if parsed.raw.params.is_some() {
+                                    files.parsed.insert(canonical.clone(), parsed.clone());
+                                }
+                                parsed.convert(&target, files, &passes)
+                            })
+                        } else {
+                            files.stack.push((canonical.clone(), shown_name.clone()));
+                            let child = Model::parse_in(&source, files, &passes);
+                            files.stack.pop();
+                            child
+                        };
+                        (child, looks_like_a_part_file)
+                    }
+                };
                 let child = std::sync::Arc::new(child.map_err(|d| {
                     // A name the included file does not define: said at
                     // the include's key, in this file.
                     if passes.iter().any(|p| p.undefined.message() == d.message()) {
                         d
                     } else {
-                        quoted(d)
+                        quoted(looks_like_a_part_file)(d)
                     }
                 })?);
                 files.cache.insert(key, child.clone());

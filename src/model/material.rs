@@ -65,7 +65,7 @@ impl Ctx<'_> {
         table: &super::raw::Materials,
     ) -> Result<(), Diagnostic> {
         for (name, m) in table.get_ref() {
-            let key = format!("density` of material `{name}");
+            let key = format!("density` of material `{}", crate::diag::shorten(name));
             self.tol.borrow_mut().in_materials = true;
             let si = self.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
             let file = self.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
@@ -147,7 +147,10 @@ impl Ctx<'_> {
                         .collect();
                     let d = self.err(
                         name.span(),
-                        format!("unknown material {:?}", name.get_ref()),
+                        format!(
+                            "unknown material {:?}",
+                            crate::diag::shorten(name.get_ref())
+                        ),
                     );
                     return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
                         Some(s) => d.label(format!("did you mean \"{s}\"?")),
@@ -162,7 +165,7 @@ impl Ctx<'_> {
                 span.clone(),
                 format!(
                     "this {s} of `{}` needs `{key}` to turn the density into a mass",
-                    name.get_ref()
+                    crate::diag::shorten(name.get_ref())
                 ),
             )
         };

@@ -6,7 +6,8 @@
 //! `raw` (and its fast path `fast`) mirror the TOML; `ctx` reads values;
 //! `params` evaluates `[params]` and expressions in quantity strings;
 //! `parts` validates a `[[part]]` against its shape's description;
-//! `include` places sub-assemblies; `expect` reads `[expect]`; `rotation`
+//! `include` places sub-assemblies (`only` keeps one, for `--only`);
+//! `expect` reads `[expect]`; `rotation`
 //! the rotation forms; `toml_error` words the TOML crate's errors;
 //! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
@@ -19,6 +20,7 @@ pub mod frame;
 mod include;
 mod material;
 mod mesh;
+mod only;
 mod params;
 mod parts;
 mod place;
@@ -45,6 +47,25 @@ use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
 use streamed::{Streamed, with_sections};
+use toml::Spanned;
+
+thread_local! {
+    /// Part files parsed on this thread (`files_parsed_on_this_thread`).
+    static PARSED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+fn count_parse() {
+    PARSED.with(|n| n.set(n.get() + 1));
+}
+
+/// How many part files' texts this thread has parsed (the top-level file,
+/// each include read, each file counted for the part limit): the tests
+/// count the work an include costs with it, not the time. Per thread, so
+/// that tests running side by side do not count each other's.
+#[doc(hidden)]
+pub fn files_parsed_on_this_thread() -> u64 {
+    PARSED.with(std::cell::Cell::get)
+}
 
 /// The most parts a body may have, included ones counted: ~1 KB of memory
 /// each while reading.
@@ -216,6 +237,7 @@ impl Model {
     /// else, and for every error in the TOML, serde via the toml crate's
     /// value tree.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
+        count_parse();
         match fast::read_file(&source.text) {
             Some(raw) => Ok(raw),
             None => Model::serde(source),
@@ -240,6 +262,7 @@ impl Model {
         // A file with includes is read whole first: its includes are
         // counted before any is read (`include::Ctx::check_part_count`).
         // So is a file with tolerances: their sources are the file's.
+        count_parse();
         let includes = source.text.contains("include") || tolerance::may_have(&source.text);
         let mut streamed = if includes {
             Streamed::off()
@@ -271,6 +294,44 @@ impl Model {
                 Model::serde(source)?
             }
         };
+        let ctx = Model::context(source, &raw, passed, None)?;
+        if !streamed.off {
+            return streamed.model(&ctx, raw);
+        }
+        Model::check_parts(&ctx, &raw, files)?;
+        // Each raw part dropped once read: its vectors and rare keys are
+        // freed as the parts are made, not after all of them.
+        let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
+        let (items, count, has_real_sizes) = Model::items(&ctx, raw_parts.into_iter(), files)?;
+        Model::rest(&ctx, &raw, items, count, has_real_sizes)
+    }
+
+    /// The model of a file already parsed into `raw`, with the parameter
+    /// values `passed`: the conversion step alone, everything that depends
+    /// on a parameter's value (an included file parsed once is converted
+    /// again for each distinct set of `params`, `include::Parsed`).
+    fn from_raw(
+        source: &Source,
+        raw: &RawFile,
+        files: &mut include::Files,
+        passed: &[params::Pass],
+        base: Option<&params::Base>,
+    ) -> Result<Model, Diagnostic> {
+        let ctx = Model::context(source, raw, passed, base)?;
+        Model::check_parts(&ctx, raw, files)?;
+        let parts = raw.part.as_ref().expect("parts, checked above").get_ref();
+        let (items, count, has_real_sizes) = Model::items(&ctx, parts.iter(), files)?;
+        Model::rest(&ctx, raw, items, count, has_real_sizes)
+    }
+
+    /// What the parts of a file are read in: its units, its parameters
+    /// (with the values `passed`), its materials and its growth.
+    fn context<'s>(
+        source: &'s Source,
+        raw: &RawFile,
+        passed: &[params::Pass],
+        base: Option<&params::Base>,
+    ) -> Result<Ctx<'s>, Diagnostic> {
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
@@ -291,15 +352,20 @@ impl Model {
             tol: Default::default(),
             growth: Default::default(),
         };
-        ctx.read_params(raw.params.as_ref(), passed)?;
+        match base {
+            Some(base) => ctx.read_params_over(raw.params.as_ref(), passed, base)?,
+            None => ctx.read_params(raw.params.as_ref(), passed)?,
+        }
         if let Some(table) = &raw.materials {
             ctx.read_materials(table)?;
         }
         ctx.read_growth(raw.growth.as_ref())?;
-        let ctx = ctx;
-        if !streamed.off {
-            return streamed.model(&ctx, raw);
-        }
+        Ok(ctx)
+    }
+
+    /// The file has parts, within the limit, its includes counted (by the
+    /// file read first) before any is expanded.
+    fn check_parts(ctx: &Ctx, raw: &RawFile, files: &mut include::Files) -> Result<(), Diagnostic> {
         let raw_parts = match &raw.part {
             Some(p) if !p.get_ref().is_empty() => p.get_ref(),
             Some(p) => {
@@ -328,35 +394,56 @@ impl Model {
         if files.stack.len() <= 1 {
             ctx.check_part_count(raw_parts, files)?;
         }
+        Ok(())
+    }
+
+    /// The file's parts and sub-assemblies, made from its raw parts (owned,
+    /// each dropped once made, or borrowed from a file kept parsed); with
+    /// the body's part count and whether any gives its real size.
+    fn items<P: std::borrow::Borrow<Spanned<raw::RawPart>>>(
+        ctx: &Ctx,
+        raw_parts: impl ExactSizeIterator<Item = P>,
+        files: &mut include::Files,
+    ) -> Result<(Vec<Item>, usize, bool), Diagnostic> {
         let mut items = Vec::with_capacity(raw_parts.len());
-        // Each raw part dropped once read: its vectors and rare keys are
-        // freed as the parts are made, not after all of them.
-        let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
         let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
-        for (i, p) in raw_parts.into_iter().enumerate() {
+        for (i, p) in raw_parts.enumerate() {
+            let p = p.borrow();
             // Its copies first: a count past the limit is refused before
             // anything of the part is read or included.
             let copies = ctx.copies(p.get_ref())?;
             if p.get_ref().include.is_some() {
-                let mut item = ctx.include(i, &p, files, count, &mut assembly_names)?;
+                let mut item = ctx.include(i, p, files, count, &mut assembly_names)?;
                 if let Item::Include(inc) = &mut item {
-                    count = ctx.count_copies(&p, count, inc.model.count, copies.as_deref())?;
+                    count = ctx.count_copies(p, count, inc.model.count, copies.as_deref())?;
                     has_real_sizes |= inc.model.has_real_sizes;
                     inc.copies = copies;
                 }
-                ctx.copies_in_range(&item, &p)?;
+                ctx.copies_in_range(&item, p)?;
                 items.push(item);
                 continue;
             }
+            // NOTE: a part alone counts too, checked before it is made: after
+            // an array or an include that reached the limit, each part
+            // written alone was added unchecked (2,000,002 parts were read).
+            if copies.is_none() && count >= MAX_PARTS {
+                let at = p.get_ref().shape.as_ref().map_or(p.span(), Spanned::span);
+                return Err(ctx
+                    .err(
+                        at,
+                        format!("this part takes the body past {MAX_PARTS} parts, the limit"),
+                    )
+                    .help("the parts before it, with their copies and includes, already reach the limit"));
+            }
             let (part, real) = if mesh::is_mesh(p.get_ref()) {
-                (ctx.mesh_part(i, &p, files)?, None)
+                (ctx.mesh_part(i, p, files)?, None)
             } else {
-                ctx.part(i, &p)?
+                ctx.part(i, p)?
             };
             has_real_sizes |= real.is_some();
-            count = ctx.count_copies(&p, count, 1, copies.as_deref())?;
+            count = ctx.count_copies(p, count, 1, copies.as_deref())?;
             let tag = ctx.tag(p.get_ref())?;
             items.push(Item::Part {
                 part,
@@ -364,15 +451,15 @@ impl Model {
                 copies,
                 tag,
             });
-            ctx.copies_in_range(items.last().expect("just pushed"), &p)?;
+            ctx.copies_in_range(items.last().expect("just pushed"), p)?;
         }
-        Model::rest(&ctx, raw, items, count, has_real_sizes)
+        Ok((items, count, has_real_sizes))
     }
 
     /// The model of `raw`'s keys other than its parts, with `items`.
     fn rest(
         ctx: &Ctx,
-        raw: RawFile,
+        raw: &RawFile,
         items: Vec<Item>,
         count: usize,
         has_real_sizes: bool,
@@ -388,7 +475,7 @@ impl Model {
         let budget = raw.budget.as_ref().map(|b| ctx.budget(b)).transpose()?;
         Ok(Model {
             group_depth: budget::group_depth(&items),
-            name: raw.name.map(|n| n.into_inner()),
+            name: raw.name.as_ref().map(|n| n.get_ref().clone()),
             units: ctx.units,
             items: std::sync::Arc::new(items),
             count,
@@ -405,139 +492,6 @@ impl Model {
             included: Vec::new(),
             sources: std::mem::take(&mut ctx.tol.borrow_mut().sources),
         })
-    }
-}
-
-impl Model {
-    /// Keep only the parts of the sub-assembly `name`: its own name at any
-    /// depth, if only one sub-assembly has it, or its path
-    /// (`front / wheel #2`). Returns the sub-assembly's path.
-    pub fn only(&mut self, name: &str) -> Result<Vec<String>, String> {
-        // Every sub-assembly's path, parents first.
-        let mut prefixes: Vec<Vec<String>> = Vec::new();
-        self.each_assembly(&mut Vec::new(), &mut |path| {
-            prefixes.push(path.to_vec());
-        });
-        // At most this many names in a message; the rest are counted.
-        const LISTED: usize = 12;
-        let list = |names: Vec<String>| {
-            let more = names.len().saturating_sub(LISTED);
-            let mut text = names
-                .into_iter()
-                .take(LISTED)
-                .map(|n| format!("`{n}`"))
-                .collect::<Vec<_>>()
-                .join(", ");
-            if more > 0 {
-                text.push_str(&format!(" and {more} more"));
-            }
-            text
-        };
-        let matching: Vec<&Vec<String>> = prefixes
-            .iter()
-            .filter(|q| q.join(" / ") == name || q.last().is_some_and(|l| l == name))
-            .collect();
-        let target: Vec<String> = match matching.as_slice() {
-            [one] => one.to_vec(),
-            [] => {
-                let names: Vec<String> = prefixes.iter().map(|q| q.join(" / ")).collect();
-                return Err(if names.is_empty() {
-                    format!("`--only {name}`: the file has no sub-assemblies (`include`)")
-                } else {
-                    let near = units::suggest(name, names.iter().map(String::as_str))
-                        .map(|s| format!("; did you mean `{s}`?"))
-                        .unwrap_or_default();
-                    format!(
-                        "`--only {name}`: no sub-assembly of that name{near} (the file has {})",
-                        list(names)
-                    )
-                });
-            }
-            many => {
-                return Err(format!(
-                    "`--only {name}` is ambiguous: {}; give the path",
-                    list(many.iter().map(|q| q.join(" / ")).collect())
-                ));
-            }
-        };
-        *self = self.keeping(&target);
-        Ok(target)
-    }
-
-    /// Each sub-assembly's path, parents before children.
-    ///
-    /// NOTE: a sub-assembly with copies is listed by its own name (all its
-    /// copies) and by each copy's, `wheel[2]`, whose sub-assemblies follow.
-    fn each_assembly(&self, path: &mut Vec<String>, f: &mut dyn FnMut(&[String])) {
-        for item in self.items.iter() {
-            if let Item::Include(inc) = item {
-                path.push(inc.name.clone());
-                f(path);
-                match &inc.copies {
-                    None => inc.model.each_assembly(path, f),
-                    Some(c) => {
-                        for i in c.indices() {
-                            let last = path.last_mut().expect("just pushed");
-                            last.clear();
-                            push_copy_name(last, &inc.name, i);
-                            f(path);
-                            inc.model.each_assembly(path, f);
-                        }
-                    }
-                }
-                path.pop();
-            }
-        }
-    }
-
-    /// This model with only the sub-assembly at `path` (a path `only`
-    /// found, so every step of it names one include).
-    fn keeping(&self, path: &[String]) -> Model {
-        let Some((first, rest)) = path.split_first() else {
-            return self.clone();
-        };
-        let mut items = Vec::new();
-        let (mut count, mut has_real_sizes) = (0, false);
-        for item in self.items.iter() {
-            let Item::Include(inc) = item else { continue };
-            // The sub-assembly with all its copies, or one copy of it.
-            let copies = match &inc.copies {
-                _ if inc.name == *first => inc.copies.clone(),
-                Some(c) => match c.index_in(&inc.name, first) {
-                    Some(i) => Some(Box::new(c.keeping(i))),
-                    None => continue,
-                },
-                None => continue,
-            };
-            let model = std::sync::Arc::new(inc.model.keeping(rest));
-            count = model.count * copies.as_ref().map_or(1, |c| c.indices().len());
-            has_real_sizes = model.has_real_sizes;
-            items.push(Item::Include(Box::new(Include {
-                model,
-                copies,
-                ..(**inc).clone()
-            })));
-        }
-        Model {
-            group_depth: budget::group_depth(&items),
-            items: std::sync::Arc::new(items),
-            count,
-            has_real_sizes,
-            ..self.clone_without_items()
-        }
-    }
-
-    /// Everything but the parts.
-    fn clone_without_items(&self) -> Model {
-        Model {
-            name: self.name.clone(),
-            analysis: self.analysis.clone(),
-            expect: self.expect.clone(),
-            materials: self.materials.clone(),
-            budget: self.budget.clone(),
-            included: self.included.clone(),
-            ..Model::empty(self.units)
-        }
     }
 }
 

@@ -174,6 +174,6 @@ impl Streamed {
         }
         let mut items = self.items;
         items.shrink_to_fit();
-        Model::rest(ctx, raw, items, self.count, self.has_real_sizes)
+        Model::rest(ctx, &raw, items, self.count, self.has_real_sizes)
     }
 }

@@ -22,6 +22,7 @@ mod invariants;
 mod layers;
 mod leftovers;
 mod library;
+mod limits;
 mod meshes;
 mod new_shapes;
 mod oracle;
