@@ -326,6 +326,16 @@ impl Expr {
             if !v.finite() {
                 return fail(at, "the value overflows the range of f64 here");
             }
+            // NOTE: a double-double value whose leading part is subnormal
+            // has lost digits (a literal there, or a step's result): it
+            // would go on with as few as one significant bit. A literal
+            // f64 made zero is refused by the reader (`parse::number`).
+            if let Num::Float(x) = v.num
+                && x.hi != 0.0
+                && x.hi.abs() < f64::MIN_POSITIVE
+            {
+                return fail(at, "the value underflows f64 here (below 2.2e-308)");
+            }
             stack.push(v);
         }
         Ok(stack
@@ -472,11 +482,12 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
     if a.num.is_zero() && b.num.negative() {
         return fail(at, "division by zero: 0 to a negative power");
     }
-    // The exponent as p/q, if it is rational.
+    // The exponent as p/q, if it is rational; an integer known only in
+    // double-double (beyond i128) apart.
     let ratio = match b.num {
         Num::Exact(q) if q.pi == 0 => Some((q.n, q.d)),
-        Num::Float(x) if x.hi.fract() == 0.0 && x.lo == 0.0 && x.hi.abs() < 1e18 => {
-            Some((x.hi as i128, 1))
+        Num::Float(x) if is_integer(x) && x.hi.abs() < TWO_126 => {
+            Some((x.hi as i128 + x.lo as i128, 1))
         }
         _ => None,
     };
@@ -499,17 +510,9 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
     match ratio {
         Some((p, 1)) => {
             let dim = scaled(p, 1)?;
-            let k = i64::try_from(p).unwrap_or(if p < 0 { i64::MIN + 1 } else { i64::MAX });
-            let num = match a.num {
-                Num::Exact(x) => match x.powi(k) {
-                    Some(q) => Num::Exact(q),
-                    None => Num::Float(powi_dd(x.dd(), k)),
-                },
-                Num::Float(x) => Num::Float(powi_dd(x, k)),
-            };
             Ok(Value {
                 dim,
-                num,
+                num: int_pow(a.num, Exponent::Int(p), &at)?,
                 angle: a.angle,
             })
         }
@@ -519,17 +522,36 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
                 return fail(at, "a negative number to a fractional power");
             }
             let num = match (a.num, q) {
-                (Num::Exact(x), 2) => match x.sqrt().and_then(|r| r.powi(p as i64)) {
-                    Some(r) => Num::Exact(r),
-                    None => Num::Float(powi_dd(x.dd().sqrt(), p as i64)),
+                // x^(p/2) = (√x)^p: exact where √x is rational.
+                (Num::Exact(x), 2) => match x.sqrt() {
+                    Some(r) => int_pow(Num::Exact(r), Exponent::Int(p), &at)?,
+                    None => int_pow(Num::Float(x.dd().sqrt()), Exponent::Int(p), &at)?,
                 },
-                (x, 2) => Num::Float(powi_dd(x.dd().sqrt(), p as i64)),
+                (x, 2) => int_pow(Num::Float(x.dd().sqrt()), Exponent::Int(p), &at)?,
                 (x, _) => Num::Float(DD::from(x.dd().f64().powf(p as f64 / q as f64))),
             };
             Ok(Value {
                 dim,
                 num,
                 angle: a.angle,
+            })
+        }
+        None if matches!(b.num, Num::Float(x) if is_integer(x)) => {
+            // An integer exponent beyond i128: only a plain number can be
+            // raised to it (a unit's power would pass 2^20 anyway).
+            let Num::Float(e) = b.num else {
+                unreachable!("invariant: matched above")
+            };
+            if a.dim != Dim::DIMENSIONLESS {
+                return fail(
+                    at,
+                    format!("{} cannot be raised to this power", describe(a.dim)),
+                );
+            }
+            Ok(Value {
+                dim: a.dim,
+                num: int_pow(a.num, Exponent::Huge(e), &at)?,
+                angle: a.angle || b.angle,
             })
         }
         None => {
@@ -550,6 +572,133 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
             })
         }
     }
+}
+
+/// 2^126: below it, an integer in double-double fits i128 exactly.
+const TWO_126: f64 = 8.507_059_173_023_462e37;
+
+/// Up to this exponent, a power is taken by squaring in double-double
+/// (each squaring adds a rounding: about 2^-100 relative at this depth);
+/// past it, by its magnitude `exp(e·ln|x|)`, whose one rounding does not
+/// grow with the exponent.
+const SQUARING_LIMIT: u128 = 1 << 12;
+
+/// Whether a double-double value is a finite integer.
+fn is_integer(x: DD) -> bool {
+    x.hi.is_finite() && x.lo.is_finite() && x.hi.fract() == 0.0 && x.lo.fract() == 0.0
+}
+
+/// An integer exponent: exact in i128, or beyond it and known only in
+/// double-double (so its parity is not known).
+#[derive(Clone, Copy, Debug)]
+enum Exponent {
+    Int(i128),
+    Huge(DD),
+}
+
+/// `x^e`, e an integer (0 to a negative power is refused before): exact
+/// where the result fits a rational in i128 (0, 1 and −1 to any power, by
+/// parity); by squaring in double-double up to `SQUARING_LIMIT`; else by
+/// magnitude and parity (`pow_by_magnitude`). Never by an exponent wrapped
+/// or clamped to i64: a result past f64's range is ±inf or 0 here, which
+/// the caller refuses at the `^`.
+fn int_pow(x: Num, e: Exponent, at: &Range<usize>) -> Result<Num, Error> {
+    if x.is_zero() {
+        return Ok(Num::Exact(Q::ZERO));
+    }
+    if let (Num::Exact(q), Exponent::Int(p)) = (x, e) {
+        if let Ok(k) = i64::try_from(p)
+            && let Some(r) = q.powi(k)
+        {
+            return Ok(Num::Exact(r));
+        }
+        if q.pi == 0 && q.d == 1 && q.n.abs() == 1 {
+            let odd = p & 1 == 1;
+            return Ok(Num::Exact(if q.n < 0 && odd {
+                Q::ONE.negated()
+            } else {
+                Q::ONE
+            }));
+        }
+    }
+    match e {
+        Exponent::Int(p) if p.unsigned_abs() <= SQUARING_LIMIT => {
+            Ok(Num::Float(powi_dd(x.dd(), p as i64)))
+        }
+        _ => pow_by_magnitude(x, e, at),
+    }
+}
+
+/// `x^e` for a large integer e (x ≠ 0): |x|^e = exp(e·ln|x|), with ln|x|
+/// = 2·atanh(u), u = (|x| − 1)/(|x| + 1), summed in double-double (u is
+/// small wherever the result is within f64's range: |e| > 4096 needs
+/// |ln|x|| < 0.25 there), and the sign by e's parity. A result past the
+/// range is ±inf or 0 (refused by the caller); −x to a power whose parity
+/// is not known (beyond i128) and whose magnitude is in range is refused.
+fn pow_by_magnitude(x: Num, e: Exponent, at: &Range<usize>) -> Result<Num, Error> {
+    let v = x.dd();
+    let m = if v.hi < 0.0 { -v } else { v };
+    let one = DD::from(1.0);
+    // u exactly from an exact base: |n| − d has no rounding.
+    let u = match x {
+        Num::Exact(q) if q.pi == 0 => {
+            let n = q.n.abs();
+            DD::of_i128(n - q.d) / (DD::of_i128(n) + DD::of_i128(q.d))
+        }
+        _ => (m - one) / (m + one),
+    };
+    let e_dd = match e {
+        Exponent::Int(p) => DD::of_i128(p),
+        Exponent::Huge(h) => h,
+    };
+    // Far out of range either way: decided in f64 (the bound 1000 is well
+    // past ln(f64::MAX) ≈ 709.8 and ln(2^-1074) ≈ −744.4).
+    let estimate = e_dd.hi * m.hi.ln();
+    let magnitude = if u.hi == 0.0 {
+        one
+    } else if estimate > 1000.0 {
+        DD::from(f64::INFINITY)
+    } else if estimate < -1000.0 {
+        DD::from(0.0)
+    } else {
+        let l = e_dd * ln_by_atanh(u);
+        let y = l.hi.exp();
+        DD::from(y) + DD::from(y * l.lo)
+    };
+    let negative = x.negative();
+    let odd = match e {
+        Exponent::Int(p) => Some(p & 1 == 1),
+        Exponent::Huge(_) => None,
+    };
+    let out_of_range = !magnitude.hi.is_finite() || magnitude.hi == 0.0;
+    Ok(Num::Float(match (negative, odd) {
+        (false, _) | (true, Some(false)) => magnitude,
+        (true, Some(true)) => -magnitude,
+        (true, None) if out_of_range => magnitude,
+        (true, None) => {
+            return fail(
+                at.clone(),
+                "a negative number to an integer power beyond 2^127, which is not known exactly enough to tell whether it is even or odd",
+            );
+        }
+    }))
+}
+
+/// ln((1 + u)/(1 − u)) = 2·(u + u³/3 + u⁵/5 + …), in double-double, for
+/// |u| < 1 (small where it is used: the terms fall by u² each).
+fn ln_by_atanh(u: DD) -> DD {
+    let u2 = u * u;
+    let mut power = u;
+    let mut sum = u;
+    for k in 1..200 {
+        power = power * u2;
+        let term = power / DD::from(f64::from(2 * k + 1));
+        sum += term;
+        if term.hi.abs() <= sum.hi.abs() * 1e-34 {
+            break;
+        }
+    }
+    sum + sum
 }
 
 /// x^k by squaring in double-double (an overflow becomes inf, which the

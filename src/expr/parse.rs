@@ -108,6 +108,17 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
             format!("the number `{text}` is beyond the range of f64"),
         );
     }
+    // Not zero as written (`digits` has a non-zero digit), but zero or
+    // subnormal in f64: too small, as a plain value is (`1e-400`).
+    if x.abs() < f64::MIN_POSITIVE {
+        return fail(
+            at,
+            format!(
+                "the number `{text}` is too small: below {:e}, f64 loses precision",
+                f64::MIN_POSITIVE
+            ),
+        );
+    }
     Ok(match of_f64(x) {
         Num::Exact(q) => Num::Exact(q),
         Num::Float(_) => Num::Float(DD::from(x)),
@@ -430,6 +441,7 @@ impl Parser<'_> {
 fn quantity(v: Value, u: units::Unit) -> Value {
     let (n, d, pi) = u.factor.parts();
     let num = match (v.num, Q::new(n, d, pi)) {
+        (Num::Exact(x), _) if x.is_zero() => Num::Exact(Q::ZERO),
         (Num::Exact(x), Some(f)) => match x.times(f) {
             Some(q) => Num::Exact(q),
             None => Num::Float(x.dd() * u.factor.dd()),

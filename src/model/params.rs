@@ -138,13 +138,7 @@ impl Ctx<'_> {
                 return Err(self.err(key.span(), format!("`{name}` is not a parameter name")));
             }
             let value = match q.get_ref() {
-                Quantity::Number(x) if x.is_finite() => Value::of_f64(*x),
-                Quantity::Number(x) => {
-                    return Err(self.err(
-                        q.span(),
-                        format!("parameter `{name}` must be a finite number, got {x}"),
-                    ));
-                }
+                Quantity::Number(x) => self.number_param(q, *x, &format!("parameter `{name}`"))?,
                 Quantity::Text(t) => {
                     let what = format!("parameter `{name}`");
                     // NOTE: a tolerance's source belongs to one file's
@@ -269,13 +263,7 @@ impl Ctx<'_> {
                     let Quantity::Number(x) = q.get_ref() else {
                         unreachable!("invariant: matched above")
                     };
-                    if !x.is_finite() {
-                        return Err(self.err(
-                            q.span(),
-                            format!("parameter `{name}` must be a finite number, got {x}"),
-                        ));
-                    }
-                    Value::of_f64(*x)
+                    self.number_param(q, *x, &format!("parameter `{name}`"))?
                 }
                 def => {
                     let (text, span, source) = match def {
