@@ -175,6 +175,17 @@ impl Value {
         }
     }
 
+    /// Whether this is exactly a whole number: an integer rational (no
+    /// power of π), or a double-double value both of whose parts are
+    /// integers. `"10 / 3 * 3"` is, `"(1 + 1e-20) * 3"` is not (though it
+    /// rounds to 3 in f64).
+    pub fn is_whole(self) -> bool {
+        match self.num {
+            Num::Exact(q) => q.integer().is_some(),
+            Num::Float(x) => is_integer(x),
+        }
+    }
+
     /// Whether this is a finite, exact or double-double value.
     fn finite(self) -> bool {
         match self.num {

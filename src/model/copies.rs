@@ -307,6 +307,21 @@ impl Ctx<'_> {
     /// `count`: a whole number of copies, 1 to the part limit.
     fn count(&self, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
         let x = self.dimensionless(q, "count")?;
+        // NOTE: whole in the exact rationals the value is read in, not
+        // only after its rounding to f64: `"(1 + 1e-20) * 3"` rounds to 3.
+        let exact = self.written_value(q);
+        if x >= 1.0 && x.fract() == 0.0 && exact.is_some_and(|v| !v.is_whole()) {
+            let written = match q.get_ref() {
+                Quantity::Text(t) => format!("{t:?}"),
+                Quantity::Number(_) => self.source.text[q.span()].to_string(),
+            };
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`count` must be a whole number of copies: {written} is not exactly whole (it is {x} only once rounded to f64)"),
+                )
+                .help("`count` is read exactly, as an expression is: write the whole number, or an expression whose value is exactly one"));
+        }
         if !(x >= 1.0 && x.fract() == 0.0) {
             return Err(self
                 .err(

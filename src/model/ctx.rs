@@ -36,8 +36,11 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
+    /// An error at `span` of this file (with a note naming any `--set`
+    /// parameter the span's text names: `Params::blame_set`).
     pub(super) fn err(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
-        self.source.error(span, message)
+        let d = self.source.error(span.clone(), message);
+        self.params.blame_set(&self.source.text, span, d)
     }
 
     pub(super) fn file_units(&self, u: &Spanned<raw::RawUnits>) -> Result<FileUnits, Diagnostic> {
