@@ -331,6 +331,8 @@ impl Model {
         let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
+        // The names written, of copies and numbered (`copies::Names`).
+        let mut names = copies::Names::default();
         for (i, p) in raw_parts.into_iter().enumerate() {
             // Its copies first: a count past the limit is refused before
             // anything of the part is read or included.
@@ -343,6 +345,7 @@ impl Model {
                     inc.copies = copies;
                 }
                 ctx.copies_in_range(&item, &p)?;
+                names.note(i, &p, &item);
                 items.push(item);
                 continue;
             }
@@ -361,7 +364,9 @@ impl Model {
                 tag,
             });
             ctx.copies_in_range(items.last().expect("just pushed"), &p)?;
+            names.note(i, &p, items.last().expect("just pushed"));
         }
+        names.check(&ctx)?;
         Model::rest(&ctx, raw, items, count, has_real_sizes)
     }
 
