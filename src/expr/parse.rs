@@ -149,6 +149,17 @@ pub(super) fn parse(text: &str) -> Result<Expr, Error> {
         let after_number = p.i > 0 && matches!(p.toks[p.i - 1].tok, Tok::Num(_));
         if t.tok == Tok::Name && after_number {
             let word = &text[at.clone()];
+            // A unit, but after a power of something other than a number
+            // (`(-1)^3 kg`, `x^2 m`): it binds to a number only.
+            if units::parse_unit(word).is_ok() {
+                return Err(Error {
+                    at,
+                    message: format!("expected an operator before the unit `{word}`"),
+                    help: Some(format!(
+                        "a unit follows a number directly (`2 {word}`, `10^3 {word}`); after a parenthesis, a name or a power of either, write `* {word}`"
+                    )),
+                });
+            }
             return Err(Error {
                 at,
                 message: format!("unknown unit `{word}`"),

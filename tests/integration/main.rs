@@ -13,6 +13,7 @@ mod common;
 mod cost;
 mod diff;
 mod docs;
+mod exact;
 mod files;
 mod frames;
 mod hostile;
