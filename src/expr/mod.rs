@@ -874,3 +874,82 @@ fn sin_cos(x: Num) -> (DD, DD) {
         DD::from(c) - DD::from(v.lo * s),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn eval(text: &str) -> Result<Value, Error> {
+        Expr::parse(text)?.eval(&|_| None, &Vec::new)
+    }
+
+    #[test]
+    fn minus_one_to_an_exponent_past_i64_goes_by_parity() {
+        let at = 0..1;
+        let minus_one = Num::Exact(Q::ONE.negated());
+        for (p, want) in [(1i128 << 64, 1), ((1 << 64) + 1, -1), (i128::MAX, -1)] {
+            assert_eq!(
+                int_pow(minus_one, Exponent::Int(p), &at),
+                Ok(Num::Exact(Q::new(want, 1, 0).unwrap())),
+                "{p}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_negative_base_to_a_power_of_unknown_parity_in_range_is_refused() {
+        let base = Num::Exact(Q::ONE.negated());
+        let e = int_pow(base, Exponent::Huge(DD::from(2f64.powi(200))), &(3..4));
+        assert_eq!(e.unwrap_err().at, 3..4);
+        // Out of range, the sign does not matter: an overflow for the caller.
+        let two = Num::Exact(Q::new(-2, 1, 0).unwrap());
+        let v = int_pow(two, Exponent::Huge(DD::from(2f64.powi(200))), &(0..1)).unwrap();
+        assert!(!v.dd().hi.is_finite());
+    }
+
+    #[test]
+    fn ln_by_atanh_agrees_with_ln_1p() {
+        for x in [1.0 + 1e-10, 0.75, 1.25, 1.0 - 2f64.powi(-40)] {
+            let u = (DD::from(x) - DD::from(1.0)) / (DD::from(x) + DD::from(1.0));
+            let got = ln_by_atanh(u);
+            let want = (x - 1.0).ln_1p();
+            assert!(
+                (got.hi - want).abs() <= want.abs() * 4e-16,
+                "{x}: {got:?} {want}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_large_power_by_magnitude_is_the_power_by_squaring() {
+        // 1.001^5000 both ways: exp(5000 ln 1.001) and 5000 squarings-and-products.
+        let x = Num::Exact(Q::new(1001, 1000, 0).unwrap());
+        let by_magnitude = pow_by_magnitude(x, Exponent::Int(5000), &(0..1)).unwrap();
+        let by_squaring = powi_dd(x.dd(), 5000);
+        let (a, b) = (by_magnitude.dd().f64(), by_squaring.f64());
+        assert!(a.to_bits().abs_diff(b.to_bits()) <= 2, "{a} {b}");
+    }
+
+    #[test]
+    fn whole_values_are_whole_in_the_rationals() {
+        assert!(eval("10 / 3 * 3").unwrap().is_whole());
+        assert!(eval("2^130 / 2^128").unwrap().is_whole());
+        assert!(!eval("(1 + 1e-20) * 3").unwrap().is_whole());
+        assert!(!eval("pi / pi * 3 + pi - pi + 1/3").unwrap().is_whole());
+    }
+
+    #[test]
+    fn trailing_zeros_keep_a_long_literal_exact() {
+        let v = eval("3.000000000000000000000000000000000000000000").unwrap();
+        assert_eq!(v.num, Num::Exact(Q::new(3, 1, 0).unwrap()));
+        let v = eval("25000000000000000000000000000000000000000000e-43").unwrap();
+        assert_eq!(v.num, Num::Exact(Q::new(5, 2, 0).unwrap()));
+    }
+
+    #[test]
+    fn a_subnormal_step_is_an_underflow_at_its_operator() {
+        let e = eval("1e-160 * 1e-160 * 1e300").unwrap_err();
+        assert_eq!(e.at, 7..8);
+        assert!(e.message.contains("underflows"));
+    }
+}

@@ -79,7 +79,10 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
     } else {
         100_000
     });
-    let scale = exp - frac.len() as i64;
+    // Trailing zeros into the scale: `3.000…0` with 40 zeros is exactly 3.
+    let significant = digits.trim_end_matches('0');
+    let scale = (exp - frac.len() as i64).saturating_add((digits.len() - significant.len()) as i64);
+    let digits = significant;
     let exact = (|| {
         if digits.is_empty() {
             return Some(Q::ZERO);
