@@ -494,12 +494,14 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
         return fail(at, "division by zero: 0 to a negative power");
     }
     // The exponent as p/q, if it is rational; an integer known only in
-    // double-double (beyond i128) apart.
+    // double-double apart (`Exponent::Huge`).
+    // NOTE: past 2^53 every f64 is an even integer, so a double-double
+    // value there (rounded somewhere: exact values are `Q`s) may be an
+    // integer of either parity, or none; below it, it is the integer it
+    // shows.
     let ratio = match b.num {
         Num::Exact(q) if q.pi == 0 => Some((q.n, q.d)),
-        Num::Float(x) if is_integer(x) && x.hi.abs() < TWO_126 => {
-            Some((x.hi as i128 + x.lo as i128, 1))
-        }
+        Num::Float(x) if is_integer(x) && x.hi.abs() < TWO_53 => Some((x.hi as i128, 1)),
         _ => None,
     };
     let scaled = |p: i128, q: i128| -> Result<Dim, Error> {
@@ -548,8 +550,9 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
             })
         }
         None if matches!(b.num, Num::Float(x) if is_integer(x)) => {
-            // An integer exponent beyond i128: only a plain number can be
-            // raised to it (a unit's power would pass 2^20 anyway).
+            // An integer exponent past 2^53, known only in double-double:
+            // only a plain number can be raised to it (a unit's power
+            // would pass 2^20 anyway).
             let Num::Float(e) = b.num else {
                 unreachable!("invariant: matched above")
             };
@@ -585,8 +588,8 @@ fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
     }
 }
 
-/// 2^126: below it, an integer in double-double fits i128 exactly.
-const TWO_126: f64 = 8.507_059_173_023_462e37;
+/// 2^53: below it, an integer-valued f64 is that integer.
+const TWO_53: f64 = 9_007_199_254_740_992.0;
 
 /// Up to this exponent, a power is taken by squaring in double-double
 /// (each squaring adds a rounding: about 2^-100 relative at this depth);
@@ -599,7 +602,7 @@ fn is_integer(x: DD) -> bool {
     x.hi.is_finite() && x.lo.is_finite() && x.hi.fract() == 0.0 && x.lo.fract() == 0.0
 }
 
-/// An integer exponent: exact in i128, or beyond it and known only in
+/// An integer exponent: exact in i128, or past 2^53 and known only in
 /// double-double (so its parity is not known).
 #[derive(Clone, Copy, Debug)]
 enum Exponent {
@@ -645,7 +648,8 @@ fn int_pow(x: Num, e: Exponent, at: &Range<usize>) -> Result<Num, Error> {
 /// small wherever the result is within f64's range: |e| > 4096 needs
 /// |ln|x|| < 0.25 there), and the sign by e's parity. A result past the
 /// range is ±inf or 0 (refused by the caller); −x to a power whose parity
-/// is not known (beyond i128) and whose magnitude is in range is refused.
+/// is not known (`Exponent::Huge`) and whose magnitude is in range is
+/// refused.
 fn pow_by_magnitude(x: Num, e: Exponent, at: &Range<usize>) -> Result<Num, Error> {
     let v = x.dd();
     let m = if v.hi < 0.0 { -v } else { v };
@@ -689,7 +693,7 @@ fn pow_by_magnitude(x: Num, e: Exponent, at: &Range<usize>) -> Result<Num, Error
         (true, None) => {
             return fail(
                 at.clone(),
-                "a negative number to an integer power beyond 2^127, which is not known exactly enough to tell whether it is even or odd",
+                "a negative number to a power known only approximately (an integer past 2^53 that is not exact): whether it is even or odd is not known",
             );
         }
     }))

@@ -87,7 +87,8 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
         if digits.is_empty() {
             return Some(Q::ZERO);
         }
-        if digits.len() > 38 || scale.unsigned_abs() > 38 {
+        // Up to 39 digits: i128 holds them to 1.7e38 (the parse refuses more).
+        if digits.len() > 39 || scale.unsigned_abs() > 38 {
             return None;
         }
         let n: i128 = digits.parse().ok()?;
