@@ -536,7 +536,7 @@ fn near_an_edge(x: &Q) -> bool {
     let max = Q::from_float(f64::MAX).unwrap();
     let min = Q::from_float(f64::MIN_POSITIVE).unwrap();
     let k = Q::new(BigInt::from(1001), BigInt::from(1000));
-    (&a > &(&max / &k) && a < &max * &k) || (&a > &(&min / &k) && a < &min * &k)
+    (a > &max / &k && a < &max * &k) || (a > &min / &k && a < &min * &k)
 }
 
 proptest! {
