@@ -728,6 +728,31 @@ mod tests {
     }
 
     #[test]
+    fn a_written_name_looks_like_a_copy_as_copies_are_named() {
+        assert_eq!(copy_like("leg[3]"), Some(("leg", 3)));
+        assert_eq!(copy_like("a[1][0]"), Some(("a[1]", 0)));
+        for no in [
+            "leg[03]",
+            "leg[]",
+            "leg[+1]",
+            "leg",
+            "leg[1] ",
+            "leg[99999999999999999999999]",
+        ] {
+            assert_eq!(copy_like(no), None, "{no}");
+        }
+    }
+
+    #[test]
+    fn a_written_name_looks_numbered_as_automatic_numbers_are() {
+        assert_eq!(numbered_like("wheel #2"), Some(("wheel", 2)));
+        assert_eq!(numbered_like("wheel #2 #3"), Some(("wheel #2", 3)));
+        for no in ["wheel #1", "wheel #02", "wheel #", "wheel#2", "wheel #2[0]"] {
+            assert_eq!(numbered_like(no), None, "{no}");
+        }
+    }
+
+    #[test]
     fn the_raw_count_is_read_before_any_check() {
         let mut p = RawPart::default();
         assert_eq!(raw_multiplicity(&p), 1);
