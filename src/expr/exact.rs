@@ -124,6 +124,10 @@ impl Q {
     }
 
     /// In double-double (π's power applied in double-double).
+    ///
+    /// NOTE: π^4096 is past f64's range either way (π^4096 > 10^2036, and
+    /// |n/d| ≥ 2^-127), so a larger power of π gives the same overflow or
+    /// underflow applied 4096 times.
     pub fn dd(self) -> DD {
         let mut v = DD::of_i128(self.n) / DD::of_i128(self.d);
         for _ in 0..self.pi.unsigned_abs().min(4096) {

@@ -175,6 +175,17 @@ impl Value {
         }
     }
 
+    /// Whether this is exactly a whole number: an integer rational (no
+    /// power of π), or a double-double value both of whose parts are
+    /// integers. `"10 / 3 * 3"` is, `"(1 + 1e-20) * 3"` is not (though it
+    /// rounds to 3 in f64).
+    pub fn is_whole(self) -> bool {
+        match self.num {
+            Num::Exact(q) => q.integer().is_some(),
+            Num::Float(x) => power::is_integer(x),
+        }
+    }
+
     /// Whether this is a finite, exact or double-double value.
     fn finite(self) -> bool {
         match self.num {
@@ -270,6 +281,7 @@ pub struct Expr {
 }
 
 mod parse;
+mod power;
 pub mod tangent;
 
 impl Expr {
@@ -325,6 +337,16 @@ impl Expr {
             };
             if !v.finite() {
                 return fail(at, "the value overflows the range of f64 here");
+            }
+            // NOTE: a double-double value whose leading part is subnormal
+            // has lost digits (a literal there, or a step's result): it
+            // would go on with as few as one significant bit. A literal
+            // f64 made zero is refused by the reader (`parse::number`).
+            if let Num::Float(x) = v.num
+                && x.hi != 0.0
+                && x.hi.abs() < f64::MIN_POSITIVE
+            {
+                return fail(at, "the value underflows f64 here (below 2.2e-308)");
             }
             stack.push(v);
         }
@@ -437,7 +459,7 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
                 angle: a.angle || b.angle,
             }
         }
-        Op::Pow => pow(a, b, at.clone())?,
+        Op::Pow => power::pow(a, b, at.clone())?,
         _ => unreachable!("invariant: only binary operators here"),
     };
     // A product, quotient or power of values that are not zero is not
@@ -451,129 +473,6 @@ fn binary(op: &Op, a: Value, b: Value, at: Range<usize>) -> Result<Value, Error>
         return fail(at, "the value underflows f64 here (below 2.2e-308)");
     }
     Ok(out)
-}
-
-/// `a ^ b`: b dimensionless; an integer power exact where it fits, a
-/// rational one (`^(1/2)`) where a's dimension allows it, in floating
-/// point.
-fn pow(a: Value, b: Value, at: Range<usize>) -> Result<Value, Error> {
-    if b.dim != Dim::DIMENSIONLESS {
-        return fail(
-            at,
-            format!(
-                "an exponent must be a plain number, not {}",
-                describe(b.dim)
-            ),
-        );
-    }
-    if a.num.is_zero() && b.num.is_zero() {
-        return fail(at, "0^0 is undefined");
-    }
-    if a.num.is_zero() && b.num.negative() {
-        return fail(at, "division by zero: 0 to a negative power");
-    }
-    // The exponent as p/q, if it is rational.
-    let ratio = match b.num {
-        Num::Exact(q) if q.pi == 0 => Some((q.n, q.d)),
-        Num::Float(x) if x.hi.fract() == 0.0 && x.lo == 0.0 && x.hi.abs() < 1e18 => {
-            Some((x.hi as i128, 1))
-        }
-        _ => None,
-    };
-    let scaled = |p: i128, q: i128| -> Result<Dim, Error> {
-        let one = |e: i32| -> Option<i32> {
-            let v = i128::from(e).checked_mul(p)?;
-            (v % q == 0)
-                .then(|| v / q)
-                .filter(|v| v.unsigned_abs() <= 1 << 20)
-                .map(|v| v as i32)
-        };
-        match (one(a.dim.mass), one(a.dim.length), one(a.dim.time)) {
-            (Some(mass), Some(length), Some(time)) => Ok(Dim { mass, length, time }),
-            _ => fail(
-                at.clone(),
-                format!("{} cannot be raised to this power", describe(a.dim)),
-            ),
-        }
-    };
-    match ratio {
-        Some((p, 1)) => {
-            let dim = scaled(p, 1)?;
-            let k = i64::try_from(p).unwrap_or(if p < 0 { i64::MIN + 1 } else { i64::MAX });
-            let num = match a.num {
-                Num::Exact(x) => match x.powi(k) {
-                    Some(q) => Num::Exact(q),
-                    None => Num::Float(powi_dd(x.dd(), k)),
-                },
-                Num::Float(x) => Num::Float(powi_dd(x, k)),
-            };
-            Ok(Value {
-                dim,
-                num,
-                angle: a.angle,
-            })
-        }
-        Some((p, q)) => {
-            let dim = scaled(p, q)?;
-            if a.num.negative() {
-                return fail(at, "a negative number to a fractional power");
-            }
-            let num = match (a.num, q) {
-                (Num::Exact(x), 2) => match x.sqrt().and_then(|r| r.powi(p as i64)) {
-                    Some(r) => Num::Exact(r),
-                    None => Num::Float(powi_dd(x.dd().sqrt(), p as i64)),
-                },
-                (x, 2) => Num::Float(powi_dd(x.dd().sqrt(), p as i64)),
-                (x, _) => Num::Float(DD::from(x.dd().f64().powf(p as f64 / q as f64))),
-            };
-            Ok(Value {
-                dim,
-                num,
-                angle: a.angle,
-            })
-        }
-        None => {
-            if a.dim != Dim::DIMENSIONLESS {
-                return fail(
-                    at,
-                    format!("{} can be raised only to a rational power", describe(a.dim)),
-                );
-            }
-            if a.num.negative() {
-                return fail(at, "a negative number to a fractional power");
-            }
-            let v = a.num.dd().f64().powf(b.num.dd().f64());
-            Ok(Value {
-                dim: a.dim,
-                num: Num::Float(DD::from(v)),
-                angle: a.angle || b.angle,
-            })
-        }
-    }
-}
-
-/// x^k by squaring in double-double (an overflow becomes inf, which the
-/// caller refuses).
-fn powi_dd(x: DD, k: i64) -> DD {
-    let mut base = if k < 0 { DD::from(1.0) / x } else { x };
-    let mut e = k.unsigned_abs();
-    let mut out = DD::from(1.0);
-    while e > 0 {
-        if e & 1 == 1 {
-            out = out * base;
-        }
-        e >>= 1;
-        if e > 0 {
-            base = base * base;
-            if !base.hi.is_finite() || base.hi == 0.0 {
-                // Past the range either way: the result is inf or 0 (or
-                // NaN from inf·0, refused as an overflow too).
-                out = out * base;
-                break;
-            }
-        }
-    }
-    out
 }
 
 fn call(f: Func, args: &[Value], at: Range<usize>) -> Result<Value, Error> {

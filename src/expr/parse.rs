@@ -79,12 +79,16 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
     } else {
         100_000
     });
-    let scale = exp - frac.len() as i64;
+    // Trailing zeros into the scale: `3.000…0` with 40 zeros is exactly 3.
+    let significant = digits.trim_end_matches('0');
+    let scale = (exp - frac.len() as i64).saturating_add((digits.len() - significant.len()) as i64);
+    let digits = significant;
     let exact = (|| {
         if digits.is_empty() {
             return Some(Q::ZERO);
         }
-        if digits.len() > 38 || scale.unsigned_abs() > 38 {
+        // Up to 39 digits: i128 holds them to 1.7e38 (the parse refuses more).
+        if digits.len() > 39 || scale.unsigned_abs() > 38 {
             return None;
         }
         let n: i128 = digits.parse().ok()?;
@@ -106,6 +110,17 @@ fn number(text: &str, at: Range<usize>) -> Result<Num, Error> {
         return fail(
             at,
             format!("the number `{text}` is beyond the range of f64"),
+        );
+    }
+    // Not zero as written (`digits` has a non-zero digit), but zero or
+    // subnormal in f64: too small, as a plain value is (`1e-400`).
+    if x.abs() < f64::MIN_POSITIVE {
+        return fail(
+            at,
+            format!(
+                "the number `{text}` is too small: below {:e}, f64 loses precision",
+                f64::MIN_POSITIVE
+            ),
         );
     }
     Ok(match of_f64(x) {
@@ -138,6 +153,17 @@ pub(super) fn parse(text: &str) -> Result<Expr, Error> {
         let after_number = p.i > 0 && matches!(p.toks[p.i - 1].tok, Tok::Num(_));
         if t.tok == Tok::Name && after_number {
             let word = &text[at.clone()];
+            // A unit, but after a power of something other than a number
+            // (`(-1)^3 kg`, `x^2 m`): it binds to a number only.
+            if units::parse_unit(word).is_ok() {
+                return Err(Error {
+                    at,
+                    message: format!("expected an operator before the unit `{word}`"),
+                    help: Some(format!(
+                        "a unit follows a number directly (`2 {word}`, `10^3 {word}`); after a parenthesis, a name or a power of either, write `* {word}`"
+                    )),
+                });
+            }
             return Err(Error {
                 at,
                 message: format!("unknown unit `{word}`"),
@@ -430,6 +456,7 @@ impl Parser<'_> {
 fn quantity(v: Value, u: units::Unit) -> Value {
     let (n, d, pi) = u.factor.parts();
     let num = match (v.num, Q::new(n, d, pi)) {
+        (Num::Exact(x), _) if x.is_zero() => Num::Exact(Q::ZERO),
         (Num::Exact(x), Some(f)) => match x.times(f) {
             Some(q) => Num::Exact(q),
             None => Num::Float(x.dd() * u.factor.dd()),

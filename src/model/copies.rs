@@ -20,6 +20,7 @@ use crate::diag::Diagnostic;
 use crate::part::Place;
 use crate::rotation::Orientation;
 use crate::units::Dim;
+use std::collections::HashMap;
 use std::ops::Range;
 use toml::Spanned;
 
@@ -307,6 +308,21 @@ impl Ctx<'_> {
     /// `count`: a whole number of copies, 1 to the part limit.
     fn count(&self, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
         let x = self.dimensionless(q, "count")?;
+        // NOTE: whole in the exact rationals the value is read in, not
+        // only after its rounding to f64: `"(1 + 1e-20) * 3"` rounds to 3.
+        let exact = self.written_value(q);
+        if x >= 1.0 && x.fract() == 0.0 && exact.is_some_and(|v| !v.is_whole()) {
+            let written = match q.get_ref() {
+                Quantity::Text(t) => format!("{t:?}"),
+                Quantity::Number(_) => self.source.text[q.span()].to_string(),
+            };
+            return Err(self
+                .err(
+                    q.span(),
+                    format!("`count` must be a whole number of copies: {written} is not exactly whole (it is {x} only once rounded to f64)"),
+                )
+                .help("`count` is read exactly, as an expression is: write the whole number, or an expression whose value is exactly one"));
+        }
         if !(x >= 1.0 && x.fract() == 0.0) {
             return Err(self
                 .err(
@@ -466,6 +482,162 @@ impl Ctx<'_> {
     }
 }
 
+/// The names a file gives its parts and sub-assemblies, kept as the
+/// items are made (`note`) and checked once after (`check`), so that each
+/// name the file writes selects one thing: a copy's name `NAME[i]`
+/// (`array`, `mirror`) may not be a name written in the file, and a
+/// sub-assembly numbered automatically (`wheel #2`, for a second
+/// sub-assembly named `wheel`) may not take or skip a number another
+/// sub-assembly's name has written (`--only "wheel #2"` would select
+/// another sub-assembly than the one so named, or none).
+///
+/// NOTE: only what can clash is kept (the items with copies, the
+/// sub-assemblies numbered, and the names written that look like a copy's
+/// or a numbered one), so a file of plain parts costs nothing here, and
+/// the check is linear in the items.
+#[derive(Default)]
+pub(super) struct Names {
+    /// Written names of the form `BASE[i]`: BASE → (i, where).
+    copy_like: HashMap<String, Vec<(usize, Range<usize>)>>,
+    /// Sub-assemblies' written names of the form `BASE #k`: BASE → (k,
+    /// where).
+    numbered_like: HashMap<String, Vec<(usize, Range<usize>)>>,
+    /// The items with copies: their base name, how many, where asked.
+    copied: Vec<(String, usize, Range<usize>)>,
+    /// Sub-assemblies numbered automatically: base, number, where.
+    numbered: Vec<(String, usize, Range<usize>)>,
+}
+
+/// `BASE[i]` as a copy's name is written (`Copies::index_in`'s form).
+fn copy_like(name: &str) -> Option<(&str, usize)> {
+    let (base, rest) = name.strip_suffix(']')?.rsplit_once('[')?;
+    let ok = !rest.is_empty()
+        && rest.bytes().all(|b| b.is_ascii_digit())
+        && (rest.len() == 1 || !rest.starts_with('0'));
+    Some((base, rest.parse().ok().filter(|_| ok)?))
+}
+
+/// `BASE #k`, k ≥ 2, as an automatic number is written.
+fn numbered_like(name: &str) -> Option<(&str, usize)> {
+    let (base, k) = name.rsplit_once(" #")?;
+    let ok = !k.is_empty() && k.bytes().all(|b| b.is_ascii_digit()) && !k.starts_with('0');
+    Some((base, k.parse().ok().filter(|k| ok && *k >= 2)?))
+}
+
+impl Names {
+    /// The item made of raw part `i` (`p`).
+    pub(super) fn note(&mut self, i: usize, p: &Spanned<RawPart>, item: &Item) {
+        let raw = p.get_ref();
+        let (written, base, copies) = match item {
+            Item::Part { copies, .. } => (
+                raw.name.as_ref().map(|n| (n.get_ref().clone(), n.span())),
+                raw.name.as_ref().map(|n| n.get_ref().clone()),
+                copies.as_deref(),
+            ),
+            Item::Include(inc) => {
+                // NOTE: as `include::Ctx::include` names it: its `name`,
+                // else its file's `name`, else its file name's stem.
+                let (written, at) = match (&raw.name, &inc.model.name, &raw.include) {
+                    (Some(n), _, _) => (n.get_ref().clone(), n.span()),
+                    (None, Some(n), Some(f)) => (n.clone(), f.span()),
+                    (None, None, Some(f)) => (
+                        std::path::Path::new(f.get_ref())
+                            .file_stem()
+                            .map(|s| s.to_string_lossy().into_owned())
+                            .unwrap_or_else(|| format!("part {}", i + 1)),
+                        f.span(),
+                    ),
+                    (None, _, None) => (inc.name.clone(), p.span()),
+                };
+                if let Some((b, k)) = numbered_like(&written) {
+                    self.numbered_like
+                        .entry(b.to_string())
+                        .or_default()
+                        .push((k, at.clone()));
+                }
+                if inc.name != written
+                    && let Some(k) = inc
+                        .name
+                        .strip_prefix(written.as_str())
+                        .and_then(|r| r.strip_prefix(" #"))
+                        .and_then(|k| k.parse().ok())
+                {
+                    let at = raw.include.as_ref().map_or_else(|| p.span(), |f| f.span());
+                    self.numbered.push((written.clone(), k, at));
+                }
+                (
+                    Some((written, at)),
+                    Some(inc.name.clone()),
+                    inc.copies.as_deref(),
+                )
+            }
+        };
+        if let Some((name, at)) = &written
+            && let Some((b, k)) = copy_like(name)
+        {
+            self.copy_like
+                .entry(b.to_string())
+                .or_default()
+                .push((k, at.clone()));
+        }
+        if let Some(c) = copies {
+            let base = base.unwrap_or_else(|| format!("part {}", i + 1));
+            self.copied.push((base, c.len(), copies_span(p)));
+        }
+    }
+
+    /// Refuse the first clash, at the name the file writes, the other
+    /// place in a note.
+    pub(super) fn check(&self, ctx: &Ctx) -> Result<(), Diagnostic> {
+        let place = |at: &Range<usize>| {
+            let (line, col) = ctx.source.line_col(at.start);
+            format!("{}:{line}:{col}", ctx.source.name)
+        };
+        for (base, len, at) in &self.copied {
+            if let Some((i, written)) = self
+                .copy_like
+                .get(base)
+                .and_then(|w| w.iter().find(|(i, _)| i < len))
+            {
+                let mut name = String::new();
+                push_copy_name(&mut name, base, *i);
+                return Err(ctx
+                    .err(
+                        written.clone(),
+                        format!("the name `{name}` is also the name of a copy: `{base}` has {len} copies, `{base}[0]` to `{base}[{}]`", len - 1),
+                    )
+                    .label("written here")
+                    .note(format!("`{base}`'s copies are asked for at {}", place(at)))
+                    .help("give it another name: a copy is named by its index, and the tables, `--only`, `check` and `diff` name it so"));
+            }
+        }
+        for (base, k, at) in &self.numbered {
+            if let Some((j, written)) = self
+                .numbered_like
+                .get(base)
+                .and_then(|w| w.iter().find(|(j, _)| j <= k))
+            {
+                return Err(ctx
+                    .err(
+                        written.clone(),
+                        format!(
+                            "the sub-assembly name `{base} #{j}` is also a number given automatically: {}",
+                            if *k == 2 {
+                                format!("a second sub-assembly named `{base}` is numbered `{base} #2`")
+                            } else {
+                                format!("the sub-assemblies named `{base}` are numbered `{base} #2` to `{base} #{k}`")
+                            }
+                        ),
+                    )
+                    .label("written here")
+                    .note(format!("the sub-assembly numbered `{base} #{k}` is included at {}", place(at)))
+                    .help(format!("name the sub-assemblies apart, each `name` its own (`--only` selects a sub-assembly by its name; a second `{base}` is numbered `{base} #2`, a third `{base} #3`, …)")));
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Every coordinate of the points a placement gives, and its edges'.
 fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
     let points: Vec<[f64; 3]> = match place {
@@ -552,6 +724,31 @@ mod tests {
             let raw: super::super::raw::RawFile = toml::from_str(&text).unwrap();
             let p = raw.part.unwrap().into_inner().remove(0).into_inner();
             assert!(p.array.is_some() || p.mirror.is_some(), "{text}");
+        }
+    }
+
+    #[test]
+    fn a_written_name_looks_like_a_copy_as_copies_are_named() {
+        assert_eq!(copy_like("leg[3]"), Some(("leg", 3)));
+        assert_eq!(copy_like("a[1][0]"), Some(("a[1]", 0)));
+        for no in [
+            "leg[03]",
+            "leg[]",
+            "leg[+1]",
+            "leg",
+            "leg[1] ",
+            "leg[99999999999999999999999]",
+        ] {
+            assert_eq!(copy_like(no), None, "{no}");
+        }
+    }
+
+    #[test]
+    fn a_written_name_looks_numbered_as_automatic_numbers_are() {
+        assert_eq!(numbered_like("wheel #2"), Some(("wheel", 2)));
+        assert_eq!(numbered_like("wheel #2 #3"), Some(("wheel #2", 3)));
+        for no in ["wheel #1", "wheel #02", "wheel #", "wheel#2", "wheel #2[0]"] {
+            assert_eq!(numbered_like(no), None, "{no}");
         }
     }
 

@@ -36,8 +36,11 @@ pub(crate) struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
+    /// An error at `span` of this file (with a note naming any `--set`
+    /// parameter the span's text names: `Params::blame_set`).
     pub(super) fn err(&self, span: Range<usize>, message: impl Into<String>) -> Diagnostic {
-        self.source.error(span, message)
+        let d = self.source.error(span.clone(), message);
+        self.params.blame_set(&self.source.text, span, d)
     }
 
     pub(super) fn file_units(&self, u: &Spanned<raw::RawUnits>) -> Result<FileUnits, Diagnostic> {
@@ -282,6 +285,32 @@ impl Ctx<'_> {
             ));
         }
         Ok(())
+    }
+
+    /// A parameter given as a TOML number (`n = 32` in `[params]`, or in an
+    /// include's `params`), as a plain number: finite, and not zero or
+    /// subnormal in f64 unless written as zero (`n = 1e-400` is too small
+    /// here, as any quantity is).
+    pub(super) fn number_param(
+        &self,
+        q: &Spanned<Quantity>,
+        x: f64,
+        what: &str,
+    ) -> Result<crate::expr::Value, Diagnostic> {
+        if !x.is_finite() {
+            return Err(self.err(q.span(), format!("{what} must be a finite number, got {x}")));
+        }
+        let written = self.source.text.get(q.span()).unwrap_or("");
+        if x.abs() < f64::MIN_POSITIVE && (x != 0.0 || nonzero_literal(written)) {
+            return Err(self.err(
+                q.span(),
+                format!(
+                    "{what} is too small: below {:e}, f64 loses precision",
+                    f64::MIN_POSITIVE
+                ),
+            ));
+        }
+        Ok(crate::expr::Value::of_f64(x))
     }
 
     /// A positive quantity. Subnormal values (below 2.2e-308 in SI) are

@@ -409,6 +409,8 @@ impl Model {
         let (mut count, mut has_real_sizes) = (0, false);
         // The names given to sub-assemblies so far (`wheel`, `wheel #2`).
         let mut assembly_names = include::AssemblyNames::default();
+        // The names written, of copies and numbered (`copies::Names`).
+        let mut names = copies::Names::default();
         for (i, p) in raw_parts.enumerate() {
             let p = p.borrow();
             // Its copies first: a count past the limit is refused before
@@ -422,6 +424,7 @@ impl Model {
                     inc.copies = copies;
                 }
                 ctx.copies_in_range(&item, p)?;
+                names.note(i, p, &item);
                 items.push(item);
                 continue;
             }
@@ -452,7 +455,9 @@ impl Model {
                 tag,
             });
             ctx.copies_in_range(items.last().expect("just pushed"), p)?;
+            names.note(i, p, items.last().expect("just pushed"));
         }
+        names.check(ctx)?;
         Ok((items, count, has_real_sizes))
     }
 

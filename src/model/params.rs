@@ -26,6 +26,9 @@ pub(crate) struct Params {
     /// How the parameters with a tolerance (their own, or of the
     /// parameters they use) move with the file's sources (SI per z).
     grads: BTreeMap<String, Grad>,
+    /// The parameters `--set` gives, each with the note an error it may
+    /// have caused carries (`Params::blame_set`).
+    set: BTreeMap<String, String>,
 }
 
 impl Params {
@@ -65,6 +68,35 @@ impl Params {
         );
         names.sort_unstable();
         names
+    }
+
+    /// `d`, located at `span` of `file`, with a note for each parameter
+    /// given by `--set` that the span's text names (`["leg", 0, 0]`): an
+    /// error there may be the flag's doing, not the file's. A span of
+    /// several lines (a whole table) is not read: what it names need not
+    /// be what failed.
+    pub(super) fn blame_set(
+        &self,
+        file: &str,
+        span: Range<usize>,
+        mut d: Diagnostic,
+    ) -> Diagnostic {
+        if self.set.is_empty() {
+            return d;
+        }
+        let Some(text) = file.get(span).filter(|t| !t.contains('\n')) else {
+            return d;
+        };
+        let mut named: Vec<&str> = text
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .filter(|w| self.set.contains_key(*w))
+            .collect();
+        named.sort_unstable();
+        named.dedup();
+        for n in named {
+            d = d.note(self.set[n].clone());
+        }
+        d
     }
 }
 
@@ -152,13 +184,7 @@ impl Ctx<'_> {
                 return Err(self.err(key.span(), format!("`{name}` is not a parameter name")));
             }
             let value = match q.get_ref() {
-                Quantity::Number(x) if x.is_finite() => Value::of_f64(*x),
-                Quantity::Number(x) => {
-                    return Err(self.err(
-                        q.span(),
-                        format!("parameter `{name}` must be a finite number, got {x}"),
-                    ));
-                }
+                Quantity::Number(x) => self.number_param(q, *x, &format!("parameter `{name}`"))?,
                 Quantity::Text(t) => {
                     let what = format!("parameter `{name}`");
                     // NOTE: a tolerance's source belongs to one file's
@@ -169,12 +195,11 @@ impl Ctx<'_> {
                             .not_allowed(self.source, q.span(), t, at, "params")
                             .help("a tolerance cannot be passed to an included file yet: give it in that file's `[params]`"));
                     }
-                    let e =
-                        Expr::parse(t).map_err(|e| located(self.source, q.span(), t, e, &what))?;
+                    let e = Expr::parse(t).map_err(|e| self.located_here(q, t, e, &what))?;
                     let params = &self.params;
                     let v = e
                         .eval(&|n| params.get(n), &|| params.names())
-                        .map_err(|e| located(self.source, q.span(), t, e, &what))?;
+                        .map_err(|e| self.located_here(q, t, e, &what))?;
                     if !params.grad_of(&e).is_empty() {
                         return Err(self
                             .err(
@@ -203,9 +228,14 @@ impl Ctx<'_> {
 enum Def<'a> {
     /// In the file: the key's span and its value.
     File(Range<usize>, &'a Spanned<Quantity>),
-    /// `--set`.
-    Set(&'a Source),
+    /// `--set`, with the definition it replaces.
+    Set(&'a Source, Option<(Range<usize>, &'a Spanned<Quantity>)>),
     Value(Value),
+}
+
+/// `--set NAME=VALUE` as given (the value without its quotes).
+fn flag(name: &str, source: &Source) -> String {
+    format!("--set {name}={}", source.text)
 }
 
 impl Ctx<'_> {
@@ -253,8 +283,23 @@ impl Ctx<'_> {
                 };
                 return Err(d.suggest(near));
             };
+            let file = match def {
+                Def::File(key, q) => Some((key.clone(), *q)),
+                Def::Set(..) | Def::Value(_) => None,
+            };
             *def = match &p.given {
-                Given::Set(source) => Def::Set(source),
+                Given::Set(source) => {
+                    let mut note = format!("`{}` gives `{}` here", flag(&p.name, source), p.name);
+                    if let Some((key, _)) = &file {
+                        let (line, col) = self.source.line_col(key.start);
+                        note.push_str(&format!(
+                            ", in place of its definition at {}:{line}:{col}",
+                            self.source.name
+                        ));
+                    }
+                    self.params.set.insert(p.name.clone(), note);
+                    Def::Set(source, file)
+                }
                 Given::Value(v) => Def::Value(*v),
             };
         }
@@ -266,13 +311,13 @@ impl Ctx<'_> {
                     Quantity::Text(t) => (t.as_str(), q.span(), self.source),
                     Quantity::Number(_) => continue,
                 },
-                Def::Set(source) => (source.text.as_str(), 0..source.text.len(), *source),
+                Def::Set(source, _) => (source.text.as_str(), 0..source.text.len(), *source),
                 Def::Value(_) => continue,
             };
             // The value before a tolerance (`"2 mm ± 0.1 mm"`): read after.
             let text = super::tolerance::split(text).map_or(text, |s| s.0);
-            let e = Expr::parse(text)
-                .map_err(|e| located(source, span, text, e, &format!("parameter `{name}`")))?;
+            let e =
+                Expr::parse(text).map_err(|e| located(source, span, text, e, &what(name, def)))?;
             exprs.insert(name, e);
         }
         let order = self.order(&defs, &exprs)?;
@@ -283,13 +328,7 @@ impl Ctx<'_> {
                     let Quantity::Number(x) = q.get_ref() else {
                         unreachable!("invariant: matched above")
                     };
-                    if !x.is_finite() {
-                        return Err(self.err(
-                            q.span(),
-                            format!("parameter `{name}` must be a finite number, got {x}"),
-                        ));
-                    }
-                    Value::of_f64(*x)
+                    self.number_param(q, *x, &format!("parameter `{name}`"))?
                 }
                 def => {
                     let (text, span, source) = match def {
@@ -297,7 +336,7 @@ impl Ctx<'_> {
                             Quantity::Text(t) => (t.as_str(), q.span(), self.source),
                             Quantity::Number(_) => unreachable!("invariant: matched above"),
                         },
-                        Def::Set(s) => (s.text.as_str(), 0..s.text.len(), *s),
+                        Def::Set(s, _) => (s.text.as_str(), 0..s.text.len(), *s),
                         Def::Value(_) => unreachable!("invariant: matched above"),
                     };
                     let params = &self.params;
@@ -306,14 +345,19 @@ impl Ctx<'_> {
                             defs.keys().map(|k| k.to_string()).collect()
                         })
                         .map_err(|e| {
-                            located(
-                                source,
-                                span.clone(),
-                                text,
-                                e,
-                                &format!("parameter `{name}`"),
-                            )
+                            let d = located(source, span.clone(), text, e, &what(name, def));
+                            // A definition in the file may fail for a value
+                            // `--set` gave another parameter.
+                            match def {
+                                Def::File(..) => {
+                                    self.params.blame_set(&self.source.text, span.clone(), d)
+                                }
+                                Def::Set(..) | Def::Value(_) => d,
+                            }
                         })?;
+                    if let Def::Set(s, Some(replaced)) = def {
+                        self.same_dimension(name, s, replaced, value)?;
+                    }
                     // Its gradient: through the parameters it uses, and
                     // its own tolerance, a source shared by every use.
                     let mut grad = self.params.grad_of(&exprs[name]);
@@ -409,7 +453,7 @@ impl Ctx<'_> {
                 let message = format!("parameters form a cycle: {}", cycle.join(" → "));
                 return Err(match &defs[cycle[0]] {
                     Def::File(key, _) => self.err(key.clone(), message),
-                    Def::Set(s) => s.error(0..s.text.len(), message),
+                    Def::Set(s, _) => s.error(0..s.text.len(), message),
                     Def::Value(_) => Diagnostic::plain(message),
                 }
                 .help("a parameter cannot be defined by itself, directly or through others"));
@@ -450,11 +494,11 @@ impl Ctx<'_> {
             return Ok(None);
         }
         let what = format!("`{key}`");
-        let e = Expr::parse(text).map_err(|e| located(self.source, q.span(), text, e, &what))?;
+        let e = Expr::parse(text).map_err(|e| self.located_here(q, text, e, &what))?;
         let params = &self.params;
         let v = e
             .eval(&|n| params.get(n), &|| params.names())
-            .map_err(|e| located(self.source, q.span(), text, e, &what))?;
+            .map_err(|e| self.located_here(q, text, e, &what))?;
         if v.dim != dim {
             return Err(self
                 .err(
@@ -500,6 +544,23 @@ impl Ctx<'_> {
             ));
         }
         Ok(Some((x, grad)))
+    }
+
+    /// The exact value of a plain number as written, for a key that must
+    /// be whole (`count`): a TOML number's text read as an expression's
+    /// number is (`3.0000000000000001` is not 3, though f64 makes it 3), a
+    /// string's expression evaluated; `None` where it cannot be read so
+    /// (the key's own reader says why, or the text is TOML's alone, `0x10`).
+    pub(super) fn written_value(&self, q: &Spanned<Quantity>) -> Option<Value> {
+        let text = match q.get_ref() {
+            Quantity::Number(_) => self.source.text.get(q.span())?,
+            Quantity::Text(t) => super::tolerance::split(t).map_or(t.as_str(), |s| s.0),
+        };
+        let params = &self.params;
+        Expr::parse(text)
+            .ok()?
+            .eval(&|n| params.get(n), &Vec::new)
+            .ok()
     }
 
     /// Whether `text` is a plain quantity, right or wrong (`"3 furlongs"`,
@@ -554,6 +615,92 @@ fn is_zero(v: Value) -> bool {
         expr::Num::Exact(q) => q.is_zero(),
         expr::Num::Float(x) => x.hi == 0.0,
     }
+}
+
+/// Who a definition's error is about: "parameter `leg`", or the flag and
+/// its value, "`--set leg=3 kg`".
+fn what(name: &str, def: &Def) -> String {
+    match def {
+        Def::Set(s, _) => format!("`{}`", flag(name, s)),
+        Def::File(..) | Def::Value(_) => format!("parameter `{name}`"),
+    }
+}
+
+impl Ctx<'_> {
+    /// A `--set` value of another dimension than the definition it
+    /// replaces is refused at the flag (each use would fail at its key,
+    /// as the file's error): where the file's definition can be read
+    /// alone, in the parameters read so far.
+    fn same_dimension(
+        &self,
+        name: &str,
+        s: &Source,
+        (key, q): &(Range<usize>, &Spanned<Quantity>),
+        value: Value,
+    ) -> Result<(), Diagnostic> {
+        let file = match q.get_ref() {
+            Quantity::Number(x) => Value::of_f64(*x),
+            Quantity::Text(t) => {
+                let t = super::tolerance::split(t).map_or(t.as_str(), |s| s.0);
+                let params = &self.params;
+                let Some(v) = Expr::parse(t)
+                    .ok()
+                    .and_then(|e| e.eval(&|n| params.get(n), &Vec::new).ok())
+                else {
+                    return Ok(());
+                };
+                v
+            }
+        };
+        if file.dim == value.dim {
+            return Ok(());
+        }
+        let (line, col) = self.source.line_col(key.start);
+        Err(s
+            .error(
+                0..s.text.len(),
+                format!(
+                    "`{}` gives {}, but the file's `{name}` is {}",
+                    flag(name, s),
+                    expr::describe(value.dim),
+                    expr::describe(file.dim)
+                ),
+            )
+            .note(format!(
+                "`{name}` is defined at {}:{line}:{col}",
+                self.source.name
+            ))
+            .help(format!(
+                "give `{name}` {}, as the file's definition is",
+                match file.dim.describe() {
+                    "a quantity of another kind" => "in the file's dimension".to_string(),
+                    _ => format!("with a unit of {}", dim_word(file.dim)),
+                }
+            )))
+    }
+}
+
+impl Ctx<'_> {
+    /// `located` in this file, with the notes of `Params::blame_set`.
+    fn located_here(
+        &self,
+        q: &Spanned<Quantity>,
+        text: &str,
+        e: expr::Error,
+        what: &str,
+    ) -> Diagnostic {
+        let d = located(self.source, q.span(), text, e, what);
+        self.params.blame_set(&self.source.text, q.span(), d)
+    }
+}
+
+/// "a length" → "length", for "a unit of length".
+fn dim_word(d: Dim) -> String {
+    let w = d.describe();
+    w.strip_prefix("a ")
+        .or_else(|| w.strip_prefix("an "))
+        .unwrap_or(w)
+        .to_string()
 }
 
 /// An expression's error as a diagnostic at its token in the file: `span`
@@ -766,6 +913,7 @@ fn over(passed: &[Pass], base: &Base) -> Option<Params> {
         values,
         base: base.values.clone(),
         grads: BTreeMap::new(),
+        set: BTreeMap::new(),
     };
     for name in affected {
         let v = base.exprs[name]

@@ -14,6 +14,7 @@ mod cost;
 mod depth;
 mod diff;
 mod docs;
+mod exact;
 mod files;
 mod frames;
 mod hostile;

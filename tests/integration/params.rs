@@ -347,15 +347,19 @@ fn set_refuses_a_name_the_file_does_not_define() {
     assert!(e.contains("did you mean `leg`?"), "{e}");
     let e = refused(&text, &["--set", "leg"]);
     assert!(e.contains("expected NAME=VALUE"), "{e}");
-    // A bad value is located in the flag's value.
+    // A value of another dimension than the file's is refused at the flag.
     let e = refused(&text, &["--set", "leg=2 kg"]);
     assert!(
-        e.contains("`center` is a length (m), but the expression gives a mass (kg)"),
+        e.starts_with(
+            "--set leg:1:1: error: `--set leg=2 kg` gives a mass (kg), but the file's `leg` is a length (m)"
+        ),
         "{e}"
     );
+    assert!(e.contains("note: `leg` is defined at f.toml:2:1"), "{e}");
+    // A bad value is located in the flag's value, the flag named.
     let e = refused(&text, &["--set", "leg=2 ** 3"]);
     assert!(
-        e.starts_with("--set leg:1:4: error: parameter `leg`"),
+        e.starts_with("--set leg:1:4: error: `--set leg=2 ** 3`: "),
         "{e}"
     );
 }
