@@ -26,20 +26,21 @@ use serde_json::{Value, json};
 const TITLE: &str = "massprop check";
 
 /// A diagnostic's whole text for a single message: the message, then its
-/// label, help and notes, each on a line of its own; control characters
-/// shown as their pictures.
+/// label, help and notes, each on a line of its own; each piece shown by
+/// `visible`, so a newline from input is a picture, as on standard error,
+/// and only these lines are lines.
 fn diagnostic_text(d: &Diagnostic) -> String {
-    let mut text = d.message().to_string();
+    let mut text = visible(d.message());
     if let Some(label) = d.label_text() {
-        text.push_str(&format!("\n{label}"));
+        text.push_str(&format!("\n{}", visible(label)));
     }
     if let Some(help) = d.help_text() {
-        text.push_str(&format!("\nhelp: {help}"));
+        text.push_str(&format!("\nhelp: {}", visible(help)));
     }
     for note in d.notes() {
-        text.push_str(&format!("\nnote: {note}"));
+        text.push_str(&format!("\nnote: {}", visible(note)));
     }
-    text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
+    text
 }
 
 /// A path as the CI system matches it against the repository's files:
@@ -388,12 +389,15 @@ pub fn sarif(results: &[FileResult]) -> String {
     }))
 }
 
-/// A path as a relative URI reference: every byte but the unreserved ones
-/// and `/` percent-encoded, so a space or `#` in a name does not end or
-/// change the reference.
+/// A path as a relative URI reference (RFC 3986): every byte of the name
+/// but the unreserved ones and `/` percent-encoded, so a space or `#` in a
+/// name does not end or change the reference; `path` is the name as
+/// `display_path` showed it, read back to the name's own bytes
+/// (`path_bytes`), so a name that is not UTF-8 gives its bytes, not the
+/// `\xNN` that shows them.
 fn uri(path: &str) -> String {
     let mut out = String::new();
-    for b in path.bytes() {
+    for b in crate::diag::path_bytes(path) {
         match b {
             b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
                 out.push(char::from(b))
@@ -467,5 +471,17 @@ mod tests {
         assert_eq!(uri("shapes/a b#1%.toml"), "shapes/a%20b%231%25.toml");
         assert_eq!(uri("dir\\x.toml"), "dir%5Cx.toml");
         assert_eq!(uri("é.toml"), "%C3%A9.toml");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_uri_gives_the_bytes_of_a_name_that_is_not_utf8() {
+        use std::os::unix::ffi::OsStrExt;
+        let path = std::path::Path::new(std::ffi::OsStr::from_bytes(b"d\xe9/a\\b\xff.toml"));
+        let shown = crate::diag::display_path(path);
+        assert_eq!(uri(&shown), "d%E9/a%5Cb%FF.toml");
+        // A UTF-8 name holding the text `\xff` is that text.
+        let shown = crate::diag::display_path(std::path::Path::new("a\\xff.toml"));
+        assert_eq!(uri(&shown), "a%5Cxff.toml");
     }
 }

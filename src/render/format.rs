@@ -52,6 +52,21 @@ pub fn name(name: &str) -> String {
     out
 }
 
+/// A name from input at the start of a line (a report's title): as
+/// `name` shows it, in backticks unless it begins with a letter or digit,
+/// so that text from input never chooses how a line begins (`::error::…`
+/// at the start of a line is a command to a CI runner; a name beginning
+/// with a blank could pass for an indented line). A path is shown by
+/// `diag::display_path`, which has its own rule (`./`).
+pub fn line_name(text: &str) -> String {
+    let shown = name(text);
+    if shown.chars().next().is_some_and(char::is_alphanumeric) {
+        shown
+    } else {
+        format!("`{shown}`")
+    }
+}
+
 /// `x` to six significant digits: fixed notation for moderate magnitudes,
 /// scientific otherwise, trailing zeros dropped.
 pub fn fmt_num(x: f64) -> String {
