@@ -466,6 +466,118 @@ mod tests {
         );
     }
 
+    /// Characters XML 1.0 forbids or a reader acts on, and the markup's
+    /// own: a text of them is the worst a name, a path or a message can be.
+    const HOSTILE: &[char] = &[
+        '\0',
+        '\u{1}',
+        '\u{8}',
+        '\t',
+        '\n',
+        '\u{b}',
+        '\u{c}',
+        '\r',
+        '\u{1b}',
+        '\u{1f}',
+        '\u{7f}',
+        '\u{80}',
+        '\u{85}',
+        '\u{9b}',
+        '\u{9f}',
+        '\u{202e}',
+        '\u{2066}',
+        '\u{2028}',
+        '\u{2029}',
+        '\u{fffe}',
+        '\u{ffff}',
+        '\u{feff}',
+        '\u{10ffff}',
+        '<',
+        '>',
+        '&',
+        '"',
+        '\'',
+        ']',
+        '-',
+        ':',
+        ',',
+        '%',
+        '=',
+        ' ',
+        'a',
+        'é',
+    ];
+
+    fn hostile() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        prop::collection::vec(prop::sample::select(HOSTILE), 0..24)
+            .prop_map(|c| c.into_iter().collect())
+    }
+
+    /// A file with every kind of text from input: its path, an error's
+    /// message, label, help and note, a validity failure.
+    fn hostile_result(path: &str, message: &str, other: &str) -> FileResult {
+        let source = crate::diag::Source::new(path, format!("a = 1 # {other}\n"));
+        FileResult {
+            path: path.to_string(),
+            status: Status::Invalid,
+            error: Some(
+                source
+                    .error(0..1, message)
+                    .label(other)
+                    .help(other)
+                    .note(other),
+            ),
+            checks: Vec::new(),
+            validity: vec![Validity {
+                name: "triangle inequality",
+                failure: Some(other.to_string()),
+            }],
+            precision: None,
+            accuracy_warnings: Vec::new(),
+            robot: None,
+            format: None,
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config {
+            cases: 256,
+            failure_persistence: None,
+            ..Default::default()
+        })]
+
+        #[test]
+        fn junit_is_well_formed_xml_whatever_the_text(
+            path in hostile(), message in hostile(), other in hostile()
+        ) {
+            let xml = junit(&[hostile_result(&path, &message, &other)]);
+            let doc = roxmltree::Document::parse(&xml);
+            proptest::prop_assert!(doc.is_ok(), "{:?}\n{}", doc.err(), xml);
+        }
+
+        #[test]
+        fn sarif_is_json_and_github_lines_are_massprops_whatever_the_text(
+            path in hostile(), message in hostile(), other in hostile()
+        ) {
+            let results = [hostile_result(&path, &message, &other)];
+            let sarif: Result<serde_json::Value, _> = serde_json::from_str(&sarif(&results));
+            proptest::prop_assert!(sarif.is_ok());
+            let github = github(&results);
+            for line in github.lines() {
+                proptest::prop_assert!(
+                    line.starts_with("::error file=") || line.starts_with("checked "),
+                    "{:?}", line
+                );
+                proptest::prop_assert!(
+                    !line.chars().any(|c| c != '\t' && crate::diag::is_hidden(c)),
+                    "{:?}", line
+                );
+            }
+            proptest::prop_assert_eq!(github.lines().count(), 3);
+        }
+    }
+
     #[test]
     fn paths_become_relative_uri_references() {
         assert_eq!(uri("shapes/a b#1%.toml"), "shapes/a%20b%231%25.toml");
