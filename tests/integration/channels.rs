@@ -625,3 +625,20 @@ fn a_sarif_uri_gives_the_bytes_of_a_file_name_that_is_not_utf8() {
             .unwrap();
     assert_eq!(percent_decode(uri), path.as_os_str().as_bytes(), "{uri}");
 }
+
+#[test]
+fn an_error_about_the_command_line_quotes_its_arguments_escaped() {
+    // A file name from a shell's glob that clap takes for a flag, and a
+    // value clap refuses: each quoted on one line of its own making.
+    for args in [
+        vec!["report", "--x\n::error::FORGED"],
+        vec!["check", "--format", "table\n::add-mask::FORGED"],
+        vec!["report", "a.toml", "b\u{2028}::error::FORGED.toml"],
+    ] {
+        let r = run(&args.iter().map(std::ffi::OsStr::new).collect::<Vec<_>>());
+        assert_eq!(r.status, Some(2), "{}: {}", r.what, r.stderr);
+        assert!(r.stderr.contains("FORGED"), "{}: {}", r.what, r.stderr);
+        channel(&r, "stderr", &r.stderr, None).unwrap_or_else(|e| panic!("{e}"));
+        channel(&r, "stdout", &r.stdout, None).unwrap_or_else(|e| panic!("{e}"));
+    }
+}
