@@ -406,6 +406,16 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_name_that_would_begin_a_line_with_its_own_text_is_in_backticks() {
+        assert_eq!(line_name("robot arm"), "robot arm");
+        assert_eq!(line_name("部品"), "部品");
+        assert_eq!(line_name("::error::x"), "`::error::x`");
+        assert_eq!(line_name("\u{a0}::error::x"), "`\u{a0}::error::x`");
+        assert_eq!(line_name("a\n::error::x"), "a\u{240a}::error::x");
+        assert_eq!(line_name(""), "``");
+    }
+
+    #[test]
     fn a_value_shows_only_the_digits_its_bound_guarantees() {
         // Within half a unit of the sixth digit: all six.
         assert_eq!(fmt_bounded(0.1234567, 1e-12, 0.1234567), "0.123457");

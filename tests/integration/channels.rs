@@ -16,7 +16,9 @@
 //!   whose properties and message are parsed back; its `file` is a path
 //!   the check's JSON names;
 //! - no line begins with text the input chose (`FORGED`, each hostile
-//!   text's own start);
+//!   text's own start), but a name or path that begins with a letter or
+//!   digit, shown as it is (it cannot be a command; a path that begins
+//!   otherwise is shown as `./PATH`, a title's name in backticks);
 //! - JUnit and SVG parse as XML (roxmltree), SARIF as JSON, each SARIF URI
 //!   percent-decoding to a file's name.
 //!
@@ -332,8 +334,17 @@ fn run(args: &[&std::ffi::OsStr]) -> Run {
 }
 
 /// The promises on one channel's text; `github`: lines beginning `::`
-/// are to be massprop's annotations, whose files are among `files`.
-fn channel(r: &Run, name: &str, text: &str, github: Option<&[String]>) -> Result<(), String> {
+/// are to be massprop's annotations, whose files are among `files`;
+/// `lead`: the input's text begins with a letter, and may begin a line
+/// as it is (a name or path beginning with a letter or digit is shown as
+/// it is: it cannot be a command), never after blanks.
+fn channel(
+    r: &Run,
+    name: &str,
+    text: &str,
+    github: Option<&[String]>,
+    lead: bool,
+) -> Result<(), String> {
     let fail = |why: String| {
         Err(format!(
             "{} ({:?}), {name}: {why}\n--- {name} ---\n{text}\n--- end ---",
@@ -348,7 +359,8 @@ fn channel(r: &Run, name: &str, text: &str, github: Option<&[String]>) -> Result
     let diff = text.starts_with("--- a/");
     for line in text.lines() {
         let start = line.trim_start();
-        if start.starts_with("FORGED") && !(diff && line.starts_with(' ')) {
+        let own = lead && line.starts_with("FORGED");
+        if start.starts_with("FORGED") && !own && !(diff && line.starts_with(' ')) {
             return fail(format!("a line begins with the input's text: {line:?}"));
         }
         if !start.starts_with("::") {
@@ -463,6 +475,7 @@ fn xml(r: &Run) -> Result<(), String> {
 fn promises(slot: Slot, s: &str, raw: bool, n: usize) -> Result<bool, String> {
     let dir = scratch("channels", &format!("case-{n}"));
     let case = write_case(&dir, slot, s, raw);
+    let lead = s.starts_with("FORGED");
     let top = case.top.as_os_str();
     let d = dir.as_os_str();
     let os = |a: &str| std::ffi::OsString::from(a);
@@ -527,19 +540,19 @@ fn promises(slot: Slot, s: &str, raw: bool, n: usize) -> Result<bool, String> {
             .collect::<Vec<_>>()));
     }
     for r in &runs {
-        channel(r, "stdout", &r.stdout, None)?;
-        channel(r, "stderr", &r.stderr, None)?;
+        channel(r, "stdout", &r.stdout, None, lead)?;
+        channel(r, "stderr", &r.stderr, None, lead)?;
     }
     for file in checked {
         let json = with(&["check", "--format", "json"], file, &[]);
-        channel(&json, "stdout", &json.stdout, None)?;
-        channel(&json, "stderr", &json.stderr, None)?;
+        channel(&json, "stdout", &json.stdout, None, lead)?;
+        channel(&json, "stderr", &json.stderr, None, lead)?;
         let files = json_paths(&json.stdout);
         for format in ["table", "github", "junit", "sarif"] {
             let r = with(&["check", "--format", format], file, &[]);
             let github = (format == "github").then_some(&files[..]);
-            channel(&r, "stdout", &r.stdout, github)?;
-            channel(&r, "stderr", &r.stderr, None)?;
+            channel(&r, "stdout", &r.stdout, github, lead)?;
+            channel(&r, "stderr", &r.stderr, None, lead)?;
             match format {
                 "junit" => xml(&r)?,
                 "sarif" => sarif_uris(&r, &files)?,
@@ -638,7 +651,7 @@ fn an_error_about_the_command_line_quotes_its_arguments_escaped() {
         let r = run(&args.iter().map(std::ffi::OsStr::new).collect::<Vec<_>>());
         assert_eq!(r.status, Some(2), "{}: {}", r.what, r.stderr);
         assert!(r.stderr.contains("FORGED"), "{}: {}", r.what, r.stderr);
-        channel(&r, "stderr", &r.stderr, None).unwrap_or_else(|e| panic!("{e}"));
-        channel(&r, "stdout", &r.stdout, None).unwrap_or_else(|e| panic!("{e}"));
+        channel(&r, "stderr", &r.stderr, None, false).unwrap_or_else(|e| panic!("{e}"));
+        channel(&r, "stdout", &r.stdout, None, false).unwrap_or_else(|e| panic!("{e}"));
     }
 }
