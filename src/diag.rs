@@ -9,6 +9,14 @@ use std::ops::Range;
 use std::path::{Path, PathBuf};
 use unicode_width::{UnicodeWidthChar, UnicodeWidthStr};
 
+mod escape;
+mod path;
+pub use escape::{
+    is_bidi, is_hidden, is_line_separator, is_xml_noncharacter, may_hide, push_visible, visible,
+};
+use path::line_start;
+pub use path::{display_path, path_bytes};
+
 /// A part file's text and the name it is reported under (`<stdin>` for `-`).
 #[derive(Debug, Clone)]
 pub struct Source {
@@ -133,23 +141,6 @@ impl Source {
 /// Lines longer than this (in characters) are shown as a window.
 const LONG_LINE: usize = 160;
 
-/// Message text with control characters (but tab and newline) made visible:
-/// keys, names and paths in messages come from the file.
-fn visible_message(text: &str) -> String {
-    text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
-}
-
-/// The text with control characters (but tab) shown as their Unicode
-/// pictures (U+0000..U+001F as ␀..␟, DEL as ␡; C1, the bidirectional
-/// formatting characters and the line and paragraph separators as �), one
-/// character each, so a stray one neither vanishes nor moves the carets
-/// nor acts on the terminal nor reorders or breaks the line.
-pub fn visible(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    push_visible(&mut out, text);
-    out
-}
-
 /// A name or key from input as a message quotes it: at most `QUOTED`
 /// characters, the rest cut with its length said (a long source line is
 /// shown as a window the same way).
@@ -161,58 +152,6 @@ pub fn shorten(text: &str) -> String {
     }
     let head: String = text.chars().take(QUOTED - 4).collect();
     format!("{head}… ({n} characters)")
-}
-
-/// Append `visible(text)` to `out`: text from input written to stdout (a
-/// part's name, a file name) can neither act on the terminal nor add a line
-/// to line-per-record output.
-pub fn push_visible(out: &mut String, text: &str) {
-    if !may_hide(text) {
-        out.push_str(text);
-        return;
-    }
-    out.extend(text.chars().map(|c| match c {
-        '\t' => c,
-        '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
-        '\u{7f}' => '\u{2421}',
-        c if is_hidden(c) => '\u{fffd}',
-        c => c,
-    }));
-}
-
-/// Whether text from input may hold a character `is_hidden` names: one
-/// scan of the bytes, so that most text is copied as it is. (C1 controls
-/// are U+0080..U+009F, encoded with a 0xC2 lead byte; the bidirectional
-/// marks and the separators have lead bytes 0xD8 and 0xE2.)
-pub fn may_hide(text: &str) -> bool {
-    text.bytes()
-        .any(|b| b < 0x20 || b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2)
-}
-
-/// The characters that text from input may not show raw, in any output:
-/// controls (C0, DEL, C1), the bidirectional formatting characters and the
-/// line and paragraph separators. Tables and messages show them as
-/// pictures or �, JSON escapes them (`render::json_line`).
-pub fn is_hidden(c: char) -> bool {
-    c.is_control() || is_bidi(c) || is_line_separator(c)
-}
-
-/// The Unicode line and paragraph separators (U+2028, U+2029): not
-/// controls, but a log viewer or editor may start a new line at them, so a
-/// name could add a line to line-per-record output.
-pub fn is_line_separator(c: char) -> bool {
-    matches!(c, '\u{2028}' | '\u{2029}')
-}
-
-/// The bidirectional formatting characters (embeddings, overrides,
-/// isolates and marks): not controls to Unicode, but on a terminal they
-/// reorder how the rest of the line reads ("Trojan Source": a name can make
-/// `PATH: failed` read as something else).
-pub fn is_bidi(c: char) -> bool {
-    matches!(
-        c,
-        '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}' | '\u{200e}' | '\u{200f}' | '\u{61c}'
-    )
 }
 
 /// The span of `range` in `text`, its first character and its last
@@ -239,35 +178,6 @@ pub fn span_by(
         end_line,
         end_column,
     }
-}
-
-/// A path as text, for every output (messages, tables, JSON): the one rule
-/// for paths that are not UTF-8. Each byte that is not UTF-8 becomes `\xNN`
-/// (two lowercase hex digits), so that a file name of any bytes can be told
-/// apart from another; the rest is the path's own text, a UTF-8 path
-/// unchanged (so the name still opens the file). Control characters are
-/// then shown as text from input always is: as their pictures by `visible`
-/// on a terminal, as JSON escapes in JSON.
-///
-/// NOTE: a backslash is shown as itself, so a file literally named `\xff`
-/// looks like one named by the byte 0xff; such names are rare, and
-/// doubling every backslash would garble the names people do use.
-pub fn display_path(path: &Path) -> String {
-    #[cfg(unix)]
-    {
-        use std::fmt::Write;
-        use std::os::unix::ffi::OsStrExt;
-        let mut out = String::new();
-        for chunk in path.as_os_str().as_bytes().utf8_chunks() {
-            out.push_str(chunk.valid());
-            for b in chunk.invalid() {
-                let _ = write!(out, "\\x{b:02x}");
-            }
-        }
-        out
-    }
-    #[cfg(not(unix))]
-    path.to_string_lossy().into_owned()
 }
 
 /// The largest char boundary at or before `i` (clamped to the text): toml
@@ -475,10 +385,11 @@ impl Palette {
     }
 
     /// `warning: TEXT` and a newline, as standard error shows a warning
-    /// that has no place in a file's text.
+    /// that has no place in a file's text: the one place warnings are
+    /// written, `TEXT` shown by `visible` (one line, whatever it quotes).
     pub fn warning_line(&self, text: &str) -> String {
         let w = self.warning;
-        format!("{w}warning{w:#}: {text}\n")
+        format!("{w}warning{w:#}: {}\n", visible(text))
     }
 }
 
@@ -495,9 +406,16 @@ impl Diagnostic {
 
     fn write_styled(&self, f: &mut dyn fmt::Write, p: Palette) -> fmt::Result {
         let d = &self.0;
-        let message = visible_message(&d.message);
+        // Every piece from input shown by `visible`: no raw newline (nor
+        // CR, nor separator) in a message, a label, a help or a note, so
+        // each line begins with massprop's own text.
+        let message = visible(&d.message);
         let (e, m, g) = (p.error, p.emphasis, p.gutter);
         if let Some(place) = &d.place {
+            let place = Place {
+                path: line_start(&place.path).into_owned(),
+                span: place.span,
+            };
             write!(f, "{}: ", visible(&place.to_string()))?;
         }
         writeln!(f, "{e}error{e:#}: {m}{message}{m:#}")?;
@@ -525,24 +443,16 @@ impl Diagnostic {
                 Some(label) => writeln!(
                     f,
                     "{g}{pad} |{g:#} {lead}{e}{carets} {}{e:#}",
-                    visible_message(label)
+                    visible(label)
                 )?,
                 None => writeln!(f, "{g}{pad} |{g:#} {lead}{e}{carets}{e:#}")?,
             }
         }
         if let Some(help) = &d.help {
-            writeln!(
-                f,
-                "{indent}{g}={g:#} {m}help{m:#}: {}",
-                visible_message(help)
-            )?;
+            writeln!(f, "{indent}{g}={g:#} {m}help{m:#}: {}", visible(help))?;
         }
         for note in &d.notes {
-            writeln!(
-                f,
-                "{indent}{g}={g:#} {m}note{m:#}: {}",
-                visible_message(note)
-            )?;
+            writeln!(f, "{indent}{g}={g:#} {m}note{m:#}: {}", visible(note))?;
         }
         Ok(())
     }
@@ -658,40 +568,49 @@ mod tests {
         assert_eq!(floor_char_boundary(text, 1000), text.len());
     }
 
-    #[cfg(unix)]
+    /// The characters a reader may take for the end of a line: LF, CR,
+    /// VT, FF, NEL (U+0085), and the line and paragraph separators.
+    const LINE_BREAKS: [char; 7] = [
+        '\n', '\r', '\u{b}', '\u{c}', '\u{85}', '\u{2028}', '\u{2029}',
+    ];
+
     #[test]
-    fn a_path_shows_bytes_that_are_not_utf8_as_hex() {
-        use std::ffi::OsStr;
-        use std::os::unix::ffi::OsStrExt;
-        let path = Path::new(OsStr::from_bytes(b"d\xe9/\xff\xfeb\x1b\xc3\xa9.toml"));
-        // The escape character is text, shown by `visible` where printed.
-        assert_eq!(display_path(path), "d\\xe9/\\xff\\xfeb\u{1b}\u{e9}.toml");
-        assert_eq!(
-            visible(&display_path(path)),
-            "d\\xe9/\\xff\\xfeb\u{241b}\u{e9}.toml"
-        );
-        assert_eq!(display_path(Path::new("plain/a b.toml")), "plain/a b.toml");
+    fn no_piece_of_a_diagnostic_can_start_a_line_of_its_own() {
+        for b in LINE_BREAKS {
+            let forged = format!("x{b}::error file=x::forged");
+            let s = Source::new("f.toml", format!("a = 1 # {b}\n"));
+            let d = s
+                .error(0..1, format!("unknown key `{forged}`"))
+                .label(forged.as_str())
+                .help(forged.as_str())
+                .note(forged.as_str())
+                .to_string();
+            // Lines: the message, the gutter, the source line, the carets,
+            // the help, the note.
+            assert_eq!(d.matches('\n').count(), 6, "{b:?}: {d}");
+            assert!(
+                d.lines().all(|l| !l.trim_start().starts_with("::")),
+                "{b:?}: {d}"
+            );
+            assert!(b == '\n' || !d.contains(b), "{b:?}: {d}");
+        }
     }
 
     #[test]
-    fn bidirectional_formatting_characters_are_shown_as_replacement_characters() {
-        // "ok ", U+202E, "deliaf" would read as "ok failed" on a terminal.
-        assert_eq!(visible("ok \u{202e}deliaf"), "ok \u{fffd}deliaf");
-        assert_eq!(visible("a\u{2028}b\u{2029}c"), "a\u{fffd}b\u{fffd}c");
-        for c in [
-            '\u{202a}', '\u{202e}', '\u{2066}', '\u{2069}', '\u{200e}', '\u{200f}', '\u{61c}',
-        ] {
-            assert_eq!(
-                visible(&format!("a{c}b")),
-                "a\u{fffd}b",
-                "{:04x}",
-                u32::from(c)
-            );
+    fn a_place_named_otherwise_than_by_display_path_still_begins_safely() {
+        let d = Diagnostic::file("::error::x", "bad").to_string();
+        assert_eq!(d, "./::error::x: error: bad\n");
+        let d = Source::new("--set m", "1").error(0..1, "bad").to_string();
+        assert!(d.starts_with("--set m:1:1: error: bad\n"), "{d}");
+    }
+
+    #[test]
+    fn a_warning_is_one_line_whatever_it_quotes() {
+        for b in LINE_BREAKS {
+            let line = Palette::PLAIN.warning_line(&format!("f: `a{b}::error::x`"));
+            assert_eq!(line.lines().count(), 1, "{b:?}: {line}");
+            assert!(line.starts_with("warning: f: `a"), "{line}");
         }
-        // Neighbours of the ranges and other text behind the same lead bytes
-        // stay as they are.
-        let t = "\u{2027}\u{202f}\u{2065}\u{206a}—…│\u{200d}\u{61b}\u{61d}";
-        assert_eq!(visible(t), t);
     }
 
     #[test]

@@ -13,6 +13,42 @@ fn to_stderr(text: &str) {
         .and_then(|()| stderr.flush());
 }
 
+/// Print clap's error about the command line, with the arguments it quotes
+/// shown as every text from input is (`diag::visible`): a file name found
+/// by a shell's glob (`massprop check *.toml`) may hold a newline and
+/// `::error::…`. clap's message is made again from the arguments so shown,
+/// which it refuses the same way (only control, bidirectional and separator
+/// characters change, and no flag or value massprop takes needs one).
+/// (An argument that is not UTF-8 is not quoted: clap says only that one
+/// is not.)
+fn usage_error(e: clap::Error) {
+    use massprop::diag::{may_hide, visible};
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    if !args
+        .iter()
+        .skip(1)
+        .any(|a| a.to_str().is_some_and(may_hide))
+    {
+        let _ = e.print();
+        return;
+    }
+    let again = args.iter().enumerate().map(|(i, a)| match a.to_str() {
+        Some(s) if i > 0 => std::ffi::OsString::from(visible(s)),
+        _ => a.clone(),
+    });
+    match massprop::cli::Cli::try_parse_coloured(again) {
+        Err(e) => {
+            let _ = e.print();
+        }
+        Ok(_) => to_stderr(
+            &massprop::diag::Diagnostic::plain(
+                "the command line is not valid; an argument holds a control character",
+            )
+            .to_string(),
+        ),
+    }
+}
+
 fn main() -> ExitCode {
     let cli = match massprop::cli::Cli::parse_args() {
         Ok(cli) => cli,
@@ -21,6 +57,10 @@ fn main() -> ExitCode {
             // closed pipe on either is not a panic, nor an error. Help that
             // cannot be written (`--help > /dev/full`) is one: exit 2.
             let status = u8::try_from(e.exit_code()).unwrap_or(2);
+            if e.use_stderr() {
+                usage_error(e);
+                return ExitCode::from(status);
+            }
             return match e.print().and_then(|()| std::io::stdout().flush()) {
                 Ok(()) => ExitCode::from(status),
                 Err(w) if w.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(status),

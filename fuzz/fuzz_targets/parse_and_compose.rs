@@ -5,6 +5,12 @@
 //! or quotes, a file outside the part file's directory; and wherever the
 //! fast path (`model::fast::parse`) reads a file, serde
 //! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans.
+//! Every channel is escaped (issue 28): a diagnostic, as standard error
+//! shows it, and the report's table have no raw control, bidirectional,
+//! separator or noncharacter (U+FFFE, U+FFFF) character but tab and the
+//! newlines massprop writes, and no line that begins (blanks aside) with
+//! `::`, which a CI runner reads as a command; a diagnostic's lines are its
+//! own (`PLACE: error: …`, the gutter, `= help:`, `= note:`).
 //! Panics, hangs and out-of-memory are the findings.
 //!
 //! The input is one or more files: the text up to the first line that
@@ -164,6 +170,8 @@ fuzz_target!(|data: &[u8]| {
                     !text.contains(MARKER),
                     "an error quotes secret.toml:\n{text}"
                 );
+                escaped(&text);
+                diagnostic_lines(&text);
                 return;
             }
         };
@@ -189,6 +197,7 @@ fuzz_target!(|data: &[u8]| {
             !table.contains(MARKER),
             "the table shows secret.toml:\n{table}"
         );
+        escaped(&table);
         let _ = check::validity(summary);
         for c in &model.expect {
             let r = check::evaluate(&loaded.source, summary, c);
@@ -206,6 +215,57 @@ fuzz_target!(|data: &[u8]| {
         }
     }
 });
+
+/// The characters no output may hold raw but tab and newline (this
+/// target's own list): controls, bidirectional formatting characters, the
+/// line and paragraph separators, U+FFFE and U+FFFF.
+fn hidden(c: char) -> bool {
+    c.is_control()
+        || matches!(
+            c,
+            '\u{202a}'..='\u{202e}'
+                | '\u{2066}'..='\u{2069}'
+                | '\u{200e}'
+                | '\u{200f}'
+                | '\u{61c}'
+                | '\u{2028}'
+                | '\u{2029}'
+                | '\u{fffe}'
+                | '\u{ffff}'
+        )
+}
+
+/// Text for a terminal or a CI log: nothing hidden raw, no line a runner
+/// reads as a command.
+fn escaped(text: &str) {
+    if let Some(c) = text.chars().find(|&c| c != '\n' && c != '\t' && hidden(c)) {
+        panic!("a raw U+{:04X} in:\n{text}", u32::from(c));
+    }
+    if let Some(line) = text.lines().find(|l| l.trim_start().starts_with("::")) {
+        panic!("a line begins with `::`: {line:?} in:\n{text}");
+    }
+}
+
+/// A diagnostic's lines are its own: `PLACE: error: …` (or `error: …`),
+/// then the gutter's (`  |`, `12 | …`) and `= help:`, `= note:` lines.
+fn diagnostic_lines(text: &str) {
+    let mut lines = text.lines();
+    let first = lines.next().unwrap_or("");
+    assert!(
+        first.starts_with("error: ") || first.contains(": error: "),
+        "a diagnostic's first line: {first:?} in:\n{text}"
+    );
+    for line in lines {
+        let start = line.trim_start();
+        let own = start.starts_with('|')
+            || start.starts_with("= help: ")
+            || start.starts_with("= note: ")
+            || start
+                .split_once(" |")
+                .is_some_and(|(n, _)| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+        assert!(own, "a line not the diagnostic's own: {line:?} in:\n{text}");
+    }
+}
 
 /// src/model/fast.rs's promise: where `fast::read_file` returns `Some`, serde
 /// accepts the text too and gives the same `RawFile`, values and spans

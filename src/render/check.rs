@@ -182,7 +182,11 @@ pub fn table(results: &[FileResult], style: super::Style) -> String {
             )),
             Status::Failed => {
                 for v in r.validity_failures() {
-                    s.push_str(&format!("{}: {e}error{e:#}: {v}\n", visible(&r.path)));
+                    s.push_str(&format!(
+                        "{}: {e}error{e:#}: {}\n",
+                        visible(&r.path),
+                        visible(v)
+                    ));
                 }
                 for c in r.checks.iter().filter(|c| !c.pass) {
                     s.push_str(&message_in(&visible(&r.path), c, e));
@@ -210,13 +214,14 @@ pub fn message(path: &str, c: &CheckResult) -> String {
     message_in(path, c, anstyle::Style::new())
 }
 
-/// `message`, its `error` in `style`.
+/// `message`, its `error` in `style`; the failure shown by `visible`
+/// (one line, whatever the key it names).
 fn message_in(path: &str, c: &CheckResult, e: anstyle::Style) -> String {
     format!(
         "{path}:{}:{}: {e}error{e:#}: {}",
         c.line,
         c.column,
-        failure(c)
+        visible(&failure(c))
     )
 }
 

@@ -26,20 +26,21 @@ use serde_json::{Value, json};
 const TITLE: &str = "massprop check";
 
 /// A diagnostic's whole text for a single message: the message, then its
-/// label, help and notes, each on a line of its own; control characters
-/// shown as their pictures.
+/// label, help and notes, each on a line of its own; each piece shown by
+/// `visible`, so a newline from input is a picture, as on standard error,
+/// and only these lines are lines.
 fn diagnostic_text(d: &Diagnostic) -> String {
-    let mut text = d.message().to_string();
+    let mut text = visible(d.message());
     if let Some(label) = d.label_text() {
-        text.push_str(&format!("\n{label}"));
+        text.push_str(&format!("\n{}", visible(label)));
     }
     if let Some(help) = d.help_text() {
-        text.push_str(&format!("\nhelp: {help}"));
+        text.push_str(&format!("\nhelp: {}", visible(help)));
     }
     for note in d.notes() {
-        text.push_str(&format!("\nnote: {note}"));
+        text.push_str(&format!("\nnote: {}", visible(note)));
     }
-    text.split('\n').map(visible).collect::<Vec<_>>().join("\n")
+    text
 }
 
 /// A path as the CI system matches it against the repository's files:
@@ -388,12 +389,15 @@ pub fn sarif(results: &[FileResult]) -> String {
     }))
 }
 
-/// A path as a relative URI reference: every byte but the unreserved ones
-/// and `/` percent-encoded, so a space or `#` in a name does not end or
-/// change the reference.
+/// A path as a relative URI reference (RFC 3986): every byte of the name
+/// but the unreserved ones and `/` percent-encoded, so a space or `#` in a
+/// name does not end or change the reference; `path` is the name as
+/// `display_path` showed it, read back to the name's own bytes
+/// (`path_bytes`), so a name that is not UTF-8 gives its bytes, not the
+/// `\xNN` that shows them.
 fn uri(path: &str) -> String {
     let mut out = String::new();
-    for b in path.bytes() {
+    for b in crate::diag::path_bytes(path) {
         match b {
             b'A'..=b'Z' | b'a'..=b'z' | b'0'..=b'9' | b'-' | b'.' | b'_' | b'~' | b'/' => {
                 out.push(char::from(b))
@@ -462,10 +466,134 @@ mod tests {
         );
     }
 
+    /// Characters XML 1.0 forbids or a reader acts on, and the markup's
+    /// own: a text of them is the worst a name, a path or a message can be.
+    const HOSTILE: &[char] = &[
+        '\0',
+        '\u{1}',
+        '\u{8}',
+        '\t',
+        '\n',
+        '\u{b}',
+        '\u{c}',
+        '\r',
+        '\u{1b}',
+        '\u{1f}',
+        '\u{7f}',
+        '\u{80}',
+        '\u{85}',
+        '\u{9b}',
+        '\u{9f}',
+        '\u{202e}',
+        '\u{2066}',
+        '\u{2028}',
+        '\u{2029}',
+        '\u{fffe}',
+        '\u{ffff}',
+        '\u{feff}',
+        '\u{10ffff}',
+        '<',
+        '>',
+        '&',
+        '"',
+        '\'',
+        ']',
+        '-',
+        ':',
+        ',',
+        '%',
+        '=',
+        ' ',
+        'a',
+        'é',
+    ];
+
+    fn hostile() -> impl proptest::strategy::Strategy<Value = String> {
+        use proptest::prelude::*;
+        prop::collection::vec(prop::sample::select(HOSTILE), 0..24)
+            .prop_map(|c| c.into_iter().collect())
+    }
+
+    /// A file with every kind of text from input: its path, an error's
+    /// message, label, help and note, a validity failure.
+    fn hostile_result(path: &str, message: &str, other: &str) -> FileResult {
+        let source = crate::diag::Source::new(path, format!("a = 1 # {other}\n"));
+        FileResult {
+            path: path.to_string(),
+            status: Status::Invalid,
+            error: Some(
+                source
+                    .error(0..1, message)
+                    .label(other)
+                    .help(other)
+                    .note(other),
+            ),
+            checks: Vec::new(),
+            validity: vec![Validity {
+                name: "triangle inequality",
+                failure: Some(other.to_string()),
+            }],
+            precision: None,
+            accuracy_warnings: Vec::new(),
+            robot: None,
+            format: None,
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config {
+            cases: 256,
+            failure_persistence: None,
+            ..Default::default()
+        })]
+
+        #[test]
+        fn junit_is_well_formed_xml_whatever_the_text(
+            path in hostile(), message in hostile(), other in hostile()
+        ) {
+            let xml = junit(&[hostile_result(&path, &message, &other)]);
+            let doc = roxmltree::Document::parse(&xml);
+            proptest::prop_assert!(doc.is_ok(), "{:?}\n{}", doc.err(), xml);
+        }
+
+        #[test]
+        fn sarif_is_json_and_github_lines_are_massprops_whatever_the_text(
+            path in hostile(), message in hostile(), other in hostile()
+        ) {
+            let results = [hostile_result(&path, &message, &other)];
+            let sarif: Result<serde_json::Value, _> = serde_json::from_str(&sarif(&results));
+            proptest::prop_assert!(sarif.is_ok());
+            let github = github(&results);
+            for line in github.lines() {
+                proptest::prop_assert!(
+                    line.starts_with("::error file=") || line.starts_with("checked "),
+                    "{:?}", line
+                );
+                proptest::prop_assert!(
+                    !line.chars().any(|c| c != '\t' && crate::diag::is_hidden(c)),
+                    "{:?}", line
+                );
+            }
+            proptest::prop_assert_eq!(github.lines().count(), 3);
+        }
+    }
+
     #[test]
     fn paths_become_relative_uri_references() {
         assert_eq!(uri("shapes/a b#1%.toml"), "shapes/a%20b%231%25.toml");
         assert_eq!(uri("dir\\x.toml"), "dir%5Cx.toml");
         assert_eq!(uri("é.toml"), "%C3%A9.toml");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_uri_gives_the_bytes_of_a_name_that_is_not_utf8() {
+        use std::os::unix::ffi::OsStrExt;
+        let path = std::path::Path::new(std::ffi::OsStr::from_bytes(b"d\xe9/a\\b\xff.toml"));
+        let shown = crate::diag::display_path(path);
+        assert_eq!(uri(&shown), "d%E9/a%5Cb%FF.toml");
+        // A UTF-8 name holding the text `\xff` is that text.
+        let shown = crate::diag::display_path(std::path::Path::new("a\\xff.toml"));
+        assert_eq!(uri(&shown), "a%5Cxff.toml");
     }
 }

@@ -52,6 +52,21 @@ pub fn name(name: &str) -> String {
     out
 }
 
+/// A name from input at the start of a line (a report's title): as
+/// `name` shows it, in backticks unless it begins with a letter or digit,
+/// so that text from input never chooses how a line begins (`::error::…`
+/// at the start of a line is a command to a CI runner; a name beginning
+/// with a blank could pass for an indented line). A path is shown by
+/// `diag::display_path`, which has its own rule (`./`).
+pub fn line_name(text: &str) -> String {
+    let shown = name(text);
+    if shown.chars().next().is_some_and(char::is_alphanumeric) {
+        shown
+    } else {
+        format!("`{shown}`")
+    }
+}
+
 /// `x` to six significant digits: fixed notation for moderate magnitudes,
 /// scientific otherwise, trailing zeros dropped.
 pub fn fmt_num(x: f64) -> String {
@@ -389,6 +404,16 @@ pub fn change_percent(r: Option<f64>) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_name_that_would_begin_a_line_with_its_own_text_is_in_backticks() {
+        assert_eq!(line_name("robot arm"), "robot arm");
+        assert_eq!(line_name("部品"), "部品");
+        assert_eq!(line_name("::error::x"), "`::error::x`");
+        assert_eq!(line_name("\u{a0}::error::x"), "`\u{a0}::error::x`");
+        assert_eq!(line_name("a\n::error::x"), "a\u{240a}::error::x");
+        assert_eq!(line_name(""), "``");
+    }
 
     #[test]
     fn a_value_shows_only_the_digits_its_bound_guarantees() {

@@ -110,14 +110,16 @@ pub(super) fn title(
     source: &str,
 ) {
     let source = name(source);
+    // The body's name begins the line: `line_name` (the file's name is
+    // `display_path`'s, begun safely already).
     let _ = match (body, sub_assembly) {
         (Some(n), Some(path)) => writeln!(
             out,
             "{} (sub-assembly `{}` of {source})",
-            name(n),
+            super::format::line_name(n),
             name(&path.join(" / "))
         ),
-        (Some(n), None) => writeln!(out, "{} ({source})", name(n)),
+        (Some(n), None) => writeln!(out, "{} ({source})", super::format::line_name(n)),
         (None, _) => writeln!(out, "{source}"),
     };
 }

@@ -5,6 +5,7 @@ mod arrays;
 mod auto;
 mod bounds;
 mod budget;
+mod channels;
 mod check;
 mod ci;
 mod cli;

@@ -736,6 +736,23 @@ fn text(s: &mut String, at: [f64; 2], t: &str, colour: Option<&str>) {
         let _ = write!(s, " style=\"fill:{c}\"");
     }
     s.push('>');
+    xml_text(s, t);
+    s.push_str("</text>\n");
+}
+
+/// `t` as XML character data or an attribute's value: shown as text from
+/// input always is (`diag::push_visible`: controls as pictures; C1,
+/// bidirectional and separator characters, U+FFFE and U+FFFF as �, none of
+/// which XML 1.0 allows or a reader should act on), then `&`, `<`, `>` and
+/// `"` escaped. So the document is well-formed whatever a name holds.
+fn xml_text(s: &mut String, t: &str) {
+    let mut shown = String::new();
+    let t = if crate::diag::may_hide(t) {
+        crate::diag::push_visible(&mut shown, t);
+        shown.as_str()
+    } else {
+        t
+    };
     for ch in t.chars() {
         match ch {
             '&' => s.push_str("&amp;"),
@@ -745,5 +762,4 @@ fn text(s: &mut String, at: [f64; 2], t: &str, colour: Option<&str>) {
             c => s.push(c),
         }
     }
-    s.push_str("</text>\n");
 }

@@ -177,15 +177,50 @@ fn quaternion(r: &[[f64; 3]; 3]) -> [f64; 4] {
 /// three lines of context, headed `--- a/PATH` and `+++ b/PATH` as git
 /// writes it (so `git apply` and `patch -p1` take it); empty when the two
 /// are equal.
+///
+/// The diff is shown as text from input always is (`diag::push_visible`):
+/// control characters as pictures, C1 controls, bidirectional overrides,
+/// separators, U+FFFE and U+FFFF as �, so a robot file's line can neither
+/// act on the terminal nor start a line of its own; a CR before a line's
+/// newline (a CRLF file) is kept, so the diff still applies there. A
+/// context line that would begin with `::` (a CI runner's command) has its
+/// first colon shown as �.
 pub fn unified_diff(old: &str, new: &str, path: &str) -> String {
     if old == new {
         return String::new();
     }
-    similar::TextDiff::from_lines(old, new)
+    // The path escaped before it is put in the header: its newline would
+    // be a line break there.
+    let path = crate::diag::visible(path);
+    let diff = similar::TextDiff::from_lines(old, new)
         .unified_diff()
         .context_radius(3)
         .header(&format!("a/{path}"), &format!("b/{path}"))
-        .to_string()
+        .to_string();
+    let mut out = String::with_capacity(diff.len());
+    for line in diff.split_inclusive('\n') {
+        let (text, end) = match line.strip_suffix("\r\n") {
+            Some(text) => (text, "\r\n"),
+            None => line
+                .strip_suffix('\n')
+                .map_or((line, ""), |text| (text, "\n")),
+        };
+        let start = out.len();
+        crate::diag::push_visible(&mut out, text);
+        // NOTE: a context line is ` ` and the file's own line, and a CI
+        // runner reads a line that begins with `::` after blanks as a
+        // command: its first `:` is shown as �. (The diff does not apply
+        // there; no robot description needs such a line.)
+        let shown = &out[start..];
+        if let Some(rest) = shown.strip_prefix(' ')
+            && rest.trim_start().starts_with("::")
+        {
+            let colon = start + 1 + (rest.len() - rest.trim_start().len());
+            out.replace_range(colon..colon + 1, "\u{fffd}");
+        }
+        out.push_str(end);
+    }
+    out
 }
 
 #[cfg(test)]
@@ -368,6 +403,56 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_diff_shows_hidden_characters_as_everything_else_does() {
+        let hostile = "<!-- \u{202e}\u{85}\u{2028}\u{fffe}\u{ffff}\u{1b}[2J\r::error::x -->";
+        let old = format!("<robot>\n{hostile}\n<link/>\n</robot>\n");
+        let new = old.replace("<link/>", "<link>\n</link>");
+        let diff = unified_diff(&old, &new, "a\u{202e}\r\n::error::x.urdf");
+        assert!(
+            !diff
+                .chars()
+                .any(|c| c != '\n' && c != '\t' && crate::diag::is_hidden(c)),
+            "{diff:?}"
+        );
+        // similar ends a line at a lone CR too: the rest of the line is
+        // the next line of context, after its space, on the same line.
+        assert!(
+            diff.contains(
+                " <!-- \u{fffd}\u{fffd}\u{fffd}\u{fffd}\u{fffd}\u{241b}[2J\u{240d} ::error::x -->\n"
+            ),
+            "{diff}"
+        );
+        assert!(
+            diff.starts_with("--- a/a\u{fffd}\u{240d}\u{240a}::error::x.urdf\n"),
+            "{diff}"
+        );
+    }
+
+    #[test]
+    fn a_context_line_never_begins_with_a_ci_command() {
+        let old = "<robot>\n<!--\n \u{a0}::error file=x::forged\n-->\n<link/>\n</robot>\n";
+        let new = old.replace("<link/>", "<link></link>");
+        let diff = unified_diff(old, &new, "x.urdf");
+        assert!(
+            diff.contains("\n  \u{a0}\u{fffd}:error file=x::forged\n"),
+            "{diff}"
+        );
+        assert!(
+            diff.lines().all(|l| !l.trim_start().starts_with("::")),
+            "{diff}"
+        );
+    }
+
+    #[test]
+    fn a_crlf_file_keeps_its_line_ends_in_the_diff() {
+        let old = "<robot>\r\n<!-- \u{202e} -->\r\n<link/>\r\n</robot>\r\n";
+        let new = old.replace("<link/>", "<link></link>");
+        let diff = unified_diff(old, &new, "x.urdf");
+        assert!(diff.contains("-<link/>\r\n+<link></link>\r\n"), "{diff:?}");
+        assert!(diff.contains(" <!-- \u{fffd} -->\r\n"), "{diff:?}");
     }
 
     #[test]
