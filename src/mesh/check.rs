@@ -3,8 +3,8 @@
 //! finite coordinates, at least one triangle, no degenerate triangle (a
 //! repeated vertex, zero area); for a solid also closed (every edge shared
 //! by exactly two triangles) and consistently oriented (the two traverse
-//! it in opposite directions). The volume's sign (outward) is checked
-//! after the integral (`MeshBody::load`).
+//! it in opposite directions, half each way where pieces touch along
+//! it), then split into shells that must bound one solid (`shells`).
 
 use super::read::Triangles;
 use super::{At, MeshBody, MeshError, Mode, Sums, finish};
@@ -141,6 +141,7 @@ impl Mesh {
         }
         if mode == Mode::Solid {
             self.closed_and_oriented()?;
+            super::shells::check(self)?;
         }
         Ok(())
     }
@@ -161,7 +162,11 @@ impl Mesh {
         edges.sort_unstable();
         let mut worst: Option<(u32, &[Edge])> = None;
         for run in edges.chunk_by(|x, y| x.0 == y.0) {
-            let ok = run.len() == 2 && run[0].2 != run[1].2;
+            // NOTE: an edge of two pieces that touch along it is shared by
+            // four (or more) triangles, half each way: closed, and
+            // `shells` tells the pieces apart.
+            let forward = run.iter().filter(|e| e.2).count();
+            let ok = run.len() >= 2 && 2 * forward == run.len();
             let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
             if !ok && worst.is_none_or(|(w, _)| first < w) {
                 worst = Some((first, run));
@@ -199,8 +204,10 @@ impl Mesh {
                     self.name(faces[1] as usize)
                 ),
                 n => format!(
-                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), a closed surface shares each edge between exactly two",
-                    names(&faces)
+                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), {} traversing it one way and {} the other; a closed surface's triangles pair up along each edge (two, or four where two pieces touch)",
+                    names(&faces),
+                    run.iter().filter(|e| e.2).count(),
+                    run.iter().filter(|e| !e.2).count()
                 ),
             },
         ))

@@ -26,7 +26,9 @@
 //! magnitudes.
 
 pub mod check;
+pub mod exact;
 pub mod read;
+pub mod shells;
 
 pub use read::Format;
 
