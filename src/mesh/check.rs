@@ -68,23 +68,30 @@ impl Mesh {
     /// Weld the corners: exactly equal coordinates are one vertex (−0 and
     /// +0 equal). Refuses a non-finite coordinate.
     pub fn weld(t: Triangles) -> Result<Mesh, MeshError> {
-        if t.corners.is_empty() {
+        if t.faces.is_empty() {
             return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
         }
         let mut index: HashMap<[u64; 3], u32, BuildHasherDefault<Mix>> =
-            HashMap::with_capacity_and_hasher(t.corners.len() / 2 + 3, Default::default());
-        let mut vertices = Vec::with_capacity(t.corners.len() / 2 + 3);
-        let mut faces = Vec::with_capacity(t.corners.len());
-        for (i, tri) in t.corners.iter().enumerate() {
+            HashMap::with_capacity_and_hasher(t.points.len() / 6 + 3, Default::default());
+        let mut vertices = Vec::with_capacity(t.points.len() / 6 + 3);
+        // Each point's vertex, found when a triangle first uses it.
+        let mut of_point = vec![u32::MAX; t.points.len()];
+        let mut faces = Vec::with_capacity(t.faces.len());
+        for (i, tri) in t.faces.iter().enumerate() {
             let mut f = [0u32; 3];
-            for (k, p) in tri.iter().enumerate() {
+            for (k, &pi) in tri.iter().enumerate() {
+                if of_point[pi as usize] != u32::MAX {
+                    f[k] = of_point[pi as usize];
+                    continue;
+                }
+                let p = t.points[pi as usize];
                 if !p.iter().all(|x| x.is_finite()) {
                     return Err(MeshError::new(
                         t.at[i],
                         format!(
                             "{} has a coordinate that is not a finite number: {}",
                             triangle(i, t.at[i]),
-                            point(*p)
+                            point(p)
                         ),
                     ));
                 }
@@ -94,6 +101,7 @@ impl Mesh {
                     vertices.push(p);
                     next
                 });
+                of_point[pi as usize] = f[k];
             }
             faces.push(f);
         }

@@ -743,7 +743,7 @@ mod tests {
 
     fn mesh(t: Vec<Tri>) -> Mesh {
         let at = (0..t.len()).map(|_| At::Whole).collect();
-        Mesh::weld(Triangles { corners: t, at }).expect("finite corners")
+        Mesh::weld(Triangles::of_corners(t, at)).expect("finite corners")
     }
 
     fn checked(t: Vec<Tri>) -> Result<usize, String> {
