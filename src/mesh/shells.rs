@@ -83,8 +83,10 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         let t = first[s];
         format!("shell {} (from {})", s + 1, triangle(t, mesh.at[t]))
     };
+    let (list, start) = members(&shell, count);
     for s in 0..count {
-        let c = winding_around(mesh, &pts, &bvh, &shell, s as u32);
+        let mine = &list[start[s]..start[s + 1]];
+        let c = winding_around(mesh, &pts, &bvh, &shell, mine, s as u32);
         let t = first[s];
         match (signs[s], c) {
             (1, 0) | (-1, 1) => {}
@@ -597,14 +599,18 @@ fn coplanar_overlap(p: &[P3; 3], q: &[P3; 3]) -> bool {
 
 /// The winding number, at a corner of shell `s` (one on no other shell's
 /// surface where there is one), of every other live triangle.
-fn winding_around(mesh: &Mesh, pts: &[P3], bvh: &Bvh, shell: &[u32], s: u32) -> i64 {
+fn winding_around(
+    mesh: &Mesh,
+    pts: &[P3],
+    bvh: &Bvh,
+    shell: &[u32],
+    members: &[u32],
+    s: u32,
+) -> i64 {
     let mut last = 0;
     let mut tried = 0;
-    for (i, f) in mesh.faces.iter().enumerate() {
-        if shell[i] != s {
-            continue;
-        }
-        for &k in f {
+    for &i in members {
+        for &k in &mesh.faces[i as usize] {
             let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, shell, s);
             if !on {
                 return w;
@@ -621,6 +627,27 @@ fn winding_around(mesh: &Mesh, pts: &[P3], bvh: &Bvh, shell: &[u32], s: u32) -> 
         }
     }
     last
+}
+
+/// Each shell's triangles, in the file's order (`start[s]..start[s + 1]`
+/// of the list).
+fn members(shell: &[u32], count: usize) -> (Vec<u32>, Vec<usize>) {
+    let mut start = vec![0usize; count + 1];
+    for s in shell.iter().filter(|s| **s != NONE) {
+        start[*s as usize + 1] += 1;
+    }
+    for k in 0..count {
+        start[k + 1] += start[k];
+    }
+    let mut fill = start.clone();
+    let mut list = vec![0u32; start[count]];
+    for (i, s) in shell.iter().enumerate() {
+        if *s != NONE {
+            list[fill[*s as usize]] = i as u32;
+            fill[*s as usize] += 1;
+        }
+    }
+    (list, start)
 }
 
 /// The winding number at v (perturbed to (x, y + ε, z + ε²)) of the live
