@@ -66,6 +66,39 @@ pub fn orient2d(a: P3, b: P3, c: P3, i: usize, j: usize) -> i8 {
     if det < -bound {
         return -1;
     }
+    // NOTE: the common near-zero case (axis-aligned faces, corners on a
+    // grid) has exact differences: then the determinant is exactly the
+    // four-term sum of two two-products, summed here without allocating.
+    let exact = |x: f64, y: f64, d: f64| two_sum(x, -y).1 == 0.0 && d == x - y;
+    if exact(b[i], a[i], b0)
+        && exact(b[j], a[j], b1)
+        && exact(c[i], a[i], c0)
+        && exact(c[j], a[j], c1)
+    {
+        let (p, pe) = two_product(b0, c1);
+        let (q, qe) = two_product(b1, c0);
+        let mut out = [0.0; 4];
+        let mut len = 0;
+        for x in [pe, p, -qe, -q] {
+            // Grow the expansion `out[..len]` by x.
+            let mut q = x;
+            let mut k = 0;
+            for idx in 0..len {
+                let (s, h) = two_sum(q, out[idx]);
+                if h != 0.0 {
+                    out[k] = h;
+                    k += 1;
+                }
+                q = s;
+            }
+            if q != 0.0 {
+                out[k] = q;
+                k += 1;
+            }
+            len = k;
+        }
+        return sign(&out[..len]);
+    }
     let d = |x: f64, y: f64| diff(x, y);
     let l = mul(&d(b[i], a[i]), &d(c[j], a[j]));
     let r = mul(&d(b[j], a[j]), &d(c[i], a[i]));
@@ -222,7 +255,10 @@ mod tests {
         };
         for _ in 0..2000 {
             let p: [P3; 4] = std::array::from_fn(|_| [r(), r(), r()]);
-            assert_eq!(orient3d(p[0], p[1], p[2], p[3]), orient3d_exact(p[0], p[1], p[2], p[3]));
+            assert_eq!(
+                orient3d(p[0], p[1], p[2], p[3]),
+                orient3d_exact(p[0], p[1], p[2], p[3])
+            );
         }
     }
 

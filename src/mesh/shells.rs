@@ -36,7 +36,10 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
     let live = cancel_twins(mesh);
     let shell = components(mesh, &live);
-    let count = shell.iter().filter(|s| **s != NONE).fold(0, |m, s| m.max(*s + 1)) as usize;
+    let count = shell
+        .iter()
+        .filter(|s| **s != NONE)
+        .fold(0, |m, s| m.max(*s + 1)) as usize;
     if count == 0 {
         return Err(MeshError::new(
             super::At::Whole,
@@ -49,7 +52,9 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         .iter()
         .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
         .collect();
-    let order: Vec<u32> = (0..n as u32).filter(|&i| shell[i as usize] != NONE).collect();
+    let order: Vec<u32> = (0..n as u32)
+        .filter(|&i| shell[i as usize] != NONE)
+        .collect();
     let bvh = Bvh::build(&boxes, order);
     if let Some((i, j)) = first_crossing(mesh, &pts, &live, &boxes, &bvh) {
         let same = shell[i] == shell[j];
@@ -84,9 +89,25 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         format!("shell {} (from {})", s + 1, triangle(t, mesh.at[t]))
     };
     let (list, start) = members(&shell, count);
+    // NOTE: a shell winds around no point outside its box: the shells
+    // whose boxes hold a corner are found in a tree of the shells' boxes,
+    // most corners of a mesh of separate pieces have none (winding 0 at
+    // once), and a ray need go no further than those shells' boxes.
+    let shell_boxes: Vec<Aabb> = (0..count)
+        .map(|s| {
+            list[start[s]..start[s + 1]]
+                .iter()
+                .fold(Aabb::empty(), |b, &t| b.join(boxes[t as usize]))
+        })
+        .collect();
+    let shell_tree = Bvh::build(&shell_boxes, (0..count as u32).collect());
+    let near = Near {
+        boxes: &shell_boxes,
+        tree: &shell_tree,
+    };
     for s in 0..count {
         let mine = &list[start[s]..start[s + 1]];
-        let c = winding_around(mesh, &pts, &bvh, &shell, mine, s as u32);
+        let c = winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32);
         let t = first[s];
         match (signs[s], c) {
             (1, 0) | (-1, 1) => {}
@@ -112,7 +133,7 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
                 return Err(MeshError::new(
                     mesh.at[t],
                     format!(
-                        "{} is wound {} but lies inside {} layers of the other shells' solid: outward and inward shells must alternate from the outside in (a solid, its cavities, islands in them)",
+                        "{} is wound {} where the other shells wind {} times around it: outward and inward shells must alternate from the outside in (a solid, its cavities, islands in them)",
                         name(s),
                         if signs[s] > 0 { "outward" } else { "inward" },
                         c
@@ -516,7 +537,10 @@ fn first_crossing(
                 .collect();
             handles
                 .into_iter()
-                .map(|h| h.join().expect("invariant: the crossing search does not panic"))
+                .map(|h| {
+                    h.join()
+                        .expect("invariant: the crossing search does not panic")
+                })
                 .collect()
         })
     };
@@ -603,6 +627,7 @@ fn winding_around(
     mesh: &Mesh,
     pts: &[P3],
     bvh: &Bvh,
+    near: &Near,
     shell: &[u32],
     members: &[u32],
     s: u32,
@@ -611,7 +636,7 @@ fn winding_around(
     let mut tried = 0;
     for &i in members {
         for &k in &mesh.faces[i as usize] {
-            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, shell, s);
+            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
             if !on {
                 return w;
             }
@@ -658,9 +683,18 @@ fn winding_at(
     mesh: &Mesh,
     pts: &[P3],
     bvh: &Bvh,
+    near: &Near,
     shell: &[u32],
     s: u32,
 ) -> (i64, bool) {
+    let around = near.around(v, s);
+    let Some(reach) = around
+        .iter()
+        .map(|t| near.boxes[*t as usize].hi[0])
+        .reduce(f64::max)
+    else {
+        return (0, false);
+    };
     let mut w = 0i64;
     let mut on = false;
     if bvh.nodes.is_empty() {
@@ -670,12 +704,19 @@ fn winding_at(
     while let Some(at) = stack.pop() {
         let node = &bvh.nodes[at as usize];
         let b = &node.bounds;
-        if b.hi[0] < v[0] || b.lo[1] > v[1] || b.hi[1] < v[1] || b.lo[2] > v[2] || b.hi[2] < v[2] {
+        if b.hi[0] < v[0]
+            || b.lo[0] > reach
+            || b.lo[1] > v[1]
+            || b.hi[1] < v[1]
+            || b.lo[2] > v[2]
+            || b.hi[2] < v[2]
+        {
             continue;
         }
         if bvh.is_leaf(node) {
             for &t in &bvh.items[node.start as usize..node.end as usize] {
-                if shell[t as usize] == s {
+                let of = shell[t as usize];
+                if of == s || around.binary_search(&of).is_err() {
                     continue;
                 }
                 match ray_hit(v, &mesh.faces[t as usize].map(|k| pts[k as usize])) {
@@ -690,6 +731,42 @@ fn winding_at(
         }
     }
     (w, on)
+}
+
+/// The shells' boxes and a tree of them.
+struct Near<'a> {
+    boxes: &'a [Aabb],
+    tree: &'a Bvh,
+}
+
+impl Near<'_> {
+    /// The shells other than `s` whose (closed) boxes hold v, sorted.
+    fn around(&self, v: P3, s: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        let inside = |b: &Aabb| (0..3).all(|k| b.lo[k] <= v[k] && v[k] <= b.hi[k]);
+        if self.tree.nodes.is_empty() {
+            return out;
+        }
+        let mut stack = vec![0u32];
+        while let Some(at) = stack.pop() {
+            let node = &self.tree.nodes[at as usize];
+            if !inside(&node.bounds) {
+                continue;
+            }
+            if self.tree.is_leaf(node) {
+                for &t in &self.tree.items[node.start as usize..node.end as usize] {
+                    if t != s && inside(&self.boxes[t as usize]) {
+                        out.push(t);
+                    }
+                }
+            } else {
+                stack.push(node.left);
+                stack.push(node.left + 1);
+            }
+        }
+        out.sort_unstable();
+        out
+    }
 }
 
 enum Hit {
@@ -715,11 +792,13 @@ fn ray_hit(v: P3, t: &[P3; 3]) -> Hit {
             s = match w[2].partial_cmp(&u[2]).expect("finite coordinates") {
                 std::cmp::Ordering::Greater => -1,
                 std::cmp::Ordering::Less => 1,
-                std::cmp::Ordering::Equal => match w[1].partial_cmp(&u[1]).expect("finite coordinates") {
-                    std::cmp::Ordering::Greater => 1,
-                    std::cmp::Ordering::Less => -1,
-                    std::cmp::Ordering::Equal => return Hit::Miss,
-                },
+                std::cmp::Ordering::Equal => {
+                    match w[1].partial_cmp(&u[1]).expect("finite coordinates") {
+                        std::cmp::Ordering::Greater => 1,
+                        std::cmp::Ordering::Less => -1,
+                        std::cmp::Ordering::Equal => return Hit::Miss,
+                    }
+                }
             };
         }
         if s != area {
@@ -886,7 +965,10 @@ mod tests {
         let mut t = unit([0.0; 3]);
         t.extend(flipped(unit([3.0, 0.0, 0.0])));
         let m = refused(t);
-        assert!(m.contains("shell 2 (from triangle 13)") && m.contains("cavity of nothing"), "{m}");
+        assert!(
+            m.contains("shell 2 (from triangle 13)") && m.contains("cavity of nothing"),
+            "{m}"
+        );
     }
 
     #[test]
@@ -903,7 +985,10 @@ mod tests {
         t.extend(flipped(cube([1.0; 3], [6.0; 3])));
         t.extend(flipped(unit([3.0; 3])));
         let m = refused(t);
-        assert!(m.contains("shell 3") && m.contains("cavity of nothing"), "{m}");
+        assert!(
+            m.contains("shell 3") && m.contains("cavity of nothing"),
+            "{m}"
+        );
     }
 
     #[test]
@@ -921,7 +1006,15 @@ mod tests {
         // through the bottom.
         let t: Vec<Tri> = unit([0.0; 3])
             .into_iter()
-            .map(|tri| tri.map(|p| if p == [1.0, 1.0, 1.0] { [1.0, 1.0, -1.0] } else { p }))
+            .map(|tri| {
+                tri.map(|p| {
+                    if p == [1.0, 1.0, 1.0] {
+                        [1.0, 1.0, -1.0]
+                    } else {
+                        p
+                    }
+                })
+            })
             .collect();
         let m = refused(t);
         assert!(m.contains("intersects itself"), "{m}");
@@ -1000,7 +1093,11 @@ mod tests {
         for _ in 0..3000 {
             let p: [P3; 3] = std::array::from_fn(|_| [r(), r(), r()]);
             let q: [P3; 3] = std::array::from_fn(|_| [r(), r(), r()]);
-            let area = |t: &[P3; 3]| [(1, 2), (2, 0), (0, 1)].iter().any(|&(i, j)| orient2d(t[0], t[1], t[2], i, j) != 0);
+            let area = |t: &[P3; 3]| {
+                [(1, 2), (2, 0), (0, 1)]
+                    .iter()
+                    .any(|&(i, j)| orient2d(t[0], t[1], t[2], i, j) != 0)
+            };
             if !area(&p) || !area(&q) {
                 continue;
             }

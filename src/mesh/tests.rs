@@ -373,14 +373,19 @@ fn a_truncated_binary_stl_whose_header_begins_with_solid_is_called_truncated() {
     assert!(load(Format::Stl, &b, Mode::Solid).is_ok());
     let m = message(Format::Stl, &b[..b.len() - 30], Mode::Solid);
     assert!(
-        m.starts_with("byte 80: the header says 12 triangles") && m.contains("a truncated binary STL"),
+        m.starts_with("byte 80: the header says 12 triangles")
+            && m.contains("a truncated binary STL"),
         "{m}"
     );
 }
 
 #[test]
 fn an_ascii_stl_that_does_not_parse_is_still_read_as_ascii() {
-    let m = message(Format::Stl, b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 y 2\n", Mode::Solid);
+    let m = message(
+        Format::Stl,
+        b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 y 2\n",
+        Mode::Solid,
+    );
     assert_eq!(m, "line 4: vertex: `y` is not a number");
 }
 
@@ -396,7 +401,11 @@ fn an_obj_face_is_fanned_as_it_is_read_and_meets_the_limit_at_its_index() {
     assert_eq!(t.points.len(), 4);
     let e = read::read(Format::Obj, obj.as_bytes(), 100).unwrap_err();
     assert_eq!(e.at, At::Line(5));
-    assert!(e.message.contains("more than 100 triangles"), "{}", e.message);
+    assert!(
+        e.message.contains("more than 100 triangles"),
+        "{}",
+        e.message
+    );
 }
 
 #[test]
@@ -407,5 +416,8 @@ fn an_obj_face_with_a_bad_index_late_in_a_long_line_is_named() {
     }
     obj.push_str(" 9\n");
     let m = message(Format::Obj, obj.as_bytes(), Mode::Shell);
-    assert_eq!(m, "line 4: face: vertex 9 does not exist (3 vertices are read so far)");
+    assert_eq!(
+        m,
+        "line 4: face: vertex 9 does not exist (3 vertices are read so far)"
+    );
 }

@@ -677,7 +677,10 @@ fn box_at(lo: [f64; 3], size: [f64; 3], inward: bool) -> Vec<Tri> {
 /// Mass, centre of mass and inertia about it of boxes of density `rho`
 /// (a negative sign: a cavity), each by its corner and sizes, composed by
 /// the parallel-axis theorem: the closed form the mesh must give.
-fn boxes_closed_form(rho: f64, boxes: &[([f64; 3], [f64; 3], f64)]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+fn boxes_closed_form(
+    rho: f64,
+    boxes: &[([f64; 3], [f64; 3], f64)],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
     let mut m = 0.0;
     let mut first = [0.0; 3];
     for (lo, s, sign) in boxes {
@@ -726,12 +729,18 @@ fn assert_matches(got: (f64, [f64; 3], [[f64; 3]; 3]), want: (f64, [f64; 3], [[f
     assert!(close(m, wm, 1e-12, wm), "mass {m} against {wm}");
     let size = wc.iter().fold(1.0f64, |s, x| s.max(x.abs()));
     for k in 0..3 {
-        assert!(close(c[k], wc[k], 1e-12, size), "centre {c:?} against {wc:?}");
+        assert!(
+            close(c[k], wc[k], 1e-12, size),
+            "centre {c:?} against {wc:?}"
+        );
     }
     let scale = wi[0][0].abs().max(wi[1][1].abs()).max(wi[2][2].abs());
     for a in 0..3 {
         for b in 0..3 {
-            assert!(close(i[a][b], wi[a][b], 1e-11, scale), "inertia {i:?} against {wi:?}");
+            assert!(
+                close(i[a][b], wi[a][b], 1e-11, scale),
+                "inertia {i:?} against {wi:?}"
+            );
         }
     }
 }
@@ -746,14 +755,20 @@ fn refused_mesh(dir: &Path, tris: &[Tri]) -> String {
     let err = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(out.stdout.is_empty());
-    assert!(err.contains("parts.toml:3:8") && err.contains("the mesh file `") && err.contains("m.stl`"), "{err}");
+    assert!(
+        err.contains("parts.toml:3:8") && err.contains("the mesh file `") && err.contains("m.stl`"),
+        "{err}"
+    );
     err
 }
 
 #[test]
 fn two_disjoint_cubes_weigh_the_sum_of_their_masses() {
     let dir = scratch("meshes", "two-cubes");
-    let (a, b) = (([0.0; 3], [1.0, 2.0, 0.5], 1.0), ([3.0, -1.0, 0.25], [0.5, 0.5, 1.5], 1.0));
+    let (a, b) = (
+        ([0.0; 3], [1.0, 2.0, 0.5], 1.0),
+        ([3.0, -1.0, 0.25], [0.5, 0.5, 1.5], 1.0),
+    );
     let mut t = box_at(a.0, a.1, false);
     t.extend(box_at(b.0, b.1, false));
     assert_matches(mesh_of(&dir, &t, 2.5), boxes_closed_form(2.5, &[a, b]));
@@ -766,7 +781,10 @@ fn a_cube_with_an_inward_cube_inside_weighs_the_difference() {
     let cavity = ([0.5, 1.0, 0.25], [1.0, 1.5, 1.0], -1.0);
     let mut t = box_at(outer.0, outer.1, false);
     t.extend(box_at(cavity.0, cavity.1, true));
-    assert_matches(mesh_of(&dir, &t, 7.0), boxes_closed_form(7.0, &[outer, cavity]));
+    assert_matches(
+        mesh_of(&dir, &t, 7.0),
+        boxes_closed_form(7.0, &[outer, cavity]),
+    );
 }
 
 #[test]
@@ -813,7 +831,15 @@ fn a_cube_folded_through_itself_is_refused() {
     let dir = scratch("meshes", "fold");
     let t: Vec<Tri> = box_at([0.0; 3], [1.0; 3], false)
         .into_iter()
-        .map(|tri| tri.map(|p| if p == [1.0, 1.0, 1.0] { [1.0, 1.0, -1.0] } else { p }))
+        .map(|tri| {
+            tri.map(|p| {
+                if p == [1.0, 1.0, 1.0] {
+                    [1.0, 1.0, -1.0]
+                } else {
+                    p
+                }
+            })
+        })
         .collect();
     let err = refused_mesh(&dir, &t);
     assert!(err.contains("the surface intersects itself"), "{err}");
@@ -823,7 +849,10 @@ fn a_cube_folded_through_itself_is_refused() {
 fn an_inward_shell_alone_is_refused() {
     let dir = scratch("meshes", "inward-alone");
     let err = refused_mesh(&dir, &box_at([0.0; 3], [1.0; 3], true));
-    assert!(err.contains("faces point inward; flip the winding"), "{err}");
+    assert!(
+        err.contains("faces point inward; flip the winding"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -832,7 +861,10 @@ fn an_inward_shell_outside_the_outward_one_is_refused() {
     let mut t = box_at([0.0; 3], [1.0; 3], false);
     t.extend(box_at([2.0, 0.0, 0.0], [1.0; 3], true));
     let err = refused_mesh(&dir, &t);
-    assert!(err.contains("shell 2 (from triangle 13 (line 86))") && err.contains("a cavity of nothing"), "{err}");
+    assert!(
+        err.contains("shell 2 (from triangle 13 (line 86))") && err.contains("a cavity of nothing"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -841,7 +873,10 @@ fn an_outward_shell_inside_another_outward_shell_is_refused() {
     let mut t = box_at([0.0; 3], [4.0; 3], false);
     t.extend(box_at([1.0; 3], [1.0; 3], false));
     let err = refused_mesh(&dir, &t);
-    assert!(err.contains("shell 2") && err.contains("would count twice"), "{err}");
+    assert!(
+        err.contains("shell 2") && err.contains("would count twice"),
+        "{err}"
+    );
 }
 
 /// Boxes in cells 3 apart along x (they may touch the next cell's box
@@ -849,7 +884,10 @@ fn an_outward_shell_inside_another_outward_shell_is_refused() {
 fn disjoint_boxes() -> impl proptest::strategy::Strategy<Value = Vec<([f64; 3], [f64; 3])>> {
     use proptest::prelude::*;
     prop::collection::vec(
-        ((0u8..=8, 0u8..=16, 0u8..=16), (4u8..=16, 4u8..=16, 4u8..=16)),
+        (
+            (0u8..=8, 0u8..=16, 0u8..=16),
+            (4u8..=16, 4u8..=16, 4u8..=16),
+        ),
         1..5,
     )
     .prop_map(|cells| {
@@ -870,7 +908,10 @@ fn runner(cases: u32) -> proptest::test_runner::TestRunner {
     config.failure_persistence = None;
     config.rng_algorithm = RngAlgorithm::ChaCha;
     config.max_shrink_iters = 64;
-    TestRunner::new_with_rng(config.clone(), proptest::test_runner::TestRng::deterministic_rng(config.rng_algorithm))
+    TestRunner::new_with_rng(
+        config.clone(),
+        proptest::test_runner::TestRng::deterministic_rng(config.rng_algorithm),
+    )
 }
 
 #[test]
@@ -878,7 +919,10 @@ fn random_disjoint_boxes_weigh_the_sum_of_their_closed_forms() {
     let dir = scratch("meshes", "prop-disjoint");
     runner(24)
         .run(&disjoint_boxes(), |boxes| {
-            let t: Vec<Tri> = boxes.iter().flat_map(|(lo, s)| box_at(*lo, *s, false)).collect();
+            let t: Vec<Tri> = boxes
+                .iter()
+                .flat_map(|(lo, s)| box_at(*lo, *s, false))
+                .collect();
             let want: Vec<_> = boxes.iter().map(|(lo, s)| (*lo, *s, 1.0)).collect();
             assert_matches(mesh_of(&dir, &t, 1.5), boxes_closed_form(1.5, &want));
             Ok(())
@@ -890,7 +934,11 @@ fn random_disjoint_boxes_weigh_the_sum_of_their_closed_forms() {
 fn random_overlapping_pairs_of_boxes_are_refused() {
     use proptest::prelude::*;
     let dir = scratch("meshes", "prop-overlap");
-    let pairs = ((4u8..=16, 4u8..=16, 4u8..=16), (1u8..=7, 1u8..=7, 1u8..=7), (4u8..=16, 4u8..=16, 4u8..=16));
+    let pairs = (
+        (4u8..=16, 4u8..=16, 4u8..=16),
+        (1u8..=7, 1u8..=7, 1u8..=7),
+        (4u8..=16, 4u8..=16, 4u8..=16),
+    );
     runner(24)
         .run(&pairs, |((a, b, c), (fx, fy, fz), (p, q, r))| {
             let e = |k: u8| f64::from(k) / 8.0;
@@ -900,7 +948,11 @@ fn random_overlapping_pairs_of_boxes_are_refused() {
             let mut t = box_at([0.0; 3], size, false);
             t.extend(box_at(lo, [e(p), e(q), e(r)], false));
             let err = refused_mesh(&dir, &t);
-            prop_assert!(err.contains(" cross: ") || err.contains("would count twice"), "{}", err);
+            prop_assert!(
+                err.contains(" cross: ") || err.contains("would count twice"),
+                "{}",
+                err
+            );
             Ok(())
         })
         .unwrap();
