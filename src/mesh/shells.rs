@@ -480,15 +480,21 @@ fn first_crossing(
         .map_or(1, |t| t.get())
         .clamp(1, n.div_ceil(4096).max(1));
     const BLOCK: usize = 4096;
+    // NOTE: triangles taken in the tree's order (neighbours in space one
+    // after another: the nodes a query visits stay in cache), every one
+    // of them, and the least pair kept: the same answer on any number of
+    // threads. A triangle numbered past the least pair found so far is
+    // passed over.
+    let items = &bvh.items;
+    let m = items.len();
     let search = |t: usize| -> Option<(usize, usize)> {
         let mut stack: Vec<u32> = Vec::with_capacity(64);
+        let mut mine: Option<(usize, usize)> = None;
         let mut block = t;
-        while block * BLOCK < n {
-            for i in block * BLOCK..((block + 1) * BLOCK).min(n) {
-                if i >= best.load(Ordering::Relaxed) {
-                    return None;
-                }
-                if !live[i] {
+        while block * BLOCK < m {
+            for &i in &items[block * BLOCK..((block + 1) * BLOCK).min(m)] {
+                let i = i as usize;
+                if i >= best.load(Ordering::Relaxed) || !live[i] {
                     continue;
                 }
                 let b = &boxes[i];
@@ -501,7 +507,7 @@ fn first_crossing(
                         continue;
                     }
                     if bvh.is_leaf(node) {
-                        for &j in &bvh.items[node.start as usize..node.end as usize] {
+                        for &j in &items[node.start as usize..node.end as usize] {
                             let j = j as usize;
                             if j > i
                                 && j < j_best
@@ -518,12 +524,12 @@ fn first_crossing(
                 }
                 if j_best != usize::MAX {
                     best.fetch_min(i, Ordering::Relaxed);
-                    return Some((i, j_best));
+                    mine = Some(mine.map_or((i, j_best), |m| m.min((i, j_best))));
                 }
             }
             block += threads;
         }
-        None
+        mine
     };
     let results: Vec<Option<(usize, usize)>> = if threads == 1 {
         vec![search(0)]
