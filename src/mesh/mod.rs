@@ -25,6 +25,7 @@
 //! precision composes them, with a bound (`Bound`) from the same terms'
 //! magnitudes.
 
+pub mod bvh;
 pub mod check;
 pub mod exact;
 pub mod read;
