@@ -19,6 +19,12 @@ pub type P3 = [f64; 3];
 /// The sign (−1, 0, 1) of ((b − a) × (c − a)) · (d − a): positive when d
 /// is on the side the right-hand normal of the triangle (a, b, c) points.
 pub fn orient3d(a: P3, b: P3, c: P3, d: P3) -> i8 {
+    // NOTE: two equal points (a corner two triangles share, the common
+    // case in a mesh) make the determinant exactly zero, which the filter
+    // below cannot see through the roundings of the other differences.
+    if a == d || b == d || c == d || a == b || a == c || b == c {
+        return 0;
+    }
     let ba = sub3(b, a);
     let ca = sub3(c, a);
     let da = sub3(d, a);
@@ -52,6 +58,10 @@ pub fn orient3d(a: P3, b: P3, c: P3, d: P3) -> i8 {
 /// The sign of (b − a)ᵢ(c − a)ⱼ − (b − a)ⱼ(c − a)ᵢ for the coordinates
 /// (i, j): the orientation of the triangle projected on that plane.
 pub fn orient2d(a: P3, b: P3, c: P3, i: usize, j: usize) -> i8 {
+    let same = |p: P3, q: P3| p[i] == q[i] && p[j] == q[j];
+    if same(a, b) || same(a, c) || same(b, c) {
+        return 0;
+    }
     let (b0, b1) = (b[i] - a[i], b[j] - a[j]);
     let (c0, c1) = (c[i] - a[i], c[j] - a[j]);
     let det = b0 * c1 - b1 * c0;
