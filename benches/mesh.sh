@@ -6,6 +6,15 @@
 #   bash benches/mesh.sh        # N = 500 latitude bands: 998,000 triangles
 #   bash benches/mesh.sh 250    # N = 250: 249,000 triangles
 #
+# Shells (issue 28, item 3): also a grid of K × K × K hollow cubes (K = 35:
+# 42,875 unit cubes 2 apart, each with an inward cube cavity of half its
+# size inside, 85,750 shells, 1,029,000 triangles) as a binary STL, whose
+# mass (K³ × 0.875 m³ × 1000 kg/m³) is checked against the closed form and
+# timed the same way: every pair of triangles whose boxes meet is tested
+# for crossing, and each shell's nesting by a ray.
+#
+#   bash benches/mesh.sh 500 35
+#
 # Generates (python, deterministic) a UV sphere of radius 5 cm with N bands
 # and 2N longitudes as a binary STL (f32, 50 MB at N = 500) and as an ASCII
 # STL (shortest round-trip f64, 258 MB) into a temporary directory, builds
@@ -18,6 +27,7 @@ here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib.sh"
 need_bench_tools "the meshes"
 n="${1:-500}"
+k="${2:-35}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
@@ -66,3 +76,34 @@ for f in sphere.stl sphere-ascii.stl; do
     /usr/bin/time -f "$f: peak RSS %M KB" "$bin" report --format json "$tmp/$f.toml" > /dev/null 2> "$tmp/rss" || true
     tail -1 "$tmp/rss"
 done
+python3 - "$tmp" "$k" <<'PY'
+import struct, sys
+out, k = sys.argv[1], int(sys.argv[2])
+quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+def cube(lo, d, inward):
+    c = lambda i: tuple(lo[j] + (d if (i >> j) & 1 else 0) for j in range(3))
+    for q in quads:
+        for t in ((c(q[0]), c(q[1]), c(q[2])), (c(q[0]), c(q[2]), c(q[3]))):
+            yield (t[0], t[2], t[1]) if inward else t
+with open(out + "/hollow.stl", "wb") as f:
+    f.write(b" " * 80 + struct.pack("<I", 24 * k ** 3))
+    for i in range(k):
+        for j in range(k):
+            for l in range(k):
+                lo = (2 * i, 2 * j, 2 * l)
+                for t in list(cube(lo, 1, False)) + list(cube(tuple(x + 0.25 for x in lo), 0.5, True)):
+                    f.write(struct.pack("<12fH", 0, 0, 0, *t[0], *t[1], *t[2], 0))
+print(24 * k ** 3, "triangles in", 2 * k ** 3, "shells")
+PY
+printf '[[part]]\nshape = "mesh"\nfile = "hollow.stl"\nmesh_unit = "m"\ndensity = 1000\n' > "$tmp/hollow.toml"
+"$bin" report --format json "$tmp/hollow.toml" > "$tmp/hollow.json"
+python3 - "$tmp" "$k" <<'PY'
+import json, sys
+m = json.load(open(sys.argv[1] + "/hollow.json"))["mass"]
+want = int(sys.argv[2]) ** 3 * 875.0
+assert abs(m - want) <= 1e-9 * want, (m, want)
+print("mass", m, "kg (closed form", want, "kg)")
+PY
+hyperfine --runs 5 --style basic "$bin report --format json $tmp/hollow.toml" 2>&1 | grep -E "Time|Range"
+/usr/bin/time -f "hollow.stl: peak RSS %M KB" "$bin" report --format json "$tmp/hollow.toml" > /dev/null 2> "$tmp/rss" || true
+tail -1 "$tmp/rss"

@@ -6,12 +6,100 @@
 //! finite, and whose second moment is symmetric with a non-negative
 //! diagonal to its bound. Panics, hangs and out-of-memory are the
 //! findings.
+//!
+//! Shells (issue 28): the same bytes also read as a list of boxes (7
+//! bytes each: a corner and sizes on a small grid, and whether it is wound
+//! inward), some corners nudged, written as one OBJ: any mix of disjoint,
+//! touching, overlapping, nested and inside-out pieces. Every accepted
+//! solid has a positive volume, and when the boxes are wound outward and
+//! pairwise disjoint (the generator knows) it is accepted and weighs their
+//! sum.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use massprop::mesh::{At, Format, MeshBody, Mode};
 
+type Box3 = ([f64; 3], [f64; 3], bool);
+
+/// Boxes from the bytes: corner 0..16 and size 1..8 on a grid of halves,
+/// the high bit of the seventh byte inward, its low bits a nudge of one
+/// corner of the box by a quarter (so faces can fold or tilt).
+fn boxes(data: &[u8]) -> Vec<(Box3, u8)> {
+    data.chunks_exact(7)
+        .take(12)
+        .map(|c| {
+            let lo = [0, 1, 2].map(|k| f64::from(c[k] % 32) / 2.0);
+            let size = [3, 4, 5].map(|k| f64::from(c[k] % 16 + 1) / 2.0);
+            ((lo, size, c[6] & 0x80 != 0), c[6] & 0x7f)
+        })
+        .collect()
+}
+
+fn box_obj(list: &[(Box3, u8)]) -> String {
+    let mut v = String::new();
+    let mut f = String::new();
+    for (n, ((lo, s, inward), nudge)) in list.iter().enumerate() {
+        for i in 0..8usize {
+            let mut p: [f64; 3] =
+                std::array::from_fn(|k| lo[k] + if i >> k & 1 == 1 { s[k] } else { 0.0 });
+            if usize::from(nudge & 7) == i && nudge & 8 != 0 {
+                p[usize::from(nudge >> 4) % 3] += 0.25;
+            }
+            v.push_str(&format!("v {} {} {}\n", p[0], p[1], p[2]));
+        }
+        let quads = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        for q in quads {
+            for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+                let t = if *inward { [t[0], t[2], t[1]] } else { t };
+                f.push_str(&format!(
+                    "f {} {} {}\n",
+                    8 * n + t[0] + 1,
+                    8 * n + t[1] + 1,
+                    8 * n + t[2] + 1
+                ));
+            }
+        }
+    }
+    v + &f
+}
+
+fn disjoint(a: &Box3, b: &Box3) -> bool {
+    // Apart by a gap (touching may weld corners into shared edges).
+    (0..3).any(|k| a.0[k] + a.1[k] < b.0[k] || b.0[k] + b.1[k] < a.0[k])
+}
+
+fn shells(data: &[u8]) {
+    let list = boxes(data);
+    if list.is_empty() {
+        return;
+    }
+    let text = box_obj(&list);
+    let result = MeshBody::load(Format::Obj, text.as_bytes(), Mode::Solid);
+    if let Ok(m) = &result {
+        assert!(m.measure.hi > 0.0, "an accepted solid has a positive volume");
+    }
+    let plain = list
+        .iter()
+        .all(|((_, _, inward), nudge)| !inward && nudge & 8 == 0);
+    let apart = (0..list.len())
+        .all(|i| (0..i).all(|j| disjoint(&list[i].0, &list[j].0)));
+    if plain && apart {
+        let m = result.expect("outward disjoint boxes are one solid");
+        let sum: f64 = list.iter().map(|((_, s, _), _)| s[0] * s[1] * s[2]).sum();
+        let v = m.measure.hi + m.measure.lo;
+        assert!((v - sum).abs() <= 1e-12 * sum, "{v} against {sum}");
+    }
+}
+
 fuzz_target!(|data: &[u8]| {
+    shells(data);
     for format in [Format::Stl, Format::Obj] {
         for mode in [Mode::Solid, Mode::Shell] {
             match MeshBody::load(format, data, mode) {

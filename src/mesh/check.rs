@@ -3,8 +3,8 @@
 //! finite coordinates, at least one triangle, no degenerate triangle (a
 //! repeated vertex, zero area); for a solid also closed (every edge shared
 //! by exactly two triangles) and consistently oriented (the two traverse
-//! it in opposite directions). The volume's sign (outward) is checked
-//! after the integral (`MeshBody::load`).
+//! it in opposite directions, half each way where pieces touch along
+//! it), then split into shells that must bound one solid (`shells`).
 
 use super::read::Triangles;
 use super::{At, MeshBody, MeshError, Mode, Sums, finish};
@@ -68,23 +68,30 @@ impl Mesh {
     /// Weld the corners: exactly equal coordinates are one vertex (−0 and
     /// +0 equal). Refuses a non-finite coordinate.
     pub fn weld(t: Triangles) -> Result<Mesh, MeshError> {
-        if t.corners.is_empty() {
+        if t.faces.is_empty() {
             return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
         }
         let mut index: HashMap<[u64; 3], u32, BuildHasherDefault<Mix>> =
-            HashMap::with_capacity_and_hasher(t.corners.len() / 2 + 3, Default::default());
-        let mut vertices = Vec::with_capacity(t.corners.len() / 2 + 3);
-        let mut faces = Vec::with_capacity(t.corners.len());
-        for (i, tri) in t.corners.iter().enumerate() {
+            HashMap::with_capacity_and_hasher(t.points.len() / 6 + 3, Default::default());
+        let mut vertices = Vec::with_capacity(t.points.len() / 6 + 3);
+        // Each point's vertex, found when a triangle first uses it.
+        let mut of_point = vec![u32::MAX; t.points.len()];
+        let mut faces = Vec::with_capacity(t.faces.len());
+        for (i, tri) in t.faces.iter().enumerate() {
             let mut f = [0u32; 3];
-            for (k, p) in tri.iter().enumerate() {
+            for (k, &pi) in tri.iter().enumerate() {
+                if of_point[pi as usize] != u32::MAX {
+                    f[k] = of_point[pi as usize];
+                    continue;
+                }
+                let p = t.points[pi as usize];
                 if !p.iter().all(|x| x.is_finite()) {
                     return Err(MeshError::new(
                         t.at[i],
                         format!(
                             "{} has a coordinate that is not a finite number: {}",
                             triangle(i, t.at[i]),
-                            point(*p)
+                            point(p)
                         ),
                     ));
                 }
@@ -94,6 +101,7 @@ impl Mesh {
                     vertices.push(p);
                     next
                 });
+                of_point[pi as usize] = f[k];
             }
             faces.push(f);
         }
@@ -141,6 +149,7 @@ impl Mesh {
         }
         if mode == Mode::Solid {
             self.closed_and_oriented()?;
+            super::shells::check(self)?;
         }
         Ok(())
     }
@@ -161,7 +170,11 @@ impl Mesh {
         edges.sort_unstable();
         let mut worst: Option<(u32, &[Edge])> = None;
         for run in edges.chunk_by(|x, y| x.0 == y.0) {
-            let ok = run.len() == 2 && run[0].2 != run[1].2;
+            // NOTE: an edge of two pieces that touch along it is shared by
+            // four (or more) triangles, half each way: closed, and
+            // `shells` tells the pieces apart.
+            let forward = run.iter().filter(|e| e.2).count();
+            let ok = run.len() >= 2 && 2 * forward == run.len();
             let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
             if !ok && worst.is_none_or(|(w, _)| first < w) {
                 worst = Some((first, run));
@@ -199,8 +212,10 @@ impl Mesh {
                     self.name(faces[1] as usize)
                 ),
                 n => format!(
-                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), a closed surface shares each edge between exactly two",
-                    names(&faces)
+                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), {} traversing it one way and {} the other; a closed surface's triangles pair up along each edge (two, or four where two pieces touch)",
+                    names(&faces),
+                    run.iter().filter(|e| e.2).count(),
+                    run.iter().filter(|e| !e.2).count()
                 ),
             },
         ))

@@ -25,8 +25,11 @@
 //! precision composes them, with a bound (`Bound`) from the same terms'
 //! magnitudes.
 
+pub mod bvh;
 pub mod check;
+pub mod exact;
 pub mod read;
+pub mod shells;
 
 pub use read::Format;
 

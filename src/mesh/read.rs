@@ -32,12 +32,37 @@ impl Format {
     }
 }
 
-/// A file's triangles: their corners, and for each the place it came from
-/// (the line of its `facet` or `f`, or its record's byte offset).
+/// A file's triangles: their corners as indices into `points`, and for
+/// each the place it came from (the line of its `facet` or `f`, or its
+/// record's byte offset). An STL's triangles have three points each; an
+/// OBJ's share its `v` list, so a face costs its 12 bytes of indices and
+/// its place however many triangles a long `f` line fans into.
 #[derive(Debug, Default)]
 pub struct Triangles {
-    pub corners: Vec<[[f64; 3]; 3]>,
+    pub points: Vec<[f64; 3]>,
+    pub faces: Vec<[u32; 3]>,
     pub at: Vec<At>,
+}
+
+impl Triangles {
+    /// Triangles given by their corners, each its own three points.
+    pub fn of_corners(corners: Vec<[[f64; 3]; 3]>, at: Vec<At>) -> Triangles {
+        let faces = (0..corners.len() as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect();
+        Triangles {
+            points: corners.into_iter().flatten().collect(),
+            faces,
+            at,
+        }
+    }
+
+    fn push(&mut self, corners: [[f64; 3]; 3], at: At) {
+        let i = self.points.len() as u32;
+        self.points.extend(corners);
+        self.faces.push([i, i + 1, i + 2]);
+        self.at.push(at);
+    }
 }
 
 /// Read a mesh file's bytes; at most `limit` triangles.
@@ -59,6 +84,19 @@ fn is_binary_stl(bytes: &[u8]) -> bool {
         if bytes.len() as u64 == 84 + 50 * n {
             return true;
         }
+    }
+    // NOTE: a header that begins with `solid` but a size that does not fit
+    // its count: binary all the same when the bytes after the header are
+    // not text (a control character other than white space: a binary
+    // STL's count and f32 coordinates nearly always hold one, a text file
+    // never), so that a truncated binary STL is called that, not an ASCII
+    // file with a bad first line.
+    if bytes.len() >= 84
+        && bytes[80..]
+            .iter()
+            .any(|&b| (b < 0x20 && !b.is_ascii_whitespace() && b != 0x0b) || b == 0x7f)
+    {
+        return true;
     }
     let start = bytes.iter().position(|b| !b.is_ascii_whitespace());
     // Keywords in any case, as most readers take them (`SOLID`).
@@ -84,17 +122,25 @@ fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     if bytes.len() as u64 != needed {
         return Err(MeshError::new(
             At::Byte(80),
-            format!(
-                "the header says {n} triangles, {needed} bytes, but the file has {} bytes (truncated, or not a binary STL)",
-                bytes.len()
-            ),
+            if (bytes.len() as u64) < needed {
+                format!(
+                    "the header says {n} triangles, {needed} bytes, but the file has {} bytes: a truncated binary STL",
+                    bytes.len()
+                )
+            } else {
+                format!(
+                    "the header says {n} triangles, {needed} bytes, but the file has {} bytes: a binary STL with bytes after its triangles, or not a binary STL",
+                    bytes.len()
+                )
+            },
         ));
     }
     if n > limit as u64 {
         return Err(too_many(At::Byte(80), limit));
     }
     let mut t = Triangles {
-        corners: Vec::with_capacity(n as usize),
+        points: Vec::with_capacity(3 * n as usize),
+        faces: Vec::with_capacity(n as usize),
         at: Vec::with_capacity(n as usize),
     };
     for (i, rec) in bytes[84..].chunks_exact(50).enumerate() {
@@ -109,10 +155,10 @@ fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
                 rec[o + 3],
             ]))
         };
-        t.corners.push(std::array::from_fn(|v| {
-            std::array::from_fn(|c| f(3 * v + c))
-        }));
-        t.at.push(At::Byte(84 + 50 * i as u64));
+        t.push(
+            std::array::from_fn(|v| std::array::from_fn(|c| f(3 * v + c))),
+            At::Byte(84 + 50 * i as u64),
+        );
     }
     Ok(t)
 }
@@ -224,11 +270,10 @@ fn ascii_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
                         ),
                     ));
                 }
-                if t.corners.len() == limit {
+                if t.faces.len() == limit {
                     return Err(too_many(At::Line(start), limit));
                 }
-                t.corners.push([vs[0], vs[1], vs[2]]);
-                t.at.push(At::Line(start));
+                t.push([vs[0], vs[1], vs[2]], At::Line(start));
             }
             _ => {
                 return Err(MeshError::new(
@@ -258,23 +303,27 @@ fn ascii_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
 /// statements (`vt`, `vn`, `o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`,
 /// comments) are passed over.
 fn obj(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
-    let mut vertices: Vec<[f64; 3]> = Vec::new();
     let mut t = Triangles::default();
-    let mut face: Vec<usize> = Vec::new();
     for (n, line) in lines(bytes) {
         let mut ws = words(line);
         match ws.next() {
             Some(b"v") => {
-                if vertices.len() >= 3 * limit {
+                if t.points.len() >= 3 * limit {
                     return Err(MeshError::new(
                         At::Line(n),
                         format!("the mesh has more than {} vertices, the limit", 3 * limit),
                     ));
                 }
-                vertices.push(point(&mut ws, n, "vertex")?);
+                t.points.push(point(&mut ws, n, "vertex")?);
             }
             Some(b"f") => {
-                face.clear();
+                // NOTE: each index checked and each triangle of the fan
+                // kept as it is read (the first corner, the last, this
+                // one): a face line of any length holds no list of its own,
+                // and meets the triangle limit at the index that passes it.
+                let mut first = 0u32;
+                let mut last = 0u32;
+                let mut count = 0usize;
                 for w in ws {
                     let index = w.split(|b| *b == b'/').next().unwrap_or(w);
                     let i = std::str::from_utf8(index)
@@ -286,31 +335,36 @@ fn obj(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
                                 format!("face: `{}` is not a vertex index", shown(w)),
                             )
                         })?;
-                    let count = vertices.len() as i64;
-                    let k = if i < 0 { count + i } else { i - 1 };
-                    if i == 0 || !(0..count).contains(&k) {
+                    let vertices = t.points.len() as i64;
+                    let k = if i < 0 { vertices + i } else { i - 1 };
+                    if i == 0 || !(0..vertices).contains(&k) {
                         return Err(MeshError::new(
                             At::Line(n),
                             format!(
-                                "face: vertex {i} does not exist ({count} vertices are read so far)"
+                                "face: vertex {i} does not exist ({vertices} vertices are read so far)"
                             ),
                         ));
                     }
-                    face.push(k as usize);
+                    let k = k as u32;
+                    match count {
+                        0 => first = k,
+                        1 => {}
+                        _ => {
+                            if t.faces.len() == limit {
+                                return Err(too_many(At::Line(n), limit));
+                            }
+                            t.faces.push([first, last, k]);
+                            t.at.push(At::Line(n));
+                        }
+                    }
+                    last = k;
+                    count += 1;
                 }
-                if face.len() < 3 {
+                if count < 3 {
                     return Err(MeshError::new(
                         At::Line(n),
-                        format!("a face of {} vertices: a face needs 3 or more", face.len()),
+                        format!("a face of {count} vertices: a face needs 3 or more"),
                     ));
-                }
-                for k in 1..face.len() - 1 {
-                    if t.corners.len() == limit {
-                        return Err(too_many(At::Line(n), limit));
-                    }
-                    let c = [face[0], face[k], face[k + 1]].map(|i| vertices[i]);
-                    t.corners.push(c);
-                    t.at.push(At::Line(n));
                 }
             }
             _ => {}

@@ -153,11 +153,8 @@ fn the_bound_holds_for_an_f64_evaluation_against_double_double() {
             }
         }
     }
-    let mesh = check::Mesh::weld(read::Triangles {
-        at: vec![At::Whole; t.len()],
-        corners: t,
-    })
-    .unwrap();
+    let at = vec![At::Whole; t.len()];
+    let mesh = check::Mesh::weld(read::Triangles::of_corners(t, at)).unwrap();
     for mode in [Mode::Solid, Mode::Shell] {
         let p = mesh.reference();
         let lo = mesh.sums::<f64>(mode, p);
@@ -344,11 +341,8 @@ fn the_sums_are_the_same_bits_on_any_number_of_threads_and_within_their_bound() 
         t.extend(box_triangles(1.0, 0.5 + (k as f64).cos() * 0.1, 0.75, o));
     }
     assert!(t.len() > 3 * 32_768, "more than three chunks");
-    let mesh = check::Mesh::weld(read::Triangles {
-        at: vec![At::Whole; t.len()],
-        corners: t,
-    })
-    .unwrap();
+    let at = vec![At::Whole; t.len()];
+    let mesh = check::Mesh::weld(read::Triangles::of_corners(t, at)).unwrap();
     let p = mesh.reference();
     let one = mesh.sums_on::<f64>(Mode::Solid, p, 1);
     for threads in [2, 3, 8] {
@@ -368,4 +362,62 @@ fn the_sums_are_the_same_bits_on_any_number_of_threads_and_within_their_bound() 
         let d = (DD::of(one.value[k]) - hi.value[k]).f64().abs();
         assert!(d <= *e, "sum {k}: {d:e} > {e:e}");
     }
+}
+
+#[test]
+fn a_truncated_binary_stl_whose_header_begins_with_solid_is_called_truncated() {
+    let t = box_triangles(1.0, 1.0, 1.0, [0.0; 3]);
+    let mut b = binary(&t);
+    b[..11].copy_from_slice(b"solid cube ");
+    // Whole, it is binary by its size; cut, it is still binary.
+    assert!(load(Format::Stl, &b, Mode::Solid).is_ok());
+    let m = message(Format::Stl, &b[..b.len() - 30], Mode::Solid);
+    assert!(
+        m.starts_with("byte 80: the header says 12 triangles")
+            && m.contains("a truncated binary STL"),
+        "{m}"
+    );
+}
+
+#[test]
+fn an_ascii_stl_that_does_not_parse_is_still_read_as_ascii() {
+    let m = message(
+        Format::Stl,
+        b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 y 2\n",
+        Mode::Solid,
+    );
+    assert_eq!(m, "line 4: vertex: `y` is not a number");
+}
+
+#[test]
+fn an_obj_face_is_fanned_as_it_is_read_and_meets_the_limit_at_its_index() {
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf");
+    for k in 0..1000 {
+        obj.push_str([" 1", " 2", " 3", " 4"][k % 4]);
+    }
+    obj.push('\n');
+    let t = read::read(Format::Obj, obj.as_bytes(), 10_000).unwrap();
+    assert_eq!(t.faces.len(), 998);
+    assert_eq!(t.points.len(), 4);
+    let e = read::read(Format::Obj, obj.as_bytes(), 100).unwrap_err();
+    assert_eq!(e.at, At::Line(5));
+    assert!(
+        e.message.contains("more than 100 triangles"),
+        "{}",
+        e.message
+    );
+}
+
+#[test]
+fn an_obj_face_with_a_bad_index_late_in_a_long_line_is_named() {
+    let mut obj = String::from("v 0 0 0\nv 1 0 0\nv 1 1 0\nf");
+    for _ in 0..500 {
+        obj.push_str(" 1 2 3");
+    }
+    obj.push_str(" 9\n");
+    let m = message(Format::Obj, obj.as_bytes(), Mode::Shell);
+    assert_eq!(
+        m,
+        "line 4: face: vertex 9 does not exist (3 vertices are read so far)"
+    );
 }

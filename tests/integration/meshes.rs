@@ -660,3 +660,300 @@ fn mesh_units_and_includes_scale_the_mesh() {
         "{c:?}"
     );
 }
+
+// ---- Shells: several pieces, cavities, crossings (issue 28, item 3) ----
+
+/// A box by its least corner and sizes, `n` × `n` quads a face, wound
+/// inward when `inward`.
+fn box_at(lo: [f64; 3], size: [f64; 3], inward: bool) -> Vec<Tri> {
+    let t = fine_box(size[0], size[1], size[2], lo, 1);
+    if inward {
+        t.into_iter().map(|x| [x[0], x[2], x[1]]).collect()
+    } else {
+        t
+    }
+}
+
+/// Mass, centre of mass and inertia about it of boxes of density `rho`
+/// (a negative sign: a cavity), each by its corner and sizes, composed by
+/// the parallel-axis theorem: the closed form the mesh must give.
+fn boxes_closed_form(
+    rho: f64,
+    boxes: &[([f64; 3], [f64; 3], f64)],
+) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    let mut m = 0.0;
+    let mut first = [0.0; 3];
+    for (lo, s, sign) in boxes {
+        let mi = sign * rho * s[0] * s[1] * s[2];
+        m += mi;
+        for k in 0..3 {
+            first[k] += mi * (lo[k] + s[k] / 2.0);
+        }
+    }
+    let c = first.map(|f| f / m);
+    let mut i = [[0.0; 3]; 3];
+    for (lo, s, sign) in boxes {
+        let mi = sign * rho * s[0] * s[1] * s[2];
+        let d: [f64; 3] = std::array::from_fn(|k| lo[k] + s[k] / 2.0 - c[k]);
+        let own = [
+            mi * (s[1] * s[1] + s[2] * s[2]) / 12.0,
+            mi * (s[0] * s[0] + s[2] * s[2]) / 12.0,
+            mi * (s[0] * s[0] + s[1] * s[1]) / 12.0,
+        ];
+        let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        for a in 0..3 {
+            for b in 0..3 {
+                let kron = if a == b { 1.0 } else { 0.0 };
+                i[a][b] += kron * own[a] + mi * (kron * dd - d[a] * d[b]);
+            }
+        }
+    }
+    (m, c, i)
+}
+
+/// The mesh of `tris` (ASCII STL) reported at density `rho`: mass, centre
+/// of mass, inertia about it.
+fn mesh_of(dir: &Path, tris: &[Tri], rho: f64) -> (f64, [f64; 3], [[f64; 3]; 3]) {
+    std::fs::write(dir.join("m.stl"), ascii_stl(tris)).unwrap();
+    let r = report(dir, &mesh_part("m.stl", &format!("density = {rho}")));
+    (
+        num(&r["mass"]),
+        vec3(&r["center_of_mass"]),
+        mat(&r["inertia_com"]),
+    )
+}
+
+fn assert_matches(got: (f64, [f64; 3], [[f64; 3]; 3]), want: (f64, [f64; 3], [[f64; 3]; 3])) {
+    let (m, c, i) = got;
+    let (wm, wc, wi) = want;
+    assert!(close(m, wm, 1e-12, wm), "mass {m} against {wm}");
+    let size = wc.iter().fold(1.0f64, |s, x| s.max(x.abs()));
+    for k in 0..3 {
+        assert!(
+            close(c[k], wc[k], 1e-12, size),
+            "centre {c:?} against {wc:?}"
+        );
+    }
+    let scale = wi[0][0].abs().max(wi[1][1].abs()).max(wi[2][2].abs());
+    for a in 0..3 {
+        for b in 0..3 {
+            assert!(
+                close(i[a][b], wi[a][b], 1e-11, scale),
+                "inertia {i:?} against {wi:?}"
+            );
+        }
+    }
+}
+
+/// A mesh refused at the part's `file` key, status 2, nothing on stdout:
+/// the message.
+fn refused_mesh(dir: &Path, tris: &[Tri]) -> String {
+    std::fs::write(dir.join("m.stl"), ascii_stl(tris)).unwrap();
+    let toml = dir.join("parts.toml");
+    std::fs::write(&toml, mesh_part("m.stl", "density = 1")).unwrap();
+    let out = massprop(&["report", toml.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains("parts.toml:3:8") && err.contains("the mesh file `") && err.contains("m.stl`"),
+        "{err}"
+    );
+    err
+}
+
+#[test]
+fn two_disjoint_cubes_weigh_the_sum_of_their_masses() {
+    let dir = scratch("meshes", "two-cubes");
+    let (a, b) = (
+        ([0.0; 3], [1.0, 2.0, 0.5], 1.0),
+        ([3.0, -1.0, 0.25], [0.5, 0.5, 1.5], 1.0),
+    );
+    let mut t = box_at(a.0, a.1, false);
+    t.extend(box_at(b.0, b.1, false));
+    assert_matches(mesh_of(&dir, &t, 2.5), boxes_closed_form(2.5, &[a, b]));
+}
+
+#[test]
+fn a_cube_with_an_inward_cube_inside_weighs_the_difference() {
+    let dir = scratch("meshes", "hollow");
+    let outer = ([0.0; 3], [4.0, 3.0, 2.0], 1.0);
+    let cavity = ([0.5, 1.0, 0.25], [1.0, 1.5, 1.0], -1.0);
+    let mut t = box_at(outer.0, outer.1, false);
+    t.extend(box_at(cavity.0, cavity.1, true));
+    assert_matches(
+        mesh_of(&dir, &t, 7.0),
+        boxes_closed_form(7.0, &[outer, cavity]),
+    );
+}
+
+#[test]
+fn two_cubes_sharing_a_face_weigh_the_sum() {
+    let dir = scratch("meshes", "face");
+    let (a, b) = (([0.0; 3], [1.0; 3], 1.0), ([1.0, 0.0, 0.0], [1.0; 3], 1.0));
+    let mut t = box_at(a.0, a.1, false);
+    t.extend(box_at(b.0, b.1, false));
+    assert_matches(mesh_of(&dir, &t, 3.0), boxes_closed_form(3.0, &[a, b]));
+}
+
+#[test]
+fn two_cubes_sharing_an_edge_weigh_the_sum() {
+    let dir = scratch("meshes", "edge");
+    let (a, b) = (([0.0; 3], [1.0; 3], 1.0), ([1.0, 1.0, 0.0], [1.0; 3], 1.0));
+    let mut t = box_at(a.0, a.1, false);
+    t.extend(box_at(b.0, b.1, false));
+    assert_matches(mesh_of(&dir, &t, 3.0), boxes_closed_form(3.0, &[a, b]));
+}
+
+#[test]
+fn two_cubes_sharing_a_corner_weigh_the_sum() {
+    let dir = scratch("meshes", "corner");
+    let (a, b) = (([0.0; 3], [1.0; 3], 1.0), ([1.0, 1.0, 1.0], [1.0; 3], 1.0));
+    let mut t = box_at(a.0, a.1, false);
+    t.extend(box_at(b.0, b.1, false));
+    assert_matches(mesh_of(&dir, &t, 3.0), boxes_closed_form(3.0, &[a, b]));
+}
+
+#[test]
+fn two_overlapping_cubes_are_refused_naming_two_triangles_that_cross() {
+    let dir = scratch("meshes", "overlap");
+    let mut t = box_at([0.0; 3], [1.0; 3], false);
+    t.extend(box_at([0.5, 0.25, 0.25], [1.0; 3], false));
+    let err = refused_mesh(&dir, &t);
+    assert!(err.contains("shells intersect or overlap"), "{err}");
+    // Two triangles by number and line: "triangle N (line L) and triangle M (line K) cross".
+    assert_eq!(err.matches("triangle ").count(), 2, "{err}");
+    assert!(err.contains(" cross: "), "{err}");
+}
+
+#[test]
+fn a_cube_folded_through_itself_is_refused() {
+    let dir = scratch("meshes", "fold");
+    let t: Vec<Tri> = box_at([0.0; 3], [1.0; 3], false)
+        .into_iter()
+        .map(|tri| {
+            tri.map(|p| {
+                if p == [1.0, 1.0, 1.0] {
+                    [1.0, 1.0, -1.0]
+                } else {
+                    p
+                }
+            })
+        })
+        .collect();
+    let err = refused_mesh(&dir, &t);
+    assert!(err.contains("the surface intersects itself"), "{err}");
+}
+
+#[test]
+fn an_inward_shell_alone_is_refused() {
+    let dir = scratch("meshes", "inward-alone");
+    let err = refused_mesh(&dir, &box_at([0.0; 3], [1.0; 3], true));
+    assert!(
+        err.contains("faces point inward; flip the winding"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_inward_shell_outside_the_outward_one_is_refused() {
+    let dir = scratch("meshes", "inward-outside");
+    let mut t = box_at([0.0; 3], [1.0; 3], false);
+    t.extend(box_at([2.0, 0.0, 0.0], [1.0; 3], true));
+    let err = refused_mesh(&dir, &t);
+    assert!(
+        err.contains("shell 2 (from triangle 13 (line 86))") && err.contains("a cavity of nothing"),
+        "{err}"
+    );
+}
+
+#[test]
+fn an_outward_shell_inside_another_outward_shell_is_refused() {
+    let dir = scratch("meshes", "nested-outward");
+    let mut t = box_at([0.0; 3], [4.0; 3], false);
+    t.extend(box_at([1.0; 3], [1.0; 3], false));
+    let err = refused_mesh(&dir, &t);
+    assert!(
+        err.contains("shell 2") && err.contains("would count twice"),
+        "{err}"
+    );
+}
+
+/// Boxes in cells 3 apart along x (they may touch the next cell's box
+/// face to face, never overlap): sizes and offsets in eighths.
+fn disjoint_boxes() -> impl proptest::strategy::Strategy<Value = Vec<([f64; 3], [f64; 3])>> {
+    use proptest::prelude::*;
+    prop::collection::vec(
+        (
+            (0u8..=8, 0u8..=16, 0u8..=16),
+            (4u8..=16, 4u8..=16, 4u8..=16),
+        ),
+        1..5,
+    )
+    .prop_map(|cells| {
+        cells
+            .into_iter()
+            .enumerate()
+            .map(|(i, ((x, y, z), (a, b, c)))| {
+                let e = |k: u8| f64::from(k) / 8.0;
+                ([3.0 * i as f64 + e(x), e(y), e(z)], [e(a), e(b), e(c)])
+            })
+            .collect()
+    })
+}
+
+fn runner(cases: u32) -> proptest::test_runner::TestRunner {
+    use proptest::test_runner::{Config, RngAlgorithm, TestRunner};
+    let mut config = Config::with_cases(cases);
+    config.failure_persistence = None;
+    config.rng_algorithm = RngAlgorithm::ChaCha;
+    config.max_shrink_iters = 64;
+    TestRunner::new_with_rng(
+        config.clone(),
+        proptest::test_runner::TestRng::deterministic_rng(config.rng_algorithm),
+    )
+}
+
+#[test]
+fn random_disjoint_boxes_weigh_the_sum_of_their_closed_forms() {
+    let dir = scratch("meshes", "prop-disjoint");
+    runner(24)
+        .run(&disjoint_boxes(), |boxes| {
+            let t: Vec<Tri> = boxes
+                .iter()
+                .flat_map(|(lo, s)| box_at(*lo, *s, false))
+                .collect();
+            let want: Vec<_> = boxes.iter().map(|(lo, s)| (*lo, *s, 1.0)).collect();
+            assert_matches(mesh_of(&dir, &t, 1.5), boxes_closed_form(1.5, &want));
+            Ok(())
+        })
+        .unwrap();
+}
+
+#[test]
+fn random_overlapping_pairs_of_boxes_are_refused() {
+    use proptest::prelude::*;
+    let dir = scratch("meshes", "prop-overlap");
+    let pairs = (
+        (4u8..=16, 4u8..=16, 4u8..=16),
+        (1u8..=7, 1u8..=7, 1u8..=7),
+        (4u8..=16, 4u8..=16, 4u8..=16),
+    );
+    runner(24)
+        .run(&pairs, |((a, b, c), (fx, fy, fz), (p, q, r))| {
+            let e = |k: u8| f64::from(k) / 8.0;
+            let size = [e(a), e(b), e(c)];
+            // The second box's least corner strictly inside the first.
+            let lo = [size[0] * e(fx), size[1] * e(fy), size[2] * e(fz)];
+            let mut t = box_at([0.0; 3], size, false);
+            t.extend(box_at(lo, [e(p), e(q), e(r)], false));
+            let err = refused_mesh(&dir, &t);
+            prop_assert!(
+                err.contains(" cross: ") || err.contains("would count twice"),
+                "{}",
+                err
+            );
+            Ok(())
+        })
+        .unwrap();
+}

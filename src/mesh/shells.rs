@@ -1,0 +1,723 @@
+//! A solid mesh split into its closed shells and checked to bound one
+//! solid: the shells must not cross themselves or each other, and their
+//! windings must nest (an outward shell, inside it inward shells that are
+//! its cavities, inside those outward islands, …), so that every point is
+//! inside the solid once or not at all. The integral over all the
+//! triangles is then the solid's (a cavity's negative volume subtracts).
+//!
+//! - Shells: triangles joined across edges shared by exactly two of them
+//!   (after a pair of triangles with the same corners wound opposite ways,
+//!   the wall between two pieces that share a face, is set aside: it
+//!   cancels in every integral). An edge shared by four or more (pieces
+//!   that touch along an edge) joins nothing, unless a piece would be
+//!   left open without it.
+//! - Crossings: every pair of triangles whose boxes meet, found with a
+//!   bounding-volume hierarchy, is tested with exact predicates
+//!   (`exact`; Guigue and Devillers' test). Two triangles cross when they
+//!   share a segment inside both (not coplanar), or overlap in an area
+//!   while facing the same way (coplanar). Touching along an edge or at a
+//!   point, and coplanar triangles facing opposite ways (two pieces in
+//!   contact along a face), do not cross.
+//! - Nesting: the winding number, at one corner of each shell, of all
+//!   the other triangles (a ray along +x with a symbolic perturbation, so
+//!   it never grazes an edge): 0 for an outward shell, 1 for an inward one.
+
+use super::bvh::{Aabb, Bvh};
+use super::check::{Mesh, point, triangle};
+use super::exact::{self, P3, orient2d, orient3d};
+use super::{MeshError, Mode, Sums};
+use crate::numeric::{DD, Real};
+
+/// No shell: a triangle set aside (its opposite twin cancels it).
+const NONE: u32 = u32::MAX;
+
+/// Check that the (closed, consistently oriented) mesh bounds one solid.
+/// Returns the number of shells.
+pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
+    let n = mesh.faces.len();
+    let live = cancel_twins(mesh);
+    let shell = components(mesh, &live);
+    let count = shell
+        .iter()
+        .filter(|s| **s != NONE)
+        .fold(0, |m, s| m.max(*s + 1)) as usize;
+    if count == 0 {
+        return Err(MeshError::new(
+            super::At::Whole,
+            "the mesh encloses no volume: every triangle has a twin wound the other way",
+        ));
+    }
+    let pts = scaled(mesh)?;
+    let boxes: Vec<Aabb> = mesh
+        .faces
+        .iter()
+        .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
+        .collect();
+    let order: Vec<u32> = (0..n as u32)
+        .filter(|&i| shell[i as usize] != NONE)
+        .collect();
+    let bvh = Bvh::build(&boxes, order);
+    if let Some((i, j)) = first_crossing(mesh, &pts, &live, &boxes, &bvh) {
+        let same = shell[i] == shell[j];
+        return Err(MeshError::new(
+            mesh.at[i],
+            format!(
+                "{} and {} cross: {}; a solid's surface must not pass through itself (pieces may touch along an edge or at a corner, or face to face)",
+                triangle(i, mesh.at[i]),
+                triangle(j, mesh.at[j]),
+                if same {
+                    "the surface intersects itself"
+                } else {
+                    "two of the mesh's shells intersect or overlap"
+                }
+            ),
+        ));
+    }
+    // Each shell's winding: the sign of its volume.
+    let first = first_triangles(&shell, count);
+    let signs = volumes(mesh, &shell, count)?;
+    if count == 1 {
+        if signs[0] < 0 {
+            return Err(MeshError::new(
+                super::At::Whole,
+                "the mesh's volume is negative: its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
+            ));
+        }
+        return Ok(1);
+    }
+    let name = |s: usize| {
+        let t = first[s];
+        format!("shell {} (from {})", s + 1, triangle(t, mesh.at[t]))
+    };
+    let (list, start) = members(&shell, count);
+    // NOTE: a shell winds around no point outside its box: the shells
+    // whose boxes hold a corner are found in a tree of the shells' boxes,
+    // most corners of a mesh of separate pieces have none (winding 0 at
+    // once), and a ray need go no further than those shells' boxes.
+    let shell_boxes: Vec<Aabb> = (0..count)
+        .map(|s| {
+            list[start[s]..start[s + 1]]
+                .iter()
+                .fold(Aabb::empty(), |b, &t| b.join(boxes[t as usize]))
+        })
+        .collect();
+    let shell_tree = Bvh::build(&shell_boxes, (0..count as u32).collect());
+    let near = Near {
+        boxes: &shell_boxes,
+        tree: &shell_tree,
+    };
+    for s in 0..count {
+        let mine = &list[start[s]..start[s + 1]];
+        let c = winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32);
+        let t = first[s];
+        match (signs[s], c) {
+            (1, 0) | (-1, 1) => {}
+            (1, 1) => {
+                return Err(MeshError::new(
+                    mesh.at[t],
+                    format!(
+                        "{} lies inside another outward shell and is wound outward too: the volume they share would count twice; a shell inside a solid must be wound inward to be a cavity",
+                        name(s)
+                    ),
+                ));
+            }
+            (-1, 0) => {
+                return Err(MeshError::new(
+                    mesh.at[t],
+                    format!(
+                        "{} is wound inward (its faces point inward) but lies in no solid (outside every outward shell, or in another cavity): it is a cavity of nothing; flip its winding (every triangle's corners counter-clockwise seen from outside)",
+                        name(s)
+                    ),
+                ));
+            }
+            (_, c) => {
+                return Err(MeshError::new(
+                    mesh.at[t],
+                    format!(
+                        "{} is wound {} where the other shells wind {} times around it: outward and inward shells must alternate from the outside in (a solid, its cavities, islands in them)",
+                        name(s),
+                        if signs[s] > 0 { "outward" } else { "inward" },
+                        c
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(count)
+}
+
+/// For each triangle, whether it counts: a triangle with the same three
+/// corners as another wound the other way is set aside with it.
+fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
+    let mut keyed: Vec<([u32; 3], bool, u32)> = mesh
+        .faces
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            let mut s = *f;
+            s.sort_unstable();
+            // Even permutation of the sorted triple: the same winding.
+            let rot = [s, [s[1], s[2], s[0]], [s[2], s[0], s[1]]];
+            (s, rot.contains(f), i as u32)
+        })
+        .collect();
+    keyed.sort_unstable();
+    let mut live = vec![true; mesh.faces.len()];
+    for run in keyed.chunk_by(|x, y| x.0 == y.0) {
+        let plus: Vec<u32> = run.iter().filter(|k| k.1).map(|k| k.2).collect();
+        let minus: Vec<u32> = run.iter().filter(|k| !k.1).map(|k| k.2).collect();
+        for (p, m) in plus.iter().zip(&minus) {
+            live[*p as usize] = false;
+            live[*m as usize] = false;
+        }
+    }
+    live
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let g = parent[parent[x as usize] as usize];
+        parent[x as usize] = g;
+        x = g;
+    }
+    x
+}
+
+fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
+    let (ra, rb) = (find(parent, a), find(parent, b));
+    if ra == rb {
+        return false;
+    }
+    let (lo, hi) = (ra.min(rb), ra.max(rb));
+    parent[hi as usize] = lo;
+    true
+}
+
+/// Each live triangle's shell (numbered by their first triangles, in the
+/// file's order), `NONE` for those set aside.
+fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
+    let n = mesh.faces.len();
+    let mut edges: Vec<(u64, u32, bool)> = Vec::with_capacity(3 * n);
+    for (i, f) in mesh.faces.iter().enumerate() {
+        if !live[i] {
+            continue;
+        }
+        for k in 0..3 {
+            let (a, b) = (f[k], f[(k + 1) % 3]);
+            let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+            edges.push((key, i as u32, a < b));
+        }
+    }
+    edges.sort_unstable();
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut crowded: Vec<&[(u64, u32, bool)]> = Vec::new();
+    for run in edges.chunk_by(|x, y| x.0 == y.0) {
+        if run.len() == 2 {
+            union(&mut parent, run[0].1, run[1].1);
+        } else {
+            crowded.push(run);
+        }
+    }
+    // NOTE: an edge shared by four or more triangles joins nothing, so
+    // that two pieces touching along it stay two shells; but a piece that
+    // is not closed without it (one touching itself there, or two pieces
+    // that share a face triangulated differently) is joined across it.
+    // Merging only ever joins, so this ends after at most as many passes
+    // as there are such edges, in practice one or two.
+    loop {
+        let mut changed = false;
+        for run in &crowded {
+            let mut balance: Vec<(u32, i32)> = run
+                .iter()
+                .map(|e| (find(&mut parent, e.1), if e.2 { 1 } else { -1 }))
+                .collect();
+            balance.sort_unstable();
+            let open = balance
+                .chunk_by(|x, y| x.0 == y.0)
+                .any(|g| g.iter().map(|x| x.1).sum::<i32>() != 0);
+            if open {
+                for w in run.windows(2) {
+                    changed |= union(&mut parent, w[0].1, w[1].1);
+                }
+            }
+        }
+        if !changed {
+            break;
+        }
+    }
+    let mut number = vec![NONE; n];
+    let mut shell = vec![NONE; n];
+    let mut next = 0;
+    for i in 0..n {
+        if !live[i] {
+            continue;
+        }
+        let r = find(&mut parent, i as u32) as usize;
+        if number[r] == NONE {
+            number[r] = next;
+            next += 1;
+        }
+        shell[i] = number[r];
+    }
+    shell
+}
+
+fn first_triangles(shell: &[u32], count: usize) -> Vec<usize> {
+    let mut first = vec![usize::MAX; count];
+    for (i, s) in shell.iter().enumerate() {
+        if *s != NONE && first[*s as usize] == usize::MAX {
+            first[*s as usize] = i;
+        }
+    }
+    first
+}
+
+/// Each shell's winding: 1 outward, −1 inward, from the sign of its
+/// volume (about its first corner, with the sums' error bound).
+fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshError> {
+    let first = first_triangles(shell, count);
+    let refs: Vec<[f64; 3]> = first
+        .iter()
+        .map(|t| mesh.vertices[mesh.faces[*t][0] as usize])
+        .collect();
+    let mut sums: Vec<Sums<f64>> = vec![Sums::new(); count];
+    for (i, f) in mesh.faces.iter().enumerate() {
+        let s = shell[i];
+        if s == NONE {
+            continue;
+        }
+        let p = refs[s as usize];
+        let v = f.map(|k| {
+            let c = mesh.vertices[k as usize];
+            std::array::from_fn(|j| DD::of(c[j]) - DD::of(p[j]))
+        });
+        sums[s as usize].add(Mode::Solid, v);
+    }
+    let mut signs = Vec::with_capacity(count);
+    for (s, sum) in sums.iter().enumerate() {
+        let w = sum.value[0];
+        if w.abs() <= sum.error()[0] {
+            let t = first[s];
+            return Err(MeshError::new(
+                mesh.at[t],
+                format!(
+                    "shell {} (from {}) encloses no volume that can be told from zero, so whether it is wound outward or inward cannot be told",
+                    s + 1,
+                    triangle(t, mesh.at[t])
+                ),
+            ));
+        }
+        signs.push(if w > 0.0 { 1 } else { -1 });
+    }
+    Ok(signs)
+}
+
+/// The corners scaled by one power of two so that the largest magnitude is
+/// below 1 (exact), for the predicates; refuses a nonzero coordinate
+/// below `exact::TINY` of that (see `exact`).
+fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
+    let big = mesh
+        .vertices
+        .iter()
+        .flat_map(|v| v.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    // 2^e > big, e = exponent of big + 1.
+    let e = if big == 0.0 {
+        0
+    } else {
+        ((big.to_bits() >> 52) & 0x7ff) as i32 - 1022
+    };
+    let mul = |x: f64| {
+        // x · 2^−e in steps that stay within f64's range.
+        let mut y = x;
+        let mut k = -e;
+        while k != 0 {
+            let step = k.clamp(-600, 600);
+            y *= f64::powi(2.0, step);
+            k -= step;
+        }
+        y
+    };
+    let pts: Vec<P3> = mesh.vertices.iter().map(|v| v.map(mul)).collect();
+    for (i, f) in mesh.faces.iter().enumerate() {
+        for &k in f {
+            let p = pts[k as usize];
+            if p.iter().any(|x| *x != 0.0 && x.abs() < exact::TINY) {
+                return Err(MeshError::new(
+                    mesh.at[i],
+                    format!(
+                        "{} has the corner {}, a coordinate of which is nonzero but less than 2⁻²⁰⁰ of the mesh's largest ({big}): too wide a range of magnitudes to check the mesh's shells exactly; round it to zero",
+                        triangle(i, mesh.at[i]),
+                        point(mesh.vertices[k as usize])
+                    ),
+                ));
+            }
+        }
+    }
+    Ok(pts)
+}
+
+/// The first pair (by the first triangle's number, then the second's) of
+/// triangles that cross, if any; on every core.
+fn first_crossing(
+    mesh: &Mesh,
+    pts: &[P3],
+    live: &[bool],
+    boxes: &[Aabb],
+    bvh: &Bvh,
+) -> Option<(usize, usize)> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let n = mesh.faces.len();
+    if bvh.nodes.is_empty() {
+        return None;
+    }
+    let tri = |i: usize| mesh.faces[i].map(|k| pts[k as usize]);
+    let best = AtomicUsize::new(usize::MAX);
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, n.div_ceil(4096).max(1));
+    const BLOCK: usize = 4096;
+    // NOTE: triangles taken in the tree's order (neighbours in space one
+    // after another: the nodes a query visits stay in cache), every one
+    // of them, and the least pair kept: the same answer on any number of
+    // threads. A triangle numbered past the least pair found so far is
+    // passed over.
+    let items = &bvh.items;
+    let m = items.len();
+    let search = |t: usize| -> Option<(usize, usize)> {
+        let mut stack: Vec<u32> = Vec::with_capacity(64);
+        let mut mine: Option<(usize, usize)> = None;
+        let mut block = t;
+        while block * BLOCK < m {
+            for &i in &items[block * BLOCK..((block + 1) * BLOCK).min(m)] {
+                let i = i as usize;
+                if i >= best.load(Ordering::Relaxed) || !live[i] {
+                    continue;
+                }
+                let b = &boxes[i];
+                let mut j_best = usize::MAX;
+                stack.clear();
+                stack.push(0);
+                while let Some(at) = stack.pop() {
+                    let node = &bvh.nodes[at as usize];
+                    if !node.bounds.meets(b) {
+                        continue;
+                    }
+                    if bvh.is_leaf(node) {
+                        for &j in &items[node.start as usize..node.end as usize] {
+                            let j = j as usize;
+                            if j > i
+                                && j < j_best
+                                && boxes[j].meets(b)
+                                && cross(mesh.faces[i], mesh.faces[j], &tri(i), &tri(j))
+                            {
+                                j_best = j;
+                            }
+                        }
+                    } else {
+                        stack.push(node.left);
+                        stack.push(node.left + 1);
+                    }
+                }
+                if j_best != usize::MAX {
+                    best.fetch_min(i, Ordering::Relaxed);
+                    mine = Some(mine.map_or((i, j_best), |m| m.min((i, j_best))));
+                }
+            }
+            block += threads;
+        }
+        mine
+    };
+    let results: Vec<Option<(usize, usize)>> = if threads == 1 {
+        vec![search(0)]
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads)
+                .map(|t| {
+                    let search = &search;
+                    scope.spawn(move || search(t))
+                })
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join()
+                        .expect("invariant: the crossing search does not panic")
+                })
+                .collect()
+        })
+    };
+    results.into_iter().flatten().min()
+}
+
+/// Whether two triangles (by their welded corners `f`, `g` and their
+/// points) cross: share a segment inside both, or overlap in an area
+/// facing the same way.
+fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
+    let shared = f.iter().filter(|v| g.contains(v)).count();
+    if shared == 3 {
+        // The same corners: the same way is a repeated surface (twins
+        // wound opposite ways were set aside before).
+        return true;
+    }
+    // The sides of p's corners of q's plane.
+    let dp = p.map(|x| orient3d(q[0], q[1], q[2], x));
+    if dp.iter().all(|s| *s == 0) {
+        return coplanar_overlap(p, q);
+    }
+    if !(dp.contains(&1) && dp.contains(&-1)) {
+        // p meets q's plane at most along an edge or corner of p.
+        return false;
+    }
+    let dq = q.map(|x| orient3d(p[0], p[1], p[2], x));
+    if !(dq.contains(&1) && dq.contains(&-1)) {
+        return false;
+    }
+    // NOTE: Guigue and Devillers' canonical form: each triangle turned so
+    // that its first corner is alone on its side of the other's plane
+    // (positive), the other triangle's winding swapped when that side is
+    // negative; the two segments on the planes' line then overlap in more
+    // than a point exactly when both 4-point orientations below are
+    // negative (zero: they meet at an end only, a touch).
+    let (p, q) = canonical(*p, dp, *q);
+    let dq2 = q.map(|x| orient3d(p[0], p[1], p[2], x));
+    let (q, p) = canonical(q, dq2, p);
+    orient3d(p[1], q[0], p[0], q[1]) < 0 && orient3d(p[0], q[0], p[2], q[2]) < 0
+}
+
+/// Turn `a` so that its first corner is the one alone on its side of the
+/// other's plane (`s`: its corners' sides, both signs present); swap `b`'s
+/// last two corners when that side is negative.
+fn canonical(a: [P3; 3], s: [i8; 3], b: [P3; 3]) -> ([P3; 3], [P3; 3]) {
+    let alone = (0..3)
+        .find(|&i| s[i] != 0 && (0..3).all(|j| j == i || s[j] != s[i]))
+        .expect("invariant: a triangle with corners on both sides has one alone on its side");
+    let a = [a[alone], a[(alone + 1) % 3], a[(alone + 2) % 3]];
+    let b = if s[alone] < 0 { [b[0], b[2], b[1]] } else { b };
+    (a, b)
+}
+
+/// Two coplanar triangles overlap in an area and face the same way.
+fn coplanar_overlap(p: &[P3; 3], q: &[P3; 3]) -> bool {
+    // A projection in which p is not degenerate; q is in p's plane and not
+    // degenerate either, so it is not degenerate in it.
+    let Some((i, j, sp)) = [(1, 2), (2, 0), (0, 1)]
+        .into_iter()
+        .map(|(i, j)| (i, j, orient2d(p[0], p[1], p[2], i, j)))
+        .find(|x| x.2 != 0)
+    else {
+        return false;
+    };
+    let sq = orient2d(q[0], q[1], q[2], i, j);
+    if sq != sp {
+        // Facing opposite ways: in contact, not overlapping.
+        return false;
+    }
+    // Separating axis: an edge of either with the other wholly on its
+    // outer closed side.
+    let separated = |a: &[P3; 3], b: &[P3; 3]| {
+        (0..3).any(|k| {
+            let (u, v) = (a[k], a[(k + 1) % 3]);
+            b.iter().all(|w| orient2d(u, v, *w, i, j) * sp <= 0)
+        })
+    };
+    !(separated(p, q) || separated(q, p))
+}
+
+/// The winding number, at a corner of shell `s` (one on no other shell's
+/// surface where there is one), of every other live triangle.
+fn winding_around(
+    mesh: &Mesh,
+    pts: &[P3],
+    bvh: &Bvh,
+    near: &Near,
+    shell: &[u32],
+    members: &[u32],
+    s: u32,
+) -> i64 {
+    let mut last = 0;
+    let mut tried = 0;
+    for &i in members {
+        for &k in &mesh.faces[i as usize] {
+            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
+            if !on {
+                return w;
+            }
+            last = w;
+            tried += 1;
+            // NOTE: a shell all of whose corners lie on other shells
+            // (touching them at every corner) takes the perturbed point's
+            // answer; a few hundred corners are enough to find a free one
+            // in any mesh that is not built to touch everywhere.
+            if tried >= 256 {
+                return last;
+            }
+        }
+    }
+    last
+}
+
+/// Each shell's triangles, in the file's order (`start[s]..start[s + 1]`
+/// of the list).
+fn members(shell: &[u32], count: usize) -> (Vec<u32>, Vec<usize>) {
+    let mut start = vec![0usize; count + 1];
+    for s in shell.iter().filter(|s| **s != NONE) {
+        start[*s as usize + 1] += 1;
+    }
+    for k in 0..count {
+        start[k + 1] += start[k];
+    }
+    let mut fill = start.clone();
+    let mut list = vec![0u32; start[count]];
+    for (i, s) in shell.iter().enumerate() {
+        if *s != NONE {
+            list[fill[*s as usize]] = i as u32;
+            fill[*s as usize] += 1;
+        }
+    }
+    (list, start)
+}
+
+/// The winding number at v (perturbed to (x, y + ε, z + ε²)) of the live
+/// triangles not in shell `s`, by a ray along +x; and whether v lies on
+/// one of them.
+fn winding_at(
+    v: P3,
+    mesh: &Mesh,
+    pts: &[P3],
+    bvh: &Bvh,
+    near: &Near,
+    shell: &[u32],
+    s: u32,
+) -> (i64, bool) {
+    let around = near.around(v, s);
+    let Some(reach) = around
+        .iter()
+        .map(|t| near.boxes[*t as usize].hi[0])
+        .reduce(f64::max)
+    else {
+        return (0, false);
+    };
+    let mut w = 0i64;
+    let mut on = false;
+    if bvh.nodes.is_empty() {
+        return (0, false);
+    }
+    let mut stack = vec![0u32];
+    while let Some(at) = stack.pop() {
+        let node = &bvh.nodes[at as usize];
+        let b = &node.bounds;
+        if b.hi[0] < v[0]
+            || b.lo[0] > reach
+            || b.lo[1] > v[1]
+            || b.hi[1] < v[1]
+            || b.lo[2] > v[2]
+            || b.hi[2] < v[2]
+        {
+            continue;
+        }
+        if bvh.is_leaf(node) {
+            for &t in &bvh.items[node.start as usize..node.end as usize] {
+                let of = shell[t as usize];
+                if of == s || around.binary_search(&of).is_err() {
+                    continue;
+                }
+                match ray_hit(v, &mesh.faces[t as usize].map(|k| pts[k as usize])) {
+                    Hit::Miss => {}
+                    Hit::On => on = true,
+                    Hit::Ahead(sign) => w += i64::from(sign),
+                }
+            }
+        } else {
+            stack.push(node.left);
+            stack.push(node.left + 1);
+        }
+    }
+    (w, on)
+}
+
+/// The shells' boxes and a tree of them.
+struct Near<'a> {
+    boxes: &'a [Aabb],
+    tree: &'a Bvh,
+}
+
+impl Near<'_> {
+    /// The shells other than `s` whose (closed) boxes hold v, sorted.
+    fn around(&self, v: P3, s: u32) -> Vec<u32> {
+        let mut out = Vec::new();
+        let inside = |b: &Aabb| (0..3).all(|k| b.lo[k] <= v[k] && v[k] <= b.hi[k]);
+        if self.tree.nodes.is_empty() {
+            return out;
+        }
+        let mut stack = vec![0u32];
+        while let Some(at) = stack.pop() {
+            let node = &self.tree.nodes[at as usize];
+            if !inside(&node.bounds) {
+                continue;
+            }
+            if self.tree.is_leaf(node) {
+                for &t in &self.tree.items[node.start as usize..node.end as usize] {
+                    if t != s && inside(&self.boxes[t as usize]) {
+                        out.push(t);
+                    }
+                }
+            } else {
+                stack.push(node.left);
+                stack.push(node.left + 1);
+            }
+        }
+        out.sort_unstable();
+        out
+    }
+}
+
+enum Hit {
+    Miss,
+    /// The point is on the triangle.
+    On,
+    /// The ray crosses it ahead, its normal's x component of this sign.
+    Ahead(i8),
+}
+
+/// The ray from v (perturbed as in `winding_at`) along +x and a triangle.
+fn ray_hit(v: P3, t: &[P3; 3]) -> Hit {
+    let area = orient2d(t[0], t[1], t[2], 1, 2);
+    if area == 0 {
+        // Parallel to the ray: the perturbed ray misses it.
+        return Hit::Miss;
+    }
+    for k in 0..3 {
+        let (u, w) = (t[k], t[(k + 1) % 3]);
+        let mut s = orient2d(u, w, v, 1, 2);
+        if s == 0 {
+            // The perturbation's terms: −(w_z − u_z) ε + (w_y − u_y) ε².
+            s = match w[2].partial_cmp(&u[2]).expect("finite coordinates") {
+                std::cmp::Ordering::Greater => -1,
+                std::cmp::Ordering::Less => 1,
+                std::cmp::Ordering::Equal => {
+                    match w[1].partial_cmp(&u[1]).expect("finite coordinates") {
+                        std::cmp::Ordering::Greater => 1,
+                        std::cmp::Ordering::Less => -1,
+                        std::cmp::Ordering::Equal => return Hit::Miss,
+                    }
+                }
+            };
+        }
+        if s != area {
+            return Hit::Miss;
+        }
+    }
+    let side = orient3d(t[0], t[1], t[2], v);
+    if side == 0 {
+        return Hit::On;
+    }
+    if side != area {
+        Hit::Ahead(area)
+    } else {
+        Hit::Miss
+    }
+}
+
+#[cfg(test)]
+mod tests;
