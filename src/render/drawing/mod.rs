@@ -66,8 +66,87 @@ const OMEGA_COLOUR: &str = "#8a2be2";
 /// The centre-of-mass symbol's radius, px.
 pub const CG_RADIUS: f64 = 7.0;
 
-/// The body drawn: an SVG document.
+/// The body drawn: an SVG document, in memory (for tests; `render` writes
+/// it as it is made, `write_svg`).
 pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
+    let mut out = Vec::new();
+    write_svg(model, summary, o, &mut out).expect("invariant: writing to memory does not fail");
+    String::from_utf8(out).expect("invariant: the drawing is UTF-8")
+}
+
+/// The document as it is made: each element goes into a small buffer
+/// that is handed to the writer whenever it fills, so the document is
+/// never all in memory (only what is drawn of one view is remembered, to
+/// draw it once: `Drawn`).
+struct Sink<'w> {
+    s: String,
+    w: &'w mut dyn std::io::Write,
+    /// The first write that failed: the walks that follow write nothing.
+    error: Option<std::io::Error>,
+}
+
+impl Sink<'_> {
+    /// Bytes held before they are written.
+    const SPILL: usize = 1 << 16;
+
+    /// Hand the buffer to the writer once it is full (`all`: whatever it
+    /// holds).
+    fn spill(&mut self, all: bool) {
+        if self.s.len() < Self::SPILL && !all {
+            return;
+        }
+        if self.error.is_none()
+            && let Err(e) = self.w.write_all(self.s.as_bytes())
+        {
+            self.error = Some(e);
+        }
+        self.s.clear();
+    }
+}
+
+/// What one view has drawn: each element's text (its path data rounded to
+/// the drawing's resolution, 0.01 px) with the part it is a copy of, so
+/// that a copy whose outline another copy of the same part has drawn
+/// already (in the same place, or closer to it than the resolution) is
+/// drawn once. Bounded by what is drawn, not by the number of copies.
+///
+/// NOTE: copies of one part only (an array's, a mirror's, an included
+/// file's instances'): two parts written apart whose outlines meet in a
+/// view (a pair of wings seen edge-on) are each drawn, as they always
+/// were.
+#[derive(Default)]
+struct Drawn {
+    /// The part's address in the model (`Leaf::own`: the same for each of
+    /// its copies), then the element.
+    elements: std::collections::HashSet<String>,
+    key: String,
+    /// The copies not drawn again.
+    again: usize,
+}
+
+impl Drawn {
+    /// Write `element`, drawn for a copy of `part`, unless this view has
+    /// drawn it for another.
+    fn draw(&mut self, s: &mut String, part: usize, element: &str) {
+        self.key.clear();
+        let _ = write!(self.key, "{part:x} ");
+        self.key.push_str(element);
+        if self.elements.contains(self.key.as_str()) {
+            self.again += 1;
+        } else {
+            s.push_str(element);
+            self.elements.insert(self.key.clone());
+        }
+    }
+}
+
+/// The body drawn: an SVG document, written to `w` as it is made.
+pub fn write_svg(
+    model: &Model,
+    summary: &Summary,
+    o: &Options,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let survey = Survey::of(model);
     let body = Body::of(model, summary, o, survey.extent);
     let views: Vec<View> = o.view.map_or(View::ALL.to_vec(), |v| vec![v]);
@@ -77,11 +156,19 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         .map(|c| c.projector.scale)
         .fold(f64::INFINITY, f64::min);
     let drawn = |size: f64| size * min_scale >= 1.0;
-    let small = survey.sizes.iter().filter(|s| !drawn(**s)).count();
-    let legend = legend_lines(&survey, small, &body, o);
+    // NOTE: the legend's height is the document's first line, its words
+    // its last: whether a part is too small to draw is known from the
+    // smallest, how many are from the first view's walk.
+    let any_small = usize::from(!drawn(survey.smallest));
+    let lines = legend_lines(&survey, any_small, &body, o).len();
 
-    let height = GRID_HEIGHT + LINE * (legend.len() as f64 + 2.0);
-    let mut s = String::new();
+    let height = GRID_HEIGHT + LINE * (lines as f64 + 2.0);
+    let mut out = Sink {
+        s: String::new(),
+        w,
+        error: None,
+    };
+    let s = &mut out.s;
     let _ = writeln!(
         s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\">"
@@ -95,54 +182,93 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         s,
         "<rect width=\"{WIDTH}\" height=\"{height}\" fill=\"#fff\"/>"
     );
-    // NOTE: a walk per view, each written straight into the document:
-    // a view's parts held apart until the end would hold the SVG twice
+    // NOTE: a walk per view, each written straight out as it is made: a
+    // view's parts held apart until the end would hold the SVG twice
     // (187 MB for 100,000 parts); a walk costs a small part of that time.
     let mut d = String::new();
-    for cell in &cells {
+    let mut element = String::new();
+    let mut small = 0;
+    for (v, cell) in cells.iter().enumerate() {
         // The view's placing, for tools (and the tests): pixels per
         // length unit, and where the file's origin lies on the page.
+        let s = &mut out.s;
         let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
         let _ = write!(s, "{}", cell.projector.scale);
         s.push_str("\" data-origin=\"");
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
-        each_part(model, &mut |part, group| {
+        let mut seen = Drawn::default();
+        each_part(model, &mut |part, group, own| {
+            if out.error.is_some() {
+                return;
+            }
             let class = survey.keys.index[key(part, group)] % 9;
             let cut = if part.spec.removed { " cut" } else { "" };
             let outline = outline::of(part);
+            element.clear();
             match &outline {
                 Outline::Marker(kind, at) => {
-                    marker(&mut s, *kind, cell.projector.point(at), PALETTE[class], cut);
+                    marker(
+                        &mut element,
+                        *kind,
+                        cell.projector.point(at),
+                        PALETTE[class],
+                        cut,
+                    );
                 }
                 Outline::Pieces(pieces) => {
                     if !drawn(outline.size()) {
+                        small += usize::from(v == 0);
                         return;
                     }
                     d.clear();
                     pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                    let _ = writeln!(s, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                    let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
                 }
             }
+            seen.draw(&mut out.s, own, &element);
+            out.spill(false);
         });
-        symbols(&mut s, &cell.projector, &body, o);
-        frame(&mut s, cell, model.units.length);
+        let s = &mut out.s;
+        symbols(s, &cell.projector, &body, o);
+        frame(s, cell, model.units.length);
+        if seen.again > 0 {
+            // Beside the view's label (at most 32 characters).
+            let n = seen.again;
+            let plural = if n == 1 { "y" } else { "ies" };
+            text(
+                s,
+                [cell.at[0] + 260.0, cell.at[1] + 20.0],
+                &format!("{n} coincident cop{plural} not drawn again"),
+                None,
+            );
+        }
         s.push_str("</g>\n");
+        // Its outlines forgotten before the next view's are drawn.
+        drop(seen);
+        out.spill(false);
     }
-    write_legend(&mut s, &legend, cells.len() > 1);
-    s.push_str("</svg>\n");
-    s
+    let legend = legend_lines(&survey, small, &body, o);
+    debug_assert_eq!(legend.len(), lines, "the legend's height was known");
+    write_legend(&mut out.s, &legend, cells.len() > 1);
+    out.s.push_str("</svg>\n");
+    out.spill(true);
+    match out.error {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
 }
 
 /// What one walk of the parts finds before anything is drawn: the
 /// legend's keys and what it must explain, the box that holds the parts,
-/// and each outline's size (its largest extent), to count those that will
-/// be smaller than a pixel once the scale is known.
+/// and the smallest outline's size (its largest extent), to know whether
+/// any will be smaller than a pixel once the scale is known.
 struct Survey {
     keys: Keys,
     seen: Seen,
     extent: [V3; 2],
-    sizes: Vec<f64>,
+    /// NaN if any size is (never drawn, as a size below a pixel).
+    smallest: f64,
 }
 
 impl Survey {
@@ -151,15 +277,20 @@ impl Survey {
             keys: Keys::default(),
             seen: Seen::default(),
             extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
-            sizes: Vec::new(),
+            smallest: f64::INFINITY,
         };
-        each_part(model, &mut |part, group| {
+        each_part(model, &mut |part, group, _| {
             v.keys.index(key(part, group));
             v.seen.cut |= part.spec.removed;
             let outline = outline::of(part);
             match &outline {
                 Outline::Marker(kind, _) => v.seen.markers[*kind as usize] = true,
-                Outline::Pieces(_) => v.sizes.push(outline.size()),
+                Outline::Pieces(_) => {
+                    let size = outline.size();
+                    if !(size >= v.smallest) {
+                        v.smallest = size;
+                    }
+                }
             }
             let [lo, hi] = outline.extent();
             for k in 0..3 {
@@ -180,8 +311,10 @@ fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
 }
 
 /// Each part in file order with its group (its sub-assemblies' groups,
-/// then its own, joined by ` / `), if any.
-fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>)) {
+/// then its own, joined by ` / `), if any, and which part it is a copy of
+/// (the address of the part as its own file holds it: the same for each
+/// copy, distinct for parts written apart).
+fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>, usize)) {
     let mut stack: Vec<Option<Vec<String>>> = Vec::new();
     let mut path = String::new();
     model.each_event(&mut |e| match e {
@@ -198,7 +331,12 @@ fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>))
                 }
                 path.push_str(name);
             }
-            f(leaf.part, (!path.is_empty()).then_some(path.as_str()));
+            let own: *const crate::part::Part = leaf.own;
+            f(
+                leaf.part,
+                (!path.is_empty()).then_some(path.as_str()),
+                own as usize,
+            );
         }
     });
 }
