@@ -51,8 +51,10 @@ impl Sink {
 
     /// Source `id`'s row, complete.
     fn add(&mut self, id: usize, row: &[f64; W], label: &mut dyn FnMut() -> String) {
+        // The upper triangle: row[a] row[b] is row[b] row[a] to the bit,
+        // so the lower is its mirror (`covariance`).
         for (a, line) in self.cov.iter_mut().enumerate() {
-            for (b, x) in line.iter_mut().enumerate() {
+            for (b, x) in line.iter_mut().enumerate().skip(a) {
                 *x += row[a] * row[b];
             }
         }
@@ -250,7 +252,13 @@ pub(super) fn run(body: &Body<'_>, nominal: [f64; W]) -> Uncertainty {
         rows_in_order(body, Some(shared_rows(body)))
             .expect("invariant: with the shared rows known, the walk adds every row")
     });
-    let cov: Vec<Vec<f64>> = sink.cov.iter().map(|line| line.to_vec()).collect();
+    let cov: Vec<Vec<f64>> = (0..W)
+        .map(|a| {
+            (0..W)
+                .map(|b| sink.cov[a.min(b)][a.max(b)])
+                .collect()
+        })
+        .collect();
     let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
         sink.kept[o]
             .iter()
