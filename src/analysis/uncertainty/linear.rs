@@ -253,11 +253,7 @@ pub(super) fn run(body: &Body<'_>, nominal: [f64; W]) -> Uncertainty {
             .expect("invariant: with the shared rows known, the walk adds every row")
     });
     let cov: Vec<Vec<f64>> = (0..W)
-        .map(|a| {
-            (0..W)
-                .map(|b| sink.cov[a.min(b)][a.max(b)])
-                .collect()
-        })
+        .map(|a| (0..W).map(|b| sink.cov[a.min(b)][a.max(b)]).collect())
         .collect();
     let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
         sink.kept[o]

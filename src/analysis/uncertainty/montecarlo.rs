@@ -57,8 +57,8 @@ fn fixed(body: &Body<'_>) -> [Sums; 2] {
         }
         let at = At::of(body, &leaf);
         let own: M3<f64> = leaf.part.own_second_moment(at.m);
-        for v in 0..body.views.len() {
-            fixed[v].add_part(at.ks[v] * at.m, at.ds[v], &own);
+        for (v, sums) in fixed.iter_mut().enumerate().take(body.views.len()) {
+            sums.add_part(at.ks[v] * at.m, at.ds[v], &own);
         }
     });
     fixed
