@@ -15,9 +15,16 @@
 # (median of RUNS) and the render's peak RSS with GNU time. Everything
 # but the cargo build lives in a temporary directory, removed on exit.
 #
+# Issue 28, item 6: then 2,000,000 copies of a box in one place (a
+# 150-byte file: an `array` of step 0), drawn once per view with their
+# count: its time and peak RSS (GNU time, one run each of COPIES and
+# COPIES/4, to see the cost linear) and the SVG's size (a few kB, as for
+# one box). `CASE=copies` runs this case alone.
+#
 # Needs python3, hyperfine and GNU time (the latter two installed with
 # apt-get when missing, as root). Environment: PARTS (default 100000),
-# RUNS (default 5), WARMUP (default 1).
+# RUNS (default 5), WARMUP (default 1), COPIES (default 2000000), CASE
+# (`all`, default, or `copies`).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib.sh"
@@ -25,10 +32,26 @@ need_bench_tools "the part file"
 PARTS="${PARTS:-100000}"
 RUNS="${RUNS:-5}"
 WARMUP="${WARMUP:-1}"
+COPIES="${COPIES:-2000000}"
+CASE="${CASE:-all}"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/massprop-render.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --locked --quiet --manifest-path "$here/../Cargo.toml" --bin massprop
 cp "$here/../target/release/massprop" "$tmp/massprop"
+
+# copies N: render N coincident copies of a box; time, peak RSS, SVG size.
+copies() {
+    printf '[[part]]\nshape = "box"\nmass = 1\nsize = [0.1, 0.2, 0.3]\ncenter = [0, 0, 0]\narray = { count = %d, step = [0, 0, 0] }\n' "$1" > "$tmp/copies.toml"
+    /usr/bin/time -f '%e %U %M' -o "$tmp/time" "$tmp/massprop" render "$tmp/copies.toml" -o "$tmp/copies.svg"
+    read -r wall user rss < "$tmp/time"
+    printf '%d copies in one place (%d-byte file): render %s s (%s s user), peak RSS %.0f MB, SVG %d bytes; %s\n' \
+        "$1" "$(wc -c < "$tmp/copies.toml")" "$wall" "$user" "$((rss / 1024))" "$(wc -c < "$tmp/copies.svg")" \
+        "$(grep -o '[0-9]* coincident cop[a-z]* not drawn again' "$tmp/copies.svg" | head -1)"
+}
+copies "$((COPIES / 4))"
+copies "$COPIES"
+[ "$CASE" = copies ] && exit 0
+
 python3 - "$tmp/parts.toml" "$PARTS" << 'PY'
 import random, sys
 out, n = sys.argv[1], int(sys.argv[2])

@@ -12,15 +12,45 @@
 # linear` (target: within 3× the plain report) and `--uncertainty
 # montecarlo` of 10,000 samples (target: about a second for 1,000 parts
 # on two cores), and linear on the large file.
+#
+# Issue 28, item 6: then 2,000,000 toleranced copies of a box (a 150-byte
+# file: an `array` of step 0, its mass and a size ± each), and a quarter
+# of them, with `--uncertainty linear` and `--uncertainty montecarlo
+# --samples SAMPLES` (default 20: the cost is samples × copies): time and
+# peak RSS (GNU time, one run each; the target: within 64 MiB, and time
+# linear in the copies).
+# `CASE=copies` runs these alone. Environment: COPIES (default 2000000),
+# SAMPLES (default 20), CASE (`all`, default, or `copies`).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib.sh"
 need_bench_tools "the part files"
 n="${1:-1000}"
+COPIES="${COPIES:-2000000}"
+SAMPLES="${SAMPLES:-20}"
+CASE="${CASE:-all}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
 bin="$here/../target/release/massprop"
+
+# copies N ARGS…: report N toleranced copies with ARGS; time and peak RSS.
+copies() {
+    local count="$1"
+    shift
+    printf '[[part]]\nshape = "box"\nmass = "1 kg ± 0.1 kg"\nsize = ["0.1 m ± 1 mm", 0.2, 0.3]\ncenter = [0, 0, 0]\narray = { count = %d, step = [0, 0, 0] }\n' \
+        "$count" > "$tmp/copies.toml"
+    /usr/bin/time -f '%e %U %M' -o "$tmp/time" "$bin" report --format json "$tmp/copies.toml" "$@" > "$tmp/out.json"
+    read -r wall user rss < "$tmp/time"
+    printf '%d copies (%d-byte file), %s: %s s (%s s user), peak RSS %.1f MiB\n' \
+        "$count" "$(wc -c < "$tmp/copies.toml")" "$*" "$wall" "$user" "$(awk -v k="$rss" 'BEGIN { print k / 1024 }')"
+}
+for count in "$((COPIES / 4))" "$COPIES"; do
+    copies "$count"
+    copies "$count" --uncertainty linear
+    copies "$count" --uncertainty montecarlo --samples "$SAMPLES"
+done
+[ "$CASE" = copies ] && exit 0
 python3 - "$tmp" "$n" <<'PY'
 import random, sys
 out, n = sys.argv[1], int(sys.argv[2])

@@ -22,16 +22,15 @@
 
 use super::Products;
 use super::summary::Summary;
-use crate::dual::Dual;
 use crate::model::Model;
 use crate::model::expect::Target;
-use crate::model::walk::Leaf;
 use crate::numeric::{M3, Real};
-use crate::part::{Fixed, Seed, Slot, Spec, physics_in};
 use serde::Serialize;
 
+mod linear;
 mod montecarlo;
-use montecarlo::{Sampled, monte_carlo_run};
+mod walk;
+use walk::Body;
 
 /// How the tolerances are propagated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -161,17 +160,6 @@ pub struct Uncertainty {
 pub struct Predicted {
     pub outputs: Vec<Output>,
     pub covariance: Vec<Vec<f64>>,
-}
-
-/// A source of uncertainty met in a walk: its label, and how the body's
-/// sums move with its standardised variable.
-struct Source {
-    label: String,
-    /// How the bodies' sums move with it (file units): the basic's, the
-    /// predicted's.
-    d: [Sums; 2],
-    /// Monte Carlo: its spread.
-    uniform: bool,
 }
 
 /// The body's sums about c₀, or their derivatives.
@@ -317,25 +305,6 @@ impl Reported {
     }
 }
 
-/// A toleranced part for Monte Carlo: its own spec, how its numbers move,
-/// and the affine map that places its figures.
-struct Moving {
-    shape: crate::shapes::Shape,
-    spec: Spec,
-    /// (slot, source index, rate).
-    deps: Vec<(Slot, usize, f64)>,
-    /// Its sub-assemblies' origins' tolerances: (source index, the shift
-    /// per unit of its variable, root file's frame and units).
-    shifts: Vec<(usize, [f64; 3])>,
-    linear: crate::model::frame::Linear,
-    /// Where its own centroid's image lies less the map of it: c' =
-    /// `linear.dir(c)` + `shift` − c₀ (file units of the root), about
-    /// each body's centre.
-    shift: [[f64; 3]; 2],
-    /// 1 + its growth allowance: its mass in the predicted body.
-    grow: f64,
-}
-
 /// One body whose outputs are propagated: how they are reported, its
 /// nominal centre (file units) and mass (file units).
 struct View {
@@ -385,117 +354,11 @@ pub fn propagate(
     let mut views = vec![View::new(model, summary)];
     views.extend(predicted.map(|p| View::new(model, p)));
     let allowances = predicted.map(|_| super::budget::allowances(model));
-    let mut sources: Vec<Source> = Vec::new();
-    let mut index: std::collections::HashMap<u64, usize> = Default::default();
-    let mut fixed = [Sums::default(); 2];
-    let mut moving: Vec<Moving> = Vec::new();
-    let monte_carlo = matches!(method, Method::MonteCarlo { .. });
-    model.each_part(&mut |leaf: Leaf<'_>| {
-        let placed = leaf.part;
-        let m: f64 = placed.mass();
-        let cen = placed.centroid();
-        // Its centroid from each body's pivot, and its mass's factor there.
-        let mut ds = [[0.0; 3]; 2];
-        for (d, v) in ds.iter_mut().zip(&views) {
-            *d = std::array::from_fn(|i| (cen[i] - crate::numeric::DD::of(v.c0[i])).f64());
-        }
-        let grow = 1.0 + allowances.as_ref().map_or(0.0, |a| a[leaf.index]);
-        let ks = [1.0, grow];
-        // The source of a key, met for the first time or again.
-        let mut source_of = |key: u64, label: &dyn Fn() -> String, spread| {
-            *index.entry(key).or_insert_with(|| {
-                sources.push(Source {
-                    label: label(),
-                    d: [Sums::default(); 2],
-                    uniform: spread == crate::model::tolerance::Spread::Uniform,
-                });
-                sources.len() - 1
-            })
-        };
-        // Its sub-assemblies' origins' tolerances move it whole.
-        let mut shifts: Vec<(usize, [f64; 3])> = Vec::new();
-        leaf.placing.shifts(&mut |s| {
-            let label = || format!("{}: {} ± {}", s.include, s.source.key, s.source.written);
-            shifts.push((source_of(s.key, &label, s.source.spread), s.dir));
-        });
-        let no_deps: &[crate::part::Dep] = &[];
-        let deps = leaf.own.tol.as_deref().unwrap_or(no_deps);
-        if deps.is_empty() && shifts.is_empty() {
-            if monte_carlo {
-                let own: M3<f64> = placed.own_second_moment(m);
-                for v in 0..views.len() {
-                    fixed[v].add_part(ks[v] * m, ds[v], &own);
-                }
-            }
-            return;
-        }
-        let file_sources = &leaf.placing.model.sources;
-        let mut ids = Vec::with_capacity(deps.len());
-        for dep in deps {
-            let s = &file_sources[dep.source as usize];
-            // A parameter's or a material's source is one per instance of
-            // its file, a part's own one per copy of the part.
-            let instance = if s.shared {
-                leaf.placing.file
-            } else {
-                leaf.placing.part
-            };
-            let key = crate::model::walk::mix(instance, u64::from(dep.source), 0);
-            let label = || match (s.shared, placed.assembly.last()) {
-                (false, _) => format!("{}: {} ± {}", placed.name, s.key, s.written),
-                (true, Some(file)) => format!("{file}: {} ± {}", s.key, s.written),
-                (true, None) => format!("{} ± {}", s.key, s.written),
-            };
-            ids.push(source_of(key, &label, s.spread));
-        }
-        let linear = leaf.placing.linear();
-        if monte_carlo {
-            let (_, own_c, _) = physics_in::<f64, Fixed>(leaf.own.shape, &leaf.own.spec, Fixed);
-            let mapped = linear.dir(own_c);
-            moving.push(Moving {
-                shape: leaf.own.shape,
-                spec: leaf.own.spec.clone(),
-                deps: deps
-                    .iter()
-                    .zip(&ids)
-                    .map(|(d, id)| (d.slot, *id, d.rate))
-                    .collect(),
-                shifts,
-                linear,
-                shift: ds.map(|d| std::array::from_fn(|i| d[i] - mapped[i])),
-                grow,
-            });
-            return;
-        }
-        // Linear: a shift v moves the centroid by v, the rest stays.
-        for (id, v) in &shifts {
-            for b in 0..views.len() {
-                let per = moved(0.0, *v, &[[0.0; 3]; 3], m, ds[b], ks[b]);
-                sources[*id].d[b].plus(&per, 1.0);
-            }
-        }
-        // One dual evaluation per slot the part's own tolerances move.
-        let mut done: Vec<Slot> = Vec::new();
-        for dep in deps {
-            if done.contains(&dep.slot) {
-                continue;
-            }
-            done.push(dep.slot);
-            let (dm, dc, dj) =
-                physics_in::<Dual<f64>, Seed>(leaf.own.shape, &leaf.own.spec, Seed(dep.slot));
-            let dm = linear.mass * dm.d;
-            let dc = linear.dir(dc.map(|x| x.d));
-            let dj = linear.second(&dj.map(|r| r.map(|x| x.d)));
-            for b in 0..views.len() {
-                let per = moved(dm, dc, &dj, m, ds[b], ks[b]);
-                for (other, id) in deps.iter().zip(&ids) {
-                    if other.slot == dep.slot {
-                        sources[*id].d[b].plus(&per, other.rate);
-                    }
-                }
-            }
-        }
-    });
+    let body = Body {
+        model,
+        views: &views,
+        allowances: allowances.as_deref(),
+    };
     let mut nominal = [0.0; W];
     nominal[..N].copy_from_slice(&nominal_outputs(summary));
     if let Some(p) = predicted {
@@ -528,7 +391,7 @@ pub fn propagate(
     }
     let (mut out, outside) = match method {
         Method::Linear => {
-            let u = linear(&views, &sources, nominal);
+            let u = linear::run(&body, nominal);
             let sigma = |o: usize| {
                 if o < N {
                     u.outputs[o].sigma
@@ -543,13 +406,7 @@ pub fn propagate(
             (u, p)
         }
         Method::MonteCarlo { samples, seed } => {
-            let sampled = Sampled {
-                sources: &sources,
-                moving: &moving,
-                fixed: &fixed,
-                views: &views,
-            };
-            let (u, all) = monte_carlo_run(&sampled, nominal, (samples, seed));
+            let (u, all) = montecarlo::run(&body, nominal, (samples, seed));
             if all.is_empty() {
                 return Err(crate::diag::Diagnostic::plain(format!(
                     "{}: every one of the {samples} Monte Carlo samples was left out: in each, a part's size, radius, density or mass was drawn to zero or below (or an inner radius past its outer)",
@@ -719,52 +576,6 @@ fn split(
         }
     });
     (outputs, covariance, predicted)
-}
-
-fn linear(views: &[View], sources: &[Source], nominal: [f64; W]) -> Uncertainty {
-    let rows: Vec<[f64; W]> = sources
-        .iter()
-        .map(|s| {
-            let mut row = [0.0; W];
-            for (b, v) in views.iter().enumerate() {
-                row[b * N..(b + 1) * N].copy_from_slice(&v.reported.linear(&s.d[b], v.m));
-            }
-            row
-        })
-        .collect();
-    let cov: Vec<Vec<f64>> = (0..W)
-        .map(|a| {
-            (0..W)
-                .map(|b| rows.iter().map(|r| r[a] * r[b]).sum())
-                .collect()
-        })
-        .collect();
-    let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
-        rows.iter()
-            .enumerate()
-            .map(|(k, r)| (k, if var > 0.0 { r[o] * r[o] / var } else { 0.0 }))
-            .collect()
-    };
-    let (outputs, covariance, predicted) = split(
-        views.len(),
-        &nominal,
-        &cov,
-        &share,
-        &|_| (None, None),
-        &|k| sources[k].label.clone(),
-    );
-    Uncertainty {
-        method: "linear",
-        samples: None,
-        seed: None,
-        rejected: None,
-        sources: sources.len(),
-        outputs,
-        covariance,
-        predicted,
-        exceed: Vec::new(),
-        equal_moments: Vec::new(),
-    }
 }
 
 /// The output an `[expect]` target reads, if it is one.

@@ -33,6 +33,9 @@ pub enum Stdout {
         /// Where it goes: standard output's, or `-o`'s file's.
         style: Style,
     },
+    /// A drawing (`render`), written as it is made: its document is never
+    /// all in memory.
+    Drawing(Box<render::Drawing>),
 }
 
 impl Stdout {
@@ -51,6 +54,7 @@ impl Stdout {
                 *style,
                 w,
             ),
+            Stdout::Drawing(d) => d.write_to(w),
         }
     }
 

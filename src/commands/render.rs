@@ -33,8 +33,33 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         omega: s.omega.map(to_file),
         title,
     };
-    let svg = drawing::svg(&loaded.model, s, &options);
-    let mut out = Outcome::ok(svg, super::files_of(&loaded));
-    out.stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
-    Ok(out)
+    let read = super::files_of(&loaded);
+    let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
+    Ok(Outcome {
+        stdout: super::Stdout::Drawing(Box::new(Drawing {
+            model: loaded.model,
+            summary: loaded.summary,
+            options,
+        })),
+        stderr,
+        status: 0,
+        read,
+    })
+}
+
+/// A drawing handed over unwritten: written as it is made
+/// (`drawing::write_svg`), to standard output or `-o`'s file, so that its
+/// document is never all in memory.
+#[derive(Debug, Clone)]
+pub struct Drawing {
+    model: crate::model::Model,
+    summary: crate::analysis::summary::Summary,
+    options: drawing::Options,
+}
+
+impl Drawing {
+    /// Write the SVG to `w`.
+    pub fn write_to(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        drawing::write_svg(&self.model, &self.summary, &self.options, w)
+    }
 }

@@ -3,6 +3,7 @@
 
 mod arrays;
 mod auto;
+mod bounded;
 mod bounds;
 mod budget;
 mod channels;

@@ -1,9 +1,23 @@
 //! Monte Carlo sampling of the tolerances: counter-based draws (the same
-//! on every run and core), blocks of samples on every core combined in
-//! order, and the statistics of the outputs.
+//! on every run and core), streamed over the parts and the samples.
+//!
+//! NOTE: nothing is held per part or per source. A walk of the body
+//! draws a chunk of samples, each toleranced part evaluated in each
+//! sample as the walk meets it (the parts that no tolerance moves summed
+//! once, first); the chunks go to every core. Each sample's outputs are
+//! kept (13 or 26 numbers: the percentiles need them). A last walk meets
+//! the sources again, in the same order, and forms each one's
+//! contribution from the samples kept and its draws made again (a draw
+//! is a function of the seed, the sample and the source), keeping the
+//! largest three per output. Every sum is formed in the order it always
+//! was: the same bits.
 
-use super::{Moving, N, Source, Sums, Uncertainty, View, W, split};
+use super::walk::{At, Body, Numbering, dep_label};
+use super::{N, Sums, TOP, Uncertainty, W, split};
+use crate::numeric::M3;
 use crate::part::{Fixed, physics_in};
+use std::collections::HashMap;
+use std::ops::Range;
 
 /// A uniform number in (0, 1) from a key: the same for the same key on
 /// every run and core (a counter-based generator: splitmix64's finaliser).
@@ -23,143 +37,214 @@ fn draw(seed: u64, s: usize, k: usize, uniform_spread: bool) -> f64 {
     (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
 
-/// A block's samples' outputs, its sums for the contributions (Σ (out −
-/// nominal) z per source, Σ z last) and its samples left out.
-type Block = (Vec<[f64; W]>, Vec<[f64; W + 1]>, usize);
-
-/// Samples per block: blocks are drawn on every core and combined in
-/// order, so the result is the same on any number of cores.
+/// Samples per block: each source's sums for the contributions are
+/// formed block by block and the blocks added in order (the grouping of
+/// those sums: the same bits however the samples are shared out).
 const BLOCK: usize = 256;
+/// Samples drawn in one walk of the body at most: each holds its body's
+/// sums while the walk goes on.
+const CHUNK: usize = 4096;
+/// Sources whose contributions are formed together, on every core.
+const BATCH: usize = 4096;
 
-/// What a Monte Carlo run samples: the sources, the parts they move, the
-/// sums of the parts they do not, and the bodies (basic, predicted).
-pub(super) struct Sampled<'a> {
-    pub(super) sources: &'a [Source],
-    pub(super) moving: &'a [Moving],
-    pub(super) fixed: &'a [Sums; 2],
-    pub(super) views: &'a [View],
+/// The parts that no tolerance moves, summed once (in walk order).
+fn fixed(body: &Body<'_>) -> [Sums; 2] {
+    let mut fixed = [Sums::default(); 2];
+    let mut numbering = Numbering::default();
+    body.model.each_part(&mut |leaf| {
+        if !numbering.meet(&leaf).is_empty() {
+            return;
+        }
+        let at = At::of(body, &leaf);
+        let own: M3<f64> = leaf.part.own_second_moment(at.m);
+        for (v, sums) in fixed.iter_mut().enumerate().take(body.views.len()) {
+            sums.add_part(at.ks[v] * at.m, at.ds[v], &own);
+        }
+    });
+    fixed
 }
 
-/// One sample's outputs of each body, or none when a drawn part is no
-/// body (a size, radius, mass or density below zero, or to zero from
-/// above; an inner radius past the outer).
-fn sample(sampled: &Sampled<'_>, z: &[f64]) -> Option<[f64; W]> {
-    let mut sums = *sampled.fixed;
-    for part in sampled.moving {
-        let mut spec = part.spec.clone();
-        for &(slot, k, rate) in &part.deps {
-            let x = spec.number_mut(slot).expect("a recorded slot exists");
-            let before = *x;
-            *x += rate * z[k];
-            if !slot.is_signed() && (*x < 0.0 || (*x == 0.0 && before > 0.0)) {
+/// Samples `range`'s outputs of each body (none for a sample in which a
+/// drawn part is no body: a size, radius, mass or density below zero, or
+/// to zero from above; an inner radius past the outer): one walk, each
+/// toleranced part drawn in every sample as it is met.
+fn chunk(
+    body: &Body<'_>,
+    fixed: &[Sums; 2],
+    seed: u64,
+    range: Range<usize>,
+) -> Vec<Option<[f64; W]>> {
+    let views = body.views.len();
+    let mut sums = vec![*fixed; range.len()];
+    let mut alive = vec![true; range.len()];
+    let mut numbering = Numbering::default();
+    body.model.each_part(&mut |leaf| {
+        let meets = numbering.meet(&leaf);
+        if meets.is_empty() {
+            return;
+        }
+        let at = At::of(body, &leaf);
+        let l = leaf.placing.linear();
+        let (_, own_c, _) = physics_in::<f64, Fixed>(leaf.own.shape, &leaf.own.spec, Fixed);
+        let mapped = l.dir(own_c);
+        // Where its own centroid's image lies less the map of it: c' =
+        // `l.dir(c)` + `shift` − c₀, about each body's centre.
+        let shift: [[f64; 3]; 2] = at.ds.map(|d| std::array::from_fn(|i| d[i] - mapped[i]));
+        'sample: for (j, s) in range.clone().enumerate() {
+            if !alive[j] {
+                continue;
+            }
+            let mut spec = leaf.own.spec.clone();
+            for (dep, met) in &meets.deps {
+                let x = spec.number_mut(dep.slot).expect("a recorded slot exists");
+                let before = *x;
+                *x += dep.rate * draw(seed, s, met.id, met.uniform);
+                if !dep.slot.is_signed() && (*x < 0.0 || (*x == 0.0 && before > 0.0)) {
+                    alive[j] = false;
+                    continue 'sample;
+                }
+            }
+            let (m, c, jm) = physics_in::<f64, Fixed>(leaf.own.shape, &spec, Fixed);
+            let sign = if spec.removed { -1.0 } else { 1.0 };
+            if !(m * sign > 0.0) || (0..3).any(|a| jm[a][a] * sign < 0.0) {
+                alive[j] = false;
+                continue;
+            }
+            let mc = l.dir(c);
+            let jm = l.second(&jm);
+            for (b, k) in at.ks.into_iter().enumerate().take(views) {
+                let mut d: [f64; 3] = std::array::from_fn(|i| mc[i] + shift[b][i]);
+                for (met, v, _) in &meets.shifts {
+                    let z = draw(seed, s, met.id, met.uniform);
+                    for i in 0..3 {
+                        d[i] += z * v[i];
+                    }
+                }
+                sums[j][b].add_part(k * l.mass * m, d, &jm);
+            }
+        }
+    });
+    sums.iter()
+        .zip(alive)
+        .map(|(sums, alive)| {
+            if !alive {
                 return None;
             }
-        }
-        let (m, c, j) = physics_in::<f64, Fixed>(part.shape, &spec, Fixed);
-        let sign = if spec.removed { -1.0 } else { 1.0 };
-        if !(m * sign > 0.0) || (0..3).any(|a| j[a][a] * sign < 0.0) {
-            return None;
-        }
-        let l = &part.linear;
-        let mc = l.dir(c);
-        let j = l.second(&j);
-        for (b, k) in [1.0, part.grow]
-            .into_iter()
-            .enumerate()
-            .take(sampled.views.len())
-        {
-            let mut d: [f64; 3] = std::array::from_fn(|i| mc[i] + part.shift[b][i]);
-            for &(s, v) in &part.shifts {
-                for i in 0..3 {
-                    d[i] += z[s] * v[i];
-                }
+            let mut out = [0.0; W];
+            for (b, v) in body.views.iter().enumerate() {
+                let c0 = v.c0.map(|x| x * v.reported.length);
+                out[b * N..(b + 1) * N].copy_from_slice(&v.reported.outputs(&sums[b], c0)?);
             }
-            sums[b].add_part(k * l.mass * m, d, &j);
-        }
-    }
-    let mut out = [0.0; W];
-    for (b, v) in sampled.views.iter().enumerate() {
-        let c0 = v.c0.map(|x| x * v.reported.length);
-        out[b * N..(b + 1) * N].copy_from_slice(&v.reported.outputs(&sums[b], c0)?);
-    }
-    Some(out)
+            Some(out)
+        })
+        .collect()
 }
 
-pub(super) fn monte_carlo_run(
-    sampled: &Sampled<'_>,
-    nominal: [f64; W],
-    (samples, seed): (usize, u64),
-) -> (Uncertainty, Vec<[f64; W]>) {
-    let sources = sampled.sources;
-    let blocks = samples.div_ceil(BLOCK);
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    let run_block = |b: usize| -> Block {
-        let mut outs = Vec::with_capacity(BLOCK);
-        let mut cov = vec![[0.0; W + 1]; sources.len()];
-        let mut rejected = 0;
-        let mut z = vec![0.0; sources.len()];
-        for s in b * BLOCK..((b + 1) * BLOCK).min(samples) {
-            for (k, src) in sources.iter().enumerate() {
-                z[k] = draw(seed, s, k, src.uniform);
-            }
-            match sample(sampled, &z) {
-                Some(o) => {
-                    // Σ (out − nominal) z and, in the last column, Σ z:
-                    // centred on the nominal value so that the sums keep
-                    // the digits of the deviations.
-                    for (k, row) in cov.iter_mut().enumerate() {
-                        for (r, (v, n)) in row.iter_mut().zip(o.iter().zip(&nominal)) {
-                            *r += (v - n) * z[k];
-                        }
-                        row[W] += z[k];
-                    }
-                    outs.push(o);
-                }
-                None => rejected += 1,
-            }
-        }
-        (outs, cov, rejected)
-    };
+/// `f(i)` for each of `0..n` on every core, in order.
+fn on_every_core<T: Send>(n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
     let workers = std::thread::available_parallelism()
         .map_or(1, usize::from)
-        .min(blocks.max(1));
-    let mut results: Vec<Option<Block>> = vec![None; blocks];
+        .min(n.max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let mut results: Vec<Option<T>> = (0..n).map(|_| None).collect();
     std::thread::scope(|scope| {
         let handles: Vec<_> = (0..workers)
             .map(|_| {
                 scope.spawn(|| {
                     let mut mine = Vec::new();
                     loop {
-                        let b = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                        if b >= blocks {
+                        let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                        if i >= n {
                             break;
                         }
-                        mine.push((b, run_block(b)));
+                        mine.push((i, f(i)));
                     }
                     mine
                 })
             })
             .collect();
         for h in handles {
-            for (b, r) in h.join().expect("a Monte Carlo worker does not panic") {
-                results[b] = Some(r);
+            for (i, r) in h.join().expect("a Monte Carlo worker does not panic") {
+                results[i] = Some(r);
             }
         }
     });
-    let mut all: Vec<[f64; W]> = Vec::with_capacity(samples);
-    let mut cov = vec![[0.0; W + 1]; sources.len()];
-    let mut rejected = 0;
-    for (outs, c, r) in results.into_iter().flatten() {
-        all.extend(outs);
-        for (acc, add) in cov.iter_mut().zip(&c) {
-            for (a, x) in acc.iter_mut().zip(add) {
+    results
+        .into_iter()
+        .map(|r| r.expect("invariant: every task ran"))
+        .collect()
+}
+
+/// The samples' outputs kept (at most `--samples` of them) for the
+/// statistics and the sources' contributions.
+struct Kept {
+    /// The samples that make a body: their numbers and outputs.
+    at: Vec<usize>,
+    all: Vec<[f64; W]>,
+}
+
+impl Kept {
+    /// Source `k`'s sums for its contribution: Σ (out − nominal) z over
+    /// the samples kept and, last, Σ z, block by block, the blocks added
+    /// in order.
+    fn sums(&self, seed: u64, k: usize, uniform: bool, nominal: &[f64; W]) -> [f64; W + 1] {
+        let mut acc = [0.0; W + 1];
+        let mut i = 0;
+        while i < self.at.len() {
+            let block = self.at[i] / BLOCK;
+            let mut row = [0.0; W + 1];
+            while i < self.at.len() && self.at[i] / BLOCK == block {
+                let z = draw(seed, self.at[i], k, uniform);
+                // Centred on the nominal value, so that the sums keep the
+                // digits of the deviations.
+                for (r, (v, n)) in row.iter_mut().zip(self.all[i].iter().zip(nominal)) {
+                    *r += (v - n) * z;
+                }
+                row[W] += z;
+                i += 1;
+            }
+            for (a, x) in acc.iter_mut().zip(&row) {
                 *a += x;
             }
         }
-        rejected += r;
+        acc
     }
+}
+
+/// A source waiting for its contribution: number, spread, label.
+type Waiting = (usize, bool, String);
+
+pub(super) fn run(
+    body: &Body<'_>,
+    nominal: [f64; W],
+    (samples, seed): (usize, u64),
+) -> (Uncertainty, Vec<[f64; W]>) {
+    let fixed = fixed(body);
+    let workers = std::thread::available_parallelism().map_or(1, usize::from);
+    // Enough chunks for every core, none larger than `CHUNK`.
+    let chunks = samples.div_ceil(CHUNK).max(workers).div_ceil(workers) * workers;
+    let size = samples.div_ceil(chunks).max(1);
+    let chunks = samples.div_ceil(size);
+    let outs = on_every_core(chunks, &|c| {
+        chunk(body, &fixed, seed, c * size..((c + 1) * size).min(samples))
+    });
+    let mut kept = Kept {
+        at: Vec::new(),
+        all: Vec::with_capacity(samples),
+    };
+    let mut rejected = 0;
+    for (s, o) in outs.into_iter().flatten().enumerate() {
+        match o {
+            Some(o) => {
+                kept.at.push(s);
+                kept.all.push(o);
+            }
+            None => rejected += 1,
+        }
+    }
+    let all = &kept.all;
     let n = all.len();
-    let width = N * sampled.views.len();
+    let width = N * body.views.len();
     let mean: [f64; W] =
         std::array::from_fn(|o| all.iter().map(|r| r[o]).sum::<f64>() / n.max(1) as f64);
     let covariance: Vec<Vec<f64>> = (0..W)
@@ -178,23 +263,61 @@ pub(super) fn monte_carlo_run(
         })
         .collect();
     // cov(out, z) estimates ∂out/∂z (E z = 0, var z = 1): its square over
-    // the variance is the source's share.
-    let share = |o: usize, var: f64| -> Vec<(usize, f64)> {
-        cov.iter()
-            .enumerate()
-            .map(|(k, c)| {
+    // the variance is the source's share. Each output keeps its `TOP`
+    // largest, the first met among equals, as the sources stream by.
+    let mut best: Vec<Vec<(usize, f64)>> = vec![Vec::new(); W];
+    let mut labels: HashMap<usize, String> = HashMap::new();
+    let mut weigh = |batch: &mut Vec<Waiting>| {
+        let sums = on_every_core(batch.len().div_ceil(64), &|c| {
+            batch[c * 64..((c + 1) * 64).min(batch.len())]
+                .iter()
+                .map(|(k, uniform, _)| kept.sums(seed, *k, *uniform, &nominal))
+                .collect::<Vec<_>>()
+        });
+        for ((k, _, label), c) in batch.drain(..).zip(sums.into_iter().flatten()) {
+            let mut entered = false;
+            for (o, best) in best.iter_mut().enumerate() {
+                let var = covariance[o][o];
                 let g = (c[o] - (mean[o] - nominal[o]) * c[W]) / n.max(1) as f64;
-                (
-                    k,
-                    if var > 0.0 {
-                        (g * g / var).min(1.0)
-                    } else {
-                        0.0
-                    },
-                )
-            })
-            .collect()
+                let share = if var > 0.0 {
+                    (g * g / var).min(1.0)
+                } else {
+                    0.0
+                };
+                if !(share > 0.0) || (best.len() == TOP && !(share > best[TOP - 1].1)) {
+                    continue;
+                }
+                let at = best.partition_point(|(_, s)| *s >= share);
+                best.insert(at, (k, share));
+                best.truncate(TOP);
+                entered = true;
+            }
+            if entered {
+                labels.insert(k, label);
+            }
+        }
+        labels.retain(|k, _| best.iter().flatten().any(|(j, _)| j == k));
     };
+    let mut numbering = Numbering::default();
+    let mut batch: Vec<Waiting> = Vec::with_capacity(BATCH);
+    body.model.each_part(&mut |leaf| {
+        let meets = numbering.meet(&leaf);
+        for (met, _, label) in &meets.shifts {
+            if met.new {
+                batch.push((met.id, met.uniform, label.clone().unwrap_or_default()));
+            }
+        }
+        for (dep, met) in &meets.deps {
+            if met.new {
+                batch.push((met.id, met.uniform, dep_label(&leaf, dep)));
+            }
+        }
+        if batch.len() >= BATCH {
+            weigh(&mut batch);
+        }
+    });
+    weigh(&mut batch);
+    let share = |o: usize, _var: f64| best[o].clone();
     let stats = |o: usize| {
         let mut v: Vec<f64> = all.iter().map(|r| r[o]).collect();
         v.sort_by(f64::total_cmp);
@@ -208,26 +331,26 @@ pub(super) fn monte_carlo_run(
         )
     };
     let (outputs, covariance, predicted) = split(
-        sampled.views.len(),
+        body.views.len(),
         &nominal,
         &covariance,
         &share,
         &stats,
-        &|k| sources[k].label.clone(),
+        &|k| labels[&k].clone(),
     );
     let u = Uncertainty {
         method: "montecarlo",
         samples: Some(samples),
         seed: Some(seed),
         rejected: Some(rejected),
-        sources: sources.len(),
+        sources: numbering.count(),
         outputs,
         covariance,
         predicted,
         exceed: Vec::new(),
         equal_moments: Vec::new(),
     };
-    (u, all)
+    (u, kept.all)
 }
 
 /// The p-quantile of sorted values (linear between order statistics).

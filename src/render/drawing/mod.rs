@@ -6,7 +6,9 @@
 //! - `outline`: each part's outline in 3-D (the one place a shape's look
 //!   is decided);
 //! - `view`: the views, the projection, each piece's silhouette as path
-//!   data.
+//!   data;
+//! - `walks`: what the walks keep (the survey, the document's buffer,
+//!   what a view has drawn, to draw copies once).
 //!
 //! Deterministic: numbers to two decimals in pixels, parts in file order,
 //! nothing from the clock or the machine; a snapshot test pins the
@@ -14,16 +16,16 @@
 
 pub mod outline;
 pub mod view;
+mod walks;
 
 use crate::analysis::summary::Summary;
 use crate::model::Model;
-use crate::model::walk::Event;
 use crate::units::Dim;
 use outline::{Marker, Outline, V3};
-use std::collections::HashMap;
 use std::fmt::Write as _;
 pub use view::View;
 use view::{Projector, num, pair};
+use walks::{Drawn, Last, Sink, Survey, each_part, key};
 
 /// What to draw besides the body.
 #[derive(Debug, Clone, Default)]
@@ -66,8 +68,21 @@ const OMEGA_COLOUR: &str = "#8a2be2";
 /// The centre-of-mass symbol's radius, px.
 pub const CG_RADIUS: f64 = 7.0;
 
-/// The body drawn: an SVG document.
+/// The body drawn: an SVG document, in memory (for tests; `render` writes
+/// it as it is made, `write_svg`).
 pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
+    let mut out = Vec::new();
+    write_svg(model, summary, o, &mut out).expect("invariant: writing to memory does not fail");
+    String::from_utf8(out).expect("invariant: the drawing is UTF-8")
+}
+
+/// The body drawn: an SVG document, written to `w` as it is made.
+pub fn write_svg(
+    model: &Model,
+    summary: &Summary,
+    o: &Options,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
     let survey = Survey::of(model);
     let body = Body::of(model, summary, o, survey.extent);
     let views: Vec<View> = o.view.map_or(View::ALL.to_vec(), |v| vec![v]);
@@ -77,11 +92,19 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         .map(|c| c.projector.scale)
         .fold(f64::INFINITY, f64::min);
     let drawn = |size: f64| size * min_scale >= 1.0;
-    let small = survey.sizes.iter().filter(|s| !drawn(**s)).count();
-    let legend = legend_lines(&survey, small, &body, o);
+    // NOTE: the legend's height is the document's first line, its words
+    // its last: whether a part is too small to draw is known from the
+    // smallest, how many are from the first view's walk.
+    let any_small = usize::from(!drawn(survey.smallest));
+    let lines = legend_lines(&survey, any_small, &body, o).len();
 
-    let height = GRID_HEIGHT + LINE * (legend.len() as f64 + 2.0);
-    let mut s = String::new();
+    let height = GRID_HEIGHT + LINE * (lines as f64 + 2.0);
+    let mut out = Sink {
+        s: String::new(),
+        w,
+        error: None,
+    };
+    let s = &mut out.s;
     let _ = writeln!(
         s,
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{WIDTH}\" height=\"{height}\" viewBox=\"0 0 {WIDTH} {height}\">"
@@ -95,139 +118,93 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
         s,
         "<rect width=\"{WIDTH}\" height=\"{height}\" fill=\"#fff\"/>"
     );
-    // NOTE: a walk per view, each written straight into the document:
-    // a view's parts held apart until the end would hold the SVG twice
+    // NOTE: a walk per view, each written straight out as it is made: a
+    // view's parts held apart until the end would hold the SVG twice
     // (187 MB for 100,000 parts); a walk costs a small part of that time.
     let mut d = String::new();
-    for cell in &cells {
+    let mut element = String::new();
+    let mut small = 0;
+    for (v, cell) in cells.iter().enumerate() {
         // The view's placing, for tools (and the tests): pixels per
         // length unit, and where the file's origin lies on the page.
+        let s = &mut out.s;
         let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
         let _ = write!(s, "{}", cell.projector.scale);
         s.push_str("\" data-origin=\"");
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
-        each_part(model, &mut |part, group| {
-            let class = survey.keys.index[key(part, group)] % 9;
+        let mut seen = Drawn::default();
+        let mut last = Last::default();
+        each_part(model, &mut |part, group, own| {
+            if out.error.is_some() {
+                return;
+            }
+            let colour = key(part, group);
+            if last.again(own, colour, part) {
+                if last.drawn {
+                    seen.again += 1;
+                } else {
+                    small += usize::from(v == 0);
+                }
+                return;
+            }
+            last.drawn = true;
+            let class = survey.keys.index[colour] % 9;
             let cut = if part.spec.removed { " cut" } else { "" };
             let outline = outline::of(part);
+            element.clear();
             match &outline {
                 Outline::Marker(kind, at) => {
-                    marker(&mut s, *kind, cell.projector.point(at), PALETTE[class], cut);
+                    marker(
+                        &mut element,
+                        *kind,
+                        cell.projector.point(at),
+                        PALETTE[class],
+                        cut,
+                    );
                 }
                 Outline::Pieces(pieces) => {
                     if !drawn(outline.size()) {
+                        last.drawn = false;
+                        small += usize::from(v == 0);
                         return;
                     }
                     d.clear();
                     pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                    let _ = writeln!(s, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                    let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
                 }
             }
+            seen.draw(&mut out.s, own, &element);
+            out.spill(false);
         });
-        symbols(&mut s, &cell.projector, &body, o);
-        frame(&mut s, cell, model.units.length);
+        let s = &mut out.s;
+        symbols(s, &cell.projector, &body, o);
+        frame(s, cell, model.units.length);
+        if seen.again > 0 {
+            // Beside the view's label (at most 32 characters).
+            let n = seen.again;
+            let plural = if n == 1 { "y" } else { "ies" };
+            text(
+                s,
+                [cell.at[0] + 260.0, cell.at[1] + 20.0],
+                &format!("{n} coincident cop{plural} not drawn again"),
+                None,
+            );
+        }
         s.push_str("</g>\n");
+        // Its outlines forgotten before the next view's are drawn.
+        drop(seen);
+        out.spill(false);
     }
-    write_legend(&mut s, &legend, cells.len() > 1);
-    s.push_str("</svg>\n");
-    s
-}
-
-/// What one walk of the parts finds before anything is drawn: the
-/// legend's keys and what it must explain, the box that holds the parts,
-/// and each outline's size (its largest extent), to count those that will
-/// be smaller than a pixel once the scale is known.
-struct Survey {
-    keys: Keys,
-    seen: Seen,
-    extent: [V3; 2],
-    sizes: Vec<f64>,
-}
-
-impl Survey {
-    fn of(model: &Model) -> Survey {
-        let mut v = Survey {
-            keys: Keys::default(),
-            seen: Seen::default(),
-            extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
-            sizes: Vec::new(),
-        };
-        each_part(model, &mut |part, group| {
-            v.keys.index(key(part, group));
-            v.seen.cut |= part.spec.removed;
-            let outline = outline::of(part);
-            match &outline {
-                Outline::Marker(kind, _) => v.seen.markers[*kind as usize] = true,
-                Outline::Pieces(_) => v.sizes.push(outline.size()),
-            }
-            let [lo, hi] = outline.extent();
-            for k in 0..3 {
-                v.extent[0][k] = v.extent[0][k].min(lo[k]);
-                v.extent[1][k] = v.extent[1][k].max(hi[k]);
-            }
-        });
-        v
+    let legend = legend_lines(&survey, small, &body, o);
+    debug_assert_eq!(legend.len(), lines, "the legend's height was known");
+    write_legend(&mut out.s, &legend, cells.len() > 1);
+    out.s.push_str("</svg>\n");
+    out.spill(true);
+    match out.error {
+        Some(e) => Err(e),
+        None => Ok(()),
     }
-}
-
-/// What a part is coloured by: its group, else its material, else its
-/// shape.
-fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
-    group
-        .or(part.material.as_deref())
-        .unwrap_or_else(|| part.shape.name())
-}
-
-/// Each part in file order with its group (its sub-assemblies' groups,
-/// then its own, joined by ` / `), if any.
-fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>)) {
-    let mut stack: Vec<Option<Vec<String>>> = Vec::new();
-    let mut path = String::new();
-    model.each_event(&mut |e| match e {
-        Event::Enter(inc) => stack.push(inc.tag.as_ref().and_then(|t| t.group.clone())),
-        Event::Exit => {
-            stack.pop();
-        }
-        Event::Part(leaf) => {
-            path.clear();
-            let own = leaf.tag.and_then(|t| t.group.as_ref());
-            for name in stack.iter().flatten().chain(own).flatten() {
-                if !path.is_empty() {
-                    path.push_str(" / ");
-                }
-                path.push_str(name);
-            }
-            f(leaf.part, (!path.is_empty()).then_some(path.as_str()));
-        }
-    });
-}
-
-/// The legend's keys, in order of first appearance.
-#[derive(Default)]
-struct Keys {
-    order: Vec<String>,
-    index: HashMap<String, usize>,
-}
-
-impl Keys {
-    fn index(&mut self, key: &str) -> usize {
-        if let Some(&k) = self.index.get(key) {
-            return k;
-        }
-        let k = self.order.len();
-        self.order.push(key.to_string());
-        self.index.insert(key.to_string(), k);
-        k
-    }
-}
-
-/// What the legend must explain.
-#[derive(Default)]
-struct Seen {
-    cut: bool,
-    /// Point masses, given inertias (`Marker as usize`).
-    markers: [bool; 2],
 }
 
 /// The body's figures in the file's frame and length unit.

@@ -1,0 +1,228 @@
+//! What the drawing's walks keep, and nothing more: the survey made
+//! before anything is drawn (the legend's keys, the extent, the smallest
+//! outline), the document's buffer (`Sink`: written out as it fills),
+//! what one view has drawn (`Drawn`: copies drawn once), and the last part
+//! met (`Last`: a copy in the same place known at once).
+
+use super::outline::{self, Outline, V3};
+use crate::model::Model;
+use crate::model::walk::Event;
+use std::collections::HashMap;
+use std::fmt::Write as _;
+
+/// The document as it is made: each element goes into a small buffer
+/// that is handed to the writer whenever it fills, so the document is
+/// never all in memory (only what is drawn of one view is remembered, to
+/// draw it once: `Drawn`).
+pub(super) struct Sink<'w> {
+    pub(super) s: String,
+    pub(super) w: &'w mut dyn std::io::Write,
+    /// The first write that failed: the walks that follow write nothing.
+    pub(super) error: Option<std::io::Error>,
+}
+
+impl Sink<'_> {
+    /// Bytes held before they are written.
+    const SPILL: usize = 1 << 16;
+
+    /// Hand the buffer to the writer once it is full (`all`: whatever it
+    /// holds).
+    pub(super) fn spill(&mut self, all: bool) {
+        if self.s.len() < Self::SPILL && !all {
+            return;
+        }
+        if self.error.is_none()
+            && let Err(e) = self.w.write_all(self.s.as_bytes())
+        {
+            self.error = Some(e);
+        }
+        self.s.clear();
+    }
+}
+
+/// What one view has drawn: each element's text (its path data rounded to
+/// the drawing's resolution, 0.01 px) with the part it is a copy of, so
+/// that a copy whose outline another copy of the same part has drawn
+/// already (in the same place, or closer to it than the resolution) is
+/// drawn once. Bounded by what is drawn, not by the number of copies.
+///
+/// NOTE: copies of one part only (an array's, a mirror's, an included
+/// file's instances'): two parts written apart whose outlines meet in a
+/// view (a pair of wings seen edge-on) are each drawn, as they always
+/// were.
+#[derive(Default)]
+pub(super) struct Drawn {
+    /// The part's address in the model (`Leaf::own`: the same for each of
+    /// its copies), then the element.
+    elements: std::collections::HashSet<String>,
+    key: String,
+    /// The copies not drawn again.
+    pub(super) again: usize,
+}
+
+impl Drawn {
+    /// Write `element`, drawn for a copy of `part`, unless this view has
+    /// drawn it for another.
+    pub(super) fn draw(&mut self, s: &mut String, part: usize, element: &str) {
+        self.key.clear();
+        let _ = write!(self.key, "{part:x} ");
+        self.key.push_str(element);
+        if self.elements.contains(self.key.as_str()) {
+            self.again += 1;
+        } else {
+            s.push_str(element);
+            self.elements.insert(self.key.clone());
+        }
+    }
+}
+
+/// The last part a walk met: the next, if it is a copy of the same part
+/// in the same colour placed exactly where it is (an array's copies one
+/// after another, with a step of zero), looks the same in every view, so
+/// its outline and path data are not made again (they were most of the
+/// cost of 2,000,000 copies in one place).
+#[derive(Default)]
+pub(super) struct Last {
+    own: usize,
+    key: String,
+    shape: Option<crate::shapes::Shape>,
+    place: Option<crate::part::Place>,
+    removed: bool,
+    /// In a view's walk: whether it was drawn (or was a copy of one
+    /// drawn), not too small to draw.
+    pub(super) drawn: bool,
+}
+
+impl Last {
+    /// Whether `part`, a copy of `own` coloured by `key`, is the last part
+    /// again; else it becomes the last.
+    pub(super) fn again(&mut self, own: usize, key: &str, part: &crate::part::Part) -> bool {
+        let same = self.own == own
+            && self.key == key
+            && self.shape == Some(part.shape)
+            && self.removed == part.spec.removed
+            && self.place.as_ref() == Some(&part.spec.place);
+        if !same {
+            self.own = own;
+            self.key.clear();
+            self.key.push_str(key);
+            self.shape = Some(part.shape);
+            self.place = Some(part.spec.place.clone());
+            self.removed = part.spec.removed;
+        }
+        same
+    }
+}
+
+/// What one walk of the parts finds before anything is drawn: the
+/// legend's keys and what it must explain, the box that holds the parts,
+/// and the smallest outline's size (its largest extent), to know whether
+/// any will be smaller than a pixel once the scale is known.
+pub(super) struct Survey {
+    pub(super) keys: Keys,
+    pub(super) seen: Seen,
+    pub(super) extent: [V3; 2],
+    /// NaN if any size is (never drawn, as a size below a pixel).
+    pub(super) smallest: f64,
+}
+
+impl Survey {
+    pub(super) fn of(model: &Model) -> Survey {
+        let mut v = Survey {
+            keys: Keys::default(),
+            seen: Seen::default(),
+            extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            smallest: f64::INFINITY,
+        };
+        let mut last = Last::default();
+        each_part(model, &mut |part, group, own| {
+            if last.again(own, key(part, group), part) {
+                return; // its key, marks, extent and size are known
+            }
+            v.keys.index(key(part, group));
+            v.seen.cut |= part.spec.removed;
+            let outline = outline::of(part);
+            match &outline {
+                Outline::Marker(kind, _) => v.seen.markers[*kind as usize] = true,
+                Outline::Pieces(_) => {
+                    let size = outline.size();
+                    if !(size >= v.smallest) {
+                        v.smallest = size;
+                    }
+                }
+            }
+            let [lo, hi] = outline.extent();
+            for k in 0..3 {
+                v.extent[0][k] = v.extent[0][k].min(lo[k]);
+                v.extent[1][k] = v.extent[1][k].max(hi[k]);
+            }
+        });
+        v
+    }
+}
+
+/// What a part is coloured by: its group, else its material, else its
+/// shape.
+pub(super) fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
+    group
+        .or(part.material.as_deref())
+        .unwrap_or_else(|| part.shape.name())
+}
+
+/// Each part in file order with its group (its sub-assemblies' groups,
+/// then its own, joined by ` / `), if any, and which part it is a copy of
+/// (the address of the part as its own file holds it: the same for each
+/// copy, distinct for parts written apart).
+pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>, usize)) {
+    let mut stack: Vec<Option<Vec<String>>> = Vec::new();
+    let mut path = String::new();
+    model.each_event(&mut |e| match e {
+        Event::Enter(inc) => stack.push(inc.tag.as_ref().and_then(|t| t.group.clone())),
+        Event::Exit => {
+            stack.pop();
+        }
+        Event::Part(leaf) => {
+            path.clear();
+            let own = leaf.tag.and_then(|t| t.group.as_ref());
+            for name in stack.iter().flatten().chain(own).flatten() {
+                if !path.is_empty() {
+                    path.push_str(" / ");
+                }
+                path.push_str(name);
+            }
+            let own: *const crate::part::Part = leaf.own;
+            f(
+                leaf.part,
+                (!path.is_empty()).then_some(path.as_str()),
+                own as usize,
+            );
+        }
+    });
+}
+
+/// The legend's keys, in order of first appearance.
+#[derive(Default)]
+pub(super) struct Keys {
+    pub(super) order: Vec<String>,
+    pub(super) index: HashMap<String, usize>,
+}
+
+impl Keys {
+    fn index(&mut self, key: &str) -> usize {
+        if let Some(&k) = self.index.get(key) {
+            return k;
+        }
+        let k = self.order.len();
+        self.order.push(key.to_string());
+        self.index.insert(key.to_string(), k);
+        k
+    }
+}
+
+/// What the legend must explain.
+#[derive(Default)]
+pub(super) struct Seen {
+    pub(super) cut: bool,
+    /// Point masses, given inertias (`Marker as usize`).
+    pub(super) markers: [bool; 2],
+}
