@@ -12,7 +12,8 @@ use unicode_width::{UnicodeWidthChar, UnicodeWidthStr};
 mod escape;
 mod path;
 pub use escape::{
-    is_bidi, is_hidden, is_line_separator, is_xml_noncharacter, may_hide, push_visible, visible,
+    LEGACY_COMMAND, is_bidi, is_hidden, is_line_separator, is_xml_noncharacter, may_hide,
+    push_visible, visible,
 };
 use path::line_start;
 pub use path::{display_path, path_bytes};

@@ -49,7 +49,33 @@ fn usage_error(e: clap::Error) {
     }
 }
 
+/// The message of a panic (a bug in massprop, never an answer to input),
+/// shown as text from input always is (`diag::visible`): the default hook
+/// prints it raw, and a panic's message may quote input, so a line of
+/// standard error could begin with text the input chose.
+fn panic_hook(info: &std::panic::PanicHookInfo<'_>) {
+    let payload = info.payload();
+    let what = payload
+        .downcast_ref::<&str>()
+        .copied()
+        .or_else(|| payload.downcast_ref::<String>().map(String::as_str))
+        .unwrap_or("");
+    let at = info
+        .location()
+        .map(|l| format!(" at {}:{}", l.file(), l.line()))
+        .unwrap_or_default();
+    let mut text = format!(
+        "error: internal error{at}: {}\n  = help: a bug in massprop, not in the input: please report it, with the input\n",
+        massprop::diag::visible(&massprop::diag::shorten(what))
+    );
+    if std::env::var_os("RUST_BACKTRACE").is_some_and(|v| v != "0") {
+        text.push_str(&std::backtrace::Backtrace::force_capture().to_string());
+    }
+    to_stderr(&text);
+}
+
 fn main() -> ExitCode {
+    std::panic::set_hook(Box::new(panic_hook));
     let cli = match massprop::cli::Cli::parse_args() {
         Ok(cli) => cli,
         Err(e) => {

@@ -26,6 +26,7 @@ pub fn push_visible(out: &mut String, text: &str) {
         out.push_str(text);
         return;
     }
+    let from = out.len();
     out.extend(text.chars().map(|c| match c {
         '\t' => c,
         '\0'..='\u{1f}' => char::from_u32(0x2400 + c as u32).unwrap_or('\u{fffd}'),
@@ -33,16 +34,33 @@ pub fn push_visible(out: &mut String, text: &str) {
         c if is_hidden(c) => '\u{fffd}',
         c => c,
     }));
+    if out[from..].contains(LEGACY_COMMAND) {
+        let shown = out[from..].replace(LEGACY_COMMAND, LEGACY_COMMAND_SHOWN);
+        out.truncate(from);
+        out.push_str(&shown);
+    }
 }
+
+/// The GitHub runner's older workflow-command syntax, `##[name]value`,
+/// which it reads ANYWHERE in a line of standard output or error (its
+/// `ActionCommand.TryParse` looks for the prefix with `IndexOf`), not only
+/// at the line's start as it does `::name::`: so no text from input may
+/// show it. Text shows it as `#＃[` (U+FF03), JSON as `#\u0023[`, the
+/// same string to a JSON reader (`render::json_line`).
+pub const LEGACY_COMMAND: &str = "##[";
+
+/// `LEGACY_COMMAND` as text from input shows it.
+const LEGACY_COMMAND_SHOWN: &str = "#\u{ff03}[";
 
 /// Whether text from input may hold a character `is_hidden` names: one
 /// scan of the bytes, so that most text is copied as it is. (C1 controls
 /// are U+0080..U+009F, encoded with a 0xC2 lead byte; the bidirectional
 /// marks and the separators have lead bytes 0xD8 and 0xE2; U+FFFE and
-/// U+FFFF, 0xEF.)
+/// U+FFFF, 0xEF; and the runner's older command prefix, `LEGACY_COMMAND`.)
 pub fn may_hide(text: &str) -> bool {
     text.bytes()
         .any(|b| b < 0x20 || b == 0x7f || b == 0xc2 || b == 0xd8 || b == 0xe2 || b == 0xef)
+        || text.contains(LEGACY_COMMAND)
 }
 
 /// The characters that text from input may not show raw, in any output:
@@ -80,6 +98,22 @@ pub fn is_bidi(c: char) -> bool {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn text_from_input_never_shows_the_runners_older_command_prefix() {
+        for text in [
+            "##[add-mask]secret",
+            "a ##[error]x",
+            "###[",
+            "##\n##[",
+            "##[##[",
+        ] {
+            let shown = super::visible(text);
+            assert!(!shown.contains(super::LEGACY_COMMAND), "{shown}");
+            assert_eq!(shown.chars().count(), text.chars().count(), "{shown}");
+        }
+        assert_eq!(super::visible("a#[b]##c"), "a#[b]##c");
+    }
+
     use super::*;
 
     #[test]

@@ -165,8 +165,14 @@ impl serde_json::ser::Formatter for ControlsEscaped {
         let mut start = 0;
         for (i, c) in fragment.char_indices() {
             // serde_json has escaped C0 already; the rest of
-            // `diag::is_hidden` is left to this.
-            if crate::diag::is_hidden(c) {
+            // `diag::is_hidden` is left to this, and the runner's older
+            // command prefix (`diag::LEGACY_COMMAND`, read anywhere in a
+            // line) has its second `#` escaped: the same string.
+            let legacy = c == '#'
+                && i > 0
+                && fragment[i..].starts_with("#[")
+                && fragment[..i].ends_with('#');
+            if crate::diag::is_hidden(c) || legacy {
                 w.write_all(&fragment.as_bytes()[start..i])?;
                 write!(w, "\\u{:04x}", u32::from(c))?;
                 start = i + c.len_utf8();
@@ -179,6 +185,23 @@ impl serde_json::ser::Formatter for ControlsEscaped {
 #[cfg(test)]
 mod tests {
     use super::json_line;
+
+    #[test]
+    fn json_never_shows_the_runners_older_command_prefix_and_reads_back_the_same_text() {
+        for text in [
+            "##[add-mask]secret",
+            "a ##[error]x ###[y",
+            "##[",
+            "#",
+            "#[##[",
+            "é##[é",
+        ] {
+            let line = json_line(&serde_json::json!({ "name": text }));
+            assert!(!line.contains(crate::diag::LEGACY_COMMAND), "{line}");
+            let back: serde_json::Value = serde_json::from_str(&line).unwrap();
+            assert_eq!(back["name"], text);
+        }
+    }
 
     #[test]
     fn json_escapes_every_control_character_and_reads_back_the_same_text() {

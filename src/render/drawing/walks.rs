@@ -174,21 +174,47 @@ pub(super) fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'
 /// (the address of the part as its own file holds it: the same for each
 /// copy, distinct for parts written apart).
 pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>, usize)) {
-    let mut stack: Vec<Option<Vec<String>>> = Vec::new();
+    // NOTE: each sub-assembly's joined prefix is made once as the walk
+    // enters it, and a part's path is joined again only when the part or
+    // the sub-assembly differs from the last one's: copies of one part (an
+    // array of 2,000,000) share one join, not a join each of up to 64
+    // names.
+    let mut prefixes: Vec<String> = vec![String::new()];
+    let mut entered = 0usize;
     let mut path = String::new();
+    let mut last: Option<(usize, usize)> = None;
+    let join = |to: &mut String, names: &[String]| {
+        for name in names {
+            if !to.is_empty() {
+                to.push_str(" / ");
+            }
+            to.push_str(name);
+        }
+    };
     model.each_event(&mut |e| match e {
-        Event::Enter(inc) => stack.push(inc.tag.as_ref().and_then(|t| t.group.clone())),
+        Event::Enter(inc) => {
+            let mut prefix = prefixes.last().cloned().unwrap_or_default();
+            if let Some(names) = inc.tag.as_ref().and_then(|t| t.group.as_ref()) {
+                join(&mut prefix, names);
+            }
+            prefixes.push(prefix);
+            entered += 1;
+        }
         Event::Exit => {
-            stack.pop();
+            prefixes.pop();
+            entered += 1;
         }
         Event::Part(leaf) => {
-            path.clear();
             let own = leaf.tag.and_then(|t| t.group.as_ref());
-            for name in stack.iter().flatten().chain(own).flatten() {
-                if !path.is_empty() {
-                    path.push_str(" / ");
+            let prefix = prefixes.last().map_or("", String::as_str);
+            let which = own.map_or(0, |g| g as *const Vec<String> as usize);
+            if last != Some((which, entered)) {
+                path.clear();
+                path.push_str(prefix);
+                if let Some(names) = own {
+                    join(&mut path, names);
                 }
-                path.push_str(name);
+                last = Some((which, entered));
             }
             let own: *const crate::part::Part = leaf.own;
             f(
