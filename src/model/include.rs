@@ -152,6 +152,10 @@ pub(super) struct AssemblyNames {
     taken: std::collections::HashSet<String>,
     /// For each base name, the last `#k` given.
     last: HashMap<String, usize>,
+    /// Each `name` written on an include, and where: a name the user wrote
+    /// is never numbered (`Ctx::include` refuses it written twice), so
+    /// `--only NAME` always selects what the user named.
+    written: HashMap<String, std::ops::Range<usize>>,
 }
 
 impl AssemblyNames {
@@ -602,8 +606,27 @@ impl Ctx<'_> {
                 .map(|s| s.to_string_lossy().into_owned())
                 .unwrap_or_else(|| format!("part {}", index + 1)),
         };
-        // Two copies of a sub-assembly in one file get distinct names:
-        // `wheel`, `wheel #2`, … (so `--only` and `diff` can tell them apart).
+        // A name written on two includes is refused, both places named: a
+        // `#2` would make one of them a name the user did not write.
+        if let Some(n) = &p.name
+            && let Some(first) = names.written.insert(n.get_ref().clone(), n.span())
+        {
+            let (line, col) = self.source.line_col(first.start);
+            return Err(self
+                .err(
+                    n.span(),
+                    format!(
+                        "the sub-assembly name `{}` is written twice",
+                        crate::diag::shorten(n.get_ref())
+                    ),
+                )
+                .label("written again here")
+                .note(format!("first written at {}:{line}:{col}", self.source.name))
+                .help("name the sub-assemblies apart, each `name` its own: `--only` selects a sub-assembly by the name written (two includes without a `name` are numbered: `wheel`, `wheel #2`)"));
+        }
+        // Two copies of a sub-assembly in one file named by their file
+        // (its stem or its own `name`) get distinct names: `wheel`,
+        // `wheel #2`, … (so `--only` and `diff` can tell them apart).
         let name = names.claim(&base_name);
         let ratio = |dim: Dim| {
             child

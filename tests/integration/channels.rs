@@ -172,7 +172,7 @@ fn xml_attr(s: &str) -> String {
 /// The characters no output may hold raw but tab and newline (the test's
 /// own list, not massprop's): controls, bidirectional formatting
 /// characters, the line and paragraph separators, U+FFFE and U+FFFF.
-fn hidden(c: char) -> bool {
+pub(crate) fn hidden(c: char) -> bool {
     c.is_control()
         || matches!(
             c,

@@ -491,6 +491,44 @@ fn an_included_files_name_that_is_a_copys_name_is_refused() {
 }
 
 #[test]
+fn a_sub_assembly_name_written_twice_is_refused_at_both_places() {
+    // Numbered `left #2`, the second would not be what the user wrote, and
+    // `--only left` could never select it.
+    let top = "[[part]]\nname = \"left\"\ninclude = \"wheel.toml\"\n\n[[part]]\nname = \"left\"\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n";
+    let (status, e) = run_files("written-twice", &[("wheel.toml", WHEEL), ("top.toml", top)]);
+    assert_eq!(status, Some(2), "{e}");
+    assert!(
+        e.contains("top.toml:6:8: error: the sub-assembly name `left` is written twice"),
+        "{e}"
+    );
+    assert!(e.contains("note: first written at "), "{e}");
+    assert!(e.contains("top.toml:2:8"), "{e}");
+}
+
+#[test]
+fn two_includes_without_a_written_name_are_still_numbered() {
+    let top = "[[part]]\ninclude = \"wheel.toml\"\n\n[[part]]\ninclude = \"wheel.toml\"\norigin = [1, 0, 0]\n";
+    let dir = scratch_files(
+        "exact",
+        "numbered-unwritten",
+        &[("wheel.toml", WHEEL), ("top.toml", top)],
+    );
+    for (only, x) in [("wheel", 0.0), ("wheel #2", 1.0)] {
+        let out = massprop(&[
+            "report",
+            "--format",
+            "json",
+            "--only",
+            only,
+            dir.to_str().unwrap(),
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{out:?}");
+        let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(v["center_of_mass"][0].as_f64(), Some(x), "{only}: {v}");
+    }
+}
+
+#[test]
 fn distinct_names_and_automatic_numbers_alone_are_accepted() {
     let top = "[[part]]\ninclude = \"wheel.toml\"\narray = { count = 2, step = [1, 0, 0] }\n\n[[part]]\ninclude = \"wheel.toml\"\n\n[[part]]\nname = \"wheel #2[0]\"\ninclude = \"other.toml\"\n";
     // `wheel #2[0]` is not a copy: the second `wheel` has no array.
