@@ -106,9 +106,23 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         boxes: &shell_boxes,
         tree: &shell_tree,
     };
+    let mut seen = vec![0u32; pts.len()];
     for s in 0..count {
         let mine = &list[start[s]..start[s + 1]];
-        let c = winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32);
+        let c = match winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32, &mut seen) {
+            Ok(c) => c,
+            Err([(a, wa), (b, wb)]) => {
+                return Err(MeshError::new(
+                    mesh.at[a],
+                    format!(
+                        "{} passes through another shell where they only touch (along edges lying in its faces): the other shells wind {wa} times around a corner of {} and {wb} times around a corner of {}; a solid's surface must not pass through itself",
+                        name(s),
+                        triangle(a, mesh.at[a]),
+                        triangle(b, mesh.at[b]),
+                    ),
+                ));
+            }
+        };
         let t = first[s];
         match (signs[s], c) {
             (1, 0) | (-1, 1) => {}
@@ -524,8 +538,19 @@ fn coplanar_overlap(p: &[P3; 3], q: &[P3; 3]) -> bool {
     !(separated(p, q) || separated(q, p))
 }
 
-/// The winding number, at a corner of shell `s` (one on no other shell's
-/// surface where there is one), of every other live triangle.
+/// The winding number, at the corners of shell `s` that lie on no other
+/// shell's surface, of every other live triangle: the same at each of them,
+/// or the two corners (their triangles and windings) where it differs.
+///
+/// NOTE: every free corner is asked, not the first alone: a shell can pass
+/// into another exactly through edges lying in the other's faces (a double
+/// pyramid whose waist lies in a cube's face, one apex inside), where no
+/// two triangles cross and only the corners on either side tell. Each
+/// corner is asked once (`seen`, stamped with the shell); most have no
+/// other shell's box around them and cost one look in the tree of boxes.
+/// A shell all of whose corners lie on other shells takes the perturbed
+/// point's answer at its last corner.
+#[allow(clippy::too_many_arguments)] // the shared read-only state of one judgement
 fn winding_around(
     mesh: &Mesh,
     pts: &[P3],
@@ -534,27 +559,29 @@ fn winding_around(
     shell: &[u32],
     members: &[u32],
     s: u32,
-) -> i64 {
+    seen: &mut [u32],
+) -> Result<i64, [(usize, i64); 2]> {
     let mut last = 0;
-    let mut tried = 0;
+    let mut free: Option<(usize, i64)> = None;
     for &i in members {
         for &k in &mesh.faces[i as usize] {
-            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
-            if !on {
-                return w;
+            if seen[k as usize] == s + 1 {
+                continue;
             }
+            seen[k as usize] = s + 1;
+            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
             last = w;
-            tried += 1;
-            // NOTE: a shell all of whose corners lie on other shells
-            // (touching them at every corner) takes the perturbed point's
-            // answer; a few hundred corners are enough to find a free one
-            // in any mesh that is not built to touch everywhere.
-            if tried >= 256 {
-                return last;
+            if on {
+                continue;
+            }
+            match free {
+                None => free = Some((i as usize, w)),
+                Some((t, w0)) if w0 != w => return Err([(t, w0), (i as usize, w)]),
+                Some(_) => {}
             }
         }
     }
-    last
+    Ok(free.map_or(last, |(_, w)| w))
 }
 
 /// Each shell's triangles, in the file's order (`start[s]..start[s + 1]`

@@ -300,3 +300,54 @@ fn crossing_does_not_depend_on_order_or_corner_rotation() {
         assert_eq!(c, cross(fpr, fq, &pr, &q), "{p:?} {q:?}");
     }
 }
+
+/// A double pyramid (an octahedron of radius 1 about the origin), outward;
+/// its lower half first when `lower_first`.
+fn octahedron(lower_first: bool) -> Vec<Tri> {
+    let e = [
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [-1.0, 0.0, 0.0],
+        [0.0, -1.0, 0.0],
+    ];
+    let (top, bottom) = ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]);
+    let upper: Vec<Tri> = (0..4).map(|i| [e[i], e[(i + 1) % 4], top]).collect();
+    let lower: Vec<Tri> = (0..4).map(|i| [e[(i + 1) % 4], e[i], bottom]).collect();
+    if lower_first {
+        [lower, upper].concat()
+    } else {
+        [upper, lower].concat()
+    }
+}
+
+#[test]
+fn the_octahedron_is_outward_and_one_shell() {
+    let m = mesh(octahedron(false));
+    // Volume 4/3 (two pyramids of base 2 and height 1).
+    let v = m.integrate::<DD>(Mode::Solid).measure.hi;
+    assert!((v - 4.0 / 3.0).abs() < 1e-15, "{v}");
+    assert_eq!(checked(octahedron(true)), Ok(1));
+}
+
+#[test]
+fn a_shell_through_another_along_edges_in_its_face_is_refused_whichever_corner_comes_first() {
+    // The octahedron's waist lies in the cube's top face (z = 0): its
+    // triangles meet the face only along the waist's edges (no two
+    // triangles cross), its upper apex is outside the cube and its lower
+    // apex inside, so the volume below z = 0 would count twice.
+    for lower_first in [false, true] {
+        for cube_first in [false, true] {
+            let (o, c) = (
+                octahedron(lower_first),
+                cube([-2.0, -2.0, -2.0], [4.0, 4.0, 2.0]),
+            );
+            let t = if cube_first {
+                [c, o].concat()
+            } else {
+                [o, c].concat()
+            };
+            let e = refused(t);
+            assert!(e.contains("passes through another shell"), "{e}");
+        }
+    }
+}
