@@ -4,7 +4,8 @@
 //! repeated vertex, zero area); for a solid also closed (every edge shared
 //! by exactly two triangles) and consistently oriented (the two traverse
 //! it in opposite directions, half each way where pieces touch along
-//! it), then split into shells that must bound one solid (`shells`).
+//! it); `MeshBody::load` then has `shells` split it into shells that must
+//! bound one solid.
 
 use super::read::Triangles;
 use super::{At, MeshBody, MeshError, Mode, Sums, finish};
@@ -149,7 +150,6 @@ impl Mesh {
         }
         if mode == Mode::Solid {
             self.closed_and_oriented()?;
-            super::shells::check(self)?;
         }
         Ok(())
     }

@@ -148,6 +148,9 @@ impl MeshBody {
         let t = read::read(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
         let mesh = check::Mesh::weld(t)?;
         mesh.check(mode)?;
+        if mode == Mode::Solid {
+            shells::check(&mesh)?;
+        }
         let body = mesh.integrate::<DD>(mode);
         if mode == Mode::Solid && body.measure.hi <= 0.0 {
             return Err(if body.measure.hi < 0.0 {

@@ -642,27 +642,6 @@ fn a_bad_array_or_mirror_is_refused_where_it_is() {
     }
 }
 
-/// `massprop ARGS`, killed and failed if it runs past a minute: a hang
-/// guard, the only clock these tests keep (their times are
-/// docs/performance.md's).
-fn within_a_minute(args: &[&str]) -> std::process::Output {
-    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
-        .args(args)
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    let start = std::time::Instant::now();
-    while child.try_wait().unwrap().is_none() {
-        if start.elapsed() > std::time::Duration::from_secs(60) {
-            child.kill().unwrap();
-            panic!("massprop {args:?} ran past a minute: a hang");
-        }
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    child.wait_with_output().unwrap()
-}
-
 /// Refused before any copy is made: at the `array` key, as the model is
 /// read (copies are made only by a walk of a model that exists), not
 /// after; no clock but the hang guard.
@@ -673,7 +652,7 @@ fn a_huge_count_is_refused_before_any_copy_is_made() {
         let dir = scratch("arrays", &format!("huge-{count}"));
         let file = dir.join("bad.toml");
         std::fs::write(&file, &text).unwrap();
-        let out = within_a_minute(&["report", file.to_str().unwrap()]);
+        let out = crate::common::within_a_minute(&["report", file.to_str().unwrap()]);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{err}");
         assert!(out.stdout.is_empty());
@@ -706,7 +685,7 @@ fn an_included_array_counts_against_the_limit_before_it_is_expanded() {
         "[[part]]\ninclude = \"row.toml\"\narray = { count = 1000, step = [0, 1, 0] }\n",
     )
     .unwrap();
-    let out = within_a_minute(&["report", top.to_str().unwrap()]);
+    let out = crate::common::within_a_minute(&["report", top.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(

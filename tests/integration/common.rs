@@ -104,3 +104,24 @@ pub fn example_part_files() -> Vec<PathBuf> {
     files.sort();
     files
 }
+
+/// `massprop ARGS`, killed and failed if it runs past a minute: a hang
+/// guard, the only clock these tests keep (their times are
+/// docs/performance.md's).
+pub fn within_a_minute(args: &[&str]) -> std::process::Output {
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = std::time::Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > std::time::Duration::from_secs(60) {
+            child.kill().unwrap();
+            panic!("massprop {args:?} ran past a minute: a hang");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
