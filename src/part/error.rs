@@ -98,27 +98,11 @@ impl Own {
     }
 }
 
-/// Roundings of a shape's local second moments beyond its mass's: m a²/12
-/// (3: a², m·, /12), m(R² + r²)/4 (4), the sphere's m R²/5 · (1 + ρ + … +
-/// ρ⁴)/(1 + ρ + ρ²) (≤ 18: ρ = r/R moves the ratio by at most its own
-/// rounding, its powers and sums 7 and 3, the division 3).
-///
-/// The new solids, counted the same way over the operations of their
-/// closed forms (`shapes::cone`, `torus`, `hemisphere`), every sum of terms
-/// of one sign: the cone's ∫x² dm (d, s, the Bernstein coefficients 4
-/// deep, S's ten products summed, over 40W) about 26 and its ∫z² dm
-/// (the variance's six products summed over 80W²) about 33: 40; the
-/// hemisphere's ratio of polynomials in ρ by Horner's rule (12, and ρ's
-/// own rounding six times over its degree) over 320P₃²: 40; the torus's
-/// a² + b² and R² + ¾(…) with m/2: 8.
+/// Roundings of a shape's local second moments beyond its mass's: each
+/// shape's module counts them over the operations of its closed forms
+/// (`ShapeKind::MOMENT_ROUNDINGS`).
 pub fn closed_form(shape: Shape) -> f64 {
-    match shape {
-        Shape::Cone | Shape::Hemisphere => 40.0,
-        Shape::Torus => 8.0,
-        Shape::Sphere => 18.0,
-        Shape::Cylinder | Shape::Disk => 5.0,
-        _ => 4.0,
-    }
+    shape.moment_roundings()
 }
 
 /// Roundings of R diag(d) Rᵀ beyond diag(d): two products and two sums.
@@ -142,18 +126,8 @@ pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
         return 0.0;
     }
     1.0 + match &spec.place {
-        Place::Centered { .. } | Place::Axial { .. } => match shape {
-            // 4/3 and π (3), R − r (1), R² + Rr + r² (3), three products.
-            Shape::Sphere | Shape::Hemisphere => 11.0,
-            // π, L and W (the Bernstein coefficients' sum, 6), /3, two
-            // products.
-            Shape::Cone => 14.0,
-            // 2π² (3), a − b and a + b (2), four products.
-            Shape::Torus => 10.0,
-            // π (1), R − r and R + r (2), two products, the length (1).
-            Shape::Cylinder | Shape::Disk => 6.0,
-            _ => shape.dim_count() as f64,
-        },
+        // The shape's own count (`ShapeKind::MEASURE_ROUNDINGS`).
+        Place::Centered { .. } | Place::Axial { .. } => shape.measure_roundings(),
         // A norm per edge (3 for the squares' sum, 2 for the root) and a
         // product.
         Place::Edges { .. } => 6.0 * shape.edge_count() as f64,

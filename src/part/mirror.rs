@@ -11,45 +11,29 @@
 //! tensor I is not symmetric in F: it becomes F I F (its products with that
 //! axis negated), so that (S R F)(F I F)(S R F)ᵀ = S R I Rᵀ S.
 //!
-//! NOTE: the hook for new shapes and placements. A shape answers
-//! `symmetric_axis` (the match is exhaustive: a new shape does not compile
-//! until it does); a shape symmetric in no local plane (a mesh) answers
-//! `None` and reflects its own data in `complete`'s arm for its placement.
+//! NOTE: the hook for new shapes and placements. A shape's module answers
+//! `ShapeKind::MIRROR_AXIS` (a new shape does not compile until it does);
+//! a shape symmetric in no local plane (a mesh) answers `None` and
+//! reflects its own data in `complete`'s arm for its placement.
 
 use super::Place;
 use crate::rotation::Orientation;
 use crate::shapes::Shape;
 
 /// The local axis in whose plane through the local origin the shape, as
-/// its closed forms take it, is its own mirror image.
+/// its closed forms take it, is its own mirror image: each shape's module
+/// says (`ShapeKind::MIRROR_AXIS`).
 ///
 /// NOTE: x for every shape placed by its centre (a prism: z, the
 /// extrusion it is centred in): a box, plate or rod is
 /// symmetric in all three; a cylinder's, disk's or rod's axis is local z,
 /// and every solid of revolution about z (cone, torus, hemisphere) is
 /// symmetric in x; a sphere, a
-/// point and a given tensor (flipped with it, `complete`) in any.
+/// point and a given tensor (flipped with it, `complete`) in any. A mesh
+/// is symmetric in no local plane in general: `complete` reflects its
+/// data (`part::reflect_mesh`).
 pub fn symmetric_axis(shape: Shape) -> Option<usize> {
-    match shape {
-        Shape::Box
-        | Shape::Plate
-        | Shape::Rod
-        | Shape::Cylinder
-        | Shape::Disk
-        | Shape::Sphere
-        | Shape::Triangle
-        | Shape::Point
-        | Shape::Inertia
-        | Shape::Cone
-        | Shape::Torus
-        | Shape::Hemisphere => Some(0),
-        // Extruded from −length/2 to +length/2: its own image in local z,
-        // so its polygon need not be reflected.
-        Shape::Prism => Some(2),
-        // Symmetric in no local plane in general: `complete` reflects its
-        // data (`part::reflect_mesh`).
-        Shape::Mesh => None,
-    }
+    shape.mirror_axis()
 }
 
 /// `place`, whose points a reflection has moved and whose turn it has

@@ -20,6 +20,7 @@
 //!   every coefficient positive, so no cancellation (19/320 solid, 1/12 a
 //!   thin shell).
 
+use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
 use crate::numeric::Real;
 
 fn powers<T: Real>(d: &[T]) -> (T, T, T) {
@@ -60,4 +61,57 @@ pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
         .fold(T::of(0.0), |acc, &c| acc * rho + T::of(c));
     let axial = m * r2 * n / (T::of(320.0) * p3 * p3);
     [across, across, axial]
+}
+
+/// The hemisphere, in the registry (`shapes::registry!`).
+#[derive(Clone, Copy, Debug)]
+pub struct Hemisphere;
+
+impl ShapeKind for Hemisphere {
+    const INFO: ShapeInfo = ShapeInfo {
+        shape: Shape::Hemisphere,
+        name: "hemisphere",
+        keys: &[
+            "density",
+            "radius",
+            "inner_radius",
+            "diameter",
+            "inner_diameter",
+            "material",
+            "center",
+            "rotation",
+            "mass",
+            "remove",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Radii { length: false },
+        centred: &["center"],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 3,
+        drawn: Drawn::Dome,
+        degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
+        help: "a hemisphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`, the centre of its sphere (flat face in its local x–y plane, dome toward +z; optional `rotation`); an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
+    };
+
+    /// 2/3 and π (3), R − r (1), R² + Rr + r² (3), three products, and one of slack.
+    const MEASURE_ROUNDINGS: f64 = 11.0;
+
+    /// The ratio of polynomials in ρ by Horner's rule (12, and ρ's own rounding six times over its degree) over 320P₃²: 40.
+    const MOMENT_ROUNDINGS: f64 = 40.0;
+
+    const MIRROR_AXIS: Option<usize> = Some(0);
+
+    fn measure<T: Real>(d: &[T]) -> T {
+        measure(d)
+    }
+
+    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+        second_moments(m, d)
+    }
+
+    fn axial_offset<T: Real>(d: &[T]) -> T {
+        offset(d)
+    }
 }

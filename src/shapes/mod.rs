@@ -1,101 +1,182 @@
-//! The primitive shapes and their closed forms: second moments of mass about
-//! the shape's own centroid along its own local axes, ∫x² dm, ∫y² dm, ∫z² dm
-//! (kg·m²). The local frames are:
+//! The primitive shapes, one module each (`src/shapes/<shape>.rs`): its
+//! description and its closed forms, second moments of mass about the
+//! shape's own centroid along its own local axes, ∫x² dm, ∫y² dm, ∫z² dm,
+//! behind one trait, `ShapeKind`, and named once in `registry!`. Each
+//! module's opening comment gives its local frame and the derivation of
+//! its closed forms.
 //!
-//! - box: edges `a, b, c` along local x, y, z, centred on the origin;
-//! - plate: thin rectangle `a × b` in the local x–y plane, zero thickness;
-//! - rod: slender segment of length `L` along local z, zero radius;
-//! - cylinder: radius `R`, length `L` along local z, centred on the origin;
-//!   with an inner radius `r` a tube;
-//! - disk: thin circular plate of radius `R` in the local x–y plane; with
-//!   an inner radius an annulus;
-//! - sphere: radius `R` about the origin; with an inner radius a hollow
-//!   sphere, and with r = R a thin shell;
-//! - point: a point mass at the origin;
-//! - cone (`cone`): a frustum about local z from the base at z = −L/2 to
-//!   the top at +L/2, solid or hollow; its centroid off the origin on z;
-//! - torus (`torus`): its tube's centre line a circle in the local x–y
-//!   plane about the origin;
-//! - hemisphere (`hemisphere`): the half z ≥ 0 of a sphere about the
-//!   origin; its centroid off the origin on z;
-//! - prism (`prism`): a polygon in the local x–y plane extruded from
-//!   z = −L/2 to +L/2 (its second moment has an x–y product).
-//! - mesh: a triangle mesh's own file coordinates (`mesh`), placed by
-//!   `origin` and `rotation` as an include is.
-//!
-//! For a uniform segment of length a centred on 0, ∫x² dm = m a²/12; box,
-//! plate and rod are products of such segments. Every shape but the prism
-//! is symmetric about its local x–z and y–z planes, so its second moments
-//! about its centroid are diagonal in local axes and need no products of
-//! inertia.
-//!
-//! A plate's real `thickness` and a rod's `diameter` never enter these: the
-//! composition is the idealised one, and `report::ideal` compares it with
-//! the solid box and cylinder they describe.
+//! Every shape but the prism is symmetric about its local x–z and y–z
+//! planes, so its second moments about its centroid are diagonal in local
+//! axes and need no products of inertia. A plate's real `thickness` and a
+//! rod's `diameter` never enter these: the composition is the idealised
+//! one, and `report::ideal` compares it with the solid box and cylinder
+//! they describe.
 
-pub mod cone;
-pub mod hemisphere;
 mod info;
-pub mod prism;
 #[cfg(test)]
 mod quadrature;
-pub mod torus;
 
 pub use info::{
-    DensityKind, Dims, Drawn, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, SHAPES, ShapeInfo,
-    Solid, Spanned,
+    DensityKind, Dims, Drawn, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid,
+    Spanned,
 };
 
 use crate::numeric::Real;
 use nalgebra::Vector3;
 use serde::Serialize;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Shape {
-    Box,
-    Plate,
-    Rod,
-    Cylinder,
-    Disk,
-    Sphere,
+/// Everything one shape's module says of it: its description (keys,
+/// density, dimensions, placements, drawing, help) and its closed forms,
+/// generic over the arithmetic, with the roundings its error model counts
+/// (`part::error`) and its mirror symmetry (`part::mirror`). Each shape is
+/// one module, `src/shapes/<shape>.rs`, and one line of `registry!`; the
+/// `Shape` enum and its methods are made from that list, so a shape the
+/// registry names and its module does not answer in full does not compile.
+pub trait ShapeKind {
+    const INFO: ShapeInfo;
+    /// Roundings of the measure (volume, area or length) formed from its
+    /// dimensions, beyond the density's product (`part::error::mass_error`).
+    const MEASURE_ROUNDINGS: f64;
+    /// Roundings of its local second moments beyond its mass's
+    /// (`part::error`), counted over the operations of `second_moments`,
+    /// every sum of terms of one sign.
+    const MOMENT_ROUNDINGS: f64;
+    /// The local axis in whose plane through the local origin the shape,
+    /// as its closed forms take it, is its own mirror image; `None`: in no
+    /// plane (its data reflected instead, `part::mirror`).
+    const MIRROR_AXIS: Option<usize>;
+    /// Volume, area or length of a shape of dimensions `d`, the measure
+    /// that the density multiplies.
+    fn measure<T: Real>(d: &[T]) -> T;
+    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
+    /// `m` and dimensions `d`.
+    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3];
+    /// The offset of the centroid from the origin of the local frame,
+    /// along local z.
+    fn axial_offset<T: Real>(d: &[T]) -> T;
+}
+
+/// The product of the dimensions (a box's volume, a plate's area, a rod's
+/// length).
+fn product<T: Real>(d: &[T]) -> T {
+    d.iter().fold(T::of(1.0), |a, &x| a * x)
+}
+
+/// ∫x² dm of a uniform segment of length a centred on 0: m a²/12.
+fn segment<T: Real>(m: T, a: T) -> T {
+    m * a * a / T::of(12.0)
+}
+
+/// π(R − r)(R + r): the area of an annulus, no difference of squares.
+fn ring<T: Real>(d: &[T]) -> T {
+    T::pi() * (d[0] - d[1]) * (d[0] + d[1])
+}
+
+/// m (R² + r²)/4: a disk's or annulus's ∫x² dm about a diameter.
+fn across_ring<T: Real>(m: T, r_out: T, r_in: T) -> T {
+    m * (r_out * r_out + r_in * r_in) / T::of(4.0)
+}
+
+/// The one list of shapes: `Variant => module::Kind`, in the order the
+/// docs and messages list them. Makes the `Shape` enum, `Shape::ALL`,
+/// `SHAPES` (each module's `INFO`) and `Shape`'s dispatch to each
+/// module's `ShapeKind`.
+macro_rules! registry {
+    ($($(#[$doc:meta])* $variant:ident => $module:ident :: $kind:ident,)+) => {
+        $(pub mod $module;)+
+
+        #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+        #[serde(rename_all = "lowercase")]
+        pub enum Shape {
+            $($(#[$doc])* $variant,)+
+        }
+
+        impl Shape {
+            pub const ALL: [Shape; [$(Shape::$variant),+].len()] = [$(Shape::$variant),+];
+
+            /// Volume, area or length of a shape of dimensions `d` (see
+            /// `second_moments`), the measure that the density multiplies.
+            pub fn measure_of<T: Real>(self, d: &[T]) -> T {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::measure(d),)+
+                }
+            }
+
+            /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of
+            /// mass `m` and dimensions `d` (each shape's module says which,
+            /// in `Dims::keys` order, a triangle's its area, a prism's its
+            /// area and length). Each about the shape's centroid
+            /// (`axial_offset`: off the origin of the local frame).
+            pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::second_moments(m, d),)+
+                }
+            }
+
+            /// The offset of the centroid from the origin of the local
+            /// frame, along local z, of a shape of dimensions `d` (a
+            /// prism's is in its polygon).
+            pub fn axial_offset<T: Real>(self, d: &[T]) -> T {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::axial_offset(d),)+
+                }
+            }
+
+            /// `ShapeKind::MEASURE_ROUNDINGS`.
+            pub fn measure_roundings(self) -> f64 {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::MEASURE_ROUNDINGS,)+
+                }
+            }
+
+            /// `ShapeKind::MOMENT_ROUNDINGS`.
+            pub fn moment_roundings(self) -> f64 {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::MOMENT_ROUNDINGS,)+
+                }
+            }
+
+            /// `ShapeKind::MIRROR_AXIS`.
+            pub fn mirror_axis(self) -> Option<usize> {
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::MIRROR_AXIS,)+
+                }
+            }
+        }
+
+        /// Each shape's description, in the order of `Shape`'s variants.
+        pub const SHAPES: [ShapeInfo; Shape::ALL.len()] =
+            [$(<$module::$kind as ShapeKind>::INFO,)+];
+    };
+}
+
+registry! {
+    Box => r#box::Cuboid,
+    Plate => plate::Plate,
+    Rod => rod::Rod,
+    Cylinder => cylinder::Cylinder,
+    Disk => disk::Disk,
+    Sphere => sphere::Sphere,
     /// A thin triangular plate given by its three vertices.
-    Triangle,
-    Point,
+    Triangle => triangle::Triangle,
+    Point => point::Point,
     /// A bought or previously computed component: mass, centre and inertia
-    /// tensor given (no closed form here; see `model::Place::Given`).
-    Inertia,
-    /// A cone or frustum, solid or hollow (`shapes::cone`).
-    Cone,
-    /// A torus, solid or hollow (`shapes::torus`).
-    Torus,
-    /// A hemisphere, solid or hollow (`shapes::hemisphere`).
-    Hemisphere,
-    /// A polygon extruded along local z (`shapes::prism`).
-    Prism,
+    /// tensor given (no closed form here; see `part::Place::Given`).
+    Inertia => inertia::Inertia,
+    /// A cone or frustum, solid or hollow.
+    Cone => cone::Cone,
+    /// A torus, solid or hollow.
+    Torus => torus::Torus,
+    /// A hemisphere, solid or hollow.
+    Hemisphere => hemisphere::Hemisphere,
+    /// A polygon extruded along local z.
+    Prism => prism::Prism,
     /// A triangle mesh read from a file: its integrals are computed from
     /// the file (`mesh`, `part::Place::Mesh`), no closed form here.
-    Mesh,
+    Mesh => mesh::Mesh,
 }
 
 impl Shape {
-    pub const ALL: [Shape; 14] = [
-        Shape::Box,
-        Shape::Plate,
-        Shape::Rod,
-        Shape::Cylinder,
-        Shape::Disk,
-        Shape::Sphere,
-        Shape::Triangle,
-        Shape::Point,
-        Shape::Inertia,
-        Shape::Cone,
-        Shape::Torus,
-        Shape::Hemisphere,
-        Shape::Prism,
-        Shape::Mesh,
-    ];
-
     /// The shape's description.
     pub fn info(self) -> &'static ShapeInfo {
         &SHAPES[self as usize]
@@ -139,100 +220,6 @@ impl Shape {
     /// The key of the density that this shape takes instead of `mass`.
     pub fn density_key(self) -> Option<&'static str> {
         self.info().density.map(|d| d.key)
-    }
-
-    /// Volume, area or length of a shape of dimensions `d` (see
-    /// `second_moments`), the measure that the density multiplies.
-    /// R² − r² is formed as (R − r)(R + r) and R³ − r³ as
-    /// (R − r)(R² + Rr + r²), so a thin wall is not a difference of large
-    /// numbers.
-    pub fn measure_of<T: Real>(self, d: &[T]) -> T {
-        let ring = |d: &[T]| T::pi() * (d[0] - d[1]) * (d[0] + d[1]);
-        match self {
-            Shape::Box | Shape::Plate | Shape::Rod | Shape::Triangle => {
-                d.iter().fold(T::of(1.0), |a, &x| a * x)
-            }
-            Shape::Cylinder => ring(d) * d[2],
-            Shape::Disk => ring(d),
-            Shape::Sphere => {
-                let (r_out, r_in) = (d[0], d[1]);
-                T::of(4.0) / T::of(3.0)
-                    * T::pi()
-                    * (r_out - r_in)
-                    * (r_out * r_out + r_out * r_in + r_in * r_in)
-            }
-            Shape::Point | Shape::Inertia | Shape::Mesh => T::of(1.0),
-            Shape::Cone => cone::measure(d),
-            Shape::Torus => torus::measure(d),
-            Shape::Hemisphere => hemisphere::measure(d),
-            // [area, length]: the area from the polygon (`part`).
-            Shape::Prism => d[0] * d[1],
-        }
-    }
-
-    /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
-    /// `m` and dimensions `d`: box [a, b, c]; plate [a, b]; rod [L];
-    /// cylinder [R, r, L]; disk [R, r]; sphere [R, r] (outer and inner
-    /// radius, r = 0 for a solid, r = R for a thin shell); point [];
-    /// cone [R₀, a₀, R₁, a₁, L] (base and top radii and bores);
-    /// torus [R, a, b] (centre line, tube, inner tube); hemisphere [R, r].
-    /// Each about the shape's centroid (`cone::offset`,
-    /// `hemisphere::offset`: off the origin of the local frame).
-    ///
-    /// - segment of length a: m a²/12;
-    /// - cylinder or tube, about a diameter in its mid-plane: m (R² + r²)/4
-    ///   (half the axial m (R² + r²)/2), and m L²/12 along the axis; a disk
-    ///   or annulus is the same with L = 0;
-    /// - sphere or hollow sphere: m/5 · (R⁵ − r⁵)/(R³ − r³) along every
-    ///   axis, written as m R²/5 · (1 + ρ + ρ² + ρ³ + ρ⁴)/(1 + ρ + ρ²) with
-    ///   ρ = r/R: no cancellation for thin walls, no overflow in R⁵, and
-    ///   m R²/3 for a thin shell.
-    pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
-        let zero = T::of(0.0);
-        let seg = |a: T| m * a * a / T::of(12.0);
-        let ring = |r_out: T, r_in: T| m * (r_out * r_out + r_in * r_in) / T::of(4.0);
-        match (self, d) {
-            (Shape::Box, &[a, b, c]) => [seg(a), seg(b), seg(c)],
-            (Shape::Plate, &[a, b]) => [seg(a), seg(b), zero],
-            (Shape::Rod, &[l]) => [zero, zero, seg(l)],
-            (Shape::Cylinder, &[r_out, r_in, l]) => {
-                let q = ring(r_out, r_in);
-                [q, q, seg(l)]
-            }
-            (Shape::Disk, &[r_out, r_in]) => {
-                let q = ring(r_out, r_in);
-                [q, q, zero]
-            }
-            (Shape::Sphere, &[r_out, r_in]) => {
-                let one = T::of(1.0);
-                let rho = r_in / r_out;
-                let rho2 = rho * rho;
-                let ratio = (one + rho + rho2 + rho2 * rho + rho2 * rho2) / (one + rho + rho2);
-                let q = m * r_out * r_out / T::of(5.0) * ratio;
-                [q, q, q]
-            }
-            // A given inertia is composed from `Place::Given` instead.
-            (Shape::Point | Shape::Inertia | Shape::Mesh, &[]) => [zero; 3],
-            // A triangle is composed from `Place::Vertices` instead.
-            (Shape::Triangle, &[_]) => [zero; 3],
-            (Shape::Cone, &[_, _, _, _, _]) => cone::second_moments(m, d),
-            (Shape::Torus, &[_, _, _]) => torus::second_moments(m, d),
-            (Shape::Hemisphere, &[_, _]) => hemisphere::second_moments(m, d),
-            // A prism is composed from `Place::Prism` instead.
-            (Shape::Prism, &[_, _]) => [zero; 3],
-            _ => unreachable!("the model passes each shape its dim_count() dimensions"),
-        }
-    }
-
-    /// The offset of the centroid from the origin of the local frame,
-    /// along local z, of a shape of dimensions `d`: the cone's and the
-    /// hemisphere's; 0 for the others (a prism's is in its polygon).
-    pub fn axial_offset<T: Real>(self, d: &[T]) -> T {
-        match self {
-            Shape::Cone => cone::offset(d),
-            Shape::Hemisphere => hemisphere::offset(d),
-            _ => T::of(0.0),
-        }
     }
 
     /// `measure_of` in f64.

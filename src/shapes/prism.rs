@@ -22,6 +22,7 @@
 //! magnitudes. The extrusion adds m L²/12 along z and nothing else: the
 //! local tensor has an x–y product and is block-diagonal.
 
+use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
 use crate::numeric::{DD, Real};
 
 /// A polygon's area and moments, per unit area about its centroid.
@@ -117,6 +118,56 @@ pub fn polygon(p: &[[f64; 2]]) -> Polygon {
 /// rotation.)
 pub fn mirrored(p: &[[f64; 2]]) -> Vec<[f64; 2]> {
     p.iter().rev().map(|v| [v[0], -v[1]]).collect()
+}
+
+/// The prism, in the registry (`shapes::registry!`).
+#[derive(Clone, Copy, Debug)]
+pub struct Prism;
+
+impl ShapeKind for Prism {
+    const INFO: ShapeInfo = ShapeInfo {
+        shape: Shape::Prism,
+        name: "prism",
+        keys: &[
+            "density", "polygon", "length", "origin", "rotation", "mass", "remove", "material",
+        ],
+        density: Some(PER_VOLUME),
+        dims: Dims::Polygon,
+        centred: &[],
+        spanned: None,
+        material: MaterialRule::Volume,
+        real_size: None,
+        nonzero_moments: 0,
+        drawn: Drawn::Extruded,
+        degenerate: "fewer than 3 vertices, a repeated vertex, crossing edges or no area",
+        help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
+    };
+
+    /// (its area is its polygon's: `part::error`).
+    const MEASURE_ROUNDINGS: f64 = 2.0;
+
+    /// (its second moment is its polygon's: `part::offset`).
+    const MOMENT_ROUNDINGS: f64 = 4.0;
+
+    const MIRROR_AXIS: Option<usize> = Some(2);
+
+    fn measure<T: Real>(d: &[T]) -> T {
+        let [area, length] = d else {
+            unreachable!("the model passes a prism its area and length")
+        };
+        *area * *length
+    }
+
+    fn second_moments<T: Real>(_: T, d: &[T]) -> [T; 3] {
+        let [_, _] = d else {
+            unreachable!("the model passes a prism its area and length")
+        };
+        [T::of(0.0); 3]
+    }
+
+    fn axial_offset<T: Real>(_: &[T]) -> T {
+        T::of(0.0)
+    }
 }
 
 #[cfg(test)]
