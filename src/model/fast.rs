@@ -25,8 +25,8 @@
 //! property test (tests/integration/hostile.rs) and the fuzz target assert
 //! that wherever this returns `Some`, serde gives the same `RawFile`.
 
+pub use super::raw::Section;
 use super::raw::{RawAnalysis, RawFile, RawPart, RawUnits};
-pub use super::section::Section;
 use values::{Node, quantity, rotation, set, string, units_key, vector, vectors};
 
 mod values;

@@ -20,7 +20,6 @@ use crate::diag::Diagnostic;
 use crate::numeric::M3;
 use crate::units::Dim;
 use std::collections::HashMap;
-use std::ops::Range;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use toml::Spanned;
@@ -468,7 +467,7 @@ impl Ctx<'_> {
     ) -> Result<Item, Diagnostic> {
         let p = raw.get_ref();
         let inc = p.include.as_deref().expect("the caller checked `include`");
-        if let Some((key, span)) = super::parts::present_keys(p)
+        if let Some((key, span)) = super::keys::present_keys(p)
             .into_iter()
             .filter(|(k, _)| !INCLUDE_KEYS.contains(k))
             .find_map(|(k, s)| s.map(|s| (k, s)))
@@ -707,9 +706,6 @@ impl Ctx<'_> {
         Ok(one.items[0].clone())
     }
 }
-
-/// Keys of a part with the span of each that is present.
-pub(super) type Present<'k> = Vec<(&'k str, Option<Range<usize>>)>;
 
 #[cfg(test)]
 mod tests {

@@ -3,7 +3,7 @@
 //! sizes (`thickness`, `diameter`) of idealised plates and rods.
 
 use super::Ctx;
-use super::parts::quantity_key;
+use super::keys::quantity_key;
 use super::raw::{Quantity, RawPart};
 use crate::diag::Diagnostic;
 use crate::part::Solid;

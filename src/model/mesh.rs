@@ -36,7 +36,7 @@ impl Ctx<'_> {
     ) -> Result<Part, Diagnostic> {
         let p = raw.get_ref();
         let info = Shape::Mesh.info();
-        if let Some((key, span)) = super::parts::present_keys(p)
+        if let Some((key, span)) = super::keys::present_keys(p)
             .into_iter()
             .filter(|(k, _)| *k != "shape" && !super::tolerance::accepts(info.keys, k))
             .find_map(|(k, s)| s.map(|s| (k, s)))

@@ -2,24 +2,8 @@
 //! `[expect]` and `[materials]`: read by serde alone, each from its own
 //! slice of the file, their spans moved to the file's (`raw::Shift`).
 
-use super::raw::{RawFile, Shift};
-use std::ops::Range;
+use super::raw::{RawFile, Section, Shift};
 use toml::Spanned;
-
-/// A table the fast path passes over for serde to read alone: `[expect]`,
-/// `[materials]`, or a table under one of them (`[materials.steel]`).
-///
-/// NOTE: serde reads each from its own slice of the text (`Section::read`),
-/// not the whole file: a file of 100,000 parts with an `[expect]` table was
-/// read whole by serde, at ~22 bytes of memory per byte of input (308 MiB
-/// for 12 MiB of TOML).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Section {
-    /// From its header to the next header or the end of the file.
-    pub span: Range<usize>,
-    /// `[materials]` (else `[expect]`).
-    pub materials: bool,
-}
 
 impl Section {
     /// The `[expect]` and `[materials]` of `sections`, each read by serde

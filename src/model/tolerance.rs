@@ -185,7 +185,7 @@ impl Ctx<'_> {
         key: &str,
     ) -> Diagnostic {
         let here =
-            super::params::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
+            super::span::sub_span(&source.text, span, text, at..at + (text.len() - at).min(3));
         source
             .error(here, format!("a tolerance is not allowed on `{key}`"))
             .help(TOLERANCES_GO)
@@ -356,7 +356,7 @@ impl Ctx<'_> {
         let start = start + (text.len() - start - text[start..].trim_start().len());
         let amount = &text[start..];
         let here = |from: usize, to: usize| {
-            super::params::sub_span(&source.text, span.clone(), text, from..to)
+            super::span::sub_span(&source.text, span.clone(), text, from..to)
         };
         let trimmed = amount.trim();
         let (body, spread) = match trimmed.rsplit_once(char::is_whitespace) {

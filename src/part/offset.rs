@@ -57,48 +57,6 @@ pub(super) fn centroid<T: Real, L: Lift>(shape: Shape, place: &Place, lift: L) -
     std::array::from_fn(|i| at[i] + (r[i][0] * l[0] + r[i][1] * l[1] + r[i][2] * l[2]))
 }
 
-/// How far each component of an offset part's centroid may lie from the
-/// exact one (see `error::centroid_error`): the local offset's own error
-/// (a few tens of double-double units of the magnitudes it is formed
-/// from: `Spread` for a prism's polygon, the larger of the radius and
-/// the length for a cone or hemisphere), its turn by R (the rotation's own
-/// error ρ per entry, two products and sums), and the sum with the
-/// placing point.
-pub(super) fn centroid_error(place: &Place, centroid: &[f64; 3]) -> [f64; 3] {
-    let (spread, offset, orientation): ([f64; 3], [f64; 3], &Orientation) = match place {
-        Place::Axial {
-            dims, orientation, ..
-        } => {
-            let big = dims[0].abs().max(dims[4].abs()).max(dims[2].abs());
-            ([0.0, 0.0, 64.0 * big], [0.0, 0.0, big], orientation)
-        }
-        Place::Prism {
-            polygon: p,
-            orientation,
-            ..
-        } => {
-            let poly = polygon(p);
-            let g = poly.centroid.map(|x| x.f64().abs());
-            let s = poly.spread.centroid;
-            (
-                [32.0 * s[0] + 4.0 * g[0], 32.0 * s[1] + 4.0 * g[1], 0.0],
-                [g[0], g[1], 0.0],
-                orientation,
-            )
-        }
-        _ => unreachable!("only an axial part or a prism has an offset centroid"),
-    };
-    let r: M3<f64> = orientation.matrix();
-    let rho = error::turn_error(orientation, &r);
-    let u = error::U_DD;
-    std::array::from_fn(|i| {
-        let turned: f64 = (0..3)
-            .map(|k| r[i][k].abs() * spread[k] + (rho + 3.0) * offset[k])
-            .sum();
-        u * (turned + 4.0 * centroid[i].abs())
-    })
-}
-
 /// The units of the arithmetic `T` by which a prism's local figures
 /// (`Polygon`, double-double) may be off, relative to the magnitudes `ell`
 /// of the diagonal: 32 double-double units of the magnitudes each entry is

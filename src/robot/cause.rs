@@ -154,7 +154,7 @@ impl Mirrors {
                 continue;
             }
             for (key, side) in keys {
-                super::check::step(1);
+                super::steps::step(1);
                 map.entry(key.clone()).or_default()[*side].push(j);
             }
         }
@@ -166,7 +166,7 @@ impl Mirrors {
                     .iter()
                     .filter_map(|(key, side)| map.get(key).map(|s| &s[1 - side]))
                     .flatten()
-                    .inspect(|_| super::check::step(1))
+                    .inspect(|_| super::steps::step(1))
                     .filter(|&&j| j != i);
                 let j = *found.next()?;
                 found.next().is_none().then_some(j)
@@ -268,7 +268,7 @@ pub fn likely(
     f: &Facts,
     engine: Engine,
 ) -> Option<Cause> {
-    super::check::step(1);
+    super::steps::step(1);
     let link = &d.links[i];
     let inertial = link.inertial.as_ref()?;
     let ok = |t: Tensor| accepts(engine, &facts_with(f, t), &d.compiler);

@@ -7,6 +7,8 @@
 
 use super::cause::{self, Cause};
 use super::engine::{self, Engine, Facts, Verdict};
+use super::steps;
+pub use super::steps::steps;
 use super::{Description, Format};
 use crate::diag::{Source, Span, floor_char_boundary};
 use serde::Serialize;
@@ -69,27 +71,6 @@ impl RobotResult {
     }
 }
 
-thread_local! {
-    /// The steps of work of the checks on this thread (`steps`).
-    static STEPS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
-}
-
-/// Count `n` steps of work (`steps`).
-pub(super) fn step(n: usize) {
-    STEPS.with(|s| s.set(s.get().saturating_add(n as u64)));
-}
-
-/// The steps of work the checks on this thread have done so far: each
-/// link and engine met, each link a walk down the tree visits, each byte
-/// a span counts past, each name a mirror map files or looks at. A test
-/// holds `check` to work linear in the file with it, with no clock
-/// (tests/integration/robots_hostile.rs); a pass over all links made
-/// once per link would show as the square.
-#[doc(hidden)]
-pub fn steps() -> u64 {
-    STEPS.with(std::cell::Cell::get)
-}
-
 /// Check every link of `d` (read from `source`) under `engines`.
 pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResult {
     let mut links = Vec::with_capacity(d.links.len());
@@ -100,7 +81,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
     let mirrors = cause::Mirrors::of(&d.links);
     let mut spans = Spans::new(&source.text);
     for (i, link) in d.links.iter().enumerate() {
-        step(1 + engines.len());
+        steps::step(1 + engines.len());
         let mut warnings = Vec::new();
         if !names.insert(link.name.as_str()) {
             warnings.push(format!(
@@ -261,7 +242,7 @@ impl Tree {
         let mut stack = vec![i];
         self.seen[i] = walk;
         while let Some(p) = stack.pop() {
-            step(1 + self.fixed_children[p].len());
+            steps::step(1 + self.fixed_children[p].len());
             for &j in &self.fixed_children[p] {
                 if self.seen[j] != walk {
                     if heavy(&d.links[j]) {
@@ -290,7 +271,7 @@ struct Spans<'t> {
 
 impl<'t> Spans<'t> {
     fn new(text: &'t str) -> Spans<'t> {
-        step(text.len());
+        steps::step(text.len());
         let line_starts = std::iter::once(0)
             .chain(text.match_indices('\n').map(|(i, _)| i + 1))
             .collect();
@@ -312,7 +293,7 @@ impl<'t> Spans<'t> {
         } else {
             (start, 1)
         };
-        step(1 + offset - from);
+        steps::step(1 + offset - from);
         let col = col + self.text[from..offset].chars().count();
         self.cursor = (offset, col);
         (line, col)

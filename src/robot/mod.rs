@@ -11,6 +11,7 @@ pub mod cause;
 pub mod check;
 pub mod engine;
 pub mod read;
+mod steps;
 
 use std::ops::Range;
 

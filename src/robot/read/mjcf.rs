@@ -6,41 +6,14 @@
 //! Orientations are turned into a matrix as MuJoCo's compiler turns them
 //! (`orient`).
 
-use super::orient::{orientation, quat_to_matrix};
+use super::orient::{Settings, orientation, quat_to_matrix};
 use super::{Value, Xml, children, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
-use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
+use crate::robot::{Description, Format, Inertial, Link, Tensor, Written};
 use roxmltree::Node;
-
-/// MuJoCo's mjEPS: the squared length below which a vector is too small to
-/// normalise, and the distance from 1 within which a length is left alone.
-pub(super) const EPS: f64 = 1e-14;
 
 /// The orientation attributes of an `<inertial>`, in MuJoCo's order.
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
-
-/// What the `<compiler>` elements set: MuJoCo's verdict options, and how
-/// orientations read.
-#[derive(Clone, Debug, PartialEq)]
-pub(super) struct Settings {
-    pub compiler: MujocoCompiler,
-    /// `angle`: whether `axisangle` and `euler` angles are degrees (MJCF's
-    /// default) or radians.
-    pub degree: bool,
-    /// `eulerseq`: three of `xyzXYZ`, lowercase turning about the rotating
-    /// axes, uppercase about the fixed ones.
-    pub eulerseq: [u8; 3],
-}
-
-impl Default for Settings {
-    fn default() -> Self {
-        Settings {
-            compiler: MujocoCompiler::default(),
-            degree: true,
-            eulerseq: *b"xyz",
-        }
-    }
-}
 
 /// Apply one `<compiler>` element: each attribute it gives replaces the
 /// earlier value, as MuJoCo reads several `<compiler>`s into one.

@@ -5,10 +5,37 @@
 //! user_util.cc), tolerances included, so that the frame read here is the
 //! frame MuJoCo compiles.
 
-use super::mjcf::{EPS, Settings};
 use super::{Value, Xml};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
+
+use crate::robot::MujocoCompiler;
+/// MuJoCo's mjEPS: the squared length below which a vector is too small to
+/// normalise, and the distance from 1 within which a length is left alone.
+pub(super) const EPS: f64 = 1e-14;
+
+/// What the `<compiler>` elements set: MuJoCo's verdict options, and how
+/// orientations read.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Settings {
+    pub compiler: MujocoCompiler,
+    /// `angle`: whether `axisangle` and `euler` angles are degrees (MJCF's
+    /// default) or radians.
+    pub degree: bool,
+    /// `eulerseq`: three of `xyzXYZ`, lowercase turning about the rotating
+    /// axes, uppercase about the fixed ones.
+    pub eulerseq: [u8; 3],
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            compiler: MujocoCompiler::default(),
+            degree: true,
+            eulerseq: *b"xyz",
+        }
+    }
+}
 
 /// The unit quaternion (w, x, y, z) of one orientation attribute, as
 /// MuJoCo's compiler forms it.

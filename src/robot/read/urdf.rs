@@ -57,7 +57,7 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
     for (l, p) in links.iter_mut().zip(parents) {
         l.parent = p;
     }
-    let mut settings = mjcf::Settings::default();
+    let mut settings = super::orient::Settings::default();
     for mujoco in children(robot, "mujoco") {
         for compiler in children(mujoco, "compiler") {
             mjcf::compiler(xml, compiler, &mut settings)?;
