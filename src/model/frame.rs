@@ -9,7 +9,7 @@ use crate::part::{MassSpec, Place, Spec};
 use crate::shapes::Shape;
 
 /// Where an included file's frame goes in this file's.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     /// This file's units.
     pub(super) origin: [f64; 3],
