@@ -95,7 +95,8 @@ impl Copies {
     /// in the mirror.
     pub(super) fn which(&self, i: usize) -> (usize, bool) {
         let n = self.count();
-        (i % n, i >= n)
+        // No division: i < 2n.
+        if i < n { (i, false) } else { (i - n, true) }
     }
 
     /// The mirror's frame, that places the images (none without a
@@ -136,17 +137,28 @@ impl Copies {
     /// `f`, the frame of another copy of this array (`array_frame`), moved
     /// in place to copy `k`'s: only what differs from one copy to the
     /// next is made again (the step's multiple, or the turn and its
-    /// matrix), to the same bits as `array_frame(k)`.
-    pub(super) fn move_array_frame(&self, k: usize, f: &mut Frame) {
+    /// matrix), to the same bits as `array_frame(k)`. Whether any bit of
+    /// it changed (none, from one copy to the next, when the step or the
+    /// turn is zero: the copies coincide).
+    pub(super) fn move_array_frame(&self, k: usize, f: &mut Frame) -> bool {
+        let differ = |a: f64, b: f64| a.to_bits() != b.to_bits();
         match &self.pattern {
-            Pattern::One => {}
+            Pattern::One => false,
             Pattern::Linear { step, .. } => {
                 let k = k as f64;
-                f.origin = step.map(|s| k * s);
+                let origin = step.map(|s| k * s);
+                let moved = (0..3).any(|j| differ(origin[j], f.origin[j]));
+                f.origin = origin;
+                moved
             }
             Pattern::Polar { axis, degrees, .. } => {
-                f.orientation = Orientation::AxisAngle(*axis, k as f64 * degrees);
+                let turn = k as f64 * degrees;
+                if matches!(f.orientation, Orientation::AxisAngle(_, t) if !differ(t, turn)) {
+                    return false;
+                }
+                f.orientation = Orientation::AxisAngle(*axis, turn);
                 f.r = f.orientation.matrix();
+                true
             }
         }
     }
@@ -752,8 +764,35 @@ mod tests {
         for c in [copies(7, false), polar] {
             let mut f = c.array_frame(1);
             for k in [2, 6, 3] {
-                c.move_array_frame(k, &mut f);
+                assert!(c.move_array_frame(k, &mut f));
                 // To the bit (Debug writes each float's shortest exact form).
+                assert_eq!(format!("{f:?}"), format!("{:?}", c.array_frame(k)));
+            }
+        }
+    }
+
+    #[test]
+    fn a_frame_moved_by_a_zero_step_or_turn_is_unchanged() {
+        let still = |pattern| Copies {
+            pattern,
+            mirror: None,
+            image: None,
+            only: None,
+        };
+        let linear = still(Pattern::Linear {
+            count: 5,
+            step: [0.0, -0.0, 0.0],
+        });
+        let polar = still(Pattern::Polar {
+            count: 5,
+            axis: [0.0, 0.0, 1.0],
+            degrees: 0.0,
+            origin: [1.0, 2.0, 3.0],
+        });
+        for c in [linear, polar] {
+            let mut f = c.array_frame(1);
+            for k in 2..5 {
+                assert!(!c.move_array_frame(k, &mut f), "copy {k} of {c:?}");
                 assert_eq!(format!("{f:?}"), format!("{:?}", c.array_frame(k)));
             }
         }

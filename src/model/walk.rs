@@ -299,12 +299,17 @@ impl<'m> Walk<'m> {
                     copies,
                     tag,
                 } => match copies {
-                    None => self.part(model, k, (part, tag.as_deref()), *real, None, f),
+                    None => self.part(model, k, (part, tag.as_deref(), *real), None, true, f),
                     Some(c) => {
                         let base = self.frames.len();
+                        let first = c.indices().start;
                         for i in c.indices() {
-                            self.copy_frames(c, i, &part.span, base);
-                            self.part(model, k, (part, tag.as_deref()), *real, Some(i), f);
+                            // NOTE: a copy whose frames are the last copy's
+                            // to the bit (a step or turn of zero) is placed
+                            // where the last was: `placed` holds it already.
+                            let moved = self.copy_frames(c, i, &part.span, base) || i == first;
+                            let part = (part, tag.as_deref(), *real);
+                            self.part(model, k, part, Some(i), moved, f);
                         }
                         self.frames.truncate(base);
                     }
@@ -321,9 +326,18 @@ impl<'m> Walk<'m> {
     /// in place to this one (`Copies::move_array_frame`); made and pushed
     /// for each copy, a frame's bytes moved five times were 40 % of the
     /// time of `render` of 2,000,000 copies.
-    fn copy_frames(&mut self, c: &'m Copies, i: usize, span: &'m Range<usize>, base: usize) {
+    ///
+    /// Whether they moved: false when they are the last copy's to the bit.
+    fn copy_frames(
+        &mut self,
+        c: &'m Copies,
+        i: usize,
+        span: &'m Range<usize>,
+        base: usize,
+    ) -> bool {
         let (k, image) = c.which(i);
         let mut at = base;
+        let mut moved = false;
         if image {
             let mirror = c
                 .image()
@@ -339,6 +353,7 @@ impl<'m> Walk<'m> {
                     span,
                     moved: None,
                 });
+                moved = true;
             }
             at += 1;
         }
@@ -348,7 +363,7 @@ impl<'m> Walk<'m> {
                 Some(Layer {
                     frame: Cow::Owned(frame),
                     ..
-                }) => c.move_array_frame(k, frame),
+                }) => moved |= c.move_array_frame(k, frame),
                 _ => {
                     self.frames.truncate(at);
                     self.frames.push(Layer {
@@ -356,11 +371,14 @@ impl<'m> Walk<'m> {
                         span,
                         moved: None,
                     });
+                    moved = true;
                 }
             }
             at += 1;
         }
+        moved |= self.frames.len() != at;
         self.frames.truncate(at);
+        moved
     }
 
     /// The sub-assembly `inc` (its copy `copy`), entered, walked and left.
@@ -407,8 +425,9 @@ impl<'m> Walk<'m> {
         f(Event::Exit);
     }
 
-    /// The part `part` with its tag, `k` its position in its file (its
-    /// copy `copy`).
+    /// The part `part` with its tag and real size, `k` its position in its
+    /// file (its copy `copy`); `moved` false when `placed` holds it placed through
+    /// these very frames already (the last copy, in the same place).
     ///
     /// NOTE: the part handed out is `part` itself when nothing places or
     /// names it, else `placed` made `part` again in place (`reset`: no
@@ -418,9 +437,9 @@ impl<'m> Walk<'m> {
         &mut self,
         model: &'m Model,
         k: usize,
-        (part, tag): (&'m Part, Option<&'m Tag>),
-        real: Option<(crate::part::Solid, f64)>,
+        (part, tag, real): (&'m Part, Option<&'m Tag>, Option<(crate::part::Solid, f64)>),
         copy: Option<usize>,
+        moved: bool,
         f: &mut dyn FnMut(Event<'_>),
     ) {
         let index = self.next;
@@ -454,12 +473,14 @@ impl<'m> Walk<'m> {
             // As `placed.clone_from(part)`, its buffers kept.
             placed.name.clone_from(&part.name);
             placed.named = part.named;
-            placed.shape = part.shape;
-            reset::spec(&mut placed.spec, &part.spec);
-            placed.assembly.clone_from(&part.assembly);
-            placed.span.clone_from(&part.span);
-            reset::shared(&mut placed.tol, &part.tol);
-            reset::shared(&mut placed.material, &part.material);
+            if moved {
+                placed.shape = part.shape;
+                reset::spec(&mut placed.spec, &part.spec);
+                placed.assembly.clone_from(&part.assembly);
+                placed.span.clone_from(&part.span);
+                reset::shared(&mut placed.tol, &part.tol);
+                reset::shared(&mut placed.material, &part.material);
+            }
             if self.named {
                 placed.name.clear();
                 write_name(&mut placed.name, "", k, part, copy);
@@ -475,12 +496,16 @@ impl<'m> Walk<'m> {
             }));
             return;
         };
-        placed.shape = part.shape;
-        placed.span.clone_from(outermost.span);
-        reset::spec(&mut placed.spec, &part.spec);
-        reset::shared(&mut placed.material, &part.material);
+        if moved {
+            placed.shape = part.shape;
+            placed.span.clone_from(outermost.span);
+            reset::spec(&mut placed.spec, &part.spec);
+            reset::shared(&mut placed.material, &part.material);
+        }
         for layer in self.frames.iter().rev() {
-            layer.frame.place(part.shape, &mut placed.spec);
+            if moved {
+                layer.frame.place(part.shape, &mut placed.spec);
+            }
             if let Some(r) = &mut real {
                 r.size *= layer.frame.length;
             }
