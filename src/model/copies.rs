@@ -30,7 +30,7 @@ pub(super) const COPY_KEYS: [&str; 2] = ["array", "mirror"];
 
 /// How an array places its copies.
 #[derive(Debug, Clone, PartialEq)]
-enum Pattern {
+pub(super) enum Pattern {
     /// No array: the part alone (and its image, with a mirror).
     One,
     /// Copy i moved by i·`step` (file units).
@@ -105,62 +105,16 @@ impl Copies {
         self.image.as_ref()
     }
 
-    /// The frame that places copy `k` (from 1) of the array: moved by
-    /// k·step, or turned by k·θ about the axis through its origin.
+    /// The frame that places copy `k` (from 1) of the array
+    /// (`Frame::of_copy`).
     pub(super) fn array_frame(&self, k: usize) -> Frame {
-        match &self.pattern {
-            // Never asked: the part alone is copy 0 of its array.
-            Pattern::One => Frame::copy([0.0; 3], [0.0; 3], Orientation::Identity, false),
-            Pattern::Linear { step, .. } => {
-                let k = k as f64;
-                Frame::copy(
-                    step.map(|s| k * s),
-                    [0.0; 3],
-                    Orientation::Identity,
-                    false,
-                )
-            }
-            Pattern::Polar {
-                axis,
-                degrees,
-                origin,
-                ..
-            } => Frame::copy(
-                *origin,
-                *origin,
-                Orientation::AxisAngle(*axis, k as f64 * degrees),
-                false,
-            ),
-        }
+        Frame::of_copy(&self.pattern, k)
     }
 
-    /// `f`, the frame of another copy of this array (`array_frame`), moved
-    /// in place to copy `k`'s: only what differs from one copy to the
-    /// next is made again (the step's multiple, or the turn and its
-    /// matrix), to the same bits as `array_frame(k)`. Whether any bit of
-    /// it changed (none, from one copy to the next, when the step or the
-    /// turn is zero: the copies coincide).
+    /// `f`, another copy's frame, moved in place to copy `k`'s; whether
+    /// any bit of it changed (`Frame::move_to_copy`).
     pub(super) fn move_array_frame(&self, k: usize, f: &mut Frame) -> bool {
-        let differ = |a: f64, b: f64| a.to_bits() != b.to_bits();
-        match &self.pattern {
-            Pattern::One => false,
-            Pattern::Linear { step, .. } => {
-                let k = k as f64;
-                let origin = step.map(|s| k * s);
-                let moved = (0..3).any(|j| differ(origin[j], f.origin[j]));
-                f.origin = origin;
-                moved
-            }
-            Pattern::Polar { axis, degrees, .. } => {
-                let turn = k as f64 * degrees;
-                if matches!(f.orientation, Orientation::AxisAngle(_, t) if !differ(t, turn)) {
-                    return false;
-                }
-                f.orientation = Orientation::AxisAngle(*axis, turn);
-                f.r = f.orientation.matrix();
-                true
-            }
-        }
+        f.move_to_copy(&self.pattern, k)
     }
 
     /// The copy `name` names of the part or sub-assembly `base`
@@ -478,7 +432,13 @@ impl Ctx<'_> {
         };
         let si = self.units.factor(Dim::LENGTH).value();
         let mut bad = None;
-        one.each_body_part(&mut |p| {
+        // A coincident copy is the copy before it to the bit: its check is
+        // that one's (`each_run`).
+        one.each_run(&mut |run| {
+            let super::walk::Run::Event(super::Event::Part(leaf)) = run else {
+                return;
+            };
+            let p = leaf.part;
             if bad.is_some() {
                 return;
             }
@@ -746,56 +706,6 @@ mod tests {
         assert_eq!(c.which(3), (0, true));
         assert_eq!(c.which(4), (1, true));
         assert!(copies(3, false).image().is_none());
-    }
-
-    #[test]
-    fn a_frame_moved_to_a_copy_is_the_frame_made_for_it() {
-        let polar = Copies {
-            pattern: Pattern::Polar {
-                count: 7,
-                axis: [1.0, 2.0, 3.0],
-                degrees: 51.3,
-                origin: [0.5, -1.0, 2.0],
-            },
-            mirror: None,
-            image: None,
-            only: None,
-        };
-        for c in [copies(7, false), polar] {
-            let mut f = c.array_frame(1);
-            for k in [2, 6, 3] {
-                assert!(c.move_array_frame(k, &mut f));
-                // To the bit (Debug writes each float's shortest exact form).
-                assert_eq!(format!("{f:?}"), format!("{:?}", c.array_frame(k)));
-            }
-        }
-    }
-
-    #[test]
-    fn a_frame_moved_by_a_zero_step_or_turn_is_unchanged() {
-        let still = |pattern| Copies {
-            pattern,
-            mirror: None,
-            image: None,
-            only: None,
-        };
-        let linear = still(Pattern::Linear {
-            count: 5,
-            step: [0.0, -0.0, 0.0],
-        });
-        let polar = still(Pattern::Polar {
-            count: 5,
-            axis: [0.0, 0.0, 1.0],
-            degrees: 0.0,
-            origin: [1.0, 2.0, 3.0],
-        });
-        for c in [linear, polar] {
-            let mut f = c.array_frame(1);
-            for k in 2..5 {
-                assert!(!c.move_array_frame(k, &mut f), "copy {k} of {c:?}");
-                assert_eq!(format!("{f:?}"), format!("{:?}", c.array_frame(k)));
-            }
-        }
     }
 
     #[test]

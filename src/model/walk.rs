@@ -131,6 +131,46 @@ pub enum Event<'a> {
     Exit,
 }
 
+/// What a walk of runs meets (`Model::each_run`): the events of
+/// `each_event`, but a copy placed to the bit where the part met last is
+/// (a copy of it) comes as a count.
+pub enum Run<'a> {
+    Event(Event<'a>),
+    /// The part met last, `n` times more, each in the same place (and
+    /// each a part of the body: the parts' indices count them).
+    Again(usize),
+}
+
+/// Whom a walk hands what it meets: events alone (`Events`), or events
+/// and counts of coincident copies (`Runs`, `RUNS`).
+trait Visit {
+    const RUNS: bool;
+    fn event(&mut self, e: Event<'_>);
+    fn again(&mut self, n: usize);
+}
+
+struct Events<'f>(&'f mut dyn FnMut(Event<'_>));
+
+impl Visit for Events<'_> {
+    const RUNS: bool = false;
+    fn event(&mut self, e: Event<'_>) {
+        (self.0)(e);
+    }
+    fn again(&mut self, _: usize) {}
+}
+
+struct Runs<'f>(&'f mut dyn FnMut(Run<'_>));
+
+impl Visit for Runs<'_> {
+    const RUNS: bool = true;
+    fn event(&mut self, e: Event<'_>) {
+        (self.0)(Run::Event(e));
+    }
+    fn again(&mut self, n: usize) {
+        (self.0)(Run::Again(n));
+    }
+}
+
 impl Model {
     /// Every part of the body, named, in file order.
     pub fn each_part(&self, f: &mut dyn FnMut(Leaf<'_>)) {
@@ -194,8 +234,22 @@ impl Model {
         });
     }
 
+    /// Every part and sub-assembly, as `each_event`, but a copy placed to
+    /// the bit where the copy before it is (an array's copies with a step
+    /// or a turn of zero: coincident) comes as a count after it
+    /// (`Run::Again`), not as a part: for the walks that do with a
+    /// coincident copy nothing but count it (the drawing's, the range
+    /// check's), its cost is the copies that differ.
+    pub fn each_run(&self, f: &mut dyn FnMut(Run<'_>)) {
+        self.walk_with(false, &mut 0, &mut Runs(f));
+    }
+
     /// Walk the items, `next` the index of the next part.
     pub(super) fn walk(&self, named: bool, next: &mut usize, f: &mut dyn FnMut(Event<'_>)) {
+        self.walk_with(named, next, &mut Events(f));
+    }
+
+    fn walk_with(&self, named: bool, next: &mut usize, f: &mut impl Visit) {
         let mut walk = Walk {
             frames: Vec::new(),
             keys: vec![0],
@@ -279,7 +333,7 @@ struct Walk<'m> {
 }
 
 impl<'m> Walk<'m> {
-    fn items(&mut self, model: &'m Model, f: &mut dyn FnMut(Event<'_>)) {
+    fn items<V: Visit>(&mut self, model: &'m Model, f: &mut V) {
         for (k, item) in model.items.iter().enumerate() {
             match item {
                 Item::Include(inc) => match &inc.copies {
@@ -303,13 +357,26 @@ impl<'m> Walk<'m> {
                     Some(c) => {
                         let base = self.frames.len();
                         let first = c.indices().start;
+                        let mut again = 0;
                         for i in c.indices() {
                             // NOTE: a copy whose frames are the last copy's
                             // to the bit (a step or turn of zero) is placed
-                            // where the last was: `placed` holds it already.
+                            // where the last was: `placed` holds it already;
+                            // a walk of runs counts it and hands out nothing.
                             let moved = self.copy_frames(c, i, &part.span, base) || i == first;
+                            if V::RUNS && !moved {
+                                again += 1;
+                                self.next += 1;
+                                continue;
+                            }
+                            if again > 0 {
+                                f.again(std::mem::take(&mut again));
+                            }
                             let part = (part, tag.as_deref(), *real);
                             self.part(model, k, part, Some(i), moved, f);
+                        }
+                        if again > 0 {
+                            f.again(again);
                         }
                         self.frames.truncate(base);
                     }
@@ -388,9 +455,9 @@ impl<'m> Walk<'m> {
         k: usize,
         inc: &'m Include,
         copy: Option<usize>,
-        f: &mut dyn FnMut(Event<'_>),
+        f: &mut impl Visit,
     ) {
-        f(Event::Enter(inc));
+        f.event(Event::Enter(inc));
         let file = *self.keys.last().expect("the root's key");
         let key = mix(file, k as u64, copy.map_or(u64::MAX, |i| i as u64));
         self.keys.push(key);
@@ -422,7 +489,7 @@ impl<'m> Walk<'m> {
         }
         self.frames.pop();
         self.keys.pop();
-        f(Event::Exit);
+        f.event(Event::Exit);
     }
 
     /// The part `part` with its tag and real size, `k` its position in its
@@ -440,7 +507,7 @@ impl<'m> Walk<'m> {
         (part, tag, real): (&'m Part, Option<&'m Tag>, Option<(crate::part::Solid, f64)>),
         copy: Option<usize>,
         moved: bool,
-        f: &mut dyn FnMut(Event<'_>),
+        f: &mut impl Visit,
     ) {
         let index = self.next;
         self.next += 1;
@@ -460,7 +527,7 @@ impl<'m> Walk<'m> {
         let placed = &mut self.placed;
         let Some(outermost) = self.frames.first() else {
             if !unnamed && copy.is_none() {
-                f(Event::Part(Leaf {
+                f.event(Event::Part(Leaf {
                     index,
                     part,
                     real,
@@ -486,7 +553,7 @@ impl<'m> Walk<'m> {
                 write_name(&mut placed.name, "", k, part, copy);
                 placed.named = true;
             }
-            f(Event::Part(Leaf {
+            f.event(Event::Part(Leaf {
                 index,
                 part: placed,
                 real,
@@ -514,7 +581,7 @@ impl<'m> Walk<'m> {
             placed.name.clear();
             write_name(&mut placed.name, &self.prefix, k, part, copy);
         }
-        f(Event::Part(Leaf {
+        f.event(Event::Part(Leaf {
             index,
             part: placed,
             real,
