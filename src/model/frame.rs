@@ -193,15 +193,17 @@ impl Frame {
     /// time of a report of 2²⁰ instances).
     pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
         let reach = reach(&s.place) * self.length;
-        // A density per volume, area or length scales with that power.
-        let k = match &s.place {
-            // A mesh's density is per volume or per area by its mode.
-            Place::Mesh { mesh, .. } => mesh.mode.power(),
-            _ => shape.info().density.map_or(0, |d| d.length_power),
-        };
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
-            MassSpec::Density(d) => *d = *d * self.mass / self.length.powi(k),
+            MassSpec::Density(d) => {
+                // A density per volume, area or length scales with that power.
+                let k = match &s.place {
+                    // A mesh's density is per volume or per area by its mode.
+                    Place::Mesh { mesh, .. } => mesh.mode.power(),
+                    _ => shape.info().density.map_or(0, |d| d.length_power),
+                };
+                *d = *d * self.mass / self.length.powi(k);
+            }
         }
         match &mut s.place {
             Place::Centered {
@@ -306,7 +308,13 @@ impl Frame {
     /// (a unit of |p|₁ + |pivot|₁, turned) and its origin's own rounding
     /// (i·step, or the pivot itself: a unit of it).
     fn rounding(&self, old: crate::part::Placed, reach: f64) -> crate::part::Placed {
-        let rho = crate::part::error::turn_error(&self.orientation, &self.r);
+        // NOTE: no turn is exact, without its matrix asked (a copy along a
+        // step, a sub-assembly not turned: most frames).
+        let rho = if matches!(self.orientation, Orientation::Identity) {
+            0.0
+        } else {
+            crate::part::error::turn_error(&self.orientation, &self.r)
+        };
         let exact = rho == 0.0 && self.length == 1.0 && self.mass == 1.0;
         let grow = if rho == 0.0 { 1.0 } else { 3.0 };
         let size = if exact { 0.0 } else { 12.0 + 2.0 * rho };
