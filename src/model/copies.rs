@@ -1,6 +1,8 @@
 //! Copies of a part or a sub-assembly: `array = { .. }` and `mirror =
 //! { .. }` on any `[[part]]`, read and checked (`Ctx::copies`), and each
-//! copy's frames (`Copies::frames`).
+//! copy's frames (the mirror's, made once: `Copies::image`; the array's,
+//! `Copies::array_frame`, moved from copy to copy in place:
+//! `Copies::move_array_frame`).
 //!
 //! NOTE: a copy is a frame, as an include is (`model::frame::Frame`): nothing
 //! holds the copies; a walk (`walk`) places each as it reaches it, through

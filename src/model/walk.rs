@@ -11,8 +11,11 @@
 //! sub-assembly's frame first, then each enclosing one's, every coordinate
 //! rounded once per frame (`frame::Frame::place`); so results are the
 //! same to the last bit. A part's or a sub-assembly's copies (`array`,
-//! `mirror`: `copies`) are frames too, made as the walk reaches each copy
-//! and applied after the sub-assembly's own: the copies are never held.
+//! `mirror`: `copies`) are frames too, set as the walk reaches each copy
+//! (the last copy's moved in place) and applied after the sub-assembly's
+//! own: the copies are never held. A copy whose frames are the last
+//! copy's to the bit (a step or turn of zero) is not placed again, and a
+//! walk of runs (`Model::each_run`) hands it out as a count.
 
 use super::budget::Tag;
 use super::{Copies, Frame, Include, Item, Model, push_copy_name};
@@ -277,9 +280,9 @@ impl Model {
     }
 }
 
-/// A frame a part is placed through: an include's, or a copy's made as
-/// the walk reaches it (`copies::Copies::frames`); with the `[[part]]`
-/// table in this file that it comes from.
+/// A frame a part is placed through: an include's, or a copy's set as
+/// the walk reaches it (`Walk::copy_frames`); with the `[[part]]` table
+/// in this file that it comes from.
 struct Layer<'m> {
     frame: Cow<'m, Frame>,
     span: &'m Range<usize>,
