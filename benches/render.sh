@@ -19,7 +19,9 @@
 # 150-byte file: an `array` of step 0), drawn once per view with their
 # count: its time and peak RSS (GNU time, one run each of COPIES and
 # COPIES/4, to see the cost linear) and the SVG's size (a few kB, as for
-# one box). `CASE=copies` runs this case alone.
+# one box); beside it, for scale, `report` (the table, which lists every
+# copy) and `report --format json` of the same file, wall and user time.
+# `CASE=copies` runs this case alone.
 #
 # Needs python3, hyperfine and GNU time (the latter two installed with
 # apt-get when missing, as root). Environment: PARTS (default 100000),
@@ -47,6 +49,11 @@ copies() {
     printf '%d copies in one place (%d-byte file): render %s s (%s s user), peak RSS %.0f MB, SVG %d bytes; %s\n' \
         "$1" "$(wc -c < "$tmp/copies.toml")" "$wall" "$user" "$((rss / 1024))" "$(wc -c < "$tmp/copies.svg")" \
         "$(grep -o '[0-9]* coincident cop[a-z]* not drawn again' "$tmp/copies.svg" | head -1)"
+    for format in table json; do
+        /usr/bin/time -f '%e %U' -o "$tmp/time" "$tmp/massprop" report --format "$format" "$tmp/copies.toml" > /dev/null
+        read -r wall user < "$tmp/time"
+        printf '    report --format %s of the same file: %s s (%s s user)\n' "$format" "$wall" "$user"
+    done
 }
 copies "$((COPIES / 4))"
 copies "$COPIES"

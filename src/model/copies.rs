@@ -1,6 +1,8 @@
 //! Copies of a part or a sub-assembly: `array = { .. }` and `mirror =
 //! { .. }` on any `[[part]]`, read and checked (`Ctx::copies`), and each
-//! copy's frames (`Copies::frames`).
+//! copy's frames (the mirror's, made once: `Copies::image`; the array's,
+//! `Copies::array_frame`, moved from copy to copy in place:
+//! `Copies::move_array_frame`).
 //!
 //! NOTE: a copy is a frame, as an include is (`model::frame::Frame`): nothing
 //! holds the copies; a walk (`walk`) places each as it reaches it, through
@@ -30,7 +32,7 @@ pub(super) const COPY_KEYS: [&str; 2] = ["array", "mirror"];
 
 /// How an array places its copies.
 #[derive(Debug, Clone, PartialEq)]
-enum Pattern {
+pub(super) enum Pattern {
     /// No array: the part alone (and its image, with a mirror).
     One,
     /// Copy i moved by i·`step` (file units).
@@ -50,6 +52,8 @@ pub struct Copies {
     pattern: Pattern,
     /// The mirror's plane: its normal and a point of it (file units).
     mirror: Option<([f64; 3], [f64; 3])>,
+    /// The mirror's frame, made once: the same for every image.
+    image: Option<Frame>,
     /// `--only` kept this copy alone (`Model::only`).
     only: Option<usize>,
 }
@@ -89,48 +93,30 @@ impl Copies {
         }
     }
 
-    /// The frames that place copy `i`, the innermost first: its array's
-    /// (none for copy 0 of the array) and its mirror's (none for the
-    /// array's own copies).
-    pub(super) fn frames(&self, i: usize) -> [Option<Frame>; 2] {
+    /// Which copy of the array copy `i` is, and whether it is its image
+    /// in the mirror.
+    pub(super) fn which(&self, i: usize) -> (usize, bool) {
         let n = self.count();
-        let (k, image) = (i % n, i >= n);
-        let array = match (&self.pattern, k) {
-            (_, 0) | (Pattern::One, _) => None,
-            (Pattern::Linear { step, .. }, k) => {
-                let k = k as f64;
-                Some(Frame::copy(
-                    step.map(|s| k * s),
-                    [0.0; 3],
-                    Orientation::Identity,
-                    false,
-                ))
-            }
-            (
-                Pattern::Polar {
-                    axis,
-                    degrees,
-                    origin,
-                    ..
-                },
-                k,
-            ) => Some(Frame::copy(
-                *origin,
-                *origin,
-                Orientation::AxisAngle(*axis, k as f64 * degrees),
-                false,
-            )),
-        };
-        let mirror = match (&self.mirror, image) {
-            (Some((normal, origin)), true) => Some(Frame::copy(
-                *origin,
-                *origin,
-                Orientation::Reflect(*normal),
-                true,
-            )),
-            _ => None,
-        };
-        [array, mirror]
+        // No division: i < 2n.
+        if i < n { (i, false) } else { (i - n, true) }
+    }
+
+    /// The mirror's frame, that places the images (none without a
+    /// mirror).
+    pub(super) fn image(&self) -> Option<&Frame> {
+        self.image.as_ref()
+    }
+
+    /// The frame that places copy `k` (from 1) of the array
+    /// (`Frame::of_copy`).
+    pub(super) fn array_frame(&self, k: usize) -> Frame {
+        Frame::of_copy(&self.pattern, k)
+    }
+
+    /// `f`, another copy's frame, moved in place to copy `k`'s; whether
+    /// any bit of it changed (`Frame::move_to_copy`).
+    pub(super) fn move_array_frame(&self, k: usize, f: &mut Frame) -> bool {
+        f.move_to_copy(&self.pattern, k)
     }
 
     /// The copy `name` names of the part or sub-assembly `base`
@@ -193,9 +179,13 @@ impl Ctx<'_> {
             Some(m) => Some(self.mirror(m)?),
             None => None,
         };
+        let image = mirror.map(|(normal, origin)| {
+            Frame::copy(origin, origin, Orientation::Reflect(normal), true)
+        });
         let copies = Copies {
             pattern,
             mirror,
+            image,
             only: None,
         };
         if copies.len() > MAX_PARTS {
@@ -444,7 +434,13 @@ impl Ctx<'_> {
         };
         let si = self.units.factor(Dim::LENGTH).value();
         let mut bad = None;
-        one.each_body_part(&mut |p| {
+        // A coincident copy is the copy before it to the bit: its check is
+        // that one's (`each_run`).
+        one.each_run(&mut |run| {
+            let super::walk::Run::Event(super::Event::Part(leaf)) = run else {
+                return;
+            };
+            let p = leaf.part;
             if bad.is_some() {
                 return;
             }
@@ -638,18 +634,36 @@ impl Names {
     }
 }
 
-/// Every coordinate of the points a placement gives, and its edges'.
-fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
-    let points: Vec<[f64; 3]> = match place {
+/// Every coordinate of the points a placement gives, and its edges'
+/// (held in place: asked of every copy).
+fn positions(place: &Place) -> impl Iterator<Item = f64> {
+    let mut points = [[0.0; 3]; 4];
+    let n = match place {
         Place::Centered { center, .. }
         | Place::Given { center, .. }
-        | Place::Axial { center, .. } => vec![*center],
-        Place::Prism { origin, .. } | Place::Mesh { origin, .. } => vec![*origin],
-        Place::Edges { corner, edges } => std::iter::once(*corner).chain(*edges).collect(),
-        Place::FromTo { from, to } => vec![*from, *to],
-        Place::Vertices(v) => v.to_vec(),
+        | Place::Axial { center, .. } => {
+            points[0] = *center;
+            1
+        }
+        Place::Prism { origin, .. } | Place::Mesh { origin, .. } => {
+            points[0] = *origin;
+            1
+        }
+        Place::Edges { corner, edges } => {
+            points[0] = *corner;
+            points[1..].copy_from_slice(edges);
+            4
+        }
+        Place::FromTo { from, to } => {
+            points[..2].copy_from_slice(&[*from, *to]);
+            2
+        }
+        Place::Vertices(v) => {
+            points[..3].copy_from_slice(v);
+            3
+        }
     };
-    points.into_iter().flatten()
+    points.into_iter().take(n).flatten()
 }
 
 /// Where a part's copies are asked for: its `array`, else its `mirror`.
@@ -671,27 +685,29 @@ mod tests {
     use super::*;
 
     fn copies(count: usize, mirror: bool) -> Copies {
+        let plane = ([1.0, 0.0, 0.0], [0.0; 3]);
         Copies {
             pattern: Pattern::Linear {
                 count,
                 step: [1.0, 0.0, 0.0],
             },
-            mirror: mirror.then_some(([1.0, 0.0, 0.0], [0.0; 3])),
+            mirror: mirror.then_some(plane),
+            image: mirror
+                .then(|| Frame::copy(plane.1, plane.1, Orientation::Reflect(plane.0), true)),
             only: None,
         }
     }
 
     #[test]
-    fn a_mirror_doubles_the_copies_and_copy_zero_has_no_frame() {
+    fn a_mirror_doubles_the_copies_and_its_images_follow_the_array() {
         let c = copies(3, true);
         assert_eq!(c.len(), 6);
-        assert!(c.frames(0).iter().all(Option::is_none));
-        let f = c.frames(3);
-        assert!(f[0].is_none() && f[1].is_some());
-        let f = c.frames(4);
-        assert!(f[0].is_some() && f[1].is_some());
-        let f = c.frames(2);
-        assert!(f[0].is_some() && f[1].is_none());
+        assert!(c.image().is_some());
+        assert_eq!(c.which(0), (0, false));
+        assert_eq!(c.which(2), (2, false));
+        assert_eq!(c.which(3), (0, true));
+        assert_eq!(c.which(4), (1, true));
+        assert!(copies(3, false).image().is_none());
     }
 
     #[test]

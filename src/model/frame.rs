@@ -3,13 +3,14 @@
 //! placed through it (`Frame::place`), with the rounding that adds
 //! (`Spec::placed`).
 
+use super::copies::Pattern;
 use super::rotation::Orientation;
 use crate::numeric::M3;
 use crate::part::{MassSpec, Place, Spec};
 use crate::shapes::Shape;
 
 /// Where an included file's frame goes in this file's.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     /// This file's units.
     pub(super) origin: [f64; 3],
@@ -121,6 +122,59 @@ impl Frame {
         }
     }
 
+    /// The frame that places copy `k` (from 1) of an array: moved by
+    /// k·step, or turned by k·θ about the axis through its origin.
+    pub(super) fn of_copy(pattern: &Pattern, k: usize) -> Frame {
+        match pattern {
+            // Never asked: the part alone is copy 0 of its array.
+            Pattern::One => Frame::copy([0.0; 3], [0.0; 3], Orientation::Identity, false),
+            Pattern::Linear { step, .. } => {
+                let k = k as f64;
+                Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false)
+            }
+            Pattern::Polar {
+                axis,
+                degrees,
+                origin,
+                ..
+            } => Frame::copy(
+                *origin,
+                *origin,
+                Orientation::AxisAngle(*axis, k as f64 * degrees),
+                false,
+            ),
+        }
+    }
+
+    /// This frame, another copy's of the array `pattern` (`of_copy`),
+    /// moved in place to copy `k`'s: only what differs from one copy to
+    /// the next is made again (the step's multiple, or the turn and its
+    /// matrix), to the same bits as `of_copy(pattern, k)`. Whether any
+    /// bit of it changed (none, from one copy to the next, when the step
+    /// or the turn is zero: the copies coincide).
+    pub(super) fn move_to_copy(&mut self, pattern: &Pattern, k: usize) -> bool {
+        let differ = |a: f64, b: f64| a.to_bits() != b.to_bits();
+        match pattern {
+            Pattern::One => false,
+            Pattern::Linear { step, .. } => {
+                let k = k as f64;
+                let origin = step.map(|s| k * s);
+                let moved = (0..3).any(|j| differ(origin[j], self.origin[j]));
+                self.origin = origin;
+                moved
+            }
+            Pattern::Polar { axis, degrees, .. } => {
+                let turn = k as f64 * degrees;
+                if matches!(self.orientation, Orientation::AxisAngle(_, t) if !differ(t, turn)) {
+                    return false;
+                }
+                self.orientation = Orientation::AxisAngle(*axis, turn);
+                self.r = self.orientation.matrix();
+                true
+            }
+        }
+    }
+
     /// `o` turned with this frame, in place.
     fn turn(&self, o: &mut Orientation) {
         match (&self.orientation, &*o) {
@@ -139,15 +193,17 @@ impl Frame {
     /// time of a report of 2²⁰ instances).
     pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
         let reach = reach(&s.place) * self.length;
-        // A density per volume, area or length scales with that power.
-        let k = match &s.place {
-            // A mesh's density is per volume or per area by its mode.
-            Place::Mesh { mesh, .. } => mesh.mode.power(),
-            _ => shape.info().density.map_or(0, |d| d.length_power),
-        };
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
-            MassSpec::Density(d) => *d = *d * self.mass / self.length.powi(k),
+            MassSpec::Density(d) => {
+                // A density per volume, area or length scales with that power.
+                let k = match &s.place {
+                    // A mesh's density is per volume or per area by its mode.
+                    Place::Mesh { mesh, .. } => mesh.mode.power(),
+                    _ => shape.info().density.map_or(0, |d| d.length_power),
+                };
+                *d = *d * self.mass / self.length.powi(k);
+            }
         }
         match &mut s.place {
             Place::Centered {
@@ -252,7 +308,13 @@ impl Frame {
     /// (a unit of |p|₁ + |pivot|₁, turned) and its origin's own rounding
     /// (i·step, or the pivot itself: a unit of it).
     fn rounding(&self, old: crate::part::Placed, reach: f64) -> crate::part::Placed {
-        let rho = crate::part::error::turn_error(&self.orientation, &self.r);
+        // NOTE: no turn is exact, without its matrix asked (a copy along a
+        // step, a sub-assembly not turned: most frames).
+        let rho = if matches!(self.orientation, Orientation::Identity) {
+            0.0
+        } else {
+            crate::part::error::turn_error(&self.orientation, &self.r)
+        };
         let exact = rho == 0.0 && self.length == 1.0 && self.mass == 1.0;
         let grow = if rho == 0.0 { 1.0 } else { 3.0 };
         let size = if exact { 0.0 } else { 12.0 + 2.0 * rho };
@@ -297,5 +359,50 @@ fn reach(place: &Place) -> f64 {
         Place::Edges { corner, .. } => norm(corner),
         Place::FromTo { from, to } => norm(from).max(norm(to)),
         Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn linear(step: [f64; 3]) -> Pattern {
+        Pattern::Linear { count: 7, step }
+    }
+
+    fn polar(degrees: f64) -> Pattern {
+        Pattern::Polar {
+            count: 7,
+            axis: [1.0, 2.0, 3.0],
+            degrees,
+            origin: [0.5, -1.0, 2.0],
+        }
+    }
+
+    /// To the bit: Debug writes each float's shortest exact form.
+    fn bits(f: &Frame) -> String {
+        format!("{f:?}")
+    }
+
+    #[test]
+    fn a_frame_moved_to_a_copy_is_the_frame_made_for_it() {
+        for p in [linear([1.0, -0.25, 3.0e-3]), polar(51.3)] {
+            let mut f = Frame::of_copy(&p, 1);
+            for k in [2, 6, 3] {
+                assert!(f.move_to_copy(&p, k), "copy {k} of {p:?}");
+                assert_eq!(bits(&f), bits(&Frame::of_copy(&p, k)));
+            }
+        }
+    }
+
+    #[test]
+    fn a_frame_moved_by_a_zero_step_or_turn_is_unchanged() {
+        for p in [linear([0.0, -0.0, 0.0]), polar(0.0), polar(-0.0)] {
+            let mut f = Frame::of_copy(&p, 1);
+            for k in 2..7 {
+                assert!(!f.move_to_copy(&p, k), "copy {k} of {p:?}");
+                assert_eq!(bits(&f), bits(&Frame::of_copy(&p, k)));
+            }
+        }
     }
 }

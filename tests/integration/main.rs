@@ -12,6 +12,7 @@ mod ci;
 mod cli;
 mod colour;
 mod common;
+mod copies_walk;
 mod cost;
 mod depth;
 mod diff;

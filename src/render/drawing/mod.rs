@@ -25,7 +25,7 @@ use outline::{Marker, Outline, V3};
 use std::fmt::Write as _;
 pub use view::View;
 use view::{Projector, num, pair};
-use walks::{Drawn, Last, Sink, Survey, each_part, key};
+use walks::{Drawn, Last, Met, Sink, Survey, each_part, key};
 
 /// What to draw besides the body.
 #[derive(Debug, Clone, Default)]
@@ -135,10 +135,22 @@ pub fn write_svg(
         s.push_str("\">\n");
         let mut seen = Drawn::default();
         let mut last = Last::default();
-        each_part(model, &mut |part, group, own| {
+        each_part(model, &mut |met| {
             if out.error.is_some() {
                 return;
             }
+            let (part, group, own) = match met {
+                Met::Part(part, group, own) => (part, group, own),
+                // Each as a copy `last.again` finds below.
+                Met::Again(n) => {
+                    if last.drawn {
+                        seen.again += n;
+                    } else if v == 0 {
+                        small += n;
+                    }
+                    return;
+                }
+            };
             let colour = key(part, group);
             if last.again(own, colour, part) {
                 if last.drawn {

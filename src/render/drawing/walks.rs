@@ -6,7 +6,7 @@
 
 use super::outline::{self, Outline, V3};
 use crate::model::Model;
-use crate::model::walk::Event;
+use crate::model::walk::{Event, Run};
 use std::collections::HashMap;
 use std::fmt::Write as _;
 
@@ -135,7 +135,11 @@ impl Survey {
             smallest: f64::INFINITY,
         };
         let mut last = Last::default();
-        each_part(model, &mut |part, group, own| {
+        each_part(model, &mut |met| {
+            // A coincident copy's key, marks, extent and size are its last's.
+            let Met::Part(part, group, own) = met else {
+                return;
+            };
             if last.again(own, key(part, group), part) {
                 return; // its key, marks, extent and size are known
             }
@@ -169,11 +173,22 @@ pub(super) fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'
         .unwrap_or_else(|| part.shape.name())
 }
 
-/// Each part in file order with its group (its sub-assemblies' groups,
-/// then its own, joined by ` / `), if any, and which part it is a copy of
-/// (the address of the part as its own file holds it: the same for each
-/// copy, distinct for parts written apart).
-pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Option<&str>, usize)) {
+/// What the drawing's walks meet (`each_part`).
+pub(super) enum Met<'a> {
+    /// A part with its group (its sub-assemblies' groups, then its own,
+    /// joined by ` / `), if any, and which part it is a copy of (the
+    /// address of the part as its own file holds it: the same for each
+    /// copy, distinct for parts written apart).
+    Part(&'a crate::part::Part, Option<&'a str>, usize),
+    /// The part met last, `n` times more in the same place: coincident
+    /// copies, each of which `Last::again` would find the last again.
+    Again(usize),
+}
+
+/// Each part in file order (`Met`), coincident copies counted, not
+/// placed and handed out one by one (`Model::each_run`): five walks of
+/// 2,000,000 copies in one place cost what five walks of one part do.
+pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(Met<'_>)) {
     // NOTE: each sub-assembly's joined prefix is made once as the walk
     // enters it, and a part's path is joined again only when the part or
     // the sub-assembly differs from the last one's: copies of one part (an
@@ -191,8 +206,9 @@ pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Opt
             to.push_str(name);
         }
     };
-    model.each_event(&mut |e| match e {
-        Event::Enter(inc) => {
+    model.each_run(&mut |run| match run {
+        Run::Again(n) => f(Met::Again(n)),
+        Run::Event(Event::Enter(inc)) => {
             let mut prefix = prefixes.last().cloned().unwrap_or_default();
             if let Some(names) = inc.tag.as_ref().and_then(|t| t.group.as_ref()) {
                 join(&mut prefix, names);
@@ -200,11 +216,11 @@ pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Opt
             prefixes.push(prefix);
             entered += 1;
         }
-        Event::Exit => {
+        Run::Event(Event::Exit) => {
             prefixes.pop();
             entered += 1;
         }
-        Event::Part(leaf) => {
+        Run::Event(Event::Part(leaf)) => {
             let own = leaf.tag.and_then(|t| t.group.as_ref());
             let prefix = prefixes.last().map_or("", String::as_str);
             let which = own.map_or(0, |g| g as *const Vec<String> as usize);
@@ -217,11 +233,11 @@ pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(&crate::part::Part, Opt
                 last = Some((which, entered));
             }
             let own: *const crate::part::Part = leaf.own;
-            f(
+            f(Met::Part(
                 leaf.part,
                 (!path.is_empty()).then_some(path.as_str()),
                 own as usize,
-            );
+            ));
         }
     });
 }
