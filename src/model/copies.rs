@@ -17,7 +17,6 @@
 use super::raw::{Floats, Quantity, RawArray, RawMirror, RawPart, Vector};
 use super::{Ctx, Frame, Item, MAX_PARTS, Model};
 use crate::diag::Diagnostic;
-use crate::part::Place;
 use crate::rotation::Orientation;
 use crate::units::Dim;
 use std::collections::HashMap;
@@ -448,7 +447,12 @@ impl Ctx<'_> {
             if bad.is_some() {
                 return;
             }
-            if !positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite()) {
+            if !p
+                .spec
+                .place
+                .positions()
+                .all(|x| x.is_finite() && (x * si).is_finite())
+            {
                 bad = Some(true);
             } else if self.in_file_range(p.shape, &p.spec, "", 0..0).is_err() {
                 bad = Some(false);
@@ -460,7 +464,11 @@ impl Ctx<'_> {
         one.each_part(&mut |l| {
             let p = l.part;
             if failed.is_none()
-                && (!positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite())
+                && (!p
+                    .spec
+                    .place
+                    .positions()
+                    .all(|x| x.is_finite() && (x * si).is_finite())
                     || self.in_file_range(p.shape, &p.spec, "", 0..0).is_err())
             {
                 failed = Some(p.clone());
@@ -636,20 +644,6 @@ impl Names {
         }
         Ok(())
     }
-}
-
-/// Every coordinate of the points a placement gives, and its edges'.
-fn positions(place: &Place) -> impl Iterator<Item = f64> + '_ {
-    let points: Vec<[f64; 3]> = match place {
-        Place::Centered { center, .. }
-        | Place::Given { center, .. }
-        | Place::Axial { center, .. } => vec![*center],
-        Place::Prism { origin, .. } | Place::Mesh { origin, .. } => vec![*origin],
-        Place::Edges { corner, edges } => std::iter::once(*corner).chain(*edges).collect(),
-        Place::FromTo { from, to } => vec![*from, *to],
-        Place::Vertices(v) => v.to_vec(),
-    };
-    points.into_iter().flatten()
 }
 
 /// Where a part's copies are asked for: its `array`, else its `mirror`.

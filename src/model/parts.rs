@@ -415,21 +415,7 @@ impl Ctx<'_> {
     ) -> Result<(), Diagnostic> {
         let m = crate::part::mass_of::<f64>(shape, spec).abs();
         let j = crate::part::own_second_moment::<f64>(shape, spec, m);
-        // Each independent second moment: along the local axes, per edge,
-        // or (a triangle, a given tensor) the trace.
-        // (No allocation: this runs for every part of every file.)
-        let (parts, count): ([f64; 3], usize) = match &spec.place {
-            Place::Centered { extent, .. } => {
-                (shape.second_moments(m, &extent[..shape.dim_count()]), 3)
-            }
-            Place::Axial { dims, .. } => (shape.second_moments(m, &dims[..shape.dim_count()]), 3),
-            Place::Edges { edges, .. } => (
-                // (m e) e, not m (e e): e² alone can underflow or overflow.
-                edges.map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum()),
-                shape.edge_count(),
-            ),
-            _ => ([j[0][0] + j[1][1] + j[2][2], 0.0, 0.0], 1),
-        };
+        let (parts, count, expected) = spec.place.independent_moments(shape, m, &j);
         let parts = &parts[..count];
         let u = self.units;
         let units = || format!("{} and {}", u.length, u.mass);
@@ -443,11 +429,6 @@ impl Ctx<'_> {
                 .err(span, format!("the mass properties of `{name}` overflow the range of f64 in the file's units ({})", units()))
                 .help(fix));
         }
-        // A triangle's one moment checked is the trace.
-        let expected = match shape.info().dims {
-            Dims::Vertices | Dims::Polygon => 1,
-            _ => shape.nonzero_moments(),
-        };
         let normal = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
         if m < f64::MIN_POSITIVE || normal < expected {
             return Err(self

@@ -170,7 +170,7 @@ pub struct ShapeInfo {
     /// How many of the three local second moments are non-zero (0 where
     /// the model checks the shape's own way: a triangle, a given tensor).
     pub nonzero_moments: usize,
-    /// How `render` draws it (`render::drawing::outline`).
+    /// How `render` draws it (`shapes::outline`).
     pub drawn: Drawn,
     /// What makes it degenerate, for the docs and messages.
     pub degenerate: &'static str,
@@ -178,7 +178,7 @@ pub struct ShapeInfo {
     pub help: &'static str,
 }
 
-/// How `render` draws a shape (`render::drawing::outline`) from its
+/// How `render` draws a shape (`shapes::outline`) from its
 /// placed dimensions (`part::Place`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Drawn {

@@ -39,7 +39,7 @@ impl ShapeKind for Mesh {
         help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     };
 
-    /// (its measure is its file’s: `part::error`).
+    /// (its measure is its file’s: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 0.0;
 
     /// (its integrals carry their own bound: `part`).

@@ -12,23 +12,34 @@
 //! one, and `report::ideal` compares it with the solid box and cylinder
 //! they describe.
 
+pub mod error;
 mod info;
+mod lift;
+mod offset;
+pub mod outline;
+mod physics;
+mod place;
 #[cfg(test)]
 mod quadrature;
+
+pub use error::Own;
+pub use lift::{Dep, Fixed, Lift, Seed, Slot, lift3, xyz};
+pub use physics::Units;
+pub use place::{Mover, Place, Placed};
 
 pub use info::{
     DensityKind, Dims, Drawn, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid,
     Spanned,
 };
 
-use crate::numeric::Real;
+use crate::numeric::{M3, Real};
 use nalgebra::Vector3;
 use serde::Serialize;
 
 /// Everything one shape's module says of it: its description (keys,
 /// density, dimensions, placements, drawing, help) and its closed forms,
 /// generic over the arithmetic, with the roundings its error model counts
-/// (`part::error`) and its mirror symmetry (`part::mirror`). Each shape is
+/// (`shapes::error`) and its mirror symmetry (`Place::mirror`). Each shape is
 /// one module, `src/shapes/<shape>.rs`, and one line of `registry!`; the
 /// `Shape` enum and its methods are made from that list, so a shape the
 /// registry names and its module does not answer in full does not compile.
@@ -38,12 +49,12 @@ pub trait ShapeKind {
     /// dimensions, beyond the density's product (`part::error::mass_error`).
     const MEASURE_ROUNDINGS: f64;
     /// Roundings of its local second moments beyond its mass's
-    /// (`part::error`), counted over the operations of `second_moments`,
+    /// (`shapes::error`), counted over the operations of `second_moments`,
     /// every sum of terms of one sign.
     const MOMENT_ROUNDINGS: f64;
     /// The local axis in whose plane through the local origin the shape,
     /// as its closed forms take it, is its own mirror image; `None`: in no
-    /// plane (its data reflected instead, `part::mirror`).
+    /// plane (its data reflected instead, `Place::mirror`).
     const MIRROR_AXIS: Option<usize>;
     /// Volume, area or length of a shape of dimensions `d`, the measure
     /// that the density multiplies.
@@ -75,6 +86,26 @@ fn ring<T: Real>(d: &[T]) -> T {
 /// m (R² + r²)/4: a disk's or annulus's ∫x² dm about a diameter.
 fn across_ring<T: Real>(m: T, r_out: T, r_in: T) -> T {
     m * (r_out * r_out + r_in * r_in) / T::of(4.0)
+}
+
+/// R C Rᵀ, symmetric by construction (the upper triangle formed, the
+/// lower its mirror): a full local tensor C in the file's axes (a given
+/// inertia, a prism's).
+pub(crate) fn turned<T: Real>(r: &M3<T>, local: &M3<T>) -> M3<T> {
+    let mut j = [[T::of(0.0); 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut v = T::of(0.0);
+            for k in 0..3 {
+                for l in 0..3 {
+                    v = v + r[a][k] * local[k][l] * r[b][l];
+                }
+            }
+            j[a][b] = v;
+            j[b][a] = v;
+        }
+    }
+    j
 }
 
 /// The one list of shapes: `Variant => module::Kind`, in the order the

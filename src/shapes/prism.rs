@@ -36,7 +36,7 @@ pub struct Polygon {
     pub second: [DD; 3],
     /// For the error model: Σ|cᵢ|/|2A| (1 for a convex polygon), and the
     /// magnitudes the three entries of `second` and the centroid's two
-    /// components are formed from (`part::error`).
+    /// components are formed from (`shapes::error`).
     pub spread: Spread,
 }
 
@@ -143,10 +143,10 @@ impl ShapeKind for Prism {
         help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
     };
 
-    /// (its area is its polygon's: `part::error`).
+    /// (its area is its polygon's: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 2.0;
 
-    /// (its second moment is its polygon's: `part::offset`).
+    /// (its second moment is its polygon’s: `shapes::offset`).
     const MOMENT_ROUNDINGS: f64 = 4.0;
 
     const MIRROR_AXIS: Option<usize> = Some(2);

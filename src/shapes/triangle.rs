@@ -34,7 +34,7 @@ impl ShapeKind for Triangle {
         help: "a triangle takes `mass` or `areal_density`, and three `vertices` = [[x, y, z], [x, y, z], [x, y, z]] in the file's frame",
     };
 
-    /// (its area is formed from its vertices: `part::error`).
+    /// (its area is formed from its vertices: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 1.0;
 
     /// (its second moment is formed from its vertices: `part::error::OUTER`).

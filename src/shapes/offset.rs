@@ -3,12 +3,13 @@
 //! (`Place::Prism`: at its polygon's centroid, off its `origin`), and the
 //! prism's own second moment, which has a product in its local axes.
 
+use super::Shape;
 use super::error::{self, Own};
-use super::{Lift, Place, Slot, Spec};
+use super::lift::{Lift, Slot, lift3, xyz};
+use super::place::Place;
+use super::prism::{Polygon, polygon};
 use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
-use crate::shapes::Shape;
-use crate::shapes::prism::{Polygon, polygon};
 
 /// The centroid's offset from the placing point in local axes (double-
 /// double), and that point.
@@ -23,7 +24,7 @@ fn local_offset<T: Real, L: Lift>(
             dims,
             orientation,
         } => {
-            let d: [T; 5] = super::dims_in(dims, l);
+            let d: [T; 5] = super::lift::dims_in(dims, l);
             let z = shape.axial_offset(&d[..shape.dim_count()]);
             ([T::of(0.0), T::of(0.0), z], *center, orientation)
         }
@@ -49,7 +50,7 @@ fn local_offset<T: Real, L: Lift>(
 /// of the offset, as a triangle's centroid does.
 pub(super) fn centroid<T: Real, L: Lift>(shape: Shape, place: &Place, lift: L) -> [T; 3] {
     let (l, at, orientation) = local_offset::<T, L>(shape, place, lift);
-    let at: [T; 3] = super::lift3(lift, &at, super::xyz(Slot::At));
+    let at: [T; 3] = lift3(lift, &at, xyz(Slot::At));
     if let Orientation::Identity = orientation {
         return std::array::from_fn(|i| at[i] + l[i]);
     }
@@ -76,7 +77,7 @@ fn polygon_units<T: Real>(poly: &Polygon, ell: &[f64; 3]) -> f64 {
 /// then R C Rᵀ. With its error model when `bound` asks (`errors` gives the
 /// frames' units and the mass's).
 pub(super) fn prism_second_moment<T: Real, L: Lift>(
-    spec: &Spec,
+    place: &Place,
     m: T,
     bound: bool,
     errors: impl Fn() -> (f64, f64),
@@ -87,7 +88,7 @@ pub(super) fn prism_second_moment<T: Real, L: Lift>(
         length,
         orientation,
         ..
-    } = &spec.place
+    } = place
     else {
         unreachable!("a prism is placed as one")
     };
@@ -124,35 +125,34 @@ pub(super) fn prism_second_moment<T: Real, L: Lift>(
     (j, own)
 }
 
-impl Place {
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::part::{MassSpec, Spec};
+
     /// A prism's mirror image in its own local x–z plane (local y → −y):
     /// the same origin, length and turn, its polygon with y negated and
     /// its vertices reversed (`shapes::prism::mirrored`). A mirror in any
     /// plane of the file is this image turned by the proper rotation
     /// S R F (S the file's reflection, R the prism's turn, F = diag(1, −1,
-    /// 1)) about the reflected origin. `None` for any other placement.
-    pub fn prism_mirrored_in_local_xz(&self) -> Option<Place> {
-        match self {
-            Place::Prism {
-                origin,
-                polygon: p,
-                length,
-                orientation,
-            } => Some(Place::Prism {
-                origin: *origin,
-                polygon: crate::shapes::prism::mirrored(p).into(),
-                length: *length,
-                orientation: orientation.clone(),
-            }),
-            _ => None,
+    /// 1)) about the reflected origin.
+    fn mirrored_in_local_xz(place: &Place) -> Place {
+        let Place::Prism {
+            origin,
+            polygon: p,
+            length,
+            orientation,
+        } = place
+        else {
+            panic!("a prism")
+        };
+        Place::Prism {
+            origin: *origin,
+            polygon: crate::shapes::prism::mirrored(p).into(),
+            length: *length,
+            orientation: orientation.clone(),
         }
     }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::part::{MassSpec, Spec};
 
     /// The mirror image of an unturned prism: the same mass, its centroid
     /// and its x–y product with y negated, the rest unchanged.
@@ -172,7 +172,7 @@ mod tests {
             length: 0.5,
             orientation: Orientation::Identity,
         };
-        let mirror = place.prism_mirrored_in_local_xz().expect("a prism");
+        let mirror = mirrored_in_local_xz(&place);
         let spec = |place: Place| Spec {
             mass: MassSpec::Density(7.0),
             place,
