@@ -114,23 +114,23 @@ impl Part {
     /// Mass in file units: given, or density times volume, area or length;
     /// negative for a cut-out.
     pub fn mass<T: Real>(&self) -> T {
-        mass_of(self.shape, &self.spec)
+        mass_of(&self.spec)
     }
 
     /// `own_second_moment` with its error model (`part::error`).
     pub fn own_second_moment_bounded<T: Real>(&self, m: T) -> (M3<T>, Own) {
-        own_second_moment_bounded(self.shape, &self.spec, m)
+        own_second_moment_bounded(&self.spec, m)
     }
 
     /// Centroid in file units, in double-double (see `centroid`).
     pub fn centroid(&self) -> [DD; 3] {
-        centroid(self.shape, &self.spec.place)
+        centroid(&self.spec.place)
     }
 
     /// ∫ρρᵀ dm about the centroid, file axes and units, for the mass `m`
     /// (see `own_second_moment`).
     pub fn own_second_moment<T: Real>(&self, m: T) -> M3<T> {
-        own_second_moment(self.shape, &self.spec, m)
+        own_second_moment(&self.spec, m)
     }
 
     /// The part in SI: mass and centroid from the same arithmetic the
@@ -202,34 +202,34 @@ pub enum MassSpec {
 
 /// Mass of a part (file units): given, or density times volume, area or
 /// length; negative for a cut-out.
-pub fn mass_of<T: Real>(shape: Shape, spec: &Spec) -> T {
-    mass_in(shape, spec, Fixed)
+pub fn mass_of<T: Real>(spec: &Spec) -> T {
+    mass_in(spec, Fixed)
 }
 
 /// `mass_of`, the spec's numbers read through `l`.
-pub fn mass_in<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> T {
-    let m: T = unsigned_mass_of(shape, spec, l);
+pub fn mass_in<T: Real, L: Lift>(spec: &Spec, l: L) -> T {
+    let m: T = unsigned_mass_of(spec, l);
     if spec.removed { -m } else { m }
 }
 
-fn unsigned_mass_of<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> T {
+fn unsigned_mass_of<T: Real, L: Lift>(spec: &Spec, l: L) -> T {
     match spec.mass {
         MassSpec::Given(m) => T::var(m, l.rate(Slot::Mass)),
-        MassSpec::Density(rho) => T::var(rho, l.rate(Slot::Mass)) * spec.place.measure(shape, l),
+        MassSpec::Density(rho) => T::var(rho, l.rate(Slot::Mass)) * spec.place.measure(l),
     }
 }
 
 /// Centroid of a part (file units), in double-double: a corner plus half
 /// its edges is not an f64 in general, and far from the origin its rounding
 /// would move the part relative to its neighbours.
-pub fn centroid(shape: Shape, place: &Place) -> [DD; 3] {
-    place.centroid(shape, Fixed)
+pub fn centroid(place: &Place) -> [DD; 3] {
+    place.centroid(Fixed)
 }
 
 /// `centroid` in the arithmetic `T`, the numbers read through `l` (in
 /// double-double with `Fixed`, the same operations as `centroid`).
-pub fn centroid_in<T: Real, L: Lift>(shape: Shape, place: &Place, l: L) -> [T; 3] {
-    place.centroid(shape, l)
+pub fn centroid_in<T: Real, L: Lift>(place: &Place, l: L) -> [T; 3] {
+    place.centroid(l)
 }
 
 /// ∫ρρᵀ dm of a part about its own centroid, in the file's axes and units.
@@ -238,8 +238,8 @@ pub fn centroid_in<T: Real, L: Lift>(shape: Shape, place: &Place, l: L) -> [T; 3
 /// shape is a product of such segments: R diag(m aₖ²/12) Rᵀ for a turned
 /// shape, and Σₖ (m/12) eₖ eₖᵀ for one spanned by edge vectors eₖ, which
 /// needs neither their lengths nor a rotation.
-pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
-    own_second_moment_in(shape, spec, m, false, Fixed).0
+pub fn own_second_moment<T: Real>(spec: &Spec, m: T) -> M3<T> {
+    own_second_moment_in(spec, m, false, Fixed).0
 }
 
 /// A part's mass, centroid and own second moment (file units and axes)
@@ -247,17 +247,17 @@ pub fn own_second_moment<T: Real>(shape: Shape, spec: &Spec, m: T) -> M3<T> {
 /// with a `Seed`, each with its derivative by the seeded number (the
 /// same functions as the composer's, so the derivatives are those of
 /// the figures it composes).
-pub fn physics_in<T: Real, L: Lift>(shape: Shape, spec: &Spec, l: L) -> (T, [T; 3], M3<T>) {
-    let m: T = mass_in(shape, spec, l);
-    let c = centroid_in(shape, &spec.place, l);
-    let (j, _) = own_second_moment_in(shape, spec, m, false, l);
+pub fn physics_in<T: Real, L: Lift>(spec: &Spec, l: L) -> (T, [T; 3], M3<T>) {
+    let m: T = mass_in(spec, l);
+    let c = centroid_in(&spec.place, l);
+    let (j, _) = own_second_moment_in(spec, m, false, l);
     (m, c, j)
 }
 
 /// `own_second_moment`, with the error model of the arithmetic that formed
 /// it (`part::error`): the error bounds' share of each part.
-pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M3<T>, Own) {
-    let (j, own) = own_second_moment_in(shape, spec, m, true, Fixed);
+pub fn own_second_moment_bounded<T: Real>(spec: &Spec, m: T) -> (M3<T>, Own) {
+    let (j, own) = own_second_moment_in(spec, m, true, Fixed);
     (j, own.expect("invariant: the error model was asked for"))
 }
 
@@ -268,7 +268,6 @@ pub fn own_second_moment_bounded<T: Real>(shape: Shape, spec: &Spec, m: T) -> (M
 /// numerically, edges, ends, vertices, absolute in every entry, as a
 /// turn's own error is), and its mass's.
 fn own_second_moment_in<T: Real, L: Lift>(
-    shape: Shape,
     spec: &Spec,
     m: T,
     bound: bool,
@@ -276,10 +275,10 @@ fn own_second_moment_in<T: Real, L: Lift>(
 ) -> (M3<T>, Option<Own>) {
     let units = bound.then(|| Units {
         placed: error::placed_units::<T>(&spec.place, &spec.placed),
-        mass: error::mass_error(shape, spec),
+        mass: error::mass_error(spec),
         by_density: matches!(spec.mass, MassSpec::Density(_)),
     });
-    spec.place.own_second_moment(shape, m, units, l)
+    spec.place.own_second_moment(m, units, l)
 }
 
 #[cfg(test)]

@@ -69,7 +69,12 @@ pub struct IdealPart {
 /// I_zz = m r²/2 and I_xx = m(3r² + L²)/12, the textbook cylinder.)
 pub fn solid_extra(part: &Part, solid: Solid, size: f64) -> M3<DD> {
     let m: DD = part.mass();
-    let w = pow2_scaled(part.spec.place.real_size_direction());
+    let w = pow2_scaled(
+        part.spec
+            .place
+            .real_size_direction()
+            .expect("only plates and rods give a real size"),
+    );
     let ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     let s = DD::of(size);
     match solid {

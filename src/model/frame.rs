@@ -137,17 +137,17 @@ impl Frame {
     /// frame and units, in place (a walk places each part through every
     /// frame above it: a copy of the part per frame was a quarter of the
     /// time of a report of 2²⁰ instances).
-    pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
+    pub(super) fn place(&self, _shape: Shape, s: &mut Spec) {
         let reach = s.place.reach() * self.length;
         // A density per volume, area or length scales with that power.
-        let k = s.place.density_power(shape);
+        let k = s.place.density_power();
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
             MassSpec::Density(d) => *d = *d * self.mass / self.length.powi(k),
         }
         s.place.moved(self);
         if self.mirror {
-            s.place.mirror(shape);
+            s.place.mirror();
         }
         s.placed = self.rounding(s.placed, reach);
         // A prism's vertices, scaled in its own frame, round each by a unit

@@ -208,7 +208,9 @@ impl Model {
                 shape: crate::shapes::Shape::ALL[0],
                 spec: crate::part::Spec {
                     mass: crate::part::MassSpec::Given(0.0),
-                    place: crate::part::Place::Vertices([[0.0; 3]; 3]),
+                    place: crate::part::Place::Triangle(crate::shapes::triangle::Triangle {
+                        vertices: [[0.0; 3]; 3],
+                    }),
                     removed: false,
                     placed: Default::default(),
                 },

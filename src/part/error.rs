@@ -3,7 +3,6 @@
 //! placed shape's, is `shapes::error`.
 
 use super::{MassSpec, Spec};
-use crate::shapes::Shape;
 pub use crate::shapes::error::{
     GIVEN, OUTER, Own, TURN, U_DD, U64, closed_form, placed_units, turn_error, unit_of,
 };
@@ -11,11 +10,11 @@ pub use crate::shapes::error::{
 /// The error of a part's mass, relative, in units: 0 when given; for a
 /// density, one product and its measure's roundings
 /// (`shapes::error::measure_error`).
-pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
+pub fn mass_error(spec: &Spec) -> f64 {
     if let MassSpec::Given(_) = spec.mass {
         return 0.0;
     }
-    1.0 + crate::shapes::error::measure_error(shape, &spec.place)
+    1.0 + spec.place.measure_error()
 }
 
 /// How far each component of a part's centroid, as `part::centroid` forms
@@ -23,5 +22,6 @@ pub fn mass_error(shape: Shape, spec: &Spec) -> f64 {
 /// (`shapes::error::centroid_error`), with the rounding of its position by
 /// the frames that placed it (`Placed::at`).
 pub fn centroid_error(spec: &Spec, centroid: &[f64; 3]) -> [f64; 3] {
-    crate::shapes::error::centroid_error(&spec.place, f64::from(spec.placed.at), centroid)
+    spec.place
+        .centroid_error(f64::from(spec.placed.at), centroid)
 }

@@ -12,8 +12,8 @@
 //! counts include a unit or two of slack each; the exact-rational reference
 //! checks them (tests/integration/stress.rs, every shape, both modes).
 
-use super::Shape;
-use super::place::{Place, Placed};
+use super::place::Placed;
+use super::{Place, Shape};
 use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
 
@@ -41,21 +41,7 @@ pub fn placed_units<T: Real>(place: &Place, placed: &Placed) -> f64 {
     if placed.units == 0.0 && placed.at == 0.0 {
         return 0.0;
     }
-    let length = |a: &[f64; 3], b: &[f64; 3]| {
-        (0..3)
-            .map(|i| (a[i] - b[i]) * (a[i] - b[i]))
-            .sum::<f64>()
-            .sqrt()
-    };
-    let shortest = match place {
-        Place::Vertices(v) => length(&v[0], &v[1])
-            .min(length(&v[1], &v[2]))
-            .min(length(&v[2], &v[0])),
-        Place::FromTo { from, to } => length(from, to),
-        // A prism's vertices are scaled in its own frame, not placed: their
-        // rounding is in `units` (`Frame::place`).
-        _ => f64::INFINITY,
-    };
+    let shortest = place.shortest_span();
     let spanned = 2.0 * f64::from(placed.at) / (U64 * shortest);
     2.0 * (f64::from(placed.units) + spanned) * U64 / unit_of::<T>()
 }
@@ -118,39 +104,11 @@ pub const OUTER: f64 = 9.0;
 /// the magnitudes `part::diagonal_second_moment` takes).
 pub const GIVEN: f64 = 12.0;
 
-/// Roundings of a placed shape's measure (volume, area or length) from
-/// its numbers, beyond the density's product: the shape's own count
-/// (`ShapeKind::MEASURE_ROUNDINGS`), a norm per edge (3 for the squares'
-/// sum, 2 for the root) and a product, a triangle's area from a cross
-/// product, a polygon's area, a mesh's scale.
-pub fn measure_error(shape: Shape, place: &Place) -> f64 {
-    match place {
-        // The shape's own count (`ShapeKind::MEASURE_ROUNDINGS`).
-        Place::Centered { .. } | Place::Axial { .. } => shape.measure_roundings(),
-        // A norm per edge (3 for the squares' sum, 2 for the root) and a
-        // product.
-        Place::Edges { .. } => 6.0 * shape.edge_count() as f64,
-        Place::FromTo { .. } => 7.0,
-        Place::Given { .. } => 0.0,
-        Place::Vertices(v) => triangle_area(v),
-        // The polygon's area in double-double (32 of its units of the
-        // magnitudes Σ|cᵢ|/2 it is summed from, counted here as units of
-        // either arithmetic: 32 f64 units are far more than it needs),
-        // rounded once, times the length.
-        Place::Prism { polygon, .. } => {
-            3.0 + 32.0 * crate::shapes::prism::polygon(polygon).spread.area
-        }
-        // s^k (k products, and s's own rounding to T k times); the
-        // measure's own bound, relative, is added by `part` in T's units.
-        Place::Mesh { mesh, .. } => 2.0 * f64::from(mesh.mode.power()) + 1.0,
-    }
-}
-
 /// A triangle's area |a × b|/2 from its edges a and b (vertex offsets
 /// rounded once): each component of the cross product is a difference of
 /// products, 2 units of |a||b| (and 4 more from a and b's rounding), so
 /// 6/sin θ units of the area for the angle θ between a and b; the norm 3.
-fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
+pub(crate) fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
     let a: [f64; 3] = std::array::from_fn(|i| v[1][i] - v[0][i]);
     let b: [f64; 3] = std::array::from_fn(|i| v[2][i] - v[0][i]);
     let c = [
@@ -164,88 +122,6 @@ fn triangle_area(v: &[[f64; 3]; 3]) -> f64 {
     let inv_sin = (sq(a) * sq(b) / sq(c)).sqrt();
     let inv_sin = if inv_sin.is_finite() { inv_sin } else { 1e16 };
     5.0 + 8.0 * inv_sin
-}
-
-/// How far each component of a part's centroid, as `part::centroid` forms
-/// it in double-double, may lie from the exact centroid: nothing where it
-/// is a number of the file (a centre) or a sum of two halves (from/to), or
-/// where the vertices or the edges do not move it off the corner along
-/// that axis; else 2⁻⁹⁸ of it (a few double-double operations); and the
-/// rounding of its position by the frames that placed it (`Placed::at`).
-pub fn centroid_error(place: &Place, at: f64, centroid: &[f64; 3]) -> [f64; 3] {
-    if let Place::Axial { .. } | Place::Prism { .. } = place {
-        return offset_centroid_error(place, centroid).map(|e| e + at);
-    }
-    let inexact = |j: usize| match place {
-        Place::Centered { .. } | Place::Given { .. } | Place::FromTo { .. } => false,
-        Place::Edges { edges, .. } => edges.iter().any(|e| e[j] != 0.0),
-        Place::Vertices(v) => !(v[0][j] == v[1][j] && v[1][j] == v[2][j]),
-        Place::Axial { .. } | Place::Prism { .. } => unreachable!("returned above"),
-        Place::Mesh { .. } => true,
-    };
-    // A mesh's centroid: its integrals' bound, scaled and turned (a row of
-    // R has 1-norm at most √3 < 2).
-    let mesh = match place {
-        Place::Mesh { scale, mesh, .. } => 2.0 * mesh.bound.centroid * scale.hi.abs(),
-        _ => 0.0,
-    };
-    std::array::from_fn(|j| {
-        at + mesh
-            + if inexact(j) {
-                centroid[j].abs() * 3.155_443_620_884_047e-30
-            } else {
-                0.0
-            }
-    })
-}
-
-/// How far each component of an offset part's centroid may lie from the
-/// exact one (see `centroid_error`): the local offset's own error
-/// (a few tens of double-double units of the magnitudes it is formed
-/// from: `Spread` for a prism's polygon, the larger of the radius and
-/// the length for a cone or hemisphere), its turn by R (the rotation's own
-/// error ρ per entry, two products and sums), and the sum with the
-/// placing point.
-fn offset_centroid_error(place: &Place, centroid: &[f64; 3]) -> [f64; 3] {
-    let (spread, offset, orientation): ([f64; 3], [f64; 3], &Orientation) = match place {
-        Place::Axial {
-            dims, orientation, ..
-        } => {
-            let big = dims[0].abs().max(dims[4].abs()).max(dims[2].abs());
-            ([0.0, 0.0, 64.0 * big], [0.0, 0.0, big], orientation)
-        }
-        Place::Prism {
-            polygon: p,
-            orientation,
-            ..
-        } => {
-            let poly = crate::shapes::prism::polygon(p);
-            let g = poly.centroid.map(|x| x.f64().abs());
-            let s = poly.spread.centroid;
-            (
-                [32.0 * s[0] + 4.0 * g[0], 32.0 * s[1] + 4.0 * g[1], 0.0],
-                [g[0], g[1], 0.0],
-                orientation,
-            )
-        }
-        Place::Centered { .. }
-        | Place::Edges { .. }
-        | Place::FromTo { .. }
-        | Place::Vertices(_)
-        | Place::Given { .. }
-        | Place::Mesh { .. } => {
-            unreachable!("only an axial part or a prism has an offset centroid")
-        }
-    };
-    let r: M3<f64> = orientation.matrix();
-    let rho = turn_error(orientation, &r);
-    let u = U_DD;
-    std::array::from_fn(|i| {
-        let turned: f64 = (0..3)
-            .map(|k| r[i][k].abs() * spread[k] + (rho + 3.0) * offset[k])
-            .sum();
-        u * (turned + 4.0 * centroid[i].abs())
-    })
 }
 
 /// How far each entry of a rotation matrix as computed may lie from the
@@ -271,5 +147,24 @@ fn form_error(o: &Orientation) -> f64 {
         Orientation::Then(outer, inner) => form_error(outer) + form_error(inner) + 4.0,
         // The normal normalised (4), 2 k kᵀ and the difference (3).
         Orientation::Reflect(_) => 8.0,
+    }
+}
+
+/// What the error model of a part's own second moment takes from the
+/// part beyond its placed shape: the units of its rounding by the frames
+/// that placed it (`placed_units`), its mass's own error
+/// (`part::error::mass_error`), and whether that mass is a density times
+/// the measure.
+#[derive(Debug, Clone, Copy)]
+pub struct Units {
+    pub placed: f64,
+    pub mass: f64,
+    pub by_density: bool,
+}
+
+impl Units {
+    /// The frames' units and the mass's, (placed, μ).
+    pub fn errors(self) -> (f64, f64) {
+        (self.placed, self.mass + self.placed)
     }
 }

@@ -7,7 +7,7 @@ use crate::numeric::Real;
 /// One number of a part's `Spec` that a tolerance can move: the model
 /// records which a toleranced key fills (`model::tolerance`), and
 /// `uncertainty` moves it (Monte Carlo) or differentiates by it (linear).
-/// `Place::number_mut` is the one map from a slot to its number.
+/// Each shape's module names its numbers' slots (`ShapeKind::numbers`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Slot {
     /// The given mass, or the density (`MassSpec`).
@@ -15,10 +15,24 @@ pub enum Slot {
     /// Coordinate i of the placing point: `center`, `corner`, `from`, or a
     /// prism's or mesh's `origin`.
     At(u8),
-    /// Dimension k: `Place::Centered`'s `extent[k]`, `Place::Axial`'s
-    /// `dims[k]`; a prism's `length` is `Dim(0)`.
-    Dim(u8),
-    /// Component i of edge e (`Place::Edges`).
+    /// Component k of a box's or plate's `size`.
+    Size(u8),
+    /// A rod's, cylinder's, cone's or prism's `length`.
+    Length,
+    /// A `radius` (or half a `diameter`): a cylinder's, disk's, sphere's,
+    /// hemisphere's, a cone's base's, a torus's centre line.
+    Radius,
+    /// An `inner_radius` (or half an `inner_diameter`).
+    InnerRadius,
+    /// A cone's `top_radius`.
+    TopRadius,
+    /// A cone's `top_inner_radius`.
+    TopInnerRadius,
+    /// A torus's `tube_radius`.
+    TubeRadius,
+    /// A torus's `inner_tube_radius`.
+    InnerTubeRadius,
+    /// Component i of edge e of a box or plate placed by its edges.
     Edge(u8, u8),
     /// Coordinate i of a rod's `to`.
     To(u8),
@@ -27,6 +41,22 @@ pub enum Slot {
 }
 
 impl Slot {
+    /// The slot a dimension's key fills, by its name (`length`, `radius`,
+    /// `inner_radius`, `top_radius`, `top_inner_radius`, `tube_radius`,
+    /// `inner_tube_radius`); `None` for any other key.
+    pub fn of_dimension(key: &str) -> Option<Slot> {
+        Some(match key {
+            "length" => Slot::Length,
+            "radius" => Slot::Radius,
+            "inner_radius" => Slot::InnerRadius,
+            "top_radius" => Slot::TopRadius,
+            "top_inner_radius" => Slot::TopInnerRadius,
+            "tube_radius" => Slot::TubeRadius,
+            "inner_tube_radius" => Slot::InnerTubeRadius,
+            _ => return None,
+        })
+    }
+
     /// A coordinate of a point (a centre, a corner, an end, a vertex, an
     /// origin): where the origin is decides its value, so a percentage of
     /// it means nothing.
@@ -92,9 +122,4 @@ pub fn xyz(f: impl Fn(u8) -> Slot) -> [Slot; 3] {
 /// Three coordinates read through `l`.
 pub fn lift3<T: Real, L: Lift>(l: L, v: &[f64; 3], slots: [Slot; 3]) -> [T; 3] {
     std::array::from_fn(|i| T::var(v[i], l.rate(slots[i])))
-}
-
-/// The dimensions of a centred or axial part, read through `l`.
-pub fn dims_in<T: Real, L: Lift, const N: usize>(d: &[f64; N], l: L) -> [T; N] {
-    std::array::from_fn(|k| T::var(d[k], l.rate(Slot::Dim(k as u8))))
 }

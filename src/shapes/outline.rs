@@ -1,8 +1,7 @@
-//! Each placed shape's outline in 3-D, in the file's frame and length
-//! unit: the lines and curves whose orthographic projections draw it. The
-//! one place that turns a placed shape into lines, by its `Place` and its
-//! shape's `Drawn` (`ShapeKind::INFO`); `render::drawing::view` projects
-//! the pieces.
+//! A placed shape's outline in 3-D, in the file's frame and length unit:
+//! the lines and curves whose orthographic projections draw it. Each
+//! shape's module makes its own (`ShapeKind::outline`);
+//! `render::drawing::view` projects the pieces.
 //!
 //! - box, plate: the convex hull of the corners (the exact silhouette of
 //!   a convex solid); a mesh: its silhouette edges in each view;
@@ -14,9 +13,6 @@
 //!   sphere is hidden); hemisphere: its rim and the outline of its dome;
 //! - torus: the outline of the tube swept along its centre line;
 //! - point mass and given inertia: a marker.
-
-use super::place::Place;
-use super::{Drawn, Shape};
 
 pub type V3 = [f64; 3];
 
@@ -124,245 +120,13 @@ fn rim_half(r: f64, u: &V3, v: &V3, pad: f64) -> V3 {
     std::array::from_fn(|k| r * (u[k] * u[k] + v[k] * v[k]).sqrt() + pad)
 }
 
-impl Place {
-    /// The outline of the placed `shape` in the file's frame.
-    pub fn outline(&self, shape: Shape) -> Outline {
-        match self {
-            Place::Centered {
-                center,
-                extent,
-                orientation,
-            } => centred(
-                shape.info().drawn,
-                *center,
-                extent,
-                &axes(&orientation.matrix()),
-            ),
-            Place::Edges { corner, edges } => {
-                let n = shape.edge_count().min(3);
-                Outline::Pieces(vec![Piece::Hull(corners(*corner, &edges[..n]))])
-            }
-            Place::FromTo { from, to } => Outline::Pieces(vec![Piece::Line {
-                points: vec![*from, *to],
-                closed: false,
-            }]),
-            Place::Vertices(v) => Outline::Pieces(vec![Piece::Line {
-                points: v.to_vec(),
-                closed: true,
-            }]),
-            Place::Given { center, .. } => Outline::Marker(Marker::Inertia, *center),
-            Place::Axial {
-                center,
-                dims,
-                orientation,
-            } => axial(
-                shape.info().drawn,
-                *center,
-                dims,
-                &axes(&orientation.matrix()),
-            ),
-            Place::Prism {
-                origin,
-                polygon,
-                length,
-                orientation,
-            } => {
-                let [x, y, z] = axes(&orientation.matrix());
-                let at = |p: &[f64; 2], h: f64| add(*origin, comb(&[(p[0], x), (p[1], y), (h, z)]));
-                let ends: [Vec<V3>; 2] =
-                    [-0.5, 0.5].map(|h| polygon.iter().map(|p| at(p, h * length)).collect());
-                let mut pieces: Vec<Piece> = ends
-                    .iter()
-                    .map(|e| Piece::Line {
-                        points: e.clone(),
-                        closed: true,
-                    })
-                    .collect();
-                pieces.extend(ends[0].iter().zip(&ends[1]).map(|(a, b)| Piece::Line {
-                    points: vec![*a, *b],
-                    closed: false,
-                }));
-                Outline::Pieces(pieces)
-            }
-            Place::Mesh {
-                origin,
-                orientation,
-                scale,
-                mesh,
-            } => {
-                let [x, y, z] = axes(&orientation.matrix());
-                let s = crate::numeric::Real::f64(*scale);
-                let points = mesh
-                    .points
-                    .iter()
-                    .map(|p| {
-                        add(
-                            *origin,
-                            comb(&[(p[0] * s, x), (p[1] * s, y), (p[2] * s, z)]),
-                        )
-                    })
-                    .collect();
-                Outline::Pieces(vec![Piece::Silhouette {
-                    points,
-                    faces: mesh.faces.clone(),
-                }])
-            }
-        }
-    }
-}
-
-/// A part placed by its centre, its local axes `x`, `y`, `z` (columns of
-/// its turn) and its dimensions as `Shape::second_moments` takes them.
-fn centred(drawn: Drawn, c: V3, e: &[f64; 3], [x, y, z]: &[V3; 3]) -> Outline {
-    let rim = |at: V3, r: f64| Piece::Ellipsoid {
-        c: at,
-        m: [scaled(r, *x), scaled(r, *y), [0.0; 3]],
-    };
-    let pieces = match drawn {
-        Drawn::Point => return Outline::Marker(Marker::Point, c),
-        Drawn::Corners => {
-            let corner = add(
-                c,
-                comb(&[(-e[0] / 2.0, *x), (-e[1] / 2.0, *y), (-e[2] / 2.0, *z)]),
-            );
-            vec![Piece::Hull(corners(
-                corner,
-                &[scaled(e[0], *x), scaled(e[1], *y), scaled(e[2], *z)],
-            ))]
-        }
-        Drawn::Segment => vec![Piece::Line {
-            points: vec![
-                add(c, scaled(-e[0] / 2.0, *z)),
-                add(c, scaled(e[0] / 2.0, *z)),
-            ],
-            closed: false,
-        }],
-        Drawn::Frustum => {
-            let (r, inner, l) = (e[0], e[1], e[2]);
-            let ends = [add(c, scaled(-l / 2.0, *z)), add(c, scaled(l / 2.0, *z))];
-            let mut p = vec![rim(ends[0], r), rim(ends[1], r)];
-            p.push(Piece::Side {
-                c: ends,
-                r: [r, r],
-                u: *x,
-                v: *y,
-            });
-            if inner > 0.0 {
-                p.extend(ends.map(|at| rim(at, inner)));
-            }
-            p
-        }
-        Drawn::Rims => {
-            let mut p = vec![rim(c, e[0])];
-            if e[1] > 0.0 {
-                p.push(rim(c, e[1]));
-            }
-            p
-        }
-        Drawn::Ball => vec![Piece::Ellipsoid {
-            c,
-            m: [[e[0], 0.0, 0.0], [0.0, e[0], 0.0], [0.0, 0.0, e[0]]],
-        }],
-        Drawn::Ring => vec![Piece::Torus {
-            c,
-            r: e[0],
-            a: e[1],
-            u: *x,
-            v: *y,
-        }],
-        // Not placed by a centre and dimensions (`model::place`): drawn
-        // as the point their centre is, should one ever be.
-        Drawn::Edges | Drawn::Given | Drawn::Dome | Drawn::Extruded | Drawn::Silhouette => {
-            return Outline::Marker(Marker::Point, c);
-        }
-    };
-    Outline::Pieces(pieces)
-}
-
-/// A cone (dimensions [R₀, a₀, R₁, a₁, L], `c` the middle of its axis) or
-/// a hemisphere ([R, r], `c` its sphere's centre).
-fn axial(drawn: Drawn, c: V3, d: &[f64; 5], [x, y, z]: &[V3; 3]) -> Outline {
-    let rim = |at: V3, r: f64| Piece::Ellipsoid {
-        c: at,
-        m: [scaled(r, *x), scaled(r, *y), [0.0; 3]],
-    };
-    let pieces = if drawn == Drawn::Dome {
-        vec![
-            rim(c, d[0]),
-            Piece::Dome {
-                c,
-                r: d[0],
-                u: *x,
-                v: *y,
-                z: *z,
-            },
-        ]
-    } else {
-        let ends = [
-            add(c, scaled(-d[4] / 2.0, *z)),
-            add(c, scaled(d[4] / 2.0, *z)),
-        ];
-        let mut p = vec![Piece::Side {
-            c: ends,
-            r: [d[0], d[2]],
-            u: *x,
-            v: *y,
-        }];
-        for (at, r) in [
-            (ends[0], d[0]),
-            (ends[0], d[1]),
-            (ends[1], d[2]),
-            (ends[1], d[3]),
-        ] {
-            if r > 0.0 {
-                p.push(rim(at, r));
-            }
-        }
-        p
-    };
-    Outline::Pieces(pieces)
-}
-
-/// The columns of a turn: the local x, y and z axes in the file's frame.
-fn axes(r: &[[f64; 3]; 3]) -> [V3; 3] {
-    std::array::from_fn(|j| std::array::from_fn(|i| r[i][j]))
-}
-
-/// Every corner of the parallelepiped at `corner` spanned by `edges`.
-fn corners(corner: V3, edges: &[V3]) -> Vec<V3> {
-    (0..1usize << edges.len())
-        .map(|bits| {
-            edges
-                .iter()
-                .enumerate()
-                .filter(|(k, _)| bits >> k & 1 == 1)
-                .fold(corner, |p, (_, e)| add(p, *e))
-        })
-        .collect()
-}
-
-fn add(a: V3, b: V3) -> V3 {
-    std::array::from_fn(|k| a[k] + b[k])
-}
-
-fn scaled(s: f64, v: V3) -> V3 {
-    v.map(|x| s * x)
-}
-
-/// Σ sᵢ vᵢ.
-fn comb(terms: &[(f64, V3)]) -> V3 {
-    terms
-        .iter()
-        .fold([0.0; 3], |acc, (s, v)| add(acc, scaled(*s, *v)))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
     fn a_parallelepiped_has_two_to_the_edges_corners() {
-        let c = corners([1.0, 0.0, 0.0], &[[1.0, 0.0, 0.0], [0.0, 2.0, 0.0]]);
+        let c = super::super::common::corners([1.0, 0.0, 0.0], &[[1.0, 0.0, 0.0], [0.0, 2.0, 0.0]]);
         assert_eq!(
             c,
             vec![

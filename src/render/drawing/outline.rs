@@ -5,5 +5,5 @@ pub use crate::shapes::outline::{Marker, Outline, Piece, V3};
 
 /// A part's outline in the file's frame.
 pub fn of(part: &crate::part::Part) -> Outline {
-    part.spec.place.outline(part.shape)
+    part.spec.place.outline()
 }
