@@ -478,11 +478,11 @@ mod tests {
                         shape: Shape::Box,
                         spec: Spec {
                             mass: MassSpec::Given(m),
-                            place: Place::Centered {
+                            place: Place::Box(crate::shapes::r#box::Cuboid::Centred {
                                 center,
-                                extent: [a; 3],
+                                size: [a; 3],
                                 orientation: Orientation::Quaternion(q.map(|x| x / norm)),
-                            },
+                            }),
                             removed: false,
                             placed: Default::default(),
                         },

@@ -405,6 +405,14 @@ pub fn pow2_scale<T: Real>(v: &[T]) -> f64 {
     f64::from_bits(biased << 52)
 }
 
+/// v / 2ᵏ for the power of two nearest below max |vᵢ| (`pow2_scale`):
+/// exact, and keeps the squares of a direction vector away from overflow
+/// and underflow.
+pub fn pow2_scaled(v: [DD; 3]) -> [DD; 3] {
+    let scale = DD::of(pow2_scale(&v));
+    v.map(|x| x / scale)
+}
+
 /// The scaled Euclidean norm (Frobenius for a matrix), the one used
 /// everywhere: no overflow or underflow in the squares, since the vector is
 /// first divided by `pow2_scale`, which is exact. `f64::MAX` at most for

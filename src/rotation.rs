@@ -32,7 +32,7 @@ pub enum Orientation {
     /// The reflection E − 2 n nᵀ/|n|² in the plane through 0 normal to a
     /// non-zero `n` (any length). Not a turn (its determinant is −1): it
     /// is only ever a factor of a `Then` whose product is one, S R F of a
-    /// mirrored part (`part::mirror`).
+    /// mirrored part (`Place::mirror`).
     Reflect([f64; 3]),
 }
 

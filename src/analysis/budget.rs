@@ -457,11 +457,10 @@ fn point(p: &Part, g: f64) -> Part {
         shape: Shape::Point,
         spec: Spec {
             mass: MassSpec::Given(g.abs()),
-            place: Place::Centered {
+            place: Place::Point(crate::shapes::point::Point {
                 center,
-                extent: [0.0; 3],
                 orientation: Orientation::Identity,
-            },
+            }),
             removed: g < 0.0,
             placed: Placed::new(0.0, at),
         },

@@ -13,8 +13,8 @@ use super::summary::{Blame, Contribution, SummaryError};
 use crate::compose::{self, Precision, Principal};
 use crate::mass::Body;
 use crate::model::Model;
-use crate::numeric::{DD, M3, Real, pow2_scale};
-use crate::part::{Part, Place, Solid};
+use crate::numeric::{DD, M3, Real, pow2_scaled};
+use crate::part::{Part, Solid};
 use crate::tolerance::{NEGLIGIBLE_ROUNDOFFS, ROUNDING_CHANGE};
 use serde::Serialize;
 
@@ -52,41 +52,6 @@ pub struct IdealPart {
     pub relative_change: [Option<f64>; 3],
 }
 
-/// v / 2ᵏ for the power of two nearest below max |vᵢ|: exact, and keeps the
-/// squares of a direction vector away from overflow and underflow.
-fn scaled(v: [DD; 3]) -> [DD; 3] {
-    let scale = DD::of(pow2_scale(&v));
-    v.map(|x| x / scale)
-}
-
-/// A vector along the plate's normal (plate) or the rod's axis (rod), of
-/// any length, in the file's axes: local z, or e₁ × e₂ for a plate given by
-/// corner and edges, or `to` − `from` for a rod.
-fn direction(part: &Part) -> [DD; 3] {
-    match &part.spec.place {
-        Place::Centered { orientation, .. } => {
-            let r: M3<DD> = orientation.matrix();
-            [r[0][2], r[1][2], r[2][2]]
-        }
-        Place::Edges { edges, .. } => {
-            let [a, b] = [edges[0], edges[1]].map(|e| scaled(e.map(DD::of)));
-            std::array::from_fn(|i| {
-                let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-                a[j] * b[k] - a[k] * b[j]
-            })
-        }
-        // Each difference of two f64 is exact in double-double.
-        Place::FromTo { from, to } => std::array::from_fn(|i| DD::of(to[i]) - DD::of(from[i])),
-        Place::Given { .. }
-        | Place::Vertices(_)
-        | Place::Axial { .. }
-        | Place::Prism { .. }
-        | Place::Mesh { .. } => {
-            unreachable!("only plates and rods give a real size")
-        }
-    }
-}
-
 /// What making `part` solid adds to its second moment ∫ρρᵀ dm about its
 /// centroid (file axes and units); `size` is the plate's thickness or the
 /// rod's diameter. Mass and centroid are the same, so the composite's centre
@@ -104,7 +69,12 @@ fn direction(part: &Part) -> [DD; 3] {
 /// I_zz = m r²/2 and I_xx = m(3r² + L²)/12, the textbook cylinder.)
 pub fn solid_extra(part: &Part, solid: Solid, size: f64) -> M3<DD> {
     let m: DD = part.mass();
-    let w = scaled(direction(part));
+    let w = pow2_scaled(
+        part.spec
+            .place
+            .real_size_direction()
+            .expect("only plates and rods give a real size"),
+    );
     let ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
     let s = DD::of(size);
     match solid {

@@ -16,10 +16,10 @@
 //! the copies [0, N) are the array's, [N, 2N) their images in the same
 //! order: copy N + i is the image of copy i.
 
+use super::frame::Pattern;
 use super::raw::{Floats, Quantity, RawArray, RawMirror, RawPart, Vector};
 use super::{Ctx, Frame, Item, MAX_PARTS, Model};
 use crate::diag::Diagnostic;
-use crate::part::Place;
 use crate::rotation::Orientation;
 use crate::units::Dim;
 use std::collections::HashMap;
@@ -29,22 +29,6 @@ use toml::Spanned;
 /// The keys any part may have besides its shape's or an include's (the
 /// JSON Schema reads them too: `model::schema`).
 pub(super) const COPY_KEYS: [&str; 2] = ["array", "mirror"];
-
-/// How an array places its copies.
-#[derive(Debug, Clone, PartialEq)]
-pub(super) enum Pattern {
-    /// No array: the part alone (and its image, with a mirror).
-    One,
-    /// Copy i moved by i·`step` (file units).
-    Linear { count: usize, step: [f64; 3] },
-    /// Copy i turned by i·`degrees` about `axis` through `origin`.
-    Polar {
-        count: usize,
-        axis: [f64; 3],
-        degrees: f64,
-        origin: [f64; 3],
-    },
-}
 
 /// A part's copies: its array's and its mirror's.
 #[derive(Debug, Clone, PartialEq)]
@@ -444,7 +428,12 @@ impl Ctx<'_> {
             if bad.is_some() {
                 return;
             }
-            if !positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite()) {
+            if !p
+                .spec
+                .place
+                .positions()
+                .all(|x| x.is_finite() && (x * si).is_finite())
+            {
                 bad = Some(true);
             } else if self.in_file_range(p.shape, &p.spec, "", 0..0).is_err() {
                 bad = Some(false);
@@ -456,7 +445,11 @@ impl Ctx<'_> {
         one.each_part(&mut |l| {
             let p = l.part;
             if failed.is_none()
-                && (!positions(&p.spec.place).all(|x| x.is_finite() && (x * si).is_finite())
+                && (!p
+                    .spec
+                    .place
+                    .positions()
+                    .all(|x| x.is_finite() && (x * si).is_finite())
                     || self.in_file_range(p.shape, &p.spec, "", 0..0).is_err())
             {
                 failed = Some(p.clone());
@@ -632,38 +625,6 @@ impl Names {
         }
         Ok(())
     }
-}
-
-/// Every coordinate of the points a placement gives, and its edges'
-/// (held in place: asked of every copy).
-fn positions(place: &Place) -> impl Iterator<Item = f64> {
-    let mut points = [[0.0; 3]; 4];
-    let n = match place {
-        Place::Centered { center, .. }
-        | Place::Given { center, .. }
-        | Place::Axial { center, .. } => {
-            points[0] = *center;
-            1
-        }
-        Place::Prism { origin, .. } | Place::Mesh { origin, .. } => {
-            points[0] = *origin;
-            1
-        }
-        Place::Edges { corner, edges } => {
-            points[0] = *corner;
-            points[1..].copy_from_slice(edges);
-            4
-        }
-        Place::FromTo { from, to } => {
-            points[..2].copy_from_slice(&[*from, *to]);
-            2
-        }
-        Place::Vertices(v) => {
-            points[..3].copy_from_slice(v);
-            3
-        }
-    };
-    points.into_iter().take(n).flatten()
 }
 
 /// Where a part's copies are asked for: its `array`, else its `mirror`.

@@ -3,10 +3,9 @@
 //! placed through it (`Frame::place`), with the rounding that adds
 //! (`Spec::placed`).
 
-use super::copies::Pattern;
 use super::rotation::Orientation;
 use crate::numeric::M3;
-use crate::part::{MassSpec, Place, Spec};
+use crate::part::{MassSpec, Spec};
 use crate::shapes::Shape;
 
 /// Where an included file's frame goes in this file's.
@@ -24,8 +23,24 @@ pub struct Frame {
     /// for an include's.
     pub(super) pivot: Option<[f64; 3]>,
     /// A mirror's frame: R is a reflection, and a part placed by its
-    /// centre and a turn is completed as its image by `part::mirror`.
+    /// centre and a turn is completed as its image by `Place::mirror`.
     pub(super) mirror: bool,
+}
+
+/// How an array places its copies.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) enum Pattern {
+    /// No array: the part alone (and its image, with a mirror).
+    One,
+    /// Copy i moved by i·`step` (file units).
+    Linear { count: usize, step: [f64; 3] },
+    /// Copy i turned by i·`degrees` about `axis` through `origin`.
+    Polar {
+        count: usize,
+        axis: [f64; 3],
+        degrees: f64,
+        origin: [f64; 3],
+    },
 }
 
 /// The linear part of placing a part through frames: its mass scales by
@@ -191,107 +206,28 @@ impl Frame {
     /// frame and units, in place (a walk places each part through every
     /// frame above it: a copy of the part per frame was a quarter of the
     /// time of a report of 2²⁰ instances).
-    pub(super) fn place(&self, shape: Shape, s: &mut Spec) {
-        let reach = reach(&s.place) * self.length;
+    pub(super) fn place(&self, _shape: Shape, s: &mut Spec) {
+        let reach = s.place.reach() * self.length;
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
             MassSpec::Density(d) => {
                 // A density per volume, area or length scales with that power.
-                let k = match &s.place {
-                    // A mesh's density is per volume or per area by its mode.
-                    Place::Mesh { mesh, .. } => mesh.mode.power(),
-                    _ => shape.info().density.map_or(0, |d| d.length_power),
-                };
+                let k = s.place.density_power();
                 *d = *d * self.mass / self.length.powi(k);
             }
         }
-        match &mut s.place {
-            Place::Centered {
-                center,
-                extent,
-                orientation,
-            } => {
-                *center = self.point(*center);
-                *extent = extent.map(|x| x * self.length);
-                self.turn(orientation);
-            }
-            Place::Edges { corner, edges } => {
-                *corner = self.point(*corner);
-                *edges = edges.map(|e| self.dir(e));
-            }
-            Place::FromTo { from, to } => {
-                *from = self.point(*from);
-                *to = self.point(*to);
-            }
-            Place::Vertices(v) => *v = v.map(|x| self.point(x)),
-            Place::Axial {
-                center,
-                dims,
-                orientation,
-            } => {
-                *center = self.point(*center);
-                *dims = dims.map(|x| x * self.length);
-                self.turn(orientation);
-            }
-            Place::Prism {
-                origin,
-                polygon,
-                length,
-                orientation,
-            } => {
-                *origin = self.point(*origin);
-                if self.length != 1.0 {
-                    *polygon = polygon.iter().map(|v| v.map(|x| x * self.length)).collect();
-                }
-                *length *= self.length;
-                self.turn(orientation);
-            }
-            Place::Given {
-                center,
-                inertia,
-                orientation,
-            } => {
-                *center = self.point(*center);
-                **inertia = inertia.map(|r| r.map(|x| x * self.mass * self.length * self.length));
-                self.turn(orientation);
-            }
-            Place::Mesh {
-                origin,
-                orientation,
-                scale,
-                ..
-            } => {
-                *origin = self.point(*origin);
-                *scale = scale.mul_f64(self.length);
-                self.turn(orientation);
-            }
-        }
+        s.place.moved(self);
         if self.mirror {
-            crate::part::mirror::complete(shape, &mut s.place);
+            s.place.mirror();
         }
         s.placed = self.rounding(s.placed, reach);
         // A prism's vertices, scaled in its own frame, round each by a unit
-        // of their distance from its origin: that changes its shape by
-        // 2 max|p|/shortest edge units of its sizes (and moves its
-        // centroid, in `reach`).
-        if let Place::Prism { polygon, .. } = &s.place
-            && self.length != 1.0
+        // of their distance from its origin (`Place::scaled_rounding`).
+        if self.length != 1.0
+            && let Some(units) = s.place.scaled_rounding()
         {
-            let n = polygon.len();
-            let far = polygon
-                .iter()
-                .map(|v| v[0].abs().max(v[1].abs()))
-                .fold(0.0, f64::max);
-            let short = (0..n)
-                .map(|i| {
-                    let (a, b) = (polygon[i], polygon[(i + 1) % n]);
-                    (a[0] - b[0]).hypot(a[1] - b[1])
-                })
-                .fold(f64::INFINITY, f64::min);
-            s.placed = crate::part::Placed::new(
-                f64::from(s.placed.units) + 2.0 * far / short,
-                f64::from(s.placed.at),
-            );
+            s.placed =
+                crate::part::Placed::new(f64::from(s.placed.units) + units, f64::from(s.placed.at));
         }
     }
 
@@ -335,30 +271,26 @@ impl Frame {
     }
 }
 
-/// The largest |p|₁ of the points a placement gives (its centre, corner,
-/// ends or vertices), before a frame moves them.
-fn reach(place: &Place) -> f64 {
-    let norm = |p: &[f64; 3]| p.iter().map(|x| x.abs()).sum::<f64>();
-    match place {
-        Place::Centered { center, .. }
-        | Place::Given { center, .. }
-        | Place::Axial { center, .. } => norm(center),
-        // Its vertices are scaled in its own frame: their rounding moves
-        // its centroid by a unit of their distance from its origin (and
-        // changes its shape, counted in its sizes' units, `Frame::place`).
-        Place::Prism {
-            origin, polygon, ..
-        } => {
-            norm(origin)
-                + polygon
-                    .iter()
-                    .map(|v| v[0].abs() + v[1].abs())
-                    .fold(0.0, f64::max)
-        }
-        Place::Mesh { origin, .. } => norm(origin),
-        Place::Edges { corner, .. } => norm(corner),
-        Place::FromTo { from, to } => norm(from).max(norm(to)),
-        Place::Vertices(v) => v.iter().map(norm).fold(0.0, f64::max),
+/// A frame moves a placement's numbers (`Place::moved`).
+impl crate::shapes::Mover for Frame {
+    fn point(&self, p: [f64; 3]) -> [f64; 3] {
+        Frame::point(self, p)
+    }
+
+    fn dir(&self, e: [f64; 3]) -> [f64; 3] {
+        Frame::dir(self, e)
+    }
+
+    fn turn(&self, o: &mut Orientation) {
+        Frame::turn(self, o)
+    }
+
+    fn length(&self) -> f64 {
+        self.length
+    }
+
+    fn mass(&self) -> f64 {
+        self.mass
     }
 }
 

@@ -91,16 +91,16 @@ impl Ctx<'_> {
             Density::Per(rho, span) => {
                 let spec = Spec {
                     mass: MassSpec::Density(rho),
-                    place: Place::Mesh {
+                    place: Place::Mesh(crate::shapes::mesh::Mesh {
                         origin,
                         orientation: orientation.clone(),
                         scale,
                         mesh: mesh.clone(),
-                    },
+                    }),
                     removed: false,
                     placed: Default::default(),
                 };
-                let m: f64 = crate::part::mass_of(Shape::Mesh, &spec);
+                let m: f64 = crate::part::mass_of(&spec);
                 let si = m * self.units.factor(Dim::MASS).value();
                 if !(m >= f64::MIN_POSITIVE && m.is_finite() && si.is_finite()) {
                     let what = if m.is_finite() {
@@ -125,12 +125,12 @@ impl Ctx<'_> {
         };
         let spec = Spec {
             mass,
-            place: Place::Mesh {
+            place: Place::Mesh(crate::shapes::mesh::Mesh {
                 origin,
                 orientation,
                 scale,
                 mesh,
-            },
+            }),
             removed: matches!(&p.remove, Some(r) if *r.get_ref()),
             placed: Default::default(),
         };

@@ -10,6 +10,7 @@ use super::raw::{RawPart, Vector};
 use super::rotation::Orientation;
 use crate::diag::Diagnostic;
 use crate::part::{MassSpec, Part, Place, Solid, Spec};
+use crate::shapes::Reader;
 use crate::shapes::{Dims, Shape, Spanned as Spans};
 use crate::units::{self, Dim};
 use std::ops::Range;
@@ -39,128 +40,15 @@ impl Ctx<'_> {
                 material.expect("`part` checked that a mass, density or material is given"),
             ),
         };
-        // A key kept in the part (`center`) or boxed (`corner`).
-        fn req<V: std::borrow::Borrow<Vector>>(v: &Option<V>) -> &Vector {
-            v.as_ref()
-                .expect("`part` checked the placement keys")
-                .borrow()
-        }
-        let place = match (info.dims, by_edges) {
-            (Dims::Vertices, _) => {
-                let rows = p.vertices.as_deref().expect("`part` checked the vertices");
-                let mut vertices = [[0.0; 3]; 3];
-                for (k, (v, raw)) in vertices.iter_mut().zip(rows.get_ref()).enumerate() {
-                    self.tol.borrow_mut().row = k;
-                    *v = self.file_vec3(raw, "vertices", Dim::LENGTH)?;
-                }
-                Place::Vertices(vertices)
-            }
-            (Dims::Given, _) => {
-                let rows = p.inertia.as_deref().expect("`part` checked the inertia");
-                let mut m = [[0.0; 3]; 3];
-                for (r, raw) in m.iter_mut().zip(rows.get_ref()) {
-                    *r = self.file_vec3(raw, "inertia", Dim::INERTIA)?;
-                }
-                Place::Given {
-                    center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
-                    inertia: Box::new(tensor_convention(m, positive_products(p))),
-                    orientation,
-                }
-            }
-            (_, true) if info.spanned == Some(Spans::FromTo) => Place::FromTo {
-                from: self.file_vec3(req(&p.from), "from", Dim::LENGTH)?,
-                to: self.file_vec3(req(&p.to), "to", Dim::LENGTH)?,
+        let place = Place::read(
+            shape,
+            &PartReader {
+                ctx: self,
+                p,
+                by_edges,
+                orientation,
             },
-            (_, true) => {
-                let mut edges = [[0.0; 3]; 3];
-                let raw = p
-                    .edges
-                    .as_deref()
-                    .expect("`part` checked the placement keys");
-                for (k, (e, r)) in edges.iter_mut().zip(raw.get_ref()).enumerate() {
-                    self.tol.borrow_mut().row = k;
-                    *e = self.file_vec3(r, "edges", Dim::LENGTH)?;
-                }
-                Place::Edges {
-                    corner: self.file_vec3(req(&p.corner), "corner", Dim::LENGTH)?,
-                    edges,
-                }
-            }
-            _ => {
-                let mut extent = [0.0; 3];
-                match info.dims {
-                    Dims::Size(_) => {
-                        let size = p.size.as_ref().expect("`part` checked the size");
-                        for (k, (e, q)) in extent.iter_mut().zip(size.get_ref()).enumerate() {
-                            self.tol.borrow_mut().component = k;
-                            *e = self.file_quantity(q, "size", Dim::LENGTH)?;
-                        }
-                    }
-                    Dims::Length => {
-                        let l = p.length.as_deref().expect("`part` checked the length");
-                        extent[0] = self.file_quantity(l, "length", Dim::LENGTH)?;
-                    }
-                    Dims::Radii { length } => {
-                        let r = self
-                            .radius_of(p, false)?
-                            .expect("`part` checked the radius");
-                        extent[0] = self.radius_file(&r)?;
-                        if let Some(q) = self.radius_of(p, true)? {
-                            extent[1] = self.radius_file(&q)?;
-                        }
-                        if let (true, Some(l)) = (length, &p.length) {
-                            extent[2] = self.file_quantity(l, "length", Dim::LENGTH)?;
-                        }
-                    }
-                    Dims::Torus => extent = self.torus_file(p)?,
-                    Dims::Cone => {
-                        return self.spec_of(
-                            mass,
-                            p,
-                            Place::Axial {
-                                center: self.file_vec3(req(&p.center), "center", Dim::LENGTH)?,
-                                dims: self.cone_file(p)?,
-                                orientation,
-                            },
-                        );
-                    }
-                    Dims::Polygon => {
-                        let l = p.length.as_deref().expect("`part` checked the length");
-                        let origin = match &p.origin {
-                            Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
-                            None => [0.0; 3],
-                        };
-                        let place = Place::Prism {
-                            origin,
-                            polygon: self.polygon_file(p)?.into(),
-                            length: self.file_quantity(l, "length", Dim::LENGTH)?,
-                            orientation,
-                        };
-                        return self.spec_of(mass, p, place);
-                    }
-                    Dims::None | Dims::Given | Dims::Vertices | Dims::Mesh => {}
-                }
-                let center = self.file_vec3(req(&p.center), "center", Dim::LENGTH)?;
-                if shape == Shape::Hemisphere {
-                    let mut dims = [0.0; 5];
-                    dims[..3].copy_from_slice(&extent);
-                    return self.spec_of(
-                        mass,
-                        p,
-                        Place::Axial {
-                            center,
-                            dims,
-                            orientation,
-                        },
-                    );
-                }
-                Place::Centered {
-                    center,
-                    extent,
-                    orientation,
-                }
-            }
-        };
+        )?;
         self.spec_of(mass, p, place)
     }
 
@@ -408,28 +296,14 @@ impl Ctx<'_> {
     /// one in micrometres and milligrams can overflow.
     pub(super) fn in_file_range(
         &self,
-        shape: Shape,
+        _shape: Shape,
         spec: &Spec,
         name: &str,
         span: Range<usize>,
     ) -> Result<(), Diagnostic> {
-        let m = crate::part::mass_of::<f64>(shape, spec).abs();
-        let j = crate::part::own_second_moment::<f64>(shape, spec, m);
-        // Each independent second moment: along the local axes, per edge,
-        // or (a triangle, a given tensor) the trace.
-        // (No allocation: this runs for every part of every file.)
-        let (parts, count): ([f64; 3], usize) = match &spec.place {
-            Place::Centered { extent, .. } => {
-                (shape.second_moments(m, &extent[..shape.dim_count()]), 3)
-            }
-            Place::Axial { dims, .. } => (shape.second_moments(m, &dims[..shape.dim_count()]), 3),
-            Place::Edges { edges, .. } => (
-                // (m e) e, not m (e e): e² alone can underflow or overflow.
-                edges.map(|e| e.iter().map(|x| (m / 12.0 * x) * x).sum()),
-                shape.edge_count(),
-            ),
-            _ => ([j[0][0] + j[1][1] + j[2][2], 0.0, 0.0], 1),
-        };
+        let m = crate::part::mass_of::<f64>(spec).abs();
+        let j = crate::part::own_second_moment::<f64>(spec, m);
+        let (parts, count, expected) = spec.place.independent_moments(m, &j);
         let parts = &parts[..count];
         let u = self.units;
         let units = || format!("{} and {}", u.length, u.mass);
@@ -443,11 +317,6 @@ impl Ctx<'_> {
                 .err(span, format!("the mass properties of `{name}` overflow the range of f64 in the file's units ({})", units()))
                 .help(fix));
         }
-        // A triangle's one moment checked is the trace.
-        let expected = match shape.info().dims {
-            Dims::Vertices | Dims::Polygon => 1,
-            _ => shape.nonzero_moments(),
-        };
         let normal = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
         if m < f64::MIN_POSITIVE || normal < expected {
             return Err(self
@@ -455,5 +324,123 @@ impl Ctx<'_> {
                 .help(fix));
         }
         Ok(())
+    }
+}
+
+/// A part's numbers as its shape's module reads them (`shapes::Reader`),
+/// in the file's units, after `Ctx::part` has validated them: so a key a
+/// module asks for is there, and only a conversion can fail.
+struct PartReader<'c, 'p> {
+    ctx: &'c Ctx<'c>,
+    p: &'p RawPart,
+    by_edges: bool,
+    orientation: Orientation,
+}
+
+/// A key `Ctx::part` checked is given.
+fn given<V: std::borrow::Borrow<Vector>>(v: &Option<V>) -> &Vector {
+    v.as_ref()
+        .expect("`part` checked the placement keys")
+        .borrow()
+}
+
+impl Reader for PartReader<'_, '_> {
+    fn point(&self, key: &'static str) -> Result<[f64; 3], Diagnostic> {
+        let p = self.p;
+        let v = match key {
+            "center" => given(&p.center),
+            "corner" => given(&p.corner),
+            "from" => given(&p.from),
+            "to" => given(&p.to),
+            _ => unreachable!("`{key}` is no point key"),
+        };
+        self.ctx.file_vec3(v, key, Dim::LENGTH)
+    }
+
+    fn origin(&self) -> Result<[f64; 3], Diagnostic> {
+        match &self.p.origin {
+            Some(o) => self.ctx.file_vec3(o, "origin", Dim::LENGTH),
+            None => Ok([0.0; 3]),
+        }
+    }
+
+    fn vectors<const N: usize>(&self, key: &'static str) -> Result<[[f64; 3]; N], Diagnostic> {
+        let rows = match key {
+            "edges" => self.p.edges.as_deref(),
+            "vertices" => self.p.vertices.as_deref(),
+            _ => unreachable!("`{key}` is no key of vectors"),
+        }
+        .expect("`part` checked the placement keys");
+        let mut out = [[0.0; 3]; N];
+        for (k, (v, raw)) in out.iter_mut().zip(rows.get_ref()).enumerate() {
+            self.ctx.tol.borrow_mut().row = k;
+            *v = self.ctx.file_vec3(raw, key, Dim::LENGTH)?;
+        }
+        Ok(out)
+    }
+
+    fn sizes<const N: usize>(&self) -> Result<[f64; N], Diagnostic> {
+        let size = self.p.size.as_ref().expect("`part` checked the size");
+        let mut out = [0.0; N];
+        for (k, (e, q)) in out.iter_mut().zip(size.get_ref()).enumerate() {
+            self.ctx.tol.borrow_mut().component = k;
+            *e = self.ctx.file_quantity(q, "size", Dim::LENGTH)?;
+        }
+        Ok(out)
+    }
+
+    fn length(&self, key: &'static str) -> Result<f64, Diagnostic> {
+        let l = self.p.length.as_deref().expect("`part` checked the length");
+        self.ctx.file_quantity(l, key, Dim::LENGTH)
+    }
+
+    fn radii(&self) -> Result<[f64; 2], Diagnostic> {
+        let r = self
+            .ctx
+            .radius_of(self.p, false)?
+            .expect("`part` checked the radius");
+        let outer = self.ctx.radius_file(&r)?;
+        let inner = match self.ctx.radius_of(self.p, true)? {
+            Some(q) => self.ctx.radius_file(&q)?,
+            None => 0.0,
+        };
+        Ok([outer, inner])
+    }
+
+    fn cone(&self) -> Result<[f64; 5], Diagnostic> {
+        self.ctx.cone_file(self.p)
+    }
+
+    fn torus(&self) -> Result<[f64; 3], Diagnostic> {
+        self.ctx.torus_file(self.p)
+    }
+
+    fn polygon(&self) -> Result<Vec<[f64; 2]>, Diagnostic> {
+        self.ctx.polygon_file(self.p)
+    }
+
+    fn inertia(&self) -> Result<[[f64; 3]; 3], Diagnostic> {
+        let rows = self
+            .p
+            .inertia
+            .as_deref()
+            .expect("`part` checked the inertia");
+        let mut m = [[0.0; 3]; 3];
+        for (r, raw) in m.iter_mut().zip(rows.get_ref()) {
+            *r = self.ctx.file_vec3(raw, "inertia", Dim::INERTIA)?;
+        }
+        Ok(tensor_convention(m, positive_products(self.p)))
+    }
+
+    fn orientation(&self) -> Orientation {
+        self.orientation.clone()
+    }
+
+    fn by_edges(&self) -> bool {
+        self.by_edges
+    }
+
+    fn elsewhere(&self) -> Diagnostic {
+        self.ctx.err(0..0, "a mesh is read with its file")
     }
 }

@@ -445,7 +445,7 @@ impl Ctx<'_> {
         let key_text = match r.allows(key) {
             Some(Slot::Edge(..) | Slot::Vertex(..)) => format!("{key}[{row}][{component}]"),
             Some(Slot::At(_) | Slot::To(_)) => format!("{key}[{component}]"),
-            Some(Slot::Dim(_)) if key == "size" => format!("{key}[{component}]"),
+            Some(Slot::Size(_)) => format!("{key}[{component}]"),
             _ => key.to_string(),
         };
         r.readings.push(Reading {
@@ -613,13 +613,11 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
     let info = shape.info();
     let dims: &[&str] = match info.dims {
         Dims::Length | Dims::Radii { .. } | Dims::Cone | Dims::Torus => info.dims.keys(),
-        _ => &[],
+        Dims::Size(_) | Dims::Vertices | Dims::Given | Dims::None | Dims::Polygon | Dims::Mesh => {
+            &[]
+        }
     };
-    let dim = |k: &str| {
-        dims.iter()
-            .position(|x| *x == k)
-            .map(|i| Slot::Dim(i as u8))
-    };
+    let dim = |k: &str| dims.contains(&k).then(|| Slot::of_dimension(k)).flatten();
     Some(match key {
         "mass" | "material" => (Slot::Mass, 1.0),
         k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
@@ -627,8 +625,8 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
         "to" => (Slot::To(c), 1.0),
         "edges" => (Slot::Edge(r, c), 1.0),
         "vertices" => (Slot::Vertex(r, c), 1.0),
-        "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Dim(c), 1.0),
-        "length" if info.dims == Dims::Polygon => (Slot::Dim(0), 1.0),
+        "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Size(c), 1.0),
+        "length" if info.dims == Dims::Polygon => (Slot::Length, 1.0),
         "diameter" => (dim("radius")?, 0.5),
         "inner_diameter" => (dim("inner_radius")?, 0.5),
         k => (dim(k)?, 1.0),

@@ -265,7 +265,9 @@ impl Model {
                 shape: crate::shapes::Shape::ALL[0],
                 spec: crate::part::Spec {
                     mass: crate::part::MassSpec::Given(0.0),
-                    place: crate::part::Place::Vertices([[0.0; 3]; 3]),
+                    place: crate::part::Place::Triangle(crate::shapes::triangle::Triangle {
+                        vertices: [[0.0; 3]; 3],
+                    }),
                     removed: false,
                     placed: Default::default(),
                 },
@@ -599,73 +601,17 @@ impl<'m> Walk<'m> {
 /// the temporary a derived `clone_from` makes (a clone, a drop and a
 /// move of the whole value, for each part a walk places).
 mod reset {
-    use crate::part::{Place, Spec};
-    use crate::rotation::Orientation;
+    use crate::part::Spec;
     use std::sync::Arc;
 
     pub(super) fn spec(dst: &mut Spec, src: &Spec) {
         dst.mass = src.mass;
         dst.removed = src.removed;
         dst.placed = src.placed;
-        // NOTE: field by field where both are the same placement of plain
-        // numbers (a part's copies and the parts of one shape, one after
-        // another); any other pair is made whole, as before.
-        match (&mut dst.place, &src.place) {
-            (
-                Place::Centered {
-                    center,
-                    extent,
-                    orientation,
-                },
-                Place::Centered {
-                    center: c,
-                    extent: e,
-                    orientation: o,
-                },
-            ) => {
-                *center = *c;
-                *extent = *e;
-                turn(orientation, o);
-            }
-            (
-                Place::Axial {
-                    center,
-                    dims,
-                    orientation,
-                },
-                Place::Axial {
-                    center: c,
-                    dims: d,
-                    orientation: o,
-                },
-            ) => {
-                *center = *c;
-                *dims = *d;
-                turn(orientation, o);
-            }
-            (Place::FromTo { from, to }, Place::FromTo { from: a, to: b }) => {
-                *from = *a;
-                *to = *b;
-            }
-            (
-                Place::Edges { corner, edges },
-                Place::Edges {
-                    corner: c,
-                    edges: e,
-                },
-            ) => {
-                *corner = *c;
-                *edges = *e;
-            }
-            (Place::Vertices(v), Place::Vertices(w)) => *v = *w,
-            (dst, src) => *dst = src.clone(),
-        }
-    }
-
-    fn turn(dst: &mut Orientation, src: &Orientation) {
-        if !matches!((&*dst, src), (Orientation::Identity, Orientation::Identity)) {
-            *dst = src.clone();
-        }
+        // NOTE: field by field where both are one shape's (a part's copies
+        // and the parts of one shape, one after another:
+        // `Place::reset_from`); any other pair is made whole, as before.
+        dst.place.reset_from(&src.place);
     }
 
     /// A shared value (a material's name, a part's tolerances): its count

@@ -1,131 +1,31 @@
-//! How a part's physics reads the numbers of its `Spec`: as they are, or
-//! one of them seeded for forward-mode differentiation (`dual::Dual`), and
-//! which number a tolerance moves (`Slot`, `Dep`).
+//! A part's numbers by the slot a tolerance moves (`Spec::number_mut`),
+//! and each shape's derivatives by its numbers (tests).
 
-use super::{MassSpec, Place, Spec};
-use crate::numeric::Real;
-
-/// One number of a part's `Spec` that a tolerance can move: the model
-/// records which a toleranced key fills (`model::tolerance`), and
-/// `uncertainty` moves it (Monte Carlo) or differentiates by it (linear).
-/// `Spec::number_mut` is the one map from a slot to its number.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
-pub enum Slot {
-    /// The given mass, or the density (`MassSpec`).
-    Mass,
-    /// Coordinate i of the placing point: `center`, `corner`, `from`, or a
-    /// prism's or mesh's `origin`.
-    At(u8),
-    /// Dimension k: `Place::Centered`'s `extent[k]`, `Place::Axial`'s
-    /// `dims[k]`; a prism's `length` is `Dim(0)`.
-    Dim(u8),
-    /// Component i of edge e (`Place::Edges`).
-    Edge(u8, u8),
-    /// Coordinate i of a rod's `to`.
-    To(u8),
-    /// Coordinate i of a triangle's vertex v.
-    Vertex(u8, u8),
-}
-
-impl Slot {
-    /// A coordinate of a point (a centre, a corner, an end, a vertex, an
-    /// origin): where the origin is decides its value, so a percentage of
-    /// it means nothing.
-    pub fn is_point(self) -> bool {
-        matches!(self, Slot::At(_) | Slot::To(_) | Slot::Vertex(..))
-    }
-
-    /// A coordinate of a point or a vector's component: any sign is a
-    /// body (a size, a radius, a mass or a density below zero is none).
-    pub fn is_signed(self) -> bool {
-        self.is_point() || matches!(self, Slot::Edge(..))
-    }
-}
-
-/// How one number of a part moves with a source of uncertainty (a
-/// toleranced quantity, `model::tolerance`): ∂(number)/∂z in the file's
-/// units, z the source's standardised variable (mean 0, standard
-/// deviation 1).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dep {
-    pub slot: Slot,
-    /// Index in its file's `Model::sources`.
-    pub source: u32,
-    pub rate: f64,
-}
-
-/// How a part's physics reads the numbers of its `Spec`: each as it is
-/// (`Fixed`), or one of them seeded with a unit derivative (`Seed`), so
-/// that evaluated in `dual::Dual` every result carries its derivative by
-/// that number (`Real::var`).
-pub trait Lift: Copy {
-    /// The rate at which the number in `slot` moves.
-    fn rate(self, slot: Slot) -> f64;
-}
-
-/// Every number as it is: what the composer and every report read.
-#[derive(Clone, Copy, Debug)]
-pub struct Fixed;
-
-impl Lift for Fixed {
-    #[inline(always)]
-    fn rate(self, _: Slot) -> f64 {
-        0.0
-    }
-}
-
-/// The number in one slot seeded with the rate 1.
-#[derive(Clone, Copy, Debug)]
-pub struct Seed(pub Slot);
-
-impl Lift for Seed {
-    #[inline]
-    fn rate(self, slot: Slot) -> f64 {
-        if slot == self.0 { 1.0 } else { 0.0 }
-    }
-}
-
-/// The slots of a coordinate triple.
-pub(super) fn xyz(f: impl Fn(u8) -> Slot) -> [Slot; 3] {
-    [f(0), f(1), f(2)]
-}
-
-/// Three coordinates read through `l`.
-pub(super) fn lift3<T: Real, L: Lift>(l: L, v: &[f64; 3], slots: [Slot; 3]) -> [T; 3] {
-    std::array::from_fn(|i| T::var(v[i], l.rate(slots[i])))
-}
+use super::{MassSpec, Spec};
+use crate::shapes::Slot;
 
 impl Spec {
     /// The number in `slot`, if the part has it (the one map from a
-    /// `Slot` to a `Spec`'s number).
+    /// `Slot` to a `Spec`'s number: the mass or density here, the rest
+    /// its placement's, `Place::number_mut`).
     pub fn number_mut(&mut self, slot: Slot) -> Option<&mut f64> {
-        let three = |i: u8| usize::from(i).min(3);
-        match (slot, &mut self.place) {
-            (Slot::Mass, _) => Some(match &mut self.mass {
+        match slot {
+            Slot::Mass => Some(match &mut self.mass {
                 MassSpec::Given(m) => m,
                 MassSpec::Density(d) => d,
             }),
-            (
-                Slot::At(i),
-                Place::Centered { center: p, .. }
-                | Place::Given { center: p, .. }
-                | Place::Axial { center: p, .. }
-                | Place::Edges { corner: p, .. }
-                | Place::FromTo { from: p, .. }
-                | Place::Prism { origin: p, .. }
-                | Place::Mesh { origin: p, .. },
-            ) => p.get_mut(three(i)),
-            (Slot::Dim(k), Place::Centered { extent, .. }) => extent.get_mut(usize::from(k)),
-            (Slot::Dim(k), Place::Axial { dims, .. }) => dims.get_mut(usize::from(k)),
-            (Slot::Dim(0), Place::Prism { length, .. }) => Some(length),
-            (Slot::Edge(e, i), Place::Edges { edges, .. }) => edges
-                .get_mut(usize::from(e))
-                .and_then(|v| v.get_mut(three(i))),
-            (Slot::To(i), Place::FromTo { to, .. }) => to.get_mut(three(i)),
-            (Slot::Vertex(v, i), Place::Vertices(p)) => {
-                p.get_mut(usize::from(v)).and_then(|v| v.get_mut(three(i)))
-            }
-            _ => None,
+            Slot::At(_)
+            | Slot::Size(_)
+            | Slot::Length
+            | Slot::Radius
+            | Slot::InnerRadius
+            | Slot::TopRadius
+            | Slot::TopInnerRadius
+            | Slot::TubeRadius
+            | Slot::InnerTubeRadius
+            | Slot::Edge(..)
+            | Slot::To(_)
+            | Slot::Vertex(..) => self.place.number_mut(slot),
         }
     }
 }
@@ -135,29 +35,29 @@ impl Spec {
 /// closed forms worked by hand.
 #[cfg(test)]
 mod tests {
-    use super::{Seed, Slot};
     use crate::dual::Dual;
     use crate::numeric::M3;
     use crate::part::{MassSpec, Place, Spec, physics_in};
     use crate::rotation::Orientation;
-    use crate::shapes::Shape;
+    use crate::shapes::{Seed, Slot};
+    use crate::shapes::{
+        r#box::Cuboid, cone::Cone, cylinder::Cylinder, disk::Disk, hemisphere::Hemisphere,
+        plate::Plate, point::Point, prism::Prism, rod::Rod, sphere::Sphere, torus::Torus,
+        triangle::Triangle,
+    };
     use std::f64::consts::PI;
 
     /// (∂m, ∂centroid, ∂C) by the number in `slot`.
-    fn d(shape: Shape, spec: &Spec, slot: Slot) -> (f64, [f64; 3], M3<f64>) {
-        let (m, c, j) = physics_in::<Dual<f64>, Seed>(shape, spec, Seed(slot));
+    fn d(spec: &Spec, slot: Slot) -> (f64, [f64; 3], M3<f64>) {
+        let (m, c, j) = physics_in::<Dual<f64>, Seed>(spec, Seed(slot));
         (m.d, c.map(|x| x.d), j.map(|r| r.map(|x| x.d)))
     }
 
-    fn centred(rho: f64, extent: [f64; 3]) -> Spec {
-        spec(
-            MassSpec::Density(rho),
-            Place::Centered {
-                center: [1.0, 2.0, 3.0],
-                extent,
-                orientation: Orientation::Identity,
-            },
-        )
+    const AT: [f64; 3] = [1.0, 2.0, 3.0];
+    const NONE: Orientation = Orientation::Identity;
+
+    fn by_density(rho: f64, place: Place) -> Spec {
+        spec(MassSpec::Density(rho), place)
     }
 
     fn spec(mass: MassSpec, place: Place) -> Spec {
@@ -181,31 +81,48 @@ mod tests {
         // m = ρabc, C = m/12 diag(a², b², c²): ∂m/∂a = ρbc,
         // ∂C_xx/∂a = ρbc a²/4, ∂C_yy/∂a = ρbc b²/12.
         let (rho, a, b, c) = (7.0, 0.3, 0.2, 0.1);
-        let s = centred(rho, [a, b, c]);
-        let (dm, dc, dj) = d(Shape::Box, &s, Slot::Dim(0));
+        let s = by_density(
+            rho,
+            Place::Box(Cuboid::Centred {
+                center: AT,
+                size: [a, b, c],
+                orientation: NONE,
+            }),
+        );
+        let (dm, dc, dj) = d(&s, Slot::Size(0));
         close(dm, rho * b * c);
         close(dj[0][0], rho * b * c * a * a / 4.0);
         close(dj[1][1], rho * b * c * b * b / 12.0);
         assert_eq!(dc, [0.0; 3]);
         // By the density: m/ρ, C/ρ.
-        let (dm, _, dj) = d(Shape::Box, &s, Slot::Mass);
+        let (dm, _, dj) = d(&s, Slot::Mass);
         close(dm, a * b * c);
         close(dj[2][2], a * b * c * c * c / 12.0);
         // By the centre: the centroid moves with it, nothing else.
-        let (dm, dc, dj) = d(Shape::Box, &s, Slot::At(1));
+        let (dm, dc, dj) = d(&s, Slot::At(1));
         assert_eq!((dm, dc, dj), (0.0, [0.0, 1.0, 0.0], [[0.0; 3]; 3]));
     }
 
     #[test]
     fn a_plate_and_a_rod_by_their_sizes() {
         let (sigma, a, b) = (3.0, 0.5, 0.25);
-        let (dm, _, dj) = d(Shape::Plate, &centred(sigma, [a, b, 0.0]), Slot::Dim(1));
+        let plate = Place::Plate(Plate::Centred {
+            center: AT,
+            size: [a, b],
+            orientation: NONE,
+        });
+        let (dm, _, dj) = d(&by_density(sigma, plate), Slot::Size(1));
         close(dm, sigma * a);
         close(dj[1][1], sigma * a * b * b / 4.0);
         close(dj[0][0], sigma * a * a * a / 12.0);
         // A rod along local z: m = λL, ∫z² dm = λL³/12.
         let (lambda, l) = (0.2, 1.5);
-        let (dm, _, dj) = d(Shape::Rod, &centred(lambda, [l, 0.0, 0.0]), Slot::Dim(0));
+        let rod = Place::Rod(Rod::Centred {
+            center: AT,
+            length: l,
+            orientation: NONE,
+        });
+        let (dm, _, dj) = d(&by_density(lambda, rod), Slot::Length);
         close(dm, lambda);
         close(dj[2][2], lambda * l * l / 4.0);
     }
@@ -214,23 +131,32 @@ mod tests {
     fn a_tube_by_its_radii_and_length() {
         // m = ρπ(R² − r²)L, ∫x² dm = m(R² + r²)/4, ∫z² dm = mL²/12.
         let (rho, r_out, r_in, l) = (2.0, 0.05, 0.03, 0.4);
-        let s = centred(rho, [r_out, r_in, l]);
+        let s = by_density(
+            rho,
+            Place::Cylinder(Cylinder {
+                center: AT,
+                radius: r_out,
+                inner_radius: r_in,
+                length: l,
+                orientation: NONE,
+            }),
+        );
         let m = rho * PI * (r_out * r_out - r_in * r_in) * l;
-        let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(0));
+        let (dm, _, dj) = d(&s, Slot::Radius);
         let dm_dr = 2.0 * PI * rho * r_out * l;
         close(dm, dm_dr);
         close(
             dj[0][0],
             dm_dr * (r_out * r_out + r_in * r_in) / 4.0 + m * r_out / 2.0,
         );
-        let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(1));
+        let (dm, _, dj) = d(&s, Slot::InnerRadius);
         let dm_di = -2.0 * PI * rho * r_in * l;
         close(dm, dm_di);
         close(
             dj[1][1],
             dm_di * (r_out * r_out + r_in * r_in) / 4.0 + m * r_in / 2.0,
         );
-        let (dm, _, dj) = d(Shape::Cylinder, &s, Slot::Dim(2));
+        let (dm, _, dj) = d(&s, Slot::Length);
         close(dm, m / l);
         close(dj[2][2], m * l / 4.0);
     }
@@ -238,13 +164,25 @@ mod tests {
     #[test]
     fn a_disk_and_a_sphere_by_their_radii() {
         let (sigma, r) = (5.0, 0.2);
-        let (dm, _, dj) = d(Shape::Disk, &centred(sigma, [r, 0.0, 0.0]), Slot::Dim(0));
+        let disk = Place::Disk(Disk {
+            center: AT,
+            radius: r,
+            inner_radius: 0.0,
+            orientation: NONE,
+        });
+        let (dm, _, dj) = d(&by_density(sigma, disk), Slot::Radius);
         let m = sigma * PI * r * r;
         close(dm, 2.0 * PI * sigma * r);
         close(dj[0][0], 2.0 * PI * sigma * r * r * r / 4.0 + m * r / 2.0);
         // A solid sphere: m = 4πρR³/3, ∫x² dm = mR²/5: ∂ = 4πρR⁴/5 + 2mR/5.
         let (rho, r) = (1000.0, 0.1);
-        let (dm, _, dj) = d(Shape::Sphere, &centred(rho, [r, 0.0, 0.0]), Slot::Dim(0));
+        let sphere = Place::Sphere(Sphere {
+            center: AT,
+            radius: r,
+            inner_radius: 0.0,
+            orientation: NONE,
+        });
+        let (dm, _, dj) = d(&by_density(rho, sphere), Slot::Radius);
         let m = 4.0 / 3.0 * PI * rho * r.powi(3);
         close(dm, 4.0 * PI * rho * r * r);
         close(
@@ -255,40 +193,58 @@ mod tests {
 
     #[test]
     fn a_cone_a_hemisphere_and_a_torus_by_their_sizes() {
-        let axial = |rho: f64, dims: [f64; 5]| {
-            spec(
-                MassSpec::Density(rho),
-                Place::Axial {
+        let cone = |rho: f64, d: [f64; 5]| {
+            by_density(
+                rho,
+                Place::Cone(Cone {
                     center: [0.0; 3],
-                    dims,
-                    orientation: Orientation::Identity,
-                },
+                    radius: d[0],
+                    inner_radius: d[1],
+                    top_radius: d[2],
+                    top_inner_radius: d[3],
+                    length: d[4],
+                    orientation: NONE,
+                }),
             )
         };
         // A frustum: m = ρπL(R₀² + R₀R₁ + R₁²)/3.
         let (rho, r0, r1, l) = (3.0, 0.2, 0.1, 0.5);
-        let s = axial(rho, [r0, 0.0, r1, 0.0, l]);
+        let s = cone(rho, [r0, 0.0, r1, 0.0, l]);
         let m = rho * PI * l * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0;
-        close(
-            d(Shape::Cone, &s, Slot::Dim(0)).0,
-            rho * PI * l * (2.0 * r0 + r1) / 3.0,
-        );
-        close(d(Shape::Cone, &s, Slot::Dim(4)).0, m / l);
+        close(d(&s, Slot::Radius).0, rho * PI * l * (2.0 * r0 + r1) / 3.0);
+        close(d(&s, Slot::Length).0, m / l);
         // A full cone's centroid lies L/4 from its base, a quarter of L
         // from the middle of its axis: it moves a quarter as fast as L.
-        let full = axial(rho, [r0, 0.0, 0.0, 0.0, l]);
-        close(d(Shape::Cone, &full, Slot::Dim(4)).1[2].abs(), 0.25);
+        let full = cone(rho, [r0, 0.0, 0.0, 0.0, l]);
+        close(d(&full, Slot::Length).1[2].abs(), 0.25);
         // A hemisphere: m = 2πρR³/3; its centroid 3R/8 from the centre.
-        let h = axial(rho, [r0, 0.0, 0.0, 0.0, 0.0]);
-        let (dm, dc, _) = d(Shape::Hemisphere, &h, Slot::Dim(0));
+        let h = by_density(
+            rho,
+            Place::Hemisphere(Hemisphere {
+                center: [0.0; 3],
+                radius: r0,
+                inner_radius: 0.0,
+                orientation: NONE,
+            }),
+        );
+        let (dm, dc, _) = d(&h, Slot::Radius);
         close(dm, 2.0 * PI * rho * r0 * r0);
         close(dc[2].abs(), 0.375);
         // A torus: m = 2π²ρRa², ∫z² dm = ma²/4: ∂m/∂a = 2m/a, ∂/∂a = ma.
         let (big, a) = (0.3, 0.05);
-        let t = centred(rho, [big, a, 0.0]);
+        let t = by_density(
+            rho,
+            Place::Torus(Torus {
+                center: AT,
+                radius: big,
+                tube_radius: a,
+                inner_tube_radius: 0.0,
+                orientation: NONE,
+            }),
+        );
         let m = 2.0 * PI * PI * rho * big * a * a;
-        close(d(Shape::Torus, &t, Slot::Dim(0)).0, m / big);
-        let (dm, _, dj) = d(Shape::Torus, &t, Slot::Dim(1));
+        close(d(&t, Slot::Radius).0, m / big);
+        let (dm, _, dj) = d(&t, Slot::TubeRadius);
         close(dm, 2.0 * m / a);
         close(dj[2][2], m * a);
     }
@@ -299,14 +255,14 @@ mod tests {
         let (rho, l) = (4.0, 0.3);
         let s = spec(
             MassSpec::Density(rho),
-            Place::Prism {
+            Place::Prism(Prism {
                 origin: [0.0; 3],
                 polygon: vec![[0.0, 0.0], [0.2, 0.0], [0.2, 0.1], [0.0, 0.1]].into(),
                 length: l,
-                orientation: Orientation::Identity,
-            },
+                orientation: NONE,
+            }),
         );
-        let (dm, _, dj) = d(Shape::Prism, &s, Slot::Dim(0));
+        let (dm, _, dj) = d(&s, Slot::Length);
         close(dm, rho * 0.02);
         close(dj[2][2], rho * 0.02 * l * l / 4.0);
     }
@@ -318,46 +274,47 @@ mod tests {
         let (rho, a, b, c) = (2.0, 0.4, 0.3, 0.2);
         let s = spec(
             MassSpec::Density(rho),
-            Place::Edges {
+            Place::Box(Cuboid::Spanned {
                 corner: [1.0, 1.0, 1.0],
                 edges: [[a, 0.0, 0.0], [0.0, b, 0.0], [0.0, 0.0, c]],
-            },
+            }),
         );
-        let (dm, dc, dj) = d(Shape::Box, &s, Slot::Edge(0, 0));
+        let (dm, dc, dj) = d(&s, Slot::Edge(0, 0));
         close(dm, rho * b * c);
         close(dc[0], 0.5);
         close(dj[0][0], rho * b * c * a * a / 4.0);
-        assert_eq!(d(Shape::Box, &s, Slot::At(2)).1, [0.0, 0.0, 1.0]);
+        assert_eq!(d(&s, Slot::At(2)).1, [0.0, 0.0, 1.0]);
         // A rod from → to: m = λ|to − from|, ∂m/∂to = λ (to − from)/L.
         let s = spec(
             MassSpec::Density(0.5),
-            Place::FromTo {
+            Place::Rod(Rod::Ends {
                 from: [0.0; 3],
                 to: [3.0, 4.0, 0.0],
-            },
+            }),
         );
-        let (dm, dc, _) = d(Shape::Rod, &s, Slot::To(1));
+        let (dm, dc, _) = d(&s, Slot::To(1));
         close(dm, 0.5 * 4.0 / 5.0);
         close(dc[1], 0.5);
         // A triangle (0,0,0), (a,0,0), (0,b,0): area ab/2, ∂/∂(v₁ x) = b/2;
         // its centroid a third as fast as a vertex.
         let s = spec(
             MassSpec::Density(6.0),
-            Place::Vertices([[0.0; 3], [a, 0.0, 0.0], [0.0, b, 0.0]]),
+            Place::Triangle(Triangle {
+                vertices: [[0.0; 3], [a, 0.0, 0.0], [0.0, b, 0.0]],
+            }),
         );
-        let (dm, dc, _) = d(Shape::Triangle, &s, Slot::Vertex(1, 0));
+        let (dm, dc, _) = d(&s, Slot::Vertex(1, 0));
         close(dm, 6.0 * b / 2.0);
         close(dc[0], 1.0 / 3.0);
         // A point by its mass.
         let s = spec(
             MassSpec::Given(2.0),
-            Place::Centered {
+            Place::Point(Point {
                 center: [0.0; 3],
-                extent: [0.0; 3],
-                orientation: Orientation::Identity,
-            },
+                orientation: NONE,
+            }),
         );
-        assert_eq!(d(Shape::Point, &s, Slot::Mass).0, 1.0);
+        assert_eq!(d(&s, Slot::Mass).0, 1.0);
     }
 
     #[test]
@@ -367,13 +324,13 @@ mod tests {
         let (rho, a, b, c) = (7.0, 0.3, 0.2, 0.1);
         let s = spec(
             MassSpec::Density(rho),
-            Place::Centered {
+            Place::Box(Cuboid::Centred {
                 center: [0.0; 3],
-                extent: [a, b, c],
+                size: [a, b, c],
                 orientation: Orientation::AxisAngle([0.0, 0.0, 1.0], 90.0),
-            },
+            }),
         );
-        let (_, _, dj) = d(Shape::Box, &s, Slot::Dim(0));
+        let (_, _, dj) = d(&s, Slot::Size(0));
         close(dj[1][1], rho * b * c * a * a / 4.0);
         close(dj[0][0], rho * b * c * b * b / 12.0);
         assert!(dj[0][1].abs() <= 1e-15 * dj[1][1]);

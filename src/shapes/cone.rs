@@ -27,8 +27,17 @@
 //!   4w₁q₁ + 3(w₁q₂ + w₂q₁) + 6w₂q₂ (a cylinder: m R²/4; a full cone:
 //!   3m R²/20).
 
-use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
-use crate::numeric::Real;
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    add, axes, density_power, diagonal, flip, mirror_axis, norm1, offset_centroid,
+    offset_centroid_error, rim, scaled, var,
+};
+use super::lift::Lift;
+use super::outline::{Outline, Piece};
+use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
 
 /// The Bernstein coefficients w (of d s, the section's area over π) and q
 /// (of ρ² + α²) of the dimensions `d` = [R₀, a₀, R₁, a₁, L].
@@ -83,10 +92,30 @@ pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
     let l = d[4];
     [across, across, m * l * l * var]
 }
+/// A cone or frustum, solid or hollow, placed by its `center` and turned by its `orientation`,
+/// in its file's units; its centroid lies off its centre along local z.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cone {
+    pub center: [f64; 3],
+    /// `radius`.
+    pub radius: f64,
+    /// `inner_radius`.
+    pub inner_radius: f64,
+    /// `top_radius`.
+    pub top_radius: f64,
+    /// `top_inner_radius`.
+    pub top_inner_radius: f64,
+    /// `length`.
+    pub length: f64,
+    pub orientation: Orientation,
+}
 
-/// The cone, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Cone;
+impl Cone {
+    /// Its dimensions as its closed forms take them, read through `l`.
+    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 5] {
+        [var(self.radius, Slot::Radius, l), var(self.inner_radius, Slot::InnerRadius, l), var(self.top_radius, Slot::TopRadius, l), var(self.top_inner_radius, Slot::TopInnerRadius, l), var(self.length, Slot::Length, l)]
+    }
+}
 
 impl ShapeKind for Cone {
     const INFO: ShapeInfo = ShapeInfo {
@@ -114,7 +143,6 @@ impl ShapeKind for Cone {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
-        drawn: Drawn::Frustum,
         degenerate: "a zero `length` (a disk), both radii 0, or a density on a thin shell (each inner radius equal to its outer)",
         help: "a cone takes `mass` or `density`, `radius` (or `diameter`) at its base, `top_radius` (0 for a full cone) and `length` along its local z, with `center` at the middle of its axis (and optional `rotation`); `inner_radius` and `top_inner_radius` make it hollow",
     };
@@ -127,15 +155,160 @@ impl ShapeKind for Cone {
 
     const MIRROR_AXIS: Option<usize> = Some(0);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         measure(d)
     }
 
-    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3] {
         second_moments(m, d)
     }
 
-    fn axial_offset<T: Real>(d: &[T]) -> T {
+    fn offset_of<T: Real>(d: &[T]) -> T {
         offset(d)
+    }
+
+    /// Its centre read before its sizes, as the file's other shapes' after.
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let center = r.point("center")?;
+        let [radius, inner_radius, top_radius, top_inner_radius, length] = r.cone()?;
+        Ok(Cone {
+            center,
+            radius,
+            inner_radius,
+            top_radius,
+            top_inner_radius,
+            length,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+        Self::measure_of(&self.dims(l))
+    }
+
+    fn measure_error(&self) -> f64 {
+        Self::MEASURE_ROUNDINGS
+    }
+
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        let z = Self::offset_of(&self.dims(l));
+        offset_centroid([T::of(0.0), T::of(0.0), z], &self.center, &self.orientation, l)
+    }
+
+    /// The offset's error: 64 double-double units of the larger of the
+    /// radius and the length it is formed from.
+    fn centroid_error(&self, at: f64, centroid: &[f64; 3]) -> [f64; 3] {
+        let big = self.radius.abs().max(self.length.abs()).max(self.top_radius.abs());
+        offset_centroid_error(
+            [0.0, 0.0, 64.0 * big],
+            [0.0, 0.0, big],
+            &self.orientation,
+            at,
+            centroid,
+        )
+    }
+
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        l: L,
+    ) -> (M3<T>, Option<Own>) {
+        let d = Self::moments_of(m, &self.dims(l));
+        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
+    }
+
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
+        (
+            Self::moments_of(m, &[self.radius, self.inner_radius, self.top_radius, self.top_inner_radius, self.length]),
+            3,
+            Self::INFO.nonzero_moments,
+        )
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.center = m.point(self.center);
+        self.radius *= m.length();
+        self.inner_radius *= m.length();
+        self.top_radius *= m.length();
+        self.top_inner_radius *= m.length();
+        self.length *= m.length();
+        m.turn(&mut self.orientation);
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    fn scaled_rounding(&self) -> Option<f64> {
+        None
+    }
+
+    fn reach(&self) -> f64 {
+        norm1(&self.center)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.center])
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        let [x, y, z] = &mut self.center;
+        f(Slot::At(0), x);
+        f(Slot::At(1), y);
+        f(Slot::At(2), z);
+        f(Slot::Radius, &mut self.radius);
+        f(Slot::InnerRadius, &mut self.inner_radius);
+        f(Slot::TopRadius, &mut self.top_radius);
+        f(Slot::TopInnerRadius, &mut self.top_inner_radius);
+        f(Slot::Length, &mut self.length);
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.center = src.center;
+        self.radius = src.radius;
+        self.inner_radius = src.inner_radius;
+        self.top_radius = src.top_radius;
+        self.top_inner_radius = src.top_inner_radius;
+        self.length = src.length;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    fn mirror(&mut self) {
+        flip(mirror_axis::<Self>(), &mut self.orientation);
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    fn outline(&self) -> Outline {
+        let c = self.center;
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let ends = [
+            add(c, scaled(-self.length / 2.0, z)),
+            add(c, scaled(self.length / 2.0, z)),
+        ];
+        let mut p = vec![Piece::Side {
+            c: ends,
+            r: [self.radius, self.top_radius],
+            u: x,
+            v: y,
+        }];
+        for (at, r) in [
+            (ends[0], self.radius),
+            (ends[0], self.inner_radius),
+            (ends[1], self.top_radius),
+            (ends[1], self.top_inner_radius),
+        ] {
+            if r > 0.0 {
+                p.push(rim(at, r, &x, &y));
+            }
+        }
+        Outline::Pieces(p)
     }
 }

@@ -20,8 +20,17 @@
 //!   every coefficient positive, so no cancellation (19/320 solid, 1/12 a
 //!   thin shell).
 
-use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
-use crate::numeric::Real;
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    axes, density_power, diagonal, flip, mirror_axis, norm1, offset_centroid,
+    offset_centroid_error, rim, var,
+};
+use super::lift::Lift;
+use super::outline::{Outline, Piece};
+use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
 
 fn powers<T: Real>(d: &[T]) -> (T, T, T) {
     let rho = d[1] / d[0];
@@ -63,9 +72,24 @@ pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
     [across, across, axial]
 }
 
-/// The hemisphere, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Hemisphere;
+/// A hemisphere, solid or hollow, placed by its `center` and turned by its `orientation`,
+/// in its file's units; its centroid lies off its centre along local z.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Hemisphere {
+    pub center: [f64; 3],
+    /// `radius`.
+    pub radius: f64,
+    /// `inner_radius`.
+    pub inner_radius: f64,
+    pub orientation: Orientation,
+}
+
+impl Hemisphere {
+    /// Its dimensions as its closed forms take them, read through `l`.
+    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 2] {
+        [var(self.radius, Slot::Radius, l), var(self.inner_radius, Slot::InnerRadius, l)]
+    }
+}
 
 impl ShapeKind for Hemisphere {
     const INFO: ShapeInfo = ShapeInfo {
@@ -90,7 +114,6 @@ impl ShapeKind for Hemisphere {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
-        drawn: Drawn::Dome,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
         help: "a hemisphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`, the centre of its sphere (flat face in its local x–y plane, dome toward +z; optional `rotation`); an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     };
@@ -103,15 +126,136 @@ impl ShapeKind for Hemisphere {
 
     const MIRROR_AXIS: Option<usize> = Some(0);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         measure(d)
     }
 
-    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3] {
         second_moments(m, d)
     }
 
-    fn axial_offset<T: Real>(d: &[T]) -> T {
+    fn offset_of<T: Real>(d: &[T]) -> T {
         offset(d)
+    }
+
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let [radius, inner_radius] = r.radii()?;
+        Ok(Hemisphere {
+            center: r.point("center")?,
+            radius,
+            inner_radius,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+        Self::measure_of(&self.dims(l))
+    }
+
+    fn measure_error(&self) -> f64 {
+        Self::MEASURE_ROUNDINGS
+    }
+
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        let z = Self::offset_of(&self.dims(l));
+        offset_centroid([T::of(0.0), T::of(0.0), z], &self.center, &self.orientation, l)
+    }
+
+    /// The offset's error: 64 double-double units of the larger of the
+    /// radius and the length it is formed from.
+    fn centroid_error(&self, at: f64, centroid: &[f64; 3]) -> [f64; 3] {
+        let big = self.radius.abs().max(0.0).max(0.0);
+        offset_centroid_error(
+            [0.0, 0.0, 64.0 * big],
+            [0.0, 0.0, big],
+            &self.orientation,
+            at,
+            centroid,
+        )
+    }
+
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        l: L,
+    ) -> (M3<T>, Option<Own>) {
+        let d = Self::moments_of(m, &self.dims(l));
+        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
+    }
+
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
+        (
+            Self::moments_of(m, &[self.radius, self.inner_radius]),
+            3,
+            Self::INFO.nonzero_moments,
+        )
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.center = m.point(self.center);
+        self.radius *= m.length();
+        self.inner_radius *= m.length();
+        m.turn(&mut self.orientation);
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    fn scaled_rounding(&self) -> Option<f64> {
+        None
+    }
+
+    fn reach(&self) -> f64 {
+        norm1(&self.center)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.center])
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        let [x, y, z] = &mut self.center;
+        f(Slot::At(0), x);
+        f(Slot::At(1), y);
+        f(Slot::At(2), z);
+        f(Slot::Radius, &mut self.radius);
+        f(Slot::InnerRadius, &mut self.inner_radius);
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.center = src.center;
+        self.radius = src.radius;
+        self.inner_radius = src.inner_radius;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    fn mirror(&mut self) {
+        flip(mirror_axis::<Self>(), &mut self.orientation);
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    fn outline(&self) -> Outline {
+        let c = self.center;
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let _ = z;
+        Outline::Pieces(vec![
+            rim(c, self.radius, &x, &y),
+            Piece::Dome {
+                c,
+                r: self.radius,
+                u: x,
+                v: y,
+                z,
+            },
+        ])
     }
 }

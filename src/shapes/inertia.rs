@@ -2,14 +2,27 @@
 //! centre and inertia tensor about its centroid given. No closed form
 //! here: the composer turns its tensor (`part::Place::Given`).
 
-use super::{Dims, Drawn, MaterialRule, Shape, ShapeInfo, ShapeKind};
-use crate::numeric::Real;
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    at, density_power, exact_centroid_error, flip, given, mirror_axis, norm1,
+};
+use super::lift::Lift;
+use super::outline::{Marker, Outline};
+use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
 
-/// The inertia, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Inertia;
+/// A given inertia, in its file's units: its centroid `center`, its
+/// tensor (tensor convention, symmetric, local axes) and its turn.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Given {
+    pub center: [f64; 3],
+    pub inertia: Box<[[f64; 3]; 3]>,
+    pub orientation: Orientation,
+}
 
-impl ShapeKind for Inertia {
+impl ShapeKind for Given {
     const INFO: ShapeInfo = ShapeInfo {
         shape: Shape::Inertia,
         name: "inertia",
@@ -23,7 +36,6 @@ impl ShapeKind for Inertia {
         material: MaterialRule::None,
         real_size: None,
         nonzero_moments: 0,
-        drawn: Drawn::Given,
         degenerate: "a tensor that is not symmetric or not physically valid",
         help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
     };
@@ -36,21 +48,127 @@ impl ShapeKind for Inertia {
 
     const MIRROR_AXIS: Option<usize> = Some(0);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         let [] = d else {
             unreachable!("the model passes a given inertia no dimensions")
         };
         T::of(1.0)
     }
 
-    fn second_moments<T: Real>(_: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(_: T, d: &[T]) -> [T; 3] {
         let [] = d else {
             unreachable!("the model passes a given inertia no dimensions")
         };
         [T::of(0.0); 3]
     }
 
-    fn axial_offset<T: Real>(_: &[T]) -> T {
+    fn offset_of<T: Real>(_: &[T]) -> T {
         T::of(0.0)
+    }
+
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let inertia = Box::new(r.inertia()?);
+        Ok(Given {
+            center: r.point("center")?,
+            inertia,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, _: L) -> T {
+        T::of(1.0)
+    }
+
+    /// None: its mass is given.
+    fn measure_error(&self) -> f64 {
+        0.0
+    }
+
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        at(&self.center, l)
+    }
+
+    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
+        exact_centroid_error(at)
+    }
+
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        _: L,
+    ) -> (M3<T>, Option<Own>) {
+        given(&self.inertia, &self.orientation, m, units)
+    }
+
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    /// Its one moment checked is the trace.
+    fn independent_moments(&self, _: f64, j: &M3<f64>) -> ([f64; 3], usize, usize) {
+        (
+            [j[0][0] + j[1][1] + j[2][2], 0.0, 0.0],
+            1,
+            Self::INFO.nonzero_moments,
+        )
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.center = m.point(self.center);
+        *self.inertia = self
+            .inertia
+            .map(|r| r.map(|x| x * m.mass() * m.length() * m.length()));
+        m.turn(&mut self.orientation);
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    fn scaled_rounding(&self) -> Option<f64> {
+        None
+    }
+
+    fn reach(&self) -> f64 {
+        norm1(&self.center)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.center])
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        for (i, x) in self.center.iter_mut().enumerate() {
+            f(Slot::At(i as u8), x);
+        }
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.center = src.center;
+        *self.inertia = *src.inertia;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    /// Its turn completed as its mirror image, S R F, and its tensor
+    /// F I F: its products with the flipped axis negated, so that
+    /// (S R F)(F I F)(S R F)ᵀ = S R I Rᵀ S.
+    fn mirror(&mut self) {
+        let k = mirror_axis::<Self>();
+        flip(k, &mut self.orientation);
+        for j in 0..3 {
+            if j != k {
+                self.inertia[k][j] = -self.inertia[k][j];
+                self.inertia[j][k] = -self.inertia[j][k];
+            }
+        }
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    fn outline(&self) -> Outline {
+        Outline::Marker(Marker::Inertia, self.center)
     }
 }

@@ -170,42 +170,10 @@ pub struct ShapeInfo {
     /// How many of the three local second moments are non-zero (0 where
     /// the model checks the shape's own way: a triangle, a given tensor).
     pub nonzero_moments: usize,
-    /// How `render` draws it (`render::drawing::outline`).
-    pub drawn: Drawn,
     /// What makes it degenerate, for the docs and messages.
     pub degenerate: &'static str,
     /// The help shown with an error about its keys.
     pub help: &'static str,
-}
-
-/// How `render` draws a shape (`render::drawing::outline`) from its
-/// placed dimensions (`part::Place`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Drawn {
-    /// The convex hull of its corners (box, plate).
-    Corners,
-    /// Its segment along local z (rod).
-    Segment,
-    /// Its rims at ±L/2 and the lines tangent to both (cylinder, cone).
-    Frustum,
-    /// Its rims in the local x–y plane (disk).
-    Rims,
-    /// Its outline circle (sphere).
-    Ball,
-    /// Its rim and its dome's outline (hemisphere).
-    Dome,
-    /// Its tube's outline (torus).
-    Ring,
-    /// Its three edges (triangle).
-    Edges,
-    /// Its end polygons and the edges between them (prism).
-    Extruded,
-    /// Its silhouette edges in each view (mesh).
-    Silhouette,
-    /// A dot (point mass).
-    Point,
-    /// A square with its diagonals (a given inertia).
-    Given,
 }
 
 /// The solid that a thin plate or slender rod idealises.

@@ -12,48 +12,127 @@
 //! one, and `report::ideal` compares it with the solid box and cylinder
 //! they describe.
 
+mod common;
+pub mod error;
 mod info;
+mod lift;
+pub mod outline;
+mod place;
 #[cfg(test)]
 mod quadrature;
+pub mod read;
+
+use crate::diag::Diagnostic;
+pub use error::{Own, Units};
+pub use lift::{Dep, Fixed, Lift, Seed, Slot, lift3, xyz};
+pub use outline::Outline;
+pub use place::{Mover, Placed};
+pub use read::Reader;
 
 pub use info::{
-    DensityKind, Dims, Drawn, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid,
-    Spanned,
+    DensityKind, Dims, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid, Spanned,
 };
 
-use crate::numeric::Real;
+use crate::numeric::{DD, M3, Real};
 use nalgebra::Vector3;
 use serde::Serialize;
 
-/// Everything one shape's module says of it: its description (keys,
-/// density, dimensions, placements, drawing, help) and its closed forms,
-/// generic over the arithmetic, with the roundings its error model counts
-/// (`part::error`) and its mirror symmetry (`part::mirror`). Each shape is
-/// one module, `src/shapes/<shape>.rs`, and one line of `registry!`; the
-/// `Shape` enum and its methods are made from that list, so a shape the
-/// registry names and its module does not answer in full does not compile.
-pub trait ShapeKind {
+/// Everything one shape's module says of it: its description (`INFO`:
+/// keys, density, dimensions, placements, help), its closed forms generic
+/// over the arithmetic, with the roundings its error model counts, its
+/// mirror symmetry; and, implemented by the shape's placed form (its
+/// numbers in its file's units, named), all that reads or moves them: its
+/// physics generic over the arithmetic and over how its numbers are read
+/// (`Lift`), its error model, a frame's move, a mirror, a tolerance's
+/// slots, and its outline. Each shape is one module,
+/// `src/shapes/<shape>.rs`, and one line of `registry!`; the `Shape` and
+/// `Place` enums and their dispatch are made from that list, so a shape
+/// whose module does not answer in full does not compile.
+pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     const INFO: ShapeInfo;
     /// Roundings of the measure (volume, area or length) formed from its
     /// dimensions, beyond the density's product (`part::error::mass_error`).
     const MEASURE_ROUNDINGS: f64;
     /// Roundings of its local second moments beyond its mass's
-    /// (`part::error`), counted over the operations of `second_moments`,
+    /// (`shapes::error`), counted over the operations of `moments_of`,
     /// every sum of terms of one sign.
     const MOMENT_ROUNDINGS: f64;
     /// The local axis in whose plane through the local origin the shape,
     /// as its closed forms take it, is its own mirror image; `None`: in no
-    /// plane (its data reflected instead, `part::mirror`).
+    /// plane (its data reflected instead, `mirror`).
     const MIRROR_AXIS: Option<usize>;
-    /// Volume, area or length of a shape of dimensions `d`, the measure
-    /// that the density multiplies.
-    fn measure<T: Real>(d: &[T]) -> T;
+    /// Volume, area or length of a shape of dimensions `d` (in the order
+    /// of `INFO.dims`), the measure that the density multiplies.
+    fn measure_of<T: Real>(d: &[T]) -> T;
     /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
     /// `m` and dimensions `d`.
-    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3];
+    fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3];
     /// The offset of the centroid from the origin of the local frame,
     /// along local z.
-    fn axial_offset<T: Real>(d: &[T]) -> T;
+    fn offset_of<T: Real>(d: &[T]) -> T;
+
+    /// Its placed form from a part's numbers, in the order it asks for
+    /// them (`read::Reader`).
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic>;
+
+    /// Volume, area or length of the placed shape, the measure its
+    /// density multiplies, its numbers read through `l`.
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T;
+    /// Roundings of `measure` (`part::error::mass_error`).
+    fn measure_error(&self) -> f64;
+    /// Its centroid in the file's frame, in the arithmetic `T`, its
+    /// numbers read through `l`.
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3];
+    /// How far each component of its centroid, as `centroid` forms it in
+    /// double-double, may lie from the exact one, with the frames'
+    /// rounding of its position `at`.
+    fn centroid_error(&self, at: f64, centroid: &[f64; 3]) -> [f64; 3];
+    /// ∫ρρᵀ dm about its centroid, in the file's axes and units, for the
+    /// mass `m`; with its error model when `units` are given.
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        l: L,
+    ) -> (M3<T>, Option<Own>);
+    /// The shortest span between the points that place it (a rod's ends,
+    /// a triangle's vertices), over which the frames' rounding of them
+    /// counts (`error::placed_units`); infinite for a shape placed by one
+    /// point.
+    fn shortest_span(&self) -> f64;
+    /// The second moments (mass `m`, own second moment `j`) that must each
+    /// be a normal f64 in the file's units, how many, and how many must be
+    /// non-zero.
+    fn independent_moments(&self, m: f64, j: &M3<f64>) -> ([f64; 3], usize, usize);
+    /// Its numbers moved by `m`, in place: points moved, edges and sizes
+    /// scaled (and edges turned), turns turned.
+    fn moved(&mut self, m: &impl Mover);
+    /// The power of length its density is per: how it scales when a
+    /// sub-assembly's units are converted.
+    fn density_power(&self) -> i32;
+    /// The units of its sizes by which scaling it in its own frame changes
+    /// its shape (a prism's polygon); `None` if nothing is so scaled.
+    fn scaled_rounding(&self) -> Option<f64>;
+    /// The largest |p|₁ of the points that place it, before a frame moves
+    /// them.
+    fn reach(&self) -> f64;
+    /// The points that place it, and its edges (`common::points`).
+    fn positions(&self) -> ([[f64; 3]; 4], usize);
+    /// Each of its numbers a tolerance can move (all but the mass), with
+    /// its slot.
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64));
+    /// Made `src` again in place, field by field (a walk places each copy
+    /// of a part afresh: no temporary, no clone of a turn or a shared
+    /// mesh that is the same).
+    fn reset_from(&mut self, src: &Self);
+    /// Completed as its mirror image, once a reflection has moved its
+    /// points and turned its turn (S R becomes S R F).
+    fn mirror(&mut self);
+    /// The direction of its real size: a plate's normal, a rod's axis, of
+    /// any length (`analysis::ideal`); `None` for a shape with none.
+    fn real_size_direction(&self) -> Option<[DD; 3]>;
+    /// Its outline in 3-D in the file's frame (`outline`).
+    fn outline(&self) -> Outline;
 }
 
 /// The product of the dimensions (a box's volume, a plate's area, a rod's
@@ -77,10 +156,31 @@ fn across_ring<T: Real>(m: T, r_out: T, r_in: T) -> T {
     m * (r_out * r_out + r_in * r_in) / T::of(4.0)
 }
 
+/// R C Rᵀ, symmetric by construction (the upper triangle formed, the
+/// lower its mirror): a full local tensor C in the file's axes (a given
+/// inertia, a prism's).
+pub(crate) fn turned<T: Real>(r: &M3<T>, local: &M3<T>) -> M3<T> {
+    let mut j = [[T::of(0.0); 3]; 3];
+    for a in 0..3 {
+        for b in a..3 {
+            let mut v = T::of(0.0);
+            for k in 0..3 {
+                for l in 0..3 {
+                    v = v + r[a][k] * local[k][l] * r[b][l];
+                }
+            }
+            j[a][b] = v;
+            j[b][a] = v;
+        }
+    }
+    j
+}
+
 /// The one list of shapes: `Variant => module::Kind`, in the order the
 /// docs and messages list them. Makes the `Shape` enum, `Shape::ALL`,
-/// `SHAPES` (each module's `INFO`) and `Shape`'s dispatch to each
-/// module's `ShapeKind`.
+/// `SHAPES` (each module's `INFO`), the `Place` enum (each shape's placed
+/// form, `module::Kind`) and the dispatch of both to each module's
+/// `ShapeKind`.
 macro_rules! registry {
     ($($(#[$doc:meta])* $variant:ident => $module:ident :: $kind:ident,)+) => {
         $(pub mod $module;)+
@@ -91,41 +191,38 @@ macro_rules! registry {
             $($(#[$doc])* $variant,)+
         }
 
+        /// A placed shape: its numbers in its file's units, as its module
+        /// names them.
+        #[derive(Clone, Debug, PartialEq)]
+        pub enum Place {
+            $($variant($module::$kind),)+
+        }
+
         impl Shape {
             pub const ALL: [Shape; [$(Shape::$variant),+].len()] = [$(Shape::$variant),+];
 
-            /// Volume, area or length of a shape of dimensions `d` (see
-            /// `second_moments`), the measure that the density multiplies.
+            /// Volume, area or length of a shape of dimensions `d` (in the
+            /// order of its `INFO.dims`), the measure that the density
+            /// multiplies.
             pub fn measure_of<T: Real>(self, d: &[T]) -> T {
                 match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::measure(d),)+
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::measure_of(d),)+
                 }
             }
 
             /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of
-            /// mass `m` and dimensions `d` (each shape's module says which,
-            /// in `Dims::keys` order, a triangle's its area, a prism's its
-            /// area and length). Each about the shape's centroid
-            /// (`axial_offset`: off the origin of the local frame).
+            /// mass `m` and dimensions `d`.
             pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
                 match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::second_moments(m, d),)+
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::moments_of(m, d),)+
                 }
             }
 
             /// The offset of the centroid from the origin of the local
-            /// frame, along local z, of a shape of dimensions `d` (a
-            /// prism's is in its polygon).
+            /// frame, along local z, of a shape of dimensions `d`.
             pub fn axial_offset<T: Real>(self, d: &[T]) -> T {
                 match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::axial_offset(d),)+
-                }
-            }
-
-            /// `ShapeKind::MEASURE_ROUNDINGS`.
-            pub fn measure_roundings(self) -> f64 {
-                match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::MEASURE_ROUNDINGS,)+
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::offset_of(d),)+
                 }
             }
 
@@ -147,6 +244,151 @@ macro_rules! registry {
         /// Each shape's description, in the order of `Shape`'s variants.
         pub const SHAPES: [ShapeInfo; Shape::ALL.len()] =
             [$(<$module::$kind as ShapeKind>::INFO,)+];
+
+        impl Place {
+            /// A part of `shape`'s placed form, read by its module.
+            pub fn read(shape: Shape, r: &impl Reader) -> Result<Place, Diagnostic> {
+                Ok(match shape {
+                    $(Shape::$variant => Place::$variant(<$module::$kind as ShapeKind>::read(r)?),)+
+                })
+            }
+
+            /// Its shape.
+            pub fn shape(&self) -> Shape {
+                match self {
+                    $(Place::$variant(_) => Shape::$variant,)+
+                }
+            }
+
+            /// `ShapeKind::measure`.
+            pub fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+                match self {
+                    $(Place::$variant(s) => s.measure(l),)+
+                }
+            }
+
+            /// `ShapeKind::measure_error`.
+            pub fn measure_error(&self) -> f64 {
+                match self {
+                    $(Place::$variant(s) => s.measure_error(),)+
+                }
+            }
+
+            /// `ShapeKind::centroid`.
+            pub fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+                match self {
+                    $(Place::$variant(s) => s.centroid(l),)+
+                }
+            }
+
+            /// `ShapeKind::centroid_error`.
+            pub fn centroid_error(&self, at: f64, centroid: &[f64; 3]) -> [f64; 3] {
+                match self {
+                    $(Place::$variant(s) => s.centroid_error(at, centroid),)+
+                }
+            }
+
+            /// `ShapeKind::own_second_moment`.
+            pub fn own_second_moment<T: Real, L: Lift>(
+                &self,
+                m: T,
+                units: Option<Units>,
+                l: L,
+            ) -> (M3<T>, Option<Own>) {
+                match self {
+                    $(Place::$variant(s) => s.own_second_moment(m, units, l),)+
+                }
+            }
+
+            /// `ShapeKind::shortest_span`.
+            pub fn shortest_span(&self) -> f64 {
+                match self {
+                    $(Place::$variant(s) => s.shortest_span(),)+
+                }
+            }
+
+            /// `ShapeKind::independent_moments`.
+            pub fn independent_moments(&self, m: f64, j: &M3<f64>) -> ([f64; 3], usize, usize) {
+                match self {
+                    $(Place::$variant(s) => s.independent_moments(m, j),)+
+                }
+            }
+
+            /// `ShapeKind::moved`.
+            pub fn moved(&mut self, m: &impl Mover) {
+                match self {
+                    $(Place::$variant(s) => s.moved(m),)+
+                }
+            }
+
+            /// `ShapeKind::density_power`.
+            pub fn density_power(&self) -> i32 {
+                match self {
+                    $(Place::$variant(s) => s.density_power(),)+
+                }
+            }
+
+            /// `ShapeKind::scaled_rounding`.
+            pub fn scaled_rounding(&self) -> Option<f64> {
+                match self {
+                    $(Place::$variant(s) => s.scaled_rounding(),)+
+                }
+            }
+
+            /// `ShapeKind::reach`.
+            pub fn reach(&self) -> f64 {
+                match self {
+                    $(Place::$variant(s) => s.reach(),)+
+                }
+            }
+
+            /// Every coordinate of the points that place it, and its
+            /// edges' (`ShapeKind::positions`; held in place: asked of
+            /// every copy).
+            pub fn positions(&self) -> impl Iterator<Item = f64> {
+                let (points, n) = match self {
+                    $(Place::$variant(s) => s.positions(),)+
+                };
+                points.into_iter().take(n).flatten()
+            }
+
+            /// `ShapeKind::numbers`.
+            pub fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+                match self {
+                    $(Place::$variant(s) => s.numbers(f),)+
+                }
+            }
+
+            /// `ShapeKind::reset_from` where both are one shape's; another
+            /// shape's made whole.
+            pub fn reset_from(&mut self, src: &Place) {
+                match (self, src) {
+                    $((Place::$variant(d), Place::$variant(s)) => d.reset_from(s),)+
+                    (d, s) => *d = s.clone(),
+                }
+            }
+
+            /// `ShapeKind::mirror`.
+            pub fn mirror(&mut self) {
+                match self {
+                    $(Place::$variant(s) => s.mirror(),)+
+                }
+            }
+
+            /// `ShapeKind::real_size_direction`.
+            pub fn real_size_direction(&self) -> Option<[DD; 3]> {
+                match self {
+                    $(Place::$variant(s) => s.real_size_direction(),)+
+                }
+            }
+
+            /// `ShapeKind::outline`.
+            pub fn outline(&self) -> Outline {
+                match self {
+                    $(Place::$variant(s) => s.outline(),)+
+                }
+            }
+        }
     };
 }
 
@@ -162,7 +404,7 @@ registry! {
     Point => point::Point,
     /// A bought or previously computed component: mass, centre and inertia
     /// tensor given (no closed form here; see `part::Place::Given`).
-    Inertia => inertia::Inertia,
+    Inertia => inertia::Given,
     /// A cone or frustum, solid or hollow.
     Cone => cone::Cone,
     /// A torus, solid or hollow.

@@ -22,7 +22,21 @@
 //! magnitudes. The extrusion adds m L²/12 along z and nothing else: the
 //! local tensor has an x–y product and is block-diagonal.
 
-use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    add, axes, comb, density_power, flip, mirror_axis, norm1, offset_centroid,
+    offset_centroid_error, var,
+};
+use super::error;
+use super::lift::Lift;
+use super::outline::{Outline, Piece, V3};
+use super::{
+    Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units, turned,
+};
+use crate::numeric::M3;
+use crate::rotation::Orientation;
+use std::sync::Arc;
 use crate::numeric::{DD, Real};
 
 /// A polygon's area and moments, per unit area about its centroid.
@@ -36,7 +50,7 @@ pub struct Polygon {
     pub second: [DD; 3],
     /// For the error model: Σ|cᵢ|/|2A| (1 for a convex polygon), and the
     /// magnitudes the three entries of `second` and the centroid's two
-    /// components are formed from (`part::error`).
+    /// components are formed from (`shapes::error`).
     pub spread: Spread,
 }
 
@@ -120,9 +134,30 @@ pub fn mirrored(p: &[[f64; 2]]) -> Vec<[f64; 2]> {
     p.iter().rev().map(|v| [v[0], -v[1]]).collect()
 }
 
-/// The prism, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Prism;
+
+/// A prism, in its file's units: where its local origin goes, its
+/// polygon in the local x–y plane (either orientation), its length along
+/// local z (from −length/2 to +length/2) and the turn of its local axes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Prism {
+    pub origin: [f64; 3],
+    pub polygon: Arc<[[f64; 2]]>,
+    pub length: f64,
+    pub orientation: Orientation,
+}
+
+/// The units of the arithmetic `T` by which a prism's local figures
+/// (`Polygon`, double-double) may be off, relative to the magnitudes `ell`
+/// of the diagonal: 32 double-double units of the magnitudes each entry is
+/// formed from.
+fn polygon_units<T: Real>(poly: &Polygon, ell: &[f64; 3]) -> f64 {
+    let s = poly.spread.second;
+    let ratio = |x: f64, y: f64| if y > 0.0 { x / y } else { 0.0 };
+    let worst = ratio(s[0], ell[0])
+        .max(ratio(s[1], ell[1]))
+        .max(ratio(s[2], (ell[0] * ell[1]).sqrt()));
+    32.0 * error::U_DD / error::unit_of::<T>() * worst
+}
 
 impl ShapeKind for Prism {
     const INFO: ShapeInfo = ShapeInfo {
@@ -138,41 +173,295 @@ impl ShapeKind for Prism {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 0,
-        drawn: Drawn::Extruded,
         degenerate: "fewer than 3 vertices, a repeated vertex, crossing edges or no area",
         help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
     };
 
-    /// (its area is its polygon's: `part::error`).
+    /// (its area is its polygon's: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 2.0;
 
-    /// (its second moment is its polygon's: `part::offset`).
+    /// (its second moment is its polygon’s: `shapes::offset`).
     const MOMENT_ROUNDINGS: f64 = 4.0;
 
     const MIRROR_AXIS: Option<usize> = Some(2);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         let [area, length] = d else {
             unreachable!("the model passes a prism its area and length")
         };
         *area * *length
     }
 
-    fn second_moments<T: Real>(_: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(_: T, d: &[T]) -> [T; 3] {
         let [_, _] = d else {
             unreachable!("the model passes a prism its area and length")
         };
         [T::of(0.0); 3]
     }
 
-    fn axial_offset<T: Real>(_: &[T]) -> T {
+    fn offset_of<T: Real>(_: &[T]) -> T {
         T::of(0.0)
+    }
+
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let origin = r.origin()?;
+        let polygon = r.polygon()?.into();
+        let length = r.length("length")?;
+        Ok(Prism {
+            origin,
+            polygon,
+            length,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+        let area = polygon(&self.polygon).area;
+        T::of_dd(area) * var(self.length, Slot::Length, l)
+    }
+
+    /// The polygon's area in double-double (32 of its units of the
+    /// magnitudes Σ|cᵢ|/2 it is summed from, counted here as units of
+    /// either arithmetic: 32 f64 units are far more than it needs), rounded
+    /// once, times the length.
+    fn measure_error(&self) -> f64 {
+        3.0 + 32.0 * polygon(&self.polygon).spread.area
+    }
+
+    /// At its polygon's centroid, off its origin.
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        let g = polygon(&self.polygon).centroid;
+        let local = [T::of_dd(g[0]), T::of_dd(g[1]), T::of(0.0)];
+        offset_centroid(local, &self.origin, &self.orientation, l)
+    }
+
+    /// The polygon's centroid's own error (`Spread`) and its turn.
+    fn centroid_error(&self, at: f64, centroid: &[f64; 3]) -> [f64; 3] {
+        let poly = polygon(&self.polygon);
+        let g = poly.centroid.map(|x| x.f64().abs());
+        let s = poly.spread.centroid;
+        offset_centroid_error(
+            [32.0 * s[0] + 4.0 * g[0], 32.0 * s[1] + 4.0 * g[1], 0.0],
+            [g[0], g[1], 0.0],
+            &self.orientation,
+            at,
+            centroid,
+        )
+    }
+
+    /// In local axes the polygon's per-area second moments times m in x–y
+    /// (with the product), m L²/12 along z; then R C Rᵀ.
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        lift: L,
+    ) -> (M3<T>, Option<Own>) {
+        let poly = polygon(&self.polygon);
+        let zero = T::of(0.0);
+        let [xx, yy, xy] = poly.second.map(|x| m * T::of_dd(x));
+        let l = var(self.length, Slot::Length, lift);
+        let local: M3<T> = [
+            [xx, xy, zero],
+            [xy, yy, zero],
+            [zero, zero, m * l * l / T::of(12.0)],
+        ];
+        let orientation = &self.orientation;
+        let r: M3<T> = orientation.matrix();
+        let j = turned(&r, &local);
+        let own = units.map(|u| {
+            let mu = u.errors().1;
+            let r = r.map(|row| row.map(T::f64));
+            let rho = error::turn_error(orientation, &r);
+            let ell: [f64; 3] = std::array::from_fn(|k| local[k][k].f64().abs());
+            let per_area = [
+                poly.second[0].f64().abs(),
+                poly.second[1].f64().abs(),
+                (self.length * self.length / 12.0).abs(),
+            ];
+            // The polygon's units relative to its per-area moments (m
+            // scales both alike); each local entry then rounds once to T
+            // and takes a product with m (3), the axial one m L²/12 (4).
+            let kappa = mu + error::GIVEN + 4.0 + polygon_units::<T>(&poly, &per_area);
+            let v: [f64; 3] =
+                std::array::from_fn(|a| (0..3).map(|k| r[a][k].abs() * ell[k].sqrt()).sum());
+            let total = ell.iter().sum::<f64>() + 2.0 * local[0][1].f64().abs();
+            Own::turned(mu, kappa, v.map(|x| x * x), rho, total)
+        });
+        (j, own)
+    }
+
+    /// Its vertices are scaled in its own frame, not placed: their
+    /// rounding is in its sizes' units (`scaled_rounding`).
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    /// Its one moment checked is the trace.
+    fn independent_moments(&self, _: f64, j: &M3<f64>) -> ([f64; 3], usize, usize) {
+        ([j[0][0] + j[1][1] + j[2][2], 0.0, 0.0], 1, 1)
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.origin = m.point(self.origin);
+        if m.length() != 1.0 {
+            self.polygon = self
+                .polygon
+                .iter()
+                .map(|v| v.map(|x| x * m.length()))
+                .collect();
+        }
+        self.length *= m.length();
+        m.turn(&mut self.orientation);
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    /// Scaling its polygon in its own frame rounds each vertex by a unit
+    /// of its distance from the origin: 2 max|p|/shortest edge units of
+    /// its sizes (its centroid moves too, in `reach`).
+    fn scaled_rounding(&self) -> Option<f64> {
+        let polygon = &self.polygon;
+        let n = polygon.len();
+        let far = polygon
+            .iter()
+            .map(|v| v[0].abs().max(v[1].abs()))
+            .fold(0.0, f64::max);
+        let short = (0..n)
+            .map(|i| {
+                let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+                (a[0] - b[0]).hypot(a[1] - b[1])
+            })
+            .fold(f64::INFINITY, f64::min);
+        Some(2.0 * far / short)
+    }
+
+    /// Its origin's, and its vertices' rounding as they are scaled moves
+    /// its centroid by a unit of their distance from its origin.
+    fn reach(&self) -> f64 {
+        norm1(&self.origin)
+            + self
+                .polygon
+                .iter()
+                .map(|v| v[0].abs() + v[1].abs())
+                .fold(0.0, f64::max)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.origin])
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        for (i, x) in self.origin.iter_mut().enumerate() {
+            f(Slot::At(i as u8), x);
+        }
+        f(Slot::Length, &mut self.length);
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.origin = src.origin;
+        if !Arc::ptr_eq(&self.polygon, &src.polygon) {
+            self.polygon = src.polygon.clone();
+        }
+        self.length = src.length;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    /// Its own image in local z (extruded from −length/2 to +length/2):
+    /// its turn completed, its polygon unchanged.
+    fn mirror(&mut self) {
+        flip(mirror_axis::<Self>(), &mut self.orientation);
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    /// Both ends' polygons and the edges between them.
+    fn outline(&self) -> Outline {
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let at = |p: &[f64; 2], h: f64| add(self.origin, comb(&[(p[0], x), (p[1], y), (h, z)]));
+        let ends: [Vec<V3>; 2] =
+            [-0.5, 0.5].map(|h| self.polygon.iter().map(|p| at(p, h * self.length)).collect());
+        let mut pieces: Vec<Piece> = ends
+            .iter()
+            .map(|e| Piece::Line {
+                points: e.clone(),
+                closed: true,
+            })
+            .collect();
+        pieces.extend(ends[0].iter().zip(&ends[1]).map(|(a, b)| Piece::Line {
+            points: vec![*a, *b],
+            closed: false,
+        }));
+        Outline::Pieces(pieces)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A prism's mirror image in its own local x–z plane (local y → −y):
+    /// the same origin, length and turn, its polygon with y negated and
+    /// its vertices reversed (`mirrored`).
+    fn mirrored_in_local_xz(p: &Prism) -> Prism {
+        Prism {
+            polygon: mirrored(&p.polygon).into(),
+            ..p.clone()
+        }
+    }
+
+    /// The mirror image of an unturned prism: the same mass, its centroid
+    /// and its x–y product with y negated, the rest unchanged.
+    #[test]
+    fn a_mirrored_prism_negates_its_y_figures() {
+        use crate::part::{MassSpec, Place, Spec};
+        use crate::rotation::Orientation;
+        let prism = Prism {
+            origin: [1.0, 2.0, 3.0],
+            polygon: vec![
+                [0.0, 0.0],
+                [2.0, 0.0],
+                [2.0, 1.0],
+                [1.0, 1.0],
+                [1.0, 3.0],
+                [0.0, 3.0],
+            ]
+            .into(),
+            length: 0.5,
+            orientation: Orientation::Identity,
+        };
+        let mirror = mirrored_in_local_xz(&prism);
+        let spec = |p: Prism| Spec {
+            mass: MassSpec::Density(7.0),
+            place: Place::Prism(p),
+            removed: false,
+            placed: Default::default(),
+        };
+        let (a, b) = (spec(prism), spec(mirror));
+        let (ma, mb): (f64, f64) = (
+            crate::part::mass_of(&a),
+            crate::part::mass_of(&b),
+        );
+        assert_eq!(ma, mb);
+        let (ca, cb) = (
+            crate::part::centroid(&a.place),
+            crate::part::centroid(&b.place),
+        );
+        assert_eq!(ca[0].f64(), cb[0].f64());
+        assert_eq!(ca[1].f64() - 2.0, -(cb[1].f64() - 2.0));
+        let (ja, jb): (M3<f64>, M3<f64>) = (
+            crate::part::own_second_moment(&a, ma),
+            crate::part::own_second_moment(&b, mb),
+        );
+        for (k, l) in [(0, 0), (1, 1), (2, 2)] {
+            assert!((ja[k][l] - jb[k][l]).abs() <= 1e-15 * ja[k][l]);
+        }
+        assert!(ja[0][1] != 0.0 && (ja[0][1] + jb[0][1]).abs() <= 1e-15 * ja[0][0]);
+    }
 
     /// The rectangle [x0, x0 + a] × [y0, y0 + b]: its figures by hand.
     #[test]

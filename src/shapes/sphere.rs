@@ -6,12 +6,36 @@
 //! cancellation for thin walls, no overflow in R⁵, and m R²/3 for a thin
 //! shell. The volume's R³ − r³ is formed as (R − r)(R² + Rr + r²).
 
-use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
-use crate::numeric::Real;
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    at, axes, density_power, diagonal, exact_centroid_error, flip, mirror_axis, norm1, var,
+};
+use super::outline::{Outline, Piece};
+use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
+use super::lift::Lift;
+use super::PER_VOLUME;
 
-/// The sphere, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Sphere;
+/// A sphere, hollow or a thin shell, placed by its `center` and turned by its `orientation`,
+/// in its file's units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sphere {
+    pub center: [f64; 3],
+    /// `radius`.
+    pub radius: f64,
+    /// `inner_radius`.
+    pub inner_radius: f64,
+    pub orientation: Orientation,
+}
+
+impl Sphere {
+    /// Its dimensions as its closed forms take them, read through `l`.
+    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 2] {
+        [var(self.radius, Slot::Radius, l), var(self.inner_radius, Slot::InnerRadius, l)]
+    }
+}
 
 impl ShapeKind for Sphere {
     const INFO: ShapeInfo = ShapeInfo {
@@ -36,7 +60,6 @@ impl ShapeKind for Sphere {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
-        drawn: Drawn::Ball,
         degenerate: "a density on a thin shell (`inner_radius` = `radius`)",
         help: "a sphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     };
@@ -49,7 +72,7 @@ impl ShapeKind for Sphere {
 
     const MIRROR_AXIS: Option<usize> = Some(0);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         let [r_out, r_in] = d else {
             unreachable!("the model passes a sphere two dimensions")
         };
@@ -60,7 +83,7 @@ impl ShapeKind for Sphere {
             * (r_out * r_out + r_out * r_in + r_in * r_in)
     }
 
-    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3] {
         let [r_out, r_in] = d else {
             unreachable!("the model passes a sphere two dimensions")
         };
@@ -72,7 +95,113 @@ impl ShapeKind for Sphere {
         [q, q, q]
     }
 
-    fn axial_offset<T: Real>(_: &[T]) -> T {
+    fn offset_of<T: Real>(_: &[T]) -> T {
         T::of(0.0)
+    }
+
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let [radius, inner_radius] = r.radii()?;
+        Ok(Sphere {
+            center: r.point("center")?,
+            radius,
+            inner_radius,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+        Self::measure_of(&self.dims(l))
+    }
+
+    fn measure_error(&self) -> f64 {
+        Self::MEASURE_ROUNDINGS
+    }
+
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        l: L,
+    ) -> (M3<T>, Option<Own>) {
+        let d = Self::moments_of(m, &self.dims(l));
+        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
+    }
+
+    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
+        (
+            Self::moments_of(m, &[self.radius, self.inner_radius]),
+            3,
+            Self::INFO.nonzero_moments,
+        )
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.center = m.point(self.center);
+        self.radius *= m.length();
+        self.inner_radius *= m.length();
+        m.turn(&mut self.orientation);
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        let [x, y, z] = &mut self.center;
+        f(Slot::At(0), x);
+        f(Slot::At(1), y);
+        f(Slot::At(2), z);
+        f(Slot::Radius, &mut self.radius);
+        f(Slot::InnerRadius, &mut self.inner_radius);
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    fn outline(&self) -> Outline {
+        let c = self.center;
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let _ = (&x, &y, &z);
+        let r = self.radius;
+        Outline::Pieces(vec![Piece::Ellipsoid {
+            c,
+            m: [[r, 0.0, 0.0], [0.0, r, 0.0], [0.0, 0.0, r]],
+        }])
+    }
+
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        at(&self.center, l)
+    }
+
+    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
+        exact_centroid_error(at)
+    }
+
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    fn scaled_rounding(&self) -> Option<f64> {
+        None
+    }
+
+    fn reach(&self) -> f64 {
+        norm1(&self.center)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.center])
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.center = src.center;
+        self.radius = src.radius;
+        self.inner_radius = src.inner_radius;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    fn mirror(&mut self) {
+        flip(mirror_axis::<Self>(), &mut self.orientation);
     }
 }

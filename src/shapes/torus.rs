@@ -15,8 +15,18 @@
 //! Sums of positive terms only: no cancellation for a thin tube wall or a
 //! thin tube; at b = a, a thin toroidal shell.
 
-use super::{Dims, Drawn, MaterialRule, PER_VOLUME, Shape, ShapeInfo, ShapeKind};
-use crate::numeric::Real;
+use super::read::Reader;
+use crate::diag::Diagnostic;
+use super::common::{reset_turn, points, 
+    at, axes, density_power, diagonal, exact_centroid_error, flip, mirror_axis, norm1, var,
+};
+use super::outline::{Outline, Piece};
+use super::{ MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::Dims;
+use crate::numeric::{DD, M3, Real};
+use crate::rotation::Orientation;
+use super::lift::Lift;
+use super::PER_VOLUME;
 
 /// The volume 2π²R (a − b)(a + b).
 pub fn measure<T: Real>(d: &[T]) -> T {
@@ -32,9 +42,27 @@ pub fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
     [across, across, m * tube / T::of(4.0)]
 }
 
-/// The torus, in the registry (`shapes::registry!`).
-#[derive(Clone, Copy, Debug)]
-pub struct Torus;
+
+/// A torus, its tube solid or hollow, placed by its `center` and turned by its `orientation`,
+/// in its file's units.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Torus {
+    pub center: [f64; 3],
+    /// `radius`.
+    pub radius: f64,
+    /// `tube_radius`.
+    pub tube_radius: f64,
+    /// `inner_tube_radius`.
+    pub inner_tube_radius: f64,
+    pub orientation: Orientation,
+}
+
+impl Torus {
+    /// Its dimensions as its closed forms take them, read through `l`.
+    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        [var(self.radius, Slot::Radius, l), var(self.tube_radius, Slot::TubeRadius, l), var(self.inner_tube_radius, Slot::InnerTubeRadius, l)]
+    }
+}
 
 impl ShapeKind for Torus {
     const INFO: ShapeInfo = ShapeInfo {
@@ -58,7 +86,6 @@ impl ShapeKind for Torus {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 3,
-        drawn: Drawn::Ring,
         degenerate: "a `tube_radius` above `radius` (self-intersecting), or a density on a thin shell (`inner_tube_radius` = `tube_radius`)",
         help: "a torus takes `mass` or `density`, `radius` (its axis to the tube's centre) and `tube_radius` (at most `radius`), with `center` (and optional `rotation`; its axis is local z); an `inner_tube_radius` makes the tube hollow",
     };
@@ -71,15 +98,127 @@ impl ShapeKind for Torus {
 
     const MIRROR_AXIS: Option<usize> = Some(0);
 
-    fn measure<T: Real>(d: &[T]) -> T {
+    fn measure_of<T: Real>(d: &[T]) -> T {
         measure(d)
     }
 
-    fn second_moments<T: Real>(m: T, d: &[T]) -> [T; 3] {
+    fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3] {
         second_moments(m, d)
     }
 
-    fn axial_offset<T: Real>(_: &[T]) -> T {
+    fn offset_of<T: Real>(_: &[T]) -> T {
         T::of(0.0)
+    }
+
+    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        let [radius, tube_radius, inner_tube_radius] = r.torus()?;
+        Ok(Torus {
+            center: r.point("center")?,
+            radius,
+            tube_radius,
+            inner_tube_radius,
+            orientation: r.orientation(),
+        })
+    }
+
+    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
+        Self::measure_of(&self.dims(l))
+    }
+
+    fn measure_error(&self) -> f64 {
+        Self::MEASURE_ROUNDINGS
+    }
+
+    fn own_second_moment<T: Real, L: Lift>(
+        &self,
+        m: T,
+        units: Option<Units>,
+        l: L,
+    ) -> (M3<T>, Option<Own>) {
+        let d = Self::moments_of(m, &self.dims(l));
+        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
+    }
+
+    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
+        (
+            Self::moments_of(m, &[self.radius, self.tube_radius, self.inner_tube_radius]),
+            3,
+            Self::INFO.nonzero_moments,
+        )
+    }
+
+    fn moved(&mut self, m: &impl Mover) {
+        self.center = m.point(self.center);
+        self.radius *= m.length();
+        self.tube_radius *= m.length();
+        self.inner_tube_radius *= m.length();
+        m.turn(&mut self.orientation);
+    }
+
+    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
+        let [x, y, z] = &mut self.center;
+        f(Slot::At(0), x);
+        f(Slot::At(1), y);
+        f(Slot::At(2), z);
+        f(Slot::Radius, &mut self.radius);
+        f(Slot::TubeRadius, &mut self.tube_radius);
+        f(Slot::InnerTubeRadius, &mut self.inner_tube_radius);
+    }
+
+    fn real_size_direction(&self) -> Option<[DD; 3]> {
+        None
+    }
+
+    fn outline(&self) -> Outline {
+        let c = self.center;
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let _ = (&x, &y, &z);
+        Outline::Pieces(vec![Piece::Torus {
+            c,
+            r: self.radius,
+            a: self.tube_radius,
+            u: x,
+            v: y,
+        }])
+    }
+
+    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        at(&self.center, l)
+    }
+
+    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
+        exact_centroid_error(at)
+    }
+
+    fn shortest_span(&self) -> f64 {
+        f64::INFINITY
+    }
+
+    fn density_power(&self) -> i32 {
+        density_power::<Self>()
+    }
+
+    fn scaled_rounding(&self) -> Option<f64> {
+        None
+    }
+
+    fn reach(&self) -> f64 {
+        norm1(&self.center)
+    }
+
+    fn positions(&self) -> ([[f64; 3]; 4], usize) {
+        points(&[self.center])
+    }
+
+    fn reset_from(&mut self, src: &Self) {
+        self.center = src.center;
+        self.radius = src.radius;
+        self.tube_radius = src.tube_radius;
+        self.inner_tube_radius = src.inner_tube_radius;
+        reset_turn(&mut self.orientation, &src.orientation);
+    }
+
+    fn mirror(&mut self) {
+        flip(mirror_axis::<Self>(), &mut self.orientation);
     }
 }

@@ -129,8 +129,7 @@ fn differentiate(
         if !meets.deps.iter().any(moves) {
             continue;
         }
-        let (dm, dc, dj) =
-            physics_in::<Dual<f64>, Seed>(leaf.own.shape, &leaf.own.spec, Seed(dep.slot));
+        let (dm, dc, dj) = physics_in::<Dual<f64>, Seed>(&leaf.own.spec, Seed(dep.slot));
         let dm = linear.mass * dm.d;
         let dc = linear.dir(dc.map(|x| x.d));
         let dj = linear.second(&dj.map(|r| r.map(|x| x.d)));

@@ -85,7 +85,7 @@ fn chunk(
         }
         let at = At::of(body, &leaf);
         let l = leaf.placing.linear();
-        let (_, own_c, _) = physics_in::<f64, Fixed>(leaf.own.shape, &leaf.own.spec, Fixed);
+        let (_, own_c, _) = physics_in::<f64, Fixed>(&leaf.own.spec, Fixed);
         let mapped = l.dir(own_c);
         // Where its own centroid's image lies less the map of it: c' =
         // `l.dir(c)` + `shift` − c₀, about each body's centre.
@@ -104,7 +104,7 @@ fn chunk(
                     continue 'sample;
                 }
             }
-            let (m, c, jm) = physics_in::<f64, Fixed>(leaf.own.shape, &spec, Fixed);
+            let (m, c, jm) = physics_in::<f64, Fixed>(&spec, Fixed);
             let sign = if spec.removed { -1.0 } else { 1.0 };
             if !(m * sign > 0.0) || (0..3).any(|a| jm[a][a] * sign < 0.0) {
                 alive[j] = false;
