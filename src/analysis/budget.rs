@@ -14,10 +14,11 @@ use super::summary::{self, FORMAT_VERSION, MASSPROP_VERSION, Summary};
 use super::{Loaded, Products, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::budget::{Maturity, Tag};
-use crate::model::expect::{Bound, Target};
+use crate::model::expect::Bound;
 use crate::model::{Analysis, Event, Item, Model};
 use crate::numeric::{DD, Real, Sum};
 use crate::part::{MassSpec, Part, Place, Placed, SiFactors, Spec};
+use crate::quantity::Quantity;
 use crate::rotation::Orientation;
 use crate::shapes::Shape;
 use serde::Serialize;
@@ -584,10 +585,14 @@ fn limit(model: &Model) -> Option<(LimitSource, f64)> {
     if let Some(l) = &model.budget {
         return Some((LimitSource::Budget, l.mass));
     }
-    model.expect.iter().find_map(|c| match (c.target, c.bound) {
-        (Target::Mass, Bound::Range { max: Some(m), .. }) => Some((LimitSource::ExpectMassMax, m)),
-        _ => None,
-    })
+    model
+        .expect
+        .iter()
+        .filter(|c| c.target.quantity == Quantity::Mass)
+        .find_map(|c| match c.bound {
+            Bound::Range { max: Some(m), .. } => Some((LimitSource::ExpectMassMax, m)),
+            Bound::Range { max: None, .. } | Bound::Value { .. } => None,
+        })
 }
 
 /// The weight statement of a loaded part file.

@@ -7,45 +7,19 @@ use super::summary::Summary;
 use crate::diag::{Diagnostic, Source, Span};
 use crate::model::budget::Limit;
 use crate::model::expect::{Bound, Check, Target, Tol};
+use crate::quantity::Quantity;
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
 use serde::Serialize;
 
 /// The measured value of one check, SI.
 pub fn measured(s: &Summary, t: Target) -> f64 {
-    // The predicted body's, `load` made when the file expects it.
-    let predicted = |f: &dyn Fn(&Summary) -> f64| s.predicted.as_deref().map_or(f64::NAN, f);
-    match t {
-        Target::Mass => s.mass,
-        Target::CenterOfMass(i) => s.center_of_mass[i],
-        Target::PrincipalMoment(i) => s.principal_moments[i],
-        Target::InertiaCom(i, j) => s.inertia_com[i][j],
-        Target::InertiaRef(i, j) => s.inertia_ref[i][j],
-        Target::RadiusOfGyration(i) => s.radii_of_gyration[i],
-        Target::RadiusOfGyrationAxis(i) => s.radii_of_gyration_axes[i],
-        Target::AngularMomentum(i) => s.angular_momentum.map_or(f64::NAN, |h| h[i]),
-        Target::KineticEnergy => s.kinetic_energy.unwrap_or(f64::NAN),
-        Target::PredictedMass => predicted(&|p| p.mass),
-        Target::PredictedCenterOfMass(i) => predicted(&|p| p.center_of_mass[i]),
-        Target::PredictedInertiaCom(i, j) => predicted(&|p| p.inertia_com[i][j]),
-    }
+    s.value(t)
 }
 
 /// Bounds [lo, hi] of a check, SI.
 pub fn limits(b: &Bound) -> (f64, f64) {
-    match *b {
-        Bound::Value { value, tol } => {
-            let t = match tol {
-                Tol::Abs(t) => t,
-                Tol::Rel(r) => r * value.abs(),
-            };
-            (value - t, value + t)
-        }
-        Bound::Range { min, max } => (
-            min.unwrap_or(f64::NEG_INFINITY),
-            max.unwrap_or(f64::INFINITY),
-        ),
-    }
+    b.limits()
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -203,7 +177,10 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
 pub fn budget_limit(source: &Source, s: &Summary, limit: &Limit) -> CheckResult {
     let c = Check {
         name: "budget.limit".to_string(),
-        target: Target::PredictedMass,
+        target: Target {
+            quantity: Quantity::PredictedMass,
+            component: 0,
+        },
         bound: Bound::Range {
             min: None,
             max: Some(limit.mass),

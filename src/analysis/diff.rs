@@ -9,6 +9,7 @@ use super::summary::Summary;
 use crate::diag::Diagnostic;
 use crate::numeric::norm;
 use crate::part::PartSi;
+use crate::quantity::{Layout, QUANTITIES, Quantity, Shown, UPPER, component};
 use crate::shapes::Shape;
 use crate::units::Dim;
 use serde::Serialize;
@@ -137,6 +138,24 @@ pub struct Props {
 }
 
 impl Props {
+    /// Quantity `q`'s numbers (row-major for a matrix), if `Props` holds it.
+    fn value(&self, q: Quantity) -> Option<Vec<f64>> {
+        match q {
+            Quantity::Mass => Some(vec![self.mass]),
+            Quantity::CenterOfMass => Some(self.center_of_mass.to_vec()),
+            Quantity::PrincipalMoments => Some(self.principal_moments.to_vec()),
+            Quantity::InertiaCom => Some(flat(&self.inertia_com).to_vec()),
+            Quantity::InertiaRef
+            | Quantity::RadiiOfGyration
+            | Quantity::RadiiOfGyrationAxes
+            | Quantity::AngularMomentum
+            | Quantity::KineticEnergy
+            | Quantity::PredictedMass
+            | Quantity::PredictedCenterOfMass
+            | Quantity::PredictedInertiaCom => None,
+        }
+    }
+
     /// A part file's, its centre of mass in the file's frame.
     pub fn of(s: &Summary) -> Props {
         Props {
@@ -289,60 +308,43 @@ fn compare(
     })
 }
 
-/// Mass, centre of mass, principal moments, and the six independent entries
-/// of the inertia tensor about the centre of mass (upper triangle).
+/// The quantities the table has `diff` show (`quantity::Info::diff`), in
+/// its order: mass, centre of mass, principal moments, and the six
+/// independent entries of the inertia tensor about the centre of mass
+/// (upper triangle).
 fn quantities(
     old: &Props,
     new: &Props,
     length: f64,
     tol: f64,
 ) -> Result<Vec<QuantityDiff>, Diagnostic> {
-    let mut out = vec![compare(
-        "mass".into(),
-        "mass".into(),
-        Dim::MASS,
-        (old.mass, new.mass),
-        pick(old.mass.abs(), new.mass.abs()),
-        tol,
-    )?];
-    for (i, axis) in ["x", "y", "z"].iter().enumerate() {
-        out.push(compare(
-            format!("center_of_mass.{axis}"),
-            format!("centre of mass {axis}"),
-            Dim::LENGTH,
-            (old.center_of_mass[i], new.center_of_mass[i]),
-            length,
-            tol,
-        )?);
-    }
-    let scale = pick(norm(&old.principal_moments), norm(&new.principal_moments));
-    for i in 0..3 {
-        out.push(compare(
-            format!("principal_moments.{}", i + 1),
-            format!("principal moment I{}", i + 1),
-            Dim::INERTIA,
-            (old.principal_moments[i], new.principal_moments[i]),
-            scale,
-            tol,
-        )?);
-    }
-    let scale = pick(norm(&flat(&old.inertia_com)), norm(&flat(&new.inertia_com)));
-    for (i, j, ij) in [
-        (0, 0, "xx"),
-        (1, 1, "yy"),
-        (2, 2, "zz"),
-        (0, 1, "xy"),
-        (0, 2, "xz"),
-        (1, 2, "yz"),
-    ] {
-        out.push(compare(
-            format!("inertia_com.{ij}"),
-            format!("I{ij}"),
-            Dim::INERTIA,
-            (old.inertia_com[i][j], new.inertia_com[i][j]),
-            scale,
-            tol,
-        )?);
+    let mut out = Vec::new();
+    for info in &QUANTITIES {
+        let (Some(o), Some(n)) = (old.value(info.quantity), new.value(info.quantity)) else {
+            continue;
+        };
+        let scale = match (info.diff, info.layout) {
+            (Shown::No, _) => continue,
+            (Shown::Position, _) => length,
+            (Shown::Own, Layout::Scalar) => pick(o[0].abs(), n[0].abs()),
+            (Shown::Own, Layout::Vector | Layout::Ordered | Layout::Matrix) => {
+                pick(norm(&o), norm(&n))
+            }
+        };
+        let components: Vec<usize> = match info.layout {
+            Layout::Scalar | Layout::Vector | Layout::Ordered => (0..info.layout.count()).collect(),
+            Layout::Matrix => UPPER.iter().map(|&(_, i, j)| 3 * i + j).collect(),
+        };
+        for k in components {
+            let c = component(info.layout, k);
+            let name = if c.is_empty() {
+                info.key.to_string()
+            } else {
+                format!("{}.{c}", info.key)
+            };
+            let label = format!("{}{c}", info.label);
+            out.push(compare(name, label, info.dim, (o[k], n[k]), scale, tol)?);
+        }
     }
     Ok(out)
 }

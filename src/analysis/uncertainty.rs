@@ -25,6 +25,7 @@ use super::summary::Summary;
 use crate::model::Model;
 use crate::model::expect::Target;
 use crate::numeric::{M3, Real};
+use crate::quantity::Layout;
 use serde::Serialize;
 
 mod linear;
@@ -56,6 +57,8 @@ pub const OUTPUTS: [&str; 13] = [
     "principal_moments.3",
 ];
 const N: usize = OUTPUTS.len();
+// The table numbers the σ outputs (`quantity::Info::sigma`) of a body of N.
+const _: () = assert!(N == crate::quantity::OUTPUTS);
 /// The predicted body's outputs (a weight statement's, `budget`), as
 /// `[expect]` names those it holds.
 pub const PREDICTED: [&str; N] = [
@@ -371,14 +374,7 @@ pub fn propagate(
         .iter()
         .filter_map(|c| {
             let o = output_of(c.target)?;
-            (o < N * views.len()).then(|| {
-                (
-                    c.name.clone(),
-                    c.span.start,
-                    super::check::limits(&c.bound),
-                    o,
-                )
-            })
+            (o < N * views.len()).then(|| (c.name.clone(), c.span.start, c.bound.limits(), o))
         })
         .collect();
     if let (Some(limit), true) = (&model.budget, views.len() == 2) {
@@ -578,22 +574,46 @@ fn split(
     (outputs, covariance, predicted)
 }
 
-/// The output an `[expect]` target reads, if it is one.
+/// The output an `[expect]` target reads, if its σ is propagated
+/// (`quantity::Info::sigma`).
 pub fn output_of(t: Target) -> Option<usize> {
-    match t {
-        Target::Mass => Some(0),
-        Target::CenterOfMass(i) => Some(1 + i),
-        Target::InertiaCom(a, b) => ENTRIES
-            .iter()
-            .position(|e| *e == (a.min(b), a.max(b)))
-            .map(|k| 4 + k),
-        Target::PrincipalMoment(i) => Some(10 + i),
-        Target::PredictedMass => Some(N),
-        Target::PredictedCenterOfMass(i) => Some(N + 1 + i),
-        Target::PredictedInertiaCom(a, b) => ENTRIES
-            .iter()
-            .position(|e| *e == (a.min(b), a.max(b)))
-            .map(|k| N + 4 + k),
-        _ => None,
+    let info = t.quantity.info();
+    let first = info.sigma?;
+    let k = t.component;
+    match info.layout {
+        Layout::Scalar | Layout::Vector | Layout::Ordered => Some(first + k),
+        Layout::Matrix => {
+            let (a, b) = (k / 3, k % 3);
+            ENTRIES
+                .iter()
+                .position(|e| *e == (a.min(b), a.max(b)))
+                .map(|e| first + e)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_output_is_named_as_the_quantity_table_names_its_target() {
+        for info in &crate::quantity::QUANTITIES {
+            for k in 0..info.layout.count() {
+                let t = Target {
+                    quantity: info.quantity,
+                    component: k,
+                };
+                let Some(o) = output_of(t) else { continue };
+                // An entry below a matrix's diagonal is the one above it.
+                let mut c: Vec<char> = crate::quantity::component(info.layout, k).chars().collect();
+                let named = name_of(o);
+                let (stem, last) = named.rsplit_once('.').unwrap_or((named, ""));
+                let mut last: Vec<char> = last.chars().collect();
+                c.sort_unstable();
+                last.sort_unstable();
+                assert_eq!((stem, c), (info.key, last), "output {o}");
+            }
+        }
     }
 }

@@ -17,12 +17,12 @@
 //!   (temporary file + rename) keeping its permissions and owner, or in
 //!   place when it has hard links, which a rename would break.
 
-use crate::analysis::check::measured;
 use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target};
+use crate::quantity::{Bless, QUANTITIES};
 use crate::render::format::DisplayUnits;
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
 use crate::units::Dim;
@@ -243,10 +243,10 @@ fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary
     } else {
         1.0
     };
-    let whole_scalar = matches!(
-        target,
-        Target::Mass | Target::PredictedMass | Target::KineticEnergy
-    );
+    let whole_scalar = match target.quantity.info().bless {
+        Bless::Relative => true,
+        Bless::Absolute => false,
+    };
     if values.len() == 1 && largest > 0.0 && (whole_scalar || largest >= size) {
         Value::from(DEFAULT_RELATIVE_TOL)
     } else {
@@ -305,10 +305,7 @@ fn write_values(
     for group in entries.values() {
         let first = group[0];
         let (scale, _) = DisplayUnits::of(s.file_units).of_dim(first.dim);
-        let measured: Vec<f64> = group
-            .iter()
-            .map(|c| measured(s, c.target) / scale)
-            .collect();
+        let measured: Vec<f64> = group.iter().map(|c| s.value(c.target) / scale).collect();
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
         let mut path: Vec<&str> = first.name.split('.').collect();
@@ -319,16 +316,7 @@ fn write_values(
             .iter()
             .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
             .then(|| default_tol(&measured, first.target, first.dim, scale, s));
-        let value = match measured.len() {
-            1 => Value::from(measured[0]),
-            3 => Value::Array(measured.iter().copied().collect::<Array>()),
-            _ => Value::Array(
-                measured
-                    .chunks(3)
-                    .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
-                    .collect::<Array>(),
-            ),
-        };
+        let value = written(&measured);
         if let Some(t) = entry_mut(doc, &path).and_then(Item::as_table_like_mut)
             && let Some(old) = t.get_mut("value")
         {
@@ -363,39 +351,42 @@ fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item
     Some(item)
 }
 
-/// A new `[expect]` with the mass, centre of mass and principal moments.
+/// A new `[expect]` with the quantities the table blesses by default
+/// (`quantity::Info::blessed_by_default`: the mass, centre of mass and
+/// principal moments).
 fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
     let units = DisplayUnits::of(s.file_units);
-    let (m, l, i) = (units.mass, units.length, units.inertia);
-    let entry = |value: Value, tol: Value| {
-        let mut t = InlineTable::new();
-        t.insert("value", value);
-        t.insert("tol", tol);
-        Item::Value(Value::InlineTable(t))
-    };
-    let vector = |v: [f64; 3], scale: f64, target: Target, dim: Dim| {
-        let v = v.map(|x| x / scale);
-        (
-            Value::Array(v.into_iter().collect()),
-            default_tol(&v, target, dim, scale, s),
-        )
-    };
     let mut t = toml_edit::Table::new();
     t.decor_mut()
         .set_prefix("\n# Expected mass properties, written by `massprop check --bless`.\n");
-    let mass = s.mass / m;
-    let mass_tol = default_tol(&[mass], Target::Mass, Dim::MASS, m, s);
-    t.insert("mass", entry(Value::from(mass), mass_tol));
-    let (c, ct) = vector(s.center_of_mass, l, Target::CenterOfMass(0), Dim::LENGTH);
-    t.insert("center_of_mass", entry(c, ct));
-    let (p, pt) = vector(
-        s.principal_moments,
-        i,
-        Target::PrincipalMoment(0),
-        Dim::INERTIA,
-    );
-    t.insert("principal_moments", entry(p, pt));
+    for info in QUANTITIES.iter().filter(|i| i.blessed_by_default) {
+        let (scale, _) = units.of_dim(info.dim);
+        let target = |component| Target {
+            quantity: info.quantity,
+            component,
+        };
+        let v: Vec<f64> = (0..info.layout.count())
+            .map(|k| s.value(target(k)) / scale)
+            .collect();
+        let mut entry = InlineTable::new();
+        entry.insert("value", written(&v));
+        entry.insert("tol", default_tol(&v, target(0), info.dim, scale, s));
+        t.insert(info.key, Item::Value(Value::InlineTable(entry)));
+    }
     doc.insert("expect", Item::Table(t));
+}
+
+/// A value as written: a number, an array, or rows of three.
+fn written(v: &[f64]) -> Value {
+    match v.len() {
+        1 => Value::from(v[0]),
+        3 => Value::Array(v.iter().copied().collect::<Array>()),
+        _ => Value::Array(
+            v.chunks(3)
+                .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
+                .collect::<Array>(),
+        ),
+    }
 }
 
 #[cfg(test)]

@@ -511,6 +511,36 @@ pub struct RawExpect {
     pub iyz: Option<Spanned<RawExpectation>>,
 }
 
+impl RawExpect {
+    /// The entry of quantity `q`, if the file gives it.
+    pub fn entry(&self, q: crate::quantity::Quantity) -> Option<&Spanned<RawExpectation>> {
+        use crate::quantity::Quantity as Q;
+        match q {
+            Q::Mass => &self.mass,
+            Q::CenterOfMass => &self.center_of_mass,
+            Q::PrincipalMoments => &self.principal_moments,
+            Q::InertiaCom => &self.inertia_com,
+            Q::InertiaRef => &self.inertia_ref,
+            Q::RadiiOfGyration => &self.radii_of_gyration,
+            Q::RadiiOfGyrationAxes => &self.radii_of_gyration_axes,
+            Q::AngularMomentum => &self.angular_momentum,
+            Q::KineticEnergy => &self.kinetic_energy,
+            Q::PredictedMass => &self.predicted_mass,
+            Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
+            Q::PredictedInertiaCom => &self.predicted_inertia_com,
+        }
+        .as_ref()
+    }
+
+    /// The entries of `quantity::ALIASES` (`Ixx` …), in its order.
+    pub fn aliases(&self) -> [Option<&Spanned<RawExpectation>>; 6] {
+        [
+            &self.ixx, &self.iyy, &self.izz, &self.ixy, &self.ixz, &self.iyz,
+        ]
+        .map(Option::as_ref)
+    }
+}
+
 /// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
