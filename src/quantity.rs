@@ -31,6 +31,9 @@ pub enum Quantity {
     PredictedMass,
     PredictedCenterOfMass,
     PredictedInertiaCom,
+    /// The principal axes about the centre of mass (rows, ascending
+    /// moments), compared by angle.
+    PrincipalAxes,
 }
 
 /// How a quantity's value is laid out.
@@ -43,6 +46,9 @@ pub enum Layout {
     Ordered,
     /// Components xx … yz of a symmetric matrix, rows in the report axes.
     Matrix,
+    /// Three unit rows, one per principal moment (ascending): an axis is
+    /// its own negative, and among equal moments any axes serve.
+    Axes,
 }
 
 impl Layout {
@@ -51,7 +57,7 @@ impl Layout {
         match self {
             Layout::Scalar => 1,
             Layout::Vector | Layout::Ordered => 3,
-            Layout::Matrix => 9,
+            Layout::Matrix | Layout::Axes => 9,
         }
     }
 }
@@ -62,6 +68,11 @@ pub enum Compare {
     /// `value` ± `tol`, or `min`/`max`, per component; components may be
     /// expected alone (`center_of_mass.z`).
     Bound,
+    /// `value` (three unit, orthogonal rows) within `tol_degrees`: the
+    /// angle between each expected axis and the computed one, an axis and
+    /// its negative alike, only the axes the moments determine
+    /// (`analysis::check::axes`).
+    Angle,
 }
 
 /// What must be computed for the quantity to exist.
@@ -84,6 +95,8 @@ pub enum Bless {
     /// Absolute, from the larger of its largest component and the body's
     /// size in its dimension (a component may be zero by symmetry).
     Absolute,
+    /// `tol_degrees`, `DEFAULT_TOL_DEGREES`.
+    Degrees,
 }
 
 /// How `diff` shows it.
@@ -98,6 +111,10 @@ pub enum Shown {
     /// Per component, relative to the body's length scale (a position has
     /// no natural zero).
     Position,
+    /// Per axis, the angle between the old and the new axis (radians,
+    /// itself the relative change), for the axes both files' moments
+    /// determine.
+    Angle,
 }
 
 /// One row of the table.
@@ -140,7 +157,7 @@ const fn row(quantity: Quantity, key: &'static str, dim: Dim, layout: Layout) ->
 
 /// Every reported quantity, in the order of `Quantity` (the order in which
 /// `[expect]` is read, hence which of two errors is reported).
-pub const QUANTITIES: [Info; 12] = [
+pub const QUANTITIES: [Info; 13] = [
     Info {
         label: "mass",
         sigma: Some(0),
@@ -252,6 +269,18 @@ pub const QUANTITIES: [Info; 12] = [
             Layout::Matrix,
         )
     },
+    Info {
+        label: "principal axis ",
+        compare: Compare::Angle,
+        bless: Bless::Degrees,
+        diff: Shown::Angle,
+        ..row(
+            Quantity::PrincipalAxes,
+            "principal_axes",
+            Dim::DIMENSIONLESS,
+            Layout::Axes,
+        )
+    },
 ];
 
 /// How many σ outputs one body has (`analysis::sigma`): mass, centre of
@@ -268,6 +297,9 @@ pub const ALIASES: [(&str, Quantity, usize, usize); 6] = [
     ("Ixz", Quantity::InertiaCom, 0, 2),
     ("Iyz", Quantity::InertiaCom, 1, 2),
 ];
+
+/// The tolerance `--bless` gives `principal_axes` when it has none.
+pub const DEFAULT_TOL_DEGREES: f64 = 0.5;
 
 impl Quantity {
     /// Its row of `QUANTITIES`.
@@ -299,6 +331,7 @@ pub fn component(layout: Layout, k: usize) -> String {
         Layout::Vector => XYZ[k].to_string(),
         Layout::Ordered => ORDINALS[k].to_string(),
         Layout::Matrix => format!("{}{}", XYZ[k / 3], XYZ[k % 3]),
+        Layout::Axes => ORDINALS[k / 3].to_string(),
     }
 }
 
@@ -320,7 +353,9 @@ mod tests {
             let Some(first) = info.sigma else { continue };
             let n = match info.layout {
                 Layout::Matrix => UPPER.len(),
-                Layout::Scalar | Layout::Vector | Layout::Ordered => info.layout.count(),
+                Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => {
+                    info.layout.count()
+                }
             };
             for (o, t) in taken.iter_mut().enumerate().skip(first).take(n) {
                 assert!(!*t, "{} overlaps output {o}", info.key);
@@ -340,5 +375,17 @@ mod tests {
         keys.sort_unstable();
         keys.dedup();
         assert_eq!(keys.len(), n);
+    }
+
+    #[test]
+    fn a_quantity_compared_by_angle_is_a_set_of_axes() {
+        for info in &QUANTITIES {
+            assert_eq!(
+                info.compare == Compare::Angle,
+                info.layout == Layout::Axes,
+                "{}",
+                info.key
+            );
+        }
     }
 }

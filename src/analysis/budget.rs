@@ -591,7 +591,7 @@ fn limit(model: &Model) -> Option<(LimitSource, f64)> {
         .filter(|c| c.target.quantity == Quantity::Mass)
         .find_map(|c| match c.bound {
             Bound::Range { max: Some(m), .. } => Some((LimitSource::ExpectMassMax, m)),
-            Bound::Range { max: None, .. } | Bound::Value { .. } => None,
+            Bound::Range { max: None, .. } | Bound::Value { .. } | Bound::Axes { .. } => None,
         })
 }
 

@@ -135,6 +135,9 @@ pub struct Props {
     pub principal_moments: [f64; 3],
     /// About the centre of mass, tensor convention.
     pub inertia_com: [[f64; 3]; 3],
+    /// The principal axes (rows) and those of them the moments determine
+    /// (`check::determined`); `None` where not compared.
+    pub principal_axes: Option<([[f64; 3]; 3], [bool; 3])>,
 }
 
 impl Props {
@@ -145,6 +148,7 @@ impl Props {
             Quantity::CenterOfMass => Some(self.center_of_mass.to_vec()),
             Quantity::PrincipalMoments => Some(self.principal_moments.to_vec()),
             Quantity::InertiaCom => Some(flat(&self.inertia_com).to_vec()),
+            Quantity::PrincipalAxes => self.principal_axes.as_ref().map(|(r, _)| flat(r).to_vec()),
             Quantity::InertiaRef
             | Quantity::RadiiOfGyration
             | Quantity::RadiiOfGyrationAxes
@@ -163,6 +167,10 @@ impl Props {
             center_of_mass: s.center_of_mass,
             principal_moments: s.principal_moments,
             inertia_com: s.inertia_com,
+            principal_axes: Some((s.principal_axes, {
+                let d = super::check::determined(s);
+                std::array::from_fn(|k| d.contains(&k))
+            })),
         }
     }
 }
@@ -325,15 +333,38 @@ fn quantities(
         };
         let scale = match (info.diff, info.layout) {
             (Shown::No, _) => continue,
+            (Shown::Angle, _) => {
+                let (Some((o, o_axes)), Some((n, n_axes))) =
+                    (&old.principal_axes, &new.principal_axes)
+                else {
+                    continue;
+                };
+                // Each axis both files determine: the angle between them
+                // (radians, itself the relative change; "old" is 0).
+                for k in (0..3).filter(|&k| o_axes[k] && n_axes[k]) {
+                    let c = component(info.layout, 3 * k);
+                    let angle = super::check::angle_between(&o[k], &n[k]);
+                    out.push(compare(
+                        format!("{}.{c}", info.key),
+                        format!("{}{c}", info.label),
+                        info.dim,
+                        (0.0, angle),
+                        1.0,
+                        tol,
+                    )?);
+                }
+                continue;
+            }
             (Shown::Position, _) => length,
             (Shown::Own, Layout::Scalar) => pick(o[0].abs(), n[0].abs()),
-            (Shown::Own, Layout::Vector | Layout::Ordered | Layout::Matrix) => {
+            (Shown::Own, Layout::Vector | Layout::Ordered | Layout::Matrix | Layout::Axes) => {
                 pick(norm(&o), norm(&n))
             }
         };
         let components: Vec<usize> = match info.layout {
             Layout::Scalar | Layout::Vector | Layout::Ordered => (0..info.layout.count()).collect(),
             Layout::Matrix => UPPER.iter().map(|&(_, i, j)| 3 * i + j).collect(),
+            Layout::Axes => unreachable!("invariant: axes are shown by angle, above"),
         };
         for k in components {
             let c = component(info.layout, k);

@@ -224,6 +224,7 @@ impl Summary {
             Quantity::PredictedMass => predicted(&|p| p.mass),
             Quantity::PredictedCenterOfMass => predicted(&|p| p.center_of_mass[k]),
             Quantity::PredictedInertiaCom => predicted(&|p| row(&p.inertia_com)),
+            Quantity::PrincipalAxes => row(&self.principal_axes),
         }
     }
 }

@@ -581,7 +581,7 @@ pub fn output_of(t: Target) -> Option<usize> {
     let first = info.sigma?;
     let k = t.component;
     match info.layout {
-        Layout::Scalar | Layout::Vector | Layout::Ordered => Some(first + k),
+        Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => Some(first + k),
         Layout::Matrix => {
             let (a, b) = (k / 3, k % 3);
             ENTRIES

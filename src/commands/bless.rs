@@ -22,7 +22,7 @@ use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target};
-use crate::quantity::{Bless, QUANTITIES};
+use crate::quantity::{Bless, Compare, DEFAULT_TOL_DEGREES, QUANTITIES};
 use crate::render::format::DisplayUnits;
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
 use crate::units::Dim;
@@ -185,10 +185,14 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
         let Some(t) = entry.as_table_like_mut() else {
             return;
         };
-        if t.get("value").is_some() && t.get("tol").is_none() {
+        let key = tol_key(&path[0]);
+        if t.get("value").is_some() && t.get(key).is_none() {
             // Any tolerance the reader takes: it is replaced before the
             // file is written.
-            let mut tol = Value::from(DEFAULT_RELATIVE_TOL);
+            let mut tol = match key {
+                "tol" => Value::from(DEFAULT_RELATIVE_TOL),
+                _ => Value::from(DEFAULT_TOL_DEGREES),
+            };
             // In an inline table the space before `}` trails the last value;
             // move it after the new `tol`.
             if let Some(Item::Value(v)) = t.get_mut("value") {
@@ -198,7 +202,7 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
                     tol.decor_mut().set_suffix(sfx);
                 }
             }
-            t.insert("tol", Item::Value(tol));
+            t.insert(key, Item::Value(tol));
             added.push(path.clone());
         }
         for key in [
@@ -217,6 +221,15 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
         }
     }
     added
+}
+
+/// The key of an `[expect]` entry's tolerance: `tol_degrees` for a
+/// quantity compared by angle, else `tol`.
+fn tol_key(entry: &str) -> &'static str {
+    let angle = QUANTITIES
+        .iter()
+        .any(|i| i.key == entry && i.compare == Compare::Angle);
+    if angle { "tol_degrees" } else { "tol" }
 }
 
 /// The default tolerance of an entry whose new value is `values` (in the
@@ -246,6 +259,7 @@ fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary
     let whole_scalar = match target.quantity.info().bless {
         Bless::Relative => true,
         Bless::Absolute => false,
+        Bless::Degrees => return Value::from(DEFAULT_TOL_DEGREES),
     };
     if values.len() == 1 && largest > 0.0 && (whole_scalar || largest >= size) {
         Value::from(DEFAULT_RELATIVE_TOL)
@@ -297,7 +311,7 @@ fn write_values(
     let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
     for c in checks
         .iter()
-        .filter(|c| matches!(c.bound, Bound::Value { .. }))
+        .filter(|c| matches!(c.bound, Bound::Value { .. } | Bound::Axes { .. }))
     {
         entries.entry(c.span.start).or_default().push(c);
     }
@@ -305,7 +319,20 @@ fn write_values(
     for group in entries.values() {
         let first = group[0];
         let (scale, _) = DisplayUnits::of(s.file_units).of_dim(first.dim);
-        let measured: Vec<f64> = group.iter().map(|c| s.value(c.target) / scale).collect();
+        // An entry compared by angle is one check of the whole value.
+        let measured: Vec<f64> = group
+            .iter()
+            .flat_map(|c| match c.bound {
+                Bound::Axes { .. } => (0..9)
+                    .map(|component| Target {
+                        component,
+                        ..c.target
+                    })
+                    .collect(),
+                Bound::Value { .. } | Bound::Range { .. } => vec![c.target],
+            })
+            .map(|t| s.value(t) / scale)
+            .collect();
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
         let mut path: Vec<&str> = first.name.split('.').collect();
@@ -330,7 +357,7 @@ fn write_values(
                 changed = true;
             }
             if let Some(tol) = tol
-                && let Some(Item::Value(placeholder)) = t.get_mut("tol")
+                && let Some(Item::Value(placeholder)) = t.get_mut(tol_key(path[0]))
             {
                 let mut tol = tol;
                 *tol.decor_mut() = placeholder.decor().clone();

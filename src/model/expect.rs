@@ -9,6 +9,7 @@ use super::Ctx;
 use super::raw::{ExpectValue, Quantity as Number, RawExpect, RawExpectation};
 use crate::diag::Diagnostic;
 use crate::quantity::{ALIASES, Layout, Needs, ORDINALS, QUANTITIES, Quantity, XYZ};
+use crate::tolerance::AXES_ORTHONORMAL;
 use crate::units::Dim;
 use std::ops::Range;
 use toml::Spanned;
@@ -42,6 +43,10 @@ pub enum Bound {
     Value { value: f64, tol: Tol },
     /// `min` and/or `max`.
     Range { min: Option<f64>, max: Option<f64> },
+    /// Axes (unit, orthogonal rows) within an angle `tol`, radians: the
+    /// measured value is the largest angle between an expected axis and
+    /// the computed one (`analysis::check::axes`).
+    Axes { rows: [[f64; 3]; 3], tol: f64 },
 }
 
 impl Bound {
@@ -59,6 +64,7 @@ impl Bound {
                 min.unwrap_or(f64::NEG_INFINITY),
                 max.unwrap_or(f64::INFINITY),
             ),
+            Bound::Axes { tol, .. } => (0.0, tol),
         }
     }
 }
@@ -182,6 +188,9 @@ impl Ctx<'_> {
                     Layout::Matrix => format!(
                         "`{name}` has no component `{key}`; its components are xx, yy, zz, xy, xz, yz"
                     ),
+                    Layout::Axes => format!(
+                        "`{name}` has no component `{key}`; give its three rows in `value`, with `tol_degrees`"
+                    ),
                 };
                 return Err(self.err(c.span(), message));
             }
@@ -198,7 +207,11 @@ impl Ctx<'_> {
             }
             self.expectation_leaf(&n, c, Layout::Scalar, dim, &|_| t, out)?;
         }
-        let has_own = e.value.is_some() || e.tol.is_some() || e.min.is_some() || e.max.is_some();
+        let has_own = e.value.is_some()
+            || e.tol.is_some()
+            || e.tol_degrees.is_some()
+            || e.min.is_some()
+            || e.max.is_some();
         if has_own {
             self.expectation_leaf(name, raw, shape, dim, at, out)?;
         } else if !any_component {
@@ -221,6 +234,15 @@ impl Ctx<'_> {
     ) -> Result<(), Diagnostic> {
         let e = raw.get_ref();
         let span = raw.span();
+        if shape == Layout::Axes {
+            return self.expected_axes(name, raw, target(0), out);
+        }
+        if let Some(t) = &e.tol_degrees {
+            return Err(self.err(
+                t.span(),
+                format!("`{name}`: `tol_degrees` is for `principal_axes`; give `tol`"),
+            ));
+        }
         let names: Vec<String> = match shape {
             Layout::Scalar => vec![name.to_string()],
             Layout::Vector => XYZ.iter().map(|c| format!("{name}.{c}")).collect(),
@@ -229,6 +251,7 @@ impl Ctx<'_> {
                 .iter()
                 .flat_map(|a| XYZ.iter().map(move |b| format!("{name}.{a}{b}")))
                 .collect(),
+            Layout::Axes => unreachable!("invariant: axes are read by `axes`, above"),
         };
         let bounds: Vec<Bound> = match (&e.value, &e.tol, &e.min, &e.max) {
             (Some(v), Some(t), None, None) => {
@@ -314,7 +337,7 @@ impl Ctx<'_> {
                 })
                 .collect(),
             (Layout::Vector | Layout::Ordered, _) => Err(bad("an array of three numbers")),
-            (Layout::Matrix, ExpectValue::Many(rows)) if rows.len() == 3 => {
+            (Layout::Matrix | Layout::Axes, ExpectValue::Many(rows)) if rows.len() == 3 => {
                 let mut out = Vec::with_capacity(9);
                 for row in rows {
                     match row {
@@ -333,8 +356,110 @@ impl Ctx<'_> {
                 }
                 Ok(out)
             }
-            (Layout::Matrix, _) => Err(bad("three rows of three numbers")),
+            (Layout::Matrix | Layout::Axes, _) => Err(bad("three rows of three numbers")),
         }
+    }
+
+    /// An entry compared by angle (`principal_axes`): `value`, three unit,
+    /// orthogonal rows, and `tol_degrees`, an angle not negative.
+    fn expected_axes(
+        &self,
+        name: &str,
+        raw: &Spanned<RawExpectation>,
+        target: Target,
+        out: &mut Vec<Check>,
+    ) -> Result<(), Diagnostic> {
+        let e = raw.get_ref();
+        let example = "e.g. `principal_axes = { value = [[1, 0, 0], [0, 1, 0], [0, 0, 1]], tol_degrees = 0.5 }`";
+        if let Some(t) = &e.tol {
+            return Err(self
+                .err(
+                    t.span(),
+                    format!("`{name}` is compared by angle: give `tol_degrees`, not `tol`"),
+                )
+                .help(example));
+        }
+        if let Some(m) = e.min.as_ref().or(e.max.as_ref()) {
+            return Err(self
+                .err(
+                    m.span(),
+                    format!("`{name}` is compared by angle: give `value` and `tol_degrees`, not `min` or `max`"),
+                )
+                .help(example));
+        }
+        let (v, t) = match (&e.value, &e.tol_degrees) {
+            (Some(v), Some(t)) => (v, t),
+            (Some(v), None) => {
+                return Err(self
+                    .err(v.span(), format!("`{name}`: `value` needs `tol_degrees`"))
+                    .help(example));
+            }
+            (None, Some(t)) => {
+                return Err(self
+                    .err(
+                        t.span(),
+                        format!("`{name}`: `tol_degrees` goes with `value`"),
+                    )
+                    .help(example));
+            }
+            (None, None) => {
+                return Err(self
+                    .err(raw.span(), format!("expectation `{name}` is empty"))
+                    .help(example));
+            }
+        };
+        let tol = match t.get_ref() {
+            Number::Number(x) if x.is_finite() && *x >= 0.0 => *x,
+            Number::Number(x) if x.is_finite() => {
+                return Err(self.err(
+                    t.span(),
+                    format!("`{name}`: `tol_degrees` must not be negative, got {x}"),
+                ));
+            }
+            Number::Number(_) | Number::Text(_) => {
+                return Err(self.err(
+                    t.span(),
+                    format!("`{name}`: `tol_degrees` must be a finite number of degrees"),
+                ));
+            }
+        };
+        let flat = self.values(name, v, "value", Layout::Axes, Dim::DIMENSIONLESS)?;
+        let rows: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| flat[3 * i + j]));
+        let bad = |message: String| {
+            Err(self
+                .err(v.span(), format!("`{name}`: {message}"))
+                .help("each row is a principal axis: unit length, at right angles to the others"))
+        };
+        for (k, r) in rows.iter().enumerate() {
+            let n = crate::numeric::norm(r);
+            if !((n - 1.0).abs() <= AXES_ORTHONORMAL) {
+                return bad(format!(
+                    "row {} of `value` is not a unit vector (its length is {n})",
+                    k + 1
+                ));
+            }
+        }
+        for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+            let d: f64 = (0..3).map(|j| rows[a][j] * rows[b][j]).sum();
+            if !(d.abs() <= AXES_ORTHONORMAL) {
+                return bad(format!(
+                    "rows {} and {} of `value` are not at right angles (their dot product is {d})",
+                    a + 1,
+                    b + 1
+                ));
+            }
+        }
+        out.push(Check {
+            name: name.to_string(),
+            target,
+            bound: Bound::Axes {
+                rows,
+                tol: tol.to_radians(),
+            },
+            dim: Dim::DIMENSIONLESS,
+            span: raw.span(),
+        });
+        Ok(())
     }
 
     /// `tol`: a plain number (absolute, file units), `"0.5%"` (relative) or a

@@ -491,6 +491,9 @@ pub struct RawExpect {
     pub predicted_center_of_mass: Option<Spanned<RawExpectation>>,
     #[schemars(with = "Option<RawExpectation>")]
     pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
+    /// Three unit rows, compared by angle (`tol_degrees`).
+    #[schemars(with = "Option<RawExpectation>")]
+    pub principal_axes: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixx")]
     #[schemars(with = "Option<RawExpectation>")]
     pub ixx: Option<Spanned<RawExpectation>>,
@@ -528,6 +531,7 @@ impl RawExpect {
             Q::PredictedMass => &self.predicted_mass,
             Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
             Q::PredictedInertiaCom => &self.predicted_inertia_com,
+            Q::PrincipalAxes => &self.principal_axes,
         }
         .as_ref()
     }
@@ -552,6 +556,9 @@ pub struct RawExpectation {
     pub value: Option<Spanned<ExpectValue>>,
     #[schemars(with = "Option<super::schema::Tolerance>")]
     pub tol: Option<Spanned<Quantity>>,
+    /// `principal_axes`'s tolerance: an angle in degrees, not negative.
+    #[schemars(with = "Option<f64>")]
+    pub tol_degrees: Option<Spanned<Quantity>>,
     #[schemars(with = "Option<ExpectValue>")]
     pub min: Option<Spanned<ExpectValue>>,
     #[schemars(with = "Option<ExpectValue>")]
@@ -684,6 +691,7 @@ impl Shift for RawExpectation {
         let RawExpectation {
             value,
             tol,
+            tol_degrees,
             min,
             max,
             x,
@@ -702,6 +710,7 @@ impl Shift for RawExpectation {
         RawExpectation {
             value: value.shift(by),
             tol: tol.shift(by),
+            tol_degrees: tol_degrees.shift(by),
             min: min.shift(by),
             max: max.shift(by),
             x: x.shift(by),
@@ -735,6 +744,7 @@ impl Shift for RawExpect {
             predicted_mass,
             predicted_center_of_mass,
             predicted_inertia_com,
+            principal_axes,
             ixx,
             iyy,
             izz,
@@ -755,6 +765,7 @@ impl Shift for RawExpect {
             predicted_mass: predicted_mass.shift(by),
             predicted_center_of_mass: predicted_center_of_mass.shift(by),
             predicted_inertia_com: predicted_inertia_com.shift(by),
+            principal_axes: principal_axes.shift(by),
             ixx: ixx.shift(by),
             iyy: iyy.shift(by),
             izz: izz.shift(by),
