@@ -562,24 +562,6 @@ pub fn composes_predicted(model: &Model) -> bool {
     model.budget.is_some() || model.expect.iter().any(|c| c.target.is_predicted())
 }
 
-/// The values of `s`, and of its predicted body where it has one, whose
-/// error bound exceeds `rtol`: the predicted body's prefixed `predicted.`.
-pub fn accuracy_warnings(s: &Summary) -> Vec<summary::AccuracyWarning> {
-    let mut out = s.accuracy_warnings.clone();
-    if let Some(p) = &s.predicted {
-        out.extend(
-            p.accuracy_warnings
-                .iter()
-                .map(|w| summary::AccuracyWarning {
-                    quantity: format!("predicted.{}", w.quantity),
-                    message: format!("the predicted body's {}", w.message),
-                    ..w.clone()
-                }),
-        );
-    }
-    out
-}
-
 /// The not-to-exceed limit: `[budget] limit`, else `[expect] mass`'s `max`.
 fn limit(model: &Model) -> Option<(LimitSource, f64)> {
     if let Some(l) = &model.budget {
@@ -657,7 +639,7 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
         }
     });
     summary.predicted = Some(Box::new(predicted));
-    let accuracy_warnings = accuracy_warnings(&summary);
+    let accuracy_warnings = summary::accuracy::with_predicted(&summary);
     let predicted = summary
         .predicted
         .as_deref()

@@ -333,7 +333,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         checks,
         validity,
         precision: Some(loaded.summary.precision),
-        accuracy_warnings: super::budget::accuracy_warnings(&loaded.summary),
+        accuracy_warnings: super::summary::accuracy::with_predicted(&loaded.summary),
         robot: None,
         format: None,
     }

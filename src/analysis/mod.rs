@@ -12,7 +12,9 @@
 pub mod budget;
 pub mod check;
 pub mod diff;
+pub mod errors;
 pub mod ideal;
+pub mod sigma;
 pub mod summary;
 pub mod uncertainty;
 

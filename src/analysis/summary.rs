@@ -5,12 +5,11 @@
 pub mod accuracy;
 mod axes;
 mod cut_outs;
-mod errors;
 mod rows;
 
 pub use accuracy::{Accuracy, AccuracyWarning, PrecisionChoice};
 
-pub use errors::{Blame, Contribution, SummaryError};
+pub use super::errors::{Blame, Contribution, SummaryError};
 pub use rows::{Assemblies, Parts};
 
 use super::Products;
@@ -173,7 +172,7 @@ pub struct Summary {
     pub idealisation: Option<ideal::Idealisation>,
     /// The uncertainty from the file's tolerances (`--uncertainty`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub uncertainty: Option<super::uncertainty::Uncertainty>,
+    pub uncertainty: Option<super::sigma::Uncertainty>,
     /// How far each value may lie from the exact value for the file's
     /// numbers, for the arithmetic used (`bounds`): absolute, SI.
     pub error_bounds: bounds::ErrorBounds,
