@@ -4,7 +4,7 @@
 //! `--bless` writes for it, whether the uncertainty carries its σ, and how
 //! `diff` shows it. `model::expect` reads `[expect]` from this table,
 //! `analysis::check` compares by it, `analysis::sigma` numbers the σ
-//! outputs from it, `commands::bless` and `analysis::diff` follow it.
+//! outputs from it, `analysis::bless` and `analysis::diff` follow it.
 //!
 //! Adding a quantity: a `Quantity` variant and its row in `QUANTITIES`
 //! (a test holds the row at the variant's position), its field in
@@ -86,7 +86,7 @@ pub enum Needs {
 }
 
 /// The tolerance `--bless` gives an entry that has none
-/// (`commands::bless::default_tol`).
+/// (`analysis::bless::default_tol`).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Bless {
     /// A whole number that is not near zero by nature: relative

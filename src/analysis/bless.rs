@@ -17,15 +17,14 @@
 //!   (temporary file + rename) keeping its permissions and owner, or in
 //!   place when it has hard links, which a rename would break.
 
-use crate::analysis::summary::Summary;
-use crate::analysis::{self, Settings};
+use super::summary::Summary;
+use super::{Loaded, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target};
 use crate::quantity::{Bless, Compare, DEFAULT_TOL_DEGREES, QUANTITIES};
-use crate::render::format::DisplayUnits;
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
-use crate::units::Dim;
+use crate::units::{Dim, FileUnits};
 use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
 
@@ -56,7 +55,7 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     // value written in its place (`write_values`).
     let untoleranced = add_placeholder_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
-    let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, settings)?;
+    let Loaded { model, summary, .. } = super::load_source(staged, settings)?;
 
     let mut changed = !untoleranced.is_empty();
     if doc.get("expect").is_none() {
@@ -318,7 +317,7 @@ fn write_values(
     let mut changed = false;
     for group in entries.values() {
         let first = group[0];
-        let (scale, _) = DisplayUnits::of(s.file_units).of_dim(first.dim);
+        let scale = written_scale(s.file_units, first.dim);
         // An entry compared by angle is one check of the whole value.
         let measured: Vec<f64> = group
             .iter()
@@ -382,12 +381,11 @@ fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item
 /// (`quantity::Info::blessed_by_default`: the mass, centre of mass and
 /// principal moments).
 fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
-    let units = DisplayUnits::of(s.file_units);
     let mut t = toml_edit::Table::new();
     t.decor_mut()
         .set_prefix("\n# Expected mass properties, written by `massprop check --bless`.\n");
     for info in QUANTITIES.iter().filter(|i| i.blessed_by_default) {
-        let (scale, _) = units.of_dim(info.dim);
+        let scale = written_scale(s.file_units, info.dim);
         let target = |component| Target {
             quantity: info.quantity,
             component,
@@ -401,6 +399,18 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
         t.insert(info.key, Item::Value(Value::InlineTable(entry)));
     }
     doc.insert("expect", Item::Table(t));
+}
+
+/// SI per unit of the plain numbers written for a value of dimension
+/// `dim`: the file's units for a mass, a length or an inertia, SI for the
+/// rest (H, T) and plain numbers for axes, as `[expect]` reads them and
+/// `render::format::DisplayUnits` shows them.
+fn written_scale(u: FileUnits, dim: Dim) -> f64 {
+    if dim == Dim::MASS || dim == Dim::LENGTH || dim == Dim::INERTIA {
+        u.factor(dim).value()
+    } else {
+        1.0
+    }
 }
 
 /// A value as written: a number, an array, or rows of three.
