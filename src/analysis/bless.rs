@@ -184,14 +184,10 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
         let Some(t) = entry.as_table_like_mut() else {
             return;
         };
-        let key = tol_key(&path[0]);
+        let (key, mut tol) = tolerance_of(&path[0]);
         if t.get("value").is_some() && t.get(key).is_none() {
-            // Any tolerance the reader takes: it is replaced before the
-            // file is written.
-            let mut tol = match key {
-                "tol" => Value::from(DEFAULT_RELATIVE_TOL),
-                _ => Value::from(DEFAULT_TOL_DEGREES),
-            };
+            // Any tolerance the reader takes (`tol`'s is replaced before
+            // the file is written).
             // In an inline table the space before `}` trails the last value;
             // move it after the new `tol`.
             if let Some(Item::Value(v)) = t.get_mut("value") {
@@ -222,13 +218,18 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
     added
 }
 
-/// The key of an `[expect]` entry's tolerance: `tol_degrees` for a
-/// quantity compared by angle, else `tol`.
-fn tol_key(entry: &str) -> &'static str {
-    let angle = QUANTITIES
+/// The key of an `[expect]` entry's tolerance and a value it takes:
+/// `tol_degrees` and its default for a quantity compared by angle, else
+/// `tol` and any relative tolerance (an alias, `Ixx`, is no row).
+fn tolerance_of(entry: &str) -> (&'static str, Value) {
+    match QUANTITIES
         .iter()
-        .any(|i| i.key == entry && i.compare == Compare::Angle);
-    if angle { "tol_degrees" } else { "tol" }
+        .find(|i| i.key == entry)
+        .map(|i| i.compare)
+    {
+        Some(Compare::Angle) => ("tol_degrees", Value::from(DEFAULT_TOL_DEGREES)),
+        Some(Compare::Bound) | None => ("tol", Value::from(DEFAULT_RELATIVE_TOL)),
+    }
 }
 
 /// The default tolerance of an entry whose new value is `values` (in the
@@ -356,7 +357,7 @@ fn write_values(
                 changed = true;
             }
             if let Some(tol) = tol
-                && let Some(Item::Value(placeholder)) = t.get_mut(tol_key(path[0]))
+                && let Some(Item::Value(placeholder)) = t.get_mut(tolerance_of(path[0]).0)
             {
                 let mut tol = tol;
                 *tol.decor_mut() = placeholder.decor().clone();
