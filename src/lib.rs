@@ -77,6 +77,8 @@ pub mod numeric;
 #[doc(hidden)]
 pub mod part;
 #[doc(hidden)]
+pub mod quantity;
+#[doc(hidden)]
 pub mod render;
 #[doc(hidden)]
 pub mod robot;

@@ -59,3 +59,10 @@ pub const DEFAULT_RELATIVE_TOL: &str = "0.0001%";
 /// of its largest component (a relative tolerance per component would fail
 /// on rounding noise in components that are zero).
 pub const DEFAULT_VECTOR_TOL: f64 = 1e-6;
+
+/// An expected principal axis (`[expect] principal_axes`) must have unit
+/// length, and two of them a zero dot product, to this: rows written to
+/// three decimals (0.707) are orthonormal to ~2e-4, while a row that is
+/// not an axis misses by far more. The angle it allows (~0.06°) is below
+/// any tolerance worth checking, and the rows are normalised before use.
+pub const AXES_ORTHONORMAL: f64 = 1e-3;

@@ -14,10 +14,11 @@ use super::summary::{self, FORMAT_VERSION, MASSPROP_VERSION, Summary};
 use super::{Loaded, Products, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::budget::{Maturity, Tag};
-use crate::model::expect::{Bound, Target};
+use crate::model::expect::Bound;
 use crate::model::{Analysis, Event, Item, Model};
 use crate::numeric::{DD, Real, Sum};
 use crate::part::{MassSpec, Part, Place, Placed, SiFactors, Spec};
+use crate::quantity::Quantity;
 use crate::rotation::Orientation;
 use crate::shapes::Shape;
 use serde::Serialize;
@@ -560,33 +561,19 @@ pub fn composes_predicted(model: &Model) -> bool {
     model.budget.is_some() || model.expect.iter().any(|c| c.target.is_predicted())
 }
 
-/// The values of `s`, and of its predicted body where it has one, whose
-/// error bound exceeds `rtol`: the predicted body's prefixed `predicted.`.
-pub fn accuracy_warnings(s: &Summary) -> Vec<summary::AccuracyWarning> {
-    let mut out = s.accuracy_warnings.clone();
-    if let Some(p) = &s.predicted {
-        out.extend(
-            p.accuracy_warnings
-                .iter()
-                .map(|w| summary::AccuracyWarning {
-                    quantity: format!("predicted.{}", w.quantity),
-                    message: format!("the predicted body's {}", w.message),
-                    ..w.clone()
-                }),
-        );
-    }
-    out
-}
-
 /// The not-to-exceed limit: `[budget] limit`, else `[expect] mass`'s `max`.
 fn limit(model: &Model) -> Option<(LimitSource, f64)> {
     if let Some(l) = &model.budget {
         return Some((LimitSource::Budget, l.mass));
     }
-    model.expect.iter().find_map(|c| match (c.target, c.bound) {
-        (Target::Mass, Bound::Range { max: Some(m), .. }) => Some((LimitSource::ExpectMassMax, m)),
-        _ => None,
-    })
+    model
+        .expect
+        .iter()
+        .filter(|c| c.target.quantity == Quantity::Mass)
+        .find_map(|c| match c.bound {
+            Bound::Range { max: Some(m), .. } => Some((LimitSource::ExpectMassMax, m)),
+            Bound::Range { max: None, .. } | Bound::Value { .. } | Bound::Axes { .. } => None,
+        })
 }
 
 /// The weight statement of a loaded part file.
@@ -651,7 +638,7 @@ pub fn statement(loaded: Loaded, settings: &Settings) -> Result<Statement, Diagn
         }
     });
     summary.predicted = Some(Box::new(predicted));
-    let accuracy_warnings = accuracy_warnings(&summary);
+    let accuracy_warnings = summary::accuracy::with_predicted(&summary);
     let predicted = summary
         .predicted
         .as_deref()

@@ -7,45 +7,19 @@ use super::summary::Summary;
 use crate::diag::{Diagnostic, Source, Span};
 use crate::model::budget::Limit;
 use crate::model::expect::{Bound, Check, Target, Tol};
+use crate::quantity::Quantity;
 use crate::tolerance::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
 use serde::Serialize;
 
 /// The measured value of one check, SI.
 pub fn measured(s: &Summary, t: Target) -> f64 {
-    // The predicted body's, `load` made when the file expects it.
-    let predicted = |f: &dyn Fn(&Summary) -> f64| s.predicted.as_deref().map_or(f64::NAN, f);
-    match t {
-        Target::Mass => s.mass,
-        Target::CenterOfMass(i) => s.center_of_mass[i],
-        Target::PrincipalMoment(i) => s.principal_moments[i],
-        Target::InertiaCom(i, j) => s.inertia_com[i][j],
-        Target::InertiaRef(i, j) => s.inertia_ref[i][j],
-        Target::RadiusOfGyration(i) => s.radii_of_gyration[i],
-        Target::RadiusOfGyrationAxis(i) => s.radii_of_gyration_axes[i],
-        Target::AngularMomentum(i) => s.angular_momentum.map_or(f64::NAN, |h| h[i]),
-        Target::KineticEnergy => s.kinetic_energy.unwrap_or(f64::NAN),
-        Target::PredictedMass => predicted(&|p| p.mass),
-        Target::PredictedCenterOfMass(i) => predicted(&|p| p.center_of_mass[i]),
-        Target::PredictedInertiaCom(i, j) => predicted(&|p| p.inertia_com[i][j]),
-    }
+    s.value(t)
 }
 
 /// Bounds [lo, hi] of a check, SI.
 pub fn limits(b: &Bound) -> (f64, f64) {
-    match *b {
-        Bound::Value { value, tol } => {
-            let t = match tol {
-                Tol::Abs(t) => t,
-                Tol::Rel(r) => r * value.abs(),
-            };
-            (value - t, value + t)
-        }
-        Bound::Range { min, max } => (
-            min.unwrap_or(f64::NEG_INFINITY),
-            max.unwrap_or(f64::INFINITY),
-        ),
-    }
+    b.limits()
 }
 
 #[derive(Debug, Clone, Serialize)]
@@ -69,6 +43,14 @@ pub struct CheckResult {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max: Option<f64>,
     pub pass: bool,
+    /// For axes (`principal_axes`): the axes compared, 1 to 3, those the
+    /// principal moments determine (empty when all three are equal).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub compared_axes: Option<Vec<usize>>,
+    /// For axes: the axis (1 to 3) at the largest angle, if any was
+    /// compared.
+    #[serde(skip)]
+    pub worst_axis: Option<usize>,
     /// The expectation, SI, for the message (`render::check::message`).
     #[serde(skip)]
     pub bound: Bound,
@@ -157,7 +139,13 @@ pub struct Validity {
 
 /// Evaluate one expectation against a summary.
 pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
-    let m = measured(s, c.target);
+    let found = match &c.bound {
+        Bound::Axes { rows, .. } => Some(axes(s, rows)),
+        Bound::Value { .. } | Bound::Range { .. } => None,
+    };
+    let m = found
+        .as_ref()
+        .map_or_else(|| measured(s, c.target), |f| f.angle);
     let (lo, hi) = limits(&c.bound);
     let pass = m >= lo && m <= hi;
     let Span {
@@ -176,6 +164,7 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
             tol: Tol::Rel(r),
         } => (Some(value), None, Some(r), None, None),
         Bound::Range { min, max } => (None, None, None, min, max),
+        Bound::Axes { tol, .. } => (None, None, None, None, Some(tol)),
     };
     CheckResult {
         quantity: c.name.clone(),
@@ -190,11 +179,83 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
         min,
         max,
         pass,
+        compared_axes: found
+            .as_ref()
+            .map(|f| f.compared.iter().map(|k| k + 1).collect()),
+        worst_axis: found.and_then(|f| f.worst).map(|k| k + 1),
         bound: c.bound,
         dim: c.dim,
         file_units: s.file_units,
         against: Against::Expect,
     }
+}
+
+/// What an expectation of principal axes finds.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AxesFound {
+    /// The largest angle between an expected axis and the computed one,
+    /// radians (0 when none is compared).
+    pub angle: f64,
+    /// The axes compared (0-based): those the principal moments determine.
+    pub compared: Vec<usize>,
+    /// The axis at the largest angle, if any was compared.
+    pub worst: Option<usize>,
+}
+
+/// Expected principal axes (rows, ascending moments) against the
+/// computed ones. An axis and its negative are the same axis: the angle
+/// is atan2(|e × a|, |e · a|), 0 to 90°. Where two principal moments are
+/// equal (`Summary::equal_moments`) or within their error bounds of each
+/// other, their axes are any two at right angles in a plane: only the
+/// third, distinct axis is compared (the plane is the one at right angles
+/// to it, for both); where all three are, any axes pass.
+pub fn axes(s: &Summary, expected: &[[f64; 3]; 3]) -> AxesFound {
+    let mut found = AxesFound {
+        angle: 0.0,
+        compared: determined(s),
+        worst: None,
+    };
+    for &k in &found.compared {
+        let angle = angle_between(&expected[k], &s.principal_axes[k]);
+        if found.worst.is_none() || angle > found.angle {
+            found.angle = angle;
+            found.worst = Some(k);
+        }
+    }
+    found
+}
+
+/// The principal axes (0-based) a summary's moments determine: all three
+/// where the moments differ; where two are equal (`Summary::equal_moments`)
+/// or within their error bounds of each other, only the third; none where
+/// all three are.
+pub fn determined(s: &Summary) -> Vec<usize> {
+    let m = s.principal_moments;
+    let bound = s.error_bounds.principal_moments;
+    let equal = |i: usize, j: usize| {
+        (s.equal_moments.contains(&i) && s.equal_moments.contains(&j))
+            || (m[j] - m[i]).abs() <= bound[i] + bound[j]
+    };
+    match (equal(0, 1), equal(1, 2)) {
+        (true, true) => vec![],
+        (true, false) => vec![2],
+        (false, true) => vec![0],
+        (false, false) => vec![0, 1, 2],
+    }
+}
+
+/// The angle between two lines (directions `e`, `a`, any lengths but
+/// zero), 0 to π/2: an axis is its own negative.
+/// NOTE: atan2 of the cross and dot products, not acos of the dot: acos
+/// loses half the digits of a small angle.
+pub fn angle_between(e: &[f64; 3], a: &[f64; 3]) -> f64 {
+    let cross = [
+        e[1] * a[2] - e[2] * a[1],
+        e[2] * a[0] - e[0] * a[2],
+        e[0] * a[1] - e[1] * a[0],
+    ];
+    let dot: f64 = (0..3).map(|j| e[j] * a[j]).sum();
+    crate::numeric::norm(&cross).atan2(dot.abs())
 }
 
 /// `[budget] limit` against the predicted mass, at the `limit` entry: the
@@ -203,7 +264,10 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
 pub fn budget_limit(source: &Source, s: &Summary, limit: &Limit) -> CheckResult {
     let c = Check {
         name: "budget.limit".to_string(),
-        target: Target::PredictedMass,
+        target: Target {
+            quantity: Quantity::PredictedMass,
+            component: 0,
+        },
         bound: Bound::Range {
             min: None,
             max: Some(limit.mass),
@@ -269,7 +333,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         checks,
         validity,
         precision: Some(loaded.summary.precision),
-        accuracy_warnings: super::budget::accuracy_warnings(&loaded.summary),
+        accuracy_warnings: super::summary::accuracy::with_predicted(&loaded.summary),
         robot: None,
         format: None,
     }

@@ -9,6 +9,7 @@ use super::summary::Summary;
 use crate::diag::Diagnostic;
 use crate::numeric::norm;
 use crate::part::PartSi;
+use crate::quantity::{Layout, QUANTITIES, Quantity, Shown, UPPER, component};
 use crate::shapes::Shape;
 use crate::units::Dim;
 use serde::Serialize;
@@ -134,9 +135,31 @@ pub struct Props {
     pub principal_moments: [f64; 3],
     /// About the centre of mass, tensor convention.
     pub inertia_com: [[f64; 3]; 3],
+    /// The principal axes (rows) and those of them the moments determine
+    /// (`check::determined`); `None` where not compared.
+    pub principal_axes: Option<([[f64; 3]; 3], [bool; 3])>,
 }
 
 impl Props {
+    /// Quantity `q`'s numbers (row-major for a matrix), if `Props` holds it.
+    fn value(&self, q: Quantity) -> Option<Vec<f64>> {
+        match q {
+            Quantity::Mass => Some(vec![self.mass]),
+            Quantity::CenterOfMass => Some(self.center_of_mass.to_vec()),
+            Quantity::PrincipalMoments => Some(self.principal_moments.to_vec()),
+            Quantity::InertiaCom => Some(flat(&self.inertia_com).to_vec()),
+            Quantity::PrincipalAxes => self.principal_axes.as_ref().map(|(r, _)| flat(r).to_vec()),
+            Quantity::InertiaRef
+            | Quantity::RadiiOfGyration
+            | Quantity::RadiiOfGyrationAxes
+            | Quantity::AngularMomentum
+            | Quantity::KineticEnergy
+            | Quantity::PredictedMass
+            | Quantity::PredictedCenterOfMass
+            | Quantity::PredictedInertiaCom => None,
+        }
+    }
+
     /// A part file's, its centre of mass in the file's frame.
     pub fn of(s: &Summary) -> Props {
         Props {
@@ -144,6 +167,10 @@ impl Props {
             center_of_mass: s.center_of_mass,
             principal_moments: s.principal_moments,
             inertia_com: s.inertia_com,
+            principal_axes: Some((s.principal_axes, {
+                let d = super::check::determined(s);
+                std::array::from_fn(|k| d.contains(&k))
+            })),
         }
     }
 }
@@ -289,60 +316,66 @@ fn compare(
     })
 }
 
-/// Mass, centre of mass, principal moments, and the six independent entries
-/// of the inertia tensor about the centre of mass (upper triangle).
+/// The quantities the table has `diff` show (`quantity::Info::diff`), in
+/// its order: mass, centre of mass, principal moments, and the six
+/// independent entries of the inertia tensor about the centre of mass
+/// (upper triangle).
 fn quantities(
     old: &Props,
     new: &Props,
     length: f64,
     tol: f64,
 ) -> Result<Vec<QuantityDiff>, Diagnostic> {
-    let mut out = vec![compare(
-        "mass".into(),
-        "mass".into(),
-        Dim::MASS,
-        (old.mass, new.mass),
-        pick(old.mass.abs(), new.mass.abs()),
-        tol,
-    )?];
-    for (i, axis) in ["x", "y", "z"].iter().enumerate() {
-        out.push(compare(
-            format!("center_of_mass.{axis}"),
-            format!("centre of mass {axis}"),
-            Dim::LENGTH,
-            (old.center_of_mass[i], new.center_of_mass[i]),
-            length,
-            tol,
-        )?);
-    }
-    let scale = pick(norm(&old.principal_moments), norm(&new.principal_moments));
-    for i in 0..3 {
-        out.push(compare(
-            format!("principal_moments.{}", i + 1),
-            format!("principal moment I{}", i + 1),
-            Dim::INERTIA,
-            (old.principal_moments[i], new.principal_moments[i]),
-            scale,
-            tol,
-        )?);
-    }
-    let scale = pick(norm(&flat(&old.inertia_com)), norm(&flat(&new.inertia_com)));
-    for (i, j, ij) in [
-        (0, 0, "xx"),
-        (1, 1, "yy"),
-        (2, 2, "zz"),
-        (0, 1, "xy"),
-        (0, 2, "xz"),
-        (1, 2, "yz"),
-    ] {
-        out.push(compare(
-            format!("inertia_com.{ij}"),
-            format!("I{ij}"),
-            Dim::INERTIA,
-            (old.inertia_com[i][j], new.inertia_com[i][j]),
-            scale,
-            tol,
-        )?);
+    let mut out = Vec::new();
+    for info in &QUANTITIES {
+        let (Some(o), Some(n)) = (old.value(info.quantity), new.value(info.quantity)) else {
+            continue;
+        };
+        let scale = match (info.diff, info.layout) {
+            (Shown::No, _) => continue,
+            (Shown::Angle, _) => {
+                let (Some((o, o_axes)), Some((n, n_axes))) =
+                    (&old.principal_axes, &new.principal_axes)
+                else {
+                    continue;
+                };
+                // Each axis both files determine: the angle between them
+                // (radians, itself the relative change; "old" is 0).
+                for k in (0..3).filter(|&k| o_axes[k] && n_axes[k]) {
+                    let c = component(info.layout, 3 * k);
+                    let angle = super::check::angle_between(&o[k], &n[k]);
+                    out.push(compare(
+                        format!("{}.{c}", info.key),
+                        format!("{}{c}", info.label),
+                        info.dim,
+                        (0.0, angle),
+                        1.0,
+                        tol,
+                    )?);
+                }
+                continue;
+            }
+            (Shown::Position, _) => length,
+            (Shown::Own, Layout::Scalar) => pick(o[0].abs(), n[0].abs()),
+            (Shown::Own, Layout::Vector | Layout::Ordered | Layout::Matrix | Layout::Axes) => {
+                pick(norm(&o), norm(&n))
+            }
+        };
+        let components: Vec<usize> = match info.layout {
+            Layout::Scalar | Layout::Vector | Layout::Ordered => (0..info.layout.count()).collect(),
+            Layout::Matrix => UPPER.iter().map(|&(_, i, j)| 3 * i + j).collect(),
+            Layout::Axes => unreachable!("invariant: axes are shown by angle, above"),
+        };
+        for k in components {
+            let c = component(info.layout, k);
+            let name = if c.is_empty() {
+                info.key.to_string()
+            } else {
+                format!("{}.{c}", info.key)
+            };
+            let label = format!("{}{c}", info.label);
+            out.push(compare(name, label, info.dim, (o[k], n[k]), scale, tol)?);
+        }
     }
     Ok(out)
 }

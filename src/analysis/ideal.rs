@@ -9,7 +9,7 @@
 //!
 //! Neither changes the composition: both are read off the composed body.
 
-use super::summary::{Blame, Contribution, SummaryError};
+use super::errors::{Blame, Contribution, SummaryError};
 use crate::compose::{self, Precision, Principal};
 use crate::mass::Body;
 use crate::model::Model;
@@ -144,8 +144,8 @@ pub fn idealisation(
     let principal = |c: &M3<DD>| {
         compose::principal(c, precision).ok_or(SummaryError::NotFinite {
             what: "principal moments of the solid body",
-            blame: crate::analysis::summary::Blame::Parts(
-                crate::analysis::summary::Contribution::SecondMoment,
+            blame: crate::analysis::errors::Blame::Parts(
+                crate::analysis::errors::Contribution::SecondMoment,
             ),
         })
     };

@@ -9,10 +9,13 @@
 //! and the other way round. The commands add only what is theirs: `check`
 //! evaluates expectations (`check`), `diff` compares two summaries (`diff`).
 
+pub mod bless;
 pub mod budget;
 pub mod check;
 pub mod diff;
+pub mod errors;
 pub mod ideal;
+pub mod sigma;
 pub mod summary;
 pub mod uncertainty;
 

@@ -5,12 +5,11 @@
 pub mod accuracy;
 mod axes;
 mod cut_outs;
-mod errors;
 mod rows;
 
 pub use accuracy::{Accuracy, AccuracyWarning, PrecisionChoice};
 
-pub use errors::{Blame, Contribution, SummaryError};
+pub use super::errors::{Blame, Contribution, SummaryError};
 pub use rows::{Assemblies, Parts};
 
 use super::Products;
@@ -18,9 +17,11 @@ use super::ideal;
 use crate::bounds;
 use crate::compose::{self, Precision, Principal};
 use crate::mass::inertia_of_rows;
+use crate::model::expect::Target;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
 use crate::part::SiFactors;
+use crate::quantity::Quantity;
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -171,7 +172,7 @@ pub struct Summary {
     pub idealisation: Option<ideal::Idealisation>,
     /// The uncertainty from the file's tolerances (`--uncertainty`).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub uncertainty: Option<super::uncertainty::Uncertainty>,
+    pub uncertainty: Option<super::sigma::Uncertainty>,
     /// How far each value may lie from the exact value for the file's
     /// numbers, for the arithmetic used (`bounds`): absolute, SI.
     pub error_bounds: bounds::ErrorBounds,
@@ -198,6 +199,33 @@ pub struct Summary {
     /// something of it (`predicted_mass`, …).
     #[serde(skip)]
     pub predicted: Option<Box<Summary>>,
+}
+
+impl Summary {
+    /// The value an `[expect]` target reads, SI: component `k` of a
+    /// quantity (row-major for a matrix); NaN where it was not computed
+    /// (no ω, no predicted body).
+    pub fn value(&self, t: Target) -> f64 {
+        let k = t.component;
+        let row = |m: &[[f64; 3]; 3]| m[k / 3][k % 3];
+        // The predicted body's, `load` made when the file expects it.
+        let predicted = |f: &dyn Fn(&Summary) -> f64| self.predicted.as_deref().map_or(f64::NAN, f);
+        match t.quantity {
+            Quantity::Mass => self.mass,
+            Quantity::CenterOfMass => self.center_of_mass[k],
+            Quantity::PrincipalMoments => self.principal_moments[k],
+            Quantity::InertiaCom => row(&self.inertia_com),
+            Quantity::InertiaRef => row(&self.inertia_ref),
+            Quantity::RadiiOfGyration => self.radii_of_gyration[k],
+            Quantity::RadiiOfGyrationAxes => self.radii_of_gyration_axes[k],
+            Quantity::AngularMomentum => self.angular_momentum.map_or(f64::NAN, |h| h[k]),
+            Quantity::KineticEnergy => self.kinetic_energy.unwrap_or(f64::NAN),
+            Quantity::PredictedMass => predicted(&|p| p.mass),
+            Quantity::PredictedCenterOfMass => predicted(&|p| p.center_of_mass[k]),
+            Quantity::PredictedInertiaCom => predicted(&|p| row(&p.inertia_com)),
+            Quantity::PrincipalAxes => row(&self.principal_axes),
+        }
+    }
 }
 
 fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {

@@ -25,7 +25,9 @@ use super::summary::Summary;
 use crate::model::Model;
 use crate::model::expect::Target;
 use crate::numeric::{M3, Real};
-use serde::Serialize;
+use crate::quantity::Layout;
+
+pub use super::sigma::{Contributor, Exceed, Output, Predicted, Uncertainty};
 
 mod linear;
 mod montecarlo;
@@ -56,6 +58,8 @@ pub const OUTPUTS: [&str; 13] = [
     "principal_moments.3",
 ];
 const N: usize = OUTPUTS.len();
+// The table numbers the σ outputs (`quantity::Info::sigma`) of a body of N.
+const _: () = assert!(N == crate::quantity::OUTPUTS);
 /// The predicted body's outputs (a weight statement's, `budget`), as
 /// `[expect]` names those it holds.
 pub const PREDICTED: [&str; N] = [
@@ -85,82 +89,6 @@ fn name_of(o: usize) -> &'static str {
 const ENTRIES: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
 /// How many sources each output names as contributing most.
 const TOP: usize = 3;
-
-/// One output's uncertainty.
-#[derive(Debug, Clone, Serialize)]
-pub struct Output {
-    /// As `[expect]` names it: `mass`, `center_of_mass.z`, …
-    pub quantity: &'static str,
-    /// SI: kg, m or kg·m².
-    pub nominal: f64,
-    /// One standard deviation, SI.
-    pub sigma: f64,
-    /// Monte Carlo: the samples' mean and 5th, 50th and 95th percentiles.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub mean: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub percentiles: Option<[f64; 3]>,
-    /// The sources that contribute most to its variance, largest first.
-    pub contributors: Vec<Contributor>,
-}
-
-#[derive(Debug, Clone, Serialize)]
-pub struct Contributor {
-    /// `PART: KEY ± AMOUNT`, the part by its path.
-    pub source: String,
-    /// Its share of the variance, from 0 to 1.
-    pub share: f64,
-}
-
-/// The chance that an `[expect]` entry's value falls outside its bounds.
-#[derive(Debug, Clone, Serialize)]
-pub struct Exceed {
-    pub quantity: String,
-    pub line: usize,
-    pub column: usize,
-    pub probability: f64,
-}
-
-/// The uncertainty of a body: JSON `uncertainty`.
-#[derive(Debug, Clone, Serialize)]
-pub struct Uncertainty {
-    /// `linear` or `montecarlo`.
-    pub method: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub samples: Option<usize>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub seed: Option<u64>,
-    /// Monte Carlo: samples in which a part's size, radius, density or
-    /// mass fell to zero or below, or its inner radius past its outer
-    /// (left out of the statistics).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub rejected: Option<usize>,
-    /// Independent sources of uncertainty (see the module's comment).
-    pub sources: usize,
-    pub outputs: Vec<Output>,
-    /// The covariance of the outputs, rows and columns in `outputs`'
-    /// order, SI.
-    pub covariance: Vec<Vec<f64>>,
-    /// The predicted body's (a file with a weight statement that `check`
-    /// holds: `predicted_*` expectations or `[budget] limit`).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub predicted: Option<Predicted>,
-    /// For each `[expect]` entry on an output, and `[budget] limit`.
-    pub exceed: Vec<Exceed>,
-    /// Principal moments equal within tolerance: their derivatives are
-    /// not defined, and their σ is first order in a direction the
-    /// tolerances choose (the axis the nominal solution picked).
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub equal_moments: Vec<usize>,
-}
-
-/// The predicted body's uncertainty: its outputs (`PREDICTED`) and their
-/// covariance.
-#[derive(Debug, Clone, Serialize)]
-pub struct Predicted {
-    pub outputs: Vec<Output>,
-    pub covariance: Vec<Vec<f64>>,
-}
 
 /// The body's sums about c₀, or their derivatives.
 #[derive(Clone, Copy, Default)]
@@ -371,14 +299,7 @@ pub fn propagate(
         .iter()
         .filter_map(|c| {
             let o = output_of(c.target)?;
-            (o < N * views.len()).then(|| {
-                (
-                    c.name.clone(),
-                    c.span.start,
-                    super::check::limits(&c.bound),
-                    o,
-                )
-            })
+            (o < N * views.len()).then(|| (c.name.clone(), c.span.start, c.bound.limits(), o))
         })
         .collect();
     if let (Some(limit), true) = (&model.budget, views.len() == 2) {
@@ -578,22 +499,46 @@ fn split(
     (outputs, covariance, predicted)
 }
 
-/// The output an `[expect]` target reads, if it is one.
+/// The output an `[expect]` target reads, if its σ is propagated
+/// (`quantity::Info::sigma`).
 pub fn output_of(t: Target) -> Option<usize> {
-    match t {
-        Target::Mass => Some(0),
-        Target::CenterOfMass(i) => Some(1 + i),
-        Target::InertiaCom(a, b) => ENTRIES
-            .iter()
-            .position(|e| *e == (a.min(b), a.max(b)))
-            .map(|k| 4 + k),
-        Target::PrincipalMoment(i) => Some(10 + i),
-        Target::PredictedMass => Some(N),
-        Target::PredictedCenterOfMass(i) => Some(N + 1 + i),
-        Target::PredictedInertiaCom(a, b) => ENTRIES
-            .iter()
-            .position(|e| *e == (a.min(b), a.max(b)))
-            .map(|k| N + 4 + k),
-        _ => None,
+    let info = t.quantity.info();
+    let first = info.sigma?;
+    let k = t.component;
+    match info.layout {
+        Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => Some(first + k),
+        Layout::Matrix => {
+            let (a, b) = (k / 3, k % 3);
+            ENTRIES
+                .iter()
+                .position(|e| *e == (a.min(b), a.max(b)))
+                .map(|e| first + e)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_output_is_named_as_the_quantity_table_names_its_target() {
+        for info in &crate::quantity::QUANTITIES {
+            for k in 0..info.layout.count() {
+                let t = Target {
+                    quantity: info.quantity,
+                    component: k,
+                };
+                let Some(o) = output_of(t) else { continue };
+                // An entry below a matrix's diagonal is the one above it.
+                let mut c: Vec<char> = crate::quantity::component(info.layout, k).chars().collect();
+                let named = name_of(o);
+                let (stem, last) = named.rsplit_once('.').unwrap_or((named, ""));
+                let mut last: Vec<char> = last.chars().collect();
+                c.sort_unstable();
+                last.sort_unstable();
+                assert_eq!((stem, c), (info.key, last), "output {o}");
+            }
+        }
     }
 }

@@ -5,7 +5,8 @@
 //! check fails, 2 when any file cannot be read or is invalid; every other
 //! file is still checked.
 
-use super::{Outcome, bless};
+use super::Outcome;
+use crate::analysis::bless;
 use crate::analysis::check::{FileResult, Status, check_loaded};
 use crate::analysis::summary::Accuracy;
 use crate::analysis::{self, Settings};

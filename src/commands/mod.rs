@@ -3,7 +3,6 @@
 //! pipeline (`analysis`) and hands its result to the output layer
 //! (`render`). Only `main.rs` turns an `Outcome` into a process exit.
 
-pub mod bless;
 pub mod budget;
 pub mod check;
 pub mod diff;

@@ -6,41 +6,27 @@
 //! `inertia_com.xy`, `principal_moments.1`) give single checks.
 
 use super::Ctx;
-use super::raw::{ExpectValue, Quantity, RawExpect, RawExpectation};
+use super::raw::{ExpectValue, Quantity as Number, RawExpect, RawExpectation};
 use crate::diag::Diagnostic;
+use crate::quantity::{ALIASES, Layout, Needs, ORDINALS, QUANTITIES, Quantity, XYZ};
+use crate::tolerance::AXES_ORTHONORMAL;
 use crate::units::Dim;
 use std::ops::Range;
 use toml::Spanned;
 
-/// The reported value a check reads: quantity and component indices.
+/// The reported value a check reads: a quantity and the index of its
+/// component (row-major for a matrix; 0 for a scalar).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Target {
-    Mass,
-    CenterOfMass(usize),
-    PrincipalMoment(usize),
-    InertiaCom(usize, usize),
-    InertiaRef(usize, usize),
-    RadiusOfGyration(usize),
-    /// About the x, y or z axis through the centre of mass.
-    RadiusOfGyrationAxis(usize),
-    AngularMomentum(usize),
-    KineticEnergy,
-    /// The predicted body's (basic and growth, `analysis::budget`).
-    PredictedMass,
-    PredictedCenterOfMass(usize),
-    PredictedInertiaCom(usize, usize),
+pub struct Target {
+    pub quantity: Quantity,
+    pub component: usize,
 }
 
 impl Target {
     /// Whether it reads the predicted body, which is composed only when a
     /// file expects something of it.
     pub fn is_predicted(self) -> bool {
-        matches!(
-            self,
-            Target::PredictedMass
-                | Target::PredictedCenterOfMass(_)
-                | Target::PredictedInertiaCom(..)
-        )
+        self.quantity.info().needs == Needs::Predicted
     }
 }
 
@@ -57,6 +43,30 @@ pub enum Bound {
     Value { value: f64, tol: Tol },
     /// `min` and/or `max`.
     Range { min: Option<f64>, max: Option<f64> },
+    /// Axes (unit, orthogonal rows) within an angle `tol`, radians: the
+    /// measured value is the largest angle between an expected axis and
+    /// the computed one (`analysis::check::axes`).
+    Axes { rows: [[f64; 3]; 3], tol: f64 },
+}
+
+impl Bound {
+    /// The interval [lo, hi] a value must lie in, SI.
+    pub fn limits(&self) -> (f64, f64) {
+        match *self {
+            Bound::Value { value, tol } => {
+                let t = match tol {
+                    Tol::Abs(t) => t,
+                    Tol::Rel(r) => r * value.abs(),
+                };
+                (value - t, value + t)
+            }
+            Bound::Range { min, max } => (
+                min.unwrap_or(f64::NEG_INFINITY),
+                max.unwrap_or(f64::INFINITY),
+            ),
+            Bound::Axes { tol, .. } => (0.0, tol),
+        }
+    }
 }
 
 /// One scalar expectation, in SI.
@@ -71,57 +81,40 @@ pub struct Check {
     pub span: Range<usize>,
 }
 
-#[derive(Clone, Copy, PartialEq)]
-enum Shape {
-    Scalar,
-    /// Components x, y, z in file axes.
-    Vector,
-    /// Components 1, 2, 3 in ascending order.
-    Ordered,
-    /// Components xx … yz of a symmetric matrix.
-    Matrix,
+/// An expectation's component keys, in the order they are read: key, the
+/// shape it belongs to, its index in that shape's value.
+fn components(
+    e: &RawExpectation,
+) -> [(
+    &'static str,
+    Option<&Spanned<RawExpectation>>,
+    Layout,
+    usize,
+); 12] {
+    fn c(c: &Option<Box<Spanned<RawExpectation>>>) -> Option<&Spanned<RawExpectation>> {
+        c.as_deref()
+    }
+    [
+        ("x", c(&e.x), Layout::Vector, 0),
+        ("y", c(&e.y), Layout::Vector, 1),
+        ("z", c(&e.z), Layout::Vector, 2),
+        ("1", c(&e.c1), Layout::Ordered, 0),
+        ("2", c(&e.c2), Layout::Ordered, 1),
+        ("3", c(&e.c3), Layout::Ordered, 2),
+        ("xx", c(&e.xx), Layout::Matrix, 0),
+        ("yy", c(&e.yy), Layout::Matrix, 4),
+        ("zz", c(&e.zz), Layout::Matrix, 8),
+        ("xy", c(&e.xy), Layout::Matrix, 1),
+        ("xz", c(&e.xz), Layout::Matrix, 2),
+        ("yz", c(&e.yz), Layout::Matrix, 5),
+    ]
 }
-
-/// How a top-level quantity's checks read the summary.
-type Make = fn(usize, usize) -> Target;
-/// A top-level `[expect]` key: name, entry, shape, dimension, target.
-type Entry<'a> = (
-    &'static str,
-    &'a Option<Spanned<RawExpectation>>,
-    Shape,
-    Dim,
-    Make,
-);
-/// A component key: name, entry, the shape it belongs to, indices.
-type Component<'a> = (
-    &'static str,
-    &'a Option<Box<Spanned<RawExpectation>>>,
-    Shape,
-    usize,
-    usize,
-);
-
-const XYZ: [&str; 3] = ["x", "y", "z"];
-const ORD: [&str; 3] = ["1", "2", "3"];
 
 /// The first component key an expectation has, with where it is.
 fn first_component(e: &RawExpectation) -> Option<(&'static str, Range<usize>)> {
-    [
-        ("x", &e.x),
-        ("y", &e.y),
-        ("z", &e.z),
-        ("1", &e.c1),
-        ("2", &e.c2),
-        ("3", &e.c3),
-        ("xx", &e.xx),
-        ("yy", &e.yy),
-        ("zz", &e.zz),
-        ("xy", &e.xy),
-        ("xz", &e.xz),
-        ("yz", &e.yz),
-    ]
-    .into_iter()
-    .find_map(|(k, c)| c.as_ref().map(|c| (k, c.span())))
+    components(e)
+        .into_iter()
+        .find_map(|(k, c, _, _)| c.map(|c| (k, c.span())))
 }
 
 impl Ctx<'_> {
@@ -132,109 +125,12 @@ impl Ctx<'_> {
     ) -> Result<Vec<Check>, Diagnostic> {
         let e = raw.get_ref();
         let mut out = Vec::new();
-        let entries: [Entry<'_>; 18] = [
-            ("mass", &e.mass, Shape::Scalar, Dim::MASS, |_, _| {
-                Target::Mass
-            }),
-            (
-                "center_of_mass",
-                &e.center_of_mass,
-                Shape::Vector,
-                Dim::LENGTH,
-                |i, _| Target::CenterOfMass(i),
-            ),
-            (
-                "principal_moments",
-                &e.principal_moments,
-                Shape::Ordered,
-                Dim::INERTIA,
-                |i, _| Target::PrincipalMoment(i),
-            ),
-            (
-                "inertia_com",
-                &e.inertia_com,
-                Shape::Matrix,
-                Dim::INERTIA,
-                Target::InertiaCom,
-            ),
-            (
-                "inertia_ref",
-                &e.inertia_ref,
-                Shape::Matrix,
-                Dim::INERTIA,
-                Target::InertiaRef,
-            ),
-            (
-                "radii_of_gyration",
-                &e.radii_of_gyration,
-                Shape::Ordered,
-                Dim::LENGTH,
-                |i, _| Target::RadiusOfGyration(i),
-            ),
-            (
-                "radii_of_gyration_axes",
-                &e.radii_of_gyration_axes,
-                Shape::Vector,
-                Dim::LENGTH,
-                |i, _| Target::RadiusOfGyrationAxis(i),
-            ),
-            (
-                "angular_momentum",
-                &e.angular_momentum,
-                Shape::Vector,
-                Dim::ANGULAR_MOMENTUM,
-                |i, _| Target::AngularMomentum(i),
-            ),
-            (
-                "kinetic_energy",
-                &e.kinetic_energy,
-                Shape::Scalar,
-                Dim::ENERGY,
-                |_, _| Target::KineticEnergy,
-            ),
-            (
-                "predicted_mass",
-                &e.predicted_mass,
-                Shape::Scalar,
-                Dim::MASS,
-                |_, _| Target::PredictedMass,
-            ),
-            (
-                "predicted_center_of_mass",
-                &e.predicted_center_of_mass,
-                Shape::Vector,
-                Dim::LENGTH,
-                |i, _| Target::PredictedCenterOfMass(i),
-            ),
-            (
-                "predicted_inertia_com",
-                &e.predicted_inertia_com,
-                Shape::Matrix,
-                Dim::INERTIA,
-                Target::PredictedInertiaCom,
-            ),
-            ("Ixx", &e.ixx, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(0, 0)
-            }),
-            ("Iyy", &e.iyy, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(1, 1)
-            }),
-            ("Izz", &e.izz, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(2, 2)
-            }),
-            ("Ixy", &e.ixy, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(0, 1)
-            }),
-            ("Ixz", &e.ixz, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(0, 2)
-            }),
-            ("Iyz", &e.iyz, Shape::Scalar, Dim::INERTIA, |_, _| {
-                Target::InertiaCom(1, 2)
-            }),
-        ];
-        for (name, entry, shape, dim, make) in entries {
-            let Some(entry) = entry else { continue };
-            if !have_omega && matches!(name, "angular_momentum" | "kinetic_energy") {
+        for info in &QUANTITIES {
+            let Some(entry) = e.entry(info.quantity) else {
+                continue;
+            };
+            let name = info.key;
+            if !have_omega && info.needs == Needs::Omega {
                 return Err(self
                     .err(
                         entry.span(),
@@ -242,7 +138,21 @@ impl Ctx<'_> {
                     )
                     .help("the expectation is about the body turning at ω"));
             }
-            self.expectation(name, entry, shape, dim, make, &mut out)?;
+            let quantity = info.quantity;
+            let at = move |component| Target {
+                quantity,
+                component,
+            };
+            self.expectation(name, entry, info.layout, info.dim, &at, &mut out)?;
+        }
+        for (&(name, quantity, i, j), entry) in ALIASES.iter().zip(e.aliases()) {
+            let Some(entry) = entry else { continue };
+            let info = quantity.info();
+            let target = Target {
+                quantity,
+                component: 3 * i + j,
+            };
+            self.expectation(name, entry, Layout::Scalar, info.dim, &|_| target, &mut out)?;
         }
         // Report in file order (stable: components keep their order).
         out.sort_by_key(|c| c.span.start);
@@ -253,50 +163,39 @@ impl Ctx<'_> {
         &self,
         name: &str,
         raw: &Spanned<RawExpectation>,
-        shape: Shape,
+        shape: Layout,
         dim: Dim,
-        make: fn(usize, usize) -> Target,
+        at: &dyn Fn(usize) -> Target,
         out: &mut Vec<Check>,
     ) -> Result<(), Diagnostic> {
         let e = raw.get_ref();
         let span = raw.span();
-        // Component keys, each one scalar check.
-        let components: [Component<'_>; 12] = [
-            ("x", &e.x, Shape::Vector, 0, 0),
-            ("y", &e.y, Shape::Vector, 1, 0),
-            ("z", &e.z, Shape::Vector, 2, 0),
-            ("1", &e.c1, Shape::Ordered, 0, 0),
-            ("2", &e.c2, Shape::Ordered, 1, 0),
-            ("3", &e.c3, Shape::Ordered, 2, 0),
-            ("xx", &e.xx, Shape::Matrix, 0, 0),
-            ("yy", &e.yy, Shape::Matrix, 1, 1),
-            ("zz", &e.zz, Shape::Matrix, 2, 2),
-            ("xy", &e.xy, Shape::Matrix, 0, 1),
-            ("xz", &e.xz, Shape::Matrix, 0, 2),
-            ("yz", &e.yz, Shape::Matrix, 1, 2),
-        ];
         let mut any_component = false;
-        for (key, c, cshape, i, j) in components {
+        // Component keys, each one scalar check.
+        for (key, c, cshape, k) in components(e) {
             let Some(c) = c else { continue };
             if cshape != shape {
                 let message = match shape {
-                    Shape::Scalar => {
+                    Layout::Scalar => {
                         format!("`{name}` is a single number and has no component `{key}`")
                     }
-                    Shape::Vector => {
+                    Layout::Vector => {
                         format!("`{name}` has no component `{key}`; its components are x, y, z")
                     }
-                    Shape::Ordered => format!(
+                    Layout::Ordered => format!(
                         "`{name}` has no component `{key}`; its components are 1, 2, 3 (ascending)"
                     ),
-                    Shape::Matrix => format!(
+                    Layout::Matrix => format!(
                         "`{name}` has no component `{key}`; its components are xx, yy, zz, xy, xz, yz"
+                    ),
+                    Layout::Axes => format!(
+                        "`{name}` has no component `{key}`; give its three rows in `value`, with `tol_degrees`"
                     ),
                 };
                 return Err(self.err(c.span(), message));
             }
             any_component = true;
-            let t = make(i, j);
+            let t = at(k);
             let n = format!("{name}.{key}");
             // A component is a single number: one level deeper
             // (`center_of_mass.x.y`) is an error, never a check of nothing.
@@ -306,16 +205,15 @@ impl Ctx<'_> {
                     format!("`{n}` is a single number and has no component `{sub}`"),
                 ));
             }
-            self.expectation_leaf(&n, c, Shape::Scalar, dim, &|_| t, out)?;
+            self.expectation_leaf(&n, c, Layout::Scalar, dim, &|_| t, out)?;
         }
-        let has_own = e.value.is_some() || e.tol.is_some() || e.min.is_some() || e.max.is_some();
+        let has_own = e.value.is_some()
+            || e.tol.is_some()
+            || e.tol_degrees.is_some()
+            || e.min.is_some()
+            || e.max.is_some();
         if has_own {
-            let targets = move |k: usize| match shape {
-                Shape::Scalar => make(0, 0),
-                Shape::Vector | Shape::Ordered => make(k, 0),
-                Shape::Matrix => make(k / 3, k % 3),
-            };
-            self.expectation_leaf(name, raw, shape, dim, &targets, out)?;
+            self.expectation_leaf(name, raw, shape, dim, at, out)?;
         } else if !any_component {
             return Err(self
                 .err(span, format!("expectation `{name}` is empty"))
@@ -329,21 +227,31 @@ impl Ctx<'_> {
         &self,
         name: &str,
         raw: &Spanned<RawExpectation>,
-        shape: Shape,
+        shape: Layout,
         dim: Dim,
         target: &dyn Fn(usize) -> Target,
         out: &mut Vec<Check>,
     ) -> Result<(), Diagnostic> {
         let e = raw.get_ref();
         let span = raw.span();
+        if shape == Layout::Axes {
+            return self.expected_axes(name, raw, target(0), out);
+        }
+        if let Some(t) = &e.tol_degrees {
+            return Err(self.err(
+                t.span(),
+                format!("`{name}`: `tol_degrees` is for `principal_axes`; give `tol`"),
+            ));
+        }
         let names: Vec<String> = match shape {
-            Shape::Scalar => vec![name.to_string()],
-            Shape::Vector => XYZ.iter().map(|c| format!("{name}.{c}")).collect(),
-            Shape::Ordered => ORD.iter().map(|c| format!("{name}.{c}")).collect(),
-            Shape::Matrix => XYZ
+            Layout::Scalar => vec![name.to_string()],
+            Layout::Vector => XYZ.iter().map(|c| format!("{name}.{c}")).collect(),
+            Layout::Ordered => ORDINALS.iter().map(|c| format!("{name}.{c}")).collect(),
+            Layout::Matrix => XYZ
                 .iter()
                 .flat_map(|a| XYZ.iter().map(move |b| format!("{name}.{a}{b}")))
                 .collect(),
+            Layout::Axes => unreachable!("invariant: axes are read by `axes`, above"),
         };
         let bounds: Vec<Bound> = match (&e.value, &e.tol, &e.min, &e.max) {
             (Some(v), Some(t), None, None) => {
@@ -413,23 +321,23 @@ impl Ctx<'_> {
         name: &str,
         v: &Spanned<ExpectValue>,
         key: &str,
-        shape: Shape,
+        shape: Layout,
         dim: Dim,
     ) -> Result<Vec<f64>, Diagnostic> {
-        let q = |x: &Quantity| self.quantity(&Spanned::new(v.span(), x.clone()), key, dim);
+        let q = |x: &Number| self.quantity(&Spanned::new(v.span(), x.clone()), key, dim);
         let bad = |what: &str| self.err(v.span(), format!("`{name}`: `{key}` must be {what}"));
         match (shape, v.get_ref()) {
-            (Shape::Scalar, ExpectValue::One(x)) => Ok(vec![q(x)?]),
-            (Shape::Scalar, _) => Err(bad("a single number")),
-            (Shape::Vector | Shape::Ordered, ExpectValue::Many(xs)) if xs.len() == 3 => xs
+            (Layout::Scalar, ExpectValue::One(x)) => Ok(vec![q(x)?]),
+            (Layout::Scalar, _) => Err(bad("a single number")),
+            (Layout::Vector | Layout::Ordered, ExpectValue::Many(xs)) if xs.len() == 3 => xs
                 .iter()
                 .map(|x| match x {
                     ExpectValue::One(x) => q(x),
                     ExpectValue::Many(_) => Err(bad("an array of three numbers")),
                 })
                 .collect(),
-            (Shape::Vector | Shape::Ordered, _) => Err(bad("an array of three numbers")),
-            (Shape::Matrix, ExpectValue::Many(rows)) if rows.len() == 3 => {
+            (Layout::Vector | Layout::Ordered, _) => Err(bad("an array of three numbers")),
+            (Layout::Matrix | Layout::Axes, ExpectValue::Many(rows)) if rows.len() == 3 => {
                 let mut out = Vec::with_capacity(9);
                 for row in rows {
                     match row {
@@ -448,15 +356,117 @@ impl Ctx<'_> {
                 }
                 Ok(out)
             }
-            (Shape::Matrix, _) => Err(bad("three rows of three numbers")),
+            (Layout::Matrix | Layout::Axes, _) => Err(bad("three rows of three numbers")),
         }
+    }
+
+    /// An entry compared by angle (`principal_axes`): `value`, three unit,
+    /// orthogonal rows, and `tol_degrees`, an angle not negative.
+    fn expected_axes(
+        &self,
+        name: &str,
+        raw: &Spanned<RawExpectation>,
+        target: Target,
+        out: &mut Vec<Check>,
+    ) -> Result<(), Diagnostic> {
+        let e = raw.get_ref();
+        let example = "e.g. `principal_axes = { value = [[1, 0, 0], [0, 1, 0], [0, 0, 1]], tol_degrees = 0.5 }`";
+        if let Some(t) = &e.tol {
+            return Err(self
+                .err(
+                    t.span(),
+                    format!("`{name}` is compared by angle: give `tol_degrees`, not `tol`"),
+                )
+                .help(example));
+        }
+        if let Some(m) = e.min.as_ref().or(e.max.as_ref()) {
+            return Err(self
+                .err(
+                    m.span(),
+                    format!("`{name}` is compared by angle: give `value` and `tol_degrees`, not `min` or `max`"),
+                )
+                .help(example));
+        }
+        let (v, t) = match (&e.value, &e.tol_degrees) {
+            (Some(v), Some(t)) => (v, t),
+            (Some(v), None) => {
+                return Err(self
+                    .err(v.span(), format!("`{name}`: `value` needs `tol_degrees`"))
+                    .help(example));
+            }
+            (None, Some(t)) => {
+                return Err(self
+                    .err(
+                        t.span(),
+                        format!("`{name}`: `tol_degrees` goes with `value`"),
+                    )
+                    .help(example));
+            }
+            (None, None) => {
+                return Err(self
+                    .err(raw.span(), format!("expectation `{name}` is empty"))
+                    .help(example));
+            }
+        };
+        let tol = match t.get_ref() {
+            Number::Number(x) if x.is_finite() && *x >= 0.0 => *x,
+            Number::Number(x) if x.is_finite() => {
+                return Err(self.err(
+                    t.span(),
+                    format!("`{name}`: `tol_degrees` must not be negative, got {x}"),
+                ));
+            }
+            Number::Number(_) | Number::Text(_) => {
+                return Err(self.err(
+                    t.span(),
+                    format!("`{name}`: `tol_degrees` must be a finite number of degrees"),
+                ));
+            }
+        };
+        let flat = self.values(name, v, "value", Layout::Axes, Dim::DIMENSIONLESS)?;
+        let rows: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| flat[3 * i + j]));
+        let bad = |message: String| {
+            Err(self
+                .err(v.span(), format!("`{name}`: {message}"))
+                .help("each row is a principal axis: unit length, at right angles to the others"))
+        };
+        for (k, r) in rows.iter().enumerate() {
+            let n = crate::numeric::norm(r);
+            if !((n - 1.0).abs() <= AXES_ORTHONORMAL) {
+                return bad(format!(
+                    "row {} of `value` is not a unit vector (its length is {n})",
+                    k + 1
+                ));
+            }
+        }
+        for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+            let d: f64 = (0..3).map(|j| rows[a][j] * rows[b][j]).sum();
+            if !(d.abs() <= AXES_ORTHONORMAL) {
+                return bad(format!(
+                    "rows {} and {} of `value` are not at right angles (their dot product is {d})",
+                    a + 1,
+                    b + 1
+                ));
+            }
+        }
+        out.push(Check {
+            name: name.to_string(),
+            target,
+            bound: Bound::Axes {
+                rows,
+                tol: tol.to_radians(),
+            },
+            dim: Dim::DIMENSIONLESS,
+            span: raw.span(),
+        });
+        Ok(())
     }
 
     /// `tol`: a plain number (absolute, file units), `"0.5%"` (relative) or a
     /// quantity with its own unit (absolute).
-    fn tolerance(&self, t: &Spanned<Quantity>, dim: Dim) -> Result<Tol, Diagnostic> {
+    fn tolerance(&self, t: &Spanned<Number>, dim: Dim) -> Result<Tol, Diagnostic> {
         let tol = match t.get_ref() {
-            Quantity::Text(s) if s.trim_end().ends_with('%') => {
+            Number::Text(s) if s.trim_end().ends_with('%') => {
                 let num = s.trim_end().trim_end_matches('%').trim();
                 match num.parse::<f64>() {
                     Ok(p) if p.is_finite() => Tol::Rel(p / 100.0),

@@ -506,6 +506,9 @@ pub struct RawExpect {
     pub predicted_center_of_mass: Option<Spanned<RawExpectation>>,
     #[schemars(with = "Option<RawExpectation>")]
     pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
+    /// Three unit rows, compared by angle (`tol_degrees`).
+    #[schemars(with = "Option<RawExpectation>")]
+    pub principal_axes: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixx")]
     #[schemars(with = "Option<RawExpectation>")]
     pub ixx: Option<Spanned<RawExpectation>>,
@@ -526,6 +529,37 @@ pub struct RawExpect {
     pub iyz: Option<Spanned<RawExpectation>>,
 }
 
+impl RawExpect {
+    /// The entry of quantity `q`, if the file gives it.
+    pub fn entry(&self, q: crate::quantity::Quantity) -> Option<&Spanned<RawExpectation>> {
+        use crate::quantity::Quantity as Q;
+        match q {
+            Q::Mass => &self.mass,
+            Q::CenterOfMass => &self.center_of_mass,
+            Q::PrincipalMoments => &self.principal_moments,
+            Q::InertiaCom => &self.inertia_com,
+            Q::InertiaRef => &self.inertia_ref,
+            Q::RadiiOfGyration => &self.radii_of_gyration,
+            Q::RadiiOfGyrationAxes => &self.radii_of_gyration_axes,
+            Q::AngularMomentum => &self.angular_momentum,
+            Q::KineticEnergy => &self.kinetic_energy,
+            Q::PredictedMass => &self.predicted_mass,
+            Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
+            Q::PredictedInertiaCom => &self.predicted_inertia_com,
+            Q::PrincipalAxes => &self.principal_axes,
+        }
+        .as_ref()
+    }
+
+    /// The entries of `quantity::ALIASES` (`Ixx` …), in its order.
+    pub fn aliases(&self) -> [Option<&Spanned<RawExpectation>>; 6] {
+        [
+            &self.ixx, &self.iyy, &self.izz, &self.ixy, &self.ixz, &self.iyz,
+        ]
+        .map(Option::as_ref)
+    }
+}
+
 /// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
@@ -537,6 +571,9 @@ pub struct RawExpectation {
     pub value: Option<Spanned<ExpectValue>>,
     #[schemars(with = "Option<super::schema::Tolerance>")]
     pub tol: Option<Spanned<Quantity>>,
+    /// `principal_axes`'s tolerance: an angle in degrees, not negative.
+    #[schemars(with = "Option<f64>")]
+    pub tol_degrees: Option<Spanned<Quantity>>,
     #[schemars(with = "Option<ExpectValue>")]
     pub min: Option<Spanned<ExpectValue>>,
     #[schemars(with = "Option<ExpectValue>")]
@@ -669,6 +706,7 @@ impl Shift for RawExpectation {
         let RawExpectation {
             value,
             tol,
+            tol_degrees,
             min,
             max,
             x,
@@ -687,6 +725,7 @@ impl Shift for RawExpectation {
         RawExpectation {
             value: value.shift(by),
             tol: tol.shift(by),
+            tol_degrees: tol_degrees.shift(by),
             min: min.shift(by),
             max: max.shift(by),
             x: x.shift(by),
@@ -720,6 +759,7 @@ impl Shift for RawExpect {
             predicted_mass,
             predicted_center_of_mass,
             predicted_inertia_com,
+            principal_axes,
             ixx,
             iyy,
             izz,
@@ -740,6 +780,7 @@ impl Shift for RawExpect {
             predicted_mass: predicted_mass.shift(by),
             predicted_center_of_mass: predicted_center_of_mass.shift(by),
             predicted_inertia_com: predicted_inertia_com.shift(by),
+            principal_axes: principal_axes.shift(by),
             ixx: ixx.shift(by),
             iyy: iyy.shift(by),
             izz: izz.shift(by),

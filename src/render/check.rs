@@ -276,6 +276,28 @@ pub fn failure(c: &CheckResult) -> String {
                 show(lo - m)
             )
         }
+        Bound::Axes { tol, .. } => {
+            let axis = c.worst_axis.unwrap_or(0);
+            // Where two moments are equal only the third axis is
+            // determined, and compared; the message says so.
+            let only = match c.compared_axes.as_deref() {
+                Some([k]) => {
+                    let pair: Vec<String> =
+                        (1..=3).filter(|j| j != k).map(|j| j.to_string()).collect();
+                    format!(
+                        "; principal moments {} are equal within their error bounds, so only axis {k} is compared",
+                        pair.join(" and ")
+                    )
+                }
+                Some(_) | None => String::new(),
+            };
+            format!(
+                "{} axis {axis} is {}° from the expected axis, beyond `tol_degrees` {}°{only}",
+                c.quantity,
+                fmt_num(m.to_degrees()),
+                fmt_num(tol.to_degrees())
+            )
+        }
         Bound::Range { .. } => {
             format!(
                 "{} {} is above the maximum {} (by {})",

@@ -485,7 +485,14 @@ fn json_carries_every_documented_key() {
         .iter()
         .map(|q| q["quantity"].as_str().unwrap())
         .collect();
-    assert_eq!(got, QUANTITIES);
+    // Then the turn of each principal axis both bodies determine.
+    assert_eq!(got[..QUANTITIES.len()], QUANTITIES);
+    assert!(
+        got[QUANTITIES.len()..]
+            .iter()
+            .all(|q| q.starts_with("principal_axes.")),
+        "{got:?}"
+    );
     for x in v["quantities"].as_array().unwrap() {
         for key in ["old", "new", "abs_change"] {
             assert!(x[key].is_number(), "{key} in {x}");

@@ -886,9 +886,11 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
         prop::collection::vec(part(l), 1..=4),
         prop::option::weighted(0.5, analysis(l)),
         prop::option::weighted(0.1, (value(l), prop::sample::select(vec!["min", "max"]))),
+        // `principal_axes`: a first row and `tol_degrees` of any value.
+        prop::option::weighted(0.1, (value(l), value(l))),
         Just(l),
     )
-        .prop_map(|(name, units, material, parts, analysis, expect, l)| {
+        .prop_map(|(name, units, material, parts, analysis, expect, axes, l)| {
             let mut out = vec![format!("# hostility {l}")];
             if let Some(n) = name {
                 out.push(format!("name = \"{n}\""));
@@ -905,8 +907,16 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
             if let Some(a) = analysis {
                 out.push(format!("\n{a}"));
             }
+            if expect.is_some() || axes.is_some() {
+                out.push("\n[expect]".to_string());
+            }
             if let Some((v, bound)) = expect {
-                out.push(format!("\n[expect]\nmass = {{ {bound} = {v} }}"));
+                out.push(format!("mass = {{ {bound} = {v} }}"));
+            }
+            if let Some((x, tol)) = axes {
+                out.push(format!(
+                    "principal_axes = {{ value = [[{x}, 0, 0], [0, 1, 0], [0, 0, 1]], tol_degrees = {tol} }}"
+                ));
             }
             out.join("\n") + "\n"
         })

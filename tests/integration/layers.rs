@@ -294,7 +294,29 @@ fn circles() -> Vec<Vec<String>> {
             }
         }
     }
-    // Strongly connected components (Tarjan), those of two files or more.
+    let out = components(&edges);
+    // Each circle as its arrows, `a -> b`, sorted.
+    out.into_iter()
+        .map(|scc| {
+            let mut arrows: Vec<String> = scc
+                .iter()
+                .flat_map(|&a| {
+                    edges[a]
+                        .iter()
+                        .filter(|b| scc.contains(b))
+                        .map(move |&b| (a, b))
+                })
+                .map(|(a, b)| format!("{} -> {}", files[a].display(), files[b].display()))
+                .collect();
+            arrows.sort();
+            arrows
+        })
+        .collect()
+}
+
+/// The strongly connected components of two nodes or more (Tarjan): the
+/// circles of a graph given as each node's arrows.
+fn components(edges: &[Vec<usize>]) -> Vec<Vec<usize>> {
     struct Tarjan<'a> {
         edges: &'a [Vec<usize>],
         index: Vec<Option<usize>>,
@@ -336,9 +358,9 @@ fn circles() -> Vec<Vec<String>> {
             }
         }
     }
-    let n = files.len();
+    let n = edges.len();
     let mut t = Tarjan {
-        edges: &edges,
+        edges,
         index: vec![None; n],
         low: vec![0; n],
         stack: Vec::new(),
@@ -351,24 +373,7 @@ fn circles() -> Vec<Vec<String>> {
             t.visit(v);
         }
     }
-    // Each circle as its arrows, `a -> b`, sorted.
     t.out
-        .into_iter()
-        .map(|scc| {
-            let mut arrows: Vec<String> = scc
-                .iter()
-                .flat_map(|&a| {
-                    edges[a]
-                        .iter()
-                        .filter(|b| scc.contains(b))
-                        .map(move |&b| (a, b))
-                })
-                .map(|(a, b)| format!("{} -> {}", files[a].display(), files[b].display()))
-                .collect();
-            arrows.sort();
-            arrows
-        })
-        .collect()
 }
 
 /// No files of src/ import each other in a circle, inside a folder or
@@ -377,27 +382,7 @@ fn circles() -> Vec<Vec<String>> {
 #[test]
 fn no_files_import_each_other_in_a_circle() {
     let found = circles();
-    // NOTE: the one circle left, analysis's summary ↔ uncertainty ↔ check
-    // ↔ budget ↔ ideal, is being untied with the table of quantities
-    // (issue 29, item 3); this list only shrinks.
-    let known: &[&str] = &[
-        "src/analysis/budget.rs -> src/analysis/summary.rs",
-        "src/analysis/check.rs -> src/analysis/budget.rs",
-        "src/analysis/check.rs -> src/analysis/summary.rs",
-        "src/analysis/ideal.rs -> src/analysis/summary.rs",
-        "src/analysis/summary.rs -> src/analysis/ideal.rs",
-        "src/analysis/summary.rs -> src/analysis/summary/rows.rs",
-        "src/analysis/summary.rs -> src/analysis/uncertainty.rs",
-        "src/analysis/summary/rows.rs -> src/analysis/ideal.rs",
-        "src/analysis/uncertainty.rs -> src/analysis/budget.rs",
-        "src/analysis/uncertainty.rs -> src/analysis/check.rs",
-        "src/analysis/uncertainty.rs -> src/analysis/summary.rs",
-    ];
-    let new: Vec<&Vec<String>> = found
-        .iter()
-        .filter(|c| c.iter().any(|a| !known.contains(&a.as_str())))
-        .collect();
-    assert!(new.is_empty(), "import circles: {new:#?}");
+    assert!(found.is_empty(), "import circles: {found:#?}");
 }
 
 /// The circle finder finds a circle: two files of a folder naming each
@@ -424,4 +409,17 @@ fn the_circle_finder_reads_both_kinds_of_path() {
             .any(|s| s.contains("comment") || s.contains("string")),
         "{strs:?}"
     );
+}
+
+/// The circle finder finds a circle and nothing else: a → b → c → a and
+/// a tail c → d are one circle of three.
+#[test]
+fn the_circle_finder_finds_a_circle_and_only_it() {
+    let edges = vec![vec![1], vec![2], vec![0, 3], vec![]];
+    let mut found = components(&edges);
+    for c in &mut found {
+        c.sort();
+    }
+    assert_eq!(found, vec![vec![0, 1, 2]]);
+    assert!(components(&[vec![1], vec![2], vec![]]).is_empty());
 }

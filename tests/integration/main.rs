@@ -18,6 +18,7 @@ mod depth;
 mod diff;
 mod docs;
 mod exact;
+mod expect_axes;
 mod files;
 mod frames;
 mod hostile;

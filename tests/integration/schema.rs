@@ -1417,6 +1417,17 @@ fn generated_file(bytes: &[u8]) -> String {
                 e.push(format!("{key} = {entry}"));
             }
         }
+        if g.p.one_in(4) {
+            // Axes, unit and at right angles, within an angle.
+            let axes = g.p.of(&[
+                "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]",
+                "[[0, 0, -1], [0.6, 0.8, 0], [-0.8, 0.6, 0]]",
+            ]);
+            let tol = g.p.of(&["0.5", "0", "10"]);
+            e.push(format!(
+                "principal_axes = {{ value = {axes}, tol_degrees = {tol} }}"
+            ));
+        }
         if !e.iter().any(|l| l.starts_with("center_of_mass ")) && g.p.one_in(3) {
             let entry = g.expectation(l, 1);
             e.push(format!("center_of_mass.z = {entry}"));

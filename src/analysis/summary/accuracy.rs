@@ -265,3 +265,17 @@ fn shortfalls(s: &Summary, rtol: f64) -> Vec<Shortfall> {
     }
     out
 }
+
+/// The values of `s`, and of its predicted body where it has one, whose
+/// error bound exceeds `rtol`: the predicted body's prefixed `predicted.`.
+pub fn with_predicted(s: &Summary) -> Vec<AccuracyWarning> {
+    let mut out = s.accuracy_warnings.clone();
+    if let Some(p) = &s.predicted {
+        out.extend(p.accuracy_warnings.iter().map(|w| AccuracyWarning {
+            quantity: format!("predicted.{}", w.quantity),
+            message: format!("the predicted body's {}", w.message),
+            ..w.clone()
+        }));
+    }
+    out
+}

@@ -17,15 +17,14 @@
 //!   (temporary file + rename) keeping its permissions and owner, or in
 //!   place when it has hard links, which a rename would break.
 
-use crate::analysis::check::measured;
-use crate::analysis::summary::Summary;
-use crate::analysis::{self, Settings};
+use super::summary::Summary;
+use super::{Loaded, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target};
-use crate::render::format::DisplayUnits;
+use crate::quantity::{Bless, Compare, DEFAULT_TOL_DEGREES, QUANTITIES};
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
-use crate::units::Dim;
+use crate::units::{Dim, FileUnits};
 use std::collections::BTreeMap;
 use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
 
@@ -56,7 +55,7 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     // value written in its place (`write_values`).
     let untoleranced = add_placeholder_tols(&mut doc);
     let staged = Source::new(source.name.clone(), doc.to_string());
-    let analysis::Loaded { model, summary, .. } = analysis::load_source(staged, settings)?;
+    let Loaded { model, summary, .. } = super::load_source(staged, settings)?;
 
     let mut changed = !untoleranced.is_empty();
     if doc.get("expect").is_none() {
@@ -185,10 +184,10 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
         let Some(t) = entry.as_table_like_mut() else {
             return;
         };
-        if t.get("value").is_some() && t.get("tol").is_none() {
-            // Any tolerance the reader takes: it is replaced before the
-            // file is written.
-            let mut tol = Value::from(DEFAULT_RELATIVE_TOL);
+        let (key, mut tol) = tolerance_of(&path[0]);
+        if t.get("value").is_some() && t.get(key).is_none() {
+            // Any tolerance the reader takes (`tol`'s is replaced before
+            // the file is written).
             // In an inline table the space before `}` trails the last value;
             // move it after the new `tol`.
             if let Some(Item::Value(v)) = t.get_mut("value") {
@@ -198,7 +197,7 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
                     tol.decor_mut().set_suffix(sfx);
                 }
             }
-            t.insert("tol", Item::Value(tol));
+            t.insert(key, Item::Value(tol));
             added.push(path.clone());
         }
         for key in [
@@ -217,6 +216,20 @@ fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
         }
     }
     added
+}
+
+/// The key of an `[expect]` entry's tolerance and a value it takes:
+/// `tol_degrees` and its default for a quantity compared by angle, else
+/// `tol` and any relative tolerance (an alias, `Ixx`, is no row).
+fn tolerance_of(entry: &str) -> (&'static str, Value) {
+    match QUANTITIES
+        .iter()
+        .find(|i| i.key == entry)
+        .map(|i| i.compare)
+    {
+        Some(Compare::Angle) => ("tol_degrees", Value::from(DEFAULT_TOL_DEGREES)),
+        Some(Compare::Bound) | None => ("tol", Value::from(DEFAULT_RELATIVE_TOL)),
+    }
 }
 
 /// The default tolerance of an entry whose new value is `values` (in the
@@ -243,10 +256,11 @@ fn default_tol(values: &[f64], target: Target, dim: Dim, scale: f64, s: &Summary
     } else {
         1.0
     };
-    let whole_scalar = matches!(
-        target,
-        Target::Mass | Target::PredictedMass | Target::KineticEnergy
-    );
+    let whole_scalar = match target.quantity.info().bless {
+        Bless::Relative => true,
+        Bless::Absolute => false,
+        Bless::Degrees => return Value::from(DEFAULT_TOL_DEGREES),
+    };
     if values.len() == 1 && largest > 0.0 && (whole_scalar || largest >= size) {
         Value::from(DEFAULT_RELATIVE_TOL)
     } else {
@@ -297,17 +311,27 @@ fn write_values(
     let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
     for c in checks
         .iter()
-        .filter(|c| matches!(c.bound, Bound::Value { .. }))
+        .filter(|c| matches!(c.bound, Bound::Value { .. } | Bound::Axes { .. }))
     {
         entries.entry(c.span.start).or_default().push(c);
     }
     let mut changed = false;
     for group in entries.values() {
         let first = group[0];
-        let (scale, _) = DisplayUnits::of(s.file_units).of_dim(first.dim);
+        let scale = written_scale(s.file_units, first.dim);
+        // An entry compared by angle is one check of the whole value.
         let measured: Vec<f64> = group
             .iter()
-            .map(|c| measured(s, c.target) / scale)
+            .flat_map(|c| match c.bound {
+                Bound::Axes { .. } => (0..9)
+                    .map(|component| Target {
+                        component,
+                        ..c.target
+                    })
+                    .collect(),
+                Bound::Value { .. } | Bound::Range { .. } => vec![c.target],
+            })
+            .map(|t| s.value(t) / scale)
             .collect();
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
@@ -319,16 +343,7 @@ fn write_values(
             .iter()
             .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
             .then(|| default_tol(&measured, first.target, first.dim, scale, s));
-        let value = match measured.len() {
-            1 => Value::from(measured[0]),
-            3 => Value::Array(measured.iter().copied().collect::<Array>()),
-            _ => Value::Array(
-                measured
-                    .chunks(3)
-                    .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
-                    .collect::<Array>(),
-            ),
-        };
+        let value = written(&measured);
         if let Some(t) = entry_mut(doc, &path).and_then(Item::as_table_like_mut)
             && let Some(old) = t.get_mut("value")
         {
@@ -342,7 +357,7 @@ fn write_values(
                 changed = true;
             }
             if let Some(tol) = tol
-                && let Some(Item::Value(placeholder)) = t.get_mut("tol")
+                && let Some(Item::Value(placeholder)) = t.get_mut(tolerance_of(path[0]).0)
             {
                 let mut tol = tol;
                 *tol.decor_mut() = placeholder.decor().clone();
@@ -363,39 +378,53 @@ fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item
     Some(item)
 }
 
-/// A new `[expect]` with the mass, centre of mass and principal moments.
+/// A new `[expect]` with the quantities the table blesses by default
+/// (`quantity::Info::blessed_by_default`: the mass, centre of mass and
+/// principal moments).
 fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
-    let units = DisplayUnits::of(s.file_units);
-    let (m, l, i) = (units.mass, units.length, units.inertia);
-    let entry = |value: Value, tol: Value| {
-        let mut t = InlineTable::new();
-        t.insert("value", value);
-        t.insert("tol", tol);
-        Item::Value(Value::InlineTable(t))
-    };
-    let vector = |v: [f64; 3], scale: f64, target: Target, dim: Dim| {
-        let v = v.map(|x| x / scale);
-        (
-            Value::Array(v.into_iter().collect()),
-            default_tol(&v, target, dim, scale, s),
-        )
-    };
     let mut t = toml_edit::Table::new();
     t.decor_mut()
         .set_prefix("\n# Expected mass properties, written by `massprop check --bless`.\n");
-    let mass = s.mass / m;
-    let mass_tol = default_tol(&[mass], Target::Mass, Dim::MASS, m, s);
-    t.insert("mass", entry(Value::from(mass), mass_tol));
-    let (c, ct) = vector(s.center_of_mass, l, Target::CenterOfMass(0), Dim::LENGTH);
-    t.insert("center_of_mass", entry(c, ct));
-    let (p, pt) = vector(
-        s.principal_moments,
-        i,
-        Target::PrincipalMoment(0),
-        Dim::INERTIA,
-    );
-    t.insert("principal_moments", entry(p, pt));
+    for info in QUANTITIES.iter().filter(|i| i.blessed_by_default) {
+        let scale = written_scale(s.file_units, info.dim);
+        let target = |component| Target {
+            quantity: info.quantity,
+            component,
+        };
+        let v: Vec<f64> = (0..info.layout.count())
+            .map(|k| s.value(target(k)) / scale)
+            .collect();
+        let mut entry = InlineTable::new();
+        entry.insert("value", written(&v));
+        entry.insert("tol", default_tol(&v, target(0), info.dim, scale, s));
+        t.insert(info.key, Item::Value(Value::InlineTable(entry)));
+    }
     doc.insert("expect", Item::Table(t));
+}
+
+/// SI per unit of the plain numbers written for a value of dimension
+/// `dim`: the file's units for a mass, a length or an inertia, SI for the
+/// rest (H, T) and plain numbers for axes, as `[expect]` reads them and
+/// `render::format::DisplayUnits` shows them.
+fn written_scale(u: FileUnits, dim: Dim) -> f64 {
+    if dim == Dim::MASS || dim == Dim::LENGTH || dim == Dim::INERTIA {
+        u.factor(dim).value()
+    } else {
+        1.0
+    }
+}
+
+/// A value as written: a number, an array, or rows of three.
+fn written(v: &[f64]) -> Value {
+    match v.len() {
+        1 => Value::from(v[0]),
+        3 => Value::Array(v.iter().copied().collect::<Array>()),
+        _ => Value::Array(
+            v.chunks(3)
+                .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
+                .collect::<Array>(),
+        ),
+    }
 }
 
 #[cfg(test)]
