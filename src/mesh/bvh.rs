@@ -1,6 +1,7 @@
 //! A bounding-volume hierarchy over axis-aligned boxes (a mesh's
 //! triangles', or its shells'): the pairs of triangles `shells` tests for
-//! crossing, and the triangles a ray meets, in O(log n) a query.
+//! crossing (a self-join of the tree, `Bvh::join`), and the triangles a ray
+//! meets, in O(log n) a query.
 
 use super::exact::P3;
 
@@ -106,4 +107,144 @@ impl Bvh {
     pub fn is_leaf(&self, n: &Node) -> bool {
         n.left == 0
     }
+
+    /// The self-join cut into tasks that together visit every pair of
+    /// items once (`join` each): the top of the tree expanded until each
+    /// task's nodes hold at most `size` items, node pairs whose bounds do
+    /// not meet left out. In a fixed order, so that threads can take them
+    /// from a counter.
+    pub fn join_tasks(&self, size: usize) -> Vec<Task> {
+        let mut out = Vec::new();
+        if self.nodes.is_empty() {
+            return out;
+        }
+        let count = |a: u32| {
+            let n = &self.nodes[a as usize];
+            (n.end - n.start) as usize
+        };
+        let mut todo = vec![Task(0, 0)];
+        while let Some(Task(a, b)) = todo.pop() {
+            let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
+            if a != b && !na.bounds.meets(&nb.bounds) {
+                continue;
+            }
+            let big = count(a).max(count(b)) > size;
+            if !big || (self.is_leaf(na) && self.is_leaf(nb)) {
+                out.push(Task(a, b));
+                continue;
+            }
+            todo.extend(self.split(a, b));
+        }
+        out
+    }
+
+    /// The children of a node pair (a self pair splits into its two
+    /// children's self pairs and their pair; a pair into the larger
+    /// node's children, each with the other).
+    fn split(&self, a: u32, b: u32) -> impl Iterator<Item = Task> {
+        let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
+        let size = |n: &Node| n.end - n.start;
+        let tasks: [Option<Task>; 3] = if a == b {
+            let l = na.left;
+            [
+                Some(Task(l, l)),
+                Some(Task(l + 1, l + 1)),
+                Some(Task(l, l + 1)),
+            ]
+        } else if !self.is_leaf(na) && (self.is_leaf(nb) || size(na) >= size(nb)) {
+            [Some(Task(na.left, b)), Some(Task(na.left + 1, b)), None]
+        } else {
+            [Some(Task(a, nb.left)), Some(Task(a, nb.left + 1)), None]
+        };
+        tasks.into_iter().flatten()
+    }
+
+    /// Every pair of items under a task whose boxes meet, each once, as
+    /// (smaller, larger) item: a dual-tree self-join, without recursion
+    /// (`stack` is scratch space, reused between tasks).
+    ///
+    /// NOTE: hand-written (parry's and bvh's trees answer one box's query
+    /// at a time, the per-triangle search this replaces): a million
+    /// triangles' queries each descend from the root, where the join
+    /// descends each pair of nearby nodes once. `tests` hold it to the
+    /// per-item query's pairs exactly.
+    pub fn join(
+        &self,
+        boxes: &[Aabb],
+        task: Task,
+        stack: &mut Vec<Task>,
+        mut visit: impl FnMut(u32, u32),
+    ) {
+        stack.clear();
+        stack.push(task);
+        while let Some(Task(a, b)) = stack.pop() {
+            let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
+            if a == b {
+                if self.is_leaf(na) {
+                    let items = &self.items[na.start as usize..na.end as usize];
+                    for (k, &x) in items.iter().enumerate() {
+                        for &y in &items[k + 1..] {
+                            if boxes[x as usize].meets(&boxes[y as usize]) {
+                                visit(x.min(y), x.max(y));
+                            }
+                        }
+                    }
+                } else {
+                    stack.extend(self.split(a, b));
+                }
+                continue;
+            }
+            if !na.bounds.meets(&nb.bounds) {
+                continue;
+            }
+            if self.is_leaf(na) && self.is_leaf(nb) {
+                let ys = &self.items[nb.start as usize..nb.end as usize];
+                for &x in &self.items[na.start as usize..na.end as usize] {
+                    let bx = &boxes[x as usize];
+                    if !bx.meets(&nb.bounds) {
+                        continue;
+                    }
+                    for &y in ys {
+                        if bx.meets(&boxes[y as usize]) {
+                            visit(x.min(y), x.max(y));
+                        }
+                    }
+                }
+            } else {
+                stack.extend(self.split(a, b));
+            }
+        }
+    }
+
+    /// The items whose boxes meet `b` (the per-item query the join
+    /// replaces; kept for the tests that hold the join to it).
+    pub fn query(&self, boxes: &[Aabb], b: &Aabb, mut visit: impl FnMut(u32)) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = vec![0u32];
+        while let Some(at) = stack.pop() {
+            let node = &self.nodes[at as usize];
+            if !node.bounds.meets(b) {
+                continue;
+            }
+            if self.is_leaf(node) {
+                for &j in &self.items[node.start as usize..node.end as usize] {
+                    if boxes[j as usize].meets(b) {
+                        visit(j);
+                    }
+                }
+            } else {
+                stack.push(node.left);
+                stack.push(node.left + 1);
+            }
+        }
+    }
 }
+
+/// A pair of nodes to join (equal: a node with itself).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Task(pub u32, pub u32);
+
+#[cfg(test)]
+mod tests;

@@ -24,7 +24,7 @@
 
 use super::bvh::{Aabb, Bvh};
 use super::check::{Mesh, point, triangle};
-use super::exact::{self, P3, orient2d, orient3d};
+use super::exact::{self, P3, Plane, orient2d, orient3d};
 use super::{MeshError, Mode, Sums};
 use crate::numeric::{DD, Real};
 
@@ -57,7 +57,7 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    if let Some((i, j)) = first_crossing(mesh, &pts, &live, &boxes, &bvh) {
+    if let Some((i, j)) = first_crossing(mesh, &pts, &boxes, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
             mesh.at[i],
@@ -373,95 +373,71 @@ fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
 
 /// The first pair (by the first triangle's number, then the second's) of
 /// triangles that cross, if any; on every core.
-fn first_crossing(
+///
+/// NOTE: the pairs whose boxes meet come from the tree's self-join
+/// (`Bvh::join`), cut into tasks that the threads take from a counter;
+/// each thread keeps the least crossing pair it finds, and a pair that
+/// cannot be less than one found (its first triangle past the least first
+/// triangle found by any thread) is not tested. The least of the threads'
+/// pairs is the least crossing pair whatever the threads' timing: the
+/// same answer on any number of cores.
+fn first_crossing(mesh: &Mesh, pts: &[P3], boxes: &[Aabb], bvh: &Bvh) -> Option<(usize, usize)> {
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    // Tasks of about 1/64 of a thread's share: enough for the threads to
+    // even out, few enough that cutting them costs nothing.
+    let size = (bvh.items.len() / (64 * threads)).max(256);
+    first_crossing_on(mesh, pts, boxes, bvh, threads, size)
+}
+
+/// `first_crossing` on at most `threads` threads, the join cut into tasks
+/// of `size` triangles.
+fn first_crossing_on(
     mesh: &Mesh,
     pts: &[P3],
-    live: &[bool],
     boxes: &[Aabb],
     bvh: &Bvh,
+    threads: usize,
+    size: usize,
 ) -> Option<(usize, usize)> {
     use std::sync::atomic::{AtomicUsize, Ordering};
-    let n = mesh.faces.len();
-    if bvh.nodes.is_empty() {
-        return None;
-    }
+    let tasks = bvh.join_tasks(size);
+    let threads = threads.clamp(1, tasks.len().max(1));
     let tri = |i: usize| mesh.faces[i].map(|k| pts[k as usize]);
     let best = AtomicUsize::new(usize::MAX);
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, n.div_ceil(4096).max(1));
-    const BLOCK: usize = 4096;
-    // NOTE: triangles taken in the tree's order (neighbours in space one
-    // after another: the nodes a query visits stay in cache), every one
-    // of them, and the least pair kept: the same answer on any number of
-    // threads. A triangle numbered past the least pair found so far is
-    // passed over.
-    let items = &bvh.items;
-    let m = items.len();
-    let search = |t: usize| -> Option<(usize, usize)> {
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
+    let next = AtomicUsize::new(0);
+    let search = || -> Option<(usize, usize)> {
+        let mut stack = Vec::with_capacity(64);
         let mut mine: Option<(usize, usize)> = None;
-        let mut block = t;
-        while block * BLOCK < m {
-            for &i in &items[block * BLOCK..((block + 1) * BLOCK).min(m)] {
-                let i = i as usize;
-                if i >= best.load(Ordering::Relaxed) || !live[i] {
-                    continue;
+        loop {
+            let t = next.fetch_add(1, Ordering::Relaxed);
+            let Some(&task) = tasks.get(t) else {
+                return mine;
+            };
+            bvh.join(boxes, task, &mut stack, |i, j| {
+                let (i, j) = (i as usize, j as usize);
+                if i > best.load(Ordering::Relaxed) || mine.is_some_and(|m| (i, j) >= m) {
+                    return;
                 }
-                let b = &boxes[i];
-                let mut j_best = usize::MAX;
-                stack.clear();
-                stack.push(0);
-                while let Some(at) = stack.pop() {
-                    let node = &bvh.nodes[at as usize];
-                    if !node.bounds.meets(b) {
-                        continue;
-                    }
-                    if bvh.is_leaf(node) {
-                        for &j in &items[node.start as usize..node.end as usize] {
-                            let j = j as usize;
-                            if j > i
-                                && j < j_best
-                                && boxes[j].meets(b)
-                                && cross(mesh.faces[i], mesh.faces[j], &tri(i), &tri(j))
-                            {
-                                j_best = j;
-                            }
-                        }
-                    } else {
-                        stack.push(node.left);
-                        stack.push(node.left + 1);
-                    }
-                }
-                if j_best != usize::MAX {
+                if cross(mesh.faces[i], mesh.faces[j], &tri(i), &tri(j)) {
+                    mine = Some((i, j));
                     best.fetch_min(i, Ordering::Relaxed);
-                    mine = Some(mine.map_or((i, j_best), |m| m.min((i, j_best))));
                 }
-            }
-            block += threads;
+            });
         }
-        mine
     };
-    let results: Vec<Option<(usize, usize)>> = if threads == 1 {
-        vec![search(0)]
-    } else {
-        std::thread::scope(|scope| {
-            let handles: Vec<_> = (0..threads)
-                .map(|t| {
-                    let search = &search;
-                    scope.spawn(move || search(t))
-                })
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| {
-                    h.join()
-                        .expect("invariant: the crossing search does not panic")
-                })
-                .collect()
-        })
-    };
-    results.into_iter().flatten().min()
+    if threads == 1 {
+        return search();
+    }
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..threads).map(|_| scope.spawn(&search)).collect();
+        handles
+            .into_iter()
+            .filter_map(|h| {
+                h.join()
+                    .expect("invariant: the crossing search does not panic")
+            })
+            .min()
+    })
 }
 
 /// Whether two triangles (by their welded corners `f`, `g` and their
@@ -474,8 +450,17 @@ fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
         // wound opposite ways were set aside before).
         return true;
     }
-    // The sides of p's corners of q's plane.
-    let dp = p.map(|x| orient3d(q[0], q[1], q[2], x));
+    // The sides of p's corners of q's plane (a corner they share is on
+    // it: welded corners are equal exactly when their points are).
+    let side = |plane: &Plane, mine: u32, x: P3, theirs: &[u32; 3]| {
+        if theirs.contains(&mine) {
+            0
+        } else {
+            plane.side(x)
+        }
+    };
+    let qp = Plane::of(q);
+    let dp: [i8; 3] = std::array::from_fn(|k| side(&qp, f[k], p[k], &g));
     if dp.iter().all(|s| *s == 0) {
         return coplanar_overlap(p, q);
     }
@@ -483,7 +468,8 @@ fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
         // p meets q's plane at most along an edge or corner of p.
         return false;
     }
-    let dq = q.map(|x| orient3d(p[0], p[1], p[2], x));
+    let pp = Plane::of(p);
+    let dq: [i8; 3] = std::array::from_fn(|k| side(&pp, g[k], q[k], &f));
     if !(dq.contains(&1) && dq.contains(&-1)) {
         return false;
     }
