@@ -23,20 +23,23 @@
 //!   it never grazes an edge): 0 for an outward shell, 1 for an inward one.
 
 use super::bvh::{Aabb, Bvh};
-use super::check::{Mesh, point, triangle};
+use super::check::{Edge, Mesh, point, triangle};
 use super::exact::{self, P3, Plane, orient2d, orient3d};
-use super::{MeshError, Mode, Sums};
+use super::{MeshError, Sums};
 use crate::numeric::{DD, Real};
 
 /// No shell: a triangle set aside (its opposite twin cancels it).
 const NONE: u32 = u32::MAX;
 
 /// Check that the (closed, consistently oriented) mesh bounds one solid.
-/// Returns the number of shells.
-pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
+/// Returns the number of shells. Lets go of the mesh's edges once the
+/// shells are found.
+pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
     let live = cancel_twins(mesh);
     let shell = components(mesh, &live);
+    mesh.forget_edges();
+    let mesh = &*mesh;
     let count = shell
         .iter()
         .filter(|s| **s != NONE)
@@ -106,10 +109,12 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         boxes: &shell_boxes,
         tree: &shell_tree,
     };
-    let mut seen = vec![0u32; pts.len()];
-    for s in 0..count {
+    let windings = per_shell(count, pts.len(), |s, scratch| {
         let mine = &list[start[s]..start[s + 1]];
-        let c = match winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32, &mut seen) {
+        winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32, scratch)
+    });
+    for (s, winding) in windings.into_iter().enumerate() {
+        let c = match winding {
             Ok(c) => c,
             Err([(a, wa), (b, wb)]) => {
                 return Err(MeshError::new(
@@ -162,11 +167,39 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
 
 /// For each triangle, whether it counts: a triangle with the same three
 /// corners as another wound the other way is set aside with it.
+///
+/// NOTE: two triangles with the same corners share all three edges, so
+/// only triangles that meet another with the same corners in an edge's run
+/// can have a twin: those few are paired as the whole list once was
+/// (sorted by corners, winding and number), the rest pass at once.
 fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
-    let mut keyed: Vec<([u32; 3], bool, u32)> = mesh
-        .faces
+    let faces = &mesh.faces;
+    let mut maybe = vec![false; faces.len()];
+    let same = |x: u32, y: u32| {
+        let (mut a, mut b) = (faces[x as usize], faces[y as usize]);
+        a.sort_unstable();
+        b.sort_unstable();
+        a == b
+    };
+    for run in mesh.edges().chunk_by(|x, y| x.0 == y.0) {
+        if run.len() > 16 {
+            // A crowded edge: all its triangles take the sort.
+            run.iter().for_each(|e| maybe[e.1 as usize] = true);
+            continue;
+        }
+        for (k, x) in run.iter().enumerate() {
+            for y in &run[k + 1..] {
+                if same(x.1, y.1) {
+                    maybe[x.1 as usize] = true;
+                    maybe[y.1 as usize] = true;
+                }
+            }
+        }
+    }
+    let mut keyed: Vec<([u32; 3], bool, u32)> = faces
         .iter()
         .enumerate()
+        .filter(|(i, _)| maybe[*i])
         .map(|(i, f)| {
             let mut s = *f;
             s.sort_unstable();
@@ -176,7 +209,7 @@ fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
         })
         .collect();
     keyed.sort_unstable();
-    let mut live = vec![true; mesh.faces.len()];
+    let mut live = vec![true; faces.len()];
     for run in keyed.chunk_by(|x, y| x.0 == y.0) {
         let plus: Vec<u32> = run.iter().filter(|k| k.1).map(|k| k.2).collect();
         let minus: Vec<u32> = run.iter().filter(|k| !k.1).map(|k| k.2).collect();
@@ -211,18 +244,20 @@ fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
 /// file's order), `NONE` for those set aside.
 fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
     let n = mesh.faces.len();
-    let mut edges: Vec<(u64, u32, bool)> = Vec::with_capacity(3 * n);
-    for (i, f) in mesh.faces.iter().enumerate() {
-        if !live[i] {
-            continue;
-        }
-        for k in 0..3 {
-            let (a, b) = (f[k], f[(k + 1) % 3]);
-            let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
-            edges.push((key, i as u32, a < b));
-        }
-    }
-    edges.sort_unstable();
+    // The live triangles' edges, in the sorted order (the whole list when
+    // every triangle is live, as in nearly every mesh).
+    let kept: Vec<Edge>;
+    let edges: &[Edge] = if live.iter().all(|l| *l) {
+        mesh.edges()
+    } else {
+        kept = mesh
+            .edges()
+            .iter()
+            .filter(|e| live[e.1 as usize])
+            .copied()
+            .collect();
+        &kept
+    };
     let mut parent: Vec<u32> = (0..n as u32).collect();
     let mut crowded: Vec<&[(u64, u32, bool)]> = Vec::new();
     for run in edges.chunk_by(|x, y| x.0 == y.0) {
@@ -294,19 +329,45 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
         .iter()
         .map(|t| mesh.vertices[mesh.faces[*t][0] as usize])
         .collect();
-    let mut sums: Vec<Sums<f64>> = vec![Sums::new(); count];
-    for (i, f) in mesh.faces.iter().enumerate() {
-        let s = shell[i];
-        if s == NONE {
-            continue;
+    // NOTE: each shell's terms are added in the file's order, on one
+    // thread (the shells are shared out in ranges, each thread reading
+    // every triangle and keeping its own): the same sums on any number of
+    // cores. Only the volume is summed (`Sums::add_volume`).
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, count.div_ceil(1024).max(1));
+    let range = |t: usize| t * count / threads..(t + 1) * count / threads;
+    let sum = |t: usize| {
+        let mine = range(t);
+        let mut sums: Vec<Sums<f64>> = vec![Sums::new(); mine.len()];
+        for (i, f) in mesh.faces.iter().enumerate() {
+            let s = shell[i] as usize;
+            if !mine.contains(&s) {
+                continue;
+            }
+            let p = refs[s];
+            let v = f.map(|k| {
+                let c = mesh.vertices[k as usize];
+                std::array::from_fn(|j| DD::of(c[j]) - DD::of(p[j]))
+            });
+            sums[s - mine.start].add_volume(v);
         }
-        let p = refs[s as usize];
-        let v = f.map(|k| {
-            let c = mesh.vertices[k as usize];
-            std::array::from_fn(|j| DD::of(c[j]) - DD::of(p[j]))
-        });
-        sums[s as usize].add(Mode::Solid, v);
-    }
+        sums
+    };
+    let sums: Vec<Sums<f64>> = if threads == 1 {
+        sum(0)
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads).map(|t| scope.spawn(move || sum(t))).collect();
+            handles
+                .into_iter()
+                .flat_map(|h| {
+                    h.join()
+                        .expect("invariant: a shell's volume does not panic")
+                })
+                .collect()
+        })
+    };
     let mut signs = Vec::with_capacity(count);
     for (s, sum) in sums.iter().enumerate() {
         let w = sum.value[0];
@@ -444,6 +505,25 @@ fn first_crossing_on(
 /// points) cross: share a segment inside both, or overlap in an area
 /// facing the same way.
 fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
+    // NOTE: two triangles that run their shared edge in opposite
+    // directions (the neighbours of a closed surface) never cross: not
+    // coplanar, they meet on the planes' line only along that edge; coplanar,
+    // they lie on the two sides of it (side by side) or face opposite ways
+    // (folded flat). The exact path below answers the same (a test holds
+    // them equal); this spares a third of a smooth mesh's pairs its
+    // predicates.
+    if let Some(k) = (0..3).find(|&k| g.contains(&f[k]) && g.contains(&f[(k + 1) % 3])) {
+        let (u, v) = (f[k], f[(k + 1) % 3]);
+        let at = g.iter().position(|x| *x == v).expect("v is shared");
+        if g[(at + 1) % 3] == u && !g.contains(&f[(k + 2) % 3]) {
+            return false;
+        }
+    }
+    cross_exact(f, g, p, q)
+}
+
+/// `cross` by the predicates alone.
+fn cross_exact(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
     let shared = f.iter().filter(|v| g.contains(v)).count();
     if shared == 3 {
         // The same corners: the same way is a repeated surface (twins
@@ -545,17 +625,17 @@ fn winding_around(
     shell: &[u32],
     members: &[u32],
     s: u32,
-    seen: &mut [u32],
+    scratch: &mut Scratch,
 ) -> Result<i64, [(usize, i64); 2]> {
     let mut last = 0;
     let mut free: Option<(usize, i64)> = None;
     for &i in members {
         for &k in &mesh.faces[i as usize] {
-            if seen[k as usize] == s + 1 {
+            if scratch.seen[k as usize] == s + 1 {
                 continue;
             }
-            seen[k as usize] = s + 1;
-            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
+            scratch.seen[k as usize] = s + 1;
+            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s, scratch);
             last = w;
             if on {
                 continue;
@@ -568,6 +648,67 @@ fn winding_around(
         }
     }
     Ok(free.map_or(last, |(_, w)| w))
+}
+
+/// One thread's working space for the shells' windings: a mark per
+/// vertex (`winding_around`), the shells around a corner and a tree walk's
+/// stack, reused from corner to corner.
+struct Scratch {
+    seen: Vec<u32>,
+    around: Vec<u32>,
+    stack: Vec<u32>,
+}
+
+/// `f(s, scratch)` for every shell s, on every core: shells in blocks the
+/// threads take from a counter, each thread with its own `Scratch`
+/// (`vertices` marks), the results in the shells' order.
+/// Each shell's answer depends on the shell alone, so they are the
+/// one-core answers, and the caller reads them in order.
+fn per_shell<R: Send>(
+    count: usize,
+    vertices: usize,
+    f: impl Fn(usize, &mut Scratch) -> R + Sync,
+) -> Vec<R> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    const BLOCK: usize = 256;
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, count.div_ceil(BLOCK).max(1));
+    let next = AtomicUsize::new(0);
+    let work = || {
+        let mut scratch = Scratch {
+            seen: vec![0u32; vertices],
+            around: Vec::new(),
+            stack: Vec::new(),
+        };
+        let mut out = Vec::new();
+        loop {
+            let b = next.fetch_add(1, Ordering::Relaxed);
+            if b * BLOCK >= count {
+                return out;
+            }
+            for s in b * BLOCK..((b + 1) * BLOCK).min(count) {
+                out.push((s, f(s, &mut scratch)));
+            }
+        }
+    };
+    let mut parts = if threads == 1 {
+        vec![work()]
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads).map(|_| scope.spawn(&work)).collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join()
+                        .expect("invariant: a shell's judgement does not panic")
+                })
+                .collect()
+        })
+    };
+    let mut all: Vec<(usize, R)> = parts.drain(..).flatten().collect();
+    all.sort_unstable_by_key(|x| x.0);
+    all.into_iter().map(|x| x.1).collect()
 }
 
 /// Each shell's triangles, in the file's order (`start[s]..start[s + 1]`
@@ -594,6 +735,7 @@ fn members(shell: &[u32], count: usize) -> (Vec<u32>, Vec<usize>) {
 /// The winding number at v (perturbed to (x, y + ε, z + ε²)) of the live
 /// triangles not in shell `s`, by a ray along +x; and whether v lies on
 /// one of them.
+#[allow(clippy::too_many_arguments)] // the shared read-only state of one judgement
 fn winding_at(
     v: P3,
     mesh: &Mesh,
@@ -602,8 +744,10 @@ fn winding_at(
     near: &Near,
     shell: &[u32],
     s: u32,
+    scratch: &mut Scratch,
 ) -> (i64, bool) {
-    let around = near.around(v, s);
+    let Scratch { around, stack, .. } = scratch;
+    near.around(v, s, around, stack);
     let Some(reach) = around
         .iter()
         .map(|t| near.boxes[*t as usize].hi[0])
@@ -616,7 +760,8 @@ fn winding_at(
     if bvh.nodes.is_empty() {
         return (0, false);
     }
-    let mut stack = vec![0u32];
+    stack.clear();
+    stack.push(0);
     while let Some(at) = stack.pop() {
         let node = &bvh.nodes[at as usize];
         let b = &node.bounds;
@@ -656,14 +801,16 @@ struct Near<'a> {
 }
 
 impl Near<'_> {
-    /// The shells other than `s` whose (closed) boxes hold v, sorted.
-    fn around(&self, v: P3, s: u32) -> Vec<u32> {
-        let mut out = Vec::new();
+    /// The shells other than `s` whose (closed) boxes hold v, sorted, into
+    /// `out` (`stack` is scratch space).
+    fn around(&self, v: P3, s: u32, out: &mut Vec<u32>, stack: &mut Vec<u32>) {
+        out.clear();
         let inside = |b: &Aabb| (0..3).all(|k| b.lo[k] <= v[k] && v[k] <= b.hi[k]);
         if self.tree.nodes.is_empty() {
-            return out;
+            return;
         }
-        let mut stack = vec![0u32];
+        stack.clear();
+        stack.push(0);
         while let Some(at) = stack.pop() {
             let node = &self.tree.nodes[at as usize];
             if !inside(&node.bounds) {
@@ -681,7 +828,6 @@ impl Near<'_> {
             }
         }
         out.sort_unstable();
-        out
     }
 }
 

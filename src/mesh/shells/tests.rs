@@ -2,8 +2,8 @@
 //! meshes whose answers are known.
 
 use super::*;
-use crate::mesh::At;
 use crate::mesh::read::Triangles;
+use crate::mesh::{At, Mode};
 
 type Tri = [[f64; 3]; 3];
 
@@ -36,9 +36,9 @@ fn mesh(t: Vec<Tri>) -> Mesh {
 }
 
 fn checked(t: Vec<Tri>) -> Result<usize, String> {
-    let m = mesh(t);
+    let mut m = mesh(t);
     m.check(Mode::Solid).map_err(|e| e.message)?;
-    check(&m).map_err(|e| e.message)
+    check(&mut m).map_err(|e| e.message)
 }
 
 fn refused(t: Vec<Tri>) -> String {
@@ -422,4 +422,37 @@ fn the_joined_search_names_the_least_pair_of_many_crossing_spheres() {
     let [want, one, two, five] = first_crossings(t);
     assert!(want.is_some());
     assert_eq!((one, two, five), (want, want, want));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// Two triangles on a shared edge, on a small grid (coplanar, folded
+    /// and side by side often): the shortcut for opposite runs answers as
+    /// the predicates do, and never "cross".
+    #[test]
+    fn neighbours_across_an_edge_cross_as_the_predicates_say(
+        c in proptest::array::uniform4(proptest::array::uniform3(-2i8..3)),
+        opposite in proptest::bool::ANY,
+        rf in 0usize..3,
+        rg in 0usize..3,
+    ) {
+        let pt = c.map(|p| p.map(f64::from));
+        let x = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+            let (d1, d2): ([f64; 3], [f64; 3]) = (std::array::from_fn(|k| b[k] - a[k]), std::array::from_fn(|k| c[k] - a[k]));
+            [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        };
+        proptest::prop_assume!(x(pt[0], pt[1], pt[2]) != [0.0; 3] && x(pt[0], pt[1], pt[3]) != [0.0; 3]);
+        proptest::prop_assume!(pt[2] != pt[3]);
+        let turn = |t: [u32; 3], r: usize| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]];
+        let f = turn([0, 1, 2], rf);
+        let g = turn(if opposite { [1, 0, 3] } else { [0, 1, 3] }, rg);
+        let (p, q) = (f.map(|k| pt[k as usize]), g.map(|k| pt[k as usize]));
+        let exact = cross_exact(f, g, &p, &q);
+        proptest::prop_assert_eq!(cross(f, g, &p, &q), exact);
+        proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
+        if opposite {
+            proptest::prop_assert!(!exact);
+        }
+    }
 }
