@@ -59,47 +59,82 @@ pub struct Node {
 }
 
 impl Bvh {
-    pub fn build(boxes: &[Aabb], mut items: Vec<u32>) -> Bvh {
-        let mut nodes: Vec<Node> = Vec::with_capacity(2 * items.len() / LEAF + 1);
-        nodes.push(Node {
-            bounds: Aabb::empty(),
-            start: 0,
-            end: items.len() as u32,
-            left: 0,
-        });
-        let centre = |i: u32, k: usize| {
-            let b = &boxes[i as usize];
-            b.lo[k] / 2.0 + b.hi[k] / 2.0
+    pub fn build(boxes: &[Aabb], items: Vec<u32>) -> Bvh {
+        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        Bvh::build_on(boxes, items, threads)
+    }
+
+    /// `build`, its subtrees below the top levels built on `threads`
+    /// threads.
+    ///
+    /// NOTE: the top `TOP` levels are split on one thread; each subtree
+    /// left below them is built on its own (its items a slice of their
+    /// own), and its nodes then appended, renumbered. The tree has the
+    /// same shape as one built on one thread (the same splits), numbered
+    /// otherwise, which no answer depends on (the crossing search keeps
+    /// the least pair, a winding is a sum).
+    pub fn build_on(boxes: &[Aabb], mut items: Vec<u32>, threads: usize) -> Bvh {
+        const TOP: usize = 3;
+        let depth = if threads > 1 && items.len() > 1 << 14 {
+            TOP
+        } else {
+            usize::MAX
         };
-        let mut stack = vec![0usize];
-        while let Some(at) = stack.pop() {
-            let (s, e) = (nodes[at].start as usize, nodes[at].end as usize);
-            let bounds = items[s..e]
-                .iter()
-                .fold(Aabb::empty(), |b, &i| b.join(boxes[i as usize]));
-            nodes[at].bounds = bounds;
-            if e - s <= LEAF {
-                continue;
-            }
-            let k = (0..3)
-                .max_by(|&a, &b| {
-                    (bounds.hi[a] - bounds.lo[a]).total_cmp(&(bounds.hi[b] - bounds.lo[b]))
+        let mut nodes = Vec::with_capacity(node_count(items.len()));
+        let pending = grow(boxes, &mut items, 0, depth, &mut nodes);
+        if pending.is_empty() {
+            return Bvh { nodes, items };
+        }
+        // Each pending subtree's items, in the order of their ranges.
+        let mut rest: &mut [u32] = &mut items;
+        let mut taken = 0;
+        let mut slices = Vec::with_capacity(pending.len());
+        let mut order: Vec<usize> = (0..pending.len()).collect();
+        order.sort_unstable_by_key(|&k| nodes[pending[k]].start);
+        for &k in &order {
+            let (s, e) = (
+                nodes[pending[k]].start as usize,
+                nodes[pending[k]].end as usize,
+            );
+            let (_, tail) = std::mem::take(&mut rest).split_at_mut(s - taken);
+            let (mine, tail) = tail.split_at_mut(e - s);
+            rest = tail;
+            taken = e;
+            // NOTE: each subtree's nodes allocated here, on the calling
+            // thread, to their exact count: memory a thread allocates stays
+            // in its own arena once freed, where the caller cannot reuse it.
+            let room = Vec::with_capacity(node_count(e - s));
+            slices.push((k, s, mine, room));
+        }
+        let subtrees: Vec<(usize, Vec<Node>)> = std::thread::scope(|scope| {
+            let handles: Vec<_> = slices
+                .into_iter()
+                .map(|(k, s, mine, mut room)| {
+                    scope.spawn(move || {
+                        grow(boxes, mine, s, usize::MAX, &mut room);
+                        (k, room)
+                    })
                 })
-                .expect("three axes");
-            let mid = (e - s) / 2;
-            items[s..e].select_nth_unstable_by(mid, |&a, &b| centre(a, k).total_cmp(&centre(b, k)));
-            let left = nodes.len();
-            for (a, b) in [(s, s + mid), (s + mid, e)] {
-                nodes.push(Node {
-                    bounds: Aabb::empty(),
-                    start: a as u32,
-                    end: b as u32,
-                    left: 0,
-                });
-            }
-            nodes[at].left = left as u32;
-            stack.push(left);
-            stack.push(left + 1);
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join()
+                        .expect("invariant: building a subtree does not panic")
+                })
+                .collect()
+        });
+        for (k, sub) in subtrees {
+            let at = pending[k];
+            let base = nodes.len() as u32;
+            // Local node l ≥ 1 is base + l − 1; local 0 is `at`.
+            let place = |l: u32| if l == 0 { at as u32 } else { base + l - 1 };
+            let fix = |n: &Node| Node {
+                left: if n.left == 0 { 0 } else { place(n.left) },
+                ..*n
+            };
+            nodes[at] = fix(&sub[0]);
+            nodes.extend(sub[1..].iter().map(fix));
         }
         Bvh { nodes, items }
     }
@@ -240,6 +275,92 @@ impl Bvh {
             }
         }
     }
+}
+
+/// A tree over `items` (numbered from `offset` in the whole list), by
+/// median splits along each node's longest axis, without recursion; nodes
+/// at `depth` with more than a leaf's items are left unsplit and returned
+/// (the pending subtrees' roots).
+fn grow(
+    boxes: &[Aabb],
+    items: &mut [u32],
+    offset: usize,
+    depth: usize,
+    nodes: &mut Vec<Node>,
+) -> Vec<usize> {
+    let mut pending = Vec::new();
+    nodes.push(Node {
+        bounds: Aabb::empty(),
+        start: offset as u32,
+        end: (offset + items.len()) as u32,
+        left: 0,
+    });
+    let centre = |i: u32, k: usize| {
+        let b = &boxes[i as usize];
+        b.lo[k] / 2.0 + b.hi[k] / 2.0
+    };
+    let mut stack = vec![(0usize, 0usize)];
+    while let Some((at, level)) = stack.pop() {
+        let (s, e) = (
+            nodes[at].start as usize - offset,
+            nodes[at].end as usize - offset,
+        );
+        if e - s > LEAF && level == depth {
+            pending.push(at);
+            continue;
+        }
+        let bounds = items[s..e]
+            .iter()
+            .fold(Aabb::empty(), |b, &i| b.join(boxes[i as usize]));
+        nodes[at].bounds = bounds;
+        if e - s <= LEAF {
+            continue;
+        }
+        let k = (0..3)
+            .max_by(|&a, &b| {
+                (bounds.hi[a] - bounds.lo[a]).total_cmp(&(bounds.hi[b] - bounds.lo[b]))
+            })
+            .expect("three axes");
+        let mid = (e - s) / 2;
+        items[s..e].select_nth_unstable_by(mid, |&a, &b| centre(a, k).total_cmp(&centre(b, k)));
+        let left = nodes.len();
+        for (a, b) in [(s, s + mid), (s + mid, e)] {
+            nodes.push(Node {
+                bounds: Aabb::empty(),
+                start: (offset + a) as u32,
+                end: (offset + b) as u32,
+                left: 0,
+            });
+        }
+        nodes[at].left = left as u32;
+        stack.push((left, level + 1));
+        stack.push((left + 1, level + 1));
+    }
+    pending
+}
+
+/// How many nodes `grow` makes for `n` items (every split halves a node's
+/// items, the smaller half first): a sum over the levels, each of which
+/// holds nodes of at most two sizes.
+fn node_count(n: usize) -> usize {
+    let mut level: Vec<(usize, usize)> = vec![(n, 1)];
+    let mut total = 0;
+    while !level.is_empty() {
+        let mut next: Vec<(usize, usize)> = Vec::with_capacity(2);
+        for (size, count) in level {
+            total += count;
+            if size > LEAF {
+                for half in [size / 2, size - size / 2] {
+                    match next.iter_mut().find(|x| x.0 == half) {
+                        Some(x) => x.1 += count,
+                        None => next.push((half, count)),
+                    }
+                }
+            }
+        }
+        level = next;
+    }
+    total
 }
 
 /// A pair of nodes to join (equal: a node with itself).

@@ -51,11 +51,7 @@ pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
         ));
     }
     let pts = scaled(mesh)?;
-    let boxes: Vec<Aabb> = mesh
-        .faces
-        .iter()
-        .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
-        .collect();
+    let boxes = boxes_of(mesh, &pts);
     let order: Vec<u32> = (0..n as u32)
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
@@ -309,6 +305,28 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
         shell[i] = number[r];
     }
     shell
+}
+
+/// Each triangle's box (of its scaled corners), on every core: 48 bytes a
+/// triangle, allocated here and written (its pages faulted in) by the
+/// threads.
+fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
+    let n = mesh.faces.len();
+    let mut boxes = vec![Aabb::empty(); n];
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let piece = n.div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
+            scope.spawn(move || {
+                for (b, f) in out.iter_mut().zip(faces) {
+                    *b = Aabb::of(&f.map(|k| pts[k as usize]));
+                }
+            });
+        }
+    });
+    boxes
 }
 
 fn first_triangles(shell: &[u32], count: usize) -> Vec<usize> {
@@ -675,12 +693,14 @@ fn per_shell<R: Send>(
         .map_or(1, |t| t.get())
         .clamp(1, count.div_ceil(BLOCK).max(1));
     let next = AtomicUsize::new(0);
-    let work = || {
-        let mut scratch = Scratch {
-            seen: vec![0u32; vertices],
-            around: Vec::new(),
-            stack: Vec::new(),
-        };
+    // Each thread's marks allocated here, on the calling thread (memory a
+    // thread allocates stays in its own arena once freed).
+    let scratches = (0..threads).map(|_| Scratch {
+        seen: vec![0u32; vertices],
+        around: Vec::new(),
+        stack: Vec::new(),
+    });
+    let work = |mut scratch: Scratch| {
         let mut out = Vec::new();
         loop {
             let b = next.fetch_add(1, Ordering::Relaxed);
@@ -692,11 +712,14 @@ fn per_shell<R: Send>(
             }
         }
     };
-    let mut parts = if threads == 1 {
-        vec![work()]
+    let mut parts: Vec<Vec<(usize, R)>> = if threads == 1 {
+        scratches.map(work).collect()
     } else {
         std::thread::scope(|scope| {
-            let handles: Vec<_> = (0..threads).map(|_| scope.spawn(&work)).collect();
+            let work = &work;
+            let handles: Vec<_> = scratches
+                .map(|scratch| scope.spawn(move || work(scratch)))
+                .collect();
             handles
                 .into_iter()
                 .map(|h| {

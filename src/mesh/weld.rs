@@ -117,8 +117,12 @@ impl Mesh {
         // NOTE: every thread hashes every point (a few nanoseconds each)
         // and keeps those of its share: cheaper in memory than a list of
         // hashes or keys (24 bytes a point each).
-        let find = move |me: usize| {
-            let mut table = Table::with_capacity(n / 6 / threads + 16);
+        // NOTE: the tables allocated here, on the calling thread: memory a
+        // thread allocates stays in its own arena once freed.
+        let tables: Vec<Table> = (0..threads)
+            .map(|_| Table::with_capacity(n / 6 / threads + 16))
+            .collect();
+        let find = move |me: usize, mut table: Table| {
             for (i, p) in points.iter().enumerate() {
                 let k = key(p);
                 let h = hash(&k);
@@ -131,11 +135,11 @@ impl Mesh {
             }
         };
         if threads == 1 {
-            find(0);
+            tables.into_iter().for_each(|t| find(0, t));
         } else {
             std::thread::scope(|scope| {
-                for me in 0..threads {
-                    scope.spawn(move || find(me));
+                for (me, table) in tables.into_iter().enumerate() {
+                    scope.spawn(move || find(me, table));
                 }
             });
         }

@@ -128,3 +128,75 @@ fn an_empty_tree_has_no_pairs() {
     let bvh = Bvh::build(&[], Vec::new());
     assert!(by_join(&bvh, &[], 1).is_empty());
 }
+
+/// Every node's bounds hold its items' boxes, its children split its items,
+/// and every item is in one leaf.
+fn well_formed(bvh: &Bvh, boxes: &[Aabb]) {
+    let mut seen = vec![0u32; boxes.len()];
+    let mut stack = vec![0u32];
+    while let Some(at) = stack.pop() {
+        let n = &bvh.nodes[at as usize];
+        for &i in &bvh.items[n.start as usize..n.end as usize] {
+            let b = &boxes[i as usize];
+            assert!((0..3).all(|k| n.bounds.lo[k] <= b.lo[k] && b.hi[k] <= n.bounds.hi[k]));
+        }
+        if bvh.is_leaf(n) {
+            for &i in &bvh.items[n.start as usize..n.end as usize] {
+                seen[i as usize] += 1;
+            }
+        } else {
+            let (l, r) = (&bvh.nodes[n.left as usize], &bvh.nodes[n.left as usize + 1]);
+            assert_eq!((l.start, l.end, r.end), (n.start, r.start, n.end));
+            stack.extend([n.left, n.left + 1]);
+        }
+    }
+    assert!(seen.iter().all(|s| *s == 1));
+}
+
+#[test]
+fn a_tree_built_on_many_threads_finds_the_pairs_one_built_on_one_finds() {
+    let mut x = 0x2545_f491_4f6c_dd1du64;
+    let mut r = || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let boxes: Vec<Aabb> = (0..40_000)
+        .map(|_| {
+            let lo = [r(), r(), r()];
+            Aabb {
+                lo,
+                hi: std::array::from_fn(|k| lo[k] + 0.01 * r()),
+            }
+        })
+        .collect();
+    let items: Vec<u32> = (0..boxes.len() as u32).collect();
+    let one = Bvh::build_on(&boxes, items.clone(), 1);
+    let four = Bvh::build_on(&boxes, items, 4);
+    well_formed(&one, &boxes);
+    well_formed(&four, &boxes);
+    let pairs = |b: &Bvh| {
+        let mut p = by_join(b, &boxes, 512);
+        p.sort_unstable();
+        p
+    };
+    let want = pairs(&one);
+    assert!(!want.is_empty());
+    assert_eq!(pairs(&four), want);
+    assert_eq!(by_query(&four, &boxes), want);
+}
+
+#[test]
+fn the_node_count_is_the_count_a_build_makes() {
+    for n in [0usize, 1, 4, 5, 9, 17, 1000, 40_001] {
+        let boxes: Vec<Aabb> = (0..n)
+            .map(|i| Aabb {
+                lo: [i as f64; 3],
+                hi: [i as f64 + 0.5; 3],
+            })
+            .collect();
+        let bvh = Bvh::build_on(&boxes, (0..n as u32).collect(), 1);
+        assert_eq!(bvh.nodes.len(), node_count(n).max(1), "{n}");
+    }
+}
