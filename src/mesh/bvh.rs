@@ -32,8 +32,18 @@ impl Aabb {
         }
     }
     /// Closed boxes meet (touching counts).
+    ///
+    /// NOTE: the six comparisons joined with `&`, not `&&`: no branch to
+    /// mispredict in the self-join's innermost loop, where the answer is a
+    /// coin toss.
+    #[inline]
     pub fn meets(&self, o: &Aabb) -> bool {
-        (0..3).all(|k| self.lo[k] <= o.hi[k] && o.lo[k] <= self.hi[k])
+        (self.lo[0] <= o.hi[0])
+            & (o.lo[0] <= self.hi[0])
+            & (self.lo[1] <= o.hi[1])
+            & (o.lo[1] <= self.hi[1])
+            & (self.lo[2] <= o.hi[2])
+            & (o.lo[2] <= self.hi[2])
     }
 }
 
@@ -67,16 +77,17 @@ impl Bvh {
     /// `build`, its subtrees below the top levels built on `threads`
     /// threads.
     ///
-    /// NOTE: the top `TOP` levels are split on one thread; each subtree
-    /// left below them is built on its own (its items a slice of their
+    /// NOTE: the top levels (log₂ of the threads) are split on one thread;
+    /// each subtree left below them is built on its own (its items a slice of their
     /// own), and its nodes then appended, renumbered. The tree has the
     /// same shape as one built on one thread (the same splits), numbered
     /// otherwise, which no answer depends on (the crossing search keeps
     /// the least pair, a winding is a sum).
     pub fn build_on(boxes: &[Aabb], mut items: Vec<u32>, threads: usize) -> Bvh {
-        const TOP: usize = 3;
+        // Enough levels for a subtree per thread.
+        let top = threads.next_power_of_two().trailing_zeros() as usize;
         let depth = if threads > 1 && items.len() > 1 << 14 {
-            TOP
+            top
         } else {
             usize::MAX
         };

@@ -94,42 +94,75 @@ impl Mesh {
 
     /// The checks of the module comment for `mode`.
     pub fn check(&self, mode: Mode) -> Result<(), MeshError> {
-        for (i, f) in self.faces.iter().enumerate() {
-            let [a, b, c] = f.map(|k| self.vertices[k as usize]);
-            if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
-                let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
-                return Err(MeshError::new(
-                    self.at[i],
-                    format!(
-                        "{} is degenerate: two of its corners are the point {}",
-                        self.name(i),
-                        point(same)
-                    ),
-                ));
-            }
-            if surely_not_collinear(a, b, c) {
-                continue;
-            }
-            let d1: [DD; 3] = std::array::from_fn(|k| DD::of(b[k]) - DD::of(a[k]));
-            let d2: [DD; 3] = std::array::from_fn(|k| DD::of(c[k]) - DD::of(a[k]));
-            let x = super::cross(d1, d2);
-            if x.iter().all(|v| v.hi == 0.0) {
-                return Err(MeshError::new(
-                    self.at[i],
-                    format!(
-                        "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
-                        self.name(i),
-                        point(a),
-                        point(b),
-                        point(c)
-                    ),
-                ));
-            }
+        // NOTE: the first degenerate triangle, in the file's order, is
+        // named: each thread finds the first in its share, the least wins.
+        let n = self.faces.len();
+        let threads = std::thread::available_parallelism()
+            .map_or(1, |t| t.get())
+            .clamp(1, n.div_ceil(1 << 16).max(1));
+        let piece = n.div_ceil(threads).max(1);
+        let first = |from: usize| {
+            (from..(from + piece).min(n)).find_map(|i| self.degenerate(i).map(|e| (i, e)))
+        };
+        let found = if threads == 1 {
+            first(0)
+        } else {
+            std::thread::scope(|scope| {
+                let handles: Vec<_> = (0..threads)
+                    .map(|t| scope.spawn(move || first(t * piece)))
+                    .collect();
+                handles
+                    .into_iter()
+                    .filter_map(|h| {
+                        h.join()
+                            .expect("invariant: a triangle's check does not panic")
+                    })
+                    .min_by_key(|x| x.0)
+            })
+        };
+        if let Some((_, e)) = found {
+            return Err(e);
         }
         if mode == Mode::Solid {
             self.closed_and_oriented()?;
         }
         Ok(())
+    }
+
+    /// Why triangle `i` is degenerate, if it is.
+    fn degenerate(&self, i: usize) -> Option<MeshError> {
+        let f = self.faces[i];
+        let [a, b, c] = f.map(|k| self.vertices[k as usize]);
+        if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
+            let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
+            return Some(MeshError::new(
+                self.at[i],
+                format!(
+                    "{} is degenerate: two of its corners are the point {}",
+                    self.name(i),
+                    point(same)
+                ),
+            ));
+        }
+        if surely_not_collinear(a, b, c) {
+            return None;
+        }
+        let d1: [DD; 3] = std::array::from_fn(|k| DD::of(b[k]) - DD::of(a[k]));
+        let d2: [DD; 3] = std::array::from_fn(|k| DD::of(c[k]) - DD::of(a[k]));
+        let x = super::cross(d1, d2);
+        if x.iter().all(|v| v.hi == 0.0) {
+            return Some(MeshError::new(
+                self.at[i],
+                format!(
+                    "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
+                    self.name(i),
+                    point(a),
+                    point(b),
+                    point(c)
+                ),
+            ));
+        }
+        None
     }
 
     /// Every edge shared by exactly two triangles that traverse it in
