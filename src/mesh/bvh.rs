@@ -138,14 +138,10 @@ impl Bvh {
         for (k, sub) in subtrees {
             let at = pending[k];
             let base = nodes.len() as u32;
-            // Local node l ≥ 1 is base + l − 1; local 0 is `at`.
-            let place = |l: u32| if l == 0 { at as u32 } else { base + l - 1 };
-            let fix = |n: &Node| Node {
-                left: if n.left == 0 { 0 } else { place(n.left) },
-                ..*n
-            };
-            nodes[at] = fix(&sub[0]);
-            nodes.extend(sub[1..].iter().map(fix));
+            // Local node l ≥ 1 is base + l − 1 (local 0, the root, is `at`,
+            // and no node's child); `left` 0 marks a leaf.
+            nodes[at] = renumbered(&sub[0], base);
+            nodes.extend(sub[1..].iter().map(|n| renumbered(n, base)));
         }
         Bvh { nodes, items }
     }
@@ -348,6 +344,14 @@ fn grow(
         stack.push((left + 1, level + 1));
     }
     pending
+}
+
+/// A subtree's node moved to the whole tree, its nodes from `base` on.
+fn renumbered(n: &Node, base: u32) -> Node {
+    Node {
+        left: if n.left == 0 { 0 } else { base + n.left - 1 },
+        ..*n
+    }
 }
 
 /// How many nodes `grow` makes for `n` items (every split halves a node's
