@@ -7,11 +7,8 @@
 //! it); `MeshBody::load` then has `shells` split it into shells that must
 //! bound one solid.
 
-use super::read::Triangles;
 use super::{At, MeshBody, MeshError, Mode, Sums, finish};
 use crate::numeric::{DD, Real};
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
 
 /// A welded mesh: its vertices, each triangle's three, and where each
 /// triangle came from in the file.
@@ -20,35 +17,8 @@ pub struct Mesh {
     pub vertices: Vec<[f64; 3]>,
     pub faces: Vec<[u32; 3]>,
     pub at: Vec<At>,
-}
-
-/// A fast hasher for the coordinates' bits (std's SipHash costs a third
-/// of a million-triangle mesh's welding; these keys are not adversarial
-/// in a way that matters: a file can only slow its own reading, within
-/// the triangle limit).
-#[derive(Default)]
-struct Mix(u64);
-
-impl Hasher for Mix {
-    fn finish(&self) -> u64 {
-        // Murmur3's finaliser: every input bit reaches the high and the low
-        // bits the table reads (coordinates of a smooth surface differ in
-        // their low mantissa bits).
-        let mut x = self.0;
-        x ^= x >> 33;
-        x = x.wrapping_mul(0xff51_afd7_ed55_8ccd);
-        x ^= x >> 33;
-        x = x.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
-        x ^ (x >> 33)
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for b in bytes {
-            self.write_u64(u64::from(*b));
-        }
-    }
-    fn write_u64(&mut self, x: u64) {
-        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
+    /// `edges`, once asked.
+    edges: std::sync::OnceLock<Vec<Edge>>,
 }
 
 /// "triangle 12 (line 80)": a triangle by its position in the file (from
@@ -66,50 +36,55 @@ pub fn point(p: [f64; 3]) -> String {
 }
 
 impl Mesh {
-    /// Weld the corners: exactly equal coordinates are one vertex (−0 and
-    /// +0 equal). Refuses a non-finite coordinate.
-    pub fn weld(t: Triangles) -> Result<Mesh, MeshError> {
-        if t.faces.is_empty() {
-            return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
-        }
-        let mut index: HashMap<[u64; 3], u32, BuildHasherDefault<Mix>> =
-            HashMap::with_capacity_and_hasher(t.points.len() / 6 + 3, Default::default());
-        let mut vertices = Vec::with_capacity(t.points.len() / 6 + 3);
-        // Each point's vertex, found when a triangle first uses it.
-        let mut of_point = vec![u32::MAX; t.points.len()];
-        let mut faces = Vec::with_capacity(t.faces.len());
-        for (i, tri) in t.faces.iter().enumerate() {
-            let mut f = [0u32; 3];
-            for (k, &pi) in tri.iter().enumerate() {
-                if of_point[pi as usize] != u32::MAX {
-                    f[k] = of_point[pi as usize];
-                    continue;
-                }
-                let p = t.points[pi as usize];
-                if !p.iter().all(|x| x.is_finite()) {
-                    return Err(MeshError::new(
-                        t.at[i],
-                        format!(
-                            "{} has a coordinate that is not a finite number: {}",
-                            triangle(i, t.at[i]),
-                            point(p)
-                        ),
-                    ));
-                }
-                let p = p.map(|x| x + 0.0);
-                let next = vertices.len() as u32;
-                f[k] = *index.entry(p.map(f64::to_bits)).or_insert_with(|| {
-                    vertices.push(p);
-                    next
-                });
-                of_point[pi as usize] = f[k];
-            }
-            faces.push(f);
-        }
-        Ok(Mesh {
+    /// A mesh of welded vertices and triangles (`weld` makes one).
+    pub fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, at: Vec<At>) -> Mesh {
+        Mesh {
             vertices,
             faces,
-            at: t.at,
+            at,
+            edges: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// Let go of `edges` (48 bytes a triangle) once the checks are done.
+    pub fn forget_edges(&mut self) {
+        self.edges.take();
+    }
+
+    /// Every triangle's edges, sorted by (key, triangle, direction): each
+    /// edge's run together, runs in the order of their keys. Made once,
+    /// for the closedness check and the shells both.
+    ///
+    /// NOTE: a counting sort by the edge's smaller vertex, then each
+    /// vertex's few edges sorted: the same order as sorting the whole list
+    /// (its entries are distinct: a triangle's three edges have distinct
+    /// keys once degenerate triangles are refused), in linear time.
+    pub fn edges(&self) -> &[Edge] {
+        self.edges.get_or_init(|| {
+            let mut start = vec![0u32; self.vertices.len() + 1];
+            for f in &self.faces {
+                for k in 0..3 {
+                    start[f[k].min(f[(k + 1) % 3]) as usize + 1] += 1;
+                }
+            }
+            for v in 0..self.vertices.len() {
+                start[v + 1] += start[v];
+            }
+            let mut fill = start.clone();
+            let mut edges: Vec<Edge> = vec![(0, 0, false); 3 * self.faces.len()];
+            for (i, f) in self.faces.iter().enumerate() {
+                for k in 0..3 {
+                    let (a, b) = (f[k], f[(k + 1) % 3]);
+                    let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
+                    let at = &mut fill[a.min(b) as usize];
+                    edges[*at as usize] = (key, i as u32, a < b);
+                    *at += 1;
+                }
+            }
+            for w in start.windows(2) {
+                edges[w[0] as usize..w[1] as usize].sort_unstable();
+            }
+            edges
         })
     }
 
@@ -119,34 +94,34 @@ impl Mesh {
 
     /// The checks of the module comment for `mode`.
     pub fn check(&self, mode: Mode) -> Result<(), MeshError> {
-        for (i, f) in self.faces.iter().enumerate() {
-            let [a, b, c] = f.map(|k| self.vertices[k as usize]);
-            if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
-                let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
-                return Err(MeshError::new(
-                    self.at[i],
-                    format!(
-                        "{} is degenerate: two of its corners are the point {}",
-                        self.name(i),
-                        point(same)
-                    ),
-                ));
-            }
-            let d1: [DD; 3] = std::array::from_fn(|k| DD::of(b[k]) - DD::of(a[k]));
-            let d2: [DD; 3] = std::array::from_fn(|k| DD::of(c[k]) - DD::of(a[k]));
-            let x = super::cross(d1, d2);
-            if x.iter().all(|v| v.hi == 0.0) {
-                return Err(MeshError::new(
-                    self.at[i],
-                    format!(
-                        "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
-                        self.name(i),
-                        point(a),
-                        point(b),
-                        point(c)
-                    ),
-                ));
-            }
+        // NOTE: the first degenerate triangle, in the file's order, is
+        // named: each thread finds the first in its share, the least wins.
+        let n = self.faces.len();
+        let threads = std::thread::available_parallelism()
+            .map_or(1, |t| t.get())
+            .clamp(1, n.div_ceil(1 << 16).max(1));
+        let piece = n.div_ceil(threads).max(1);
+        let first = |from: usize| {
+            (from..(from + piece).min(n)).find_map(|i| self.degenerate(i).map(|e| (i, e)))
+        };
+        let found = if threads == 1 {
+            first(0)
+        } else {
+            std::thread::scope(|scope| {
+                let handles: Vec<_> = (0..threads)
+                    .map(|t| scope.spawn(move || first(t * piece)))
+                    .collect();
+                handles
+                    .into_iter()
+                    .filter_map(|h| {
+                        h.join()
+                            .expect("invariant: a triangle's check does not panic")
+                    })
+                    .min_by_key(|x| x.0)
+            })
+        };
+        if let Some((_, e)) = found {
+            return Err(e);
         }
         if mode == Mode::Solid {
             self.closed_and_oriented()?;
@@ -154,20 +129,47 @@ impl Mesh {
         Ok(())
     }
 
+    /// Why triangle `i` is degenerate, if it is.
+    fn degenerate(&self, i: usize) -> Option<MeshError> {
+        let f = self.faces[i];
+        let [a, b, c] = f.map(|k| self.vertices[k as usize]);
+        if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
+            let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
+            return Some(MeshError::new(
+                self.at[i],
+                format!(
+                    "{} is degenerate: two of its corners are the point {}",
+                    self.name(i),
+                    point(same)
+                ),
+            ));
+        }
+        if surely_not_collinear(a, b, c) {
+            return None;
+        }
+        let d1: [DD; 3] = std::array::from_fn(|k| DD::of(b[k]) - DD::of(a[k]));
+        let d2: [DD; 3] = std::array::from_fn(|k| DD::of(c[k]) - DD::of(a[k]));
+        let x = super::cross(d1, d2);
+        if x.iter().all(|v| v.hi == 0.0) {
+            return Some(MeshError::new(
+                self.at[i],
+                format!(
+                    "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
+                    self.name(i),
+                    point(a),
+                    point(b),
+                    point(c)
+                ),
+            ));
+        }
+        None
+    }
+
     /// Every edge shared by exactly two triangles that traverse it in
     /// opposite directions; else the first bad edge (by its first
     /// triangle) is named.
     fn closed_and_oriented(&self) -> Result<(), MeshError> {
-        // (edge key, triangle, forward): sorted, each edge's run together.
-        let mut edges: Vec<Edge> = Vec::with_capacity(3 * self.faces.len());
-        for (i, f) in self.faces.iter().enumerate() {
-            for k in 0..3 {
-                let (a, b) = (f[k], f[(k + 1) % 3]);
-                let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
-                edges.push((key, i as u32, a < b));
-            }
-        }
-        edges.sort_unstable();
+        let edges = self.edges();
         let mut worst: Option<(u32, &[Edge])> = None;
         for run in edges.chunk_by(|x, y| x.0 == y.0) {
             // NOTE: an edge of two pieces that touch along it is shared by
@@ -334,9 +336,29 @@ impl Mesh {
 
 use super::Bound;
 
+/// Whether a component of (b − a) × (c − a) is certainly nonzero by an
+/// f64 evaluation and its error bound (the double-double test in
+/// `Mesh::check` then finds it nonzero too: its error is 10⁻¹⁵ of this
+/// one's). Most triangles pass here; the rest take the double-double test.
+fn surely_not_collinear(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
+    let d1: [f64; 3] = std::array::from_fn(|k| b[k] - a[k]);
+    let d2: [f64; 3] = std::array::from_fn(|k| c[k] - a[k]);
+    [(1, 2), (2, 0), (0, 1)].into_iter().any(|(i, j)| {
+        let (p, q) = (d1[i] * d2[j], d1[j] * d2[i]);
+        // NOTE: each difference and product rounds once (relative 2⁻⁵³),
+        // the final difference once more: 1e-14 of the magnitudes covers
+        // them with room; overflow (an infinite product) is left to the
+        // double-double test.
+        // A magnitude well above f64's least normal: no product is
+        // subnormal enough for its absolute rounding to matter.
+        let m = p.abs() + q.abs();
+        m.is_finite() && m > 1e-280 && (p - q).abs() > 1e-14 * m
+    })
+}
+
 /// The triangles summed as one chunk (`Mesh::sums`).
 const CHUNK: usize = 1 << 15;
 
 /// An edge of a triangle: its key (the two vertices, smaller first), the
 /// triangle, and whether it runs from the smaller to the larger.
-type Edge = (u64, u32, bool);
+pub type Edge = (u64, u32, bool);

@@ -55,6 +55,69 @@ pub fn orient3d(a: P3, b: P3, c: P3, d: P3) -> i8 {
     orient3d_exact(a, b, c, d)
 }
 
+/// A triangle's plane, for the sides of many points: `orient3d(a, b, c,
+/// d)` with the cross product (b − a) × (c − a) and its magnitudes
+/// computed once.
+pub struct Plane {
+    a: P3,
+    b: P3,
+    c: P3,
+    x: P3,
+    xm: P3,
+    /// The corners are pairwise distinct.
+    distinct: bool,
+}
+
+impl Plane {
+    pub fn of(t: &[P3; 3]) -> Plane {
+        let [a, b, c] = *t;
+        let ba = sub3(b, a);
+        let ca = sub3(c, a);
+        let (bm, cm) = (ba.map(f64::abs), ca.map(f64::abs));
+        Plane {
+            a,
+            b,
+            c,
+            x: [
+                ba[1] * ca[2] - ba[2] * ca[1],
+                ba[2] * ca[0] - ba[0] * ca[2],
+                ba[0] * ca[1] - ba[1] * ca[0],
+            ],
+            xm: [
+                bm[1] * cm[2] + bm[2] * cm[1],
+                bm[2] * cm[0] + bm[0] * cm[2],
+                bm[0] * cm[1] + bm[1] * cm[0],
+            ],
+            distinct: a != b && a != c && b != c,
+        }
+    }
+
+    /// `orient3d(a, b, c, d)`, the same sign (both are exact; the filter
+    /// is the same expression).
+    pub fn side(&self, d: P3) -> i8 {
+        let (a, b, c) = (self.a, self.b, self.c);
+        if !self.distinct || a == d || b == d || c == d {
+            return 0;
+        }
+        let da = sub3(d, a);
+        let x = self.x;
+        let det = x[0] * da[0] + x[1] * da[1] + x[2] * da[2];
+        let dm = da.map(f64::abs);
+        let permanent = self.xm[0] * dm[0] + self.xm[1] * dm[1] + self.xm[2] * dm[2];
+        if permanent == 0.0 {
+            return 0;
+        }
+        let bound = 1e-15 * permanent;
+        if det > bound {
+            return 1;
+        }
+        if det < -bound {
+            return -1;
+        }
+        orient3d_exact(a, b, c, d)
+    }
+}
+
 /// The sign of (b − a)ᵢ(c − a)ⱼ − (b − a)ⱼ(c − a)ᵢ for the coordinates
 /// (i, j): the orientation of the triangle projected on that plane.
 pub fn orient2d(a: P3, b: P3, c: P3, i: usize, j: usize) -> i8 {
@@ -269,6 +332,30 @@ mod tests {
                 orient3d(p[0], p[1], p[2], p[3]),
                 orient3d_exact(p[0], p[1], p[2], p[3])
             );
+        }
+    }
+
+    #[test]
+    fn a_plane_gives_orient3d_s_sign() {
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut r = |grid: bool| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            let v = (x >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+            if grid { (v * 8.0).round() / 4.0 } else { v }
+        };
+        for k in 0..4000 {
+            // Points on a coarse grid half the time: coplanar and equal
+            // corners are common there.
+            let g = k % 2 == 0;
+            let t: [P3; 3] = std::array::from_fn(|_| [r(g), r(g), r(g)]);
+            let d = if k % 7 == 0 {
+                t[k % 3]
+            } else {
+                [r(g), r(g), r(g)]
+            };
+            assert_eq!(Plane::of(&t).side(d), orient3d(t[0], t[1], t[2], d));
         }
     }
 

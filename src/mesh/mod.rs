@@ -30,6 +30,7 @@ pub mod check;
 pub mod exact;
 pub mod read;
 pub mod shells;
+pub mod weld;
 
 pub use read::Format;
 
@@ -146,11 +147,12 @@ impl MeshBody {
     /// Read, weld, check and integrate a mesh file's bytes.
     pub fn load(format: Format, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
         let t = read::read(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
-        let mesh = check::Mesh::weld(t)?;
+        let mut mesh = check::Mesh::weld(t)?;
         mesh.check(mode)?;
         if mode == Mode::Solid {
-            shells::check(&mesh)?;
+            shells::check(&mut mesh)?;
         }
+        mesh.forget_edges();
         let body = mesh.integrate::<DD>(mode);
         if mode == Mode::Solid && body.measure.hi <= 0.0 {
             return Err(if body.measure.hi < 0.0 {
@@ -243,19 +245,7 @@ impl<T: Real> Sums<T> {
         let [a, b, c]: [[T; 3]; 3] = v.map(|p| p.map(T::of_dd));
         let abs = |x: T| x.f64().abs();
         let (w, wmag) = match mode {
-            Mode::Solid => {
-                let x = cross(b, c);
-                let w = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
-                let bm = b.map(abs);
-                let cm = c.map(abs);
-                let xm = [
-                    bm[1] * cm[2] + bm[2] * cm[1],
-                    bm[2] * cm[0] + bm[0] * cm[2],
-                    bm[0] * cm[1] + bm[1] * cm[0],
-                ];
-                let am = a.map(abs);
-                (w, am[0] * xm[0] + am[1] * xm[1] + am[2] * xm[2])
-            }
+            Mode::Solid => volume_term([a, b, c]),
             Mode::Shell => {
                 let d1: [T; 3] = std::array::from_fn(|i| b[i] - a[i]);
                 let d2: [T; 3] = std::array::from_fn(|i| c[i] - a[i]);
@@ -291,6 +281,16 @@ impl<T: Real> Sums<T> {
         self.n += 1;
     }
 
+    /// The volume's sum alone (`value[0]`, `magnitude[0]`, `n`), the
+    /// other sums left as they are: the same bits in them as `add` gives.
+    #[inline]
+    pub fn add_volume(&mut self, v: [[DD; 3]; 3]) {
+        let (w, wmag) = volume_term(v.map(|p| p.map(T::of_dd)));
+        self.value[0] = self.value[0] + w;
+        self.magnitude[0] += wmag;
+        self.n += 1;
+    }
+
     /// The error bound of each sum, absolute.
     pub fn error(&self) -> [f64; 10] {
         let unit = unit_of::<T>();
@@ -311,6 +311,23 @@ impl<T: Real> Default for Sums<T> {
 pub fn unit_of<T: Real>() -> f64 {
     let u = f64::EPSILON / 2.0;
     if T::EPS < 1e-20 { 7.0 * u * u } else { u }
+}
+
+/// A solid's term w = a · (b × c) and its magnitude's bound.
+#[inline]
+fn volume_term<T: Real>([a, b, c]: [[T; 3]; 3]) -> (T, f64) {
+    let abs = |x: T| x.f64().abs();
+    let x = cross(b, c);
+    let w = a[0] * x[0] + a[1] * x[1] + a[2] * x[2];
+    let bm = b.map(abs);
+    let cm = c.map(abs);
+    let xm = [
+        bm[1] * cm[2] + bm[2] * cm[1],
+        bm[2] * cm[0] + bm[0] * cm[2],
+        bm[0] * cm[1] + bm[1] * cm[0],
+    ];
+    let am = a.map(abs);
+    (w, am[0] * xm[0] + am[1] * xm[1] + am[2] * xm[2])
 }
 
 fn cross<T: Real>(b: [T; 3], c: [T; 3]) -> [T; 3] {

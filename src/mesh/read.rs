@@ -138,29 +138,46 @@ fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     if n > limit as u64 {
         return Err(too_many(At::Byte(80), limit));
     }
-    let mut t = Triangles {
-        points: Vec::with_capacity(3 * n as usize),
-        faces: Vec::with_capacity(n as usize),
-        at: Vec::with_capacity(n as usize),
-    };
-    for (i, rec) in bytes[84..].chunks_exact(50).enumerate() {
-        // 12 bytes of normal (ignored: the winding gives the orientation),
-        // three vertices of three f32, 2 bytes of attributes.
-        let f = |k: usize| {
-            let o = 12 + 4 * k;
-            f64::from(f32::from_le_bytes([
-                rec[o],
-                rec[o + 1],
-                rec[o + 2],
-                rec[o + 3],
-            ]))
-        };
-        t.push(
-            std::array::from_fn(|v| std::array::from_fn(|c| f(3 * v + c))),
-            At::Byte(84 + 50 * i as u64),
-        );
-    }
-    Ok(t)
+    let n = n as usize;
+    // NOTE: the records are decoded on every core, each thread a slice of
+    // the corners (allocated here, zeroed lazily: the threads' first
+    // writes fault its pages in, in parallel too).
+    let mut points = vec![[0.0f64; 3]; 3 * n];
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let piece = n.div_ceil(threads).max(1);
+    let records = &bytes[84..];
+    std::thread::scope(|scope| {
+        for (out, recs) in points.chunks_mut(3 * piece).zip(records.chunks(50 * piece)) {
+            scope.spawn(move || {
+                for (corners, rec) in out.chunks_exact_mut(3).zip(recs.chunks_exact(50)) {
+                    // 12 bytes of normal (ignored: the winding gives the
+                    // orientation), three vertices of three f32, 2 bytes of
+                    // attributes.
+                    let f = |k: usize| {
+                        let o = 12 + 4 * k;
+                        f64::from(f32::from_le_bytes([
+                            rec[o],
+                            rec[o + 1],
+                            rec[o + 2],
+                            rec[o + 3],
+                        ]))
+                    };
+                    for (v, c) in corners.iter_mut().enumerate() {
+                        *c = std::array::from_fn(|k| f(3 * v + k));
+                    }
+                }
+            });
+        }
+    });
+    Ok(Triangles {
+        points,
+        faces: (0..n as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect(),
+        at: (0..n as u64).map(|i| At::Byte(84 + 50 * i)).collect(),
+    })
 }
 
 fn too_many(at: At, limit: usize) -> MeshError {

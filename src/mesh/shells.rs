@@ -11,9 +11,9 @@
 //!   cancels in every integral). An edge shared by four or more (pieces
 //!   that touch along an edge) joins nothing, unless a piece would be
 //!   left open without it.
-//! - Crossings: every pair of triangles whose boxes meet, found with a
-//!   bounding-volume hierarchy, is tested with exact predicates
-//!   (`exact`; Guigue and Devillers' test). Two triangles cross when they
+//! - Crossings (`crossing`): every pair of triangles whose boxes meet,
+//!   found by joining a bounding-volume hierarchy with itself, is tested
+//!   with exact predicates (`exact`; Guigue and Devillers' test). Two triangles cross when they
 //!   share a segment inside both (not coplanar), or overlap in an area
 //!   while facing the same way (coplanar). Touching along an edge or at a
 //!   point, and coplanar triangles facing opposite ways (two pieces in
@@ -23,20 +23,26 @@
 //!   it never grazes an edge): 0 for an outward shell, 1 for an inward one.
 
 use super::bvh::{Aabb, Bvh};
-use super::check::{Mesh, point, triangle};
+use super::check::{Edge, Mesh, point, triangle};
 use super::exact::{self, P3, orient2d, orient3d};
-use super::{MeshError, Mode, Sums};
+use super::{MeshError, Sums};
 use crate::numeric::{DD, Real};
+use crossing::first_crossing;
+#[cfg(test)]
+use crossing::{cross, cross_exact, first_crossing_on};
 
 /// No shell: a triangle set aside (its opposite twin cancels it).
 const NONE: u32 = u32::MAX;
 
 /// Check that the (closed, consistently oriented) mesh bounds one solid.
-/// Returns the number of shells.
-pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
+/// Returns the number of shells. Lets go of the mesh's edges once the
+/// shells are found.
+pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
     let live = cancel_twins(mesh);
     let shell = components(mesh, &live);
+    mesh.forget_edges();
+    let mesh = &*mesh;
     let count = shell
         .iter()
         .filter(|s| **s != NONE)
@@ -48,16 +54,12 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         ));
     }
     let pts = scaled(mesh)?;
-    let boxes: Vec<Aabb> = mesh
-        .faces
-        .iter()
-        .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
-        .collect();
+    let boxes = boxes_of(mesh, &pts);
     let order: Vec<u32> = (0..n as u32)
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    if let Some((i, j)) = first_crossing(mesh, &pts, &live, &boxes, &bvh) {
+    if let Some((i, j)) = first_crossing(mesh, &pts, &boxes, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
             mesh.at[i],
@@ -106,10 +108,12 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
         boxes: &shell_boxes,
         tree: &shell_tree,
     };
-    let mut seen = vec![0u32; pts.len()];
-    for s in 0..count {
+    let windings = per_shell(count, pts.len(), |s, scratch| {
         let mine = &list[start[s]..start[s + 1]];
-        let c = match winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32, &mut seen) {
+        winding_around(mesh, &pts, &bvh, &near, &shell, mine, s as u32, scratch)
+    });
+    for (s, winding) in windings.into_iter().enumerate() {
+        let c = match winding {
             Ok(c) => c,
             Err([(a, wa), (b, wb)]) => {
                 return Err(MeshError::new(
@@ -162,11 +166,39 @@ pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
 
 /// For each triangle, whether it counts: a triangle with the same three
 /// corners as another wound the other way is set aside with it.
+///
+/// NOTE: two triangles with the same corners share all three edges, so
+/// only triangles that meet another with the same corners in an edge's run
+/// can have a twin: those few are paired as the whole list once was
+/// (sorted by corners, winding and number), the rest pass at once.
 fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
-    let mut keyed: Vec<([u32; 3], bool, u32)> = mesh
-        .faces
+    let faces = &mesh.faces;
+    let mut maybe = vec![false; faces.len()];
+    let same = |x: u32, y: u32| {
+        let (mut a, mut b) = (faces[x as usize], faces[y as usize]);
+        a.sort_unstable();
+        b.sort_unstable();
+        a == b
+    };
+    for run in mesh.edges().chunk_by(|x, y| x.0 == y.0) {
+        if run.len() > 16 {
+            // A crowded edge: all its triangles take the sort.
+            run.iter().for_each(|e| maybe[e.1 as usize] = true);
+            continue;
+        }
+        for (k, x) in run.iter().enumerate() {
+            for y in &run[k + 1..] {
+                if same(x.1, y.1) {
+                    maybe[x.1 as usize] = true;
+                    maybe[y.1 as usize] = true;
+                }
+            }
+        }
+    }
+    let mut keyed: Vec<([u32; 3], bool, u32)> = faces
         .iter()
         .enumerate()
+        .filter(|(i, _)| maybe[*i])
         .map(|(i, f)| {
             let mut s = *f;
             s.sort_unstable();
@@ -176,7 +208,7 @@ fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
         })
         .collect();
     keyed.sort_unstable();
-    let mut live = vec![true; mesh.faces.len()];
+    let mut live = vec![true; faces.len()];
     for run in keyed.chunk_by(|x, y| x.0 == y.0) {
         let plus: Vec<u32> = run.iter().filter(|k| k.1).map(|k| k.2).collect();
         let minus: Vec<u32> = run.iter().filter(|k| !k.1).map(|k| k.2).collect();
@@ -211,18 +243,20 @@ fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
 /// file's order), `NONE` for those set aside.
 fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
     let n = mesh.faces.len();
-    let mut edges: Vec<(u64, u32, bool)> = Vec::with_capacity(3 * n);
-    for (i, f) in mesh.faces.iter().enumerate() {
-        if !live[i] {
-            continue;
-        }
-        for k in 0..3 {
-            let (a, b) = (f[k], f[(k + 1) % 3]);
-            let key = (u64::from(a.min(b)) << 32) | u64::from(a.max(b));
-            edges.push((key, i as u32, a < b));
-        }
-    }
-    edges.sort_unstable();
+    // The live triangles' edges, in the sorted order (the whole list when
+    // every triangle is live, as in nearly every mesh).
+    let kept: Vec<Edge>;
+    let edges: &[Edge] = if live.iter().all(|l| *l) {
+        mesh.edges()
+    } else {
+        kept = mesh
+            .edges()
+            .iter()
+            .filter(|e| live[e.1 as usize])
+            .copied()
+            .collect();
+        &kept
+    };
     let mut parent: Vec<u32> = (0..n as u32).collect();
     let mut crowded: Vec<&[(u64, u32, bool)]> = Vec::new();
     for run in edges.chunk_by(|x, y| x.0 == y.0) {
@@ -276,6 +310,28 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
     shell
 }
 
+/// Each triangle's box (of its scaled corners), on every core: 48 bytes a
+/// triangle, allocated here and written (its pages faulted in) by the
+/// threads.
+fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
+    let n = mesh.faces.len();
+    let mut boxes = vec![Aabb::empty(); n];
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let piece = n.div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
+            scope.spawn(move || {
+                for (b, f) in out.iter_mut().zip(faces) {
+                    *b = Aabb::of(&f.map(|k| pts[k as usize]));
+                }
+            });
+        }
+    });
+    boxes
+}
+
 fn first_triangles(shell: &[u32], count: usize) -> Vec<usize> {
     let mut first = vec![usize::MAX; count];
     for (i, s) in shell.iter().enumerate() {
@@ -294,19 +350,45 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
         .iter()
         .map(|t| mesh.vertices[mesh.faces[*t][0] as usize])
         .collect();
-    let mut sums: Vec<Sums<f64>> = vec![Sums::new(); count];
-    for (i, f) in mesh.faces.iter().enumerate() {
-        let s = shell[i];
-        if s == NONE {
-            continue;
+    // NOTE: each shell's terms are added in the file's order, on one
+    // thread (the shells are shared out in ranges, each thread reading
+    // every triangle and keeping its own): the same sums on any number of
+    // cores. Only the volume is summed (`Sums::add_volume`).
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, count.div_ceil(1024).max(1));
+    let range = |t: usize| t * count / threads..(t + 1) * count / threads;
+    let sum = |t: usize| {
+        let mine = range(t);
+        let mut sums: Vec<Sums<f64>> = vec![Sums::new(); mine.len()];
+        for (i, f) in mesh.faces.iter().enumerate() {
+            let s = shell[i] as usize;
+            if !mine.contains(&s) {
+                continue;
+            }
+            let p = refs[s];
+            let v = f.map(|k| {
+                let c = mesh.vertices[k as usize];
+                std::array::from_fn(|j| DD::of(c[j]) - DD::of(p[j]))
+            });
+            sums[s - mine.start].add_volume(v);
         }
-        let p = refs[s as usize];
-        let v = f.map(|k| {
-            let c = mesh.vertices[k as usize];
-            std::array::from_fn(|j| DD::of(c[j]) - DD::of(p[j]))
-        });
-        sums[s as usize].add(Mode::Solid, v);
-    }
+        sums
+    };
+    let sums: Vec<Sums<f64>> = if threads == 1 {
+        sum(0)
+    } else {
+        std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads).map(|t| scope.spawn(move || sum(t))).collect();
+            handles
+                .into_iter()
+                .flat_map(|h| {
+                    h.join()
+                        .expect("invariant: a shell's volume does not panic")
+                })
+                .collect()
+        })
+    };
     let mut signs = Vec::with_capacity(count);
     for (s, sum) in sums.iter().enumerate() {
         let w = sum.value[0];
@@ -371,173 +453,6 @@ fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
     Ok(pts)
 }
 
-/// The first pair (by the first triangle's number, then the second's) of
-/// triangles that cross, if any; on every core.
-fn first_crossing(
-    mesh: &Mesh,
-    pts: &[P3],
-    live: &[bool],
-    boxes: &[Aabb],
-    bvh: &Bvh,
-) -> Option<(usize, usize)> {
-    use std::sync::atomic::{AtomicUsize, Ordering};
-    let n = mesh.faces.len();
-    if bvh.nodes.is_empty() {
-        return None;
-    }
-    let tri = |i: usize| mesh.faces[i].map(|k| pts[k as usize]);
-    let best = AtomicUsize::new(usize::MAX);
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, n.div_ceil(4096).max(1));
-    const BLOCK: usize = 4096;
-    // NOTE: triangles taken in the tree's order (neighbours in space one
-    // after another: the nodes a query visits stay in cache), every one
-    // of them, and the least pair kept: the same answer on any number of
-    // threads. A triangle numbered past the least pair found so far is
-    // passed over.
-    let items = &bvh.items;
-    let m = items.len();
-    let search = |t: usize| -> Option<(usize, usize)> {
-        let mut stack: Vec<u32> = Vec::with_capacity(64);
-        let mut mine: Option<(usize, usize)> = None;
-        let mut block = t;
-        while block * BLOCK < m {
-            for &i in &items[block * BLOCK..((block + 1) * BLOCK).min(m)] {
-                let i = i as usize;
-                if i >= best.load(Ordering::Relaxed) || !live[i] {
-                    continue;
-                }
-                let b = &boxes[i];
-                let mut j_best = usize::MAX;
-                stack.clear();
-                stack.push(0);
-                while let Some(at) = stack.pop() {
-                    let node = &bvh.nodes[at as usize];
-                    if !node.bounds.meets(b) {
-                        continue;
-                    }
-                    if bvh.is_leaf(node) {
-                        for &j in &items[node.start as usize..node.end as usize] {
-                            let j = j as usize;
-                            if j > i
-                                && j < j_best
-                                && boxes[j].meets(b)
-                                && cross(mesh.faces[i], mesh.faces[j], &tri(i), &tri(j))
-                            {
-                                j_best = j;
-                            }
-                        }
-                    } else {
-                        stack.push(node.left);
-                        stack.push(node.left + 1);
-                    }
-                }
-                if j_best != usize::MAX {
-                    best.fetch_min(i, Ordering::Relaxed);
-                    mine = Some(mine.map_or((i, j_best), |m| m.min((i, j_best))));
-                }
-            }
-            block += threads;
-        }
-        mine
-    };
-    let results: Vec<Option<(usize, usize)>> = if threads == 1 {
-        vec![search(0)]
-    } else {
-        std::thread::scope(|scope| {
-            let handles: Vec<_> = (0..threads)
-                .map(|t| {
-                    let search = &search;
-                    scope.spawn(move || search(t))
-                })
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| {
-                    h.join()
-                        .expect("invariant: the crossing search does not panic")
-                })
-                .collect()
-        })
-    };
-    results.into_iter().flatten().min()
-}
-
-/// Whether two triangles (by their welded corners `f`, `g` and their
-/// points) cross: share a segment inside both, or overlap in an area
-/// facing the same way.
-fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
-    let shared = f.iter().filter(|v| g.contains(v)).count();
-    if shared == 3 {
-        // The same corners: the same way is a repeated surface (twins
-        // wound opposite ways were set aside before).
-        return true;
-    }
-    // The sides of p's corners of q's plane.
-    let dp = p.map(|x| orient3d(q[0], q[1], q[2], x));
-    if dp.iter().all(|s| *s == 0) {
-        return coplanar_overlap(p, q);
-    }
-    if !(dp.contains(&1) && dp.contains(&-1)) {
-        // p meets q's plane at most along an edge or corner of p.
-        return false;
-    }
-    let dq = q.map(|x| orient3d(p[0], p[1], p[2], x));
-    if !(dq.contains(&1) && dq.contains(&-1)) {
-        return false;
-    }
-    // NOTE: Guigue and Devillers' canonical form: each triangle turned so
-    // that its first corner is alone on its side of the other's plane
-    // (positive), the other triangle's winding swapped when that side is
-    // negative; the two segments on the planes' line then overlap in more
-    // than a point exactly when both 4-point orientations below are
-    // negative (zero: they meet at an end only, a touch).
-    let (p, q) = canonical(*p, dp, *q);
-    let dq2 = q.map(|x| orient3d(p[0], p[1], p[2], x));
-    let (q, p) = canonical(q, dq2, p);
-    orient3d(p[1], q[0], p[0], q[1]) < 0 && orient3d(p[0], q[0], p[2], q[2]) < 0
-}
-
-/// Turn `a` so that its first corner is the one alone on its side of the
-/// other's plane (`s`: its corners' sides, both signs present); swap `b`'s
-/// last two corners when that side is negative.
-fn canonical(a: [P3; 3], s: [i8; 3], b: [P3; 3]) -> ([P3; 3], [P3; 3]) {
-    let alone = (0..3)
-        .find(|&i| s[i] != 0 && (0..3).all(|j| j == i || s[j] != s[i]))
-        .expect("invariant: a triangle with corners on both sides has one alone on its side");
-    let a = [a[alone], a[(alone + 1) % 3], a[(alone + 2) % 3]];
-    let b = if s[alone] < 0 { [b[0], b[2], b[1]] } else { b };
-    (a, b)
-}
-
-/// Two coplanar triangles overlap in an area and face the same way.
-fn coplanar_overlap(p: &[P3; 3], q: &[P3; 3]) -> bool {
-    // A projection in which p is not degenerate; q is in p's plane and not
-    // degenerate either, so it is not degenerate in it.
-    let Some((i, j, sp)) = [(1, 2), (2, 0), (0, 1)]
-        .into_iter()
-        .map(|(i, j)| (i, j, orient2d(p[0], p[1], p[2], i, j)))
-        .find(|x| x.2 != 0)
-    else {
-        return false;
-    };
-    let sq = orient2d(q[0], q[1], q[2], i, j);
-    if sq != sp {
-        // Facing opposite ways: in contact, not overlapping.
-        return false;
-    }
-    // Separating axis: an edge of either with the other wholly on its
-    // outer closed side.
-    let separated = |a: &[P3; 3], b: &[P3; 3]| {
-        (0..3).any(|k| {
-            let (u, v) = (a[k], a[(k + 1) % 3]);
-            b.iter().all(|w| orient2d(u, v, *w, i, j) * sp <= 0)
-        })
-    };
-    !(separated(p, q) || separated(q, p))
-}
-
 /// The winding number, at the corners of shell `s` that lie on no other
 /// shell's surface, of every other live triangle: the same at each of them,
 /// or the two corners (their triangles and windings) where it differs.
@@ -559,17 +474,17 @@ fn winding_around(
     shell: &[u32],
     members: &[u32],
     s: u32,
-    seen: &mut [u32],
+    scratch: &mut Scratch,
 ) -> Result<i64, [(usize, i64); 2]> {
     let mut last = 0;
     let mut free: Option<(usize, i64)> = None;
     for &i in members {
         for &k in &mesh.faces[i as usize] {
-            if seen[k as usize] == s + 1 {
+            if scratch.seen[k as usize] == s + 1 {
                 continue;
             }
-            seen[k as usize] = s + 1;
-            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s);
+            scratch.seen[k as usize] = s + 1;
+            let (w, on) = winding_at(pts[k as usize], mesh, pts, bvh, near, shell, s, scratch);
             last = w;
             if on {
                 continue;
@@ -582,6 +497,72 @@ fn winding_around(
         }
     }
     Ok(free.map_or(last, |(_, w)| w))
+}
+
+/// One thread's working space for the shells' windings: a mark per
+/// vertex (`winding_around`), the shells around a corner and a tree walk's
+/// stack, reused from corner to corner.
+struct Scratch {
+    seen: Vec<u32>,
+    around: Vec<u32>,
+    stack: Vec<u32>,
+}
+
+/// `f(s, scratch)` for every shell s, on every core: shells in blocks the
+/// threads take from a counter, each thread with its own `Scratch`
+/// (`vertices` marks), the results in the shells' order.
+/// Each shell's answer depends on the shell alone, so they are the
+/// one-core answers, and the caller reads them in order.
+fn per_shell<R: Send>(
+    count: usize,
+    vertices: usize,
+    f: impl Fn(usize, &mut Scratch) -> R + Sync,
+) -> Vec<R> {
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    const BLOCK: usize = 256;
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |t| t.get())
+        .clamp(1, count.div_ceil(BLOCK).max(1));
+    let next = AtomicUsize::new(0);
+    // Each thread's marks allocated here, on the calling thread (memory a
+    // thread allocates stays in its own arena once freed).
+    let scratches = (0..threads).map(|_| Scratch {
+        seen: vec![0u32; vertices],
+        around: Vec::new(),
+        stack: Vec::new(),
+    });
+    let work = |mut scratch: Scratch| {
+        let mut out = Vec::new();
+        loop {
+            let b = next.fetch_add(1, Ordering::Relaxed);
+            if b * BLOCK >= count {
+                return out;
+            }
+            for s in b * BLOCK..((b + 1) * BLOCK).min(count) {
+                out.push((s, f(s, &mut scratch)));
+            }
+        }
+    };
+    let mut parts: Vec<Vec<(usize, R)>> = if threads == 1 {
+        scratches.map(work).collect()
+    } else {
+        std::thread::scope(|scope| {
+            let work = &work;
+            let handles: Vec<_> = scratches
+                .map(|scratch| scope.spawn(move || work(scratch)))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| {
+                    h.join()
+                        .expect("invariant: a shell's judgement does not panic")
+                })
+                .collect()
+        })
+    };
+    let mut all: Vec<(usize, R)> = parts.drain(..).flatten().collect();
+    all.sort_unstable_by_key(|x| x.0);
+    all.into_iter().map(|x| x.1).collect()
 }
 
 /// Each shell's triangles, in the file's order (`start[s]..start[s + 1]`
@@ -608,6 +589,7 @@ fn members(shell: &[u32], count: usize) -> (Vec<u32>, Vec<usize>) {
 /// The winding number at v (perturbed to (x, y + ε, z + ε²)) of the live
 /// triangles not in shell `s`, by a ray along +x; and whether v lies on
 /// one of them.
+#[allow(clippy::too_many_arguments)] // the shared read-only state of one judgement
 fn winding_at(
     v: P3,
     mesh: &Mesh,
@@ -616,8 +598,10 @@ fn winding_at(
     near: &Near,
     shell: &[u32],
     s: u32,
+    scratch: &mut Scratch,
 ) -> (i64, bool) {
-    let around = near.around(v, s);
+    let Scratch { around, stack, .. } = scratch;
+    near.around(v, s, around, stack);
     let Some(reach) = around
         .iter()
         .map(|t| near.boxes[*t as usize].hi[0])
@@ -630,7 +614,8 @@ fn winding_at(
     if bvh.nodes.is_empty() {
         return (0, false);
     }
-    let mut stack = vec![0u32];
+    stack.clear();
+    stack.push(0);
     while let Some(at) = stack.pop() {
         let node = &bvh.nodes[at as usize];
         let b = &node.bounds;
@@ -670,14 +655,16 @@ struct Near<'a> {
 }
 
 impl Near<'_> {
-    /// The shells other than `s` whose (closed) boxes hold v, sorted.
-    fn around(&self, v: P3, s: u32) -> Vec<u32> {
-        let mut out = Vec::new();
+    /// The shells other than `s` whose (closed) boxes hold v, sorted, into
+    /// `out` (`stack` is scratch space).
+    fn around(&self, v: P3, s: u32, out: &mut Vec<u32>, stack: &mut Vec<u32>) {
+        out.clear();
         let inside = |b: &Aabb| (0..3).all(|k| b.lo[k] <= v[k] && v[k] <= b.hi[k]);
         if self.tree.nodes.is_empty() {
-            return out;
+            return;
         }
-        let mut stack = vec![0u32];
+        stack.clear();
+        stack.push(0);
         while let Some(at) = stack.pop() {
             let node = &self.tree.nodes[at as usize];
             if !inside(&node.bounds) {
@@ -695,7 +682,6 @@ impl Near<'_> {
             }
         }
         out.sort_unstable();
-        out
     }
 }
 
@@ -746,5 +732,6 @@ fn ray_hit(v: P3, t: &[P3; 3]) -> Hit {
     }
 }
 
+mod crossing;
 #[cfg(test)]
 mod tests;

@@ -421,3 +421,54 @@ fn an_obj_face_with_a_bad_index_late_in_a_long_line_is_named() {
         "line 4: face: vertex 9 does not exist (3 vertices are read so far)"
     );
 }
+
+#[test]
+fn the_first_degenerate_triangle_is_named_on_any_number_of_threads() {
+    // 200,000 separate triangles (a shell mesh: no closedness asked), two
+    // of them on one line, in different threads' shares.
+    let n = 200_000;
+    let mut t: Vec<[[f64; 3]; 3]> = (0..n)
+        .map(|i| {
+            let x = i as f64;
+            [[x, 0.0, 0.0], [x + 0.5, 0.0, 0.0], [x, 0.5, 0.0]]
+        })
+        .collect();
+    t[170_000][2] = [170_001.0, 0.0, 0.0];
+    t[120_000][2] = [120_000.25, 0.0, 0.0];
+    let at = (0..n).map(|_| At::Whole).collect();
+    let mesh = check::Mesh::weld(read::Triangles::of_corners(t, at)).unwrap();
+    let e = mesh.check(Mode::Shell).expect_err("degenerate");
+    assert!(
+        e.message.starts_with("triangle 120001 is degenerate"),
+        "{}",
+        e.message
+    );
+}
+
+#[test]
+fn the_f64_filter_never_passes_a_triangle_on_one_line() {
+    // Corners a, a + d, a + k d exactly (small integers times a power of
+    // two), far from the origin and near it: collinear, so degenerate.
+    let mut x = 0x853c_49e6_748f_ea9bu64;
+    let mut r = |m: u64| {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x % m) as f64 - (m / 2) as f64
+    };
+    for _ in 0..5000 {
+        let scale = 2f64.powi(r(200) as i32);
+        let a = [r(1 << 20), r(1 << 20), r(1 << 20)].map(|v| v * scale);
+        let d = [r(64), r(64), r(64)].map(|v| v * scale);
+        let k = r(16);
+        if d == [0.0; 3] || k == 0.0 || k == 1.0 {
+            continue;
+        }
+        let b: [f64; 3] = std::array::from_fn(|i| a[i] + d[i]);
+        let c: [f64; 3] = std::array::from_fn(|i| a[i] + k * d[i]);
+        let t = vec![[a, b, c]];
+        let mesh = check::Mesh::weld(read::Triangles::of_corners(t, vec![At::Whole])).unwrap();
+        let e = mesh.check(Mode::Shell).expect_err("collinear");
+        assert!(e.message.contains("on one line"), "{}", e.message);
+    }
+}

@@ -2,8 +2,8 @@
 //! meshes whose answers are known.
 
 use super::*;
-use crate::mesh::At;
 use crate::mesh::read::Triangles;
+use crate::mesh::{At, Mode};
 
 type Tri = [[f64; 3]; 3];
 
@@ -36,9 +36,9 @@ fn mesh(t: Vec<Tri>) -> Mesh {
 }
 
 fn checked(t: Vec<Tri>) -> Result<usize, String> {
-    let m = mesh(t);
+    let mut m = mesh(t);
     m.check(Mode::Solid).map_err(|e| e.message)?;
-    check(&m).map_err(|e| e.message)
+    check(&mut m).map_err(|e| e.message)
 }
 
 fn refused(t: Vec<Tri>) -> String {
@@ -348,6 +348,111 @@ fn a_shell_through_another_along_edges_in_its_face_is_refused_whichever_corner_c
             };
             let e = refused(t);
             assert!(e.contains("passes through another shell"), "{e}");
+        }
+    }
+}
+
+/// The least crossing pair by testing every pair of triangles.
+fn brute_first_crossing(m: &Mesh, pts: &[P3], boxes: &[Aabb]) -> Option<(usize, usize)> {
+    let tri = |i: usize| m.faces[i].map(|k| pts[k as usize]);
+    let n = m.faces.len();
+    (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .find(|&(i, j)| {
+            boxes[i].meets(&boxes[j]) && cross(m.faces[i], m.faces[j], &tri(i), &tri(j))
+        })
+}
+
+fn first_crossings(t: Vec<Tri>) -> [Option<(usize, usize)>; 4] {
+    let m = mesh(t);
+    let pts = scaled(&m).expect("small coordinates");
+    let boxes: Vec<Aabb> = m
+        .faces
+        .iter()
+        .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
+        .collect();
+    let bvh = Bvh::build(&boxes, (0..m.faces.len() as u32).collect());
+    [
+        brute_first_crossing(&m, &pts, &boxes),
+        first_crossing_on(&m, &pts, &boxes, &bvh, 1, 1 << 20),
+        first_crossing_on(&m, &pts, &boxes, &bvh, 2, 8),
+        first_crossing_on(&m, &pts, &boxes, &bvh, 5, 1),
+    ]
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+
+    /// Triangles with corners on a small grid: many share corners, edges
+    /// and planes, touch and cross.
+    #[test]
+    fn the_joined_search_names_the_least_crossing_pair_on_any_number_of_threads(
+        corners in proptest::collection::vec(proptest::array::uniform3(proptest::array::uniform3(0i8..5)), 1..120),
+    ) {
+        let t: Vec<Tri> = corners
+            .into_iter()
+            .map(|c| c.map(|p| p.map(f64::from)))
+            .filter(|c| {
+                let d1: [f64; 3] = std::array::from_fn(|k| c[1][k] - c[0][k]);
+                let d2: [f64; 3] = std::array::from_fn(|k| c[2][k] - c[0][k]);
+                let x = [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]];
+                x != [0.0; 3]
+            })
+            .collect();
+        proptest::prop_assume!(!t.is_empty());
+        let [want, one, two, five] = first_crossings(t);
+        proptest::prop_assert_eq!(one, want);
+        proptest::prop_assert_eq!(two, want);
+        proptest::prop_assert_eq!(five, want);
+    }
+}
+
+#[test]
+fn the_joined_search_names_the_least_pair_of_many_crossing_spheres() {
+    // Octahedra in a row, each crossing the next: many crossing pairs,
+    // the least must be named whatever the threads find first.
+    let mut t = Vec::new();
+    for k in 0..30 {
+        t.extend(
+            octahedron(k % 2 == 0)
+                .into_iter()
+                .map(|c| c.map(|p| [p[0] + 1.5 * f64::from(k), p[1], p[2]])),
+        );
+    }
+    let [want, one, two, five] = first_crossings(t);
+    assert!(want.is_some());
+    assert_eq!((one, two, five), (want, want, want));
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// Two triangles on a shared edge, on a small grid (coplanar, folded
+    /// and side by side often): the shortcut for opposite runs answers as
+    /// the predicates do, and never "cross".
+    #[test]
+    fn neighbours_across_an_edge_cross_as_the_predicates_say(
+        c in proptest::array::uniform4(proptest::array::uniform3(-2i8..3)),
+        opposite in proptest::bool::ANY,
+        rf in 0usize..3,
+        rg in 0usize..3,
+    ) {
+        let pt = c.map(|p| p.map(f64::from));
+        let x = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+            let (d1, d2): ([f64; 3], [f64; 3]) = (std::array::from_fn(|k| b[k] - a[k]), std::array::from_fn(|k| c[k] - a[k]));
+            [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        };
+        proptest::prop_assume!(x(pt[0], pt[1], pt[2]) != [0.0; 3] && x(pt[0], pt[1], pt[3]) != [0.0; 3]);
+        proptest::prop_assume!(pt[2] != pt[3]);
+        let turn = |t: [u32; 3], r: usize| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]];
+        let f = turn([0, 1, 2], rf);
+        let g = turn(if opposite { [1, 0, 3] } else { [0, 1, 3] }, rg);
+        let (p, q) = (f.map(|k| pt[k as usize]), g.map(|k| pt[k as usize]));
+        let exact = cross_exact(f, g, &p, &q);
+        proptest::prop_assert_eq!(cross(f, g, &p, &q), exact);
+        proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
+        if opposite {
+            proptest::prop_assert!(!exact);
         }
     }
 }

@@ -1,0 +1,202 @@
+//! The self-join against the per-item query it replaces and against every
+//! pair: the same pairs, each once, however the join is cut into tasks.
+
+use super::*;
+use proptest::prelude::*;
+
+/// Every pair (i < j) whose boxes meet, by the per-item query.
+fn by_query(bvh: &Bvh, boxes: &[Aabb]) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    for &i in &bvh.items {
+        bvh.query(boxes, &boxes[i as usize], |j| {
+            if j > i {
+                out.push((i, j));
+            }
+        });
+    }
+    out.sort_unstable();
+    out
+}
+
+/// Every pair whose boxes meet, by the join cut into tasks of `size`,
+/// unsorted (a pair seen twice would show).
+fn by_join(bvh: &Bvh, boxes: &[Aabb], size: usize) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    let mut stack = Vec::new();
+    for task in bvh.join_tasks(size) {
+        bvh.join(boxes, task, &mut stack, |i, j| out.push((i, j)));
+    }
+    out
+}
+
+fn brute(boxes: &[Aabb], items: &[u32]) -> Vec<(u32, u32)> {
+    let mut out = Vec::new();
+    for &i in items {
+        for &j in items {
+            if i < j && boxes[i as usize].meets(&boxes[j as usize]) {
+                out.push((i, j));
+            }
+        }
+    }
+    out.sort_unstable();
+    out
+}
+
+fn check(boxes: &[Aabb], items: Vec<u32>, size: usize) -> Result<(), TestCaseError> {
+    let want = brute(boxes, &items);
+    let bvh = Bvh::build(boxes, items);
+    prop_assert_eq!(&by_query(&bvh, boxes), &want);
+    let mut got = by_join(&bvh, boxes, size);
+    let n = got.len();
+    got.sort_unstable();
+    got.dedup();
+    prop_assert_eq!(got.len(), n, "a pair was visited twice");
+    prop_assert_eq!(&got, &want);
+    Ok(())
+}
+
+/// A box on a coarse grid (so that boxes touch, coincide and nest often),
+/// possibly flat or a point.
+fn grid_box() -> impl Strategy<Value = Aabb> {
+    (
+        prop::array::uniform3(0i32..12),
+        prop::array::uniform3(0i32..4),
+    )
+        .prop_map(|(lo, d)| Aabb {
+            lo: lo.map(f64::from),
+            hi: std::array::from_fn(|k| f64::from(lo[k] + d[k])),
+        })
+}
+
+/// A small box anywhere in the unit cube.
+fn scattered_box() -> impl Strategy<Value = Aabb> {
+    (
+        prop::array::uniform3(0.0f64..1.0),
+        prop::array::uniform3(0.0f64..0.1),
+    )
+        .prop_map(|(lo, d)| Aabb {
+            lo,
+            hi: std::array::from_fn(|k| lo[k] + d[k]),
+        })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    #[test]
+    fn the_join_finds_exactly_the_pairs_the_query_finds_on_a_grid(
+        boxes in prop::collection::vec(grid_box(), 0..300),
+        size in 1usize..64,
+    ) {
+        let items = (0..boxes.len() as u32).collect();
+        check(&boxes, items, size)?;
+    }
+
+    #[test]
+    fn the_join_finds_exactly_the_pairs_the_query_finds_on_scattered_boxes(
+        boxes in prop::collection::vec(scattered_box(), 0..400),
+        size in 1usize..200,
+    ) {
+        let items = (0..boxes.len() as u32).collect();
+        check(&boxes, items, size)?;
+    }
+
+    #[test]
+    fn the_join_covers_a_subset_of_the_items(
+        boxes in prop::collection::vec(grid_box(), 1..200),
+        keep in prop::collection::vec(any::<bool>(), 200),
+    ) {
+        let items = (0..boxes.len() as u32).filter(|i| keep[*i as usize]).collect();
+        check(&boxes, items, 8)?;
+    }
+}
+
+#[test]
+fn one_box_repeated_many_times_pairs_every_two() {
+    let b = Aabb {
+        lo: [0.0; 3],
+        hi: [1.0; 3],
+    };
+    let boxes = vec![b; 50];
+    let bvh = Bvh::build(&boxes, (0..50).collect());
+    let got = by_join(&bvh, &boxes, 4);
+    assert_eq!(got.len(), 50 * 49 / 2);
+}
+
+#[test]
+fn an_empty_tree_has_no_pairs() {
+    let bvh = Bvh::build(&[], Vec::new());
+    assert!(by_join(&bvh, &[], 1).is_empty());
+}
+
+/// Every node's bounds hold its items' boxes, its children split its items,
+/// and every item is in one leaf.
+fn well_formed(bvh: &Bvh, boxes: &[Aabb]) {
+    let mut seen = vec![0u32; boxes.len()];
+    let mut stack = vec![0u32];
+    while let Some(at) = stack.pop() {
+        let n = &bvh.nodes[at as usize];
+        for &i in &bvh.items[n.start as usize..n.end as usize] {
+            let b = &boxes[i as usize];
+            assert!((0..3).all(|k| n.bounds.lo[k] <= b.lo[k] && b.hi[k] <= n.bounds.hi[k]));
+        }
+        if bvh.is_leaf(n) {
+            for &i in &bvh.items[n.start as usize..n.end as usize] {
+                seen[i as usize] += 1;
+            }
+        } else {
+            let (l, r) = (&bvh.nodes[n.left as usize], &bvh.nodes[n.left as usize + 1]);
+            assert_eq!((l.start, l.end, r.end), (n.start, r.start, n.end));
+            stack.extend([n.left, n.left + 1]);
+        }
+    }
+    assert!(seen.iter().all(|s| *s == 1));
+}
+
+#[test]
+fn a_tree_built_on_many_threads_finds_the_pairs_one_built_on_one_finds() {
+    let mut x = 0x2545_f491_4f6c_dd1du64;
+    let mut r = || {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        (x >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let boxes: Vec<Aabb> = (0..40_000)
+        .map(|_| {
+            let lo = [r(), r(), r()];
+            Aabb {
+                lo,
+                hi: std::array::from_fn(|k| lo[k] + 0.01 * r()),
+            }
+        })
+        .collect();
+    let items: Vec<u32> = (0..boxes.len() as u32).collect();
+    let one = Bvh::build_on(&boxes, items.clone(), 1);
+    let four = Bvh::build_on(&boxes, items, 4);
+    well_formed(&one, &boxes);
+    well_formed(&four, &boxes);
+    let pairs = |b: &Bvh| {
+        let mut p = by_join(b, &boxes, 512);
+        p.sort_unstable();
+        p
+    };
+    let want = pairs(&one);
+    assert!(!want.is_empty());
+    assert_eq!(pairs(&four), want);
+    assert_eq!(by_query(&four, &boxes), want);
+}
+
+#[test]
+fn the_node_count_is_the_count_a_build_makes() {
+    for n in [0usize, 1, 4, 5, 9, 17, 1000, 40_001] {
+        let boxes: Vec<Aabb> = (0..n)
+            .map(|i| Aabb {
+                lo: [i as f64; 3],
+                hi: [i as f64 + 0.5; 3],
+            })
+            .collect();
+        let bvh = Bvh::build_on(&boxes, (0..n as u32).collect(), 1);
+        assert_eq!(bvh.nodes.len(), node_count(n).max(1), "{n}");
+    }
+}
