@@ -332,7 +332,6 @@ mod tests {
     use crate::mass::inertia_of;
     use crate::model::rotation::Orientation;
     use crate::part::{MassSpec, Part, Place, Spec};
-    use crate::shapes::Shape;
     use nalgebra::Matrix3;
 
     #[derive(Debug, PartialEq)]
@@ -475,7 +474,6 @@ mod tests {
                     parts.push(Part {
                         name: String::new(),
                         named: true,
-                        shape: Shape::Box,
                         spec: Spec {
                             mass: MassSpec::Given(m),
                             place: Place::Box(crate::shapes::r#box::Cuboid::Centred {

@@ -42,7 +42,6 @@ pub struct Part {
     pub name: String,
     /// Whether the file gave `name` (which may be `""`).
     pub named: bool,
-    pub shape: Shape,
     /// The part as the file gave it, in the file's units.
     pub spec: Spec,
     /// The sub-assemblies the part is in, outermost first (empty for a
@@ -111,6 +110,11 @@ impl SiFactors {
 }
 
 impl Part {
+    /// Its shape: its placed form's.
+    pub fn shape(&self) -> Shape {
+        self.spec.place.shape()
+    }
+
     /// Mass in file units: given, or density times volume, area or length;
     /// negative for a cut-out.
     pub fn mass<T: Real>(&self) -> T {

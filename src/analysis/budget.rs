@@ -20,7 +20,6 @@ use crate::numeric::{DD, Real, Sum};
 use crate::part::{MassSpec, Part, Place, Placed, SiFactors, Spec};
 use crate::quantity::Quantity;
 use crate::rotation::Orientation;
-use crate::shapes::Shape;
 use serde::Serialize;
 
 /// A part's mass growth: its basic mass times its maturity's allowance
@@ -455,7 +454,6 @@ fn point(p: &Part, g: f64) -> Part {
         // Whose growth it is, for a message (`growth_error`).
         name: p.name.clone(),
         named: false,
-        shape: Shape::Point,
         spec: Spec {
             mass: MassSpec::Given(g.abs()),
             place: Place::Point(crate::shapes::point::Point {

@@ -44,7 +44,7 @@ impl Side {
             let p = l.part;
             parts.push(PartView {
                 name: p.name.clone(),
-                shape: p.shape,
+                shape: p.shape(),
                 si: p.si_in(&factors),
             });
         });

@@ -435,7 +435,7 @@ impl Ctx<'_> {
                 .all(|x| x.is_finite() && (x * si).is_finite())
             {
                 bad = Some(true);
-            } else if self.in_file_range(p.shape, &p.spec, "", 0..0).is_err() {
+            } else if self.in_file_range(&p.spec, "", 0..0).is_err() {
                 bad = Some(false);
             }
         });
@@ -450,7 +450,7 @@ impl Ctx<'_> {
                     .place
                     .positions()
                     .all(|x| x.is_finite() && (x * si).is_finite())
-                    || self.in_file_range(p.shape, &p.spec, "", 0..0).is_err())
+                    || self.in_file_range(&p.spec, "", 0..0).is_err())
             {
                 failed = Some(p.clone());
             }
@@ -467,7 +467,7 @@ impl Ctx<'_> {
                 )
                 .help("the array's step or the mirror's plane takes the copies too far"));
         }
-        self.in_file_range(p.shape, &p.spec, &p.name, span)
+        self.in_file_range(&p.spec, &p.name, span)
     }
 }
 

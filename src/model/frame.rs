@@ -6,7 +6,6 @@
 use super::rotation::Orientation;
 use crate::numeric::M3;
 use crate::part::{MassSpec, Spec};
-use crate::shapes::Shape;
 
 /// Where an included file's frame goes in this file's.
 #[derive(Debug, Clone, PartialEq)]
@@ -202,11 +201,11 @@ impl Frame {
         }
     }
 
-    /// A part of the included file (`shape`, `s`), moved into this file's
+    /// A part of the included file (`s`), moved into this file's
     /// frame and units, in place (a walk places each part through every
     /// frame above it: a copy of the part per frame was a quarter of the
     /// time of a report of 2²⁰ instances).
-    pub(super) fn place(&self, _shape: Shape, s: &mut Spec) {
+    pub(super) fn place(&self, s: &mut Spec) {
         let reach = s.place.reach() * self.length;
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,

@@ -691,9 +691,7 @@ impl Ctx<'_> {
         one.each_event(&mut |e| {
             if let super::Event::Part(l) = e
                 && bad.is_none()
-                && self
-                    .in_file_range(l.part.shape, &l.part.spec, "", 0..0)
-                    .is_err()
+                && self.in_file_range(&l.part.spec, "", 0..0).is_err()
             {
                 bad = Some(l.index);
             }
@@ -701,7 +699,7 @@ impl Ctx<'_> {
         if let Some(index) = bad {
             // Again, named (names are made for the one part that fails).
             let p = one.part(index).expect("the part the walk met");
-            self.in_file_range(p.shape, &p.spec, &p.name, inc.span())?;
+            self.in_file_range(&p.spec, &p.name, inc.span())?;
         }
         Ok(one.items[0].clone())
     }

@@ -134,7 +134,7 @@ impl Ctx<'_> {
             removed: matches!(&p.remove, Some(r) if *r.get_ref()),
             placed: Default::default(),
         };
-        self.in_file_range(Shape::Mesh, &spec, &name, raw.span())?;
+        self.in_file_range(&spec, &name, raw.span())?;
         self.record_material(p, &spec);
         let tol = self.leave_part();
         Ok(Part {
@@ -146,7 +146,6 @@ impl Ctx<'_> {
                 String::new()
             },
             named: p.name.is_some(),
-            shape: Shape::Mesh,
             spec,
             assembly: Vec::new(),
             span: raw.span(),

@@ -264,7 +264,7 @@ impl Ctx<'_> {
             orientation.clone(),
             material.map(|m| m.1),
         )?;
-        self.in_file_range(shape, &spec, &name, raw.span())?;
+        self.in_file_range(&spec, &name, raw.span())?;
         self.record_material(p, &spec);
         let tol = self.leave_part();
         let part = Part {
@@ -281,7 +281,6 @@ impl Ctx<'_> {
                 String::new()
             },
             named: p.name.is_some(),
-            shape,
             spec,
             assembly: Vec::new(),
             span: raw.span(),
@@ -296,7 +295,6 @@ impl Ctx<'_> {
     /// one in micrometres and milligrams can overflow.
     pub(super) fn in_file_range(
         &self,
-        _shape: Shape,
         spec: &Spec,
         name: &str,
         span: Range<usize>,

@@ -65,9 +65,9 @@ pub struct Placing<'a> {
 impl Placing<'_> {
     /// A spec of the part's own file placed in this one, as the walk
     /// places it.
-    pub fn place(&self, shape: crate::shapes::Shape, spec: &mut crate::part::Spec) {
+    pub fn place(&self, spec: &mut crate::part::Spec) {
         for layer in self.layers.iter().rev() {
-            layer.frame.place(shape, spec);
+            layer.frame.place(spec);
         }
     }
 
@@ -262,7 +262,6 @@ impl Model {
             placed: Part {
                 name: String::new(),
                 named: true,
-                shape: crate::shapes::Shape::ALL[0],
                 spec: crate::part::Spec {
                     mass: crate::part::MassSpec::Given(0.0),
                     place: crate::part::Place::Triangle(crate::shapes::triangle::Triangle {
@@ -546,7 +545,6 @@ impl<'m> Walk<'m> {
             placed.name.clone_from(&part.name);
             placed.named = part.named;
             if moved {
-                placed.shape = part.shape;
                 reset::spec(&mut placed.spec, &part.spec);
                 placed.assembly.clone_from(&part.assembly);
                 placed.span.clone_from(&part.span);
@@ -569,14 +567,13 @@ impl<'m> Walk<'m> {
             return;
         };
         if moved {
-            placed.shape = part.shape;
             placed.span.clone_from(outermost.span);
             reset::spec(&mut placed.spec, &part.spec);
             reset::shared(&mut placed.material, &part.material);
         }
         for layer in self.frames.iter().rev() {
             if moved {
-                layer.frame.place(part.shape, &mut placed.spec);
+                layer.frame.place(&mut placed.spec);
             }
             if let Some(r) = &mut real {
                 r.size *= layer.frame.length;

@@ -1815,7 +1815,7 @@ fn the_every_shape_scene_has_every_shape() {
     let model = massprop::model::Model::parse(&massprop::diag::Source::new("s.toml", text))
         .unwrap_or_else(|d| panic!("{d}"));
     let mut drawn: std::collections::BTreeSet<&str> =
-        model.flattened().iter().map(|p| p.shape.name()).collect();
+        model.flattened().iter().map(|p| p.shape().name()).collect();
     // A mesh is read from a file, which a scene's text cannot carry: its
     // exact integrals are tested against their own references in
     // src/mesh/tests.rs and tests/integration/meshes.rs.

@@ -60,7 +60,7 @@ impl Parts {
             let m = p.mass_si(&s.factors);
             row.name.clear();
             row.name.push_str(&p.name);
-            row.shape = p.shape;
+            row.shape = p.shape();
             row.mass = m;
             row.mass_fraction = m / s.mass;
             row.center_of_mass = arr(&p.center_si(&s.factors));

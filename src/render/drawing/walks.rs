@@ -99,14 +99,14 @@ impl Last {
     pub(super) fn again(&mut self, own: usize, key: &str, part: &crate::part::Part) -> bool {
         let same = self.own == own
             && self.key == key
-            && self.shape == Some(part.shape)
+            && self.shape == Some(part.shape())
             && self.removed == part.spec.removed
             && self.place.as_ref() == Some(&part.spec.place);
         if !same {
             self.own = own;
             self.key.clear();
             self.key.push_str(key);
-            self.shape = Some(part.shape);
+            self.shape = Some(part.shape());
             self.place = Some(part.spec.place.clone());
             self.removed = part.spec.removed;
         }
@@ -170,7 +170,7 @@ impl Survey {
 pub(super) fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
     group
         .or(part.material.as_deref())
-        .unwrap_or_else(|| part.shape.name())
+        .unwrap_or_else(|| part.shape().name())
 }
 
 /// What the drawing's walks meet (`each_part`).
