@@ -16,7 +16,7 @@ use crate::bounds::{BodyError, Tally};
 use crate::eigen::jacobi_counted;
 use crate::mass::Body;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
-use crate::part::Parts;
+use crate::part::EachPart;
 use nalgebra::Vector3;
 
 pub use crate::tolerance::EQUAL_MOMENT_RTOL;
@@ -34,20 +34,20 @@ pub use crate::numeric::Precision;
 /// first moment s = Σ mᵢdᵢ (zero in exact arithmetic) then corrects the
 /// rounding of the centre ĉ itself: C = Σ(Cᵢ + mᵢdᵢdᵢᵀ) − s sᵀ/m and
 /// c = ĉ + s/m.
-pub fn compose<P: Parts + ?Sized>(parts: &P, precision: Precision) -> Body {
+pub fn compose<P: EachPart + ?Sized>(parts: &P, precision: Precision) -> Body {
     compose_bounded(parts, precision).0
 }
 
 /// `compose`, with the error bounds of the body it returns (`bounds`): the
 /// composer's own sums and, beside them, the few sums the bounds need.
-pub fn compose_bounded<P: Parts + ?Sized>(parts: &P, precision: Precision) -> (Body, BodyError) {
+pub fn compose_bounded<P: EachPart + ?Sized>(parts: &P, precision: Precision) -> (Body, BodyError) {
     match precision {
         Precision::Standard => compose_standard(parts),
         Precision::Extended => compose_extended(parts),
     }
 }
 
-fn compose_standard<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
+fn compose_standard<P: EachPart + ?Sized>(parts: &P) -> (Body, BodyError) {
     // The pivot ĉ = Σ (mᵢ/m) cᵢ: weights first, so that huge masses far out
     // cannot overflow a first moment Σ mᵢcᵢ the centre itself fits in.
     let mut mass = Sum::default();
@@ -116,7 +116,7 @@ fn finish(tally: &Tally, precision: Precision, body: &Body, s: [f64; 3]) -> Body
     )
 }
 
-fn compose_extended<P: Parts + ?Sized>(parts: &P) -> (Body, BodyError) {
+fn compose_extended<P: EachPart + ?Sized>(parts: &P) -> (Body, BodyError) {
     let zero = DD::of(0.0);
     let mut total = zero;
     parts.each(&mut |p| total += p.mass::<DD>());

@@ -59,18 +59,18 @@ pub struct Part {
 
 /// A body's parts, for the passes of the composer and of the per-part
 /// figures: a list, or a model walked (`model::walk`).
-pub trait Parts {
+pub trait EachPart {
     /// Each part, in order.
     fn each(&self, f: &mut dyn FnMut(&Part));
 }
 
-impl Parts for [Part] {
+impl EachPart for [Part] {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
         self.iter().for_each(f);
     }
 }
 
-impl Parts for Vec<Part> {
+impl EachPart for Vec<Part> {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
         self.iter().for_each(f);
     }

@@ -17,7 +17,7 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use massprop::mesh::{At, Format, MeshBody, Mode};
+use massprop::mesh::{At, FileType, MeshBody, Mode};
 
 type Box3 = ([f64; 3], [f64; 3], bool);
 
@@ -81,7 +81,7 @@ fn shells(data: &[u8]) {
         return;
     }
     let text = box_obj(&list);
-    let result = MeshBody::load(Format::Obj, text.as_bytes(), Mode::Solid);
+    let result = MeshBody::load(FileType::Obj, text.as_bytes(), Mode::Solid);
     if let Ok(m) = &result {
         assert!(m.measure.hi > 0.0, "an accepted solid has a positive volume");
     }
@@ -100,7 +100,7 @@ fn shells(data: &[u8]) {
 
 fuzz_target!(|data: &[u8]| {
     shells(data);
-    for format in [Format::Stl, Format::Obj] {
+    for format in [FileType::Stl, FileType::Obj] {
         for mode in [Mode::Solid, Mode::Shell] {
             match MeshBody::load(format, data, mode) {
                 Err(e) => {

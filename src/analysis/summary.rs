@@ -514,7 +514,7 @@ fn summarize_in(
         }
     };
 
-    let made_from = std::sync::Arc::new(rows::Source {
+    let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,
         shares,

@@ -212,7 +212,7 @@ fn onto_input(path: &str, input: &Path) -> Diagnostic {
     let input = if input == Path::new("-") {
         "the file on standard input".to_string()
     } else {
-        let what = if crate::mesh::Format::of(input).is_some() {
+        let what = if crate::mesh::FileType::of(input).is_some() {
             "the mesh file"
         } else {
             "the part file"

@@ -32,7 +32,7 @@ pub mod read;
 pub mod shells;
 pub mod weld;
 
-pub use read::Format;
+pub use read::FileType;
 
 use crate::numeric::{DD, M3, Real};
 
@@ -145,7 +145,7 @@ pub struct Bound {
 
 impl MeshBody {
     /// Read, weld, check and integrate a mesh file's bytes.
-    pub fn load(format: Format, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
+    pub fn load(format: FileType, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
         let t = read::read(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
         let mut mesh = check::Mesh::weld(t)?;
         mesh.check(mode)?;

@@ -15,18 +15,18 @@ use super::{At, MeshError};
 
 /// Which reader a file takes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Format {
+pub enum FileType {
     Stl,
     Obj,
 }
 
-impl Format {
+impl FileType {
     /// By the file's extension (case-insensitive): `.stl` or `.obj`.
-    pub fn of(path: &std::path::Path) -> Option<Format> {
+    pub fn of(path: &std::path::Path) -> Option<FileType> {
         let ext = path.extension()?.to_str()?.to_ascii_lowercase();
         match ext.as_str() {
-            "stl" => Some(Format::Stl),
-            "obj" => Some(Format::Obj),
+            "stl" => Some(FileType::Stl),
+            "obj" => Some(FileType::Obj),
             _ => None,
         }
     }
@@ -66,11 +66,11 @@ impl Triangles {
 }
 
 /// Read a mesh file's bytes; at most `limit` triangles.
-pub fn read(format: Format, bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
+pub fn read(format: FileType, bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     match format {
-        Format::Stl if is_binary_stl(bytes) => binary_stl(bytes, limit),
-        Format::Stl => ascii_stl(bytes, limit),
-        Format::Obj => obj(bytes, limit),
+        FileType::Stl if is_binary_stl(bytes) => binary_stl(bytes, limit),
+        FileType::Stl => ascii_stl(bytes, limit),
+        FileType::Obj => obj(bytes, limit),
     }
 }
 

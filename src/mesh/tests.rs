@@ -73,7 +73,7 @@ fn obj(t: &[[[f64; 3]; 3]]) -> Vec<u8> {
     s.into_bytes()
 }
 
-fn load(format: Format, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
+fn load(format: FileType, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
     MeshBody::load(format, bytes, mode)
 }
 
@@ -81,7 +81,7 @@ fn load(format: Format, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError>
 fn a_box_has_the_closed_form_of_a_box() {
     let (a, b, c) = (2.0, 3.0, 5.0);
     let m = load(
-        Format::Stl,
+        FileType::Stl,
         &ascii(&box_triangles(a, b, c, [1.0, -2.0, 7.0])),
         Mode::Solid,
     )
@@ -100,7 +100,7 @@ fn a_box_has_the_closed_form_of_a_box() {
     }
     // Its surface: area 2(ab + bc + ca).
     let s = load(
-        Format::Stl,
+        FileType::Stl,
         &ascii(&box_triangles(a, b, c, [0.0; 3])),
         Mode::Shell,
     )
@@ -112,12 +112,12 @@ fn a_box_has_the_closed_form_of_a_box() {
 fn binary_and_ascii_stl_and_obj_of_one_mesh_agree_exactly() {
     // Coordinates exact in f32, so the binary file loses nothing.
     let t = box_triangles(0.5, 1.25, 3.0, [-4.0, 2.5, 0.75]);
-    let x = load(Format::Stl, &ascii(&t), Mode::Solid).unwrap();
-    let y = load(Format::Stl, &binary(&t), Mode::Solid).unwrap();
-    let z = load(Format::Obj, &obj(&t), Mode::Solid).unwrap();
+    let x = load(FileType::Stl, &ascii(&t), Mode::Solid).unwrap();
+    let y = load(FileType::Stl, &binary(&t), Mode::Solid).unwrap();
+    let z = load(FileType::Obj, &obj(&t), Mode::Solid).unwrap();
     // ASCII keywords in capitals, as some exporters write them: the same.
     let upper = ascii(&t).to_ascii_uppercase();
-    let u = load(Format::Stl, &upper, Mode::Solid).unwrap();
+    let u = load(FileType::Stl, &upper, Mode::Solid).unwrap();
     assert_eq!(x, y);
     assert_eq!(x, z);
     assert_eq!(x, u);
@@ -126,14 +126,14 @@ fn binary_and_ascii_stl_and_obj_of_one_mesh_agree_exactly() {
 #[test]
 fn a_box_far_from_its_origin_keeps_its_own_moments() {
     let near = load(
-        Format::Obj,
+        FileType::Obj,
         &obj(&box_triangles(1.0, 2.0, 3.0, [0.0; 3])),
         Mode::Solid,
     )
     .unwrap();
     let far = 2f64.powi(40);
     let far = load(
-        Format::Obj,
+        FileType::Obj,
         &obj(&box_triangles(1.0, 2.0, 3.0, [far, -far, far])),
         Mode::Solid,
     )
@@ -176,7 +176,7 @@ fn the_bound_holds_for_an_f64_evaluation_against_double_double() {
     }
 }
 
-fn message(format: Format, bytes: &[u8], mode: Mode) -> String {
+fn message(format: FileType, bytes: &[u8], mode: Mode) -> String {
     load(format, bytes, mode).unwrap_err().message
 }
 
@@ -184,29 +184,29 @@ fn message(format: Format, bytes: &[u8], mode: Mode) -> String {
 fn each_fault_of_a_surface_is_named() {
     let t = box_triangles(1.0, 1.0, 1.0, [0.0; 3]);
     // A hole: one triangle left out.
-    let m = message(Format::Stl, &ascii(&t[1..]), Mode::Solid);
+    let m = message(FileType::Stl, &ascii(&t[1..]), Mode::Solid);
     assert!(
         m.contains("not closed") && m.contains("belongs to no other triangle"),
         "{m}"
     );
     // …which a shell takes.
-    assert!(load(Format::Stl, &ascii(&t[1..]), Mode::Shell).is_ok());
+    assert!(load(FileType::Stl, &ascii(&t[1..]), Mode::Shell).is_ok());
     // One triangle wound the other way.
     let mut flipped = t.clone();
     flipped[3].swap(1, 2);
-    let m = message(Format::Stl, &ascii(&flipped), Mode::Solid);
+    let m = message(FileType::Stl, &ascii(&flipped), Mode::Solid);
     assert!(
         m.contains("not consistently oriented") && m.contains("triangle 4"),
         "{m}"
     );
     // All wound inward.
     let inward: Vec<_> = t.iter().map(|x| [x[0], x[2], x[1]]).collect();
-    let m = message(Format::Stl, &ascii(&inward), Mode::Solid);
+    let m = message(FileType::Stl, &ascii(&inward), Mode::Solid);
     assert!(m.contains("faces point inward; flip the winding"), "{m}");
     // An edge of three triangles.
     let mut three = t.clone();
     three.push(t[0]);
-    let m = message(Format::Stl, &ascii(&three), Mode::Solid);
+    let m = message(FileType::Stl, &ascii(&three), Mode::Solid);
     assert!(
         m.contains("shared by 3 triangles") || m.contains("not consistently"),
         "{m}"
@@ -214,22 +214,22 @@ fn each_fault_of_a_surface_is_named() {
     // Degenerate: a repeated corner, collinear corners.
     let mut d = t.clone();
     d[0][1] = d[0][0];
-    let m = message(Format::Stl, &ascii(&d), Mode::Shell);
+    let m = message(FileType::Stl, &ascii(&d), Mode::Shell);
     assert!(
         m.contains("triangle 1 (line 2) is degenerate: two of its corners"),
         "{m}"
     );
     let line = vec![[[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]];
-    let m = message(Format::Stl, &ascii(&line), Mode::Shell);
+    let m = message(FileType::Stl, &ascii(&line), Mode::Shell);
     assert!(m.contains("zero area"), "{m}");
     // Empty, NaN.
     assert_eq!(
-        message(Format::Stl, b"solid x\nendsolid x\n", Mode::Solid),
+        message(FileType::Stl, b"solid x\nendsolid x\n", Mode::Solid),
         "the mesh has no triangles"
     );
     let mut nan = t.clone();
     nan[5][2][1] = f64::NAN;
-    let m = message(Format::Obj, &obj(&nan), Mode::Solid);
+    let m = message(FileType::Obj, &obj(&nan), Mode::Solid);
     assert!(m.contains("not a finite number"), "{m}");
 }
 
@@ -238,40 +238,40 @@ fn hostile_files_are_refused_with_where() {
     let t = box_triangles(1.0, 1.0, 1.0, [0.0; 3]);
     let b = binary(&t);
     // Truncated, and a count that lies (huge).
-    let m = message(Format::Stl, &b[..b.len() - 7], Mode::Solid);
+    let m = message(FileType::Stl, &b[..b.len() - 7], Mode::Solid);
     assert!(
         m.starts_with("byte 80: the header says 12 triangles"),
         "{m}"
     );
     let mut lying = b.clone();
     lying[80..84].copy_from_slice(&u32::MAX.to_le_bytes());
-    let m = message(Format::Stl, &lying, Mode::Solid);
+    let m = message(FileType::Stl, &lying, Mode::Solid);
     assert!(m.contains("4294967295 triangles"), "{m}");
-    let m = message(Format::Stl, &b[..40], Mode::Solid);
+    let m = message(FileType::Stl, &b[..40], Mode::Solid);
     assert!(m.contains("ends after 40 bytes"), "{m}");
     // ASCII: a bad number, a square facet, a file cut inside a facet.
     let m = message(
-        Format::Stl,
+        FileType::Stl,
         b"solid\nfacet normal 0 0 1\nouter loop\nvertex 1 x 2\n",
         Mode::Solid,
     );
     assert_eq!(m, "line 4: vertex: `x` is not a number");
     let quad = b"solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n";
     assert!(
-        message(Format::Stl, quad, Mode::Solid).starts_with("line 7: a facet with more than 3")
+        message(FileType::Stl, quad, Mode::Solid).starts_with("line 7: a facet with more than 3")
     );
     let cut = b"solid\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n";
     assert!(
-        message(Format::Stl, cut, Mode::Solid).contains("ends inside the facet begun on line 2")
+        message(FileType::Stl, cut, Mode::Solid).contains("ends inside the facet begun on line 2")
     );
     // OBJ: non-UTF-8 where a number is, an index out of range, zero.
-    let m = message(Format::Obj, b"v 0 0 0\nv 1 \xff 0\n", Mode::Solid);
+    let m = message(FileType::Obj, b"v 0 0 0\nv 1 \xff 0\n", Mode::Solid);
     assert!(
         m.starts_with("line 2: vertex: `") && m.contains("is not a number"),
         "{m}"
     );
     let m = message(
-        Format::Obj,
+        FileType::Obj,
         b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n",
         Mode::Shell,
     );
@@ -279,18 +279,18 @@ fn hostile_files_are_refused_with_where() {
         m,
         "line 4: face: vertex 4 does not exist (3 vertices are read so far)"
     );
-    let m = message(Format::Obj, b"v 0 0 0\nf 0 1 1\n", Mode::Shell);
+    let m = message(FileType::Obj, b"v 0 0 0\nf 0 1 1\n", Mode::Shell);
     assert!(m.contains("vertex 0 does not exist"), "{m}");
     // Non-UTF-8 in a comment is nothing.
     let ok = b"# \xff\xfe\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n";
-    assert!(load(Format::Obj, ok, Mode::Shell).is_ok());
+    assert!(load(FileType::Obj, ok, Mode::Shell).is_ok());
 }
 
 #[test]
 fn a_polygon_is_fanned_into_triangles() {
     // A unit square as one quad, shell: area 1, centroid (0.5, 0.5, 0).
     let m = load(
-        Format::Obj,
+        FileType::Obj,
         b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
         Mode::Shell,
     )
@@ -310,12 +310,12 @@ fn a_reflection_flips_the_centroid_and_the_products_of_its_axis() {
             p[0] += 0.5 * p[2];
         }
     }
-    let m = load(Format::Obj, &obj(&t), Mode::Solid).unwrap();
+    let m = load(FileType::Obj, &obj(&t), Mode::Solid).unwrap();
     let mirrored: Vec<_> = t
         .iter()
         .map(|x| [x[0], x[2], x[1]].map(|p| [p[0], -p[1], p[2]]))
         .collect();
-    let r = load(Format::Obj, &obj(&mirrored), Mode::Solid).unwrap();
+    let r = load(FileType::Obj, &obj(&mirrored), Mode::Solid).unwrap();
     let f = m.reflected(1);
     assert_eq!(f.measure, r.measure);
     for i in 0..3 {
@@ -370,8 +370,8 @@ fn a_truncated_binary_stl_whose_header_begins_with_solid_is_called_truncated() {
     let mut b = binary(&t);
     b[..11].copy_from_slice(b"solid cube ");
     // Whole, it is binary by its size; cut, it is still binary.
-    assert!(load(Format::Stl, &b, Mode::Solid).is_ok());
-    let m = message(Format::Stl, &b[..b.len() - 30], Mode::Solid);
+    assert!(load(FileType::Stl, &b, Mode::Solid).is_ok());
+    let m = message(FileType::Stl, &b[..b.len() - 30], Mode::Solid);
     assert!(
         m.starts_with("byte 80: the header says 12 triangles")
             && m.contains("a truncated binary STL"),
@@ -382,7 +382,7 @@ fn a_truncated_binary_stl_whose_header_begins_with_solid_is_called_truncated() {
 #[test]
 fn an_ascii_stl_that_does_not_parse_is_still_read_as_ascii() {
     let m = message(
-        Format::Stl,
+        FileType::Stl,
         b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 1 y 2\n",
         Mode::Solid,
     );
@@ -396,10 +396,10 @@ fn an_obj_face_is_fanned_as_it_is_read_and_meets_the_limit_at_its_index() {
         obj.push_str([" 1", " 2", " 3", " 4"][k % 4]);
     }
     obj.push('\n');
-    let t = read::read(Format::Obj, obj.as_bytes(), 10_000).unwrap();
+    let t = read::read(FileType::Obj, obj.as_bytes(), 10_000).unwrap();
     assert_eq!(t.faces.len(), 998);
     assert_eq!(t.points.len(), 4);
-    let e = read::read(Format::Obj, obj.as_bytes(), 100).unwrap_err();
+    let e = read::read(FileType::Obj, obj.as_bytes(), 100).unwrap_err();
     assert_eq!(e.at, At::Line(5));
     assert!(
         e.message.contains("more than 100 triangles"),
@@ -415,7 +415,7 @@ fn an_obj_face_with_a_bad_index_late_in_a_long_line_is_named() {
         obj.push_str(" 1 2 3");
     }
     obj.push_str(" 9\n");
-    let m = message(Format::Obj, obj.as_bytes(), Mode::Shell);
+    let m = message(FileType::Obj, obj.as_bytes(), Mode::Shell);
     assert_eq!(
         m,
         "line 4: face: vertex 9 does not exist (3 vertices are read so far)"

@@ -308,7 +308,7 @@ impl Ctx<'_> {
             }
             // Only mesh files, by their extension (after following
             // symlinks): nothing else is read and quoted as a mesh.
-            Kind::Mesh if crate::mesh::Format::of(&canonical).is_none() => {
+            Kind::Mesh if crate::mesh::FileType::of(&canonical).is_none() => {
                 return Err(self
                     .err(
                         inc.span(),

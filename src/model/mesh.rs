@@ -13,7 +13,7 @@ use super::include::{Files, Kind};
 use super::raw::RawPart;
 use super::rotation::Orientation;
 use crate::diag::Diagnostic;
-use crate::mesh::{Format, MeshBody, Mode};
+use crate::mesh::{FileType, MeshBody, Mode};
 use crate::part::{MassSpec, Part, Place, Spec};
 use crate::shapes::Shape;
 use crate::units::{self, Dim, FileUnits};
@@ -313,7 +313,7 @@ impl Ctx<'_> {
         if let Some(m) = files.meshes.get(&key) {
             return Ok(m.clone());
         }
-        let format = Format::of(&t.canonical).expect("`target_of` checked the extension");
+        let format = FileType::of(&t.canonical).expect("`target_of` checked the extension");
         let bytes = std::fs::read(&t.shown).map_err(|e| {
             self.err(
                 file.span(),

@@ -102,7 +102,7 @@ pub struct Model {
     pub included: Vec<std::path::PathBuf>,
     /// The file's toleranced quantities, in file order (a part's
     /// `Part::tol` points into them).
-    pub sources: Vec<tolerance::Source>,
+    pub sources: Vec<tolerance::Toleranced>,
     /// The most names in a part's group path, its sub-assemblies' groups
     /// counted: at most `budget::MAX_GROUP_DEPTH`.
     pub group_depth: usize,

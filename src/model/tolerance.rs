@@ -2,7 +2,7 @@
 //! ± 2 %"` (`+/-` for `±`), one standard deviation of a normal
 //! distribution unless the tolerance ends in `uniform` (then the value
 //! lies anywhere within ± the amount, σ = amount/√3). Each tolerance is a
-//! source of uncertainty (`Source`); a part records how its numbers move
+//! source of uncertainty (`Toleranced`); a part records how its numbers move
 //! with the sources (`Dep`), for `uncertainty` to propagate.
 //!
 //! The keys that may carry one are those that fill a number of the part's
@@ -43,7 +43,7 @@ impl Spread {
 /// One toleranced quantity in a file: an independent source of
 /// uncertainty for each copy of the part that carries it.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Source {
+pub struct Toleranced {
     /// The key it is on, with its component: `mass`, `size[1]`,
     /// `edges[0][2]`.
     pub key: String,
@@ -77,7 +77,7 @@ pub(super) struct Recorder {
     pub(super) component: usize,
     readings: Vec<Reading>,
     /// The file's sources so far, in file order.
-    pub(super) sources: Vec<Source>,
+    pub(super) sources: Vec<Toleranced>,
 }
 
 #[derive(Debug)]
@@ -94,7 +94,7 @@ struct Reading {
 /// Where a reading's source is: its own tolerance, or a parameter's.
 #[derive(Debug)]
 enum Origin {
-    New(Source),
+    New(Toleranced),
     Shared(u32),
 }
 
@@ -453,7 +453,7 @@ impl Ctx<'_> {
             row,
             component,
             rate: tol.spread.sigma(amount),
-            origin: Origin::New(Source {
+            origin: Origin::New(Toleranced {
                 key: key_text,
                 written: tol.written,
                 spread: tol.spread,
@@ -512,7 +512,7 @@ impl Ctx<'_> {
     /// uses it, in this instance of the file; its index.
     pub(super) fn shared_source(&self, name: &str, span: Range<usize>, tol: &Tol) -> u32 {
         let mut r = self.tol.borrow_mut();
-        r.sources.push(Source {
+        r.sources.push(Toleranced {
             key: format!("param `{name}`"),
             written: tol.written.clone(),
             spread: tol.spread,

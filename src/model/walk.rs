@@ -19,11 +19,11 @@
 
 use super::budget::Tag;
 use super::{Copies, Frame, Include, Item, Model, push_copy_name};
-use crate::part::{Part, Parts, RealSize};
+use crate::part::{EachPart, Part, RealSize};
 use std::borrow::Cow;
 use std::ops::Range;
 
-impl Parts for Model {
+impl EachPart for Model {
     fn each(&self, f: &mut dyn FnMut(&Part)) {
         self.each_body_part(f);
     }
@@ -310,7 +310,7 @@ struct Moved<'m> {
 pub struct Shift<'a> {
     /// The source's key: the same on every run, one per instance.
     pub key: u64,
-    pub source: &'a super::tolerance::Source,
+    pub source: &'a super::tolerance::Toleranced,
     /// The sub-assembly's name in its including file.
     pub include: &'a str,
     pub dir: [f64; 3],

@@ -17,7 +17,7 @@ use std::sync::Arc;
 
 /// What a row is made from: the model (its parts shared, not copied), the
 /// unit factors, the shares of the principal moments and the total mass.
-pub(super) struct Source {
+pub(super) struct RowData {
     pub(super) model: Model,
     pub(super) factors: SiFactors,
     pub(super) shares: Shares,
@@ -27,11 +27,11 @@ pub(super) struct Source {
 
 /// The body's parts, in file order, sub-assemblies expanded.
 #[derive(Clone)]
-pub struct Parts(pub(super) Arc<Source>);
+pub struct Parts(pub(super) Arc<RowData>);
 
 /// The sub-assemblies, parents before children.
 #[derive(Clone)]
-pub struct Assemblies(pub(super) Arc<Source>);
+pub struct Assemblies(pub(super) Arc<RowData>);
 
 impl Parts {
     /// How many.
