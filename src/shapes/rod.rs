@@ -1,5 +1,5 @@
 //! A rod: a slender segment of length `L` along local z, zero radius;
-//! dimensions [L]. Its real `diameter` never enters its moments
+//! dimensions `[L]`. Its real `diameter` never enters its moments
 //! (`analysis::ideal` compares it with the cylinder it describes).
 
 use super::read::Reader;
