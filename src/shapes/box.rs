@@ -57,7 +57,7 @@ impl ShapeKind for Cuboid {
     /// Three products.
     const MEASURE_ROUNDINGS: f64 = 3.0;
 
-    /// M a²/12: a², m·, /12, and one of slack.
+    /// m a²/12: a², m·, /12, and one of slack.
     const MOMENT_ROUNDINGS: f64 = 4.0;
 
     const MIRROR_AXIS: Option<usize> = Some(0);

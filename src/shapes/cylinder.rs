@@ -67,10 +67,10 @@ impl ShapeKind for Cylinder {
         help: "a cylinder takes `mass` or `density`, `radius` (or `diameter`) and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
     };
 
-    /// Π (1), R − r and R + r (2), two products, the length (1).
+    /// π (1), R − r and R + r (2), two products, the length (1).
     const MEASURE_ROUNDINGS: f64 = 6.0;
 
-    /// M (R² + r²)/4: 4, and one of slack.
+    /// m (R² + r²)/4: 4, and one of slack.
     const MOMENT_ROUNDINGS: f64 = 5.0;
 
     const MIRROR_AXIS: Option<usize> = Some(0);

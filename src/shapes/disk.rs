@@ -62,10 +62,10 @@ impl ShapeKind for Disk {
         help: "a disk takes `mass` or `areal_density`, and `radius` or `diameter` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
     };
 
-    /// Π (1), R − r and R + r (2), two products, and one of slack.
+    /// π (1), R − r and R + r (2), two products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 6.0;
 
-    /// M (R² + r²)/4: 4, and one of slack.
+    /// m (R² + r²)/4: 4, and one of slack.
     const MOMENT_ROUNDINGS: f64 = 5.0;
 
     const MIRROR_AXIS: Option<usize> = Some(0);

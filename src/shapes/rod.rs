@@ -78,7 +78,7 @@ impl ShapeKind for Rod {
     /// One product.
     const MEASURE_ROUNDINGS: f64 = 1.0;
 
-    /// M L²/12: L², m·, /12, and one of slack.
+    /// m L²/12: L², m·, /12, and one of slack.
     const MOMENT_ROUNDINGS: f64 = 4.0;
 
     const MIRROR_AXIS: Option<usize> = Some(0);
