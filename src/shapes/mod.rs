@@ -416,6 +416,8 @@ registry! {
     /// A triangle mesh read from a file: its integrals are computed from
     /// the file (`mesh`, `part::Place::Mesh`), no closed form here.
     Mesh => mesh::Mesh,
+    /// A cylinder with hemispherical ends, solid or hollow.
+    Capsule => capsule::Capsule,
 }
 
 impl Shape {

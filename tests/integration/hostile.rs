@@ -546,6 +546,7 @@ const SHAPES: &[&str] = &[
     "hemisphere",
     "prism",
     "mesh",
+    "capsule",
 ];
 
 /// The generator knows every shape: a shape added to massprop without its
@@ -689,7 +690,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
             lines.push(format!("shape = \"{shape}\""));
             let density_key = match shape {
                 "box" | "cylinder" | "sphere" | "cone" | "torus" | "hemisphere" | "prism"
-                | "mesh" => "density",
+                | "mesh" | "capsule" => "density",
                 "plate" | "disk" | "triangle" => "areal_density",
                 "rod" => "linear_density",
                 _ => "mass",
@@ -768,7 +769,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
                 "box" if !by_edges => lines.push(format!("size = {size3}")),
                 "plate" if !by_edges => lines.push(format!("size = {size2}")),
                 "rod" if !by_edges => lines.push(format!("length = {length}")),
-                "cylinder" | "disk" | "sphere" => {
+                "cylinder" | "disk" | "sphere" | "capsule" => {
                     lines.push(format!("radius = {radius}"));
                     match inner {
                         Some((0, _)) => lines.push(format!("inner_radius = {radius}")),
@@ -776,7 +777,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
                         Some((_, r)) => lines.push(format!("inner_radius = {r}")),
                         None => {}
                     }
-                    if shape == "cylinder" {
+                    if matches!(shape, "cylinder" | "capsule") {
                         lines.push(format!("length = {length}"));
                     }
                 }

@@ -127,6 +127,7 @@ enum Kind {
     Torus,
     Hemisphere,
     Prism,
+    Capsule,
 }
 
 impl Kind {
@@ -154,7 +155,7 @@ impl Kind {
     }
 
     /// The shapes beyond box, plate, rod and point.
-    const NEW: [Kind; 14] = [
+    const NEW: [Kind; 15] = [
         Kind::Cylinder,
         Kind::Tube,
         Kind::Disk,
@@ -169,6 +170,7 @@ impl Kind {
         Kind::Torus,
         Kind::Hemisphere,
         Kind::Prism,
+        Kind::Capsule,
     ];
 
     fn name(self) -> &'static str {
@@ -187,6 +189,7 @@ impl Kind {
             Kind::Torus => "torus",
             Kind::Hemisphere => "hemisphere",
             Kind::Prism => "prism",
+            Kind::Capsule => "capsule",
             _ => "box, plate, rod or point",
         }
     }
@@ -269,7 +272,8 @@ fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Par
                     | Kind::Annulus
                     | Kind::HollowSphere
                     | Kind::Torus
-                    | Kind::Hemisphere => ratio == 1.0,
+                    | Kind::Hemisphere
+                    | Kind::Capsule => ratio == 1.0,
                     _ => false,
                 };
                 let amount = if by_density && !thin && !matches!(kind, Kind::Point | Kind::Given) {
@@ -317,6 +321,7 @@ fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Par
                         Part::torus(s[0] + s[1], s[1], Some(s[1] * ratio), at, rotation, amount)
                     }
                     Kind::Hemisphere => Part::hemisphere(s[0], inner, at, rotation, amount),
+                    Kind::Capsule => Part::capsule(s[0], s[2], inner, at, rotation, amount),
                     // An L in its local x–y plane, off its origin.
                     Kind::Prism => {
                         let (a, b) = (s[0], s[1]);

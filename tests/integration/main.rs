@@ -6,6 +6,7 @@ mod auto;
 mod bounded;
 mod bounds;
 mod budget;
+mod capsule;
 mod channels;
 mod check;
 mod ci;

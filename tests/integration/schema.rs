@@ -311,6 +311,11 @@ fn samples(shape: &str) -> Vec<&'static str> {
             "mass = 1\nradius = 10\ncenter = [0, 0, 0]",
             "material = \"water\"\ndiameter = 10\ninner_diameter = 8\ncenter = [0, 0, 0]",
         ],
+        "capsule" => vec![
+            "mass = 1\nradius = 10\nlength = 30\ncenter = [0, 0, 0]",
+            "density = \"1 g/cm^3\"\ndiameter = 20\ninner_diameter = 18\nlength = 30\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
+            "material = \"steel\"\nradius = 10\ninner_radius = 9\nlength = 30\ncenter = [0, 0, 0]",
+        ],
         "prism" => vec![
             "mass = 1\npolygon = [[0, 0], [10, 0], [0, 10]]\nlength = 2",
             "density = \"1 g/cm^3\"\npolygon = [[0, 0], [10, 0], [10, 10], [0, 10]]\nlength = 2\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 90 }",

@@ -110,6 +110,7 @@ pub(crate) fn extra_ulps(p: &Part) -> Extra {
         Shape::Cone => (by_density(15.0), 40.0),
         Shape::Torus => (by_density(11.0), 8.0),
         Shape::Hemisphere => (by_density(12.0), 40.0),
+        Shape::Capsule => (by_density(17.0), 48.0),
         // The polygon's figures in double-double, rounded once; R C Rᵀ of
         // a full x–y block as a given tensor's.
         Shape::Prism => (by_density(4.0), 12.0),
@@ -885,6 +886,9 @@ pub(crate) fn every_shape(rng: &mut Rng) -> Scene {
         ),
         Part::hemisphere(a, None, rng.grid_point(), rotations[1], density(rng)),
         Part::hemisphere(b, Some(0.9 * b), rng.grid_point(), None, mass(rng)),
+        // Issue 29's capsules: solid, turned, by density; hollow by mass.
+        Part::capsule(a, b, None, rng.grid_point(), rotations[2], density(rng)),
+        Part::capsule(b, a, Some(0.8 * b), rng.grid_point(), None, mass(rng)),
         Part::prism(
             vec![
                 [0.0, 0.0],

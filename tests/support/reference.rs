@@ -289,6 +289,9 @@ pub enum Shape {
     Hemisphere,
     /// A polygon extruded along local z (`solids::polygon`).
     Prism,
+    /// A cylinder with hemispherical ends, solid or hollow
+    /// (`solids::capsule`).
+    Capsule,
 }
 
 impl Shape {
@@ -307,6 +310,7 @@ impl Shape {
             Shape::Torus => "torus",
             Shape::Hemisphere => "hemisphere",
             Shape::Prism => "prism",
+            Shape::Capsule => "capsule",
         }
     }
 
@@ -318,7 +322,8 @@ impl Shape {
             | Shape::Cone
             | Shape::Torus
             | Shape::Hemisphere
-            | Shape::Prism => "density",
+            | Shape::Prism
+            | Shape::Capsule => "density",
             Shape::Plate | Shape::Disk | Shape::Triangle => "areal_density",
             Shape::Rod => "linear_density",
             Shape::Point | Shape::Inertia => panic!("a {} takes only a mass", self.name()),
@@ -334,7 +339,8 @@ impl Shape {
             | Shape::Cone
             | Shape::Torus
             | Shape::Hemisphere
-            | Shape::Prism => 3,
+            | Shape::Prism
+            | Shape::Capsule => 3,
             Shape::Plate | Shape::Disk | Shape::Triangle => 2,
             Shape::Rod => 1,
             Shape::Point | Shape::Inertia => 0,
@@ -557,6 +563,21 @@ impl Part {
         let mut size = vec![radius];
         size.extend(inner);
         Part::centered(Shape::Hemisphere, size, center, rotation, amount)
+    }
+
+    /// A capsule: `radius`, `length` between its ends' centres, along
+    /// local z about `center`.
+    pub fn capsule(
+        radius: f64,
+        length: f64,
+        inner: Option<f64>,
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        let mut size = vec![radius, length];
+        size.extend(inner);
+        Part::centered(Shape::Capsule, size, center, rotation, amount)
     }
 
     pub fn prism(
@@ -1095,7 +1116,8 @@ fn centered_form(shape: Shape, size: &[Q]) -> ([Q; 3], Option<Q>) {
         | Shape::Cone
         | Shape::Torus
         | Shape::Hemisphere
-        | Shape::Prism => {
+        | Shape::Prism
+        | Shape::Capsule => {
             panic!("a {} has no form here (`solids`)", shape.name())
         }
     }
@@ -1152,6 +1174,7 @@ pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
                 Shape::Cone => Some(super::solids::cone(&size)),
                 Shape::Torus => Some(super::solids::torus(&size)),
                 Shape::Hemisphere => Some(super::solids::hemisphere(&size)),
+                Shape::Capsule => Some(super::solids::capsule(&size)),
                 _ => None,
             };
             let (per_mass, measure, offset) = match solid {
@@ -1806,6 +1829,18 @@ pub fn to_toml(scene: &Scene) -> String {
                     Shape::Hemisphere => {
                         writeln!(s, "radius = {}", number(size[0])).unwrap();
                         if let Some(r) = size.get(1) {
+                            writeln!(s, "inner_radius = {}", number(*r)).unwrap();
+                        }
+                    }
+                    Shape::Capsule => {
+                        writeln!(
+                            s,
+                            "radius = {}\nlength = {}",
+                            number(size[0]),
+                            number(size[1])
+                        )
+                        .unwrap();
+                        if let Some(r) = size.get(2) {
                             writeln!(s, "inner_radius = {}", number(*r)).unwrap();
                         }
                     }

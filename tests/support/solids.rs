@@ -1,5 +1,5 @@
 //! The exact forms of the shapes of issue 17 (cone, torus, hemisphere,
-//! prism) for the reference composer (`reference`), derived here from the
+//! prism) and of issue 29 (capsule) for the reference composer (`reference`), derived here from the
 //! definitions by exact polynomial integration, independently of
 //! massprop's closed forms (which take another road: Bernstein
 //! coefficients, ratios in ρ = r/R, Green's theorem in double-double).
@@ -109,6 +109,41 @@ pub fn hemisphere(size: &[Q]) -> ([Q; 3], Q, Option<Q>) {
         [second.clone(), second, axial],
         zbar,
         (!volume.is_zero()).then_some(volume),
+    )
+}
+
+/// A capsule [R, L] or hollow [R, L, r]: a tube r ≤ ρ ≤ R of length L
+/// (V_t = π(R² − r²)L, ∫x² dV_t = π(R⁴ − r⁴)L/4, ∫z² dV_t = V_t L²/12)
+/// and a spherical shell r ≤ s ≤ R split at its equator, each half moved
+/// L/2 along z (V_h = 2π(R³ − r³)/3, ∫z′ dV_h = π(R⁴ − r⁴)/4,
+/// ∫x² dV_h = ∫z′² dV_h = 2π(R⁵ − r⁵)/15, z = L/2 + z′): the sums of the
+/// three pieces' own integrals, each difference Rⁿ − rⁿ carried as
+/// (R − r) Σ R^k r^(n−1−k) so that at r = R the thin shell's limits
+/// remain; centred, so no offset.
+pub fn capsule(size: &[Q]) -> ([Q; 3], Q, Option<Q>) {
+    let (big, l) = (&size[0], &size[1]);
+    let zero = Q::zero();
+    let r = size.get(2).unwrap_or(&zero);
+    let div = |n: u32| -> Q {
+        (0..n)
+            .map(|k| pow_q(big, k) * pow_q(r, n - 1 - k))
+            .fold(Q::zero(), |a, b| a + b)
+    };
+    // Each integral over π(R − r): the tube's, then both half shells'.
+    let volume = div(2) * l + int(2) * (int(2) * div(3) / int(3));
+    let xx = div(4) * l / int(4) + int(2) * (int(2) * div(5) / int(15));
+    let half = |moved: &Q| -> Q {
+        // V_h L²/4 + L ∫z′ dV_h + ∫z′² dV_h, over π(R − r).
+        int(2) * div(3) / int(3) * moved * moved
+            + int(2) * moved * div(4) / int(4)
+            + int(2) * div(5) / int(15)
+    };
+    let zz = div(2) * l * l * l / int(12) + int(2) * half(&(l / int(2)));
+    let measure = pi() * (big - r) * &volume;
+    (
+        [&xx / &volume, &xx / &volume, &zz / &volume],
+        Q::zero(),
+        (!measure.is_zero()).then_some(measure),
     )
 }
 
