@@ -1,13 +1,9 @@
 //! A box: edges `a, b, c` along local x, y, z, centred on the origin;
 //! dimensions [a, b, c]. Each ∫x² dm is a uniform segment's, m a²/12.
 
+use super::common::{at, axes, centred_hull, corners, density_power, diagonal, edges_centroid, edges_centroid_error, edges_in, edges_measure, exact_centroid_error, flip, mirror_axis, norm1, points, reset_turn, spanned, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    at, axes, centred_hull, corners, density_power, diagonal, edges_centroid,
-    edges_centroid_error, edges_in, edges_measure, exact_centroid_error, flip, mirror_axis, norm1,
-    spanned, var,
-};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};

@@ -24,10 +24,7 @@
 //! and R = 0 never arises (the model needs `radius` > 0). A solid capsule
 //! (r = 0): ∫x² dm = m R²(L/4 + 4R/15)/(L + 4R/3).
 
-use super::common::{
-    add, at, axes, density_power, diagonal, exact_centroid_error, flip, mirror_axis, norm1,
-    points, reset_turn, rim, scaled, var,
-};
+use super::common::{add, axes, rim, scaled};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::read::Reader;
@@ -50,17 +47,6 @@ pub struct Capsule {
     /// `length`, between the hemispheres' centres.
     pub length: f64,
     pub orientation: Orientation,
-}
-
-impl Capsule {
-    /// Its dimensions as its closed forms take them, read through `l`.
-    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        [
-            var(self.radius, Slot::Radius, l),
-            var(self.inner_radius, Slot::InnerRadius, l),
-            var(self.length, Slot::Length, l),
-        ]
-    }
 }
 
 /// W, X and Z of the module's comment (V = πDW, ∫x² dV = πDX,
@@ -154,49 +140,11 @@ impl ShapeKind for Capsule {
         })
     }
 
-    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of(&self.dims(l))
-    }
 
-    fn measure_error(&self) -> f64 {
-        Self::MEASURE_ROUNDINGS
-    }
 
-    fn own_second_moment<T: Real, L: Lift>(
-        &self,
-        m: T,
-        units: Option<Units>,
-        l: L,
-    ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of(m, &self.dims(l));
-        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
-    }
 
-    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
-        (
-            Self::moments_of(m, &[self.radius, self.inner_radius, self.length]),
-            3,
-            Self::INFO.nonzero_moments,
-        )
-    }
 
-    fn moved(&mut self, m: &impl Mover) {
-        self.center = m.point(self.center);
-        self.radius *= m.length();
-        self.inner_radius *= m.length();
-        self.length *= m.length();
-        m.turn(&mut self.orientation);
-    }
 
-    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-        let [x, y, z] = &mut self.center;
-        f(Slot::At(0), x);
-        f(Slot::At(1), y);
-        f(Slot::At(2), z);
-        f(Slot::Radius, &mut self.radius);
-        f(Slot::InnerRadius, &mut self.inner_radius);
-        f(Slot::Length, &mut self.length);
-    }
 
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
@@ -235,45 +183,18 @@ impl ShapeKind for Capsule {
         ])
     }
 
-    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        at(&self.center, l)
-    }
 
-    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
-        exact_centroid_error(at)
-    }
 
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
-    }
 
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
 
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
 
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
 
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
-    }
 
-    fn reset_from(&mut self, src: &Self) {
-        self.center = src.center;
-        self.radius = src.radius;
-        self.inner_radius = src.inner_radius;
-        self.length = src.length;
-        reset_turn(&mut self.orientation, &src.orientation);
-    }
 
-    fn mirror(&mut self) {
-        flip(mirror_axis::<Self>(), &mut self.orientation);
-    }
+
+    placed_by_centre!(radius: Radius, inner_radius: InnerRadius, length: Length);
+
+    centred_centroid!();
 }
 
 #[cfg(test)]

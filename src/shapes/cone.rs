@@ -27,12 +27,9 @@
 //!   4w₁q₁ + 3(w₁q₂ + w₂q₁) + 6w₂q₂ (a cylinder: m R²/4; a full cone:
 //!   3m R²/20).
 
+use super::common::{add, axes, offset_centroid, offset_centroid_error, rim, scaled, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    add, axes, density_power, diagonal, flip, mirror_axis, norm1, offset_centroid,
-    offset_centroid_error, rim, scaled, var,
-};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
@@ -182,13 +179,7 @@ impl ShapeKind for Cone {
         })
     }
 
-    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of(&self.dims(l))
-    }
 
-    fn measure_error(&self) -> f64 {
-        Self::MEASURE_ROUNDINGS
-    }
 
     fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
         let z = Self::offset_of(&self.dims(l));
@@ -208,79 +199,16 @@ impl ShapeKind for Cone {
         )
     }
 
-    fn own_second_moment<T: Real, L: Lift>(
-        &self,
-        m: T,
-        units: Option<Units>,
-        l: L,
-    ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of(m, &self.dims(l));
-        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
-    }
 
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
-    }
 
-    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
-        (
-            Self::moments_of(m, &[self.radius, self.inner_radius, self.top_radius, self.top_inner_radius, self.length]),
-            3,
-            Self::INFO.nonzero_moments,
-        )
-    }
 
-    fn moved(&mut self, m: &impl Mover) {
-        self.center = m.point(self.center);
-        self.radius *= m.length();
-        self.inner_radius *= m.length();
-        self.top_radius *= m.length();
-        self.top_inner_radius *= m.length();
-        self.length *= m.length();
-        m.turn(&mut self.orientation);
-    }
 
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
 
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
 
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
 
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
-    }
 
-    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-        let [x, y, z] = &mut self.center;
-        f(Slot::At(0), x);
-        f(Slot::At(1), y);
-        f(Slot::At(2), z);
-        f(Slot::Radius, &mut self.radius);
-        f(Slot::InnerRadius, &mut self.inner_radius);
-        f(Slot::TopRadius, &mut self.top_radius);
-        f(Slot::TopInnerRadius, &mut self.top_inner_radius);
-        f(Slot::Length, &mut self.length);
-    }
 
-    fn reset_from(&mut self, src: &Self) {
-        self.center = src.center;
-        self.radius = src.radius;
-        self.inner_radius = src.inner_radius;
-        self.top_radius = src.top_radius;
-        self.top_inner_radius = src.top_inner_radius;
-        self.length = src.length;
-        reset_turn(&mut self.orientation, &src.orientation);
-    }
 
-    fn mirror(&mut self) {
-        flip(mirror_axis::<Self>(), &mut self.orientation);
-    }
 
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
@@ -311,4 +239,6 @@ impl ShapeKind for Cone {
         }
         Outline::Pieces(p)
     }
+
+    placed_by_centre!(radius: Radius, inner_radius: InnerRadius, top_radius: TopRadius, top_inner_radius: TopInnerRadius, length: Length);
 }

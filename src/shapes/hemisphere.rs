@@ -20,12 +20,9 @@
 //!   every coefficient positive, so no cancellation (19/320 solid, 1/12 a
 //!   thin shell).
 
+use super::common::{axes, offset_centroid, offset_centroid_error, rim, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    axes, density_power, diagonal, flip, mirror_axis, norm1, offset_centroid,
-    offset_centroid_error, rim, var,
-};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
@@ -148,13 +145,7 @@ impl ShapeKind for Hemisphere {
         })
     }
 
-    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of(&self.dims(l))
-    }
 
-    fn measure_error(&self) -> f64 {
-        Self::MEASURE_ROUNDINGS
-    }
 
     fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
         let z = Self::offset_of(&self.dims(l));
@@ -174,70 +165,16 @@ impl ShapeKind for Hemisphere {
         )
     }
 
-    fn own_second_moment<T: Real, L: Lift>(
-        &self,
-        m: T,
-        units: Option<Units>,
-        l: L,
-    ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of(m, &self.dims(l));
-        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
-    }
 
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
-    }
 
-    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
-        (
-            Self::moments_of(m, &[self.radius, self.inner_radius]),
-            3,
-            Self::INFO.nonzero_moments,
-        )
-    }
 
-    fn moved(&mut self, m: &impl Mover) {
-        self.center = m.point(self.center);
-        self.radius *= m.length();
-        self.inner_radius *= m.length();
-        m.turn(&mut self.orientation);
-    }
 
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
 
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
 
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
 
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
-    }
 
-    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-        let [x, y, z] = &mut self.center;
-        f(Slot::At(0), x);
-        f(Slot::At(1), y);
-        f(Slot::At(2), z);
-        f(Slot::Radius, &mut self.radius);
-        f(Slot::InnerRadius, &mut self.inner_radius);
-    }
 
-    fn reset_from(&mut self, src: &Self) {
-        self.center = src.center;
-        self.radius = src.radius;
-        self.inner_radius = src.inner_radius;
-        reset_turn(&mut self.orientation, &src.orientation);
-    }
 
-    fn mirror(&mut self) {
-        flip(mirror_axis::<Self>(), &mut self.orientation);
-    }
 
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
@@ -258,4 +195,6 @@ impl ShapeKind for Hemisphere {
             },
         ])
     }
+
+    placed_by_centre!(radius: Radius, inner_radius: InnerRadius);
 }

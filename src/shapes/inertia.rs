@@ -2,11 +2,9 @@
 //! centre and inertia tensor about its centroid given. No closed form
 //! here: the composer turns its tensor (`part::Place::Given`).
 
+use super::common::{at, density_power, exact_centroid_error, flip, given, mirror_axis, norm1, points, reset_turn};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    at, density_power, exact_centroid_error, flip, given, mirror_axis, norm1,
-};
 use super::lift::Lift;
 use super::outline::{Marker, Outline};
 use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};

@@ -3,9 +3,9 @@
 //! integrals come from the file (the `mesh` module, `part::Place::Mesh`), no
 //! closed form here.
 
+use super::common::{add, at, axes, comb, flip, mirror_axis, norm1, points, reset_turn};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, add, at, axes, comb, flip, mirror_axis, norm1};
 use super::error::{self, Own};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};

@@ -12,6 +12,8 @@
 //! one, and `report::ideal` compares it with the solid box and cylinder
 //! they describe.
 
+#[macro_use]
+mod centred;
 mod common;
 pub mod error;
 mod info;

@@ -2,19 +2,14 @@
 //! thickness; dimensions [a, b]. Its real `thickness` never enters its
 //! moments (`analysis::ideal` compares it with the box it describes).
 
+use super::common::{at, axes, centred_hull, corners, density_power, diagonal, edges_centroid, edges_centroid_error, edges_in, edges_measure, exact_centroid_error, flip, local_z, mirror_axis, norm1, points, reset_turn, spanned, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    at, axes, centred_hull, corners, density_power, diagonal, edges_centroid,
-    edges_centroid_error, edges_in, edges_measure, exact_centroid_error, flip, mirror_axis, norm1,
-    spanned, var,
-};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
-use super::common::local_z;
 use crate::numeric::pow2_scaled;
 use super::{PER_AREA, Solid, product, segment};
 

@@ -22,12 +22,9 @@
 //! magnitudes. The extrusion adds m L²/12 along z and nothing else: the
 //! local tensor has an x–y product and is block-diagonal.
 
+use super::common::{add, axes, comb, density_power, flip, mirror_axis, norm1, offset_centroid, offset_centroid_error, points, reset_turn, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    add, axes, comb, density_power, flip, mirror_axis, norm1, offset_centroid,
-    offset_centroid_error, var,
-};
 use super::error;
 use super::lift::Lift;
 use super::outline::{Outline, Piece, V3};

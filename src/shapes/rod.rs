@@ -2,12 +2,9 @@
 //! dimensions `[L]`. Its real `diameter` never enters its moments
 //! (`analysis::ideal` compares it with the cylinder it describes).
 
+use super::common::{add, at, axes, density_power, diagonal, exact_centroid_error, flip, local_z, mirror_axis, norm1, points, reset_turn, scaled, spanned, var};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    add, at, axes, density_power, diagonal, exact_centroid_error, flip, local_z, mirror_axis,
-    norm1, scaled, spanned, var,
-};
 use super::lift::{Lift, lift3, xyz};
 use super::outline::{Outline, Piece};
 use super::{

@@ -15,11 +15,9 @@
 //! Sums of positive terms only: no cancellation for a thin tube wall or a
 //! thin tube; at b = a, a thin toroidal shell.
 
+use super::common::axes;
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{reset_turn, points, 
-    at, axes, density_power, diagonal, exact_centroid_error, flip, mirror_axis, norm1, var,
-};
 use super::outline::{Outline, Piece};
 use super::{ MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use super::Dims;
@@ -55,13 +53,6 @@ pub struct Torus {
     /// `inner_tube_radius`.
     pub inner_tube_radius: f64,
     pub orientation: Orientation,
-}
-
-impl Torus {
-    /// Its dimensions as its closed forms take them, read through `l`.
-    fn dims<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        [var(self.radius, Slot::Radius, l), var(self.tube_radius, Slot::TubeRadius, l), var(self.inner_tube_radius, Slot::InnerTubeRadius, l)]
-    }
 }
 
 impl ShapeKind for Torus {
@@ -121,49 +112,11 @@ impl ShapeKind for Torus {
         })
     }
 
-    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of(&self.dims(l))
-    }
 
-    fn measure_error(&self) -> f64 {
-        Self::MEASURE_ROUNDINGS
-    }
 
-    fn own_second_moment<T: Real, L: Lift>(
-        &self,
-        m: T,
-        units: Option<Units>,
-        l: L,
-    ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of(m, &self.dims(l));
-        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
-    }
 
-    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
-        (
-            Self::moments_of(m, &[self.radius, self.tube_radius, self.inner_tube_radius]),
-            3,
-            Self::INFO.nonzero_moments,
-        )
-    }
 
-    fn moved(&mut self, m: &impl Mover) {
-        self.center = m.point(self.center);
-        self.radius *= m.length();
-        self.tube_radius *= m.length();
-        self.inner_tube_radius *= m.length();
-        m.turn(&mut self.orientation);
-    }
 
-    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-        let [x, y, z] = &mut self.center;
-        f(Slot::At(0), x);
-        f(Slot::At(1), y);
-        f(Slot::At(2), z);
-        f(Slot::Radius, &mut self.radius);
-        f(Slot::TubeRadius, &mut self.tube_radius);
-        f(Slot::InnerTubeRadius, &mut self.inner_tube_radius);
-    }
 
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
@@ -182,43 +135,16 @@ impl ShapeKind for Torus {
         }])
     }
 
-    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        at(&self.center, l)
-    }
 
-    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
-        exact_centroid_error(at)
-    }
 
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
-    }
 
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
 
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
 
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
 
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
-    }
 
-    fn reset_from(&mut self, src: &Self) {
-        self.center = src.center;
-        self.radius = src.radius;
-        self.tube_radius = src.tube_radius;
-        self.inner_tube_radius = src.inner_tube_radius;
-        reset_turn(&mut self.orientation, &src.orientation);
-    }
 
-    fn mirror(&mut self) {
-        flip(mirror_axis::<Self>(), &mut self.orientation);
-    }
+
+    placed_by_centre!(radius: Radius, tube_radius: TubeRadius, inner_tube_radius: InnerTubeRadius);
+
+    centred_centroid!();
 }

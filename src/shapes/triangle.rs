@@ -3,9 +3,9 @@
 //! and second moment come from its vertices (`part::Place::Vertices`),
 //! not from closed forms here.
 
+use super::common::{density_power, norm1, points, spanned};
 use super::read::Reader;
 use crate::diag::Diagnostic;
-use super::common::{points, density_power, norm1, spanned};
 use super::error;
 use super::lift::{Fixed, Lift, lift3, xyz};
 use super::outline::{Outline, Piece};
