@@ -371,3 +371,25 @@ pub fn reset_turn(dst: &mut Orientation, src: &Orientation) {
         *dst = src.clone();
     }
 }
+
+/// A box's or plate's `size`, read through `l`: component k fills
+/// `Size(k)`.
+pub fn sizes<T: Real, L: Lift, const N: usize>(size: &[f64; N], l: L) -> [T; N] {
+    std::array::from_fn(|k| var(size[k], Slot::Size(k as u8), l))
+}
+
+/// A plate's `size` as a box's, its third side 0.
+pub fn pad<const N: usize>(size: &[f64; N]) -> [f64; 3] {
+    std::array::from_fn(|k| size.get(k).copied().unwrap_or(0.0))
+}
+
+/// A corner and the edges that span a part, as `points`.
+pub fn spanned_points<const N: usize>(
+    corner: &[f64; 3],
+    edges: &[[f64; 3]; N],
+) -> ([[f64; 3]; 4], usize) {
+    let mut out = [[0.0; 3]; 4];
+    out[0] = *corner;
+    out[1..=N].copy_from_slice(edges);
+    (out, N + 1)
+}
