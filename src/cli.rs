@@ -275,11 +275,11 @@ pub enum RobotFormat {
 }
 
 impl RobotFormat {
-    fn format(self) -> crate::robot::Format {
+    fn format(self) -> crate::robot::Dialect {
         match self {
-            RobotFormat::Urdf => crate::robot::Format::Urdf,
-            RobotFormat::Sdf => crate::robot::Format::Sdf,
-            RobotFormat::Mjcf => crate::robot::Format::Mjcf,
+            RobotFormat::Urdf => crate::robot::Dialect::Urdf,
+            RobotFormat::Sdf => crate::robot::Dialect::Sdf,
+            RobotFormat::Mjcf => crate::robot::Dialect::Mjcf,
         }
     }
 }

@@ -21,7 +21,7 @@ use massprop::diag::Source;
 use massprop::render::inertial::{Export, update};
 use massprop::render::{Style, check, ci};
 use massprop::robot::engine::Engine;
-use massprop::robot::{Description, Format, Inertial, Tensor};
+use massprop::robot::{Description, Dialect, Inertial, Tensor};
 use serde_json::Value;
 
 /// What every update writes: numbers no short decimal holds, one with an
@@ -47,14 +47,14 @@ fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
         return;
     };
-    let _ = Format::of_text(text);
+    let _ = Dialect::of_text(text);
     // A number word in the input may be quoted back (a name, a note, a
     // diagnostic's snippet), also with the controls between its letters
     // dropped (JUnit drops a tab from the snippet it quotes).
     let bare: String = text.chars().filter(|c| !c.is_control()).collect();
     let quiet = non_finite_word(text).is_none() && non_finite_word(&bare).is_none();
     let entity = uses_declared_entity(text);
-    for format in [Format::Urdf, Format::Sdf, Format::Mjcf] {
+    for format in [Dialect::Urdf, Dialect::Sdf, Dialect::Mjcf] {
         let source = Source::new("fuzz.xml", text);
         match massprop::robot::read::read(&source, format) {
             Ok(d) => {
@@ -75,7 +75,7 @@ fuzz_target!(|data: &[u8]| {
 });
 
 fn result(
-    format: Format,
+    format: Dialect,
     status: Status,
     robot: Option<massprop::robot::check::RobotResult>,
 ) -> FileResult {
@@ -93,7 +93,7 @@ fn result(
 }
 
 /// Check under each engine alone and all together, and render.
-fn checked(source: &Source, d: &Description, format: Format, quiet: bool) {
+fn checked(source: &Source, d: &Description, format: Dialect, quiet: bool) {
     for engines in [
         &Engine::ALL[..],
         &[Engine::Mujoco],
@@ -179,7 +179,7 @@ fn values(i: &Inertial) -> (f64, [f64; 3], Option<[[f64; 3]; 3]>, Tensor) {
 }
 
 /// Update each of the first links (by name, once each) and read back.
-fn updated(source: &Source, d: &Description, format: Format) {
+fn updated(source: &Source, d: &Description, format: Dialect) {
     let mut names: Vec<&str> = d.links.iter().map(|l| l.name.as_str()).collect();
     names.dedup();
     names.truncate(UPDATES);

@@ -119,7 +119,7 @@ pub struct FileResult {
     pub robot: Option<crate::robot::check::RobotResult>,
     /// The robot description format of the file (None: a part file), known
     /// even when it cannot be read.
-    pub format: Option<crate::robot::Format>,
+    pub format: Option<crate::robot::Dialect>,
 }
 
 impl FileResult {

@@ -298,11 +298,11 @@ impl Each<'_> {
         let mut stdin = None;
         if !crate::io::is_toml(&path) {
             let source = crate::io::read_source_at(&path);
-            let format = crate::robot::Format::of_path(&path).or_else(|| {
+            let format = crate::robot::Dialect::of_path(&path).or_else(|| {
                 source
                     .as_ref()
                     .ok()
-                    .and_then(|s| crate::robot::Format::of_text(&s.text))
+                    .and_then(|s| crate::robot::Dialect::of_text(&s.text))
             });
             if let Some(format) = format {
                 if o.bless {

@@ -92,14 +92,14 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
 /// part file (and for standard input, which is read as one).
 fn robot_source(
     path: &str,
-) -> Result<Option<(crate::diag::Source, crate::robot::Format)>, Diagnostic> {
-    use crate::robot::Format;
+) -> Result<Option<(crate::diag::Source, crate::robot::Dialect)>, Diagnostic> {
+    use crate::robot::Dialect;
     let p = std::path::Path::new(path);
     if path == "-" || crate::io::is_toml(p) || !crate::robot::may_be_robot(p) {
         return Ok(None);
     }
     let source = crate::io::read_source(path)?;
-    match Format::of_path(p).or_else(|| Format::of_text(&source.text)) {
+    match Dialect::of_path(p).or_else(|| Dialect::of_text(&source.text)) {
         Some(f) => Ok(Some((source, f))),
         None => Err(Diagnostic::file(
             path,
@@ -113,8 +113,8 @@ fn robot_source(
 fn against_link(
     o: &Options,
     settings: &Settings,
-    old_robot: Option<(crate::diag::Source, crate::robot::Format)>,
-    new_robot: Option<(crate::diag::Source, crate::robot::Format)>,
+    old_robot: Option<(crate::diag::Source, crate::robot::Dialect)>,
+    new_robot: Option<(crate::diag::Source, crate::robot::Dialect)>,
     terminal: &super::Terminal,
 ) -> Result<Outcome, Diagnostic> {
     use crate::analysis::diff::{LinkDiff, Props};

@@ -12,7 +12,7 @@ use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, visible};
 use crate::render::inertial::{Export, inertial_element, unified_diff, update};
-use crate::robot::{Format, Tensor};
+use crate::robot::{Dialect, Tensor};
 use std::path::PathBuf;
 
 #[derive(Debug, Clone)]
@@ -20,7 +20,7 @@ pub struct Options {
     /// The part file; `-` is standard input.
     pub file: String,
     /// `--to`; None with `--update`, whose file tells it.
-    pub to: Option<Format>,
+    pub to: Option<Dialect>,
     /// `--principal`: MJCF `diaginertia` and `quat`.
     pub principal: bool,
     /// `--only`, `--about`, `--axes`, precision and includes.
@@ -60,7 +60,7 @@ pub fn export_of(s: &Summary, principal: bool) -> Export {
 }
 
 pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
-    if o.principal && o.to.is_some_and(|f| f != Format::Mjcf) {
+    if o.principal && o.to.is_some_and(|f| f != Dialect::Mjcf) {
         return Err(Diagnostic::plain(
             "`--principal` is for `--to mjcf` (diaginertia and quat); URDF and SDFormat write the full tensor",
         ));
@@ -98,8 +98,8 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
         (Some(file), source)
     };
     read.extend(std::fs::canonicalize(path).ok());
-    let format = Format::of_path(path)
-        .or_else(|| Format::of_text(&source.text))
+    let format = Dialect::of_path(path)
+        .or_else(|| Dialect::of_text(&source.text))
         .ok_or_else(|| {
             Diagnostic::file(
                 &source.name,
@@ -118,7 +118,7 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
             ),
         ));
     }
-    if o.principal && format != Format::Mjcf {
+    if o.principal && format != Dialect::Mjcf {
         return Err(Diagnostic::plain(
             "`--principal` is for MJCF files (diaginertia and quat); URDF and SDFormat write the full tensor",
         ));

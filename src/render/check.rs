@@ -160,7 +160,7 @@ pub fn json(results: &[FileResult]) -> String {
 
 /// What a file is: `part`, or its robot description format's name.
 pub fn kind(r: &FileResult) -> &'static str {
-    r.format.map_or("part", crate::robot::Format::name)
+    r.format.map_or("part", crate::robot::Dialect::name)
 }
 
 /// The results for people and CI logs; `style.colour`: each `error` as

@@ -9,7 +9,7 @@ use super::cause::{self, Cause};
 use super::engine::{self, Engine, Facts, Verdict};
 use super::steps;
 pub use super::steps::steps;
-use super::{Description, Format};
+use super::{Description, Dialect};
 use crate::diag::{Source, Span, floor_char_boundary};
 use serde::Serialize;
 
@@ -59,7 +59,7 @@ impl LinkResult {
 /// A robot description's links checked.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RobotResult {
-    pub format: Format,
+    pub format: Dialect,
     /// The engines asked for (`--engine`).
     pub engines: Vec<Engine>,
     pub links: Vec<LinkResult>,
@@ -95,16 +95,16 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             // engines' inertia for it is their converters' choice, not
             // judged here.
             let massless = match d.format {
-                Format::Urdf => true,
-                Format::Mjcf => d.compiler.inertiafromgeom == Some(false),
-                Format::Sdf => false,
+                Dialect::Urdf => true,
+                Dialect::Mjcf => d.compiler.inertiafromgeom == Some(false),
+                Dialect::Sdf => false,
             };
             let mut results = Vec::new();
             if massless && engines.contains(&Engine::Mujoco) {
                 let facts = Facts {
                     mass: 0.0,
                     tensor: super::Tensor::default(),
-                    written: if d.format == Format::Urdf {
+                    written: if d.format == Dialect::Urdf {
                         super::Written::Attributes
                     } else {
                         super::Written::Diagonal
@@ -119,10 +119,10 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
                 });
             }
             match d.format {
-                Format::Urdf if link.moving => warnings.push(
+                Dialect::Urdf if link.moving => warnings.push(
                     "no <inertial> on a moving link: URDF takes it as massless, which engines refuse unless a fixed child carries mass (MuJoCo fuses it in); Gazebo and Drake not checked".to_string(),
                 ),
-                Format::Sdf => warnings.push(
+                Dialect::Sdf => warnings.push(
                     "no explicit <inertial> (or `auto=\"true\"`): Gazebo gives it a mass of 1 kg and a unit tensor, or computes one from its collisions; not checked".to_string(),
                 ),
                 _ => {}
@@ -319,7 +319,7 @@ mod tests {
             "<robot name='r'><link name='a'><inertial><origin rpy='0.3 0.4 0.5'/><mass value='1'/><inertia ixx='{max}' ixy='0' ixz='0' iyy='{max}' iyz='0' izz='{max}'/></inertial></link></robot>"
         );
         let source = Source::new("r.urdf", text);
-        let d = super::super::read::read(&source, Format::Urdf).unwrap();
+        let d = super::super::read::read(&source, Dialect::Urdf).unwrap();
         let i = d.links[0].inertial.as_ref().unwrap();
         assert!(engine::principal_moments(&i.tensor).is_some());
         let t = i.tensor_in_link();

@@ -18,7 +18,7 @@ use std::ops::Range;
 /// A robot description format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum Format {
+pub enum Dialect {
     /// ROS's Unified Robot Description Format: `<robot>`.
     Urdf,
     /// SDFormat (Gazebo): `<sdf>`.
@@ -27,24 +27,24 @@ pub enum Format {
     Mjcf,
 }
 
-impl Format {
+impl Dialect {
     /// Its name on the command line and in JSON.
     pub fn name(self) -> &'static str {
         match self {
-            Format::Urdf => "urdf",
-            Format::Sdf => "sdf",
-            Format::Mjcf => "mjcf",
+            Dialect::Urdf => "urdf",
+            Dialect::Sdf => "sdf",
+            Dialect::Mjcf => "mjcf",
         }
     }
 
     /// The format a file's name says: `*.urdf`, `*.sdf` (any case). `*.xml`
     /// says nothing alone: its root element decides (`of_text`).
-    pub fn of_path(path: &std::path::Path) -> Option<Format> {
+    pub fn of_path(path: &std::path::Path) -> Option<Dialect> {
         let ext = path.extension()?.to_str()?;
         if ext.eq_ignore_ascii_case("urdf") {
-            Some(Format::Urdf)
+            Some(Dialect::Urdf)
         } else if ext.eq_ignore_ascii_case("sdf") {
-            Some(Format::Sdf)
+            Some(Dialect::Sdf)
         } else {
             None
         }
@@ -54,7 +54,7 @@ impl Format {
     /// `<mujoco>`), looked for without parsing the whole document: after
     /// an optional XML declaration, comments, processing instructions and
     /// a doctype. None when the root is none of those.
-    pub fn of_text(text: &str) -> Option<Format> {
+    pub fn of_text(text: &str) -> Option<Dialect> {
         let mut rest = text.trim_start_matches('\u{feff}');
         loop {
             rest = rest.trim_start();
@@ -80,9 +80,9 @@ impl Format {
             .find(|c: char| c.is_whitespace() || c == '>' || c == '/')
             .unwrap_or(tag.len());
         match &tag[..end] {
-            "robot" => Some(Format::Urdf),
-            "sdf" => Some(Format::Sdf),
-            "mujoco" => Some(Format::Mjcf),
+            "robot" => Some(Dialect::Urdf),
+            "sdf" => Some(Dialect::Sdf),
+            "mujoco" => Some(Dialect::Mjcf),
             _ => None,
         }
     }
@@ -90,9 +90,9 @@ impl Format {
 
 /// Whether a directory search looks at a file of this name as a possible
 /// robot description: `*.urdf`, `*.sdf`, `*.xml` (any case); an `*.xml` is
-/// one only if its root element says so (`Format::of_text`).
+/// one only if its root element says so (`Dialect::of_text`).
 pub fn may_be_robot(path: &std::path::Path) -> bool {
-    Format::of_path(path).is_some()
+    Dialect::of_path(path).is_some()
         || path
             .extension()
             .and_then(|e| e.to_str())
@@ -262,7 +262,7 @@ impl Default for MujocoCompiler {
 /// A robot description file read: its links in document order.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Description {
-    pub format: Format,
+    pub format: Dialect,
     /// `<robot name>`, the SDFormat model's, `<mujoco model>`.
     pub name: Option<String>,
     pub links: Vec<Link>,
@@ -275,24 +275,24 @@ mod tests {
 
     #[test]
     fn the_root_element_tells_the_format() {
-        assert_eq!(Format::of_text("<robot name='a'/>"), Some(Format::Urdf));
+        assert_eq!(Dialect::of_text("<robot name='a'/>"), Some(Dialect::Urdf));
         assert_eq!(
-            Format::of_text("\u{feff}<?xml version='1.0'?>\n<!-- c -->\n<sdf version='1.9'>"),
-            Some(Format::Sdf)
+            Dialect::of_text("\u{feff}<?xml version='1.0'?>\n<!-- c -->\n<sdf version='1.9'>"),
+            Some(Dialect::Sdf)
         );
-        assert_eq!(Format::of_text("<mujoco>"), Some(Format::Mjcf));
+        assert_eq!(Dialect::of_text("<mujoco>"), Some(Dialect::Mjcf));
         // A doctype whose internal subset declares entities, each ending
         // in `>` (an `*.xml` with one was checked as a part file).
         assert_eq!(
-            Format::of_text(
+            Dialect::of_text(
                 "<!DOCTYPE mujoco [\n<!ENTITY a \"1\">\n<!ENTITY b \"&a;\">\n]>\n<mujoco model='&b;'/>"
             ),
-            Some(Format::Mjcf)
+            Some(Dialect::Mjcf)
         );
-        assert_eq!(Format::of_text("<!DOCTYPE mujoco [<!ENTITY a '1'>"), None);
-        assert_eq!(Format::of_text("<robots>"), None);
-        assert_eq!(Format::of_text("<project>"), None);
-        assert_eq!(Format::of_text("[[part]]"), None);
+        assert_eq!(Dialect::of_text("<!DOCTYPE mujoco [<!ENTITY a '1'>"), None);
+        assert_eq!(Dialect::of_text("<robots>"), None);
+        assert_eq!(Dialect::of_text("<project>"), None);
+        assert_eq!(Dialect::of_text("[[part]]"), None);
     }
 
     #[test]

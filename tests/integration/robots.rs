@@ -6,7 +6,7 @@
 
 use super::common::{massprop, scratch};
 use massprop::diag::Source;
-use massprop::robot::{Format, Inertial, read::read};
+use massprop::robot::{Dialect, Inertial, read::read};
 use std::path::{Path, PathBuf};
 
 fn repo(path: &str) -> PathBuf {
@@ -32,21 +32,21 @@ fn stdout(args: &[&str]) -> String {
 }
 
 /// A one-link document of `format` holding `element`.
-fn document(format: Format, element: &str) -> String {
+fn document(format: Dialect, element: &str) -> String {
     match format {
-        Format::Urdf => {
+        Dialect::Urdf => {
             format!("<robot name=\"r\">\n  <link name=\"l\">\n    {element}\n  </link>\n</robot>\n")
         }
-        Format::Sdf => format!(
+        Dialect::Sdf => format!(
             "<sdf version=\"1.9\">\n  <model name=\"m\">\n    <link name=\"l\">\n      {element}\n    </link>\n  </model>\n</sdf>\n"
         ),
-        Format::Mjcf => format!(
+        Dialect::Mjcf => format!(
             "<mujoco>\n  <worldbody>\n    <body name=\"l\">\n      <freejoint/>\n      {element}\n    </body>\n  </worldbody>\n</mujoco>\n"
         ),
     }
 }
 
-fn read_back(format: Format, element: &str) -> Inertial {
+fn read_back(format: Dialect, element: &str) -> Inertial {
     let text = document(format, element);
     let d =
         read(&Source::new("t", text.as_str()), format).unwrap_or_else(|e| panic!("{e}\n{text}"));
@@ -60,9 +60,9 @@ fn export_reads_back_to_the_last_bit_in_every_format() {
         let s = massprop::summarize(&file, &massprop::Settings::default()).unwrap();
         let path = file.to_str().unwrap();
         for (format, to) in [
-            (Format::Urdf, "urdf"),
-            (Format::Sdf, "sdf"),
-            (Format::Mjcf, "mjcf"),
+            (Dialect::Urdf, "urdf"),
+            (Dialect::Sdf, "sdf"),
+            (Dialect::Mjcf, "mjcf"),
         ] {
             let element = stdout(&["export", path, "--to", to]);
             let i = read_back(format, element.trim_end());
@@ -108,7 +108,7 @@ fn principal_mjcf_reads_back_the_principal_moments_to_the_bit_and_the_axes_to_ro
             "mjcf",
             "--principal",
         ]);
-        let i = read_back(Format::Mjcf, element.trim_end());
+        let i = read_back(Dialect::Mjcf, element.trim_end());
         let ctx = format!("{}:\n{element}", file.display());
         let d = [i.tensor.xx, i.tensor.yy, i.tensor.zz];
         assert_eq!(
@@ -199,7 +199,7 @@ fn update_replaces_the_inertial_and_keeps_every_other_byte() {
     assert!(new.ends_with(&ARM[end..]), "{new}");
     // Read back: the part file's values, to the bit.
     let s = massprop::summarize(repo(part), &massprop::Settings::default()).unwrap();
-    let d = read(&Source::new("arm.urdf", new.as_str()), Format::Urdf).unwrap();
+    let d = read(&Source::new("arm.urdf", new.as_str()), Dialect::Urdf).unwrap();
     let i = d.links[1].inertial.clone().unwrap();
     assert_eq!(i.mass.to_bits(), s.mass.to_bits());
     assert_eq!(
@@ -495,7 +495,7 @@ fn the_ci_formats_point_at_each_failing_inertial() {
         .collect();
     let links = read(
         &Source::new("m", std::fs::read_to_string(&path).unwrap()),
-        Format::Urdf,
+        Dialect::Urdf,
     )
     .unwrap()
     .links
@@ -551,7 +551,7 @@ fn export_writes_the_report_frames_values() {
     let mut args = vec!["export", p, "--to", "sdf"];
     args.extend(frame);
     let element = stdout(&args);
-    let i = read_back(Format::Sdf, element.trim_end());
+    let i = read_back(Dialect::Sdf, element.trim_end());
     let (r, _) = super::common::report_json_file(&part, &frame);
     let f = |v: &serde_json::Value| v.as_f64().unwrap().to_bits();
     for k in 0..3 {
@@ -578,7 +578,7 @@ fn export_writes_the_report_frames_values() {
         .unwrap()
         .to_string();
     let element = stdout(&["export", p, "--to", "mjcf", "--only", &name]);
-    let i = read_back(Format::Mjcf, element.trim_end());
+    let i = read_back(Dialect::Mjcf, element.trim_end());
     let (only, _) = super::common::report_json_file(&part, &["--only", &name]);
     assert_eq!(i.mass.to_bits(), f(&only["mass"]));
     assert!(i.mass < whole["mass"].as_f64().unwrap());
@@ -604,7 +604,7 @@ fn update_works_in_sdformat_and_mjcf_files() {
         let new = std::fs::read_to_string(&target).unwrap();
         assert_ne!(new, original);
         // The bytes before and after the replaced element are the same.
-        let format = Format::of_path(&target).unwrap_or(Format::Mjcf);
+        let format = Dialect::of_path(&target).unwrap_or(Dialect::Mjcf);
         let old_range = read(&Source::new(file, original.as_str()), format)
             .unwrap()
             .links

@@ -20,7 +20,7 @@
 
 use crate::hostile::{non_finite_word, property, run};
 use massprop::diag::Source;
-use massprop::robot::{Description, Format, Inertial, read::read};
+use massprop::robot::{Description, Dialect, Inertial, read::read};
 use proptest::prelude::*;
 use proptest::sample::Index;
 use serde_json::Value;
@@ -71,12 +71,12 @@ fn walk(v: &Value, key: &str, path: &str, nulls: &[&str]) -> Result<(), String> 
 }
 
 /// The format a file is read as, as `check` decides it.
-fn format_of(path: &Path, text: &str) -> Option<Format> {
-    Format::of_path(path).or_else(|| Format::of_text(text.trim_start_matches('\u{feff}')))
+fn format_of(path: &Path, text: &str) -> Option<Dialect> {
+    Dialect::of_path(path).or_else(|| Dialect::of_text(text.trim_start_matches('\u{feff}')))
 }
 
 /// The file read as a robot description by the library, if it can be.
-fn described(path: &Path, bytes: &[u8]) -> Option<(Format, Description)> {
+fn described(path: &Path, bytes: &[u8]) -> Option<(Dialect, Description)> {
     let text = std::str::from_utf8(bytes).ok()?;
     let format = format_of(path, text)?;
     let d = read(&Source::new("f", text), format).ok()?;
@@ -109,7 +109,7 @@ fn robot_hostile(path: &Path, link: &str) -> Result<bool, String> {
     let lossy = String::from_utf8_lossy(&bytes);
     let bare: String = lossy.chars().filter(|c| !c.is_control()).collect();
     let quiet = non_finite_word(&lossy).is_none() && non_finite_word(&bare).is_none();
-    let robot = Format::of_path(path).is_some();
+    let robot = Dialect::of_path(path).is_some();
     let mut read_ok = None;
     // check: JSON under each engine choice, the other formats under all.
     let mut runs: Vec<Vec<&str>> = [None, Some("mujoco"), Some("gazebo"), Some("drake")]
@@ -263,7 +263,7 @@ fn exported() -> Inertial {
         "<robot name='r'><link name='a'>{}</link></robot>",
         out.stdout.text()
     );
-    let d = read(&Source::new("e.urdf", text), Format::Urdf).unwrap();
+    let d = read(&Source::new("e.urdf", text), Dialect::Urdf).unwrap();
     d.links[0].inertial.clone().unwrap()
 }
 
@@ -1065,7 +1065,7 @@ fn ten_thousand_links_are_checked_and_updated() {
 /// checking `many_links(n)` under every engine.
 fn check_steps(n: usize) -> u64 {
     let source = Source::new("many.urdf", many_links(n));
-    let d = read(&source, Format::Urdf).unwrap();
+    let d = read(&source, Dialect::Urdf).unwrap();
     let before = massprop::robot::check::steps();
     let r = massprop::robot::check::check(&source, &d, &massprop::robot::engine::Engine::ALL);
     assert_eq!(r.links.len(), n);

@@ -2,7 +2,7 @@
 //! wording in one `Display`, and where in the text it is (`at`), so that
 //! the caller can point at `file:line:col`.
 
-use crate::robot::Format;
+use crate::robot::Dialect;
 use std::fmt;
 
 /// Why a link's inertial could not be replaced. `at` is the byte offset of
@@ -18,13 +18,13 @@ pub enum UpdateError {
     /// The root element is not the format's (`<robot>`, `<sdf>`,
     /// `<mujoco>`).
     Root {
-        format: Format,
+        format: Dialect,
         found: String,
         at: Option<usize>,
     },
     /// No link (MJCF: body) of that name.
     NoLink {
-        format: Format,
+        format: Dialect,
         link: String,
         /// The first names in document order, at most `LISTED`.
         names: Vec<String>,
@@ -35,13 +35,13 @@ pub enum UpdateError {
     },
     /// More than one link of that name; `at` is the second.
     Duplicate {
-        format: Format,
+        format: Dialect,
         link: String,
         at: Option<usize>,
     },
     /// The link has more than one `<inertial>`; `at` is the second.
     Inertials {
-        format: Format,
+        format: Dialect,
         link: String,
         at: Option<usize>,
     },
@@ -65,19 +65,19 @@ impl UpdateError {
 }
 
 /// What a format calls a link.
-pub(super) fn noun(format: Format) -> &'static str {
+pub(super) fn noun(format: Dialect) -> &'static str {
     match format {
-        Format::Urdf | Format::Sdf => "link",
-        Format::Mjcf => "body",
+        Dialect::Urdf | Dialect::Sdf => "link",
+        Dialect::Mjcf => "body",
     }
 }
 
 /// The root element a format's files have.
-pub(super) fn root_name(format: Format) -> &'static str {
+pub(super) fn root_name(format: Dialect) -> &'static str {
     match format {
-        Format::Urdf => "robot",
-        Format::Sdf => "sdf",
-        Format::Mjcf => "mujoco",
+        Dialect::Urdf => "robot",
+        Dialect::Sdf => "sdf",
+        Dialect::Mjcf => "mujoco",
     }
 }
 

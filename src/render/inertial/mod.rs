@@ -14,7 +14,7 @@ pub use error::UpdateError;
 pub use update::update;
 
 use crate::render::format::push_shortest;
-use crate::robot::{Format, Tensor};
+use crate::robot::{Dialect, Tensor};
 
 /// What `export` writes: a body's inertial in the link frame, SI.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -43,11 +43,11 @@ pub struct Export {
 /// where importers have dropped the rotation, mujoco#3559). MJCF writes
 /// `fullinertia` in MuJoCo's order (xx yy zz xy xz yz), or under
 /// `principal` the `diaginertia` and the `quat` of the principal axes.
-pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {
+pub fn inertial_element(format: Dialect, e: &Export, indent: &str) -> String {
     let t = &e.tensor;
     let mut out = String::new();
     match format {
-        Format::Urdf => {
+        Dialect::Urdf => {
             out.push_str("<inertial>\n");
             line(&mut out, indent, 1, "<origin xyz=\"");
             numbers(&mut out, &e.pos);
@@ -66,7 +66,7 @@ pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {
             out.push_str("/>\n");
             line(&mut out, indent, 0, "</inertial>");
         }
-        Format::Sdf => {
+        Dialect::Sdf => {
             out.push_str("<inertial>\n");
             line(&mut out, indent, 1, "<pose>");
             numbers(&mut out, &e.pos);
@@ -87,7 +87,7 @@ pub fn inertial_element(format: Format, e: &Export, indent: &str) -> String {
             line(&mut out, indent, 1, "</inertia>\n");
             line(&mut out, indent, 0, "</inertial>");
         }
-        Format::Mjcf => {
+        Dialect::Mjcf => {
             out.push_str("<inertial pos=\"");
             numbers(&mut out, &e.pos);
             out.push_str("\" mass=\"");
@@ -246,7 +246,7 @@ mod tests {
     #[test]
     fn a_urdf_inertial_is_written_with_attributes() {
         assert_eq!(
-            inertial_element(Format::Urdf, &example(), "    "),
+            inertial_element(Dialect::Urdf, &example(), "    "),
             "<inertial>
       <origin xyz=\"0.1 -0.2 0\" rpy=\"0 0 0\"/>
       <mass value=\"2.5\"/>
@@ -258,7 +258,7 @@ mod tests {
     #[test]
     fn an_sdformat_inertial_is_written_with_elements() {
         assert_eq!(
-            inertial_element(Format::Sdf, &example(), "\t"),
+            inertial_element(Dialect::Sdf, &example(), "\t"),
             "<inertial>
 \t  <pose>0.1 -0.2 0 0 0 0</pose>
 \t  <mass>2.5</mass>
@@ -277,7 +277,7 @@ mod tests {
     #[test]
     fn an_mjcf_inertial_is_one_line_with_fullinertia_in_mujocos_order() {
         assert_eq!(
-            inertial_element(Format::Mjcf, &example(), "      "),
+            inertial_element(Dialect::Mjcf, &example(), "      "),
             "<inertial pos=\"0.1 -0.2 0\" mass=\"2.5\" fullinertia=\"0.01 0.02 0.03 -0.001 0 1.5e-7\"/>"
         );
     }
@@ -295,7 +295,7 @@ mod tests {
         // w = ½√2 is the f64 nearest 1/√2; z = (r10 − r01)/4w = 0.5/w is
         // within an ulp of it, below.
         assert_eq!(
-            inertial_element(Format::Mjcf, &e, ""),
+            inertial_element(Dialect::Mjcf, &e, ""),
             "<inertial pos=\"0.1 -0.2 0\" mass=\"2.5\" diaginertia=\"0.01 0.02 0.03\" \
              quat=\"0.7071067811865476 0 0 0.7071067811865475\"/>"
         );
@@ -312,10 +312,10 @@ mod tests {
             ..e
         };
         for (format, e) in [
-            (Format::Urdf, e),
-            (Format::Sdf, e),
-            (Format::Mjcf, e),
-            (Format::Mjcf, principal),
+            (Dialect::Urdf, e),
+            (Dialect::Sdf, e),
+            (Dialect::Mjcf, e),
+            (Dialect::Mjcf, principal),
         ] {
             let text = inertial_element(format, &e, "  ");
             let doc = roxmltree::Document::parse(&text).unwrap();
@@ -498,8 +498,8 @@ mod tests {
         for nl in ["\n", "\r\n"] {
             let old = format!("<?xml version=\"1.0\"?>\n<robot name=\"r\">\n{links}</robot>\n")
                 .replace('\n', nl);
-            let new = update(&old, Format::Urdf, "l0", &example()).unwrap();
-            let new = update(&new, Format::Urdf, "l3", &example()).unwrap();
+            let new = update(&old, Dialect::Urdf, "l0", &example()).unwrap();
+            let new = update(&new, Dialect::Urdf, "l3", &example()).unwrap();
             let diff = unified_diff(&old, &new, "r.urdf");
             assert_eq!(diff.matches("\n@@ ").count(), 2, "{diff}");
             assert_eq!(apply(&old, &diff), new);

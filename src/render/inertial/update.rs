@@ -10,7 +10,7 @@
 
 use super::error::{LISTED, UpdateError, root_name};
 use super::{Export, inertial_element};
-use crate::robot::Format;
+use crate::robot::Dialect;
 use roxmltree::{Document, Node, ParsingOptions};
 use std::ops::Range;
 
@@ -23,7 +23,7 @@ use std::ops::Range;
 /// model, as `robot::Link` names it); a named MJCF `<body>` anywhere under
 /// `<worldbody>`. The text has no byte-order mark (the caller strips and
 /// re-adds it).
-pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<String, UpdateError> {
+pub fn update(text: &str, format: Dialect, link: &str, e: &Export) -> Result<String, UpdateError> {
     // A doctype is allowed (some exporters write one); roxmltree still
     // bounds entity expansion.
     let options = ParsingOptions {
@@ -113,16 +113,16 @@ pub fn update(text: &str, format: Format, link: &str, e: &Export) -> Result<Stri
 
 /// The links of a document, named as `robot::Link` names them, with their
 /// elements, in document order.
-fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String, Node<'a, 'i>)> {
+fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Dialect) -> Vec<(String, Node<'a, 'i>)> {
     let mut out = Vec::new();
     let named = |node: Node<'a, 'i>| node.attribute("name").map(str::to_string);
     match format {
-        Format::Urdf => {
+        Dialect::Urdf => {
             for child in root.children().filter(|c| qname(text, *c) == "link") {
                 out.extend(named(child).map(|n| (n, child)));
             }
         }
-        Format::Sdf => {
+        Dialect::Sdf => {
             // Models are children of <sdf>, <world> or <model>; links
             // children of a model. Not every element is looked into: a
             // <plugin>'s contents are free-form and may say <link>. Depth
@@ -166,7 +166,7 @@ fn links<'a, 'i>(text: &str, root: Node<'a, 'i>, format: Format) -> Vec<(String,
                 }
             }
         }
-        Format::Mjcf => {
+        Dialect::Mjcf => {
             for world in root.children().filter(|c| qname(text, *c) == "worldbody") {
                 for body in world.descendants().filter(|c| qname(text, *c) == "body") {
                     out.extend(named(body).map(|n| (n, body)));
@@ -193,7 +193,7 @@ fn qname<'t>(text: &'t str, node: Node) -> &'t str {
 /// Insert `e`'s inertial as the first child of `link`, which has none: on
 /// its own line after the start tag, one indentation step in. An empty
 /// element `<link name="x"/>` is opened and closed.
-fn insert(text: &str, format: Format, link: Node, e: &Export) -> String {
+fn insert(text: &str, format: Dialect, link: Node, e: &Export) -> String {
     let start = link.range().start;
     let tag_end = start_tag_end(text, start);
     let own = indentation(text, start);
@@ -343,7 +343,7 @@ mod tests {
 
     /// Mass, position and the tensor (xx yy zz xy xz yz) of an inertial
     /// element as written, read back with roxmltree alone.
-    fn read_back(format: Format, element: &str) -> (f64, Vec<f64>, Vec<f64>) {
+    fn read_back(format: Dialect, element: &str) -> (f64, Vec<f64>, Vec<f64>) {
         let doc = Document::parse(element).unwrap();
         let root = doc.root_element();
         let child = |name: &str| {
@@ -356,7 +356,7 @@ mod tests {
         let one = |s: &str| -> f64 { s.trim().parse().unwrap() };
         let order = ["ixx", "iyy", "izz", "ixy", "ixz", "iyz"];
         match format {
-            Format::Urdf => {
+            Dialect::Urdf => {
                 let inertia = child("inertia");
                 (
                     one(child("mass").attribute("value").unwrap()),
@@ -367,7 +367,7 @@ mod tests {
                         .collect(),
                 )
             }
-            Format::Sdf => (
+            Dialect::Sdf => (
                 one(child("mass").text().unwrap()),
                 list(child("pose").text().unwrap())[..3].to_vec(),
                 order
@@ -375,7 +375,7 @@ mod tests {
                     .map(|k| one(child(k).text().unwrap()))
                     .collect(),
             ),
-            Format::Mjcf => (
+            Dialect::Mjcf => (
                 one(root.attribute("mass").unwrap()),
                 list(root.attribute("pos").unwrap()),
                 list(root.attribute("fullinertia").unwrap()),
@@ -387,7 +387,7 @@ mod tests {
     /// before and after are the same, and in its place is `e`'s element at
     /// `indent`, with the file's line endings, whose numbers read back to
     /// the bit. Returns the result.
-    fn assert_replaced(text: &str, format: Format, link: &str, old: &str, indent: &str) -> String {
+    fn assert_replaced(text: &str, format: Dialect, link: &str, old: &str, indent: &str) -> String {
         assert_eq!(
             text.matches(old).count(),
             1,
@@ -450,7 +450,7 @@ mod tests {
 
     #[test]
     fn a_urdf_links_inertial_is_replaced_and_nothing_else() {
-        assert_replaced(URDF, Format::Urdf, "arm", URDF_ARM, "      ");
+        assert_replaced(URDF, Dialect::Urdf, "arm", URDF_ARM, "      ");
     }
 
     #[test]
@@ -458,7 +458,7 @@ mod tests {
         let crlf = URDF.replace('\n', "\r\n");
         let out = assert_replaced(
             &crlf,
-            Format::Urdf,
+            Dialect::Urdf,
             "arm",
             &URDF_ARM.replace('\n', "\r\n"),
             "      ",
@@ -470,7 +470,7 @@ mod tests {
     fn a_tab_indented_file_keeps_its_tabs() {
         let tabs = URDF.replace("      <", "\t\t<");
         let old = URDF_ARM.replace("      <", "\t\t<");
-        assert_replaced(&tabs, Format::Urdf, "arm", &old, "\t\t");
+        assert_replaced(&tabs, Dialect::Urdf, "arm", &old, "\t\t");
     }
 
     #[test]
@@ -478,7 +478,7 @@ mod tests {
         let text = "<robot>\n  <link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n</robot>\n";
         let out = assert_replaced(
             text,
-            Format::Urdf,
+            Dialect::Urdf,
             "a",
             "<inertial><mass value=\"1\"/></inertial>",
             "  ",
@@ -492,7 +492,7 @@ mod tests {
             "<!DOCTYPE robot>\n{}",
             &URDF[URDF.find("<robot").unwrap()..]
         );
-        assert_replaced(&text, Format::Urdf, "arm", URDF_ARM, "      ");
+        assert_replaced(&text, Dialect::Urdf, "arm", URDF_ARM, "      ");
     }
 
     const SDF: &str = "<?xml version='1.0'?>
@@ -526,14 +526,14 @@ mod tests {
     fn links_of_several_top_level_models_are_named_with_their_model() {
         // As robot::read names them: `a::l` and `b::l`, and `l` is none.
         let text = "<sdf version='1.9'><world name='w'><model name='a'><link name='l'/></model><model name='b'><link name='l'/></model></world></sdf>";
-        let out = update(text, Format::Sdf, "b::l", &export()).unwrap();
+        let out = update(text, Dialect::Sdf, "b::l", &export()).unwrap();
         assert!(out.starts_with(&text[..text.find("<model name='b'>").unwrap()]));
         assert!(matches!(
-            update(text, Format::Sdf, "l", &export()),
+            update(text, Dialect::Sdf, "l", &export()),
             Err(UpdateError::NoLink { .. })
         ));
         let names: Vec<String> =
-            crate::robot::read::read(&crate::diag::Source::new("w.sdf", text), Format::Sdf)
+            crate::robot::read::read(&crate::diag::Source::new("w.sdf", text), Dialect::Sdf)
                 .unwrap()
                 .links
                 .into_iter()
@@ -544,10 +544,10 @@ mod tests {
 
     #[test]
     fn a_nested_sdformat_models_link_is_named_from_the_outermost() {
-        assert_replaced(SDF, Format::Sdf, "gripper::finger", SDF_FINGER, "        ");
+        assert_replaced(SDF, Dialect::Sdf, "gripper::finger", SDF_FINGER, "        ");
         assert_replaced(
             SDF,
-            Format::Sdf,
+            Dialect::Sdf,
             "base",
             "<inertial><mass>10</mass></inertial>",
             "      ",
@@ -559,7 +559,7 @@ mod tests {
         let crlf = SDF.replace('\n', "\r\n");
         assert_replaced(
             &crlf,
-            Format::Sdf,
+            Dialect::Sdf,
             "gripper::finger",
             &SDF_FINGER.replace('\n', "\r\n"),
             "        ",
@@ -587,9 +587,9 @@ mod tests {
     #[test]
     fn an_mjcf_body_anywhere_under_worldbody_is_found() {
         let lower = "<inertial pos='0 0 0.2' mass='0.5' fullinertia='1 1 1 0 0 0' />";
-        assert_replaced(MJCF, Format::Mjcf, "lower", lower, "\t");
+        assert_replaced(MJCF, Dialect::Mjcf, "lower", lower, "\t");
         let upper = r#"<inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>"#;
-        assert_replaced(MJCF, Format::Mjcf, "upper", upper, "      ");
+        assert_replaced(MJCF, Dialect::Mjcf, "upper", upper, "      ");
     }
 
     #[test]
@@ -597,7 +597,7 @@ mod tests {
         let lower = "<inertial pos='0 0 0.2' mass='0.5' fullinertia='1 1 1 0 0 0' />";
         assert_replaced(
             &MJCF.replace('\n', "\r\n"),
-            Format::Mjcf,
+            Dialect::Mjcf,
             "lower",
             lower,
             "\t",
@@ -609,9 +609,9 @@ mod tests {
         let text =
             "<robot name=\"r\">\n    <link name=\"a\">\n        <visual/>\n    </link>\n</robot>\n";
         let e = export();
-        let element = inertial_element(Format::Urdf, &e, "        ");
+        let element = inertial_element(Dialect::Urdf, &e, "        ");
         assert_eq!(
-            update(text, Format::Urdf, "a", &e).unwrap(),
+            update(text, Dialect::Urdf, "a", &e).unwrap(),
             format!(
                 "<robot name=\"r\">\n    <link name=\"a\">\n        {element}\n        <visual/>\n    </link>\n</robot>\n"
             )
@@ -622,17 +622,17 @@ mod tests {
     fn an_inserted_inertial_takes_the_files_tabs_and_crlf() {
         let text = "<mujoco>\r\n<worldbody>\r\n\t<body name=\"b\">\r\n\t\t<geom size=\"1\"/>\r\n\t</body>\r\n</worldbody>\r\n</mujoco>";
         let e = export();
-        let element = inertial_element(Format::Mjcf, &e, "\t\t");
+        let element = inertial_element(Dialect::Mjcf, &e, "\t\t");
         assert_eq!(
-            update(text, Format::Mjcf, "b", &e).unwrap(),
+            update(text, Dialect::Mjcf, "b", &e).unwrap(),
             format!(
                 "<mujoco>\r\n<worldbody>\r\n\t<body name=\"b\">\r\n\t\t{element}\r\n\t\t<geom size=\"1\"/>\r\n\t</body>\r\n</worldbody>\r\n</mujoco>"
             )
         );
         let sdf = "<sdf>\r\n\t<model name=\"m\">\r\n\t\t<link name=\"l\">\r\n\t\t\t<pose>0 0 0 0 0 0</pose>\r\n\t\t</link>\r\n\t</model>\r\n</sdf>\r\n";
-        let element = inertial_element(Format::Sdf, &e, "\t\t\t").replace('\n', "\r\n");
+        let element = inertial_element(Dialect::Sdf, &e, "\t\t\t").replace('\n', "\r\n");
         assert_eq!(
-            update(sdf, Format::Sdf, "l", &e).unwrap(),
+            update(sdf, Dialect::Sdf, "l", &e).unwrap(),
             format!(
                 "<sdf>\r\n\t<model name=\"m\">\r\n\t\t<link name=\"l\">\r\n\t\t\t{element}\r\n\t\t\t<pose>0 0 0 0 0 0</pose>\r\n\t\t</link>\r\n\t</model>\r\n</sdf>\r\n"
             )
@@ -643,8 +643,8 @@ mod tests {
     fn an_empty_element_link_is_opened_around_its_new_inertial() {
         let text = "<robot>\n\t<link name=\"base\"/>\n\t<link name='tip' />\n</robot>";
         let e = export();
-        let element = inertial_element(Format::Urdf, &e, "\t\t");
-        let out = update(text, Format::Urdf, "tip", &e).unwrap();
+        let element = inertial_element(Dialect::Urdf, &e, "\t\t");
+        let out = update(text, Dialect::Urdf, "tip", &e).unwrap();
         assert_eq!(
             out,
             format!(
@@ -653,16 +653,16 @@ mod tests {
         );
         // And one with nothing inside its two tags.
         let text = "<robot>\n  <link name=\"tip\"></link>\n</robot>";
-        let element = inertial_element(Format::Urdf, &e, "    ");
+        let element = inertial_element(Dialect::Urdf, &e, "    ");
         assert_eq!(
-            update(text, Format::Urdf, "tip", &e).unwrap(),
+            update(text, Dialect::Urdf, "tip", &e).unwrap(),
             format!("<robot>\n  <link name=\"tip\">\n    {element}\n  </link>\n</robot>")
         );
     }
 
     #[test]
     fn a_missing_link_is_an_error_that_lists_names_and_suggests_one() {
-        let err = update(URDF, Format::Urdf, "armm", &export()).unwrap_err();
+        let err = update(URDF, Dialect::Urdf, "armm", &export()).unwrap_err();
         assert_eq!(
             err.to_string(),
             "no link named \"armm\" (the file has \"base\", \"arm\"); did you mean \"arm\"?"
@@ -670,24 +670,24 @@ mod tests {
         assert_eq!(err.at(), None);
         let many: String = (1..=8).map(|i| format!("<body name=\"b{i}\"/>")).collect();
         let text = format!("<mujoco><worldbody>{many}</worldbody></mujoco>");
-        let err = update(&text, Format::Mjcf, "hand", &export()).unwrap_err();
+        let err = update(&text, Dialect::Mjcf, "hand", &export()).unwrap_err();
         assert_eq!(
             err.to_string(),
             "no body named \"hand\" (the file has \"b1\", \"b2\", \"b3\", \"b4\", \"b5\" and 3 more)"
         );
         // A <link> inside an SDFormat plugin is not one of the model's.
-        let err = update(SDF, Format::Sdf, "finger", &export()).unwrap_err();
+        let err = update(SDF, Dialect::Sdf, "finger", &export()).unwrap_err();
         assert!(
             matches!(err, UpdateError::NoLink { ref names, .. } if names == &["base", "gripper::finger"])
         );
-        let err = update("<robot/>", Format::Urdf, "a", &export()).unwrap_err();
+        let err = update("<robot/>", Dialect::Urdf, "a", &export()).unwrap_err();
         assert_eq!(err.to_string(), "no link named \"a\": the file has none");
     }
 
     #[test]
     fn two_links_of_one_name_are_an_error_at_the_second() {
         let text = "<robot>\n<link name=\"a\"/>\n<link name=\"a\"/>\n</robot>";
-        let err = update(text, Format::Urdf, "a", &export()).unwrap_err();
+        let err = update(text, Dialect::Urdf, "a", &export()).unwrap_err();
         assert_eq!(err.to_string(), "more than one link named \"a\"");
         assert_eq!(err.at(), Some(text.rfind("<link").unwrap()));
     }
@@ -695,7 +695,7 @@ mod tests {
     #[test]
     fn two_inertials_in_a_link_are_an_error_at_the_second() {
         let text = "<mujoco><worldbody><body name=\"b\">\n<inertial mass=\"1\"/>\n<inertial mass=\"2\"/>\n</body></worldbody></mujoco>";
-        let err = update(text, Format::Mjcf, "b", &export()).unwrap_err();
+        let err = update(text, Dialect::Mjcf, "b", &export()).unwrap_err();
         assert_eq!(err.to_string(), "body \"b\" has more than one <inertial>");
         assert_eq!(err.at(), Some(text.rfind("<inertial").unwrap()));
     }
@@ -703,7 +703,7 @@ mod tests {
     #[test]
     fn text_that_is_not_xml_is_an_error_with_its_place() {
         let text = "<robot>\n  <link name=\"a\">\n</robot>";
-        let err = update(text, Format::Urdf, "a", &export()).unwrap_err();
+        let err = update(text, Dialect::Urdf, "a", &export()).unwrap_err();
         assert_eq!(
             err.to_string(),
             "not well-formed XML: expected 'link' tag, not 'robot'"
@@ -711,7 +711,7 @@ mod tests {
         assert_eq!(err.at(), text.find("</robot>"));
         // Past the first line, the column counts characters, not bytes.
         let text = "<robot>\n<link name=\"é\" x=1/></robot>";
-        let err = update(text, Format::Urdf, "a", &export()).unwrap_err();
+        let err = update(text, Dialect::Urdf, "a", &export()).unwrap_err();
         assert_eq!(err.at(), text.find('1'));
     }
 
@@ -725,7 +725,7 @@ mod tests {
             "<model name='m'><link name='l'/>".repeat(n),
             "</model>".repeat(n)
         );
-        let err = update(&text, Format::Sdf, "l", &export()).unwrap_err();
+        let err = update(&text, Dialect::Sdf, "l", &export()).unwrap_err();
         assert!(
             err.to_string().contains("is nested 1000 elements deep"),
             "{err}"
@@ -738,7 +738,7 @@ mod tests {
 
     #[test]
     fn a_root_element_of_another_format_is_an_error() {
-        let err = update(SDF, Format::Urdf, "base", &export()).unwrap_err();
+        let err = update(SDF, Dialect::Urdf, "base", &export()).unwrap_err();
         assert_eq!(
             err.to_string(),
             "the root element is <sdf>, not the <robot> of a urdf file"
@@ -748,12 +748,12 @@ mod tests {
 
     #[test]
     fn the_diff_of_an_update_shows_the_old_and_new_inertial() {
-        let out = update(MJCF, Format::Mjcf, "upper", &export()).unwrap();
+        let out = update(MJCF, Dialect::Mjcf, "upper", &export()).unwrap();
         let diff = super::super::unified_diff(MJCF, &out, "arm.xml");
         let old = r#"      <inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>"#;
         let new = format!(
             "      {}",
-            inertial_element(Format::Mjcf, &export(), "      ")
+            inertial_element(Dialect::Mjcf, &export(), "      ")
         );
         assert_eq!(
             diff,

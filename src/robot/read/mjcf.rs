@@ -9,7 +9,7 @@
 use super::orient::{Settings, orientation, quat_to_matrix};
 use super::{Value, Xml, children, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
-use crate::robot::{Description, Format, Inertial, Link, Tensor, Written};
+use crate::robot::{Description, Dialect, Inertial, Link, Tensor, Written};
 use roxmltree::Node;
 
 /// The orientation attributes of an `<inertial>`, in MuJoCo's order.
@@ -132,7 +132,7 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
         }
     }
     Ok(Description {
-        format: Format::Mjcf,
+        format: Dialect::Mjcf,
         name: mujoco.attribute("model").map(str::to_string),
         links,
         compiler: settings.compiler,
@@ -214,7 +214,7 @@ fn inertial(xml: &Xml, node: Node, owner: &str, s: &Settings) -> Result<Inertial
 mod tests {
     use super::super::read;
     use super::super::tests::{assert_matrix, source};
-    use crate::robot::{Description, Format, MujocoCompiler, Tensor, Written};
+    use crate::robot::{Description, Dialect, MujocoCompiler, Tensor, Written};
 
     /// Rz(90°), by hand: x̂ → ŷ, ŷ → −x̂.
     const RZ: [[f64; 3]; 3] = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
@@ -236,11 +236,11 @@ mod tests {
     }
 
     fn read_ok(text: &str) -> Description {
-        read(&source(text), Format::Mjcf).unwrap()
+        read(&source(text), Dialect::Mjcf).unwrap()
     }
 
     fn error(text: &str) -> String {
-        read(&source(text), Format::Mjcf).unwrap_err().to_string()
+        read(&source(text), Dialect::Mjcf).unwrap_err().to_string()
     }
 
     /// The inertial rotation of the first body.
@@ -255,7 +255,7 @@ mod tests {
     #[test]
     fn a_diagonal_inertial_is_read_as_written() {
         let d = read_ok(&inertial("", "diaginertia='4 5 6'"));
-        assert_eq!((d.format, d.name.as_deref()), (Format::Mjcf, Some("m")));
+        assert_eq!((d.format, d.name.as_deref()), (Dialect::Mjcf, Some("m")));
         let i = d.links[0].inertial.as_ref().unwrap();
         assert_eq!((i.mass, i.pos, i.rotation), (2.0, [1.0, 2.0, 3.0], None));
         assert_eq!(

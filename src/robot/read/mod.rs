@@ -15,22 +15,22 @@ mod orient;
 mod sdf;
 mod urdf;
 
-use super::{Description, Format};
+use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::numeric::M3;
 use roxmltree::{Document, Node, ParsingOptions};
 use std::ops::Range;
 
-/// Read `source` as a robot description of `format` (from `Format::of_path`
-/// or `Format::of_text`).
-pub fn read(source: &Source, format: Format) -> Result<Description, Diagnostic> {
+/// Read `source` as a robot description of `format` (from `Dialect::of_path`
+/// or `Dialect::of_text`).
+pub fn read(source: &Source, format: Dialect) -> Result<Description, Diagnostic> {
     let doc = parse(source)?;
     let xml = Xml { source };
     let root = doc.root_element();
     let expected = match format {
-        Format::Urdf => "robot",
-        Format::Sdf => "sdf",
-        Format::Mjcf => "mujoco",
+        Dialect::Urdf => "robot",
+        Dialect::Sdf => "sdf",
+        Dialect::Mjcf => "mujoco",
     };
     let found = qname(root);
     if found != expected {
@@ -44,9 +44,9 @@ pub fn read(source: &Source, format: Format) -> Result<Description, Diagnostic> 
         ));
     }
     match format {
-        Format::Urdf => urdf::read(&xml, root),
-        Format::Sdf => sdf::read(&xml, root),
-        Format::Mjcf => mjcf::read(&xml, root),
+        Dialect::Urdf => urdf::read(&xml, root),
+        Dialect::Sdf => sdf::read(&xml, root),
+        Dialect::Mjcf => mjcf::read(&xml, root),
     }
 }
 
@@ -567,7 +567,7 @@ mod tests {
     #[test]
     fn malformed_xml_is_reported_at_roxmltrees_place_without_repeating_it() {
         let text = "<robot name='r'>\n  <link name='a'>\n</robot>\n";
-        let d = read(&source(text), Format::Urdf).unwrap_err().to_string();
+        let d = read(&source(text), Dialect::Urdf).unwrap_err().to_string();
         assert!(
             d.starts_with(
                 "r.xml:3:1: error: not well-formed xml: expected 'link' tag, not 'robot'\n"
@@ -579,7 +579,7 @@ mod tests {
     #[test]
     fn a_root_element_of_another_format_is_refused() {
         let text = "<?xml version='1.0'?>\n<mujoco model='m'/>\n";
-        let d = read(&source(text), Format::Urdf).unwrap_err().to_string();
+        let d = read(&source(text), Dialect::Urdf).unwrap_err().to_string();
         assert!(
             d.starts_with(
                 "r.xml:2:1: error: expected the root element `<robot>` of a urdf file, found `<mujoco>`\n"
@@ -598,14 +598,14 @@ mod tests {
     #[test]
     fn a_doctype_declaring_entities_no_element_uses_is_allowed() {
         let text = with_doctype("<!DOCTYPE robot [<!ENTITY m '2'>]>", "2");
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
     }
 
     #[test]
     fn a_reference_to_a_declared_entity_is_refused_at_the_reference() {
         let text = with_doctype("<!DOCTYPE robot [\n<!ENTITY m '2'>\n]>", "&m;");
-        let d = read(&source(&text), Format::Urdf).unwrap_err().to_string();
+        let d = read(&source(&text), Dialect::Urdf).unwrap_err().to_string();
         // Line 5 (the declaration, the doctype's lines, then the robot),
         // column of `&m;` in `<mass value='&m;'/>`.
         let column = text.lines().nth(4).unwrap().find("&m;").unwrap() + 1;
@@ -620,10 +620,10 @@ mod tests {
     #[test]
     fn xmls_own_entities_and_character_references_are_read() {
         let text = with_doctype("<!DOCTYPE robot [<!ENTITY m '3'>]>", "&#50;");
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(d.links[0].inertial.as_ref().unwrap().mass, 2.0);
         let text = text.replace("name='a'", "name='a&amp;b&lt;&gt;&apos;&quot;'");
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(d.links[0].name, "a&b<>'\"");
     }
 
@@ -633,7 +633,7 @@ mod tests {
             "<link name='a'>",
             "<!-- &m; --><link name='a'><![CDATA[&m;]]><?pi &m;?>",
         );
-        assert!(read(&source(&text), Format::Urdf).is_ok());
+        assert!(read(&source(&text), Dialect::Urdf).is_ok());
     }
 
     #[test]
@@ -642,7 +642,7 @@ mod tests {
             "<!DOCTYPE robot [\n<!-- <!ENTITY m 'no'> -->\n<!ENTITY m '2'>\n]>",
             "&m;",
         );
-        let d = read(&source(&text), Format::Urdf).unwrap_err().to_string();
+        let d = read(&source(&text), Dialect::Urdf).unwrap_err().to_string();
         assert!(d.contains("(declared on line 4)"), "{d}");
     }
 
@@ -657,8 +657,8 @@ mod tests {
                 "</body>".repeat(n)
             )
         };
-        assert!(read(&source(&nest(MAX_DEPTH - 3)), Format::Mjcf).is_ok());
-        let d = read(&source(&nest(MAX_DEPTH - 2)), Format::Mjcf).unwrap_err();
+        assert!(read(&source(&nest(MAX_DEPTH - 3)), Dialect::Mjcf).is_ok());
+        let d = read(&source(&nest(MAX_DEPTH - 2)), Dialect::Mjcf).unwrap_err();
         assert!(
             d.to_string().starts_with(&format!(
                 "r.xml:{}:1: error: `<body>` is nested {MAX_DEPTH} elements deep",
@@ -673,7 +673,7 @@ mod tests {
         // `<x:link>` is no link to urdfdom (tinyxml knows no namespaces),
         // and `update` does not take it for one either.
         let text = "<robot name='r' xmlns:x='u'><x:link name='a'/><link name='b'><x:inertial/></link></robot>";
-        let d = read(&source(text), Format::Urdf).unwrap();
+        let d = read(&source(text), Dialect::Urdf).unwrap();
         assert_eq!(d.links.len(), 1);
         assert_eq!(d.links[0].name, "b");
         assert_eq!(d.links[0].inertial, None);
@@ -705,7 +705,7 @@ mod tests {
     #[test]
     fn a_word_in_a_list_is_pointed_at() {
         let text = "<robot name='r'><link name='a'><inertial><origin xyz='0 abc 0'/><mass value='1'/><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>";
-        let d = read(&source(text), Format::Urdf).unwrap_err();
+        let d = read(&source(text), Dialect::Urdf).unwrap_err();
         assert_eq!(
             d.message(),
             "`xyz` of link \"a\": expected a number, found \"abc\""

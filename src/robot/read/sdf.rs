@@ -12,7 +12,7 @@
 use super::{Value, Xml, child, proper, qname, quoted, rpy, turn};
 use crate::diag::Diagnostic;
 use crate::numeric::M3;
-use crate::robot::{Description, Format, Inertial, Link, MujocoCompiler, Tensor, Written};
+use crate::robot::{Description, Dialect, Inertial, Link, MujocoCompiler, Tensor, Written};
 use crate::rotation::{quaternion, sin_cos_deg};
 use roxmltree::Node;
 use std::collections::HashMap;
@@ -69,7 +69,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
             .and_then(|w| w.attribute("name")),
     };
     Ok(Description {
-        format: Format::Sdf,
+        format: Dialect::Sdf,
         name: name.map(str::to_string),
         links,
         compiler: MujocoCompiler::default(),
@@ -426,7 +426,7 @@ fn pose(
 mod tests {
     use super::super::read;
     use super::super::tests::{assert_matrix, source};
-    use crate::robot::{Description, Format, Inertial, Tensor, Written};
+    use crate::robot::{Description, Dialect, Inertial, Tensor, Written};
 
     /// Rz(90°), by hand: x̂ → ŷ, ŷ → −x̂.
     const RZ: [[f64; 3]; 3] = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]];
@@ -443,7 +443,7 @@ mod tests {
     }
 
     fn read_ok(text: &str) -> Description {
-        read(&source(text), Format::Sdf).unwrap()
+        read(&source(text), Dialect::Sdf).unwrap()
     }
 
     fn first(text: &str) -> Inertial {
@@ -451,7 +451,7 @@ mod tests {
     }
 
     fn error(text: &str) -> String {
-        read(&source(text), Format::Sdf).unwrap_err().to_string()
+        read(&source(text), Dialect::Sdf).unwrap_err().to_string()
     }
 
     fn moving(d: &Description) -> Vec<(&str, bool)> {
@@ -540,7 +540,7 @@ mod tests {
             let text = link(&format!(
                 "<inertial><pose rotation_format='quat_xyzw'>1 2 3 {q}</pose></inertial>"
             ));
-            let d = read(&source(&text), Format::Sdf).unwrap_err().to_string();
+            let d = read(&source(&text), Dialect::Sdf).unwrap_err().to_string();
             assert!(
                 d.contains("error: `<pose>` of link \"l\" gives no rotation"),
                 "{q}: {d}"

@@ -5,7 +5,7 @@
 
 use super::{Value, Xml, child, children, mjcf, quoted, rpy, turn};
 use crate::diag::Diagnostic;
-use crate::robot::{Description, Format, Inertial, Link, Tensor, Written};
+use crate::robot::{Description, Dialect, Inertial, Link, Tensor, Written};
 use roxmltree::Node;
 use std::collections::{HashMap, HashSet};
 
@@ -64,7 +64,7 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
         }
     }
     Ok(Description {
-        format: Format::Urdf,
+        format: Dialect::Urdf,
         name: robot.attribute("name").map(str::to_string),
         links,
         compiler: settings.compiler,
@@ -121,7 +121,7 @@ fn inertial(xml: &Xml, node: Node, owner: &str) -> Result<Inertial, Diagnostic> 
 mod tests {
     use super::super::read;
     use super::super::tests::{assert_matrix, source};
-    use crate::robot::{Format, MujocoCompiler, Tensor, Written};
+    use crate::robot::{Dialect, MujocoCompiler, Tensor, Written};
 
     const INERTIA: &str = "<inertia ixx='1' ixy='0.1' ixz='0.2' iyy='2' iyz='0.3' izz='3'/>";
 
@@ -134,7 +134,7 @@ mod tests {
     }
 
     fn error(text: &str) -> String {
-        read(&source(text), Format::Urdf).unwrap_err().to_string()
+        read(&source(text), Dialect::Urdf).unwrap_err().to_string()
     }
 
     #[test]
@@ -142,8 +142,8 @@ mod tests {
         let text = link(&format!(
             "<inertial><origin xyz='1 2 3'/><mass value='4.5'/>{INERTIA}</inertial>"
         ));
-        let d = read(&source(&text), Format::Urdf).unwrap();
-        assert_eq!(d.format, Format::Urdf);
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
+        assert_eq!(d.format, Dialect::Urdf);
         assert_eq!(d.name.as_deref(), Some("r"));
         assert_eq!(d.links.len(), 1);
         let i = d.links[0].inertial.as_ref().unwrap();
@@ -167,7 +167,7 @@ mod tests {
     #[test]
     fn the_origin_is_optional_and_defaults_to_zero() {
         let text = link(&format!("<inertial><mass value='1'/>{INERTIA}</inertial>"));
-        let i = read(&source(&text), Format::Urdf).unwrap().links[0]
+        let i = read(&source(&text), Dialect::Urdf).unwrap().links[0]
             .inertial
             .clone()
             .unwrap();
@@ -175,7 +175,7 @@ mod tests {
         let text = link(&format!(
             "<inertial><origin/><mass value='1'/>{INERTIA}</inertial>"
         ));
-        let i = read(&source(&text), Format::Urdf).unwrap().links[0]
+        let i = read(&source(&text), Dialect::Urdf).unwrap().links[0]
             .inertial
             .clone()
             .unwrap();
@@ -187,7 +187,7 @@ mod tests {
         let text = link(&format!(
             "<inertial><origin rpy='0 0 0'/><mass value='1'/>{INERTIA}</inertial>"
         ));
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(d.links[0].inertial.as_ref().unwrap().rotation, None);
     }
 
@@ -196,7 +196,7 @@ mod tests {
         let text = link(&format!(
             "<inertial><origin rpy='0 0 1.5707963267948966'/><mass value='1'/>{INERTIA}</inertial>"
         ));
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         let r = d.links[0].inertial.as_ref().unwrap().rotation.unwrap();
         assert_matrix(r, [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
     }
@@ -207,7 +207,7 @@ mod tests {
         let text = link(&format!(
             "<inertial><origin rpy='1.5707963267948966 0 1.5707963267948966'/><mass value='1'/>{INERTIA}</inertial>"
         ));
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         let r = d.links[0].inertial.as_ref().unwrap().rotation.unwrap();
         assert_matrix(r, [[0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]);
     }
@@ -215,7 +215,7 @@ mod tests {
     #[test]
     fn a_link_without_an_inertial_has_none() {
         let text = robot("<link name='base'/>");
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(d.links[0].name, "base");
         assert_eq!(d.links[0].inertial, None);
     }
@@ -225,7 +225,7 @@ mod tests {
         let text = link(
             "<inertial><mass value='-1'/><inertia ixx='-1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial>",
         );
-        let i = read(&source(&text), Format::Urdf).unwrap().links[0]
+        let i = read(&source(&text), Dialect::Urdf).unwrap().links[0]
             .inertial
             .clone()
             .unwrap();
@@ -235,7 +235,7 @@ mod tests {
     #[test]
     fn duplicate_link_names_are_both_kept() {
         let text = robot("<link name='a'/><link name='a'/>");
-        assert_eq!(read(&source(&text), Format::Urdf).unwrap().links.len(), 2);
+        assert_eq!(read(&source(&text), Dialect::Urdf).unwrap().links.len(), 2);
     }
 
     #[test]
@@ -246,7 +246,7 @@ mod tests {
              <joint name='j2' type='fixed'><parent link='arm'/><child link='tool'/></joint>\
              <joint name='j3' type='continuous'><parent link='base'/><child link='wheel'/></joint>",
         );
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         let moving: Vec<(&str, bool)> = d
             .links
             .iter()
@@ -273,7 +273,7 @@ mod tests {
              <joint name='j3' type='fixed'><parent link='tool'/><child link='arm'/></joint>\
              <joint name='j4' type='fixed'><parent link='base'/><child link='base'/></joint>",
         );
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         let parents: Vec<Option<usize>> = d.links.iter().map(|l| l.parent).collect();
         assert_eq!(parents, [None, Some(0), None, Some(1)]);
     }
@@ -283,7 +283,7 @@ mod tests {
         let text = robot(
             "<mujoco><compiler balanceinertia='true' boundmass='0.01' boundinertia='1e-6' inertiafromgeom='false'/></mujoco>",
         );
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         assert_eq!(
             d.compiler,
             MujocoCompiler {
@@ -297,14 +297,14 @@ mod tests {
 
     #[test]
     fn without_the_extension_the_compiler_is_mujocos_default() {
-        let d = read(&source(&robot("")), Format::Urdf).unwrap();
+        let d = read(&source(&robot("")), Dialect::Urdf).unwrap();
         assert_eq!(d.compiler, MujocoCompiler::default());
     }
 
     #[test]
     fn the_ranges_cover_the_link_and_the_inertial() {
         let text = link(&format!("<inertial><mass value='1'/>{INERTIA}</inertial>"));
-        let d = read(&source(&text), Format::Urdf).unwrap();
+        let d = read(&source(&text), Dialect::Urdf).unwrap();
         let l = &d.links[0];
         assert!(text[l.range.clone()].starts_with("<link name='arm'>"));
         assert!(text[l.range.clone()].ends_with("</link>"));
