@@ -4,7 +4,7 @@
 
 use super::{MassSpec, Spec};
 pub use crate::shapes::error::{
-    GIVEN, OUTER, Own, TURN, U_DD, U64, closed_form, placed_units, turn_error, unit_of,
+    GIVEN, OUTER, Own, TURN, U_DD, U64, placed_units, turn_error, unit_of,
 };
 
 /// The error of a part's mass, relative, in units: 0 when given; for a

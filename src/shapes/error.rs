@@ -13,7 +13,7 @@
 //! checks them (tests/integration/stress.rs, every shape, both modes).
 
 use super::place::Placed;
-use super::{Place, Shape};
+use super::Place;
 use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
 
@@ -82,13 +82,6 @@ impl Own {
             diagonal: false,
         }
     }
-}
-
-/// Roundings of a shape's local second moments beyond its mass's: each
-/// shape's module counts them over the operations of its closed forms
-/// (`ShapeKind::MOMENT_ROUNDINGS`).
-pub fn closed_form(shape: Shape) -> f64 {
-    shape.moment_roundings()
 }
 
 /// Roundings of R diag(d) Rᵀ beyond diag(d): two products and two sums.

@@ -228,19 +228,6 @@ macro_rules! registry {
                 }
             }
 
-            /// `ShapeKind::MOMENT_ROUNDINGS`.
-            pub fn moment_roundings(self) -> f64 {
-                match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::MOMENT_ROUNDINGS,)+
-                }
-            }
-
-            /// `ShapeKind::MIRROR_AXIS`.
-            pub fn mirror_axis(self) -> Option<usize> {
-                match self {
-                    $(Shape::$variant => <$module::$kind as ShapeKind>::MIRROR_AXIS,)+
-                }
-            }
         }
 
         /// Each shape's description, in the order of `Shape`'s variants.

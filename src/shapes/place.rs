@@ -59,11 +59,6 @@ impl Place {
         });
         found
     }
-
-    /// Its shape's description.
-    pub fn info(&self) -> &'static super::ShapeInfo {
-        self.shape().info()
-    }
 }
 
 #[cfg(test)]
