@@ -12,8 +12,8 @@
 //! counts include a unit or two of slack each; the exact-rational reference
 //! checks them (tests/integration/stress.rs, every shape, both modes).
 
-use super::place::Placed;
 use super::Place;
+use super::place::Placed;
 use crate::numeric::{M3, Real};
 use crate::rotation::Orientation;
 
