@@ -12,9 +12,11 @@
 pub mod bless;
 pub mod budget;
 pub mod check;
+pub mod check_run;
 pub mod diff;
 pub mod errors;
 pub mod ideal;
+pub mod search;
 pub mod sigma;
 pub mod summary;
 pub mod uncertainty;

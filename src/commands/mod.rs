@@ -110,20 +110,7 @@ pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> Stri
     )
 }
 
-/// `warning: FILE: …`, one line per value of `file` not certified to
-/// `--rtol`.
-pub fn warning_lines(
-    file: &str,
-    warnings: &[crate::analysis::summary::AccuracyWarning],
-    colour: bool,
-) -> String {
-    let file = crate::diag::visible(file);
-    let palette = crate::diag::Palette::of(colour);
-    warnings
-        .iter()
-        .map(|w| palette.warning_line(&format!("{file}: {}", w.message)))
-        .collect()
-}
+pub use crate::analysis::check_run::warning_lines;
 
 /// Where a run's output goes and how it is dressed there: `cli` resolves
 /// `--color` and `--width` against what the process's standard output and
