@@ -16,6 +16,7 @@ pub mod check_run;
 pub mod diff;
 pub mod errors;
 pub mod ideal;
+pub mod link;
 pub mod search;
 pub mod sigma;
 pub mod summary;
