@@ -178,11 +178,11 @@ fn against_link(
 
 /// The robot description, the part file's path, and whether the robot
 /// is OLD: an error when both are robot descriptions.
-fn sides<'a>(
-    o: &'a Options,
+fn sides(
+    o: &Options,
     old_robot: Option<Robot>,
     new_robot: Option<Robot>,
-) -> Result<(Robot, &'a str, bool), Diagnostic> {
+) -> Result<(Robot, &str, bool), Diagnostic> {
     match (old_robot, new_robot) {
         (Some(r), None) => Ok((r, &o.new, true)),
         (None, Some(r)) => Ok((r, &o.old, false)),
