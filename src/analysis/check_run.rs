@@ -400,6 +400,38 @@ mod tests {
         );
     }
 
+    /// A run whose files end with `statuses`.
+    fn checked(statuses: &[Status]) -> Checked {
+        let d = || Diagnostic::plain("x");
+        let results = statuses
+            .iter()
+            .map(|&status| FileResult {
+                status,
+                ..invalid("f.toml".to_string(), d(), &mut String::new(), false)
+            })
+            .collect();
+        Checked {
+            results,
+            ..Checked::default()
+        }
+    }
+
+    #[test]
+    fn an_invalid_file_makes_the_run_exit_2_whatever_else_fails() {
+        let c = checked(&[Status::Ok, Status::Failed, Status::Invalid, Status::Ok]);
+        assert_eq!(c.status(), 2);
+    }
+
+    #[test]
+    fn a_failed_check_without_an_invalid_file_makes_the_run_exit_1() {
+        assert_eq!(checked(&[Status::Ok, Status::Failed]).status(), 1);
+    }
+
+    #[test]
+    fn a_run_where_everything_holds_exits_0() {
+        assert_eq!(checked(&[Status::Ok, Status::Ok]).status(), 0);
+    }
+
     #[test]
     fn a_file_checked_without_a_panic_keeps_its_own_result() {
         let mut stderr = String::new();
