@@ -316,6 +316,11 @@ fn samples(shape: &str) -> Vec<&'static str> {
             "density = \"1 g/cm^3\"\ndiameter = 20\ninner_diameter = 18\nlength = 30\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
             "material = \"steel\"\nradius = 10\ninner_radius = 9\nlength = 30\ncenter = [0, 0, 0]",
         ],
+        "ellipsoid" => vec![
+            "mass = 1\nradii = [10, 20, 30]\ncenter = [0, 0, 0]",
+            "density = \"1 g/cm^3\"\nradii = [\"1 cm\", 20, 5]\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
+            "material = \"steel\"\nradii = [10, 10, 4]\ncenter = [0, 0, 0]",
+        ],
         "prism" => vec![
             "mass = 1\npolygon = [[0, 0], [10, 0], [0, 10]]\nlength = 2",
             "density = \"1 g/cm^3\"\npolygon = [[0, 0], [10, 0], [10, 10], [0, 10]]\nlength = 2\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 90 }",
@@ -355,6 +360,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "inner_diameter" => "2",
         "top_radius" | "tube_radius" => "3",
         "polygon" => "[[0, 0], [5, 0], [0, 5]]",
+        "radii" => "[1, 2, 3]",
         "include" => "\"other.toml\"",
         "material" => "\"steel\"",
         "area" => "2",
@@ -1195,6 +1201,10 @@ impl Gen<'_, '_> {
                     .collect();
                 lines.push(format!("polygon = [{}]", v.join(", ")));
                 lines.push(format!("length = {}", self.len(0.02)));
+            }
+            Dims::Semiaxes => {
+                let radii: Vec<String> = [0.01, 0.02, 0.005].iter().map(|x| self.len(*x)).collect();
+                lines.push(format!("radii = [{}]", radii.join(", ")));
             }
             Dims::Mesh => {
                 lines.push("file = \"shapes/meshes/bracket.stl\"".to_string());
