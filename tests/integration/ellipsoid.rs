@@ -8,7 +8,7 @@
 //! derivatives, copies and mirrors of it, export in each format, its
 //! drawing in each view, and its bad input.
 
-use crate::common::{massprop_stdin, report_json};
+use crate::common::{massprop_stdin, report_json, report_json_file, scratch_files};
 
 /// Mass, centre of mass and inertia about it, from a report.
 fn figures(text: &str, args: &[&str]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
@@ -205,6 +205,46 @@ fn a_mirrored_and_arrayed_ellipsoid_is_each_copy_written_out() {
         (pair[0][0] - 2.0 * one[0][0]).abs() <= 1e-14,
         "{pair:?} vs {one:?}"
     );
+}
+
+#[test]
+fn an_ellipsoid_in_a_turned_sub_assembly_in_millimetres_is_moved_scaled_and_turned() {
+    // The sub-assembly in mm and g, turned 30° about y inside it; the
+    // include turned 90° about z at (1, 0, 0) m: the body R_z R_y diag Rᵀ
+    // about (1, 0, 0) + R_z (0.01, 0.02, 0.03) m.
+    let top = scratch_files(
+        "ellipsoid",
+        "include",
+        &[
+            (
+                "sub.toml",
+                "units = { length = \"mm\", mass = \"g\" }\n[[part]]\nshape = \"ellipsoid\"\ndensity = \"2.7 g/cm^3\"\nradii = [100, 50, \"0.02 m\"]\ncenter = [10, 20, 30]\nrotation = { axis = [0, 1, 0], degrees = 30 }\n",
+            ),
+            (
+                "top.toml",
+                "[[part]]\ninclude = \"sub.toml\"\norigin = [1, 0, 0]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n",
+            ),
+        ],
+    );
+    let (v, _) = report_json_file(&top, &[]);
+    let m = 2700.0 * 4.0 / 3.0 * PI * 0.1 * 0.05 * 0.02;
+    let got_m = v["mass"].as_f64().unwrap();
+    assert!((got_m - m).abs() <= 1e-15 * m, "{got_m} vs {m}");
+    for (k, want) in [0.98, 0.01, 0.03].iter().enumerate() {
+        let got = v["center_of_mass"][k].as_f64().unwrap();
+        assert!((got - want).abs() <= 1e-15, "centre {k}: {got} vs {want}");
+    }
+    let (rz, ry) = (turn([0.0, 0.0, 1.0], 90.0), turn([0.0, 1.0, 0.0], 30.0));
+    let r: [[f64; 3]; 3] =
+        std::array::from_fn(|i| std::array::from_fn(|j| (0..3).map(|k| rz[i][k] * ry[k][j]).sum()));
+    let d = textbook(m, [0.1, 0.05, 0.02]);
+    for a in 0..3 {
+        for b in 0..3 {
+            let want: f64 = (0..3).map(|k| r[a][k] * d[k] * r[b][k]).sum();
+            let got = v["inertia_com"][a][b].as_f64().unwrap();
+            assert!((got - want).abs() <= 1e-14 * d[0], "[{a}][{b}]: {got} vs {want}");
+        }
+    }
 }
 
 /// `massprop export - --to FORMAT` on `text`: its XML.
