@@ -421,7 +421,6 @@ impl<'i> Builder<'i> {
                     "inner_tube_radius" => set(&mut p.inner_tube_radius, quantity(node)?),
                     "polygon" => set(&mut p.polygon, vectors(node)?),
                     "size" => set(&mut p.size, vector(node)?),
-                    "radii" => set(&mut p.radii, vector(node)?),
                     "center" => set(&mut p.center, vector(node)?),
                     "corner" => set(&mut p.corner, vector(node)?),
                     "from" => set(&mut p.from, vector(node)?),

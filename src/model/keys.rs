@@ -10,7 +10,7 @@ use toml::Spanned;
 pub(super) type Present<'k> = Vec<(&'k str, Option<Range<usize>>)>;
 
 /// Every key a part may have, with where it is when present.
-pub(super) fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 36] {
+pub(super) fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 35] {
     [
         ("density", p.density.as_deref().map(Spanned::span)),
         (
@@ -58,7 +58,6 @@ pub(super) fn key_spans(p: &RawPart) -> [(&'static str, Option<Range<usize>>); 3
             p.inner_tube_radius.as_deref().map(Spanned::span),
         ),
         ("polygon", p.polygon.as_deref().map(Spanned::span)),
-        ("radii", p.radii.as_deref().map(Spanned::span)),
         ("file", p.file.as_deref().map(Spanned::span)),
         ("mesh_unit", p.mesh_unit.as_deref().map(Spanned::span)),
         ("mode", p.mode.as_deref().map(Spanned::span)),

@@ -387,20 +387,6 @@ impl Reader for PartReader<'_, '_> {
         Ok(out)
     }
 
-    fn lengths<const N: usize>(&self, key: &'static str) -> Result<[f64; N], Diagnostic> {
-        let v = match key {
-            "radii" => self.p.radii.as_deref(),
-            _ => unreachable!("`{key}` is no key of lengths"),
-        }
-        .expect("`part` checked the lengths");
-        let mut out = [0.0; N];
-        for (k, (e, q)) in out.iter_mut().zip(v.get_ref()).enumerate() {
-            self.ctx.tol.borrow_mut().component = k;
-            *e = self.ctx.file_quantity(q, key, Dim::LENGTH)?;
-        }
-        Ok(out)
-    }
-
     fn length(&self, key: &'static str) -> Result<f64, Diagnostic> {
         let l = self.p.length.as_deref().expect("`part` checked the length");
         self.ctx.file_quantity(l, key, Dim::LENGTH)

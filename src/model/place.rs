@@ -98,14 +98,6 @@ impl Ctx<'_> {
             Dims::Cone => self.cone(p, span.clone())?,
             Dims::Torus => self.torus(p, span.clone())?,
             Dims::Polygon => self.prism(p, span.clone())?,
-            Dims::Semiaxes => {
-                let radii = p.radii.as_deref().ok_or_else(|| missing("radii"))?;
-                let dims = self.vector(radii, "radii", Dim::LENGTH, 3)?;
-                for q in radii.get_ref() {
-                    self.positive(q, "radii", Dim::LENGTH)?;
-                }
-                dims
-            }
         };
         if shape.info().dims == Dims::Polygon {
             // Placed by its optional `origin`.

@@ -222,9 +222,6 @@ pub struct RawPart {
     /// instead of `inner_radius` (`diameter` gives the outer one).
     #[schemars(with = "Option<Quantity>")]
     pub inner_diameter: Option<Box<Spanned<Quantity>>>,
-    /// An ellipsoid's semi-axes along its local x, y and z.
-    #[schemars(with = "Option<[Quantity; 3]>")]
-    pub radii: Option<Box<Vector>>,
     /// A cone's radius at its top (local z = +length/2).
     #[schemars(with = "Option<Quantity>")]
     pub top_radius: Option<Box<Spanned<Quantity>>>,

@@ -613,13 +613,9 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
     let info = shape.info();
     let dims: &[&str] = match info.dims {
         Dims::Length | Dims::Radii { .. } | Dims::Cone | Dims::Torus => info.dims.keys(),
-        Dims::Size(_)
-        | Dims::Vertices
-        | Dims::Given
-        | Dims::None
-        | Dims::Polygon
-        | Dims::Mesh
-        | Dims::Semiaxes => &[],
+        Dims::Size(_) | Dims::Vertices | Dims::Given | Dims::None | Dims::Polygon | Dims::Mesh => {
+            &[]
+        }
     };
     let dim = |k: &str| dims.contains(&k).then(|| Slot::of_dimension(k)).flatten();
     Some(match key {
@@ -630,7 +626,6 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
         "edges" => (Slot::Edge(r, c), 1.0),
         "vertices" => (Slot::Vertex(r, c), 1.0),
         "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Size(c), 1.0),
-        "radii" if info.dims == Dims::Semiaxes => (Slot::Size(c), 1.0),
         "length" if info.dims == Dims::Polygon => (Slot::Length, 1.0),
         "diameter" => (dim("radius")?, 0.5),
         "inner_diameter" => (dim("inner_radius")?, 0.5),

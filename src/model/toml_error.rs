@@ -219,7 +219,6 @@ fn expected(key: &str, depth: usize, text: &str, at: usize) -> Option<String> {
             }
             _ => format!("an array of lengths ({QUANTITIES})"),
         },
-        ("radii", 0) => format!("an array of 3 lengths ({QUANTITIES})"),
         ("edges", 0) => format!("3 edge vectors, each an array of 3 {QUANTITIES}"),
         ("vertices", 0) => format!("3 points, each an array of 3 {QUANTITIES}"),
         ("edges", 1) => format!("an edge vector, an array of 3 {QUANTITIES}"),

@@ -62,8 +62,6 @@ pub enum Dims {
     Polygon,
     /// A mesh `file` (`mesh`): its integrals come from the file.
     Mesh,
-    /// An ellipsoid's `radii`, three positive lengths: [a, b, c].
-    Semiaxes,
 }
 
 impl Dims {
@@ -79,7 +77,6 @@ impl Dims {
             Dims::Cone => 5,
             Dims::Torus => 3,
             Dims::Polygon => 2,
-            Dims::Semiaxes => 3,
         }
     }
 
@@ -103,7 +100,6 @@ impl Dims {
             Dims::Torus => &["radius", "tube_radius", "inner_tube_radius"],
             Dims::Polygon => &["polygon", "length"],
             Dims::Mesh => &["file"],
-            Dims::Semiaxes => &["radii"],
         }
     }
 }

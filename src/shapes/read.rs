@@ -18,8 +18,6 @@ pub trait Reader {
     fn vectors<const N: usize>(&self, key: &'static str) -> Result<[[f64; 3]; N], Diagnostic>;
     /// The lengths of `size`.
     fn sizes<const N: usize>(&self) -> Result<[f64; N], Diagnostic>;
-    /// The lengths of the array under `key` (an ellipsoid's `radii`).
-    fn lengths<const N: usize>(&self, key: &'static str) -> Result<[f64; N], Diagnostic>;
     /// The length under `key`.
     fn length(&self, key: &'static str) -> Result<f64, Diagnostic>;
     /// `radius` (or half `diameter`), then `inner_radius` (or half
