@@ -261,7 +261,10 @@ pub(super) fn read_own(
         .as_deref()
         .and_then(|own| own.iter().find(|(k, _)| *k == key));
     let Some((_, value)) = value else {
-        return Err(ctx.err(shape.span(), format!("a {} needs `{key}`", shape.get_ref())));
+        return Err(ctx.err(
+            shape.span(),
+            format!("this {} needs `{key}`", shape.get_ref()),
+        ));
     };
     let one = |q: &Spanned<Quantity>| -> Result<f64, Diagnostic> {
         let x = ctx.file_quantity(q, key, decl.dim)?;
