@@ -13,18 +13,48 @@
 //! mirror image in each local coordinate plane. No hollow form: an even
 //! wall of an ellipsoid is no difference of two ellipsoids (their
 //! semi-axes' differences are not one thickness), so the shape is solid.
+//!
+//! Its dimensions are its own key, `radii` (`OWN_KEYS`: three lengths,
+//! each > 0, each taking "±"), read through `Reader::quantities` and
+//! moved by a tolerance in the slots `Own(0, k)`.
 
 use super::common::{axes, density_power, exact_centroid_error, flip, mirror_axis, norm1};
-use super::common::{at, diagonal, points, reset_turn, scaled, sizes};
+use super::common::{at, diagonal, points, reset_turn, scaled, var};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::read::Reader;
 use super::{
-    Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units,
+    Dims, Key, Kind, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot,
+    Units,
 };
 use crate::diag::Diagnostic;
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
+use crate::units::Dim;
+
+/// The slot of `radii`'s component k: the first of `OWN_KEYS`.
+fn radius_slot(k: usize) -> Slot {
+    Slot::Own(0, k as u8)
+}
+
+/// The semi-axes from the dimensions the closed forms are given.
+///
+/// NOTE: the model's validation (`model::parts`) still evaluates the
+/// closed forms on the dimensions that `INFO.dims` names, in SI, only to
+/// refuse a part whose figures would leave f64's range; the ellipsoid's
+/// dimensions are its own key, which `Dims` cannot name, so there it
+/// passes none (`Dims::None`) and the unit ellipsoid stands in. The part's
+/// own figures, from its radii as read, are checked in the file's units
+/// all the same (`model::parts::in_file_range`), so nothing out of range
+/// passes; only that SI check is not the ellipsoid's own until the model
+/// reads the dimensions through the placed form.
+fn semi_axes<T: Real>(d: &[T]) -> [T; 3] {
+    match d {
+        [a, b, c] => [*a, *b, *c],
+        [] => [T::of(1.0); 3],
+        _ => unreachable!("an ellipsoid has three dimensions, or none from `Dims::None`"),
+    }
+}
 
 /// A solid ellipsoid placed by its `center` and turned by its
 /// `orientation`, in its file's units.
@@ -44,7 +74,8 @@ impl ShapeKind for Ellipsoid {
             "density", "radii", "material", "center", "rotation", "mass", "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Semiaxes,
+        // Its dimensions are its own key, `radii` (see `semi_axes`).
+        dims: Dims::None,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -53,6 +84,15 @@ impl ShapeKind for Ellipsoid {
         degenerate: "a zero or negative radius",
         help: "an ellipsoid takes `mass` or `density`, and `radii` = [a, b, c], its semi-axes along its local x, y and z, with `center` (and optional `rotation`)",
     };
+
+    const OWN_KEYS: &'static [Key] = &[Key::own(
+        "radii",
+        Kind::Quantities(Some(3)),
+        Dim::LENGTH,
+        "the semi-axes a, b, c along local x, y, z",
+    )
+    .tolerable()
+    .positive()];
 
     /// ⁴⁄₃ and π (3: the quotient, π's own rounding, their product), the
     /// three products with a, b and c (3), and one of slack.
@@ -65,18 +105,13 @@ impl ShapeKind for Ellipsoid {
 
     /// ⁴⁄₃π abc.
     fn measure_of<T: Real>(d: &[T]) -> T {
-        let [a, b, c] = d else {
-            unreachable!("the model passes an ellipsoid three dimensions")
-        };
-        T::of(4.0) / T::of(3.0) * T::pi() * *a * *b * *c
+        let [a, b, c] = semi_axes(d);
+        T::of(4.0) / T::of(3.0) * T::pi() * a * b * c
     }
 
     /// m a²/5, m b²/5, m c²/5.
     fn moments_of<T: Real>(m: T, d: &[T]) -> [T; 3] {
-        let [a, b, c] = d else {
-            unreachable!("the model passes an ellipsoid three dimensions")
-        };
-        [*a, *b, *c].map(|r| m * r * r / T::of(5.0))
+        semi_axes(d).map(|r| m * r * r / T::of(5.0))
     }
 
     fn offset_of<T: Real>(_: &[T]) -> T {
@@ -84,7 +119,7 @@ impl ShapeKind for Ellipsoid {
     }
 
     fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
-        let radii = r.lengths("radii")?;
+        let radii = r.quantities::<3>("radii")?;
         Ok(Ellipsoid {
             center: r.point("center")?,
             radii,
@@ -93,7 +128,7 @@ impl ShapeKind for Ellipsoid {
     }
 
     fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of::<T>(&sizes(&self.radii, l))
+        Self::measure_of::<T>(&self.radii_in(l))
     }
 
     fn measure_error(&self) -> f64 {
@@ -114,7 +149,7 @@ impl ShapeKind for Ellipsoid {
         units: Option<Units>,
         l: L,
     ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of::<T>(m, &sizes(&self.radii, l));
+        let d = Self::moments_of::<T>(m, &self.radii_in(l));
         diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
     }
 
@@ -152,14 +187,14 @@ impl ShapeKind for Ellipsoid {
         points(&[self.center])
     }
 
-    /// Its centre's coordinates (`At`), then `radii`'s components, each
-    /// the slot `Size(k)` of a component of an array of lengths.
+    /// Its centre's coordinates (`At`), then `radii`'s components, the
+    /// slots `Own(0, k)` of its first own key.
     fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
         for (i, x) in self.center.iter_mut().enumerate() {
             f(Slot::At(i as u8), x);
         }
         for (k, x) in self.radii.iter_mut().enumerate() {
-            f(Slot::Size(k as u8), x);
+            f(radius_slot(k), x);
         }
     }
 
@@ -188,6 +223,13 @@ impl ShapeKind for Ellipsoid {
             c: self.center,
             m: [scaled(a, x), scaled(b, y), scaled(c, z)],
         }])
+    }
+}
+
+impl Ellipsoid {
+    /// Its radii read through `l`, each in its slot.
+    fn radii_in<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
+        std::array::from_fn(|k| var(self.radii[k], radius_slot(k), l))
     }
 }
 
@@ -303,9 +345,9 @@ mod tests {
                 (Slot::At(0), 1.0),
                 (Slot::At(1), 2.0),
                 (Slot::At(2), 3.0),
-                (Slot::Size(0), 4.0),
-                (Slot::Size(1), 5.0),
-                (Slot::Size(2), 6.0),
+                (Slot::Own(0, 0), 4.0),
+                (Slot::Own(0, 1), 5.0),
+                (Slot::Own(0, 2), 6.0),
             ]
         );
     }
