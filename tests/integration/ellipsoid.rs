@@ -242,7 +242,10 @@ fn an_ellipsoid_in_a_turned_sub_assembly_in_millimetres_is_moved_scaled_and_turn
         for b in 0..3 {
             let want: f64 = (0..3).map(|k| r[a][k] * d[k] * r[b][k]).sum();
             let got = v["inertia_com"][a][b].as_f64().unwrap();
-            assert!((got - want).abs() <= 1e-14 * d[0], "[{a}][{b}]: {got} vs {want}");
+            assert!(
+                (got - want).abs() <= 1e-14 * d[0],
+                "[{a}][{b}]: {got} vs {want}"
+            );
         }
     }
 }
@@ -458,7 +461,7 @@ fn two_or_four_radii_are_refused() {
 fn an_ellipsoid_without_radii_or_with_a_radius_is_refused() {
     let e = refused("[[part]]\nshape = \"ellipsoid\"\nmass = 1\ncenter = [0, 0, 0]\n");
     assert!(
-        e.starts_with("<stdin>:1:1: error: this ellipsoid needs `radii`"),
+        e.starts_with("<stdin>:2:9: error: this ellipsoid needs `radii`"),
         "{e}"
     );
     let e = refused(

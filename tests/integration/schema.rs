@@ -1202,15 +1202,20 @@ impl Gen<'_, '_> {
                 lines.push(format!("polygon = [{}]", v.join(", ")));
                 lines.push(format!("length = {}", self.len(0.02)));
             }
-            Dims::Semiaxes => {
-                let radii: Vec<String> = [0.01, 0.02, 0.005].iter().map(|x| self.len(*x)).collect();
-                lines.push(format!("radii = [{}]", radii.join(", ")));
-            }
             Dims::Mesh => {
                 lines.push("file = \"shapes/meshes/bracket.stl\"".to_string());
                 let unit = self.p.of(massprop::units::LENGTH_UNITS);
                 lines.push(format!("mesh_unit = \"{unit}\""));
             }
+        }
+        // A shape's own keys (an ellipsoid's `radii`): lengths, each > 0.
+        for key in s.shape.own_keys() {
+            let massprop::shapes::Kind::Quantities(Some(n)) = key.kind else {
+                panic!("`{}`: no sample for an own key of {:?}", key.name, key.kind)
+            };
+            assert_eq!(key.dim, Dim::LENGTH, "`{}`", key.name);
+            let values: Vec<String> = (1..=n).map(|k| self.len(0.005 * k as f64)).collect();
+            lines.push(format!("{} = [{}]", key.name, values.join(", ")));
         }
         if s.centred.contains(&"center") {
             lines.push(format!("center = {}", self.point([0.0, 0.01, 0.02])));
