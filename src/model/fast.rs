@@ -27,7 +27,7 @@
 
 pub use super::raw::Section;
 use super::raw::{RawAnalysis, RawFile, RawPart, RawUnits};
-use values::{Node, quantity, rotation, set, string, units_key, vector, vectors};
+use values::{Node, own_value, set, set_from, string, units_key, vector};
 
 mod values;
 use std::borrow::Cow;
@@ -400,56 +400,36 @@ impl<'i> Builder<'i> {
                     _ => None,
                 }
             }
-            Current::Part => {
-                let p = &mut self.part.as_mut()?.1;
-                match key {
-                    "name" => set(&mut p.name, string(node)?),
-                    "shape" => set(&mut p.shape, string(node)?),
-                    "mass" => set(&mut p.mass, quantity(node)?),
-                    "density" => set(&mut p.density, quantity(node)?),
-                    "areal_density" => set(&mut p.areal_density, quantity(node)?),
-                    "linear_density" => set(&mut p.linear_density, quantity(node)?),
-                    "length" => set(&mut p.length, quantity(node)?),
-                    "thickness" => set(&mut p.thickness, quantity(node)?),
-                    "diameter" => set(&mut p.diameter, quantity(node)?),
-                    "radius" => set(&mut p.radius, quantity(node)?),
-                    "inner_radius" => set(&mut p.inner_radius, quantity(node)?),
-                    "inner_diameter" => set(&mut p.inner_diameter, quantity(node)?),
-                    "top_radius" => set(&mut p.top_radius, quantity(node)?),
-                    "top_inner_radius" => set(&mut p.top_inner_radius, quantity(node)?),
-                    "tube_radius" => set(&mut p.tube_radius, quantity(node)?),
-                    "inner_tube_radius" => set(&mut p.inner_tube_radius, quantity(node)?),
-                    "polygon" => set(&mut p.polygon, vectors(node)?),
-                    "size" => set(&mut p.size, vector(node)?),
-                    "center" => set(&mut p.center, vector(node)?),
-                    "corner" => set(&mut p.corner, vector(node)?),
-                    "from" => set(&mut p.from, vector(node)?),
-                    "to" => set(&mut p.to, vector(node)?),
-                    "edges" => set(&mut p.edges, vectors(node)?),
-                    "vertices" => set(&mut p.vertices, vectors(node)?),
-                    "inertia" => set(&mut p.inertia, vectors(node)?),
-                    "rotation" => set(&mut p.rotation, rotation(node)?),
-                    "include" => set(&mut p.include, string(node)?),
-                    "origin" => set(&mut p.origin, vector(node)?),
-                    "material" => set(&mut p.material, string(node)?),
-                    "products" => set(&mut p.products, string(node)?),
-                    "area" => set(&mut p.area, quantity(node)?),
-                    "file" => set(&mut p.file, string(node)?),
-                    "mesh_unit" => set(&mut p.mesh_unit, string(node)?),
-                    "mode" => set(&mut p.mode, string(node)?),
-                    "group" => set(&mut p.group, string(node)?),
-                    "maturity" => set(&mut p.maturity, string(node)?),
-                    "tol" => set(&mut p.tol, quantity(node)?),
-                    "remove" => match node {
-                        Node::Bool(b, span) => set(&mut p.remove, Spanned::new(span, b)),
-                        _ => None,
-                    },
-                    _ => None,
-                }
-            }
+            Current::Part => assign_part(&mut self.part.as_mut()?.1, key, node),
         }
     }
 }
+
+/// The reader's assignment of each part key, from its declaration
+/// (`keys::part_keys!`): `key = node` into its `RawPart` field, read as
+/// the field's type reads it (`FromNode`); else a shape's own key, read
+/// by its declared kind. `None` if the key is unknown, repeated, or the
+/// value of the wrong type.
+macro_rules! assigner {
+    ($($name:ident: $kind:expr, $dim:expr, $tol:literal, $scope:ident, $doc:literal;)+) => {
+        fn assign_part(p: &mut RawPart, key: &str, node: Node<'_>) -> Option<()> {
+            match key {
+                $(stringify!($name) => set_from(&mut p.$name, node),)+
+                _ => {
+                    let declared = crate::shapes::own_key(key)?;
+                    let value = own_value(declared.kind, node)?;
+                    let own = p.own.get_or_insert_with(Default::default);
+                    if own.iter().any(|(k, _)| *k == declared.name) {
+                        return None;
+                    }
+                    own.push((declared.name, value));
+                    Some(())
+                }
+            }
+        }
+    };
+}
+super::keys::part_keys!(assigner);
 
 impl<'i> EventReceiver for Builder<'i> {
     fn std_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {

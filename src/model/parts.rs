@@ -328,11 +328,11 @@ impl Ctx<'_> {
 /// A part's numbers as its shape's module reads them (`shapes::Reader`),
 /// in the file's units, after `Ctx::part` has validated them: so a key a
 /// module asks for is there, and only a conversion can fail.
-struct PartReader<'c, 'p> {
-    ctx: &'c Ctx<'c>,
-    p: &'p RawPart,
-    by_edges: bool,
-    orientation: Orientation,
+pub(super) struct PartReader<'c, 'p> {
+    pub(super) ctx: &'c Ctx<'c>,
+    pub(super) p: &'p RawPart,
+    pub(super) by_edges: bool,
+    pub(super) orientation: Orientation,
 }
 
 /// A key `Ctx::part` checked is given.
@@ -436,6 +436,15 @@ impl Reader for PartReader<'_, '_> {
 
     fn by_edges(&self) -> bool {
         self.by_edges
+    }
+
+    fn quantity(&self, key: &'static str) -> Result<f64, Diagnostic> {
+        Ok(super::keys::read_own(self.ctx, self.p, key, 1)?[0])
+    }
+
+    fn quantities<const N: usize>(&self, key: &'static str) -> Result<[f64; N], Diagnostic> {
+        let v = super::keys::read_own(self.ctx, self.p, key, N)?;
+        Ok(std::array::from_fn(|i| v[i]))
     }
 
     fn elsewhere(&self) -> Diagnostic {

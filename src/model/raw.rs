@@ -16,6 +16,9 @@ use serde::de::{self, Deserializer, Visitor};
 use std::fmt;
 use toml::Spanned;
 
+mod own;
+pub use own::{Own, OwnValue, holdable};
+
 /// An array of quantities, e.g. `center = [0, "5 mm", 1]`.
 pub type Vector = Spanned<Vec<Spanned<Quantity>>>;
 /// An array of plain numbers (rotation parameters carry no unit).
@@ -53,7 +56,6 @@ table_only!(
     RawUnits,
     "a table such as { length = \"mm\", mass = \"kg\" }"
 );
-table_only!(RawPart, "a part table with `shape`");
 table_only!(
     RawArray,
     "a table such as { count = 4, step = [1, 0, 0] } or { count = 32, axis = [0, 0, 1], step_degrees = 11.25 }"
@@ -291,6 +293,11 @@ pub struct RawPart {
     /// `"2 %"`, `"± 0.1 kg uniform"`.
     #[schemars(with = "Option<super::schema::TolAmount>")]
     pub tol: Option<Box<Spanned<Quantity>>>,
+    /// The keys its shape declares itself (`ShapeKind::OWN_KEYS`), as
+    /// written (`own`).
+    #[serde(skip)]
+    #[schemars(skip)]
+    pub own: Option<Box<Own>>,
 }
 
 /// `array = { count = N, step = [dx, dy, dz] }`, or `{ count = N, axis =

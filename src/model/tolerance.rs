@@ -608,6 +608,11 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
     let Some(shape) = shape else {
         return (key == "origin").then_some((Slot::At(c), 1.0));
     };
+    // A shape's own key: its slot by its place among them, if it takes "±".
+    let own = shape.own_keys();
+    if let Some(i) = own.iter().position(|k| k.name == key) {
+        return own[i].tol.then_some((Slot::Own(i as u8, c), 1.0));
+    }
     // The dimensions kept as numbers of the spec, in `Dims::keys` order
     // (not a given tensor's, a polygon's or a mesh's).
     let info = shape.info();

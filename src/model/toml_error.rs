@@ -85,12 +85,23 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
         if let Some((key, valid)) = quoted.split_first() {
             // In a part whose shape is known, the keys of that shape (its
             // description in `SHAPES`), not every key any part may have.
+            // Elsewhere in a part, every part key (a shape's own keys are
+            // no fields of serde's).
             let shape_keys: Vec<&str>;
             let valid: &[&str] = match shape_of_part_at(&source.text, span.start) {
                 Some(shape) if valid.contains(&"shape") => {
                     shape_keys = ["name", "shape"]
                         .into_iter()
                         .chain(shape.info().keys.iter().copied())
+                        .collect();
+                    &shape_keys
+                }
+                _ if valid.contains(&"shape") => {
+                    let more = super::keys::names().filter(|k| !valid.contains(k));
+                    shape_keys = valid
+                        .iter()
+                        .copied()
+                        .chain(more.map(|k| k as &str))
                         .collect();
                     &shape_keys
                 }
@@ -204,27 +215,21 @@ const ROTATION_FORMS: &str = "write `{ quaternion = [w, x, y, z] }`, `{ axis = [
 /// length of `size`).
 fn expected(key: &str, depth: usize, text: &str, at: usize) -> Option<String> {
     const QUANTITIES: &str = "numbers or strings with units";
+    // A part's key: from its declaration (`keys`), a `size` as long as
+    // its part's shape says.
+    if let Some(k) = super::keys::declared(key) {
+        let n = match shape_of_part_at(text, at).map(|s| s.info().dims) {
+            Some(crate::shapes::Dims::Size(n)) if key == "size" => Some(n),
+            _ => None,
+        };
+        return super::keys::expected(k, depth, n);
+    }
     Some(match (key, depth) {
         ("part", 0) => "an array of tables, each a `[[part]]`".into(),
         ("materials", 0) => {
             "a table of materials such as { foam = { density = \"30 kg/m^3\" } }".into()
         }
-        ("center" | "corner" | "from" | "to" | "origin", 0) => {
-            format!("an array of 3 {QUANTITIES}, such as [0, 0, \"5 mm\"]")
-        }
         ("about" | "omega" | "alpha", 0) => format!("an array of 3 {QUANTITIES}"),
-        ("size", 0) => match shape_of_part_at(text, at).map(|s| s.info().dims) {
-            Some(crate::shapes::Dims::Size(n)) => {
-                format!("an array of {n} lengths ({QUANTITIES})")
-            }
-            _ => format!("an array of lengths ({QUANTITIES})"),
-        },
-        ("edges", 0) => format!("3 edge vectors, each an array of 3 {QUANTITIES}"),
-        ("vertices", 0) => format!("3 points, each an array of 3 {QUANTITIES}"),
-        ("edges", 1) => format!("an edge vector, an array of 3 {QUANTITIES}"),
-        ("vertices", 1) => format!("a point, an array of 3 {QUANTITIES}"),
-        ("inertia", 0) => format!("3 rows, each an array of 3 {QUANTITIES}"),
-        ("inertia", 1) => format!("a row, an array of 3 {QUANTITIES}"),
         ("axis", 0) => "an array of 3 numbers, such as [0, 0, 1]".into(),
         ("quaternion", 0) => "an array of 4 numbers [w, x, y, z]".into(),
         ("matrix", 0) => "3 rows, each an array of 3 numbers".into(),

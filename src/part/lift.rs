@@ -25,7 +25,8 @@ impl Spec {
             | Slot::InnerTubeRadius
             | Slot::Edge(..)
             | Slot::To(_)
-            | Slot::Vertex(..) => self.place.number_mut(slot),
+            | Slot::Vertex(..)
+            | Slot::Own(..) => self.place.number_mut(slot),
         }
     }
 }

@@ -194,3 +194,121 @@ impl Solid {
         }
     }
 }
+
+/// What a part key's value is (`Key::kind`): how the reader reads it, and
+/// how a message says what was expected.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A number, or a string with a unit (`"5 mm"`), an expression, a
+    /// tolerance.
+    Quantity,
+    /// A point: an array of 3 quantities (`center`, `corner`, `origin`).
+    Point,
+    /// An array of quantities: this many, or as many as the shape says
+    /// (`None`: a box's or plate's `size`).
+    Quantities(Option<usize>),
+    /// An array of rows, each an array of `width` quantities; `says`: one
+    /// row and the whole as messages name them (`("an edge vector", "3
+    /// edge vectors")`), `None` where they name neither.
+    Rows {
+        width: usize,
+        says: Option<(&'static str, &'static str)>,
+    },
+    /// A string.
+    Str,
+    /// `true` or `false`.
+    Bool,
+    /// A rotation table (`{ axis = [..], degrees = θ }`, …).
+    Rotation,
+    /// An `array = { count = .., step = .. }` table.
+    ArrayTable,
+    /// A `mirror = { normal = .., origin = .. }` table.
+    MirrorTable,
+    /// A table of named quantities (an include's `params`).
+    ParamsTable,
+}
+
+/// Which parts take a key.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scope {
+    /// Every part (`name`, `shape`, `array`, `mirror`, `group`,
+    /// `maturity`).
+    Every,
+    /// The parts whose shape lists it in `ShapeInfo::keys` (and an
+    /// include, for `include`, `origin`, `params`, `rotation`).
+    Listed,
+}
+
+/// One part key, declared once: the common ones in `model::keys`, a
+/// shape's own in its module's `ShapeKind::OWN_KEYS`. The reader, the
+/// key checks, the did-you-mean and the messages' "expected …" all come
+/// from these.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Key {
+    /// The key in part files.
+    pub name: &'static str,
+    pub kind: Kind,
+    /// The dimension of its quantities (`Dim::DIMENSIONLESS` for a key
+    /// without any).
+    pub dim: Dim,
+    /// Whether it may carry a tolerance ("±").
+    pub tol: bool,
+    /// Whether each of its quantities must be > 0 (checked as read).
+    pub positive: bool,
+    pub scope: Scope,
+    /// One line for the docs and the schema.
+    pub doc: &'static str,
+}
+
+impl Key {
+    /// A shape's own key: listed in its `INFO.keys`, read as declared.
+    pub const fn own(name: &'static str, kind: Kind, dim: Dim, doc: &'static str) -> Key {
+        Key {
+            name,
+            kind,
+            dim,
+            tol: false,
+            positive: false,
+            scope: Scope::Listed,
+            doc,
+        }
+    }
+
+    /// The same key, taking "±".
+    pub const fn tolerable(self) -> Key {
+        Key { tol: true, ..self }
+    }
+
+    /// The same key, each of its quantities checked > 0.
+    pub const fn positive(self) -> Key {
+        Key {
+            positive: true,
+            ..self
+        }
+    }
+}
+
+/// The declaration of `name` if a shape declares it as its own
+/// (`ShapeKind::OWN_KEYS`; the first, should two shapes declare one name).
+pub fn own_key(name: &str) -> Option<&'static Key> {
+    Shape::ALL
+        .iter()
+        .flat_map(|s| s.own_keys())
+        .find(|k| k.name == name)
+}
+
+/// A shape's own key that no shape has, declared for the tests alone.
+///
+/// NOTE: the reading of an own key (read, tolerated, checked > 0) is
+/// tested before any shape declares one (`model::keys`' tests): in test
+/// builds `Shape::own_keys` gives it to the point, whose `INFO.keys` do
+/// not list it (so no part file may use it).
+#[cfg(test)]
+pub const PROBE: Key = Key::own(
+    "probe_radii",
+    Kind::Quantities(Some(3)),
+    Dim::LENGTH,
+    "three lengths, for the tests",
+)
+.tolerable()
+.positive();

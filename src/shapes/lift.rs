@@ -38,6 +38,9 @@ pub enum Slot {
     To(u8),
     /// Coordinate i of a triangle's vertex v.
     Vertex(u8, u8),
+    /// Component i of a shape's own key k, by its place in the shape's
+    /// `ShapeKind::OWN_KEYS` (an ellipsoid's `radii`).
+    Own(u8, u8),
 }
 
 impl Slot {

@@ -31,8 +31,11 @@ pub use outline::Outline;
 pub use place::{Mover, Placed};
 pub use read::Reader;
 
+#[cfg(test)]
+pub use info::PROBE;
 pub use info::{
-    DensityKind, Dims, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid, Spanned,
+    DensityKind, Dims, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
+    Solid, Spanned, own_key,
 };
 
 use crate::numeric::{DD, M3, Real};
@@ -52,6 +55,13 @@ use serde::Serialize;
 /// whose module does not answer in full does not compile.
 pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     const INFO: ShapeInfo;
+    /// The keys this shape declares itself (a key no other part has, such
+    /// as an ellipsoid's `radii`): each also listed in `INFO.keys`, read
+    /// by the model's reader as declared (kind, dimension, "±", > 0) and
+    /// kept on the part generically, and asked for in `read` through
+    /// `Reader::quantity` or `Reader::quantities`. Keys every part may
+    /// have are declared in `model::keys`.
+    const OWN_KEYS: &'static [Key] = &[];
     /// Roundings of the measure (volume, area or length) formed from its
     /// dimensions, beyond the density's product (`part::error::mass_error`).
     const MEASURE_ROUNDINGS: f64;
@@ -217,6 +227,17 @@ macro_rules! registry {
             pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
                 match self {
                     $(Shape::$variant => <$module::$kind as ShapeKind>::moments_of(m, d),)+
+                }
+            }
+
+            /// The keys its module declares itself (`ShapeKind::OWN_KEYS`).
+            pub fn own_keys(self) -> &'static [Key] {
+                #[cfg(test)]
+                if self == Shape::Point {
+                    return &[PROBE];
+                }
+                match self {
+                    $(Shape::$variant => <$module::$kind as ShapeKind>::OWN_KEYS,)+
                 }
             }
 
@@ -407,6 +428,8 @@ registry! {
     Mesh => mesh::Mesh,
     /// A cylinder with hemispherical ends, solid or hollow.
     Capsule => capsule::Capsule,
+    /// A solid ellipsoid given by its three semi-axes.
+    Ellipsoid => ellipsoid::Ellipsoid,
 }
 
 impl Shape {

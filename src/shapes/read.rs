@@ -36,6 +36,13 @@ pub trait Reader {
     /// Whether the part is placed by the vectors that span it (`corner`
     /// and `edges`, `from` and `to`).
     fn by_edges(&self) -> bool;
+    /// The shape's own key `key` (`ShapeKind::OWN_KEYS`), declared
+    /// `Kind::Quantity`: in the file's units, checked as declared (> 0),
+    /// its tolerance recorded if it may have one.
+    fn quantity(&self, key: &'static str) -> Result<f64, Diagnostic>;
+    /// The shape's own key `key`, declared `Kind::Quantities(Some(N))`:
+    /// each of its N quantities as `quantity` reads one.
+    fn quantities<const N: usize>(&self, key: &'static str) -> Result<[f64; N], Diagnostic>;
     /// Said of a shape that is read with its own file (a mesh,
     /// `model::mesh`), never here.
     fn elsewhere(&self) -> Diagnostic;

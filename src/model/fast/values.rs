@@ -1,7 +1,10 @@
 //! The values the fast path reads (`Node`), and their conversion into the
 //! serde mirror's types, `None` for a value of another type.
 
-use super::super::raw::{Angles, Floats, Quantity, RawRotation, RawUnits, Vector};
+use super::super::raw::{
+    Angles, Floats, OwnValue, Params, Quantity, RawArray, RawMirror, RawRotation, RawUnits, Vector,
+};
+use crate::shapes::Kind;
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -130,4 +133,98 @@ pub(super) fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
         }?;
     }
     Some(Spanned::new(span, r))
+}
+
+/// A `RawPart` field's type as the reader reads it from a value; `None`
+/// for a value of another type, or one it leaves to the serde path.
+pub(super) trait FromNode: Sized {
+    fn from_node(node: Node<'_>) -> Option<Self>;
+}
+
+impl<T: FromNode> FromNode for Box<T> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        T::from_node(node).map(Box::new)
+    }
+}
+
+impl FromNode for Spanned<String> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        string(node)
+    }
+}
+
+impl FromNode for Spanned<Quantity> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        quantity(node)
+    }
+}
+
+impl FromNode for Vector {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        vector(node)
+    }
+}
+
+impl FromNode for Spanned<Vec<Vector>> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        vectors(node)
+    }
+}
+
+impl FromNode for Spanned<bool> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        match node {
+            Node::Bool(b, span) => Some(Spanned::new(span, b)),
+            _ => None,
+        }
+    }
+}
+
+impl FromNode for Spanned<RawRotation> {
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        rotation(node)
+    }
+}
+
+/// NOTE: `array`, `mirror` and an include's `params` are left to the
+/// serde path: a file with one is declined.
+impl FromNode for Spanned<RawArray> {
+    fn from_node(_: Node<'_>) -> Option<Self> {
+        None
+    }
+}
+
+impl FromNode for Spanned<RawMirror> {
+    fn from_node(_: Node<'_>) -> Option<Self> {
+        None
+    }
+}
+
+impl FromNode for Params {
+    fn from_node(_: Node<'_>) -> Option<Self> {
+        None
+    }
+}
+
+/// Set a field once from `node`, read as its type reads it.
+pub(super) fn set_from<T: FromNode>(field: &mut Option<T>, node: Node<'_>) -> Option<()> {
+    match field {
+        Some(_) => None,
+        None => {
+            *field = Some(T::from_node(node)?);
+            Some(())
+        }
+    }
+}
+
+/// A shape's own key's value, read by its declared kind.
+pub(super) fn own_value(kind: Kind, node: Node<'_>) -> Option<OwnValue> {
+    Some(match kind {
+        Kind::Quantity => OwnValue::Quantity(quantity(node)?),
+        Kind::Point | Kind::Quantities(_) => OwnValue::Quantities(vector(node)?),
+        Kind::Rows { .. } => OwnValue::Rows(vectors(node)?),
+        Kind::Str => OwnValue::Str(string(node)?),
+        Kind::Bool => OwnValue::Bool(Spanned::<bool>::from_node(node)?),
+        Kind::Rotation | Kind::ArrayTable | Kind::MirrorTable | Kind::ParamsTable => return None,
+    })
 }
