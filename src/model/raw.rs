@@ -547,6 +547,16 @@ impl RawExpect {
             Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
             Q::PredictedInertiaCom => &self.predicted_inertia_com,
             Q::PrincipalAxes => &self.principal_axes,
+            // Reported, not expected (`quantity::Info::expected`).
+            Q::ReferencePoint
+            | Q::CenterOfMassRef
+            | Q::ReportAxes
+            | Q::PrincipalMomentsRef
+            | Q::PrincipalAxesRef
+            | Q::RadiiOfGyrationAxesRef
+            | Q::Omega
+            | Q::Alpha
+            | Q::EulerMoment => &None,
         }
         .as_ref()
     }
