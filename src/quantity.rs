@@ -608,6 +608,11 @@ impl Quantity {
     }
 }
 
+/// The row of the quantity with JSON key `key`.
+pub fn by_key(key: &str) -> Option<&'static Info> {
+    QUANTITIES.iter().find(|i| i.key == key)
+}
+
 /// The components of a vector, and of a matrix's rows and columns.
 pub const XYZ: [&str; 3] = ["x", "y", "z"];
 /// The components of an ordered triple.
