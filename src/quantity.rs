@@ -3,14 +3,20 @@
 //! names), its dimension and shape, how `[expect]` compares it, what
 //! `--bless` writes for it, whether the uncertainty carries its σ, and how
 //! `diff` shows it. `model::expect` reads `[expect]` from this table,
-//! `analysis::check` compares by it, `analysis::sigma` numbers the σ
+//! `analysis::check` compares by it, `analysis::uncertainty` names and places the σ
 //! outputs from it, `analysis::bless` and `analysis::diff` follow it.
 //!
-//! Adding a quantity: a `Quantity` variant and its row in `QUANTITIES`
-//! (a test holds the row at the variant's position), its field in
-//! `model::raw::RawExpect` (the serde mirror), and its value in
-//! `analysis::summary::Summary::value`, which the compiler asks for (no
-//! `match` over quantities has a `_` arm).
+//! The table also writes the JSON: `report`'s keys (`Summary`'s
+//! serialization) and `error_bounds`' each in its place, and says how
+//! `--precision auto` and `--rtol` judge each bound (`Judge`).
+//!
+//! Adding a quantity (docs/architecture.md, "Adding a reported quantity"):
+//! a `Quantity` variant and its row in `QUANTITIES` (a test holds the row
+//! at the variant's position); its value, a field of `Summary` with its
+//! arm in `Summary::reported`, and its bound, a field of
+//! `bounds::ErrorBounds` with its arm in `ErrorBounds::of`, both formed in
+//! `analysis::summary`; the compiler asks for the arms (no `match` over
+//! quantities has a `_` arm), the rest follows from the row.
 
 use crate::units::Dim;
 
@@ -192,9 +198,10 @@ pub struct Info {
     pub bless: Bless,
     pub diff: Shown,
     /// Its place among the keys of `report`'s JSON (`Summary`'s
-    /// serialization): the body's values, then its parts, then what needs
-    /// ω or α; `None` for the predicted body's, which `report` does not
-    /// write. A new quantity takes the next number: keys are appended.
+    /// serialization), within its group: the body's values before its
+    /// `parts`, what needs ω or α after them (`Info::turning`). `None` for
+    /// the predicted body's, which `report` does not write. A new quantity
+    /// takes the next number: a key is added after its group's others.
     pub report: Option<u8>,
     /// For a set of axes, the key of the moments flagged equal (their axes
     /// a choice), written after the axes.
@@ -685,14 +692,6 @@ mod tests {
         dense(|i| i.report, "report");
         dense(|i| i.bound, "error_bounds");
         dense(|i| i.judge.place(), "warnings");
-    }
-
-    #[test]
-    fn the_report_places_what_the_body_turning_adds_after_the_rest() {
-        let turning: Vec<bool> = in_order(|i| i.report).map(Info::turning).collect();
-        let first = turning.iter().position(|t| *t).unwrap();
-        assert!(turning[first..].iter().all(|t| *t), "{turning:?}");
-        assert!(!turning[..first].iter().any(|t| *t), "{turning:?}");
     }
 
     #[test]

@@ -37,6 +37,7 @@ mod params;
 mod physics;
 mod pipes;
 mod render;
+mod report_keys;
 mod robots;
 mod robots_hostile;
 mod schema;
