@@ -3,8 +3,9 @@
 //! names), its dimension and shape, how `[expect]` compares it, what
 //! `--bless` writes for it, whether the uncertainty carries its σ, and how
 //! `diff` shows it. `model::expect` reads `[expect]` from this table,
-//! `analysis::check` compares by it, `analysis::uncertainty` names and places the σ
-//! outputs from it, `analysis::bless` and `analysis::diff` follow it.
+//! `analysis::check` compares by it, `analysis::uncertainty` names and
+//! places the σ outputs by it, `analysis::bless` and `analysis::diff`
+//! follow it.
 //!
 //! The table also writes the JSON: `report`'s keys (`Summary`'s
 //! serialization) and `error_bounds`' each in its place, and says how
