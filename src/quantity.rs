@@ -616,6 +616,11 @@ impl Quantity {
     }
 }
 
+/// Quantity `q`'s SI unit as the JSON names it (`Info::unit`).
+pub const fn unit(q: Quantity) -> &'static str {
+    QUANTITIES[q as usize].unit
+}
+
 /// The row of the quantity with JSON key `key`.
 pub fn by_key(key: &str) -> Option<&'static Info> {
     QUANTITIES.iter().find(|i| i.key == key)

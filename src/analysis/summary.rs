@@ -21,6 +21,7 @@ use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
 use crate::part::SiFactors;
+use crate::quantity::{Quantity, unit};
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -57,21 +58,22 @@ pub struct BodyUnits {
     pub inertia: &'static str,
 }
 
+/// Each the unit of a quantity of the table (`quantity::Info::unit`).
 pub const BODY_UNITS: BodyUnits = BodyUnits {
-    mass: "kg",
-    length: "m",
-    inertia: "kg*m^2",
+    mass: unit(Quantity::Mass),
+    length: unit(Quantity::CenterOfMass),
+    inertia: unit(Quantity::InertiaCom),
 };
 
 const SI_UNITS: SiUnits = SiUnits {
     mass: BODY_UNITS.mass,
     length: BODY_UNITS.length,
     inertia: BODY_UNITS.inertia,
-    angular_velocity: "rad/s",
-    angular_acceleration: "rad/s^2",
-    angular_momentum: "N*m*s",
-    energy: "J",
-    moment: "N*m",
+    angular_velocity: unit(Quantity::Omega),
+    angular_acceleration: unit(Quantity::Alpha),
+    angular_momentum: unit(Quantity::AngularMomentum),
+    energy: unit(Quantity::KineticEnergy),
+    moment: unit(Quantity::EulerMoment),
 };
 
 #[derive(Debug, Clone, Serialize)]
