@@ -243,3 +243,55 @@ pub fn with_predicted(s: &Summary) -> Vec<AccuracyWarning> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Source;
+
+    /// A slender turning rod about a point, in f64 held to f64's own
+    /// rounding: most values fall short.
+    fn short_of_everything() -> Summary {
+        let text = "[[part]]\nshape = \"rod\"\nmass = 3\nlength = 7\ndiameter = 0.001\ncenter = [1, 2, 3]\n[analysis]\nabout = [0, 1, 0]\nomega = [1, 2, 3]\nalpha = [0, 0, 1]\n";
+        let model = Model::parse(&Source::new("f.toml", text)).unwrap();
+        let accuracy = Accuracy {
+            precision: PrecisionChoice::Standard,
+            rtol: f64::EPSILON,
+        };
+        summarize(&model, &model.analysis, Products::Tensor, &accuracy).unwrap()
+    }
+
+    #[test]
+    fn a_warning_names_a_judged_quantity_by_its_key_and_a_component_by_its_index() {
+        let s = short_of_everything();
+        assert!(s.accuracy_warnings.len() > 5, "{:?}", s.accuracy_warnings);
+        for w in &s.accuracy_warnings {
+            let (key, index) = match w.quantity.split_once('[') {
+                Some((k, i)) => (k, Some(i.trim_end_matches(']').parse::<usize>().unwrap())),
+                None => (w.quantity.as_str(), None),
+            };
+            let info = quantity::by_key(key).unwrap_or_else(|| panic!("{}", w.quantity));
+            let indexed = match info.judge {
+                Judge::No => panic!("{key} is not judged"),
+                Judge::Whole(..) => false,
+                Judge::Each(..) => info.layout != Layout::Scalar,
+                Judge::Angle(_) => true,
+            };
+            assert_eq!(index.is_some(), indexed, "{}", w.quantity);
+            assert!(index.is_none_or(|i| i < 3), "{}", w.quantity);
+            // An axis's bound is an angle: no value beside it.
+            assert_eq!(w.value.is_none(), matches!(info.judge, Judge::Angle(_)));
+        }
+    }
+
+    #[test]
+    fn the_warnings_come_in_the_tables_order_of_judgement() {
+        let s = short_of_everything();
+        let place = |w: &AccuracyWarning| {
+            let key = w.quantity.split('[').next().unwrap();
+            quantity::by_key(key).unwrap().judge.place().unwrap()
+        };
+        let places: Vec<u8> = s.accuracy_warnings.iter().map(place).collect();
+        assert!(places.is_sorted(), "{places:?}");
+    }
+}
