@@ -38,6 +38,7 @@ mod params;
 mod physics;
 mod pipes;
 mod render;
+mod report_keys;
 mod robots;
 mod robots_hostile;
 mod schema;
