@@ -273,16 +273,17 @@ impl Ctx<'_> {
         }
     }
 
-    /// The given mass (file units) of a part with `mass` = `m`, its
-    /// tolerance recorded: in the string, or `tol` beside it (not both).
-    pub(super) fn mass_with_tol(
+    /// Record the tolerance of a part's given mass, `mass` = `m` read as
+    /// `value` (file units), when it is `tol` beside it (a tolerance in
+    /// the string was recorded as it was read: not both).
+    pub(super) fn mass_tol(
         &self,
         p: &super::raw::RawPart,
         m: &Spanned<Quantity>,
-    ) -> Result<f64, Diagnostic> {
-        let value = self.file_quantity(m, "mass", Dim::MASS)?;
+        value: f64,
+    ) -> Result<(), Diagnostic> {
         let Some(tol) = p.tol.as_deref() else {
-            return Ok(value);
+            return Ok(());
         };
         if matches!(m.get_ref(), Quantity::Text(t) if split(t).is_some()) {
             return Err(self.err(
@@ -320,8 +321,7 @@ impl Ctx<'_> {
                 self.amount_at(&at, start, None, Dim::MASS, "tol")?
             }
         };
-        self.record(m, "mass", Dim::MASS, value, t)?;
-        Ok(value)
+        self.record(m, "mass", Dim::MASS, value, t)
     }
 
     /// The tolerance of `text` (which has one: `split`), the string at

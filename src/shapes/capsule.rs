@@ -128,7 +128,7 @@ impl ShapeKind for Capsule {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         let length = r.length("length")?;
         Ok(Capsule {

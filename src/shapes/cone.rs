@@ -165,7 +165,7 @@ impl ShapeKind for Cone {
     }
 
     /// Its centre read before its sizes, as the file's other shapes' after.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let center = r.point("center")?;
         let [radius, inner_radius, top_radius, top_inner_radius, length] = r.cone()?;
         Ok(Cone {

@@ -84,7 +84,7 @@ impl ShapeKind for Cylinder {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         let length = r.length("length")?;
         Ok(Cylinder {

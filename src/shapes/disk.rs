@@ -76,7 +76,7 @@ impl ShapeKind for Disk {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Disk {
             center: r.point("center")?,

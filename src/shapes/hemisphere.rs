@@ -135,7 +135,7 @@ impl ShapeKind for Hemisphere {
         offset(d)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Hemisphere {
             center: r.point("center")?,

@@ -64,7 +64,7 @@ impl ShapeKind for Given {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let inertia = Box::new(r.inertia()?);
         Ok(Given {
             center: r.point("center")?,

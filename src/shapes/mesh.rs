@@ -141,7 +141,7 @@ impl ShapeKind for Mesh {
     /// Its measure in its file's units times the scale to the power of
     /// its mode (volume or area).
     /// Read with its file (`model::mesh`), never here.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Err(r.elsewhere())
     }
 

@@ -75,7 +75,7 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
 
     /// Its placed form from a part's numbers, in the order it asks for
     /// them (`read::Reader`).
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic>;
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic>;
 
     /// Volume, area or length of the placed shape, the measure its
     /// density multiplies, its numbers read through `l`.
@@ -236,7 +236,7 @@ macro_rules! registry {
 
         impl Place {
             /// A part of `shape`'s placed form, read by its module.
-            pub fn read(shape: Shape, r: &impl Reader) -> Result<Place, Diagnostic> {
+            pub fn read(shape: Shape, r: &mut impl Reader) -> Result<Place, Diagnostic> {
                 Ok(match shape {
                     $(Shape::$variant => Place::$variant(<$module::$kind as ShapeKind>::read(r)?),)+
                 })

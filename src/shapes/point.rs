@@ -61,7 +61,7 @@ impl ShapeKind for Point {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Ok(Point {
             center: r.point("center")?,
             orientation: r.orientation(),

@@ -200,7 +200,7 @@ impl ShapeKind for Prism {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let origin = r.origin()?;
         let polygon = r.polygon()?.into();
         let length = r.length("length")?;

@@ -96,7 +96,7 @@ impl ShapeKind for Rod {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         if r.by_edges() {
             let from = r.point("from")?;
             return Ok(Rod::Ends {

@@ -90,7 +90,7 @@ impl ShapeKind for Sphere {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Sphere {
             center: r.point("center")?,

@@ -101,7 +101,7 @@ impl ShapeKind for Torus {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, tube_radius, inner_tube_radius] = r.torus()?;
         Ok(Torus {
             center: r.point("center")?,

@@ -100,7 +100,7 @@ impl ShapeKind for Triangle {
     }
 
     /// Its area, |a × b|/2 from its edges from the first vertex.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Ok(Triangle {
             vertices: r.vectors("vertices")?,
         })
