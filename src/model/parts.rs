@@ -221,8 +221,7 @@ impl Ctx<'_> {
         if !parts.iter().all(|x| x.is_finite()) {
             // At the key that gives the size (m·a² overflows through it).
             let sizes: Vec<&str> = info
-                .dims
-                .keys()
+                .sizes
                 .iter()
                 .chain(info.spanned.map_or(&[][..], Spans::keys))
                 .copied()
@@ -544,5 +543,45 @@ mod tests {
         ))
         .unwrap_err();
         assert!(e.contains("f.toml:5:9: error: `size` is too small"), "{e}");
+    }
+
+    #[test]
+    fn a_tolerance_on_a_prism_s_length_moves_its_length_and_none_stands_on_its_polygon() {
+        let prism = |length: &str, x: &str| {
+            parse(&part(&format!(
+                "shape = \"prism\"\nmass = 1\npolygon = [[0, 0], [{x}, 0], [0, 1]]\nlength = {length}"
+            )))
+        };
+        let m = prism("\"2 m ± 1 mm\"", "1").unwrap();
+        assert_eq!(m.sources.len(), 1);
+        let e = prism("2", "\"1 m ± 1 mm\"").unwrap_err();
+        assert!(e.contains("a tolerance is not allowed on `polygon`"), "{e}");
+    }
+
+    #[test]
+    fn a_rod_s_diameter_is_its_real_size_and_takes_no_tolerance() {
+        let e = parse(&part(
+            "shape = \"rod\"\nmass = 1\nlength = 1\ndiameter = \"1 cm ± 1 mm\"\ncenter = [0, 0, 0]",
+        ))
+        .unwrap_err();
+        assert!(
+            e.contains("a tolerance is not allowed on `diameter`"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_diameter_s_tolerance_moves_the_radius_it_gives() {
+        let m = parse(&part(
+            "shape = \"sphere\"\nmass = 1\ndiameter = \"2 m ± 2 mm\"\ncenter = [0, 0, 0]",
+        ))
+        .unwrap();
+        let crate::model::Item::Part { part, .. } = &m.items[0] else {
+            panic!("a part");
+        };
+        let deps = part.tol.as_deref().expect("a tolerance");
+        assert_eq!(deps.len(), 1);
+        assert_eq!(deps[0].slot, crate::shapes::Slot::Radius);
+        assert_eq!(deps[0].rate, 0.001);
     }
 }

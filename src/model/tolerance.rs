@@ -14,7 +14,6 @@ use super::Ctx;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
 use crate::part::{Dep, Slot};
-use crate::shapes::Dims;
 use crate::shapes::Shape;
 use crate::units::{self, Dim};
 use std::ops::Range;
@@ -608,16 +607,15 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
     let Some(shape) = shape else {
         return (key == "origin").then_some((Slot::At(c), 1.0));
     };
-    // The dimensions kept as numbers of the spec, in `Dims::keys` order
-    // (not a given tensor's, a polygon's or a mesh's).
+    // The sizes kept as numbers of the placed shape, by name (not a given
+    // tensor's, a polygon's or a mesh's: no slot has their names).
     let info = shape.info();
-    let dims: &[&str] = match info.dims {
-        Dims::Length | Dims::Radii { .. } | Dims::Cone | Dims::Torus => info.dims.keys(),
-        Dims::Size(_) | Dims::Vertices | Dims::Given | Dims::None | Dims::Polygon | Dims::Mesh => {
-            &[]
-        }
+    let dim = |k: &str| {
+        info.sizes
+            .contains(&k)
+            .then(|| Slot::of_dimension(k))
+            .flatten()
     };
-    let dim = |k: &str| dims.contains(&k).then(|| Slot::of_dimension(k)).flatten();
     Some(match key {
         "mass" | "material" => (Slot::Mass, 1.0),
         k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
@@ -625,8 +623,7 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
         "to" => (Slot::To(c), 1.0),
         "edges" => (Slot::Edge(r, c), 1.0),
         "vertices" => (Slot::Vertex(r, c), 1.0),
-        "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Size(c), 1.0),
-        "length" if info.dims == Dims::Polygon => (Slot::Length, 1.0),
+        "size" if info.sizes.contains(&"size") => (Slot::Size(c), 1.0),
         "diameter" => (dim("radius")?, 0.5),
         "inner_diameter" => (dim("inner_radius")?, 0.5),
         k => (dim(k)?, 1.0),

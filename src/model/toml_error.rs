@@ -213,11 +213,12 @@ fn expected(key: &str, depth: usize, text: &str, at: usize) -> Option<String> {
             format!("an array of 3 {QUANTITIES}, such as [0, 0, \"5 mm\"]")
         }
         ("about" | "omega" | "alpha", 0) => format!("an array of 3 {QUANTITIES}"),
-        ("size", 0) => match shape_of_part_at(text, at).map(|s| s.info().dims) {
-            Some(crate::shapes::Dims::Size(n)) => {
-                format!("an array of {n} lengths ({QUANTITIES})")
-            }
-            _ => format!("an array of lengths ({QUANTITIES})"),
+        ("size", 0) => match shape_of_part_at(text, at)
+            .map(|s| s.info().size_items)
+            .filter(|n| *n > 0)
+        {
+            Some(n) => format!("an array of {n} lengths ({QUANTITIES})"),
+            None => format!("an array of lengths ({QUANTITIES})"),
         },
         ("edges", 0) => format!("3 edge vectors, each an array of 3 {QUANTITIES}"),
         ("vertices", 0) => format!("3 points, each an array of 3 {QUANTITIES}"),

@@ -9,7 +9,7 @@ use crate::diag::Diagnostic;
 use super::error::{self, Own};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::mesh::MeshBody;
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
@@ -102,7 +102,8 @@ impl ShapeKind for Mesh {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Mesh,
+        sizes: &["file"],
+        size_items: 0,
         centred: &["origin"],
         spanned: None,
         material: MaterialRule::Volume,

@@ -32,7 +32,7 @@ pub use place::{Mover, Placed};
 pub use read::Reader;
 
 pub use info::{
-    DensityKind, Dims, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid, Spanned,
+    DensityKind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, ShapeInfo, Solid, Spanned,
 };
 
 use crate::numeric::{DD, M3, Real};
@@ -64,7 +64,7 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     /// plane (its data reflected instead, `mirror`).
     const MIRROR_AXIS: Option<usize>;
     /// Volume, area or length of a shape of dimensions `d` (in the order
-    /// of `INFO.dims`), the measure that the density multiplies.
+    /// its closed forms take them), the measure that the density multiplies.
     fn measure_of<T: Real>(d: &[T]) -> T;
     /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
     /// `m` and dimensions `d`.
@@ -204,7 +204,7 @@ macro_rules! registry {
             pub const ALL: [Shape; [$(Shape::$variant),+].len()] = [$(Shape::$variant),+];
 
             /// Volume, area or length of a shape of dimensions `d` (in the
-            /// order of its `INFO.dims`), the measure that the density
+            /// order its closed forms take them), the measure that the density
             /// multiplies.
             pub fn measure_of<T: Real>(self, d: &[T]) -> T {
                 match self {
@@ -438,11 +438,6 @@ impl Shape {
     /// `center`.
     pub fn edge_count(self) -> usize {
         self.info().spanned.map_or(0, Spanned::edges)
-    }
-
-    /// Number of dimensions the closed forms take (see `second_moments`).
-    pub fn dim_count(self) -> usize {
-        self.info().dims.count()
     }
 
     /// How many of the three local second moments are non-zero.
