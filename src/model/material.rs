@@ -3,6 +3,7 @@
 //! sizes (`thickness`, `diameter`) of idealised plates and rods.
 
 use super::Ctx;
+use super::ctx::Value;
 use super::keys::quantity_key;
 use super::raw::{Quantity, RawPart};
 use crate::diag::Diagnostic;
@@ -94,14 +95,16 @@ impl Ctx<'_> {
     /// A part's `material`: its density made the shape's (per volume; times
     /// `thickness` for a plate, disk or triangle; times `area` or the area
     /// of `diameter` for a rod), in SI and in file units, with the span of
-    /// `material`. `None` without one; `thickness` and `area` where they
-    /// only serve a material are errors without it.
+    /// `material`, and the `thickness` or `diameter` it read (a real size
+    /// too: `real_size` takes it, not a second reading). `None` without
+    /// one; `thickness` and `area` where they only serve a material are
+    /// errors without it.
     pub(super) fn material(
         &self,
         shape: Shape,
         p: &RawPart,
         span: Range<usize>,
-    ) -> Result<Option<(f64, f64, Range<usize>)>, Diagnostic> {
+    ) -> Result<Option<(f64, f64, Range<usize>, Option<Value>)>, Diagnostic> {
         let s = shape.name();
         let Some(name) = &p.material else {
             // The keys that serve only to turn a material into a mass (a
@@ -168,11 +171,13 @@ impl Ctx<'_> {
                 ),
             )
         };
+        let mut size = None;
         let out = match shape.info().material {
             MaterialRule::Volume => (si, file),
             MaterialRule::Thickness => {
                 let t = p.thickness.as_deref().ok_or_else(|| needs("thickness"))?;
                 let t = self.positive_value(t, "thickness", Dim::LENGTH)?;
+                size = Some(t);
                 factor(t.si, t.file)
             }
             MaterialRule::Section => match (&p.area, &p.diameter) {
@@ -187,6 +192,7 @@ impl Ctx<'_> {
                 }
                 (None, Some(d)) => {
                     let d = self.positive_value(d, "diameter", Dim::LENGTH)?;
+                    size = Some(d);
                     let q = std::f64::consts::PI / 4.0;
                     factor(q * d.si * d.si, q * d.file * d.file)
                 }
@@ -213,11 +219,11 @@ impl Ctx<'_> {
                 format!("the material's density times {what} overflows the range of f64"),
             ));
         }
-        Ok(Some((out.0, out.1, name.span())))
+        Ok(Some((out.0, out.1, name.span(), size)))
     }
 
     /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
-    /// file's length unit. `mass` (kg) checks that the second moment it
+    /// file's length unit (`read` if `material` read it already). `mass` (kg) checks that the second moment it
     /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
     /// = m (d/2)²/4 for the cylinder.
     pub(super) fn real_size(
@@ -226,8 +232,12 @@ impl Ctx<'_> {
         q: &Spanned<Quantity>,
         key: &str,
         mass: f64,
+        read: Option<Value>,
     ) -> Result<(Solid, f64), Diagnostic> {
-        let size = self.positive_value(q, key, Dim::LENGTH)?;
+        let size = match read {
+            Some(v) => v,
+            None => self.positive_value(q, key, Dim::LENGTH)?,
+        };
         let si = size.si;
         let extra = match solid {
             Solid::Box => mass * si * si / 12.0,

@@ -257,7 +257,7 @@ impl Ctx<'_> {
                 self.times_thickness(d, thickness, q.span())
             }
             (_, Some(_), _) => {
-                let (_, file, s) = self
+                let (_, file, s, _) = self
                     .material(Shape::Mesh, p, span)?
                     .expect("a material is given");
                 self.times_thickness(file, thickness, s)

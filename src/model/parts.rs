@@ -135,7 +135,7 @@ impl Ctx<'_> {
             }
         };
         let material = self.material(shape, p, raw.span())?;
-        if let Some((_, _, span)) = &material {
+        if let Some((_, _, span, _)) = &material {
             let other = [
                 ("mass", p.mass.as_ref()),
                 (shape.density_key().unwrap_or("density"), density),
@@ -154,7 +154,7 @@ impl Ctx<'_> {
         }
         let measure = || si_place.measure::<f64, _>(Fixed);
         let (mass, mass_spec) = match (&p.mass, density, shape.density_key(), &material) {
-            (None, None, _, Some((si, file, span))) => {
+            (None, None, _, Some((si, file, span, _))) => {
                 if is_thin_shell(&mut si_place.clone()) {
                     return Err(self.thin_shell(span.clone(), s));
                 }
@@ -252,7 +252,10 @@ impl Ctx<'_> {
         }
         let real = match info.real_size {
             Some((key, solid)) => match quantity_key(p, key) {
-                Some(q) => Some(self.real_size(solid, q, key, mass)?),
+                Some(q) => {
+                    let read = material.as_ref().and_then(|m| m.3);
+                    Some(self.real_size(solid, q, key, mass, read)?)
+                }
                 None => None,
             },
             None => None,
