@@ -59,6 +59,18 @@ impl super::Model {
     }
 }
 
+/// A part's material (`Ctx::material`): its density made the shape's.
+pub(super) struct Material {
+    /// In SI.
+    pub si: f64,
+    /// In the file's units.
+    pub file: f64,
+    /// Where `material` is.
+    pub span: Range<usize>,
+    /// The `thickness` or `diameter` it read, which is a real size too.
+    pub size: Option<Value>,
+}
+
 impl Ctx<'_> {
     /// The file's `[materials]`, each density checked, into `materials`.
     pub(super) fn read_materials(
@@ -104,7 +116,7 @@ impl Ctx<'_> {
         shape: Shape,
         p: &RawPart,
         span: Range<usize>,
-    ) -> Result<Option<(f64, f64, Range<usize>, Option<Value>)>, Diagnostic> {
+    ) -> Result<Option<Material>, Diagnostic> {
         let s = shape.name();
         let Some(name) = &p.material else {
             // The keys that serve only to turn a material into a mass (a
@@ -219,7 +231,12 @@ impl Ctx<'_> {
                 format!("the material's density times {what} overflows the range of f64"),
             ));
         }
-        Ok(Some((out.0, out.1, name.span(), size)))
+        Ok(Some(Material {
+            si: out.0,
+            file: out.1,
+            span: name.span(),
+            size,
+        }))
     }
 
     /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the

@@ -257,10 +257,10 @@ impl Ctx<'_> {
                 self.times_thickness(d, thickness, q.span())
             }
             (_, Some(_), _) => {
-                let (_, file, s, _) = self
+                let m = self
                     .material(Shape::Mesh, p, span)?
                     .expect("a material is given");
-                self.times_thickness(file, thickness, s)
+                self.times_thickness(m.file, thickness, m.span)
             }
         }
     }

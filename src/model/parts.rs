@@ -127,7 +127,7 @@ impl Ctx<'_> {
         // Mass: exactly one of `mass` and the shape's density.
         let density = density.map(|(d, _)| d);
         let positive = |q: &Spanned<super::raw::Quantity>, key: &str| {
-            let v = given.expect("read above");
+            let v = given.expect("invariant: a given mass or density is read above");
             if v.si > 0.0 {
                 Ok(v)
             } else {
@@ -135,7 +135,7 @@ impl Ctx<'_> {
             }
         };
         let material = self.material(shape, p, raw.span())?;
-        if let Some((_, _, span, _)) = &material {
+        if let Some(super::material::Material { span, .. }) = &material {
             let other = [
                 ("mass", p.mass.as_ref()),
                 (shape.density_key().unwrap_or("density"), density),
@@ -154,7 +154,7 @@ impl Ctx<'_> {
         }
         let measure = || si_place.measure::<f64, _>(Fixed);
         let (mass, mass_spec) = match (&p.mass, density, shape.density_key(), &material) {
-            (None, None, _, Some((si, file, span, _))) => {
+            (None, None, _, Some(super::material::Material { si, file, span, .. })) => {
                 if is_thin_shell(&mut si_place.clone()) {
                     return Err(self.thin_shell(span.clone(), s));
                 }
@@ -253,7 +253,7 @@ impl Ctx<'_> {
         let real = match info.real_size {
             Some((key, solid)) => match quantity_key(p, key) {
                 Some(q) => {
-                    let read = material.as_ref().and_then(|m| m.3);
+                    let read = material.as_ref().and_then(|m| m.size);
                     Some(self.real_size(solid, q, key, mass, read)?)
                 }
                 None => None,
