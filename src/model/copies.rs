@@ -323,13 +323,13 @@ impl Ctx<'_> {
 
     /// A plain number: a TOML number, or a dimensionless quantity string
     /// or expression (`"32"`, `"spokes / 2"`, `"360 / n"`), read as every
-    /// quantity is (`Ctx::file_quantity`).
+    /// quantity is (`Ctx::value`).
     fn dimensionless(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
         let finite = |x: f64| x.is_finite();
         if matches!(q.get_ref(), Quantity::Number(x) if !finite(*x)) {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
-        let x = self.file_quantity(q, key, Dim::DIMENSIONLESS)?;
+        let x = self.value(q, key, Dim::DIMENSIONLESS)?.file;
         if !finite(x) {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
@@ -338,9 +338,7 @@ impl Ctx<'_> {
 
     /// A point or step in the file's units, representable in SI too.
     fn point(&self, v: &Vector, key: &str) -> Result<[f64; 3], Diagnostic> {
-        let p = self.file_vec3(v, key, Dim::LENGTH)?;
-        self.vec3(v, key, Dim::LENGTH)?;
-        Ok(p)
+        Ok(self.value3(v, key, Dim::LENGTH)?.0)
     }
 
     /// A direction: three finite numbers, not all zero.

@@ -20,6 +20,14 @@ pub(super) enum Whose<'a> {
     Shape(&'a str),
 }
 
+/// A quantity read once (`Ctx::value`): in the file's units, what a part
+/// keeps and computes with, and in SI, what the range checks judge.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Value {
+    pub file: f64,
+    pub si: f64,
+}
+
 /// What the conversion step needs to read values: the source (for spans)
 /// and the file's units.
 pub(crate) struct Ctx<'a> {
@@ -73,7 +81,8 @@ impl Ctx<'_> {
     }
 
     /// A scalar of dimension `dim` in SI: a plain number in file units, or a
-    /// string with its own unit. Always finite.
+    /// string with its own unit. Always finite. For a key read only in SI
+    /// (`[expect]`, a budget's limit); a part's keys are read by `value`.
     pub(super) fn quantity(
         &self,
         q: &Spanned<Quantity>,
@@ -102,6 +111,106 @@ impl Ctx<'_> {
             }
         };
         self.checked(q, key, dim, value)
+    }
+
+    /// A scalar of dimension `dim`, read once: in the file's units (the
+    /// number the part keeps, its tolerance recorded) and in SI (what the
+    /// range checks judge), each checked. A plain number is converted to
+    /// SI by the exact factor; a string with its own unit to each by its
+    /// exact ratio (one rounding each); an expression is evaluated in the
+    /// file's units and its SI value derived.
+    pub(super) fn value(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<Value, Diagnostic> {
+        let factor = self.units.factor(dim);
+        let (file, si) = match q.get_ref() {
+            Quantity::Number(x) => {
+                if !x.is_finite() {
+                    return Err(self.err(
+                        q.span(),
+                        format!("`{key}` must be a finite number, got {x}"),
+                    ));
+                }
+                (*x, self.checked(q, key, dim, factor.apply(*x))?)
+            }
+            Quantity::Text(t) => {
+                let (t, tol) = self.tolerance_of(q, t, key, dim)?;
+                // A plain number's string (`count = "32"`) is read as an
+                // expression, whose angle units are refused there (`"4 rad"`).
+                let plain = if dim == Dim::DIMENSIONLESS {
+                    Err(UnitError::NoUnit)
+                } else {
+                    units::parse_quantity(t, dim)
+                };
+                let (file, si) = match plain {
+                    Ok(si) => {
+                        let si = self.checked(q, key, dim, si)?;
+                        let file = units::parse_quantity_in(t, dim, self.units)
+                            .map_err(|e| self.err(q.span(), format!("`{key}`: {e}")))?;
+                        (file, si)
+                    }
+                    Err(e) => match self.expression_grad(q, t, key, dim, factor)? {
+                        // An expression's value comes checked in the
+                        // file's units (its zero as computed, not as
+                        // written).
+                        Some((file, grad)) => {
+                            self.record_grad(key, &grad);
+                            if let Some(tol) = tol {
+                                self.record(q, key, dim, file, tol)?;
+                            }
+                            let si = file * factor.value();
+                            if !si.is_finite() {
+                                return Err(self.err(
+                                    q.span(),
+                                    format!("`{key}` overflows when converted to SI units"),
+                                ));
+                            }
+                            if file != 0.0 && si.abs() < f64::MIN_POSITIVE {
+                                return Err(self.err(
+                                    q.span(),
+                                    format!(
+                                        "`{key}` is too small: below {:e} in SI units, f64 loses precision",
+                                        f64::MIN_POSITIVE
+                                    ),
+                                ));
+                            }
+                            return Ok(Value { file, si });
+                        }
+                        None => return Err(self.unit_error(q, key, dim, e)),
+                    },
+                };
+                if let Some(tol) = tol {
+                    self.record(q, key, dim, file, tol)?;
+                }
+                (file, si)
+            }
+        };
+        if !file.is_finite() {
+            return Err(self.err(
+                q.span(),
+                format!("`{key}` overflows when converted to the file's units"),
+            ));
+        }
+        self.representable(q, key, file, "the file's units")?;
+        Ok(Value { file, si })
+    }
+
+    /// `value`, positive.
+    pub(super) fn positive_value(
+        &self,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<Value, Diagnostic> {
+        let v = self.value(q, key, dim)?;
+        if v.si > 0.0 {
+            Ok(v)
+        } else {
+            Err(self.err(q.span(), format!("`{key}` must be positive")))
+        }
     }
 
     /// The unit reader's error for a plain quantity string.
@@ -165,54 +274,6 @@ impl Ctx<'_> {
         Ok(value)
     }
 
-    /// A scalar of dimension `dim` in the file's units (see `Spec`).
-    pub(super) fn file_quantity(
-        &self,
-        q: &Spanned<Quantity>,
-        key: &str,
-        dim: Dim,
-    ) -> Result<f64, Diagnostic> {
-        let value = match q.get_ref() {
-            Quantity::Number(x) => *x,
-            // A plain number's string (`count = "32"`) is read as an
-            // expression, whose angle units are refused there (`"4 rad"`).
-            Quantity::Text(t) if dim == Dim::DIMENSIONLESS => {
-                let (t, _) = self.tolerance_of(q, t, key, dim)?;
-                self.expression(q, t, key, dim, self.units.factor(dim))?
-                    .expect("invariant: a dimensionless key's string is always an expression")
-            }
-            Quantity::Text(t) => {
-                let (t, tol) = self.tolerance_of(q, t, key, dim)?;
-                // An expression's value comes checked.
-                let (v, checked) = match units::parse_quantity_in(t, dim, self.units) {
-                    Ok(v) => (v, false),
-                    Err(e) => match self.expression_grad(q, t, key, dim, self.units.factor(dim))? {
-                        Some((v, grad)) => {
-                            self.record_grad(key, &grad);
-                            (v, true)
-                        }
-                        None => return Err(self.err(q.span(), format!("`{key}`: {e}"))),
-                    },
-                };
-                if let Some(tol) = tol {
-                    self.record(q, key, dim, v, tol)?;
-                }
-                if checked {
-                    return Ok(v);
-                }
-                v
-            }
-        };
-        if !value.is_finite() {
-            return Err(self.err(
-                q.span(),
-                format!("`{key}` overflows when converted to the file's units"),
-            ));
-        }
-        self.representable(q, key, value, "the file's units")?;
-        Ok(value)
-    }
-
     /// The one check of an array's length, for every vector and matrix in
     /// a file: `v` must have exactly `n` items, or a located error says
     /// "{whose} needs {n} {items}, got {len}".
@@ -234,19 +295,22 @@ impl Ctx<'_> {
         Ok(v.get_ref())
     }
 
-    pub(super) fn file_vec3(
+    /// Three quantities read once each (`value`): in the file's units and
+    /// in SI.
+    pub(super) fn value3(
         &self,
         v: &Vector,
         key: &str,
         dim: Dim,
-    ) -> Result<[f64; 3], Diagnostic> {
+    ) -> Result<([f64; 3], Vector3<f64>), Diagnostic> {
         let items = self.exactly(v, 3, Whose::Key(key), "components")?;
-        let mut out = [0.0; 3];
-        for (i, (o, q)) in out.iter_mut().zip(items).enumerate() {
+        let (mut file, mut si) = ([0.0; 3], Vector3::zeros());
+        for (i, q) in items.iter().enumerate() {
             self.tol.borrow_mut().component = i;
-            *o = self.file_quantity(q, key, dim)?;
+            let x = self.value(q, key, dim)?;
+            (file[i], si[i]) = (x.file, x.si);
         }
-        Ok(out)
+        Ok((file, si))
     }
 
     /// Refuse a value that is not zero as written but that f64 (or its
@@ -330,31 +394,15 @@ impl Ctx<'_> {
         }
     }
 
-    /// A vector of exactly `n` quantities of dimension `dim`, in SI.
-    pub(super) fn vector(
-        &self,
-        v: &Vector,
-        key: &str,
-        dim: Dim,
-        n: usize,
-    ) -> Result<Vec<f64>, Diagnostic> {
-        self.exactly(v, n, Whose::Key(key), "components")?
-            .iter()
-            .map(|q| self.quantity(q, key, dim))
-            .collect()
-    }
-
-    pub(super) fn vec3(&self, v: &Vector, key: &str, dim: Dim) -> Result<Vector3<f64>, Diagnostic> {
-        let c = self.vector(v, key, dim, 3)?;
-        Ok(Vector3::new(c[0], c[1], c[2]))
-    }
-
     /// `[analysis]`: the reference point, ω and α, in the file's units.
     pub(super) fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
         let r = a.get_ref();
         let read = |v: &Option<Vector>, key: &str, dim: Dim| {
             v.as_ref()
-                .map(|v| self.file_vec3(v, key, dim).map(Vector3::from))
+                .map(|v| {
+                    self.value3(v, key, dim)
+                        .map(|(file, _)| Vector3::from(file))
+                })
                 .transpose()
         };
         let about = read(&r.about, "about", Dim::LENGTH)?;

@@ -643,13 +643,10 @@ impl Ctx<'_> {
         // Its origin may carry tolerances: the sub-assembly's place.
         self.enter_origin();
         let origin = match &p.origin {
-            Some(o) => self.file_vec3(o, "origin", Dim::LENGTH)?,
+            // Checked in SI too, as every length is.
+            Some(o) => self.value3(o, "origin", Dim::LENGTH)?.0,
             None => [0.0; 3],
         };
-        // Checked in SI too, as every length is.
-        if let Some(o) = &p.origin {
-            self.vec3(o, "origin", Dim::LENGTH)?;
-        }
         let tol = self.leave_origin();
         let frame = Frame {
             origin,

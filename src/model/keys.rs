@@ -267,7 +267,7 @@ pub(super) fn read_own(
         ));
     };
     let one = |q: &Spanned<Quantity>| -> Result<f64, Diagnostic> {
-        let x = ctx.file_quantity(q, key, decl.dim)?;
+        let x = ctx.value(q, key, decl.dim)?.file;
         if decl.positive && !(x > 0.0) {
             return Err(ctx.err(q.span(), format!("`{key}` must be positive")));
         }
@@ -345,11 +345,14 @@ mod tests {
             .expect("units");
         let part = &raw.part.as_ref().expect("a part").get_ref()[0];
         ctx.enter_part(Shape::Point);
-        let reader = super::super::parts::PartReader {
+        let mut reader = super::super::parts::PartReader {
             ctx: &ctx,
             p: part.get_ref(),
+            shape: Shape::Point,
+            span: part.span(),
             by_edges: false,
             orientation: crate::rotation::Orientation::Identity,
+            from: None,
         };
         let read = reader.quantities::<3>("probe_radii");
         let deps = ctx.leave_part();

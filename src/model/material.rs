@@ -3,11 +3,12 @@
 //! sizes (`thickness`, `diameter`) of idealised plates and rods.
 
 use super::Ctx;
+use super::ctx::Value;
 use super::keys::quantity_key;
 use super::raw::{Quantity, RawPart};
 use crate::diag::Diagnostic;
 use crate::part::Solid;
-use crate::shapes::{Dims, MaterialRule, Shape};
+use crate::shapes::{MaterialRule, Shape};
 use crate::units::{self, Dim};
 use std::ops::Range;
 use toml::Spanned;
@@ -58,6 +59,18 @@ impl super::Model {
     }
 }
 
+/// A part's material (`Ctx::material`): its density made the shape's.
+pub(super) struct Material {
+    /// In SI.
+    pub si: f64,
+    /// In the file's units.
+    pub file: f64,
+    /// Where `material` is.
+    pub span: Range<usize>,
+    /// The `thickness` or `diameter` it read, which is a real size too.
+    pub size: Option<Value>,
+}
+
 impl Ctx<'_> {
     /// The file's `[materials]`, each density checked, into `materials`.
     pub(super) fn read_materials(
@@ -67,11 +80,10 @@ impl Ctx<'_> {
         for (name, m) in table.get_ref() {
             let key = format!("density` of material `{}", crate::diag::shorten(name));
             self.tol.borrow_mut().in_materials = true;
-            let si = self.positive(&m.get_ref().density, &key, Dim::DENSITY)?;
-            let file = self.file_quantity(&m.get_ref().density, &key, Dim::DENSITY)?;
+            let v = self.positive_value(&m.get_ref().density, &key, Dim::DENSITY)?;
             self.tol.borrow_mut().in_materials = false;
-            self.material_tolerance(name, file);
-            self.materials.insert(name.clone(), (si, file));
+            self.material_tolerance(name, v.file);
+            self.materials.insert(name.clone(), (v.si, v.file));
         }
         Ok(())
     }
@@ -95,14 +107,16 @@ impl Ctx<'_> {
     /// A part's `material`: its density made the shape's (per volume; times
     /// `thickness` for a plate, disk or triangle; times `area` or the area
     /// of `diameter` for a rod), in SI and in file units, with the span of
-    /// `material`. `None` without one; `thickness` and `area` where they
-    /// only serve a material are errors without it.
+    /// `material`, and the `thickness` or `diameter` it read (a real size
+    /// too: `real_size` takes it, not a second reading). `None` without
+    /// one; `thickness` and `area` where they only serve a material are
+    /// errors without it.
     pub(super) fn material(
         &self,
         shape: Shape,
         p: &RawPart,
         span: Range<usize>,
-    ) -> Result<Option<(f64, f64, Range<usize>)>, Diagnostic> {
+    ) -> Result<Option<Material>, Diagnostic> {
         let s = shape.name();
         let Some(name) = &p.material else {
             // The keys that serve only to turn a material into a mass (a
@@ -169,14 +183,14 @@ impl Ctx<'_> {
                 ),
             )
         };
+        let mut size = None;
         let out = match shape.info().material {
             MaterialRule::Volume => (si, file),
             MaterialRule::Thickness => {
                 let t = p.thickness.as_deref().ok_or_else(|| needs("thickness"))?;
-                factor(
-                    self.positive(t, "thickness", Dim::LENGTH)?,
-                    self.file_quantity(t, "thickness", Dim::LENGTH)?,
-                )
+                let t = self.positive_value(t, "thickness", Dim::LENGTH)?;
+                size = Some(t);
+                factor(t.si, t.file)
             }
             MaterialRule::Section => match (&p.area, &p.diameter) {
                 (Some(a), Some(_)) => {
@@ -184,17 +198,15 @@ impl Ctx<'_> {
                         .err(a.span(), "`area` conflicts with `diameter`: give one to turn the material's density into a mass")
                         .help("`diameter` (a round rod) also feeds the idealisation report; `area` is any section"));
                 }
-                (Some(a), None) => factor(
-                    self.positive(a, "area", Dim::AREA)?,
-                    self.file_quantity(a, "area", Dim::AREA)?,
-                ),
+                (Some(a), None) => {
+                    let a = self.positive_value(a, "area", Dim::AREA)?;
+                    factor(a.si, a.file)
+                }
                 (None, Some(d)) => {
-                    let (ds, df) = (
-                        self.positive(d, "diameter", Dim::LENGTH)?,
-                        self.file_quantity(d, "diameter", Dim::LENGTH)?,
-                    );
+                    let d = self.positive_value(d, "diameter", Dim::LENGTH)?;
+                    size = Some(d);
                     let q = std::f64::consts::PI / 4.0;
-                    factor(q * ds * ds, q * df * df)
+                    factor(q * d.si * d.si, q * d.file * d.file)
                 }
                 (None, None) => return Err(needs("area` or `diameter")),
             },
@@ -219,11 +231,16 @@ impl Ctx<'_> {
                 format!("the material's density times {what} overflows the range of f64"),
             ));
         }
-        Ok(Some((out.0, out.1, name.span())))
+        Ok(Some(Material {
+            si: out.0,
+            file: out.1,
+            span: name.span(),
+            size,
+        }))
     }
 
     /// A plate's `thickness` or a rod's `diameter` (`key`), positive, in the
-    /// file's length unit. `mass` (kg) checks that the second moment it
+    /// file's length unit (`read` if `material` read it already). `mass` (kg) checks that the second moment it
     /// adds in `report::ideal` stays within f64: m t²/12 for the box, m d²/16
     /// = m (d/2)²/4 for the cylinder.
     pub(super) fn real_size(
@@ -232,8 +249,13 @@ impl Ctx<'_> {
         q: &Spanned<Quantity>,
         key: &str,
         mass: f64,
+        read: Option<Value>,
     ) -> Result<(Solid, f64), Diagnostic> {
-        let si = self.positive(q, key, Dim::LENGTH)?;
+        let size = match read {
+            Some(v) => v,
+            None => self.positive_value(q, key, Dim::LENGTH)?,
+        };
+        let si = size.si;
         let extra = match solid {
             Solid::Box => mass * si * si / 12.0,
             Solid::Cylinder => mass * si * si / 16.0,
@@ -246,7 +268,7 @@ impl Ctx<'_> {
                 ),
             ));
         }
-        Ok((solid, self.file_quantity(q, key, Dim::LENGTH)?))
+        Ok((solid, size.file))
     }
 }
 
@@ -259,15 +281,37 @@ pub(super) fn material_keys(rule: MaterialRule) -> &'static [&'static str] {
     }
 }
 
-/// A cylinder, disk, sphere or hemisphere whose inner radius is its
-/// radius; a cone whose inner radii are its outer ones at both ends; a
-/// torus whose inner tube is its tube: a thin shell, of no volume (its
-/// mass spread evenly over the surface).
-pub(super) fn is_thin_shell(shape: Shape, dims: &[f64]) -> bool {
-    match shape.info().dims {
-        Dims::Radii { .. } => dims[1] == dims[0],
-        Dims::Cone => dims[1] == dims[0] && dims[3] == dims[2],
-        Dims::Torus => dims[2] == dims[1],
-        _ => false,
-    }
+/// A placed shape whose every inner radius equals its outer one (a
+/// cylinder's, disk's, sphere's, hemisphere's or capsule's `inner_radius`
+/// its `radius`; a cone's at both ends; a torus's `inner_tube_radius` its
+/// `tube_radius`): a thin shell, of no volume (its mass spread evenly over
+/// the surface). Read by the slots its module names (`Place::numbers`).
+pub(super) fn is_thin_shell(place: &mut crate::part::Place) -> bool {
+    use crate::shapes::Slot;
+    let mut radii = [None; 6];
+    place.numbers(&mut |slot, x| {
+        let at = match slot {
+            Slot::Radius => 0,
+            Slot::InnerRadius => 1,
+            Slot::TopRadius => 2,
+            Slot::TopInnerRadius => 3,
+            Slot::TubeRadius => 4,
+            Slot::InnerTubeRadius => 5,
+            Slot::Mass
+            | Slot::At(_)
+            | Slot::Size(_)
+            | Slot::Length
+            | Slot::Edge(..)
+            | Slot::To(_)
+            | Slot::Vertex(..)
+            | Slot::Own(..) => return,
+        };
+        radii[at] = Some(*x);
+    });
+    let pairs = [(0, 1), (2, 3), (4, 5)];
+    let inner = pairs.iter().filter(|(_, i)| radii[*i].is_some()).count();
+    inner > 0
+        && pairs
+            .iter()
+            .all(|&(o, i)| radii[i].is_none() || radii[i] == radii[o])
 }

@@ -75,10 +75,7 @@ impl Ctx<'_> {
         self.tol_needs_mass(p)?;
         let density = self.mesh_density(p, mode, raw.span())?;
         let origin = match &p.origin {
-            Some(o) => {
-                self.vec3(o, "origin", Dim::LENGTH)?;
-                self.file_vec3(o, "origin", Dim::LENGTH)?
-            }
+            Some(o) => self.value3(o, "origin", Dim::LENGTH)?.0,
             None => [0.0; 3],
         };
         let orientation = match &p.rotation {
@@ -242,8 +239,12 @@ impl Ctx<'_> {
                 )),
             (_, Some("mass"), _) => {
                 let m = p.mass.as_ref().expect("given");
-                self.positive(m, "mass", Dim::MASS)?;
-                Ok(Density::Mass(self.mass_with_tol(p, m)?))
+                let v = self.value(m, "mass", Dim::MASS)?;
+                self.mass_tol(p, m, v.file)?;
+                if !(v.si > 0.0) {
+                    return Err(self.err(m.span(), "`mass` must be positive"));
+                }
+                Ok(Density::Mass(v.file))
             }
             (_, Some("areal_density"), _) => {
                 let q = p.areal_density.as_deref().expect("given");
@@ -256,10 +257,10 @@ impl Ctx<'_> {
                 self.times_thickness(d, thickness, q.span())
             }
             (_, Some(_), _) => {
-                let (_, file, s) = self
+                let m = self
                     .material(Shape::Mesh, p, span)?
                     .expect("a material is given");
-                self.times_thickness(file, thickness, s)
+                self.times_thickness(m.file, thickness, m.span)
             }
         }
     }
@@ -295,8 +296,7 @@ impl Ctx<'_> {
         key: &str,
         dim: Dim,
     ) -> Result<f64, Diagnostic> {
-        self.positive(q, key, dim)?;
-        self.file_quantity(q, key, dim)
+        Ok(self.positive_value(q, key, dim)?.file)
     }
 
     /// The mesh file `file` names, read once per mode however many parts

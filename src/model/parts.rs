@@ -3,65 +3,20 @@
 //! dimensions, every range check — and its numbers kept in the file's units.
 
 use super::Ctx;
+use super::ctx::{Value, Whose};
 use super::keys::{first, key_spans, quantity_key, span_of};
 use super::material::is_thin_shell;
-use super::place::{positive_products, tensor_convention};
 use super::raw::{RawPart, Vector};
 use super::rotation::Orientation;
 use crate::diag::Diagnostic;
 use crate::part::{MassSpec, Part, Place, Solid, Spec};
-use crate::shapes::Reader;
-use crate::shapes::{Dims, Shape, Spanned as Spans};
+use crate::shapes::{Fixed, Mover, Reader, Shape, Spanned as Spans};
 use crate::units::{self, Dim};
+use nalgebra::Vector3;
 use std::ops::Range;
 use toml::Spanned;
 
 impl Ctx<'_> {
-    /// The part's numbers in the file's units, read after `part` has
-    /// validated them (so only a conversion overflow can fail here).
-    pub(super) fn spec(
-        &self,
-        shape: Shape,
-        p: &RawPart,
-        by_edges: bool,
-        orientation: Orientation,
-        material: Option<f64>,
-    ) -> Result<Spec, Diagnostic> {
-        let info = shape.info();
-        let density = info
-            .density
-            .and_then(|k| Some((quantity_key(p, k.key)?, k)));
-        let mass = match (&p.mass, density) {
-            (Some(m), _) => MassSpec::Given(self.mass_with_tol(p, m)?),
-            (None, Some((d, kind))) => {
-                MassSpec::Density(self.file_quantity(d, kind.key, kind.dim)?)
-            }
-            (None, None) => MassSpec::Density(
-                material.expect("`part` checked that a mass, density or material is given"),
-            ),
-        };
-        let place = Place::read(
-            shape,
-            &PartReader {
-                ctx: self,
-                p,
-                by_edges,
-                orientation,
-            },
-        )?;
-        self.spec_of(mass, p, place)
-    }
-
-    /// A part's `Spec` from its mass and placement.
-    fn spec_of(&self, mass: MassSpec, p: &RawPart, place: Place) -> Result<Spec, Diagnostic> {
-        Ok(Spec {
-            mass,
-            place,
-            removed: matches!(&p.remove, Some(r) if *r.get_ref()),
-            placed: Default::default(),
-        })
-    }
-
     /// One part, and the solid it idealises with its real size (file
     /// units) when the file gives a plate's `thickness` or a rod's
     /// `diameter`.
@@ -115,26 +70,72 @@ impl Ctx<'_> {
         let by_edges = spans_of(info.spanned.map_or(&[][..], Spans::keys));
         let canonical = spans_of(info.centred);
         let (by_edges, canonical) = (&by_edges[..], &canonical[..]);
-        let edges_given = first(by_edges).is_some();
-        let (orientation, dims) = match (first(canonical), first(by_edges)) {
-            (Some((a, sa)), Some((b, sb))) => {
-                let (later, earlier, span) = if sa.start > sb.start {
-                    (a, b, sa)
-                } else {
-                    (b, a, sb)
-                };
-                return Err(self
-                    .err(span, format!("`{later}` conflicts with `{earlier}`: a {s} is placed one way or the other"))
-                    .help(info.help));
-            }
-            (_, Some(_)) => self.placement_by_edges(shape, p, raw.span())?,
-            _ => self.placement_canonical(shape, p, raw.span())?,
+        if let (Some((a, sa)), Some((b, sb))) = (first(canonical), first(by_edges)) {
+            let (later, earlier, span) = if sa.start > sb.start {
+                (a, b, sa)
+            } else {
+                (b, a, sb)
+            };
+            return Err(self
+                .err(
+                    span,
+                    format!(
+                        "`{later}` conflicts with `{earlier}`: a {s} is placed one way or the other"
+                    ),
+                )
+                .help(info.help));
+        }
+        let orientation = match &p.rotation {
+            Some(r) => self.rotation(r)?,
+            None => Orientation::Identity,
         };
+        // Its mass or density first (its tolerance the part's first
+        // source), then its other numbers, each read once in the file's
+        // units and checked as its module asks for them.
+        let density = info
+            .density
+            .and_then(|k| Some((quantity_key(p, k.key)?, k)));
+        let given = match (&p.mass, density) {
+            (Some(m), _) => {
+                let v = self.value(m, "mass", Dim::MASS)?;
+                self.mass_tol(p, m, v.file)?;
+                Some(v)
+            }
+            (None, Some((d, k))) => Some(self.value(d, k.key, k.dim)?),
+            (None, None) => None,
+        };
+        let place = Place::read(
+            shape,
+            &mut PartReader {
+                ctx: self,
+                p,
+                shape,
+                span: raw.span(),
+                by_edges: first(by_edges).is_some(),
+                orientation,
+                from: None,
+            },
+        )?;
+        // The checks of its mass and moments are in SI, on its numbers
+        // converted there.
+        let mut si_place = place.clone();
+        si_place.moved(&InSi {
+            length: self.units.factor(Dim::LENGTH).value(),
+            mass: self.units.factor(Dim::MASS).value(),
+        });
 
         // Mass: exactly one of `mass` and the shape's density.
-        let density = info.density.and_then(|k| quantity_key(p, k.key));
+        let density = density.map(|(d, _)| d);
+        let positive = |q: &Spanned<super::raw::Quantity>, key: &str| {
+            let v = given.expect("invariant: a given mass or density is read above");
+            if v.si > 0.0 {
+                Ok(v)
+            } else {
+                Err(self.err(q.span(), format!("`{key}` must be positive")))
+            }
+        };
         let material = self.material(shape, p, raw.span())?;
-        if let Some((_, _, span)) = &material {
+        if let Some(super::material::Material { span, .. }) = &material {
             let other = [
                 ("mass", p.mass.as_ref()),
                 (shape.density_key().unwrap_or("density"), density),
@@ -151,19 +152,19 @@ impl Ctx<'_> {
                 ));
             }
         }
-        let mass = match (&p.mass, density, shape.density_key()) {
-            (None, None, _) if material.is_some() => {
-                let (si, _, span) = material.clone().expect("checked");
-                if is_thin_shell(shape, &dims) {
-                    return Err(self.thin_shell(span, s));
+        let measure = || si_place.measure::<f64, _>(Fixed);
+        let (mass, mass_spec) = match (&p.mass, density, shape.density_key(), &material) {
+            (None, None, _, Some(super::material::Material { si, file, span, .. })) => {
+                if is_thin_shell(&mut si_place.clone()) {
+                    return Err(self.thin_shell(span.clone(), s));
                 }
-                let m = si * shape.measure(&dims);
+                let m = si * measure();
                 if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
-                    return Err(self.err(span, "the material's density times the size gives a mass out of the range of f64"));
+                    return Err(self.err(span.clone(), "the material's density times the size gives a mass out of the range of f64"));
                 }
-                m
+                (m, MassSpec::Density(*file))
             }
-            (Some(m), Some(d), Some(dk)) => {
+            (Some(m), Some(d), Some(dk), _) => {
                 let (span, later, earlier) = if d.span().start > m.span().start {
                     (d.span(), dk, "mass")
                 } else {
@@ -174,14 +175,16 @@ impl Ctx<'_> {
                     format!("`{later}` conflicts with `{earlier}`: give exactly one"),
                 ));
             }
-            (Some(m), _, _) => self.positive(m, "mass", Dim::MASS)?,
-            (None, Some(d), Some(dk)) => {
-                let dim = info.density.expect("a density key has a kind").dim;
-                let rho = self.positive(d, dk, dim)?;
-                if is_thin_shell(shape, &dims) {
+            (Some(m), _, _, _) => {
+                let m = positive(m, "mass")?;
+                (m.si, MassSpec::Given(m.file))
+            }
+            (None, Some(d), Some(dk), _) => {
+                let rho = positive(d, dk)?;
+                if is_thin_shell(&mut si_place.clone()) {
                     return Err(self.thin_shell(d.span(), s));
                 }
-                let m = rho * shape.measure(&dims);
+                let m = rho.si * measure();
                 if !(m >= f64::MIN_POSITIVE && m.is_finite()) {
                     let what = if m.is_finite() {
                         "too small"
@@ -193,32 +196,32 @@ impl Ctx<'_> {
                         format!("`{dk}` times the size gives a mass {what} for f64"),
                     ));
                 }
-                m
+                (m, MassSpec::Density(rho.file))
             }
-            (None, _, Some(dk)) => {
+            (None, _, Some(dk), _) => {
                 return Err(self.err(
                     raw.span(),
                     format!("this {s} needs `mass`, `{dk}` or `material`"),
                 ));
             }
-            (None, _, None) => return Err(self.err(raw.span(), format!("this {s} needs `mass`"))),
+            (None, _, None, _) => {
+                return Err(self.err(raw.span(), format!("this {s} needs `mass`")));
+            }
         };
         let name = match &p.name {
             Some(n) => n.get_ref().clone(),
             None => format!("part {}", index + 1),
         };
-        let local_second_moment = shape.local_second_moment(mass, &dims);
-        // Each edge contributes m a²/12: it must neither overflow nor vanish.
-        let expected_nonzero = shape.nonzero_moments();
-        let nonzero = local_second_moment
-            .iter()
-            .filter(|x| **x >= f64::MIN_POSITIVE)
-            .count();
-        if !local_second_moment.iter().all(|x| x.is_finite()) {
+        // Each edge contributes m a²/12: it must neither overflow nor vanish
+        // (in SI, the moments the shape's module counts as independent).
+        let (j, _) = si_place.own_second_moment::<f64, _>(mass, None, Fixed);
+        let (parts, count, _) = si_place.independent_moments(mass, &j);
+        let parts = &parts[..count];
+        let nonzero = parts.iter().filter(|x| **x >= f64::MIN_POSITIVE).count();
+        if !parts.iter().all(|x| x.is_finite()) {
             // At the key that gives the size (m·a² overflows through it).
             let sizes: Vec<&str> = info
-                .dims
-                .keys()
+                .sizes
                 .iter()
                 .chain(info.spanned.map_or(&[][..], Spans::keys))
                 .copied()
@@ -241,7 +244,7 @@ impl Ctx<'_> {
                 )
                 .help("are its sizes or mass in the wrong units?"));
         }
-        if nonzero < expected_nonzero {
+        if nonzero < shape.nonzero_moments() {
             return Err(self.err(
                 raw.span(),
                 format!("the second moments of `{name}` underflow the range of f64"),
@@ -249,21 +252,20 @@ impl Ctx<'_> {
         }
         let real = match info.real_size {
             Some((key, solid)) => match quantity_key(p, key) {
-                Some(q) => Some(self.real_size(solid, q, key, mass)?),
+                Some(q) => {
+                    let read = material.as_ref().and_then(|m| m.size);
+                    Some(self.real_size(solid, q, key, mass, read)?)
+                }
                 None => None,
             },
             None => None,
         };
-        if info.dims == Dims::Given {
-            self.given_inertia(p)?;
-        }
-        let spec = self.spec(
-            shape,
-            p,
-            edges_given,
-            orientation.clone(),
-            material.map(|m| m.1),
-        )?;
+        let spec = Spec {
+            mass: mass_spec,
+            place,
+            removed: matches!(&p.remove, Some(r) if *r.get_ref()),
+            placed: Default::default(),
+        };
         self.in_file_range(&spec, &name, raw.span())?;
         self.record_material(p, &spec);
         let tol = self.leave_part();
@@ -325,109 +327,147 @@ impl Ctx<'_> {
     }
 }
 
-/// A part's numbers as its shape's module reads them (`shapes::Reader`),
-/// in the file's units, after `Ctx::part` has validated them: so a key a
-/// module asks for is there, and only a conversion can fail.
+/// A part's numbers as its shape's module reads them (`shapes::Reader`):
+/// each key read once, in the file's units, and checked as it is read
+/// (missing, out of range, its tolerance recorded).
 pub(super) struct PartReader<'c, 'p> {
     pub(super) ctx: &'c Ctx<'c>,
     pub(super) p: &'p RawPart,
+    pub(super) shape: Shape,
+    /// The part's table, where a missing key is reported.
+    pub(super) span: Range<usize>,
     pub(super) by_edges: bool,
     pub(super) orientation: Orientation,
+    /// A rod's `from` (SI) once read: `to` must differ from it.
+    pub(super) from: Option<Vector3<f64>>,
 }
 
-/// A key `Ctx::part` checked is given.
-fn given<V: std::borrow::Borrow<Vector>>(v: &Option<V>) -> &Vector {
-    v.as_ref()
-        .expect("`part` checked the placement keys")
-        .borrow()
+impl<'p> PartReader<'_, 'p> {
+    /// The key `key` is missing.
+    fn missing(&self, key: &str) -> Diagnostic {
+        self.ctx.missing(self.shape, self.span.clone(), key)
+    }
+
+    /// The rows under `key` (`edges`, `vertices`, `inertia`), or the
+    /// error that they are missing.
+    fn rows(&self, key: &str) -> Result<&'p Spanned<Vec<Vector>>, Diagnostic> {
+        let p = self.p;
+        match key {
+            "edges" => p.edges.as_deref(),
+            "vertices" => p.vertices.as_deref(),
+            "inertia" => p.inertia.as_deref(),
+            _ => unreachable!("`{key}` is no key of rows"),
+        }
+        .ok_or_else(|| self.missing(key))
+    }
+}
+
+/// Moves a placed shape from the file's units to SI (`Place::moved`).
+struct InSi {
+    length: f64,
+    mass: f64,
+}
+
+impl Mover for InSi {
+    fn point(&self, p: [f64; 3]) -> [f64; 3] {
+        p.map(|x| x * self.length)
+    }
+
+    fn dir(&self, e: [f64; 3]) -> [f64; 3] {
+        e.map(|x| x * self.length)
+    }
+
+    fn turn(&self, _: &mut Orientation) {}
+
+    fn length(&self) -> f64 {
+        self.length
+    }
+
+    fn mass(&self) -> f64 {
+        self.mass
+    }
 }
 
 impl Reader for PartReader<'_, '_> {
-    fn point(&self, key: &'static str) -> Result<[f64; 3], Diagnostic> {
+    fn point(&mut self, key: &'static str) -> Result<[f64; 3], Diagnostic> {
         let p = self.p;
         let v = match key {
-            "center" => given(&p.center),
-            "corner" => given(&p.corner),
-            "from" => given(&p.from),
-            "to" => given(&p.to),
+            "center" => p.center.as_ref(),
+            "corner" => p.corner.as_deref(),
+            "from" => p.from.as_deref(),
+            "to" => p.to.as_deref(),
             _ => unreachable!("`{key}` is no point key"),
-        };
-        self.ctx.file_vec3(v, key, Dim::LENGTH)
+        }
+        .ok_or_else(|| self.missing(key))?;
+        let (file, si) = self.ctx.value3(v, key, Dim::LENGTH)?;
+        match (key, self.from) {
+            ("from", _) => self.from = Some(si),
+            ("to", Some(from)) => self.ctx.rod_ends(from, si, v)?,
+            _ => {}
+        }
+        Ok(file)
     }
 
-    fn origin(&self) -> Result<[f64; 3], Diagnostic> {
+    fn origin(&mut self) -> Result<[f64; 3], Diagnostic> {
         match &self.p.origin {
-            Some(o) => self.ctx.file_vec3(o, "origin", Dim::LENGTH),
+            Some(o) => Ok(self.ctx.value3(o, "origin", Dim::LENGTH)?.0),
             None => Ok([0.0; 3]),
         }
     }
 
-    fn vectors<const N: usize>(&self, key: &'static str) -> Result<[[f64; 3]; N], Diagnostic> {
-        let rows = match key {
-            "edges" => self.p.edges.as_deref(),
-            "vertices" => self.p.vertices.as_deref(),
+    fn vectors<const N: usize>(&mut self, key: &'static str) -> Result<[[f64; 3]; N], Diagnostic> {
+        let rows = self.rows(key)?;
+        match key {
+            "edges" => self.ctx.edges(self.shape, rows),
+            "vertices" => {
+                let v = self.ctx.triangle(rows)?;
+                // A triangle's module asks for its 3.
+                Ok(std::array::from_fn(|k| v[k]))
+            }
             _ => unreachable!("`{key}` is no key of vectors"),
         }
-        .expect("`part` checked the placement keys");
-        let mut out = [[0.0; 3]; N];
-        for (k, (v, raw)) in out.iter_mut().zip(rows.get_ref()).enumerate() {
-            self.ctx.tol.borrow_mut().row = k;
-            *v = self.ctx.file_vec3(raw, key, Dim::LENGTH)?;
-        }
-        Ok(out)
     }
 
-    fn sizes<const N: usize>(&self) -> Result<[f64; N], Diagnostic> {
-        let size = self.p.size.as_ref().expect("`part` checked the size");
-        let mut out = [0.0; N];
-        for (k, (e, q)) in out.iter_mut().zip(size.get_ref()).enumerate() {
-            self.ctx.tol.borrow_mut().component = k;
-            *e = self.ctx.file_quantity(q, "size", Dim::LENGTH)?;
-        }
-        Ok(out)
-    }
-
-    fn length(&self, key: &'static str) -> Result<f64, Diagnostic> {
-        let l = self.p.length.as_deref().expect("`part` checked the length");
-        self.ctx.file_quantity(l, key, Dim::LENGTH)
-    }
-
-    fn radii(&self) -> Result<[f64; 2], Diagnostic> {
-        let r = self
+    fn sizes<const N: usize>(&mut self) -> Result<[f64; N], Diagnostic> {
+        let size = self.p.size.as_ref().ok_or_else(|| self.missing("size"))?;
+        let items = self
             .ctx
-            .radius_of(self.p, false)?
-            .expect("`part` checked the radius");
-        let outer = self.ctx.radius_file(&r)?;
-        let inner = match self.ctx.radius_of(self.p, true)? {
-            Some(q) => self.ctx.radius_file(&q)?,
-            None => 0.0,
-        };
-        Ok([outer, inner])
-    }
-
-    fn cone(&self) -> Result<[f64; 5], Diagnostic> {
-        self.ctx.cone_file(self.p)
-    }
-
-    fn torus(&self) -> Result<[f64; 3], Diagnostic> {
-        self.ctx.torus_file(self.p)
-    }
-
-    fn polygon(&self) -> Result<Vec<[f64; 2]>, Diagnostic> {
-        self.ctx.polygon_file(self.p)
-    }
-
-    fn inertia(&self) -> Result<[[f64; 3]; 3], Diagnostic> {
-        let rows = self
-            .p
-            .inertia
-            .as_deref()
-            .expect("`part` checked the inertia");
-        let mut m = [[0.0; 3]; 3];
-        for (r, raw) in m.iter_mut().zip(rows.get_ref()) {
-            *r = self.ctx.file_vec3(raw, "inertia", Dim::INERTIA)?;
+            .exactly(size, N, Whose::Key("size"), "components")?;
+        let mut out = [Value { file: 0.0, si: 0.0 }; N];
+        for (k, (e, q)) in out.iter_mut().zip(items).enumerate() {
+            self.ctx.tol.borrow_mut().component = k;
+            *e = self.ctx.value(q, "size", Dim::LENGTH)?;
         }
-        Ok(tensor_convention(m, positive_products(self.p)))
+        if let Some((_, q)) = out.iter().zip(items).find(|(v, _)| !(v.si > 0.0)) {
+            return Err(self.ctx.err(q.span(), "`size` must be positive"));
+        }
+        Ok(out.map(|v| v.file))
+    }
+
+    fn length(&mut self, key: &'static str) -> Result<f64, Diagnostic> {
+        let l = self.p.length.as_deref().ok_or_else(|| self.missing(key))?;
+        Ok(self.ctx.positive_value(l, key, Dim::LENGTH)?.file)
+    }
+
+    fn radii(&mut self) -> Result<[f64; 2], Diagnostic> {
+        self.ctx.radii(self.p, || self.missing("radius"))
+    }
+
+    fn cone(&mut self) -> Result<[f64; 5], Diagnostic> {
+        self.ctx.cone(self.p, self.span.clone())
+    }
+
+    fn torus(&mut self) -> Result<[f64; 3], Diagnostic> {
+        self.ctx.torus(self.p, self.span.clone())
+    }
+
+    fn polygon(&mut self) -> Result<Vec<[f64; 2]>, Diagnostic> {
+        self.ctx.polygon(self.p, self.span.clone())
+    }
+
+    fn inertia(&mut self) -> Result<[[f64; 3]; 3], Diagnostic> {
+        let rows = self.rows("inertia")?;
+        self.ctx.given_inertia(self.p, rows)
     }
 
     fn orientation(&self) -> Orientation {
@@ -438,16 +478,122 @@ impl Reader for PartReader<'_, '_> {
         self.by_edges
     }
 
-    fn quantity(&self, key: &'static str) -> Result<f64, Diagnostic> {
+    fn quantity(&mut self, key: &'static str) -> Result<f64, Diagnostic> {
         Ok(super::keys::read_own(self.ctx, self.p, key, 1)?[0])
     }
 
-    fn quantities<const N: usize>(&self, key: &'static str) -> Result<[f64; N], Diagnostic> {
+    fn quantities<const N: usize>(&mut self, key: &'static str) -> Result<[f64; N], Diagnostic> {
         let v = super::keys::read_own(self.ctx, self.p, key, N)?;
         Ok(std::array::from_fn(|i| v[i]))
     }
 
+    /// A mesh is read with its file (`model::mesh`); a part here without
+    /// one lacks it.
     fn elsewhere(&self) -> Diagnostic {
-        self.ctx.err(0..0, "a mesh is read with its file")
+        self.missing("file")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::diag::Source;
+    use crate::model::Model;
+
+    fn parse(text: &str) -> Result<Model, String> {
+        Model::parse(&Source::new("f.toml", text)).map_err(|e| e.to_string())
+    }
+
+    fn part(keys: &str) -> String {
+        format!("[[part]]\n{keys}\n")
+    }
+
+    #[test]
+    fn a_density_on_a_capsule_whose_inner_radius_is_its_radius_is_refused() {
+        let e = parse(&part(
+            "shape = \"capsule\"\ndensity = 1\nradius = 1\ninner_radius = 1\nlength = 2\ncenter = [0, 0, 0]",
+        ))
+        .unwrap_err();
+        assert!(e.contains("is a thin shell"), "{e}");
+    }
+
+    #[test]
+    fn a_cone_hollow_to_its_rim_at_one_end_only_has_a_volume() {
+        let m = parse(&part(
+            "shape = \"cone\"\ndensity = 1\nradius = 1\ninner_radius = 1\ntop_radius = 1\ntop_inner_radius = 0.5\nlength = 2\ncenter = [0, 0, 0]",
+        ));
+        assert!(m.is_ok(), "{m:?}");
+    }
+
+    #[test]
+    fn a_torus_is_a_thin_shell_by_its_tube_not_its_centre_line() {
+        let torus = |inner: &str| {
+            parse(&part(&format!(
+                "shape = \"torus\"\ndensity = 1\nradius = 2\ntube_radius = 1\n{inner}center = [0, 0, 0]"
+            )))
+        };
+        assert!(torus("").is_ok());
+        let e = torus("inner_tube_radius = 1\n").unwrap_err();
+        assert!(e.contains("is a thin shell"), "{e}");
+    }
+
+    #[test]
+    fn each_toleranced_key_of_a_part_is_one_source() {
+        let m = parse(&part(
+            "shape = \"box\"\nmass = \"2 kg ± 0.1 kg\"\nsize = [\"1 m ± 1 mm\", 1, \"1 m ± 2 mm\"]\ncenter = [\"0 m ± 1 mm\", 0, 0]",
+        ))
+        .unwrap();
+        let keys: Vec<&str> = m.sources.iter().map(|s| s.key.as_str()).collect();
+        assert_eq!(keys, ["mass", "size[0]", "size[2]", "center[0]"]);
+    }
+
+    #[test]
+    fn a_key_in_the_file_s_units_is_range_checked_in_si_as_it_is_read() {
+        // 1e-306 mm is normal in the file's units and subnormal in SI.
+        let e = parse(&format!(
+            "units = {{ length = \"mm\" }}\n{}",
+            part("shape = \"box\"\nmass = 1\nsize = [1e-306, 1, 1]\ncenter = [0, 0, 0]")
+        ))
+        .unwrap_err();
+        assert!(e.contains("f.toml:5:9: error: `size` is too small"), "{e}");
+    }
+
+    #[test]
+    fn a_tolerance_on_a_prism_s_length_moves_its_length_and_none_stands_on_its_polygon() {
+        let prism = |length: &str, x: &str| {
+            parse(&part(&format!(
+                "shape = \"prism\"\nmass = 1\npolygon = [[0, 0], [{x}, 0], [0, 1]]\nlength = {length}"
+            )))
+        };
+        let m = prism("\"2 m ± 1 mm\"", "1").unwrap();
+        assert_eq!(m.sources.len(), 1);
+        let e = prism("2", "\"1 m ± 1 mm\"").unwrap_err();
+        assert!(e.contains("a tolerance is not allowed on `polygon`"), "{e}");
+    }
+
+    #[test]
+    fn a_rod_s_diameter_is_its_real_size_and_takes_no_tolerance() {
+        let e = parse(&part(
+            "shape = \"rod\"\nmass = 1\nlength = 1\ndiameter = \"1 cm ± 1 mm\"\ncenter = [0, 0, 0]",
+        ))
+        .unwrap_err();
+        assert!(
+            e.contains("a tolerance is not allowed on `diameter`"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_diameter_s_tolerance_moves_the_radius_it_gives() {
+        let m = parse(&part(
+            "shape = \"sphere\"\nmass = 1\ndiameter = \"2 m ± 2 mm\"\ncenter = [0, 0, 0]",
+        ))
+        .unwrap();
+        let crate::model::Item::Part { part, .. } = &m.items[0] else {
+            panic!("a part");
+        };
+        let deps = part.tol.as_deref().expect("a tolerance");
+        assert_eq!(deps.len(), 1);
+        assert_eq!(deps[0].slot, crate::shapes::Slot::Radius);
+        assert_eq!(deps[0].rate, 0.001);
     }
 }

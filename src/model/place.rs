@@ -1,24 +1,20 @@
-//! Where a part is and how it is turned: its placement by `center`,
-//! `rotation` and its dimensions, or by the vectors that span it (`corner`
-//! and `edges`, `from` and `to`), a triangle's `vertices`, a given
-//! `inertia` — each validated.
+//! The checks of the keys that place a part: the vectors that span it
+//! (`edges`, `from` and `to`), a triangle's `vertices`, a given `inertia`
+//! — each read once (`Ctx::value`) and validated as the part's shape asks
+//! for it (`parts::PartReader`).
 
 use super::Ctx;
 use super::ctx::Whose;
-use super::raw::RawPart;
-use super::rotation::Orientation;
+use super::raw::{RawPart, Vector};
 use crate::diag::Diagnostic;
-use crate::shapes::{Dims, Shape, Spanned as Spans};
+use crate::shapes::Shape;
 use crate::tolerance::{
     COLLINEAR_TOLERANCE, PERPENDICULAR_TOLERANCE, SYMMETRY_TOLERANCE, VALIDITY_RTOL,
 };
 use crate::units::Dim;
-use nalgebra::{Matrix3, Vector3};
+use nalgebra::Vector3;
 use std::ops::Range;
-
-/// How a part is turned, and its dimensions (m) as `Shape::second_moments`
-/// takes them.
-pub(super) type Placement = (Orientation, Vec<f64>);
+use toml::Spanned;
 
 /// `numeric::norm` of a vector.
 fn vnorm(v: &Vector3<f64>) -> f64 {
@@ -32,169 +28,87 @@ fn vunit(v: &Vector3<f64>) -> Vector3<f64> {
 
 impl Ctx<'_> {
     /// "this SHAPE needs `KEY`", at the part, with the shape's help.
-    fn missing(&self, shape: Shape, span: Range<usize>, key: &str) -> Diagnostic {
+    pub(super) fn missing(&self, shape: Shape, span: Range<usize>, key: &str) -> Diagnostic {
         self.err(span, format!("this {} needs `{key}`", shape.name()))
             .help(shape.info().help)
     }
 
-    /// The centred placement: the dimensions, `center` and `rotation`.
-    pub(super) fn placement_canonical(
+    /// A rod's `to` (`to_raw`, read as `to`, SI), which must differ from
+    /// its `from` (SI) by a finite span.
+    pub(super) fn rod_ends(
         &self,
-        shape: Shape,
-        p: &RawPart,
-        span: Range<usize>,
-    ) -> Result<Placement, Diagnostic> {
-        let missing = |key: &str| self.missing(shape, span.clone(), key);
-        let dims = match shape.info().dims {
-            Dims::Size(n) => {
-                let size = p.size.as_ref().ok_or_else(|| missing("size"))?;
-                let dims = self.vector(size, "size", Dim::LENGTH, n)?;
-                for q in size.get_ref() {
-                    self.positive(q, "size", Dim::LENGTH)?;
-                }
-                dims
-            }
-            Dims::Length => {
-                let l = p.length.as_deref().ok_or_else(|| missing("length"))?;
-                vec![self.positive(l, "length", Dim::LENGTH)?]
-            }
-            Dims::Radii { length } => {
-                let r = self.radius_of(p, false)?.ok_or_else(|| missing("radius"))?;
-                let outer = self.radius_si(&r)?;
-                if !(outer > 0.0) {
-                    return Err(self.err(r.q.span(), format!("`{}` must be positive", r.key)));
-                }
-                let inner = match self.radius_of(p, true)? {
-                    None => 0.0,
-                    Some(q) => {
-                        let v = self.radius_si(&q)?;
-                        if !(v >= 0.0 && v <= outer) {
-                            let (ik, ok) = (q.key, r.key);
-                            return Err(self
-                                .err(q.q.span(), format!("`{ik}` must be from 0 to `{ok}`"))
-                                .help("0 (or leaving it out) is a solid; equal to `radius`, a thin shell"));
-                        }
-                        v
-                    }
-                };
-                let mut dims = vec![outer, inner];
-                if length {
-                    let l = p.length.as_deref().ok_or_else(|| missing("length"))?;
-                    dims.push(self.positive(l, "length", Dim::LENGTH)?);
-                }
-                dims
-            }
-            Dims::None => vec![],
-            // Read with its file (`model::mesh`), never here.
-            Dims::Mesh => return Err(missing("file")),
-            Dims::Given => {
-                p.inertia.as_deref().ok_or_else(|| missing("inertia"))?;
-                vec![]
-            }
-            Dims::Vertices => {
-                let area = self.triangle(p, missing("vertices"))?;
-                return Ok((Orientation::Identity, vec![area]));
-            }
-            Dims::Cone => self.cone(p, span.clone())?,
-            Dims::Torus => self.torus(p, span.clone())?,
-            Dims::Polygon => self.prism(p, span.clone())?,
-        };
-        if shape.info().dims == Dims::Polygon {
-            // Placed by its optional `origin`.
-            if let Some(o) = &p.origin {
-                self.vec3(o, "origin", Dim::LENGTH)?;
-            }
-        } else {
-            let center = p.center.as_ref().ok_or_else(|| missing("center"))?;
-            self.vec3(center, "center", Dim::LENGTH)?;
+        from: Vector3<f64>,
+        to: Vector3<f64>,
+        to_raw: &Vector,
+    ) -> Result<(), Diagnostic> {
+        let e = to - from;
+        if e.amax() == 0.0 {
+            return Err(self.err(
+                to_raw.span(),
+                "`to` must differ from `from`: the rod has no length",
+            ));
         }
-        let orientation = match &p.rotation {
-            Some(r) => self.rotation(r)?,
-            None => Orientation::Identity,
-        };
-        Ok((orientation, dims))
+        if !e.amax().is_finite() {
+            return Err(self.err(
+                to_raw.span(),
+                "the rod from `from` to `to` is too long for f64",
+            ));
+        }
+        Ok(())
     }
 
-    /// The placement by the vectors that span the part: `corner` and
-    /// perpendicular `edges`, or `from` and `to`.
-    pub(super) fn placement_by_edges(
+    /// The `edges` that span a box or plate (`N` of them, for `shape`),
+    /// in the file's units: none zero, each pair perpendicular.
+    pub(super) fn edges<const N: usize>(
         &self,
         shape: Shape,
-        p: &RawPart,
-        span: Range<usize>,
-    ) -> Result<Placement, Diagnostic> {
-        let s = shape.name();
-        let missing = |key: &str| self.missing(shape, span.clone(), key);
-        let (origin, edges) = if shape.info().spanned == Some(Spans::FromTo) {
-            let from = self.vec3(
-                p.from.as_deref().ok_or_else(|| missing("from"))?,
-                "from",
-                Dim::LENGTH,
-            )?;
-            let to_raw = p.to.as_deref().ok_or_else(|| missing("to"))?;
-            let to = self.vec3(to_raw, "to", Dim::LENGTH)?;
-            let e = to - from;
-            if e.amax() == 0.0 {
-                return Err(self.err(
-                    to_raw.span(),
-                    "`to` must differ from `from`: the rod has no length",
-                ));
+        raw: &Spanned<Vec<Vector>>,
+    ) -> Result<[[f64; 3]; N], Diagnostic> {
+        let mut file = [[0.0; 3]; N];
+        let mut si: [(Vector3<f64>, Range<usize>); N] =
+            std::array::from_fn(|_| (Vector3::zeros(), 0..0));
+        let rows = self.exactly(raw, N, Whose::Shape(shape.name()), "`edges`")?;
+        for (k, e) in rows.iter().enumerate() {
+            self.tol.borrow_mut().row = k;
+            let (f, v) = self.value3(e, "edges", Dim::LENGTH)?;
+            if v.amax() == 0.0 {
+                return Err(self.err(e.span(), "an edge must not be zero"));
             }
-            if !e.amax().is_finite() {
-                return Err(self.err(
-                    to_raw.span(),
-                    "the rod from `from` to `to` is too long for f64",
-                ));
-            }
-            (from, vec![(e, to_raw.span())])
-        } else {
-            let corner = p.corner.as_deref().ok_or_else(|| missing("corner"))?;
-            let corner = self.vec3(corner, "corner", Dim::LENGTH)?;
-            let edges_raw = p.edges.as_deref().ok_or_else(|| missing("edges"))?;
-            let n = shape.edge_count();
-            let mut edges = Vec::with_capacity(n);
-            for e in self.exactly(edges_raw, n, Whose::Shape(s), "`edges`")? {
-                let v = self.vec3(e, "edges", Dim::LENGTH)?;
-                if v.amax() == 0.0 {
-                    return Err(self.err(e.span(), "an edge must not be zero"));
-                }
-                edges.push((v, e.span()));
-            }
-            for i in 0..n {
-                for j in i + 1..n {
-                    let cos = vunit(&edges[i].0).dot(&vunit(&edges[j].0));
-                    if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
-                        return Err(self
-                            .err(
-                                edges[j].1.clone(),
-                                format!(
-                                    "edges {} and {} are not perpendicular (angle {:.6}°)",
-                                    i + 1,
-                                    j + 1,
-                                    cos.clamp(-1.0, 1.0).acos().to_degrees()
-                                ),
-                            )
-                            .help(format!("edges must be perpendicular to a relative {PERPENDICULAR_TOLERANCE:e}")));
-                    }
+            (file[k], si[k]) = (f, (v, e.span()));
+        }
+        for i in 0..N {
+            for j in i + 1..N {
+                let cos = vunit(&si[i].0).dot(&vunit(&si[j].0));
+                if !(cos.abs() <= PERPENDICULAR_TOLERANCE) {
+                    return Err(self
+                        .err(
+                            si[j].1.clone(),
+                            format!(
+                                "edges {} and {} are not perpendicular (angle {:.6}°)",
+                                i + 1,
+                                j + 1,
+                                cos.clamp(-1.0, 1.0).acos().to_degrees()
+                            ),
+                        )
+                        .help(format!(
+                            "edges must be perpendicular to a relative {PERPENDICULAR_TOLERANCE:e}"
+                        )));
                 }
             }
-            (corner, edges)
-        };
-        // Validated only: the composer works from the corner and edges.
-        let _ = origin;
-        let dims: Vec<f64> = edges.iter().map(|(e, _)| vnorm(e)).collect();
-        Ok((Orientation::Identity, dims))
+        }
+        Ok(file)
     }
 
-    /// A triangle's area (SI) from its `vertices`, which must
-    /// span a triangle: area above `COLLINEAR_TOLERANCE` of the square of the
-    /// longest edge.
-    pub(super) fn triangle(&self, p: &RawPart, missing: Diagnostic) -> Result<f64, Diagnostic> {
-        let raw = p.vertices.as_deref().ok_or(missing)?;
+    /// A triangle's `vertices` (file units), which must span a triangle:
+    /// area (SI) above `COLLINEAR_TOLERANCE` of the square of the longest
+    /// edge.
+    pub(super) fn triangle(&self, raw: &Spanned<Vec<Vector>>) -> Result<[[f64; 3]; 3], Diagnostic> {
         let rows = self.exactly(raw, 3, Whose::Shape("triangle"), "`vertices`")?;
+        let mut file = [[0.0; 3]; 3];
         let mut v = [Vector3::zeros(); 3];
-        for (out, r) in v.iter_mut().zip(rows) {
-            *out = self.vec3(r, "vertices", Dim::LENGTH)?;
+        for (k, r) in rows.iter().enumerate() {
+            self.tol.borrow_mut().row = k;
+            (file[k], v[k]) = self.value3(r, "vertices", Dim::LENGTH)?;
         }
         let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
         let longest = vnorm(&e1).max(vnorm(&e2)).max(vnorm(&(v[2] - v[1])));
@@ -232,16 +146,19 @@ impl Ctx<'_> {
                     "its area must exceed {COLLINEAR_TOLERANCE:e} of the square of its longest edge"
                 )));
         }
-        Ok(area)
+        Ok(file)
     }
 
-    /// A given `inertia` (SI), checked: 3 × 3, symmetric to
-    /// `SYMMETRY_TOLERANCE`, and physically valid — its second moment
-    /// tr(I)/2 E − I positive semi-definite (no principal moment negative,
-    /// I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest. Returns that
-    /// second moment, local axes.
-    pub(super) fn given_inertia(&self, p: &RawPart) -> Result<Matrix3<f64>, Diagnostic> {
-        let raw = p.inertia.as_deref().expect("`part` checked the inertia");
+    /// A given `inertia` (`raw`, of part `p`), checked in SI: 3 × 3,
+    /// symmetric to `SYMMETRY_TOLERANCE`, and physically valid — its
+    /// second moment tr(I)/2 E − I positive semi-definite (no principal
+    /// moment negative, I₁ + I₂ ≥ I₃) to `VALIDITY_RTOL` of the largest.
+    /// Returns it in the file's units, in the tensor convention.
+    pub(super) fn given_inertia(
+        &self,
+        p: &RawPart,
+        raw: &Spanned<Vec<Vector>>,
+    ) -> Result<[[f64; 3]; 3], Diagnostic> {
         if let Some(pr) = &p.products
             && !PRODUCTS.contains(&pr.get_ref().as_str())
         {
@@ -250,9 +167,10 @@ impl Ctx<'_> {
                 .help("\"tensor\" (off-diagonals −∫xy dm, the default) or \"positive\" (+∫xy dm, CAD and Meriam)"));
         }
         let rows = self.exactly(raw, 3, Whose::Key("inertia"), "rows")?;
-        let mut m = [[0.0; 3]; 3];
-        for (row, r) in m.iter_mut().zip(rows) {
-            let v = self.vec3(r, "inertia", Dim::INERTIA)?;
+        let (mut file, mut m) = ([[0.0; 3]; 3], [[0.0; 3]; 3]);
+        for ((f, row), r) in file.iter_mut().zip(m.iter_mut()).zip(rows) {
+            let v;
+            (*f, v) = self.value3(r, "inertia", Dim::INERTIA)?;
             *row = [v.x, v.y, v.z];
         }
         let big = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));
@@ -296,7 +214,7 @@ impl Ctx<'_> {
                 ))
                 .help("check the signs of the products (`products = \"positive\"` if they are +∫xy dm, as CAD reports them) and the units"));
         }
-        Ok(Matrix3::from_fn(|i, j| c[i][j]))
+        Ok(tensor_convention(file, positive_products(p)))
     }
 }
 

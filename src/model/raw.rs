@@ -293,8 +293,7 @@ pub struct RawPart {
     /// `"2 %"`, `"± 0.1 kg uniform"`.
     #[schemars(with = "Option<super::schema::TolAmount>")]
     pub tol: Option<Box<Spanned<Quantity>>>,
-    /// The keys its shape declares itself (`ShapeKind::OWN_KEYS`), as
-    /// written (`own`).
+    /// The keys its shape declares itself (`ShapeKind::OWN_KEYS`).
     #[serde(skip)]
     #[schemars(skip)]
     pub own: Option<Box<Own>>,
@@ -555,9 +554,15 @@ impl RawExpect {
             Q::PredictedInertiaCom => &self.predicted_inertia_com,
             Q::PrincipalAxes => &self.principal_axes,
             // Reported, not expected (`quantity::Info::expected`).
-            Q::ReferencePoint | Q::CenterOfMassRef | Q::ReportAxes | Q::Omega => &None,
-            Q::PrincipalMomentsRef | Q::PrincipalAxesRef | Q::RadiiOfGyrationAxesRef => &None,
-            Q::Alpha | Q::EulerMoment => &None,
+            Q::ReferencePoint
+            | Q::CenterOfMassRef
+            | Q::ReportAxes
+            | Q::Omega
+            | Q::Alpha
+            | Q::EulerMoment
+            | Q::PrincipalMomentsRef
+            | Q::PrincipalAxesRef
+            | Q::RadiiOfGyrationAxesRef => &None,
         }
         .as_ref()
     }

@@ -19,7 +19,7 @@
 //! keyword it does not know.
 
 use super::raw::{Angles, ExpectValue, Quantity, RawFile};
-use crate::shapes::{Dims, Key, Kind, MaterialRule, SHAPES, Spanned as Spans};
+use crate::shapes::{Key, Kind, MaterialRule, SHAPES, Spanned as Spans};
 use crate::units;
 use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
 use serde_json::{Map, Value, json};
@@ -160,7 +160,8 @@ fn part_rules() -> Vec<Value> {
         then.insert("description".into(), s.help.into());
         then.insert("propertyNames".into(), json!({ "enum": keys }));
         let mut counts = Map::new();
-        if let Dims::Size(n) = s.dims {
+        if s.size_items > 0 {
+            let n = s.size_items;
             counts.insert("size".into(), json!({ "minItems": n, "maxItems": n }));
         }
         if let Some(Spans::CornerEdges(n)) = s.spanned {
@@ -194,7 +195,7 @@ fn part_rules() -> Vec<Value> {
 /// skips keywords it does not know, so those rules did not reach the
 /// editor.
 fn rules_of(s: &crate::shapes::ShapeInfo) -> Vec<Value> {
-    if s.dims == Dims::Mesh {
+    if s.sizes.contains(&"file") {
         return mesh_rules();
     }
     let mut rules = vec![mass_rule(s), placement_rule(s)];
@@ -270,8 +271,7 @@ fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
     // its diameter (not a rod's: that is its real size), one or the other.
     let by_diameter = s.keys.contains(&"diameter") && s.real_size.is_none();
     let mut centred: Vec<&str> = s
-        .dims
-        .keys()
+        .sizes
         .iter()
         .copied()
         .filter(|k| {
@@ -284,7 +284,11 @@ fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
         .collect();
     // A shape's own keys: its module asks for each (`Reader::quantity`,
     // `quantities`), which refuses a part without it.
-    centred.extend(s.shape.own_keys().iter().map(|k| k.name));
+    for k in s.shape.own_keys() {
+        if !centred.contains(&k.name) {
+            centred.push(k.name);
+        }
+    }
     if s.centred.contains(&"center") {
         centred.push("center");
     }

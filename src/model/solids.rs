@@ -3,7 +3,7 @@
 //! dimensions of a cone, a torus and a prism's polygon, each validated.
 
 use super::Ctx;
-use super::ctx::Whose;
+use super::ctx::{Value, Whose};
 use super::raw::{Quantity, RawPart};
 use crate::diag::Diagnostic;
 use crate::numeric::{DD, Real};
@@ -90,18 +90,17 @@ impl Ctx<'_> {
         }
     }
 
-    /// A radius in SI (halved if a diameter).
-    pub(super) fn radius_si(&self, r: &Radius<'_>) -> Result<f64, Diagnostic> {
-        Ok(r.scale(self.quantity(r.q, r.key, Dim::LENGTH)?))
-    }
-
-    /// A radius in the file's units (halved if a diameter).
-    pub(super) fn radius_file(&self, r: &Radius<'_>) -> Result<f64, Diagnostic> {
-        Ok(r.scale(self.file_quantity(r.q, r.key, Dim::LENGTH)?))
+    /// A radius read once (halved if a diameter).
+    fn radius(&self, r: &Radius<'_>) -> Result<Value, Diagnostic> {
+        let v = self.value(r.q, r.key, Dim::LENGTH)?;
+        Ok(Value {
+            file: r.scale(v.file),
+            si: r.scale(v.si),
+        })
     }
 
     /// A plain radius key (no diameter form) as a `Radius`.
-    pub(super) fn plain<'p>(&self, p: &'p RawPart, key: &'static str) -> Option<Radius<'p>> {
+    fn plain<'p>(&self, p: &'p RawPart, key: &'static str) -> Option<Radius<'p>> {
         field(p, key).map(|q| Radius {
             q,
             key,
@@ -109,29 +108,56 @@ impl Ctx<'_> {
         })
     }
 
-    /// An inner radius `inner` from 0 to the outer `outer` (SI).
+    /// An inner radius `inner` from 0 to the outer `outer` (SI), in the
+    /// file's units; `help` says what its ends mean.
     fn inner_within(
         &self,
         inner: &Radius<'_>,
         outer_key: &str,
         outer: f64,
+        help: &str,
     ) -> Result<f64, Diagnostic> {
-        let v = self.radius_si(inner)?;
-        if !(v >= 0.0 && v <= outer) {
+        let v = self.radius(inner)?;
+        if !(v.si >= 0.0 && v.si <= outer) {
             return Err(self
                 .err(
                     inner.q.span(),
                     format!("`{}` must be from 0 to `{outer_key}`", inner.key),
                 )
-                .help("0 (or leaving it out) is a solid; equal to the outer, a thin shell"));
+                .help(help));
         }
-        Ok(v)
+        Ok(v.file)
     }
 
-    /// A cone's dimensions in SI, [R₀, a₀, R₁, a₁, L]: radii from 0, not
-    /// both 0, each inner radius from 0 to its outer one, both inner radii
-    /// or neither, a positive length.
-    pub(super) fn cone(&self, p: &RawPart, span: Range<usize>) -> Result<Vec<f64>, Diagnostic> {
+    /// `radius` (or half `diameter`), positive, and `inner_radius` (or
+    /// half `inner_diameter`) from 0 to it, 0 when absent: [R, r] in the
+    /// file's units.
+    pub(super) fn radii(
+        &self,
+        p: &RawPart,
+        missing: impl FnOnce() -> Diagnostic,
+    ) -> Result<[f64; 2], Diagnostic> {
+        let r = self.radius_of(p, false)?.ok_or_else(missing)?;
+        let outer = self.radius(&r)?;
+        if !(outer.si > 0.0) {
+            return Err(self.err(r.q.span(), format!("`{}` must be positive", r.key)));
+        }
+        let inner = match self.radius_of(p, true)? {
+            None => 0.0,
+            Some(q) => self.inner_within(
+                &q,
+                r.key,
+                outer.si,
+                "0 (or leaving it out) is a solid; equal to `radius`, a thin shell",
+            )?,
+        };
+        Ok([outer.file, inner])
+    }
+
+    /// A cone's dimensions in the file's units, [R₀, a₀, R₁, a₁, L]: radii
+    /// from 0, not both 0, each inner radius from 0 to its outer one, both
+    /// inner radii or neither, a positive length.
+    pub(super) fn cone(&self, p: &RawPart, span: Range<usize>) -> Result<[f64; 5], Diagnostic> {
         let info = crate::shapes::Shape::Cone.info();
         let missing = |key: &str| {
             let what = if key == "top_radius" {
@@ -147,14 +173,15 @@ impl Ctx<'_> {
             .plain(p, "top_radius")
             .ok_or_else(|| missing("top_radius"))?;
         let mut out = [0.0; 5];
+        let mut si = [0.0; 2];
         for (i, r) in [(0, &base), (2, &top)] {
-            let v = self.radius_si(r)?;
-            if !(v >= 0.0) {
+            let v = self.radius(r)?;
+            if !(v.si >= 0.0) {
                 return Err(self.err(r.q.span(), format!("`{}` must not be negative", r.key)));
             }
-            out[i] = v;
+            (out[i], si[i / 2]) = (v.file, v.si);
         }
-        if out[0] == 0.0 && out[2] == 0.0 {
+        if si == [0.0; 2] {
             return Err(self
                 .err(
                     top.q.span(),
@@ -164,10 +191,11 @@ impl Ctx<'_> {
                     "`radius` is the base's, `top_radius` the top's; 0 at one end is a full cone",
                 ));
         }
+        let help = "0 (or leaving it out) is a solid; equal to the outer, a thin shell";
         match (self.radius_of(p, true)?, self.plain(p, "top_inner_radius")) {
             (Some(a0), Some(a1)) => {
-                out[1] = self.inner_within(&a0, base.key, out[0])?;
-                out[3] = self.inner_within(&a1, "top_radius", out[2])?;
+                out[1] = self.inner_within(&a0, base.key, si[0], help)?;
+                out[3] = self.inner_within(&a1, "top_radius", si[1], help)?;
             }
             (None, None) => {}
             (Some(one), None) | (None, Some(one)) => {
@@ -177,99 +205,61 @@ impl Ctx<'_> {
             }
         }
         let l = field(p, "length").ok_or_else(|| missing("length"))?;
-        let len = self.quantity(l, "length", Dim::LENGTH)?;
-        if len == 0.0 {
+        let len = self.value(l, "length", Dim::LENGTH)?;
+        if len.si == 0.0 {
             return Err(self
                 .err(l.span(), "a cone of zero `length` is flat")
                 .help("use a disk (an annulus for a hollow one)"));
         }
-        if !(len > 0.0) {
+        if !(len.si > 0.0) {
             return Err(self.err(l.span(), "`length` must be positive"));
         }
-        out[4] = len;
-        Ok(out.to_vec())
-    }
-
-    /// A cone's dimensions in the file's units, as `cone` validated them.
-    pub(super) fn cone_file(&self, p: &RawPart) -> Result<[f64; 5], Diagnostic> {
-        let mut out = [0.0; 5];
-        let read = |r: Option<Radius<'_>>| r.map_or(Ok(0.0), |r| self.radius_file(&r));
-        out[0] = read(self.radius_of(p, false)?)?;
-        out[1] = read(self.radius_of(p, true)?)?;
-        out[2] = read(self.plain(p, "top_radius"))?;
-        out[3] = read(self.plain(p, "top_inner_radius"))?;
-        out[4] = read(self.plain(p, "length"))?;
+        out[4] = len.file;
         Ok(out)
     }
 
-    /// A torus's dimensions in SI, [R, a, b]: a positive `radius`, a
-    /// positive `tube_radius` at most it (above it the tube would pass
-    /// through the axis and overlap itself), an `inner_tube_radius` from 0
-    /// to the tube's.
-    pub(super) fn torus(&self, p: &RawPart, span: Range<usize>) -> Result<Vec<f64>, Diagnostic> {
+    /// A torus's dimensions in the file's units, [R, a, b]: a positive
+    /// `radius`, a positive `tube_radius` at most it (above it the tube
+    /// would pass through the axis and overlap itself), an
+    /// `inner_tube_radius` from 0 to the tube's.
+    pub(super) fn torus(&self, p: &RawPart, span: Range<usize>) -> Result<[f64; 3], Diagnostic> {
         let info = crate::shapes::Shape::Torus.info();
         let missing = |key: &str| {
             self.err(span.clone(), format!("this torus needs `{key}`"))
                 .help(info.help)
         };
         let r = self.plain(p, "radius").ok_or_else(|| missing("radius"))?;
-        let big = self.positive(r.q, "radius", Dim::LENGTH)?;
+        let big = self.positive_value(r.q, "radius", Dim::LENGTH)?;
         let a = self
             .plain(p, "tube_radius")
             .ok_or_else(|| missing("tube_radius"))?;
-        let tube = self.positive(a.q, "tube_radius", Dim::LENGTH)?;
-        if tube > big {
+        let tube = self.positive_value(a.q, "tube_radius", Dim::LENGTH)?;
+        if tube.si > big.si {
             return Err(self
                 .err(a.q.span(), "`tube_radius` exceeds `radius`: the torus would intersect itself")
                 .help("`radius` runs from the axis to the tube's centre; the tube may at most touch the axis (`tube_radius` = `radius`)"));
         }
         let inner = match self.plain(p, "inner_tube_radius") {
-            Some(b) => self.inner_within(&b, "tube_radius", tube)?,
+            Some(b) => self.inner_within(
+                &b,
+                "tube_radius",
+                tube.si,
+                "0 (or leaving it out) is a solid; equal to the outer, a thin shell",
+            )?,
             None => 0.0,
         };
-        Ok(vec![big, tube, inner])
+        Ok([big.file, tube.file, inner])
     }
 
-    /// A torus's dimensions in the file's units.
-    pub(super) fn torus_file(&self, p: &RawPart) -> Result<[f64; 3], Diagnostic> {
-        let mut out = [0.0; 3];
-        for (o, k) in out
-            .iter_mut()
-            .zip(["radius", "tube_radius", "inner_tube_radius"])
-        {
-            if let Some(r) = self.plain(p, k) {
-                *o = self.radius_file(&r)?;
-            }
-        }
-        Ok(out)
-    }
-
-    /// A prism's `polygon`, each vertex [x, y] read by `read` (SI or file
-    /// units).
-    fn vertices(
-        &self,
-        raw: &Spanned<Vec<super::raw::Vector>>,
-        read: &dyn Fn(&Spanned<Quantity>) -> Result<f64, Diagnostic>,
-    ) -> Result<Vec<[f64; 2]>, Diagnostic> {
-        let mut out = Vec::with_capacity(raw.get_ref().len());
-        for v in raw.get_ref() {
-            let c = self.exactly(v, 2, Whose::Key("polygon"), "components")?;
-            out.push([read(&c[0])?, read(&c[1])?]);
-        }
-        Ok(out)
-    }
-
-    /// A prism's polygon in the file's units.
-    pub(super) fn polygon_file(&self, p: &RawPart) -> Result<Vec<[f64; 2]>, Diagnostic> {
-        let raw = p.polygon.as_deref().expect("`part` checked the polygon");
-        self.vertices(raw, &|q| self.file_quantity(q, "polygon", Dim::LENGTH))
-    }
-
-    /// A prism's dimensions in SI, [area, length], its `polygon` checked:
-    /// 3 to `MAX_POLYGON_VERTICES` vertices, no vertex twice, no two edges
+    /// A prism's `polygon` in the file's units, checked (in SI): 3 to
+    /// `MAX_POLYGON_VERTICES` vertices, no vertex twice, no two edges
     /// crossing or touching (but neighbours at their common vertex), and
     /// an area above `COLLINEAR_TOLERANCE` of the square of its extent.
-    pub(super) fn prism(&self, p: &RawPart, span: Range<usize>) -> Result<Vec<f64>, Diagnostic> {
+    pub(super) fn polygon(
+        &self,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<Vec<[f64; 2]>, Diagnostic> {
         let info = crate::shapes::Shape::Prism.info();
         let missing = |key: &str| {
             self.err(span.clone(), format!("this prism needs `{key}`"))
@@ -290,7 +280,16 @@ impl Ctx<'_> {
                 .err(raw.span(), format!("a prism's `polygon` may have at most {MAX_POLYGON_VERTICES} vertices, got {n}"))
                 .help("split it into several prisms"));
         }
-        let v = self.vertices(raw, &|q| self.quantity(q, "polygon", Dim::LENGTH))?;
+        let (mut file, mut v) = (Vec::with_capacity(n), Vec::with_capacity(n));
+        for vertex in raw.get_ref() {
+            let c = self.exactly(vertex, 2, Whose::Key("polygon"), "components")?;
+            let (x, y) = (
+                self.value(&c[0], "polygon", Dim::LENGTH)?,
+                self.value(&c[1], "polygon", Dim::LENGTH)?,
+            );
+            file.push([x.file, y.file]);
+            v.push([x.si, y.si]);
+        }
         let at = |i: usize| raw.get_ref()[i].span();
         if let Some((i, j)) = repeated(&v) {
             return Err(self
@@ -338,9 +337,7 @@ impl Ctx<'_> {
                     "its area must exceed {COLLINEAR_TOLERANCE:e} of the square of its extent"
                 )));
         }
-        let l = field(p, "length").ok_or_else(|| missing("length"))?;
-        let len = self.positive(l, "length", Dim::LENGTH)?;
-        Ok(vec![area, len])
+        Ok(file)
     }
 }
 

@@ -14,7 +14,6 @@ use super::Ctx;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
 use crate::part::{Dep, Slot};
-use crate::shapes::Dims;
 use crate::shapes::Shape;
 use crate::units::{self, Dim};
 use std::ops::Range;
@@ -273,16 +272,17 @@ impl Ctx<'_> {
         }
     }
 
-    /// The given mass (file units) of a part with `mass` = `m`, its
-    /// tolerance recorded: in the string, or `tol` beside it (not both).
-    pub(super) fn mass_with_tol(
+    /// Record the tolerance of a part's given mass, `mass` = `m` read as
+    /// `value` (file units), when it is `tol` beside it (a tolerance in
+    /// the string was recorded as it was read: not both).
+    pub(super) fn mass_tol(
         &self,
         p: &super::raw::RawPart,
         m: &Spanned<Quantity>,
-    ) -> Result<f64, Diagnostic> {
-        let value = self.file_quantity(m, "mass", Dim::MASS)?;
+        value: f64,
+    ) -> Result<(), Diagnostic> {
         let Some(tol) = p.tol.as_deref() else {
-            return Ok(value);
+            return Ok(());
         };
         if matches!(m.get_ref(), Quantity::Text(t) if split(t).is_some()) {
             return Err(self.err(
@@ -320,8 +320,7 @@ impl Ctx<'_> {
                 self.amount_at(&at, start, None, Dim::MASS, "tol")?
             }
         };
-        self.record(m, "mass", Dim::MASS, value, t)?;
-        Ok(value)
+        self.record(m, "mass", Dim::MASS, value, t)
     }
 
     /// The tolerance of `text` (which has one: `split`), the string at
@@ -613,16 +612,15 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
     if let Some(i) = own.iter().position(|k| k.name == key) {
         return own[i].tol.then_some((Slot::Own(i as u8, c), 1.0));
     }
-    // The dimensions kept as numbers of the spec, in `Dims::keys` order
-    // (not a given tensor's, a polygon's or a mesh's).
+    // The sizes kept as numbers of the placed shape, by name (not a given
+    // tensor's, a polygon's or a mesh's: no slot has their names).
     let info = shape.info();
-    let dims: &[&str] = match info.dims {
-        Dims::Length | Dims::Radii { .. } | Dims::Cone | Dims::Torus => info.dims.keys(),
-        Dims::Size(_) | Dims::Vertices | Dims::Given | Dims::None | Dims::Polygon | Dims::Mesh => {
-            &[]
-        }
+    let dim = |k: &str| {
+        info.sizes
+            .contains(&k)
+            .then(|| Slot::of_dimension(k))
+            .flatten()
     };
-    let dim = |k: &str| dims.contains(&k).then(|| Slot::of_dimension(k)).flatten();
     Some(match key {
         "mass" | "material" => (Slot::Mass, 1.0),
         k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
@@ -630,8 +628,7 @@ fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option
         "to" => (Slot::To(c), 1.0),
         "edges" => (Slot::Edge(r, c), 1.0),
         "vertices" => (Slot::Vertex(r, c), 1.0),
-        "size" if matches!(info.dims, Dims::Size(_)) => (Slot::Size(c), 1.0),
-        "length" if info.dims == Dims::Polygon => (Slot::Length, 1.0),
+        "size" if info.sizes.contains(&"size") => (Slot::Size(c), 1.0),
         "diameter" => (dim("radius")?, 0.5),
         "inner_diameter" => (dim("inner_radius")?, 0.5),
         k => (dim(k)?, 1.0),

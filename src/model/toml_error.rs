@@ -218,10 +218,9 @@ fn expected(key: &str, depth: usize, text: &str, at: usize) -> Option<String> {
     // A part's key: from its declaration (`keys`), a `size` as long as
     // its part's shape says.
     if let Some(k) = super::keys::declared(key) {
-        let n = match shape_of_part_at(text, at).map(|s| s.info().dims) {
-            Some(crate::shapes::Dims::Size(n)) if key == "size" => Some(n),
-            _ => None,
-        };
+        let n = shape_of_part_at(text, at)
+            .map(|s| s.info().size_items)
+            .filter(|n| *n > 0 && key == "size");
         return super::keys::expected(k, depth, n);
     }
     Some(match (key, depth) {

@@ -5,7 +5,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::{PER_VOLUME, product, segment};
@@ -34,7 +34,8 @@ impl ShapeKind for Cuboid {
             "material",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Size(3),
+        sizes: &["size"],
+        size_items: 3,
         centred: &["size", "center", "rotation"],
         spanned: Some(Spanned::CornerEdges(3)),
         material: MaterialRule::Volume,

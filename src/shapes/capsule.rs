@@ -29,7 +29,7 @@ use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::read::Reader;
 use super::{
-    Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units,
+    MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units,
 };
 use crate::diag::Diagnostic;
 use crate::numeric::{DD, M3, Real};
@@ -89,7 +89,8 @@ impl ShapeKind for Capsule {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Radii { length: true },
+        sizes: &["radius", "inner_radius", "length"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -128,7 +129,7 @@ impl ShapeKind for Capsule {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         let length = r.length("length")?;
         Ok(Capsule {

@@ -114,7 +114,7 @@ macro_rules! centred_centroid {
 /// its reading, physics, moves, slots, mirror and outline.
 macro_rules! by_corner_or_centre {
     ($ty:ident, $n:literal) => {
-        fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+        fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
             if r.by_edges() {
                 let edges = r.vectors("edges")?;
                 return Ok($ty::Spanned {

@@ -32,7 +32,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 
@@ -134,7 +134,14 @@ impl ShapeKind for Cone {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Cone,
+        sizes: &[
+            "radius",
+            "inner_radius",
+            "top_radius",
+            "top_inner_radius",
+            "length",
+        ],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -165,7 +172,7 @@ impl ShapeKind for Cone {
     }
 
     /// Its centre read before its sizes, as the file's other shapes' after.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let center = r.point("center")?;
         let [radius, inner_radius, top_radius, top_inner_radius, length] = r.cone()?;
         Ok(Cone {

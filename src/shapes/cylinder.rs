@@ -9,7 +9,7 @@ use super::common::{add, axes, rim, scaled};
 use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::lift::Lift;
@@ -47,7 +47,8 @@ impl ShapeKind for Cylinder {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Radii { length: true },
+        sizes: &["radius", "inner_radius", "length"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -84,7 +85,7 @@ impl ShapeKind for Cylinder {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         let length = r.length("length")?;
         Ok(Cylinder {

@@ -6,7 +6,7 @@ use super::common::{axes, rim};
 use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::outline::Outline;
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::lift::Lift;
@@ -42,7 +42,8 @@ impl ShapeKind for Disk {
             "remove",
         ],
         density: Some(PER_AREA),
-        dims: Dims::Radii { length: false },
+        sizes: &["radius", "inner_radius"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Thickness,
@@ -76,7 +77,7 @@ impl ShapeKind for Disk {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Disk {
             center: r.point("center")?,

@@ -24,7 +24,7 @@ use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::read::Reader;
 use super::{
-    Dims, Key, Kind, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot,
+    Key, Kind, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot,
     Units,
 };
 use crate::diag::Diagnostic;
@@ -38,22 +38,11 @@ fn radius_slot(k: usize) -> Slot {
 }
 
 /// The semi-axes from the dimensions the closed forms are given.
-///
-/// NOTE: the model's validation (`model::parts`) still evaluates the
-/// closed forms on the dimensions that `INFO.dims` names, in SI, only to
-/// refuse a part whose figures would leave f64's range; the ellipsoid's
-/// dimensions are its own key, which `Dims` cannot name, so there it
-/// passes none (`Dims::None`) and the unit ellipsoid stands in. The part's
-/// own figures, from its radii as read, are checked in the file's units
-/// all the same (`model::parts::in_file_range`), so nothing out of range
-/// passes; only that SI check is not the ellipsoid's own until the model
-/// reads the dimensions through the placed form.
 fn semi_axes<T: Real>(d: &[T]) -> [T; 3] {
-    match d {
-        [a, b, c] => [*a, *b, *c],
-        [] => [T::of(1.0); 3],
-        _ => unreachable!("an ellipsoid has three dimensions, or none from `Dims::None`"),
-    }
+    let [a, b, c] = d else {
+        unreachable!("an ellipsoid has three dimensions, its radii")
+    };
+    [*a, *b, *c]
 }
 
 /// A solid ellipsoid placed by its `center` and turned by its
@@ -74,8 +63,8 @@ impl ShapeKind for Ellipsoid {
             "density", "radii", "material", "center", "rotation", "mass", "remove",
         ],
         density: Some(PER_VOLUME),
-        // Its dimensions are its own key, `radii` (see `semi_axes`).
-        dims: Dims::None,
+        sizes: &["radii"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -118,7 +107,7 @@ impl ShapeKind for Ellipsoid {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let radii = r.quantities::<3>("radii")?;
         Ok(Ellipsoid {
             center: r.point("center")?,

@@ -25,7 +25,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 
@@ -105,7 +105,8 @@ impl ShapeKind for Hemisphere {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Radii { length: false },
+        sizes: &["radius", "inner_radius"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -135,7 +136,7 @@ impl ShapeKind for Hemisphere {
         offset(d)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Hemisphere {
             center: r.point("center")?,

@@ -7,7 +7,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
 use super::outline::{Marker, Outline};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 
@@ -28,7 +28,8 @@ impl ShapeKind for Given {
             "mass", "center", "rotation", "inertia", "products", "remove",
         ],
         density: None,
-        dims: Dims::Given,
+        sizes: &["inertia"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::None,
@@ -64,7 +65,7 @@ impl ShapeKind for Given {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let inertia = Box::new(r.inertia()?);
         Ok(Given {
             center: r.point("center")?,

@@ -35,75 +35,6 @@ pub const PER_LENGTH: DensityKind = DensityKind {
     length_power: 1,
 };
 
-/// The dimensions a shape is given by, in the order `second_moments`
-/// takes them.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dims {
-    /// `size`, an array of this many positive lengths (box, plate).
-    Size(usize),
-    /// `length`, one positive length (rod).
-    Length,
-    /// `radius`, an optional `inner_radius` from 0 to it, and a positive
-    /// `length` if `length` is true: [R, r] or [R, r, L].
-    Radii { length: bool },
-    /// `vertices`: three points; the one dimension is the area.
-    Vertices,
-    /// A given tensor, `inertia` (rows, about the centroid in local axes).
-    Given,
-    /// None (a point).
-    None,
-    /// A cone: `radius` (or `diameter`), `inner_radius`, `top_radius`,
-    /// `top_inner_radius` and `length`: [R₀, a₀, R₁, a₁, L].
-    Cone,
-    /// A torus: `radius` (centre line), `tube_radius`, `inner_tube_radius`:
-    /// [R, a, b].
-    Torus,
-    /// A prism: `polygon` and `length`; the dimensions [area, length].
-    Polygon,
-    /// A mesh `file` (`mesh`): its integrals come from the file.
-    Mesh,
-}
-
-impl Dims {
-    /// How many numbers the closed forms take (see `Shape::second_moments`).
-    pub fn count(self) -> usize {
-        match self {
-            Dims::Size(n) => n,
-            Dims::Radii { length: true } => 3,
-            Dims::Radii { length: false } => 2,
-            // A triangle's one "dimension" is its area (see `measure_of`).
-            Dims::Length | Dims::Vertices => 1,
-            Dims::Given | Dims::None | Dims::Mesh => 0,
-            Dims::Cone => 5,
-            Dims::Torus => 3,
-            Dims::Polygon => 2,
-        }
-    }
-
-    /// The keys that give the dimensions.
-    pub fn keys(self) -> &'static [&'static str] {
-        match self {
-            Dims::Size(_) => &["size"],
-            Dims::Length => &["length"],
-            Dims::Radii { length: true } => &["radius", "inner_radius", "length"],
-            Dims::Radii { length: false } => &["radius", "inner_radius"],
-            Dims::Vertices => &["vertices"],
-            Dims::Given => &["inertia"],
-            Dims::None => &[],
-            Dims::Cone => &[
-                "radius",
-                "inner_radius",
-                "top_radius",
-                "top_inner_radius",
-                "length",
-            ],
-            Dims::Torus => &["radius", "tube_radius", "inner_tube_radius"],
-            Dims::Polygon => &["polygon", "length"],
-            Dims::Mesh => &["file"],
-        }
-    }
-}
-
 /// A second way to place a shape, by the vectors that span it, beside the
 /// centred one (`center` and `rotation` with the dimensions).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -158,7 +89,15 @@ pub struct ShapeInfo {
     pub keys: &'static [&'static str],
     /// The density it takes instead of `mass`; `None`: `mass` only.
     pub density: Option<DensityKind>,
-    pub dims: Dims,
+    /// The keys that give its size, beside its placement (`radius`,
+    /// `inner_radius`, `length`; `size`; a triangle's `vertices`, a given
+    /// `inertia`, a mesh's `file`), by name: where a tolerance fills one of
+    /// its numbers (`model::tolerance`), what the schema requires, where
+    /// an overflow of its second moments is reported. Its module reads
+    /// them (`ShapeKind::read`).
+    pub sizes: &'static [&'static str],
+    /// How many lengths `size` holds (box 3, plate 2; 0 without `size`).
+    pub size_items: usize,
     /// The keys of the centred placement that conflict with `spanned`'s.
     pub centred: &'static [&'static str],
     /// The other placement, if the shape has one.

@@ -9,7 +9,7 @@ use crate::diag::Diagnostic;
 use super::error::{self, Own};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::mesh::MeshBody;
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
@@ -102,7 +102,8 @@ impl ShapeKind for Mesh {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Mesh,
+        sizes: &["file"],
+        size_items: 0,
         centred: &["origin"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -141,7 +142,7 @@ impl ShapeKind for Mesh {
     /// Its measure in its file's units times the scale to the power of
     /// its mode (volume or area).
     /// Read with its file (`model::mesh`), never here.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Err(r.elsewhere())
     }
 

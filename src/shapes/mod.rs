@@ -34,7 +34,7 @@ pub use read::Reader;
 #[cfg(test)]
 pub use info::PROBE;
 pub use info::{
-    DensityKind, Dims, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
+    DensityKind, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
     Solid, Spanned, own_key,
 };
 
@@ -74,7 +74,7 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     /// plane (its data reflected instead, `mirror`).
     const MIRROR_AXIS: Option<usize>;
     /// Volume, area or length of a shape of dimensions `d` (in the order
-    /// of `INFO.dims`), the measure that the density multiplies.
+    /// its closed forms take them), the measure that the density multiplies.
     fn measure_of<T: Real>(d: &[T]) -> T;
     /// ∫x² dm, ∫y² dm, ∫z² dm about the centroid in local axes, of mass
     /// `m` and dimensions `d`.
@@ -85,7 +85,7 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
 
     /// Its placed form from a part's numbers, in the order it asks for
     /// them (`read::Reader`).
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic>;
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic>;
 
     /// Volume, area or length of the placed shape, the measure its
     /// density multiplies, its numbers read through `l`.
@@ -214,7 +214,7 @@ macro_rules! registry {
             pub const ALL: [Shape; [$(Shape::$variant),+].len()] = [$(Shape::$variant),+];
 
             /// Volume, area or length of a shape of dimensions `d` (in the
-            /// order of its `INFO.dims`), the measure that the density
+            /// order its closed forms take them), the measure that the density
             /// multiplies.
             pub fn measure_of<T: Real>(self, d: &[T]) -> T {
                 match self {
@@ -257,7 +257,7 @@ macro_rules! registry {
 
         impl Place {
             /// A part of `shape`'s placed form, read by its module.
-            pub fn read(shape: Shape, r: &impl Reader) -> Result<Place, Diagnostic> {
+            pub fn read(shape: Shape, r: &mut impl Reader) -> Result<Place, Diagnostic> {
                 Ok(match shape {
                     $(Shape::$variant => Place::$variant(<$module::$kind as ShapeKind>::read(r)?),)+
                 })
@@ -461,11 +461,6 @@ impl Shape {
     /// `center`.
     pub fn edge_count(self) -> usize {
         self.info().spanned.map_or(0, Spanned::edges)
-    }
-
-    /// Number of dimensions the closed forms take (see `second_moments`).
-    pub fn dim_count(self) -> usize {
-        self.info().dims.count()
     }
 
     /// How many of the three local second moments are non-zero.

@@ -7,7 +7,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Spanned, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use crate::numeric::pow2_scaled;
@@ -45,7 +45,8 @@ impl ShapeKind for Plate {
             "material",
         ],
         density: Some(PER_AREA),
-        dims: Dims::Size(2),
+        sizes: &["size"],
+        size_items: 2,
         centred: &["size", "center", "rotation"],
         spanned: Some(Spanned::CornerEdges(2)),
         material: MaterialRule::Thickness,

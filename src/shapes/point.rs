@@ -5,7 +5,7 @@ use super::common::axes;
 use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::outline::{Outline, Marker};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::lift::Lift;
@@ -25,7 +25,8 @@ impl ShapeKind for Point {
         name: "point",
         keys: &["center", "mass"],
         density: None,
-        dims: Dims::None,
+        sizes: &[],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::None,
@@ -61,7 +62,7 @@ impl ShapeKind for Point {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Ok(Point {
             center: r.point("center")?,
             orientation: r.orientation(),

@@ -29,7 +29,7 @@ use super::error;
 use super::lift::Lift;
 use super::outline::{Outline, Piece, V3};
 use super::{
-    Dims, MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units, turned,
+    MaterialRule, Mover, Own, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units, turned,
 };
 use crate::numeric::M3;
 use crate::rotation::Orientation;
@@ -164,7 +164,8 @@ impl ShapeKind for Prism {
             "density", "polygon", "length", "origin", "rotation", "mass", "remove", "material",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Polygon,
+        sizes: &["polygon", "length"],
+        size_items: 0,
         centred: &[],
         spanned: None,
         material: MaterialRule::Volume,
@@ -200,7 +201,7 @@ impl ShapeKind for Prism {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let origin = r.origin()?;
         let polygon = r.polygon()?.into();
         let length = r.length("length")?;

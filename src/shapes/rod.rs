@@ -8,7 +8,7 @@ use crate::diag::Diagnostic;
 use super::lift::{Lift, lift3, xyz};
 use super::outline::{Outline, Piece};
 use super::{
-    Dims, MaterialRule, Mover, Own, PER_LENGTH, Shape, ShapeInfo, ShapeKind, Slot, Solid, Spanned,
+    MaterialRule, Mover, Own, PER_LENGTH, Shape, ShapeInfo, ShapeKind, Slot, Solid, Spanned,
     Units, product, segment,
 };
 use crate::numeric::{DD, M3, Real, norm_of};
@@ -62,7 +62,8 @@ impl ShapeKind for Rod {
             "area",
         ],
         density: Some(PER_LENGTH),
-        dims: Dims::Length,
+        sizes: &["length"],
+        size_items: 0,
         centred: &["length", "center", "rotation"],
         spanned: Some(Spanned::FromTo),
         material: MaterialRule::Section,
@@ -96,7 +97,7 @@ impl ShapeKind for Rod {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         if r.by_edges() {
             let from = r.point("from")?;
             return Ok(Rod::Ends {

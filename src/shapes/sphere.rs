@@ -10,7 +10,7 @@ use super::common::axes;
 use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::outline::{Outline, Piece};
-use super::{Dims, MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
+use super::{MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::lift::Lift;
@@ -45,7 +45,8 @@ impl ShapeKind for Sphere {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Radii { length: false },
+        sizes: &["radius", "inner_radius"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -90,7 +91,7 @@ impl ShapeKind for Sphere {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, inner_radius] = r.radii()?;
         Ok(Sphere {
             center: r.point("center")?,

@@ -20,7 +20,6 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::outline::{Outline, Piece};
 use super::{ MaterialRule, Mover, Own, Shape, ShapeInfo, ShapeKind, Slot, Units};
-use super::Dims;
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use super::lift::Lift;
@@ -71,7 +70,8 @@ impl ShapeKind for Torus {
             "remove",
         ],
         density: Some(PER_VOLUME),
-        dims: Dims::Torus,
+        sizes: &["radius", "tube_radius", "inner_tube_radius"],
+        size_items: 0,
         centred: &["center"],
         spanned: None,
         material: MaterialRule::Volume,
@@ -101,7 +101,7 @@ impl ShapeKind for Torus {
         T::of(0.0)
     }
 
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         let [radius, tube_radius, inner_tube_radius] = r.torus()?;
         Ok(Torus {
             center: r.point("center")?,

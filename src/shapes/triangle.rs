@@ -10,7 +10,7 @@ use super::error;
 use super::lift::{Fixed, Lift, lift3, xyz};
 use super::outline::{Outline, Piece};
 use super::{
-    Dims, MaterialRule, Mover, Own, PER_AREA, Shape, ShapeInfo, ShapeKind, Slot, Units, product,
+    MaterialRule, Mover, Own, PER_AREA, Shape, ShapeInfo, ShapeKind, Slot, Units, product,
 };
 use crate::numeric::{DD, M3, Real, norm_of};
 
@@ -66,7 +66,8 @@ impl ShapeKind for Triangle {
             "thickness",
         ],
         density: Some(PER_AREA),
-        dims: Dims::Vertices,
+        sizes: &["vertices"],
+        size_items: 0,
         centred: &[],
         spanned: None,
         material: MaterialRule::Thickness,
@@ -100,7 +101,7 @@ impl ShapeKind for Triangle {
     }
 
     /// Its area, |a × b|/2 from its edges from the first vertex.
-    fn read(r: &impl Reader) -> Result<Self, Diagnostic> {
+    fn read(r: &mut impl Reader) -> Result<Self, Diagnostic> {
         Ok(Triangle {
             vertices: r.vectors("vertices")?,
         })

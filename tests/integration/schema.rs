@@ -751,7 +751,7 @@ fn init_writes_a_new_file_and_refuses_an_existing_one() {
 // Drift: generated part files of every shape and key, in every form the
 // reader takes. Whenever the reader accepts a file, the schema must too.
 
-use massprop::shapes::{Dims, MaterialRule, ShapeInfo, Spanned as Spans};
+use massprop::shapes::{MaterialRule, ShapeInfo, Spanned as Spans};
 use massprop::units::Dim;
 
 /// Choices drawn from proptest's bytes: shrinking the bytes toward zero
@@ -1013,7 +1013,7 @@ impl Gen<'_, '_> {
     /// part may have (`name`, copies, the weight statement's, `tol`).
     fn part(&mut self, s: &ShapeInfo) -> Vec<String> {
         let mut lines = vec![format!("shape = \"{}\"", s.name)];
-        let mode_shell = s.dims == Dims::Mesh && self.p.one_in(3);
+        let mode_shell = s.sizes.contains(&"file") && self.p.one_in(3);
         // Weighed by `mass`, its density or a material (with what turns
         // the material's density into the shape's).
         let mut weighs = vec!["mass"];
@@ -1082,7 +1082,7 @@ impl Gen<'_, '_> {
         }
         if mode_shell {
             lines.push(format!("mode = \"{}\"", "shell"));
-        } else if s.dims == Dims::Mesh && self.p.one_in(3) {
+        } else if s.sizes.contains(&"file") && self.p.one_in(3) {
             lines.push("mode = \"solid\"".to_string());
         }
         let spanned = self.dims(s, &mut lines);
@@ -1102,7 +1102,7 @@ impl Gen<'_, '_> {
         lines
     }
 
-    /// The dimensions and the placement, as `s.dims`, `s.centred` and
+    /// The sizes and the placement, as `s.sizes`, `s.centred` and
     /// `s.spanned` say; whether it is the spanned placement.
     fn dims(&mut self, s: &ShapeInfo, lines: &mut Vec<String>) -> bool {
         let spanned = s.spanned.filter(|_| self.p.one_in(2));
@@ -1136,76 +1136,85 @@ impl Gen<'_, '_> {
                 lines.push(format!("inner_radius = {}", g.len(si)));
             }
         };
-        match s.dims {
-            Dims::Size(n) => {
-                let sizes: Vec<String> = [0.01, 0.02, 0.03][..n]
-                    .iter()
-                    .map(|x| self.len(*x))
-                    .collect();
-                lines.push(format!("size = [{}]", sizes.join(", ")));
-            }
-            Dims::Length => lines.push(format!("length = {}", self.len(0.1))),
-            Dims::Radii { length } => {
-                radius(self, lines, 0.01);
-                if self.p.one_in(2) {
+        // Each key that gives the shape's size, by its name.
+        let has = |k: &str| s.sizes.contains(&k);
+        // (A shape's own keys are written below, from their declarations.)
+        let own = |k: &str| s.shape.own_keys().iter().any(|o| o.name == k);
+        for key in s.sizes.iter().filter(|k| !own(k)) {
+            match *key {
+                "size" => {
+                    let sizes: Vec<String> = [0.01, 0.02, 0.03][..s.size_items]
+                        .iter()
+                        .map(|x| self.len(*x))
+                        .collect();
+                    lines.push(format!("size = [{}]", sizes.join(", ")));
+                }
+                "length" => {
+                    let l = match (has("radius"), has("polygon")) {
+                        (_, true) => 0.02,
+                        (true, false) => 0.05,
+                        (false, false) => 0.1,
+                    };
+                    lines.push(format!("length = {}", self.len(l)));
+                }
+                "radius" if has("tube_radius") => {
+                    lines.push(format!("radius = {}", self.len(0.1)));
+                }
+                "radius" => radius(self, lines, 0.01),
+                // A cone's bore is given at both ends or at neither.
+                "inner_radius" if self.p.one_in(2) => {
                     inner(self, lines, 0.005);
+                    if has("top_inner_radius") {
+                        lines.push(format!("top_inner_radius = {}", self.len(0.002)));
+                    }
                 }
-                if length {
-                    lines.push(format!("length = {}", self.len(0.05)));
+                "inner_radius" | "top_inner_radius" => {}
+                "top_radius" => lines.push(format!("top_radius = {}", self.len(0.004))),
+                "tube_radius" => lines.push(format!("tube_radius = {}", self.len(0.02))),
+                "inner_tube_radius" => {
+                    if self.p.one_in(2) {
+                        lines.push(format!("inner_tube_radius = {}", self.len(0.01)));
+                    }
                 }
-            }
-            Dims::Vertices => {
-                let v: Vec<String> = [[0.0, 0.0, 0.0], [0.01, 0.0, 0.0], [0.0, 0.01, 0.0]]
-                    .iter()
-                    .map(|p| self.point(*p))
-                    .collect();
-                lines.push(format!("vertices = [{}]", v.join(", ")));
-            }
-            Dims::Given => {
-                let i = Kind::Quantity(Dim::INERTIA);
-                let rows = [
-                    self.vector([2e-3, 0.0, 0.0], i),
-                    self.vector([0.0, 2e-3, 0.0], i),
-                    self.vector([0.0, 0.0, 3e-3], i),
-                ];
-                lines.push(format!("inertia = [{}]", rows.join(", ")));
-                if self.p.one_in(2) {
-                    lines.push(format!(
-                        "products = \"{}\"",
-                        self.p.of(&["tensor", "positive"])
-                    ));
+                "vertices" => {
+                    let v: Vec<String> = [[0.0, 0.0, 0.0], [0.01, 0.0, 0.0], [0.0, 0.01, 0.0]]
+                        .iter()
+                        .map(|p| self.point(*p))
+                        .collect();
+                    lines.push(format!("vertices = [{}]", v.join(", ")));
                 }
-            }
-            Dims::None => {}
-            Dims::Cone => {
-                radius(self, lines, 0.01);
-                lines.push(format!("top_radius = {}", self.len(0.004)));
-                if self.p.one_in(2) {
-                    inner(self, lines, 0.005);
-                    lines.push(format!("top_inner_radius = {}", self.len(0.002)));
+                "inertia" => {
+                    let i = Kind::Quantity(Dim::INERTIA);
+                    let rows = [
+                        self.vector([2e-3, 0.0, 0.0], i),
+                        self.vector([0.0, 2e-3, 0.0], i),
+                        self.vector([0.0, 0.0, 3e-3], i),
+                    ];
+                    lines.push(format!("inertia = [{}]", rows.join(", ")));
+                    if self.p.one_in(2) {
+                        lines.push(format!(
+                            "products = \"{}\"",
+                            self.p.of(&["tensor", "positive"])
+                        ));
+                    }
                 }
-                lines.push(format!("length = {}", self.len(0.05)));
-            }
-            Dims::Torus => {
-                lines.push(format!("radius = {}", self.len(0.1)));
-                lines.push(format!("tube_radius = {}", self.len(0.02)));
-                if self.p.one_in(2) {
-                    lines.push(format!("inner_tube_radius = {}", self.len(0.01)));
+                "polygon" => {
+                    let l = LENGTH;
+                    let v: Vec<String> = [[0.0, 0.0], [0.01, 0.0], [0.01, 0.01], [0.0, 0.02]]
+                        .iter()
+                        .map(|p| {
+                            format!("[{}, {}]", self.quantity(p[0], l), self.quantity(p[1], l))
+                        })
+                        .collect();
+                    lines.push(format!("polygon = [{}]", v.join(", ")));
                 }
-            }
-            Dims::Polygon => {
-                let l = LENGTH;
-                let v: Vec<String> = [[0.0, 0.0], [0.01, 0.0], [0.01, 0.01], [0.0, 0.02]]
-                    .iter()
-                    .map(|p| format!("[{}, {}]", self.quantity(p[0], l), self.quantity(p[1], l)))
-                    .collect();
-                lines.push(format!("polygon = [{}]", v.join(", ")));
-                lines.push(format!("length = {}", self.len(0.02)));
-            }
-            Dims::Mesh => {
-                lines.push("file = \"shapes/meshes/bracket.stl\"".to_string());
-                let unit = self.p.of(massprop::units::LENGTH_UNITS);
-                lines.push(format!("mesh_unit = \"{unit}\""));
+                "file" => {
+                    lines.push("file = \"shapes/meshes/bracket.stl\"".to_string());
+                    let unit = self.p.of(massprop::units::LENGTH_UNITS);
+                    lines.push(format!("mesh_unit = \"{unit}\""));
+                }
+                // A new shape's key: this generator must learn to write it.
+                other => panic!("{}: no generator for the size key `{other}`", s.name),
             }
         }
         // A shape's own keys (an ellipsoid's `radii`): lengths, each > 0.
