@@ -23,6 +23,7 @@
 
 use crate::numeric::{DD, M3, Precision, Real};
 use crate::part::Own;
+use crate::quantity::{Quantity, Value};
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -487,7 +488,9 @@ fn scaled_condition(c: &M3<f64>, e: &M3<f64>, coupled: &[usize]) -> Option<(f64,
 
 /// The error bounds of everything `report` prints, in SI, absolute: the
 /// same keys as the values they bound (docs/json.md). Axes as angles.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+/// Written (`Serialize`, below) by the quantity table, each in its place
+/// (`quantity::Info::bound`).
+#[derive(Debug, Clone, PartialEq)]
 pub struct ErrorBounds {
     pub mass: f64,
     pub center_of_mass: [f64; 3],
@@ -504,12 +507,54 @@ pub struct ErrorBounds {
     pub radii_of_gyration_axes: [f64; 3],
     pub radii_of_gyration_axes_ref: [f64; 3],
     pub center_of_mass_ref: [f64; 3],
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub angular_momentum: Option<[f64; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub kinetic_energy: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub euler_moment: Option<[f64; 3]>,
+}
+
+impl ErrorBounds {
+    /// The bound of quantity `q`; `None` for a value given (exact), one
+    /// not computed (no ω, no α) or the predicted body's.
+    pub fn of(&self, q: Quantity) -> Option<Value<'_>> {
+        Some(match q {
+            Quantity::Mass => Value::Scalar(self.mass),
+            Quantity::CenterOfMass => Value::Triple(&self.center_of_mass),
+            Quantity::ReferencePoint => Value::Triple(&self.reference_point),
+            Quantity::InertiaCom => Value::Rows(&self.inertia_com),
+            Quantity::InertiaRef => Value::Rows(&self.inertia_ref),
+            Quantity::PrincipalMoments => Value::Triple(&self.principal_moments),
+            Quantity::PrincipalAxes => Value::Triple(&self.principal_axes),
+            Quantity::PrincipalMomentsRef => Value::Triple(&self.principal_moments_ref),
+            Quantity::PrincipalAxesRef => Value::Triple(&self.principal_axes_ref),
+            Quantity::RadiiOfGyration => Value::Triple(&self.radii_of_gyration),
+            Quantity::RadiiOfGyrationAxes => Value::Triple(&self.radii_of_gyration_axes),
+            Quantity::RadiiOfGyrationAxesRef => Value::Triple(&self.radii_of_gyration_axes_ref),
+            Quantity::CenterOfMassRef => Value::Triple(&self.center_of_mass_ref),
+            Quantity::AngularMomentum => Value::Triple(self.angular_momentum.as_ref()?),
+            Quantity::KineticEnergy => Value::Scalar(self.kinetic_energy?),
+            Quantity::EulerMoment => Value::Triple(self.euler_moment.as_ref()?),
+            Quantity::ReportAxes
+            | Quantity::Omega
+            | Quantity::Alpha
+            | Quantity::PredictedMass
+            | Quantity::PredictedCenterOfMass
+            | Quantity::PredictedInertiaCom => return None,
+        })
+    }
+}
+
+/// `error_bounds` (docs/json.md): each bound under its quantity's key, in
+/// its place in the table.
+impl Serialize for ErrorBounds {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        // An upper bound: serde_json closes an object announced empty.
+        let mut m = s.serialize_struct("ErrorBounds", crate::quantity::QUANTITIES.len())?;
+        for info in crate::quantity::in_order(|i| i.bound) {
+            crate::quantity::serialize_field(&mut m, info, self.of(info.quantity))?;
+        }
+        m.end()
+    }
 }
 
 /// The bound of a radius of gyration k = √(I/m) from those of I and m:

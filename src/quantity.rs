@@ -3,14 +3,21 @@
 //! names), its dimension and shape, how `[expect]` compares it, what
 //! `--bless` writes for it, whether the uncertainty carries its σ, and how
 //! `diff` shows it. `model::expect` reads `[expect]` from this table,
-//! `analysis::check` compares by it, `analysis::sigma` numbers the σ
-//! outputs from it, `analysis::bless` and `analysis::diff` follow it.
+//! `analysis::check` compares by it, `analysis::uncertainty` names and
+//! places the σ outputs by it, `analysis::bless` and `analysis::diff`
+//! follow it.
 //!
-//! Adding a quantity: a `Quantity` variant and its row in `QUANTITIES`
-//! (a test holds the row at the variant's position), its field in
-//! `model::raw::RawExpect` (the serde mirror), and its value in
-//! `analysis::summary::Summary::value`, which the compiler asks for (no
-//! `match` over quantities has a `_` arm).
+//! The table also writes the JSON: `report`'s keys (`Summary`'s
+//! serialization) and `error_bounds`' each in its place, and says how
+//! `--precision auto` and `--rtol` judge each bound (`Judge`).
+//!
+//! Adding a quantity (docs/architecture.md, "Adding a reported quantity"):
+//! a `Quantity` variant and its row in `QUANTITIES` (a test holds the row
+//! at the variant's position); its value, a field of `Summary` with its
+//! arm in `Summary::reported`, and its bound, a field of
+//! `bounds::ErrorBounds` with its arm in `ErrorBounds::of`, both formed in
+//! `analysis::summary`; the compiler asks for the arms (no `match` over
+//! quantities has a `_` arm), the rest follows from the row.
 
 use crate::units::Dim;
 
@@ -34,6 +41,21 @@ pub enum Quantity {
     /// The principal axes about the centre of mass (rows, ascending
     /// moments), compared by angle.
     PrincipalAxes,
+    /// The reference point (`about`; the centre of mass without one), a
+    /// point in the file's frame.
+    ReferencePoint,
+    /// The centre of mass from the reference point, c − p, report axes.
+    CenterOfMassRef,
+    /// The report axes, rows in the file's frame (`axes`; the identity
+    /// for the file's own).
+    ReportAxes,
+    PrincipalMomentsRef,
+    PrincipalAxesRef,
+    RadiiOfGyrationAxesRef,
+    /// ω and α as given (`[analysis]`), and M = I α + ω × H.
+    Omega,
+    Alpha,
+    EulerMoment,
 }
 
 /// How a quantity's value is laid out.
@@ -83,6 +105,8 @@ pub enum Needs {
     Omega,
     /// The predicted body, composed when a file expects it.
     Predicted,
+    /// `alpha` (with `omega`) in `[analysis]`.
+    Alpha,
 }
 
 /// The tolerance `--bless` gives an entry that has none
@@ -117,6 +141,38 @@ pub enum Shown {
     Angle,
 }
 
+/// How `--precision auto` and `--rtol` judge a quantity's error bound
+/// (`analysis::summary::accuracy`), and its place among the warnings.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Judge {
+    /// Not judged.
+    No,
+    /// As a whole: its largest bound against its largest entry (the
+    /// relative error of a vector or tensor is a norm's); zero within its
+    /// bound, against `Scale`.
+    Whole(u8, Scale),
+    /// Each component against itself (`key[i]`); zero within its bound, in
+    /// `extended` only, against `Scale`.
+    Each(u8, Scale),
+    /// Each axis's bound, an angle, against `rtol` radians; axes of moments
+    /// flagged equal are a choice, not judged.
+    Angle(u8),
+}
+
+/// What a value zero within its bound is judged against (`Judge`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// The body's length: the largest coordinate of the centre of mass or
+    /// radius of gyration.
+    Length,
+    /// The body's largest principal moment, about either point.
+    Moment,
+    /// Its own largest component.
+    Own,
+    /// Zero: a value zero within its bound falls short.
+    Zero,
+}
+
 /// One row of the table.
 #[derive(Debug, Clone, Copy)]
 pub struct Info {
@@ -127,7 +183,12 @@ pub struct Info {
     /// (`centre of mass x`, `principal moment I1`, `Ixy`).
     pub label: &'static str,
     pub dim: Dim,
+    /// Its SI unit as the JSON names it (`units`; ASCII).
+    pub unit: &'static str,
     pub layout: Layout,
+    /// Whether `[expect]` takes it (the values given, and those about the
+    /// reference point, it does not).
+    pub expected: bool,
     pub compare: Compare,
     pub needs: Needs,
     /// The first of its outputs in the uncertainty (`analysis::sigma`):
@@ -137,44 +198,93 @@ pub struct Info {
     pub blessed_by_default: bool,
     pub bless: Bless,
     pub diff: Shown,
+    /// Its place among the keys of `report`'s JSON (`Summary`'s
+    /// serialization), within its group: the body's values before its
+    /// `parts`, what needs ω or α after them (`Info::turning`). `None` for
+    /// the predicted body's, which `report` does not write. A new quantity
+    /// takes the next number: a key is added after its group's others.
+    pub report: Option<u8>,
+    /// For a set of axes, the key of the moments flagged equal (their axes
+    /// a choice), written after the axes.
+    pub equal: Option<&'static str>,
+    /// Its place in `error_bounds` (`bounds::ErrorBounds`), which bounds it
+    /// absolutely, component by component in its unit (a set of axes: an
+    /// angle per axis, radians); `None` for a value given, which is exact.
+    pub bound: Option<u8>,
+    pub judge: Judge,
 }
 
-const fn row(quantity: Quantity, key: &'static str, dim: Dim, layout: Layout) -> Info {
+const fn row(
+    quantity: Quantity,
+    key: &'static str,
+    (dim, unit): (Dim, &'static str),
+    layout: Layout,
+) -> Info {
     Info {
         quantity,
         key,
         label: key,
         dim,
+        unit,
         layout,
+        expected: true,
         compare: Compare::Bound,
         needs: Needs::Nothing,
         sigma: None,
         blessed_by_default: false,
         bless: Bless::Absolute,
         diff: Shown::No,
+        report: None,
+        equal: None,
+        bound: None,
+        judge: Judge::No,
     }
 }
 
+/// A row of a quantity that `report` writes but `[expect]` does not take.
+const fn reported(
+    quantity: Quantity,
+    key: &'static str,
+    dim: (Dim, &'static str),
+    layout: Layout,
+) -> Info {
+    Info {
+        expected: false,
+        ..row(quantity, key, dim, layout)
+    }
+}
+
+const MASS: (Dim, &str) = (Dim::MASS, "kg");
+const LENGTH: (Dim, &str) = (Dim::LENGTH, "m");
+const INERTIA: (Dim, &str) = (Dim::INERTIA, "kg*m^2");
+const NUMBER: (Dim, &str) = (Dim::DIMENSIONLESS, "");
+
 /// Every reported quantity, in the order of `Quantity` (the order in which
 /// `[expect]` is read, hence which of two errors is reported).
-pub const QUANTITIES: [Info; 13] = [
+pub const QUANTITIES: [Info; 22] = [
     Info {
         label: "mass",
         sigma: Some(0),
         blessed_by_default: true,
         bless: Bless::Relative,
         diff: Shown::Own,
-        ..row(Quantity::Mass, "mass", Dim::MASS, Layout::Scalar)
+        report: Some(0),
+        bound: Some(0),
+        judge: Judge::Each(6, Scale::Own),
+        ..row(Quantity::Mass, "mass", MASS, Layout::Scalar)
     },
     Info {
         label: "centre of mass ",
         sigma: Some(1),
         blessed_by_default: true,
         diff: Shown::Position,
+        report: Some(1),
+        bound: Some(1),
+        judge: Judge::Whole(0, Scale::Length),
         ..row(
             Quantity::CenterOfMass,
             "center_of_mass",
-            Dim::LENGTH,
+            LENGTH,
             Layout::Vector,
         )
     },
@@ -183,10 +293,13 @@ pub const QUANTITIES: [Info; 13] = [
         sigma: Some(10),
         blessed_by_default: true,
         diff: Shown::Own,
+        report: Some(7),
+        bound: Some(5),
+        judge: Judge::Each(7, Scale::Own),
         ..row(
             Quantity::PrincipalMoments,
             "principal_moments",
-            Dim::INERTIA,
+            INERTIA,
             Layout::Ordered,
         )
     },
@@ -194,47 +307,61 @@ pub const QUANTITIES: [Info; 13] = [
         label: "I",
         sigma: Some(4),
         diff: Shown::Own,
+        report: Some(5),
+        bound: Some(3),
+        judge: Judge::Whole(2, Scale::Moment),
+        ..row(Quantity::InertiaCom, "inertia_com", INERTIA, Layout::Matrix)
+    },
+    Info {
+        report: Some(6),
+        bound: Some(4),
+        judge: Judge::Whole(3, Scale::Moment),
+        ..row(Quantity::InertiaRef, "inertia_ref", INERTIA, Layout::Matrix)
+    },
+    Info {
+        report: Some(11),
+        bound: Some(9),
+        judge: Judge::Each(9, Scale::Own),
         ..row(
-            Quantity::InertiaCom,
-            "inertia_com",
-            Dim::INERTIA,
-            Layout::Matrix,
+            Quantity::RadiiOfGyration,
+            "radii_of_gyration",
+            LENGTH,
+            Layout::Ordered,
         )
     },
-    row(
-        Quantity::InertiaRef,
-        "inertia_ref",
-        Dim::INERTIA,
-        Layout::Matrix,
-    ),
-    row(
-        Quantity::RadiiOfGyration,
-        "radii_of_gyration",
-        Dim::LENGTH,
-        Layout::Ordered,
-    ),
-    row(
-        Quantity::RadiiOfGyrationAxes,
-        "radii_of_gyration_axes",
-        Dim::LENGTH,
-        Layout::Vector,
-    ),
+    Info {
+        report: Some(12),
+        bound: Some(10),
+        judge: Judge::Each(10, Scale::Own),
+        ..row(
+            Quantity::RadiiOfGyrationAxes,
+            "radii_of_gyration_axes",
+            LENGTH,
+            Layout::Vector,
+        )
+    },
     Info {
         needs: Needs::Omega,
+        report: Some(15),
+        bound: Some(13),
+        judge: Judge::Whole(4, Scale::Zero),
         ..row(
             Quantity::AngularMomentum,
             "angular_momentum",
-            Dim::ANGULAR_MOMENTUM,
+            (Dim::ANGULAR_MOMENTUM, "N*m*s"),
             Layout::Vector,
         )
     },
     Info {
         needs: Needs::Omega,
         bless: Bless::Relative,
+        report: Some(16),
+        bound: Some(14),
+        judge: Judge::Each(14, Scale::Own),
         ..row(
             Quantity::KineticEnergy,
             "kinetic_energy",
-            Dim::ENERGY,
+            (Dim::ENERGY, "J"),
             Layout::Scalar,
         )
     },
@@ -245,7 +372,7 @@ pub const QUANTITIES: [Info; 13] = [
         ..row(
             Quantity::PredictedMass,
             "predicted_mass",
-            Dim::MASS,
+            MASS,
             Layout::Scalar,
         )
     },
@@ -255,7 +382,7 @@ pub const QUANTITIES: [Info; 13] = [
         ..row(
             Quantity::PredictedCenterOfMass,
             "predicted_center_of_mass",
-            Dim::LENGTH,
+            LENGTH,
             Layout::Vector,
         )
     },
@@ -265,7 +392,7 @@ pub const QUANTITIES: [Info; 13] = [
         ..row(
             Quantity::PredictedInertiaCom,
             "predicted_inertia_com",
-            Dim::INERTIA,
+            INERTIA,
             Layout::Matrix,
         )
     },
@@ -274,14 +401,195 @@ pub const QUANTITIES: [Info; 13] = [
         compare: Compare::Angle,
         bless: Bless::Degrees,
         diff: Shown::Angle,
+        report: Some(8),
+        equal: Some("equal_moments"),
+        bound: Some(6),
+        judge: Judge::Angle(12),
         ..row(
             Quantity::PrincipalAxes,
             "principal_axes",
-            Dim::DIMENSIONLESS,
+            NUMBER,
             Layout::Axes,
         )
     },
+    Info {
+        report: Some(2),
+        bound: Some(2),
+        ..reported(
+            Quantity::ReferencePoint,
+            "reference_point",
+            LENGTH,
+            Layout::Vector,
+        )
+    },
+    Info {
+        report: Some(3),
+        bound: Some(12),
+        judge: Judge::Whole(1, Scale::Length),
+        ..reported(
+            Quantity::CenterOfMassRef,
+            "center_of_mass_ref",
+            LENGTH,
+            Layout::Vector,
+        )
+    },
+    // Rows, not a symmetric matrix; never compared.
+    Info {
+        report: Some(4),
+        ..reported(Quantity::ReportAxes, "axes", NUMBER, Layout::Matrix)
+    },
+    Info {
+        report: Some(9),
+        bound: Some(7),
+        judge: Judge::Each(8, Scale::Own),
+        ..reported(
+            Quantity::PrincipalMomentsRef,
+            "principal_moments_ref",
+            INERTIA,
+            Layout::Ordered,
+        )
+    },
+    Info {
+        report: Some(10),
+        equal: Some("equal_moments_ref"),
+        bound: Some(8),
+        judge: Judge::Angle(13),
+        ..reported(
+            Quantity::PrincipalAxesRef,
+            "principal_axes_ref",
+            NUMBER,
+            Layout::Axes,
+        )
+    },
+    Info {
+        report: Some(13),
+        bound: Some(11),
+        judge: Judge::Each(11, Scale::Own),
+        ..reported(
+            Quantity::RadiiOfGyrationAxesRef,
+            "radii_of_gyration_axes_ref",
+            LENGTH,
+            Layout::Vector,
+        )
+    },
+    Info {
+        needs: Needs::Omega,
+        report: Some(14),
+        ..reported(
+            Quantity::Omega,
+            "omega",
+            (Dim::ANGULAR_VELOCITY, "rad/s"),
+            Layout::Vector,
+        )
+    },
+    Info {
+        needs: Needs::Alpha,
+        report: Some(17),
+        ..reported(
+            Quantity::Alpha,
+            "alpha",
+            (Dim::ANGULAR_ACCELERATION, "rad/s^2"),
+            Layout::Vector,
+        )
+    },
+    // A moment has the dimension of an energy, but is not one: N·m.
+    Info {
+        needs: Needs::Alpha,
+        report: Some(18),
+        bound: Some(15),
+        judge: Judge::Whole(5, Scale::Zero),
+        ..reported(
+            Quantity::EulerMoment,
+            "euler_moment",
+            (Dim::ENERGY, "N*m"),
+            Layout::Vector,
+        )
+    },
 ];
+
+/// The rows in the order of `place` (`Info::report`, `Info::bound`, the
+/// place of `Info::judge`), those without one left out.
+pub fn in_order(place: fn(&Info) -> Option<u8>) -> impl Iterator<Item = &'static Info> {
+    let mut rows: Vec<(u8, &'static Info)> = QUANTITIES
+        .iter()
+        .filter_map(|i| place(i).map(|p| (p, i)))
+        .collect();
+    rows.sort_by_key(|r| r.0);
+    rows.into_iter().map(|r| r.1)
+}
+
+impl Info {
+    /// Whether it is one of what the body turning adds (it needs ω or α),
+    /// which `report`'s JSON writes after the parts.
+    pub fn turning(&self) -> bool {
+        match self.needs {
+            Needs::Omega | Needs::Alpha => true,
+            Needs::Nothing | Needs::Predicted => false,
+        }
+    }
+}
+
+/// Write a quantity's value or bound `v` into a JSON object under its key
+/// (a set of axes' value: its equal moments after it, under `Info::equal`);
+/// nothing where it is absent.
+pub fn serialize_field<M: serde::ser::SerializeStruct>(
+    m: &mut M,
+    info: &Info,
+    v: Option<Value>,
+) -> Result<(), M::Error> {
+    let Some(v) = v else { return Ok(()) };
+    m.serialize_field(info.key, &v)?;
+    match (v, info.equal) {
+        (Value::Axes(_, equal), Some(key)) => m.serialize_field(key, equal),
+        (Value::Scalar(_) | Value::Triple(_) | Value::Rows(_) | Value::Axes(..), _) => Ok(()),
+    }
+}
+
+impl Judge {
+    /// Its place among the warnings.
+    pub fn place(self) -> Option<u8> {
+        match self {
+            Judge::No => None,
+            Judge::Whole(n, _) | Judge::Each(n, _) | Judge::Angle(n) => Some(n),
+        }
+    }
+}
+
+/// A quantity's value, or its bound, as `Summary` and `ErrorBounds` hold
+/// it: its numbers in their shape, borrowed.
+#[derive(Debug, Clone, Copy)]
+pub enum Value<'a> {
+    Scalar(f64),
+    /// A vector, or an ordered triple (a set of axes' bound, an angle per
+    /// axis).
+    Triple(&'a [f64; 3]),
+    /// A matrix's rows.
+    Rows(&'a [[f64; 3]; 3]),
+    /// Axes' rows and the moments flagged equal (`Info::equal`).
+    Axes(&'a [[f64; 3]; 3], &'a [usize]),
+}
+
+impl Value<'_> {
+    /// Component `k` (row-major for rows).
+    pub fn component(self, k: usize) -> f64 {
+        match self {
+            Value::Scalar(x) => x,
+            Value::Triple(v) => v[k],
+            Value::Rows(m) | Value::Axes(m, _) => m[k / 3][k % 3],
+        }
+    }
+}
+
+/// Its numbers alone (a set of axes without its equal moments).
+impl serde::Serialize for Value<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Value::Scalar(x) => x.serialize(s),
+            Value::Triple(v) => v.serialize(s),
+            Value::Rows(m) | Value::Axes(m, _) => m.serialize(s),
+        }
+    }
+}
 
 /// How many σ outputs one body has (`analysis::sigma`): mass, centre of
 /// mass, the six entries of the inertia tensor, the principal moments.
@@ -306,6 +614,16 @@ impl Quantity {
     pub fn info(self) -> &'static Info {
         &QUANTITIES[self as usize]
     }
+}
+
+/// Quantity `q`'s SI unit as the JSON names it (`Info::unit`).
+pub const fn unit(q: Quantity) -> &'static str {
+    QUANTITIES[q as usize].unit
+}
+
+/// The row of the quantity with JSON key `key`.
+pub fn by_key(key: &str) -> Option<&'static Info> {
+    QUANTITIES.iter().find(|i| i.key == key)
 }
 
 /// The components of a vector, and of a matrix's rows and columns.
@@ -367,6 +685,42 @@ mod tests {
         assert!(taken[..OUTPUTS].iter().all(|t| *t), "{taken:?}");
     }
 
+    /// The places of `place` are 0, 1, 2, … each once.
+    fn dense(place: fn(&Info) -> Option<u8>, what: &str) {
+        let mut places: Vec<u8> = QUANTITIES.iter().filter_map(place).collect();
+        places.sort_unstable();
+        let n = u8::try_from(places.len()).unwrap();
+        assert_eq!(places, (0..n).collect::<Vec<_>>(), "{what}");
+    }
+
+    #[test]
+    fn the_places_in_the_report_in_error_bounds_and_among_the_warnings_are_each_taken_once() {
+        dense(|i| i.report, "report");
+        dense(|i| i.bound, "error_bounds");
+        dense(|i| i.judge.place(), "warnings");
+    }
+
+    #[test]
+    fn a_set_of_axes_in_the_report_names_its_equal_moments_and_nothing_else_does() {
+        for info in &QUANTITIES {
+            let axes = info.layout == Layout::Axes && info.report.is_some();
+            assert_eq!(info.equal.is_some(), axes, "{}", info.key);
+        }
+    }
+
+    #[test]
+    fn only_a_bounded_quantity_is_judged_and_an_angle_only_for_axes() {
+        for info in &QUANTITIES {
+            if info.judge.place().is_some() {
+                assert!(info.bound.is_some(), "{}", info.key);
+            }
+            let angle = matches!(info.judge, Judge::Angle(_));
+            if angle {
+                assert_eq!(info.layout, Layout::Axes, "{}", info.key);
+            }
+        }
+    }
+
     #[test]
     fn every_key_is_distinct() {
         let mut keys: Vec<&str> = QUANTITIES.iter().map(|i| i.key).collect();
@@ -379,7 +733,7 @@ mod tests {
 
     #[test]
     fn a_quantity_compared_by_angle_is_a_set_of_axes() {
-        for info in &QUANTITIES {
+        for info in QUANTITIES.iter().filter(|i| i.expected) {
             assert_eq!(
                 info.compare == Compare::Angle,
                 info.layout == Layout::Axes,

@@ -41,29 +41,8 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
     // toml_edit writes every line ending as LF: it edits the text with LF
     // endings, and each line gets its own ending back afterwards.
     let endings = Endings::of(&source.text);
-    let mut doc: DocumentMut = match endings.lf.parse() {
-        Ok(d) => d,
-        // Let the model report the syntax error with its usual diagnostic.
-        Err(_) => {
-            return Err(Model::parse_with(&source, &settings.includes)
-                .err()
-                .unwrap_or_else(|| Diagnostic::file(path, "cannot parse")));
-        }
-    };
-    // Entries with `value` but no `tol` get a placeholder first, so that
-    // the file parses as a model; their tolerance is computed from the
-    // value written in its place (`write_values`).
-    let untoleranced = add_placeholder_tols(&mut doc);
-    let staged = Source::new(source.name.clone(), doc.to_string());
-    let Loaded { model, summary, .. } = super::load_source(staged, settings)?;
-
-    let mut changed = !untoleranced.is_empty();
-    if doc.get("expect").is_none() {
-        add_default_expect(&mut doc, &summary);
-        changed = true;
-    } else {
-        changed |= write_values(&mut doc, &model.expect, &summary, &untoleranced);
-    }
+    let mut doc = parse(&endings, &source, settings, path)?;
+    let changed = bless_document(&mut doc, &source, settings)?;
     let text = endings.restore(&doc.to_string());
     if text == source.text {
         return Ok(false);
@@ -79,6 +58,44 @@ pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
         text
     };
     file.replace(&text, "the blessed file")?;
+    Ok(changed)
+}
+
+/// The file's text (LF endings) as a document to edit; a syntax error is
+/// the model's, with its usual diagnostic.
+fn parse(
+    endings: &Endings,
+    source: &Source,
+    settings: &Settings,
+    path: &str,
+) -> Result<DocumentMut, Diagnostic> {
+    endings.lf.parse().map_err(|_| {
+        Model::parse_with(source, &settings.includes)
+            .err()
+            .unwrap_or_else(|| Diagnostic::file(path, "cannot parse"))
+    })
+}
+
+/// The computed values written into `doc`'s `[expect]` (a default one
+/// added when it has none): whether anything changed.
+fn bless_document(
+    doc: &mut DocumentMut,
+    source: &Source,
+    settings: &Settings,
+) -> Result<bool, Diagnostic> {
+    // Entries with `value` but no `tol` get a placeholder first, so that
+    // the file parses as a model; their tolerance is computed from the
+    // value written in its place (`write_values`).
+    let untoleranced = add_placeholder_tols(doc);
+    let staged = Source::new(source.name.clone(), doc.to_string());
+    let Loaded { model, summary, .. } = super::load_source(staged, settings)?;
+    let mut changed = !untoleranced.is_empty();
+    if doc.get("expect").is_none() {
+        add_default_expect(doc, &summary);
+        changed = true;
+    } else {
+        changed |= write_values(doc, &model.expect, &summary, &untoleranced);
+    }
     Ok(changed)
 }
 
@@ -127,10 +144,28 @@ impl Endings {
     /// `edited` (an edit of `lf`, LF endings) with the endings given back.
     fn restore(&self, edited: &str) -> String {
         let new: Vec<&str> = edited.split('\n').collect();
+        let crlf = self.endings_of(&new);
+        let mut out = String::with_capacity(edited.len() + new.len());
+        let last = new.len() - 1;
+        for (i, (line, crlf)) in new.iter().zip(crlf).enumerate() {
+            out.push_str(line);
+            if i < last {
+                out.push_str(if crlf.unwrap_or(self.mostly_crlf) {
+                    "\r\n"
+                } else {
+                    "\n"
+                });
+            }
+        }
+        out
+    }
+
+    /// The ending of each of the `new` lines: of the old line it is, or
+    /// replaces; `None` for a line new to the text.
+    fn endings_of(&self, new: &[&str]) -> Vec<Option<bool>> {
         let old: Vec<&str> = self.lines.iter().map(String::as_str).collect();
-        // The ending of each new line: of the old line it is, or replaces.
         let mut crlf: Vec<Option<bool>> = vec![None; new.len()];
-        for op in similar::capture_diff_slices(similar::Algorithm::Myers, &old, &new) {
+        for op in similar::capture_diff_slices(similar::Algorithm::Myers, &old, new) {
             match op {
                 similar::DiffOp::Equal {
                     old_index,
@@ -151,19 +186,7 @@ impl Endings {
                 similar::DiffOp::Delete { .. } | similar::DiffOp::Insert { .. } => {}
             }
         }
-        let mut out = String::with_capacity(edited.len() + new.len());
-        let last = new.len() - 1;
-        for (i, (line, crlf)) in new.iter().zip(crlf).enumerate() {
-            out.push_str(line);
-            if i < last {
-                out.push_str(if crlf.unwrap_or(self.mostly_crlf) {
-                    "\r\n"
-                } else {
-                    "\n"
-                });
-            }
-        }
-        out
+        crlf
     }
 }
 
@@ -176,46 +199,45 @@ type EntryPath = Vec<String>;
 /// their paths, whose tolerance `write_values` then computes from the
 /// value it writes.
 fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
-    let Some(expect) = doc.get_mut("expect") else {
-        return Vec::new();
-    };
     let mut added = Vec::new();
-    fn visit(entry: &mut Item, path: &mut EntryPath, added: &mut Vec<EntryPath>) {
-        let Some(t) = entry.as_table_like_mut() else {
-            return;
-        };
-        let (key, mut tol) = tolerance_of(&path[0]);
-        if t.get("value").is_some() && t.get(key).is_none() {
-            // Any tolerance the reader takes (`tol`'s is replaced before
-            // the file is written).
-            // In an inline table the space before `}` trails the last value;
-            // move it after the new `tol`.
-            if let Some(Item::Value(v)) = t.get_mut("value") {
-                let suffix = v.decor().suffix().cloned();
-                if let Some(sfx) = suffix {
-                    v.decor_mut().set_suffix("");
-                    tol.decor_mut().set_suffix(sfx);
-                }
-            }
-            t.insert(key, Item::Value(tol));
-            added.push(path.clone());
-        }
-        for key in [
-            "x", "y", "z", "xx", "yy", "zz", "xy", "xz", "yz", "1", "2", "3",
-        ] {
-            if let Some(c) = t.get_mut(key) {
-                path.push(key.to_string());
-                visit(c, path, added);
-                path.pop();
-            }
-        }
-    }
-    if let Some(t) = expect.as_table_like_mut() {
+    if let Some(t) = doc.get_mut("expect").and_then(Item::as_table_like_mut) {
         for (key, entry) in t.iter_mut() {
-            visit(entry, &mut vec![key.get().to_string()], &mut added);
+            placeholder_tols(entry, &mut vec![key.get().to_string()], &mut added);
         }
     }
     added
+}
+
+/// `add_placeholder_tols` of one entry (at `path`) and its components.
+fn placeholder_tols(entry: &mut Item, path: &mut EntryPath, added: &mut Vec<EntryPath>) {
+    let Some(t) = entry.as_table_like_mut() else {
+        return;
+    };
+    let (key, mut tol) = tolerance_of(&path[0]);
+    if t.get("value").is_some() && t.get(key).is_none() {
+        // Any tolerance the reader takes (`tol`'s is replaced before
+        // the file is written).
+        // In an inline table the space before `}` trails the last value;
+        // move it after the new `tol`.
+        if let Some(Item::Value(v)) = t.get_mut("value") {
+            let suffix = v.decor().suffix().cloned();
+            if let Some(sfx) = suffix {
+                v.decor_mut().set_suffix("");
+                tol.decor_mut().set_suffix(sfx);
+            }
+        }
+        t.insert(key, Item::Value(tol));
+        added.push(path.clone());
+    }
+    for key in [
+        "x", "y", "z", "xx", "yy", "zz", "xy", "xz", "yz", "1", "2", "3",
+    ] {
+        if let Some(c) = t.get_mut(key) {
+            path.push(key.to_string());
+            placeholder_tols(c, path, added);
+            path.pop();
+        }
+    }
 }
 
 /// The key of an `[expect]` entry's tolerance and a value it takes:
@@ -307,32 +329,11 @@ fn write_values(
     s: &Summary,
     untoleranced: &[EntryPath],
 ) -> bool {
-    // Checks of one entry share its span; group them in order.
-    let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
-    for c in checks
-        .iter()
-        .filter(|c| matches!(c.bound, Bound::Value { .. } | Bound::Axes { .. }))
-    {
-        entries.entry(c.span.start).or_default().push(c);
-    }
     let mut changed = false;
-    for group in entries.values() {
+    for group in entries(checks).values() {
         let first = group[0];
         let scale = written_scale(s.file_units, first.dim);
-        // An entry compared by angle is one check of the whole value.
-        let measured: Vec<f64> = group
-            .iter()
-            .flat_map(|c| match c.bound {
-                Bound::Axes { .. } => (0..9)
-                    .map(|component| Target {
-                        component,
-                        ..c.target
-                    })
-                    .collect(),
-                Bound::Value { .. } | Bound::Range { .. } => vec![c.target],
-            })
-            .map(|t| s.value(t) / scale)
-            .collect();
+        let measured = measured(group, s, scale);
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
         let mut path: Vec<&str> = first.name.split('.').collect();
@@ -343,28 +344,69 @@ fn write_values(
             .iter()
             .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
             .then(|| default_tol(&measured, first.target, first.dim, scale, s));
-        let value = written(&measured);
-        if let Some(t) = entry_mut(doc, &path).and_then(Item::as_table_like_mut)
-            && let Some(old) = t.get_mut("value")
-        {
-            let decor = old.as_value().map(|v| v.decor().clone());
-            let mut new = value;
-            if let Some(d) = decor {
-                *new.decor_mut() = d;
-            }
-            if old.as_value().map(|v| v.to_string()) != Some(new.to_string()) {
-                *old = Item::Value(new);
-                changed = true;
-            }
-            if let Some(tol) = tol
-                && let Some(Item::Value(placeholder)) = t.get_mut(tolerance_of(path[0]).0)
-            {
-                let mut tol = tol;
-                *tol.decor_mut() = placeholder.decor().clone();
-                *placeholder = tol;
-                changed = true;
-            }
-        }
+        changed |= write_entry(doc, &path, written(&measured), tol);
+    }
+    changed
+}
+
+/// The checks of each entry with a `value`, in order: the checks of one
+/// entry share its span.
+fn entries(checks: &[Check]) -> BTreeMap<usize, Vec<&Check>> {
+    let mut entries: BTreeMap<usize, Vec<&Check>> = BTreeMap::new();
+    for c in checks
+        .iter()
+        .filter(|c| matches!(c.bound, Bound::Value { .. } | Bound::Axes { .. }))
+    {
+        entries.entry(c.span.start).or_default().push(c);
+    }
+    entries
+}
+
+/// The measured values of one entry's checks, in the unit written
+/// (`scale` SI per unit). An entry compared by angle is one check of the
+/// whole value.
+fn measured(group: &[&Check], s: &Summary, scale: f64) -> Vec<f64> {
+    group
+        .iter()
+        .flat_map(|c| match c.bound {
+            Bound::Axes { .. } => (0..9)
+                .map(|component| Target {
+                    component,
+                    ..c.target
+                })
+                .collect(),
+            Bound::Value { .. } | Bound::Range { .. } => vec![c.target],
+        })
+        .map(|t| s.value(t) / scale)
+        .collect()
+}
+
+/// `value` written into the entry at `path`, keeping the old value's
+/// decor, and `tol` in place of its placeholder tolerance: whether the
+/// entry changed.
+fn write_entry(doc: &mut DocumentMut, path: &[&str], value: Value, tol: Option<Value>) -> bool {
+    let Some(t) = entry_mut(doc, path).and_then(Item::as_table_like_mut) else {
+        return false;
+    };
+    let Some(old) = t.get_mut("value") else {
+        return false;
+    };
+    let mut changed = false;
+    let decor = old.as_value().map(|v| v.decor().clone());
+    let mut new = value;
+    if let Some(d) = decor {
+        *new.decor_mut() = d;
+    }
+    if old.as_value().map(|v| v.to_string()) != Some(new.to_string()) {
+        *old = Item::Value(new);
+        changed = true;
+    }
+    if let Some(mut tol) = tol
+        && let Some(Item::Value(placeholder)) = t.get_mut(tolerance_of(path[0]).0)
+    {
+        *tol.decor_mut() = placeholder.decor().clone();
+        *placeholder = tol;
+        changed = true;
     }
     changed
 }

@@ -1,5 +1,5 @@
 //! What `check` finds in one part file: each `[expect]` entry against the
-//! summary, and the body's physical validity. `commands::check` walks the
+//! summary, and the body's physical validity. `check_run` walks the
 //! files; `render::check` prints the results.
 
 use super::Loaded;

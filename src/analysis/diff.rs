@@ -156,7 +156,16 @@ impl Props {
             | Quantity::KineticEnergy
             | Quantity::PredictedMass
             | Quantity::PredictedCenterOfMass
-            | Quantity::PredictedInertiaCom => None,
+            | Quantity::PredictedInertiaCom
+            | Quantity::ReferencePoint
+            | Quantity::CenterOfMassRef
+            | Quantity::ReportAxes
+            | Quantity::PrincipalMomentsRef
+            | Quantity::PrincipalAxesRef
+            | Quantity::RadiiOfGyrationAxesRef
+            | Quantity::Omega
+            | Quantity::Alpha
+            | Quantity::EulerMoment => None,
         }
     }
 

@@ -12,9 +12,12 @@
 pub mod bless;
 pub mod budget;
 pub mod check;
+pub mod check_run;
 pub mod diff;
 pub mod errors;
 pub mod ideal;
+pub mod link;
+pub mod search;
 pub mod sigma;
 pub mod summary;
 pub mod uncertainty;

@@ -5,6 +5,7 @@
 pub mod accuracy;
 mod axes;
 mod cut_outs;
+mod reported;
 mod rows;
 
 pub use accuracy::{Accuracy, AccuracyWarning, PrecisionChoice};
@@ -17,11 +18,10 @@ use super::ideal;
 use crate::bounds;
 use crate::compose::{self, Precision, Principal};
 use crate::mass::inertia_of_rows;
-use crate::model::expect::Target;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
 use crate::part::SiFactors;
-use crate::quantity::Quantity;
+use crate::quantity::{Quantity, unit};
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -58,21 +58,22 @@ pub struct BodyUnits {
     pub inertia: &'static str,
 }
 
+/// Each the unit of a quantity of the table (`quantity::Info::unit`).
 pub const BODY_UNITS: BodyUnits = BodyUnits {
-    mass: "kg",
-    length: "m",
-    inertia: "kg*m^2",
+    mass: unit(Quantity::Mass),
+    length: unit(Quantity::CenterOfMass),
+    inertia: unit(Quantity::InertiaCom),
 };
 
 const SI_UNITS: SiUnits = SiUnits {
     mass: BODY_UNITS.mass,
     length: BODY_UNITS.length,
     inertia: BODY_UNITS.inertia,
-    angular_velocity: "rad/s",
-    angular_acceleration: "rad/s^2",
-    angular_momentum: "N*m*s",
-    energy: "J",
-    moment: "N*m",
+    angular_velocity: unit(Quantity::Omega),
+    angular_acceleration: unit(Quantity::Alpha),
+    angular_momentum: unit(Quantity::AngularMomentum),
+    energy: unit(Quantity::KineticEnergy),
+    moment: unit(Quantity::EulerMoment),
 };
 
 #[derive(Debug, Clone, Serialize)]
@@ -105,21 +106,21 @@ pub struct AssemblySummary {
     pub principal_moment_share: [Option<f64>; 3],
 }
 
-/// Everything `report` prints, in SI. Field names are the JSON keys.
-#[derive(Debug, Clone, Serialize)]
+/// Everything `report` prints, in SI. Its JSON (`Serialize`, below) is
+/// written by the quantity table: each quantity under its key, in its
+/// place (`quantity::Info::report`); the other fields under their names.
+#[derive(Debug, Clone)]
 pub struct Summary {
     pub format_version: u32,
     /// The massprop that computed it (`MASSPROP_VERSION`).
     pub massprop_version: &'static str,
     /// The part file, as named on the command line (`<stdin>` for standard
     /// input); absent for a summary not made from a file.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub source: Option<String>,
     /// The file's `name`; with `--only`, the sub-assembly's.
     pub name: Option<String>,
     /// With `--only`: the path of the sub-assembly reported, outermost
     /// first.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub sub_assembly: Option<Vec<String>>,
     pub products_convention: Products,
     /// The arithmetic used (`--precision`).
@@ -156,22 +157,15 @@ pub struct Summary {
     pub radii_of_gyration_axes_ref: [f64; 3],
     /// A row per part, made as it is written (`Parts::each`).
     pub parts: Parts,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub omega: Option<[f64; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub angular_momentum: Option<[f64; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub kinetic_energy: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub alpha: Option<[f64; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub euler_moment: Option<[f64; 3]>,
     /// The principal moments with thin plates and slender rods made solid;
     /// present only when a part gives its `thickness` or `diameter`.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub idealisation: Option<ideal::Idealisation>,
     /// The uncertainty from the file's tolerances (`--uncertainty`).
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub uncertainty: Option<super::sigma::Uncertainty>,
     /// How far each value may lie from the exact value for the file's
     /// numbers, for the arithmetic used (`bounds`): absolute, SI.
@@ -183,49 +177,17 @@ pub struct Summary {
     pub accuracy_warnings: Vec<AccuracyWarning>,
     /// The sub-assemblies (`include`), parents before children; absent
     /// when there are none.
-    #[serde(skip_serializing_if = "Assemblies::is_empty")]
     pub assemblies: Assemblies,
     /// The `--precision` asked for (`precision` is the one used).
-    #[serde(skip)]
     pub requested: PrecisionChoice,
     /// Whether a reference point was given (else it is the centre of mass).
-    #[serde(skip)]
     pub reference_given: bool,
     /// The file's units, for the table.
-    #[serde(skip)]
     pub file_units: FileUnits,
     /// The predicted body's summary (basic mass and growth,
     /// `analysis::budget`), made by `load` only for a file that expects
     /// something of it (`predicted_mass`, …).
-    #[serde(skip)]
     pub predicted: Option<Box<Summary>>,
-}
-
-impl Summary {
-    /// The value an `[expect]` target reads, SI: component `k` of a
-    /// quantity (row-major for a matrix); NaN where it was not computed
-    /// (no ω, no predicted body).
-    pub fn value(&self, t: Target) -> f64 {
-        let k = t.component;
-        let row = |m: &[[f64; 3]; 3]| m[k / 3][k % 3];
-        // The predicted body's, `load` made when the file expects it.
-        let predicted = |f: &dyn Fn(&Summary) -> f64| self.predicted.as_deref().map_or(f64::NAN, f);
-        match t.quantity {
-            Quantity::Mass => self.mass,
-            Quantity::CenterOfMass => self.center_of_mass[k],
-            Quantity::PrincipalMoments => self.principal_moments[k],
-            Quantity::InertiaCom => row(&self.inertia_com),
-            Quantity::InertiaRef => row(&self.inertia_ref),
-            Quantity::RadiiOfGyration => self.radii_of_gyration[k],
-            Quantity::RadiiOfGyrationAxes => self.radii_of_gyration_axes[k],
-            Quantity::AngularMomentum => self.angular_momentum.map_or(f64::NAN, |h| h[k]),
-            Quantity::KineticEnergy => self.kinetic_energy.unwrap_or(f64::NAN),
-            Quantity::PredictedMass => predicted(&|p| p.mass),
-            Quantity::PredictedCenterOfMass => predicted(&|p| p.center_of_mass[k]),
-            Quantity::PredictedInertiaCom => predicted(&|p| row(&p.inertia_com)),
-            Quantity::PrincipalAxes => row(&self.principal_axes),
-        }
-    }
 }
 
 fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {

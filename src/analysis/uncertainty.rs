@@ -6,7 +6,8 @@
 //!
 //! The outputs are the mass, the centre of mass, the inertia tensor about
 //! the centre of mass (in the report axes and products convention) and the
-//! principal moments, in SI (`OUTPUTS`). A tolerance on a part's key is
+//! principal moments, in SI (`N` of them, each its quantity's, numbered by
+//! the table's `quantity::Info::sigma`). A tolerance on a part's key is
 //! an independent source for each copy of the part (an array's copies,
 //! each instance of an included file); one on a parameter or a material
 //! is one source per instance of its file, shared by every key that uses
@@ -25,7 +26,8 @@ use super::summary::Summary;
 use crate::model::Model;
 use crate::model::expect::Target;
 use crate::numeric::{M3, Real};
-use crate::quantity::Layout;
+use crate::quantity::{Layout, QUANTITIES, Quantity, UPPER, component};
+use std::sync::LazyLock;
 
 pub use super::sigma::{Contributor, Exceed, Output, Predicted, Uncertainty};
 
@@ -41,52 +43,69 @@ pub enum Method {
     MonteCarlo { samples: usize, seed: u64 },
 }
 
-/// The outputs, as `[expect]` names their components.
-pub const OUTPUTS: [&str; 13] = [
-    "mass",
-    "center_of_mass.x",
-    "center_of_mass.y",
-    "center_of_mass.z",
-    "inertia_com.xx",
-    "inertia_com.yy",
-    "inertia_com.zz",
-    "inertia_com.xy",
-    "inertia_com.xz",
-    "inertia_com.yz",
-    "principal_moments.1",
-    "principal_moments.2",
-    "principal_moments.3",
-];
-const N: usize = OUTPUTS.len();
-// The table numbers the σ outputs (`quantity::Info::sigma`) of a body of N.
-const _: () = assert!(N == crate::quantity::OUTPUTS);
-/// The predicted body's outputs (a weight statement's, `budget`), as
-/// `[expect]` names those it holds.
-pub const PREDICTED: [&str; N] = [
-    "predicted_mass",
-    "predicted_center_of_mass.x",
-    "predicted_center_of_mass.y",
-    "predicted_center_of_mass.z",
-    "predicted_inertia_com.xx",
-    "predicted_inertia_com.yy",
-    "predicted_inertia_com.zz",
-    "predicted_inertia_com.xy",
-    "predicted_inertia_com.xz",
-    "predicted_inertia_com.yz",
-    "predicted_principal_moments.1",
-    "predicted_principal_moments.2",
-    "predicted_principal_moments.3",
-];
+/// How many outputs one body has: mass, centre of mass, the six entries
+/// of the inertia tensor, the principal moments (`quantity::OUTPUTS`:
+/// the table's `sigma` numbers them).
+const N: usize = crate::quantity::OUTPUTS;
 /// The outputs of both bodies, the basic's first (the predicted body's
 /// are zero where the file has none).
 const W: usize = 2 * N;
 
+/// Where quantity `q`'s outputs begin (`quantity::Info::sigma`).
+const fn first(q: Quantity) -> usize {
+    match QUANTITIES[q as usize].sigma {
+        Some(o) => o,
+        None => panic!("invariant: a quantity whose σ is propagated"),
+    }
+}
+const MASS: usize = first(Quantity::Mass);
+const CENTRE: usize = first(Quantity::CenterOfMass);
+const INERTIA: usize = first(Quantity::InertiaCom);
+const MOMENTS: usize = first(Quantity::PrincipalMoments);
+
+/// The components (row-major for a matrix) of a quantity's value that
+/// its outputs are, in their order: a symmetric matrix's upper triangle.
+fn components(layout: Layout) -> Vec<usize> {
+    match layout {
+        Layout::Matrix => UPPER.iter().map(|&(_, i, j)| 3 * i + j).collect(),
+        Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => {
+            (0..layout.count()).collect()
+        }
+    }
+}
+
+/// The basic body's quantities whose σ is propagated, each with its first
+/// output.
+fn propagated() -> impl Iterator<Item = (&'static crate::quantity::Info, usize)> {
+    QUANTITIES
+        .iter()
+        .filter_map(|i| i.sigma.filter(|o| *o < N).map(|o| (i, o)))
+}
+
+/// The outputs' names, as `[expect]` names their components
+/// (`center_of_mass.x`); the predicted body's prefixed `predicted_`
+/// (`predicted_principal_moments.1`, which `[expect]` has no key for).
+static NAMES: LazyLock<Vec<String>> = LazyLock::new(|| {
+    let mut names = vec![String::new(); N];
+    for (info, o) in propagated() {
+        for (n, k) in components(info.layout).into_iter().enumerate() {
+            names[o + n] = match info.layout {
+                Layout::Scalar => info.key.to_string(),
+                Layout::Vector | Layout::Ordered | Layout::Matrix | Layout::Axes => {
+                    format!("{}.{}", info.key, component(info.layout, k))
+                }
+            };
+        }
+    }
+    let predicted: Vec<String> = names.iter().map(|n| format!("predicted_{n}")).collect();
+    names.extend(predicted);
+    names
+});
+
 /// The name of output `o` of `W`.
 fn name_of(o: usize) -> &'static str {
-    if o < N { OUTPUTS[o] } else { PREDICTED[o - N] }
+    &NAMES[o]
 }
-/// The tensor entries of outputs 4..10.
-const ENTRIES: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
 /// How many sources each output names as contributing most.
 const TOP: usize = 3;
 
@@ -166,8 +185,8 @@ impl Reported {
 
     /// The tensor outputs (entries 4..10) of a tensor.
     fn entries(i: &M3<f64>, out: &mut [f64; N]) {
-        for (k, (a, b)) in ENTRIES.iter().enumerate() {
-            out[4 + k] = i[*a][*b];
+        for (k, &(_, a, b)) in UPPER.iter().enumerate() {
+            out[INERTIA + k] = i[a][b];
         }
     }
 
@@ -175,9 +194,9 @@ impl Reported {
     /// first order at the nominal body (S = 0 there).
     fn linear(&self, d: &Sums, m: f64) -> [f64; N] {
         let mut out = [0.0; N];
-        out[0] = d.m * self.mass;
+        out[MASS] = d.m * self.mass;
         for i in 0..3 {
-            out[1 + i] = d.s[i] / m * self.length;
+            out[CENTRE + i] = d.s[i] / m * self.length;
         }
         // I in the report convention is linear in C: its derivative is
         // the same map of dC, less the sign of a product under `positive`
@@ -188,7 +207,7 @@ impl Reported {
         // (in the tensor convention, whatever is shown).
         let t = self.tensor(&di);
         for (k, p) in self.principal.iter().enumerate() {
-            out[10 + k] = (0..3)
+            out[MOMENTS + k] = (0..3)
                 .map(|a| (0..3).map(|b| p[a] * t[a][b] * p[b]).sum::<f64>())
                 .sum();
         }
@@ -216,9 +235,9 @@ impl Reported {
             return None;
         }
         let mut out = [0.0; N];
-        out[0] = m * self.mass;
+        out[MASS] = m * self.mass;
         for i in 0..3 {
-            out[1 + i] = c0[i] + sums.s[i] / m * self.length;
+            out[CENTRE + i] = c0[i] + sums.s[i] / m * self.length;
         }
         let c: M3<f64> = std::array::from_fn(|a| {
             std::array::from_fn(|b| sums.p[a][b] - sums.s[a] * (sums.s[b] / m))
@@ -228,7 +247,7 @@ impl Reported {
         let t = self.tensor(&i);
         let (mut moments, _) = crate::eigen::jacobi::<f64>(t)?;
         moments.sort_by(f64::total_cmp);
-        out[10..13].copy_from_slice(&moments);
+        out[MOMENTS..MOMENTS + 3].copy_from_slice(&moments);
         Some(out)
     }
 }
@@ -421,12 +440,17 @@ fn erfc(x: f64) -> f64 {
     if x >= 0.0 { r } else { 2.0 - r }
 }
 
+/// The outputs as `s` reports them.
 fn nominal_outputs(s: &Summary) -> [f64; N] {
     let mut out = [0.0; N];
-    out[0] = s.mass;
-    out[1..4].copy_from_slice(&s.center_of_mass);
-    Reported::entries(&s.inertia_com, &mut out);
-    out[10..13].copy_from_slice(&s.principal_moments);
+    for (info, o) in propagated() {
+        let v = s
+            .reported(info.quantity)
+            .expect("invariant: a body reports what its σ is propagated for");
+        for (n, k) in components(info.layout).into_iter().enumerate() {
+            out[o + n] = v.component(k);
+        }
+    }
     out
 }
 
@@ -504,17 +528,18 @@ fn split(
 pub fn output_of(t: Target) -> Option<usize> {
     let info = t.quantity.info();
     let first = info.sigma?;
-    let k = t.component;
-    match info.layout {
-        Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => Some(first + k),
+    // An entry below a matrix's diagonal is the one above it.
+    let k = match info.layout {
         Layout::Matrix => {
-            let (a, b) = (k / 3, k % 3);
-            ENTRIES
-                .iter()
-                .position(|e| *e == (a.min(b), a.max(b)))
-                .map(|e| first + e)
+            let (a, b) = (t.component / 3, t.component % 3);
+            3 * a.min(b) + a.max(b)
         }
-    }
+        Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => t.component,
+    };
+    components(info.layout)
+        .iter()
+        .position(|c| *c == k)
+        .map(|n| first + n)
 }
 
 #[cfg(test)]

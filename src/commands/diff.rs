@@ -32,49 +32,20 @@ pub struct Options {
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
-    let tol = o.tol;
-    if !(tol >= 0.0 && tol.is_finite()) {
-        return Err(Diagnostic::plain(format!(
-            "invalid value {tol} for `--tol`: expected a finite relative tolerance ≥ 0, such as 1e-6"
-        )));
-    }
-    if o.old == "-" && o.new == "-" {
-        return Err(Diagnostic::plain(
-            "OLD and NEW cannot both be `-`: standard input can be read only once",
-        ));
-    }
-    // Tensor convention: the JSON contract of diff is fixed to it.
-    let settings = Settings {
-        accuracy: o.accuracy,
-        includes: o.includes.clone(),
-        overrides: crate::analysis::Overrides {
-            axes: o.axes.clone(),
-            about: o.about.clone(),
-            ..Default::default()
-        },
-        ..Settings::default()
-    };
+    refuse_flags(o)?;
+    let settings = settings(o);
     // A robot description on either side: a part file against a link.
     let (old_robot, new_robot) = (robot_source(&o.old)?, robot_source(&o.new)?);
     if old_robot.is_some() || new_robot.is_some() {
         return against_link(o, &settings, old_robot, new_robot, terminal);
     }
-    if o.link.is_some() {
-        return Err(Diagnostic::plain(
-            "`--link` names a link of a robot description (URDF, SDFormat, MJCF), and neither OLD nor NEW is one",
-        ));
-    }
-    if o.about.is_some() {
-        return Err(Diagnostic::plain(
-            "`--about` sets the link frame against a robot description, and neither OLD nor NEW is one: two part files are compared in their own frames",
-        ));
-    }
+    refuse_link_flags(o)?;
     let old = analysis::load(&o.old, &settings)?;
     let new = analysis::load(&o.new, &settings)?;
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
     let colour = terminal.stderr.colour;
     let stderr = super::accuracy_warnings(&old, colour) + &super::accuracy_warnings(&new, colour);
-    let diff = Diff::of(old, new, tol)?;
+    let diff = Diff::of(old, new, o.tol)?;
     Ok(Outcome {
         stdout: super::Stdout::Text(render::render(
             &render::Output::Diff(&diff),
@@ -87,12 +58,57 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     })
 }
 
+/// `--tol` out of range, or standard input named twice.
+fn refuse_flags(o: &Options) -> Result<(), Diagnostic> {
+    let tol = o.tol;
+    if !(tol >= 0.0 && tol.is_finite()) {
+        return Err(Diagnostic::plain(format!(
+            "invalid value {tol} for `--tol`: expected a finite relative tolerance ≥ 0, such as 1e-6"
+        )));
+    }
+    if o.old == "-" && o.new == "-" {
+        return Err(Diagnostic::plain(
+            "OLD and NEW cannot both be `-`: standard input can be read only once",
+        ));
+    }
+    Ok(())
+}
+
+/// `--link` and `--about`, which are for a robot description, given for
+/// two part files.
+fn refuse_link_flags(o: &Options) -> Result<(), Diagnostic> {
+    if o.link.is_some() {
+        return Err(Diagnostic::plain(
+            "`--link` names a link of a robot description (URDF, SDFormat, MJCF), and neither OLD nor NEW is one",
+        ));
+    }
+    if o.about.is_some() {
+        return Err(Diagnostic::plain(
+            "`--about` sets the link frame against a robot description, and neither OLD nor NEW is one: two part files are compared in their own frames",
+        ));
+    }
+    Ok(())
+}
+
+/// What the pipeline is asked for each side. Tensor convention: the JSON
+/// contract of diff is fixed to it.
+fn settings(o: &Options) -> Settings {
+    Settings {
+        accuracy: o.accuracy,
+        includes: o.includes.clone(),
+        overrides: crate::analysis::Overrides {
+            axes: o.axes.clone(),
+            about: o.about.clone(),
+            ..Default::default()
+        },
+        ..Settings::default()
+    }
+}
+
 /// The robot description a path names, read, with its format: by its name
 /// (`*.urdf`, `*.sdf`), else an `*.xml` by its root element. None for a
 /// part file (and for standard input, which is read as one).
-fn robot_source(
-    path: &str,
-) -> Result<Option<(crate::diag::Source, crate::robot::Dialect)>, Diagnostic> {
+fn robot_source(path: &str) -> Result<Option<Robot>, Diagnostic> {
     use crate::robot::Dialect;
     let p = std::path::Path::new(path);
     if path == "-" || crate::io::is_toml(p) || !crate::robot::may_be_robot(p) {
@@ -108,85 +124,27 @@ fn robot_source(
     }
 }
 
+/// A robot description read, with its dialect.
+type Robot = (crate::diag::Source, crate::robot::Dialect);
+
 /// `diff PART ROBOT --link NAME` (either way round): the part file's body
 /// in its link frame against the link's inertial.
 fn against_link(
     o: &Options,
     settings: &Settings,
-    old_robot: Option<(crate::diag::Source, crate::robot::Dialect)>,
-    new_robot: Option<(crate::diag::Source, crate::robot::Dialect)>,
+    old_robot: Option<Robot>,
+    new_robot: Option<Robot>,
     terminal: &super::Terminal,
 ) -> Result<Outcome, Diagnostic> {
     use crate::analysis::diff::{LinkDiff, Props};
-    let (robot, part, robot_is_old) = match (old_robot, new_robot) {
-        (Some(r), None) => (r, &o.new, true),
-        (None, Some(r)) => (r, &o.old, false),
-        _ => {
-            return Err(Diagnostic::plain(format!(
-                "`{}` and `{}` are both robot descriptions: `diff` compares a part file with a link (check each with `massprop check`)",
-                o.old, o.new
-            )));
-        }
-    };
-    let (source, format) = robot;
+    let ((source, format), part, robot_is_old) = sides(o, old_robot, new_robot)?;
     let Some(name) = &o.link else {
         return Err(Diagnostic::plain(format!(
             "`{}` is a robot description: name the link to compare with `--link NAME`",
             source.name
         )));
     };
-    let description = crate::robot::read::read(&source, format)?;
-    let matching: Vec<_> = description
-        .links
-        .iter()
-        .filter(|l| &l.name == name)
-        .collect();
-    let link = match matching.as_slice() {
-        [one] => *one,
-        [] => {
-            let names: Vec<&str> = description.links.iter().map(|l| l.name.as_str()).collect();
-            let shown = names
-                .iter()
-                .take(8)
-                .map(|n| format!("\"{n}\""))
-                .collect::<Vec<_>>();
-            return Err(Diagnostic::file(
-                &source.name,
-                format!(
-                    "no link named \"{name}\" (links: {}{})",
-                    shown.join(", "),
-                    if names.len() > 8 { ", …" } else { "" }
-                ),
-            ));
-        }
-        _ => {
-            return Err(Diagnostic::file(
-                &source.name,
-                format!("more than one link is named \"{name}\": `--link` cannot tell them apart"),
-            ));
-        }
-    };
-    let Some(inertial) = &link.inertial else {
-        return Err(source.error(
-            link.range.start..link.range.start + 1,
-            format!("link \"{name}\" has no <inertial> to compare"),
-        ));
-    };
-    let t = inertial.tensor_in_link().matrix();
-    let moments =
-        crate::robot::engine::principal_moments(&inertial.tensor_in_link()).ok_or_else(|| {
-            source.error(
-                crate::robot::read::start_tag(&source.text, inertial.range.clone()),
-                format!("link \"{name}\": its principal moments overflow"),
-            )
-        })?;
-    let link_props = Props {
-        mass: inertial.mass,
-        center_of_mass: inertial.pos,
-        principal_moments: moments,
-        inertia_com: t,
-        principal_axes: None,
-    };
+    let link_props = crate::analysis::link::props(&source, format, name)?;
     let loaded = analysis::load(part, settings)?;
     let e = super::export::export_of(&loaded.summary, false);
     let part_props = Props {
@@ -216,4 +174,21 @@ fn against_link(
         status: u8::from(diff.changed),
         read,
     })
+}
+
+/// The robot description, the part file's path, and whether the robot
+/// is OLD: an error when both are robot descriptions.
+fn sides(
+    o: &Options,
+    old_robot: Option<Robot>,
+    new_robot: Option<Robot>,
+) -> Result<(Robot, &str, bool), Diagnostic> {
+    match (old_robot, new_robot) {
+        (Some(r), None) => Ok((r, &o.new, true)),
+        (None, Some(r)) => Ok((r, &o.old, false)),
+        _ => Err(Diagnostic::plain(format!(
+            "`{}` and `{}` are both robot descriptions: `diff` compares a part file with a link (check each with `massprop check`)",
+            o.old, o.new
+        ))),
+    }
 }

@@ -10,7 +10,7 @@
 use super::Outcome;
 use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
-use crate::diag::{Diagnostic, visible};
+use crate::diag::{Diagnostic, Source, visible};
 use crate::render::inertial::{Export, inertial_element, unified_diff, update};
 use crate::robot::{Dialect, Tensor};
 use std::path::PathBuf;
@@ -67,22 +67,11 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
     }
     let loaded = analysis::load(&o.file, &o.settings)?;
     let mut read = super::files_of(&loaded);
-    let s = &loaded.summary;
-    // A body that no engine takes is not written into a robot description.
-    let failures = crate::analysis::check::validity_failures(s);
-    if !failures.is_empty() {
-        return Err(Diagnostic::file(
-            &loaded.source.name,
-            format!(
-                "not exported: the body is not physical: {}",
-                failures.join("; ")
-            ),
-        ));
-    }
+    refuse_unphysical(&loaded)?;
     let stderr = super::accuracy_warnings(&loaded, false);
     let Some((path, link)) = &o.update else {
         let to = o.to.expect("invariant: cli requires --to without --update");
-        let e = export_of(s, o.principal);
+        let e = export_of(&loaded.summary, o.principal);
         let mut text = inertial_element(to, &e, "");
         text.push('\n');
         return Ok(Outcome {
@@ -98,6 +87,38 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
         (Some(file), source)
     };
     read.extend(std::fs::canonicalize(path).ok());
+    let format = dialect(o, path, &source)?;
+    let e = export_of(&loaded.summary, o.principal);
+    let new = update(&source.text, format, link, &e).map_err(|err| match err.at() {
+        Some(at) => source.error(at..at + 1, err.to_string()),
+        None => Diagnostic::file(&source.name, err.to_string()),
+    })?;
+    let (stdout, stderr) = written(file, &source, &new, link, o.dry_run, stderr)?;
+    Ok(Outcome {
+        stderr,
+        ..Outcome::ok(stdout, read)
+    })
+}
+
+/// A body that no engine takes is not written into a robot description.
+fn refuse_unphysical(loaded: &crate::analysis::Loaded) -> Result<(), Diagnostic> {
+    let failures = crate::analysis::check::validity_failures(&loaded.summary);
+    if failures.is_empty() {
+        return Ok(());
+    }
+    Err(Diagnostic::file(
+        &loaded.source.name,
+        format!(
+            "not exported: the body is not physical: {}",
+            failures.join("; ")
+        ),
+    ))
+}
+
+/// The dialect of the robot description `--update` names (`source`, read
+/// from `path`): by its name, else its root element; it must be `--to`'s,
+/// and MJCF under `--principal`.
+fn dialect(o: &Options, path: &std::path::Path, source: &Source) -> Result<Dialect, Diagnostic> {
     let format = Dialect::of_path(path)
         .or_else(|| Dialect::of_text(&source.text))
         .ok_or_else(|| {
@@ -123,35 +144,33 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
             "`--principal` is for MJCF files (diaginertia and quat); URDF and SDFormat write the full tensor",
         ));
     }
-    let e = export_of(s, o.principal);
-    let new = update(&source.text, format, link, &e).map_err(|err| match err.at() {
-        Some(at) => source.error(at..at + 1, err.to_string()),
-        None => Diagnostic::file(&source.name, err.to_string()),
-    })?;
-    let mut stderr = stderr;
-    if o.dry_run {
-        if new == source.text {
-            stderr.push_str(&format!("{}: unchanged\n", visible(&source.name)));
-        }
-        return Ok(Outcome {
-            stderr,
-            ..Outcome::ok(unified_diff(&source.text, &new, &source.name), read)
-        });
-    }
+    Ok(format)
+}
+
+/// The updated text `new` of `source`: shown as a unified diff
+/// (`--dry-run`, `file` None), or written over `file`, said on standard
+/// error (after `stderr`, what was there). Returns standard output and
+/// standard error.
+fn written(
+    file: Option<crate::io::Rewrite>,
+    source: &Source,
+    new: &str,
+    link: &str,
+    dry_run: bool,
+    mut stderr: String,
+) -> Result<(String, String), Diagnostic> {
+    let name = visible(&source.name);
     if new == source.text {
-        stderr.push_str(&format!("{}: unchanged\n", visible(&source.name)));
-    } else {
+        stderr.push_str(&format!("{name}: unchanged\n"));
+    }
+    if dry_run {
+        return Ok((unified_diff(&source.text, new, &source.name), stderr));
+    }
+    if new != source.text {
         let bom = if source.bom { "\u{feff}" } else { "" };
         file.expect("invariant: opened to rewrite unless --dry-run")
             .replace(&format!("{bom}{new}"), "the updated robot description")?;
-        stderr.push_str(&format!(
-            "{}: link \"{}\" updated\n",
-            visible(&source.name),
-            visible(link)
-        ));
+        stderr.push_str(&format!("{name}: link \"{}\" updated\n", visible(link)));
     }
-    Ok(Outcome {
-        stderr,
-        ..Outcome::ok(String::new(), read)
-    })
+    Ok((String::new(), stderr))
 }

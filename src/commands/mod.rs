@@ -110,20 +110,7 @@ pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> Stri
     )
 }
 
-/// `warning: FILE: …`, one line per value of `file` not certified to
-/// `--rtol`.
-pub fn warning_lines(
-    file: &str,
-    warnings: &[crate::analysis::summary::AccuracyWarning],
-    colour: bool,
-) -> String {
-    let file = crate::diag::visible(file);
-    let palette = crate::diag::Palette::of(colour);
-    warnings
-        .iter()
-        .map(|w| palette.warning_line(&format!("{file}: {}", w.message)))
-        .collect()
-}
+pub use crate::analysis::check_run::warning_lines;
 
 /// Where a run's output goes and how it is dressed there: `cli` resolves
 /// `--color` and `--width` against what the process's standard output and
@@ -244,33 +231,8 @@ fn is_a_part_file(path: &str) -> bool {
 /// user-facing diagnostics (exit 2), which the caller renders for standard
 /// error (`Diagnostic::render`).
 pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic> {
-    // `-o` onto a part file being read would replace the design with the
-    // report: refused before anything is read or written. So is `-o` onto
-    // any part file: one that a file includes is not known to be read when
-    // that file is refused before its includes are (`check` goes on).
     let output = request.output();
-    // NOTE: an empty name would reach the file system as "" and come back
-    // as "No such file or directory" after a colon with nothing before it.
-    if output == Some("") {
-        return Err(
-            Diagnostic::plain("`-o` (`--output`) was given an empty file name")
-                .help("name a file, or give `-o -` for standard output"),
-        );
-    }
-    let named = || request.inputs().into_iter().map(Path::new);
-    if let Some(path) = output
-        && let Some(i) = input_named_by(path, named())
-    {
-        return Err(onto_input(path, i));
-    }
-    if let Some(path) = output
-        && is_a_part_file(path)
-    {
-        return Err(Diagnostic::plain(format!(
-            "`-o {path}` is a part file: the report would replace it"
-        ))
-        .help("`-o` never replaces a part file; name another file"));
-    }
+    refuse_output(request, output)?;
     // The command's output goes to `-o`'s file or to standard output:
     // dressed for the one it goes to.
     let terminal = &Terminal {
@@ -281,7 +243,44 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
         },
         ..*terminal
     };
-    let out = match request {
+    let out = dispatch(request, terminal)?;
+    match output {
+        Some(path) => write_output(request, path, out),
+        None => Ok(out),
+    }
+}
+
+/// `-o` refused before anything is read or written: an empty name, a part
+/// file being read (it would replace the design with the report), or any
+/// part file (one that a file includes is not known to be read when that
+/// file is refused before its includes are: `check` goes on).
+fn refuse_output(request: &Request, output: Option<&str>) -> Result<(), Diagnostic> {
+    // NOTE: an empty name would reach the file system as "" and come back
+    // as "No such file or directory" after a colon with nothing before it.
+    if output == Some("") {
+        return Err(
+            Diagnostic::plain("`-o` (`--output`) was given an empty file name")
+                .help("name a file, or give `-o -` for standard output"),
+        );
+    }
+    let Some(path) = output else {
+        return Ok(());
+    };
+    if let Some(i) = input_named_by(path, request.inputs().into_iter().map(Path::new)) {
+        return Err(onto_input(path, i));
+    }
+    if is_a_part_file(path) {
+        return Err(Diagnostic::plain(format!(
+            "`-o {path}` is a part file: the report would replace it"
+        ))
+        .help("`-o` never replaces a part file; name another file"));
+    }
+    Ok(())
+}
+
+/// The command run.
+fn dispatch(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic> {
+    Ok(match request {
         Request::Report(o) => report::run(o, terminal)?,
         Request::Budget(o) => budget::run(o, terminal)?,
         Request::Check(o) => check::run(o, terminal)?,
@@ -296,22 +295,21 @@ pub fn run(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnostic
             status: 0,
             read: Vec::new(),
         },
-    };
-    match output {
-        // `-o FILE`: the whole result or nothing, never half a file, and
-        // never onto a file the run read (one found in a directory, or
-        // included by one named; asked again now that they are known).
-        Some(path) => {
-            let read = out.read.iter().map(PathBuf::as_path);
-            if let Some(i) = input_named_by(path, named().chain(read)) {
-                return Err(onto_input(path, i));
-            }
-            write_atomically_with(path, &|w| out.stdout.write_to(w), "the output file")?;
-            Ok(Outcome {
-                stdout: Stdout::Text(String::new()),
-                ..out
-            })
-        }
-        None => Ok(out),
+    })
+}
+
+/// `-o FILE`: the whole result or nothing, never half a file, and never
+/// onto a file the run read (one found in a directory, or included by one
+/// named; asked again now that they are known).
+fn write_output(request: &Request, path: &str, out: Outcome) -> Result<Outcome, Diagnostic> {
+    let named = request.inputs().into_iter().map(Path::new);
+    let read = out.read.iter().map(PathBuf::as_path);
+    if let Some(i) = input_named_by(path, named.chain(read)) {
+        return Err(onto_input(path, i));
     }
+    write_atomically_with(path, &|w| out.stdout.write_to(w), "the output file")?;
+    Ok(Outcome {
+        stdout: Stdout::Text(String::new()),
+        ..out
+    })
 }

@@ -535,6 +535,10 @@ impl RawExpect {
             Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
             Q::PredictedInertiaCom => &self.predicted_inertia_com,
             Q::PrincipalAxes => &self.principal_axes,
+            // Reported, not expected (`quantity::Info::expected`).
+            Q::ReferencePoint | Q::CenterOfMassRef | Q::ReportAxes | Q::Omega => &None,
+            Q::PrincipalMomentsRef | Q::PrincipalAxesRef | Q::RadiiOfGyrationAxesRef => &None,
+            Q::Alpha | Q::EulerMoment => &None,
         }
         .as_ref()
     }

@@ -4,7 +4,8 @@
 //!
 //! Nothing here lists keys of its own. The tables, their keys and their
 //! types come from the reader's serde mirror (`raw`, deriving
-//! `JsonSchema`), so a key added there is in the schema; which keys each
+//! `JsonSchema`), so a key added there is in the schema, and a shape's
+//! own keys from their declarations (`ShapeKind::OWN_KEYS`); which keys each
 //! shape takes, which it needs and how many numbers its `size` and
 //! `edges` hold come from the shape table (`shapes::SHAPES`); the units
 //! and the quantity strings from `units`. The schema says less than the
@@ -18,7 +19,7 @@
 //! keyword it does not know.
 
 use super::raw::{Angles, ExpectValue, Quantity, RawFile};
-use crate::shapes::{Dims, MaterialRule, SHAPES, Spanned as Spans};
+use crate::shapes::{Dims, Key, Kind, MaterialRule, SHAPES, Spanned as Spans};
 use crate::units;
 use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
 use serde_json::{Map, Value, json};
@@ -62,6 +63,13 @@ pub fn schema() -> Value {
         .and_then(Value::as_object_mut)
         .expect("invariant: `RawPart` is named `Part` in `$defs`");
     part.insert("allOf".into(), Value::Array(part_rules()));
+    // A shape's own keys (`ShapeKind::OWN_KEYS`) are no field of the serde
+    // mirror: each from its declaration.
+    for s in &SHAPES {
+        for key in s.shape.own_keys() {
+            part["properties"][key.name] = own_key(key);
+        }
+    }
     // A plain number may be written as a string (`count = "32"`): a
     // count, an angle in degrees, a parameter.
     let defs = root
@@ -96,6 +104,33 @@ pub fn schema() -> Value {
         );
     }
     root
+}
+
+/// The schema of a shape's own key, from its declaration: its kind, and
+/// its one line of docs.
+fn own_key(key: &Key) -> Value {
+    let quantity = json!({ "$ref": "#/$defs/Quantity" });
+    let array = |items: Value, n: Option<usize>| match n {
+        Some(n) => json!({ "type": "array", "items": items, "minItems": n, "maxItems": n }),
+        None => json!({ "type": "array", "items": items }),
+    };
+    let mut v = match key.kind {
+        Kind::Quantity => quantity,
+        Kind::Point => array(quantity, Some(3)),
+        Kind::Quantities(n) => array(quantity, n),
+        Kind::Rows { width, .. } => array(array(quantity, Some(width)), None),
+        Kind::Str => json!({ "type": "string" }),
+        Kind::Bool => json!({ "type": "boolean" }),
+        Kind::Rotation => json!({ "$ref": "#/$defs/Rotation" }),
+        Kind::ArrayTable => json!({ "$ref": "#/$defs/Array" }),
+        Kind::MirrorTable => json!({ "$ref": "#/$defs/Mirror" }),
+        Kind::ParamsTable => json!({
+            "type": "object",
+            "additionalProperties": { "$ref": "#/$defs/PlainNumber" },
+        }),
+    };
+    v["description"] = key.doc.into();
+    v
 }
 
 /// A part is a shape or an include; each shape's rules, from its entry in
@@ -247,6 +282,9 @@ fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
         })
         .filter(|k| !(by_diameter && *k == "radius"))
         .collect();
+    // A shape's own keys: its module asks for each (`Reader::quantity`,
+    // `quantities`), which refuses a part without it.
+    centred.extend(s.shape.own_keys().iter().map(|k| k.name));
     if s.centred.contains(&"center") {
         centred.push("center");
     }

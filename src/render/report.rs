@@ -9,6 +9,7 @@ use super::format::{
 use super::grid::{Cells, Fit, stream_table, write_rows, write_table};
 use crate::analysis::ideal::Idealisation;
 use crate::analysis::summary::Summary;
+use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
 
@@ -475,14 +476,12 @@ fn uncertainty(
     let mut cells = Cells::with_capacity(x.outputs.len() * header.len());
     let predicted = x.predicted.iter().flat_map(|p| p.outputs.iter());
     for o in x.outputs.iter().chain(predicted) {
-        let what = o.quantity.trim_start_matches("predicted_");
-        let (scale, unit) = if what == "mass" {
-            (u.mass, u.mass_label)
-        } else if what.starts_with("center") {
-            (u.length, u.length_label)
-        } else {
-            (u.inertia, u.inertia_label.as_str())
-        };
+        // The quantity's row names its dimension (`mass`,
+        // `predicted_center_of_mass.x`: the basic body's key).
+        let key = o.quantity.trim_start_matches("predicted_");
+        let key = key.split_once('.').map_or(key, |(k, _)| k);
+        let dim = quantity::by_key(key).map_or(Dim::DIMENSIONLESS, |i| i.dim);
+        let (scale, unit) = u.of_dim(dim);
         cells.text.push_str(o.quantity);
         cells.end();
         cells.text.push_str(unit);

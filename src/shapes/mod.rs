@@ -428,6 +428,8 @@ registry! {
     Mesh => mesh::Mesh,
     /// A cylinder with hemispherical ends, solid or hollow.
     Capsule => capsule::Capsule,
+    /// A solid ellipsoid given by its three semi-axes.
+    Ellipsoid => ellipsoid::Ellipsoid,
 }
 
 impl Shape {

@@ -860,7 +860,8 @@ fn copies_nest_through_includes_and_a_mirror_of_a_mirror_is_the_part() {
 /// image formed here from the part's own mass, centre and tensor (the
 /// centre o + S (c − o), the tensor S J S), whatever the shape's own
 /// symmetry (`part::mirror`: a cone, torus or hemisphere flipped in local
-/// x, a prism in z, a mesh's own data reflected).
+/// x, a prism in z, a mesh's own data reflected, an ellipsoid flipped in
+/// local x).
 #[test]
 fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
     let mesh = format!("{}/shapes/meshes/bracket.stl", env!("CARGO_MANIFEST_DIR"));
@@ -870,6 +871,7 @@ fn every_shape_mirrored_is_the_part_and_its_image_s_j_s() {
         "shape = \"hemisphere\"\nmass = 2.0\nradius = 1.5\ninner_radius = 1\ncenter = [2, 1, -0.5]".to_string(),
         "shape = \"prism\"\nmass = 2.0\npolygon = [[0, 0], [3, 0], [3, 1], [1, 1], [1, 2.5], [0, 2.5]]\nlength = 0.5\norigin = [2, 1, -0.5]".to_string(),
         format!("shape = \"mesh\"\nfile = \"{mesh}\"\nmesh_unit = \"m\"\nmass = 2.0\norigin = [2, 1, -0.5]"),
+        "shape = \"ellipsoid\"\nmass = 2.0\nradii = [1.5, 0.5, 1]\ncenter = [2, 1, -0.5]".to_string(),
     ];
     let (normal, o) = ([1.0, -2.0, 2.0], [0.5, 1.0, -1.0]);
     for shape in shapes {

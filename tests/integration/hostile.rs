@@ -547,6 +547,7 @@ const SHAPES: &[&str] = &[
     "prism",
     "mesh",
     "capsule",
+    "ellipsoid",
 ];
 
 /// The generator knows every shape: a shape added to massprop without its
@@ -690,7 +691,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
             lines.push(format!("shape = \"{shape}\""));
             let density_key = match shape {
                 "box" | "cylinder" | "sphere" | "cone" | "torus" | "hemisphere" | "prism"
-                | "mesh" | "capsule" => "density",
+                | "mesh" | "capsule" | "ellipsoid" => "density",
                 "plate" | "disk" | "triangle" => "areal_density",
                 "rod" => "linear_density",
                 _ => "mass",
@@ -812,6 +813,7 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     }
                 }
                 "inertia" => lines.push(format!("inertia = {tensor}")),
+                "ellipsoid" => lines.push(format!("radii = {size3}")),
                 _ => {}
             }
             match (shape, extra_thick) {

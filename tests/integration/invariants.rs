@@ -128,6 +128,7 @@ enum Kind {
     Hemisphere,
     Prism,
     Capsule,
+    Ellipsoid,
 }
 
 impl Kind {
@@ -155,7 +156,7 @@ impl Kind {
     }
 
     /// The shapes beyond box, plate, rod and point.
-    const NEW: [Kind; 15] = [
+    const NEW: [Kind; 16] = [
         Kind::Cylinder,
         Kind::Tube,
         Kind::Disk,
@@ -171,6 +172,7 @@ impl Kind {
         Kind::Hemisphere,
         Kind::Prism,
         Kind::Capsule,
+        Kind::Ellipsoid,
     ];
 
     fn name(self) -> &'static str {
@@ -190,6 +192,7 @@ impl Kind {
             Kind::Hemisphere => "hemisphere",
             Kind::Prism => "prism",
             Kind::Capsule => "capsule",
+            Kind::Ellipsoid => "ellipsoid",
             _ => "box, plate, rod or point",
         }
     }
@@ -322,6 +325,7 @@ fn part_of(kinds: Vec<Kind>, turnable: bool) -> impl Strategy<Value = (Kind, Par
                     }
                     Kind::Hemisphere => Part::hemisphere(s[0], inner, at, rotation, amount),
                     Kind::Capsule => Part::capsule(s[0], s[2], inner, at, rotation, amount),
+                    Kind::Ellipsoid => Part::ellipsoid(s, at, rotation, amount),
                     // An L in its local x–y plane, off its origin.
                     Kind::Prism => {
                         let (a, b) = (s[0], s[1]);

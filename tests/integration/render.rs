@@ -202,6 +202,7 @@ fn shape_parts(mesh: &str) -> Vec<(&'static str, String)> {
         ("torus", "shape = \"torus\"\nradius = 1\ntube_radius = 0.25\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 50 }".into()),
         ("hemisphere", "shape = \"hemisphere\"\nradius = 1\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 120 }".into()),
         ("capsule", "shape = \"capsule\"\nradius = 0.5\nlength = 1.5\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 35 }".into()),
+        ("ellipsoid", "shape = \"ellipsoid\"\nradii = [1, 0.6, 0.3]\ncenter = [0, 0, 0]\nrotation = { axis = [1, 1, 0], degrees = 40 }".into()),
         ("prism", "shape = \"prism\"\npolygon = [[0, 0], [2, 0], [2, 1], [1, 0.4], [0, 1]]\nlength = 0.5".into()),
         ("mesh", format!("shape = \"mesh\"\nfile = \"{mesh}\"\nmesh_unit = \"mm\"")),
     ]

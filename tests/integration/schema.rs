@@ -316,6 +316,11 @@ fn samples(shape: &str) -> Vec<&'static str> {
             "density = \"1 g/cm^3\"\ndiameter = 20\ninner_diameter = 18\nlength = 30\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
             "material = \"steel\"\nradius = 10\ninner_radius = 9\nlength = 30\ncenter = [0, 0, 0]",
         ],
+        "ellipsoid" => vec![
+            "mass = 1\nradii = [10, 20, 30]\ncenter = [0, 0, 0]",
+            "density = \"1 g/cm^3\"\nradii = [\"1 cm\", 20, 5]\ncenter = [0, 0, 0]\nrotation = { axis = [1, 0, 0], degrees = 90 }",
+            "material = \"steel\"\nradii = [10, 10, 4]\ncenter = [0, 0, 0]",
+        ],
         "prism" => vec![
             "mass = 1\npolygon = [[0, 0], [10, 0], [0, 10]]\nlength = 2",
             "density = \"1 g/cm^3\"\npolygon = [[0, 0], [10, 0], [10, 10], [0, 10]]\nlength = 2\norigin = [1, 2, 3]\nrotation = { axis = [0, 0, 1], degrees = 90 }",
@@ -355,6 +360,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "inner_diameter" => "2",
         "top_radius" | "tube_radius" => "3",
         "polygon" => "[[0, 0], [5, 0], [0, 5]]",
+        "radii" => "[1, 2, 3]",
         "include" => "\"other.toml\"",
         "material" => "\"steel\"",
         "area" => "2",
@@ -1201,6 +1207,15 @@ impl Gen<'_, '_> {
                 let unit = self.p.of(massprop::units::LENGTH_UNITS);
                 lines.push(format!("mesh_unit = \"{unit}\""));
             }
+        }
+        // A shape's own keys (an ellipsoid's `radii`): lengths, each > 0.
+        for key in s.shape.own_keys() {
+            let massprop::shapes::Kind::Quantities(Some(n)) = key.kind else {
+                panic!("`{}`: no sample for an own key of {:?}", key.name, key.kind)
+            };
+            assert_eq!(key.dim, Dim::LENGTH, "`{}`", key.name);
+            let values: Vec<String> = (1..=n).map(|k| self.len(0.005 * k as f64)).collect();
+            lines.push(format!("{} = [{}]", key.name, values.join(", ")));
         }
         if s.centred.contains(&"center") {
             lines.push(format!("center = {}", self.point([0.0, 0.01, 0.02])));

@@ -80,6 +80,7 @@ pub(crate) fn com_bound(n: usize) -> f64 {
 /// | disk by density | 3 | 3 | the same without the length |
 /// | sphere | 7 by density | 13 more | ⁴⁄₃ and π (2), R − r (1), R² + Rr + r² (3), one product (1); (1 + ρ + … + ρ⁴)/(1 + ρ + ρ²) with ρ = r/R: ρ's rounding moves the ratio by ≤ 1u (ρ f′/f ≤ 1), its powers and sums by ≤ 7u and 3u, the division 1u, and m R²/5 · ratio one product more than m a²/12 |
 /// | triangle by density | 1 + 2/sin θ | 2 more | the area \|e₁ × e₂\|/2 from exact edges: each component a difference of products, 2u of \|e₁\|\|e₂\| in all, i.e. 2u/sin θ of the area for the smallest vertex angle θ, and one rounding more; vertex differences rounded (if inexact) add 2u max\|vᵢ\|/min\|eᵢ\|; the vertices less the centroid round once each |
+/// | ellipsoid by density | 4 | 4 | ⁴⁄₃ and π (2), their product and one product more than ρabc's three (2); (m a) a/5 rounds as often as m a²/12 |
 /// | given inertia | 0 | 9 | C = tr(I)/2 · E − I, each diagonal entry ((I_jj − I_aa) + I_kk)/2: 2 roundings at most (`part::diagonal_second_moment`; the difference is exact when small), budgeted at 3; R C Rᵀ with a full C sums 9 products per entry where a box sums 3: 6 more |
 ///
 /// Thin shells, tubes and rings take only a mass; their closed forms round
@@ -111,6 +112,8 @@ pub(crate) fn extra_ulps(p: &Part) -> Extra {
         Shape::Torus => (by_density(11.0), 8.0),
         Shape::Hemisphere => (by_density(12.0), 40.0),
         Shape::Capsule => (by_density(17.0), 48.0),
+        // The table's row: ⁴⁄₃π abc, and m a²/5 rounded as m a²/12.
+        Shape::Ellipsoid => (by_density(4.0), 0.0),
         // The polygon's figures in double-double, rounded once; R C Rᵀ of
         // a full x–y block as a given tensor's.
         Shape::Prism => (by_density(4.0), 12.0),
@@ -889,6 +892,14 @@ pub(crate) fn every_shape(rng: &mut Rng) -> Scene {
         // Issue 29's capsules: solid, turned, by density; hollow by mass.
         Part::capsule(a, b, None, rng.grid_point(), rotations[2], density(rng)),
         Part::capsule(b, a, Some(0.8 * b), rng.grid_point(), None, mass(rng)),
+        // Issue 29's ellipsoids: turned by density, and by mass.
+        Part::ellipsoid(
+            [a, b, 0.5 * a],
+            rng.grid_point(),
+            rotations[3],
+            density(rng),
+        ),
+        Part::ellipsoid([b, 0.3 * a, a], rng.grid_point(), None, mass(rng)),
         Part::prism(
             vec![
                 [0.0, 0.0],

@@ -292,6 +292,8 @@ pub enum Shape {
     /// A cylinder with hemispherical ends, solid or hollow
     /// (`solids::capsule`).
     Capsule,
+    /// A solid ellipsoid of semi-axes [a, b, c] (`solids::ellipsoid`).
+    Ellipsoid,
 }
 
 impl Shape {
@@ -311,6 +313,7 @@ impl Shape {
             Shape::Hemisphere => "hemisphere",
             Shape::Prism => "prism",
             Shape::Capsule => "capsule",
+            Shape::Ellipsoid => "ellipsoid",
         }
     }
 
@@ -323,7 +326,8 @@ impl Shape {
             | Shape::Torus
             | Shape::Hemisphere
             | Shape::Prism
-            | Shape::Capsule => "density",
+            | Shape::Capsule
+            | Shape::Ellipsoid => "density",
             Shape::Plate | Shape::Disk | Shape::Triangle => "areal_density",
             Shape::Rod => "linear_density",
             Shape::Point | Shape::Inertia => panic!("a {} takes only a mass", self.name()),
@@ -340,7 +344,8 @@ impl Shape {
             | Shape::Torus
             | Shape::Hemisphere
             | Shape::Prism
-            | Shape::Capsule => 3,
+            | Shape::Capsule
+            | Shape::Ellipsoid => 3,
             Shape::Plate | Shape::Disk | Shape::Triangle => 2,
             Shape::Rod => 1,
             Shape::Point | Shape::Inertia => 0,
@@ -578,6 +583,17 @@ impl Part {
         let mut size = vec![radius, length];
         size.extend(inner);
         Part::centered(Shape::Capsule, size, center, rotation, amount)
+    }
+
+    /// A solid ellipsoid of semi-axes `radii` along its local x, y, z
+    /// about `center`.
+    pub fn ellipsoid(
+        radii: [f64; 3],
+        center: [f64; 3],
+        rotation: Option<Rotation>,
+        amount: Amount,
+    ) -> Part {
+        Part::centered(Shape::Ellipsoid, radii.to_vec(), center, rotation, amount)
     }
 
     pub fn prism(
@@ -1117,7 +1133,8 @@ fn centered_form(shape: Shape, size: &[Q]) -> ([Q; 3], Option<Q>) {
         | Shape::Torus
         | Shape::Hemisphere
         | Shape::Prism
-        | Shape::Capsule => {
+        | Shape::Capsule
+        | Shape::Ellipsoid => {
             panic!("a {} has no form here (`solids`)", shape.name())
         }
     }
@@ -1175,6 +1192,7 @@ pub fn exact_part(part: &Part, length: Length, mass_unit: Mass) -> ExactPart {
                 Shape::Torus => Some(super::solids::torus(&size)),
                 Shape::Hemisphere => Some(super::solids::hemisphere(&size)),
                 Shape::Capsule => Some(super::solids::capsule(&size)),
+                Shape::Ellipsoid => Some(super::solids::ellipsoid(&size)),
                 _ => None,
             };
             let (per_mass, measure, offset) = match solid {
@@ -1843,6 +1861,16 @@ pub fn to_toml(scene: &Scene) -> String {
                         if let Some(r) = size.get(2) {
                             writeln!(s, "inner_radius = {}", number(*r)).unwrap();
                         }
+                    }
+                    Shape::Ellipsoid => {
+                        writeln!(
+                            s,
+                            "radii = [{}, {}, {}]",
+                            number(size[0]),
+                            number(size[1]),
+                            number(size[2])
+                        )
+                        .unwrap();
                     }
                     Shape::Triangle | Shape::Inertia | Shape::Prism => {
                         panic!("a {} is not placed by size", p.shape.name())
@@ -2683,6 +2711,30 @@ mod tests {
         ));
         assert!(rel_q(&split.mass, &whole.mass) < 1e-55);
         assert!(rel_frobenius_exact(&split.inertia, &whole.inertia) < 1e-55);
+    }
+
+    #[test]
+    fn an_ellipsoid_has_its_textbook_moments_and_volume() {
+        // I_xx = m (b² + c²)/5, and so round; V = ⁴⁄₃π abc.
+        let (m, a, b, c) = (q(3.0), q(0.5), q(2.0), q(0.25));
+        let i = inertia_of(
+            &one(Part::ellipsoid(
+                [0.5, 2.0, 0.25],
+                [1.0; 3],
+                None,
+                Amount::Mass(3.0),
+            ))
+            .second_moment,
+        );
+        let fifth = |x: &Q, y: &Q| &m * (x * x + y * y) / int(5);
+        assert_eq!(i, diag_of([fifth(&b, &c), fifth(&a, &c), fifth(&a, &b)]));
+        let by_density = one(Part::ellipsoid(
+            [0.5, 2.0, 0.25],
+            [0.0; 3],
+            None,
+            Amount::Density(3.0),
+        ));
+        assert_eq!(by_density.mass, int(4) * pi() * &a * &b * &c);
     }
 
     #[test]

@@ -1,5 +1,5 @@
 //! The exact forms of the shapes of issue 17 (cone, torus, hemisphere,
-//! prism) and of issue 29 (capsule) for the reference composer (`reference`), derived here from the
+//! prism) and of issue 29 (capsule, ellipsoid) for the reference composer (`reference`), derived here from the
 //! definitions by exact polynomial integration, independently of
 //! massprop's closed forms (which take another road: Bernstein
 //! coefficients, ratios in ρ = r/R, Green's theorem in double-double).
@@ -144,6 +144,28 @@ pub fn capsule(size: &[Q]) -> ([Q; 3], Q, Option<Q>) {
         [&xx / &volume, &xx / &volume, &zz / &volume],
         Q::zero(),
         (!measure.is_zero()).then_some(measure),
+    )
+}
+
+/// A solid ellipsoid [a, b, c], by slices across local z. With
+/// z = c(2t − 1), t from 0 to 1, the slice is the ellipse of semi-axes
+/// a s and b s, s² = 1 − (2t − 1)² = 4t(1 − t): its area π a b s² and its
+/// ∫x² dA = π a³ b s⁴/4 (∫y² dA = π a b³ s⁴/4), so over the length 2c:
+/// V = 2πabc ∫s² dt, ∫x² dV = 2π a³ b c ∫s⁴ dt / 4 and
+/// ∫z² dV = 2πabc ∫z² s² dt, each integral of a polynomial in t carried
+/// exactly; centred, so no offset.
+pub fn ellipsoid(size: &[Q]) -> ([Q; 3], Q, Option<Q>) {
+    let (a, b, c) = (&size[0], &size[1], &size[2]);
+    let s2: Poly = vec![Q::zero(), int(4), int(-4)];
+    let z: Poly = vec![-c.clone(), int(2) * c];
+    let area = moment(&s2, 0);
+    let fourth = moment(&pow(&s2, 2), 0);
+    let across = &fourth / (int(4) * &area);
+    let along = moment(&mul(&pow(&z, 2), &s2), 0) / &area;
+    (
+        [a * a * &across, b * b * &across, along],
+        Q::zero(),
+        Some(int(2) * pi() * a * b * c * area),
     )
 }
 

@@ -14,6 +14,7 @@
 use super::{Model, Products, Summary, SummaryError, summarize_in};
 use crate::compose::Precision;
 use crate::model::Analysis;
+use crate::quantity::{self, Judge, Layout, Quantity, Scale, Value};
 use serde::Serialize;
 
 /// `--precision`: an arithmetic, or `auto`.
@@ -146,12 +147,12 @@ impl Shortfall {
     }
 }
 
-/// The values of `s` whose bound exceeds `rtol` (see the module's rules).
+/// The values of `s` whose bound exceeds `rtol` (see the module's rules),
+/// each quantity judged as its row of the table says (`Info::judge`), in
+/// its place among the warnings.
 fn shortfalls(s: &Summary, rtol: f64) -> Vec<Shortfall> {
-    let b = &s.error_bounds;
     let extended = s.precision == Precision::Extended;
     let mut out = Vec::new();
-    let largest = |v: &[f64]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     // `lenient`: a value zero within its bound is judged against `scale`.
     let mut judge = |name: String, v: f64, e: f64, scale: f64, lenient: bool, unit| {
         let zero = v.abs() <= e;
@@ -165,105 +166,68 @@ fn shortfalls(s: &Summary, rtol: f64) -> Vec<Shortfall> {
             });
         }
     };
-    // A vector or tensor as a whole: its largest bound against its largest
-    // entry (the relative error of a tensor is a norm's, as the table of
-    // docs/accuracy.md gives it: a product of inertia a thousandth of the
-    // moments is not held to 1e-12 of itself).
-    let mut whole = |name: &str, v: &[f64], e: &[f64], scale: f64, unit| {
-        let top = largest(v);
-        judge(name.into(), top, largest(e), scale, true, unit);
+    let top = |q: Quantity| s.reported(q).map_or(0.0, largest);
+    let scale = |sc: Scale, v: Value| match sc {
+        Scale::Length => top(Quantity::CenterOfMass).max(top(Quantity::RadiiOfGyration)),
+        Scale::Moment => top(Quantity::PrincipalMomentsRef).max(top(Quantity::PrincipalMoments)),
+        Scale::Own => largest(v),
+        Scale::Zero => 0.0,
     };
-    let lengths = largest(&s.center_of_mass).max(largest(&s.radii_of_gyration));
-    whole(
-        "center_of_mass",
-        &s.center_of_mass,
-        &b.center_of_mass,
-        lengths,
-        "m",
-    );
-    whole(
-        "center_of_mass_ref",
-        &s.center_of_mass_ref,
-        &b.center_of_mass_ref,
-        lengths,
-        "m",
-    );
-    let tensors = [
-        ("inertia_com", &s.inertia_com, &b.inertia_com),
-        ("inertia_ref", &s.inertia_ref, &b.inertia_ref),
-    ];
-    let moments = largest(&s.principal_moments_ref).max(largest(&s.principal_moments));
-    for (key, t, e) in tensors {
-        whole(key, t.as_flattened(), e.as_flattened(), moments, "kg*m^2");
-    }
-    for (key, v, e, unit) in [
-        (
-            "angular_momentum",
-            s.angular_momentum,
-            b.angular_momentum,
-            "N*m*s",
-        ),
-        ("euler_moment", s.euler_moment, b.euler_moment, "N*m"),
-    ] {
-        if let (Some(v), Some(e)) = (v, e) {
-            whole(key, &v, &e, 0.0, unit);
+    for info in quantity::in_order(|i| i.judge.place()) {
+        let q = info.quantity;
+        let (Some(v), Some(e)) = (s.reported(q), s.error_bounds.of(q)) else {
+            continue;
+        };
+        let key = info.key;
+        let each = |i: usize| match info.layout {
+            Layout::Scalar => key.to_string(),
+            Layout::Vector | Layout::Ordered | Layout::Matrix | Layout::Axes => {
+                format!("{key}[{i}]")
+            }
+        };
+        match info.judge {
+            Judge::No => {}
+            // A vector or tensor as a whole: its largest bound against its
+            // largest entry (the relative error of a tensor is a norm's, as
+            // the table of docs/accuracy.md gives it: a product of inertia a
+            // thousandth of the moments is not held to 1e-12 of itself).
+            Judge::Whole(_, sc) => judge(
+                key.into(),
+                largest(v),
+                largest(e),
+                scale(sc, v),
+                true,
+                info.unit,
+            ),
+            Judge::Each(_, sc) => {
+                for i in 0..info.layout.count() {
+                    let (x, b) = (v.component(i), e.component(i));
+                    judge(each(i), x, b, scale(sc, v), extended, info.unit);
+                }
+            }
+            Judge::Angle(_) => {
+                let equal = match v {
+                    Value::Axes(_, equal) => equal,
+                    Value::Scalar(_) | Value::Triple(_) | Value::Rows(_) => &[],
+                };
+                for i in (0..3).filter(|i| !equal.contains(i)) {
+                    // An angle, held to rtol radians.
+                    judge(each(i), 1.0, e.component(i), 1.0, false, ANGLE);
+                }
+            }
         }
-    }
-    judge("mass".into(), s.mass, b.mass, s.mass, extended, "kg");
-    for (key, m, e) in [
-        (
-            "principal_moments",
-            &s.principal_moments,
-            &b.principal_moments,
-        ),
-        (
-            "principal_moments_ref",
-            &s.principal_moments_ref,
-            &b.principal_moments_ref,
-        ),
-    ] {
-        for i in 0..3 {
-            judge(format!("{key}[{i}]"), m[i], e[i], m[2], extended, "kg*m^2");
-        }
-    }
-    for i in 0..3 {
-        let (r, e) = (s.radii_of_gyration[i], b.radii_of_gyration[i]);
-        let top = s.radii_of_gyration[2];
-        judge(format!("radii_of_gyration[{i}]"), r, e, top, extended, "m");
-    }
-    for (key, k, e) in [
-        (
-            "radii_of_gyration_axes",
-            &s.radii_of_gyration_axes,
-            &b.radii_of_gyration_axes,
-        ),
-        (
-            "radii_of_gyration_axes_ref",
-            &s.radii_of_gyration_axes_ref,
-            &b.radii_of_gyration_axes_ref,
-        ),
-    ] {
-        for i in 0..3 {
-            judge(format!("{key}[{i}]"), k[i], e[i], largest(k), extended, "m");
-        }
-    }
-    for (key, equal, e) in [
-        ("principal_axes", &s.equal_moments, &b.principal_axes),
-        (
-            "principal_axes_ref",
-            &s.equal_moments_ref,
-            &b.principal_axes_ref,
-        ),
-    ] {
-        for i in (0..3).filter(|i| !equal.contains(i)) {
-            // An angle, held to rtol radians.
-            judge(format!("{key}[{i}]"), 1.0, e[i], 1.0, false, ANGLE);
-        }
-    }
-    if let (Some(t), Some(e)) = (s.kinetic_energy, b.kinetic_energy) {
-        judge("kinetic_energy".into(), t, e, t, extended, "J");
     }
     out
+}
+
+/// The largest magnitude among a value's numbers.
+fn largest(v: Value) -> f64 {
+    let top = |xs: &[f64]| xs.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    match v {
+        Value::Scalar(x) => x.abs(),
+        Value::Triple(t) => top(t),
+        Value::Rows(m) | Value::Axes(m, _) => top(m.as_flattened()),
+    }
 }
 
 /// The values of `s`, and of its predicted body where it has one, whose
@@ -278,4 +242,56 @@ pub fn with_predicted(s: &Summary) -> Vec<AccuracyWarning> {
         }));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::diag::Source;
+
+    /// A slender turning rod about a point, in f64 held to f64's own
+    /// rounding: most values fall short.
+    fn short_of_everything() -> Summary {
+        let text = "[[part]]\nshape = \"rod\"\nmass = 3\nlength = 7\ndiameter = 0.001\ncenter = [1, 2, 3]\n[analysis]\nabout = [0, 1, 0]\nomega = [1, 2, 3]\nalpha = [0, 0, 1]\n";
+        let model = Model::parse(&Source::new("f.toml", text)).unwrap();
+        let accuracy = Accuracy {
+            precision: PrecisionChoice::Standard,
+            rtol: f64::EPSILON,
+        };
+        summarize(&model, &model.analysis, Products::Tensor, &accuracy).unwrap()
+    }
+
+    #[test]
+    fn a_warning_names_a_judged_quantity_by_its_key_and_a_component_by_its_index() {
+        let s = short_of_everything();
+        assert!(s.accuracy_warnings.len() > 5, "{:?}", s.accuracy_warnings);
+        for w in &s.accuracy_warnings {
+            let (key, index) = match w.quantity.split_once('[') {
+                Some((k, i)) => (k, Some(i.trim_end_matches(']').parse::<usize>().unwrap())),
+                None => (w.quantity.as_str(), None),
+            };
+            let info = quantity::by_key(key).unwrap_or_else(|| panic!("{}", w.quantity));
+            let indexed = match info.judge {
+                Judge::No => panic!("{key} is not judged"),
+                Judge::Whole(..) => false,
+                Judge::Each(..) => info.layout != Layout::Scalar,
+                Judge::Angle(_) => true,
+            };
+            assert_eq!(index.is_some(), indexed, "{}", w.quantity);
+            assert!(index.is_none_or(|i| i < 3), "{}", w.quantity);
+            // An axis's bound is an angle: no value beside it.
+            assert_eq!(w.value.is_none(), matches!(info.judge, Judge::Angle(_)));
+        }
+    }
+
+    #[test]
+    fn the_warnings_come_in_the_tables_order_of_judgement() {
+        let s = short_of_everything();
+        let place = |w: &AccuracyWarning| {
+            let key = w.quantity.split('[').next().unwrap();
+            quantity::by_key(key).unwrap().judge.place().unwrap()
+        };
+        let places: Vec<u8> = s.accuracy_warnings.iter().map(place).collect();
+        assert!(places.is_sorted(), "{places:?}");
+    }
 }
