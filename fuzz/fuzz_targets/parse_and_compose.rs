@@ -270,9 +270,13 @@ fn diagnostic_lines(text: &str) {
 /// src/model/fast.rs's promise: where `fast::read_file` returns `Some`, serde
 /// accepts the text too and gives the same `RawFile`, values and spans
 /// (compared through `Debug`, as fast.rs's tests do: `RawFile` is not
-/// `PartialEq`).
+/// `PartialEq`); where it returns `None`, serde rejects the text.
 fn fast_path_agrees(text: &str) {
     let Some(fast) = fast::read_file(text) else {
+        assert!(
+            toml::from_str::<RawFile>(text).is_err(),
+            "the reader declines a file serde accepts"
+        );
         return;
     };
     let serde = toml::from_str::<RawFile>(text)

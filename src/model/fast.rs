@@ -1,34 +1,31 @@
-//! A fast path from a part file's text to `RawFile`, straight from the toml
-//! crate's own lexer and event parser (`toml_parser`), with no value tree
-//! in between.
+//! The reader of a part file: from its text to `RawFile`, straight from
+//! the toml crate's own lexer and event parser (`toml_parser`), driven by
+//! the key registry (`keys::part_keys!`, each shape's own keys).
 //!
 //! NOTE: `toml::from_str` parses the whole document into a generic tree
 //! (`toml::de::DeTable`: every key, value and span as a node, ~22 bytes of
 //! memory per input byte with the lexer's tokens and the parser's events)
-//! and only then deserializes `RawFile` from it. Here the parser's events
-//! fill `RawFile` as they come: only the result, and the tokens of a chunk
-//! of whole tables (`CHUNK`), are ever in memory. It covers what part files are made of (top-level `name` and
-//! `units`, `[[part]]` tables, `[analysis]`, inline tables and arrays of
-//! strings and numbers; `[expect]` and `[materials]` it passes over for
-//! serde to read alone, `Section`) and gives up — `None` — on anything else
-//! (dotted keys, other tables, booleans, dates), on any syntax error, any
-//! duplicate or unknown key and any value of the wrong type. The caller then
-//! takes the serde path, which accepts or rejects the file and words every
-//! error as before. When `read_file` returns `Some`, the result equals
-//! what `toml::from_str::<RawFile>` gives, values and spans alike (tested
-//! in `tests`).
-//!
-//! NOTE: the builder fills `RawPart` itself, the serde mirror's own struct,
-//! so the two readers share one definition of a part's keys and types. A
-//! key that `Builder::assign` does not take only sends the files that use
-//! it down the serde path; the
-//! property test (tests/integration/hostile.rs) and the fuzz target assert
-//! that wherever this returns `Some`, serde gives the same `RawFile`.
+//! and only then deserializes from it. Here the parser's events build a
+//! small tree of `Node`s for one part at a time, converted to a `RawPart`
+//! as the part ends (and handed out at once when streaming), and one for
+//! the file's own tables (`units`, `[analysis]`, `[expect]`,
+//! `[materials]`, `[params]`, `[growth]`, `[budget]`: small), converted at
+//! the end (`tables`). Only the result, and the tokens of a chunk of whole
+//! tables (`CHUNK`), are ever in memory. It reads everything a valid part
+//! file holds: includes and their `params`, `array`, `mirror`, dotted keys,
+//! sub-tables (`[part.rotation]`, `[materials.steel]`), booleans,
+//! `part = [{ .. }]`. It gives `None` on any syntax error and anything
+//! TOML or the file's form refuses (a duplicate or unknown key, a value of
+//! the wrong type, a missing `shape`, a table defined twice, …): the
+//! caller then lets serde word the error. Where it returns `Some`,
+//! `toml::from_str::<RawFile>` gives the same, values and spans alike
+//! (tested in `tests`, by the property test tests/integration/hostile.rs
+//! and by the fuzz target).
 
-pub use super::raw::Section;
-use super::raw::{RawAnalysis, RawFile, RawPart, RawUnits};
-use values::{Node, own_value, set, set_from, string, units_key, vector};
+use super::raw::{Materials, RawFile, RawPart, RawUnits};
+use values::{Entry, How, Node, own_value, set_from};
 
+mod tables;
 mod values;
 use std::borrow::Cow;
 use std::ops::Range;
@@ -41,34 +38,32 @@ use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
 /// The toml crate's own nesting limit (`toml::de::parser::LIMIT`).
 const RECURSION_LIMIT: u32 = 80;
 
-/// `RawFile` from `text`, or `None` where the serde path must decide;
-/// its `[expect]` and `[materials]` still to be read from its `sections`
-/// (`read_file` does).
+/// The most parts a header or a dotted key has here: no table of a part
+/// file is deeper (`[expect]`'s `center_of_mass.x` is 2), and a path of
+/// a hundred thousand parts would make as many nested tables (dropped
+/// recursively). A longer one is declined: the file is no part file.
+const MAX_PATH: usize = 8;
+
+/// `RawFile` from `text`, or `None` where it is not a valid part file
+/// (serde then words the error).
 pub fn parse(text: &str) -> Option<RawFile> {
     parse_in_chunks(text, CHUNK)
 }
 
-/// The file as the model reads it on the fast path: `parse`, with its
-/// `[expect]` and `[materials]` read by serde (`Section::read`). Where this
-/// returns `Some`, `toml::from_str::<RawFile>` gives the same, values and
-/// spans alike (tested here, by the property test and by the fuzz target).
+/// The file as the model reads it: `parse`.
 pub fn read_file(text: &str) -> Option<RawFile> {
-    let mut raw = parse(text)?;
-    let sections = Section::read(text, &raw.sections)?;
-    raw.expect = sections.expect;
-    raw.materials = sections.materials;
-    raw.sections.clear();
-    Some(raw)
+    parse(text)
 }
 
 /// Where each `[[part]]` goes as soon as it is read, with the file's
-/// `units` and the `Section`s read so far.
-pub type PartSink<'a> = dyn FnMut(Option<&Spanned<RawUnits>>, &[Section], Spanned<RawPart>) + 'a;
+/// `units` and `[materials]` as read so far.
+pub type PartSink<'a> =
+    dyn FnMut(Option<&Spanned<RawUnits>>, Option<&Materials>, Spanned<RawPart>) + 'a;
 
 /// `parse`, handing each part to `sink` as soon as it is read (after each
 /// chunk) rather than keeping it: the `RawFile` returned has an empty
-/// `part` list (its span kept). `None` where the serde path must decide,
-/// also after some parts were handed out.
+/// `part` list (its span kept). `None` where the file is not valid, also
+/// after some parts were handed out.
 ///
 /// NOTE: a raw part takes ~370 bytes and its vectors ~160 more, 4–5 times
 /// the text it is read from: kept for a whole file of a million parts, the
@@ -105,8 +100,7 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
     // end-of-file token: that `[` opens a table header, so each chunk is a
     // document of whole tables and the parser's events are those of the
     // whole file. Should a chunk ever end inside a value, the parser or the
-    // builder (a value still open, `finish`, or the next header) fails,
-    // and the serde path decides, as for any file this declines.
+    // builder (a value still open, `finish`, or the next header) fails.
     let mut lexer = source.lex();
     let eof = Source::new("")
         .lex()
@@ -176,41 +170,34 @@ impl ErrorSink for Failed {
 /// An array or inline table still open.
 enum Frame<'i> {
     Array(usize, Vec<Node<'i>>),
-    Table(usize, Vec<(Cow<'i, str>, Node<'i>)>, Option<Cow<'i, str>>),
+    /// Its entries, and the key (dotted parts) being read.
+    Table(usize, Vec<Entry<'i>>, Vec<Seg<'i>>),
 }
 
-/// Which table key/value pairs go to.
-#[derive(Clone, Copy, PartialEq)]
-enum Current {
-    Root,
-    Units,
-    Part,
-    Analysis,
-    /// `[expect]` or `[materials]` (or a table under them): read by serde
-    /// alone (`Section`), its keys and values passed over here.
-    Skipped,
-}
+/// A key, or one part of a dotted key or header, and where it is.
+type Seg<'i> = (Cow<'i, str>, Range<usize>);
 
 struct Builder<'i> {
     source: Source<'i>,
     failed: bool,
-    current: Current,
     /// Inside `[..]` or `[[..]]`: where it opened, whether an array table,
     /// and its keys.
-    header: Option<(usize, bool, Vec<Cow<'i, str>>)>,
-    /// The key of the key/value pair being read (document level).
-    key: Option<Cow<'i, str>>,
+    header: Option<(usize, bool, Vec<Seg<'i>>)>,
+    /// The key (its dotted parts) of the key/value pair being read
+    /// (document level).
+    keys: Vec<Seg<'i>>,
     stack: Vec<Frame<'i>>,
-    name: Option<Spanned<String>>,
-    units: Option<Spanned<RawUnits>>,
+    /// The file's own tables and keys (not its `[[part]]`s).
+    root: Vec<Entry<'i>>,
+    /// The table key/value pairs go to: its path from the root, or from
+    /// the open part if `in_part`.
+    at: Vec<Cow<'i, str>>,
+    in_part: bool,
     parts: Option<(Range<usize>, Vec<Spanned<RawPart>>)>,
-    part: Option<(Range<usize>, RawPart)>,
-    analysis: Option<Spanned<RawAnalysis>>,
+    /// The `[[part]]` being read: its header and its keys.
+    part: Option<(Range<usize>, Vec<Entry<'i>>)>,
     /// Parts are handed out as read (`parse_streaming`), not kept.
     streaming: bool,
-    /// The `[expect]` and `[materials]` tables met, the last one's end
-    /// `usize::MAX` while it is read.
-    sections: Vec<Section>,
 }
 
 impl<'i> Builder<'i> {
@@ -218,17 +205,15 @@ impl<'i> Builder<'i> {
         Builder {
             source,
             failed: false,
-            current: Current::Root,
             header: None,
-            key: None,
+            keys: Vec::new(),
             stack: Vec::new(),
-            name: None,
-            units: None,
+            root: Vec::new(),
+            at: Vec::new(),
+            in_part: false,
             parts: None,
             part: None,
-            analysis: None,
             streaming: false,
-            sections: Vec::new(),
         }
     }
 
@@ -241,85 +226,101 @@ impl<'i> Builder<'i> {
         Raw::new_unchecked(text, kind, span)
     }
 
-    /// Hand the parts read so far to `sink`.
-    fn hand_out(&mut self, sink: &mut PartSink<'_>) {
-        let closed = match self.sections.last() {
-            Some(s) if s.span.end == usize::MAX => self.sections.len() - 1,
-            _ => self.sections.len(),
-        };
-        if let Some((_, parts)) = &mut self.parts {
-            for p in parts.drain(..) {
-                sink(self.units.as_ref(), &self.sections[..closed], p);
-            }
-        }
+    /// A root table converted as read so far (for the parts handed out).
+    fn early<T>(&self, key: &str, convert: fn(Node<'i>) -> Option<T>) -> Option<T> {
+        let (_, _, node) = self.root.iter().find(|(k, _, _)| k == key)?;
+        convert(node.clone())
     }
 
-    /// Inside `[expect]` or `[materials]`, past its header.
-    fn skipping(&self) -> bool {
-        self.current == Current::Skipped && self.header.is_none()
+    /// Hand the parts read so far to `sink`.
+    fn hand_out(&mut self, sink: &mut PartSink<'_>) {
+        let Some((_, parts)) = &mut self.parts else {
+            return;
+        };
+        if parts.is_empty() {
+            return;
+        }
+        let parts = std::mem::take(parts);
+        let units = self.early("units", tables::units);
+        let materials = self.early("materials", tables::materials);
+        for p in parts {
+            sink(units.as_ref(), materials.as_ref(), p);
+        }
     }
 
     fn finish(mut self) -> Option<RawFile> {
         self.close_part();
-        if let Some(last) = self.sections.last_mut()
-            && last.span.end == usize::MAX
-        {
-            last.span.end = self.source.input().len();
-        }
-        if self.failed || self.header.is_some() || !self.stack.is_empty() || self.key.is_some() {
+        if self.failed || self.header.is_some() || !self.stack.is_empty() || !self.keys.is_empty() {
             return None;
         }
-        Some(RawFile {
-            name: self.name,
-            units: self.units,
+        let mut raw = RawFile {
+            name: None,
+            units: None,
             part: self.parts.map(|(span, v)| Spanned::new(span, v)),
-            analysis: self.analysis,
+            analysis: None,
             expect: None,
-            // Serde's, from the sections.
             materials: None,
-            // A file with `[params]` or a part's `params` is declined
-            // (`open_table`, `assign`): serde reads it.
             params: None,
-            // A file with `[growth]` or `[budget]` is declined
-            // (`open_table`): serde reads it.
             growth: None,
             budget: None,
-            sections: self.sections,
-        })
+        };
+        for (k, _, v) in self.root {
+            match &*k {
+                "name" => values::set(&mut raw.name, tables::name(v)?),
+                "units" => values::set(&mut raw.units, tables::units(v)?),
+                "analysis" => values::set(&mut raw.analysis, tables::analysis(v)?),
+                "expect" => values::set(&mut raw.expect, tables::expect(v)?),
+                "materials" => values::set(&mut raw.materials, tables::materials(v)?),
+                "params" => values::set(&mut raw.params, tables::params(v)?),
+                "growth" => values::set(&mut raw.growth, tables::growth(v)?),
+                "budget" => values::set(&mut raw.budget, tables::budget(v)?),
+                // `part = [{ .. }, ..]`: the parts as an array of inline
+                // tables (not beside `[[part]]`: the key is then taken).
+                "part" if raw.part.is_none() && !self.streaming => {
+                    let Node::Array(items, span) = v else {
+                        return None;
+                    };
+                    let parts = items
+                        .into_iter()
+                        .map(|n| match n {
+                            Node::Table(entries, span, _) => {
+                                Some(Spanned::new(span, part(entries)?))
+                            }
+                            _ => None,
+                        })
+                        .collect::<Option<_>>()?;
+                    raw.part = Some(Spanned::new(span, parts));
+                    Some(())
+                }
+                _ => None,
+            }?;
+        }
+        Some(raw)
     }
 
     /// The `[[part]]` being read is complete.
     fn close_part(&mut self) {
-        let Some((span, p)) = self.part.take() else {
+        self.in_part = false;
+        let Some((span, entries)) = self.part.take() else {
             return;
         };
-        // A part with neither a shape nor an include is an error: serde's.
-        if p.shape.is_none() && p.include.is_none() {
-            return self.fail();
-        }
-        match &mut self.parts {
-            Some((_, v)) => v.push(Spanned::new(span, p)),
-            None => self.fail(),
+        match (part(entries), &mut self.parts) {
+            (Some(p), Some((_, v))) => v.push(Spanned::new(span, p)),
+            _ => self.fail(),
         }
     }
 
     /// A table header `[path]` or `[[path]]` from `span`.
-    fn open_table(&mut self, span: Range<usize>, is_array: bool, path: Vec<Cow<'i, str>>) {
-        self.close_part();
-        if let Some(last) = self.sections.last_mut()
-            && last.span.end == usize::MAX
-        {
-            last.span.end = span.start;
-        }
-        match (is_array, path.as_slice()) {
-            (false, [k, ..]) if k == "expect" || k == "materials" => {
-                self.sections.push(Section {
-                    span: span.start..usize::MAX,
-                    materials: k == "materials",
-                });
-                self.current = Current::Skipped;
-            }
-            (true, [k]) if k == "part" => {
+    fn open_table(&mut self, span: Range<usize>, is_array: bool, path: Vec<Seg<'i>>) {
+        let Some(((first, _), rest)) = path.split_first() else {
+            return self.fail();
+        };
+        if first == "part" {
+            if is_array {
+                if !rest.is_empty() || self.root.iter().any(|(k, _, _)| k == "part") {
+                    return self.fail();
+                }
+                self.close_part();
                 if self.parts.is_none() {
                     // Made at the size the file's `[[part]]` lines say (a
                     // list doubled up to 100,000 parts of 368 bytes held 48
@@ -331,19 +332,32 @@ impl<'i> Builder<'i> {
                     };
                     self.parts = Some((span.clone(), Vec::with_capacity(tables)));
                 }
-                self.part = Some((span, RawPart::default()));
-                self.current = Current::Part;
+                self.part = Some((span, Vec::new()));
+                self.in_part = true;
+                self.at.clear();
+                return;
             }
-            (false, [k]) if k == "analysis" && self.analysis.is_none() => {
-                self.analysis = Some(Spanned::new(span, RawAnalysis::default()));
-                self.current = Current::Analysis;
+            // `[part.rotation]`: a table of the part still open.
+            // NOTE: not of a part closed by another table's header since,
+            // which TOML allows but no part file needs: refused.
+            let Some((_, entries)) = &mut self.part else {
+                return self.fail();
+            };
+            if rest.is_empty() || header_table(entries, rest, span).is_none() {
+                return self.fail();
             }
-            (false, [k]) if k == "units" && self.units.is_none() => {
-                self.units = Some(Spanned::new(span, RawUnits::default()));
-                self.current = Current::Units;
-            }
-            _ => self.fail(),
+            self.in_part = true;
+            self.at = rest.iter().map(|(k, _)| k.clone()).collect();
+            return;
         }
+        if is_array {
+            return self.fail();
+        }
+        self.close_part();
+        if header_table(&mut self.root, &path, span).is_none() {
+            return self.fail();
+        }
+        self.at = path.into_iter().map(|(k, _)| k).collect();
     }
 
     /// A complete value: into the open array or inline table, or to the
@@ -351,56 +365,144 @@ impl<'i> Builder<'i> {
     fn value(&mut self, node: Node<'i>) {
         match self.stack.last_mut() {
             Some(Frame::Array(_, items)) => items.push(node),
-            Some(Frame::Table(_, entries, key)) => match key.take() {
-                Some(k) if !entries.iter().any(|(e, _)| *e == k) => entries.push((k, node)),
-                _ => self.fail(),
-            },
-            None => match self.key.take() {
-                Some(k) => {
-                    if self.assign(&k, node).is_none() {
-                        self.fail();
-                    }
+            Some(Frame::Table(_, entries, keys)) => {
+                let keys = std::mem::take(keys);
+                if put(entries, &keys, node).is_none() {
+                    self.fail();
                 }
-                None => self.fail(),
-            },
+            }
+            None => {
+                let keys = std::mem::take(&mut self.keys);
+                if self.assign(keys, node).is_none() {
+                    self.fail();
+                }
+            }
         }
     }
 
-    /// `key = node` in the current table; `None` if the key is unknown,
-    /// repeated, or the value of the wrong type.
-    fn assign(&mut self, key: &str, node: Node<'i>) -> Option<()> {
-        match self.current {
-            // Not reached: nothing is assigned while skipping.
-            Current::Skipped => Some(()),
-            Current::Root => match key {
-                "name" => set(&mut self.name, string(node)?),
-                "units" => {
-                    let span = node.span();
-                    let Node::Table(entries, _) = node else {
-                        return None;
-                    };
-                    let mut u = RawUnits::default();
-                    for (k, v) in entries {
-                        units_key(&mut u, &k, v)?;
-                    }
-                    set(&mut self.units, Spanned::new(span, u))
-                }
-                _ => None,
-            },
-            Current::Units => {
-                let u = self.units.as_mut()?.get_mut();
-                units_key(u, key, node)
-            }
-            Current::Analysis => {
-                let a = self.analysis.as_mut()?.get_mut();
-                match key {
-                    "about" => set(&mut a.about, vector(node)?),
-                    "omega" => set(&mut a.omega, vector(node)?),
-                    "alpha" => set(&mut a.alpha, vector(node)?),
-                    _ => None,
-                }
-            }
-            Current::Part => assign_part(&mut self.part.as_mut()?.1, key, node),
+    /// `keys = node` (a dotted key through tables it makes) in the
+    /// current table; `None` if TOML refuses it (a key given twice, a
+    /// dotted key through a value or a table not its own).
+    fn assign(&mut self, keys: Vec<Seg<'i>>, node: Node<'i>) -> Option<()> {
+        let table = if self.in_part {
+            &mut self.part.as_mut()?.1
+        } else {
+            &mut self.root
+        };
+        put(enter(table, &self.at)?, &keys, node)
+    }
+}
+
+/// `keys = node` (a dotted key through tables it makes) in `table`;
+/// `None` if TOML refuses it (no key, a key given twice, a dotted key
+/// through a value or a table not its own).
+fn put<'i>(table: &mut Vec<Entry<'i>>, keys: &[Seg<'i>], node: Node<'i>) -> Option<()> {
+    let ((last, last_span), through) = keys.split_last()?;
+    let mut table = table;
+    for (k, span) in through {
+        table = descend(table, k, span, How::Dotted)?;
+    }
+    if table.iter().any(|(k, _, _)| k == last) {
+        return None;
+    }
+    table.push((last.clone(), last_span.clone(), node));
+    Some(())
+}
+
+/// A part from its keys, by the key registry (`assign_part`); `None` for
+/// an unknown key or a value of the wrong type. (A part with neither a
+/// shape nor an include is read: the model says what it misses.)
+fn part(entries: Vec<Entry<'_>>) -> Option<RawPart> {
+    let mut p = RawPart::default();
+    for (k, _, v) in entries {
+        assign_part(&mut p, &k, v)?;
+    }
+    Some(p)
+}
+
+/// The table at `path` (made by headers) below `table`.
+fn enter<'t, 'i>(
+    mut table: &'t mut Vec<Entry<'i>>,
+    path: &[Cow<'i, str>],
+) -> Option<&'t mut Vec<Entry<'i>>> {
+    for k in path {
+        let i = table.iter().position(|(e, _, _)| e == k)?;
+        match &mut table[i].2 {
+            Node::Table(entries, _, _) => table = entries,
+            _ => return None,
+        }
+    }
+    Some(table)
+}
+
+/// The table under `key` in `table`, made `how` if there is none (its
+/// span the key's, as toml gives it); `None` where TOML refuses to go
+/// through what is there: a value, a closed inline table, a table a
+/// header defined for a dotted key, a dotted key's for a header.
+fn descend<'t, 'i>(
+    table: &'t mut Vec<Entry<'i>>,
+    key: &Cow<'i, str>,
+    span: &Range<usize>,
+    how: How,
+) -> Option<&'t mut Vec<Entry<'i>>> {
+    let i = match table.iter().position(|(e, _, _)| e == key) {
+        Some(i) => i,
+        None => {
+            table.push((
+                key.clone(),
+                span.clone(),
+                Node::Table(Vec::new(), span.clone(), how),
+            ));
+            table.len() - 1
+        }
+    };
+    match &mut table[i].2 {
+        Node::Table(entries, _, h) if enterable(*h, how) => Some(entries),
+        _ => None,
+    }
+}
+
+/// Whether a table made `made` may be gone through to add by `by`
+/// (`How::Dotted`: a dotted key; `How::Implicit`: a header's path).
+fn enterable(made: How, by: How) -> bool {
+    match (made, by) {
+        (How::Dotted, How::Dotted) => true,
+        (How::Header | How::Implicit, How::Implicit) => true,
+        (How::Inline | How::Header | How::Implicit, How::Dotted) => false,
+        (How::Inline | How::Dotted, How::Implicit) => false,
+        (How::Inline | How::Header | How::Implicit | How::Dotted, How::Inline | How::Header) => {
+            false
+        }
+    }
+}
+
+/// Define the table of the header `[path]` (at `span`) below `table`;
+/// `None` if TOML refuses: a table defined twice, a path through a value,
+/// an inline table or a dotted key's table.
+fn header_table<'i>(
+    table: &mut Vec<Entry<'i>>,
+    path: &[Seg<'i>],
+    span: Range<usize>,
+) -> Option<()> {
+    let ((last, last_span), through) = path.split_last()?;
+    let mut table = table;
+    for (k, s) in through {
+        table = descend(table, k, s, How::Implicit)?;
+    }
+    match table.iter_mut().find(|(e, _, _)| e == last) {
+        Some((_, _, Node::Table(_, s, how))) if *how == How::Implicit => {
+            *s = span;
+            *how = How::Header;
+            Some(())
+        }
+        Some(_) => None,
+        None => {
+            table.push((
+                last.clone(),
+                last_span.clone(),
+                Node::Table(Vec::new(), span, How::Header),
+            ));
+            Some(())
         }
     }
 }
@@ -433,7 +535,7 @@ super::keys::part_keys!(assigner);
 
 impl<'i> EventReceiver for Builder<'i> {
     fn std_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
-        if self.header.is_some() || self.key.is_some() || !self.stack.is_empty() {
+        if self.header.is_some() || !self.keys.is_empty() || !self.stack.is_empty() {
             return self.fail();
         }
         self.header = Some((span.start(), false, Vec::new()));
@@ -447,7 +549,7 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn array_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
-        if self.header.is_some() || self.key.is_some() || !self.stack.is_empty() {
+        if self.header.is_some() || !self.keys.is_empty() || !self.stack.is_empty() {
             return self.fail();
         }
         self.header = Some((span.start(), true, Vec::new()));
@@ -461,38 +563,26 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn inline_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
-        if self.skipping() {
-            return true;
-        }
         self.stack
-            .push(Frame::Table(span.start(), Vec::new(), None));
+            .push(Frame::Table(span.start(), Vec::new(), Vec::new()));
         true
     }
 
     fn inline_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
-        if self.skipping() {
-            return;
-        }
         match self.stack.pop() {
-            Some(Frame::Table(start, entries, None)) => {
-                self.value(Node::Table(entries, start..span.end()))
+            Some(Frame::Table(start, entries, keys)) if keys.is_empty() => {
+                self.value(Node::Table(entries, start..span.end(), How::Inline))
             }
             _ => self.fail(),
         }
     }
 
     fn array_open(&mut self, span: Span, _error: &mut dyn ErrorSink) -> bool {
-        if self.skipping() {
-            return true;
-        }
         self.stack.push(Frame::Array(span.start(), Vec::new()));
         true
     }
 
     fn array_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
-        if self.skipping() {
-            return;
-        }
         match self.stack.pop() {
             Some(Frame::Array(start, items)) => self.value(Node::Array(items, start..span.end())),
             _ => self.fail(),
@@ -500,38 +590,22 @@ impl<'i> EventReceiver for Builder<'i> {
     }
 
     fn simple_key(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
-        if self.skipping() {
-            return;
-        }
         let mut key = Cow::Borrowed("");
         self.raw(span, kind).decode_key(&mut key, error);
-        if let Some((_, _, path)) = &mut self.header {
-            path.push(key);
-            return;
-        }
-        let slot = match self.stack.last_mut() {
-            Some(Frame::Table(_, _, k)) => k,
-            Some(Frame::Array(..)) => return self.fail(),
-            None => &mut self.key,
+        let seg = (key, span.start()..span.end());
+        let path = match (&mut self.header, self.stack.last_mut()) {
+            (Some((_, _, path)), _) => path,
+            (None, Some(Frame::Table(_, _, keys))) => keys,
+            (None, Some(Frame::Array(..))) => return self.fail(),
+            (None, None) => &mut self.keys,
         };
-        // A second key before a value: a dotted key.
-        match slot {
-            Some(_) => self.fail(),
-            None => *slot = Some(key),
+        if path.len() >= MAX_PATH {
+            return self.fail();
         }
-    }
-
-    fn key_sep(&mut self, _span: Span, _error: &mut dyn ErrorSink) {
-        // Dotted keys outside headers: left to the serde path.
-        if self.header.is_none() && !self.skipping() {
-            self.fail();
-        }
+        path.push(seg);
     }
 
     fn scalar(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
-        if self.skipping() {
-            return;
-        }
         let mut text = Cow::Borrowed("");
         let range = span.start()..span.end();
         let node = match self.raw(span, kind).decode_scalar(&mut text, error) {
@@ -566,155 +640,4 @@ impl<'i> EventReceiver for Builder<'i> {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
-    use super::*;
-
-    /// The fast path gives what serde gives, spans included; and so does it
-    /// read in chunks of any size, or it declines.
-    pub(in crate::model) fn same(text: &str) {
-        let fast = read_file(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
-        let serde: RawFile = toml::from_str(text).unwrap();
-        assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
-        assert_eq!(in_chunks_the_same_or_declined(text), 0, "{text}");
-    }
-
-    /// Read in chunks of 1 to 40 tokens: the same `RawFile` as read whole,
-    /// or declined (should a chunk end inside a value); never another.
-    /// Returns how many chunk sizes declined (the callers require none).
-    fn in_chunks_the_same_or_declined(text: &str) -> usize {
-        let whole = format!(
-            "{:?}",
-            parse_in_chunks(text, usize::MAX).expect("read whole")
-        );
-        let mut declined = 0;
-        for n in 1..=40 {
-            match parse_in_chunks(text, n) {
-                Some(raw) => assert_eq!(format!("{raw:?}"), whole, "chunks of {n}:\n{text}"),
-                None => declined += 1,
-            }
-        }
-        declined
-    }
-
-    #[test]
-    fn a_file_read_in_chunks_of_whole_tables_reads_as_whole() {
-        let part = |i: usize| {
-            format!(
-                "[[part]]\nname = \"p{i}\"\nshape = \"box\"\nmass = {i}\nsize = [1, 2, 3]\ncenter = [{i}, 0, 0]\n"
-            )
-        };
-        let many: String = (1..=30).map(part).collect();
-        same(&format!(
-            "name = \"n\"\nunits = {{ length = \"mm\" }}\n{many}[analysis]\nomega = [0, 0, 1]\n{}",
-            part(31)
-        ));
-        // Whole tables in every chunk: never declined.
-        assert_eq!(in_chunks_the_same_or_declined(&many), 0);
-    }
-
-    #[test]
-    fn a_line_of_an_array_that_starts_with_a_bracket_does_not_end_a_chunk() {
-        // Lines of arrays that start with `[`, as a table header does.
-        let text = "[[part]]\nshape = \"plate\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [\n[0, 125, 0],\n[0, 0, 100]]\n\
-                    [[part]]\nshape = \"box\"\nmass = 1\ncenter = [\n0, 0, 0]\nsize = [\n1,\n2, 3]\n\
-                    rotation = { matrix = [\n[1, 0, 0],\n[0, 1, 0],\n[0, 0, 1]] }\n";
-        same(text);
-        // `[1][0]` is no TOML value: declined however it is read.
-        let bad =
-            "[[part]]\nshape = \"rod\"\nmass = 1\nfrom = [\n0, 0, 0]\nto = [\n[1][0], 0, 0]\n";
-        assert!(toml::from_str::<RawFile>(bad).is_err());
-        for n in [1, 2, 3, 5, usize::MAX] {
-            assert!(parse_in_chunks(bad, n).is_none(), "chunks of {n}");
-        }
-    }
-
-    /// The fast path leaves the file to serde.
-    pub(in crate::model) fn declines(text: &str) {
-        assert!(read_file(text).is_none(), "fast path accepted:\n{text}");
-    }
-
-    #[test]
-    fn part_files_read_as_serde_reads_them() {
-        same(
-            "# comment\nname = \"bent plate\"  # trailing\nunits = { length = \"mm\", mass = \"kg\" }\n\n\
-             [[part]]\nname = \"A\"\nshape = \"plate\"\nareal_density = \"70 kg/m^2\"\n\
-             corner = [0, 0, 0]\nedges = [[0, 125, 0], [0, 0, 100]]\n\n\
-             [[ part ]]\n'name' = \"B \\u00e9\\n\"\nshape = 'box'\nmass = 1_000.5\nsize = [0x10, 0o7, 0b1]\n\
-             center = [ -0.0, +1e-3, \"5 mm\" , ]\nrotation = { quaternion = [1, 0, 0, 0] }\n\n\
-             [analysis]\nabout = [0, 0, 0]\nomega = [0, 0, \"30 rpm\"]\nalpha = [0, 0, 2]\n",
-        );
-        same(
-            "[units]\nlength = \"in\"\n[[part]]\nshape = \"rod\"\nlinear_density = 2\nlength = 3\n\
-             center = [1, 2, 3]\nrotation = { axis = [0, 1, 0], degrees = 90.0 }\n\
-             [[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n\
-             rotation = { intrinsic = \"zyx\", degrees = [10, 20, 30] }\n\
-             [[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\n\
-             rotation = { matrix = [[1, 0, 0], [0, 1, 0], [0, 0, 1]] }\n\
-             [[part]]\nshape = \"rod\"\nmass = 1\nfrom = [0, 0, 0]\nto = [1, 1, 1]\ndiameter = 0.1\n\
-             [[part]]\nshape = \"plate\"\nmass = 1\nsize = [1, 2]\ncenter = [0, 0, 0]\nthickness = \"2 mm\"\n",
-        );
-        same(
-            "[[part]]\nshape = \"cylinder\"\ndensity = \"7850 kg/m^3\"\nradius = 0.25\n\
-             inner_radius = \"210 mm\"\nlength = 0.06\ncenter = [0, 0, 0]\n\
-             [[part]]\nshape = \"sphere\"\nmass = 1\nradius = 2\ncenter = [1, 0, 0]\n",
-        );
-        // Values the model rejects are still read: the same errors follow.
-        same("[[part]]\nshape = \"sphere\"\nmass = nan\ncenter = [inf, -inf, 1e300]\nsize = []\n");
-        same("[[part]]\r\nshape = \"point\"\r\nmass = -1\r\ncenter = [1, 2]\r\n");
-        same("name = \"no parts\"\n");
-        same("");
-    }
-
-    /// Cut-outs, materials, triangles, given tensors and includes: on the
-    /// fast path.
-    #[test]
-    fn every_key_of_a_shape_reads_as_serde_reads_it() {
-        same(
-            "[[part]]\nshape = \"box\"\nmaterial = \"steel\"\nsize = [1, 2, 3]\ncenter = [0, 0, 0]\nremove = true\n\
-             [[part]]\nshape = \"triangle\"\nareal_density = 2\nvertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\nremove = false\n\
-             [[part]]\nshape = \"inertia\"\nmass = 2\ncenter = [1, 2, 3]\ninertia = [[1, 0, 0], [0, 2, 0], [0, 0, 3]]\nproducts = \"positive\"\n\
-             [[part]]\nshape = \"plate\"\nmass = 1\narea = 2\ncenter = [0, 0, 0]\n\
-             [[part]]\nshape = \"cone\"\ndensity = 2\ndiameter = 2\ninner_diameter = \"1 mm\"\ntop_radius = 0.5\ntop_inner_radius = 0.25\nlength = 3\ncenter = [0, 0, 0]\n\
-             [[part]]\nshape = \"torus\"\nmass = 2\nradius = 2\ntube_radius = 1\ninner_tube_radius = 0.5\ncenter = [0, 0, 0]\n\
-             [[part]]\nshape = \"prism\"\nmass = 2\npolygon = [[0, 0], [1, 0], [\"1 mm\", 1]]\nlength = 3\norigin = [1, 2, 3]\n\
-             [[part]]\nname = \"arm\"\ninclude = \"arm.toml\"\norigin = [1, 2, \"3 mm\"]\nrotation = { axis = [0, 0, 1], degrees = 90 }\n\
-             [[part]]\nshape = \"mesh\"\nfile = \"b.stl\"\nmesh_unit = \"mm\"\nmode = \"shell\"\nthickness = 2\ndensity = 3\norigin = [1, 2, 3]\n",
-        );
-        declines("[[part]]\nshape = \"box\"\nremove = 1\n");
-        declines("[[part]]\nshape = \"box\"\nname = true\n");
-    }
-
-    /// `streamed` makes parts with an empty `[growth]` table: a file that
-    /// has one, or a `[budget]`, must never reach it.
-    #[test]
-    fn a_file_with_a_weight_statement_is_left_to_serde() {
-        let part =
-            "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\nmaturity = \"estimated\"\n";
-        // The tag keys alone are the fast path's.
-        same(&format!("{part}group = \"a/b\"\n"));
-        for table in ["[growth]\nestimated = \"15 %\"\n", "[budget]\nlimit = 10\n"] {
-            declines(&format!("{table}{part}"));
-            declines(&format!("{part}{table}"));
-        }
-    }
-
-    #[test]
-    fn anything_else_is_left_to_serde() {
-        // Not covered: dotted keys, inline `part`, other tables.
-        declines("units.length = \"mm\"\n");
-        declines("part = [{ shape = \"point\", mass = 1, center = [0, 0, 0] }]\n");
-        declines("[[part]]\nshape = \"box\"\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = 90\n");
-        // Errors: syntax, duplicates, unknown keys, wrong types, missing shape.
-        declines("[[part]\nshape = \"point\"\n");
-        declines("[[part]]\nshape = \"point\"\nshape = \"box\"\n");
-        declines("[[part]]\nshape = \"point\"\nmasss = 1\n");
-        declines("[[part]]\nshape = \"point\"\nmass = [1]\n");
-        declines("[[part]]\nshape = \"point\"\nmass = true\n");
-        declines("[[part]]\nmass = 1\n");
-        declines("[[part]]\nshape = \"box\"\nrotation = { axis = [0, 0, 1], axis = [1, 0, 0] }\n");
-        declines("[analysis]\n[analysis]\n");
-        declines("units = { length = \"mm\" }\n[units]\nmass = \"kg\"\n");
-        declines("[[part]]\nshape = \"point\"\nmass = 99999999999999999999999\n");
-        declines("[[part]]\nshape = \"point\"\nmass = 1e999\n");
-    }
-}
+pub(super) mod tests;

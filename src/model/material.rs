@@ -27,7 +27,7 @@ impl super::Model {
         if super::looks_like_a_part_file(&source.text) {
             return Ok(None);
         }
-        let raw = super::Model::serde(source)?;
+        let raw = super::Model::raw(source)?;
         let only_materials = raw.part.is_none()
             && raw.name.is_none()
             && raw.analysis.is_none()

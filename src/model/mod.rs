@@ -28,7 +28,6 @@ mod place;
 pub mod raw;
 pub mod rotation;
 pub mod schema;
-mod section;
 mod solids;
 mod span;
 mod streamed;
@@ -48,7 +47,7 @@ use ctx::Ctx;
 use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
-use streamed::{Streamed, with_sections};
+use streamed::Streamed;
 use toml::Spanned;
 
 thread_local! {
@@ -235,9 +234,8 @@ impl Model {
         Ok(model)
     }
 
-    /// The file as TOML: the fast path where it can (most part files);
-    /// else, and for every error in the TOML, serde via the toml crate's
-    /// value tree.
+    /// The file as TOML, by the one reader (`fast`); serde via the toml
+    /// crate's value tree only to word an error.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
         count_parse();
         match fast::read_file(&source.text) {
@@ -258,31 +256,30 @@ impl Model {
         files: &mut include::Files,
         passed: &[params::Pass],
     ) -> Result<Model, Diagnostic> {
-        // The fast path, each part made as it is read; else, or if the
-        // file's units came after its parts (a `[units]` table at the end),
-        // the whole file read first.
-        // A file with includes is read whole first: its includes are
-        // counted before any is read (`include::Ctx::check_part_count`).
-        // So is a file with tolerances: their sources are the file's.
+        // Each part made as it is read; else (a part that includes a
+        // file, or has copies: `Streamed::take`), or if the file's units
+        // came after its parts (a `[units]` table at the end), the whole
+        // file read first. So is a file with tolerances: their sources
+        // are the file's.
         count_parse();
-        let includes = source.text.contains("include") || tolerance::may_have(&source.text);
-        let mut streamed = if includes {
+        let whole = tolerance::may_have(&source.text);
+        let mut streamed = if whole {
             Streamed::off()
         } else {
             // At the size the file's `[[part]]` lines say: a list doubled
             // up to its size holds up to twice the parts.
             Streamed::with_room(part_tables(&source.text) as usize)
         };
-        let fast = if includes {
+        let fast = if whole {
             fast::read_file(&source.text)
         } else {
-            fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, sections, p| {
-                streamed.take(source, units, sections, p);
+            fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, materials, p| {
+                streamed.take(source, units, materials, p);
             })
         };
         let raw = match fast {
-            Some(raw) if includes => Some(raw),
-            Some(raw) if streamed.saw_all_of(&raw) => with_sections(source, raw),
+            Some(raw) if whole => Some(raw),
+            Some(raw) if streamed.saw_all_of(&raw) => Some(raw),
             Some(_) => {
                 streamed = Streamed::off();
                 fast::read_file(&source.text)

@@ -1,22 +1,10 @@
-//! The parts of a file on the fast path, made as they are read
-//! (`fast::parse_streaming`), and the tables the fast path passes over
-//! read into its `RawFile` (`with_sections`).
+//! The parts of a file, made as they are read
+//! (`fast::parse_streaming`).
 
 use super::raw::{self, RawFile};
-use super::{Ctx, Item, MAX_PARTS, Model, fast};
+use super::{Ctx, Item, MAX_PARTS, Model};
 use crate::diag::{Diagnostic, Source};
 use crate::units::FileUnits;
-
-/// `raw` from the fast path with its `[expect]` and `[materials]` read
-/// (`fast::Section::read`); `None` where serde must read the whole file.
-pub(super) fn with_sections(source: &Source, mut raw: RawFile) -> Option<RawFile> {
-    if !raw.sections.is_empty() {
-        let read = fast::Section::read(&source.text, &raw.sections)?;
-        raw.expect = read.expect;
-        raw.materials = read.materials;
-    }
-    Some(raw)
-}
 
 /// Materials by name: density in SI and in the file's units.
 type Materials = std::collections::BTreeMap<String, (f64, f64)>;
@@ -67,14 +55,18 @@ impl Streamed {
         &mut self,
         source: &Source,
         units: Option<&toml::Spanned<raw::RawUnits>>,
-        sections: &[fast::Section],
+        materials: Option<&raw::Materials>,
         p: toml::Spanned<raw::RawPart>,
     ) {
         let index = self.count;
         self.count += 1;
-        if p.get_ref().include.is_some() || super::mesh::is_mesh(p.get_ref()) {
-            // Not here: `includes` sends such files to be read whole, and
-            // a mesh is read with the files it names (`model::mesh`).
+        let q = p.get_ref();
+        if q.include.is_some() || q.array.is_some() || q.mirror.is_some() || super::mesh::is_mesh(q)
+        {
+            // Not here: a file with includes or copies is read whole (its
+            // includes counted before any is read,
+            // `include::Ctx::check_part_count`), and a mesh is read with
+            // the files it names (`model::mesh`).
             self.off = true;
         }
         if self.off || self.error.is_some() || self.count > MAX_PARTS {
@@ -82,9 +74,7 @@ impl Streamed {
         }
         let made = self.ctx.get_or_insert_with(|| {
             self.units_seen = Some(units.is_some());
-            let materials: Vec<fast::Section> =
-                sections.iter().filter(|s| s.materials).cloned().collect();
-            self.materials_seen = materials.len();
+            self.materials_seen = materials.map_or(0, |m| m.get_ref().len());
             // An error is said again when the whole file is read.
             let mut ctx = Ctx {
                 source,
@@ -97,8 +87,7 @@ impl Streamed {
             if let Some(u) = units {
                 ctx.units = ctx.file_units(u).map_err(|_| ())?;
             }
-            let table = fast::Section::read(&source.text, &materials).ok_or(())?;
-            if let Some(table) = &table.materials {
+            if let Some(table) = materials {
                 ctx.read_materials(table).map_err(|_| ())?;
             }
             Ok((ctx.units, ctx.materials))
@@ -110,11 +99,10 @@ impl Streamed {
             materials: std::mem::take(materials),
             params: Default::default(),
             tol: Default::default(),
-            // NOTE: empty, and right to be: the fast path declines a file
-            // with `[growth]` or `[budget]` (`fast`'s `open_table`; its
-            // test `a_file_with_a_weight_statement_is_left_to_serde`), so
-            // a part's `maturity` here names a maturity the file does not
-            // have, and serde's reading of the file says so.
+            // NOTE: empty, and right to be: a file with `[growth]`,
+            // `[budget]` or `[params]` is read whole (`saw_all_of`), so a
+            // part's `maturity` here names a maturity the file does not
+            // have, and the whole file's reading says so.
             growth: Default::default(),
         };
         let made = ctx.part(index, &p).and_then(|(part, real)| {
@@ -132,8 +120,7 @@ impl Streamed {
                     part,
                     real,
                     tag,
-                    // A file with copies is read whole (`fast` declines
-                    // `array` and `mirror`).
+                    // A file with copies is read whole (`take`).
                     copies: None,
                 });
             }
@@ -143,12 +130,14 @@ impl Streamed {
 
     /// Whether the parts were made with the file's units and materials:
     /// none came after the first part was read (a `[units]` or
-    /// `[materials]` table at the end).
+    /// `[materials]` table at the end); and the file has no tables that
+    /// its parts are made with beyond those (`[params]`, `[growth]`,
+    /// `[budget]`: such a file is read whole).
     pub(super) fn saw_all_of(&self, raw: &RawFile) -> bool {
-        if self.off {
+        if self.off || raw.params.is_some() || raw.growth.is_some() || raw.budget.is_some() {
             return false;
         }
-        let materials = raw.sections.iter().filter(|s| s.materials).count();
+        let materials = raw.materials.as_ref().map_or(0, |m| m.get_ref().len());
         self.units_seen
             .is_none_or(|seen| seen == raw.units.is_some() && materials == self.materials_seen)
     }

@@ -1,5 +1,6 @@
-//! The values the fast path reads (`Node`), and their conversion into the
-//! serde mirror's types, `None` for a value of another type.
+//! The values the reader reads (`Node`: its tables with each key's span,
+//! and how each table was made), and their conversion into the `Raw`
+//! types, `None` for a value of another type.
 
 use super::super::raw::{
     Angles, Floats, OwnValue, Params, Quantity, RawArray, RawMirror, RawRotation, RawUnits, Vector,
@@ -10,12 +11,32 @@ use std::ops::Range;
 use toml::Spanned;
 
 /// A value being read: only what part files contain.
+#[derive(Clone)]
 pub(super) enum Node<'i> {
     Str(Cow<'i, str>, Range<usize>),
     Num(f64, Range<usize>),
     Bool(bool, Range<usize>),
     Array(Vec<Node<'i>>, Range<usize>),
-    Table(Vec<(Cow<'i, str>, Node<'i>)>, Range<usize>),
+    Table(Vec<Entry<'i>>, Range<usize>, How),
+}
+
+/// A key of a table, where the key is, and its value.
+pub(super) type Entry<'i> = (Cow<'i, str>, Range<usize>, Node<'i>);
+
+/// How a table was made, which decides what may add to it later (TOML's
+/// rules): its keys, a header under it, a dotted key through it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum How {
+    /// `{ .. }`: closed once written.
+    Inline,
+    /// By its header `[a.b]`: not to be opened again.
+    Header,
+    /// On the way to a header's table (`a` of `[a.b]`): a header may
+    /// still define it.
+    Implicit,
+    /// By a dotted key (`a` of `a.b = 1`): more dotted keys of its table
+    /// may add to it, no header.
+    Dotted,
 }
 
 impl Node<'_> {
@@ -25,7 +46,7 @@ impl Node<'_> {
             | Node::Num(_, s)
             | Node::Bool(_, s)
             | Node::Array(_, s)
-            | Node::Table(_, s) => s.clone(),
+            | Node::Table(_, s, _) => s.clone(),
         }
     }
 }
@@ -95,12 +116,20 @@ pub(super) fn floats(node: Node<'_>) -> Option<Floats> {
 }
 
 pub(super) fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
-    let Node::Table(entries, span) = node else {
+    let Node::Table(entries, span, _) = node else {
         return None;
     };
     let mut r = RawRotation::default();
-    for (k, v) in entries {
-        match &*k {
+    for (k, _, v) in entries {
+        rotation_key(&mut r, &k, v)?;
+    }
+    Some(Spanned::new(span, r))
+}
+
+/// One key of a rotation table (a part's `rotation`, `[analysis] axes`).
+pub(super) fn rotation_key(r: &mut RawRotation, k: &str, v: Node<'_>) -> Option<()> {
+    {
+        match k {
             "quaternion" => set(&mut r.quaternion, floats(v)?),
             "axis" => set(&mut r.axis, floats(v)?),
             "degrees" => {
@@ -130,9 +159,8 @@ pub(super) fn rotation(node: Node<'_>) -> Option<Spanned<RawRotation>> {
             "intrinsic" => set(&mut r.intrinsic, string(v)?),
             "extrinsic" => set(&mut r.extrinsic, string(v)?),
             _ => None,
-        }?;
+        }
     }
-    Some(Spanned::new(span, r))
 }
 
 /// A `RawPart` field's type as the reader reads it from a value; `None`
@@ -186,23 +214,57 @@ impl FromNode for Spanned<RawRotation> {
     }
 }
 
-/// NOTE: `array`, `mirror` and an include's `params` are left to the
-/// serde path: a file with one is declined.
 impl FromNode for Spanned<RawArray> {
-    fn from_node(_: Node<'_>) -> Option<Self> {
-        None
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        let (entries, span) = table(node)?;
+        let mut a = RawArray::default();
+        for (k, _, v) in entries {
+            match &*k {
+                "count" => set(&mut a.count, quantity(v)?),
+                "step" => set(&mut a.step, vector(v)?),
+                "axis" => set(&mut a.axis, floats(v)?),
+                "step_degrees" => set(&mut a.step_degrees, quantity(v)?),
+                "origin" => set(&mut a.origin, vector(v)?),
+                _ => None,
+            }?;
+        }
+        Some(Spanned::new(span, a))
     }
 }
 
 impl FromNode for Spanned<RawMirror> {
-    fn from_node(_: Node<'_>) -> Option<Self> {
-        None
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        let (entries, span) = table(node)?;
+        let mut m = RawMirror::default();
+        for (k, _, v) in entries {
+            match &*k {
+                "normal" => set(&mut m.normal, floats(v)?),
+                "origin" => set(&mut m.origin, vector(v)?),
+                _ => None,
+            }?;
+        }
+        Some(Spanned::new(span, m))
     }
 }
 
+/// `[params]`, `[growth]`, an include's `params`: name → quantity, each
+/// name with its span.
 impl FromNode for Params {
-    fn from_node(_: Node<'_>) -> Option<Self> {
-        None
+    fn from_node(node: Node<'_>) -> Option<Self> {
+        let (entries, span) = table(node)?;
+        let map = entries
+            .into_iter()
+            .map(|(k, ks, v)| Some((Spanned::new(ks, k.into_owned()), quantity(v)?)))
+            .collect::<Option<_>>()?;
+        Some(Spanned::new(span, map))
+    }
+}
+
+/// A table's entries and span; `None` for any other value.
+pub(super) fn table(node: Node<'_>) -> Option<(Vec<Entry<'_>>, Range<usize>)> {
+    match node {
+        Node::Table(entries, span, _) => Some((entries, span)),
+        _ => None,
     }
 }
 
