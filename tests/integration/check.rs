@@ -646,8 +646,9 @@ fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
 }
 
 /// A `*.toml` that `check DIR` finds but that is no part file (no
-/// `[[part]]`: `Cargo.toml`, settings, credentials) is passed over: not
-/// counted, nothing of it quoted, not blessed; one named on the command
+/// top-level table or key of massprop's: `Cargo.toml`, settings,
+/// credentials) is passed over: counted as skipped, nothing of it quoted,
+/// not blessed; one named on the command
 /// line is checked (and its error quoted) as before.
 #[test]
 fn check_dir_passes_over_a_toml_file_that_is_not_a_part_file() {
@@ -675,7 +676,9 @@ fn check_dir_passes_over_a_toml_file_that_is_not_a_part_file() {
         assert_eq!(out.status.code(), Some(0), "{stdout}{stderr}");
         assert!(!stdout.contains(SECRET) && !stderr.contains(SECRET));
         assert!(
-            stdout.ends_with("real.toml: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid\n"),
+            stdout.ends_with(
+                "real.toml: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid, 2 skipped\n"
+            ),
             "{stdout}"
         );
         assert_eq!(
