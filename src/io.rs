@@ -1,7 +1,6 @@
 //! Reading part files and writing outputs: the only module that touches
 //! the file system for them (`include` reads through `source_of` too).
 
-
 mod utf16;
 use crate::diag::{Diagnostic, Source, display_path};
 use std::io::{Read, Seek, Write};

@@ -144,7 +144,13 @@ fn respelled(name: &str) -> String {
     let s: String = name
         .trim()
         .chars()
-        .map(|c| if c.is_whitespace() || c == '_' { '-' } else { c })
+        .map(|c| {
+            if c.is_whitespace() || c == '_' {
+                '-'
+            } else {
+                c
+            }
+        })
         .flat_map(char::to_lowercase)
         .collect();
     VARIANTS
@@ -173,8 +179,14 @@ mod tests {
     #[test]
     fn a_grade_in_another_spelling_suggests_that_grade() {
         assert_eq!(built_in_suggestion("aluminum-7075"), Some("aluminium-7075"));
-        assert_eq!(built_in_suggestion("Aluminium 5083"), Some("aluminium-5083"));
-        assert_eq!(built_in_suggestion("stainless steel 316"), Some("stainless-316"));
+        assert_eq!(
+            built_in_suggestion("Aluminium 5083"),
+            Some("aluminium-5083")
+        );
+        assert_eq!(
+            built_in_suggestion("stainless steel 316"),
+            Some("stainless-316")
+        );
     }
 
     #[test]

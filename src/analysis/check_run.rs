@@ -55,10 +55,12 @@ type Passed = &'static str;
 const NOT_A_PART_FILE: Passed = "skipped: not a part file (none of massprop's top-level tables or keys `part`, `units`, `expect`, `analysis`, `params`, `materials`, `budget`, `growth`, nor a near miss of one)";
 
 /// A `*.toml` of `[materials]` alone, for part files to use.
-const A_MATERIALS_FILE: Passed = "skipped: a materials file (`[materials]` and no parts: `massprop materials FILE` lists it)";
+const A_MATERIALS_FILE: Passed =
+    "skipped: a materials file (`[materials]` and no parts: `massprop materials FILE` lists it)";
 
 /// A `*.xml` that is no robot description.
-const NOT_A_ROBOT: Passed = "skipped: not a robot description (its root is not `<robot>`, `<sdf>` or `<mujoco>`)";
+const NOT_A_ROBOT: Passed =
+    "skipped: not a robot description (its root is not `<robot>`, `<sdf>` or `<mujoco>`)";
 
 impl Checked {
     /// The exit status: 2 when any file is invalid, else 1 when any check
@@ -485,7 +487,12 @@ mod tests {
     #[test]
     fn a_file_checked_without_a_panic_keeps_its_own_result() {
         let mut stderr = String::new();
-        assert!(guarded("passed-over.toml", false, &mut stderr, |_| Err(NOT_A_PART_FILE)).is_err());
+        assert!(
+            guarded("passed-over.toml", false, &mut stderr, |_| Err(
+                NOT_A_PART_FILE
+            ))
+            .is_err()
+        );
         assert!(stderr.is_empty());
     }
 }

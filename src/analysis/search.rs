@@ -226,9 +226,9 @@ fn near_own_key(key: &str) -> bool {
     let singular = k.strip_suffix('s').unwrap_or(&k).to_string();
     let forms = [k.clone(), format!("{k}s"), singular];
     OWN_KEYS.iter().any(|own| {
-        forms.iter().any(|f| {
-            f == own || (own.len() >= 5 && strsim::osa_distance(f, own) <= 1)
-        })
+        forms
+            .iter()
+            .any(|f| f == own || (own.len() >= 5 && strsim::osa_distance(f, own) <= 1))
     })
 }
 
@@ -238,7 +238,9 @@ mod tests {
 
     #[test]
     fn a_part_file_is_likely_a_part_file() {
-        assert!(likely_part_file("name = \"x\"\n[[part]]\nshape = \"sphere\"\n"));
+        assert!(likely_part_file(
+            "name = \"x\"\n[[part]]\nshape = \"sphere\"\n"
+        ));
     }
 
     #[test]
@@ -307,12 +309,16 @@ mod tests {
 
     #[test]
     fn a_settings_file_with_a_path_key_is_not_a_part_file() {
-        assert!(!likely_part_file("path = \"/tmp\"\nport = 80\nname = \"x\"\n"));
+        assert!(!likely_part_file(
+            "path = \"/tmp\"\nport = 80\nname = \"x\"\n"
+        ));
     }
 
     #[test]
     fn an_own_key_inside_another_table_is_not_at_the_top_level() {
-        assert!(!likely_part_file("[server]\nunits = \"metric\"\npart = 1\n"));
+        assert!(!likely_part_file(
+            "[server]\nunits = \"metric\"\npart = 1\n"
+        ));
     }
 
     #[test]

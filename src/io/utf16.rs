@@ -95,16 +95,26 @@ mod tests {
             d.message(),
             "the file is UTF-16 (little-endian, without a byte-order mark), not UTF-8"
         );
-        assert!(d.help_text().unwrap().contains("iconv -f UTF-16LE -t UTF-8"));
+        assert!(
+            d.help_text()
+                .unwrap()
+                .contains("iconv -f UTF-16LE -t UTF-8")
+        );
         let d = source_of("a.toml", utf16("x = 1\n", false, false)).unwrap_err();
-        assert!(d.message().contains("(big-endian, without"), "{}", d.message());
+        assert!(
+            d.message().contains("(big-endian, without"),
+            "{}",
+            d.message()
+        );
     }
 
     #[test]
     fn utf8_text_is_not_taken_for_utf16() {
         for text in ["[[part]]\n", "a", "", "\u{e9} = \"\u{fc}\"\n"] {
-            assert!(source_of("a.toml", text.as_bytes().to_vec()).is_ok(), "{text}");
+            assert!(
+                source_of("a.toml", text.as_bytes().to_vec()).is_ok(),
+                "{text}"
+            );
         }
     }
-
 }

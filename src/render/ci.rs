@@ -140,7 +140,6 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
     out
 }
 
-
 /// JUnit XML: the report `massprop check`, a test suite per file (named by
 /// its path), in it a test case `valid part file`, one per expectation
 /// (named by its key) and one per validity check (`validity: …`). A failed
