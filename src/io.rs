@@ -115,7 +115,8 @@ pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
     }
     let name = display_path(path);
     let meta = std::fs::metadata(path).map_err(|e| {
-        let near = near_name(path, |p| is_toml(p) || crate::robot::may_be_robot(p));
+        // Any visible file: the user named this one themselves.
+        let near = near_name(path, |_| true);
         cannot_read(&name, false, e).suggest(near.as_deref())
     })?;
     check_size(&name, &meta)?;
@@ -216,7 +217,7 @@ fn read_capped(
 /// that is not (with its line and column, as any other error).
 pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
     if let Some(utf16) = utf16::Utf16::of(&bytes) {
-        return Err(utf16.error(name));
+        return Err(utf16.error(name, &bytes));
     }
     match String::from_utf8(bytes) {
         Ok(text) => Ok(Source::new(name, text)),

@@ -45,21 +45,41 @@ impl Utf16 {
         }
     }
 
-    /// The error for file `name`: what it is, and how to convert it.
-    pub(super) fn error(self, name: &str) -> Diagnostic {
+    /// The error for file `name` of `bytes`: what it is, and how to
+    /// convert it, at its first character, the first line shown decoded.
+    pub(super) fn error(self, name: &str, bytes: &[u8]) -> Diagnostic {
         let (le, mark, from) = match self {
             Utf16::Marked(le) => (le, "with a byte-order mark", "UTF-16"),
             Utf16::Unmarked(true) => (true, "without a byte-order mark", "UTF-16LE"),
             Utf16::Unmarked(false) => (false, "without a byte-order mark", "UTF-16BE"),
         };
         let endian = if le { "little-endian" } else { "big-endian" };
-        Diagnostic::file(
-            name,
-            format!("the file is UTF-16 ({endian}, {mark}), not UTF-8"),
-        )
-        .help(format!(
-            "massprop reads UTF-8 text: convert it with `iconv -f {from} -t UTF-8 OLD > NEW`, or save it as UTF-8 in the editor"
-        ))
+        let units = bytes.chunks_exact(2).map(|p| {
+            let pair = [p[0], p[1]];
+            if le {
+                u16::from_le_bytes(pair)
+            } else {
+                u16::from_be_bytes(pair)
+            }
+        });
+        // NOTE: only the first line is shown; it is decoded (a bad unit
+        // as U+FFFD), so the snippet reads as the file does in an editor.
+        let first_line: String = char::decode_utf16(units)
+            .map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER))
+            .skip_while(|c| *c == '\u{feff}')
+            .take_while(|c| *c != '\n')
+            .take(200)
+            .collect();
+        let source = crate::diag::Source::new(name, first_line);
+        let first = source.text.chars().next().map_or(0, char::len_utf8);
+        source
+            .error(
+                0..first.max(1),
+                format!("the file is UTF-16 ({endian}, {mark}), not UTF-8"),
+            )
+            .help(format!(
+                "massprop reads UTF-8 text: convert it with `iconv -f {from} -t UTF-8 OLD > NEW`, or save it as UTF-8 in the editor"
+            ))
     }
 }
 
