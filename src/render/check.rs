@@ -321,3 +321,24 @@ pub fn failure(c: &CheckResult) -> String {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::summary_line;
+
+    #[test]
+    fn the_summary_line_counts_skipped_files_when_there_are_some() {
+        assert_eq!(
+            summary_line(&[], 2),
+            "checked 0 files: 0 ok, 0 failed, 0 invalid, 2 skipped\n"
+        );
+    }
+
+    #[test]
+    fn the_summary_line_without_skipped_files_is_as_before() {
+        assert_eq!(
+            summary_line(&[], 0),
+            "checked 0 files: 0 ok, 0 failed, 0 invalid\n"
+        );
+    }
+}
