@@ -236,6 +236,23 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
     }
 }
 
+/// The text of a file that does not read as UTF-8, as far as a search
+/// needs it to tell a part file from another (`search::likely_part_file`):
+/// its first MiB, decoded from UTF-16 when it is that, else with each bad
+/// byte as U+FFFD. `None` when it cannot be read.
+pub fn sniffed_text(path: &Path) -> Option<String> {
+    let mut head = Vec::new();
+    std::fs::File::open(path)
+        .ok()?
+        .take(1 << 20)
+        .read_to_end(&mut head)
+        .ok()?;
+    Some(match utf16::Utf16::of(&head) {
+        Some(u) => u.decoded(&head),
+        None => String::from_utf8_lossy(&head).into_owned(),
+    })
+}
+
 /// Replace the output file `path` by `text` (`what` names it in errors):
 /// atomically with `replace_by_rename`, or in place with `write_in_place`
 /// when it has hard links. A symlink is written through (the link stays a

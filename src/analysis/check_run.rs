@@ -253,11 +253,20 @@ impl Run<'_> {
                 .take()
                 .unwrap_or_else(|| crate::io::read_source_at(path))
         });
-        if let Some(Ok(s)) = &source
-            && found
-            && let Some(why) = self.passed_over(s)
-        {
-            return Err(why);
+        if found {
+            let why = match &source {
+                Some(Ok(s)) => self.passed_over(s),
+                // Not UTF-8 (UTF-16, say): judged by its text as far as
+                // it can be read, and passed over unquoted when it is no
+                // part file, as a UTF-8 one would be.
+                Some(Err(_)) => crate::io::sniffed_text(path)
+                    .filter(|t| !search::likely_part_file(t))
+                    .map(|_| NOT_A_PART_FILE),
+                None => None,
+            };
+            if let Some(why) = why {
+                return Err(why);
+            }
         }
         let mut not_blessed = None;
         if self.bless {

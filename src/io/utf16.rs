@@ -45,6 +45,35 @@ impl Utf16 {
         }
     }
 
+    /// Whether it is little-endian.
+    fn le(self) -> bool {
+        match self {
+            Utf16::Marked(le) | Utf16::Unmarked(le) => le,
+        }
+    }
+
+    /// The characters of `bytes` in this encoding, without a byte-order
+    /// mark, a bad unit as U+FFFD.
+    fn chars(self, bytes: &[u8]) -> impl Iterator<Item = char> + '_ {
+        let le = self.le();
+        let units = bytes.chunks_exact(2).map(move |p| {
+            let pair = [p[0], p[1]];
+            if le {
+                u16::from_le_bytes(pair)
+            } else {
+                u16::from_be_bytes(pair)
+            }
+        });
+        char::decode_utf16(units)
+            .map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER))
+            .skip_while(|c| *c == '\u{feff}')
+    }
+
+    /// `bytes` decoded (`chars`).
+    pub(super) fn decoded(self, bytes: &[u8]) -> String {
+        self.chars(bytes).collect()
+    }
+
     /// The error for file `name` of `bytes`: what it is, and how to
     /// convert it, at its first character, the first line shown decoded.
     pub(super) fn error(self, name: &str, bytes: &[u8]) -> Diagnostic {
@@ -54,19 +83,10 @@ impl Utf16 {
             Utf16::Unmarked(false) => (false, "without a byte-order mark", "UTF-16BE"),
         };
         let endian = if le { "little-endian" } else { "big-endian" };
-        let units = bytes.chunks_exact(2).map(|p| {
-            let pair = [p[0], p[1]];
-            if le {
-                u16::from_le_bytes(pair)
-            } else {
-                u16::from_be_bytes(pair)
-            }
-        });
         // NOTE: only the first line is shown; it is decoded (a bad unit
         // as U+FFFD), so the snippet reads as the file does in an editor.
-        let first_line: String = char::decode_utf16(units)
-            .map(|c| c.unwrap_or(char::REPLACEMENT_CHARACTER))
-            .skip_while(|c| *c == '\u{feff}')
+        let first_line: String = self
+            .chars(bytes)
             .take_while(|c| *c != '\n')
             .take(200)
             .collect();
@@ -126,6 +146,16 @@ mod tests {
             "{}",
             d.message()
         );
+    }
+
+    #[test]
+    fn a_utf16_file_is_decoded_for_a_search_to_judge() {
+        for (le, bom) in [(true, true), (false, true), (true, false)] {
+            let text = "[registry]\ntoken = \"x\"\n";
+            let bytes = utf16(text, le, bom);
+            let u = super::Utf16::of(&bytes).expect("utf-16");
+            assert_eq!(u.decoded(&bytes), text);
+        }
     }
 
     #[test]
