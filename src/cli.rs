@@ -117,6 +117,12 @@ pub struct CheckArgs {
     #[arg(long, value_name = "GLOB")]
     pub exclude: Vec<String>,
 
+    /// Name, on standard error, each file a directory's search passes over
+    /// and why (a `*.toml` with none of massprop's top-level tables or
+    /// keys, a materials file, an `*.xml` that is no robot description).
+    #[arg(long)]
+    pub verbose: bool,
+
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
     /// leaves FILE as it was. `-o -` is standard output.
@@ -594,6 +600,7 @@ impl Cli {
                 search: commands::check::Search {
                     hidden: a.hidden,
                     exclude: a.exclude.clone(),
+                    verbose: a.verbose,
                 },
                 engines: engines(&a.engine),
             }),

@@ -1,6 +1,7 @@
 //! Reading part files and writing outputs: the only module that touches
 //! the file system for them (`include` reads through `source_of` too).
 
+mod utf16;
 use crate::diag::{Diagnostic, Source, display_path};
 use std::io::{Read, Seek, Write};
 use std::path::{Path, PathBuf};
@@ -113,7 +114,11 @@ pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
         return Ok(source);
     }
     let name = display_path(path);
-    let meta = std::fs::metadata(path).map_err(|e| cannot_read(&name, false, e))?;
+    let meta = std::fs::metadata(path).map_err(|e| {
+        // Any visible file: the user named this one themselves.
+        let near = near_name(path, |_| true);
+        cannot_read(&name, false, e).suggest(near.as_deref())
+    })?;
     check_size(&name, &meta)?;
     // Not only regular files: `massprop report <(generate)` is a pipe.
     let mut file = std::fs::File::open(path).map_err(|e| cannot_read(&name, false, e))?;
@@ -121,6 +126,38 @@ pub fn read_source_at(path: &Path) -> Result<Source, Diagnostic> {
         .read_from(path.to_path_buf());
     source.piped = !meta.is_file();
     Ok(source)
+}
+
+/// The most entries of a directory `near_name` looks at: a suggestion is
+/// not worth reading a directory of millions.
+const MAX_LISTED: usize = 10_000;
+
+/// For a file that does not exist: `path` with its file name replaced by
+/// the nearest name its directory holds (`units::suggest`, a few edits
+/// away: `lamp.tom` → `lamp.toml`), among visible regular files that
+/// `wanted` accepts, so that "did you mean" names only a file of the kind
+/// asked for. `None` when `path` exists, has no such neighbour, or its
+/// directory cannot be read. The name is as `path` writes it, its last
+/// component changed, so the user can type it back.
+pub fn near_name(path: &Path, wanted: impl Fn(&Path) -> bool) -> Option<String> {
+    if std::fs::symlink_metadata(path).is_ok() {
+        return None;
+    }
+    let asked = path.file_name()?.to_str()?;
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let names: Vec<String> = std::fs::read_dir(dir)
+        .ok()?
+        .take(MAX_LISTED)
+        .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_file() || t.is_symlink()))
+        .filter_map(|e| e.file_name().into_string().ok())
+        .filter(|n| !n.starts_with('.') && wanted(Path::new(n)))
+        .collect();
+    let near = crate::units::suggest(asked, names.iter().map(String::as_str))?;
+    Some(display_path(&path.with_file_name(near)))
 }
 
 fn cannot_read(name: &str, stdin: bool, e: std::io::Error) -> Diagnostic {
@@ -179,6 +216,9 @@ fn read_capped(
 /// A part file's bytes as its source: UTF-8, or an error at the first byte
 /// that is not (with its line and column, as any other error).
 pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
+    if let Some(utf16) = utf16::Utf16::of(&bytes) {
+        return Err(utf16.error(name, &bytes));
+    }
     match String::from_utf8(bytes) {
         Ok(text) => Ok(Source::new(name, text)),
         Err(e) => {
@@ -194,6 +234,23 @@ pub fn source_of(name: &str, bytes: Vec<u8>) -> Result<Source, Diagnostic> {
                 .help("massprop reads UTF-8 text; re-save the file as UTF-8"))
         }
     }
+}
+
+/// The text of a file that does not read as UTF-8, as far as a search
+/// needs it to tell a part file from another (`search::likely_part_file`):
+/// its first MiB, decoded from UTF-16 when it is that, else with each bad
+/// byte as U+FFFD. `None` when it cannot be read.
+pub fn sniffed_text(path: &Path) -> Option<String> {
+    let mut head = Vec::new();
+    std::fs::File::open(path)
+        .ok()?
+        .take(1 << 20)
+        .read_to_end(&mut head)
+        .ok()?;
+    Some(match utf16::Utf16::of(&head) {
+        Some(u) => u.decoded(&head),
+        None => String::from_utf8_lossy(&head).into_owned(),
+    })
 }
 
 /// Replace the output file `path` by `text` (`what` names it in errors):
@@ -628,7 +685,20 @@ fn write_in_place(
 
 #[cfg(test)]
 mod tests {
-    use super::{FileId, without_path};
+    use super::*;
+
+    #[test]
+    fn a_missing_file_suggests_the_near_name_of_its_kind_in_its_directory() {
+        let dir = tempfile::tempdir().unwrap();
+        for n in ["lamp.toml", "lamp.txt", ".lamp.tom"] {
+            std::fs::write(dir.path().join(n), "").unwrap();
+        }
+        let asked = dir.path().join("lamp.tom");
+        let near = near_name(&asked, is_toml);
+        assert_eq!(near, Some(display_path(&dir.path().join("lamp.toml"))));
+        assert_eq!(near_name(&dir.path().join("lamp.toml"), is_toml), None);
+        assert_eq!(near_name(&dir.path().join("zebra.toml"), is_toml), None);
+    }
 
     #[test]
     fn a_hard_link_and_a_symlink_name_the_same_file() {

@@ -88,9 +88,142 @@ pub fn built_in(name: &str) -> Option<&'static Material> {
     BUILT_IN.iter().find(|m| m.name == name)
 }
 
+/// Other spellings and common names of the built-in materials, each as
+/// the start of a name (`aluminum-6061`, `aluminum 7075`) and the start of
+/// the names it stands for: US and British spellings, trade names, words
+/// for a family whose members carry a grade (`aluminium` → the first
+/// `aluminium-…`).
+const VARIANTS: &[(&str, &str)] = &[
+    ("aluminum", "aluminium"),
+    ("aluminium", "aluminium"),
+    ("stainless-steel", "stainless"),
+    ("inox", "stainless"),
+    ("titanium", "titanium"),
+    ("brass", "brass"),
+    ("polyamide", "nylon"),
+    ("nylon", "nylon"),
+    ("pa6", "nylon-6"),
+    ("acrylic", "pmma"),
+    ("plexiglass", "pmma"),
+    ("plexiglas", "pmma"),
+    ("perspex", "pmma"),
+    ("carbon-fibre", "cfrp"),
+    ("carbon-fiber", "cfrp"),
+    ("fibreglass", "gfrp"),
+    ("fiberglass", "gfrp"),
+    ("fr4", "gfrp"),
+    ("fr-4", "gfrp"),
+    ("grey-iron", "cast-iron"),
+    ("gray-iron", "cast-iron"),
+    ("iron", "cast-iron"),
+    ("mild-steel", "steel"),
+    ("carbon-steel", "steel"),
+];
+
+/// The material meant by an unknown `name`, among `names` (the built-in
+/// ones and the file's own): first by spelling variant or family
+/// (`aluminum` → `aluminium-6061`, `Aluminium 7075` → `aluminium-7075`,
+/// `plexiglass` → `pmma`), else the nearest by a few edits
+/// (`units::suggest`: `steal` → `steel`).
+pub fn suggest<'a>(name: &str, names: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let names: Vec<&'a str> = names.into_iter().collect();
+    let spelled = respelled(name);
+    let family = format!("{spelled}-");
+    names
+        .iter()
+        .find(|n| **n == spelled)
+        .or_else(|| names.iter().find(|n| n.starts_with(&family)))
+        .copied()
+        .or_else(|| crate::units::suggest(name, names.iter().copied()))
+        .or_else(|| crate::units::suggest(&spelled, names.iter().copied()))
+}
+
+/// `name` in lower case, blanks and `_` as `-`, a variant's start
+/// (`VARIANTS`) replaced by the built-in spelling.
+fn respelled(name: &str) -> String {
+    let s: String = name
+        .trim()
+        .chars()
+        .map(|c| {
+            if c.is_whitespace() || c == '_' {
+                '-'
+            } else {
+                c
+            }
+        })
+        .flat_map(char::to_lowercase)
+        .collect();
+    VARIANTS
+        .iter()
+        .find_map(|(from, to)| {
+            let rest = s.strip_prefix(from)?;
+            (rest.is_empty() || rest.starts_with('-')).then(|| format!("{to}{rest}"))
+        })
+        .unwrap_or(s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn built_in_suggestion(name: &str) -> Option<&'static str> {
+        suggest(name, BUILT_IN.iter().map(|m| m.name))
+    }
+
+    #[test]
+    fn the_us_spelling_of_aluminium_suggests_the_first_aluminium() {
+        assert_eq!(built_in_suggestion("aluminum"), Some("aluminium-6061"));
+        assert_eq!(built_in_suggestion("Aluminum"), Some("aluminium-6061"));
+    }
+
+    #[test]
+    fn a_grade_in_another_spelling_suggests_that_grade() {
+        assert_eq!(built_in_suggestion("aluminum-7075"), Some("aluminium-7075"));
+        assert_eq!(
+            built_in_suggestion("Aluminium 5083"),
+            Some("aluminium-5083")
+        );
+        assert_eq!(
+            built_in_suggestion("stainless steel 316"),
+            Some("stainless-316")
+        );
+    }
+
+    #[test]
+    fn a_family_name_suggests_its_first_grade() {
+        assert_eq!(built_in_suggestion("titanium"), Some("titanium-6al-4v"));
+        assert_eq!(built_in_suggestion("brass"), Some("brass-c360"));
+    }
+
+    #[test]
+    fn a_trade_or_common_name_suggests_the_material() {
+        assert_eq!(built_in_suggestion("plexiglass"), Some("pmma"));
+        assert_eq!(built_in_suggestion("carbon fiber"), Some("cfrp"));
+        assert_eq!(built_in_suggestion("fiberglass"), Some("gfrp"));
+    }
+
+    #[test]
+    fn every_variant_names_a_built_in_material_or_family() {
+        for (from, to) in VARIANTS {
+            assert!(
+                BUILT_IN
+                    .iter()
+                    .any(|m| m.name == *to || m.name.starts_with(&format!("{to}-"))),
+                "{from} → {to}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_plain_typo_still_suggests_the_nearest_name() {
+        assert_eq!(built_in_suggestion("steal"), Some("steel"));
+        assert_eq!(suggest("fom", ["foam"]), Some("foam"));
+    }
+
+    #[test]
+    fn a_name_unlike_any_suggests_nothing() {
+        assert_eq!(built_in_suggestion("unobtainium"), None);
+    }
 
     #[test]
     fn names_are_unique_lowercase_and_densities_plausible() {

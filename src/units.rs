@@ -507,13 +507,21 @@ pub fn suggest<'a>(word: &str, candidates: impl IntoIterator<Item = &'a str>) ->
     if n > COMPARED {
         return None;
     }
+    // NOTE: case-aware: the distance is first that of the lowercased
+    // words, then the exact one, so `MM` is `mm` (0 apart but for case),
+    // not `µm` (as many edits apart as `mm` by the exact distance, and
+    // 1000× off); of `Mg` and `mg` for `MG`, the one nearer by case wins.
+    let lower = word.to_lowercase();
     candidates
         .into_iter()
         .filter(|c| {
             c.len() <= 4 * 2 * COMPARED && n.abs_diff(c.chars().count()) <= 2.max(c.len() / 3)
         })
-        .map(|c| (strsim::damerau_levenshtein(word, c), c))
-        .filter(|&(d, c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
+        .map(|c| {
+            let folded = strsim::damerau_levenshtein(&lower, &c.to_lowercase());
+            ((folded, strsim::damerau_levenshtein(word, c)), c)
+        })
+        .filter(|&((d, _), c)| d <= 2.max(c.len() / 3) && d < c.len().max(word.len()))
         .min_by_key(|&(d, _)| d)
         .map(|(_, c)| c)
 }
@@ -641,6 +649,29 @@ mod tests {
             parse_quantity("3 kg", Dim::LENGTH),
             Err(UnitError::WrongDim { .. })
         ));
+    }
+
+    #[test]
+    fn an_unknown_unit_in_capitals_suggests_the_same_letters_in_lowercase() {
+        let cases = [
+            ("180 MM", Dim::LENGTH, "mm"),
+            ("2 KG", Dim::MASS, "kg"),
+            ("3 IN", Dim::LENGTH, "in"),
+        ];
+        for (written, dim, meant) in cases {
+            match parse_quantity(written, dim) {
+                Err(UnitError::Unknown { suggestion, .. }) => {
+                    assert_eq!(suggestion, Some(meant), "{written}")
+                }
+                other => panic!("{written}: {other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn of_two_candidates_alike_but_for_case_the_nearer_by_case_is_suggested() {
+        assert_eq!(suggest("MG", ["mg", "Mg"]), Some("Mg"));
+        assert_eq!(suggest("mG", ["Mg", "mg"]), Some("mg"));
     }
 
     #[test]

@@ -5,6 +5,10 @@
 //!   (SI for H and T); its `tol` is kept, or a default one is added,
 //!   computed from the value written (`default_tol`), never from the stale
 //!   one the file had, and never zero.
+//! - Each number is written with the fewest significant digits that keep
+//!   it within 1/1000 of its tolerance of the exact value, in the form the
+//!   file wrote it: a bare number stays one, a quantity string stays a
+//!   string in its own unit (`digits`).
 //! - Entries with only `min`/`max` are design limits and are never changed.
 //! - A file without `[expect]` gets one for its mass, centre of mass and
 //!   principal moments.
@@ -17,16 +21,18 @@
 //!   (temporary file + rename) keeping its permissions and owner, or in
 //!   place when it has hard links, which a rename would break.
 
+mod digits;
+
 use super::summary::Summary;
 use super::{Loaded, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
-use crate::model::expect::{Bound, Check, Target};
+use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::quantity::{Bless, Compare, DEFAULT_TOL_DEGREES, QUANTITIES};
 use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
 use crate::units::{Dim, FileUnits};
 use std::collections::BTreeMap;
-use toml_edit::{Array, DocumentMut, InlineTable, Item, Value};
+use toml_edit::{DocumentMut, InlineTable, Item, Value};
 
 /// Bless one file: returns whether it changed. Errors leave it untouched.
 pub fn bless_file(path: &str, settings: &Settings) -> Result<bool, Diagnostic> {
@@ -333,7 +339,8 @@ fn write_values(
     for group in entries(checks).values() {
         let first = group[0];
         let scale = written_scale(s.file_units, first.dim);
-        let measured = measured(group, s, scale);
+        let si = measured(group, s, 1.0);
+        let measured: Vec<f64> = si.iter().map(|v| v / scale).collect();
         // The entry's key path: `center_of_mass.z` for a component, the
         // quantity itself for a whole vector or matrix.
         let mut path: Vec<&str> = first.name.split('.').collect();
@@ -344,9 +351,71 @@ fn write_values(
             .iter()
             .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
             .then(|| default_tol(&measured, first.target, first.dim, scale, s));
-        changed |= write_entry(doc, &path, written(&measured), tol);
+        let within = match &tol {
+            Some(t) => tolerances_of(t, &si, scale, degrees(first.target)),
+            None => tolerances(group, &si),
+        };
+        let value = |old: Option<&Value>| digits::shaped(old, &si, &within, first.dim, scale);
+        changed |= write_entry(doc, &path, value, tol);
     }
     changed
+}
+
+/// The tolerance of each component of a principal axis for an angle `tol`
+/// (radians): the three components' errors together turn the row by up to
+/// √3 times one's, so each gets `tol`/√3; and no more than keeps the rows
+/// orthonormal within a tenth of what the reader allows
+/// (`AXES_ORTHONORMAL`) however wide the angle.
+fn axis_tol(tol: f64) -> f64 {
+    let widest = crate::tolerance::AXES_ORTHONORMAL / 10.0 / digits::SHARE;
+    tol.min(widest) / 3f64.sqrt()
+}
+
+/// Whether an entry's tolerance is an angle (`tol_degrees`).
+fn degrees(target: Target) -> bool {
+    match target.quantity.info().bless {
+        Bless::Degrees => true,
+        Bless::Relative | Bless::Absolute => false,
+    }
+}
+
+/// Each component's tolerance, SI, as the entry's checks hold it (`si`:
+/// the exact values): an absolute one as it is, a relative one of the
+/// value written, an angle (axes, radians) as it is on a unit vector's
+/// components.
+fn tolerances(group: &[&Check], si: &[f64]) -> Vec<f64> {
+    group
+        .iter()
+        .flat_map(|c| match c.bound {
+            Bound::Axes { tol, .. } => vec![Tol::Abs(axis_tol(tol)); 9],
+            Bound::Value { tol, .. } => vec![tol],
+            // Not an entry with a value (`entries`): held exactly.
+            Bound::Range { .. } => vec![Tol::Abs(0.0)],
+        })
+        .zip(si)
+        .map(|(t, v)| match t {
+            Tol::Abs(t) => t,
+            Tol::Rel(r) => r * v.abs(),
+        })
+        .collect()
+}
+
+/// Each component's tolerance, SI, from a default tolerance as written
+/// (`default_tol`): a percentage of each value, degrees, or a number in
+/// the unit written (`scale` SI per unit); `degrees` for axes, whose
+/// default tolerance is an angle.
+fn tolerances_of(tol: &Value, si: &[f64], scale: f64, degrees: bool) -> Vec<f64> {
+    let each = |v: f64| match tol {
+        Value::String(p) => {
+            let percent = p.value().trim().trim_end_matches('%').trim();
+            percent.parse::<f64>().map_or(0.0, |r| r / 100.0 * v.abs())
+        }
+        Value::Float(x) if degrees => axis_tol(x.value().to_radians()),
+        Value::Float(x) => x.value() * scale,
+        Value::Integer(x) => *x.value() as f64 * scale,
+        Value::Boolean(_) | Value::Datetime(_) | Value::Array(_) | Value::InlineTable(_) => 0.0,
+    };
+    si.iter().map(|v| each(*v)).collect()
 }
 
 /// The checks of each entry with a `value`, in order: the checks of one
@@ -381,10 +450,15 @@ fn measured(group: &[&Check], s: &Summary, scale: f64) -> Vec<f64> {
         .collect()
 }
 
-/// `value` written into the entry at `path`, keeping the old value's
+/// `value` (of the old one) written into the entry at `path`, keeping the old value's
 /// decor, and `tol` in place of its placeholder tolerance: whether the
 /// entry changed.
-fn write_entry(doc: &mut DocumentMut, path: &[&str], value: Value, tol: Option<Value>) -> bool {
+fn write_entry(
+    doc: &mut DocumentMut,
+    path: &[&str],
+    value: impl FnOnce(Option<&Value>) -> Value,
+    tol: Option<Value>,
+) -> bool {
     let Some(t) = entry_mut(doc, path).and_then(Item::as_table_like_mut) else {
         return false;
     };
@@ -393,7 +467,7 @@ fn write_entry(doc: &mut DocumentMut, path: &[&str], value: Value, tol: Option<V
     };
     let mut changed = false;
     let decor = old.as_value().map(|v| v.decor().clone());
-    let mut new = value;
+    let mut new = value(old.as_value());
     if let Some(d) = decor {
         *new.decor_mut() = d;
     }
@@ -437,8 +511,11 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
             .map(|k| s.value(target(k)) / scale)
             .collect();
         let mut entry = InlineTable::new();
-        entry.insert("value", written(&v));
-        entry.insert("tol", default_tol(&v, target(0), info.dim, scale, s));
+        let tol = default_tol(&v, target(0), info.dim, scale, s);
+        let si: Vec<f64> = v.iter().map(|x| x * scale).collect();
+        let within = tolerances_of(&tol, &si, scale, degrees(target(0)));
+        entry.insert("value", digits::shaped(None, &si, &within, info.dim, scale));
+        entry.insert("tol", tol);
         t.insert(info.key, Item::Value(Value::InlineTable(entry)));
     }
     doc.insert("expect", Item::Table(t));
@@ -453,19 +530,6 @@ fn written_scale(u: FileUnits, dim: Dim) -> f64 {
         u.factor(dim).value()
     } else {
         1.0
-    }
-}
-
-/// A value as written: a number, an array, or rows of three.
-fn written(v: &[f64]) -> Value {
-    match v.len() {
-        1 => Value::from(v[0]),
-        3 => Value::Array(v.iter().copied().collect::<Array>()),
-        _ => Value::Array(
-            v.chunks(3)
-                .map(|r| Value::Array(r.iter().copied().collect::<Array>()))
-                .collect::<Array>(),
-        ),
     }
 }
 

@@ -36,14 +36,31 @@ pub struct Run<'a> {
 }
 
 /// What a run found: every file's result, in order, what it writes on
-/// standard error, and every file it read (those the files include too,
-/// valid or not: `-o` may write onto none of them).
+/// standard error, every file it read (those the files include too,
+/// valid or not: `-o` may write onto none of them), and how many files a
+/// directory's search passed over (the summary line counts them).
 #[derive(Debug, Default)]
 pub struct Checked {
     pub results: Vec<FileResult>,
     pub stderr: String,
     pub read: Vec<PathBuf>,
+    pub skipped: usize,
 }
+
+/// Why a file a directory's search found is passed over, as `--verbose`
+/// says it: nothing of the file itself is quoted.
+type Passed = &'static str;
+
+/// A `*.toml` with none of massprop's own top-level tables or keys.
+const NOT_A_PART_FILE: Passed = "skipped: not a part file (none of massprop's top-level tables or keys `part`, `units`, `expect`, `analysis`, `params`, `materials`, `budget`, `growth`, nor a near miss of one)";
+
+/// A `*.toml` of `[materials]` alone, for part files to use.
+const A_MATERIALS_FILE: Passed =
+    "skipped: a materials file (`[materials]` and no parts: `massprop materials FILE` lists it)";
+
+/// A `*.xml` that is no robot description.
+const NOT_A_ROBOT: Passed =
+    "skipped: not a robot description (its root is not `<robot>`, `<sdf>` or `<mujoco>`)";
 
 impl Checked {
     /// The exit status: 2 when any file is invalid, else 1 when any check
@@ -65,7 +82,7 @@ impl Run<'_> {
     /// there are none to check, or a search cannot start.
     pub fn check(&self, paths: &[PathBuf], search: &Search) -> Result<Checked, Diagnostic> {
         let found = search::find(paths, search)?;
-        let checked = self.all(found);
+        let checked = self.all(found, search.verbose);
         if checked.results.is_empty() {
             return Err(Diagnostic::plain(
                 "no part files or robot descriptions found (a directory is searched for `*.toml` files with a `[[part]]` table, and for `*.urdf`, `*.sdf` and `*.xml` robot descriptions; hidden and ignored ones are passed over)",
@@ -76,11 +93,11 @@ impl Run<'_> {
 
     /// Every file found, in order, on a thread of a large stack (`STACK`),
     /// a file's panic its own result (`guarded`).
-    fn all(&self, found: Vec<Found>) -> Checked {
+    fn all(&self, found: Vec<Found>, verbose: bool) -> Checked {
         let found = std::sync::Mutex::new(Some(found));
         let work = || {
             let found = found.lock().ok().and_then(|mut f| f.take());
-            self.each(found.unwrap_or_default())
+            self.each(found.unwrap_or_default(), verbose)
         };
         std::thread::scope(|scope| {
             let w = &work;
@@ -99,29 +116,40 @@ impl Run<'_> {
         })
     }
 
-    fn each(&self, found: Vec<Found>) -> Checked {
+    /// Every file in turn; those passed over counted, and under
+    /// `--verbose` named with why on standard error.
+    fn each(&self, found: Vec<Found>, verbose: bool) -> Checked {
         let mut c = Checked::default();
         for found in found {
             let name = found.name();
             let r = guarded(&name, self.colour, &mut c.stderr, |stderr| {
                 self.one(found, stderr, &mut c.read)
             });
-            c.results.extend(r);
+            match r {
+                Ok(r) => c.results.push(r),
+                Err(why) => {
+                    c.skipped += 1;
+                    if verbose {
+                        c.stderr.push_str(&format!("{}: {why}\n", visible(&name)));
+                    }
+                }
+            }
         }
         c
     }
 
-    /// One file checked: its result, or `None` for a file a directory's
-    /// search passes over (a `*.toml` that is no part file).
+    /// One file checked: its result, or why a directory's search passes
+    /// it over (a `*.toml` that is no part file, a `*.xml` that is no robot
+    /// description).
     fn one(
         &self,
         found: Found,
         stderr: &mut String,
         read: &mut Vec<PathBuf>,
-    ) -> Option<FileResult> {
+    ) -> Result<FileResult, Passed> {
         let (path, found) = match found {
             Found::File(path, found) => (path, found),
-            Found::Skipped(path, d) => return Some(invalid(path, d, stderr, self.colour)),
+            Found::Skipped(path, d) => return Ok(invalid(path, d, stderr, self.colour)),
         };
         read.extend(std::fs::canonicalize(&path).ok());
         let f = search::shown(&path);
@@ -139,7 +167,7 @@ impl Run<'_> {
     /// A file not named `*.toml`: a robot description, by its name
     /// (`*.urdf`, `*.sdf`), else by its root element (`<robot>`, `<sdf>`,
     /// `<mujoco>`), checked (`Break` with its result); else passed over
-    /// when a directory's search found it (`Break(None)`), or read as a
+    /// when a directory's search found it (`Break(Err)`), or read as a
     /// part file (`Continue`, with standard input's text when it is `-`:
     /// standard input read to tell its format is not read again).
     fn not_toml(
@@ -148,15 +176,15 @@ impl Run<'_> {
         f: &str,
         found: bool,
         stderr: &mut String,
-    ) -> ControlFlow<Option<FileResult>, Option<Result<Source, Diagnostic>>> {
+    ) -> ControlFlow<Result<FileResult, Passed>, Option<Result<Source, Diagnostic>>> {
         let source = crate::io::read_source_at(path);
         let format = Dialect::of_path(path)
             .or_else(|| source.as_ref().ok().and_then(|s| Dialect::of_text(&s.text)));
         if let Some(format) = format {
-            return ControlFlow::Break(Some(self.robot(f, source, format, stderr)));
+            return ControlFlow::Break(Ok(self.robot(f, source, format, stderr)));
         }
         if found {
-            return ControlFlow::Break(None);
+            return ControlFlow::Break(Err(NOT_A_ROBOT));
         }
         ControlFlow::Continue((path.as_os_str() == "-").then_some(source))
     }
@@ -203,8 +231,9 @@ impl Run<'_> {
     }
 
     /// A part file (or a `*.toml` found in a directory that turns out no
-    /// part file, passed over: `None`), blessed first under `--bless`,
-    /// then checked. `stdin`: standard input's text, read already.
+    /// part file, passed over: `Err`, see `passed_over`), blessed first
+    /// under `--bless`, then checked. `stdin`: standard input's text, read
+    /// already.
     fn part_file(
         &self,
         path: &Path,
@@ -213,7 +242,7 @@ impl Run<'_> {
         mut stdin: Option<Result<Source, Diagnostic>>,
         stderr: &mut String,
         read: &mut Vec<PathBuf>,
-    ) -> Option<FileResult> {
+    ) -> Result<FileResult, Passed> {
         // A `*.toml` found in a directory that is no part file
         // (`Cargo.toml`, a `settings.toml`, a `credentials.toml`) is passed
         // over as a search passes over any other file: not checked, not
@@ -224,9 +253,20 @@ impl Run<'_> {
                 .take()
                 .unwrap_or_else(|| crate::io::read_source_at(path))
         });
-        if found && matches!(&source, Some(Ok(s)) if !crate::model::looks_like_a_part_file(&s.text))
-        {
-            return None;
+        if found {
+            let why = match &source {
+                Some(Ok(s)) => self.passed_over(s),
+                // Not UTF-8 (UTF-16, say): judged by its text as far as
+                // it can be read, and passed over unquoted when it is no
+                // part file, as a UTF-8 one would be.
+                Some(Err(_)) => crate::io::sniffed_text(path)
+                    .filter(|t| !search::likely_part_file(t))
+                    .map(|_| NOT_A_PART_FILE),
+                None => None,
+            };
+            if let Some(why) = why {
+                return Err(why);
+            }
         }
         let mut not_blessed = None;
         if self.bless {
@@ -237,10 +277,31 @@ impl Run<'_> {
             .or(stdin)
             .unwrap_or_else(|| crate::io::read_source_at(path));
         let checked = self.load_and_check(source, stderr, read);
-        Some(match blessed_or_not(checked, not_blessed, f, stderr) {
+        Ok(match blessed_or_not(checked, not_blessed, f, stderr) {
             Ok(r) => r,
             Err(d) => invalid(f.to_string(), d, stderr, self.colour),
         })
+    }
+
+    /// Why a `*.toml` a directory's search found is passed over, if it is:
+    /// it is not `search::likely_part_file` (no top-level table or key of
+    /// massprop's, nor a near miss of one), or it is a materials file that
+    /// reads as one. Any other is checked, and invalid if it does not
+    /// read: a `[[parts]]` or `[part]` typo fails the run rather than
+    /// passing it.
+    fn passed_over(&self, s: &Source) -> Option<Passed> {
+        if crate::model::looks_like_a_part_file(&s.text) {
+            return None;
+        }
+        if !search::likely_part_file(&s.text) {
+            return Some(NOT_A_PART_FILE);
+        }
+        // NOTE: a materials file's errors are the check's own (it is
+        // checked, and invalid); one that reads is no part file to check.
+        match crate::model::Model::materials_file(s, &self.settings.includes) {
+            Ok(Some(_)) => Some(A_MATERIALS_FILE),
+            Ok(None) | Err(_) => None,
+        }
     }
 
     /// `--bless` of one part file: said on standard error, or why it could
@@ -334,8 +395,8 @@ fn guarded(
     name: &str,
     colour: bool,
     stderr: &mut String,
-    check: impl FnOnce(&mut String) -> Option<FileResult>,
-) -> Option<FileResult> {
+    check: impl FnOnce(&mut String) -> Result<FileResult, Passed>,
+) -> Result<FileResult, Passed> {
     match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| check(&mut *stderr))) {
         Ok(r) => r,
         Err(payload) => {
@@ -352,7 +413,7 @@ fn guarded(
                 ),
             )
             .help("a bug in massprop, not in the file: please report it, with the file; the other files are checked");
-            Some(invalid(name.to_string(), d, stderr, colour))
+            Ok(invalid(name.to_string(), d, stderr, colour))
         }
     }
 }
@@ -435,7 +496,12 @@ mod tests {
     #[test]
     fn a_file_checked_without_a_panic_keeps_its_own_result() {
         let mut stderr = String::new();
-        assert!(guarded("passed-over.toml", false, &mut stderr, |_| None).is_none());
+        assert!(
+            guarded("passed-over.toml", false, &mut stderr, |_| Err(
+                NOT_A_PART_FILE
+            ))
+            .is_err()
+        );
         assert!(stderr.is_empty());
     }
 }

@@ -13,13 +13,16 @@ pub struct Search {
     /// Globs of paths not to check, as in a `.gitignore` (relative to the
     /// directory searched).
     pub exclude: Vec<String>,
+    /// Name each file the search passes over, and why (`--verbose`), on
+    /// standard error.
+    pub verbose: bool,
 }
 
 /// What a search for part files found. Paths are kept as the file system
 /// gave them (a name need not be UTF-8) and shown by `display_path`.
 pub enum Found {
     /// A part file to check: as named (`false`), or found in a directory
-    /// (`true`: a `*.toml` that does not read as a part file, such as
+    /// (`true`: a `*.toml` that is not `likely_part_file`, such as
     /// `Cargo.toml`, is passed over, and nothing of it is quoted).
     File(PathBuf, bool),
     /// Something that is not checked, with why: a FIFO, socket or device
@@ -141,4 +144,199 @@ fn skipped(p: &Path, why: &str) -> Found {
     let name = display_path(p);
     let d = Diagnostic::file(&name, why);
     Found::Skipped(name, d)
+}
+
+/// massprop's own top-level tables and keys but the generic `name`, which
+/// any TOML file may have: a `*.toml` found in a directory with one of
+/// these, or a near miss of one, is checked (`likely_part_file`). NOTE:
+/// the schema's top-level properties less `name` (a test holds them
+/// equal): a key the reader learns is a key this rule knows.
+pub const OWN_KEYS: [&str; 8] = [
+    "analysis",
+    "budget",
+    "expect",
+    "growth",
+    "materials",
+    "params",
+    "part",
+    "units",
+];
+
+/// Whether a `*.toml` found in a directory is checked: it has one of
+/// massprop's own top-level tables or keys (`OWN_KEYS`), or a near miss of
+/// one (`[[parts]]`, `[Part]`, `[unit]`, `[materails]`), so that a typo
+/// makes the file invalid rather than passed over. Read off the lines, not
+/// parsed: a file that is not valid TOML is judged too, and nothing of a
+/// file passed over is quoted. A key counts at the top level: a table
+/// header's first key (`[part]`, `[[part]]`, `[expect.x]`), or a key
+/// before the first header (`units = …`, `part = [ … ]`).
+pub fn likely_part_file(text: &str) -> bool {
+    top_level_keys(text).any(|k| near_own_key(&k))
+}
+
+/// The top-level keys of `text`, by its lines, quotes taken off (see
+/// `likely_part_file`).
+fn top_level_keys(text: &str) -> impl Iterator<Item = String> + '_ {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut root = true;
+    text.lines().filter_map(move |l| {
+        let l = l.trim_start();
+        if let Some(header) = l.strip_prefix('[') {
+            root = false;
+            let header = header.strip_prefix('[').unwrap_or(header);
+            return first_key(header);
+        }
+        if !root || l.starts_with('#') || !l.contains('=') {
+            return None;
+        }
+        first_key(l)
+    })
+}
+
+/// The first key of a dotted key at the start of `l`: up to `.`, `=`, `]`
+/// or a blank, its quotes taken off.
+fn first_key(l: &str) -> Option<String> {
+    let l = l.trim_start();
+    let (quoted, rest) = match l.strip_prefix(['"', '\'']) {
+        Some(rest) => (true, rest),
+        None => (false, l),
+    };
+    let end = if quoted {
+        rest.find(['"', '\''])?
+    } else {
+        rest.find(|c: char| matches!(c, '.' | '=' | ']' | '[') || c.is_whitespace())
+            .unwrap_or(rest.len())
+    };
+    let key = &rest[..end];
+    (!key.is_empty()).then(|| key.to_string())
+}
+
+/// Whether `key` is one of `OWN_KEYS` or a near miss of one: the same but
+/// for case, `_`, `-` and a plural `s`, or (for a key of five letters or
+/// more, where a slip of one letter is still unlike an ordinary word)
+/// one letter added, dropped, changed or two swapped. NOTE: `part` only
+/// by case and plural: one letter from it are `path`, `port`, `park`,
+/// words a settings file has.
+fn near_own_key(key: &str) -> bool {
+    let k: String = key
+        .chars()
+        .filter(|c| !matches!(c, '_' | '-'))
+        .flat_map(char::to_lowercase)
+        .collect();
+    let singular = k.strip_suffix('s').unwrap_or(&k).to_string();
+    let forms = [k.clone(), format!("{k}s"), singular];
+    OWN_KEYS.iter().any(|own| {
+        forms
+            .iter()
+            .any(|f| f == own || (own.len() >= 5 && strsim::osa_distance(f, own) <= 1))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_part_file_is_likely_a_part_file() {
+        assert!(likely_part_file(
+            "name = \"x\"\n[[part]]\nshape = \"sphere\"\n"
+        ));
+    }
+
+    #[test]
+    fn a_plural_parts_table_is_likely_a_part_file() {
+        assert!(likely_part_file("[[parts]]\nshape = \"sphere\"\n"));
+    }
+
+    #[test]
+    fn a_single_bracket_part_table_is_likely_a_part_file() {
+        assert!(likely_part_file("[part]\nshape = \"sphere\"\n"));
+    }
+
+    #[test]
+    fn a_capitalised_part_table_is_likely_a_part_file() {
+        assert!(likely_part_file("[[Part]]\nshape = \"sphere\"\n"));
+    }
+
+    #[test]
+    fn an_expect_table_alone_is_likely_a_part_file() {
+        assert!(likely_part_file("[expect]\nmass = \"1 kg\"\n"));
+    }
+
+    #[test]
+    fn a_top_level_units_key_is_likely_a_part_file() {
+        assert!(likely_part_file("units = { length = \"mm\" }\n"));
+    }
+
+    #[test]
+    fn a_dotted_own_key_at_the_top_is_likely_a_part_file() {
+        assert!(likely_part_file("analysis.about = [0, 0, 0]\n"));
+    }
+
+    #[test]
+    fn a_quoted_own_table_is_likely_a_part_file() {
+        assert!(likely_part_file("[\"budget\"]\nlimit = \"1 kg\"\n"));
+    }
+
+    #[test]
+    fn a_one_letter_slip_of_a_long_key_is_likely_a_part_file() {
+        assert!(likely_part_file("[materails]\n"));
+        assert!(likely_part_file("[unit]\n"));
+        assert!(likely_part_file("[expct]\n"));
+    }
+
+    #[test]
+    fn a_file_that_is_not_toml_is_judged_by_its_lines() {
+        assert!(likely_part_file("[[parts]\nshape = = \n"));
+    }
+
+    #[test]
+    fn a_cargo_manifest_is_not_a_part_file() {
+        let cargo = "[package]\nname = \"x\"\nversion = \"0.1.0\"\n\n[dependencies]\nserde = \"1\"\n\n[features]\ndefault = []\n\n[[bench]]\nname = \"b\"\npath = \"b.rs\"\n\n[profile.release]\nlto = true\n\n[lints.rust]\nunsafe_code = \"forbid\"\n\n[badges]\n[target.'cfg(unix)'.dependencies]\n[workspace]\n[patch.crates-io]\n";
+        assert!(!likely_part_file(cargo));
+    }
+
+    #[test]
+    fn a_pyproject_is_not_a_part_file() {
+        let py = "[build-system]\nrequires = [\"x\"]\n[project]\nname = \"x\"\n[tool.units]\nparts = 1\n[dependency-groups]\n";
+        assert!(!likely_part_file(py));
+    }
+
+    #[test]
+    fn a_credentials_file_is_not_a_part_file() {
+        assert!(!likely_part_file("[registry]\ntoken = \"secret\"\n"));
+    }
+
+    #[test]
+    fn a_settings_file_with_a_path_key_is_not_a_part_file() {
+        assert!(!likely_part_file(
+            "path = \"/tmp\"\nport = 80\nname = \"x\"\n"
+        ));
+    }
+
+    #[test]
+    fn an_own_key_inside_another_table_is_not_at_the_top_level() {
+        assert!(!likely_part_file(
+            "[server]\nunits = \"metric\"\npart = 1\n"
+        ));
+    }
+
+    #[test]
+    fn a_name_alone_is_not_a_part_file() {
+        assert!(!likely_part_file("name = \"x\"\n"));
+    }
+
+    #[test]
+    fn the_own_keys_are_the_schemas_top_level_keys_but_name() {
+        let schema = crate::model::schema::schema();
+        let mut keys: Vec<&str> = schema["properties"]
+            .as_object()
+            .expect("the schema's properties")
+            .keys()
+            .map(String::as_str)
+            .filter(|k| *k != "name")
+            .collect();
+        keys.sort_unstable();
+        assert_eq!(keys, OWN_KEYS);
+    }
 }

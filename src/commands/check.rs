@@ -64,7 +64,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let checked = run.check(&o.paths, &o.search)?;
     Ok(Outcome {
         stdout: super::Stdout::Text(render::render(
-            &render::Output::Check(&checked.results),
+            &render::Output::Check(&checked.results, checked.skipped),
             o.format,
             terminal.stdout,
         )),

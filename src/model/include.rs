@@ -267,7 +267,16 @@ impl Ctx<'_> {
                 Kind::Mesh => "the path is relative to the part file",
             })
         };
-        let canonical = std::fs::canonicalize(&shown).map_err(unreadable)?;
+        let canonical = std::fs::canonicalize(&shown).map_err(|e| {
+            let d = unreadable(e);
+            match near_include(&shown, inc.get_ref(), &files.roots, kind) {
+                Some(near) => {
+                    let why = d.help_text().unwrap_or_default().to_string();
+                    d.help(format!("did you mean `{near}`? ({why})"))
+                }
+                None => d,
+            }
+        })?;
         // Confined: a part file from a pull request must not read, and
         // quote in an error, any file it names (`/proc/self/environ`).
         if !files.roots.iter().any(|r| canonical.starts_with(r)) {
@@ -700,6 +709,30 @@ impl Ctx<'_> {
         }
         Ok(one.items[0].clone())
     }
+}
+
+/// For an include or a mesh that does not exist: the path as the file
+/// writes it, its file name replaced by the nearest name of its kind in
+/// its directory (`io::near_name`: `arm.tom` → `arm.toml`), when that
+/// directory lies inside the roots includes may read: no name outside
+/// them is listed.
+fn near_include(shown: &Path, written: &str, roots: &[PathBuf], kind: Kind) -> Option<String> {
+    let dir = shown
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let dir = std::fs::canonicalize(dir).ok()?;
+    if !roots.iter().any(|r| dir.starts_with(r)) {
+        return None;
+    }
+    let near = crate::io::near_name(shown, |p| match kind {
+        Kind::Include => crate::io::is_toml(p),
+        Kind::Mesh => crate::mesh::FileType::of(p).is_some(),
+    })?;
+    let name = Path::new(&near).file_name()?;
+    Some(crate::diag::display_path(
+        &Path::new(written).with_file_name(name),
+    ))
 }
 
 #[cfg(test)]

@@ -166,7 +166,7 @@ impl Ctx<'_> {
                             crate::diag::shorten(name.get_ref())
                         ),
                     );
-                    return Err(match units::suggest(name.get_ref(), names.iter().copied()) {
+                    return Err(match crate::materials::suggest(name.get_ref(), names.iter().copied()) {
                         Some(s) => d.label(format!("did you mean \"{s}\"?")),
                         None => d.help("`massprop materials` lists them; add one in `[materials]`, e.g. foam = { density = \"30 kg/m^3\" }"),
                     });

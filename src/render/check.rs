@@ -165,7 +165,7 @@ pub fn kind(r: &FileResult) -> &'static str {
 
 /// The results for people and CI logs; `style.colour`: each `error` as
 /// cargo colours it (on a terminal); `style.width`: robot tables fitted.
-pub fn table(results: &[FileResult], style: super::Style) -> String {
+pub fn table(results: &[FileResult], skipped: usize, style: super::Style) -> String {
     let colour = style.colour;
     let e = Palette::of(colour).error;
     let mut s = String::new();
@@ -195,16 +195,28 @@ pub fn table(results: &[FileResult], style: super::Style) -> String {
             }
         }
     }
-    let counts = Counts::of(results);
-    s.push_str(&format!(
-        "checked {} file{}: {} ok, {} failed, {} invalid\n",
-        counts.files,
-        if counts.files == 1 { "" } else { "s" },
-        counts.ok,
-        counts.failed,
-        counts.invalid
-    ));
+    s.push_str(&summary_line(results, skipped));
     s
+}
+
+/// `checked N files: A ok, B failed, C invalid`, and `, D skipped` when a
+/// directory's search passed files over (`--verbose` names them), as the
+/// table and GitHub's annotations end.
+pub fn summary_line(results: &[FileResult], skipped: usize) -> String {
+    let c = Counts::of(results);
+    let skipped = if skipped == 0 {
+        String::new()
+    } else {
+        format!(", {skipped} skipped")
+    };
+    format!(
+        "checked {} file{}: {} ok, {} failed, {} invalid{skipped}\n",
+        c.files,
+        if c.files == 1 { "" } else { "s" },
+        c.ok,
+        c.failed,
+        c.invalid
+    )
 }
 
 /// The line a failed expectation gets, in the form compilers use:
@@ -307,5 +319,26 @@ pub fn failure(c: &CheckResult) -> String {
                 show(m - hi)
             )
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::summary_line;
+
+    #[test]
+    fn the_summary_line_counts_skipped_files_when_there_are_some() {
+        assert_eq!(
+            summary_line(&[], 2),
+            "checked 0 files: 0 ok, 0 failed, 0 invalid, 2 skipped\n"
+        );
+    }
+
+    #[test]
+    fn the_summary_line_without_skipped_files_is_as_before() {
+        assert_eq!(
+            summary_line(&[], 0),
+            "checked 0 files: 0 ok, 0 failed, 0 invalid\n"
+        );
     }
 }

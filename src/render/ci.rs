@@ -14,7 +14,7 @@
 //! `<inertial>`, with the likely cause (a JUnit test case per link and
 //! engine), and each link's warnings.
 
-use super::check::{Counts, failure, message};
+use super::check::{failure, message};
 use super::robot;
 use crate::analysis::check::{Against, CheckResult, FileResult};
 use crate::analysis::summary::MASSPROP_VERSION;
@@ -59,7 +59,7 @@ fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
 
 /// GitHub Actions workflow commands (`::error …::message`), one per failure
 /// and warning, then the summary line as a plain log line.
-pub fn github(results: &[FileResult]) -> String {
+pub fn github(results: &[FileResult], skipped: usize) -> String {
     // The runner's own escaping (actions/toolkit, `command.ts`): data
     // escapes `%`, CR and LF; a property also `:` and `,`.
     fn data(s: &str) -> String {
@@ -136,21 +136,8 @@ pub fn github(results: &[FileResult]) -> String {
             }
         }
     }
-    out.push_str(&summary_line(results));
+    out.push_str(&super::check::summary_line(results, skipped));
     out
-}
-
-/// `checked N files: …`, as the table ends.
-fn summary_line(results: &[FileResult]) -> String {
-    let c = Counts::of(results);
-    format!(
-        "checked {} file{}: {} ok, {} failed, {} invalid\n",
-        c.files,
-        if c.files == 1 { "" } else { "s" },
-        c.ok,
-        c.failed,
-        c.invalid
-    )
 }
 
 /// JUnit XML: the report `massprop check`, a test suite per file (named by
@@ -440,7 +427,7 @@ mod tests {
         };
         let results = [r];
         assert_eq!(
-            github(&results),
+            github(&results, 0),
             "::error file=a%2Cb%3Ac.toml,title=massprop check%3A triangle inequality::I1 + I2 = 2 < I3 = 5\nchecked 1 file: 0 ok, 1 failed, 0 invalid\n"
         );
         let xml = junit(&results);
@@ -563,7 +550,7 @@ mod tests {
             let results = [hostile_result(&path, &message, &other)];
             let sarif: Result<serde_json::Value, _> = serde_json::from_str(&sarif(&results));
             proptest::prop_assert!(sarif.is_ok());
-            let github = github(&results);
+            let github = github(&results, 0);
             for line in github.lines() {
                 proptest::prop_assert!(
                     line.starts_with("::error file=") || line.starts_with("checked "),

@@ -62,7 +62,9 @@ pub struct Style {
 pub enum Output<'a> {
     /// `report`: the summary, and the name of the file it came from.
     Report(&'a Summary, &'a str),
-    Check(&'a [FileResult]),
+    /// `check`: every file's result, and how many files a directory's
+    /// search passed over.
+    Check(&'a [FileResult], usize),
     Diff(&'a Diff),
     /// `diff` of a part file and a robot description's link.
     LinkDiff(&'a crate::analysis::diff::LinkDiff),
@@ -94,11 +96,11 @@ pub fn write(
             return report::write_table_to(s, source, style.width, w);
         }
         (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
-        (Format::Table, Output::Check(r)) => check::table(r, style),
-        (Format::Json, Output::Check(r)) => check::json(r),
-        (Format::Github, Output::Check(r)) => ci::github(r),
-        (Format::Junit, Output::Check(r)) => ci::junit(r),
-        (Format::Sarif, Output::Check(r)) => ci::sarif(r),
+        (Format::Table, Output::Check(r, skipped)) => check::table(r, *skipped, style),
+        (Format::Json, Output::Check(r, _)) => check::json(r),
+        (Format::Github, Output::Check(r, skipped)) => ci::github(r, *skipped),
+        (Format::Junit, Output::Check(r, _)) => ci::junit(r),
+        (Format::Sarif, Output::Check(r, _)) => ci::sarif(r),
         // The command line offers them for `check` alone (`cli`).
         (Format::Github | Format::Junit | Format::Sarif, _) => {
             return Err(std::io::Error::new(

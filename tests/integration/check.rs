@@ -302,6 +302,37 @@ fn bless_writes_values_keeps_everything_else_and_then_check_passes() {
     assert_eq!(std::fs::read_to_string(&path).unwrap(), before);
 }
 
+/// `--bless` writes the fewest digits within 1/1000 of each tolerance, in
+/// the form the file wrote: a box of 0.1 × 0.2 × 0.3 m³ of steel (7850
+/// kg/m³) is 47.1 kg, written in the file's `kg` string; its centre at
+/// (12.3456 mm, 0.02 m, 0.033333 m) within 1 µm (1 mm / 1000) is
+/// 12.346 mm (12.35 is 4.4 µm off), 0.02 and 0.033333 (0.03333 is 3 µm
+/// off), each component in its own form.
+#[test]
+fn bless_keeps_each_values_form_with_the_fewest_digits_within_its_tolerance() {
+    let dir = scratch("bless-form");
+    let text = "[[part]]\nshape = \"box\"\ndensity = 7850\nsize = [0.1, 0.2, 0.3]\n\
+        center = [0.0123456, 0.02, 0.033333]\n\n[expect]\n\
+        mass = { value = \"4.176 kg\", tol = \"1%\" }\n\
+        center_of_mass = { value = [\"12 mm\", 0, 0.03], tol = 0.001 }\n";
+    let path = dir.join("part.toml");
+    std::fs::write(&path, text).unwrap();
+    let p = path.to_str().unwrap();
+    let (code, _, stderr) = check(&["--bless", p]);
+    assert_eq!(code, 0, "{stderr}");
+    let blessed = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        blessed.ends_with(
+            "mass = { value = \"47.1 kg\", tol = \"1%\" }\n\
+            center_of_mass = { value = [\"12.346 mm\", 0.02, 0.033333], tol = 0.001 }\n"
+        ),
+        "{blessed}"
+    );
+    // A tidy file is blessed into itself.
+    let (_, _, stderr) = check(&["--bless", p]);
+    assert!(stderr.contains("unchanged"), "{stderr}");
+}
+
 #[test]
 fn bless_adds_an_expect_block_and_leaves_invalid_files_untouched() {
     let dir = scratch("bless-new");
@@ -646,8 +677,9 @@ fn check_dir_follows_symlinks_only_to_part_files_inside_it() {
 }
 
 /// A `*.toml` that `check DIR` finds but that is no part file (no
-/// `[[part]]`: `Cargo.toml`, settings, credentials) is passed over: not
-/// counted, nothing of it quoted, not blessed; one named on the command
+/// top-level table or key of massprop's: `Cargo.toml`, settings,
+/// credentials) is passed over: counted as skipped, nothing of it quoted,
+/// not blessed; one named on the command
 /// line is checked (and its error quoted) as before.
 #[test]
 fn check_dir_passes_over_a_toml_file_that_is_not_a_part_file() {
@@ -675,7 +707,8 @@ fn check_dir_passes_over_a_toml_file_that_is_not_a_part_file() {
         assert_eq!(out.status.code(), Some(0), "{stdout}{stderr}");
         assert!(!stdout.contains(SECRET) && !stderr.contains(SECRET));
         assert!(
-            stdout.ends_with("real.toml: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid\n"),
+            stdout
+                .ends_with("real.toml: ok\nchecked 1 file: 1 ok, 0 failed, 0 invalid, 2 skipped\n"),
             "{stdout}"
         );
         assert_eq!(
