@@ -6,7 +6,7 @@
 use crate::analysis::summary::{Accuracy, PrecisionChoice};
 use crate::analysis::{Overrides, Products, Settings};
 use crate::commands::{self, Request};
-use crate::render::Format;
+use crate::output::Format;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 

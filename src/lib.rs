@@ -40,7 +40,7 @@
 //! 3. the model: `model` (the part file read and validated);
 //! 4. composition and principal axes: `compose`, `mass`, `bounds`;
 //! 5. analysis: `analysis` (the one load pipeline; summary, checks, diff);
-//! 6. rendering: `render` (tables and JSON);
+//! 6. output: `output` (tables, JSON, CI formats, the drawing);
 //! 7. commands: `commands`, and `cli` (the command line, clap);
 //! 8. `main.rs`: the process and its exit status.
 
@@ -75,11 +75,11 @@ pub mod model;
 #[doc(hidden)]
 pub mod numeric;
 #[doc(hidden)]
+pub mod output;
+#[doc(hidden)]
 pub mod part;
 #[doc(hidden)]
 pub mod quantity;
-#[doc(hidden)]
-pub mod render;
 #[doc(hidden)]
 pub mod robot;
 #[doc(hidden)]

@@ -33,7 +33,7 @@ use massprop::analysis::summary::Accuracy;
 use massprop::compose::Precision;
 use massprop::model::fast;
 use massprop::model::raw::RawFile;
-use massprop::render;
+use massprop::output;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 

@@ -5,7 +5,7 @@
 //! rendered as check's JSON (every number finite; `null` only for a rule's
 //! `margin`, a link's `inertial` and an engine's `cause`), table (no `inf`
 //! or `NaN` unless the text has the word), GitHub annotations, JUnit and
-//! SARIF. And `render::inertial::update` of a fixed export into each of its
+//! SARIF. And `output::inertial::update` of a fixed export into each of its
 //! links either fails, with a place inside the text, or gives a text that
 //! reads back with that link's inertial replaced (to the bit) and every
 //! other link as it was. Neither reads a document with a reference to an
@@ -18,8 +18,8 @@
 use libfuzzer_sys::fuzz_target;
 use massprop::analysis::check::{FileResult, Status};
 use massprop::diag::Source;
-use massprop::render::inertial::{Export, update};
-use massprop::render::{Style, check, ci};
+use massprop::output::inertial::{Export, update};
+use massprop::output::{Style, check, ci};
 use massprop::robot::engine::Engine;
 use massprop::robot::{Description, Dialect, Inertial, Tensor};
 use serde_json::Value;

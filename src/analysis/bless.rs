@@ -524,7 +524,7 @@ fn add_default_expect(doc: &mut DocumentMut, s: &Summary) {
 /// SI per unit of the plain numbers written for a value of dimension
 /// `dim`: the file's units for a mass, a length or an inertia, SI for the
 /// rest (H, T) and plain numbers for axes, as `[expect]` reads them and
-/// `render::format::DisplayUnits` shows them.
+/// `output::format::DisplayUnits` shows them.
 fn written_scale(u: FileUnits, dim: Dim) -> f64 {
     if dim == Dim::MASS || dim == Dim::LENGTH || dim == Dim::INERTIA {
         u.factor(dim).value()

@@ -1,6 +1,6 @@
 //! What `check` finds in one part file: each `[expect]` entry against the
 //! summary, and the body's physical validity. `check_run` walks the
-//! files; `render::check` prints the results.
+//! files; `output::check` prints the results.
 
 use super::Loaded;
 use super::summary::Summary;
@@ -51,7 +51,7 @@ pub struct CheckResult {
     /// compared.
     #[serde(skip)]
     pub worst_axis: Option<usize>,
-    /// The expectation, SI, for the message (`render::check::message`).
+    /// The expectation, SI, for the message (`output::check::message`).
     #[serde(skip)]
     pub bound: Bound,
     /// The dimension of the value, for its display unit.
@@ -100,7 +100,7 @@ pub enum Status {
     Invalid,
 }
 
-/// One file's outcome; `render::check` writes it in each format.
+/// One file's outcome; `output::check` writes it in each format.
 #[derive(Debug, Clone)]
 pub struct FileResult {
     pub path: String,

@@ -2,7 +2,7 @@
 //! each loaded by the one pipeline (tensor convention), as absolute and
 //! relative changes in SI, and what happened to each part (matched by
 //! name). The contract (table, JSON keys, exit statuses, the
-//! relative-change rule) is docs/diff.md; `render::diff` prints it.
+//! relative-change rule) is docs/diff.md; `output::diff` prints it.
 
 use super::Loaded;
 use super::summary::Summary;

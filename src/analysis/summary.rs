@@ -1,5 +1,5 @@
 //! One serializable summary of a body, in SI, that every output format
-//! renders: `render::report` serializes it as the documented JSON contract
+//! renders: `output::report` serializes it as the documented JSON contract
 //! and prints it for people in the file's units.
 
 pub mod accuracy;

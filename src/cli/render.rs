@@ -58,8 +58,8 @@ pub enum ViewArg {
 }
 
 impl ViewArg {
-    fn view(self) -> crate::render::drawing::View {
-        use crate::render::drawing::View;
+    fn view(self) -> crate::output::drawing::View {
+        use crate::output::drawing::View;
         match self {
             ViewArg::Front => View::Front,
             ViewArg::Top => View::Top,

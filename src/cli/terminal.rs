@@ -5,7 +5,7 @@
 
 use super::Cli;
 use crate::commands::Terminal;
-use crate::render::Style;
+use crate::output::Style;
 use clap::{Args, ColorChoice, CommandFactory, FromArgMatches, ValueEnum};
 use std::ffi::OsString;
 

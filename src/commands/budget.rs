@@ -5,7 +5,7 @@
 use super::Outcome;
 use crate::analysis;
 use crate::diag::Diagnostic;
-use crate::render;
+use crate::output;
 
 /// `report`'s options: a budget reads its file as `report` does.
 pub type Options = super::report::Options;
@@ -24,8 +24,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     );
     let met = statement.limit.as_ref().is_none_or(|l| l.met);
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(
-            &render::Output::Budget(&statement),
+        stdout: super::Stdout::Text(output::render(
+            &output::Output::Budget(&statement),
             o.format,
             terminal.stdout,
         )),

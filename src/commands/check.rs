@@ -11,7 +11,7 @@ use crate::analysis::check_run::Run;
 use crate::analysis::summary::Accuracy;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
-use crate::render::{self, Format};
+use crate::output::{self, Format};
 use std::path::PathBuf;
 
 /// How directories are searched (`--hidden`, `--exclude`).
@@ -63,8 +63,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     };
     let checked = run.check(&o.paths, &o.search)?;
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(
-            &render::Output::Check(&checked.results, checked.skipped),
+        stdout: super::Stdout::Text(output::render(
+            &output::Output::Check(&checked.results, checked.skipped),
             o.format,
             terminal.stdout,
         )),

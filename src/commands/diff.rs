@@ -6,7 +6,7 @@ use crate::analysis::diff::Diff;
 use crate::analysis::summary::Accuracy;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
-use crate::render::{self, Format};
+use crate::output::{self, Format};
 
 #[derive(Debug, Clone)]
 pub struct Options {
@@ -47,8 +47,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let stderr = super::accuracy_warnings(&old, colour) + &super::accuracy_warnings(&new, colour);
     let diff = Diff::of(old, new, o.tol)?;
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(
-            &render::Output::Diff(&diff),
+        stdout: super::Stdout::Text(output::render(
+            &output::Output::Diff(&diff),
             o.format,
             terminal.stdout,
         )),
@@ -165,8 +165,8 @@ fn against_link(
     };
     let diff = LinkDiff::of(old, new, name.clone(), loaded.summary.file_units, o.tol)?;
     Ok(Outcome {
-        stdout: super::Stdout::Text(render::render(
-            &render::Output::LinkDiff(&diff),
+        stdout: super::Stdout::Text(output::render(
+            &output::Output::LinkDiff(&diff),
             o.format,
             terminal.stdout,
         )),

@@ -11,7 +11,7 @@ use super::Outcome;
 use crate::analysis::summary::Summary;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source, visible};
-use crate::render::inertial::{Export, inertial_element, unified_diff, update};
+use crate::output::inertial::{Export, inertial_element, unified_diff, update};
 use crate::robot::{Dialect, Tensor};
 use std::path::PathBuf;
 

@@ -8,8 +8,8 @@ use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
 use crate::materials::BUILT_IN;
 use crate::model::Model;
-use crate::render::materials::Listed;
-use crate::render::{self, Format};
+use crate::output::materials::Listed;
+use crate::output::{self, Format};
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {
@@ -58,7 +58,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         }
     }
     Ok(Outcome::ok(
-        render::render(&render::Output::Materials(&list), o.format, terminal.stdout),
+        output::render(&output::Output::Materials(&list), o.format, terminal.stdout),
         Vec::new(),
     ))
 }

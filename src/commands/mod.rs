@@ -14,7 +14,7 @@ pub mod report;
 
 use crate::diag::Diagnostic;
 use crate::io::{FileId, write_atomically_with};
-use crate::render::Style;
+use crate::output::Style;
 use std::path::{Path, PathBuf};
 
 /// What a run prints on standard output (or into `-o`'s file).
@@ -28,7 +28,7 @@ pub enum Stdout {
         summary: Box<crate::analysis::summary::Summary>,
         /// The name of the part file.
         source: String,
-        format: crate::render::Format,
+        format: crate::output::Format,
         /// Where it goes: standard output's, or `-o`'s file's.
         style: Style,
     },
@@ -47,8 +47,8 @@ impl Stdout {
                 source,
                 format,
                 style,
-            } => crate::render::write(
-                &crate::render::Output::Report(summary, source),
+            } => crate::output::write(
+                &crate::output::Output::Report(summary, source),
                 *format,
                 *style,
                 w,

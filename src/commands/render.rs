@@ -3,7 +3,7 @@
 use super::Outcome;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
-use crate::render::drawing::{self, View};
+use crate::output::drawing::{self, View};
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {

@@ -3,7 +3,7 @@
 use super::Outcome;
 use crate::analysis::{self, Settings};
 use crate::diag::Diagnostic;
-use crate::render::Format;
+use crate::output::Format;
 
 #[derive(Debug, Clone, Default)]
 pub struct Options {

@@ -2,7 +2,7 @@
 //! characters as their pictures, the characters a reader would act on
 //! (C1 controls, bidirectional formatting, line and paragraph separators,
 //! U+FFFE and U+FFFF) as �; the one list of them (`is_hidden`), which
-//! JSON escapes instead (`render::json_line`).
+//! JSON escapes instead (`output::json_line`).
 
 /// The text with control characters (but tab) shown as their Unicode
 /// pictures (U+0000..U+001F as ␀..␟, DEL as ␡; C1, the bidirectional
@@ -46,7 +46,7 @@ pub fn push_visible(out: &mut String, text: &str) {
 /// `ActionCommand.TryParse` looks for the prefix with `IndexOf`), not only
 /// at the line's start as it does `::name::`: so no text from input may
 /// show it. Text shows it as `#＃[` (U+FF03), JSON as `#\u0023[`, the
-/// same string to a JSON reader (`render::json_line`).
+/// same string to a JSON reader (`output::json_line`).
 pub const LEGACY_COMMAND: &str = "##[";
 
 /// `LEGACY_COMMAND` as text from input shows it.
@@ -66,7 +66,7 @@ pub fn may_hide(text: &str) -> bool {
 /// The characters that text from input may not show raw, in any output:
 /// controls (C0, DEL, C1), the bidirectional formatting characters, the
 /// line and paragraph separators, U+FFFE and U+FFFF. Tables, messages and
-/// XML show them as pictures or �, JSON escapes them (`render::json_line`).
+/// XML show them as pictures or �, JSON escapes them (`output::json_line`).
 pub fn is_hidden(c: char) -> bool {
     c.is_control() || is_bidi(c) || is_line_separator(c) || is_xml_noncharacter(c)
 }

@@ -2,7 +2,7 @@
 //! asked for, with the margins of the engine's rule, the likely cause of a
 //! failure, and warnings a reader of the file would want (mirrored links
 //! whose products disagree, duplicate names, links without an inertial).
-//! `analysis::check_run` reads the files; `render::check` and `render::ci`
+//! `analysis::check_run` reads the files; `output::check` and `output::ci`
 //! write the results.
 
 use super::cause::{self, Cause};

@@ -1,6 +1,6 @@
 //! Robot description files: the `<inertial>` elements of URDF, SDFormat and
 //! MJCF files, read (`read`; written and replaced in place by
-//! `render::inertial`), and
+//! `output::inertial`), and
 //! judged by each simulator's own rule (`engine`, with the likely cause of
 //! a failure in `cause`). docs/robots.md is the contract.
 //!

@@ -1,7 +1,7 @@
 //! A placed shape's outline in 3-D, in the file's frame and length unit:
 //! the lines and curves whose orthographic projections draw it. Each
 //! shape's module makes its own (`ShapeKind::outline`);
-//! `render::drawing::view` projects the pieces.
+//! `output::drawing::view` projects the pieces.
 //!
 //! - box, plate: the convex hull of the corners (the exact silhouette of
 //!   a convex solid); a mesh: its silhouette edges in each view;

@@ -4,7 +4,7 @@
 //!
 //! The scene: one file that passes, one whose two expectations fail (one
 //! of them spanning a multi-line entry), and one that is invalid. (A body
-//! that is not physical is refused as it is read; `render::ci`'s unit test
+//! that is not physical is refused as it is read; `output::ci`'s unit test
 //! covers the validity checks that back it up.)
 
 use crate::common::{massprop, scratch};

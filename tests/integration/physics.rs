@@ -797,7 +797,7 @@ fn thickness_and_diameter_change_nothing_in_the_composition() {
     assert!(a.idealisation.is_some() && b.idealisation.is_none());
     let json = |s: &Summary| {
         let mut v: serde_json::Value =
-            serde_json::from_str(&massprop::render::report::json(s)).unwrap();
+            serde_json::from_str(&massprop::output::report::json(s)).unwrap();
         v.as_object_mut().unwrap().remove("idealisation");
         v
     };
@@ -807,7 +807,7 @@ fn thickness_and_diameter_change_nothing_in_the_composition() {
 #[test]
 fn idealisation_is_absent_from_json_without_real_sizes() {
     let s = summary(&assembly(Vector3::zeros(), false));
-    let v: serde_json::Value = serde_json::from_str(&massprop::render::report::json(&s)).unwrap();
+    let v: serde_json::Value = serde_json::from_str(&massprop::output::report::json(&s)).unwrap();
     assert!(v.get("idealisation").is_none());
     assert!(v["parts"][0]["principal_moment_share"].is_array());
 }

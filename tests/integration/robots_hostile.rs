@@ -292,7 +292,7 @@ fn updated(path: &Path, before: &[u8], after: &[u8], link: &str) -> Result<(), S
             .min(room);
         let old = String::from_utf8_lossy(&b[prefix..b.len() - suffix]);
         let new = String::from_utf8_lossy(&a[prefix..a.len() - suffix]);
-        let mass = massprop::render::format::shortest(exported().mass);
+        let mass = massprop::output::format::shortest(exported().mass);
         for tag in [
             "<link", "<body", "<model", "<joint", "<robot", "<sdf", "<mujoco", "<world",
         ] {

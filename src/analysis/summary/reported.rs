@@ -145,7 +145,7 @@ mod tests {
     #[test]
     fn the_json_has_each_reported_key_with_its_shape_and_no_other_quantity() {
         let s = turning_box();
-        let text = crate::render::json_line(&s);
+        let text = crate::output::json_line(&s);
         let v: serde_json::Value = serde_json::from_str(&text).unwrap();
         let bounds = &v["error_bounds"];
         for info in &crate::quantity::QUANTITIES {

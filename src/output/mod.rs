@@ -6,7 +6,7 @@
 //! - `grid`: the one table writer;
 //! - one module per command (`report`, `check`, `diff`, `materials`), each
 //!   with a `table` and a `json` renderer that return strings;
-//! - `drawing`: `render`'s SVG of the body (its own output: no `Format`).
+//! - `drawing`: the `render` command's SVG of the body (its own output: no `Format`).
 //!
 //! `Format` is matched in one place, `render`: a command hands over its
 //! result as an `Output` and never looks at the format. How the text is

@@ -3,7 +3,7 @@
 //! `UpdateError`), and the diff that `--dry-run` shows instead of writing
 //! (`unified_diff`).
 //!
-//! Numbers are written by `render::format::shortest`: the shortest decimal
+//! Numbers are written by `output::format::shortest`: the shortest decimal
 //! that reads back as the same f64, so that a file written and read again
 //! holds exactly the values computed, with no digit more than that needs.
 
@@ -13,7 +13,7 @@ mod update;
 pub use error::UpdateError;
 pub use update::update;
 
-use crate::render::format::push_shortest;
+use crate::output::format::push_shortest;
 use crate::robot::{Dialect, Tensor};
 
 /// What `export` writes: a body's inertial in the link frame, SI.

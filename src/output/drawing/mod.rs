@@ -553,7 +553,7 @@ fn frame(s: &mut String, cell: &Cell, unit: &str) {
     s.push_str("v4h");
     num(s, px);
     s.push_str("v-4\" style=\"stroke:#000;stroke-width:1.5\"/>\n");
-    let label = format!("{} {unit}", crate::render::format::fmt_sig(len, 6));
+    let label = format!("{} {unit}", crate::output::format::fmt_sig(len, 6));
     text(s, [x + px + 6.0, y + 4.0], &label, None);
     if cell.view == View::Iso {
         // Beside the bar's label, inside the view.
@@ -575,7 +575,7 @@ fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Options) -> Vec<
         .order
         .iter()
         .enumerate()
-        .map(|(k, name)| Entry::Colour(PALETTE[k % 9], crate::render::format::name(name)))
+        .map(|(k, name)| Entry::Colour(PALETTE[k % 9], crate::output::format::name(name)))
         .collect();
     e.push(Entry::Cg);
     e.push(Entry::Axes);
@@ -597,7 +597,7 @@ fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Options) -> Vec<
     }
     let mut lines = vec![Entry::Text(format!(
         "{}: lengths in {}, third-angle views",
-        crate::render::format::name(&o.title),
+        crate::output::format::name(&o.title),
         body.unit
     ))];
     // Four entries a line.
