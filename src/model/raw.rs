@@ -5,12 +5,7 @@
 //! `#[serde(tag = "shape")]` enum: with toml, internally tagged enums lose
 //! error positions and let unknown keys through. Which keys apply to which
 //! shape is checked in `model`.
-//!
-//! The same types give the part file's JSON Schema (`model::schema`):
-//! `JsonSchema` is derived, each `Spanned` value described by the type it
-//! holds (`schemars(with)`: a span is no part of the file's text).
 
-use schemars::JsonSchema;
 use serde::Deserialize;
 use serde::de::{self, Deserializer, Visitor};
 use std::fmt;
@@ -83,32 +78,23 @@ table_only!(
     "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
 );
 
-#[derive(Deserialize, JsonSchema, Debug)]
+#[derive(Deserialize, Debug)]
 #[serde(deny_unknown_fields, expecting = "a part file")]
 pub struct RawFile {
-    #[schemars(with = "Option<String>")]
     pub name: Option<Spanned<String>>,
-    #[schemars(with = "Option<RawUnits>")]
     pub units: Option<Spanned<RawUnits>>,
-    #[schemars(with = "Option<Vec<RawPart>>")]
     pub part: Option<Spanned<Vec<Spanned<RawPart>>>>,
-    #[schemars(with = "Option<RawAnalysis>")]
     pub analysis: Option<Spanned<RawAnalysis>>,
-    #[schemars(with = "Option<RawExpect>")]
     pub expect: Option<Spanned<RawExpect>>,
     /// `[materials]`: name → { density }, adding to the built-in ones.
-    #[schemars(with = "Option<std::collections::BTreeMap<String, RawMaterial>>")]
     pub materials: Option<Materials>,
     /// `[params]`: named quantities that any quantity string may use
     /// (`model::params`).
-    #[schemars(with = "Option<std::collections::BTreeMap<String, Quantity>>")]
     pub params: Option<Params>,
     /// `[growth]`: maturity name → mass growth allowance, a percentage
     /// string (`estimated = "15 %"`; `model::budget`).
-    #[schemars(with = "Option<std::collections::BTreeMap<String, super::schema::Percentage>>")]
     pub growth: Option<Growth>,
     /// `[budget]`: the not-to-exceed limit of the predicted mass.
-    #[schemars(with = "Option<RawBudget>")]
     pub budget: Option<Spanned<RawBudget>>,
 }
 
@@ -121,33 +107,26 @@ pub type Params = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Qu
 pub type Growth = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Quantity>>>;
 
 /// `[budget]`.
-#[derive(Deserialize, JsonSchema, Debug)]
+#[derive(Deserialize, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Budget")]
 pub struct RawBudget {
     /// The not-to-exceed limit of the predicted mass: a mass.
-    #[schemars(with = "Quantity")]
     pub limit: Spanned<Quantity>,
 }
 
 /// `[materials]`.
 pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
 
-#[derive(Deserialize, JsonSchema, Debug)]
+#[derive(Deserialize, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Material")]
 pub struct RawMaterial {
-    #[schemars(with = "Quantity")]
     pub density: Spanned<Quantity>,
 }
 
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Units")]
 pub struct RawUnits {
-    #[schemars(with = "Option<super::schema::LengthUnit>")]
     pub length: Option<Spanned<String>>,
-    #[schemars(with = "Option<super::schema::MassUnit>")]
     pub mass: Option<Spanned<String>>,
 }
 
@@ -155,128 +134,85 @@ pub struct RawUnits {
 /// `center`) are kept in the struct; every other key is boxed, so that a
 /// part is 368 bytes, not 1,240: a file's parts are all held at once while
 /// it is read, and they were most of the memory of reading a large file.
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Part")]
 pub struct RawPart {
-    #[schemars(with = "Option<String>")]
     pub name: Option<Spanned<String>>,
     /// The primitive; absent only in a part that `include`s a file.
-    #[schemars(with = "Option<super::schema::ShapeName>")]
     pub shape: Option<Spanned<String>>,
-    #[schemars(with = "Option<Quantity>")]
     pub mass: Option<Spanned<Quantity>>,
-    #[schemars(with = "Option<Quantity>")]
     pub density: Option<Box<Spanned<Quantity>>>,
-    #[schemars(with = "Option<Quantity>")]
     pub areal_density: Option<Box<Spanned<Quantity>>>,
-    #[schemars(with = "Option<Quantity>")]
     pub linear_density: Option<Box<Spanned<Quantity>>>,
-    #[schemars(with = "Option<Vec<Quantity>>")]
     pub size: Option<Vector>,
-    #[schemars(with = "Option<Quantity>")]
     pub length: Option<Box<Spanned<Quantity>>>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub center: Option<Vector>,
-    #[schemars(with = "Option<RawRotation>")]
     pub rotation: Option<Box<Spanned<RawRotation>>>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub corner: Option<Box<Vector>>,
-    #[schemars(with = "Option<Vec<[Quantity; 3]>>")]
     pub edges: Option<Box<Spanned<Vec<Vector>>>>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub from: Option<Box<Vector>>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub to: Option<Box<Vector>>,
     /// A plate's real thickness: reported against, never composed.
-    #[schemars(with = "Option<Quantity>")]
     pub thickness: Option<Box<Spanned<Quantity>>>,
     /// A rod's real diameter: reported against, never composed. For a
     /// cylinder, disk, sphere, cone or hemisphere, twice its `radius`.
-    #[schemars(with = "Option<Quantity>")]
     pub diameter: Option<Box<Spanned<Quantity>>>,
     /// Cylinder, disk, sphere, cone, hemisphere (outer radius, and the
     /// optional inner one), torus (its axis to the tube's centre).
-    #[schemars(with = "Option<Quantity>")]
     pub radius: Option<Box<Spanned<Quantity>>>,
-    #[schemars(with = "Option<Quantity>")]
     pub inner_radius: Option<Box<Spanned<Quantity>>>,
     /// Cylinder, disk, sphere, cone and hemisphere: the inner diameter,
     /// instead of `inner_radius` (`diameter` gives the outer one).
-    #[schemars(with = "Option<Quantity>")]
     pub inner_diameter: Option<Box<Spanned<Quantity>>>,
     /// A cone's radius at its top (local z = +length/2).
-    #[schemars(with = "Option<Quantity>")]
     pub top_radius: Option<Box<Spanned<Quantity>>>,
     /// A hollow cone's inner radius at its top.
-    #[schemars(with = "Option<Quantity>")]
     pub top_inner_radius: Option<Box<Spanned<Quantity>>>,
     /// A torus's tube radius.
-    #[schemars(with = "Option<Quantity>")]
     pub tube_radius: Option<Box<Spanned<Quantity>>>,
     /// A hollow torus's inner tube radius.
-    #[schemars(with = "Option<Quantity>")]
     pub inner_tube_radius: Option<Box<Spanned<Quantity>>>,
     /// A prism's polygon: [x, y] vertices in its local x–y plane.
-    #[schemars(with = "Option<Vec<[Quantity; 2]>>")]
     pub polygon: Option<Box<Spanned<Vec<Vector>>>>,
     /// Another part file placed here as a sub-assembly.
-    #[schemars(with = "Option<String>")]
     pub include: Option<Box<Spanned<String>>>,
     /// Where the included file's origin goes (with `include`), or a
     /// prism's local origin.
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Box<Vector>>,
     /// Parameters passed to the included file (with `include`).
-    #[schemars(with = "Option<std::collections::BTreeMap<String, Quantity>>")]
     pub params: Option<Box<Params>>,
     /// A named material instead of a density.
-    #[schemars(with = "Option<super::schema::MaterialName>")]
     pub material: Option<Box<Spanned<String>>>,
     /// A rod's cross-section area (with `material`).
-    #[schemars(with = "Option<Quantity>")]
     pub area: Option<Box<Spanned<Quantity>>>,
     /// A triangle's three vertices.
-    #[schemars(with = "Option<[[Quantity; 3]; 3]>")]
     pub vertices: Option<Box<Spanned<Vec<Vector>>>>,
     /// A given inertia tensor (rows) about the centroid, local axes.
-    #[schemars(with = "Option<[[Quantity; 3]; 3]>")]
     pub inertia: Option<Box<Spanned<Vec<Vector>>>>,
     /// Sign convention of `inertia`'s products: "tensor" or "positive".
-    #[schemars(with = "Option<super::schema::Products>")]
     pub products: Option<Box<Spanned<String>>>,
     /// A cut-out: subtracted from the body.
-    #[schemars(with = "Option<bool>")]
     pub remove: Option<Box<Spanned<bool>>>,
     /// Copies of the part along a step or about an axis, named `NAME[i]`.
-    #[schemars(with = "Option<RawArray>")]
     pub array: Option<Box<Spanned<RawArray>>>,
     /// The part and its mirror image in a plane: `NAME[0]` and `NAME[1]`.
-    #[schemars(with = "Option<RawMirror>")]
     pub mirror: Option<Box<Spanned<RawMirror>>>,
     /// A mesh's file (STL or OBJ), relative to the part file.
-    #[schemars(with = "Option<String>")]
     pub file: Option<Box<Spanned<String>>>,
     /// The length unit of a mesh file's coordinates.
-    #[schemars(with = "Option<super::schema::LengthUnit>")]
     pub mesh_unit: Option<Box<Spanned<String>>>,
     /// A mesh's mode: "solid" (the default) or "shell".
-    #[schemars(with = "Option<super::schema::MeshMode>")]
     pub mode: Option<Box<Spanned<String>>>,
     /// The part's group in the weight statement: a path of names joined
     /// by `/` (`propulsion/tanks`; `model::budget`).
-    #[schemars(with = "Option<super::schema::GroupPath>")]
     pub group: Option<Box<Spanned<String>>>,
     /// Its design maturity: a key of the file's `[growth]`.
-    #[schemars(with = "Option<String>")]
     pub maturity: Option<Box<Spanned<String>>>,
     /// The tolerance of `mass` (`model::tolerance`): `0.1`, `"0.1 kg"`,
     /// `"2 %"`, `"± 0.1 kg uniform"`.
-    #[schemars(with = "Option<super::schema::TolAmount>")]
     pub tol: Option<Box<Spanned<Quantity>>>,
     /// The keys its shape declares itself (`ShapeKind::OWN_KEYS`).
     #[serde(skip)]
-    #[schemars(skip)]
     pub own: Option<Box<Own>>,
 }
 
@@ -284,71 +220,50 @@ pub struct RawPart {
 /// [x, y, z], step_degrees = θ, origin = [x, y, z] }`: N copies of a part,
 /// copy i moved by i·step, or turned by i·θ about the axis through
 /// `origin`.
-#[derive(Deserialize, JsonSchema, Debug, Default, Clone)]
+#[derive(Deserialize, Debug, Default, Clone)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Array")]
 pub struct RawArray {
     /// How many copies, the part itself the first: a positive integer.
-    #[schemars(with = "Quantity")]
     pub count: Option<Spanned<Quantity>>,
     /// A linear array: the step from each copy to the next (lengths).
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub step: Option<Vector>,
     /// A polar array: the axis the copies turn about (a direction, any
     /// non-zero length).
-    #[schemars(with = "Option<[f64; 3]>")]
     pub axis: Option<Floats>,
     /// A polar array: the turn from each copy to the next, in degrees.
-    #[schemars(with = "Option<Quantity>")]
     pub step_degrees: Option<Spanned<Quantity>>,
     /// A polar array: a point of the axis (lengths); [0, 0, 0] if not given.
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Vector>,
 }
 
 /// `mirror = { normal = [x, y, z], origin = [x, y, z] }`: the part and its
 /// mirror image in the plane through `origin` normal to `normal`.
-#[derive(Deserialize, JsonSchema, Debug, Default, Clone)]
+#[derive(Deserialize, Debug, Default, Clone)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Mirror")]
 pub struct RawMirror {
     /// The plane's normal (a direction, any non-zero length).
-    #[schemars(with = "[f64; 3]")]
     pub normal: Option<Floats>,
     /// A point of the plane (lengths); [0, 0, 0] if not given.
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub origin: Option<Vector>,
 }
 
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Rotation")]
 pub struct RawRotation {
-    #[schemars(with = "Option<[f64; 4]>")]
     pub quaternion: Option<Floats>,
-    #[schemars(with = "Option<[f64; 3]>")]
     pub axis: Option<Floats>,
-    #[schemars(with = "Option<Angles>")]
     pub degrees: Option<Spanned<Angles>>,
-    #[schemars(with = "Option<[[f64; 3]; 3]>")]
     pub matrix: Option<Spanned<Vec<Floats>>>,
-    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub intrinsic: Option<Spanned<String>>,
-    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub extrinsic: Option<Spanned<String>>,
 }
 
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Analysis")]
 pub struct RawAnalysis {
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub about: Option<Vector>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub omega: Option<Vector>,
-    #[schemars(with = "Option<[Quantity; 3]>")]
     pub alpha: Option<Vector>,
-    #[schemars(with = "Option<RawAxes>")]
     pub axes: Option<Spanned<RawAxes>>,
 }
 
@@ -359,25 +274,16 @@ pub struct RawAnalysis {
 /// NOTE: the rotation keys repeat `RawRotation`'s: `#[serde(flatten)]`
 /// cannot be combined with `deny_unknown_fields`, which is what makes a
 /// misspelt key an error here. `rotation()` hands them to the one reader.
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Axes")]
 pub struct RawAxes {
-    #[schemars(with = "Option<[f64; 3]>")]
     pub x: Option<Floats>,
-    #[schemars(with = "Option<[f64; 3]>")]
     pub y: Option<Floats>,
-    #[schemars(with = "Option<[f64; 4]>")]
     pub quaternion: Option<Floats>,
-    #[schemars(with = "Option<[f64; 3]>")]
     pub axis: Option<Floats>,
-    #[schemars(with = "Option<Angles>")]
     pub degrees: Option<Spanned<Angles>>,
-    #[schemars(with = "Option<[[f64; 3]; 3]>")]
     pub matrix: Option<Spanned<Vec<Floats>>>,
-    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub intrinsic: Option<Spanned<String>>,
-    #[schemars(with = "Option<super::schema::EulerAxes>")]
     pub extrinsic: Option<Spanned<String>>,
 }
 
@@ -464,55 +370,35 @@ impl<'de> Deserialize<'de> for Angles {
 }
 
 /// `[expect]`: the quantities a check compares, each optional.
-#[derive(Deserialize, JsonSchema, Debug)]
+#[derive(Deserialize, Debug)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Expect")]
 pub struct RawExpect {
-    #[schemars(with = "Option<RawExpectation>")]
     pub mass: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub center_of_mass: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub principal_moments: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub inertia_com: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub inertia_ref: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub radii_of_gyration: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub radii_of_gyration_axes: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub angular_momentum: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub kinetic_energy: Option<Spanned<RawExpectation>>,
     /// The predicted body's (basic mass and growth: `massprop budget`).
-    #[schemars(with = "Option<RawExpectation>")]
     pub predicted_mass: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub predicted_center_of_mass: Option<Spanned<RawExpectation>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
     /// Three unit rows, compared by angle (`tol_degrees`).
-    #[schemars(with = "Option<RawExpectation>")]
     pub principal_axes: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixx")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub ixx: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Iyy")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub iyy: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Izz")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub izz: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixy")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub ixy: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Ixz")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub ixz: Option<Spanned<RawExpectation>>,
     #[serde(rename = "Iyz")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub iyz: Option<Spanned<RawExpectation>>,
 }
 
@@ -560,47 +446,29 @@ impl RawExpect {
 /// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
-#[derive(Deserialize, JsonSchema, Debug, Default)]
+#[derive(Deserialize, Debug, Default)]
 #[serde(remote = "Self", deny_unknown_fields)]
-#[schemars(rename = "Expectation")]
 pub struct RawExpectation {
-    #[schemars(with = "Option<ExpectValue>")]
     pub value: Option<Spanned<ExpectValue>>,
-    #[schemars(with = "Option<super::schema::Tolerance>")]
     pub tol: Option<Spanned<Quantity>>,
     /// `principal_axes`'s tolerance: an angle in degrees, not negative.
-    #[schemars(with = "Option<f64>")]
     pub tol_degrees: Option<Spanned<Quantity>>,
-    #[schemars(with = "Option<ExpectValue>")]
     pub min: Option<Spanned<ExpectValue>>,
-    #[schemars(with = "Option<ExpectValue>")]
     pub max: Option<Spanned<ExpectValue>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub x: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub y: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub z: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub xx: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub yy: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub zz: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub xy: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub xz: Option<Box<Spanned<RawExpectation>>>,
-    #[schemars(with = "Option<RawExpectation>")]
     pub yz: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "1")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub c1: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "2")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub c2: Option<Box<Spanned<RawExpectation>>>,
     #[serde(rename = "3")]
-    #[schemars(with = "Option<RawExpectation>")]
     pub c3: Option<Box<Spanned<RawExpectation>>>,
 }
 

@@ -2,28 +2,31 @@
 //! editors: Taplo and Even Better TOML complete and check a part file that
 //! names it in a `#:schema` comment (docs/part-file.md).
 //!
-//! Nothing here lists keys of its own. The tables, their keys and their
-//! types come from the reader's serde mirror (`raw`, deriving
-//! `JsonSchema`), so a key added there is in the schema, and a shape's
-//! own keys from their declarations (`ShapeKind::OWN_KEYS`); which keys each
-//! shape takes, which it needs and how many numbers its `size` and
-//! `edges` hold come from the shape table (`shapes::SHAPES`); the units
-//! and the quantity strings from `units`. The schema says less than the
-//! model checks (ranges, perpendicular edges, a key's dimension): a file it
-//! accepts may still be refused by `massprop check`, never the other way
-//! round (tests/integration/schema.rs).
+//! A part's keys come from their declarations (`keys::COMMON`, a shape's
+//! own in `ShapeKind::OWN_KEYS`): each key's type from its `Kind`, its
+//! description from its doc, so a key declared there is in the schema.
+//! The other tables (`[units]`, `[analysis]` and its `axes`, `rotation`,
+//! `array`, `mirror`, `[expect]`, `[materials]`, `[params]`, `[growth]`,
+//! `[budget]`) are declared below, `[expect]`'s keys from the table of
+//! quantities (`quantity::QUANTITIES`). Which keys each shape takes,
+//! which it needs and how many numbers its `size` and `edges` hold come
+//! from the shape table (`shapes::SHAPES`); the units and the quantity
+//! strings from `units`. The schema says less than the model checks
+//! (ranges, perpendicular edges, a key's dimension): a file it accepts may
+//! still be refused by `massprop check`, never the other way round
+//! (tests/integration/schema.rs).
 //!
 //! Draft 2020-12 by its `$schema`, but in draft 7's keywords alone (with
 //! `$defs`, which a draft-7 validator reaches by its JSON pointer): Taplo
 //! 0.9, the engine of Even Better TOML, validates as draft 7 and skips any
 //! keyword it does not know.
 
-use super::raw::{Angles, ExpectValue, Quantity, RawFile};
+use super::keys::COMMON;
 use crate::shapes::{Key, Kind, MaterialRule, SHAPES, Spanned as Spans};
-use crate::units;
-use schemars::{JsonSchema, Schema, SchemaGenerator, json_schema};
 use serde_json::{Map, Value, json};
-use std::borrow::Cow;
+use tables::{array, definitions, doc, each_required, map_of, r};
+
+mod tables;
 
 /// The schema's `$id`: a name, not an address (no copy of it is served
 /// anywhere; `massprop schema` prints it). It names version 1 of the part
@@ -40,97 +43,99 @@ pub fn text() -> String {
 
 /// The JSON Schema of a part file.
 pub fn schema() -> Value {
-    let generator = schemars::generate::SchemaSettings::draft2020_12().into_generator();
-    let mut root = generator.into_root_schema_for::<RawFile>().to_value();
-    // TOML has no null: an absent key is the only `None`.
-    without_nulls(&mut root);
-    let obj = root
-        .as_object_mut()
-        .expect("invariant: a struct's schema is an object");
-    obj.insert("$id".into(), ID.into());
-    obj.insert("title".into(), "massprop part file".into());
-    obj.insert(
-        "description".into(),
-        "A massprop part file, version 1: `massprop check FILE` checks it all (docs/part-file.md)."
-            .into(),
-    );
-    obj.insert("required".into(), json!(["part"]));
-    let props = &mut obj["properties"];
-    props["part"]["minItems"] = 1.into();
-    let part = obj
-        .get_mut("$defs")
-        .and_then(|d| d.get_mut("Part"))
-        .and_then(Value::as_object_mut)
-        .expect("invariant: `RawPart` is named `Part` in `$defs`");
-    part.insert("allOf".into(), Value::Array(part_rules()));
-    // A shape's own keys (`ShapeKind::OWN_KEYS`) are no field of the serde
-    // mirror: each from its declaration.
-    for s in &SHAPES {
-        for key in s.shape.own_keys() {
-            part["properties"][key.name] = own_key(key);
-        }
-    }
-    // A plain number may be written as a string (`count = "32"`): a
-    // count, an angle in degrees, a parameter.
-    let defs = root
-        .get_mut("$defs")
-        .and_then(Value::as_object_mut)
-        .expect("invariant: the schema has `$defs`");
-    defs.insert("PlainNumber".into(), plain_number());
-    for (def, key) in [("Array", "count"), ("Array", "step_degrees")] {
-        defs[def]["properties"][key]["$ref"] = "#/$defs/PlainNumber".into();
-    }
-    defs["Part"]["properties"]["params"]["additionalProperties"] =
-        json!({ "$ref": "#/$defs/PlainNumber" });
-    root["properties"]["params"]["additionalProperties"] = json!({ "$ref": "#/$defs/PlainNumber" });
-    // An array is along a step or about an axis (`model::copies`).
-    if let Some(array) = root
-        .get_mut("$defs")
-        .and_then(|d| d.get_mut("Array"))
-        .and_then(Value::as_object_mut)
-    {
-        array.insert(
-            "oneOf".into(),
-            json!([
-                {
-                    "required": ["step"],
-                    "not": { "anyOf": each_required(&["axis", "step_degrees", "origin"]) },
-                },
-                {
-                    "required": ["axis", "step_degrees"],
-                    "not": { "required": ["step"] },
-                },
-            ]),
-        );
-    }
-    root
+    let mut defs = definitions();
+    defs.insert("Part".into(), part());
+    json!({
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "$id": ID,
+        "title": "massprop part file",
+        "description": "A massprop part file, version 1: `massprop check FILE` checks it all (docs/part-file.md).",
+        "type": "object",
+        "additionalProperties": false,
+        "required": ["part"],
+        "properties": {
+            "name": { "type": "string" },
+            "units": r("Units"),
+            "part": { "type": "array", "items": r("Part"), "minItems": 1 },
+            "analysis": r("Analysis"),
+            "expect": r("Expect"),
+            "materials": map_of(
+                r("Material"),
+                "`[materials]`: name → { density }, adding to the built-in ones.",
+            ),
+            "params": map_of(
+                r("PlainNumber"),
+                "`[params]`: named quantities that any quantity string may use\n(`model::params`).",
+            ),
+            "growth": map_of(
+                r("Percentage"),
+                "`[growth]`: maturity name → mass growth allowance, a percentage\nstring (`estimated = \"15 %\"`; `model::budget`).",
+            ),
+            "budget": doc(r("Budget"), "`[budget]`: the not-to-exceed limit of the predicted mass."),
+        },
+        "$defs": defs,
+    })
 }
 
-/// The schema of a shape's own key, from its declaration: its kind, and
-/// its one line of docs.
-fn own_key(key: &Key) -> Value {
-    let quantity = json!({ "$ref": "#/$defs/Quantity" });
-    let array = |items: Value, n: Option<usize>| match n {
-        Some(n) => json!({ "type": "array", "items": items, "minItems": n, "maxItems": n }),
-        None => json!({ "type": "array", "items": items }),
-    };
+/// `[[part]]`: its keys from their declarations, its rules from `SHAPES`.
+fn part() -> Value {
+    let mut props = Map::new();
+    let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
+    for key in COMMON.iter().chain(own) {
+        props.insert(key.name.into(), key_schema(key));
+    }
+    json!({
+        "description": "a part: a shape, or another part file placed here (`include`)",
+        "type": "object",
+        "additionalProperties": false,
+        "properties": props,
+        "allOf": part_rules(),
+    })
+}
+
+/// The part keys whose text the model checks against a table or a
+/// pattern: the definition that says which, instead of a plain string (or,
+/// for `tol`, a quantity).
+const NAMED: [(&str, &str); 7] = [
+    ("shape", "ShapeName"),
+    ("material", "MaterialName"),
+    ("products", "Products"),
+    ("mesh_unit", "LengthUnit"),
+    ("mode", "MeshMode"),
+    ("group", "GroupPath"),
+    ("tol", "TolAmount"),
+];
+
+/// The part keys whose rows are as many on every shape (`edges` are not:
+/// a plate's 2, a box's 3, which its rule says).
+const ROWS: [(&str, usize); 2] = [("vertices", 3), ("inertia", 3)];
+
+/// The schema of a part key, from its declaration: its kind (or the
+/// definition `NAMED` gives it), and its one line of docs.
+fn key_schema(key: &Key) -> Value {
+    let quantity = r("Quantity");
     let mut v = match key.kind {
         Kind::Quantity => quantity,
         Kind::Point => array(quantity, Some(3)),
         Kind::Quantities(n) => array(quantity, n),
-        Kind::Rows { width, .. } => array(array(quantity, Some(width)), None),
+        Kind::Rows { width, .. } => {
+            let rows = ROWS.iter().find(|(k, _)| *k == key.name).map(|r| r.1);
+            array(array(quantity, Some(width)), rows)
+        }
         Kind::Str => json!({ "type": "string" }),
         Kind::Bool => json!({ "type": "boolean" }),
-        Kind::Rotation => json!({ "$ref": "#/$defs/Rotation" }),
-        Kind::ArrayTable => json!({ "$ref": "#/$defs/Array" }),
-        Kind::MirrorTable => json!({ "$ref": "#/$defs/Mirror" }),
+        Kind::Rotation => r("Rotation"),
+        Kind::ArrayTable => r("Array"),
+        Kind::MirrorTable => r("Mirror"),
         Kind::ParamsTable => json!({
             "type": "object",
-            "additionalProperties": { "$ref": "#/$defs/PlainNumber" },
+            "additionalProperties": r("PlainNumber"),
         }),
     };
-    v["description"] = key.doc.into();
-    v
+    if let Some((_, def)) = NAMED.iter().find(|(k, _)| *k == key.name) {
+        v = r(def);
+    }
+    doc(v, key.doc)
 }
 
 /// A part is a shape or an include; each shape's rules, from its entry in
@@ -258,12 +263,6 @@ fn mass_rule(s: &crate::shapes::ShapeInfo) -> Value {
     json!({ "oneOf": each_required(&one_of) })
 }
 
-/// `{"required": [key]}` for each key: with `oneOf`, exactly one of them;
-/// with `anyOf`, at least one.
-fn each_required(keys: &[&str]) -> Value {
-    keys.iter().map(|k| json!({ "required": [k] })).collect()
-}
-
 /// The centred placement (its dimensions, and `center` where it has one),
 /// or the spanned one (`corner` and `edges`, `from` and `to`), not both.
 fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
@@ -319,294 +318,9 @@ fn placement_rule(s: &crate::shapes::ShapeInfo) -> Value {
     }
 }
 
-/// `{"type": "null"}` out of every `anyOf`, `"null"` out of every `type`
-/// list, and the `format` that only says a number is an f64.
-fn without_nulls(v: &mut Value) {
-    match v {
-        Value::Object(o) => {
-            if o.get("format").and_then(Value::as_str) == Some("double") {
-                o.remove("format");
-            }
-            if let Some(Value::Array(types)) = o.get_mut("type") {
-                types.retain(|t| t != "null");
-                if let [one] = &types[..] {
-                    let one = one.clone();
-                    o.insert("type".into(), one);
-                }
-            }
-            if let Some(Value::Array(any)) = o.get_mut("anyOf") {
-                any.retain(|s| s != &json!({ "type": "null" }));
-                if let [one] = &any[..] {
-                    let one = one.clone();
-                    o.remove("anyOf");
-                    if let Value::Object(inner) = one {
-                        o.extend(inner);
-                    }
-                }
-            }
-            o.values_mut().for_each(without_nulls);
-        }
-        Value::Array(a) => a.iter_mut().for_each(without_nulls),
-        _ => {}
-    }
-}
-
-/// A quantity: a number in the file's units, or a string with its unit.
-fn quantity_string() -> Value {
-    json!({ "type": "string", "pattern": units::quantity_pattern() })
-}
-
-/// An expression (`expr`): its names are the file's parameters, which a
-/// schema of every part file cannot know, so only its shape is checked
-/// here (an operator — `·` is `*` — or a parenthesis in it, or a name
-/// alone: letters of any script, digits, `_`, `²`, `³`); the reader
-/// judges the rest, with located errors.
-fn expression_string() -> Value {
-    json!({
-        "type": "string",
-        "description": "an expression: + - * / ^, parentheses, numbers with units, the file's `[params]`, pi, sqrt, sin, cos, tan, abs, min, max",
-        "pattern": "^[^%\"\\\\]*[-+*/^(),\u{b7}][^%\"\\\\]*$|^\\s*[A-Za-z_\\u0080-\\uFFFF][A-Za-z0-9_\\u0080-\\uFFFF]*\\s*$",
-    })
-}
-
-/// A number written as a string without a unit (`"32"`, `" 1e3 "`): the
-/// number `units::split_number` reads (digits, `.` and `_`, an exponent),
-/// with blanks around it.
-fn number_string() -> Value {
-    json!({
-        "type": "string",
-        "pattern": "^\\s*[+-]?(?:[0-9_]*[0-9][0-9_]*(?:\\.[0-9_]*)?|[0-9_]*\\.[0-9_]*[0-9][0-9_]*)(?:[eE][+-]?[0-9]+)?\\s*$",
-    })
-}
-
-/// What a plain-number key takes (an array's `count` and `step_degrees`,
-/// a parameter): a quantity in any of its forms, or a number written as a
-/// string without a unit (`count = "32"`), which the reader takes where
-/// the number has no dimension.
-fn plain_number() -> Value {
-    json!({
-        "description": "a number, or a string giving one: \"32\", \"n / 2\", a parameter's name",
-        "anyOf": [{ "$ref": "#/$defs/Quantity" }, number_string()],
-    })
-}
-
-/// A value with a tolerance (`model::tolerance`): a quantity or an
-/// expression, `±` or `+/-`, an amount or a percentage, maybe `uniform`
-/// or `normal`. Where a tolerance may stand is the reader's to judge.
-fn toleranced_string() -> Value {
-    json!({
-        "type": "string",
-        "description": "a value with a tolerance: \"700 mm ± 0.5 mm\", \"7850 kg/m^3 ± 2 %\", \"10 mm +/- 1 mm uniform\" (one standard deviation of a normal, or `uniform` within ± the amount)",
-        "pattern": "^[^±%\"\\\\]*[^±%\"\\\\\\s][^±%\"\\\\]*(?:±|\\+/-)\\s*[^±\\s][^±]*$",
-    })
-}
-
-impl JsonSchema for Quantity {
-    fn schema_name() -> Cow<'static, str> {
-        "Quantity".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        let symbols: Vec<&str> = units::symbol_names().collect();
-        json_schema!({
-            "description": format!(
-                "a number in the file's units, or a string with its own unit such as \"3 mm\", \"7.85 g/cm^3\" or \"3000 rpm\", or an expression over `[params]`, numbers and units such as \"2 * leg + 5 mm\" or \"pi * d^2 / 4\"; units: {}",
-                symbols.join(", ")
-            ),
-            "anyOf": [{ "type": "number" }, quantity_string(), expression_string(), toleranced_string()],
-        })
-    }
-}
-
-impl JsonSchema for Angles {
-    fn schema_name() -> Cow<'static, str> {
-        "Angles".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": "an angle in degrees (with `axis`), or three (with `intrinsic` or `extrinsic`)",
-            "anyOf": [
-                { "type": "number" },
-                { "type": "array", "items": { "type": "number" }, "minItems": 3, "maxItems": 3 },
-            ],
-        })
-    }
-}
-
-impl JsonSchema for ExpectValue {
-    fn schema_name() -> Cow<'static, str> {
-        "ExpectValue".into()
-    }
-
-    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
-        json_schema!({
-            "description": "a quantity (a number, a string with its unit, an expression), or an array (of arrays) of them for a vector or matrix",
-            "anyOf": [
-                { "type": "number" },
-                quantity_string(),
-                expression_string(),
-                { "type": "array", "items": generator.subschema_for::<ExpectValue>() },
-            ],
-        })
-    }
-}
-
-/// A schema-only type: what `schemars(with)` names for a raw value whose
-/// text the model checks against a table.
-macro_rules! schema_only {
-    ($(#[$doc:meta])* $t:ident, $name:literal, $schema:expr) => {
-        $(#[$doc])*
-        pub struct $t;
-        impl JsonSchema for $t {
-            fn schema_name() -> Cow<'static, str> {
-                $name.into()
-            }
-            fn json_schema(_: &mut SchemaGenerator) -> Schema {
-                Schema::try_from($schema).expect("invariant: a schema is an object")
-            }
-        }
-    };
-}
-
-schema_only!(
-    /// `shape`: a name in `SHAPES`.
-    ShapeName,
-    "ShapeName",
-    json!({
-        "description": "the primitive (or leave it out and give `include`)",
-        "enum": SHAPES.iter().map(|s| s.name).collect::<Vec<_>>(),
-    })
-);
-
-schema_only!(
-    /// `units.length`: one of `units::LENGTH_UNITS`.
-    LengthUnit,
-    "LengthUnit",
-    json!({ "description": "the unit of plain lengths", "enum": units::LENGTH_UNITS })
-);
-
-schema_only!(
-    /// A mesh's `mode`: `mesh::Mode`'s names.
-    MeshMode,
-    "MeshMode",
-    json!({
-        "description": "what a mesh weighs: \"solid\" (the volume it encloses, the default) or \"shell\" (its surface as a thin sheet)",
-        "enum": ["solid", "shell"],
-    })
-);
-
-schema_only!(
-    /// `[growth]`'s values: a percentage (`model::budget::percentage`).
-    Percentage,
-    "Percentage",
-    json!({
-        "description": "a mass growth allowance as a percentage, such as \"15 %\"",
-        "type": "string",
-        "pattern": "^\\s*[+]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?\\s*%\\s*$",
-    })
-);
-
-schema_only!(
-    /// `group`: names joined by `/`, none empty (`model::budget::group_path`).
-    GroupPath,
-    "GroupPath",
-    json!({
-        "description": "the part's group: names joined by `/`, such as \"propulsion/tanks\"",
-        "type": "string",
-        "pattern": "^[^/]*[^/\\s][^/]*(?:/[^/]*[^/\\s][^/]*)*$",
-    })
-);
-
-schema_only!(
-    /// `tol`: a given mass's tolerance (`model::tolerance`).
-    TolAmount,
-    "TolAmount",
-    json!({
-        "description": "the tolerance of `mass`: a number in the file's mass unit, or \"0.1 kg\", \"3 %\", \"± 0.1 kg uniform\" (one standard deviation of a normal, or `uniform` within ± the amount)",
-        "anyOf": [
-            { "type": "number", "minimum": 0 },
-            { "type": "string", "pattern": "^\\s*(?:±|\\+/-)?\\s*[^±\\s][^±]*$" },
-        ],
-    })
-);
-
-schema_only!(
-    /// `units.mass`: one of `units::MASS_UNITS`.
-    MassUnit,
-    "MassUnit",
-    json!({ "description": "the unit of plain masses", "enum": units::MASS_UNITS })
-);
-
-schema_only!(
-    /// `products`: a convention of `place::PRODUCTS`.
-    Products,
-    "Products",
-    json!({
-        "description": "the sign of `inertia`'s products: \"tensor\" (−∫xy dm, the default) or \"positive\" (+∫xy dm, as CAD reports them)",
-        "enum": super::place::PRODUCTS,
-    })
-);
-
-schema_only!(
-    /// `material`: a built-in material or one of the file's `[materials]`.
-    MaterialName,
-    "MaterialName",
-    json!({
-        "description": format!(
-            "a material of the file's [materials], or a built-in one: {}",
-            crate::materials::BUILT_IN.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
-        ),
-        "type": "string",
-    })
-);
-
-schema_only!(
-    /// `intrinsic`, `extrinsic`: the sequences `rotation::parse_sequence`
-    /// reads, either case.
-    EulerAxes,
-    "EulerAxes",
-    json!({
-        "description": "an Euler sequence: three axes, no axis twice in a row, such as \"zyx\" or \"zxz\"",
-        "type": "string",
-        "pattern": euler_pattern(),
-    })
-);
-
-schema_only!(
-    /// `tol`: a quantity, or a percentage (`expect`'s `tolerance`).
-    Tolerance,
-    "Tolerance",
-    json!({
-        "description": "a tolerance: a number in the file's units, a quantity string such as \"10 g\", or a percentage such as \"0.5%\"",
-        "anyOf": [
-            { "type": "number" },
-            quantity_string(),
-            expression_string(),
-            // `tolerance`: the text before its trailing `%`s is an f64.
-            { "type": "string", "pattern": "^\\s*[+-]?(?:[0-9]+(?:\\.[0-9]*)?|\\.[0-9]+)(?:[eE][+-]?[0-9]+)?\\s*%+\\s*$" },
-        ],
-    })
-);
-
-/// Every sequence of three axes `parse_sequence` takes, either case.
-fn euler_pattern() -> String {
-    let class = |c: char| format!("[{c}{}]", c.to_ascii_uppercase());
-    let mut seqs = Vec::new();
-    for a in ['x', 'y', 'z'] {
-        for b in ['x', 'y', 'z'] {
-            for c in ['x', 'y', 'z'] {
-                if super::rotation::parse_sequence(&format!("{a}{b}{c}")).is_some() {
-                    seqs.push(format!("{}{}{}", class(a), class(b), class(c)));
-                }
-            }
-        }
-    }
-    format!("^(?:{})$", seqs.join("|"))
-}
-
 #[cfg(test)]
 mod tests {
+    use super::tables::euler_pattern;
     use super::*;
 
     #[test]
@@ -662,5 +376,62 @@ mod tests {
     #[test]
     fn the_euler_pattern_has_the_twelve_sequences() {
         assert_eq!(euler_pattern().matches('|').count(), 11);
+    }
+
+    /// A part's properties are exactly the declared keys, common and
+    /// every shape's own, each described by its declaration's doc.
+    #[test]
+    fn every_declared_key_is_a_part_property_with_its_doc() {
+        let s = schema();
+        let props = s["$defs"]["Part"]["properties"]
+            .as_object()
+            .expect("properties");
+        let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
+        let mut n = 0;
+        for key in COMMON.iter().chain(own) {
+            n += 1;
+            assert_eq!(props[key.name]["description"], key.doc, "{}", key.name);
+        }
+        assert_eq!(props.len(), n);
+    }
+
+    /// A refinement names a declared key of the kind it refines: a key
+    /// renamed in the registry cannot leave its refinement behind.
+    #[test]
+    fn every_refinement_names_a_declared_key_of_its_kind() {
+        let declared = |name: &str| COMMON.iter().find(|k| k.name == name);
+        for (key, _) in NAMED {
+            let k = declared(key).unwrap_or_else(|| panic!("`{key}` is not declared"));
+            assert!(matches!(k.kind, Kind::Str | Kind::Quantity), "{key}");
+        }
+        for (key, _) in ROWS {
+            let k = declared(key).unwrap_or_else(|| panic!("`{key}` is not declared"));
+            assert!(matches!(k.kind, Kind::Rows { .. }), "{key}");
+        }
+    }
+
+    /// Every `$ref` names a definition that is there.
+    #[test]
+    fn every_reference_is_defined() {
+        fn refs(v: &Value, out: &mut Vec<String>) {
+            match v {
+                Value::Object(o) => {
+                    if let Some(Value::String(r)) = o.get("$ref") {
+                        out.push(r.clone());
+                    }
+                    o.values().for_each(|v| refs(v, out));
+                }
+                Value::Array(a) => a.iter().for_each(|v| refs(v, out)),
+                Value::Null | Value::Bool(_) | Value::Number(_) | Value::String(_) => {}
+            }
+        }
+        let s = schema();
+        let mut all = Vec::new();
+        refs(&s, &mut all);
+        assert!(!all.is_empty());
+        for r in all {
+            let name = r.strip_prefix("#/$defs/").expect("a local reference");
+            assert!(s["$defs"].get(name).is_some(), "{r}");
+        }
     }
 }
