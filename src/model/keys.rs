@@ -46,7 +46,7 @@ macro_rules! part_keys {
             to: Kind::Point, Dim::LENGTH, true, Listed, "a rod's second end";
             mass: Kind::Quantity, Dim::MASS, true, Listed, "its mass";
             thickness: Kind::Quantity, Dim::LENGTH, false, Listed, "a plate's real thickness: reported against, never composed";
-            diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "twice its `radius`; a rod's real diameter";
+            diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "a cylinder's, disk's, sphere's, cone's, hemisphere's or capsule's: twice its `radius`; a rod's real diameter: reported against, never composed";
             radius: Kind::Quantity, Dim::LENGTH, true, Listed, "its outer radius (a torus's: its axis to the tube's centre)";
             inner_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "the radius of its hollow";
             remove: Kind::Bool, Dim::DIMENSIONLESS, false, Listed, "a cut-out: subtracted from the body";
@@ -58,8 +58,8 @@ macro_rules! part_keys {
             include: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "another part file placed here as a sub-assembly";
             origin: Kind::Point, Dim::LENGTH, true, Listed, "where an included file's origin goes, or a prism's or mesh's local origin";
             params: Kind::ParamsTable, Dim::DIMENSIONLESS, false, Listed, "parameters passed to the included file";
-            inner_diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "the inner diameter, instead of `inner_radius`";
-            top_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a cone's radius at its top";
+            inner_diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "the inner diameter, instead of `inner_radius` (`diameter` gives the outer one)";
+            top_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a cone's radius at its top (local z = +length/2)";
             top_inner_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a hollow cone's inner radius at its top";
             tube_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a torus's tube radius";
             inner_tube_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a hollow torus's inner tube radius";
@@ -67,9 +67,9 @@ macro_rules! part_keys {
             file: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "a mesh's file (STL or OBJ), relative to the part file";
             mesh_unit: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "the length unit of a mesh file's coordinates";
             mode: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "a mesh's mode: \"solid\" (the default) or \"shell\"";
-            tol: Kind::Quantity, Dim::MASS, false, Listed, "the tolerance of `mass`";
-            array: Kind::ArrayTable, Dim::DIMENSIONLESS, false, Every, "copies of the part along a step or about an axis";
-            mirror: Kind::MirrorTable, Dim::DIMENSIONLESS, false, Every, "the part and its mirror image in a plane";
+            tol: Kind::Quantity, Dim::MASS, false, Listed, "the tolerance of `mass`: `0.1`, `\"0.1 kg\"`, `\"2 %\"`, `\"± 0.1 kg uniform\"`";
+            array: Kind::ArrayTable, Dim::DIMENSIONLESS, false, Every, "copies of the part along a step or about an axis, named `NAME[i]`";
+            mirror: Kind::MirrorTable, Dim::DIMENSIONLESS, false, Every, "the part and its mirror image in a plane: `NAME[0]` and `NAME[1]`";
             group: Kind::Str, Dim::DIMENSIONLESS, false, Every, "its group in the weight statement (`propulsion/tanks`)";
             maturity: Kind::Str, Dim::DIMENSIONLESS, false, Every, "its design maturity: a key of the file's `[growth]`";
         }
