@@ -429,7 +429,6 @@ impl Ctx<'_> {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
         files
@@ -459,6 +458,7 @@ impl Ctx<'_> {
     /// sub-assembly it places, `parts` the parts of the body before it.
     pub(super) fn include(
         &self,
+        rec: &mut super::tolerance::Recorder,
         index: usize,
         raw: &Spanned<RawPart>,
         files: &mut Files,
@@ -641,13 +641,13 @@ impl Ctx<'_> {
         };
         let r: M3<f64> = orientation.matrix();
         // Its origin may carry tolerances: the sub-assembly's place.
-        self.enter_origin();
+        rec.enter_origin();
         let origin = match &p.origin {
             // Checked in SI too, as every length is.
-            Some(o) => self.value3(o, "origin", Dim::LENGTH)?.0,
+            Some(o) => self.value3(rec, 0, o, "origin", Dim::LENGTH)?.0,
             None => [0.0; 3],
         };
-        let tol = self.leave_origin();
+        let tol = rec.leave_origin();
         let frame = Frame {
             origin,
             r,
