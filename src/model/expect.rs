@@ -169,6 +169,7 @@ impl Ctx<'_> {
         Ok(out)
     }
 
+    #[allow(clippy::too_many_arguments)] // `rec` only names a parameter's source in an error
     fn expectation(
         &self,
         rec: &Recorder,
@@ -234,6 +235,7 @@ impl Ctx<'_> {
     }
 
     /// `value`/`tol` or `min`/`max` of one entry, expanded per component.
+    #[allow(clippy::too_many_arguments)] // `rec` only names a parameter's source in an error
     fn expectation_leaf(
         &self,
         rec: &Recorder,

@@ -490,7 +490,7 @@ impl Ctx<'_> {
     /// parameters it uses (in units of `factor`; empty without), refused
     /// where no tolerance may stand (`rec` says where one may, and names a
     /// parameter's source; `at` is where the value stands in its key).
-    #[allow(clippy::too_many_arguments)]
+    #[allow(clippy::too_many_arguments)] // the recorder and where the value stands, beside the text
     pub(super) fn expression_grad(
         &self,
         rec: &Recorder,

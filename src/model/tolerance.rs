@@ -445,7 +445,7 @@ impl Ctx<'_> {
 
     /// Record the tolerance `tol` of the value `value` (file units) read
     /// for `key`, if a part's numbers are being recorded.
-    #[allow(clippy::too_many_arguments)]
+    #[allow(clippy::too_many_arguments)] // the recorder, where the value stands, and the value
     pub(super) fn record(
         &self,
         r: &mut Recorder,
