@@ -476,6 +476,38 @@ mod tests {
         format!("[[part]]\nshape = \"point\"\nmass = 1\ncenter = {center}\n")
     }
 
+    /// The parts of `text`'s model, with the keys of its sources.
+    fn sources(text: &str) -> (Vec<crate::model::Item>, Vec<String>) {
+        let m = Model::parse(&Source::new("f.toml", text)).expect("a model");
+        let keys = m.sources.iter().map(|s| s.key.clone()).collect();
+        (m.items.to_vec(), keys)
+    }
+
+    /// The slots a part's tolerances move.
+    fn slots(item: &crate::model::Item) -> Vec<crate::shapes::Slot> {
+        let crate::model::Item::Part { part, .. } = item else {
+            panic!("a part");
+        };
+        part.tol
+            .iter()
+            .flat_map(|d| d.iter().map(|d| d.slot))
+            .collect()
+    }
+
+    #[test]
+    fn a_tolerance_in_a_row_is_named_and_placed_by_the_row_and_component_read() {
+        use crate::shapes::Slot;
+        let (items, keys) = sources(
+            "[[part]]\nshape = \"box\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [[1, 0, 0], [0, 1, \"0 m ± 1 mm\"], [0, 0, 1]]\n\
+             [[part]]\nshape = \"triangle\"\nmass = 1\nvertices = [[0, 0, 0], [1, 0, 0], [\"0 m ± 1 mm\", 1, 0]]\n\
+             [[part]]\nshape = \"sphere\"\nmass = 1\nradius = \"1 m ± 1 mm\"\ncenter = [0, 0, 0]\n",
+        );
+        assert_eq!(keys, ["edges[1][2]", "vertices[2][0]", "radius"]);
+        assert_eq!(slots(&items[0]), [Slot::Edge(1, 2)]);
+        assert_eq!(slots(&items[1]), [Slot::Vertex(2, 0)]);
+        assert_eq!(slots(&items[2]), [Slot::Radius]);
+    }
+
     #[test]
     fn a_coordinate_that_f64_makes_zero_or_subnormal_is_too_small() {
         for (center, bad) in [
