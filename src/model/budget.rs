@@ -143,10 +143,14 @@ impl Ctx<'_> {
     }
 
     /// `[budget]`: its `limit`, a positive mass.
-    pub(super) fn budget(&self, raw: &Spanned<RawBudget>) -> Result<Limit, Diagnostic> {
+    pub(super) fn budget(
+        &self,
+        rec: &super::tolerance::Recorder,
+        raw: &Spanned<RawBudget>,
+    ) -> Result<Limit, Diagnostic> {
         let limit = &raw.get_ref().limit;
         Ok(Limit {
-            mass: self.positive(limit, "limit", Dim::MASS)?,
+            mass: self.positive(rec, limit, "limit", Dim::MASS)?,
             span: limit.span(),
         })
     }

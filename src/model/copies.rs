@@ -18,6 +18,7 @@
 
 use super::frame::Pattern;
 use super::raw::{Floats, Quantity, RawArray, RawMirror, RawPart, Vector};
+use super::tolerance::Recorder;
 use super::{Ctx, Frame, Item, MAX_PARTS, Model};
 use crate::diag::Diagnostic;
 use crate::rotation::Orientation;
@@ -151,16 +152,20 @@ pub(super) fn raw_multiplicity(p: &RawPart) -> u64 {
 
 impl Ctx<'_> {
     /// A part's `array` and `mirror`, checked; `None` without either.
-    pub(super) fn copies(&self, p: &RawPart) -> Result<Option<Box<Copies>>, Diagnostic> {
+    pub(super) fn copies(
+        &self,
+        rec: &mut Recorder,
+        p: &RawPart,
+    ) -> Result<Option<Box<Copies>>, Diagnostic> {
         if p.array.is_none() && p.mirror.is_none() {
             return Ok(None);
         }
         let pattern = match p.array.as_deref() {
-            Some(a) => self.array(a)?,
+            Some(a) => self.array(rec, a)?,
             None => Pattern::One,
         };
         let mirror = match p.mirror.as_deref() {
-            Some(m) => Some(self.mirror(m)?),
+            Some(m) => Some(self.mirror(rec, m)?),
             None => None,
         };
         let image = mirror.map(|(normal, origin)| {
@@ -185,7 +190,7 @@ impl Ctx<'_> {
         Ok(Some(Box::new(copies)))
     }
 
-    fn array(&self, a: &Spanned<RawArray>) -> Result<Pattern, Diagnostic> {
+    fn array(&self, rec: &mut Recorder, a: &Spanned<RawArray>) -> Result<Pattern, Diagnostic> {
         let r = a.get_ref();
         let help = "write `array = { count = N, step = [dx, dy, dz] }` (copies along a step) or `array = { count = N, axis = [x, y, z], step_degrees = θ, origin = [x, y, z] }` (copies about an axis)";
         let Some(count) = &r.count else {
@@ -193,7 +198,7 @@ impl Ctx<'_> {
                 .err(a.span(), "`array` needs `count`, the number of copies")
                 .help(help));
         };
-        let count = self.count(count)?;
+        let count = self.count(rec, count)?;
         match (&r.step, &r.axis) {
             (Some(step), Some(axis)) => {
                 let (later, earlier, span) = if axis.span().start > step.span().start {
@@ -219,7 +224,7 @@ impl Ctx<'_> {
                             .help(help));
                     }
                 }
-                let step = self.point(step, "step")?;
+                let step = self.point(rec, step, "step")?;
                 // The last copy's step, representable.
                 let last = (count - 1) as f64;
                 if step.iter().any(|s| !(last * s).is_finite()) {
@@ -237,7 +242,7 @@ impl Ctx<'_> {
                         .err(a.span(), "an array about an `axis` needs `step_degrees`, the turn from each copy to the next")
                         .help(help));
                 };
-                let degrees = self.dimensionless(deg, "step_degrees")?;
+                let degrees = self.dimensionless(rec, deg, "step_degrees")?;
                 if !((count - 1) as f64 * degrees).is_finite() {
                     return Err(self.err(
                         deg.span(),
@@ -245,7 +250,7 @@ impl Ctx<'_> {
                     ));
                 }
                 let origin = match &r.origin {
-                    Some(o) => self.point(o, "origin")?,
+                    Some(o) => self.point(rec, o, "origin")?,
                     None => [0.0; 3],
                 };
                 Ok(Pattern::Polar {
@@ -264,7 +269,11 @@ impl Ctx<'_> {
         }
     }
 
-    fn mirror(&self, m: &Spanned<RawMirror>) -> Result<([f64; 3], [f64; 3]), Diagnostic> {
+    fn mirror(
+        &self,
+        rec: &mut Recorder,
+        m: &Spanned<RawMirror>,
+    ) -> Result<([f64; 3], [f64; 3]), Diagnostic> {
         let r = m.get_ref();
         let Some(normal) = &r.normal else {
             return Err(self
@@ -273,15 +282,15 @@ impl Ctx<'_> {
         };
         let normal = self.direction(normal, "normal")?;
         let origin = match &r.origin {
-            Some(o) => self.point(o, "origin")?,
+            Some(o) => self.point(rec, o, "origin")?,
             None => [0.0; 3],
         };
         Ok((normal, origin))
     }
 
     /// `count`: a whole number of copies, 1 to the part limit.
-    fn count(&self, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
-        let x = self.dimensionless(q, "count")?;
+    fn count(&self, rec: &mut Recorder, q: &Spanned<Quantity>) -> Result<usize, Diagnostic> {
+        let x = self.dimensionless(rec, q, "count")?;
         // NOTE: whole in the exact rationals the value is read in, not
         // only after its rounding to f64: `"(1 + 1e-20) * 3"` rounds to 3.
         let exact = self.written_value(q);
@@ -324,12 +333,17 @@ impl Ctx<'_> {
     /// A plain number: a TOML number, or a dimensionless quantity string
     /// or expression (`"32"`, `"spokes / 2"`, `"360 / n"`), read as every
     /// quantity is (`Ctx::value`).
-    fn dimensionless(&self, q: &Spanned<Quantity>, key: &str) -> Result<f64, Diagnostic> {
+    fn dimensionless(
+        &self,
+        rec: &mut Recorder,
+        q: &Spanned<Quantity>,
+        key: &str,
+    ) -> Result<f64, Diagnostic> {
         let finite = |x: f64| x.is_finite();
         if matches!(q.get_ref(), Quantity::Number(x) if !finite(*x)) {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
-        let x = self.value(q, key, Dim::DIMENSIONLESS)?.file;
+        let x = self.value(rec, q, key, Dim::DIMENSIONLESS)?.file;
         if !finite(x) {
             return Err(self.err(q.span(), format!("`{key}` must be finite")));
         }
@@ -337,8 +351,8 @@ impl Ctx<'_> {
     }
 
     /// A point or step in the file's units, representable in SI too.
-    fn point(&self, v: &Vector, key: &str) -> Result<[f64; 3], Diagnostic> {
-        Ok(self.value3(v, key, Dim::LENGTH)?.0)
+    fn point(&self, rec: &mut Recorder, v: &Vector, key: &str) -> Result<[f64; 3], Diagnostic> {
+        Ok(self.value3(rec, 0, v, key, Dim::LENGTH)?.0)
     }
 
     /// A direction: three finite numbers, not all zero.

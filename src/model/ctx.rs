@@ -3,6 +3,7 @@
 //! the one place a value is converted and range-checked.
 
 use super::raw::{Quantity, RawAnalysis, Vector};
+use super::tolerance::{Index, Recorder};
 use super::{Analysis, raw};
 use crate::diag::{Diagnostic, Source};
 use crate::units::{self, Dim, FileUnits, UnitError};
@@ -37,8 +38,6 @@ pub(crate) struct Ctx<'a> {
     pub(super) materials: std::collections::BTreeMap<String, (f64, f64)>,
     /// `[params]`, evaluated (`model::params`).
     pub(super) params: super::params::Params,
-    /// The tolerances of the part being read (`model::tolerance`).
-    pub(super) tol: std::cell::RefCell<super::tolerance::Recorder>,
     /// `[growth]`: maturity → allowance (`model::budget`).
     pub(super) growth: super::budget::Allowances,
 }
@@ -85,6 +84,7 @@ impl Ctx<'_> {
     /// (`[expect]`, a budget's limit); a part's keys are read by `value`.
     pub(super) fn quantity(
         &self,
+        rec: &Recorder,
         q: &Spanned<Quantity>,
         key: &str,
         dim: Dim,
@@ -100,10 +100,10 @@ impl Ctx<'_> {
                 self.units.factor(dim).apply(*x)
             }
             Quantity::Text(t) => {
-                let (t, _) = self.tolerance_of(q, t, key, dim)?;
+                let (t, _) = self.tolerance_of(rec, Index::SCALAR, q, t, key, dim)?;
                 match units::parse_quantity(t, dim) {
                     Ok(v) => v,
-                    Err(e) => match self.expression(q, t, key, dim, units::Factor::ONE)? {
+                    Err(e) => match self.expression(rec, q, t, key, dim, units::Factor::ONE)? {
                         Some(v) => return self.in_file_units(q, key, dim, v),
                         None => return Err(self.unit_error(q, key, dim, e)),
                     },
@@ -121,6 +121,20 @@ impl Ctx<'_> {
     /// file's units and its SI value derived.
     pub(super) fn value(
         &self,
+        rec: &mut Recorder,
+        q: &Spanned<Quantity>,
+        key: &str,
+        dim: Dim,
+    ) -> Result<Value, Diagnostic> {
+        self.value_at(rec, Index::SCALAR, q, key, dim)
+    }
+
+    /// `value`, of the component `at` of a vector (or of a row of one),
+    /// which names a tolerance recorded on it.
+    pub(super) fn value_at(
+        &self,
+        rec: &mut Recorder,
+        at: Index,
         q: &Spanned<Quantity>,
         key: &str,
         dim: Dim,
@@ -137,7 +151,7 @@ impl Ctx<'_> {
                 (*x, self.checked(q, key, dim, factor.apply(*x))?)
             }
             Quantity::Text(t) => {
-                let (t, tol) = self.tolerance_of(q, t, key, dim)?;
+                let (t, tol) = self.tolerance_of(rec, at, q, t, key, dim)?;
                 // A plain number's string (`count = "32"`) is read as an
                 // expression, whose angle units are refused there (`"4 rad"`).
                 let plain = if dim == Dim::DIMENSIONLESS {
@@ -152,14 +166,14 @@ impl Ctx<'_> {
                             .map_err(|e| self.err(q.span(), format!("`{key}`: {e}")))?;
                         (file, si)
                     }
-                    Err(e) => match self.expression_grad(q, t, key, dim, factor)? {
+                    Err(e) => match self.expression_grad(rec, at, q, t, key, dim, factor)? {
                         // An expression's value comes checked in the
                         // file's units (its zero as computed, not as
                         // written).
                         Some((file, grad)) => {
-                            self.record_grad(key, &grad);
+                            rec.record_grad(at, key, &grad);
                             if let Some(tol) = tol {
-                                self.record(q, key, dim, file, tol)?;
+                                self.record(rec, at, q, key, dim, file, tol)?;
                             }
                             let si = file * factor.value();
                             if !si.is_finite() {
@@ -183,7 +197,7 @@ impl Ctx<'_> {
                     },
                 };
                 if let Some(tol) = tol {
-                    self.record(q, key, dim, file, tol)?;
+                    self.record(rec, at, q, key, dim, file, tol)?;
                 }
                 (file, si)
             }
@@ -201,11 +215,12 @@ impl Ctx<'_> {
     /// `value`, positive.
     pub(super) fn positive_value(
         &self,
+        rec: &mut Recorder,
         q: &Spanned<Quantity>,
         key: &str,
         dim: Dim,
     ) -> Result<Value, Diagnostic> {
-        let v = self.value(q, key, dim)?;
+        let v = self.value(rec, q, key, dim)?;
         if v.si > 0.0 {
             Ok(v)
         } else {
@@ -295,10 +310,12 @@ impl Ctx<'_> {
         Ok(v.get_ref())
     }
 
-    /// Three quantities read once each (`value`): in the file's units and
-    /// in SI.
+    /// Three quantities read once each (`value_at`, each its component of
+    /// row `row`): in the file's units and in SI.
     pub(super) fn value3(
         &self,
+        rec: &mut Recorder,
+        row: usize,
         v: &Vector,
         key: &str,
         dim: Dim,
@@ -306,8 +323,7 @@ impl Ctx<'_> {
         let items = self.exactly(v, 3, Whose::Key(key), "components")?;
         let (mut file, mut si) = ([0.0; 3], Vector3::zeros());
         for (i, q) in items.iter().enumerate() {
-            self.tol.borrow_mut().component = i;
-            let x = self.value(q, key, dim)?;
+            let x = self.value_at(rec, Index { row, component: i }, q, key, dim)?;
             (file[i], si[i]) = (x.file, x.si);
         }
         Ok((file, si))
@@ -382,11 +398,12 @@ impl Ctx<'_> {
     /// compute with.
     pub(super) fn positive(
         &self,
+        rec: &Recorder,
         q: &Spanned<Quantity>,
         key: &str,
         dim: Dim,
     ) -> Result<f64, Diagnostic> {
-        let v = self.quantity(q, key, dim)?;
+        let v = self.quantity(rec, q, key, dim)?;
         if v > 0.0 {
             Ok(v)
         } else {
@@ -395,12 +412,16 @@ impl Ctx<'_> {
     }
 
     /// `[analysis]`: the reference point, ω and α, in the file's units.
-    pub(super) fn analysis(&self, a: &Spanned<RawAnalysis>) -> Result<Analysis, Diagnostic> {
+    pub(super) fn analysis(
+        &self,
+        rec: &mut Recorder,
+        a: &Spanned<RawAnalysis>,
+    ) -> Result<Analysis, Diagnostic> {
         let r = a.get_ref();
-        let read = |v: &Option<Vector>, key: &str, dim: Dim| {
+        let mut read = |v: &Option<Vector>, key: &str, dim: Dim| {
             v.as_ref()
                 .map(|v| {
-                    self.value3(v, key, dim)
+                    self.value3(rec, 0, v, key, dim)
                         .map(|(file, _)| Vector3::from(file))
                 })
                 .transpose()
@@ -453,6 +474,38 @@ mod tests {
 
     fn point(center: &str) -> String {
         format!("[[part]]\nshape = \"point\"\nmass = 1\ncenter = {center}\n")
+    }
+
+    /// The parts of `text`'s model, with the keys of its sources.
+    fn sources(text: &str) -> (Vec<crate::model::Item>, Vec<String>) {
+        let m = Model::parse(&Source::new("f.toml", text)).expect("a model");
+        let keys = m.sources.iter().map(|s| s.key.clone()).collect();
+        (m.items.to_vec(), keys)
+    }
+
+    /// The slots a part's tolerances move.
+    fn slots(item: &crate::model::Item) -> Vec<crate::shapes::Slot> {
+        let crate::model::Item::Part { part, .. } = item else {
+            panic!("a part");
+        };
+        part.tol
+            .iter()
+            .flat_map(|d| d.iter().map(|d| d.slot))
+            .collect()
+    }
+
+    #[test]
+    fn a_tolerance_in_a_row_is_named_and_placed_by_the_row_and_component_read() {
+        use crate::shapes::Slot;
+        let (items, keys) = sources(
+            "[[part]]\nshape = \"box\"\nmass = 1\ncorner = [0, 0, 0]\nedges = [[1, 0, 0], [0, 1, \"0 m ± 1 mm\"], [0, 0, 1]]\n\
+             [[part]]\nshape = \"triangle\"\nmass = 1\nvertices = [[0, 0, 0], [1, 0, 0], [\"0 m ± 1 mm\", 1, 0]]\n\
+             [[part]]\nshape = \"sphere\"\nmass = 1\nradius = \"1 m ± 1 mm\"\ncenter = [0, 0, 0]\n",
+        );
+        assert_eq!(keys, ["edges[1][2]", "vertices[2][0]", "radius"]);
+        assert_eq!(slots(&items[0]), [Slot::Edge(1, 2)]);
+        assert_eq!(slots(&items[1]), [Slot::Vertex(2, 0)]);
+        assert_eq!(slots(&items[2]), [Slot::Radius]);
     }
 
     #[test]

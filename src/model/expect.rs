@@ -7,6 +7,7 @@
 
 use super::Ctx;
 use super::raw::{ExpectValue, Quantity as Number, RawExpect, RawExpectation};
+use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
 use crate::quantity::{ALIASES, Layout, Needs, ORDINALS, QUANTITIES, Quantity, XYZ};
 use crate::tolerance::AXES_ORTHONORMAL;
@@ -120,6 +121,7 @@ fn first_component(e: &RawExpectation) -> Option<(&'static str, Range<usize>)> {
 impl Ctx<'_> {
     pub(super) fn expectations(
         &self,
+        rec: &Recorder,
         raw: &Spanned<RawExpect>,
         have_omega: bool,
     ) -> Result<Vec<Check>, Diagnostic> {
@@ -143,7 +145,7 @@ impl Ctx<'_> {
                 quantity,
                 component,
             };
-            self.expectation(name, entry, info.layout, info.dim, &at, &mut out)?;
+            self.expectation(rec, name, entry, info.layout, info.dim, &at, &mut out)?;
         }
         for (&(name, quantity, i, j), entry) in ALIASES.iter().zip(e.aliases()) {
             let Some(entry) = entry else { continue };
@@ -152,15 +154,25 @@ impl Ctx<'_> {
                 quantity,
                 component: 3 * i + j,
             };
-            self.expectation(name, entry, Layout::Scalar, info.dim, &|_| target, &mut out)?;
+            self.expectation(
+                rec,
+                name,
+                entry,
+                Layout::Scalar,
+                info.dim,
+                &|_| target,
+                &mut out,
+            )?;
         }
         // Report in file order (stable: components keep their order).
         out.sort_by_key(|c| c.span.start);
         Ok(out)
     }
 
+    #[allow(clippy::too_many_arguments)] // `rec` only names a parameter's source in an error
     fn expectation(
         &self,
+        rec: &Recorder,
         name: &str,
         raw: &Spanned<RawExpectation>,
         shape: Layout,
@@ -205,7 +217,7 @@ impl Ctx<'_> {
                     format!("`{n}` is a single number and has no component `{sub}`"),
                 ));
             }
-            self.expectation_leaf(&n, c, Layout::Scalar, dim, &|_| t, out)?;
+            self.expectation_leaf(rec, &n, c, Layout::Scalar, dim, &|_| t, out)?;
         }
         let has_own = e.value.is_some()
             || e.tol.is_some()
@@ -213,7 +225,7 @@ impl Ctx<'_> {
             || e.min.is_some()
             || e.max.is_some();
         if has_own {
-            self.expectation_leaf(name, raw, shape, dim, at, out)?;
+            self.expectation_leaf(rec, name, raw, shape, dim, at, out)?;
         } else if !any_component {
             return Err(self
                 .err(span, format!("expectation `{name}` is empty"))
@@ -223,8 +235,10 @@ impl Ctx<'_> {
     }
 
     /// `value`/`tol` or `min`/`max` of one entry, expanded per component.
+    #[allow(clippy::too_many_arguments)] // `rec` only names a parameter's source in an error
     fn expectation_leaf(
         &self,
+        rec: &Recorder,
         name: &str,
         raw: &Spanned<RawExpectation>,
         shape: Layout,
@@ -235,7 +249,7 @@ impl Ctx<'_> {
         let e = raw.get_ref();
         let span = raw.span();
         if shape == Layout::Axes {
-            return self.expected_axes(name, raw, target(0), out);
+            return self.expected_axes(rec, name, raw, target(0), out);
         }
         if let Some(t) = &e.tol_degrees {
             return Err(self.err(
@@ -255,8 +269,8 @@ impl Ctx<'_> {
         };
         let bounds: Vec<Bound> = match (&e.value, &e.tol, &e.min, &e.max) {
             (Some(v), Some(t), None, None) => {
-                let tol = self.tolerance(t, dim)?;
-                self.values(name, v, "value", shape, dim)?
+                let tol = self.tolerance(rec, t, dim)?;
+                self.values(rec, name, v, "value", shape, dim)?
                     .into_iter()
                     .map(|value| Bound::Value { value, tol })
                     .collect()
@@ -284,11 +298,11 @@ impl Ctx<'_> {
                 let n = names.len();
                 let lo = min
                     .as_ref()
-                    .map(|m| self.values(name, m, "min", shape, dim))
+                    .map(|m| self.values(rec, name, m, "min", shape, dim))
                     .transpose()?;
                 let hi = max
                     .as_ref()
-                    .map(|m| self.values(name, m, "max", shape, dim))
+                    .map(|m| self.values(rec, name, m, "max", shape, dim))
                     .transpose()?;
                 if let (Some(lo), Some(hi), Some(m)) = (&lo, &hi, max)
                     && lo.iter().zip(hi).any(|(a, b)| a > b)
@@ -318,13 +332,14 @@ impl Ctx<'_> {
     /// The values of `value`, `min` or `max`, flattened row by row, in SI.
     fn values(
         &self,
+        rec: &Recorder,
         name: &str,
         v: &Spanned<ExpectValue>,
         key: &str,
         shape: Layout,
         dim: Dim,
     ) -> Result<Vec<f64>, Diagnostic> {
-        let q = |x: &Number| self.quantity(&Spanned::new(v.span(), x.clone()), key, dim);
+        let q = |x: &Number| self.quantity(rec, &Spanned::new(v.span(), x.clone()), key, dim);
         let bad = |what: &str| self.err(v.span(), format!("`{name}`: `{key}` must be {what}"));
         match (shape, v.get_ref()) {
             (Layout::Scalar, ExpectValue::One(x)) => Ok(vec![q(x)?]),
@@ -364,6 +379,7 @@ impl Ctx<'_> {
     /// orthogonal rows, and `tol_degrees`, an angle not negative.
     fn expected_axes(
         &self,
+        rec: &Recorder,
         name: &str,
         raw: &Spanned<RawExpectation>,
         target: Target,
@@ -423,7 +439,7 @@ impl Ctx<'_> {
                 ));
             }
         };
-        let flat = self.values(name, v, "value", Layout::Axes, Dim::DIMENSIONLESS)?;
+        let flat = self.values(rec, name, v, "value", Layout::Axes, Dim::DIMENSIONLESS)?;
         let rows: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| flat[3 * i + j]));
         let bad = |message: String| {
             Err(self
@@ -464,7 +480,7 @@ impl Ctx<'_> {
 
     /// `tol`: a plain number (absolute, file units), `"0.5%"` (relative) or a
     /// quantity with its own unit (absolute).
-    fn tolerance(&self, t: &Spanned<Number>, dim: Dim) -> Result<Tol, Diagnostic> {
+    fn tolerance(&self, rec: &Recorder, t: &Spanned<Number>, dim: Dim) -> Result<Tol, Diagnostic> {
         let tol = match t.get_ref() {
             Number::Text(s) if s.trim_end().ends_with('%') => {
                 let num = s.trim_end().trim_end_matches('%').trim();
@@ -477,7 +493,7 @@ impl Ctx<'_> {
                     }
                 }
             }
-            _ => Tol::Abs(self.quantity(t, "tol", dim)?),
+            _ => Tol::Abs(self.quantity(rec, t, "tol", dim)?),
         };
         match tol {
             Tol::Abs(x) | Tol::Rel(x) if x >= 0.0 => Ok(tol),

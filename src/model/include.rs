@@ -82,7 +82,10 @@ pub(super) struct Parsed {
     source: crate::diag::Source,
     raw: super::raw::RawFile,
     looks_like_a_part_file: bool,
-    base: std::cell::OnceCell<Option<super::params::Base>>,
+    /// Its `[params]` evaluated alone (`params::Base::of`), once, as it
+    /// is kept: each conversion re-evaluates only what a set of `params`
+    /// changes.
+    base: Option<super::params::Base>,
 }
 
 impl Parsed {
@@ -91,9 +94,9 @@ impl Parsed {
     fn keep(source: crate::diag::Source, raw: super::raw::RawFile) -> Rc<Parsed> {
         Rc::new(Parsed {
             looks_like_a_part_file: super::looks_like_a_part_file(&source.text),
+            base: super::params::Base::of(&source, raw.params.as_ref()),
             source,
             raw,
-            base: std::cell::OnceCell::new(),
         })
     }
 
@@ -124,9 +127,7 @@ impl Parsed {
             };
             &renamed
         };
-        let base = self
-            .base
-            .get_or_init(|| super::params::Base::of(&self.source, self.raw.params.as_ref()));
+        let base = &self.base;
         files.stack.push((canonical.clone(), shown_name.clone()));
         let child = Model::from_raw(source, &self.raw, files, passes, base.as_ref());
         files.stack.pop();
@@ -438,7 +439,6 @@ impl Ctx<'_> {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
         files
@@ -468,6 +468,7 @@ impl Ctx<'_> {
     /// sub-assembly it places, `parts` the parts of the body before it.
     pub(super) fn include(
         &self,
+        rec: &mut super::tolerance::Recorder,
         index: usize,
         raw: &Spanned<RawPart>,
         files: &mut Files,
@@ -650,13 +651,13 @@ impl Ctx<'_> {
         };
         let r: M3<f64> = orientation.matrix();
         // Its origin may carry tolerances: the sub-assembly's place.
-        self.enter_origin();
+        rec.enter_origin();
         let origin = match &p.origin {
             // Checked in SI too, as every length is.
-            Some(o) => self.value3(o, "origin", Dim::LENGTH)?.0,
+            Some(o) => self.value3(rec, 0, o, "origin", Dim::LENGTH)?.0,
             None => [0.0; 3],
         };
-        let tol = self.leave_origin();
+        let tol = rec.leave_origin();
         let frame = Frame {
             origin,
             r,

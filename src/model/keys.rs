@@ -9,6 +9,7 @@
 use super::Ctx;
 use super::ctx::Whose;
 use super::raw::{OwnValue, Params, Quantity, RawArray, RawMirror, RawPart, RawRotation, Vector};
+use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
 use crate::shapes::{Key, Kind, Scope, Shape};
 use crate::units::Dim;
@@ -243,6 +244,7 @@ pub(super) fn expected(key: &Key, depth: usize, n: Option<usize>) -> Option<Stri
 /// is declared to take one.
 pub(super) fn read_own(
     ctx: &Ctx,
+    rec: &mut Recorder,
     p: &RawPart,
     key: &str,
     n: usize,
@@ -266,21 +268,20 @@ pub(super) fn read_own(
             format!("this {} needs `{key}`", shape.get_ref()),
         ));
     };
-    let one = |q: &Spanned<Quantity>| -> Result<f64, Diagnostic> {
-        let x = ctx.value(q, key, decl.dim)?.file;
+    let mut one = |at: Index, q: &Spanned<Quantity>| -> Result<f64, Diagnostic> {
+        let x = ctx.value_at(rec, at, q, key, decl.dim)?.file;
         if decl.positive && !(x > 0.0) {
             return Err(ctx.err(q.span(), format!("`{key}` must be positive")));
         }
         Ok(x)
     };
     match (decl.kind, value) {
-        (Kind::Quantity, OwnValue::Quantity(q)) if n == 1 => Ok(vec![one(q)?]),
+        (Kind::Quantity, OwnValue::Quantity(q)) if n == 1 => Ok(vec![one(Index::SCALAR, q)?]),
         (Kind::Quantities(Some(m)), OwnValue::Quantities(v)) if m == n => {
             let items = ctx.exactly(v, n, Whose::Key(key), "components")?;
             let mut out = Vec::with_capacity(n);
             for (i, q) in items.iter().enumerate() {
-                ctx.tol.borrow_mut().component = i;
-                out.push(one(q)?);
+                out.push(one(Index::component(i), q)?);
             }
             Ok(out)
         }
@@ -337,16 +338,17 @@ mod tests {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
         ctx.units = ctx
             .file_units(raw.units.as_ref().expect("units"))
             .expect("units");
         let part = &raw.part.as_ref().expect("a part").get_ref()[0];
-        ctx.enter_part(Shape::Point);
+        let mut rec = Recorder::default();
+        rec.enter_part(Shape::Point);
         let mut reader = super::super::parts::PartReader {
             ctx: &ctx,
+            rec: &mut rec,
             p: part.get_ref(),
             shape: Shape::Point,
             span: part.span(),
@@ -355,7 +357,7 @@ mod tests {
             from: None,
         };
         let read = reader.quantities::<3>("probe_radii");
-        let deps = ctx.leave_part();
+        let deps = rec.leave_part();
         let read = read.map_err(|d| d.message().to_string())?;
         let slots = deps.iter().flat_map(|d| d.iter().map(|d| d.slot)).collect();
         Ok((read.to_vec(), slots))

@@ -42,14 +42,18 @@ impl super::Model {
             units: units::FileUnits::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
         if let Some(u) = &raw.units {
             ctx.units = ctx.file_units(u)?;
         }
-        ctx.read_params(raw.params.as_ref(), &super::params::flags(&includes.set)?)?;
-        ctx.read_materials(table)?;
+        let mut rec = super::tolerance::Recorder::default();
+        ctx.read_params(
+            &mut rec,
+            raw.params.as_ref(),
+            &super::params::flags(&includes.set)?,
+        )?;
+        ctx.read_materials(&mut rec, table)?;
         Ok(Some(
             ctx.materials
                 .into_iter()
@@ -75,14 +79,15 @@ impl Ctx<'_> {
     /// The file's `[materials]`, each density checked, into `materials`.
     pub(super) fn read_materials(
         &mut self,
+        rec: &mut super::tolerance::Recorder,
         table: &super::raw::Materials,
     ) -> Result<(), Diagnostic> {
         for (name, m) in table.get_ref() {
             let key = format!("density` of material `{}", crate::diag::shorten(name));
-            self.tol.borrow_mut().in_materials = true;
-            let v = self.positive_value(&m.get_ref().density, &key, Dim::DENSITY)?;
-            self.tol.borrow_mut().in_materials = false;
-            self.material_tolerance(name, v.file);
+            rec.in_materials = true;
+            let v = self.positive_value(rec, &m.get_ref().density, &key, Dim::DENSITY)?;
+            rec.in_materials = false;
+            rec.material_tolerance(name, v.file);
             self.materials.insert(name.clone(), (v.si, v.file));
         }
         Ok(())
@@ -113,6 +118,7 @@ impl Ctx<'_> {
     /// errors without it.
     pub(super) fn material(
         &self,
+        rec: &mut super::tolerance::Recorder,
         shape: Shape,
         p: &RawPart,
         span: Range<usize>,
@@ -188,7 +194,7 @@ impl Ctx<'_> {
             MaterialRule::Volume => (si, file),
             MaterialRule::Thickness => {
                 let t = p.thickness.as_deref().ok_or_else(|| needs("thickness"))?;
-                let t = self.positive_value(t, "thickness", Dim::LENGTH)?;
+                let t = self.positive_value(rec, t, "thickness", Dim::LENGTH)?;
                 size = Some(t);
                 factor(t.si, t.file)
             }
@@ -199,11 +205,11 @@ impl Ctx<'_> {
                         .help("`diameter` (a round rod) also feeds the idealisation report; `area` is any section"));
                 }
                 (Some(a), None) => {
-                    let a = self.positive_value(a, "area", Dim::AREA)?;
+                    let a = self.positive_value(rec, a, "area", Dim::AREA)?;
                     factor(a.si, a.file)
                 }
                 (None, Some(d)) => {
-                    let d = self.positive_value(d, "diameter", Dim::LENGTH)?;
+                    let d = self.positive_value(rec, d, "diameter", Dim::LENGTH)?;
                     size = Some(d);
                     let q = std::f64::consts::PI / 4.0;
                     factor(q * d.si * d.si, q * d.file * d.file)
@@ -245,6 +251,7 @@ impl Ctx<'_> {
     /// = m (d/2)²/4 for the cylinder.
     pub(super) fn real_size(
         &self,
+        rec: &mut super::tolerance::Recorder,
         solid: Solid,
         q: &Spanned<Quantity>,
         key: &str,
@@ -253,7 +260,7 @@ impl Ctx<'_> {
     ) -> Result<(Solid, f64), Diagnostic> {
         let size = match read {
             Some(v) => v,
-            None => self.positive_value(q, key, Dim::LENGTH)?,
+            None => self.positive_value(rec, q, key, Dim::LENGTH)?,
         };
         let si = size.si;
         let extra = match solid {

@@ -12,6 +12,7 @@ use super::Ctx;
 use super::include::{Files, Kind};
 use super::raw::RawPart;
 use super::rotation::Orientation;
+use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
 use crate::mesh::{FileType, MeshBody, Mode};
 use crate::part::{MassSpec, Part, Place, Spec};
@@ -30,6 +31,7 @@ impl Ctx<'_> {
     /// The mesh part at position `index`.
     pub(super) fn mesh_part(
         &self,
+        rec: &mut Recorder,
         index: usize,
         raw: &Spanned<RawPart>,
         files: &mut Files,
@@ -71,11 +73,11 @@ impl Ctx<'_> {
                 }
             },
         };
-        self.enter_part(Shape::Mesh);
+        rec.enter_part(Shape::Mesh);
         self.tol_needs_mass(p)?;
-        let density = self.mesh_density(p, mode, raw.span())?;
+        let density = self.mesh_density(rec, p, mode, raw.span())?;
         let origin = match &p.origin {
-            Some(o) => self.value3(o, "origin", Dim::LENGTH)?.0,
+            Some(o) => self.value3(rec, 0, o, "origin", Dim::LENGTH)?.0,
             None => [0.0; 3],
         };
         let orientation = match &p.rotation {
@@ -132,8 +134,8 @@ impl Ctx<'_> {
             placed: Default::default(),
         };
         self.in_file_range(&spec, &name, raw.span())?;
-        self.record_material(p, &spec);
-        let tol = self.leave_part();
+        rec.record_material(p, &spec);
+        let tol = rec.leave_part();
         Ok(Part {
             tol,
             material: p.material.as_deref().map(|m| m.get_ref().as_str().into()),
@@ -179,6 +181,7 @@ impl Ctx<'_> {
     /// file's units, from exactly one of the keys the mode takes.
     fn mesh_density(
         &self,
+        rec: &mut Recorder,
         p: &RawPart,
         mode: Mode,
         span: Range<usize>,
@@ -239,8 +242,8 @@ impl Ctx<'_> {
                 )),
             (_, Some("mass"), _) => {
                 let m = p.mass.as_ref().expect("given");
-                let v = self.value(m, "mass", Dim::MASS)?;
-                self.mass_tol(p, m, v.file)?;
+                let v = self.value(rec, m, "mass", Dim::MASS)?;
+                self.mass_tol(rec, p, m, v.file)?;
                 if !(v.si > 0.0) {
                     return Err(self.err(m.span(), "`mass` must be positive"));
                 }
@@ -248,19 +251,19 @@ impl Ctx<'_> {
             }
             (_, Some("areal_density"), _) => {
                 let q = p.areal_density.as_deref().expect("given");
-                let d = self.positive_file(q, "areal_density", Dim::AREAL_DENSITY)?;
+                let d = self.positive_file(rec, q, "areal_density", Dim::AREAL_DENSITY)?;
                 Ok(Density::Per(d, q.span()))
             }
             (_, Some("density"), _) => {
                 let q = p.density.as_deref().expect("given");
-                let d = self.positive_file(q, "density", Dim::DENSITY)?;
-                self.times_thickness(d, thickness, q.span())
+                let d = self.positive_file(rec, q, "density", Dim::DENSITY)?;
+                self.times_thickness(rec, d, thickness, q.span())
             }
             (_, Some(_), _) => {
                 let m = self
-                    .material(Shape::Mesh, p, span)?
+                    .material(rec, Shape::Mesh, p, span)?
                     .expect("a material is given");
-                self.times_thickness(m.file, thickness, m.span)
+                self.times_thickness(rec, m.file, thickness, m.span)
             }
         }
     }
@@ -268,6 +271,7 @@ impl Ctx<'_> {
     /// A density per volume, times the shell's thickness if it has one.
     fn times_thickness(
         &self,
+        rec: &mut Recorder,
         d: f64,
         thickness: Option<&Spanned<super::raw::Quantity>>,
         span: Range<usize>,
@@ -275,10 +279,10 @@ impl Ctx<'_> {
         let Some(t) = thickness else {
             return Ok(Density::Per(d, span));
         };
-        let t = self.positive_file(t, "thickness", Dim::LENGTH)?;
+        let t = self.positive_file(rec, t, "thickness", Dim::LENGTH)?;
         // The number kept is the areal density: a density's tolerance
         // moves it t times as fast.
-        self.scale_readings("density", t);
+        rec.scale_readings("density", t);
         let a = d * t;
         if !(a.is_finite() && a >= f64::MIN_POSITIVE) {
             return Err(self.err(
@@ -292,11 +296,12 @@ impl Ctx<'_> {
     /// A positive quantity in the file's units (checked in SI too).
     fn positive_file(
         &self,
+        rec: &mut Recorder,
         q: &Spanned<super::raw::Quantity>,
         key: &str,
         dim: Dim,
     ) -> Result<f64, Diagnostic> {
-        Ok(self.positive_value(q, key, dim)?.file)
+        Ok(self.positive_value(rec, q, key, dim)?.file)
     }
 
     /// The mesh file `file` names, read once per mode however many parts

@@ -293,16 +293,17 @@ impl Model {
                 Model::serde(source)?
             }
         };
-        let ctx = Model::context(source, &raw, passed, None)?;
+        let (ctx, mut rec) = Model::context(source, &raw, passed, None)?;
         if !streamed.off {
-            return streamed.model(&ctx, raw);
+            return streamed.model(&ctx, rec, raw);
         }
         Model::check_parts(&ctx, &raw, files)?;
         // Each raw part dropped once read: its vectors and rare keys are
         // freed as the parts are made, not after all of them.
         let raw_parts = std::mem::take(raw.part.as_mut().expect("parts, checked above").get_mut());
-        let (items, count, has_real_sizes) = Model::items(&ctx, raw_parts.into_iter(), files)?;
-        Model::rest(&ctx, &raw, items, count, has_real_sizes)
+        let (items, count, has_real_sizes) =
+            Model::items(&ctx, &mut rec, raw_parts.into_iter(), files)?;
+        Model::rest(&ctx, rec, &raw, items, count, has_real_sizes)
     }
 
     /// The model of a file already parsed into `raw`, with the parameter
@@ -316,27 +317,28 @@ impl Model {
         passed: &[params::Pass],
         base: Option<&params::Base>,
     ) -> Result<Model, Diagnostic> {
-        let ctx = Model::context(source, raw, passed, base)?;
+        let (ctx, mut rec) = Model::context(source, raw, passed, base)?;
         Model::check_parts(&ctx, raw, files)?;
         let parts = raw.part.as_ref().expect("parts, checked above").get_ref();
-        let (items, count, has_real_sizes) = Model::items(&ctx, parts.iter(), files)?;
-        Model::rest(&ctx, raw, items, count, has_real_sizes)
+        let (items, count, has_real_sizes) = Model::items(&ctx, &mut rec, parts.iter(), files)?;
+        Model::rest(&ctx, rec, raw, items, count, has_real_sizes)
     }
 
     /// What the parts of a file are read in: its units, its parameters
-    /// (with the values `passed`), its materials and its growth.
+    /// (with the values `passed`), its materials and its growth; and the
+    /// recorder of its tolerances, with those of its parameters and
+    /// materials (the file's first sources).
     fn context<'s>(
         source: &'s Source,
         raw: &RawFile,
         passed: &[params::Pass],
         base: Option<&params::Base>,
-    ) -> Result<Ctx<'s>, Diagnostic> {
+    ) -> Result<(Ctx<'s>, tolerance::Recorder), Diagnostic> {
         let ctx = Ctx {
             source,
             units: FileUnits::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
         let units = match &raw.units {
@@ -348,18 +350,18 @@ impl Model {
             units,
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
+        let mut rec = tolerance::Recorder::default();
         match base {
-            Some(base) => ctx.read_params_over(raw.params.as_ref(), passed, base)?,
-            None => ctx.read_params(raw.params.as_ref(), passed)?,
+            Some(base) => ctx.read_params_over(&mut rec, raw.params.as_ref(), passed, base)?,
+            None => ctx.read_params(&mut rec, raw.params.as_ref(), passed)?,
         }
         if let Some(table) = &raw.materials {
-            ctx.read_materials(table)?;
+            ctx.read_materials(&mut rec, table)?;
         }
         ctx.read_growth(raw.growth.as_ref())?;
-        Ok(ctx)
+        Ok((ctx, rec))
     }
 
     /// The file has parts, within the limit, its includes counted (by the
@@ -401,6 +403,7 @@ impl Model {
     /// the body's part count and whether any gives its real size.
     fn items<P: std::borrow::Borrow<Spanned<raw::RawPart>>>(
         ctx: &Ctx,
+        rec: &mut tolerance::Recorder,
         raw_parts: impl ExactSizeIterator<Item = P>,
         files: &mut include::Files,
     ) -> Result<(Vec<Item>, usize, bool), Diagnostic> {
@@ -414,9 +417,9 @@ impl Model {
             let p = p.borrow();
             // Its copies first: a count past the limit is refused before
             // anything of the part is read or included.
-            let copies = ctx.copies(p.get_ref())?;
+            let copies = ctx.copies(rec, p.get_ref())?;
             if p.get_ref().include.is_some() {
-                let mut item = ctx.include(i, p, files, count, &mut assembly_names)?;
+                let mut item = ctx.include(rec, i, p, files, count, &mut assembly_names)?;
                 if let Item::Include(inc) = &mut item {
                     count = ctx.count_copies(p, count, inc.model.count, copies.as_deref())?;
                     has_real_sizes |= inc.model.has_real_sizes;
@@ -440,9 +443,9 @@ impl Model {
                     .help("the parts before it, with their copies and includes, already reach the limit"));
             }
             let (part, real) = if mesh::is_mesh(p.get_ref()) {
-                (ctx.mesh_part(i, p, files)?, None)
+                (ctx.mesh_part(rec, i, p, files)?, None)
             } else {
-                ctx.part(i, p)?
+                ctx.part(rec, i, p)?
             };
             has_real_sizes |= real.is_some();
             count = ctx.count_copies(p, count, 1, copies.as_deref())?;
@@ -460,23 +463,29 @@ impl Model {
         Ok((items, count, has_real_sizes))
     }
 
-    /// The model of `raw`'s keys other than its parts, with `items`.
+    /// The model of `raw`'s keys other than its parts, with `items` and
+    /// the file's tolerances, `rec`.
     fn rest(
         ctx: &Ctx,
+        mut rec: tolerance::Recorder,
         raw: &RawFile,
         items: Vec<Item>,
         count: usize,
         has_real_sizes: bool,
     ) -> Result<Model, Diagnostic> {
         let analysis = match &raw.analysis {
-            Some(a) => ctx.analysis(a)?,
+            Some(a) => ctx.analysis(&mut rec, a)?,
             None => Analysis::default(),
         };
         let expect = match &raw.expect {
-            Some(e) => ctx.expectations(e, analysis.omega.is_some())?,
+            Some(e) => ctx.expectations(&rec, e, analysis.omega.is_some())?,
             None => Vec::new(),
         };
-        let budget = raw.budget.as_ref().map(|b| ctx.budget(b)).transpose()?;
+        let budget = raw
+            .budget
+            .as_ref()
+            .map(|b| ctx.budget(&rec, b))
+            .transpose()?;
         Ok(Model {
             group_depth: budget::group_depth(&items),
             name: raw.name.as_ref().map(|n| n.get_ref().clone()),
@@ -494,7 +503,7 @@ impl Model {
             budget,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
-            sources: std::mem::take(&mut ctx.tol.borrow_mut().sources),
+            sources: rec.sources,
         })
     }
 }

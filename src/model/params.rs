@@ -8,6 +8,7 @@
 
 use super::Ctx;
 use super::raw::{Params as RawParams, Quantity};
+use super::tolerance::{Index, Recorder};
 use crate::diag::{Diagnostic, Source};
 use crate::expr::tangent::{Grad, axpy};
 use crate::expr::{self, Expr, Value};
@@ -243,9 +244,11 @@ fn flag(name: &str, source: &Source) -> String {
 
 impl Ctx<'_> {
     /// Read `[params]` (if any) with the values passed in, into
-    /// `self.params`.
+    /// `self.params` (a parameter's tolerance recorded in `rec`, as a
+    /// source shared by every key that uses it).
     pub(super) fn read_params(
         &mut self,
+        rec: &mut Recorder,
         raw: Option<&RawParams>,
         passed: &[Pass],
     ) -> Result<(), Diagnostic> {
@@ -373,7 +376,7 @@ impl Ctx<'_> {
                         } else {
                             0..0
                         };
-                        let k = self.shared_source(name, at, &tol);
+                        let k = rec.shared_source(name, at, &tol);
                         axpy(&mut grad, 1.0, &vec![(k, tol.sigma_of(si))]);
                     }
                     if !grad.is_empty() {
@@ -471,6 +474,7 @@ impl Ctx<'_> {
     /// (of dimension `dim`), or the expression's located error.
     pub(super) fn expression(
         &self,
+        rec: &Recorder,
         q: &Spanned<Quantity>,
         text: &str,
         key: &str,
@@ -478,15 +482,19 @@ impl Ctx<'_> {
         factor: Factor,
     ) -> Result<Option<f64>, Diagnostic> {
         Ok(self
-            .expression_grad(q, text, key, dim, factor)?
+            .expression_grad(rec, Index::SCALAR, q, text, key, dim, factor)?
             .map(|(x, _)| x))
     }
 
     /// `expression`, with the gradient of its value by the sources of the
     /// parameters it uses (in units of `factor`; empty without), refused
-    /// where no tolerance may stand.
+    /// where no tolerance may stand (`rec` says where one may, and names a
+    /// parameter's source; `at` is where the value stands in its key).
+    #[allow(clippy::too_many_arguments)] // the recorder and where the value stands, beside the text
     pub(super) fn expression_grad(
         &self,
+        rec: &Recorder,
+        at: Index,
         q: &Spanned<Quantity>,
         text: &str,
         key: &str,
@@ -526,7 +534,7 @@ impl Ctx<'_> {
         }
         let mut grad = params.grad_of(&e);
         if !grad.is_empty() {
-            self.tolerable_grad(q, key, &grad)?;
+            self.tolerable_grad(rec, at, q, key, &grad)?;
             let f = factor.value();
             grad.iter_mut().for_each(|(_, d)| *d /= f);
         }

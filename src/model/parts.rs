@@ -8,6 +8,7 @@ use super::keys::{first, key_spans, quantity_key, span_of};
 use super::material::is_thin_shell;
 use super::raw::{RawPart, Vector};
 use super::rotation::Orientation;
+use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
 use crate::part::{MassSpec, Part, Place, Solid, Spec};
 use crate::shapes::{Fixed, Mover, Reader, Shape, Spanned as Spans};
@@ -22,6 +23,7 @@ impl Ctx<'_> {
     /// `diameter`.
     pub(super) fn part(
         &self,
+        rec: &mut Recorder,
         index: usize,
         raw: &Spanned<RawPart>,
     ) -> Result<(Part, Option<(Solid, f64)>), Diagnostic> {
@@ -46,7 +48,7 @@ impl Ctx<'_> {
             )
         })?;
         let s = shape.name();
-        self.enter_part(shape);
+        rec.enter_part(shape);
         self.tol_needs_mass(p)?;
 
         // Keys that exist in part files but do not apply to this shape.
@@ -97,17 +99,18 @@ impl Ctx<'_> {
             .and_then(|k| Some((quantity_key(p, k.key)?, k)));
         let given = match (&p.mass, density) {
             (Some(m), _) => {
-                let v = self.value(m, "mass", Dim::MASS)?;
-                self.mass_tol(p, m, v.file)?;
+                let v = self.value(rec, m, "mass", Dim::MASS)?;
+                self.mass_tol(rec, p, m, v.file)?;
                 Some(v)
             }
-            (None, Some((d, k))) => Some(self.value(d, k.key, k.dim)?),
+            (None, Some((d, k))) => Some(self.value(rec, d, k.key, k.dim)?),
             (None, None) => None,
         };
         let place = Place::read(
             shape,
             &mut PartReader {
                 ctx: self,
+                rec: &mut *rec,
                 p,
                 shape,
                 span: raw.span(),
@@ -134,7 +137,7 @@ impl Ctx<'_> {
                 Err(self.err(q.span(), format!("`{key}` must be positive")))
             }
         };
-        let material = self.material(shape, p, raw.span())?;
+        let material = self.material(rec, shape, p, raw.span())?;
         if let Some(super::material::Material { span, .. }) = &material {
             let other = [
                 ("mass", p.mass.as_ref()),
@@ -254,7 +257,7 @@ impl Ctx<'_> {
             Some((key, solid)) => match quantity_key(p, key) {
                 Some(q) => {
                     let read = material.as_ref().and_then(|m| m.size);
-                    Some(self.real_size(solid, q, key, mass, read)?)
+                    Some(self.real_size(rec, solid, q, key, mass, read)?)
                 }
                 None => None,
             },
@@ -267,8 +270,8 @@ impl Ctx<'_> {
             placed: Default::default(),
         };
         self.in_file_range(&spec, &name, raw.span())?;
-        self.record_material(p, &spec);
-        let tol = self.leave_part();
+        rec.record_material(p, &spec);
+        let tol = rec.leave_part();
         let part = Part {
             tol,
             material: p.material.as_deref().map(|m| m.get_ref().as_str().into()),
@@ -330,8 +333,10 @@ impl Ctx<'_> {
 /// A part's numbers as its shape's module reads them (`shapes::Reader`):
 /// each key read once, in the file's units, and checked as it is read
 /// (missing, out of range, its tolerance recorded).
-pub(super) struct PartReader<'c, 'p> {
+pub(super) struct PartReader<'c, 'p, 'r> {
     pub(super) ctx: &'c Ctx<'c>,
+    /// The file's tolerances: the part's are recorded as it is read.
+    pub(super) rec: &'r mut Recorder,
     pub(super) p: &'p RawPart,
     pub(super) shape: Shape,
     /// The part's table, where a missing key is reported.
@@ -342,7 +347,7 @@ pub(super) struct PartReader<'c, 'p> {
     pub(super) from: Option<Vector3<f64>>,
 }
 
-impl<'p> PartReader<'_, 'p> {
+impl<'p> PartReader<'_, 'p, '_> {
     /// The key `key` is missing.
     fn missing(&self, key: &str) -> Diagnostic {
         self.ctx.missing(self.shape, self.span.clone(), key)
@@ -388,7 +393,7 @@ impl Mover for InSi {
     }
 }
 
-impl Reader for PartReader<'_, '_> {
+impl Reader for PartReader<'_, '_, '_> {
     fn point(&mut self, key: &'static str) -> Result<[f64; 3], Diagnostic> {
         let p = self.p;
         let v = match key {
@@ -399,7 +404,7 @@ impl Reader for PartReader<'_, '_> {
             _ => unreachable!("`{key}` is no point key"),
         }
         .ok_or_else(|| self.missing(key))?;
-        let (file, si) = self.ctx.value3(v, key, Dim::LENGTH)?;
+        let (file, si) = self.ctx.value3(self.rec, 0, v, key, Dim::LENGTH)?;
         match (key, self.from) {
             ("from", _) => self.from = Some(si),
             ("to", Some(from)) => self.ctx.rod_ends(from, si, v)?,
@@ -410,7 +415,7 @@ impl Reader for PartReader<'_, '_> {
 
     fn origin(&mut self) -> Result<[f64; 3], Diagnostic> {
         match &self.p.origin {
-            Some(o) => Ok(self.ctx.value3(o, "origin", Dim::LENGTH)?.0),
+            Some(o) => Ok(self.ctx.value3(self.rec, 0, o, "origin", Dim::LENGTH)?.0),
             None => Ok([0.0; 3]),
         }
     }
@@ -418,9 +423,9 @@ impl Reader for PartReader<'_, '_> {
     fn vectors<const N: usize>(&mut self, key: &'static str) -> Result<[[f64; 3]; N], Diagnostic> {
         let rows = self.rows(key)?;
         match key {
-            "edges" => self.ctx.edges(self.shape, rows),
+            "edges" => self.ctx.edges(self.rec, self.shape, rows),
             "vertices" => {
-                let v = self.ctx.triangle(rows)?;
+                let v = self.ctx.triangle(self.rec, rows)?;
                 // A triangle's module asks for its 3.
                 Ok(std::array::from_fn(|k| v[k]))
             }
@@ -435,8 +440,9 @@ impl Reader for PartReader<'_, '_> {
             .exactly(size, N, Whose::Key("size"), "components")?;
         let mut out = [Value { file: 0.0, si: 0.0 }; N];
         for (k, (e, q)) in out.iter_mut().zip(items).enumerate() {
-            self.ctx.tol.borrow_mut().component = k;
-            *e = self.ctx.value(q, "size", Dim::LENGTH)?;
+            *e = self
+                .ctx
+                .value_at(self.rec, Index::component(k), q, "size", Dim::LENGTH)?;
         }
         if let Some((_, q)) = out.iter().zip(items).find(|(v, _)| !(v.si > 0.0)) {
             return Err(self.ctx.err(q.span(), "`size` must be positive"));
@@ -446,28 +452,29 @@ impl Reader for PartReader<'_, '_> {
 
     fn length(&mut self, key: &'static str) -> Result<f64, Diagnostic> {
         let l = self.p.length.as_deref().ok_or_else(|| self.missing(key))?;
-        Ok(self.ctx.positive_value(l, key, Dim::LENGTH)?.file)
+        Ok(self.ctx.positive_value(self.rec, l, key, Dim::LENGTH)?.file)
     }
 
     fn radii(&mut self) -> Result<[f64; 2], Diagnostic> {
-        self.ctx.radii(self.p, || self.missing("radius"))
+        let (ctx, shape, span) = (self.ctx, self.shape, self.span.clone());
+        ctx.radii(self.rec, self.p, || ctx.missing(shape, span, "radius"))
     }
 
     fn cone(&mut self) -> Result<[f64; 5], Diagnostic> {
-        self.ctx.cone(self.p, self.span.clone())
+        self.ctx.cone(self.rec, self.p, self.span.clone())
     }
 
     fn torus(&mut self) -> Result<[f64; 3], Diagnostic> {
-        self.ctx.torus(self.p, self.span.clone())
+        self.ctx.torus(self.rec, self.p, self.span.clone())
     }
 
     fn polygon(&mut self) -> Result<Vec<[f64; 2]>, Diagnostic> {
-        self.ctx.polygon(self.p, self.span.clone())
+        self.ctx.polygon(self.rec, self.p, self.span.clone())
     }
 
     fn inertia(&mut self) -> Result<[[f64; 3]; 3], Diagnostic> {
         let rows = self.rows("inertia")?;
-        self.ctx.given_inertia(self.p, rows)
+        self.ctx.given_inertia(self.rec, self.p, rows)
     }
 
     fn orientation(&self) -> Orientation {
@@ -479,11 +486,11 @@ impl Reader for PartReader<'_, '_> {
     }
 
     fn quantity(&mut self, key: &'static str) -> Result<f64, Diagnostic> {
-        Ok(super::keys::read_own(self.ctx, self.p, key, 1)?[0])
+        Ok(super::keys::read_own(self.ctx, self.rec, self.p, key, 1)?[0])
     }
 
     fn quantities<const N: usize>(&mut self, key: &'static str) -> Result<[f64; N], Diagnostic> {
-        let v = super::keys::read_own(self.ctx, self.p, key, N)?;
+        let v = super::keys::read_own(self.ctx, self.rec, self.p, key, N)?;
         Ok(std::array::from_fn(|i| v[i]))
     }
 

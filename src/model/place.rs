@@ -6,6 +6,7 @@
 use super::Ctx;
 use super::ctx::Whose;
 use super::raw::{RawPart, Vector};
+use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
 use crate::shapes::Shape;
 use crate::tolerance::{
@@ -61,6 +62,7 @@ impl Ctx<'_> {
     /// in the file's units: none zero, each pair perpendicular.
     pub(super) fn edges<const N: usize>(
         &self,
+        rec: &mut Recorder,
         shape: Shape,
         raw: &Spanned<Vec<Vector>>,
     ) -> Result<[[f64; 3]; N], Diagnostic> {
@@ -69,8 +71,7 @@ impl Ctx<'_> {
             std::array::from_fn(|_| (Vector3::zeros(), 0..0));
         let rows = self.exactly(raw, N, Whose::Shape(shape.name()), "`edges`")?;
         for (k, e) in rows.iter().enumerate() {
-            self.tol.borrow_mut().row = k;
-            let (f, v) = self.value3(e, "edges", Dim::LENGTH)?;
+            let (f, v) = self.value3(rec, k, e, "edges", Dim::LENGTH)?;
             if v.amax() == 0.0 {
                 return Err(self.err(e.span(), "an edge must not be zero"));
             }
@@ -102,13 +103,16 @@ impl Ctx<'_> {
     /// A triangle's `vertices` (file units), which must span a triangle:
     /// area (SI) above `COLLINEAR_TOLERANCE` of the square of the longest
     /// edge.
-    pub(super) fn triangle(&self, raw: &Spanned<Vec<Vector>>) -> Result<[[f64; 3]; 3], Diagnostic> {
+    pub(super) fn triangle(
+        &self,
+        rec: &mut Recorder,
+        raw: &Spanned<Vec<Vector>>,
+    ) -> Result<[[f64; 3]; 3], Diagnostic> {
         let rows = self.exactly(raw, 3, Whose::Shape("triangle"), "`vertices`")?;
         let mut file = [[0.0; 3]; 3];
         let mut v = [Vector3::zeros(); 3];
         for (k, r) in rows.iter().enumerate() {
-            self.tol.borrow_mut().row = k;
-            (file[k], v[k]) = self.value3(r, "vertices", Dim::LENGTH)?;
+            (file[k], v[k]) = self.value3(rec, k, r, "vertices", Dim::LENGTH)?;
         }
         let (e1, e2) = (v[1] - v[0], v[2] - v[0]);
         let longest = vnorm(&e1).max(vnorm(&e2)).max(vnorm(&(v[2] - v[1])));
@@ -156,6 +160,7 @@ impl Ctx<'_> {
     /// Returns it in the file's units, in the tensor convention.
     pub(super) fn given_inertia(
         &self,
+        rec: &mut Recorder,
         p: &RawPart,
         raw: &Spanned<Vec<Vector>>,
     ) -> Result<[[f64; 3]; 3], Diagnostic> {
@@ -168,9 +173,9 @@ impl Ctx<'_> {
         }
         let rows = self.exactly(raw, 3, Whose::Key("inertia"), "rows")?;
         let (mut file, mut m) = ([[0.0; 3]; 3], [[0.0; 3]; 3]);
-        for ((f, row), r) in file.iter_mut().zip(m.iter_mut()).zip(rows) {
+        for (k, ((f, row), r)) in file.iter_mut().zip(m.iter_mut()).zip(rows).enumerate() {
             let v;
-            (*f, v) = self.value3(r, "inertia", Dim::INERTIA)?;
+            (*f, v) = self.value3(rec, k, r, "inertia", Dim::INERTIA)?;
             *row = [v.x, v.y, v.z];
         }
         let big = m.iter().flatten().fold(0.0f64, |a, x| a.max(x.abs()));

@@ -351,7 +351,6 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
         units: crate::units::FileUnits::default(),
         materials: Default::default(),
         params: Default::default(),
-        tol: Default::default(),
         growth: Default::default(),
     };
     ctx.axes(&flag.axes).map_err(|d| match d.help_text() {

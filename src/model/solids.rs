@@ -5,6 +5,7 @@
 use super::Ctx;
 use super::ctx::{Value, Whose};
 use super::raw::{Quantity, RawPart};
+use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
 use crate::numeric::{DD, Real};
 use crate::tolerance::COLLINEAR_TOLERANCE;
@@ -91,8 +92,8 @@ impl Ctx<'_> {
     }
 
     /// A radius read once (halved if a diameter).
-    fn radius(&self, r: &Radius<'_>) -> Result<Value, Diagnostic> {
-        let v = self.value(r.q, r.key, Dim::LENGTH)?;
+    fn radius(&self, rec: &mut Recorder, r: &Radius<'_>) -> Result<Value, Diagnostic> {
+        let v = self.value(rec, r.q, r.key, Dim::LENGTH)?;
         Ok(Value {
             file: r.scale(v.file),
             si: r.scale(v.si),
@@ -112,12 +113,13 @@ impl Ctx<'_> {
     /// file's units; `help` says what its ends mean.
     fn inner_within(
         &self,
+        rec: &mut Recorder,
         inner: &Radius<'_>,
         outer_key: &str,
         outer: f64,
         help: &str,
     ) -> Result<f64, Diagnostic> {
-        let v = self.radius(inner)?;
+        let v = self.radius(rec, inner)?;
         if !(v.si >= 0.0 && v.si <= outer) {
             return Err(self
                 .err(
@@ -134,17 +136,19 @@ impl Ctx<'_> {
     /// file's units.
     pub(super) fn radii(
         &self,
+        rec: &mut Recorder,
         p: &RawPart,
         missing: impl FnOnce() -> Diagnostic,
     ) -> Result<[f64; 2], Diagnostic> {
         let r = self.radius_of(p, false)?.ok_or_else(missing)?;
-        let outer = self.radius(&r)?;
+        let outer = self.radius(rec, &r)?;
         if !(outer.si > 0.0) {
             return Err(self.err(r.q.span(), format!("`{}` must be positive", r.key)));
         }
         let inner = match self.radius_of(p, true)? {
             None => 0.0,
             Some(q) => self.inner_within(
+                rec,
                 &q,
                 r.key,
                 outer.si,
@@ -157,7 +161,12 @@ impl Ctx<'_> {
     /// A cone's dimensions in the file's units, [R₀, a₀, R₁, a₁, L]: radii
     /// from 0, not both 0, each inner radius from 0 to its outer one, both
     /// inner radii or neither, a positive length.
-    pub(super) fn cone(&self, p: &RawPart, span: Range<usize>) -> Result<[f64; 5], Diagnostic> {
+    pub(super) fn cone(
+        &self,
+        rec: &mut Recorder,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<[f64; 5], Diagnostic> {
         let info = crate::shapes::Shape::Cone.info();
         let missing = |key: &str| {
             let what = if key == "top_radius" {
@@ -175,7 +184,7 @@ impl Ctx<'_> {
         let mut out = [0.0; 5];
         let mut si = [0.0; 2];
         for (i, r) in [(0, &base), (2, &top)] {
-            let v = self.radius(r)?;
+            let v = self.radius(rec, r)?;
             if !(v.si >= 0.0) {
                 return Err(self.err(r.q.span(), format!("`{}` must not be negative", r.key)));
             }
@@ -194,8 +203,8 @@ impl Ctx<'_> {
         let help = "0 (or leaving it out) is a solid; equal to the outer, a thin shell";
         match (self.radius_of(p, true)?, self.plain(p, "top_inner_radius")) {
             (Some(a0), Some(a1)) => {
-                out[1] = self.inner_within(&a0, base.key, si[0], help)?;
-                out[3] = self.inner_within(&a1, "top_radius", si[1], help)?;
+                out[1] = self.inner_within(rec, &a0, base.key, si[0], help)?;
+                out[3] = self.inner_within(rec, &a1, "top_radius", si[1], help)?;
             }
             (None, None) => {}
             (Some(one), None) | (None, Some(one)) => {
@@ -205,7 +214,7 @@ impl Ctx<'_> {
             }
         }
         let l = field(p, "length").ok_or_else(|| missing("length"))?;
-        let len = self.value(l, "length", Dim::LENGTH)?;
+        let len = self.value(rec, l, "length", Dim::LENGTH)?;
         if len.si == 0.0 {
             return Err(self
                 .err(l.span(), "a cone of zero `length` is flat")
@@ -222,18 +231,23 @@ impl Ctx<'_> {
     /// `radius`, a positive `tube_radius` at most it (above it the tube
     /// would pass through the axis and overlap itself), an
     /// `inner_tube_radius` from 0 to the tube's.
-    pub(super) fn torus(&self, p: &RawPart, span: Range<usize>) -> Result<[f64; 3], Diagnostic> {
+    pub(super) fn torus(
+        &self,
+        rec: &mut Recorder,
+        p: &RawPart,
+        span: Range<usize>,
+    ) -> Result<[f64; 3], Diagnostic> {
         let info = crate::shapes::Shape::Torus.info();
         let missing = |key: &str| {
             self.err(span.clone(), format!("this torus needs `{key}`"))
                 .help(info.help)
         };
         let r = self.plain(p, "radius").ok_or_else(|| missing("radius"))?;
-        let big = self.positive_value(r.q, "radius", Dim::LENGTH)?;
+        let big = self.positive_value(rec, r.q, "radius", Dim::LENGTH)?;
         let a = self
             .plain(p, "tube_radius")
             .ok_or_else(|| missing("tube_radius"))?;
-        let tube = self.positive_value(a.q, "tube_radius", Dim::LENGTH)?;
+        let tube = self.positive_value(rec, a.q, "tube_radius", Dim::LENGTH)?;
         if tube.si > big.si {
             return Err(self
                 .err(a.q.span(), "`tube_radius` exceeds `radius`: the torus would intersect itself")
@@ -241,6 +255,7 @@ impl Ctx<'_> {
         }
         let inner = match self.plain(p, "inner_tube_radius") {
             Some(b) => self.inner_within(
+                rec,
                 &b,
                 "tube_radius",
                 tube.si,
@@ -257,6 +272,7 @@ impl Ctx<'_> {
     /// an area above `COLLINEAR_TOLERANCE` of the square of its extent.
     pub(super) fn polygon(
         &self,
+        rec: &mut Recorder,
         p: &RawPart,
         span: Range<usize>,
     ) -> Result<Vec<[f64; 2]>, Diagnostic> {
@@ -281,12 +297,13 @@ impl Ctx<'_> {
                 .help("split it into several prisms"));
         }
         let (mut file, mut v) = (Vec::with_capacity(n), Vec::with_capacity(n));
-        for vertex in raw.get_ref() {
+        for (row, vertex) in raw.get_ref().iter().enumerate() {
             let c = self.exactly(vertex, 2, Whose::Key("polygon"), "components")?;
-            let (x, y) = (
-                self.value(&c[0], "polygon", Dim::LENGTH)?,
-                self.value(&c[1], "polygon", Dim::LENGTH)?,
-            );
+            let mut at = |component: usize| {
+                let at = Index { row, component };
+                self.value_at(rec, at, &c[component], "polygon", Dim::LENGTH)
+            };
+            let (x, y) = (at(0)?, at(1)?);
             file.push([x.file, y.file]);
             v.push([x.si, y.si]);
         }

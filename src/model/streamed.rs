@@ -2,6 +2,7 @@
 //! (`fast::parse_streaming`).
 
 use super::raw::{self, RawFile};
+use super::tolerance::Recorder;
 use super::{Ctx, Item, MAX_PARTS, Model};
 use crate::diag::{Diagnostic, Source};
 use crate::units::FileUnits;
@@ -81,14 +82,16 @@ impl Streamed {
                 units: FileUnits::default(),
                 materials: Default::default(),
                 params: Default::default(),
-                tol: Default::default(),
                 growth: Default::default(),
             };
             if let Some(u) = units {
                 ctx.units = ctx.file_units(u).map_err(|_| ())?;
             }
             if let Some(table) = materials {
-                ctx.read_materials(table).map_err(|_| ())?;
+                // NOTE: a recorder dropped: a file with a tolerance is
+                // not streamed (`tolerance::may_have`), none is recorded.
+                let mut rec = Recorder::default();
+                ctx.read_materials(&mut rec, table).map_err(|_| ())?;
             }
             Ok((ctx.units, ctx.materials))
         });
@@ -98,14 +101,16 @@ impl Streamed {
             units: *units,
             materials: std::mem::take(materials),
             params: Default::default(),
-            tol: Default::default(),
             // NOTE: empty, and right to be: a file with `[growth]`,
             // `[budget]` or `[params]` is read whole (`saw_all_of`), so a
             // part's `maturity` here names a maturity the file does not
             // have, and the whole file's reading says so.
             growth: Default::default(),
         };
-        let made = ctx.part(index, &p).and_then(|(part, real)| {
+        // Its own recorder, as the whole file's reading has (no tolerance
+        // here: `tolerance::may_have`).
+        let mut rec = Recorder::default();
+        let made = ctx.part(&mut rec, index, &p).and_then(|(part, real)| {
             let tag = ctx.tag(p.get_ref())?;
             Ok((part, real, tag))
         });
@@ -142,8 +147,9 @@ impl Streamed {
             .is_none_or(|seen| seen == raw.units.is_some() && materials == self.materials_seen)
     }
 
-    /// The model, `ctx` with the file's units read.
-    pub(super) fn model(self, ctx: &Ctx, raw: RawFile) -> Result<Model, Diagnostic> {
+    /// The model, `ctx` with the file's units read (and `rec`, the
+    /// tolerances of its parameters and materials).
+    pub(super) fn model(self, ctx: &Ctx, rec: Recorder, raw: RawFile) -> Result<Model, Diagnostic> {
         if raw.part.is_none() {
             return Err(ctx
                 .err(0..0, "the file has no parts")
@@ -163,6 +169,6 @@ impl Streamed {
         }
         let mut items = self.items;
         items.shrink_to_fit();
-        Model::rest(ctx, &raw, items, self.count, self.has_real_sizes)
+        Model::rest(ctx, rec, &raw, items, self.count, self.has_real_sizes)
     }
 }

@@ -56,7 +56,33 @@ pub struct Toleranced {
     pub shared: bool,
 }
 
-/// The tolerances read while a part's numbers are read (`Ctx::spec`).
+/// Where a value stands in its key: the row of a list of points
+/// (`edges`, `vertices`) and the component of a vector (0 for a scalar).
+/// An argument of each reading, which names and places a tolerance on it.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub(super) struct Index {
+    pub row: usize,
+    pub component: usize,
+}
+
+impl Index {
+    /// A scalar's (or the first component of the first row).
+    pub const SCALAR: Index = Index {
+        row: 0,
+        component: 0,
+    };
+
+    /// Component `component` of a vector.
+    pub fn component(component: usize) -> Index {
+        Index { row: 0, component }
+    }
+}
+
+/// The tolerances read while a file's numbers are read: owned by the
+/// file's conversion and passed as `&mut` to whatever records one (a
+/// part's reader holds it while it reads the part), as `&` where a
+/// reading only needs to know whether a tolerance may stand, or to name
+/// a parameter's source in an error.
 #[derive(Debug, Default)]
 pub(super) struct Recorder {
     /// The shape of the part whose keys are being read, if any (else a
@@ -71,9 +97,6 @@ pub(super) struct Recorder {
     /// The materials with a tolerance: name → (source, rate relative to
     /// the density) for each source it moves with.
     materials: std::collections::BTreeMap<String, Vec<(u32, f64)>>,
-    /// The row (`edges`, `vertices`) and component being read.
-    pub(super) row: usize,
-    pub(super) component: usize,
     readings: Vec<Reading>,
     /// The file's sources so far, in file order.
     pub(super) sources: Vec<Toleranced>,
@@ -131,8 +154,8 @@ impl Recorder {
     /// The slot `key` fills where a tolerance may stand on it: a part's
     /// key that fills a number of its `Spec`, an include's `origin`, a
     /// material's density (no slot of a part: `Slot::Mass` stands for it).
-    fn allows(&self, key: &str) -> Option<Slot> {
-        let (row, component) = (self.row, self.component);
+    pub(super) fn allows(&self, key: &str, at: Index) -> Option<Slot> {
+        let Index { row, component } = at;
         if let Some(shape) = self.part {
             return slot(Some(shape), key, row, component).map(|s| s.0);
         }
@@ -150,6 +173,8 @@ impl Ctx<'_> {
     /// origin is).
     pub(super) fn tolerance_of<'t>(
         &self,
+        rec: &Recorder,
+        at_index: Index,
         q: &Spanned<Quantity>,
         text: &'t str,
         key: &str,
@@ -158,7 +183,7 @@ impl Ctx<'_> {
         let Some((value, _, at)) = split(text) else {
             return Ok((text, None));
         };
-        let Some(slot) = self.tol.borrow().allows(key) else {
+        let Some(slot) = rec.allows(key, at_index) else {
             return Err(self.not_allowed(self.source, q.span(), text, at, key));
         };
         let tol = self.amount(self.source, q.span(), text, dim, key)?;
@@ -189,13 +214,14 @@ impl Ctx<'_> {
             .error(here, format!("a tolerance is not allowed on `{key}`"))
             .help(TOLERANCES_GO)
     }
+}
 
+impl Recorder {
     /// The tolerance just read for material `name`'s density (`file`, in
     /// the file's units), if it has one, as a source shared by every part
     /// made of it.
-    pub(super) fn material_tolerance(&self, name: &str, file: f64) {
-        let mut guard = self.tol.borrow_mut();
-        let r = &mut *guard;
+    pub(super) fn material_tolerance(&mut self, name: &str, file: f64) {
+        let r = self;
         let mut moves = Vec::new();
         for reading in r.readings.drain(..) {
             let k = match reading.origin {
@@ -217,12 +243,11 @@ impl Ctx<'_> {
     /// Record how a part made of a material with a tolerance moves with
     /// it: its density (`spec`'s, the material's made the shape's) in the
     /// same ratio.
-    pub(super) fn record_material(&self, p: &super::raw::RawPart, spec: &crate::part::Spec) {
+    pub(super) fn record_material(&mut self, p: &super::raw::RawPart, spec: &crate::part::Spec) {
         let (Some(name), crate::part::MassSpec::Density(d)) = (&p.material, spec.mass) else {
             return;
         };
-        let mut guard = self.tol.borrow_mut();
-        let r = &mut *guard;
+        let r = self;
         let Some(moves) = r.materials.get(name.get_ref()) else {
             return;
         };
@@ -238,29 +263,30 @@ impl Ctx<'_> {
     }
 
     /// Start reading an include's `origin`: its tolerances are recorded.
-    pub(super) fn enter_origin(&self) {
-        let mut r = self.tol.borrow_mut();
+    pub(super) fn enter_origin(&mut self) {
+        let r = self;
         r.in_origin = true;
         r.readings.clear();
     }
 
     /// Stop reading an include's `origin`, and turn its tolerances into
     /// `Dep`s on the point (`Slot::At`), its sources appended.
-    pub(super) fn leave_origin(&self) -> Option<std::sync::Arc<[Dep]>> {
-        let mut r = self.tol.borrow_mut();
+    pub(super) fn leave_origin(&mut self) -> Option<std::sync::Arc<[Dep]>> {
+        let r = self;
         r.in_origin = false;
         r.deps(None)
     }
 
     /// Scale the rates recorded so far for `key` by `factor`: the key's
     /// value enters the part's number multiplied by it.
-    pub(super) fn scale_readings(&self, key: &str, factor: f64) {
-        let mut r = self.tol.borrow_mut();
-        for reading in r.readings.iter_mut().filter(|x| x.key == key) {
+    pub(super) fn scale_readings(&mut self, key: &str, factor: f64) {
+        for reading in self.readings.iter_mut().filter(|x| x.key == key) {
             reading.rate *= factor;
         }
     }
+}
 
+impl Ctx<'_> {
     /// Refuse `tol` on a part without `mass` (a density's tolerance goes
     /// in its string).
     pub(super) fn tol_needs_mass(&self, p: &super::raw::RawPart) -> Result<(), Diagnostic> {
@@ -277,6 +303,7 @@ impl Ctx<'_> {
     /// the string was recorded as it was read: not both).
     pub(super) fn mass_tol(
         &self,
+        rec: &mut Recorder,
         p: &super::raw::RawPart,
         m: &Spanned<Quantity>,
         value: f64,
@@ -320,7 +347,7 @@ impl Ctx<'_> {
                 self.amount_at(&at, start, None, Dim::MASS, "tol")?
             }
         };
-        self.record(m, "mass", Dim::MASS, value, t)
+        self.record(rec, Index::SCALAR, m, "mass", Dim::MASS, value, t)
     }
 
     /// The tolerance of `text` (which has one: `split`), the string at
@@ -418,15 +445,17 @@ impl Ctx<'_> {
 
     /// Record the tolerance `tol` of the value `value` (file units) read
     /// for `key`, if a part's numbers are being recorded.
+    #[allow(clippy::too_many_arguments)] // the recorder, where the value stands, and the value
     pub(super) fn record(
         &self,
+        r: &mut Recorder,
+        at: Index,
         q: &Spanned<Quantity>,
         key: &str,
         dim: Dim,
         value: f64,
         tol: Tol,
     ) -> Result<(), Diagnostic> {
-        let mut r = self.tol.borrow_mut();
         // In the key's file units, as `value`.
         let amount = if tol.relative {
             tol.amount * value.abs()
@@ -439,9 +468,9 @@ impl Ctx<'_> {
                 format!("`{key}`: the tolerance overflows the range of f64 in the file's units"),
             ));
         }
-        let (row, component) = (r.row, r.component);
+        let Index { row, component } = at;
         // Named by its component as the file indexes it.
-        let key_text = match r.allows(key) {
+        let key_text = match r.allows(key, at) {
             Some(Slot::Edge(..) | Slot::Vertex(..)) => format!("{key}[{row}][{component}]"),
             Some(Slot::At(_) | Slot::To(_)) => format!("{key}[{component}]"),
             Some(Slot::Size(_)) => format!("{key}[{component}]"),
@@ -468,12 +497,13 @@ impl Ctx<'_> {
     /// derivative.
     pub(super) fn tolerable_grad(
         &self,
+        r: &Recorder,
+        at: Index,
         q: &Spanned<Quantity>,
         key: &str,
         grad: &crate::expr::tangent::Grad,
     ) -> Result<(), Diagnostic> {
-        let r = self.tol.borrow();
-        if r.allows(key).is_none() {
+        if r.allows(key, at).is_none() {
             let names = r.sources[grad[0].0 as usize].key.clone();
             return Err(self
                 .err(
@@ -490,12 +520,15 @@ impl Ctx<'_> {
         }
         Ok(())
     }
+}
 
-    /// Record how the value read for `key` moves with the sources of the
-    /// parameters its expression uses (`grad`, in the key's file units).
-    pub(super) fn record_grad(&self, key: &str, grad: &crate::expr::tangent::Grad) {
-        let mut r = self.tol.borrow_mut();
-        let (row, component) = (r.row, r.component);
+impl Recorder {
+    /// Record how the value read for `key` (at `at`) moves with the
+    /// sources of the parameters its expression uses (`grad`, in the
+    /// key's file units).
+    pub(super) fn record_grad(&mut self, at: Index, key: &str, grad: &crate::expr::tangent::Grad) {
+        let r = self;
+        let Index { row, component } = at;
         for &(source, d) in grad {
             r.readings.push(Reading {
                 key: key.to_string(),
@@ -509,8 +542,8 @@ impl Ctx<'_> {
 
     /// A parameter's own tolerance as a source shared by every key that
     /// uses it, in this instance of the file; its index.
-    pub(super) fn shared_source(&self, name: &str, span: Range<usize>, tol: &Tol) -> u32 {
-        let mut r = self.tol.borrow_mut();
+    pub(super) fn shared_source(&mut self, name: &str, span: Range<usize>, tol: &Tol) -> u32 {
+        let r = self;
         r.sources.push(Toleranced {
             key: format!("param `{name}`"),
             written: tol.written.clone(),
@@ -523,23 +556,20 @@ impl Ctx<'_> {
 
     /// Start reading a part's keys, of a `shape`: tolerances are allowed
     /// on those that fill its numbers, and recorded.
-    pub(super) fn enter_part(&self, shape: Shape) {
-        let mut r = self.tol.borrow_mut();
+    pub(super) fn enter_part(&mut self, shape: Shape) {
+        let r = self;
         r.part = Some(shape);
         r.readings.clear();
     }
 
     /// Stop reading a part's keys, and turn what was recorded into the
     /// part's `Dep`s, its sources appended to `sources`.
-    pub(super) fn leave_part(&self) -> Option<std::sync::Arc<[Dep]>> {
-        let mut guard = self.tol.borrow_mut();
-        let r = &mut *guard;
+    pub(super) fn leave_part(&mut self) -> Option<std::sync::Arc<[Dep]>> {
+        let r = self;
         let shape = r.part.take();
         r.deps(shape)
     }
-}
 
-impl Recorder {
     /// The readings recorded, as `Dep`s of a part of `shape` (`None`: an
     /// include's origin), their new sources appended.
     fn deps(&mut self, shape: Option<Shape>) -> Option<std::sync::Arc<[Dep]>> {

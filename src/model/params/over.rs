@@ -3,7 +3,7 @@
 //! and those that use them, so an include with `params` is parsed once
 //! however many sets it is included with (`include::Parsed`).
 
-use super::{Def, Given, Params, Pass, Quantity, RawParams};
+use super::{Def, Given, Params, Pass, Quantity, RawParams, Recorder};
 use crate::diag::{Diagnostic, Source};
 use crate::expr::{Expr, Value};
 use crate::model::Ctx;
@@ -34,11 +34,11 @@ impl Base {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
-            tol: Default::default(),
             growth: Default::default(),
         };
-        ctx.read_params(Some(table), &[]).ok()?;
-        if !ctx.params.grads.is_empty() || !ctx.tol.borrow().sources.is_empty() {
+        let mut rec = Recorder::default();
+        ctx.read_params(&mut rec, Some(table), &[]).ok()?;
+        if !ctx.params.grads.is_empty() || !rec.sources.is_empty() {
             return None;
         }
         let mut defs: BTreeMap<&str, Def> = BTreeMap::new();
@@ -92,6 +92,7 @@ impl Ctx<'_> {
     /// `read_params`, so that its error is the one it always was.
     pub(in crate::model) fn read_params_over(
         &mut self,
+        rec: &mut Recorder,
         raw: Option<&RawParams>,
         passed: &[Pass],
         base: &Base,
@@ -101,7 +102,7 @@ impl Ctx<'_> {
                 self.params = params;
                 Ok(())
             }
-            None => self.read_params(raw, passed),
+            None => self.read_params(rec, raw, passed),
         }
     }
 }
