@@ -19,8 +19,8 @@ use crate::numeric::{DD, M3, Real, Sum, two_sum};
 use crate::part::EachPart;
 use nalgebra::Vector3;
 
-pub use crate::tolerance::EQUAL_MOMENT_RTOL;
-use crate::tolerance::SIGN_TIE;
+pub use crate::thresholds::EQUAL_MOMENT_RTOL;
+use crate::thresholds::SIGN_TIE;
 
 pub use crate::numeric::Precision;
 

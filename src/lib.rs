@@ -31,7 +31,7 @@
 //! bottom up (each uses only those above it; docs/architecture.md has the
 //! list with each module's job):
 //!
-//! 1. numbers, units, diagnostics: `numeric`, `eigen`, `tolerance`,
+//! 1. numbers, units, diagnostics: `numeric`, `eigen`, `thresholds`,
 //!    `units`, `diag`, `io`;
 //! 2. shapes and parts: `shapes` (one description per shape and the closed
 //!    forms), `rotation` (the forms of a part's turn), `mesh` (triangle
@@ -87,7 +87,7 @@ pub mod rotation;
 #[doc(hidden)]
 pub mod shapes;
 #[doc(hidden)]
-pub mod tolerance;
+pub mod thresholds;
 #[doc(hidden)]
 pub mod units;
 

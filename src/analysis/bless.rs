@@ -29,7 +29,7 @@ use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::quantity::{Bless, Compare, DEFAULT_TOL_DEGREES, QUANTITIES};
-use crate::tolerance::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
+use crate::thresholds::{DEFAULT_RELATIVE_TOL, DEFAULT_VECTOR_TOL};
 use crate::units::{Dim, FileUnits};
 use std::collections::BTreeMap;
 use toml_edit::{DocumentMut, InlineTable, Item, Value};
@@ -367,7 +367,7 @@ fn write_values(
 /// orthonormal within a tenth of what the reader allows
 /// (`AXES_ORTHONORMAL`) however wide the angle.
 fn axis_tol(tol: f64) -> f64 {
-    let widest = crate::tolerance::AXES_ORTHONORMAL / 10.0 / digits::SHARE;
+    let widest = crate::thresholds::AXES_ORTHONORMAL / 10.0 / digits::SHARE;
     tol.min(widest) / 3f64.sqrt()
 }
 

@@ -8,7 +8,7 @@ use crate::diag::{Diagnostic, Source, Span};
 use crate::model::budget::Limit;
 use crate::model::expect::{Bound, Check, Target, Tol};
 use crate::quantity::Quantity;
-use crate::tolerance::VALIDITY_RTOL;
+use crate::thresholds::VALIDITY_RTOL;
 use crate::units::{Dim, FileUnits};
 use serde::Serialize;
 

@@ -15,7 +15,7 @@ use crate::mass::Body;
 use crate::model::Model;
 use crate::numeric::{DD, M3, Real, pow2_scaled};
 use crate::part::{Part, Solid};
-use crate::tolerance::{NEGLIGIBLE_ROUNDOFFS, ROUNDING_CHANGE};
+use crate::thresholds::{NEGLIGIBLE_ROUNDOFFS, ROUNDING_CHANGE};
 use serde::Serialize;
 
 /// The fraction of the largest principal moment below which a moment counts

@@ -10,7 +10,7 @@ use super::raw::{ExpectValue, Quantity as Number, RawExpect, RawExpectation};
 use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
 use crate::quantity::{ALIASES, Layout, Needs, ORDINALS, QUANTITIES, Quantity, XYZ};
-use crate::tolerance::AXES_ORTHONORMAL;
+use crate::thresholds::AXES_ORTHONORMAL;
 use crate::units::Dim;
 use std::ops::Range;
 use toml::Spanned;

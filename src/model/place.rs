@@ -9,7 +9,7 @@ use super::raw::{RawPart, Vector};
 use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
 use crate::shapes::Shape;
-use crate::tolerance::{
+use crate::thresholds::{
     COLLINEAR_TOLERANCE, PERPENDICULAR_TOLERANCE, SYMMETRY_TOLERANCE, VALIDITY_RTOL,
 };
 use crate::units::Dim;

@@ -8,7 +8,7 @@ use super::Ctx;
 use super::ctx::Whose;
 use super::raw::{Angles, Floats, RawAxes, RawRotation};
 use crate::diag::Diagnostic;
-use crate::tolerance::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
+use crate::thresholds::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
 use nalgebra::Matrix3;
 use toml::Spanned;
 

@@ -8,7 +8,7 @@ use super::raw::{Quantity, RawPart};
 use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
 use crate::numeric::{DD, Real};
-use crate::tolerance::COLLINEAR_TOLERANCE;
+use crate::thresholds::COLLINEAR_TOLERANCE;
 use crate::units::Dim;
 use std::ops::Range;
 use toml::Spanned;

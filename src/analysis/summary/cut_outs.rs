@@ -6,7 +6,7 @@ use super::SummaryError;
 use crate::model::Model;
 use crate::numeric::{M3, Real};
 use crate::part::{Part, SiFactors};
-use crate::tolerance::VALIDITY_RTOL;
+use crate::thresholds::VALIDITY_RTOL;
 use nalgebra::{Matrix3, Vector3};
 
 /// With cut-outs (`remove = true`) the composed body can be impossible: no

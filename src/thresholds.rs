@@ -1,6 +1,7 @@
-//! Every tolerance massprop applies, in one place, each with the reason for
-//! its size. A tolerance is a fraction of the scale named with it, never an
-//! absolute number.
+//! Every threshold massprop's own checks apply, in one place, each with the
+//! reason for its size. A threshold is a fraction of the scale named with
+//! it, never an absolute number. (A part's "±" tolerance, the user's, is
+//! `model::tolerance`.)
 
 /// Physical validity: a principal moment (or second-moment eigenvalue) may
 /// be negative, or the triangle inequality I1 + I2 ≥ I3 broken, by this
