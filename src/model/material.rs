@@ -219,7 +219,10 @@ impl Ctx<'_> {
             MaterialRule::None => {
                 return Err(self.err(
                     name.span(),
-                    format!("`material` does not apply to a {s}: give `mass`"),
+                    format!(
+                        "`material` does not apply to {}: give `mass`",
+                        shape.info().a_name()
+                    ),
                 ));
             }
         };

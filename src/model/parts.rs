@@ -61,7 +61,7 @@ impl Ctx<'_> {
             .find_map(|(k, s)| s.clone().map(|s| (*k, s)))
         {
             return Err(self
-                .err(span, format!("`{key}` does not apply to a {s}"))
+                .err(span, format!("`{key}` does not apply to {}", info.a_name()))
                 .help(info.help));
         }
 

@@ -115,6 +115,15 @@ pub struct ShapeInfo {
     pub help: &'static str,
 }
 
+impl ShapeInfo {
+    /// The shape's name with its article, as its help line begins ("a
+    /// box", "an ellipsoid"): what a message says of a part of it.
+    pub fn a_name(&self) -> &'static str {
+        let article = if self.help.starts_with("an ") { 3 } else { 2 };
+        &self.help[..article + self.name.len()]
+    }
+}
+
 /// The solid that a thin plate or slender rod idealises.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]

@@ -520,7 +520,15 @@ mod tests {
                 "{}",
                 info.name
             );
+            assert!(info.a_name().ends_with(info.name), "{}", info.name);
         }
+    }
+
+    #[test]
+    fn a_shape_is_named_with_its_article() {
+        assert_eq!(Shape::Box.info().a_name(), "a box");
+        assert_eq!(Shape::Ellipsoid.info().a_name(), "an ellipsoid");
+        assert_eq!(Shape::Inertia.info().a_name(), "an inertia");
     }
 
     /// Gauss–Legendre nodes and weights on [−½, ½] (n = 5, exact to degree 9).
