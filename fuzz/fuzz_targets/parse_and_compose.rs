@@ -184,7 +184,7 @@ fuzz_target!(|data: &[u8]| {
             outside.is_none(),
             "an include outside the roots: {outside:?}"
         );
-        let json = render::report::json(summary);
+        let json = output::report::json(summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
@@ -192,7 +192,7 @@ fuzz_target!(|data: &[u8]| {
             !json.contains(MARKER),
             "the JSON shows secret.toml:\n{json}"
         );
-        let table = render::report::table(summary, top, None);
+        let table = output::report::table(summary, top, None);
         assert!(
             !table.contains(MARKER),
             "the table shows secret.toml:\n{table}"
@@ -206,7 +206,7 @@ fuzz_target!(|data: &[u8]| {
             if r.pass {
                 continue;
             }
-            let message = render::check::message("fuzz.toml", &r);
+            let message = output::check::message("fuzz.toml", &r);
             let words = message.split(|c: char| !c.is_ascii_alphanumeric());
             assert!(
                 !words.into_iter().any(|w| w == "inf" || w == "NaN"),
