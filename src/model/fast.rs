@@ -25,6 +25,7 @@
 use super::raw::{Materials, RawFile, RawPart, RawUnits};
 use values::{Entry, How, Node, own_value, set_from};
 
+pub(in crate::model) mod errors;
 mod tables;
 mod values;
 use std::borrow::Cow;
