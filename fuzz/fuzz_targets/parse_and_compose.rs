@@ -4,7 +4,9 @@
 //! `[expect]` messages print no non-finite number; an include never reads,
 //! or quotes, a file outside the part file's directory; and wherever the
 //! fast path (`model::fast::parse`) reads a file, serde
-//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans.
+//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans;
+//! where the reference parser (`toml::from_str::<toml::Table>`) rejects a
+//! file, reading it gives an error with a place.
 //! Every channel is escaped (issue 28): a diagnostic, as standard error
 //! shows it, and the report's table have no raw control, bidirectional,
 //! separator or noncharacter (U+FFFE, U+FFFF) character but tab and the
@@ -184,7 +186,7 @@ fuzz_target!(|data: &[u8]| {
             outside.is_none(),
             "an include outside the roots: {outside:?}"
         );
-        let json = render::report::json(summary);
+        let json = output::report::json(summary);
         let value: serde_json::Value = serde_json::from_str(&json)
             .unwrap_or_else(|e| panic!("JSON does not parse ({precision:?}): {e}\n{json}"));
         assert_no_null(&value, "", &json);
@@ -192,7 +194,7 @@ fuzz_target!(|data: &[u8]| {
             !json.contains(MARKER),
             "the JSON shows secret.toml:\n{json}"
         );
-        let table = render::report::table(summary, top, None);
+        let table = output::report::table(summary, top, None);
         assert!(
             !table.contains(MARKER),
             "the table shows secret.toml:\n{table}"
@@ -206,7 +208,7 @@ fuzz_target!(|data: &[u8]| {
             if r.pass {
                 continue;
             }
-            let message = render::check::message("fuzz.toml", &r);
+            let message = output::check::message("fuzz.toml", &r);
             let words = message.split(|c: char| !c.is_ascii_alphanumeric());
             assert!(
                 !words.into_iter().any(|w| w == "inf" || w == "NaN"),
@@ -277,6 +279,15 @@ fn fast_path_agrees(text: &str) {
             toml::from_str::<RawFile>(text).is_err(),
             "the reader declines a file serde accepts"
         );
+        // Where the reference parser rejects the text, reading it gives
+        // an error with a place.
+        if toml::from_str::<toml::Table>(text).is_err() {
+            let source = massprop::diag::Source::new("top.toml", text);
+            let e = massprop::model::Model::parse(&source)
+                .err()
+                .expect("a file the reference parser rejects is not read");
+            assert!(e.place().and_then(|p| p.span).is_some(), "no place: {e}");
+        }
         return;
     };
     let serde = toml::from_str::<RawFile>(text)

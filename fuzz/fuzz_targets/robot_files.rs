@@ -114,6 +114,7 @@ fn rendered(results: &[FileResult], quiet: bool) {
     for text in [
         check::table(
             results,
+            0,
             Style {
                 colour: false,
                 width: None,
@@ -121,12 +122,13 @@ fn rendered(results: &[FileResult], quiet: bool) {
         ),
         check::table(
             results,
+            0,
             Style {
                 colour: true,
                 width: Some(60),
             },
         ),
-        ci::github(results),
+        ci::github(results, 0),
         ci::junit(results),
         ci::sarif(results),
     ] {
