@@ -1,5 +1,6 @@
 //! The rewording of the toml crate's and serde's errors into massprop's
-//! diagnostics: serde's words for TOML's ("map" → table, "sequence" →
+//! diagnostics, for the classes of error the reader does not word itself
+//! yet (syntax errors it does: `fast::errors`): serde's words for TOML's ("map" → table, "sequence" →
 //! array), unknown keys with "did you mean", the key a type error is about
 //! (its value, or an element inside it) and what that key holds in our
 //! words (`expected`: "an array of 3 numbers or strings with units"), the
