@@ -1,10 +1,11 @@
 //! The rewording of the toml crate's and serde's errors into massprop's
 //! diagnostics, for the classes of error the reader does not word itself
-//! yet (syntax errors it does: `fast::errors`): serde's words for TOML's ("map" → table, "sequence" →
-//! array), unknown keys with "did you mean", the key a type error is about
-//! (its value, or an element inside it) and what that key holds in our
-//! words (`expected`: "an array of 3 numbers or strings with units"), the
-//! accepted forms of a `rotation`, too-deep keys given a place. (An array
+//! yet (syntax errors it does: `fast::errors`): serde's words for TOML's
+//! ("map" → table, "sequence" → array), unknown keys with "did you
+//! mean", the key a type error is about (its value, or an element inside
+//! it) and what that key holds in our words (`expected`: "an array of 3
+//! numbers or strings with units"), the accepted forms of a `rotation`,
+//! too-deep keys given a place. (An array
 //! where a table belongs never reaches serde's struct code: see
 //! `raw::table_only`.) It depends on the wording of those crates'
 //! messages: every wording it relies on is pinned by a test below, so an
