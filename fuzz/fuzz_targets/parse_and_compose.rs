@@ -4,7 +4,9 @@
 //! `[expect]` messages print no non-finite number; an include never reads,
 //! or quotes, a file outside the part file's directory; and wherever the
 //! fast path (`model::fast::parse`) reads a file, serde
-//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans.
+//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans;
+//! where the reference parser (`toml::from_str::<toml::Table>`) rejects a
+//! file, reading it gives an error with a place.
 //! Every channel is escaped (issue 28): a diagnostic, as standard error
 //! shows it, and the report's table have no raw control, bidirectional,
 //! separator or noncharacter (U+FFFE, U+FFFF) character but tab and the
@@ -277,6 +279,15 @@ fn fast_path_agrees(text: &str) {
             toml::from_str::<RawFile>(text).is_err(),
             "the reader declines a file serde accepts"
         );
+        // Where the reference parser rejects the text, reading it gives
+        // an error with a place.
+        if toml::from_str::<toml::Table>(text).is_err() {
+            let source = massprop::diag::Source::new("top.toml", text);
+            let e = massprop::model::Model::parse(&source)
+                .err()
+                .expect("a file the reference parser rejects is not read");
+            assert!(e.place().and_then(|p| p.span).is_some(), "no place: {e}");
+        }
         return;
     };
     let serde = toml::from_str::<RawFile>(text)

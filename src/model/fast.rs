@@ -17,7 +17,8 @@
 //! `part = [{ .. }]`. It gives `None` on any syntax error and anything
 //! TOML or the file's form refuses (a duplicate or unknown key, a value of
 //! the wrong type, a missing `shape`, a table defined twice, …): the
-//! caller then lets serde word the error. Where it returns `Some`,
+//! caller then words a syntax error by `errors`, and lets serde word the
+//! classes not worded there yet. Where it returns `Some`,
 //! `toml::from_str::<RawFile>` gives the same, values and spans alike
 //! (tested in `tests`, by the property test tests/integration/hostile.rs
 //! and by the fuzz target).
@@ -25,6 +26,7 @@
 use super::raw::{Materials, RawFile, RawPart, RawUnits};
 use values::{Entry, How, Node, own_value, set_from};
 
+pub(in crate::model) mod errors;
 mod tables;
 mod values;
 use std::borrow::Cow;

@@ -246,6 +246,10 @@ impl Model {
 
     /// The file read by serde, through the toml crate's value tree.
     fn serde(source: &Source) -> Result<RawFile, Diagnostic> {
+        // The classes of error the reader words itself, first.
+        if let Some(d) = fast::errors::syntax(source) {
+            return Err(d);
+        }
         toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))
     }
 

@@ -1,9 +1,11 @@
 //! The rewording of the toml crate's and serde's errors into massprop's
-//! diagnostics: serde's words for TOML's ("map" → table, "sequence" →
-//! array), unknown keys with "did you mean", the key a type error is about
-//! (its value, or an element inside it) and what that key holds in our
-//! words (`expected`: "an array of 3 numbers or strings with units"), the
-//! accepted forms of a `rotation`, too-deep keys given a place. (An array
+//! diagnostics, for the classes of error the reader does not word itself
+//! yet (syntax errors it does: `fast::errors`): serde's words for TOML's
+//! ("map" → table, "sequence" → array), unknown keys with "did you
+//! mean", the key a type error is about (its value, or an element inside
+//! it) and what that key holds in our words (`expected`: "an array of 3
+//! numbers or strings with units"), the accepted forms of a `rotation`,
+//! too-deep keys given a place. (An array
 //! where a table belongs never reaches serde's struct code: see
 //! `raw::table_only`.) It depends on the wording of those crates'
 //! messages: every wording it relies on is pinned by a test below, so an
@@ -13,6 +15,7 @@
 //! file is the tests that pin each upstream wording beside the code that
 //! relies on it.
 
+use super::fast::errors::{ROTATION_FORMS, comment_start, key_before, quoted_value};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::shapes::Shape;
 use crate::units;
@@ -54,13 +57,8 @@ pub(super) fn toml_error(source: &Source, e: &toml::de::Error) -> Diagnostic {
     // `[[analysis]]` for `[analysis]`: serde's words ("wrong type", "invalid
     // length", or an unknown key inside it) would name neither the table
     // nor the fix. Such a header is an error wherever serde stumbled.
-    if let Some((header, name)) = array_of_tables_header(&source.text) {
-        return source
-            .error(
-                header,
-                format!("`{name}` must be a table, found an array of tables"),
-            )
-            .help(format!("write `[{name}]`, with one pair of brackets"));
+    if let Some(d) = super::fast::errors::array_of_tables(source) {
+        return d;
     }
     // A date-time reaches a table type as a table with toml's private key.
     if msg.starts_with("unknown field `$__toml_private") {
@@ -206,9 +204,6 @@ fn wrong_type(depth: usize) -> &'static str {
     }
 }
 
-/// The accepted forms of `rotation`, for every message about its type.
-const ROTATION_FORMS: &str = "write `{ quaternion = [w, x, y, z] }`, `{ axis = [x, y, z], degrees = θ }`, `{ matrix = [[..], [..], [..]] }`, or `{ intrinsic = \"zyx\", degrees = [a, b, c] }` (or `extrinsic`)";
-
 /// What the value of `key` is, in massprop's words, `depth` arrays inside
 /// it, where serde's would be only "an array" or "a number": the keys
 /// whose values are arrays. `text` and `at` find the part's shape (the
@@ -276,29 +271,6 @@ fn key_at(text: &str, offset: usize) -> Option<(String, usize)> {
     best.map(|(k, depth, _)| (k, depth))
 }
 
-/// The first `[[analysis]]`, `[[units]]`, `[[materials]]` or `[[expect]]`
-/// header (tables the file has at most one of): where it is and its name.
-fn array_of_tables_header(text: &str) -> Option<(Range<usize>, &'static str)> {
-    let mut at = 0;
-    for line in text.split_inclusive('\n') {
-        let code = line.trim_start();
-        if let Some((inner, _)) = code.strip_prefix("[[").and_then(|h| h.split_once("]]")) {
-            // The whole header, `[[ analysis ]]` with its spaces.
-            let start = at + line.len() - code.len();
-            let header = start..start + inner.len() + 4;
-            let name = inner.trim();
-            if let Some(table) = ["analysis", "units", "materials", "expect"]
-                .into_iter()
-                .find(|t| *t == name)
-            {
-                return Some((header, table));
-            }
-        }
-        at += line.len();
-    }
-    None
-}
-
 /// The shape of the `[[part]]` that has a key at `offset`, when it names a
 /// known one. Only used on the error path.
 fn shape_of_part_at(text: &str, offset: usize) -> Option<Shape> {
@@ -324,24 +296,6 @@ fn shape_of_part_at(text: &str, offset: usize) -> Option<Shape> {
     })
 }
 
-/// The key on the line of `offset`: the name before the last `=` (`mass =
-/// 1e400`), for syntax errors where no spanned parse is possible.
-/// None inside a comment: a bad character there belongs to no key.
-fn key_before(text: &str, offset: usize) -> Option<String> {
-    let line_start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
-    let line = &text[line_start..offset];
-    if comment_start(line).is_some() {
-        return None;
-    }
-    let before = line.rsplit_once('=')?.0.trim_end();
-    let start = before
-        .char_indices()
-        .rfind(|&(_, c)| !(c.is_alphanumeric() || c == '_' || c == '-'))
-        .map_or(0, |(i, c)| i + c.len_utf8());
-    let key = &before[start..];
-    (!key.is_empty()).then(|| key.to_string())
-}
-
 /// The line whose key (before `=`, or a `[header]`) has the most dots:
 /// its offset and the length of the key.
 fn deepest_key(text: &str) -> (usize, usize) {
@@ -359,45 +313,10 @@ fn deepest_key(text: &str) -> (usize, usize) {
     (best.1, best.2)
 }
 
-/// Where a comment begins on a line of TOML: the first `#` outside a
-/// string. (Multi-line strings are not followed; this only serves messages.)
-fn comment_start(line: &str) -> Option<usize> {
-    let mut quote = None;
-    let mut escaped = false;
-    for (i, c) in line.char_indices() {
-        match (quote, c) {
-            (Some('"'), '\\') if !escaped => {
-                escaped = true;
-                continue;
-            }
-            (Some(q), c) if c == q && !escaped => quote = None,
-            (None, '"' | '\'') => quote = Some(c),
-            (None, '#') => return Some(i),
-            _ => {}
-        }
-        escaped = false;
-    }
-    None
-}
-
-/// For "string values must be quoted" (`mass = 1 kg`): the line's value
-/// from `offset`, without its comment, quoted as a quantity.
-fn quoted_value(text: &str, offset: usize) -> Option<String> {
-    let line_end = text[offset..].find('\n').map_or(text.len(), |i| offset + i);
-    let rest = &text[offset..line_end];
-    let value = rest[..comment_start(rest).unwrap_or(rest.len())].trim();
-    let plain = !value.is_empty()
-        && value
-            .chars()
-            .next()
-            .is_some_and(|c| c.is_ascii_digit() || c == '-' || c == '+' || c == '.')
-        && !value.contains(['"', '\'', '[', ']', '{', '}', ',', '=']);
-    plain.then(|| format!("\"{value}\""))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::fast::errors::array_of_tables_header;
 
     #[test]
     fn the_key_before_an_error_is_found_on_its_line_but_not_in_a_comment() {
@@ -473,6 +392,26 @@ mod tests {
             .expect_err("the text is not a valid part file");
         let ours = toml_error(&Source::new("t.toml", text), &e).to_string();
         (e.message().to_string(), ours)
+    }
+
+    #[test]
+    fn the_readers_syntax_errors_read_as_serdes_reworded_did() {
+        // NOTE: while both paths exist: the reader's own words for a
+        // syntax error are those this module made of serde's.
+        for text in [
+            "[[part]]\nshape = \"box\"\nsize = [1, 2\n",
+            "[part\n",
+            "[[part]]\nshape = = 1\n",
+            "mass = 1\nb c\n",
+            "[[part]]\nrotation = [1,,2]\n",
+            "part = {shape = \"box\"\n",
+            "[[analysis]]\nx = [\n",
+            "# \u{7}\n",
+        ] {
+            let source = Source::new("t.toml", text);
+            let ours = crate::model::fast::errors::syntax(&source).expect("a syntax error");
+            assert_eq!(ours.to_string(), reworded(text).1, "{text:?}");
+        }
     }
 
     #[test]

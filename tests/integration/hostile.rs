@@ -968,7 +968,7 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
         // serde rejects too.
         return match toml::from_str::<RawFile>(text) {
             Ok(_) => Err(format!("the reader declines a file serde accepts:\n{text}")),
-            Err(_) => Ok(false),
+            Err(_) => located_where_the_reference_rejects(text).map(|()| false),
         };
     };
     let serde = toml::from_str::<RawFile>(text)
@@ -1004,6 +1004,20 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
         around(&fast),
         around(&serde)
     ))
+}
+
+/// Where the reference parser (`toml::from_str::<toml::Table>`) rejects
+/// `text`, reading it gives an error with a place.
+fn located_where_the_reference_rejects(text: &str) -> Result<(), String> {
+    if toml::from_str::<toml::Table>(text).is_ok() {
+        return Ok(());
+    }
+    let source = massprop::diag::Source::new("h.toml", text);
+    match massprop::model::Model::parse(&source) {
+        Ok(_) => Err(format!("read a file the reference parser rejects:\n{text}")),
+        Err(d) if d.place().and_then(|p| p.span).is_some() => Ok(()),
+        Err(d) => Err(format!("an error without a place: {d}\n{text}")),
+    }
 }
 
 /// `fast_path_agrees`, counting in `taken` the files the fast path took.
