@@ -197,6 +197,12 @@ pub struct DiffArgs {
     )]
     pub tol: f64,
 
+    /// Fail (exit status 1) when parts were added, removed or changed by
+    /// name, too: without it only the whole body's mass properties decide,
+    /// and a renamed part is reported but passes.
+    #[arg(long)]
+    pub names: bool,
+
     #[command(flatten)]
     pub accuracy: AccuracyArgs,
 
@@ -629,6 +635,7 @@ impl Cli {
                 format: a.format,
                 output: a.output.clone(),
                 tol: a.tol,
+                names: a.names,
                 accuracy: a.accuracy.accuracy(),
                 axes: a.axes.axes.clone(),
                 about: a.about.clone(),
