@@ -223,7 +223,8 @@ mod tests {
 
     #[test]
     fn json_writes_a_negative_zero_as_zero_and_every_real_as_a_float() {
-        let line = json_line(&serde_json::json!({ "a": -0.0, "b": [0.0, -0.0_f64, 2.0, -1.5e-300] }));
+        let line =
+            json_line(&serde_json::json!({ "a": -0.0, "b": [0.0, -0.0_f64, 2.0, -1.5e-300] }));
         assert_eq!(line, "{\"a\":0.0,\"b\":[0.0,0.0,2.0,-1.5e-300]}\n");
     }
 

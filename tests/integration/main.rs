@@ -26,6 +26,7 @@ mod frames;
 mod hostile;
 mod hostile_round_two;
 mod invariants;
+mod json_types;
 mod layers;
 mod leftovers;
 mod library;
