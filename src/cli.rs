@@ -11,6 +11,7 @@ use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod help;
+pub mod reference;
 mod render;
 mod terminal;
 mod uncertainty;
@@ -66,6 +67,9 @@ pub enum Command {
     /// Print the part file's JSON Schema, for editors (`#:schema` in Taplo, Even Better TOML).
     #[command(after_help = SCHEMA_HELP)]
     Schema,
+    /// The part-file reference: every shape, key, unit, material (`massprop help part-file`).
+    #[command(name = "part-file", hide = true)]
+    PartFile,
     /// Write a commented starter part file that `check` passes.
     #[command(after_help = INIT_HELP)]
     Init(InitArgs),
@@ -650,6 +654,7 @@ impl Cli {
             }),
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
+            Command::PartFile => Request::Text(reference::text()),
             Command::Schema => Request::Text(crate::model::schema::text()),
             Command::Init(a) => Request::Init(commands::init::Options {
                 file: a.file.clone(),
@@ -685,7 +690,24 @@ fn man_page() -> String {
     }
     let mut page = String::from_utf8(out).expect("invariant: a man page is UTF-8");
     page.push_str(&json_section(include_str!("../docs/json.md")));
+    page.push_str(&part_file_section());
     page
+}
+
+/// The part-file reference (`reference::text`) as a roff section.
+fn part_file_section() -> String {
+    let mut out = String::from(".SH \"PART FILE\"\n.nf\n");
+    for line in reference::text().lines() {
+        let line = line.replace('\\', "\\e").replace('-', "\\-");
+        // A leading dot or quote would be a roff request.
+        if line.starts_with('.') || line.starts_with('\'') {
+            out.push_str("\\&");
+        }
+        out.push_str(&line);
+        out.push('\n');
+    }
+    out.push_str(".fi\n");
+    out
 }
 
 /// The JSON contract's table of keys (docs/json.md, the one statement of
