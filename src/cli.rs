@@ -11,7 +11,7 @@ use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod help;
-pub mod reference;
+mod reference;
 mod render;
 mod terminal;
 mod uncertainty;
@@ -689,64 +689,9 @@ fn man_page() -> String {
             .expect("invariant: writing to memory does not fail");
     }
     let mut page = String::from_utf8(out).expect("invariant: a man page is UTF-8");
-    page.push_str(&json_section(include_str!("../docs/json.md")));
-    page.push_str(&part_file_section());
+    page.push_str(&reference::json_section(include_str!("../docs/json.md")));
+    page.push_str(&reference::roff());
     page
-}
-
-/// The part-file reference (`reference::text`) as a roff section.
-fn part_file_section() -> String {
-    let mut out = String::from(".SH \"PART FILE\"\n.nf\n");
-    for line in reference::text().lines() {
-        let line = line.replace('\\', "\\e").replace('-', "\\-");
-        // A leading dot or quote would be a roff request.
-        if line.starts_with('.') || line.starts_with('\'') {
-            out.push_str("\\&");
-        }
-        out.push_str(&line);
-        out.push('\n');
-    }
-    out.push_str(".fi\n");
-    out
-}
-
-/// The JSON contract's table of keys (docs/json.md, the one statement of
-/// it) as a roff section, so that an installed massprop carries it.
-fn json_section(doc: &str) -> String {
-    // roff: a backslash and a leading dot or quote are special; `code` in
-    // bold.
-    let roff = |text: &str| {
-        let escaped = text.replace('\\', "\\e").replace('-', "\\-");
-        let mut out = String::new();
-        for (i, piece) in escaped.split('`').enumerate() {
-            if i % 2 == 1 {
-                out.push_str("\\fB");
-                out.push_str(piece);
-                out.push_str("\\fR");
-            } else {
-                out.push_str(piece);
-            }
-        }
-        if out.starts_with(['.', '\'']) {
-            out.insert_str(0, "\\&");
-        }
-        out
-    };
-    let mut s = String::from(
-        ".SH \"JSON OUTPUT\"\n\\fBmassprop report \\-\\-format json\\fR prints one object, SI units; keys are only ever added.\n",
-    );
-    for row in doc.lines().filter(|l| l.starts_with("| `")) {
-        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
-        if let [key, kind, meaning] = cells[..] {
-            s.push_str(&format!(
-                ".TP\n{} ({})\n{}\n",
-                roff(key),
-                roff(kind),
-                roff(meaning)
-            ));
-        }
-    }
-    s
 }
 
 /// `--axes`, of every command that computes a body.

@@ -1,4 +1,5 @@
-//! `massprop help part-file` (and the man page's PART FILE section): the
+//! The man page's own sections, and `massprop help part-file` (the man
+//! page's PART FILE section too): the
 //! part-file reference, made from the registries the reader itself uses, so
 //! it cannot drift from it: each part key and its line from the JSON Schema
 //! (itself made from `keys::COMMON` and each shape's `own_keys`), each
@@ -95,6 +96,22 @@ pub fn text() -> String {
     out
 }
 
+/// The part-file reference (`text`) as a roff section.
+pub fn roff() -> String {
+    let mut out = String::from(".SH \"PART FILE\"\n.nf\n");
+    for line in text().lines() {
+        let line = line.replace('\\', "\\e").replace('-', "\\-");
+        // A leading dot or quote would be a roff request.
+        if line.starts_with('.') || line.starts_with('\'') {
+            out.push_str("\\&");
+        }
+        out.push_str(&line);
+        out.push('\n');
+    }
+    out.push_str(".fi\n");
+    out
+}
+
 /// A schema entry's description, on one line; without one, its form
 /// (`[x, y, z]`, the definition it refers to).
 fn description(v: &Value) -> String {
@@ -126,4 +143,43 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
         }
     }
     lines
+}
+
+/// The JSON contract's table of keys (docs/json.md, the one statement of
+/// it) as a roff section, so that an installed massprop carries it.
+pub fn json_section(doc: &str) -> String {
+    // roff: a backslash and a leading dot or quote are special; `code` in
+    // bold.
+    let roff = |text: &str| {
+        let escaped = text.replace('\\', "\\e").replace('-', "\\-");
+        let mut out = String::new();
+        for (i, piece) in escaped.split('`').enumerate() {
+            if i % 2 == 1 {
+                out.push_str("\\fB");
+                out.push_str(piece);
+                out.push_str("\\fR");
+            } else {
+                out.push_str(piece);
+            }
+        }
+        if out.starts_with(['.', '\'']) {
+            out.insert_str(0, "\\&");
+        }
+        out
+    };
+    let mut s = String::from(
+        ".SH \"JSON OUTPUT\"\n\\fBmassprop report \\-\\-format json\\fR prints one object, SI units; keys are only ever added.\n",
+    );
+    for row in doc.lines().filter(|l| l.starts_with("| `")) {
+        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
+        if let [key, kind, meaning] = cells[..] {
+            s.push_str(&format!(
+                ".TP\n{} ({})\n{}\n",
+                roff(key),
+                roff(kind),
+                roff(meaning)
+            ));
+        }
+    }
+    s
 }
