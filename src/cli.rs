@@ -11,6 +11,7 @@ use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod help;
+mod reference;
 mod render;
 mod terminal;
 mod uncertainty;
@@ -66,6 +67,9 @@ pub enum Command {
     /// Print the part file's JSON Schema, for editors (`#:schema` in Taplo, Even Better TOML).
     #[command(after_help = SCHEMA_HELP)]
     Schema,
+    /// The part-file reference: every shape, key, unit, material (`massprop help part-file`).
+    #[command(name = "part-file", hide = true)]
+    PartFile,
     /// Write a commented starter part file that `check` passes.
     #[command(after_help = INIT_HELP)]
     Init(InitArgs),
@@ -196,6 +200,12 @@ pub struct DiffArgs {
         allow_hyphen_values = true
     )]
     pub tol: f64,
+
+    /// Fail (exit status 1) when parts were added, removed or changed by
+    /// name, too: without it only the whole body's mass properties decide,
+    /// and a renamed part is reported but passes.
+    #[arg(long)]
+    pub names: bool,
 
     #[command(flatten)]
     pub accuracy: AccuracyArgs,
@@ -629,6 +639,7 @@ impl Cli {
                 format: a.format,
                 output: a.output.clone(),
                 tol: a.tol,
+                names: a.names,
                 accuracy: a.accuracy.accuracy(),
                 axes: a.axes.axes.clone(),
                 about: a.about.clone(),
@@ -643,6 +654,7 @@ impl Cli {
             }),
             Command::Completions(a) => Request::Text(completions(a.shell)),
             Command::Man => Request::Text(man_page()),
+            Command::PartFile => Request::Text(reference::text()),
             Command::Schema => Request::Text(crate::model::schema::text()),
             Command::Init(a) => Request::Init(commands::init::Options {
                 file: a.file.clone(),
@@ -677,47 +689,9 @@ fn man_page() -> String {
             .expect("invariant: writing to memory does not fail");
     }
     let mut page = String::from_utf8(out).expect("invariant: a man page is UTF-8");
-    page.push_str(&json_section(include_str!("../docs/json.md")));
+    page.push_str(&reference::json_section(include_str!("../docs/json.md")));
+    page.push_str(&reference::roff());
     page
-}
-
-/// The JSON contract's table of keys (docs/json.md, the one statement of
-/// it) as a roff section, so that an installed massprop carries it.
-fn json_section(doc: &str) -> String {
-    // roff: a backslash and a leading dot or quote are special; `code` in
-    // bold.
-    let roff = |text: &str| {
-        let escaped = text.replace('\\', "\\e").replace('-', "\\-");
-        let mut out = String::new();
-        for (i, piece) in escaped.split('`').enumerate() {
-            if i % 2 == 1 {
-                out.push_str("\\fB");
-                out.push_str(piece);
-                out.push_str("\\fR");
-            } else {
-                out.push_str(piece);
-            }
-        }
-        if out.starts_with(['.', '\'']) {
-            out.insert_str(0, "\\&");
-        }
-        out
-    };
-    let mut s = String::from(
-        ".SH \"JSON OUTPUT\"\n\\fBmassprop report \\-\\-format json\\fR prints one object, SI units; keys are only ever added.\n",
-    );
-    for row in doc.lines().filter(|l| l.starts_with("| `")) {
-        let cells: Vec<&str> = row.trim_matches('|').split(" | ").map(str::trim).collect();
-        if let [key, kind, meaning] = cells[..] {
-            s.push_str(&format!(
-                ".TP\n{} ({})\n{}\n",
-                roff(key),
-                roff(kind),
-                roff(meaning)
-            ));
-        }
-    }
-    s
 }
 
 /// `--axes`, of every command that computes a body.

@@ -81,7 +81,14 @@ impl Cli {
         I: IntoIterator<Item = T>,
         T: Into<OsString>,
     {
-        let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+        let mut args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+        // NOTE: clap's own `help` subcommand takes a subcommand's name, and
+        // `part-file` is a topic, not a command: `massprop help part-file`
+        // is read as the hidden `part-file` command; `help report` and the
+        // rest stay clap's.
+        if args.len() == 3 && args[1] == "help" && args[2] == "part-file" {
+            args.remove(1);
+        }
         let mut command = Cli::command().color(asked_colour(&args));
         let mut matches = command.try_get_matches_from_mut(args)?;
         let cli = Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))?;

@@ -1,5 +1,6 @@
 //! `massprop diff OLD NEW`: two part files compared (docs/diff.md). Exit
-//! status 1 when anything changed beyond the tolerance.
+//! status 1 when a mass property changed beyond the tolerance (with
+//! `--names`, also when parts were added, removed or changed by name).
 
 use super::Outcome;
 use crate::analysis::diff::Diff;
@@ -17,6 +18,8 @@ pub struct Options {
     pub output: Option<String>,
     /// Relative tolerance.
     pub tol: f64,
+    /// `--names`: parts added, removed or changed by name fail too.
+    pub names: bool,
     /// `--precision` and `--rtol`.
     pub accuracy: Accuracy,
     /// `--axes`, as typed.
@@ -45,7 +48,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
     let colour = terminal.stderr.colour;
     let stderr = super::accuracy_warnings(&old, colour) + &super::accuracy_warnings(&new, colour);
-    let diff = Diff::of(old, new, o.tol)?;
+    let diff = Diff::of(old, new, o.tol, o.names)?;
     Ok(Outcome {
         stdout: super::Stdout::Text(output::render(
             &output::Output::Diff(&diff),

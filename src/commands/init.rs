@@ -23,8 +23,8 @@ pub const STARTER: &str = r#"# A massprop part file: one rigid body as a list of
 #   massprop report FILE    mass, centre of mass, inertia, principal axes
 #   massprop check FILE     the [expect] values below, and validity
 #
-# The format: `massprop man`, and docs/part-file.md in massprop's
-# repository. For completion and checking as you type
+# The format: `massprop help part-file` (every shape and key), and
+# docs/part-file.md in massprop's repository. For completion and checking as you type
 # (Taplo, Even Better TOML): run `massprop schema > massprop.schema.json`
 # beside this file and make this the first line:
 #   #:schema ./massprop.schema.json
@@ -37,7 +37,8 @@ name = "camera mast"
 units = { length = "mm", mass = "kg" }
 
 # Each [[part]] is one shape: box, plate, rod, cylinder, disk, sphere,
-# triangle, point or inertia (a given tensor), or `include = "other.toml"`
+# triangle, point, inertia (a given tensor), cone, torus, hemisphere,
+# prism, mesh, capsule or ellipsoid, or `include = "other.toml"`
 # for a sub-assembly. Its mass is exactly one of `mass`, the shape's
 # density (`density` per volume, `areal_density` for a plate or disk,
 # `linear_density` for a rod) and a `material` (`massprop materials` lists
@@ -100,6 +101,22 @@ pub fn run(o: &Options) -> Result<Outcome, Diagnostic> {
         Some(path) => {
             crate::io::write_new(path, STARTER, "the part file")?;
             Ok(Outcome::ok(String::new(), Vec::new()))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_starter_names_every_shape_of_the_registry() {
+        let list = super::STARTER
+            .split("one shape:")
+            .nth(1)
+            .and_then(|t| t.split("`include").next())
+            .expect("the starter's shape list");
+        for s in crate::shapes::SHAPES.iter() {
+            let word = |w: &str| w.trim_matches(|c: char| !c.is_ascii_alphanumeric()) == s.name;
+            assert!(list.split_whitespace().any(word), "{} is missing", s.name);
         }
     }
 }

@@ -315,8 +315,10 @@ pub fn table(d: &Diff, width: Option<usize>) -> String {
         "\n{}",
         if d.changed {
             "result: changed beyond the tolerance"
-        } else {
+        } else if p.is_empty() {
             "result: no change beyond the tolerance"
+        } else {
+            "result: no mass property changed beyond the tolerance (the parts differ: `--names` fails on that)"
         }
     );
     out

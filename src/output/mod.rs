@@ -152,10 +152,26 @@ pub fn json_line_to<T: serde::Serialize + ?Sized>(
     w.flush()
 }
 
-/// serde_json's compact formatter, with DEL and C1 controls escaped.
+/// serde_json's compact formatter, with DEL and C1 controls escaped and
+/// every real written as a float without a sign on zero.
 struct ControlsEscaped;
 
 impl serde_json::ser::Formatter for ControlsEscaped {
+    // NOTE: every real of every command passes here, so this is the one
+    // place their form is fixed (docs/json.md): serde_json writes an `f64`
+    // with a `.0` or an exponent, so never as an integer, but it keeps the
+    // sign of zero, and a script that tests `x < 0` or prints `-0.0` would
+    // see a sign no computation meant (a σ of zero, a rotated zero).
+    fn write_f64<W: ?Sized + std::io::Write>(&mut self, w: &mut W, x: f64) -> std::io::Result<()> {
+        let x = if x == 0.0 { 0.0 } else { x };
+        serde_json::ser::CompactFormatter.write_f64(w, x)
+    }
+
+    fn write_f32<W: ?Sized + std::io::Write>(&mut self, w: &mut W, x: f32) -> std::io::Result<()> {
+        let x = if x == 0.0 { 0.0 } else { x };
+        serde_json::ser::CompactFormatter.write_f32(w, x)
+    }
+
     fn write_string_fragment<W: ?Sized + std::io::Write>(
         &mut self,
         w: &mut W,
@@ -203,6 +219,13 @@ mod tests {
             let back: serde_json::Value = serde_json::from_str(&line).unwrap();
             assert_eq!(back["name"], text);
         }
+    }
+
+    #[test]
+    fn json_writes_a_negative_zero_as_zero_and_every_real_as_a_float() {
+        let line =
+            json_line(&serde_json::json!({ "a": -0.0, "b": [0.0, -0.0_f64, 2.0, -1.5e-300] }));
+        assert_eq!(line, "{\"a\":0.0,\"b\":[0.0,0.0,2.0,-1.5e-300]}\n");
     }
 
     #[test]
