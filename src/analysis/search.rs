@@ -151,7 +151,7 @@ fn skipped(p: &Path, why: &str) -> Found {
 /// these, or a near miss of one, is checked (`likely_part_file`). NOTE:
 /// the schema's top-level properties less `name` (a test holds them
 /// equal): a key the reader learns is a key this rule knows.
-pub const OWN_KEYS: [&str; 8] = [
+pub const TOP_LEVEL_KEYS: [&str; 8] = [
     "analysis",
     "budget",
     "expect",
@@ -163,7 +163,7 @@ pub const OWN_KEYS: [&str; 8] = [
 ];
 
 /// Whether a `*.toml` found in a directory is checked: it has one of
-/// massprop's own top-level tables or keys (`OWN_KEYS`), or a near miss of
+/// massprop's own top-level tables or keys (`TOP_LEVEL_KEYS`), or a near miss of
 /// one (`[[parts]]`, `[Part]`, `[unit]`, `[materails]`), so that a typo
 /// makes the file invalid rather than passed over. Read off the lines, not
 /// parsed: a file that is not valid TOML is judged too, and nothing of a
@@ -211,7 +211,7 @@ fn first_key(l: &str) -> Option<String> {
     (!key.is_empty()).then(|| key.to_string())
 }
 
-/// Whether `key` is one of `OWN_KEYS` or a near miss of one: the same but
+/// Whether `key` is one of `TOP_LEVEL_KEYS` or a near miss of one: the same but
 /// for case, `_`, `-` and a plural `s`, or (for a key of five letters or
 /// more, where a slip of one letter is still unlike an ordinary word)
 /// one letter added, dropped, changed or two swapped. NOTE: `part` only
@@ -225,7 +225,7 @@ fn near_own_key(key: &str) -> bool {
         .collect();
     let singular = k.strip_suffix('s').unwrap_or(&k).to_string();
     let forms = [k.clone(), format!("{k}s"), singular];
-    OWN_KEYS.iter().any(|own| {
+    TOP_LEVEL_KEYS.iter().any(|own| {
         forms
             .iter()
             .any(|f| f == own || (own.len() >= 5 && strsim::osa_distance(f, own) <= 1))
@@ -337,6 +337,6 @@ mod tests {
             .filter(|k| *k != "name")
             .collect();
         keys.sort_unstable();
-        assert_eq!(keys, OWN_KEYS);
+        assert_eq!(keys, TOP_LEVEL_KEYS);
     }
 }

@@ -7,40 +7,7 @@
 //! its core, `diameter` twice `radius`; copies and mirrors of it; its
 //! derivatives by its sizes against finite differences; and export.
 
-use crate::common::{massprop_stdin, report_json};
-
-/// Mass, centre of mass and inertia about it, from a report.
-fn figures(text: &str, args: &[&str]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
-    let (v, _) = report_json(text, args);
-    let m = v["mass"].as_f64().expect("mass");
-    let c = std::array::from_fn(|i| v["center_of_mass"][i].as_f64().expect("com"));
-    let i = std::array::from_fn(|a| {
-        std::array::from_fn(|b| v["inertia_com"][a][b].as_f64().expect("inertia"))
-    });
-    (m, c, i)
-}
-
-/// The two files describe the same body, to `tol` relative to each
-/// quantity's scale.
-fn same_body(a: &str, b: &str, tol: f64) {
-    let (ma, ca, ia) = figures(a, &[]);
-    let (mb, cb, ib) = figures(b, &[]);
-    assert!((ma - mb).abs() <= tol * mb, "mass {ma} vs {mb}\n{a}\n{b}");
-    let big = ib.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    let size = (big / mb).sqrt();
-    for k in 0..3 {
-        assert!(
-            (ca[k] - cb[k]).abs() <= tol * (cb[k].abs() + size),
-            "centre {ca:?} vs {cb:?}\n{a}\n{b}"
-        );
-        for l in 0..3 {
-            assert!(
-                (ia[k][l] - ib[k][l]).abs() <= tol * big,
-                "inertia {ia:?} vs {ib:?}\n{a}\n{b}"
-            );
-        }
-    }
-}
+use crate::common::{massprop_stdin, report_json, same_body};
 
 const TURN: &str = "rotation = { axis = [1, 2, 3], degrees = 37 }";
 

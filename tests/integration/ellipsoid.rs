@@ -8,40 +8,9 @@
 //! derivatives, copies and mirrors of it, export in each format, its
 //! drawing in each view, and its bad input.
 
-use crate::common::{massprop_stdin, report_json, report_json_file, scratch_files};
-
-/// Mass, centre of mass and inertia about it, from a report.
-fn figures(text: &str, args: &[&str]) -> (f64, [f64; 3], [[f64; 3]; 3]) {
-    let (v, _) = report_json(text, args);
-    let m = v["mass"].as_f64().expect("mass");
-    let c = std::array::from_fn(|i| v["center_of_mass"][i].as_f64().expect("com"));
-    let i = std::array::from_fn(|a| {
-        std::array::from_fn(|b| v["inertia_com"][a][b].as_f64().expect("inertia"))
-    });
-    (m, c, i)
-}
-
-/// The two files describe the same body, to `tol` relative to each
-/// quantity's scale.
-fn same_body(a: &str, b: &str, tol: f64) {
-    let (ma, ca, ia) = figures(a, &[]);
-    let (mb, cb, ib) = figures(b, &[]);
-    assert!((ma - mb).abs() <= tol * mb, "mass {ma} vs {mb}\n{a}\n{b}");
-    let big = ib.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    let size = (big / mb).sqrt();
-    for k in 0..3 {
-        assert!(
-            (ca[k] - cb[k]).abs() <= tol * (cb[k].abs() + size),
-            "centre {ca:?} vs {cb:?}\n{a}\n{b}"
-        );
-        for l in 0..3 {
-            assert!(
-                (ia[k][l] - ib[k][l]).abs() <= tol * big,
-                "inertia {ia:?} vs {ib:?}\n{a}\n{b}"
-            );
-        }
-    }
-}
+use crate::common::{
+    figures, massprop_stdin, report_json, report_json_file, same_body, scratch_files,
+};
 
 /// The textbook tensor of a solid ellipsoid of mass `m` and semi-axes
 /// a, b, c about its centre in its own axes: m/5 diag(b² + c², a² + c²,
@@ -79,7 +48,7 @@ fn an_ellipsoid_of_equal_radii_is_the_sphere() {
 #[test]
 fn its_mass_is_the_density_times_four_thirds_pi_abc() {
     let text = "[[part]]\nshape = \"ellipsoid\"\ndensity = 1000\nradii = [0.5, 2, 0.25]\ncenter = [0, 0, 0]\n";
-    let (m, _, i) = figures(text, &[]);
+    let (m, _, i, _) = figures(text, &[]);
     let want = 1000.0 * 4.0 / 3.0 * PI * 0.5 * 2.0 * 0.25;
     assert!(
         (m - want).abs() <= 4.0 * f64::EPSILON * want,
@@ -101,7 +70,7 @@ fn a_turned_ellipsoid_has_its_textbook_tensor_turned() {
     let text = format!(
         "[[part]]\nshape = \"ellipsoid\"\nmass = {m}\nradii = [0.5, 1.25, 2]\ncenter = [4, -1, 2]\nrotation = {{ axis = [1, 2, 3], degrees = {deg} }}\n"
     );
-    let (got_m, c, i) = figures(&text, &[]);
+    let (got_m, c, i, _) = figures(&text, &[]);
     assert_eq!(got_m, m);
     assert_eq!(c, [4.0, -1.0, 2.0]);
     let (r, d) = (turn(axis, deg), textbook(m, radii));
@@ -194,11 +163,11 @@ fn a_mirrored_and_arrayed_ellipsoid_is_each_copy_written_out() {
     // And the image is not the copy moved: centred on the mirror's plane,
     // the part and its image cancel each other's y–z product.
     let on_plane = part.replace("center = [1, 2, 0.5]", "center = [1, 0, 0.5]");
-    let (_, _, pair) = figures(
+    let (_, _, pair, _) = figures(
         &format!("[[part]]\n{on_plane}mirror = {{ normal = [0, 1, 0] }}\n"),
         &[],
     );
-    let (_, _, one) = figures(&format!("[[part]]\n{on_plane}"), &[]);
+    let (_, _, one, _) = figures(&format!("[[part]]\n{on_plane}"), &[]);
     assert!(one[1][2].abs() > 0.1, "{one:?}");
     assert!(pair[1][2].abs() <= 1e-14, "{pair:?}");
     assert!(
