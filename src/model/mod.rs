@@ -32,7 +32,6 @@ mod solids;
 mod span;
 mod streamed;
 pub mod tolerance;
-mod toml_error;
 pub mod walk;
 
 pub use copies::{Copies, push_copy_name};
@@ -234,23 +233,11 @@ impl Model {
         Ok(model)
     }
 
-    /// The file as TOML, by the one reader (`fast`); serde via the toml
-    /// crate's value tree only to word an error.
+    /// The file as TOML, by the one reader (`fast`), which words its
+    /// error too.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
         count_parse();
-        match fast::read_file(&source.text) {
-            Some(raw) => Ok(raw),
-            None => Model::serde(source),
-        }
-    }
-
-    /// The file read by serde, through the toml crate's value tree.
-    fn serde(source: &Source) -> Result<RawFile, Diagnostic> {
-        // The classes of error the reader words itself, first.
-        if let Some(d) = fast::errors::syntax(source) {
-            return Err(d);
-        }
-        toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))
+        fast::read_file(&source.text).ok_or_else(|| fast::explain(source))
     }
 
     /// `parse`, inside the chain of files that include each other (for
@@ -284,18 +271,17 @@ impl Model {
         let raw = match fast {
             Some(raw) if whole => Some(raw),
             Some(raw) if streamed.saw_all_of(&raw) => Some(raw),
-            Some(_) => {
+            // Read whole (a file the stream cannot take, or refused: then
+            // read whole to be sure before its error is worded).
+            Some(_) | None if !whole => {
                 streamed = Streamed::off();
                 fast::read_file(&source.text)
             }
-            None => None,
+            Some(_) | None => None,
         };
         let mut raw = match raw {
             Some(raw) => raw,
-            None => {
-                streamed = Streamed::off();
-                Model::serde(source)?
-            }
+            None => return Err(fast::explain(source)),
         };
         let (ctx, mut rec) = Model::context(source, &raw, passed, None)?;
         if !streamed.off {
