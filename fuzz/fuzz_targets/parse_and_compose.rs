@@ -3,10 +3,9 @@
 //! whose JSON is finite and valid, whose table renders, and whose
 //! `[expect]` messages print no non-finite number; an include never reads,
 //! or quotes, a file outside the part file's directory; and wherever the
-//! fast path (`model::fast::parse`) reads a file, serde
-//! (`toml::from_str::<RawFile>`) reads it too, to the same values and spans;
-//! where the reference parser (`toml::from_str::<toml::Table>`) rejects a
-//! file, reading it gives an error with a place.
+//! reader (`model::fast::parse`) reads a file, the reference parser reads
+//! it too, every value at its place (`fast::reference::agrees`); where the
+//! reader refuses a file, reading it gives an error with a place.
 //! Every channel is escaped (issue 28): a diagnostic, as standard error
 //! shows it, and the report's table have no raw control, bidirectional,
 //! separator or noncharacter (U+FFFE, U+FFFF) character but tab and the
@@ -34,7 +33,6 @@ use massprop::analysis::check;
 use massprop::analysis::summary::Accuracy;
 use massprop::compose::Precision;
 use massprop::model::fast;
-use massprop::model::raw::RawFile;
 use massprop::output;
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -269,34 +267,22 @@ fn diagnostic_lines(text: &str) {
     }
 }
 
-/// src/model/fast.rs's promise: where `fast::read_file` returns `Some`, serde
-/// accepts the text too and gives the same `RawFile`, values and spans
-/// (compared through `Debug`, as fast.rs's tests do: `RawFile` is not
-/// `PartialEq`); where it returns `None`, serde rejects the text.
+/// src/model/fast.rs's promise: where `fast::read_file` returns `Some`,
+/// it reads the text as the reference parser does (`fast::reference::
+/// agrees`), and so in chunks; where it returns `None`, reading the text
+/// gives an error with a place.
 fn fast_path_agrees(text: &str) {
-    let Some(fast) = fast::read_file(text) else {
-        assert!(
-            toml::from_str::<RawFile>(text).is_err(),
-            "the reader declines a file serde accepts"
-        );
-        // Where the reference parser rejects the text, reading it gives
-        // an error with a place.
-        if toml::from_str::<toml::Table>(text).is_err() {
-            let source = massprop::diag::Source::new("top.toml", text);
-            let e = massprop::model::Model::parse(&source)
-                .err()
-                .expect("a file the reference parser rejects is not read");
-            assert!(e.place().and_then(|p| p.span).is_some(), "no place: {e}");
-        }
+    if fast::read_file(text).is_none() {
+        let source = massprop::diag::Source::new("top.toml", text);
+        let e = massprop::model::Model::parse(&source)
+            .err()
+            .expect("a file the reader refuses is not read");
+        assert!(e.place().and_then(|p| p.span).is_some(), "no place: {e}");
         return;
-    };
-    let serde = toml::from_str::<RawFile>(text)
-        .unwrap_or_else(|e| panic!("the fast path reads a file that serde rejects: {e}"));
-    assert_eq!(
-        format!("{fast:?}"),
-        format!("{serde:?}"),
-        "the fast path and serde read the file differently"
-    );
+    }
+    if let Err(e) = fast::reference::agrees(text) {
+        panic!("{e}");
+    }
     let fast = format!("{:?}", fast::parse(text).expect("read_file took it"));
     // Read a few tokens at a time, the same file or declined (a chunk that
     // ends inside a value), never another.

@@ -698,7 +698,7 @@ mod tests {
         assert_eq!(s, "part 3[7]");
     }
 
-    /// A part with copies, inline or as a sub-table, is read as serde
+    /// A part with copies, inline or as a sub-table, is read as the reference parser
     /// reads it.
     #[test]
     fn arrays_and_mirrors_read_as_serde_reads_them() {
@@ -710,7 +710,7 @@ mod tests {
         ] {
             let text = format!("{part}{extra}");
             super::super::fast::tests::same(&text);
-            let raw: super::super::raw::RawFile = toml::from_str(&text).unwrap();
+            let raw = super::super::fast::read_file(&text).expect("read");
             let p = raw.part.unwrap().into_inner().remove(0).into_inner();
             assert!(p.array.is_some() || p.mirror.is_some(), "{text}");
         }

@@ -16,19 +16,24 @@
 //! sub-tables (`[part.rotation]`, `[materials.steel]`), booleans,
 //! `part = [{ .. }]`. It gives `None` on any syntax error and anything
 //! TOML or the file's form refuses (a duplicate or unknown key, a value of
-//! the wrong type, a missing `shape`, a table defined twice, …): the
-//! caller then words a syntax error by `errors`, and lets serde word the
-//! classes not worded there yet. Where it returns `Some`,
-//! `toml::from_str::<RawFile>` gives the same, values and spans alike
-//! (tested in `tests`, by the property test tests/integration/hostile.rs
-//! and by the fuzz target).
+//! the wrong type, a table defined twice, …); `explain` then reads the
+//! file again, whole and to its end, to word the first error in its own
+//! words (`failure`, `errors`). Where it returns `Some`, the reference
+//! parser (`toml::from_str::<toml::Table>`) accepts the file, and where
+//! it refuses one the reader refuses it with a located error (tested in
+//! `tests`, by the property test tests/integration/hostile.rs and by the
+//! fuzz target).
 
 use super::raw::{Materials, RawFile, RawPart, RawUnits};
-use values::{Entry, How, Node, own_value, set_from};
+use values::{Entry, How, Node, Seg, own_value, set_from};
 
 pub(in crate::model) mod errors;
-mod tables;
+pub(in crate::model) mod failure;
+pub mod reference;
+pub(in crate::model) mod tables;
+mod tree;
 mod values;
+use failure::{Failure, Found, Read, Valid, What};
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -36,6 +41,7 @@ use toml_parser::decoder::{Encoding, ScalarKind};
 use toml_parser::lexer::{Token, TokenKind};
 use toml_parser::parser::{EventReceiver, RecursionGuard, ValidateWhitespace};
 use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
+use tree::{Refused, enter, header_table, put};
 
 /// The toml crate's own nesting limit (`toml::de::parser::LIMIT`).
 const RECURSION_LIMIT: u32 = 80;
@@ -47,9 +53,50 @@ const RECURSION_LIMIT: u32 = 80;
 const MAX_PATH: usize = 8;
 
 /// `RawFile` from `text`, or `None` where it is not a valid part file
-/// (serde then words the error).
+/// (`explain` then words the error).
 pub fn parse(text: &str) -> Option<RawFile> {
     parse_in_chunks(text, CHUNK)
+}
+
+/// Why `source` is no valid part file, in massprop's words: the first
+/// syntax or decoding error the parser reports; else the first refusal of
+/// TOML's rules (a key or table defined twice, a dotted key through a
+/// value); else the first refusal of the form of a part file in the file
+/// (an unknown key, a value of the wrong type, a missing key). Only on the
+/// error path: the file is read again whole, to its end.
+pub(in crate::model) fn explain(source: &crate::diag::Source) -> crate::diag::Diagnostic {
+    // A `[[analysis]]` header is the error wherever the file fails.
+    if let Some(d) = errors::array_of_tables(source) {
+        return d;
+    }
+    let text = &source.text;
+    let mut builder = Builder::new(Source::new(text));
+    builder.explain = true;
+    let mut first = First(None);
+    let tokens = Source::new(text).lex().into_vec();
+    {
+        let mut ws = ValidateWhitespace::new(&mut builder, Source::new(text));
+        let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
+        toml_parser::parser::parse_document(&tokens, &mut guarded, &mut first);
+    }
+    if let Some(e) = first.0 {
+        return errors::parse_error(source, &e);
+    }
+    let failure = match builder.finish() {
+        Ok(_) => None,
+        Err(f) => f,
+    };
+    match failure {
+        Some(f) => errors::word(source, f),
+        // NOTE: the reader refused a file its whole reading takes: a
+        // chunk ended inside a value. Never seen (the property test and
+        // the fuzz target read every file in chunks of 1 to 40 tokens);
+        // said rather than hidden.
+        None => source.error(
+            0..0,
+            "this file could not be read in pieces; please report it",
+        ),
+    }
 }
 
 /// The file as the model reads it: `parse`.
@@ -92,7 +139,7 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
     let source = Source::new(text);
     let mut builder = Builder::new(source);
     builder.streaming = sink.is_some();
-    let mut error = Failed(false);
+    let mut error = First(None);
     // NOTE: lexed and parsed a chunk of whole tables at a time, not the
     // whole file: the lexer's tokens take 14 bytes of memory per byte of
     // input, more than the rest of reading a file together. A chunk ends
@@ -131,7 +178,7 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
             let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
             toml_parser::parser::parse_document(&chunk, &mut guarded, &mut error);
             chunk.clear();
-            if error.0 || builder.failed {
+            if error.0.is_some() || builder.failed {
                 return None;
             }
             if token.is_none() {
@@ -153,19 +200,22 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
         line_start = t.kind() == TokenKind::Newline;
         chunk.push(t);
     }
-    builder.finish()
+    builder.finish().ok()
 }
 
 /// Tokens lexed and parsed at a time (24 bytes each): a few thousand
 /// parts.
 pub const CHUNK: usize = 1 << 16;
 
-/// Records that the parser reported an error.
-struct Failed(bool);
+/// Keeps the first error the parser reports (a syntax error, or one of
+/// decoding a key or a value, in the file's order).
+struct First(Option<ParseError>);
 
-impl ErrorSink for Failed {
-    fn report_error(&mut self, _error: ParseError) {
-        self.0 = true;
+impl ErrorSink for First {
+    fn report_error(&mut self, error: ParseError) {
+        if self.0.is_none() {
+            self.0 = Some(error);
+        }
     }
 }
 
@@ -176,12 +226,14 @@ enum Frame<'i> {
     Table(usize, Vec<Entry<'i>>, Vec<Seg<'i>>),
 }
 
-/// A key, or one part of a dotted key or header, and where it is.
-type Seg<'i> = (Cow<'i, str>, Range<usize>);
-
 struct Builder<'i> {
     source: Source<'i>,
     failed: bool,
+    /// Reading to explain a refusal (`explain`): each failure kept, the
+    /// first of TOML's rules and the first in the file of the form's.
+    explain: bool,
+    toml_failure: Option<Failure>,
+    form_failure: Option<Failure>,
     /// Inside `[..]` or `[[..]]`: where it opened, whether an array table,
     /// and its keys.
     header: Option<(usize, bool, Vec<Seg<'i>>)>,
@@ -207,6 +259,9 @@ impl<'i> Builder<'i> {
         Builder {
             source,
             failed: false,
+            explain: false,
+            toml_failure: None,
+            form_failure: None,
             header: None,
             keys: Vec::new(),
             stack: Vec::new(),
@@ -219,8 +274,25 @@ impl<'i> Builder<'i> {
         }
     }
 
-    fn fail(&mut self) {
+    fn fail(&mut self, f: Failure) {
         self.failed = true;
+        if !self.explain {
+            return;
+        }
+        if f.is_toml() {
+            self.toml_failure.get_or_insert(f);
+        } else if self
+            .form_failure
+            .as_ref()
+            .is_none_or(|g| f.span.start < g.span.start)
+        {
+            self.form_failure = Some(f);
+        }
+    }
+
+    /// A state only a syntax error leads to (which the parser reports).
+    fn confused(&mut self, span: Span) {
+        self.fail(Failure::toml(span.start()..span.end(), "invalid TOML here"));
     }
 
     fn raw(&self, span: Span, kind: Option<Encoding>) -> Raw<'i> {
@@ -229,9 +301,9 @@ impl<'i> Builder<'i> {
     }
 
     /// A root table converted as read so far (for the parts handed out).
-    fn early<T>(&self, key: &str, convert: fn(Node<'i>) -> Option<T>) -> Option<T> {
+    fn early<T>(&self, key: &str, convert: fn(Node<'i>) -> Read<T>) -> Option<T> {
         let (_, _, node) = self.root.iter().find(|(k, _, _)| k == key)?;
-        convert(node.clone())
+        convert(node.clone()).ok()
     }
 
     /// Hand the parts read so far to `sink`.
@@ -250,15 +322,18 @@ impl<'i> Builder<'i> {
         }
     }
 
-    fn finish(mut self) -> Option<RawFile> {
+    /// The file read, or (when explaining) the failure to word: the first
+    /// of TOML's rules, else the first of the form's in the file.
+    fn finish(mut self) -> Result<RawFile, Option<Failure>> {
         self.close_part();
-        if self.failed || self.header.is_some() || !self.stack.is_empty() || !self.keys.is_empty() {
-            return None;
+        if self.header.is_some() || !self.stack.is_empty() || !self.keys.is_empty() {
+            // Only after a syntax error, which the parser reports.
+            self.fail(Failure::toml(0..0, "invalid TOML"));
         }
         let mut raw = RawFile {
             name: None,
             units: None,
-            part: self.parts.map(|(span, v)| Spanned::new(span, v)),
+            part: self.parts.take().map(|(span, v)| Spanned::new(span, v)),
             analysis: None,
             expect: None,
             materials: None,
@@ -266,38 +341,20 @@ impl<'i> Builder<'i> {
             growth: None,
             budget: None,
         };
-        for (k, _, v) in self.root {
-            match &*k {
-                "name" => values::set(&mut raw.name, tables::name(v)?),
-                "units" => values::set(&mut raw.units, tables::units(v)?),
-                "analysis" => values::set(&mut raw.analysis, tables::analysis(v)?),
-                "expect" => values::set(&mut raw.expect, tables::expect(v)?),
-                "materials" => values::set(&mut raw.materials, tables::materials(v)?),
-                "params" => values::set(&mut raw.params, tables::params(v)?),
-                "growth" => values::set(&mut raw.growth, tables::growth(v)?),
-                "budget" => values::set(&mut raw.budget, tables::budget(v)?),
-                // `part = [{ .. }, ..]`: the parts as an array of inline
-                // tables (not beside `[[part]]`: the key is then taken).
-                "part" if raw.part.is_none() && !self.streaming => {
-                    let Node::Array(items, span) = v else {
-                        return None;
-                    };
-                    let parts = items
-                        .into_iter()
-                        .map(|n| match n {
-                            Node::Table(entries, span, _) => {
-                                Some(Spanned::new(span, part(entries)?))
-                            }
-                            _ => None,
-                        })
-                        .collect::<Option<_>>()?;
-                    raw.part = Some(Spanned::new(span, parts));
-                    Some(())
-                }
-                _ => None,
-            }?;
+        for (k, ks, v) in std::mem::take(&mut self.root) {
+            if let Err(f) = self.root_key(&mut raw, &k, &ks, v) {
+                self.fail(f);
+            }
         }
-        Some(raw)
+        if !self.failed {
+            return Ok(raw);
+        }
+        Err(self.toml_failure.or(self.form_failure))
+    }
+
+    /// One of the file's own keys into `raw`.
+    fn root_key(&self, raw: &mut RawFile, k: &str, ks: &Range<usize>, v: Node<'i>) -> Read<()> {
+        root_value(raw, k, ks, v).map_err(|f| f.at_key(k))
     }
 
     /// The `[[part]]` being read is complete.
@@ -306,21 +363,40 @@ impl<'i> Builder<'i> {
         let Some((span, entries)) = self.part.take() else {
             return;
         };
-        match (part(entries), &mut self.parts) {
-            (Some(p), Some((_, v))) => v.push(Spanned::new(span, p)),
-            _ => self.fail(),
+        match part(entries) {
+            Ok(p) => match &mut self.parts {
+                Some((_, v)) => v.push(Spanned::new(span, p)),
+                None => self.fail(Failure::toml(span, "invalid TOML")),
+            },
+            Err(f) => self.fail(f),
         }
     }
 
     /// A table header `[path]` or `[[path]]` from `span`.
     fn open_table(&mut self, span: Range<usize>, is_array: bool, path: Vec<Seg<'i>>) {
-        let Some(((first, _), rest)) = path.split_first() else {
-            return self.fail();
+        let Some(((first, first_span), rest)) = path.split_first() else {
+            return self.fail(Failure::toml(span, "invalid TOML"));
         };
         if first == "part" {
             if is_array {
-                if !rest.is_empty() || self.root.iter().any(|(k, _, _)| k == "part") {
-                    return self.fail();
+                if !rest.is_empty() {
+                    // No key of a part is an array of tables.
+                    let (k, ks) = &rest[0];
+                    let shape = self.part.as_ref().and_then(|(_, e)| shape_of(e));
+                    return self.fail(Failure::new(
+                        ks.clone(),
+                        What::Unknown {
+                            key: k.to_string(),
+                            valid: Valid::Part(shape),
+                        },
+                    ));
+                }
+                if let Some((_, _, node)) = self.root.iter().find(|(k, _, _)| k == "part") {
+                    let f = match node {
+                        Node::Table(..) => Failure::new(span.clone(), What::PartTable),
+                        _ => Failure::toml(first_span.clone(), "duplicate key"),
+                    };
+                    return self.fail(f);
                 }
                 self.close_part();
                 if self.parts.is_none() {
@@ -339,25 +415,63 @@ impl<'i> Builder<'i> {
                 self.at.clear();
                 return;
             }
+            if rest.is_empty() {
+                // `[part]`: one table, where parts are an array of them.
+                self.close_part();
+                self.fail(Failure::new(span, What::PartTable));
+                let text = self.source.input();
+                // Read on into a table of its own, for later errors.
+                let _ = header_table(&mut self.root, &path, 0..0, text);
+                self.at = path.into_iter().map(|(k, _)| k).collect();
+                return;
+            }
             // `[part.rotation]`: a table of the part still open.
             // NOTE: not of a part closed by another table's header since,
             // which TOML allows but no part file needs: refused.
             let Some((_, entries)) = &mut self.part else {
-                return self.fail();
+                return self.fail(Failure::new(
+                    span,
+                    What::Other(
+                        "a table of a part (`[part.…]`) must follow its `[[part]]`, before any other table"
+                            .into(),
+                    ),
+                ));
             };
-            if rest.is_empty() || header_table(entries, rest, span).is_none() {
-                return self.fail();
+            let text = self.source.input();
+            if let Err(f) = header_table(entries, rest, span, text).map_err(Refused::word) {
+                return self.fail(f);
             }
             self.in_part = true;
             self.at = rest.iter().map(|(k, _)| k.clone()).collect();
             return;
         }
         if is_array {
-            return self.fail();
+            // `[[analysis]]` and the like are worded before (`explain`);
+            // any other name is an unknown key here, or an array of tables
+            // where a table belongs.
+            self.close_part();
+            let f = if ROOT_KEYS.contains(&&**first) {
+                Failure::new(
+                    span,
+                    What::Other(format!(
+                        "`{first}`: an array of tables where a table belongs; write `[{first}]`, with one pair of brackets"
+                    )),
+                )
+            } else {
+                Failure::new(
+                    first_span.clone(),
+                    What::Unknown {
+                        key: first.to_string(),
+                        valid: Valid::Keys(ROOT_KEYS),
+                    },
+                )
+            };
+            return self.fail(f);
         }
         self.close_part();
-        if header_table(&mut self.root, &path, span).is_none() {
-            return self.fail();
+        let text = self.source.input();
+        if let Err(f) = header_table(&mut self.root, &path, span, text).map_err(Refused::word) {
+            return self.fail(f);
         }
         self.at = path.into_iter().map(|(k, _)| k).collect();
     }
@@ -365,169 +479,146 @@ impl<'i> Builder<'i> {
     /// A complete value: into the open array or inline table, or to the
     /// current key.
     fn value(&mut self, node: Node<'i>) {
+        let text = self.source.input();
         match self.stack.last_mut() {
             Some(Frame::Array(_, items)) => items.push(node),
             Some(Frame::Table(_, entries, keys)) => {
                 let keys = std::mem::take(keys);
-                if put(entries, &keys, node).is_none() {
-                    self.fail();
+                if let Err(e) = put(entries, &keys, node, text) {
+                    self.fail(e.word());
                 }
             }
             None => {
                 let keys = std::mem::take(&mut self.keys);
-                if self.assign(keys, node).is_none() {
-                    self.fail();
+                if let Err(e) = self.assign(keys, node, text) {
+                    self.fail(e.word());
                 }
             }
         }
     }
 
     /// `keys = node` (a dotted key through tables it makes) in the
-    /// current table; `None` if TOML refuses it (a key given twice, a
+    /// current table; refused where TOML refuses it (a key given twice, a
     /// dotted key through a value or a table not its own).
-    fn assign(&mut self, keys: Vec<Seg<'i>>, node: Node<'i>) -> Option<()> {
+    fn assign(&mut self, keys: Vec<Seg<'i>>, node: Node<'i>, text: &str) -> Result<(), Refused> {
+        let span = keys.first().map_or(0..0, |(_, s)| s.clone());
         let table = if self.in_part {
-            &mut self.part.as_mut()?.1
+            match self.part.as_mut() {
+                Some((_, entries)) => entries,
+                None => return Err(Refused::Confused(span)),
+            }
         } else {
             &mut self.root
         };
-        put(enter(table, &self.at)?, &keys, node)
+        let Some(table) = enter(table, &self.at) else {
+            return Err(Refused::Confused(span));
+        };
+        put(table, &keys, node, text)
     }
 }
 
-/// `keys = node` (a dotted key through tables it makes) in `table`;
-/// `None` if TOML refuses it (no key, a key given twice, a dotted key
-/// through a value or a table not its own).
-fn put<'i>(table: &mut Vec<Entry<'i>>, keys: &[Seg<'i>], node: Node<'i>) -> Option<()> {
-    let ((last, last_span), through) = keys.split_last()?;
-    let mut table = table;
-    for (k, span) in through {
-        table = descend(table, k, span, How::Dotted)?;
+/// One of the file's own keys into `raw`, its failure not yet given the
+/// key.
+fn root_value(raw: &mut RawFile, k: &str, ks: &Range<usize>, v: Node<'_>) -> Read<()> {
+    use values::set;
+    match k {
+        "name" => set(&mut raw.name, tables::name(v)?, ks),
+        "units" => set(&mut raw.units, tables::units(v)?, ks),
+        "analysis" => set(&mut raw.analysis, tables::analysis(v)?, ks),
+        "expect" => set(&mut raw.expect, tables::expect(v)?, ks),
+        "materials" => set(&mut raw.materials, tables::materials(v)?, ks),
+        "params" => set(&mut raw.params, tables::params(v)?, ks),
+        "growth" => set(&mut raw.growth, tables::growth(v)?, ks),
+        "budget" => set(&mut raw.budget, tables::budget(v)?, ks),
+        // `part = [{ .. }, ..]`: the parts as an array of inline tables
+        // (not beside `[[part]]`: TOML refuses the key then). Kept, not
+        // handed out, when streaming (`Streamed::saw_all_of` then has the
+        // file read whole).
+        "part" => {
+            let Node::Array(items, span) = v else {
+                return values::wrong(&v, PARTS);
+            };
+            let parts = items
+                .into_iter()
+                .map(|n| match n {
+                    Node::Table(entries, span, _) => Ok(Spanned::new(span, part(entries)?)),
+                    other => values::wrong(&other, "a part table with `shape`")
+                        .map_err(Failure::in_array),
+                })
+                .collect::<Read<_>>()?;
+            set(&mut raw.part, Spanned::new(span, parts), ks)
+        }
+        _ => values::unknown(k, ks, ROOT_KEYS),
     }
-    if table.iter().any(|(k, _, _)| k == last) {
-        return None;
-    }
-    table.push((last.clone(), last_span.clone(), node));
-    Some(())
 }
 
-/// A part from its keys, by the key registry (`assign_part`); `None` for
+/// What `[[part]]` holds, in a message.
+const PARTS: &str = "an array of tables, each a `[[part]]`";
+
+/// The file's own keys, in a message.
+pub(in crate::model) const ROOT_KEYS: &[&str] = &[
+    "name",
+    "units",
+    "part",
+    "analysis",
+    "expect",
+    "materials",
+    "params",
+    "growth",
+    "budget",
+];
+
+/// A part from its keys, by the key registry (`assign_part`); refused for
 /// an unknown key or a value of the wrong type. (A part with neither a
 /// shape nor an include is read: the model says what it misses.)
-fn part(entries: Vec<Entry<'_>>) -> Option<RawPart> {
+fn part(entries: Vec<Entry<'_>>) -> Read<RawPart> {
+    // The shape first: an unknown key is matched against its keys.
+    let shape = shape_of(&entries);
     let mut p = RawPart::default();
-    for (k, _, v) in entries {
-        assign_part(&mut p, &k, v)?;
+    for (k, ks, v) in entries {
+        assign_part(&mut p, &k, &ks, v, shape).map_err(|f| f.at_key(&k).in_part(shape))?;
     }
-    Some(p)
+    Ok(p)
 }
 
-/// The table at `path` (made by headers) below `table`.
-fn enter<'t, 'i>(
-    mut table: &'t mut Vec<Entry<'i>>,
-    path: &[Cow<'i, str>],
-) -> Option<&'t mut Vec<Entry<'i>>> {
-    for k in path {
-        let i = table.iter().position(|(e, _, _)| e == k)?;
-        match &mut table[i].2 {
-            Node::Table(entries, _, _) => table = entries,
-            _ => return None,
-        }
-    }
-    Some(table)
-}
-
-/// The table under `key` in `table`, made `how` if there is none (its
-/// span the key's, as toml gives it); `None` where TOML refuses to go
-/// through what is there: a value, a closed inline table, a table a
-/// header defined for a dotted key, a dotted key's for a header.
-fn descend<'t, 'i>(
-    table: &'t mut Vec<Entry<'i>>,
-    key: &Cow<'i, str>,
-    span: &Range<usize>,
-    how: How,
-) -> Option<&'t mut Vec<Entry<'i>>> {
-    let i = match table.iter().position(|(e, _, _)| e == key) {
-        Some(i) => i,
-        None => {
-            table.push((
-                key.clone(),
-                span.clone(),
-                Node::Table(Vec::new(), span.clone(), how),
-            ));
-            table.len() - 1
-        }
-    };
-    match &mut table[i].2 {
-        Node::Table(entries, _, h) if enterable(*h, how) => Some(entries),
+/// The shape a part's keys name, if a known one.
+fn shape_of(entries: &[Entry<'_>]) -> Option<crate::shapes::Shape> {
+    entries.iter().find_map(|(k, _, v)| match (&**k, v) {
+        ("shape", Node::Str(s, _)) => crate::shapes::Shape::from_name(s),
         _ => None,
-    }
-}
-
-/// Whether a table made `made` may be gone through to add by `by`
-/// (`How::Dotted`: a dotted key; `How::Implicit`: a header's path).
-fn enterable(made: How, by: How) -> bool {
-    match (made, by) {
-        (How::Dotted, How::Dotted) => true,
-        (How::Header | How::Implicit, How::Implicit) => true,
-        (How::Inline | How::Header | How::Implicit, How::Dotted) => false,
-        (How::Inline | How::Dotted, How::Implicit) => false,
-        (How::Inline | How::Header | How::Implicit | How::Dotted, How::Inline | How::Header) => {
-            false
-        }
-    }
-}
-
-/// Define the table of the header `[path]` (at `span`) below `table`;
-/// `None` if TOML refuses: a table defined twice, a path through a value,
-/// an inline table or a dotted key's table.
-fn header_table<'i>(
-    table: &mut Vec<Entry<'i>>,
-    path: &[Seg<'i>],
-    span: Range<usize>,
-) -> Option<()> {
-    let ((last, last_span), through) = path.split_last()?;
-    let mut table = table;
-    for (k, s) in through {
-        table = descend(table, k, s, How::Implicit)?;
-    }
-    match table.iter_mut().find(|(e, _, _)| e == last) {
-        Some((_, _, Node::Table(_, s, how))) if *how == How::Implicit => {
-            *s = span;
-            *how = How::Header;
-            Some(())
-        }
-        Some(_) => None,
-        None => {
-            table.push((
-                last.clone(),
-                last_span.clone(),
-                Node::Table(Vec::new(), span, How::Header),
-            ));
-            Some(())
-        }
-    }
+    })
 }
 
 /// The reader's assignment of each part key, from its declaration
 /// (`keys::part_keys!`): `key = node` into its `RawPart` field, read as
 /// the field's type reads it (`FromNode`); else a shape's own key, read
-/// by its declared kind. `None` if the key is unknown, repeated, or the
+/// by its declared kind. Refused if the key is unknown, repeated, or the
 /// value of the wrong type.
 macro_rules! assigner {
     ($($name:ident: $kind:expr, $dim:expr, $tol:literal, $scope:ident, $doc:literal;)+) => {
-        fn assign_part(p: &mut RawPart, key: &str, node: Node<'_>) -> Option<()> {
+        fn assign_part(
+            p: &mut RawPart,
+            key: &str,
+            ks: &Range<usize>,
+            node: Node<'_>,
+            shape: Option<crate::shapes::Shape>,
+        ) -> Read<()> {
             match key {
-                $(stringify!($name) => set_from(&mut p.$name, node),)+
+                $(stringify!($name) => set_from(&mut p.$name, node, ks),)+
                 _ => {
-                    let declared = crate::shapes::own_key(key)?;
+                    let Some(declared) = crate::shapes::own_key(key) else {
+                        return Err(Failure::new(
+                            ks.clone(),
+                            What::Unknown { key: key.to_string(), valid: Valid::Part(shape) },
+                        ));
+                    };
                     let value = own_value(declared.kind, node)?;
                     let own = p.own.get_or_insert_with(Default::default);
                     if own.iter().any(|(k, _)| *k == declared.name) {
-                        return None;
+                        return Err(Failure::toml(ks.clone(), "duplicate key"));
                     }
                     own.push((declared.name, value));
-                    Some(())
+                    Ok(())
                 }
             }
         }
@@ -538,7 +629,7 @@ super::keys::part_keys!(assigner);
 impl<'i> EventReceiver for Builder<'i> {
     fn std_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
         if self.header.is_some() || !self.keys.is_empty() || !self.stack.is_empty() {
-            return self.fail();
+            return self.confused(span);
         }
         self.header = Some((span.start(), false, Vec::new()));
     }
@@ -546,13 +637,13 @@ impl<'i> EventReceiver for Builder<'i> {
     fn std_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
         match self.header.take() {
             Some((start, false, path)) => self.open_table(start..span.end(), false, path),
-            _ => self.fail(),
+            _ => self.confused(span),
         }
     }
 
     fn array_table_open(&mut self, span: Span, _error: &mut dyn ErrorSink) {
         if self.header.is_some() || !self.keys.is_empty() || !self.stack.is_empty() {
-            return self.fail();
+            return self.confused(span);
         }
         self.header = Some((span.start(), true, Vec::new()));
     }
@@ -560,7 +651,7 @@ impl<'i> EventReceiver for Builder<'i> {
     fn array_table_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
         match self.header.take() {
             Some((start, true, path)) => self.open_table(start..span.end(), true, path),
-            _ => self.fail(),
+            _ => self.confused(span),
         }
     }
 
@@ -575,7 +666,7 @@ impl<'i> EventReceiver for Builder<'i> {
             Some(Frame::Table(start, entries, keys)) if keys.is_empty() => {
                 self.value(Node::Table(entries, start..span.end(), How::Inline))
             }
-            _ => self.fail(),
+            _ => self.confused(span),
         }
     }
 
@@ -587,7 +678,7 @@ impl<'i> EventReceiver for Builder<'i> {
     fn array_close(&mut self, span: Span, _error: &mut dyn ErrorSink) {
         match self.stack.pop() {
             Some(Frame::Array(start, items)) => self.value(Node::Array(items, start..span.end())),
-            _ => self.fail(),
+            _ => self.confused(span),
         }
     }
 
@@ -595,16 +686,28 @@ impl<'i> EventReceiver for Builder<'i> {
         let mut key = Cow::Borrowed("");
         self.raw(span, kind).decode_key(&mut key, error);
         let seg = (key, span.start()..span.end());
+        let input = self.source.input();
         let path = match (&mut self.header, self.stack.last_mut()) {
             (Some((_, _, path)), _) => path,
             (None, Some(Frame::Table(_, _, keys))) => keys,
-            (None, Some(Frame::Array(..))) => return self.fail(),
+            (None, Some(Frame::Array(..))) => return self.confused(span),
             (None, None) => &mut self.keys,
         };
-        if path.len() >= MAX_PATH {
-            return self.fail();
+        if path.len() < MAX_PATH {
+            return path.push(seg);
         }
-        path.push(seg);
+        // Kept to its first parts, so that reading goes on; the error
+        // points at the whole key (to its `=` or `]`), once.
+        if path.len() == MAX_PATH {
+            let start = path[0].1.start;
+            path.push(seg);
+            let line = &input[start..];
+            let end = start
+                + line[..line.find(['=', ']', '\n']).unwrap_or(line.len())]
+                    .trim_end()
+                    .len();
+            self.fail(Failure::new(start..end.max(span.end()), What::TooDeep));
+        }
     }
 
     fn scalar(&mut self, span: Span, kind: Option<Encoding>, error: &mut dyn ErrorSink) {
@@ -616,7 +719,13 @@ impl<'i> EventReceiver for Builder<'i> {
             // error, an explicit `inf` is not.
             ScalarKind::Float => match text.parse::<f64>() {
                 Ok(x) if !x.is_infinite() || text.contains("inf") => Node::Num(x, range),
-                _ => return self.fail(),
+                _ => {
+                    self.fail(Failure::toml(
+                        range.clone(),
+                        "floating-point number overflowed",
+                    ));
+                    Node::Num(0.0, range)
+                }
             },
             // As the toml deserializer: i64 if it fits, else u64; either
             // becomes f64 in every field that takes a number.
@@ -627,17 +736,17 @@ impl<'i> EventReceiver for Builder<'i> {
                 } else if let Ok(u) = u64::from_str_radix(&text, r) {
                     Node::Num(u as f64, range)
                 } else {
-                    return self.fail();
+                    Node::Other(Found::Wide, range)
                 }
             }
             ScalarKind::Boolean(b) => Node::Bool(b, range),
-            ScalarKind::DateTime => return self.fail(),
+            ScalarKind::DateTime => Node::Other(Found::DateTime, range),
         };
         self.value(node);
     }
 
-    fn error(&mut self, _span: Span, _error: &mut dyn ErrorSink) {
-        self.fail();
+    fn error(&mut self, span: Span, _error: &mut dyn ErrorSink) {
+        self.confused(span);
     }
 }
 

@@ -56,6 +56,8 @@ pub(super) struct Files {
     /// Each mesh file read once, by its canonical path and mode, however
     /// many parts use it (`model::mesh`).
     pub(super) meshes: HashMap<(PathBuf, crate::mesh::Mode), std::sync::Arc<crate::mesh::MeshBody>>,
+    /// Part files' texts the reader read (`Model::texts_read`).
+    pub(super) reads: u64,
     /// The directory trees includes must stay in (canonical): the
     /// top-level file's, the working directory, and any `--include-root`.
     pub(super) roots: Vec<PathBuf>,
@@ -423,6 +425,7 @@ impl Ctx<'_> {
             files.counts.insert(t.canonical, n);
             return Some((n, t.shown_name));
         }
+        files.reads += 1;
         let raw = Model::raw(&source).ok()?;
         // Kept, not parsed again when it is expanded, if it has parameters.
         let (raw, kept) = match raw.params {
@@ -577,6 +580,7 @@ impl Ctx<'_> {
                         // `params` converts it again, re-evaluating only
                         // the parameters that change.
                         let child = if source.text.contains("params") {
+                            files.reads += 1;
                             Model::raw(&source).and_then(|raw| {
                                 let parsed = Parsed::keep(source, raw);
                                 if parsed.raw.params.is_some() {

@@ -394,10 +394,14 @@ mod tests {
     fn an_own_key_of_the_wrong_length_or_type_is_refused() {
         let e = probe("[1, 2]").expect_err("two");
         assert!(e.contains("`probe_radii`") && e.contains('3'), "{e}");
-        // The wrong type: both readers refuse it (the serde path words it).
+        // The wrong type: the reader refuses it, naming the key.
         let text = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\nprobe_radii = 2\n";
         super::super::fast::tests::declines(text);
-        assert!(toml::from_str::<super::super::raw::RawFile>(text).is_err());
+        let d = super::super::fast::explain(&crate::diag::Source::new("t.toml", text)).to_string();
+        assert!(
+            d.contains("`probe_radii` has the wrong type: integer `2`"),
+            "{d}"
+        );
     }
 
     /// Every key is declared once, among the common keys and every

@@ -32,7 +32,6 @@ mod solids;
 mod span;
 mod streamed;
 pub mod tolerance;
-mod toml_error;
 pub mod walk;
 
 pub use copies::{Copies, push_copy_name};
@@ -49,24 +48,6 @@ use raw::RawFile;
 use std::ops::Range;
 use streamed::Streamed;
 use toml::Spanned;
-
-thread_local! {
-    /// Part files parsed on this thread (`files_parsed_on_this_thread`).
-    static PARSED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
-}
-
-fn count_parse() {
-    PARSED.with(|n| n.set(n.get() + 1));
-}
-
-/// How many part files' texts this thread has parsed (the top-level file,
-/// each include read, each file counted for the part limit): the tests
-/// count the work an include costs with it, not the time. Per thread, so
-/// that tests running side by side do not count each other's.
-#[doc(hidden)]
-pub fn files_parsed_on_this_thread() -> u64 {
-    PARSED.with(std::cell::Cell::get)
-}
 
 /// The most parts a body may have, included ones counted: ~1 KB of memory
 /// each while reading.
@@ -99,6 +80,11 @@ pub struct Model {
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
+    /// How many part files' texts the reader read to make it (the file
+    /// itself, each include parsed, each file parsed to count its parts):
+    /// the tests count the work an include costs with it, not the time.
+    #[doc(hidden)]
+    pub texts_read: u64,
     /// The file's toleranced quantities, in file order (a part's
     /// `Part::tol` points into them).
     pub sources: Vec<tolerance::Toleranced>,
@@ -184,6 +170,7 @@ impl Model {
             materials: Default::default(),
             budget: None,
             included: Vec::new(),
+            texts_read: 0,
             sources: Vec::new(),
             group_depth: 0,
         }
@@ -227,30 +214,19 @@ impl Model {
             .extend((includes.roots.iter()).filter_map(|r| std::fs::canonicalize(r).ok()));
         let passed = params::flags(&includes.set)?;
         let model = Model::parse_in(source, &mut files, &passed);
+        let reads = files.reads;
         let included = files.included();
         read.extend(included.iter().cloned());
         let mut model = model?;
         model.included = included;
+        model.texts_read = reads;
         Ok(model)
     }
 
-    /// The file as TOML, by the one reader (`fast`); serde via the toml
-    /// crate's value tree only to word an error.
+    /// The file as TOML, by the one reader (`fast`), which words its
+    /// error too.
     fn raw(source: &Source) -> Result<RawFile, Diagnostic> {
-        count_parse();
-        match fast::read_file(&source.text) {
-            Some(raw) => Ok(raw),
-            None => Model::serde(source),
-        }
-    }
-
-    /// The file read by serde, through the toml crate's value tree.
-    fn serde(source: &Source) -> Result<RawFile, Diagnostic> {
-        // The classes of error the reader words itself, first.
-        if let Some(d) = fast::errors::syntax(source) {
-            return Err(d);
-        }
-        toml::from_str(&source.text).map_err(|e| toml_error::toml_error(source, &e))
+        fast::read_file(&source.text).ok_or_else(|| fast::explain(source))
     }
 
     /// `parse`, inside the chain of files that include each other (for
@@ -265,7 +241,7 @@ impl Model {
         // came after its parts (a `[units]` table at the end), the whole
         // file read first. So is a file with tolerances: their sources
         // are the file's.
-        count_parse();
+        files.reads += 1;
         let whole = tolerance::may_have(&source.text);
         let mut streamed = if whole {
             Streamed::off()
@@ -284,18 +260,17 @@ impl Model {
         let raw = match fast {
             Some(raw) if whole => Some(raw),
             Some(raw) if streamed.saw_all_of(&raw) => Some(raw),
-            Some(_) => {
+            // Read whole (a file the stream cannot take, or refused: then
+            // read whole to be sure before its error is worded).
+            Some(_) | None if !whole => {
                 streamed = Streamed::off();
                 fast::read_file(&source.text)
             }
-            None => None,
+            Some(_) | None => None,
         };
         let mut raw = match raw {
             Some(raw) => raw,
-            None => {
-                streamed = Streamed::off();
-                Model::serde(source)?
-            }
+            None => return Err(fast::explain(source)),
         };
         let (ctx, mut rec) = Model::context(source, &raw, passed, None)?;
         if !streamed.off {
@@ -507,6 +482,7 @@ impl Model {
             budget,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
+            texts_read: 0,
             sources: rec.sources,
         })
     }

@@ -1,14 +1,11 @@
-//! The part file exactly as written: a serde mirror with every value
-//! `Spanned`, so the conversion step in `model` can point at it.
+//! The part file exactly as written, as the reader (`fast`) reads it:
+//! every value `Spanned`, so the conversion step in `model` can point at
+//! it.
 //!
-//! NOTE: parts are one *flat* struct with `shape` as a string, not a
-//! `#[serde(tag = "shape")]` enum: with toml, internally tagged enums lose
-//! error positions and let unknown keys through. Which keys apply to which
-//! shape is checked in `model`.
+//! NOTE: parts are one *flat* struct with `shape` as a string, not an enum
+//! by shape: the reader takes a part's keys as they come, before it knows
+//! the shape. Which keys apply to which shape is checked in `model`.
 
-use serde::Deserialize;
-use serde::de::{self, Deserializer, Visitor};
-use std::fmt;
 use toml::Spanned;
 
 mod own;
@@ -19,67 +16,7 @@ pub type Vector = Spanned<Vec<Spanned<Quantity>>>;
 /// An array of plain numbers (rotation parameters carry no unit).
 pub type Floats = Spanned<Vec<Spanned<f64>>>;
 
-/// A table and nothing else. serde's derived struct also takes an array of
-/// its fields in order: `rotation = [1]` was read as a quaternion of one
-/// number ("expected an array"), and `foam = [1]` in `[materials]` was
-/// accepted as a density. So each table type derives with
-/// `remote = "Self"` (the derived code as an inherent function) and is
-/// read through this impl: a table goes to the derived code, anything else
-/// is the wrong type, expected as `$expecting` says.
-macro_rules! table_only {
-    ($t:ident, $expecting:literal) => {
-        impl<'de> Deserialize<'de> for $t {
-            fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-                struct V;
-                impl<'de> Visitor<'de> for V {
-                    type Value = $t;
-                    fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                        f.write_str($expecting)
-                    }
-                    fn visit_map<A: de::MapAccess<'de>>(self, map: A) -> Result<$t, A::Error> {
-                        $t::deserialize(de::value::MapAccessDeserializer::new(map))
-                    }
-                }
-                d.deserialize_any(V)
-            }
-        }
-    };
-}
-
-table_only!(RawMaterial, "a table such as { density = \"30 kg/m^3\" }");
-table_only!(
-    RawUnits,
-    "a table such as { length = \"mm\", mass = \"kg\" }"
-);
-table_only!(
-    RawArray,
-    "a table such as { count = 4, step = [1, 0, 0] } or { count = 32, axis = [0, 0, 1], step_degrees = 11.25 }"
-);
-table_only!(
-    RawMirror,
-    "a table such as { normal = [1, 0, 0], origin = [0, 0, 0] }"
-);
-table_only!(
-    RawRotation,
-    "a rotation table such as { axis = [0, 0, 1], degrees = 90 }"
-);
-table_only!(
-    RawAnalysis,
-    "a table with `about`, `omega`, `alpha` or `axes`"
-);
-table_only!(
-    RawAxes,
-    "a table such as { x = [1, 0, 0], y = [0, -1, 0] } or a rotation such as { axis = [0, 0, 1], degrees = 90 }"
-);
-table_only!(RawExpect, "a table of expected quantities");
-table_only!(RawBudget, "a table such as { limit = \"120 kg\" }");
-table_only!(
-    RawExpectation,
-    "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }"
-);
-
-#[derive(Deserialize, Debug)]
-#[serde(deny_unknown_fields, expecting = "a part file")]
+#[derive(Debug)]
 pub struct RawFile {
     pub name: Option<Spanned<String>>,
     pub units: Option<Spanned<RawUnits>>,
@@ -107,8 +44,7 @@ pub type Params = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Qu
 pub type Growth = Spanned<std::collections::BTreeMap<Spanned<String>, Spanned<Quantity>>>;
 
 /// `[budget]`.
-#[derive(Deserialize, Debug)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug)]
 pub struct RawBudget {
     /// The not-to-exceed limit of the predicted mass: a mass.
     pub limit: Spanned<Quantity>,
@@ -117,14 +53,12 @@ pub struct RawBudget {
 /// `[materials]`.
 pub type Materials = Spanned<std::collections::BTreeMap<String, Spanned<RawMaterial>>>;
 
-#[derive(Deserialize, Debug)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug)]
 pub struct RawMaterial {
     pub density: Spanned<Quantity>,
 }
 
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default)]
 pub struct RawUnits {
     pub length: Option<Spanned<String>>,
     pub mass: Option<Spanned<String>>,
@@ -134,8 +68,7 @@ pub struct RawUnits {
 /// `center`) are kept in the struct; every other key is boxed, so that a
 /// part is 368 bytes, not 1,240: a file's parts are all held at once while
 /// it is read, and they were most of the memory of reading a large file.
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default)]
 pub struct RawPart {
     pub name: Option<Spanned<String>>,
     /// The primitive; absent only in a part that `include`s a file.
@@ -212,7 +145,6 @@ pub struct RawPart {
     /// `"2 %"`, `"± 0.1 kg uniform"`.
     pub tol: Option<Box<Spanned<Quantity>>>,
     /// The keys its shape declares itself (`ShapeKind::OWN_KEYS`).
-    #[serde(skip)]
     pub own: Option<Box<Own>>,
 }
 
@@ -220,8 +152,7 @@ pub struct RawPart {
 /// [x, y, z], step_degrees = θ, origin = [x, y, z] }`: N copies of a part,
 /// copy i moved by i·step, or turned by i·θ about the axis through
 /// `origin`.
-#[derive(Deserialize, Debug, Default, Clone)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default, Clone)]
 pub struct RawArray {
     /// How many copies, the part itself the first: a positive integer.
     pub count: Option<Spanned<Quantity>>,
@@ -238,8 +169,7 @@ pub struct RawArray {
 
 /// `mirror = { normal = [x, y, z], origin = [x, y, z] }`: the part and its
 /// mirror image in the plane through `origin` normal to `normal`.
-#[derive(Deserialize, Debug, Default, Clone)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default, Clone)]
 pub struct RawMirror {
     /// The plane's normal (a direction, any non-zero length).
     pub normal: Option<Floats>,
@@ -247,8 +177,7 @@ pub struct RawMirror {
     pub origin: Option<Vector>,
 }
 
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default)]
 pub struct RawRotation {
     pub quaternion: Option<Floats>,
     pub axis: Option<Floats>,
@@ -258,8 +187,7 @@ pub struct RawRotation {
     pub extrinsic: Option<Spanned<String>>,
 }
 
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default)]
 pub struct RawAnalysis {
     pub about: Option<Vector>,
     pub omega: Option<Vector>,
@@ -270,12 +198,8 @@ pub struct RawAnalysis {
 /// `[analysis] axes`: the report axes' x and y directions in the file's
 /// frame, or a rotation of the file's axes in any form a part's `rotation`
 /// takes (the same keys; `model::rotation` reads them).
-///
-/// NOTE: the rotation keys repeat `RawRotation`'s: `#[serde(flatten)]`
-/// cannot be combined with `deny_unknown_fields`, which is what makes a
-/// misspelt key an error here. `rotation()` hands them to the one reader.
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+/// (`rotation()` hands the rotation's keys to the one reader of them.)
+#[derive(Debug, Default)]
 pub struct RawAxes {
     pub x: Option<Floats>,
     pub y: Option<Floats>,
@@ -308,31 +232,6 @@ pub enum Quantity {
     Text(String),
 }
 
-impl<'de> Deserialize<'de> for Quantity {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl Visitor<'_> for V {
-            type Value = Quantity;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a number, or a string with a unit such as \"3 mm\"")
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Quantity, E> {
-                Ok(Quantity::Number(v))
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Quantity, E> {
-                Ok(Quantity::Number(v as f64))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Quantity, E> {
-                Ok(Quantity::Number(v as f64))
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<Quantity, E> {
-                Ok(Quantity::Text(v.to_string()))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
-
 /// `degrees`: one angle (axis–angle) or three (Euler angles).
 #[derive(Debug, Clone, PartialEq)]
 pub enum Angles {
@@ -340,38 +239,8 @@ pub enum Angles {
     Three(Vec<f64>),
 }
 
-impl<'de> Deserialize<'de> for Angles {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = Angles;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("an angle in degrees, or an array of three for Euler angles")
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Angles, E> {
-                Ok(Angles::One(v))
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Angles, E> {
-                Ok(Angles::One(v as f64))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Angles, E> {
-                Ok(Angles::One(v as f64))
-            }
-            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<Angles, A::Error> {
-                let mut out = Vec::new();
-                while let Some(x) = seq.next_element::<f64>()? {
-                    out.push(x);
-                }
-                Ok(Angles::Three(out))
-            }
-        }
-        d.deserialize_any(V)
-    }
-}
-
 /// `[expect]`: the quantities a check compares, each optional.
-#[derive(Deserialize, Debug)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug)]
 pub struct RawExpect {
     pub mass: Option<Spanned<RawExpectation>>,
     pub center_of_mass: Option<Spanned<RawExpectation>>,
@@ -388,17 +257,11 @@ pub struct RawExpect {
     pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
     /// Three unit rows, compared by angle (`tol_degrees`).
     pub principal_axes: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Ixx")]
     pub ixx: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Iyy")]
     pub iyy: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Izz")]
     pub izz: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Ixy")]
     pub ixy: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Ixz")]
     pub ixz: Option<Spanned<RawExpectation>>,
-    #[serde(rename = "Iyz")]
     pub iyz: Option<Spanned<RawExpectation>>,
 }
 
@@ -446,8 +309,7 @@ impl RawExpect {
 /// One expectation: `value` with `tol`, or `min` and/or `max`; or, for a
 /// vector or matrix, expectations on its components (`center_of_mass.z`,
 /// `inertia_com.xy`, `principal_moments.1`).
-#[derive(Deserialize, Debug, Default)]
-#[serde(remote = "Self", deny_unknown_fields)]
+#[derive(Debug, Default)]
 pub struct RawExpectation {
     pub value: Option<Spanned<ExpectValue>>,
     pub tol: Option<Spanned<Quantity>>,
@@ -464,11 +326,8 @@ pub struct RawExpectation {
     pub xy: Option<Box<Spanned<RawExpectation>>>,
     pub xz: Option<Box<Spanned<RawExpectation>>>,
     pub yz: Option<Box<Spanned<RawExpectation>>>,
-    #[serde(rename = "1")]
     pub c1: Option<Box<Spanned<RawExpectation>>>,
-    #[serde(rename = "2")]
     pub c2: Option<Box<Spanned<RawExpectation>>>,
-    #[serde(rename = "3")]
     pub c3: Option<Box<Spanned<RawExpectation>>>,
 }
 
@@ -477,36 +336,4 @@ pub struct RawExpectation {
 pub enum ExpectValue {
     One(Quantity),
     Many(Vec<ExpectValue>),
-}
-
-impl<'de> Deserialize<'de> for ExpectValue {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        struct V;
-        impl<'de> Visitor<'de> for V {
-            type Value = ExpectValue;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a number, a string with a unit, or an array of them")
-            }
-            fn visit_f64<E: de::Error>(self, v: f64) -> Result<ExpectValue, E> {
-                Ok(ExpectValue::One(Quantity::Number(v)))
-            }
-            fn visit_i64<E: de::Error>(self, v: i64) -> Result<ExpectValue, E> {
-                Ok(ExpectValue::One(Quantity::Number(v as f64)))
-            }
-            fn visit_u64<E: de::Error>(self, v: u64) -> Result<ExpectValue, E> {
-                Ok(ExpectValue::One(Quantity::Number(v as f64)))
-            }
-            fn visit_str<E: de::Error>(self, v: &str) -> Result<ExpectValue, E> {
-                Ok(ExpectValue::One(Quantity::Text(v.to_string())))
-            }
-            fn visit_seq<A: de::SeqAccess<'de>>(self, mut seq: A) -> Result<ExpectValue, A::Error> {
-                let mut out = Vec::new();
-                while let Some(x) = seq.next_element::<ExpectValue>()? {
-                    out.push(x);
-                }
-                Ok(ExpectValue::Many(out))
-            }
-        }
-        d.deserialize_any(V)
-    }
 }

@@ -339,13 +339,12 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
         };
         pairs.push(format!("{key} = {toml}"));
     }
-    #[derive(serde::Deserialize)]
-    struct Flag {
-        axes: Spanned<RawAxes>,
-    }
-    let text = format!("axes = {{ {} }}\n", pairs.join(", "));
-    let flag: Flag = toml::from_str(&text).map_err(|e| e.message().to_string())?;
+    // Read as `[analysis] axes` is, by the one reader.
+    let text = format!("analysis.axes = {{ {} }}\n", pairs.join(", "));
     let source = crate::diag::Source::new("--axes", text);
+    let axes = super::fast::read_file(&source.text)
+        .and_then(|raw| raw.analysis?.into_inner().axes)
+        .ok_or_else(|| super::fast::explain(&source).message().to_string())?;
     let ctx = Ctx {
         source: &source,
         units: crate::units::FileUnits::default(),
@@ -353,7 +352,7 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
         params: Default::default(),
         growth: Default::default(),
     };
-    ctx.axes(&flag.axes).map_err(|d| match d.help_text() {
+    ctx.axes(&axes).map_err(|d| match d.help_text() {
         Some(help) => format!("{} ({help})", d.message()),
         None => d.message().to_string(),
     })

@@ -142,6 +142,10 @@ impl Streamed {
         if self.off || raw.params.is_some() || raw.growth.is_some() || raw.budget.is_some() {
             return false;
         }
+        // `part = [..]`: parts not handed out (none came by the stream).
+        if self.units_seen.is_none() && raw.part.is_some() {
+            return false;
+        }
         let materials = raw.materials.as_ref().map_or(0, |m| m.get_ref().len());
         self.units_seen
             .is_none_or(|seen| seen == raw.units.is_some() && materials == self.materials_seen)

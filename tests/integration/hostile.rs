@@ -2,9 +2,10 @@
 //! process through `report` (JSON in both precision modes, and the table)
 //! and `check`. Whatever the file, massprop must not panic or hang, and
 //! must either print finite results (status 0) or give a diagnostic
-//! (status 2) that names the file. And wherever the fast path
-//! (`model::fast::parse`) reads a file, serde (`toml::from_str::<RawFile>`)
-//! must read it too, to the same values and spans.
+//! (status 2) that names the file. And wherever the reader
+//! (`model::fast::parse`) reads a file, the reference parser reads it too,
+//! every value at its place (`fast::reference::agrees`); wherever it
+//! refuses one, the error has a place.
 //!
 //! - generated files: every shape, with keys and values drawn from lists
 //!   rich in extremes (0, -0.0, subnormals, 1e308, f64::MAX, nan, inf,
@@ -21,7 +22,7 @@
 
 use clap::Parser;
 use massprop::cli::Cli;
-use massprop::model::{fast, raw::RawFile};
+use massprop::model::fast;
 use massprop::{Output, diag::Diagnostic};
 use proptest::prelude::*;
 use proptest::sample::Index;
@@ -951,29 +952,19 @@ fn generated_part_files_give_finite_results_or_diagnostics() {
 /// Files written for the fast path.
 const FAST: u32 = 400;
 
-/// Where `fast::read_file` takes `text` (returns `Some`), `toml::from_str::<RawFile>`
-/// must accept it too and give the same result, values and spans alike,
-/// as fast.rs promises. Compared through `Debug`, as fast.rs's own tests
-/// do: `RawFile` is not `PartialEq`. Ok(true) if the fast path took it.
-///
-/// NOTE: `Debug` prints every NaN as `NaN`, so a NaN's sign is not
-/// compared; both sides get it from `str::parse::<f64>` of the same
-/// decoded text.
+/// Where `fast::read_file` takes `text` (returns `Some`), it reads it as
+/// the reference parser does (`fast::reference::agrees`: the reference
+/// accepts it, and every value is read at its place), and so in chunks;
+/// where it refuses the file, reading it gives an error with a place.
+/// Ok(true) if the reader took it.
 fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
     let Ok(text) = std::str::from_utf8(text) else {
         return Ok(false);
     };
-    let Some(fast) = fast::read_file(text) else {
-        // The one reader reads every valid part file: what it declines,
-        // serde rejects too.
-        return match toml::from_str::<RawFile>(text) {
-            Ok(_) => Err(format!("the reader declines a file serde accepts:\n{text}")),
-            Err(_) => located_where_the_reference_rejects(text).map(|()| false),
-        };
-    };
-    let serde = toml::from_str::<RawFile>(text)
-        .map_err(|e| format!("the fast path reads a file that serde rejects: {e}"))?;
-    let (fast, serde) = (format!("{fast:#?}"), format!("{serde:#?}"));
+    if fast::read_file(text).is_none() {
+        return refused_with_a_place(text).map(|()| false);
+    }
+    fast::reference::agrees(text)?;
     // Read in small chunks (every table its own, or a split inside a
     // value): the same, or declined.
     let whole = format!("{:#?}", fast::parse(text));
@@ -986,35 +977,16 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
             ));
         }
     }
-    if fast == serde {
-        return Ok(true);
-    }
-    let at = fast
-        .lines()
-        .zip(serde.lines())
-        .position(|(a, b)| a != b)
-        .unwrap_or_else(|| fast.lines().count().min(serde.lines().count()));
-    let around = |t: &str| {
-        let lines: Vec<&str> = t.lines().skip(at.saturating_sub(10)).take(14).collect();
-        lines.join("\n")
-    };
-    Err(format!(
-        "the fast path and serde differ at line {at} of their Debug:\n\
-         --- fast ---\n{}\n--- serde ---\n{}",
-        around(&fast),
-        around(&serde)
-    ))
+    Ok(true)
 }
 
-/// Where the reference parser (`toml::from_str::<toml::Table>`) rejects
-/// `text`, reading it gives an error with a place.
-fn located_where_the_reference_rejects(text: &str) -> Result<(), String> {
-    if toml::from_str::<toml::Table>(text).is_ok() {
-        return Ok(());
-    }
+/// Reading `text`, which the reader refuses, gives an error with a place
+/// (and so wherever the reference parser, `toml::from_str::<toml::Table>`,
+/// rejects it).
+fn refused_with_a_place(text: &str) -> Result<(), String> {
     let source = massprop::diag::Source::new("h.toml", text);
     match massprop::model::Model::parse(&source) {
-        Ok(_) => Err(format!("read a file the reference parser rejects:\n{text}")),
+        Ok(_) => Err(format!("read a file the reader refuses:\n{text}")),
         Err(d) if d.place().and_then(|p| p.span).is_some() => Ok(()),
         Err(d) => Err(format!("an error without a place: {d}\n{text}")),
     }

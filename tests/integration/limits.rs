@@ -2,12 +2,12 @@
 //! with `params` parsed once however many sets of values it is given, the
 //! part limit counting every part however its parts are multiplied, and
 //! "did you mean" bounded for names of any length. Work is counted, not
-//! timed (`massprop::model::files_parsed_on_this_thread`); the only clocks
+//! timed (`Model::texts_read`); the only clocks
 //! are hang guards of a minute.
 
 use crate::common::scratch_files;
 use massprop::diag::Source;
-use massprop::model::{MAX_PARTS, Model, files_parsed_on_this_thread};
+use massprop::model::{MAX_PARTS, Model};
 use std::path::Path;
 
 /// The file at `path` parsed, as `report` reads it; its error as shown.
@@ -17,11 +17,11 @@ fn parse(path: &Path) -> Result<Model, String> {
     Model::parse(&Source::new(name, text)).map_err(|d| d.to_string())
 }
 
-/// How many part files `path`'s parse read, and its result.
+/// How many part files `path`'s parse read (0 if it failed), and its
+/// result.
 fn parses(path: &Path) -> (u64, Result<Model, String>) {
-    let before = files_parsed_on_this_thread();
     let model = parse(path);
-    (files_parsed_on_this_thread() - before, model)
+    (model.as_ref().map_or(0, |m| m.texts_read), model)
 }
 
 /// `f` on a thread of its own, failing after five minutes: a hang guard,

@@ -627,7 +627,7 @@ proptest! {
 /// read); an empty `[params]` has it read whole first: both give the same
 /// body, to the bit.
 #[test]
-fn expressions_read_alike_on_the_fast_path_and_through_serde() {
+fn expressions_read_alike_streamed_and_read_whole() {
     let parts = "units = { length = \"mm\" }\n[[part]]\nshape = \"box\"\nmass = \"1 kg / 3 * 2\"\n\
         size = [\"0.1 m + 0.2 m\", \"pi * 2 mm\", \"sqrt(2) * 1 mm\"]\ncenter = [\"1 in / 7\", 0, \"-(3 mm)^2 / 1 m\"]\n";
     let fast = parts.to_string();
@@ -635,13 +635,13 @@ fn expressions_read_alike_on_the_fast_path_and_through_serde() {
         massprop::model::fast::read_file(&fast).is_some(),
         "the fast path reads it"
     );
-    let serde = format!("{parts}[params]\n");
+    let whole = format!("{parts}[params]\n");
     assert!(
-        massprop::model::fast::read_file(&serde).is_some_and(|raw| raw.params.is_some()),
+        massprop::model::fast::read_file(&whole).is_some_and(|raw| raw.params.is_some()),
         "the reader reads `[params]`"
     );
     let (mut a, _) = report_json(&fast, &[]);
-    let (mut b, _) = report_json(&serde, &[]);
+    let (mut b, _) = report_json(&whole, &[]);
     a["source"].take();
     b["source"].take();
     assert_eq!(a, b);

@@ -1,65 +1,213 @@
 //! The reader's own words for a file it cannot read, class by class:
-//! syntax errors, in the parser's (`toml_parser`'s `ParseError`: its
-//! description, what it expected, its span), given the key on their line
-//! and, where one fits, a help. (Classes not worded here yet are still
-//! worded from serde's error by `model::toml_error`.) The small helpers
-//! that find a key or a header in the text serve both.
+//! syntax and decoding errors, in the parser's (`toml_parser`'s
+//! `ParseError`: its description, what it expected, its span), given the
+//! key on their line and, where one fits, a help; and every refusal the
+//! reader met itself (`failure::Failure`): TOML's rules, unknown keys with
+//! a "did you mean", values of the wrong type with what the key holds in
+//! our words, missing keys.
 
-use crate::diag::{Diagnostic, Source};
+use super::failure::{Failure, Found, Valid, What};
+use crate::diag::{Diagnostic, Source, shorten};
+use crate::shapes::Shape;
+use crate::units;
 use std::ops::Range;
-use toml_parser::parser::{RecursionGuard, ValidateWhitespace};
-use toml_parser::{ErrorSink, Expected, ParseError};
+use toml_parser::{Expected, ParseError};
 
-/// The toml crate's own nesting limit, as the reader's (`RECURSION_LIMIT`).
-const LIMIT: u32 = super::RECURSION_LIMIT;
-
-/// The first syntax error of `source` (as the TOML parser reports it over
-/// the whole file), in massprop's words; `None` where its syntax is valid.
-/// Only on the error path: the file is lexed whole.
-pub(in crate::model) fn syntax(source: &Source) -> Option<Diagnostic> {
+/// A syntax or decoding error the parser reported, in massprop's words.
+pub(in crate::model) fn parse_error(source: &Source, error: &ParseError) -> Diagnostic {
     let text = &source.text;
-    let toml = toml_parser::Source::new(text);
-    let tokens = toml.lex().into_vec();
-    let mut nothing = ();
-    let mut ws = ValidateWhitespace::new(&mut nothing, toml);
-    let mut guarded = RecursionGuard::new(&mut ws, LIMIT);
-    let mut first = First(None);
-    toml_parser::parser::parse_document(&tokens, &mut guarded, &mut first);
-    let error = first.0?;
     // A `[[analysis]]` header is the error wherever the file fails.
     if let Some(d) = array_of_tables(source) {
-        return Some(d);
+        return d;
     }
     let span = error.unexpected().map_or(0..0, |s| s.start()..s.end());
     // Some spans fall inside a multi-byte character (after a BOM, a
     // combining mark): snap to boundaries.
     let floor = |i| crate::diag::floor_char_boundary(text, i);
     let span = floor(span.start)..floor(span.end).max(floor(span.start));
-    let msg = describe(&error).trim_end().replace(
+    let msg = describe(error).trim_end().replace(
         "cannot recurse further; max recursion depth met",
         "arrays and inline tables nested more than 80 deep, the most the TOML reader takes",
     );
-    let key = key_before(text, span.start);
+    let at = span.start;
+    let key = key_before(text, at);
     let d = match &key {
         Some(k) => source.error(span, format!("`{k}`: {msg}")),
-        None => source.error(span, msg),
+        None => source.error(span, msg.clone()),
     };
-    Some(match key.as_deref() {
+    match key.as_deref() {
         Some("part") => d.help("write each part as a `[[part]]` table (two brackets)"),
         Some("rotation") => d.help(ROTATION_FORMS),
+        Some(k) if msg.contains("string values must be quoted") => match quoted_value(text, at) {
+            Some(v) => d.help(format!(
+                "a number with a unit is written as a string: `{k} = {v}`"
+            )),
+            None => d,
+        },
         _ => d,
-    })
+    }
 }
 
-/// Keeps the first error the parser reports.
-struct First(Option<ParseError>);
-
-impl ErrorSink for First {
-    fn report_error(&mut self, error: ParseError) {
-        if self.0.is_none() {
-            self.0 = Some(error);
+/// A refusal the reader met (`failure`), in massprop's words.
+pub(in crate::model) fn word(source: &Source, f: Failure) -> Diagnostic {
+    let text = &source.text;
+    let floor = |i| crate::diag::floor_char_boundary(text, i);
+    let span = floor(f.span.start)..floor(f.span.end).max(floor(f.span.start));
+    match f.what {
+        What::Toml(msg) => {
+            // A number TOML refuses: said of its key.
+            if let ("floating-point number overflowed", Some(k)) =
+                (&*msg, key_before(text, span.start))
+            {
+                return source.error(span, format!("`{k}`: {msg}"));
+            }
+            let d = source.error(span.clone(), msg.to_string());
+            // TOML names the key twice given: say which.
+            if msg == "duplicate key" {
+                let key = text.get(span.clone()).unwrap_or("").trim();
+                return source.error(span, format!("duplicate key `{}`", shorten(key)));
+            }
+            d
         }
+        What::PartTable => source
+            .error(
+                span,
+                "`[part]` is one table, but parts are an array of tables",
+            )
+            .help("write each part as a `[[part]]` table (two brackets)"),
+        What::Unknown { key, valid } => {
+            let part_keys: Vec<&str>;
+            let valid: &[&str] = match valid {
+                Valid::Keys(keys) => keys,
+                // In a part whose shape is known, the keys of that shape
+                // (its description in `SHAPES`); else every part key.
+                Valid::Part(Some(shape)) => {
+                    part_keys = ["name", "shape"]
+                        .into_iter()
+                        .chain(shape.info().keys.iter().copied())
+                        .collect();
+                    &part_keys
+                }
+                Valid::Part(None) => {
+                    part_keys = super::super::keys::names().collect();
+                    &part_keys
+                }
+            };
+            let d = source.error(span, format!("unknown key `{}`", shorten(&key)));
+            match units::suggest(&key, valid.iter().copied()) {
+                Some(s) => d.label(format!("did you mean `{s}`?")),
+                None => d.help(format!(
+                    "valid keys here: {}",
+                    valid
+                        .iter()
+                        .map(|k| format!("`{k}`"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )),
+            }
+        }
+        What::Type {
+            key,
+            depth,
+            found,
+            expecting,
+            shape,
+        } => {
+            let found_words = found_words(&found, text.get(span.clone()).unwrap_or(""));
+            let Some(k) = key else {
+                return source.error(
+                    span,
+                    format!("invalid type: {found_words}, expected {expecting}"),
+                );
+            };
+            let ours = expected(&k, depth, shape);
+            let d = source.error(
+                span,
+                format!(
+                    "`{k}` {}: {found_words}, expected {}",
+                    wrong_type(depth),
+                    ours.as_deref().unwrap_or(expecting)
+                ),
+            );
+            if k == "part" {
+                return d.help("write each part as a `[[part]]` table (two brackets)");
+            }
+            if k == "rotation" && depth == 0 {
+                return d.help(ROTATION_FORMS);
+            }
+            if matches!(found, Found::Wide) {
+                return d.help("a TOML integer is 64-bit (up to 9223372036854775807): write a larger number as a float, e.g. `1e20`");
+            }
+            d
+        }
+        What::Missing(key) => {
+            let d = source.error(span, format!("missing key `{key}`"));
+            if key == "shape" {
+                d.help(format!(
+                    "every part needs `shape`, one of {}",
+                    Shape::quoted_names()
+                ))
+            } else {
+                d
+            }
+        }
+        What::TooDeep => source
+            .error(span, "this key nests tables too deeply")
+            .help("a part file needs a few levels at most; is the key or header mistyped?"),
+        What::Other(msg) => source.error(span, msg),
     }
+}
+
+/// What a value of the wrong type is, as written (`literal`).
+fn found_words(found: &Found, literal: &str) -> String {
+    match found {
+        Found::Str(s) => format!("string {s:?}"),
+        Found::Bool(b) => format!("boolean `{b}`"),
+        Found::Number if super::values::is_integer(literal) => format!("integer `{literal}`"),
+        Found::Number => format!("floating point `{literal}`"),
+        Found::Wide => format!("integer `{literal}`"),
+        Found::DateTime => "date-time".into(),
+        Found::Array => "array".into(),
+        Found::Table => "table".into(),
+    }
+}
+
+/// "has the wrong type", said of a key's value (`depth` 0) or of an element
+/// inside it.
+fn wrong_type(depth: usize) -> &'static str {
+    if depth == 0 {
+        "has the wrong type"
+    } else {
+        "has an element of the wrong type"
+    }
+}
+
+/// What the value of `key` is, in massprop's words, `depth` arrays inside
+/// it, where the reader's own would be only "an array" or "a number": the
+/// keys whose values are arrays. `shape` the part's, for the length of
+/// `size`.
+fn expected(key: &str, depth: usize, shape: Option<Shape>) -> Option<String> {
+    const QUANTITIES: &str = "numbers or strings with units";
+    // A part's key: from its declaration (`keys`), a `size` as long as
+    // its part's shape says.
+    if let Some(k) = super::super::keys::declared(key) {
+        let n = shape
+            .map(|s| s.info().size_items)
+            .filter(|n| *n > 0 && key == "size");
+        return super::super::keys::expected(k, depth, n);
+    }
+    Some(match (key, depth) {
+        ("part", 0) => "an array of tables, each a `[[part]]`".into(),
+        ("materials", 0) => {
+            "a table of materials such as { foam = { density = \"30 kg/m^3\" } }".into()
+        }
+        ("about" | "omega" | "alpha", 0) => format!("an array of 3 {QUANTITIES}"),
+        ("axis", 0) => "an array of 3 numbers, such as [0, 0, 1]".into(),
+        ("quaternion", 0) => "an array of 4 numbers [w, x, y, z]".into(),
+        ("matrix", 0) => "3 rows, each an array of 3 numbers".into(),
+        ("matrix", 1) => "a row, an array of 3 numbers".into(),
+        _ => return None,
+    })
 }
 
 /// A parse error as one line: its description, then what was expected.
@@ -194,9 +342,7 @@ mod tests {
 
     /// The reader's words for `text`, as the user sees them.
     fn ours(text: &str) -> String {
-        syntax(&Source::new("t.toml", text))
-            .expect("a syntax error")
-            .to_string()
+        super::super::explain(&Source::new("t.toml", text)).to_string()
     }
 
     /// Where the reference parser puts its first error.
@@ -206,12 +352,156 @@ mod tests {
     }
 
     #[test]
-    fn valid_toml_has_no_syntax_error_even_if_no_part_file() {
-        let text = "[[analysis]]\nmass = 1 kg\n[[part]]\nshape = 3\n";
-        assert!(syntax(&Source::new("t.toml", "[[part]]\nshape = 3\n")).is_none());
-        assert!(toml::from_str::<toml::Table>(text).is_err());
-        // (An unquoted quantity is a decoding error, not a syntax error.)
-        assert!(syntax(&Source::new("t.toml", "mass = 1 kg\n")).is_none());
+    fn a_decoding_error_is_worded_before_an_earlier_wrong_type() {
+        // The wrong type is a refusal of the form, found as the part ends;
+        // the unquoted quantity TOML's own, reported first.
+        let text = "[[part]]\nshape = 3\nmass = 1 kg\n";
+        let d = ours(text);
+        assert!(d.contains("t.toml:3:8"), "{d}");
+        assert!(d.contains("string values must be quoted"), "{d}");
+        assert!(d.contains("`mass = \"1 kg\"`"), "{d}");
+    }
+
+    #[test]
+    fn a_key_given_twice_is_worded_before_an_earlier_unknown_key() {
+        let text = "[[part]]\nshape = \"sphere\"\nmasss = 1\n[[part]]\nshape = \"sphere\"\nmass = 1\nmass = 2\n";
+        let d = ours(text);
+        assert!(d.contains("t.toml:7:1: error: duplicate key `mass`"), "{d}");
+    }
+
+    #[test]
+    fn of_two_refusals_of_the_form_the_first_in_the_file_is_worded() {
+        // `[analysis]` is converted after the parts, but comes first.
+        let text = "[analysis]\nx = 1\n[[part]]\nshape = \"sphere\"\nmasss = 1\n";
+        let d = ours(text);
+        assert!(d.contains("t.toml:2:1: error: unknown key `x`"), "{d}");
+        assert!(d.contains("`about`, `omega`, `alpha`, `axes`"), "{d}");
+    }
+
+    #[test]
+    fn a_single_part_table_says_to_write_two_brackets() {
+        for text in [
+            "[part]\nshape = \"sphere\"\n",
+            "[[part]]\nshape = \"sphere\"\n[part]\nshape = \"box\"\n",
+        ] {
+            let d = ours(text);
+            assert!(d.contains("`[part]` is one table"), "{d}");
+            assert!(d.contains("two brackets"), "{d}");
+        }
+    }
+
+    #[test]
+    fn a_value_of_the_wrong_type_names_its_key_depth_and_what_the_key_holds() {
+        let d = ours("[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 2, true]\n");
+        assert!(
+            d.contains("`size` has an element of the wrong type: boolean `true`"),
+            "{d}"
+        );
+        let d = ours("[[part]]\nshape = \"box\"\nmass = 1\nsize = 3\n");
+        assert!(
+            d.contains("`size` has the wrong type: integer `3`, expected an array of 3"),
+            "{d}"
+        );
+        let d = ours("[[part]]\nshape = \"box\"\nmass = 1.50\nrotation = [1]\n");
+        assert!(d.contains("`rotation` has the wrong type: array"), "{d}");
+        assert!(d.contains("quaternion = [w, x, y, z]"), "{d}");
+        let d = ours("[[part]]\nshape = \"box\"\nmass = 1979-05-27\n");
+        assert!(d.contains("`mass` has the wrong type: date-time"), "{d}");
+        let d = ours("[[part]]\nshape = \"box\"\nmass = 99999999999999999999\n");
+        assert!(d.contains("integer `99999999999999999999`"), "{d}");
+        assert!(d.contains("a TOML integer is 64-bit"), "{d}");
+    }
+
+    #[test]
+    fn a_missing_key_of_a_table_is_named_at_the_table() {
+        let d = ours("[materials]\nfoo = { }\n[[part]]\nshape = \"sphere\"\n");
+        assert!(
+            d.contains("t.toml:2:7: error: missing key `density`"),
+            "{d}"
+        );
+        let d = ours("[budget]\n[[part]]\nshape = \"sphere\"\n");
+        assert!(d.contains("missing key `limit`"), "{d}");
+    }
+
+    #[test]
+    fn a_dotted_key_through_a_value_is_refused_in_tomls_words() {
+        let d = ours("[[part]]\nshape = \"sphere\"\nmass = 1\nmass.x = 1\n");
+        assert!(
+            d.contains("t.toml:4:1: error: cannot extend value of type integer with a dotted key"),
+            "{d}"
+        );
+        let d = ours("a = { b = 1 }\na.c = 2\n");
+        assert!(d.contains("inline table"), "{d}");
+    }
+
+    /// Suggestions for a misspelt key come from the part's own shape: a
+    /// box's `raduis` is not "did you mean `radius`" (a key boxes refuse).
+    #[test]
+    fn a_misspelt_key_is_matched_against_the_keys_of_the_parts_shape() {
+        let d = ours(
+            "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\nraduis = 1\n",
+        );
+        assert!(d.contains("unknown key `raduis`"), "{d}");
+        assert!(!d.contains("did you mean `radius`"), "{d}");
+        assert!(
+            d.contains("valid keys here: `name`, `shape`, `density`"),
+            "{d}"
+        );
+        let d = ours("[[part]]\nshape = \"sphere\"\nmass = 1\ncenter = [0, 0, 0]\nraduis = 1\n");
+        assert!(d.contains("did you mean `radius`?"), "{d}");
+    }
+
+    #[test]
+    fn the_key_before_an_error_is_found_on_its_line_but_not_in_a_comment() {
+        let text = "x = 1\nlength = 3 mm\n";
+        assert_eq!(
+            key_before(text, text.find("3 mm").unwrap()).as_deref(),
+            Some("length")
+        );
+        // A multi-byte character before the key (a BOM left in, say).
+        let text = "\u{2014}mass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find('1').unwrap()).as_deref(),
+            Some("mass")
+        );
+        let text = "shape = \"box\" # a = b \u{7f}";
+        assert_eq!(key_before(text, text.find('\u{7f}').unwrap()), None);
+        // `#` inside a string is not a comment.
+        let text = "name = \"#1\"\nmass = 1 kg";
+        assert_eq!(
+            key_before(text, text.find("1 kg").unwrap()).as_deref(),
+            Some("mass")
+        );
+    }
+
+    #[test]
+    fn comments_start_at_the_first_hash_outside_strings() {
+        assert_eq!(comment_start("a = 1 # x"), Some(6));
+        assert_eq!(comment_start("a = \"#\" # x"), Some(8));
+        assert_eq!(comment_start("a = '#\\' # x"), Some(9));
+        assert_eq!(comment_start("a = \"\\\"#\" # x"), Some(10));
+        assert_eq!(comment_start("a = 1"), None);
+    }
+
+    #[test]
+    fn a_bare_quantity_is_suggested_quoted() {
+        assert_eq!(
+            quoted_value("mass = 1 kg # m", 7).as_deref(),
+            Some("\"1 kg\"")
+        );
+        assert_eq!(quoted_value("mass = [1 kg]", 7), None);
+        assert_eq!(quoted_value("mass = kg", 7), None);
+    }
+
+    #[test]
+    fn the_expect_keys_are_the_expected_quantities_and_their_aliases() {
+        let mut want: Vec<&str> = crate::quantity::QUANTITIES
+            .iter()
+            .filter(|q| q.expected)
+            .map(|q| q.key)
+            .collect();
+        want.extend(crate::quantity::ALIASES.iter().map(|a| a.0));
+        assert_eq!(super::super::tables::EXPECT_KEYS, want.as_slice());
     }
 
     #[test]
@@ -224,7 +514,7 @@ mod tests {
             "a = [1,,2]\n",
         ] {
             let source = Source::new("t.toml", text);
-            let d = syntax(&source).expect("a syntax error");
+            let d = super::super::explain(&source);
             let want = source.span(reference_span(text));
             assert_eq!(d.place().and_then(|p| p.span), Some(want), "{text:?}");
         }

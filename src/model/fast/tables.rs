@@ -7,48 +7,68 @@ use super::super::raw::{
     ExpectValue, Growth, Materials, Params, RawAnalysis, RawAxes, RawBudget, RawExpect,
     RawExpectation, RawMaterial, RawRotation, RawUnits,
 };
+use super::failure::{Failure, Read, What};
 use super::values::{
-    Entry, FromNode, Node, quantity, rotation_key, set, string, table, units_key, vector,
+    Entry, FromNode, Node, keyed, quantity, rotation_key, set, string, table, units_key, unknown,
+    vector,
 };
 use toml::Spanned;
 
 /// `units = { .. }` or `[units]`.
-pub(super) fn units(node: Node<'_>) -> Option<Spanned<RawUnits>> {
-    let (entries, span) = table(node)?;
+pub(super) fn units(node: Node<'_>) -> Read<Spanned<RawUnits>> {
+    let (entries, span) = table(node, "a table such as { length = \"mm\", mass = \"kg\" }")?;
     let mut u = RawUnits::default();
-    for (k, _, v) in entries {
-        units_key(&mut u, &k, v)?;
+    for (k, ks, v) in entries {
+        units_key(&mut u, &k, &ks, v)?;
     }
-    Some(Spanned::new(span, u))
+    Ok(Spanned::new(span, u))
 }
 
 /// `[analysis]`.
-pub(super) fn analysis(node: Node<'_>) -> Option<Spanned<RawAnalysis>> {
-    let (entries, span) = table(node)?;
+pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
+    const KEYS: &[&str] = &["about", "omega", "alpha", "axes"];
+    let (entries, span) = table(node, "a table with `about`, `omega`, `alpha` or `axes`")?;
     let mut a = RawAnalysis::default();
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         match &*k {
-            "about" => set(&mut a.about, vector(v)?),
-            "omega" => set(&mut a.omega, vector(v)?),
-            "alpha" => set(&mut a.alpha, vector(v)?),
-            "axes" => set(&mut a.axes, axes(v)?),
-            _ => None,
+            "about" => set(&mut a.about, keyed(&k, vector(v))?, &ks),
+            "omega" => set(&mut a.omega, keyed(&k, vector(v))?, &ks),
+            "alpha" => set(&mut a.alpha, keyed(&k, vector(v))?, &ks),
+            "axes" => set(&mut a.axes, keyed(&k, axes(v))?, &ks),
+            _ => unknown(&k, &ks, KEYS),
         }?;
     }
-    Some(Spanned::new(span, a))
+    Ok(Spanned::new(span, a))
 }
 
 /// `[analysis] axes`: `x` and `y`, or a rotation's keys.
-fn axes(node: Node<'_>) -> Option<Spanned<RawAxes>> {
-    let (entries, span) = table(node)?;
+fn axes(node: Node<'_>) -> Read<Spanned<RawAxes>> {
+    const KEYS: &[&str] = &[
+        "x",
+        "y",
+        "quaternion",
+        "axis",
+        "degrees",
+        "matrix",
+        "intrinsic",
+        "extrinsic",
+    ];
+    let (entries, span) = table(
+        node,
+        "a table such as { x = [1, 0, 0], y = [0, -1, 0] } or a rotation such as { axis = [0, 0, 1], degrees = 90 }",
+    )?;
     let mut a = RawAxes::default();
     let mut r = RawRotation::default();
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         match &*k {
-            "x" => set(&mut a.x, super::values::floats(v)?),
-            "y" => set(&mut a.y, super::values::floats(v)?),
-            _ => rotation_key(&mut r, &k, v),
-        }?;
+            "x" => set(&mut a.x, keyed(&k, super::values::floats(v))?, &ks)?,
+            "y" => set(&mut a.y, keyed(&k, super::values::floats(v))?, &ks)?,
+            _ => {
+                if !rotation_key(&mut r, &k, &ks, v)? {
+                    return unknown(&k, &ks, KEYS);
+                }
+            }
+        }
     }
     let RawRotation {
         quaternion,
@@ -64,57 +84,87 @@ fn axes(node: Node<'_>) -> Option<Spanned<RawAxes>> {
     a.matrix = matrix;
     a.intrinsic = intrinsic;
     a.extrinsic = extrinsic;
-    Some(Spanned::new(span, a))
+    Ok(Spanned::new(span, a))
 }
 
 /// `[params]`.
-pub(super) fn params(node: Node<'_>) -> Option<Params> {
+pub(super) fn params(node: Node<'_>) -> Read<Params> {
     Params::from_node(node)
 }
 
 /// `[growth]`: the same form as `[params]`.
-pub(super) fn growth(node: Node<'_>) -> Option<Growth> {
+pub(super) fn growth(node: Node<'_>) -> Read<Growth> {
     Params::from_node(node)
 }
 
 /// `[budget]`: `limit`, required.
-pub(super) fn budget(node: Node<'_>) -> Option<Spanned<RawBudget>> {
-    let (entries, span) = table(node)?;
+pub(super) fn budget(node: Node<'_>) -> Read<Spanned<RawBudget>> {
+    let (entries, span) = table(node, "a table such as { limit = \"120 kg\" }")?;
     let mut limit = None;
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         match &*k {
-            "limit" => set(&mut limit, quantity(v)?),
-            _ => None,
+            "limit" => set(&mut limit, keyed(&k, quantity(v))?, &ks),
+            _ => unknown(&k, &ks, &["limit"]),
         }?;
     }
-    Some(Spanned::new(span, RawBudget { limit: limit? }))
+    let limit = limit.ok_or_else(|| Failure::new(span.clone(), What::Missing("limit")))?;
+    Ok(Spanned::new(span, RawBudget { limit }))
 }
 
 /// `[materials]`: name → `{ density }`, required.
-pub(super) fn materials(node: Node<'_>) -> Option<Materials> {
-    let (entries, span) = table(node)?;
+pub(super) fn materials(node: Node<'_>) -> Read<Materials> {
+    let (entries, span) = table(
+        node,
+        "a table of materials such as { foam = { density = \"30 kg/m^3\" } }",
+    )?;
     let map = entries
         .into_iter()
-        .map(|(k, _, v)| Some((k.into_owned(), material(v)?)))
-        .collect::<Option<_>>()?;
-    Some(Spanned::new(span, map))
+        .map(|(k, _, v)| Ok((k.to_string(), keyed(&k, material(v))?)))
+        .collect::<Read<_>>()?;
+    Ok(Spanned::new(span, map))
 }
 
-fn material(node: Node<'_>) -> Option<Spanned<RawMaterial>> {
-    let (entries, span) = table(node)?;
+fn material(node: Node<'_>) -> Read<Spanned<RawMaterial>> {
+    let (entries, span) = table(node, "a table such as { density = \"30 kg/m^3\" }")?;
     let mut density = None;
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         match &*k {
-            "density" => set(&mut density, quantity(v)?),
-            _ => None,
+            "density" => set(&mut density, keyed(&k, quantity(v))?, &ks),
+            _ => unknown(&k, &ks, &["density"]),
         }?;
     }
-    Some(Spanned::new(span, RawMaterial { density: density? }))
+    let density = density.ok_or_else(|| Failure::new(span.clone(), What::Missing("density")))?;
+    Ok(Spanned::new(span, RawMaterial { density }))
 }
 
+/// `[expect]`'s keys: the expected quantities (`quantity::QUANTITIES`
+/// rows that are expected) and the aliases (`quantity::ALIASES`), in
+/// their order (held to them by a test).
+pub(in crate::model) const EXPECT_KEYS: &[&str] = &[
+    "mass",
+    "center_of_mass",
+    "principal_moments",
+    "inertia_com",
+    "inertia_ref",
+    "radii_of_gyration",
+    "radii_of_gyration_axes",
+    "angular_momentum",
+    "kinetic_energy",
+    "predicted_mass",
+    "predicted_center_of_mass",
+    "predicted_inertia_com",
+    "principal_axes",
+    "Ixx",
+    "Iyy",
+    "Izz",
+    "Ixy",
+    "Ixz",
+    "Iyz",
+];
+
 /// `[expect]`.
-pub(super) fn expect(node: Node<'_>) -> Option<Spanned<RawExpect>> {
-    let (entries, span) = table(node)?;
+pub(super) fn expect(node: Node<'_>) -> Read<Spanned<RawExpect>> {
+    let (entries, span) = table(node, "a table of expected quantities")?;
     let mut e = RawExpect {
         mass: None,
         center_of_mass: None,
@@ -136,7 +186,7 @@ pub(super) fn expect(node: Node<'_>) -> Option<Spanned<RawExpect>> {
         ixz: None,
         iyz: None,
     };
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         let field = match &*k {
             "mass" => &mut e.mass,
             "center_of_mass" => &mut e.center_of_mass,
@@ -157,24 +207,46 @@ pub(super) fn expect(node: Node<'_>) -> Option<Spanned<RawExpect>> {
             "Ixy" => &mut e.ixy,
             "Ixz" => &mut e.ixz,
             "Iyz" => &mut e.iyz,
-            _ => return None,
+            _ => return unknown(&k, &ks, EXPECT_KEYS),
         };
-        set(field, expectation(v)?)?;
+        set(field, keyed(&k, expectation(v))?, &ks)?;
     }
-    Some(Spanned::new(span, e))
+    Ok(Spanned::new(span, e))
 }
 
 /// One expectation, its components' expectations within it.
-fn expectation(node: Node<'_>) -> Option<Spanned<RawExpectation>> {
-    let (entries, span): (Vec<Entry<'_>>, _) = table(node)?;
+fn expectation(node: Node<'_>) -> Read<Spanned<RawExpectation>> {
+    const KEYS: &[&str] = &[
+        "value",
+        "tol",
+        "tol_degrees",
+        "min",
+        "max",
+        "x",
+        "y",
+        "z",
+        "xx",
+        "yy",
+        "zz",
+        "xy",
+        "xz",
+        "yz",
+        "1",
+        "2",
+        "3",
+    ];
+    let (entries, span): (Vec<Entry<'_>>, _) = table(
+        node,
+        "an expectation such as { value = 1.2, tol = \"0.5%\" } or { max = \"2 kg\" }",
+    )?;
     let mut e = RawExpectation::default();
-    for (k, _, v) in entries {
+    for (k, ks, v) in entries {
         match &*k {
-            "value" => set(&mut e.value, expect_value(v)?),
-            "min" => set(&mut e.min, expect_value(v)?),
-            "max" => set(&mut e.max, expect_value(v)?),
-            "tol" => set(&mut e.tol, quantity(v)?),
-            "tol_degrees" => set(&mut e.tol_degrees, quantity(v)?),
+            "value" => set(&mut e.value, keyed(&k, expect_value(v))?, &ks),
+            "min" => set(&mut e.min, keyed(&k, expect_value(v))?, &ks),
+            "max" => set(&mut e.max, keyed(&k, expect_value(v))?, &ks),
+            "tol" => set(&mut e.tol, keyed(&k, quantity(v))?, &ks),
+            "tol_degrees" => set(&mut e.tol_degrees, keyed(&k, quantity(v))?, &ks),
             key => {
                 let field = match key {
                     "x" => &mut e.x,
@@ -189,30 +261,35 @@ fn expectation(node: Node<'_>) -> Option<Spanned<RawExpectation>> {
                     "1" => &mut e.c1,
                     "2" => &mut e.c2,
                     "3" => &mut e.c3,
-                    _ => return None,
+                    _ => return unknown(&k, &ks, KEYS),
                 };
-                set(field, Box::new(expectation(v)?))
+                set(field, Box::new(keyed(&k, expectation(v))?), &ks)
             }
         }?;
     }
-    Some(Spanned::new(span, e))
+    Ok(Spanned::new(span, e))
 }
 
 /// An expected value: a quantity, or an array (of arrays) of them.
-fn expect_value(node: Node<'_>) -> Option<Spanned<ExpectValue>> {
-    fn inner(node: Node<'_>) -> Option<ExpectValue> {
+fn expect_value(node: Node<'_>) -> Read<Spanned<ExpectValue>> {
+    const EXPECTING: &str = "a number, a string with a unit, or an array of them";
+    fn inner(node: Node<'_>) -> Read<ExpectValue> {
         match node {
-            Node::Array(items, _) => Some(ExpectValue::Many(
-                items.into_iter().map(inner).collect::<Option<_>>()?,
+            Node::Array(items, _) => Ok(ExpectValue::Many(
+                items
+                    .into_iter()
+                    .map(|n| inner(n).map_err(Failure::in_array))
+                    .collect::<Read<_>>()?,
             )),
-            other => Some(ExpectValue::One(quantity(other)?.into_inner())),
+            Node::Num(..) | Node::Str(..) => Ok(ExpectValue::One(quantity(node)?.into_inner())),
+            other => super::values::wrong(&other, EXPECTING),
         }
     }
     let span = node.span();
-    Some(Spanned::new(span, inner(node)?))
+    Ok(Spanned::new(span, inner(node)?))
 }
 
 /// `name`.
-pub(super) fn name(node: Node<'_>) -> Option<Spanned<String>> {
+pub(super) fn name(node: Node<'_>) -> Read<Spanned<String>> {
     string(node)
 }

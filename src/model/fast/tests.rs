@@ -1,14 +1,15 @@
-//! The reader against serde: the same `RawFile`, values and spans, or
-//! declined where serde rejects the file.
+//! The reader against the reference parser (the toml crate's spanned
+//! tree, `toml::de::DeTable`): every value of the file read, at its place
+//! and to its value; and the same read in chunks of any size.
 
 use super::*;
 
-/// The reader gives what serde gives, spans included; and so does it
-/// read in chunks of any size, or it declines.
+/// The reader reads `text` as the reference parser does
+/// (`reference::agrees`), and so does it read in chunks of any size.
 pub(in crate::model) fn same(text: &str) {
-    let fast = read_file(text).unwrap_or_else(|| panic!("fast path declined:\n{text}"));
-    let serde: RawFile = toml::from_str(text).unwrap();
-    assert_eq!(format!("{fast:?}"), format!("{serde:?}"), "{text}");
+    if let Err(e) = super::reference::agrees(text) {
+        panic!("{e}");
+    }
     assert_eq!(in_chunks_the_same_or_declined(text), 0, "{text}");
 }
 
@@ -55,13 +56,13 @@ fn a_line_of_an_array_that_starts_with_a_bracket_does_not_end_a_chunk() {
     same(text);
     // `[1][0]` is no TOML value: declined however it is read.
     let bad = "[[part]]\nshape = \"rod\"\nmass = 1\nfrom = [\n0, 0, 0]\nto = [\n[1][0], 0, 0]\n";
-    assert!(toml::from_str::<RawFile>(bad).is_err());
+    assert!(toml::from_str::<toml::Table>(bad).is_err());
     for n in [1, 2, 3, 5, usize::MAX] {
         assert!(parse_in_chunks(bad, n).is_none(), "chunks of {n}");
     }
 }
 
-/// The reader declines the file: serde words its error.
+/// The reader refuses the file (`explain` words why).
 pub(in crate::model) fn declines(text: &str) {
     assert!(read_file(text).is_none(), "fast path accepted:\n{text}");
 }
