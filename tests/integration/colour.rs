@@ -370,7 +370,10 @@ fn a_width_the_tables_fit_in_changes_nothing() {
         let file = args.join(" ");
         let whole = stdout(&args);
         let w = widest(&whole);
-        assert_eq!(stdout(&[&args[..], &["--width", &w.to_string()]].concat()), whole);
+        assert_eq!(
+            stdout(&[&args[..], &["--width", &w.to_string()]].concat()),
+            whole
+        );
         assert_eq!(stdout(&[&["--width", "0"][..], &args[..]].concat()), whole);
         // A column less, and the widest table splits.
         let less = stdout(&[&args[..], &["--width", &(w - 1).to_string()]].concat());
