@@ -351,8 +351,9 @@ pub struct ReportArgs {
     #[arg(long)]
     pub full: bool,
 
-    /// Reference point, overriding `[analysis].about`: x,y,z in the file's
-    /// length unit, or with units, e.g. "0,0,10 mm".
+    /// Reference point, overriding `[analysis].about` (the short report then
+    /// shows the tensors about it): x,y,z in the file's length unit, or with
+    /// units, e.g. "0,0,10 mm".
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub about: Option<String>,
 

@@ -11,7 +11,7 @@ Exit status:
 pub(super) const REPORT_HELP: &str = "\
 Examples:
   massprop report arm.toml                        the short table, in the file's units
-  massprop report arm.toml --full                 every table: radii, reference point, parts, sub-assemblies
+  massprop report arm.toml --full                 every table: radii, parts, sub-assemblies
   massprop report arm.toml --format json | jq .mass SI, each value with its error bound
   massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"
   massprop report sat.toml --uncertainty linear   σ of each value from the file's tolerances
