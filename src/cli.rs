@@ -127,6 +127,12 @@ pub struct CheckArgs {
     #[arg(long)]
     pub verbose: bool,
 
+    /// Print only what failed (failed expectations and validity checks,
+    /// invalid files) and the summary line: no line per file that passed.
+    /// The table's alone: the other formats are unchanged.
+    #[arg(short = 'q', long)]
+    pub quiet: bool,
+
     /// Write the output to FILE instead of standard output, atomically
     /// (through a temporary file and a rename): a failed or interrupted run
     /// leaves FILE as it was. `-o -` is standard output.
@@ -337,8 +343,17 @@ pub struct ReportArgs {
     #[command(flatten)]
     pub body: BodyArgs,
 
-    /// Reference point, overriding `[analysis].about`: x,y,z in the file's
-    /// length unit, or with units, e.g. "0,0,10 mm".
+    /// Every table: besides the short report's mass, centre of mass,
+    /// inertia, principal moments and axes (and H, T, α, M), the radii of
+    /// gyration, the tensors about the reference point, the precision used,
+    /// a row per part and per sub-assembly, and the idealisation. JSON
+    /// always has everything.
+    #[arg(long)]
+    pub full: bool,
+
+    /// Reference point, overriding `[analysis].about` (the short report then
+    /// shows the tensors about it): x,y,z in the file's length unit, or with
+    /// units, e.g. "0,0,10 mm".
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub about: Option<String>,
 
@@ -410,6 +425,7 @@ impl BodyArgs {
                 uncertainty: None,
                 predicted: false,
             },
+            full: false,
         }
     }
 }
@@ -590,6 +606,7 @@ impl Cli {
                 );
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
+                options.full = a.full;
                 Request::Report(options)
             }
             Command::Budget(a) => Request::Budget(a.body.options(
@@ -613,6 +630,7 @@ impl Cli {
                     verbose: a.verbose,
                 },
                 engines: engines(&a.engine),
+                quiet: a.quiet,
             }),
             Command::Export(a) => Request::Export(commands::export::Options {
                 file: a.file.clone(),

@@ -10,7 +10,8 @@ Exit status:
 
 pub(super) const REPORT_HELP: &str = "\
 Examples:
-  massprop report arm.toml                        the table, in the file's units
+  massprop report arm.toml                        the short table, in the file's units
+  massprop report arm.toml --full                 every table: radii, parts, sub-assemblies
   massprop report arm.toml --format json | jq .mass SI, each value with its error bound
   massprop report arm.toml --omega \"0,0,3000 rpm\" --about \"0,0,10 mm\"
   massprop report sat.toml --uncertainty linear   σ of each value from the file's tolerances
@@ -27,6 +28,7 @@ Exit status 1 when `[budget] limit` (else `[expect] mass`'s `max`) is below the 
 pub(super) const CHECK_HELP: &str = "\
 Examples:
   massprop check .                      every part file here (ignored and hidden ones not)
+  massprop check . --quiet              the failures and the summary line only
   massprop check . --format github      annotations on a GitHub pull request
   massprop check --bless arm.toml       write today's values into [expect]
   massprop check robot.urdf --engine mujoco   each link's inertial by MuJoCo's rule";

@@ -38,6 +38,8 @@ pub struct Options {
     /// The engines whose rules robot descriptions are checked by
     /// (`--engine`; all of them by default).
     pub engines: Vec<crate::robot::engine::Engine>,
+    /// The table's failures and summary line only (`--quiet`).
+    pub quiet: bool,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one);
@@ -64,7 +66,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let checked = run.check(&o.paths, &o.search)?;
     Ok(Outcome {
         stdout: super::Stdout::Text(output::render(
-            &output::Output::Check(&checked.results, checked.skipped),
+            &output::Output::Check(&checked.results, checked.skipped, o.quiet),
             o.format,
             terminal.stdout,
         )),

@@ -29,6 +29,8 @@ pub enum Stdout {
         /// The name of the part file.
         source: String,
         format: crate::output::Format,
+        /// How much of it a table shows (`--full`, `--about`).
+        detail: crate::output::report::Detail,
         /// Where it goes: standard output's, or `-o`'s file's.
         style: Style,
     },
@@ -46,9 +48,10 @@ impl Stdout {
                 summary,
                 source,
                 format,
+                detail,
                 style,
             } => crate::output::write(
-                &crate::output::Output::Report(summary, source),
+                &crate::output::Output::Report(summary, source, *detail),
                 *format,
                 *style,
                 w,

@@ -15,6 +15,8 @@ pub struct Options {
     /// Products convention, precision, `--only` and the `[analysis]`
     /// overrides.
     pub settings: Settings,
+    /// Every table (`--full`), not the short report's essentials.
+    pub full: bool,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
@@ -27,6 +29,12 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             summary: Box::new(loaded.summary),
             source: loaded.source.name,
             format: o.format,
+            detail: crate::output::report::Detail {
+                full: o.full,
+                // A reference point the command line gives was asked for:
+                // its tensors are shown (one in the file is for H, T, M).
+                about_flag: o.settings.overrides.about.is_some(),
+            },
             style: terminal.stdout,
         },
         stderr,

@@ -166,10 +166,30 @@ pub fn kind(r: &FileResult) -> &'static str {
 /// The results for people and CI logs; `style.colour`: each `error` as
 /// cargo colours it (on a terminal); `style.width`: robot tables fitted.
 pub fn table(results: &[FileResult], skipped: usize, style: super::Style) -> String {
+    table_of(results, skipped, style, false)
+}
+
+/// `table`; `quiet` (`--quiet`): without the files that passed, so a long
+/// run shows its failures and the summary line only. A robot description
+/// that failed, or passed with warnings, keeps its table: its lines are
+/// read in it.
+pub fn table_of(
+    results: &[FileResult],
+    skipped: usize,
+    style: super::Style,
+    quiet: bool,
+) -> String {
     let colour = style.colour;
     let e = Palette::of(colour).error;
     let mut s = String::new();
     for r in results {
+        let warned = r
+            .robot
+            .as_ref()
+            .is_some_and(|x| x.links.iter().any(|l| !l.warnings.is_empty()));
+        if quiet && r.status == Status::Ok && !warned {
+            continue;
+        }
         if let Some(robot) = &r.robot {
             super::robot::table(&mut s, &r.path, robot, colour, style.width);
             continue;

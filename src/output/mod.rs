@@ -60,11 +60,13 @@ pub struct Style {
 
 /// A command's result, ready to be written in either format.
 pub enum Output<'a> {
-    /// `report`: the summary, and the name of the file it came from.
-    Report(&'a Summary, &'a str),
-    /// `check`: every file's result, and how many files a directory's
-    /// search passed over.
-    Check(&'a [FileResult], usize),
+    /// `report`: the summary, the name of the file it came from, and how
+    /// much of it a table shows (JSON has everything).
+    Report(&'a Summary, &'a str, report::Detail),
+    /// `check`: every file's result, how many files a directory's search
+    /// passed over, and whether the table leaves out what passed
+    /// (`--quiet`).
+    Check(&'a [FileResult], usize, bool),
     Diff(&'a Diff),
     /// `diff` of a part file and a robot description's link.
     LinkDiff(&'a crate::analysis::diff::LinkDiff),
@@ -92,15 +94,17 @@ pub fn write(
     w: &mut dyn std::io::Write,
 ) -> std::io::Result<()> {
     let text = match (format, output) {
-        (Format::Table, Output::Report(s, source)) => {
-            return report::write_table_to(s, source, style.width, w);
+        (Format::Table, Output::Report(s, source, detail)) => {
+            return report::write_detail_to(s, source, *detail, style.width, w);
         }
-        (Format::Json, Output::Report(s, _)) => return report::write_json_to(s, w),
-        (Format::Table, Output::Check(r, skipped)) => check::table(r, *skipped, style),
-        (Format::Json, Output::Check(r, _)) => check::json(r),
-        (Format::Github, Output::Check(r, skipped)) => ci::github(r, *skipped),
-        (Format::Junit, Output::Check(r, _)) => ci::junit(r),
-        (Format::Sarif, Output::Check(r, _)) => ci::sarif(r),
+        (Format::Json, Output::Report(s, _, _)) => return report::write_json_to(s, w),
+        (Format::Table, Output::Check(r, skipped, quiet)) => {
+            check::table_of(r, *skipped, style, *quiet)
+        }
+        (Format::Json, Output::Check(r, _, _)) => check::json(r),
+        (Format::Github, Output::Check(r, skipped, _)) => ci::github(r, *skipped),
+        (Format::Junit, Output::Check(r, _, _)) => ci::junit(r),
+        (Format::Sarif, Output::Check(r, _, _)) => ci::sarif(r),
         // The command line offers them for `check` alone (`cli`).
         (Format::Github | Format::Junit | Format::Sarif, _) => {
             return Err(std::io::Error::new(

@@ -13,6 +13,19 @@ use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
 
+mod short;
+
+/// How much of the report a table shows: the essentials (`short`), or
+/// every table (`--full`). JSON always has everything.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Detail {
+    /// Every table (`--full`): the report as it was before the short one.
+    pub full: bool,
+    /// The reference point was given by `--about`: the short report shows
+    /// its tensors too (a table a flag asked for is shown).
+    pub about_flag: bool,
+}
+
 /// The report as one JSON object (docs/json.md): the summary, SI.
 pub fn json(summary: &Summary) -> String {
     super::json_line(summary)
@@ -135,13 +148,23 @@ pub(super) fn conventions(
     products: crate::analysis::Products,
     axes: &[[f64; 3]; 3],
 ) {
+    units_lines(out, u, units, products);
+    let _ = writeln!(out, "{}", axes_line(axes));
+}
+
+/// `conventions` without the axes: the units and the products' sign.
+fn units_lines(
+    out: &mut String,
+    u: &DisplayUnits,
+    units: &str,
+    products: crate::analysis::Products,
+) {
     let _ = writeln!(
         out,
         "units: mass {}, length {}, inertia {}{units}",
         u.mass_label, u.length_label, u.inertia_label
     );
     let _ = writeln!(out, "products of inertia: {}", products_label(products));
-    let _ = writeln!(out, "{}", axes_line(axes));
 }
 
 /// Which axes the values are in: the file's, or the report axes given
@@ -191,12 +214,33 @@ fn precision_line(s: &Summary) -> String {
     line
 }
 
-/// The report for people; `source` names the file it came from; tables
-/// wider than `width` split (`grid::Fit`).
+/// The full report for people (`--full`); `source` names the file it
+/// came from; tables wider than `width` split (`grid::Fit`).
 pub fn table(s: &Summary, source: &str, width: Option<usize>) -> String {
     let mut out = Vec::new();
     write_table_to(s, source, width, &mut out).expect("invariant: writing to memory does not fail");
     String::from_utf8(out).expect("invariant: the table is UTF-8")
+}
+
+/// The short report for people (plain `report`): see `short`.
+pub fn short_table(s: &Summary, source: &str, detail: Detail, width: Option<usize>) -> String {
+    short::table(s, source, detail, width)
+}
+
+/// The report `detail` asks for, written to `w`: the full one as it is
+/// made (`write_table_to`), the short one (small) at once.
+pub fn write_detail_to(
+    s: &Summary,
+    source: &str,
+    detail: Detail,
+    width: Option<usize>,
+    w: &mut dyn std::io::Write,
+) -> std::io::Result<()> {
+    if detail.full {
+        write_table_to(s, source, width, w)
+    } else {
+        w.write_all(short::table(s, source, detail, width).as_bytes())
+    }
 }
 
 /// The report as one JSON object, written to `w` as it is made.
@@ -204,7 +248,7 @@ pub fn write_json_to(summary: &Summary, w: &mut dyn std::io::Write) -> std::io::
     super::json_line_to(summary, w)
 }
 
-/// `table`, written to `w` as it is made: the rows of parts and
+/// `table` (the full report), written to `w` as it is made: the rows of parts and
 /// sub-assemblies are never all in memory.
 pub fn write_table_to(
     s: &Summary,

@@ -516,7 +516,7 @@ fn copies_are_named_in_the_table_and_check_and_diff_use_the_names() {
     let text = "[[part]]\nname = \"spoke\"\nshape = \"rod\"\nmass = 0.01\nfrom = [0.02, 0, 0]\nto = [0.3, 0, 0]\narray = { count = \"32\", axis = [0, 0, 1], step_degrees = 11.25 }\n\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\nmirror = { normal = [0, 0, 1], origin = [0, 0, 1] }\n\n[expect]\nmass = { value = 2.32, tol = \"1e-9%\" }\n";
     let file = dir.join("wheel.toml");
     std::fs::write(&file, text).unwrap();
-    let out = massprop(&["report", file.to_str().unwrap()]);
+    let out = massprop(&["report", "--full", file.to_str().unwrap()]);
     let table = String::from_utf8_lossy(&out.stdout);
     assert!(
         table.contains("spoke[31]") && table.contains("part 2[1]"),

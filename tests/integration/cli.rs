@@ -12,8 +12,9 @@ fn every_case_in_tests_cmd_gives_its_pinned_output() {
     trycmd::TestCases::new().case("tests/cmd/*.md");
 }
 
-/// tests/cmd/report.md pins `report` of every example in shapes/, as a
-/// table and as JSON, so adding an example forces its snapshots. Each
+/// tests/cmd/report.md pins `report` of every example in shapes/, as the
+/// short table, the full one and JSON, so adding an example forces its
+/// snapshots. Each
 /// command must open a `console` block (not `text`, not `ignore`: trycmd
 /// runs it) and expect success.
 #[test]
@@ -26,6 +27,7 @@ fn every_example_has_a_table_and_a_json_snapshot() {
         let path = path.to_str().unwrap();
         for command in [
             format!("$ massprop report {path}"),
+            format!("$ massprop report {path} --full"),
             format!("$ massprop report {path} --format json"),
         ] {
             let at = lines.iter().position(|l| *l == command);
@@ -192,7 +194,7 @@ fn bent_plate_json_matches_the_hand_derivation_and_the_published_answer() {
 
 #[test]
 fn bent_plate_table_shows_the_results_with_units() {
-    let out = massprop(&["report", BENT_PLATE]);
+    let out = massprop(&["report", "--full", BENT_PLATE]);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
     // Six significant digits of the hand values: m = 1.6625 kg,
@@ -451,7 +453,9 @@ fn the_readme_shows_the_real_report_and_every_example() {
     let sample = readme
         .split("```console\n$ massprop report shapes/bent-plate.toml\n")
         .nth(1)
+        // Up to its `…`, or whole when the block ends first.
         .and_then(|rest| rest.split('…').next())
+        .and_then(|rest| rest.split("```").next())
         .expect("README shows `massprop report shapes/bent-plate.toml`");
     let out = massprop(&["report", BENT_PLATE]);
     let text = String::from_utf8(out.stdout).unwrap();

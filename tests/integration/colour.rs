@@ -309,9 +309,23 @@ fn stdout(args: &[&str]) -> String {
     String::from_utf8(out.stdout).unwrap()
 }
 
+/// The widest table line (a prose line, such as the short report's last,
+/// is not fitted).
 fn widest(text: &str) -> usize {
     use unicode_width::UnicodeWidthStr;
-    text.lines().map(UnicodeWidthStr::width).max().unwrap_or(0)
+    text.lines()
+        .filter(|l| l.starts_with(['┌', '│', '╞', '└']))
+        .map(UnicodeWidthStr::width)
+        .max()
+        .unwrap_or(0)
+}
+
+/// The report, short and `--full`, of each example.
+fn report_args() -> Vec<Vec<&'static str>> {
+    EXAMPLES
+        .iter()
+        .flat_map(|f| [vec!["report", f], vec!["report", "--full", f]])
+        .collect()
 }
 
 const EXAMPLES: &[&str] = &[
@@ -323,13 +337,14 @@ const EXAMPLES: &[&str] = &[
 
 #[test]
 fn a_narrow_width_splits_tables_into_parts_that_hold_every_value_whole() {
-    for file in EXAMPLES {
-        let whole = stdout(&["report", file]);
+    for args in report_args() {
+        let file = args.join(" ");
+        let whole = stdout(&args);
         let (full, notes) = tables(&whole);
         assert_eq!(notes, 0, "{file}");
         for width in [100, 80, 60, 40, 1] {
             let w = width.to_string();
-            let narrow = stdout(&["report", "--width", &w, file]);
+            let narrow = stdout(&[&args[..], &["--width", &w]].concat());
             let (split, notes) = tables(&narrow);
             // Each value in its row and column as the whole table has it:
             // none cut, none missing, none moved.
@@ -351,13 +366,17 @@ fn a_narrow_width_splits_tables_into_parts_that_hold_every_value_whole() {
 
 #[test]
 fn a_width_the_tables_fit_in_changes_nothing() {
-    for file in EXAMPLES {
-        let whole = stdout(&["report", file]);
+    for args in report_args() {
+        let file = args.join(" ");
+        let whole = stdout(&args);
         let w = widest(&whole);
-        assert_eq!(stdout(&["report", "--width", &w.to_string(), file]), whole);
-        assert_eq!(stdout(&["--width", "0", "report", file]), whole);
+        assert_eq!(
+            stdout(&[&args[..], &["--width", &w.to_string()]].concat()),
+            whole
+        );
+        assert_eq!(stdout(&[&["--width", "0"][..], &args[..]].concat()), whole);
         // A column less, and the widest table splits.
-        let less = stdout(&["report", "--width", &(w - 1).to_string(), file]);
+        let less = stdout(&[&args[..], &["--width", &(w - 1).to_string()]].concat());
         assert_ne!(less, whole, "{file}");
         assert!(less.contains("note: table split into 2 to fit"), "{file}");
     }

@@ -17,7 +17,7 @@ fn a_long_name_is_cut_in_tables_and_whole_in_json() {
     std::fs::write(&file, format!("{}{}", point(&long, 0.0), point("b", 1.0))).unwrap();
     let file = file.to_str().unwrap();
 
-    let out = massprop(&["report", file]);
+    let out = massprop(&["report", "--full", file]);
     assert!(out.status.success(), "{out:?}");
     let table = String::from_utf8(out.stdout).unwrap();
     let row = table

@@ -1492,7 +1492,7 @@ fn extreme_values_print_no_inf_and_zero_only_for_zero() {
             return Ok(false);
         }
         let json = exec(&["report", "--format", "json", file]).map_err(context)?;
-        let table = exec(&["report", file]).map_err(context)?;
+        let table = exec(&["report", "--full", file]).map_err(context)?;
         let v: Value = serde_json::from_str(&json.stdout).unwrap();
         zeros_agree(&table.stdout, &v).map_err(|e| context(format!("{e}\n{}", table.stdout)))?;
         let ideal = exec(&["check", file]).map_err(context)?;

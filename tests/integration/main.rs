@@ -45,6 +45,7 @@ mod robots;
 mod robots_hostile;
 mod schema;
 mod shell;
+mod short_report;
 mod stress;
 mod uncertainty;
 // Shared with the benchmark and an example, each using a part.
