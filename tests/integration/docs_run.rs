@@ -138,8 +138,7 @@ fn line_matches(pattern: &str, line: &str) -> bool {
         return pattern == line;
     }
     let (first, last) = (pieces[0], pieces[pieces.len() - 1]);
-    if !line.starts_with(first) || line.len() < first.len() + last.len() || !line.ends_with(last)
-    {
+    if !line.starts_with(first) || line.len() < first.len() + last.len() || !line.ends_with(last) {
         return false;
     }
     let mut rest = &line[first.len()..line.len() - last.len()];
@@ -165,7 +164,9 @@ fn output_matches(shown: &[&str], actual: &[&str]) -> bool {
             (0..=actual.len()).any(|skip| output_matches(rest, &actual[skip..]))
         }
         Some((e, rest)) => match actual.split_first() {
-            Some((a, more)) => line_matches(e.trim_end(), a.trim_end()) && output_matches(rest, more),
+            Some((a, more)) => {
+                line_matches(e.trim_end(), a.trim_end()) && output_matches(rest, more)
+            }
             None => false,
         },
     }
@@ -347,7 +348,8 @@ fn run_doc(label: &str, text: &str, repo: &Path, overwrite: bool) -> Outcome {
         let marker = match &block.marker {
             Ok(m) => m.clone().unwrap_or_default(),
             Err(e) => {
-                out.failures.push(format!("{label}:{}: {e}", block.first - 1));
+                out.failures
+                    .push(format!("{label}:{}: {e}", block.first - 1));
                 continue;
             }
         };
@@ -360,7 +362,9 @@ fn run_doc(label: &str, text: &str, repo: &Path, overwrite: bool) -> Outcome {
         }
         for path in &marker.copies {
             let from = repo.join(path);
-            let name = from.file_name().expect("a copy= path names a file or directory");
+            let name = from
+                .file_name()
+                .expect("a copy= path names a file or directory");
             if let Err(e) = copy_into(&from, &dir.join(name)) {
                 out.failures.push(format!("{at}: copy={path}: {e}"));
             }
@@ -380,11 +384,17 @@ fn run_doc(label: &str, text: &str, repo: &Path, overwrite: bool) -> Outcome {
             out.failures.push(format!("{at}: not valid TOML: {e}"));
             continue;
         }
-        let name = marker.file.clone().unwrap_or_else(|| format!("block-{}.toml", block.first));
+        let name = marker
+            .file
+            .clone()
+            .unwrap_or_else(|| format!("block-{}.toml", block.first));
         if marker.file.is_none() {
             std::fs::write(dir.join(&name), &body).unwrap();
         }
-        let run = massprop_in(dir).args(["report", &name, "--format", "json"]).output().unwrap();
+        let run = massprop_in(dir)
+            .args(["report", &name, "--format", "json"])
+            .output()
+            .unwrap();
         let stderr = String::from_utf8_lossy(&run.stderr);
         let reads = run.status.success()
             && serde_json::from_slice::<serde_json::Value>(&run.stdout).is_ok();
@@ -440,8 +450,12 @@ fn run_commands(
         ));
         return;
     }
-    if let Some(stray) = block.lines[..starts[0]].iter().find(|l| !l.trim().is_empty()) {
-        out.failures.push(format!("{at}: `{stray}` before the first `$` line"));
+    if let Some(stray) = block.lines[..starts[0]]
+        .iter()
+        .find(|l| !l.trim().is_empty())
+    {
+        out.failures
+            .push(format!("{at}: `{stray}` before the first `$` line"));
     }
     for (k, &i) in starts.iter().enumerate() {
         let end = starts.get(k + 1).copied().unwrap_or(block.lines.len());
@@ -459,9 +473,13 @@ fn run_commands(
                 continue;
             }
         };
-        if let Some(program) = pipe.as_ref().map(|p| p.split_whitespace().next().unwrap_or("")) {
+        if let Some(program) = pipe
+            .as_ref()
+            .map(|p| p.split_whitespace().next().unwrap_or(""))
+        {
             if !on_path("sh") || !on_path(program) {
-                out.skipped.push(format!("{here}: `{program}` is not installed"));
+                out.skipped
+                    .push(format!("{here}: `{program}` is not installed"));
                 continue;
             }
         }
@@ -500,7 +518,9 @@ fn run_commands(
         let differs = !shown.is_empty() && !output_matches(&shown, &actual_lines);
         if differs && overwrite {
             let indent = " ".repeat(block.indent);
-            let new = actual_lines.iter().map(|l| format!("{indent}{l}").trim_end().to_string());
+            let new = actual_lines
+                .iter()
+                .map(|l| format!("{indent}{l}").trim_end().to_string());
             edits.push((line_no, block.first + end, new.collect()));
         } else if differs {
             failed.push(format!(
@@ -509,7 +529,8 @@ fn run_commands(
             ));
         }
         if !failed.is_empty() {
-            out.failures.push(format!("{here}: `{command}`: {}", failed.join("; ")));
+            out.failures
+                .push(format!("{here}: `{command}`: {}", failed.join("; ")));
         }
     }
 }
@@ -526,18 +547,17 @@ fn documents(repo: &Path) -> Vec<PathBuf> {
     docs
 }
 
-/// Runs `text` as the document `label` and returns its failures.
-fn failures_of(label: &str, text: &str) -> Vec<String> {
-    run_doc(label, text, Path::new(env!("CARGO_MANIFEST_DIR")), false).failures
-}
-
 #[test]
 fn every_toml_block_and_massprop_command_in_the_readme_and_docs_runs_as_shown() {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
     let overwrite = std::env::var_os("MASSPROP_DOCS_OVERWRITE").is_some_and(|v| v == "1");
     let (mut failures, mut checked) = (Vec::new(), 0);
     for path in documents(repo) {
-        let label = path.strip_prefix(repo).unwrap().to_string_lossy().into_owned();
+        let label = path
+            .strip_prefix(repo)
+            .unwrap()
+            .to_string_lossy()
+            .into_owned();
         let text = std::fs::read_to_string(&path).unwrap();
         let outcome = run_doc(&label, &text, repo, overwrite);
         for skipped in &outcome.skipped {
@@ -550,6 +570,216 @@ fn every_toml_block_and_massprop_command_in_the_readme_and_docs_runs_as_shown() 
         checked += outcome.checked;
         failures.extend(outcome.failures);
     }
-    assert!(failures.is_empty(), "{} failing examples:\n{}", failures.len(), failures.join("\n"));
+    assert!(
+        failures.is_empty(),
+        "{} failing examples:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
     assert!(checked >= 40, "only {checked} examples checked");
+}
+
+/// Runs `text` as the document `label` and returns its failures.
+fn failures_of(label: &str, text: &str) -> Vec<String> {
+    run_doc(label, text, Path::new(env!("CARGO_MANIFEST_DIR")), false).failures
+}
+
+#[test]
+fn an_unmarked_toml_block_that_is_not_a_part_file_fails_with_its_file_and_line() {
+    let doc = "# t\n\n```toml\n[expect]\nmass = { max = 2 }\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].starts_with("doc.md:3: not a whole part file"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn invalid_toml_fails_even_when_marked_a_fragment() {
+    // docs/check.md's old first example: an inline table extended by a
+    // dotted key.
+    let doc = "<!-- docs-test: fragment -->\n```toml\n[expect]\n\
+               c = { value = [1, 2, 3], tol = 0.5 }\nc.z = { max = 4 }\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].starts_with("doc.md:2: not valid TOML"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_fragment_marker_on_a_whole_part_file_fails() {
+    let doc = "<!-- docs-test: fragment -->\n```toml\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(failures[0].contains("drop the marker"), "{failures:?}");
+}
+
+#[test]
+fn a_command_whose_output_changed_fails_with_its_line() {
+    let doc = "text\n\n```console\n$ massprop check shapes/bent-plate.toml\n\
+               shapes/bent-plate.toml: failed\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].starts_with("doc.md:4: `massprop check"),
+        "{failures:?}"
+    );
+    assert!(
+        failures[0].contains("shapes/bent-plate.toml: ok"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_command_that_exits_otherwise_than_its_marker_says_fails() {
+    let doc =
+        "<!-- docs-test: status=1 -->\n```console\n$ massprop check shapes/bent-plate.toml\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].contains("exit status Some(0), not 1"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_saved_file_is_there_for_the_commands_after_it() {
+    let doc = "<!-- docs-test: file=one.toml -->\n```toml\n[[part]]\nshape = \"point\"\n\
+               mass = 2\ncenter = [0, 0, 0]\n```\n\n```console\n$ massprop check one.toml\none.toml: ok\n...\n```\n";
+    assert_eq!(failures_of("doc.md", doc), Vec::<String>::new());
+}
+
+#[test]
+fn a_skip_without_a_reason_and_an_unknown_marker_word_are_refused() {
+    assert!(parse_marker("<!-- docs-test: skip -->").is_err());
+    assert!(parse_marker("<!-- docs-test: fragmnet -->").is_err());
+    let skip = parse_marker("<!-- docs-test: skip needs a robot -->")
+        .unwrap()
+        .unwrap();
+    assert_eq!(skip.skip.as_deref(), Some("needs a robot"));
+}
+
+#[test]
+fn shell_syntax_the_test_cannot_run_needs_a_skip_marker() {
+    let doc = "```console\n$ massprop report <(cat shapes/bent-plate.toml)\n```\n";
+    let failures = failures_of("doc.md", doc);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].contains("mark the block `skip REASON`"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn elisions_stand_for_lines_and_for_text_within_a_line() {
+    let actual = ["a", "b", "c", "mass: 5.26 kg", "d"];
+    assert!(output_matches(&["a", "...", "mass: [..] kg", "…"], &actual));
+    assert!(output_matches(&["...", "d"], &actual));
+    assert!(!output_matches(
+        &["a", "...", "mass: 5.27 kg", "..."],
+        &actual
+    ));
+    assert!(!output_matches(&["a", "b"], &actual));
+}
+
+#[test]
+fn the_readme_links_the_quickstart_before_any_other_document() {
+    let readme = std::fs::read_to_string("README.md").unwrap();
+    let first = readme.find("](").expect("README.md has a link");
+    assert!(
+        readme[first..].starts_with("](docs/quickstart.md)"),
+        "first link: {}",
+        &readme[first..first + 40]
+    );
+    assert!(
+        readme[..first].lines().count() <= 10,
+        "the quickstart link is not near the top"
+    );
+}
+
+/// docs/quickstart.md shows shapes/quickstart.toml whole, so the page and
+/// the example the README's commands use cannot drift apart.
+#[test]
+fn the_quickstart_page_shows_the_quickstart_part_file_as_it_is() {
+    let page = std::fs::read_to_string("docs/quickstart.md").unwrap();
+    let file = std::fs::read_to_string("shapes/quickstart.toml").unwrap();
+    let block = blocks(&page)
+        .unwrap()
+        .into_iter()
+        .find(|b| b.info == "toml")
+        .unwrap();
+    assert_eq!(block.lines.join("\n") + "\n", file);
+}
+
+/// A number at the start of a quantity string (`"5.26 kg"`) or a plain
+/// number, and whether a tolerance is relative (`"0.01 %"`).
+fn number(v: &toml::Value) -> (f64, bool) {
+    match v {
+        toml::Value::Float(f) => (*f, false),
+        toml::Value::Integer(i) => (*i as f64, false),
+        toml::Value::String(s) => {
+            let n = s.split_whitespace().next().unwrap().trim_end_matches('%');
+            (n.parse().unwrap(), s.ends_with('%'))
+        }
+        other => panic!("not a number: {other}"),
+    }
+}
+
+/// Within its own tolerance of `exact`: the `[expect]` entry `key`.
+fn holds(expect: &toml::Table, key: &str, exact: &[f64]) {
+    let entry = expect[key].as_table().unwrap();
+    let values: Vec<f64> = match &entry["value"] {
+        toml::Value::Array(a) => a.iter().map(|v| number(v).0).collect(),
+        v => vec![number(v).0],
+    };
+    let (tol, relative) = number(&entry["tol"]);
+    assert_eq!(values.len(), exact.len(), "{key}");
+    for (v, x) in values.iter().zip(exact) {
+        let allowed = if relative { tol / 100.0 * v.abs() } else { tol };
+        assert!(
+            (v - x).abs() <= allowed,
+            "{key}: {v} is not {x} within {allowed}"
+        );
+    }
+}
+
+/// The quickstart's `[expect]` is the body's, by the textbook forms (box
+/// m(a² + b²)/12, tube m(R² + r²)/2 about its axis, solid sphere 2/5 m R²,
+/// slender rod m L²/12 about its middle, parallel axes), in mm and kg:
+/// derived here, not read from massprop.
+#[test]
+fn the_quickstart_expectations_are_the_closed_form_values() {
+    let base = 2700.0 * 0.2 * 0.2 * 0.02; // aluminium-6061, kg
+    let parts = [
+        // (mass, centroid x, centroid z, own Izz about its centroid)
+        (base, 0.0, 10.0, base * (200.0_f64.powi(2) * 2.0) / 12.0),
+        (
+            0.9,
+            0.0,
+            320.0,
+            0.9 * (15.0_f64.powi(2) + 12.0_f64.powi(2)) / 2.0,
+        ),
+        (1.2, 0.0, 670.0, 0.4 * 1.2 * 50.0_f64.powi(2)),
+        (0.4, 75.0, 600.0, 0.4 * 150.0_f64.powi(2) / 12.0),
+        (0.6, -50.0, 30.0, 0.0),
+    ];
+    let m: f64 = parts.iter().map(|p| p.0).sum();
+    let x = parts.iter().map(|p| p.0 * p.1).sum::<f64>() / m;
+    let z = parts.iter().map(|p| p.0 * p.2).sum::<f64>() / m;
+    // Every centroid lies on y = 0: Izz about the centre of mass is each
+    // part's own plus m (x − x̄)².
+    let izz: f64 = parts.iter().map(|p| p.3 + p.0 * (p.1 - x).powi(2)).sum();
+    assert!((base - 2.16).abs() < 1e-12 && x.abs() < 1e-12, "{base} {x}");
+    let file: toml::Table = std::fs::read_to_string("shapes/quickstart.toml")
+        .unwrap()
+        .parse()
+        .unwrap();
+    let expect = file["expect"].as_table().unwrap();
+    holds(expect, "mass", &[m]);
+    holds(expect, "center_of_mass", &[x, 0.0, z]);
+    holds(expect, "Izz", &[izz]);
+    assert_eq!(expect.len(), 3, "a new entry needs its derivation here");
 }
