@@ -1,15 +1,14 @@
 //! Docs that run (issue 31): every ```toml block and every `$ massprop …`
 //! line in README.md and docs/*.md is checked here, so no example can rot.
 //!
-//! A TOML block is read as a whole part file by massprop itself (`report
-//! --format json`, status 0); one that is not a whole part file says so
-//! with a marker and is then parsed as plain TOML. A `$ massprop …` line in
-//! a ```console, ```sh or ```text block (or a bare ``` one) runs in a
-//! scratch directory of its document (where the repository's `shapes`,
-//! `tests`, `docs` and `examples` are visible, and the document's saved
-//! files live), its status must be 0, and the lines after it, when there are
-//! any, are its output (stdout, then stderr), trycmd-like: a line `...` (or
-//! `…`) stands for any number of lines, `[..]` for any text within a line.
+//! A TOML block is read as a whole part file by massprop (`report --format
+//! json`, status 0), or, marked a fragment, parsed as plain TOML. A
+//! `$ massprop …` line in a ```console, ```sh, ```text or bare ``` block
+//! runs in its document's scratch directory (the repository's `shapes`,
+//! `tests`, `docs`, `examples` visible, the document's saved files there),
+//! must exit 0, and the lines after it, if any, are its output (stdout,
+//! then stderr), trycmd-like: a line `...` (or `…`) stands for any number
+//! of lines, `[..]` for any text within a line.
 //! A pipe into another program (`| jq …`, `| python3 …`) runs through `sh`
 //! when that program exists, and is skipped, saying so, when it does not.
 //!
@@ -311,8 +310,7 @@ fn scratch_for(repo: &Path) -> tempfile::TempDir {
 struct Outcome {
     failures: Vec<String>,
     skipped: Vec<String>,
-    /// The document with its shown outputs rewritten, when asked and any
-    /// differed.
+    /// The document with its differing shown outputs rewritten (overwrite).
     rewritten: Option<String>,
     /// Commands run and TOML blocks read.
     checked: usize,
@@ -473,15 +471,13 @@ fn run_commands(
                 continue;
             }
         };
-        if let Some(program) = pipe
+        let program = pipe
             .as_ref()
-            .map(|p| p.split_whitespace().next().unwrap_or(""))
-        {
-            if !on_path("sh") || !on_path(program) {
-                out.skipped
-                    .push(format!("{here}: `{program}` is not installed"));
-                continue;
-            }
+            .map(|p| p.split_whitespace().next().unwrap_or(""));
+        if let Some(program) = program.filter(|p| !on_path("sh") || !on_path(p)) {
+            out.skipped
+                .push(format!("{here}: `{program}` is not installed"));
+            continue;
         }
         out.checked += 1;
         let run = massprop_in(dir).args(&words[1..]).output().unwrap();
@@ -517,9 +513,16 @@ fn run_commands(
         let actual_lines: Vec<&str> = actual.lines().collect();
         let differs = !shown.is_empty() && !output_matches(&shown, &actual_lines);
         if differs && overwrite {
+            // NOTE: an excerpt (shown lines, then an elision) stays one:
+            // as many of the new lines, then the same elision.
+            let tail = shown
+                .last()
+                .filter(|l| is_elision(l) && shown.len() < actual_lines.len());
+            let head = &actual_lines[..tail.map_or(actual_lines.len(), |_| shown.len() - 1)];
             let indent = " ".repeat(block.indent);
-            let new = actual_lines
+            let new = head
                 .iter()
+                .chain(tail)
                 .map(|l| format!("{indent}{l}").trim_end().to_string());
             edits.push((line_no, block.first + end, new.collect()));
         } else if differs {
@@ -584,15 +587,18 @@ fn failures_of(label: &str, text: &str) -> Vec<String> {
     run_doc(label, text, Path::new(env!("CARGO_MANIFEST_DIR")), false).failures
 }
 
+/// The one failure of the document `doc.md` whose text is `text`.
+fn the_failure(text: &str) -> String {
+    let failures = failures_of("doc.md", text);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    failures.into_iter().next().unwrap()
+}
+
 #[test]
 fn an_unmarked_toml_block_that_is_not_a_part_file_fails_with_its_file_and_line() {
     let doc = "# t\n\n```toml\n[expect]\nmass = { max = 2 }\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(
-        failures[0].starts_with("doc.md:3: not a whole part file"),
-        "{failures:?}"
-    );
+    let f = the_failure(doc);
+    assert!(f.starts_with("doc.md:3: not a whole part file"), "{f}");
 }
 
 #[test]
@@ -601,48 +607,32 @@ fn invalid_toml_fails_even_when_marked_a_fragment() {
     // dotted key.
     let doc = "<!-- docs-test: fragment -->\n```toml\n[expect]\n\
                c = { value = [1, 2, 3], tol = 0.5 }\nc.z = { max = 4 }\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(
-        failures[0].starts_with("doc.md:2: not valid TOML"),
-        "{failures:?}"
-    );
+    let f = the_failure(doc);
+    assert!(f.starts_with("doc.md:2: not valid TOML"), "{f}");
 }
 
 #[test]
 fn a_fragment_marker_on_a_whole_part_file_fails() {
     let doc = "<!-- docs-test: fragment -->\n```toml\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(failures[0].contains("drop the marker"), "{failures:?}");
+    let f = the_failure(doc);
+    assert!(f.contains("drop the marker"), "{f}");
 }
 
 #[test]
 fn a_command_whose_output_changed_fails_with_its_line() {
     let doc = "text\n\n```console\n$ massprop check shapes/bent-plate.toml\n\
                shapes/bent-plate.toml: failed\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(
-        failures[0].starts_with("doc.md:4: `massprop check"),
-        "{failures:?}"
-    );
-    assert!(
-        failures[0].contains("shapes/bent-plate.toml: ok"),
-        "{failures:?}"
-    );
+    let f = the_failure(doc);
+    assert!(f.starts_with("doc.md:4: `massprop check"), "{f}");
+    assert!(f.contains("shapes/bent-plate.toml: ok"), "{f}");
 }
 
 #[test]
 fn a_command_that_exits_otherwise_than_its_marker_says_fails() {
     let doc =
         "<!-- docs-test: status=1 -->\n```console\n$ massprop check shapes/bent-plate.toml\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(
-        failures[0].contains("exit status Some(0), not 1"),
-        "{failures:?}"
-    );
+    let f = the_failure(doc);
+    assert!(f.contains("exit status Some(0), not 1"), "{f}");
 }
 
 #[test]
@@ -665,12 +655,8 @@ fn a_skip_without_a_reason_and_an_unknown_marker_word_are_refused() {
 #[test]
 fn shell_syntax_the_test_cannot_run_needs_a_skip_marker() {
     let doc = "```console\n$ massprop report <(cat shapes/bent-plate.toml)\n```\n";
-    let failures = failures_of("doc.md", doc);
-    assert_eq!(failures.len(), 1, "{failures:?}");
-    assert!(
-        failures[0].contains("mark the block `skip REASON`"),
-        "{failures:?}"
-    );
+    let f = the_failure(doc);
+    assert!(f.contains("mark the block `skip REASON`"), "{f}");
 }
 
 #[test]
@@ -717,15 +703,9 @@ fn the_quickstart_page_shows_the_quickstart_part_file_as_it_is() {
 /// A number at the start of a quantity string (`"5.26 kg"`) or a plain
 /// number, and whether a tolerance is relative (`"0.01 %"`).
 fn number(v: &toml::Value) -> (f64, bool) {
-    match v {
-        toml::Value::Float(f) => (*f, false),
-        toml::Value::Integer(i) => (*i as f64, false),
-        toml::Value::String(s) => {
-            let n = s.split_whitespace().next().unwrap().trim_end_matches('%');
-            (n.parse().unwrap(), s.ends_with('%'))
-        }
-        other => panic!("not a number: {other}"),
-    }
+    let s = v.as_str().map_or_else(|| v.to_string(), str::to_string);
+    let n = s.split_whitespace().next().unwrap().trim_end_matches('%');
+    (n.parse().expect("a number"), s.ends_with('%'))
 }
 
 /// Within its own tolerance of `exact`: the `[expect]` entry `key`.
@@ -782,4 +762,35 @@ fn the_quickstart_expectations_are_the_closed_form_values() {
     holds(expect, "center_of_mass", &[x, 0.0, z]);
     holds(expect, "Izz", &[izz]);
     assert_eq!(expect.len(), 3, "a new entry needs its derivation here");
+}
+
+/// docs/check.md's first example is the bent plate's: in place of the
+/// bent plate's own `[expect]`, it passes `check`.
+#[test]
+fn the_check_guide_s_first_example_holds_for_the_bent_plate() {
+    let guide = std::fs::read_to_string("docs/check.md").unwrap();
+    let example = blocks(&guide)
+        .unwrap()
+        .into_iter()
+        .find(|b| b.info == "toml")
+        .unwrap();
+    let plate = std::fs::read_to_string("shapes/bent-plate.toml").unwrap();
+    let body = &plate[..plate
+        .find("\n[expect]\n")
+        .expect("the bent plate has [expect]")];
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("plate.toml"),
+        format!("{body}\n{}\n", example.lines.join("\n")),
+    )
+    .unwrap();
+    let run = massprop_in(dir.path())
+        .args(["check", "plate.toml"])
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stdout)
+    );
 }
