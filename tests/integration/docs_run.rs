@@ -3,7 +3,7 @@
 //!
 //! A TOML block is read as a whole part file by massprop (`report --format
 //! json`, status 0), or, marked a fragment, parsed as plain TOML. A
-//! `$ massprop …` line in a ```console, ```sh, ```text or bare ``` block
+//! `$ massprop …` line in a ```console, ```sh, ```bash, ```text or bare ``` block
 //! runs in its document's scratch directory (the repository's `shapes`,
 //! `tests`, `docs`, `examples` visible, the document's saved files there),
 //! must exit 0, and the lines after it, if any, are its output (stdout,
@@ -98,14 +98,17 @@ fn blocks(text: &str) -> Result<Vec<Block>, String> {
     while i < lines.len() {
         let trimmed = lines[i].trim_start();
         let Some(info) = trimmed.strip_prefix("```") else {
+            let next = lines.get(i + 1).map_or("", |n| n.trim_start());
+            if trimmed.starts_with("<!-- docs-test:") && !next.starts_with("```") {
+                return Err(format!("line {}: a marker not right before a fence", i + 1));
+            }
             i += 1;
             continue;
         };
         let indent = lines[i].len() - trimmed.len();
-        let marker = match i.checked_sub(1) {
-            Some(p) => parse_marker(lines[p]),
-            None => Ok(None),
-        };
+        let marker = i
+            .checked_sub(1)
+            .map_or(Ok(None), |p| parse_marker(lines[p]));
         let open = i;
         let mut body = Vec::new();
         i += 1;
@@ -352,7 +355,7 @@ fn run_doc(label: &str, text: &str, repo: &Path, overwrite: bool) -> Outcome {
             }
         };
         let body = block.lines.join("\n") + "\n";
-        let commands = matches!(block.info.as_str(), "console" | "sh" | "text" | "")
+        let commands = matches!(block.info.as_str(), "console" | "sh" | "bash" | "text" | "")
             && block.lines.iter().any(|l| l.starts_with("$ "));
         if let Some(reason) = &marker.skip {
             out.skipped.push(format!("{at}: {reason}"));
