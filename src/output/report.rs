@@ -73,6 +73,34 @@ struct Principal<'a> {
     equal: &'a [usize],
 }
 
+/// The principal moments and axes about the reference point, headed, with
+/// the note on equal moments (the full report's, and the short one's with
+/// `--about`).
+fn principal_about_reference(
+    out: &mut String,
+    s: &Summary,
+    u: &DisplayUnits,
+    width: Option<usize>,
+) {
+    let b = &s.error_bounds;
+    let _ = writeln!(
+        out,
+        "principal moments and axes about the reference point (ascending)"
+    );
+    principal_table(
+        out,
+        Principal {
+            moments: (&s.principal_moments_ref, &b.principal_moments_ref),
+            axes: (&s.principal_axes_ref, &b.principal_axes_ref),
+            radii: None,
+            equal: &s.equal_moments_ref,
+        },
+        u,
+        width,
+    );
+    equal_note(out, &s.equal_moments_ref);
+}
+
 fn principal_table(out: &mut String, p: Principal, u: &DisplayUnits, width: Option<usize>) {
     let Principal {
         moments: (moments, moments_b),
@@ -397,22 +425,8 @@ pub fn write_table_to(
     );
     equal_note(&mut out, &s.equal_moments);
     if s.reference_given {
-        let _ = writeln!(
-            out,
-            "\nprincipal moments and axes about the reference point (ascending)"
-        );
-        principal_table(
-            &mut out,
-            Principal {
-                moments: (&s.principal_moments_ref, &b.principal_moments_ref),
-                axes: (&s.principal_axes_ref, &b.principal_axes_ref),
-                radii: None,
-                equal: &s.equal_moments_ref,
-            },
-            &u,
-            width,
-        );
-        equal_note(&mut out, &s.equal_moments_ref);
+        out.push('\n');
+        principal_about_reference(&mut out, s, &u, width);
     }
 
     let _ = writeln!(out, "\nparts");

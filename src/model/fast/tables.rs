@@ -43,16 +43,7 @@ pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
 
 /// `[analysis] axes`: `x` and `y`, or a rotation's keys.
 fn axes(node: Node<'_>) -> Read<Spanned<RawAxes>> {
-    const KEYS: &[&str] = &[
-        "x",
-        "y",
-        "quaternion",
-        "axis",
-        "degrees",
-        "matrix",
-        "intrinsic",
-        "extrinsic",
-    ];
+    const KEYS: &[&str] = super::values::AXES_KEYS;
     let (entries, span) = table(
         node,
         "a table such as { x = [1, 0, 0], y = [0, -1, 0] } or a rotation such as { axis = [0, 0, 1], degrees = 90 }",

@@ -214,7 +214,10 @@ pub(super) fn floats(node: Node<'_>) -> Read<Floats> {
 }
 
 pub(super) const ROTATION: &str = "a rotation table such as { axis = [0, 0, 1], degrees = 90 }";
-pub(super) const ROTATION_KEYS: &[&str] = &[
+/// `[analysis] axes`'s keys: `x` and `y`, or a rotation's.
+pub(super) const AXES_KEYS: &[&str] = &[
+    "x",
+    "y",
     "quaternion",
     "axis",
     "degrees",
@@ -222,6 +225,8 @@ pub(super) const ROTATION_KEYS: &[&str] = &[
     "intrinsic",
     "extrinsic",
 ];
+/// A rotation's keys (a part's `rotation`): `AXES_KEYS` but `x` and `y`.
+pub(super) const ROTATION_KEYS: &[&str] = AXES_KEYS.split_at(2).1;
 
 pub(super) fn rotation(node: Node<'_>) -> Read<Spanned<RawRotation>> {
     let Node::Table(entries, span, _) = node else {

@@ -80,22 +80,7 @@ pub(super) fn table(s: &Summary, source: &str, detail: Detail, width: Option<usi
     );
     equal_note(&mut out, &s.equal_moments);
     if detail.about_flag && s.reference_given {
-        let _ = writeln!(
-            out,
-            "principal moments and axes about the reference point (ascending)"
-        );
-        principal_table(
-            &mut out,
-            Principal {
-                moments: (&s.principal_moments_ref, &b.principal_moments_ref),
-                axes: (&s.principal_axes_ref, &b.principal_axes_ref),
-                radii: None,
-                equal: &s.equal_moments_ref,
-            },
-            &u,
-            width,
-        );
-        equal_note(&mut out, &s.equal_moments_ref);
+        super::principal_about_reference(&mut out, s, &u, width);
     }
     if let Some(x) = &s.uncertainty {
         super::uncertainty(&mut out, x, &u, width);
