@@ -18,6 +18,7 @@ mod cost;
 mod depth;
 mod diff;
 mod docs;
+mod drawing_legible;
 mod ellipsoid;
 mod exact;
 mod expect_axes;
