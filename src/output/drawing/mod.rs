@@ -8,7 +8,11 @@
 //! - `view`: the views, the projection, each piece's silhouette as path
 //!   data;
 //! - `walks`: what the walks keep (the survey, the document's buffer,
-//!   what a view has drawn, to draw copies once).
+//!   what a view has drawn, to draw copies once) and what the colours
+//!   tell apart (one kind a drawing: group, else material, else shape);
+//! - `labels`: each label's box and its place, clear of the centre of
+//!   mass, the axis tips and the other labels;
+//! - `legend`: the legend below the views.
 //!
 //! Deterministic: numbers to two decimals in pixels, parts in file order,
 //! nothing from the clock or the machine; a snapshot test pins the
