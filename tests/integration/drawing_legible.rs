@@ -244,7 +244,7 @@ fn advance(c: char) -> f64 {
     use unicode_width::UnicodeWidthChar;
     if "mwMW@%…—".contains(c) {
         1.0
-    } else if "ijlftrI .,:;'|!()[]`".contains(c) {
+    } else if "ijlftI .,:;'|!()[]".contains(c) {
         0.4
     } else if c.is_ascii_lowercase() || c.is_ascii_digit() {
         0.64

@@ -4,8 +4,9 @@
 //! the centre-of-mass symbol or an axis tip.
 //!
 //! NOTE: the viewer's font is not known (`font-family:sans-serif`), so a
-//! label's width is an estimate from above: each character's advance is
-//! at least DejaVu Sans's (the widest of the usual sans-serif defaults;
+//! label's width is an estimate from above: each ASCII character's
+//! advance (and each of the drawing's own symbols', `× − ω …`) is at
+//! least DejaVu Sans's (the widest of the usual sans-serif defaults;
 //! Helvetica and Arial are narrower), by class. A box that holds the
 //! text in that font holds it in the others.
 
@@ -19,15 +20,16 @@ const GAP: f64 = 1.0;
 
 /// A character's advance, em: 1 for a wide one (`m`, `w`, `M`, `W`, and
 /// those East Asian scripts draw two columns wide), 0.4 for a narrow one
-/// (`i`, `l`, punctuation, the space), 0.64 for the other ASCII letters
-/// and digits, 0.85 for anything else (capitals, symbols, other scripts);
-/// 0 for a character of no width (a combining mark).
+/// (`i`, `l`, punctuation, the space), 0.64 for the other ASCII
+/// lower-case letters and digits, 0.85 for anything else (capitals,
+/// symbols, other scripts); 0 for a character of no width (a combining
+/// mark).
 pub fn advance(c: char) -> f64 {
     use unicode_width::UnicodeWidthChar;
     match c {
         'm' | 'w' | 'M' | 'W' | '@' | '%' | '…' | '—' => 1.0,
-        'i' | 'j' | 'l' | 'f' | 't' | 'r' | 'I' | ' ' | '.' | ',' | ':' | ';' | '\'' | '|'
-        | '!' | '(' | ')' | '[' | ']' | '`' => 0.4,
+        'i' | 'j' | 'l' | 'f' | 't' | 'I' | ' ' | '.' | ',' | ':' | ';' | '\'' | '|' | '!'
+        | '(' | ')' | '[' | ']' => 0.4,
         'a'..='z' | '0'..='9' => 0.64,
         c => match c.width() {
             Some(0) => 0.0,
