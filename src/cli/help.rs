@@ -53,7 +53,8 @@ Examples:
   massprop render plate.toml --omega \"0,0,30\" --about 0,0,0   with ω and the reference point
 
 Views: front (x right, z up), top (x right, y up), side (y right, z up), iso (from (1, -1, 1)).
-Colours by `group`, else by shape; cut-outs dashed; a legend names each colour and symbol.";
+Colours by `group` if any part has one, else by `material`, else by shape (one kind a drawing);
+cut-outs dashed, drawn over the parts; a legend names each colour and symbol.";
 
 pub(super) const MATERIALS_HELP: &str = "\
 Examples:

@@ -19,6 +19,7 @@ mod depth;
 mod diff;
 mod docs;
 mod docs_run;
+mod drawing_legible;
 mod ellipsoid;
 mod exact;
 mod expect_axes;

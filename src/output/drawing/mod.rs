@@ -8,12 +8,18 @@
 //! - `view`: the views, the projection, each piece's silhouette as path
 //!   data;
 //! - `walks`: what the walks keep (the survey, the document's buffer,
-//!   what a view has drawn, to draw copies once).
+//!   what a view has drawn, to draw copies once) and what the colours
+//!   tell apart (one kind a drawing: group, else material, else shape);
+//! - `labels`: each label's box and its place, clear of the centre of
+//!   mass, the axis tips and the other labels;
+//! - `legend`: the legend below the views.
 //!
 //! Deterministic: numbers to two decimals in pixels, parts in file order,
 //! nothing from the clock or the machine; a snapshot test pins the
 //! README's images byte for byte.
 
+pub mod labels;
+mod legend;
 pub mod outline;
 pub mod view;
 mod walks;
@@ -21,6 +27,8 @@ mod walks;
 use crate::analysis::summary::Summary;
 use crate::model::Model;
 use crate::units::Dim;
+use labels::{Placer, Rect};
+use legend::{legend_lines, write_legend};
 use outline::{Marker, Outline, V3};
 use std::fmt::Write as _;
 pub use view::View;
@@ -53,13 +61,17 @@ const BELOW: f64 = 40.0;
 const LINE: f64 = 18.0;
 const COLUMN: f64 = 300.0;
 
-/// The colours of the groups (or shapes), in order of first appearance,
-/// repeated past the ninth: each at least 3:1 against white (ColorBrewer's
-/// Dark2 and two more). The principal axes, the centre of mass and the
-/// ellipsoid have their own, outside this list.
+/// The colours of the legend's keys, in order of first appearance,
+/// repeated past the ninth. Chosen farthest-first (each the sRGB colour,
+/// on a grid of 17 a channel, farthest by CIEDE2000 from those before it)
+/// among those at least 3:1 against white and at least ΔE00 15 from the
+/// symbols' own colours (the axes, ω, the ellipsoid, black), from the
+/// first (Dark2's green): the least ΔE00 between neighbours, the ninth
+/// and the first included, is 27.76; between any two, 26.27 (docs/render.md,
+/// tests/integration/drawing_legible.rs).
 const PALETTE: [&str; 9] = [
-    "#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e", "#b8860b", "#a6761d", "#666666",
-    "#1f78b4",
+    "#1b9e77", "#ff00aa", "#dd7700", "#225599", "#665500", "#993333", "#3399bb", "#998888",
+    "#999900",
 ];
 /// I1, I2, I3.
 pub const AXIS_COLOURS: [&str; 3] = ["#e00000", "#00a000", "#0000e0"];
@@ -134,71 +146,99 @@ pub fn write_svg(
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
         let mut seen = Drawn::default();
-        let mut last = Last::default();
-        each_part(model, &mut |met| {
-            if out.error.is_some() {
-                return;
-            }
-            let (part, group, own) = match met {
-                Met::Part(part, group, own) => (part, group, own),
-                // Each as a copy `last.again` finds below.
-                Met::Again(n) => {
+        // NOTE: cut-outs are drawn after every other part, in a second
+        // walk when there are any: a hole is drawn over the parts it is
+        // cut from, not hidden under them or under the parts after it.
+        let passes: &[bool] = if survey.seen.cut {
+            &[false, true]
+        } else {
+            &[false]
+        };
+        for &cuts in passes {
+            let mut last = Last::default();
+            // Whether the part met last belongs to the other walk.
+            let mut other = false;
+            each_part(model, &mut |met| {
+                if out.error.is_some() {
+                    return;
+                }
+                let (part, group, own) = match met {
+                    Met::Part(part, group, own) => (part, group, own),
+                    // Each as a copy `last.again` finds below.
+                    Met::Again(n) => {
+                        if other {
+                            return;
+                        }
+                        if last.drawn {
+                            seen.again += n;
+                        } else if v == 0 {
+                            small += n;
+                        }
+                        return;
+                    }
+                };
+                other = part.spec.removed != cuts;
+                if other {
+                    return;
+                }
+                let colour = key(survey.kind, part, group);
+                if last.again(own, colour, part) {
                     if last.drawn {
-                        seen.again += n;
-                    } else if v == 0 {
-                        small += n;
+                        seen.again += 1;
+                    } else {
+                        small += usize::from(v == 0);
                     }
                     return;
                 }
-            };
-            let colour = key(part, group);
-            if last.again(own, colour, part) {
-                if last.drawn {
-                    seen.again += 1;
-                } else {
-                    small += usize::from(v == 0);
-                }
-                return;
-            }
-            last.drawn = true;
-            let class = survey.keys.index[colour] % 9;
-            let cut = if part.spec.removed { " cut" } else { "" };
-            let outline = outline::of(part);
-            element.clear();
-            match &outline {
-                Outline::Marker(kind, at) => {
-                    marker(
-                        &mut element,
-                        *kind,
-                        cell.projector.point(at),
-                        PALETTE[class],
-                        cut,
-                    );
-                }
-                Outline::Pieces(pieces) => {
-                    if !drawn(outline.size()) {
-                        last.drawn = false;
-                        small += usize::from(v == 0);
-                        return;
+                last.drawn = true;
+                let class = survey.keys.get(colour) % 9;
+                let cut = if part.spec.removed { " cut" } else { "" };
+                let outline = outline::of(part);
+                element.clear();
+                match &outline {
+                    Outline::Marker(kind, at) => {
+                        marker(
+                            &mut element,
+                            *kind,
+                            cell.projector.point(at),
+                            PALETTE[class],
+                            cut,
+                        );
                     }
-                    d.clear();
-                    pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                    let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                    Outline::Pieces(pieces) => {
+                        if !drawn(outline.size()) {
+                            last.drawn = false;
+                            small += usize::from(v == 0);
+                            return;
+                        }
+                        d.clear();
+                        pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
+                        let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                    }
                 }
-            }
-            seen.draw(&mut out.s, own, &element);
-            out.spill(false);
-        });
+                seen.draw(&mut out.s, own, &element);
+                out.spill(false);
+            });
+        }
         let s = &mut out.s;
-        symbols(s, &cell.projector, &body, o);
-        frame(s, cell, model.units.length);
+        // The symbols' labels keep to the room between the view's own
+        // words above and below (`frame`).
+        let [x, y] = cell.at;
+        let bounds = Rect([
+            x + 2.0,
+            y + ABOVE,
+            x + cell.size[0] - 2.0,
+            y + cell.size[1] - BELOW,
+        ]);
+        symbols(s, &cell.projector, &body, o, bounds);
+        let note = frame(s, cell, model.units.length);
         if seen.again > 0 {
-            // Beside the view's label (at most 32 characters).
+            // Beside the view's label.
             let n = seen.again;
             let plural = if n == 1 { "y" } else { "ies" };
             text(
                 s,
-                [cell.at[0] + 260.0, cell.at[1] + 20.0],
+                note,
                 &format!("{n} coincident cop{plural} not drawn again"),
                 None,
             );
@@ -420,8 +460,10 @@ fn marker(out: &mut String, kind: Marker, p: [f64; 2], colour: &str, cut: &str) 
 }
 
 /// The ellipsoid, the principal axes, ω, the reference point and the
-/// centre of mass (on top), in one view.
-fn symbols(s: &mut String, p: &Projector, body: &Body, o: &Options) {
+/// centre of mass (on top), in one view; their labels placed
+/// (`labels::Placer`) within `bounds` clear of the centre of mass, the
+/// axis tips, the reference mark, ω and one another.
+fn symbols(s: &mut String, p: &Projector, body: &Body, o: &Options, bounds: Rect) {
     let mut d = String::new();
     p.piece(&ellipsoid(body.cg, &body.axes, &body.semi), &mut d);
     let _ = writeln!(
@@ -429,32 +471,71 @@ fn symbols(s: &mut String, p: &Projector, body: &Body, o: &Options) {
         "<path d=\"{d}\" style=\"stroke:{ELLIPSOID_COLOUR};stroke-width:1;stroke-dasharray:2 3\"/>"
     );
     let c = p.point(&body.cg);
-    for (i, (e, k)) in body.axes.iter().enumerate() {
-        let tip = p.point(&std::array::from_fn(|j| body.cg[j] + k * e[j]));
+    let tips: [[f64; 2]; 3] = std::array::from_fn(|i| {
+        let (e, k) = &body.axes[i];
+        p.point(&std::array::from_fn(|j| body.cg[j] + k * e[j]))
+    });
+    let w = o
+        .omega
+        .and_then(|w| omega_arrow(p, o.about.unwrap_or(body.cg), w, body));
+    let q = o.about.map(|a| p.point(&a));
+    let mut place = Placer::new(bounds);
+    place.keep_off(c, CG_RADIUS + 2.0);
+    for (tip, axis) in tips.iter().zip(&body.axes) {
+        place.keep_off(*tip, 4.0);
+        // An axis shorter than a pixel is seen end-on: a point.
+        if axis.1 > 0.0 {
+            place.avoid(c, *tip);
+        }
+    }
+    if let Some(q) = q {
+        place.keep_off(q, 8.0);
+    }
+    if let Some(w) = &w {
+        match w.tip {
+            Some(tip) => {
+                place.keep_off(tip, 4.0);
+                place.avoid(w.from, tip);
+            }
+            None => place.keep_off(w.from, 8.0),
+        }
+    }
+    let mut label = |s: &mut String, anchor: [f64; 2], t: &str, colour: &str| {
+        let (at, far) = place.place(anchor, t);
+        if far {
+            // A thin line from the label's nearer side to what it names.
+            let r = Rect::text(at, t).0;
+            s.push_str("<path d=\"M");
+            pair(s, anchor);
+            s.push('L');
+            pair(
+                s,
+                [anchor[0].clamp(r[0], r[2]), anchor[1].clamp(r[1], r[3])],
+            );
+            let _ = writeln!(s, "\" style=\"stroke:{colour};stroke-width:0.75\"/>");
+        }
+        text(s, at, t, Some(colour));
+    };
+    for (i, tip) in tips.iter().enumerate() {
         let colour = AXIS_COLOURS[i];
         s.push_str("<path d=\"M");
         pair(s, c);
         s.push('L');
-        pair(s, tip);
+        pair(s, *tip);
         let _ = writeln!(s, "\" style=\"stroke:{colour};stroke-width:2.5\"/>");
-        text(
-            s,
-            [tip[0] + 4.0, tip[1] - 4.0],
-            &format!("I{}", i + 1),
-            Some(colour),
-        );
+        label(s, *tip, &format!("I{}", i + 1), colour);
     }
-    if let Some(w) = o.omega {
-        omega(s, p, o.about.unwrap_or(body.cg), w, body);
+    if let Some(w) = &w {
+        w.draw(s);
+        label(s, w.tip.unwrap_or(w.from), "ω", OMEGA_COLOUR);
     }
-    if let Some(a) = o.about {
-        let q = p.point(&a);
+    if let Some(q) = q {
         s.push_str("<path d=\"M");
         pair(s, [q[0] - 6.0, q[1]]);
         s.push_str("h12M");
         pair(s, [q[0], q[1] - 6.0]);
         s.push_str("v12\" style=\"stroke:#000;stroke-width:1.5\"/>\n");
-        text(s, [q[0] + 5.0, q[1] + 14.0], "ref", None);
+        label(s, q, "ref", "#000");
     }
     cg_symbol(s, c);
 }
@@ -475,68 +556,84 @@ fn cg_symbol(s: &mut String, c: [f64; 2]) {
     );
 }
 
-/// ω: an arrow from `from`, a third of the body's size long; seen along
-/// its line, ⊙ (toward the viewer) or ⊗.
-fn omega(s: &mut String, p: &Projector, from: V3, w: V3, body: &Body) {
+/// ω on the page: an arrow from `from`, a third of the body's size
+/// long; seen along its line (shorter than 8 px), ⊙ (toward the viewer)
+/// or ⊗ at `from`.
+struct Omega {
+    from: [f64; 2],
+    /// The arrow's tip; `None` seen along its line.
+    tip: Option<[f64; 2]>,
+    toward: bool,
+}
+
+fn omega_arrow(p: &Projector, from: V3, w: V3, body: &Body) -> Option<Omega> {
     let n = (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]).sqrt();
     if !(n > 0.0) {
-        return;
+        return None;
     }
     let [lo, hi] = body.extent;
     let size = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
     let len = if size > 0.0 { size / 3.0 } else { 1.0 };
     let a = p.point(&from);
     let v = p.vector(&w.map(|x| x / n * len));
-    let l = v[0].hypot(v[1]);
-    let style = format!("style=\"stroke:{OMEGA_COLOUR};stroke-width:2\"");
-    if l < 8.0 {
-        let [r, u] = p.plane;
-        let toward = (r[1] * u[2] - r[2] * u[1]) * w[0]
-            + (r[2] * u[0] - r[0] * u[2]) * w[1]
-            + (r[0] * u[1] - r[1] * u[0]) * w[2];
-        let ring = format!("fill:none;stroke:{OMEGA_COLOUR};stroke-width:2");
-        circle(s, a, 6.0, &ring);
-        if toward > 0.0 {
-            circle(s, a, 2.0, &format!("fill:{OMEGA_COLOUR}"));
-        } else {
-            s.push_str("<path d=\"M");
-            pair(s, [a[0] - 4.0, a[1] - 4.0]);
-            let _ = writeln!(s, "l8 8m0 -8l-8 8\" {style}/>");
-        }
-        text(s, [a[0] + 8.0, a[1] - 8.0], "ω", Some(OMEGA_COLOUR));
-        return;
+    let [r, u] = p.plane;
+    let toward = (r[1] * u[2] - r[2] * u[1]) * w[0]
+        + (r[2] * u[0] - r[0] * u[2]) * w[1]
+        + (r[0] * u[1] - r[1] * u[0]) * w[2];
+    Some(Omega {
+        from: a,
+        tip: (v[0].hypot(v[1]) >= 8.0).then(|| [a[0] + v[0], a[1] + v[1]]),
+        toward: toward > 0.0,
+    })
+}
+
+impl Omega {
+    fn draw(&self, s: &mut String) {
+        let a = self.from;
+        let style = format!("style=\"stroke:{OMEGA_COLOUR};stroke-width:2\"");
+        let Some(tip) = self.tip else {
+            let ring = format!("fill:none;stroke:{OMEGA_COLOUR};stroke-width:2");
+            circle(s, a, 6.0, &ring);
+            if self.toward {
+                circle(s, a, 2.0, &format!("fill:{OMEGA_COLOUR}"));
+            } else {
+                s.push_str("<path d=\"M");
+                pair(s, [a[0] - 4.0, a[1] - 4.0]);
+                let _ = writeln!(s, "l8 8m0 -8l-8 8\" {style}/>");
+            }
+            return;
+        };
+        let v = [tip[0] - a[0], tip[1] - a[1]];
+        let l = v[0].hypot(v[1]);
+        let (ux, uy) = (v[0] / l, v[1] / l);
+        let head = |side: f64| {
+            [
+                tip[0] - 10.0 * ux + side * 4.0 * uy,
+                tip[1] - 10.0 * uy - side * 4.0 * ux,
+            ]
+        };
+        s.push_str("<path d=\"M");
+        pair(s, a);
+        s.push('L');
+        pair(s, tip);
+        s.push('M');
+        pair(s, head(1.0));
+        s.push('L');
+        pair(s, tip);
+        s.push('L');
+        pair(s, head(-1.0));
+        let _ = writeln!(s, "\" {style}/>");
     }
-    let tip = [a[0] + v[0], a[1] + v[1]];
-    let (ux, uy) = (v[0] / l, v[1] / l);
-    let head = |side: f64| {
-        [
-            tip[0] - 10.0 * ux + side * 4.0 * uy,
-            tip[1] - 10.0 * uy - side * 4.0 * ux,
-        ]
-    };
-    s.push_str("<path d=\"M");
-    pair(s, a);
-    s.push('L');
-    pair(s, tip);
-    s.push('M');
-    pair(s, head(1.0));
-    s.push('L');
-    pair(s, tip);
-    s.push('L');
-    pair(s, head(-1.0));
-    let _ = writeln!(s, "\" {style}/>");
-    text(s, [tip[0] + 6.0, tip[1] + 4.0], "ω", Some(OMEGA_COLOUR));
 }
 
 /// The view's label and its scale bar: a round length (1, 2 or 5 × 10ⁿ
-/// file units) near a fifth of the cell.
-fn frame(s: &mut String, cell: &Cell, unit: &str) {
-    text(
-        s,
-        [cell.at[0] + 10.0, cell.at[1] + 20.0],
-        cell.view.label(),
-        None,
-    );
+/// file units) near a fifth of the cell. Where a note beside the label
+/// may go (its baseline's start).
+fn frame(s: &mut String, cell: &Cell, unit: &str) -> [f64; 2] {
+    let label = cell.view.label();
+    let at = [cell.at[0] + 10.0, cell.at[1] + 20.0];
+    text(s, at, label, None);
+    let note = [at[0] + labels::width(label) + 12.0, at[1]];
     let scale = cell.projector.scale;
     let want = cell.size[0] / 5.0 / scale;
     let ten = 10f64.powf(want.log10().floor());
@@ -559,148 +656,12 @@ fn frame(s: &mut String, cell: &Cell, unit: &str) {
         // Beside the bar's label, inside the view.
         text(
             s,
-            [x + px + 70.0, y + 4.0],
-            "lengths parallel to the page; x, y and z appear ×0.82",
+            [x + px + 6.0 + labels::width(&label) + 12.0, y + 4.0],
+            "lengths parallel to the page: x, y, z ×0.82",
             None,
         );
     }
-}
-
-/// The legend's lines: what each colour is, each symbol, and what was
-/// left out.
-fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Options) -> Vec<Entry> {
-    let seen = &survey.seen;
-    let mut e: Vec<Entry> = survey
-        .keys
-        .order
-        .iter()
-        .enumerate()
-        .map(|(k, name)| Entry::Colour(PALETTE[k % 9], crate::output::format::name(name)))
-        .collect();
-    e.push(Entry::Cg);
-    e.push(Entry::Axes);
-    e.push(Entry::Ellipsoid);
-    if seen.cut {
-        e.push(Entry::Cut);
-    }
-    if seen.markers[Marker::Point as usize] {
-        e.push(Entry::Marker(Marker::Point));
-    }
-    if seen.markers[Marker::Inertia as usize] {
-        e.push(Entry::Marker(Marker::Inertia));
-    }
-    if o.about.is_some() {
-        e.push(Entry::Text("+ ref: the reference point (`about`)".into()));
-    }
-    if o.omega.is_some() {
-        e.push(Entry::Text("ω: the angular velocity's direction".into()));
-    }
-    let mut lines = vec![Entry::Text(format!(
-        "{}: lengths in {}, third-angle views",
-        crate::output::format::name(&o.title),
-        body.unit
-    ))];
-    // Four entries a line.
-    lines.extend(e.chunks(4).map(|c| Entry::Row(c.to_vec())));
-    if small > 0 {
-        let s = if small == 1 { "" } else { "s" };
-        lines.push(Entry::Text(format!(
-            "{small} part{s} smaller than a pixel not drawn"
-        )));
-    }
-    lines
-}
-
-/// A line of the legend, or an entry of a row.
-#[derive(Clone)]
-enum Entry {
-    Text(String),
-    Row(Vec<Entry>),
-    Colour(&'static str, String),
-    Cg,
-    Axes,
-    Ellipsoid,
-    Cut,
-    Marker(Marker),
-}
-
-fn write_legend(s: &mut String, lines: &[Entry], grid: bool) {
-    s.push_str("<g id=\"legend\">\n");
-    // The cells' borders: the grid's middle lines for four views.
-    let _ = write!(s, "<path d=\"M0 {GRID_HEIGHT}h{WIDTH}");
-    if grid {
-        let _ = write!(
-            s,
-            "M{} 0v{GRID_HEIGHT}M0 {}h{WIDTH}",
-            WIDTH / 2.0,
-            GRID_HEIGHT / 2.0
-        );
-    }
-    s.push_str("\" style=\"stroke:#ccc;stroke-width:1\"/>\n");
-    for (row, line) in lines.iter().enumerate() {
-        let y = GRID_HEIGHT + LINE * (row as f64 + 1.2);
-        match line {
-            Entry::Row(items) => {
-                for (col, item) in items.iter().enumerate() {
-                    entry(s, [10.0 + COLUMN * col as f64, y], item);
-                }
-            }
-            other => entry(s, [10.0, y], other),
-        }
-    }
-    s.push_str("</g>\n");
-}
-
-/// One legend entry, its sample 24 px wide left of its words, `at` the
-/// baseline's start.
-fn entry(s: &mut String, at: [f64; 2], e: &Entry) {
-    let (x, y) = (at[0], at[1]);
-    let mid = y - 4.0;
-    let line = |s: &mut String, style: &str| {
-        s.push_str("<path d=\"M");
-        pair(s, [x, mid]);
-        let _ = writeln!(s, "h24\" style=\"{style}\"/>");
-    };
-    let words = [x + 30.0, y];
-    match e {
-        Entry::Text(t) => text(s, at, t, None),
-        Entry::Row(_) => {}
-        Entry::Colour(c, name) => {
-            line(s, &format!("stroke:{c};stroke-width:3"));
-            text(s, words, name, None);
-        }
-        Entry::Cg => {
-            cg_symbol(s, [x + 12.0, mid]);
-            text(s, words, "centre of mass", None);
-        }
-        Entry::Axes => {
-            for (i, c) in AXIS_COLOURS.iter().enumerate() {
-                s.push_str("<path d=\"M");
-                pair(s, [x + 9.0 * i as f64, mid]);
-                let _ = writeln!(s, "h7\" style=\"stroke:{c};stroke-width:2.5\"/>");
-            }
-            text(s, words, "I1 I2 I3: principal axes, k long", None);
-        }
-        Entry::Ellipsoid => {
-            line(
-                s,
-                &format!("stroke:{ELLIPSOID_COLOUR};stroke-width:1;stroke-dasharray:2 3"),
-            );
-            text(s, words, "equivalent inertia ellipsoid", None);
-        }
-        Entry::Cut => {
-            line(s, "stroke:#000;stroke-width:1.2;stroke-dasharray:5 3");
-            text(s, words, "cut-out (remove = true)", None);
-        }
-        Entry::Marker(m) => {
-            marker(s, *m, [x + 12.0, mid], "#000", "");
-            let what = match m {
-                Marker::Point => "point mass",
-                Marker::Inertia => "given inertia (shape = \"inertia\")",
-            };
-            text(s, words, what, None);
-        }
-    }
+    note
 }
 
 /// A circle about `c` of radius `r` px, styled.

@@ -84,7 +84,7 @@ impl Drawn {
 #[derive(Default)]
 pub(super) struct Last {
     own: usize,
-    key: String,
+    key: Option<String>,
     shape: Option<crate::shapes::Shape>,
     place: Option<crate::part::Place>,
     removed: bool,
@@ -96,16 +96,26 @@ pub(super) struct Last {
 impl Last {
     /// Whether `part`, a copy of `own` coloured by `key`, is the last part
     /// again; else it becomes the last.
-    pub(super) fn again(&mut self, own: usize, key: &str, part: &crate::part::Part) -> bool {
+    pub(super) fn again(
+        &mut self,
+        own: usize,
+        key: Option<&str>,
+        part: &crate::part::Part,
+    ) -> bool {
         let same = self.own == own
-            && self.key == key
+            && self.key.as_deref() == key
             && self.shape == Some(part.shape())
             && self.removed == part.spec.removed
             && self.place.as_ref() == Some(&part.spec.place);
         if !same {
             self.own = own;
-            self.key.clear();
-            self.key.push_str(key);
+            match (&mut self.key, key) {
+                (Some(k), Some(new)) => {
+                    k.clear();
+                    k.push_str(new);
+                }
+                (k, new) => *k = new.map(str::to_string),
+            }
             self.shape = Some(part.shape());
             self.place = Some(part.spec.place.clone());
             self.removed = part.spec.removed;
@@ -119,6 +129,8 @@ impl Last {
 /// and the smallest outline's size (its largest extent), to know whether
 /// any will be smaller than a pixel once the scale is known.
 pub(super) struct Survey {
+    /// The kind of the legend's keys, and the keys.
+    pub(super) kind: Kind,
     pub(super) keys: Keys,
     pub(super) seen: Seen,
     pub(super) extent: [V3; 2],
@@ -129,21 +141,30 @@ pub(super) struct Survey {
 impl Survey {
     pub(super) fn of(model: &Model) -> Survey {
         let mut v = Survey {
+            kind: Kind::Shape,
             keys: Keys::default(),
             seen: Seen::default(),
             extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
             smallest: f64::INFINITY,
         };
+        // NOTE: the kind is known once every part is met: the keys of
+        // each kind are gathered in the one walk, and one kept.
+        let mut keys: [Keys; 3] = Default::default();
         let mut last = Last::default();
         each_part(model, &mut |met| {
             // A coincident copy's key, marks, extent and size are its last's.
             let Met::Part(part, group, own) = met else {
                 return;
             };
-            if last.again(own, key(part, group), part) {
-                return; // its key, marks, extent and size are known
+            if last.again(own, group, part) {
+                return; // its keys, marks, extent and size are known
             }
-            v.keys.index(key(part, group));
+            for (k, kind) in [Kind::Group, Kind::Material, Kind::Shape]
+                .iter()
+                .enumerate()
+            {
+                keys[k].index(key(*kind, part, group));
+            }
             v.seen.cut |= part.spec.removed;
             let outline = outline::of(part);
             match &outline {
@@ -161,16 +182,51 @@ impl Survey {
                 v.extent[1][k] = v.extent[1][k].max(hi[k]);
             }
         });
+        let [group, material, shape] = keys;
+        (v.kind, v.keys) = if !group.index.is_empty() {
+            (Kind::Group, group)
+        } else if !material.index.is_empty() {
+            (Kind::Material, material)
+        } else {
+            (Kind::Shape, shape)
+        };
         v
     }
 }
 
-/// What a part is coloured by: its group, else its material, else its
-/// shape.
-pub(super) fn key<'a>(part: &'a crate::part::Part, group: Option<&'a str>) -> &'a str {
-    group
-        .or(part.material.as_deref())
-        .unwrap_or_else(|| part.shape().name())
+/// What the drawing's colours tell apart, one kind a drawing: the
+/// parts' groups if any part has one, else their materials if any part
+/// has one, else their shapes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Kind {
+    Group,
+    Material,
+    Shape,
+}
+
+impl Kind {
+    /// The legend's word for it, and for a part without one.
+    pub(super) fn words(self) -> (&'static str, &'static str) {
+        match self {
+            Kind::Group => ("group", "(no group)"),
+            Kind::Material => ("material", "(no material)"),
+            Kind::Shape => ("shape", "(no shape)"),
+        }
+    }
+}
+
+/// What a part is coloured by in a drawing of `kind`: its group, its
+/// material or its shape; `None` for a part without one.
+pub(super) fn key<'a>(
+    kind: Kind,
+    part: &'a crate::part::Part,
+    group: Option<&'a str>,
+) -> Option<&'a str> {
+    match kind {
+        Kind::Group => group,
+        Kind::Material => part.material.as_deref(),
+        Kind::Shape => Some(part.shape().name()),
+    }
 }
 
 /// What the drawing's walks meet (`each_part`).
@@ -242,22 +298,43 @@ pub(super) fn each_part(model: &Model, f: &mut dyn FnMut(Met<'_>)) {
     });
 }
 
-/// The legend's keys, in order of first appearance.
+/// The legend's keys, in order of first appearance (`None`: a part
+/// without one).
 #[derive(Default)]
 pub(super) struct Keys {
-    pub(super) order: Vec<String>,
-    pub(super) index: HashMap<String, usize>,
+    pub(super) order: Vec<Option<String>>,
+    index: HashMap<String, usize>,
+    none: Option<usize>,
 }
 
 impl Keys {
-    fn index(&mut self, key: &str) -> usize {
-        if let Some(&k) = self.index.get(key) {
+    /// The key's place in the order, given one if it is new.
+    pub(super) fn index(&mut self, key: Option<&str>) -> usize {
+        let found = match key {
+            Some(key) => self.index.get(key).copied(),
+            None => self.none,
+        };
+        if let Some(k) = found {
             return k;
         }
         let k = self.order.len();
-        self.order.push(key.to_string());
-        self.index.insert(key.to_string(), k);
+        self.order.push(key.map(str::to_string));
+        match key {
+            Some(key) => {
+                self.index.insert(key.to_string(), k);
+            }
+            None => self.none = Some(k),
+        }
         k
+    }
+
+    /// The place of a key the survey met.
+    pub(super) fn get(&self, key: Option<&str>) -> usize {
+        match key {
+            Some(key) => self.index.get(key).copied(),
+            None => self.none,
+        }
+        .expect("invariant: the survey met every key a view draws")
     }
 }
 
