@@ -515,7 +515,7 @@ fn header_table<'i>(
 /// by its declared kind. `None` if the key is unknown, repeated, or the
 /// value of the wrong type.
 macro_rules! assigner {
-    ($($name:ident: $kind:expr, $dim:expr, $tol:literal, $scope:ident, $doc:literal;)+) => {
+    ($($name:ident: $kind:expr, $dim:expr, $fill:expr, $scope:ident, $doc:literal;)+) => {
         fn assign_part(p: &mut RawPart, key: &str, node: Node<'_>) -> Option<()> {
             match key {
                 $(stringify!($name) => set_from(&mut p.$name, node),)+

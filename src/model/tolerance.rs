@@ -11,6 +11,7 @@
 //! tolerance is an error at its `±`.
 
 use super::Ctx;
+use super::keys::COMMON;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
 use crate::part::{Dep, Slot};
@@ -629,38 +630,73 @@ impl Tol {
 
 /// The number of a part's `Spec` that `key` (its `row` and `component`)
 /// fills, of a part of `shape` (`None`: an include, whose `origin` is its
-/// point), and its factor (a diameter fills a radius, halved). The one
-/// map from a key to a slot: a key without one takes no tolerance.
+/// point), and its factor (a diameter fills a radius, halved): as the
+/// key's declaration says (`Key::fill`, `ShapeInfo::slot`). A key without
+/// one takes no tolerance.
 fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
-    let c = component.min(2) as u8;
-    let r = row.min(2) as u8;
     let Some(shape) = shape else {
-        return (key == "origin").then_some((Slot::At(c), 1.0));
+        return (key == "origin").then_some((Slot::At(component.min(2) as u8), 1.0));
     };
-    // A shape's own key: its slot by its place among them, if it takes "±".
-    let own = shape.own_keys();
-    if let Some(i) = own.iter().position(|k| k.name == key) {
-        return own[i].tol.then_some((Slot::Own(i as u8, c), 1.0));
+    // The shape's own declaration first (as `Ctx::part` reads its keys).
+    let declared = shape
+        .own_keys()
+        .iter()
+        .chain(COMMON)
+        .find(|k| k.name == key)?;
+    shape.info().slot(declared, row, component, COMMON)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes::{Fill, PROBE, SHAPES};
+
+    #[test]
+    fn a_diameter_moves_half_a_cylinders_radius_and_nothing_on_a_rod() {
+        assert_eq!(
+            slot(Some(Shape::Cylinder), "diameter", 0, 0),
+            Some((Slot::Radius, 0.5))
+        );
+        assert_eq!(
+            slot(Some(Shape::Cylinder), "inner_diameter", 0, 0),
+            Some((Slot::InnerRadius, 0.5))
+        );
+        // A rod's diameter is its real size, never composed.
+        assert_eq!(slot(Some(Shape::Rod), "diameter", 0, 0), None);
     }
-    // The sizes kept as numbers of the placed shape, by name (not a given
-    // tensor's, a polygon's or a mesh's: no slot has their names).
-    let info = shape.info();
-    let dim = |k: &str| {
-        info.sizes
-            .contains(&k)
-            .then(|| Slot::of_dimension(k))
-            .flatten()
-    };
-    Some(match key {
-        "mass" | "material" => (Slot::Mass, 1.0),
-        k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
-        "center" | "corner" | "from" | "origin" => (Slot::At(c), 1.0),
-        "to" => (Slot::To(c), 1.0),
-        "edges" => (Slot::Edge(r, c), 1.0),
-        "vertices" => (Slot::Vertex(r, c), 1.0),
-        "size" if info.sizes.contains(&"size") => (Slot::Size(c), 1.0),
-        "diameter" => (dim("radius")?, 0.5),
-        "inner_diameter" => (dim("inner_radius")?, 0.5),
-        k => (dim(k)?, 1.0),
-    })
+
+    #[test]
+    fn a_size_moves_a_box_but_no_key_of_a_prism_that_does_not_size_it() {
+        assert_eq!(
+            slot(Some(Shape::Box), "size", 0, 1),
+            Some((Slot::Size(1), 1.0))
+        );
+        assert_eq!(slot(Some(Shape::Prism), "size", 0, 1), None);
+        assert_eq!(slot(Some(Shape::Prism), "polygon", 0, 1), None);
+    }
+
+    #[test]
+    fn an_includes_origin_alone_takes_a_tolerance() {
+        assert_eq!(slot(None, "origin", 0, 2), Some((Slot::At(2), 1.0)));
+        assert_eq!(slot(None, "center", 0, 2), None);
+    }
+
+    #[test]
+    fn every_key_declared_to_take_a_tolerance_moves_a_number_of_some_shape_that_takes_it() {
+        // The tests' own key no part file may use is left out.
+        let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
+        for key in COMMON.iter().chain(own).filter(|k| **k != PROBE) {
+            let moves = SHAPES
+                .iter()
+                .filter(|s| s.keys.contains(&key.name))
+                .any(|s| slot(Some(s.shape), key.name, 0, 0).is_some());
+            assert_eq!(
+                moves,
+                key.fill != Fill::No,
+                "`{}`: declared {:?}",
+                key.name,
+                key.fill
+            );
+        }
+    }
 }
