@@ -345,7 +345,7 @@ mod tests {
             .expect("units");
         let part = &raw.part.as_ref().expect("a part").get_ref()[0];
         let mut rec = Recorder::default();
-        rec.enter_part(Shape::Point);
+        rec.enter_part(Shape::Point, COMMON);
         let mut reader = super::super::parts::PartReader {
             ctx: &ctx,
             rec: &mut rec,

