@@ -595,7 +595,7 @@ fn shape_of(entries: &[Entry<'_>]) -> Option<crate::shapes::Shape> {
 /// by its declared kind. Refused if the key is unknown, repeated, or the
 /// value of the wrong type.
 macro_rules! assigner {
-    ($($name:ident: $kind:expr, $dim:expr, $tol:literal, $scope:ident, $doc:literal;)+) => {
+    ($($name:ident: $kind:expr, $dim:expr, $fill:expr, $scope:ident, $doc:literal;)+) => {
         fn assign_part(
             p: &mut RawPart,
             key: &str,

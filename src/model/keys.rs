@@ -11,7 +11,7 @@ use super::ctx::Whose;
 use super::raw::{OwnValue, Params, Quantity, RawArray, RawMirror, RawPart, RawRotation, Vector};
 use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
-use crate::shapes::{Key, Kind, Scope, Shape};
+use crate::shapes::{Fill, Key, Kind, Scope, Shape, Slot};
 use crate::units::Dim;
 use std::ops::Range;
 use toml::Spanned;
@@ -20,59 +20,59 @@ use toml::Spanned;
 pub(super) type Present<'k> = Vec<(&'k str, Option<Range<usize>>)>;
 
 /// Every key a part of any shape may have, declared once: `name: kind,
-/// dimension, whether it takes "±", scope, doc`, each the name of a
-/// `RawPart` field of its kind. Hands the list to the macro `$then`
-/// (here `declare`, in `fast` its reader's assignment).
+/// dimension, the number a "±" on it moves (`Fill`), scope, doc`, each
+/// the name of a `RawPart` field of its kind. Hands the list to the macro
+/// `$then` (here `declare`, in `fast` its reader's assignment).
 ///
-/// NOTE: `tol` says a key may take "±"; on which shapes it then has a
-/// number to move is `tolerance::slot`'s (a `size` on a box, not a
-/// prism). The `Listed` keys are in the order a part's keys are checked
+/// NOTE: a `Fill::Size` or `Fill::Dim` moves a number only on the shapes
+/// whose `ShapeInfo::sizes` name the key (a `size` on a box, not a
+/// prism: `ShapeInfo::slot`). The `Listed` keys are in the order a part's keys are checked
 /// against its shape's (`Ctx::part`: the first that does not apply is
 /// named).
 macro_rules! part_keys {
     ($then:ident) => {
         $then! {
-            name: Kind::Str, Dim::DIMENSIONLESS, false, Every, "its name in reports (else `part N`)";
-            shape: Kind::Str, Dim::DIMENSIONLESS, false, Every, "the primitive; absent only in a part that `include`s a file";
-            density: Kind::Quantity, Dim::DENSITY, true, Listed, "its mass per volume";
-            areal_density: Kind::Quantity, Dim::AREAL_DENSITY, true, Listed, "its mass per area (a thin plate)";
-            linear_density: Kind::Quantity, Dim::LINEAR_DENSITY, true, Listed, "its mass per length (a slender rod)";
-            size: Kind::Quantities(None), Dim::LENGTH, true, Listed, "a box's or plate's sizes along its local axes";
-            length: Kind::Quantity, Dim::LENGTH, true, Listed, "its length along its local z (a rod's along x)";
-            center: Kind::Point, Dim::LENGTH, true, Listed, "where its centre is";
-            rotation: Kind::Rotation, Dim::DIMENSIONLESS, false, Listed, "its turn from the file's axes";
-            corner: Kind::Point, Dim::LENGTH, true, Listed, "the corner its `edges` start from";
-            edges: Kind::Rows { width: 3, says: Some(("an edge vector", "3 edge vectors")) }, Dim::LENGTH, true, Listed, "the perpendicular edge vectors from its `corner`";
-            from: Kind::Point, Dim::LENGTH, true, Listed, "a rod's first end";
-            to: Kind::Point, Dim::LENGTH, true, Listed, "a rod's second end";
-            mass: Kind::Quantity, Dim::MASS, true, Listed, "its mass";
-            thickness: Kind::Quantity, Dim::LENGTH, false, Listed, "a plate's real thickness: reported against, never composed";
-            diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "a cylinder's, disk's, sphere's, cone's, hemisphere's or capsule's: twice its `radius`; a rod's real diameter: reported against, never composed";
-            radius: Kind::Quantity, Dim::LENGTH, true, Listed, "its outer radius (a torus's: its axis to the tube's centre)";
-            inner_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "the radius of its hollow";
-            remove: Kind::Bool, Dim::DIMENSIONLESS, false, Listed, "a cut-out: subtracted from the body";
-            inertia: Kind::Rows { width: 3, says: Some(("a row", "3 rows")) }, Dim::INERTIA, false, Listed, "a given inertia tensor (rows) about the centroid, local axes";
-            products: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "the sign convention of `inertia`'s products: \"tensor\" or \"positive\"";
-            vertices: Kind::Rows { width: 3, says: Some(("a point", "3 points")) }, Dim::LENGTH, true, Listed, "a triangle's three vertices";
-            material: Kind::Str, Dim::DIMENSIONLESS, true, Listed, "a named material instead of a density";
-            area: Kind::Quantity, Dim::AREA, false, Listed, "a rod's cross-section area (with `material`)";
-            include: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "another part file placed here as a sub-assembly";
-            origin: Kind::Point, Dim::LENGTH, true, Listed, "where an included file's origin goes, or a prism's or mesh's local origin";
-            params: Kind::ParamsTable, Dim::DIMENSIONLESS, false, Listed, "parameters passed to the included file";
-            inner_diameter: Kind::Quantity, Dim::LENGTH, true, Listed, "the inner diameter, instead of `inner_radius` (`diameter` gives the outer one)";
-            top_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a cone's radius at its top (local z = +length/2)";
-            top_inner_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a hollow cone's inner radius at its top";
-            tube_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a torus's tube radius";
-            inner_tube_radius: Kind::Quantity, Dim::LENGTH, true, Listed, "a hollow torus's inner tube radius";
-            polygon: Kind::Rows { width: 2, says: None }, Dim::LENGTH, false, Listed, "a prism's polygon: [x, y] vertices in its local x-y plane";
-            file: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "a mesh's file (STL or OBJ), relative to the part file";
-            mesh_unit: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "the length unit of a mesh file's coordinates";
-            mode: Kind::Str, Dim::DIMENSIONLESS, false, Listed, "a mesh's mode: \"solid\" (the default) or \"shell\"";
-            tol: Kind::Quantity, Dim::MASS, false, Listed, "the tolerance of `mass`: `0.1`, `\"0.1 kg\"`, `\"2 %\"`, `\"± 0.1 kg uniform\"`";
-            array: Kind::ArrayTable, Dim::DIMENSIONLESS, false, Every, "copies of the part along a step or about an axis, named `NAME[i]`";
-            mirror: Kind::MirrorTable, Dim::DIMENSIONLESS, false, Every, "the part and its mirror image in a plane: `NAME[0]` and `NAME[1]`";
-            group: Kind::Str, Dim::DIMENSIONLESS, false, Every, "its group in the weight statement (`propulsion/tanks`)";
-            maturity: Kind::Str, Dim::DIMENSIONLESS, false, Every, "its design maturity: a key of the file's `[growth]`";
+            name: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Every, "its name in reports (else `part N`)";
+            shape: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Every, "the primitive; absent only in a part that `include`s a file";
+            density: Kind::Quantity, Dim::DENSITY, Fill::Density, Listed, "its mass per volume";
+            areal_density: Kind::Quantity, Dim::AREAL_DENSITY, Fill::Density, Listed, "its mass per area (a thin plate)";
+            linear_density: Kind::Quantity, Dim::LINEAR_DENSITY, Fill::Density, Listed, "its mass per length (a slender rod)";
+            size: Kind::Quantities(None), Dim::LENGTH, Fill::Size, Listed, "a box's or plate's sizes along its local axes";
+            length: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::Length), Listed, "its length along its local z (a rod's along x)";
+            center: Kind::Point, Dim::LENGTH, Fill::At, Listed, "where its centre is";
+            rotation: Kind::Rotation, Dim::DIMENSIONLESS, Fill::No, Listed, "its turn from the file's axes";
+            corner: Kind::Point, Dim::LENGTH, Fill::At, Listed, "the corner its `edges` start from";
+            edges: Kind::Rows { width: 3, says: Some(("an edge vector", "3 edge vectors")) }, Dim::LENGTH, Fill::Edge, Listed, "the perpendicular edge vectors from its `corner`";
+            from: Kind::Point, Dim::LENGTH, Fill::At, Listed, "a rod's first end";
+            to: Kind::Point, Dim::LENGTH, Fill::To, Listed, "a rod's second end";
+            mass: Kind::Quantity, Dim::MASS, Fill::Mass, Listed, "its mass";
+            thickness: Kind::Quantity, Dim::LENGTH, Fill::No, Listed, "a plate's real thickness: reported against, never composed";
+            diameter: Kind::Quantity, Dim::LENGTH, Fill::Half("radius"), Listed, "a cylinder's, disk's, sphere's, cone's, hemisphere's or capsule's: twice its `radius`; a rod's real diameter: reported against, never composed";
+            radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::Radius), Listed, "its outer radius (a torus's: its axis to the tube's centre)";
+            inner_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::InnerRadius), Listed, "the radius of its hollow";
+            remove: Kind::Bool, Dim::DIMENSIONLESS, Fill::No, Listed, "a cut-out: subtracted from the body";
+            inertia: Kind::Rows { width: 3, says: Some(("a row", "3 rows")) }, Dim::INERTIA, Fill::No, Listed, "a given inertia tensor (rows) about the centroid, local axes";
+            products: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "the sign convention of `inertia`'s products: \"tensor\" or \"positive\"";
+            vertices: Kind::Rows { width: 3, says: Some(("a point", "3 points")) }, Dim::LENGTH, Fill::Vertex, Listed, "a triangle's three vertices";
+            material: Kind::Str, Dim::DIMENSIONLESS, Fill::Mass, Listed, "a named material instead of a density";
+            area: Kind::Quantity, Dim::AREA, Fill::No, Listed, "a rod's cross-section area (with `material`)";
+            include: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "another part file placed here as a sub-assembly";
+            origin: Kind::Point, Dim::LENGTH, Fill::At, Listed, "where an included file's origin goes, or a prism's or mesh's local origin";
+            params: Kind::ParamsTable, Dim::DIMENSIONLESS, Fill::No, Listed, "parameters passed to the included file";
+            inner_diameter: Kind::Quantity, Dim::LENGTH, Fill::Half("inner_radius"), Listed, "the inner diameter, instead of `inner_radius` (`diameter` gives the outer one)";
+            top_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::TopRadius), Listed, "a cone's radius at its top (local z = +length/2)";
+            top_inner_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::TopInnerRadius), Listed, "a hollow cone's inner radius at its top";
+            tube_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::TubeRadius), Listed, "a torus's tube radius";
+            inner_tube_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::InnerTubeRadius), Listed, "a hollow torus's inner tube radius";
+            polygon: Kind::Rows { width: 2, says: None }, Dim::LENGTH, Fill::No, Listed, "a prism's polygon: [x, y] vertices in its local x-y plane";
+            file: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "a mesh's file (STL or OBJ), relative to the part file";
+            mesh_unit: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "the length unit of a mesh file's coordinates";
+            mode: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "a mesh's mode: \"solid\" (the default) or \"shell\"";
+            tol: Kind::Quantity, Dim::MASS, Fill::No, Listed, "the tolerance of `mass`: `0.1`, `\"0.1 kg\"`, `\"2 %\"`, `\"± 0.1 kg uniform\"`";
+            array: Kind::ArrayTable, Dim::DIMENSIONLESS, Fill::No, Every, "copies of the part along a step or about an axis, named `NAME[i]`";
+            mirror: Kind::MirrorTable, Dim::DIMENSIONLESS, Fill::No, Every, "the part and its mirror image in a plane: `NAME[0]` and `NAME[1]`";
+            group: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Every, "its group in the weight statement (`propulsion/tanks`)";
+            maturity: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Every, "its design maturity: a key of the file's `[growth]`";
         }
     };
 }
@@ -81,13 +81,13 @@ pub(super) use part_keys;
 /// The declarations, where each key is (`key_spans`) and a quantity by its
 /// key (`quantity_key`), from `part_keys!`.
 macro_rules! declare {
-    ($($name:ident: $kind:expr, $dim:expr, $tol:literal, $scope:ident, $doc:literal;)+) => {
+    ($($name:ident: $kind:expr, $dim:expr, $fill:expr, $scope:ident, $doc:literal;)+) => {
         /// The keys any part may have (a shape's own: `Shape::own_keys`).
         pub(crate) const COMMON: &[Key] = &[$(Key {
             name: stringify!($name),
             kind: $kind,
             dim: $dim,
-            tol: $tol,
+            fill: $fill,
             positive: false,
             scope: Scope::$scope,
             doc: $doc,
@@ -345,7 +345,7 @@ mod tests {
             .expect("units");
         let part = &raw.part.as_ref().expect("a part").get_ref()[0];
         let mut rec = Recorder::default();
-        rec.enter_part(Shape::Point);
+        rec.enter_part(Shape::Point, COMMON);
         let mut reader = super::super::parts::PartReader {
             ctx: &ctx,
             rec: &mut rec,

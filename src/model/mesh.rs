@@ -73,7 +73,7 @@ impl Ctx<'_> {
                 }
             },
         };
-        rec.enter_part(Shape::Mesh);
+        rec.enter_part(Shape::Mesh, super::keys::COMMON);
         self.tol_needs_mass(p)?;
         let density = self.mesh_density(rec, p, mode, raw.span())?;
         let origin = match &p.origin {

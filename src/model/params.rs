@@ -18,6 +18,7 @@ use std::ops::Range;
 use toml::Spanned;
 
 mod over;
+mod set;
 pub(super) use over::Base;
 
 /// A file's parameters, evaluated.
@@ -141,10 +142,14 @@ pub(crate) fn flags(set: &[String]) -> Result<Vec<Pass>, Diagnostic> {
             .iter()
             .find_map(|q| value.strip_prefix(*q).and_then(|v| v.strip_suffix(*q)))
             .unwrap_or(value);
-        if !expr::is_name(name) {
+        // NOTE: a name that cannot be a parameter's (`base-d`) is refused
+        // by the file that defines none such (`Ctx::read_params`), where
+        // its parameters' names can be suggested.
+        if name.is_empty() {
             return Err(Diagnostic::plain(format!(
-                "invalid value {flag:?} for `--set`: `{name}` is not a parameter name"
-            )));
+                "invalid value {flag:?} for `--set`: no parameter name before `=`"
+            ))
+            .help("expected NAME=VALUE, such as `--set leg=\"700 mm\"`"));
         }
         if out.iter().any(|p| p.name == name) {
             return Err(Diagnostic::plain(format!("`--set {name}` is given twice")));
@@ -287,7 +292,12 @@ impl Ctx<'_> {
                     )),
                     Given::Value(_) => p.undefined.clone(),
                 };
-                return Err(d.suggest(near));
+                return Err(match near {
+                    None if !expr::is_name(&p.name) => d.help(
+                        "a parameter's name is a letter or `_`, then letters, digits and `_`",
+                    ),
+                    _ => d.suggest(near),
+                });
             };
             let file = match def {
                 Def::File(key, q) => Some((key.clone(), *q)),
@@ -309,6 +319,14 @@ impl Ctx<'_> {
                 Given::Value(v) => Def::Value(*v),
             };
         }
+        // The file's own value of each parameter a `--set` replaces, its
+        // dimension the one the flag must give (`same_dimension`): its
+        // `[params]` read alone, where they can be.
+        let own = if defs.values().any(|d| matches!(d, Def::Set(_, Some(_)))) {
+            self.own_params(raw)
+        } else {
+            None
+        };
         // Each definition read, and the parameters it uses.
         let mut exprs: BTreeMap<&str, Expr> = BTreeMap::new();
         for (name, def) in &defs {
@@ -362,7 +380,8 @@ impl Ctx<'_> {
                             }
                         })?;
                     if let Def::Set(s, Some(replaced)) = def {
-                        self.same_dimension(name, s, replaced, value)?;
+                        let own = own.as_ref().and_then(|o| o.get(name).copied());
+                        self.same_dimension(name, s, replaced, own, value)?;
                     }
                     // Its gradient: through the parameters it uses, and
                     // its own tolerance, a source shared by every use.
@@ -638,60 +657,6 @@ fn what(name: &str, def: &Def) -> String {
 }
 
 impl Ctx<'_> {
-    /// A `--set` value of another dimension than the definition it
-    /// replaces is refused at the flag (each use would fail at its key,
-    /// as the file's error): where the file's definition can be read
-    /// alone, in the parameters read so far.
-    fn same_dimension(
-        &self,
-        name: &str,
-        s: &Source,
-        (key, q): &(Range<usize>, &Spanned<Quantity>),
-        value: Value,
-    ) -> Result<(), Diagnostic> {
-        let file = match q.get_ref() {
-            Quantity::Number(x) => Value::of_f64(*x),
-            Quantity::Text(t) => {
-                let t = super::tolerance::split(t).map_or(t.as_str(), |s| s.0);
-                let params = &self.params;
-                let Some(v) = Expr::parse(t)
-                    .ok()
-                    .and_then(|e| e.eval(&|n| params.get(n), &Vec::new).ok())
-                else {
-                    return Ok(());
-                };
-                v
-            }
-        };
-        if file.dim == value.dim {
-            return Ok(());
-        }
-        let (line, col) = self.source.line_col(key.start);
-        Err(s
-            .error(
-                0..s.text.len(),
-                format!(
-                    "`{}` gives {}, but the file's `{name}` is {}",
-                    flag(name, s),
-                    expr::describe(value.dim),
-                    expr::describe(file.dim)
-                ),
-            )
-            .note(format!(
-                "`{name}` is defined at {}:{line}:{col}",
-                self.source.name
-            ))
-            .help(format!(
-                "give `{name}` {}, as the file's definition is",
-                match file.dim.describe() {
-                    "a quantity of another kind" => "in the file's dimension".to_string(),
-                    _ => format!("with a unit of {}", dim_word(file.dim)),
-                }
-            )))
-    }
-}
-
-impl Ctx<'_> {
     /// `located` in this file, with the notes of `Params::blame_set`.
     fn located_here(
         &self,
@@ -703,15 +668,6 @@ impl Ctx<'_> {
         let d = located(self.source, q.span(), text, e, what);
         self.params.blame_set(&self.source.text, q.span(), d)
     }
-}
-
-/// "a length" → "length", for "a unit of length".
-fn dim_word(d: Dim) -> String {
-    let w = d.describe();
-    w.strip_prefix("a ")
-        .or_else(|| w.strip_prefix("an "))
-        .unwrap_or(w)
-        .to_string()
 }
 
 /// An expression's error as a diagnostic at its token in the file: `span`

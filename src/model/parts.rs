@@ -48,7 +48,7 @@ impl Ctx<'_> {
             )
         })?;
         let s = shape.name();
-        rec.enter_part(shape);
+        rec.enter_part(shape, super::keys::COMMON);
         self.tol_needs_mass(p)?;
 
         // Keys that exist in part files but do not apply to this shape.

@@ -77,11 +77,18 @@ pub fn schema() -> Value {
     })
 }
 
+/// Every part key as declared: the common ones (`keys::COMMON`), then
+/// each shape's own in `SHAPES`' order. What the schema's `[[part]]` and
+/// docs/part-file.md's table of part keys list (tests/integration/keys_docs.rs).
+pub fn part_keys() -> impl Iterator<Item = &'static Key> {
+    let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
+    COMMON.iter().chain(own)
+}
+
 /// `[[part]]`: its keys from their declarations, its rules from `SHAPES`.
 fn part() -> Value {
     let mut props = Map::new();
-    let own = SHAPES.iter().flat_map(|s| s.shape.own_keys());
-    for key in COMMON.iter().chain(own) {
+    for key in part_keys() {
         props.insert(key.name.into(), key_schema(key));
     }
     json!({

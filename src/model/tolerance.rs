@@ -14,7 +14,7 @@ use super::Ctx;
 use super::raw::Quantity;
 use crate::diag::Diagnostic;
 use crate::part::{Dep, Slot};
-use crate::shapes::Shape;
+use crate::shapes::{Key, Shape};
 use crate::units::{self, Dim};
 use std::ops::Range;
 use toml::Spanned;
@@ -86,8 +86,10 @@ impl Index {
 #[derive(Debug, Default)]
 pub(super) struct Recorder {
     /// The shape of the part whose keys are being read, if any (else a
-    /// tolerance is refused on a part key).
-    part: Option<Shape>,
+    /// tolerance is refused on a part key), and the keys any part may
+    /// have (`keys::COMMON`, handed in: the registry reads through this
+    /// module), whose declarations say what a "±" on them moves.
+    part: Option<Part>,
     /// Whether an include's `origin` is being read: its tolerances move
     /// the sub-assembly.
     in_origin: bool,
@@ -156,8 +158,8 @@ impl Recorder {
     /// material's density (no slot of a part: `Slot::Mass` stands for it).
     pub(super) fn allows(&self, key: &str, at: Index) -> Option<Slot> {
         let Index { row, component } = at;
-        if let Some(shape) = self.part {
-            return slot(Some(shape), key, row, component).map(|s| s.0);
+        if let Some(part) = self.part {
+            return slot(Some(part), key, row, component).map(|s| s.0);
         }
         if self.in_origin {
             return slot(None, key, row, component).map(|s| s.0);
@@ -556,9 +558,9 @@ impl Recorder {
 
     /// Start reading a part's keys, of a `shape`: tolerances are allowed
     /// on those that fill its numbers, and recorded.
-    pub(super) fn enter_part(&mut self, shape: Shape) {
+    pub(super) fn enter_part(&mut self, shape: Shape, common: &'static [Key]) {
         let r = self;
-        r.part = Some(shape);
+        r.part = Some((shape, common));
         r.readings.clear();
     }
 
@@ -572,7 +574,7 @@ impl Recorder {
 
     /// The readings recorded, as `Dep`s of a part of `shape` (`None`: an
     /// include's origin), their new sources appended.
-    fn deps(&mut self, shape: Option<Shape>) -> Option<std::sync::Arc<[Dep]>> {
+    fn deps(&mut self, shape: Option<Part>) -> Option<std::sync::Arc<[Dep]>> {
         if self.readings.is_empty() {
             return None;
         }
@@ -627,40 +629,34 @@ impl Tol {
     }
 }
 
+/// A part's shape and the keys any part may have (`Recorder::part`).
+type Part = (Shape, &'static [Key]);
+
 /// The number of a part's `Spec` that `key` (its `row` and `component`)
 /// fills, of a part of `shape` (`None`: an include, whose `origin` is its
-/// point), and its factor (a diameter fills a radius, halved). The one
-/// map from a key to a slot: a key without one takes no tolerance.
-fn slot(shape: Option<Shape>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
-    let c = component.min(2) as u8;
-    let r = row.min(2) as u8;
-    let Some(shape) = shape else {
-        return (key == "origin").then_some((Slot::At(c), 1.0));
+/// point), and its factor (a diameter fills a radius, halved): as the
+/// key's declaration says (`Key::fill`, `ShapeInfo::slot`). A key without
+/// one takes no tolerance.
+fn slot(part: Option<Part>, key: &str, row: usize, component: usize) -> Option<(Slot, f64)> {
+    let Some((shape, common)) = part else {
+        return (key == "origin").then_some((Slot::At(component.min(2) as u8), 1.0));
     };
-    // A shape's own key: its slot by its place among them, if it takes "±".
-    let own = shape.own_keys();
-    if let Some(i) = own.iter().position(|k| k.name == key) {
-        return own[i].tol.then_some((Slot::Own(i as u8, c), 1.0));
+    // The shape's own declaration first (as `Ctx::part` reads its keys).
+    let declared = shape
+        .own_keys()
+        .iter()
+        .chain(common)
+        .find(|k| k.name == key)?;
+    shape.info().slot(declared, row, component, common)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_includes_origin_alone_takes_a_tolerance() {
+        assert_eq!(slot(None, "origin", 0, 2), Some((Slot::At(2), 1.0)));
+        assert_eq!(slot(None, "center", 0, 2), None);
     }
-    // The sizes kept as numbers of the placed shape, by name (not a given
-    // tensor's, a polygon's or a mesh's: no slot has their names).
-    let info = shape.info();
-    let dim = |k: &str| {
-        info.sizes
-            .contains(&k)
-            .then(|| Slot::of_dimension(k))
-            .flatten()
-    };
-    Some(match key {
-        "mass" | "material" => (Slot::Mass, 1.0),
-        k if info.density.is_some_and(|d| d.key == k) => (Slot::Mass, 1.0),
-        "center" | "corner" | "from" | "origin" => (Slot::At(c), 1.0),
-        "to" => (Slot::To(c), 1.0),
-        "edges" => (Slot::Edge(r, c), 1.0),
-        "vertices" => (Slot::Vertex(r, c), 1.0),
-        "size" if info.sizes.contains(&"size") => (Slot::Size(c), 1.0),
-        "diameter" => (dim("radius")?, 0.5),
-        "inner_diameter" => (dim("inner_radius")?, 0.5),
-        k => (dim(k)?, 1.0),
-    })
 }

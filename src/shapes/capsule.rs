@@ -141,12 +141,6 @@ impl ShapeKind for Capsule {
         })
     }
 
-
-
-
-
-
-
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
     }
@@ -183,15 +177,6 @@ impl ShapeKind for Capsule {
             },
         ])
     }
-
-
-
-
-
-
-
-
-
 
     placed_by_centre!(radius: Radius, inner_radius: InnerRadius, length: Length);
 

@@ -6,57 +6,115 @@
 //! such shape's `impl ShapeKind`.
 
 /// The methods of `ShapeKind` that every shape placed by its `center` and
-/// turned by its `orientation`, its dimensions named (`field: Slot`, in
-/// the order its closed forms take them), shares: its measure and own
-/// second moment from its closed forms (R diag(d) Rᵀ, `common::diagonal`),
-/// the moments checked for range, a frame's move, its numbers by slot,
-/// its mirror image and the rest. `centroid` and `centroid_error` are
+/// turned by its `orientation`, its dimensions named, shares: its measure
+/// and own second moment from its closed forms (R diag(d) Rᵀ,
+/// `common::diagonal`), the moments checked for range, a frame's move,
+/// its numbers by slot, its mirror image and the rest (`centre_placed!`).
+/// Its dimensions are scalar fields, each in a slot of its own (`radius:
+/// Radius, length: Length`, in the order its closed forms take them), or
+/// one array field of n, a shape's own key, its component k in
+/// `Slot::Own(key, k)` (`radii: [Own(0); 3]`). `centroid` and `centroid_error` are
 /// `centred_centroid!`'s for a shape whose centroid is its centre.
+///
+/// NOTE: both forms hand the per-field code to `@methods` with the names
+/// it binds (`self`, the lift, the mover, the callback, the source): a
+/// macro's `self` is hygienic, so the methods' parameters must be the
+/// tokens the field code was written with.
 macro_rules! placed_by_centre {
-    ($($field:ident: $slot:ident),* $(,)?) => {
-        fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-            let _ = &l;
-            Self::measure_of::<T>(&[$($crate::shapes::common::var(self.$field, Slot::$slot, l)),*])
-        }
+    (@methods $s:ident, $l:ident, $m:ident, $f:ident, $src:ident;
+        dims: $dims:expr,
+        values: $values:expr,
+        moved: { $($moved:tt)* },
+        numbers: { $($numbers:tt)* },
+        reset: { $($reset:tt)* }
+    ) => {
+        centre_placed!();
 
-        fn measure_error(&self) -> f64 {
-            Self::MEASURE_ROUNDINGS
+        fn measure<T: Real, L: Lift>(&$s, $l: L) -> T {
+            let _ = &$l;
+            Self::measure_of::<T>(&$dims)
         }
 
         fn own_second_moment<T: Real, L: Lift>(
-            &self,
+            &$s,
             m: T,
             units: Option<Units>,
-            l: L,
+            $l: L,
         ) -> (M3<T>, Option<Own>) {
-            let _ = &l;
-            let d = Self::moments_of::<T>(
-                m,
-                &[$($crate::shapes::common::var(self.$field, Slot::$slot, l)),*],
-            );
-            $crate::shapes::common::diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
+            let _ = &$l;
+            let d = Self::moments_of::<T>(m, &$dims);
+            $crate::shapes::common::diagonal(d, &$s.orientation, units, Self::MOMENT_ROUNDINGS)
         }
 
-        fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
+        fn independent_moments(&$s, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
             (
-                Self::moments_of(m, &[$(self.$field),*]),
+                Self::moments_of(m, &$values),
                 3,
                 Self::INFO.nonzero_moments,
             )
         }
 
-        fn moved(&mut self, m: &impl Mover) {
-            self.center = m.point(self.center);
-            $(self.$field *= m.length();)*
-            m.turn(&mut self.orientation);
+        fn moved(&mut $s, $m: &impl Mover) {
+            $s.center = $m.point($s.center);
+            $($moved)*
+            $m.turn(&mut $s.orientation);
         }
 
-        fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-            let [x, y, z] = &mut self.center;
-            f(Slot::At(0), x);
-            f(Slot::At(1), y);
-            f(Slot::At(2), z);
-            $(f(Slot::$slot, &mut self.$field);)*
+        fn numbers<'a>(&'a mut $s, $f: &mut dyn FnMut(Slot, &'a mut f64)) {
+            let [x, y, z] = &mut $s.center;
+            $f(Slot::At(0), x);
+            $f(Slot::At(1), y);
+            $f(Slot::At(2), z);
+            $($numbers)*
+        }
+
+        fn reset_from(&mut $s, $src: &Self) {
+            $s.center = $src.center;
+            $($reset)*
+            $crate::shapes::common::reset_turn(&mut $s.orientation, &$src.orientation);
+        }
+
+        fn mirror(&mut self) {
+            $crate::shapes::common::flip(
+                $crate::shapes::common::mirror_axis::<Self>(),
+                &mut self.orientation,
+            );
+        }
+    };
+    ($field:ident: [Own($key:literal); $n:literal]) => {
+        placed_by_centre!(@methods self, l, m, f, src;
+            dims: std::array::from_fn::<_, $n, _>(|k| {
+                $crate::shapes::common::var(self.$field[k], Slot::Own($key, k as u8), l)
+            }),
+            values: self.$field,
+            moved: { self.$field = self.$field.map(|x| x * m.length()); },
+            numbers: {
+                for (k, x) in self.$field.iter_mut().enumerate() {
+                    f(Slot::Own($key, k as u8), x);
+                }
+            },
+            reset: { self.$field = src.$field; }
+        );
+    };
+    ($($field:ident: $slot:ident),* $(,)?) => {
+        placed_by_centre!(@methods self, l, m, f, src;
+            dims: [$($crate::shapes::common::var(self.$field, Slot::$slot, l)),*],
+            values: [$(self.$field),*],
+            moved: { $(self.$field *= m.length();)* },
+            numbers: { $(f(Slot::$slot, &mut self.$field);)* },
+            reset: { $(self.$field = src.$field;)* }
+        );
+    };
+}
+
+/// The methods of `ShapeKind` that a shape placed by its `center` shares
+/// whatever its dimensions (a given inertia's too): one rounding count,
+/// no span, its density's power of length from its kind, no scaled
+/// rounding, and its centre as its reach and its one position.
+macro_rules! centre_placed {
+    () => {
+        fn measure_error(&self) -> f64 {
+            Self::MEASURE_ROUNDINGS
         }
 
         fn shortest_span(&self) -> f64 {
@@ -77,19 +135,6 @@ macro_rules! placed_by_centre {
 
         fn positions(&self) -> ([[f64; 3]; 4], usize) {
             $crate::shapes::common::points(&[self.center])
-        }
-
-        fn reset_from(&mut self, src: &Self) {
-            self.center = src.center;
-            $(self.$field = src.$field;)*
-            $crate::shapes::common::reset_turn(&mut self.orientation, &src.orientation);
-        }
-
-        fn mirror(&mut self) {
-            $crate::shapes::common::flip(
-                $crate::shapes::common::mirror_axis::<Self>(),
-                &mut self.orientation,
-            );
         }
     };
 }

@@ -18,8 +18,7 @@
 //! each > 0, each taking "±"), read through `Reader::quantities` and
 //! moved by a tolerance in the slots `Own(0, k)`.
 
-use super::common::{axes, density_power, exact_centroid_error, flip, mirror_axis, norm1};
-use super::common::{at, diagonal, points, reset_turn, scaled, var};
+use super::common::{axes, scaled};
 use super::lift::Lift;
 use super::outline::{Outline, Piece};
 use super::read::Reader;
@@ -31,11 +30,6 @@ use crate::diag::Diagnostic;
 use crate::numeric::{DD, M3, Real};
 use crate::rotation::Orientation;
 use crate::units::Dim;
-
-/// The slot of `radii`'s component k: the first of `OWN_KEYS`.
-fn radius_slot(k: usize) -> Slot {
-    Slot::Own(0, k as u8)
-}
 
 /// The semi-axes from the dimensions the closed forms are given.
 fn semi_axes<T: Real>(d: &[T]) -> [T; 3] {
@@ -116,89 +110,6 @@ impl ShapeKind for Ellipsoid {
         })
     }
 
-    fn measure<T: Real, L: Lift>(&self, l: L) -> T {
-        Self::measure_of::<T>(&self.radii_in(l))
-    }
-
-    fn measure_error(&self) -> f64 {
-        Self::MEASURE_ROUNDINGS
-    }
-
-    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        at(&self.center, l)
-    }
-
-    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
-        exact_centroid_error(at)
-    }
-
-    fn own_second_moment<T: Real, L: Lift>(
-        &self,
-        m: T,
-        units: Option<Units>,
-        l: L,
-    ) -> (M3<T>, Option<Own>) {
-        let d = Self::moments_of::<T>(m, &self.radii_in(l));
-        diagonal(d, &self.orientation, units, Self::MOMENT_ROUNDINGS)
-    }
-
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
-    }
-
-    fn independent_moments(&self, m: f64, _: &M3<f64>) -> ([f64; 3], usize, usize) {
-        (
-            Self::moments_of(m, &self.radii),
-            3,
-            Self::INFO.nonzero_moments,
-        )
-    }
-
-    fn moved(&mut self, m: &impl Mover) {
-        self.center = m.point(self.center);
-        self.radii = self.radii.map(|r| r * m.length());
-        m.turn(&mut self.orientation);
-    }
-
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
-
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
-
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
-
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
-    }
-
-    /// Its centre's coordinates (`At`), then `radii`'s components, the
-    /// slots `Own(0, k)` of its first own key.
-    fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
-        for (i, x) in self.center.iter_mut().enumerate() {
-            f(Slot::At(i as u8), x);
-        }
-        for (k, x) in self.radii.iter_mut().enumerate() {
-            f(radius_slot(k), x);
-        }
-    }
-
-    fn reset_from(&mut self, src: &Self) {
-        self.center = src.center;
-        self.radii = src.radii;
-        reset_turn(&mut self.orientation, &src.orientation);
-    }
-
-    /// S R becomes S R F, F the flip of local x: the ellipsoid is its own
-    /// image in its local y–z plane.
-    fn mirror(&mut self) {
-        flip(mirror_axis::<Self>(), &mut self.orientation);
-    }
-
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
     }
@@ -213,13 +124,12 @@ impl ShapeKind for Ellipsoid {
             m: [scaled(a, x), scaled(b, y), scaled(c, z)],
         }])
     }
-}
 
-impl Ellipsoid {
-    /// Its radii read through `l`, each in its slot.
-    fn radii_in<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        std::array::from_fn(|k| var(self.radii[k], radius_slot(k), l))
-    }
+    // Its mirror image: S R becomes S R F, F the flip of local x, the
+    // ellipsoid its own image in its local y–z plane.
+    placed_by_centre!(radii: [Own(0); 3]);
+
+    centred_centroid!();
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! centre and inertia tensor about its centroid given. No closed form
 //! here: the composer turns its tensor (`part::Place::Given`).
 
-use super::common::{at, density_power, exact_centroid_error, flip, given, mirror_axis, norm1, points, reset_turn};
+use super::common::{flip, given, mirror_axis, reset_turn};
 use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::lift::Lift;
@@ -78,19 +78,6 @@ impl ShapeKind for Given {
         T::of(1.0)
     }
 
-    /// None: its mass is given.
-    fn measure_error(&self) -> f64 {
-        0.0
-    }
-
-    fn centroid<T: Real, L: Lift>(&self, l: L) -> [T; 3] {
-        at(&self.center, l)
-    }
-
-    fn centroid_error(&self, at: f64, _: &[f64; 3]) -> [f64; 3] {
-        exact_centroid_error(at)
-    }
-
     fn own_second_moment<T: Real, L: Lift>(
         &self,
         m: T,
@@ -98,10 +85,6 @@ impl ShapeKind for Given {
         _: L,
     ) -> (M3<T>, Option<Own>) {
         given(&self.inertia, &self.orientation, m, units)
-    }
-
-    fn shortest_span(&self) -> f64 {
-        f64::INFINITY
     }
 
     /// Its one moment checked is the trace.
@@ -119,22 +102,6 @@ impl ShapeKind for Given {
             .inertia
             .map(|r| r.map(|x| x * m.mass() * m.length() * m.length()));
         m.turn(&mut self.orientation);
-    }
-
-    fn density_power(&self) -> i32 {
-        density_power::<Self>()
-    }
-
-    fn scaled_rounding(&self) -> Option<f64> {
-        None
-    }
-
-    fn reach(&self) -> f64 {
-        norm1(&self.center)
-    }
-
-    fn positions(&self) -> ([[f64; 3]; 4], usize) {
-        points(&[self.center])
     }
 
     fn numbers<'a>(&'a mut self, f: &mut dyn FnMut(Slot, &'a mut f64)) {
@@ -170,4 +137,10 @@ impl ShapeKind for Given {
     fn outline(&self) -> Outline {
         Outline::Marker(Marker::Inertia, self.center)
     }
+
+    // Placed by its centre, its centroid; its measure's rounding (none:
+    // its mass is given) is `MEASURE_ROUNDINGS`'.
+    centre_placed!();
+
+    centred_centroid!();
 }

@@ -1,7 +1,7 @@
 //! The types of a shape's description (`ShapeInfo`), which each shape's
 //! module declares as its `ShapeKind::INFO` (docs/architecture.md).
 
-use super::Shape;
+use super::{Shape, Slot};
 use crate::units::Dim;
 use serde::Serialize;
 
@@ -199,8 +199,9 @@ pub struct Key {
     /// The dimension of its quantities (`Dim::DIMENSIONLESS` for a key
     /// without any).
     pub dim: Dim,
-    /// Whether it may carry a tolerance ("±").
-    pub tol: bool,
+    /// Which number of a part a tolerance ("±") on it moves, if it may
+    /// carry one.
+    pub fill: Fill,
     /// Whether each of its quantities must be > 0 (checked as read).
     pub positive: bool,
     pub scope: Scope,
@@ -215,16 +216,25 @@ impl Key {
             name,
             kind,
             dim,
-            tol: false,
+            fill: Fill::No,
             positive: false,
             scope: Scope::Listed,
             doc,
         }
     }
 
-    /// The same key, taking "±".
+    /// The same key, taking "±" (in the slot `Slot::Own` of its place
+    /// among its shape's own keys).
     pub const fn tolerable(self) -> Key {
-        Key { tol: true, ..self }
+        Key {
+            fill: Fill::Own,
+            ..self
+        }
+    }
+
+    /// Whether it may carry a tolerance ("±").
+    pub fn takes_tolerance(&self) -> bool {
+        self.fill != Fill::No
     }
 
     /// The same key, each of its quantities checked > 0.
@@ -233,6 +243,84 @@ impl Key {
             positive: true,
             ..self
         }
+    }
+}
+
+/// Which number of a part's `Spec` (its `Slot`) a tolerance on a key
+/// moves: declared with the key (`Key::fill`), so that a key, or a shape
+/// that lists it, has its slot without a map elsewhere. Some fill only on
+/// the shapes that give their size by the key (`ShapeInfo::sizes`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Fill {
+    /// None: the key takes no "±".
+    No,
+    /// The mass, given or by density (`mass`, a `material`'s density).
+    Mass,
+    /// The mass, where the key is the shape's density kind's
+    /// (`ShapeInfo::density`).
+    Density,
+    /// A coordinate of the placing point (`center`, `corner`, `from`,
+    /// `origin`).
+    At,
+    /// A coordinate of a rod's `to`.
+    To,
+    /// A component of an edge vector (`edges`).
+    Edge,
+    /// A coordinate of a vertex (`vertices`).
+    Vertex,
+    /// A component of `size`, where the shape's sizes name the key.
+    Size,
+    /// This slot, where the shape's sizes name the key (`length` fills
+    /// `Slot::Length`).
+    Dim(Slot),
+    /// Half of what the named key fills (a `diameter`, the `radius`).
+    Half(&'static str),
+    /// A component of a shape's own key: `Slot::Own` of its place among
+    /// the shape's `own_keys`.
+    Own,
+}
+
+impl ShapeInfo {
+    /// The number of a part of this shape that a tolerance on `key` moves
+    /// (at `row` of a list of points, `component` of a vector), and the
+    /// factor from the key's value to it (a diameter moves a radius,
+    /// halved); `None` where no tolerance may stand. `common`: the keys
+    /// any part may have, where `Fill::Half` finds the key it halves.
+    pub fn slot(
+        &self,
+        key: &Key,
+        row: usize,
+        component: usize,
+        common: &[Key],
+    ) -> Option<(Slot, f64)> {
+        let c = component.min(2) as u8;
+        let r = row.min(2) as u8;
+        let sized = self.sizes.contains(&key.name);
+        let slot = match key.fill {
+            Fill::No => return None,
+            Fill::Mass => Slot::Mass,
+            Fill::Density => {
+                self.density.filter(|d| d.key == key.name)?;
+                Slot::Mass
+            }
+            Fill::At => Slot::At(c),
+            Fill::To => Slot::To(c),
+            Fill::Edge => Slot::Edge(r, c),
+            Fill::Vertex => Slot::Vertex(r, c),
+            Fill::Size => sized.then_some(Slot::Size(c))?,
+            Fill::Dim(slot) => sized.then_some(slot)?,
+            Fill::Half(of) => {
+                let of = common.iter().find(|k| k.name == of)?;
+                let (slot, factor) = self.slot(of, row, component, common)?;
+                return Some((slot, 0.5 * factor));
+            }
+            Fill::Own => {
+                let own = self.shape.own_keys();
+                let i = own.iter().position(|k| k.name == key.name)?;
+                Slot::Own(i as u8, c)
+            }
+        };
+        Some((slot, 1.0))
     }
 }
 

@@ -44,22 +44,6 @@ pub enum Slot {
 }
 
 impl Slot {
-    /// The slot a dimension's key fills, by its name (`length`, `radius`,
-    /// `inner_radius`, `top_radius`, `top_inner_radius`, `tube_radius`,
-    /// `inner_tube_radius`); `None` for any other key.
-    pub fn of_dimension(key: &str) -> Option<Slot> {
-        Some(match key {
-            "length" => Slot::Length,
-            "radius" => Slot::Radius,
-            "inner_radius" => Slot::InnerRadius,
-            "top_radius" => Slot::TopRadius,
-            "top_inner_radius" => Slot::TopInnerRadius,
-            "tube_radius" => Slot::TubeRadius,
-            "inner_tube_radius" => Slot::InnerTubeRadius,
-            _ => return None,
-        })
-    }
-
     /// A coordinate of a point (a centre, a corner, an end, a vertex, an
     /// origin): where the origin is decides its value, so a percentage of
     /// it means nothing.

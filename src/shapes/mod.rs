@@ -34,7 +34,7 @@ pub use read::Reader;
 #[cfg(test)]
 pub use info::PROBE;
 pub use info::{
-    DensityKind, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
+    DensityKind, Fill, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
     Solid, Spanned, own_key,
 };
 

@@ -29,6 +29,7 @@ mod hostile;
 mod hostile_round_two;
 mod invariants;
 mod json_types;
+mod keys_docs;
 mod layers;
 mod leftovers;
 mod library;
