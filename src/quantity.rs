@@ -21,6 +21,9 @@
 
 use crate::units::Dim;
 
+mod value;
+pub use value::{Owned, Table, Value};
+
 /// A reported quantity; the order of `QUANTITIES`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Quantity {
@@ -80,6 +83,104 @@ impl Layout {
             Layout::Scalar => 1,
             Layout::Vector | Layout::Ordered => 3,
             Layout::Matrix | Layout::Axes => 9,
+        }
+    }
+}
+
+/// The point a quantity is about.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum About {
+    /// The centre of mass.
+    Centre,
+    /// The reference point (`about`; the centre of mass without one).
+    Point,
+}
+
+/// How a quantity's value and its error bound are formed
+/// (`analysis::summary::formed`), from the composed body. The order of
+/// the variants is the order in which values are formed and checked
+/// (which of two failures is reported).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub enum Formed {
+    /// The composed mass; bounded by the composer's mass bound.
+    Mass,
+    /// The centre of mass, a point in the file's frame; bounded by the
+    /// composer's centre bound.
+    Centre,
+    /// The reference point: given (then bounded by its rounding to SI),
+    /// or the centre of mass (then its bound).
+    Point,
+    /// The centre of mass from the reference point, c − p, report axes;
+    /// bounded by the centre's bound and the difference's rounding.
+    Offset,
+    /// The report axes' rows, given: exact.
+    Frame,
+    /// The inertia tensor about the point, report axes; bounded from the
+    /// second moment's bound (`bounds::inertia_of`).
+    Tensor(About),
+    /// The principal moments and axes about the point; bounded from the
+    /// second moment's bound and the gaps between the moments
+    /// (`bounds::eigen`; an axis's bound an angle).
+    Moments(About),
+    Axes(About),
+    /// √(Iᵢ/m) of the principal moments about the point; bounded from the
+    /// moments' and the mass's bounds (`bounds::radius`).
+    Radii(About),
+    /// √(I_jj/m) about the report axes through the point; bounded from the
+    /// tensor's diagonal and the mass's bounds (`bounds::radius`).
+    RadiiAxes(About),
+    /// ω and α as given: exact.
+    Omega,
+    Alpha,
+    /// H = I ω, T = ½ ωᵀ I ω and M = I α + ω × H about the reference point;
+    /// bounded from the tensor's bound (`bounds::dynamics`).
+    Momentum,
+    Energy,
+    EulerMoment,
+    /// The predicted body's quantity (its own summary's): not bounded.
+    Predicted(Quantity),
+}
+
+impl Formed {
+    /// Whether a value so formed has an error bound (a value given, the
+    /// predicted body's, has none).
+    pub fn bounded(self) -> bool {
+        match self {
+            Formed::Mass
+            | Formed::Centre
+            | Formed::Point
+            | Formed::Offset
+            | Formed::Tensor(_)
+            | Formed::Moments(_)
+            | Formed::Axes(_)
+            | Formed::Radii(_)
+            | Formed::RadiiAxes(_)
+            | Formed::Momentum
+            | Formed::Energy
+            | Formed::EulerMoment => true,
+            Formed::Frame | Formed::Omega | Formed::Alpha | Formed::Predicted(_) => false,
+        }
+    }
+
+    /// The predicted body's quantity that a quantity so formed is.
+    pub fn predicted(self) -> Option<Quantity> {
+        match self {
+            Formed::Predicted(q) => Some(q),
+            Formed::Mass
+            | Formed::Centre
+            | Formed::Point
+            | Formed::Offset
+            | Formed::Frame
+            | Formed::Tensor(_)
+            | Formed::Moments(_)
+            | Formed::Axes(_)
+            | Formed::Radii(_)
+            | Formed::RadiiAxes(_)
+            | Formed::Omega
+            | Formed::Alpha
+            | Formed::Momentum
+            | Formed::Energy
+            | Formed::EulerMoment => None,
         }
     }
 }
@@ -186,6 +287,8 @@ pub struct Info {
     /// Its SI unit as the JSON names it (`units`; ASCII).
     pub unit: &'static str,
     pub layout: Layout,
+    /// How its value and its bound are formed.
+    pub formed: Formed,
     /// Whether `[expect]` takes it (the values given, and those about the
     /// reference point, it does not).
     pub expected: bool,
@@ -219,6 +322,7 @@ const fn row(
     key: &'static str,
     (dim, unit): (Dim, &'static str),
     layout: Layout,
+    formed: Formed,
 ) -> Info {
     Info {
         quantity,
@@ -227,6 +331,7 @@ const fn row(
         dim,
         unit,
         layout,
+        formed,
         expected: true,
         compare: Compare::Bound,
         needs: Needs::Nothing,
@@ -247,10 +352,11 @@ const fn reported(
     key: &'static str,
     dim: (Dim, &'static str),
     layout: Layout,
+    formed: Formed,
 ) -> Info {
     Info {
         expected: false,
-        ..row(quantity, key, dim, layout)
+        ..row(quantity, key, dim, layout, formed)
     }
 }
 
@@ -271,7 +377,7 @@ pub const QUANTITIES: [Info; 22] = [
         report: Some(0),
         bound: Some(0),
         judge: Judge::Each(6, Scale::Own),
-        ..row(Quantity::Mass, "mass", MASS, Layout::Scalar)
+        ..row(Quantity::Mass, "mass", MASS, Layout::Scalar, Formed::Mass)
     },
     Info {
         label: "centre of mass ",
@@ -286,6 +392,7 @@ pub const QUANTITIES: [Info; 22] = [
             "center_of_mass",
             LENGTH,
             Layout::Vector,
+            Formed::Centre,
         )
     },
     Info {
@@ -301,6 +408,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_moments",
             INERTIA,
             Layout::Ordered,
+            Formed::Moments(About::Centre),
         )
     },
     Info {
@@ -310,13 +418,25 @@ pub const QUANTITIES: [Info; 22] = [
         report: Some(5),
         bound: Some(3),
         judge: Judge::Whole(2, Scale::Moment),
-        ..row(Quantity::InertiaCom, "inertia_com", INERTIA, Layout::Matrix)
+        ..row(
+            Quantity::InertiaCom,
+            "inertia_com",
+            INERTIA,
+            Layout::Matrix,
+            Formed::Tensor(About::Centre),
+        )
     },
     Info {
         report: Some(6),
         bound: Some(4),
         judge: Judge::Whole(3, Scale::Moment),
-        ..row(Quantity::InertiaRef, "inertia_ref", INERTIA, Layout::Matrix)
+        ..row(
+            Quantity::InertiaRef,
+            "inertia_ref",
+            INERTIA,
+            Layout::Matrix,
+            Formed::Tensor(About::Point),
+        )
     },
     Info {
         report: Some(11),
@@ -327,6 +447,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration",
             LENGTH,
             Layout::Ordered,
+            Formed::Radii(About::Centre),
         )
     },
     Info {
@@ -338,6 +459,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration_axes",
             LENGTH,
             Layout::Vector,
+            Formed::RadiiAxes(About::Centre),
         )
     },
     Info {
@@ -350,6 +472,7 @@ pub const QUANTITIES: [Info; 22] = [
             "angular_momentum",
             (Dim::ANGULAR_MOMENTUM, "N*m*s"),
             Layout::Vector,
+            Formed::Momentum,
         )
     },
     Info {
@@ -363,6 +486,7 @@ pub const QUANTITIES: [Info; 22] = [
             "kinetic_energy",
             (Dim::ENERGY, "J"),
             Layout::Scalar,
+            Formed::Energy,
         )
     },
     Info {
@@ -374,6 +498,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_mass",
             MASS,
             Layout::Scalar,
+            Formed::Predicted(Quantity::Mass),
         )
     },
     Info {
@@ -384,6 +509,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_center_of_mass",
             LENGTH,
             Layout::Vector,
+            Formed::Predicted(Quantity::CenterOfMass),
         )
     },
     Info {
@@ -394,6 +520,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_inertia_com",
             INERTIA,
             Layout::Matrix,
+            Formed::Predicted(Quantity::InertiaCom),
         )
     },
     Info {
@@ -410,6 +537,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_axes",
             NUMBER,
             Layout::Axes,
+            Formed::Axes(About::Centre),
         )
     },
     Info {
@@ -420,6 +548,7 @@ pub const QUANTITIES: [Info; 22] = [
             "reference_point",
             LENGTH,
             Layout::Vector,
+            Formed::Point,
         )
     },
     Info {
@@ -431,12 +560,19 @@ pub const QUANTITIES: [Info; 22] = [
             "center_of_mass_ref",
             LENGTH,
             Layout::Vector,
+            Formed::Offset,
         )
     },
     // Rows, not a symmetric matrix; never compared.
     Info {
         report: Some(4),
-        ..reported(Quantity::ReportAxes, "axes", NUMBER, Layout::Matrix)
+        ..reported(
+            Quantity::ReportAxes,
+            "axes",
+            NUMBER,
+            Layout::Matrix,
+            Formed::Frame,
+        )
     },
     Info {
         report: Some(9),
@@ -447,6 +583,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_moments_ref",
             INERTIA,
             Layout::Ordered,
+            Formed::Moments(About::Point),
         )
     },
     Info {
@@ -459,6 +596,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_axes_ref",
             NUMBER,
             Layout::Axes,
+            Formed::Axes(About::Point),
         )
     },
     Info {
@@ -470,6 +608,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration_axes_ref",
             LENGTH,
             Layout::Vector,
+            Formed::RadiiAxes(About::Point),
         )
     },
     Info {
@@ -480,6 +619,7 @@ pub const QUANTITIES: [Info; 22] = [
             "omega",
             (Dim::ANGULAR_VELOCITY, "rad/s"),
             Layout::Vector,
+            Formed::Omega,
         )
     },
     Info {
@@ -490,6 +630,7 @@ pub const QUANTITIES: [Info; 22] = [
             "alpha",
             (Dim::ANGULAR_ACCELERATION, "rad/s^2"),
             Layout::Vector,
+            Formed::Alpha,
         )
     },
     // A moment has the dimension of an energy, but is not one: N·m.
@@ -503,6 +644,7 @@ pub const QUANTITIES: [Info; 22] = [
             "euler_moment",
             (Dim::ENERGY, "N*m"),
             Layout::Vector,
+            Formed::EulerMoment,
         )
     },
 ];
@@ -551,42 +693,6 @@ impl Judge {
         match self {
             Judge::No => None,
             Judge::Whole(n, _) | Judge::Each(n, _) | Judge::Angle(n) => Some(n),
-        }
-    }
-}
-
-/// A quantity's value, or its bound, as `Summary` and `ErrorBounds` hold
-/// it: its numbers in their shape, borrowed.
-#[derive(Debug, Clone, Copy)]
-pub enum Value<'a> {
-    Scalar(f64),
-    /// A vector, or an ordered triple (a set of axes' bound, an angle per
-    /// axis).
-    Triple(&'a [f64; 3]),
-    /// A matrix's rows.
-    Rows(&'a [[f64; 3]; 3]),
-    /// Axes' rows and the moments flagged equal (`Info::equal`).
-    Axes(&'a [[f64; 3]; 3], &'a [usize]),
-}
-
-impl Value<'_> {
-    /// Component `k` (row-major for rows).
-    pub fn component(self, k: usize) -> f64 {
-        match self {
-            Value::Scalar(x) => x,
-            Value::Triple(v) => v[k],
-            Value::Rows(m) | Value::Axes(m, _) => m[k / 3][k % 3],
-        }
-    }
-}
-
-/// Its numbers alone (a set of axes without its equal moments).
-impl serde::Serialize for Value<'_> {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self {
-            Value::Scalar(x) => x.serialize(s),
-            Value::Triple(v) => v.serialize(s),
-            Value::Rows(m) | Value::Axes(m, _) => m.serialize(s),
         }
     }
 }

@@ -13,33 +13,10 @@ impl Summary {
     /// (no ω, no α, no predicted body). The predicted body's quantities
     /// are its summary's (`load` makes it when the file expects them).
     pub fn reported(&self, q: Quantity) -> Option<Value<'_>> {
-        let predicted = || self.predicted.as_deref();
-        Some(match q {
-            Quantity::Mass => Value::Scalar(self.mass),
-            Quantity::CenterOfMass => Value::Triple(&self.center_of_mass),
-            Quantity::PrincipalMoments => Value::Triple(&self.principal_moments),
-            Quantity::InertiaCom => Value::Rows(&self.inertia_com),
-            Quantity::InertiaRef => Value::Rows(&self.inertia_ref),
-            Quantity::RadiiOfGyration => Value::Triple(&self.radii_of_gyration),
-            Quantity::RadiiOfGyrationAxes => Value::Triple(&self.radii_of_gyration_axes),
-            Quantity::AngularMomentum => Value::Triple(self.angular_momentum.as_ref()?),
-            Quantity::KineticEnergy => Value::Scalar(self.kinetic_energy?),
-            Quantity::PredictedMass => predicted()?.reported(Quantity::Mass)?,
-            Quantity::PredictedCenterOfMass => predicted()?.reported(Quantity::CenterOfMass)?,
-            Quantity::PredictedInertiaCom => predicted()?.reported(Quantity::InertiaCom)?,
-            Quantity::PrincipalAxes => Value::Axes(&self.principal_axes, &self.equal_moments),
-            Quantity::ReferencePoint => Value::Triple(&self.reference_point),
-            Quantity::CenterOfMassRef => Value::Triple(&self.center_of_mass_ref),
-            Quantity::ReportAxes => Value::Rows(&self.axes),
-            Quantity::PrincipalMomentsRef => Value::Triple(&self.principal_moments_ref),
-            Quantity::PrincipalAxesRef => {
-                Value::Axes(&self.principal_axes_ref, &self.equal_moments_ref)
-            }
-            Quantity::RadiiOfGyrationAxesRef => Value::Triple(&self.radii_of_gyration_axes_ref),
-            Quantity::Omega => Value::Triple(self.omega.as_ref()?),
-            Quantity::Alpha => Value::Triple(self.alpha.as_ref()?),
-            Quantity::EulerMoment => Value::Triple(self.euler_moment.as_ref()?),
-        })
+        match q.info().formed.predicted() {
+            Some(p) => self.predicted.as_deref()?.reported(p),
+            None => self.values.get(q),
+        }
     }
 
     /// The value an `[expect]` target reads, SI: component `k` of a
