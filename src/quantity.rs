@@ -1,10 +1,12 @@
 //! The reported quantities, each declared once: its key (in `[expect]`,
 //! in the JSON of `report` and `error_bounds`, in `check`'s and `diff`'s
-//! names), its dimension and shape, how `[expect]` compares it, what
-//! `--bless` writes for it, whether the uncertainty carries its σ, and how
-//! `diff` shows it. `model::expect` reads `[expect]` from this table,
-//! `analysis::check` compares by it, `analysis::uncertainty` names and
-//! places the σ outputs by it, `analysis::bless` and `analysis::diff`
+//! names), its dimension and shape, how its value and its error bound are
+//! formed (`Formed`), how `[expect]` compares it, what `--bless` writes
+//! for it, whether the uncertainty carries its σ, and how `diff` shows it.
+//! `analysis::summary` forms each value and bound as its row says and
+//! holds them by row (`Table`); `model::expect` reads `[expect]` from this
+//! table, `analysis::check` compares by it, `analysis::uncertainty` names
+//! and places the σ outputs by it, `analysis::bless` and `analysis::diff`
 //! follow it.
 //!
 //! The table also writes the JSON: `report`'s keys (`Summary`'s
@@ -13,11 +15,9 @@
 //!
 //! Adding a quantity (docs/architecture.md, "Adding a reported quantity"):
 //! a `Quantity` variant and its row in `QUANTITIES` (a test holds the row
-//! at the variant's position); its value, a field of `Summary` with its
-//! arm in `Summary::reported`, and its bound, a field of
-//! `bounds::ErrorBounds` with its arm in `ErrorBounds::of`, both formed in
-//! `analysis::summary`; the compiler asks for the arms (no `match` over
-//! quantities has a `_` arm), the rest follows from the row.
+//! at the variant's position); a new kind of value, a `Formed` variant
+//! and its arms in `analysis::summary::formed`. The compiler asks for the
+//! rest (no `match` over quantities has a `_` arm).
 
 use crate::units::Dim;
 
@@ -216,7 +216,8 @@ pub struct Info {
     pub equal: Option<&'static str>,
     /// Its place in `error_bounds` (`bounds::ErrorBounds`), which bounds it
     /// absolutely, component by component in its unit (a set of axes: an
-    /// angle per axis, radians); `None` for a value given, which is exact.
+    /// angle per axis, radians); `None` for a value given, which is exact
+    /// (`Some` exactly where `formed` is bounded: a test holds it).
     pub bound: Option<u8>,
     pub judge: Judge,
 }
