@@ -410,6 +410,7 @@ fn summarize_in(
         t,
         m,
         bounds: inputs,
+        eigen: Default::default(),
     };
 
     // Each quantity as its row says, in the order of `Formed` (which of

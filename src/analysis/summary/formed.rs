@@ -13,6 +13,7 @@ use crate::model::Analysis;
 use crate::numeric::{DD, M3, Real};
 use crate::quantity::{About, Formed, Owned};
 use nalgebra::Vector3;
+use std::cell::OnceCell;
 
 /// The composed body in SI, rounded where reported, and what its bounds
 /// are formed from. A pair is about the centre of mass and about the
@@ -39,6 +40,8 @@ pub(super) struct Body<'a> {
     pub t: Option<f64>,
     pub m: Option<[f64; 3]>,
     pub bounds: Inputs,
+    /// The eigen bounds per point, formed once (three rows read each).
+    pub eigen: [OnceCell<([f64; 3], [f64; 3])>; 2],
 }
 
 /// What the bounds are formed from: the composer's bounds (file units),
@@ -198,6 +201,10 @@ impl Body<'_> {
 
     /// The bounds of the principal moments and of the axes (angles).
     fn eigen_bound(&self, about: About) -> ([f64; 3], [f64; 3]) {
+        *at(&self.eigen, about).get_or_init(|| self.eigen_of(about))
+    }
+
+    fn eigen_of(&self, about: About) -> ([f64; 3], [f64; 3]) {
         let b = &self.bounds;
         let p = at(&self.principal, about);
         let e = bounds::eigen(
