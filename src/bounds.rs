@@ -23,7 +23,7 @@
 
 use crate::numeric::{DD, M3, Precision, Real};
 use crate::part::Own;
-use crate::quantity::{Quantity, Value};
+use crate::quantity::{Quantity, Table, Value};
 use nalgebra::Vector3;
 use serde::Serialize;
 
@@ -488,8 +488,12 @@ fn scaled_condition(c: &M3<f64>, e: &M3<f64>, coupled: &[usize]) -> Option<(f64,
 
 /// The error bounds of everything `report` prints, in SI, absolute: the
 /// same keys as the values they bound (docs/json.md). Axes as angles.
-/// Written (`Serialize`, below) by the quantity table, each in its place
-/// (`quantity::Info::bound`).
+/// Each quantity's bound is formed as its row of the quantity table says
+/// (`quantity::Formed`, `analysis::summary::formed`) and held by the row
+/// (`of`); the typed fields are copies of the bounds of the quantities
+/// reported when the JSON contract was fixed, for the library's users
+/// and the outputs that lay one out. Written (`Serialize`, below) by the
+/// quantity table, each in its place (`quantity::Info::bound`).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ErrorBounds {
     pub mass: f64,
@@ -510,36 +514,43 @@ pub struct ErrorBounds {
     pub angular_momentum: Option<[f64; 3]>,
     pub kinetic_energy: Option<f64>,
     pub euler_moment: Option<[f64; 3]>,
+    bounds: Table,
+}
+
+/// A bound every body has (its quantity needs nothing).
+fn must<T>(b: Option<T>) -> T {
+    b.expect("invariant: a bounded quantity that needs nothing is bounded for every body")
 }
 
 impl ErrorBounds {
+    /// The bounds, one per quantity by its row (`None` where it has none).
+    pub fn new(bounds: Table) -> ErrorBounds {
+        let triple = |q: Quantity| must(bounds.triple(q));
+        ErrorBounds {
+            mass: must(bounds.scalar(Quantity::Mass)),
+            center_of_mass: triple(Quantity::CenterOfMass),
+            reference_point: triple(Quantity::ReferencePoint),
+            inertia_com: must(bounds.rows(Quantity::InertiaCom)),
+            inertia_ref: must(bounds.rows(Quantity::InertiaRef)),
+            principal_moments: triple(Quantity::PrincipalMoments),
+            principal_axes: triple(Quantity::PrincipalAxes),
+            principal_moments_ref: triple(Quantity::PrincipalMomentsRef),
+            principal_axes_ref: triple(Quantity::PrincipalAxesRef),
+            radii_of_gyration: triple(Quantity::RadiiOfGyration),
+            radii_of_gyration_axes: triple(Quantity::RadiiOfGyrationAxes),
+            radii_of_gyration_axes_ref: triple(Quantity::RadiiOfGyrationAxesRef),
+            center_of_mass_ref: triple(Quantity::CenterOfMassRef),
+            angular_momentum: bounds.triple(Quantity::AngularMomentum),
+            kinetic_energy: bounds.scalar(Quantity::KineticEnergy),
+            euler_moment: bounds.triple(Quantity::EulerMoment),
+            bounds,
+        }
+    }
+
     /// The bound of quantity `q`; `None` for a value given (exact), one
     /// not computed (no ω, no α) or the predicted body's.
     pub fn of(&self, q: Quantity) -> Option<Value<'_>> {
-        Some(match q {
-            Quantity::Mass => Value::Scalar(self.mass),
-            Quantity::CenterOfMass => Value::Triple(&self.center_of_mass),
-            Quantity::ReferencePoint => Value::Triple(&self.reference_point),
-            Quantity::InertiaCom => Value::Rows(&self.inertia_com),
-            Quantity::InertiaRef => Value::Rows(&self.inertia_ref),
-            Quantity::PrincipalMoments => Value::Triple(&self.principal_moments),
-            Quantity::PrincipalAxes => Value::Triple(&self.principal_axes),
-            Quantity::PrincipalMomentsRef => Value::Triple(&self.principal_moments_ref),
-            Quantity::PrincipalAxesRef => Value::Triple(&self.principal_axes_ref),
-            Quantity::RadiiOfGyration => Value::Triple(&self.radii_of_gyration),
-            Quantity::RadiiOfGyrationAxes => Value::Triple(&self.radii_of_gyration_axes),
-            Quantity::RadiiOfGyrationAxesRef => Value::Triple(&self.radii_of_gyration_axes_ref),
-            Quantity::CenterOfMassRef => Value::Triple(&self.center_of_mass_ref),
-            Quantity::AngularMomentum => Value::Triple(self.angular_momentum.as_ref()?),
-            Quantity::KineticEnergy => Value::Scalar(self.kinetic_energy?),
-            Quantity::EulerMoment => Value::Triple(self.euler_moment.as_ref()?),
-            Quantity::ReportAxes
-            | Quantity::Omega
-            | Quantity::Alpha
-            | Quantity::PredictedMass
-            | Quantity::PredictedCenterOfMass
-            | Quantity::PredictedInertiaCom => return None,
-        })
+        self.bounds.get(q)
     }
 }
 

@@ -1,10 +1,12 @@
 //! The reported quantities, each declared once: its key (in `[expect]`,
 //! in the JSON of `report` and `error_bounds`, in `check`'s and `diff`'s
-//! names), its dimension and shape, how `[expect]` compares it, what
-//! `--bless` writes for it, whether the uncertainty carries its σ, and how
-//! `diff` shows it. `model::expect` reads `[expect]` from this table,
-//! `analysis::check` compares by it, `analysis::uncertainty` names and
-//! places the σ outputs by it, `analysis::bless` and `analysis::diff`
+//! names), its dimension and shape, how its value and its error bound are
+//! formed (`Formed`), how `[expect]` compares it, what `--bless` writes
+//! for it, whether the uncertainty carries its σ, and how `diff` shows it.
+//! `analysis::summary` forms each value and bound as its row says and
+//! holds them by row (`Table`); `model::expect` reads `[expect]` from this
+//! table, `analysis::check` compares by it, `analysis::uncertainty` names
+//! and places the σ outputs by it, `analysis::bless` and `analysis::diff`
 //! follow it.
 //!
 //! The table also writes the JSON: `report`'s keys (`Summary`'s
@@ -13,13 +15,16 @@
 //!
 //! Adding a quantity (docs/architecture.md, "Adding a reported quantity"):
 //! a `Quantity` variant and its row in `QUANTITIES` (a test holds the row
-//! at the variant's position); its value, a field of `Summary` with its
-//! arm in `Summary::reported`, and its bound, a field of
-//! `bounds::ErrorBounds` with its arm in `ErrorBounds::of`, both formed in
-//! `analysis::summary`; the compiler asks for the arms (no `match` over
-//! quantities has a `_` arm), the rest follows from the row.
+//! at the variant's position); a new kind of value, a `Formed` variant
+//! and its arms in `analysis::summary::formed`. The compiler asks for the
+//! rest (no `match` over quantities has a `_` arm).
 
 use crate::units::Dim;
+
+mod formed;
+mod value;
+pub use formed::{About, Formed};
+pub use value::{Owned, Table, Value};
 
 /// A reported quantity; the order of `QUANTITIES`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -186,6 +191,8 @@ pub struct Info {
     /// Its SI unit as the JSON names it (`units`; ASCII).
     pub unit: &'static str,
     pub layout: Layout,
+    /// How its value and its bound are formed.
+    pub formed: Formed,
     /// Whether `[expect]` takes it (the values given, and those about the
     /// reference point, it does not).
     pub expected: bool,
@@ -209,7 +216,8 @@ pub struct Info {
     pub equal: Option<&'static str>,
     /// Its place in `error_bounds` (`bounds::ErrorBounds`), which bounds it
     /// absolutely, component by component in its unit (a set of axes: an
-    /// angle per axis, radians); `None` for a value given, which is exact.
+    /// angle per axis, radians); `None` for a value given, which is exact
+    /// (`Some` exactly where `formed` is bounded: a test holds it).
     pub bound: Option<u8>,
     pub judge: Judge,
 }
@@ -219,6 +227,7 @@ const fn row(
     key: &'static str,
     (dim, unit): (Dim, &'static str),
     layout: Layout,
+    formed: Formed,
 ) -> Info {
     Info {
         quantity,
@@ -227,6 +236,7 @@ const fn row(
         dim,
         unit,
         layout,
+        formed,
         expected: true,
         compare: Compare::Bound,
         needs: Needs::Nothing,
@@ -247,10 +257,11 @@ const fn reported(
     key: &'static str,
     dim: (Dim, &'static str),
     layout: Layout,
+    formed: Formed,
 ) -> Info {
     Info {
         expected: false,
-        ..row(quantity, key, dim, layout)
+        ..row(quantity, key, dim, layout, formed)
     }
 }
 
@@ -271,7 +282,7 @@ pub const QUANTITIES: [Info; 22] = [
         report: Some(0),
         bound: Some(0),
         judge: Judge::Each(6, Scale::Own),
-        ..row(Quantity::Mass, "mass", MASS, Layout::Scalar)
+        ..row(Quantity::Mass, "mass", MASS, Layout::Scalar, Formed::Mass)
     },
     Info {
         label: "centre of mass ",
@@ -286,6 +297,7 @@ pub const QUANTITIES: [Info; 22] = [
             "center_of_mass",
             LENGTH,
             Layout::Vector,
+            Formed::Centre,
         )
     },
     Info {
@@ -301,6 +313,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_moments",
             INERTIA,
             Layout::Ordered,
+            Formed::Moments(About::Centre),
         )
     },
     Info {
@@ -310,13 +323,25 @@ pub const QUANTITIES: [Info; 22] = [
         report: Some(5),
         bound: Some(3),
         judge: Judge::Whole(2, Scale::Moment),
-        ..row(Quantity::InertiaCom, "inertia_com", INERTIA, Layout::Matrix)
+        ..row(
+            Quantity::InertiaCom,
+            "inertia_com",
+            INERTIA,
+            Layout::Matrix,
+            Formed::Tensor(About::Centre),
+        )
     },
     Info {
         report: Some(6),
         bound: Some(4),
         judge: Judge::Whole(3, Scale::Moment),
-        ..row(Quantity::InertiaRef, "inertia_ref", INERTIA, Layout::Matrix)
+        ..row(
+            Quantity::InertiaRef,
+            "inertia_ref",
+            INERTIA,
+            Layout::Matrix,
+            Formed::Tensor(About::Point),
+        )
     },
     Info {
         report: Some(11),
@@ -327,6 +352,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration",
             LENGTH,
             Layout::Ordered,
+            Formed::Radii(About::Centre),
         )
     },
     Info {
@@ -338,6 +364,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration_axes",
             LENGTH,
             Layout::Vector,
+            Formed::RadiiAxes(About::Centre),
         )
     },
     Info {
@@ -350,6 +377,7 @@ pub const QUANTITIES: [Info; 22] = [
             "angular_momentum",
             (Dim::ANGULAR_MOMENTUM, "N*m*s"),
             Layout::Vector,
+            Formed::Momentum,
         )
     },
     Info {
@@ -363,6 +391,7 @@ pub const QUANTITIES: [Info; 22] = [
             "kinetic_energy",
             (Dim::ENERGY, "J"),
             Layout::Scalar,
+            Formed::Energy,
         )
     },
     Info {
@@ -374,6 +403,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_mass",
             MASS,
             Layout::Scalar,
+            Formed::Predicted(Quantity::Mass),
         )
     },
     Info {
@@ -384,6 +414,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_center_of_mass",
             LENGTH,
             Layout::Vector,
+            Formed::Predicted(Quantity::CenterOfMass),
         )
     },
     Info {
@@ -394,6 +425,7 @@ pub const QUANTITIES: [Info; 22] = [
             "predicted_inertia_com",
             INERTIA,
             Layout::Matrix,
+            Formed::Predicted(Quantity::InertiaCom),
         )
     },
     Info {
@@ -410,6 +442,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_axes",
             NUMBER,
             Layout::Axes,
+            Formed::Axes(About::Centre),
         )
     },
     Info {
@@ -420,6 +453,7 @@ pub const QUANTITIES: [Info; 22] = [
             "reference_point",
             LENGTH,
             Layout::Vector,
+            Formed::Point,
         )
     },
     Info {
@@ -431,12 +465,19 @@ pub const QUANTITIES: [Info; 22] = [
             "center_of_mass_ref",
             LENGTH,
             Layout::Vector,
+            Formed::Offset,
         )
     },
     // Rows, not a symmetric matrix; never compared.
     Info {
         report: Some(4),
-        ..reported(Quantity::ReportAxes, "axes", NUMBER, Layout::Matrix)
+        ..reported(
+            Quantity::ReportAxes,
+            "axes",
+            NUMBER,
+            Layout::Matrix,
+            Formed::Frame,
+        )
     },
     Info {
         report: Some(9),
@@ -447,6 +488,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_moments_ref",
             INERTIA,
             Layout::Ordered,
+            Formed::Moments(About::Point),
         )
     },
     Info {
@@ -459,6 +501,7 @@ pub const QUANTITIES: [Info; 22] = [
             "principal_axes_ref",
             NUMBER,
             Layout::Axes,
+            Formed::Axes(About::Point),
         )
     },
     Info {
@@ -470,6 +513,7 @@ pub const QUANTITIES: [Info; 22] = [
             "radii_of_gyration_axes_ref",
             LENGTH,
             Layout::Vector,
+            Formed::RadiiAxes(About::Point),
         )
     },
     Info {
@@ -480,6 +524,7 @@ pub const QUANTITIES: [Info; 22] = [
             "omega",
             (Dim::ANGULAR_VELOCITY, "rad/s"),
             Layout::Vector,
+            Formed::Omega,
         )
     },
     Info {
@@ -490,6 +535,7 @@ pub const QUANTITIES: [Info; 22] = [
             "alpha",
             (Dim::ANGULAR_ACCELERATION, "rad/s^2"),
             Layout::Vector,
+            Formed::Alpha,
         )
     },
     // A moment has the dimension of an energy, but is not one: N·m.
@@ -503,6 +549,7 @@ pub const QUANTITIES: [Info; 22] = [
             "euler_moment",
             (Dim::ENERGY, "N*m"),
             Layout::Vector,
+            Formed::EulerMoment,
         )
     },
 ];
@@ -551,42 +598,6 @@ impl Judge {
         match self {
             Judge::No => None,
             Judge::Whole(n, _) | Judge::Each(n, _) | Judge::Angle(n) => Some(n),
-        }
-    }
-}
-
-/// A quantity's value, or its bound, as `Summary` and `ErrorBounds` hold
-/// it: its numbers in their shape, borrowed.
-#[derive(Debug, Clone, Copy)]
-pub enum Value<'a> {
-    Scalar(f64),
-    /// A vector, or an ordered triple (a set of axes' bound, an angle per
-    /// axis).
-    Triple(&'a [f64; 3]),
-    /// A matrix's rows.
-    Rows(&'a [[f64; 3]; 3]),
-    /// Axes' rows and the moments flagged equal (`Info::equal`).
-    Axes(&'a [[f64; 3]; 3], &'a [usize]),
-}
-
-impl Value<'_> {
-    /// Component `k` (row-major for rows).
-    pub fn component(self, k: usize) -> f64 {
-        match self {
-            Value::Scalar(x) => x,
-            Value::Triple(v) => v[k],
-            Value::Rows(m) | Value::Axes(m, _) => m[k / 3][k % 3],
-        }
-    }
-}
-
-/// Its numbers alone (a set of axes without its equal moments).
-impl serde::Serialize for Value<'_> {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match self {
-            Value::Scalar(x) => x.serialize(s),
-            Value::Triple(v) => v.serialize(s),
-            Value::Rows(m) | Value::Axes(m, _) => m.serialize(s),
         }
     }
 }

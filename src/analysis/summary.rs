@@ -5,6 +5,7 @@
 pub mod accuracy;
 mod axes;
 mod cut_outs;
+mod formed;
 mod reported;
 mod rows;
 
@@ -21,7 +22,7 @@ use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
 use crate::part::SiFactors;
-use crate::quantity::{Quantity, unit};
+use crate::quantity::{Info, QUANTITIES, Quantity, Table, unit};
 use crate::units::Dim;
 use crate::units::FileUnits;
 use nalgebra::Vector3;
@@ -184,22 +185,16 @@ pub struct Summary {
     pub reference_given: bool,
     /// The file's units, for the table.
     pub file_units: FileUnits,
+    /// Every quantity's value, by its row of `quantity::QUANTITIES`
+    /// (`Summary::reported` reads it; the typed fields above are copies
+    /// of the quantities reported when the JSON contract was fixed, for the
+    /// library's users and the outputs that lay one out); the predicted
+    /// body's are its own summary's.
+    pub values: Table,
     /// The predicted body's summary (basic mass and growth,
     /// `analysis::budget`), made by `load` only for a file that expects
     /// something of it (`predicted_mass`, …).
     pub predicted: Option<Box<Summary>>,
-}
-
-fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
-    let sign = match products {
-        Products::Tensor => 1.0,
-        Products::Positive => -1.0,
-    };
-    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { m[i][j] } else { sign * m[i][j] }))
-}
-
-fn arr(v: &Vector3<f64>) -> [f64; 3] {
-    [v.x, v.y, v.z]
 }
 
 fn finite(v: &[f64], what: &'static str, blame: Blame) -> Result<(), SummaryError> {
@@ -208,6 +203,11 @@ fn finite(v: &[f64], what: &'static str, blame: Blame) -> Result<(), SummaryErro
     } else {
         Err(SummaryError::NotFinite { what, blame })
     }
+}
+
+/// A value every body has (its row needs nothing).
+fn must<T>(v: Option<T>) -> T {
+    v.expect("invariant: a quantity that needs nothing is formed for every body")
 }
 
 /// Compose the model's parts and derive everything reported. `analysis`
@@ -316,41 +316,6 @@ fn summarize_in(
         "principal moments about the reference point",
         Blame::About,
     )?;
-    // √I / √m, not √(I/m): the ratio alone can overflow or underflow where
-    // the radius itself is an ordinary number.
-    let radii = p_com
-        .moments
-        .map(|i| ((i * f_inertia).sqrt() / mass_dd.sqrt()).f64());
-    finite(
-        &radii,
-        "radii of gyration",
-        Blame::Parts(Contribution::SecondMoment),
-    )?;
-    // About the axes: each diagonal entry (≥ 0, but for rounding) alike.
-    let along_axes = |i: &M3<DD>| {
-        std::array::from_fn::<f64, 3, _>(|k| {
-            let d = if i[k][k] < DD::of(0.0) {
-                DD::of(0.0)
-            } else {
-                i[k][k]
-            };
-            (d.sqrt() / mass_dd.sqrt()).f64()
-        })
-    };
-    let (radii_axes, radii_axes_ref) = (along_axes(&i_com), along_axes(&i_ref));
-    finite(
-        &radii_axes,
-        "radii of gyration about the axes",
-        Blame::Parts(Contribution::SecondMoment),
-    )?;
-    finite(
-        &radii_axes_ref,
-        "radii of gyration about the axes through the reference point",
-        Blame::About,
-    )?;
-    let axes = |p: &Principal| p.axes.map(|a| arr(&a));
-    let shares = ideal::Shares::new(&body, &p_file);
-    let idealisation = ideal::idealisation(model, &body, &p_file, precision, f_inertia)?;
 
     let times = |m: &M3<DD>, v: &Vector3<f64>| -> [DD; 3] {
         std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
@@ -374,20 +339,9 @@ fn summarize_in(
             };
             std::array::from_fn::<f64, 3, _>(|i| (ia[i] + cross(i)).f64())
         });
-    let h = h.map(|h| h.map(DD::f64));
-    if let Some(h) = &h {
-        finite(h, "angular momentum", Blame::Omega)?;
-    }
-    finite(&[t.unwrap_or(0.0)], "kinetic energy", Blame::Omega)?;
-    if let Some(m) = &m {
-        finite(m, "Euler moment", Blame::Alpha)?;
-    }
 
-    let error_bounds = {
+    let inputs = {
         let f = |x: DD| x.f64();
-        let (f_m, f_l, f_i) = (f(f_mass), f(f_length), f(f_inertia));
-        let si = |b: f64, factor: f64, v: f64| bounds::to_si(b, factor, v);
-        let com_b: [f64; 3] = std::array::from_fn(|j| si(error.center_of_mass[j], f_l, com[j]));
         let c_about_file = c_ref_file.map(|r| r.map(f));
         let offset_f = offset.map(f);
         // About the centre of mass itself (no point given), the exact
@@ -422,59 +376,61 @@ fn summarize_in(
             }),
             Precision::Extended => e_ref,
         };
-        let tensor = |e: &M3<f64>, v: &M3<f64>| -> [[f64; 3]; 3] {
-            let e = bounds::inertia_of(e);
-            std::array::from_fn(|j| std::array::from_fn(|k| si(e[j][k], f_i, v[j][k])))
-        };
-        let eigen = |c: &M3<f64>, e: &M3<f64>, p: &Principal, values: &[f64; 3]| {
-            let b = bounds::eigen(c, e, &p.solved(), precision);
-            (
-                std::array::from_fn::<f64, 3, _>(|i| si(b.moments[i], f_i, values[i])),
-                b.axes,
-            )
-        };
-        let (moments_b, axes_b) = eigen(&c_com, &e_com, &p_com, &m_com);
-        let (moments_ref_b, axes_ref_b) = eigen(&c_about, &e_solved, &p_ref, &m_ref);
-        let mass_b = si(error.mass, f_m, mass);
-        let inertia_com = tensor(&e_com, &i_com_f);
-        let inertia_ref = tensor(&e_ref, &i_ref_f);
-        let along_axes = |k: &[f64; 3], i: &M3<f64>, e: &M3<f64>| {
-            std::array::from_fn(|j| bounds::radius(k[j], i[j][j], e[j][j], mass, mass_b))
-        };
-        let dynamics = analysis.omega.zip(h).map(|(w, h)| {
-            bounds::dynamics(
-                &inertia_ref,
-                arr(&w),
-                analysis.alpha.as_ref().map(arr),
-                h,
-                t.unwrap_or(0.0),
-                m,
-            )
-        });
-        bounds::ErrorBounds {
-            mass: mass_b,
-            center_of_mass: com_b,
-            reference_point: match analysis.about {
-                Some(_) => reference.map(|x| bounds::U64 * x.abs()),
-                None => com_b,
-            },
-            center_of_mass_ref: std::array::from_fn(|j| si(e_offset[j], f_l, com_ref[j])),
-            radii_of_gyration_axes: along_axes(&radii_axes, &i_com_f, &inertia_com),
-            radii_of_gyration_axes_ref: along_axes(&radii_axes_ref, &i_ref_f, &inertia_ref),
-            inertia_com,
-            inertia_ref,
-            principal_moments: moments_b,
-            principal_axes: axes_b,
-            principal_moments_ref: moments_ref_b,
-            principal_axes_ref: axes_ref_b,
-            radii_of_gyration: std::array::from_fn(|i| {
-                bounds::radius(radii[i], m_com[i], moments_b[i], mass, mass_b)
-            }),
-            angular_momentum: dynamics.map(|d| d.0),
-            kinetic_energy: dynamics.map(|d| d.1),
-            euler_moment: dynamics.and_then(|d| d.2),
+        formed::Inputs {
+            error,
+            f_mass: f(f_mass),
+            f_length: f(f_length),
+            f_inertia: f(f_inertia),
+            offset: e_offset,
+            tensor: [e_com, e_ref],
+            solved: [e_com, e_solved],
+            second_moment: [c_com, c_about],
         }
     };
+    let shares = ideal::Shares::new(&body, &p_file);
+    let formed = formed::Body {
+        analysis,
+        products,
+        precision,
+        mass_dd,
+        f_inertia,
+        mass,
+        com,
+        reference,
+        com_ref,
+        frame: turn.as_ref().map_or(
+            std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j)))),
+            |t| t.rows,
+        ),
+        inertia: [i_com, i_ref],
+        inertia_f: [i_com_f, i_ref_f],
+        principal: [p_com, p_ref],
+        moments: [m_com, m_ref],
+        h: h.map(|h| h.map(DD::f64)),
+        t,
+        m,
+        bounds: inputs,
+        eigen: Default::default(),
+    };
+
+    // Each quantity as its row says, in the order of `Formed` (which of
+    // two failures is reported); what the body turning adds after the
+    // idealisation.
+    let mut values = Table::default();
+    let mut order: Vec<&Info> = QUANTITIES.iter().collect();
+    order.sort_by_key(|i| i.formed);
+    let (turning, still): (Vec<&Info>, Vec<&Info>) = order.into_iter().partition(|i| i.turning());
+    for info in still {
+        values.set(info.quantity, formed.value(info.formed)?);
+    }
+    let idealisation = ideal::idealisation(model, &body, &p_file, precision, f_inertia)?;
+    for info in turning {
+        values.set(info.quantity, formed.value(info.formed)?);
+    }
+    let mut error_bounds = Table::default();
+    for info in &QUANTITIES {
+        error_bounds.set(info.quantity, formed.bound(info.formed));
+    }
 
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
@@ -491,41 +447,39 @@ fn summarize_in(
         products_convention: products,
         units: SI_UNITS,
         precision,
-        mass,
-        center_of_mass: com,
-        reference_point: reference,
-        center_of_mass_ref: com_ref,
-        axes: turn.as_ref().map_or(
-            std::array::from_fn(|i| std::array::from_fn(|j| f64::from(u8::from(i == j)))),
-            |t| t.rows,
-        ),
-        inertia_com: rows(&i_com_f, products),
-        inertia_ref: rows(&i_ref_f, products),
-        principal_moments: m_com,
-        principal_axes: axes(&p_com),
-        equal_moments: p_com.equal.clone(),
-        principal_moments_ref: m_ref,
-        principal_axes_ref: axes(&p_ref),
-        equal_moments_ref: p_ref.equal.clone(),
-        radii_of_gyration: radii,
-        radii_of_gyration_axes: radii_axes,
-        radii_of_gyration_axes_ref: radii_axes_ref,
         parts: Parts(made_from.clone()),
         assemblies: Assemblies(made_from),
-        omega: analysis.omega.as_ref().map(arr),
-        angular_momentum: h,
-        kinetic_energy: t,
-        alpha: analysis.alpha.as_ref().map(arr),
-        euler_moment: m,
         idealisation,
         uncertainty: None,
-        error_bounds,
+        error_bounds: bounds::ErrorBounds::new(error_bounds),
         rtol: 0.0,
         accuracy_warnings: Vec::new(),
         requested: PrecisionChoice::Auto,
         reference_given: analysis.about.is_some(),
         file_units: model.units,
         predicted: None,
+        mass: must(values.scalar(Quantity::Mass)),
+        center_of_mass: must(values.triple(Quantity::CenterOfMass)),
+        reference_point: must(values.triple(Quantity::ReferencePoint)),
+        center_of_mass_ref: must(values.triple(Quantity::CenterOfMassRef)),
+        axes: must(values.rows(Quantity::ReportAxes)),
+        inertia_com: must(values.rows(Quantity::InertiaCom)),
+        inertia_ref: must(values.rows(Quantity::InertiaRef)),
+        principal_moments: must(values.triple(Quantity::PrincipalMoments)),
+        principal_axes: must(values.rows(Quantity::PrincipalAxes)),
+        equal_moments: must(values.equal(Quantity::PrincipalAxes)),
+        principal_moments_ref: must(values.triple(Quantity::PrincipalMomentsRef)),
+        principal_axes_ref: must(values.rows(Quantity::PrincipalAxesRef)),
+        equal_moments_ref: must(values.equal(Quantity::PrincipalAxesRef)),
+        radii_of_gyration: must(values.triple(Quantity::RadiiOfGyration)),
+        radii_of_gyration_axes: must(values.triple(Quantity::RadiiOfGyrationAxes)),
+        radii_of_gyration_axes_ref: must(values.triple(Quantity::RadiiOfGyrationAxesRef)),
+        omega: values.triple(Quantity::Omega),
+        angular_momentum: values.triple(Quantity::AngularMomentum),
+        kinetic_energy: values.scalar(Quantity::KineticEnergy),
+        alpha: values.triple(Quantity::Alpha),
+        euler_moment: values.triple(Quantity::EulerMoment),
+        values,
     })
 }
 

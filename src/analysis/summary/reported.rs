@@ -13,33 +13,10 @@ impl Summary {
     /// (no ω, no α, no predicted body). The predicted body's quantities
     /// are its summary's (`load` makes it when the file expects them).
     pub fn reported(&self, q: Quantity) -> Option<Value<'_>> {
-        let predicted = || self.predicted.as_deref();
-        Some(match q {
-            Quantity::Mass => Value::Scalar(self.mass),
-            Quantity::CenterOfMass => Value::Triple(&self.center_of_mass),
-            Quantity::PrincipalMoments => Value::Triple(&self.principal_moments),
-            Quantity::InertiaCom => Value::Rows(&self.inertia_com),
-            Quantity::InertiaRef => Value::Rows(&self.inertia_ref),
-            Quantity::RadiiOfGyration => Value::Triple(&self.radii_of_gyration),
-            Quantity::RadiiOfGyrationAxes => Value::Triple(&self.radii_of_gyration_axes),
-            Quantity::AngularMomentum => Value::Triple(self.angular_momentum.as_ref()?),
-            Quantity::KineticEnergy => Value::Scalar(self.kinetic_energy?),
-            Quantity::PredictedMass => predicted()?.reported(Quantity::Mass)?,
-            Quantity::PredictedCenterOfMass => predicted()?.reported(Quantity::CenterOfMass)?,
-            Quantity::PredictedInertiaCom => predicted()?.reported(Quantity::InertiaCom)?,
-            Quantity::PrincipalAxes => Value::Axes(&self.principal_axes, &self.equal_moments),
-            Quantity::ReferencePoint => Value::Triple(&self.reference_point),
-            Quantity::CenterOfMassRef => Value::Triple(&self.center_of_mass_ref),
-            Quantity::ReportAxes => Value::Rows(&self.axes),
-            Quantity::PrincipalMomentsRef => Value::Triple(&self.principal_moments_ref),
-            Quantity::PrincipalAxesRef => {
-                Value::Axes(&self.principal_axes_ref, &self.equal_moments_ref)
-            }
-            Quantity::RadiiOfGyrationAxesRef => Value::Triple(&self.radii_of_gyration_axes_ref),
-            Quantity::Omega => Value::Triple(self.omega.as_ref()?),
-            Quantity::Alpha => Value::Triple(self.alpha.as_ref()?),
-            Quantity::EulerMoment => Value::Triple(self.euler_moment.as_ref()?),
-        })
+        match q.info().formed.predicted() {
+            Some(p) => self.predicted.as_deref()?.reported(p),
+            None => self.values.get(q),
+        }
     }
 
     /// The value an `[expect]` target reads, SI: component `k` of a
@@ -138,6 +115,78 @@ mod tests {
                 info.key
             );
         }
+    }
+
+    /// The typed fields are copies of the table's entries, value and bound.
+    #[test]
+    fn each_typed_field_is_its_quantitys_value_and_bound_in_the_table() {
+        let s = turning_box();
+        let b = &s.error_bounds;
+        let same = |q: Quantity, value: Value, bound: Option<Value>| {
+            let json = |v: Option<Value>| serde_json::to_string(&v).unwrap();
+            assert_eq!(json(s.reported(q)), json(Some(value)), "{q:?}");
+            assert_eq!(json(b.of(q)), json(bound), "{q:?}");
+        };
+        use Value::{Axes, Rows, Scalar, Triple};
+        same(Quantity::Mass, Scalar(s.mass), Some(Scalar(b.mass)));
+        let com = Some(Triple(&b.center_of_mass));
+        same(Quantity::CenterOfMass, Triple(&s.center_of_mass), com);
+        let point = Some(Triple(&b.reference_point));
+        same(Quantity::ReferencePoint, Triple(&s.reference_point), point);
+        let offset = Some(Triple(&b.center_of_mass_ref));
+        same(
+            Quantity::CenterOfMassRef,
+            Triple(&s.center_of_mass_ref),
+            offset,
+        );
+        same(Quantity::ReportAxes, Rows(&s.axes), None);
+        let i = Some(Rows(&b.inertia_com));
+        same(Quantity::InertiaCom, Rows(&s.inertia_com), i);
+        let i = Some(Rows(&b.inertia_ref));
+        same(Quantity::InertiaRef, Rows(&s.inertia_ref), i);
+        let m = Some(Triple(&b.principal_moments));
+        same(Quantity::PrincipalMoments, Triple(&s.principal_moments), m);
+        let m = Some(Triple(&b.principal_moments_ref));
+        same(
+            Quantity::PrincipalMomentsRef,
+            Triple(&s.principal_moments_ref),
+            m,
+        );
+        let a = Axes(&s.principal_axes, &s.equal_moments);
+        same(Quantity::PrincipalAxes, a, Some(Triple(&b.principal_axes)));
+        let a = Axes(&s.principal_axes_ref, &s.equal_moments_ref);
+        same(
+            Quantity::PrincipalAxesRef,
+            a,
+            Some(Triple(&b.principal_axes_ref)),
+        );
+        let k = Some(Triple(&b.radii_of_gyration));
+        same(Quantity::RadiiOfGyration, Triple(&s.radii_of_gyration), k);
+        let k = Some(Triple(&b.radii_of_gyration_axes));
+        same(
+            Quantity::RadiiOfGyrationAxes,
+            Triple(&s.radii_of_gyration_axes),
+            k,
+        );
+        let k = Some(Triple(&b.radii_of_gyration_axes_ref));
+        let v = Triple(&s.radii_of_gyration_axes_ref);
+        same(Quantity::RadiiOfGyrationAxesRef, v, k);
+        let (w, a) = (s.omega.unwrap(), s.alpha.unwrap());
+        same(Quantity::Omega, Triple(&w), None);
+        same(Quantity::Alpha, Triple(&a), None);
+        let (h, eh) = (s.angular_momentum.unwrap(), b.angular_momentum.unwrap());
+        same(Quantity::AngularMomentum, Triple(&h), Some(Triple(&eh)));
+        let (t, et) = (s.kinetic_energy.unwrap(), b.kinetic_energy.unwrap());
+        same(Quantity::KineticEnergy, Scalar(t), Some(Scalar(et)));
+        let (m, em) = (s.euler_moment.unwrap(), b.euler_moment.unwrap());
+        same(Quantity::EulerMoment, Triple(&m), Some(Triple(&em)));
+        // The equal moments too (the JSON of a set of axes is its rows).
+        assert_eq!(
+            s.values.equal(Quantity::PrincipalAxes).unwrap(),
+            s.equal_moments
+        );
+        let equal = s.values.equal(Quantity::PrincipalAxesRef).unwrap();
+        assert_eq!(equal, s.equal_moments_ref);
     }
 
     /// Read back by serde_json's parser; the keys' order is pinned by the

@@ -8,7 +8,7 @@
 //! `assemblies` (docs/json.md), walking the model as serde asks for each
 //! element; the table walks them the same way (`each`).
 
-use super::{AssemblySummary, PartSummary, arr};
+use super::{AssemblySummary, PartSummary, formed::arr};
 use crate::analysis::ideal::Shares;
 use crate::model::{Event, Item, Model};
 use crate::part::SiFactors;
