@@ -29,6 +29,12 @@ pub enum Orientation {
     /// The first turn applied after the second (R₁ R₂): a part of an
     /// included sub-assembly, turned with it.
     Then(Box<Orientation>, Box<Orientation>),
+    /// The report axes given as two directions (`[analysis] axes = { x, y }`,
+    /// any lengths, perpendicular to `MATRIX_TOLERANCE`): columns x/|x|,
+    /// y/|y| and their cross product, made orthonormal, all formed in the
+    /// arithmetic asked for (so in double-double in `extended`, not rounded
+    /// to f64 first).
+    Axes([f64; 3], [f64; 3]),
     /// The reflection E − 2 n nᵀ/|n|² in the plane through 0 normal to a
     /// non-zero `n` (any length). Not a turn (its determinant is −1): it
     /// is only ever a factor of a `Then` whose product is one, S R F of a
@@ -47,6 +53,7 @@ impl Orientation {
                 euler(seq.map(usize::from), *deg, *intrinsic)
             }
             Orientation::Matrix(m) => orthonormalised(m),
+            Orientation::Axes(x, y) => axes(x, y),
             Orientation::Then(outer, inner) => mul(&outer.matrix(), &inner.matrix()),
             Orientation::Reflect(n) => reflection(*n),
         }
@@ -155,7 +162,28 @@ pub fn euler<T: Real>(seq: [usize; 3], deg: [f64; 3], intrinsic: bool) -> M3<T> 
 /// R ← R (3E − RᵀR) / 2, each squaring the defect (1e-9 → 1e-18 → 1e-36),
 /// leaving an exact rotation exact.
 pub fn orthonormalised<T: Real>(m: &M3<f64>) -> M3<T> {
-    let mut r: M3<T> = m.map(|row| row.map(T::of));
+    newton_schulz(m.map(|row| row.map(T::of)))
+}
+
+/// The report axes x/|x|, y/|y| and z = x × y as columns, made orthonormal,
+/// in T (`Orientation::Axes`).
+fn axes<T: Real>(x: &[f64; 3], y: &[f64; 3]) -> M3<T> {
+    let unit = |v: &[f64; 3]| {
+        let v = v.map(T::of);
+        let n = crate::numeric::norm_of(&v);
+        v.map(|c| c / n)
+    };
+    let (x, y) = (unit(x), unit(y));
+    let z = [
+        x[1] * y[2] - x[2] * y[1],
+        x[2] * y[0] - x[0] * y[2],
+        x[0] * y[1] - x[1] * y[0],
+    ];
+    newton_schulz(std::array::from_fn(|i| [x[i], y[i], z[i]]))
+}
+
+/// Newton–Schulz steps towards the orthonormal matrix nearest `r`.
+fn newton_schulz<T: Real>(mut r: M3<T>) -> M3<T> {
     let steps = if T::EPS < 1e-20 { 2 } else { 1 };
     for _ in 0..steps {
         let rt: M3<T> = std::array::from_fn(|i| std::array::from_fn(|j| r[j][i]));

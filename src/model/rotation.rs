@@ -83,16 +83,10 @@ impl Ctx<'_> {
                 )
                 .help(format!("the report axes are perpendicular: y at 90° to x (to {MATRIX_TOLERANCE:e} in the cosine); z is x × y")));
         }
-        let z = [
-            xh[1] * yh[2] - xh[2] * yh[1],
-            xh[2] * yh[0] - xh[0] * yh[2],
-            xh[0] * yh[1] - xh[1] * yh[0],
-        ];
-        // R's columns are x, y, z: row i holds their i-th components. The
-        // matrix form makes R orthonormal (the rotation nearest them).
-        Ok(Orientation::Matrix(Box::new(std::array::from_fn(|i| {
-            [xh[i], yh[i], z[i]]
-        }))))
+        // The directions as given: normalised, crossed and made
+        // orthonormal in the arithmetic of the report (`Orientation::Axes`).
+        let given = |v: &Floats, key: &str| self.floats(v, key, 3).map(|c| [c[0], c[1], c[2]]);
+        Ok(Orientation::Axes(given(x, "x")?, given(y, "y")?))
     }
 
     /// A rotation form, `key` naming it in messages (`rotation`, `axes`).

@@ -137,6 +137,10 @@ fn form_error(o: &Orientation) -> f64 {
         // Newton–Schulz leaves the orthonormal defect δ as ~δ² (1e-18 at
         // the model's 1e-9) and a product's roundings.
         Orientation::Matrix(_) => 16.0,
+        // Each direction normalised (4 each: |v|² and its root, the
+        // division), the cross product of the rounded units (3 on top of
+        // theirs), then Newton–Schulz as for a matrix.
+        Orientation::Axes(..) => 4.0 + 4.0 + 11.0 + 16.0,
         Orientation::Then(outer, inner) => form_error(outer) + form_error(inner) + 4.0,
         // The normal normalised (4), 2 k kᵀ and the difference (3).
         Orientation::Reflect(_) => 8.0,

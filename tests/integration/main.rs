@@ -3,6 +3,7 @@
 
 mod arrays;
 mod auto;
+mod axes_bounds;
 mod bounded;
 mod bounds;
 mod budget;
