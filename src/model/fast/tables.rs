@@ -32,6 +32,10 @@ pub(super) fn analysis(node: Node<'_>) -> Option<Spanned<RawAnalysis>> {
             "omega" => set(&mut a.omega, vector(v)?),
             "alpha" => set(&mut a.alpha, vector(v)?),
             "axes" => set(&mut a.axes, axes(v)?),
+            "warnings" => match v {
+                Node::Bool(b, _) => set(&mut a.warnings, b),
+                _ => None,
+            },
             _ => None,
         }?;
     }
