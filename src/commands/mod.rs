@@ -107,7 +107,7 @@ pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> Stri
         &loaded.source.name,
         &loaded.summary.accuracy_warnings,
         colour,
-    )
+    ) + &crate::analysis::plausible::lines(&loaded.summary.warnings, colour)
 }
 
 pub use crate::analysis::check_run::warning_lines;

@@ -119,6 +119,10 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
                 &visible(&w.message),
             ));
         }
+        for w in &r.warnings {
+            let text = visible(&w.message);
+            out.push_str(&command("warning", &w.path, Some(w.span), "plausibility", &text));
+        }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for e in l.engines.iter().filter(|e| !e.verdict.valid) {
                 let title = format!(
@@ -225,6 +229,14 @@ pub fn junit(results: &[FileResult]) -> String {
             .iter()
             .map(|w| format!("warning: {path}: {}\n", visible(&w.message)))
             .collect();
+        for w in &r.warnings {
+            warnings.push_str(&format!(
+                "warning: {path}:{}:{}: {}\n",
+                w.span.line,
+                w.span.column,
+                visible(&w.message)
+            ));
+        }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for w in &l.warnings {
                 let text = visible(&robot::warning(l, w));
@@ -257,7 +269,7 @@ fn rule_of(c: &CheckResult) -> &'static str {
 }
 
 /// The rules a SARIF result names (`ruleId`), in `ruleIndex` order.
-const RULES: [(&str, &str); 7] = [
+const RULES: [(&str, &str); 8] = [
     (
         "expectation",
         "A value computed from the part file is outside its [expect] entry's tolerance or bounds",
@@ -285,6 +297,10 @@ const RULES: [(&str, &str); 7] = [
     (
         "budget-limit",
         "The predicted mass (basic mass and growth) exceeds the part file's [budget] limit",
+    ),
+    (
+        "plausibility",
+        "A part file's numbers look written in other units than it says (a body over 100 m or 100 t without units, a density outside 1-25,000 kg/m3)",
     ),
 ];
 
@@ -339,6 +355,10 @@ pub fn sarif(results: &[FileResult]) -> String {
         for w in &r.accuracy_warnings {
             let text = visible(&w.message);
             out.push(result("accuracy", "warning", &text, &r.path, None));
+        }
+        for w in &r.warnings {
+            let text = visible(&w.message);
+            out.push(result("plausibility", "warning", &text, &w.path, Some(w.span)));
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for e in l.engines.iter().filter(|e| !e.verdict.valid) {
@@ -422,6 +442,7 @@ mod tests {
             ],
             precision: None,
             accuracy_warnings: Vec::new(),
+            warnings: Vec::new(),
             robot: None,
             format: None,
         };
@@ -522,6 +543,7 @@ mod tests {
             }],
             precision: None,
             accuracy_warnings: Vec::new(),
+            warnings: Vec::new(),
             robot: None,
             format: None,
         }
