@@ -181,6 +181,9 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
         if !mirror_cause {
             warnings.extend(cause::mirror_warning(d, &mirrors, i));
         }
+        if let (Some(v), Some(element)) = (&values, source.text.get(link.range.clone())) {
+            warnings.extend(super::plausible::gyration(d.format, element, v, &results));
+        }
         links.push(LinkResult {
             name: link.name.clone(),
             span: spans.span(super::read::start_tag(&source.text, inertial.range.clone())),
