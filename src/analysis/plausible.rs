@@ -110,12 +110,15 @@ impl Walk<'_> {
     }
 
     fn insert(&mut self, i: usize, kind: Kind, at: Range<usize>, message: String) {
-        self.out.insert(i, Warning {
-            kind,
-            path: self.source.name.clone(),
-            span: self.source.span(at),
-            message,
-        });
+        self.out.insert(
+            i,
+            Warning {
+                kind,
+                path: self.source.name.clone(),
+                span: self.source.span(at),
+                message,
+            },
+        );
     }
 
     /// Judge `m`'s own parts and materials, then its sub-assemblies';
@@ -185,11 +188,7 @@ impl Walk<'_> {
                 } else {
                     "a part".to_string()
                 };
-                let message = format!(
-                    "the `density` of {} is {what}{}",
-                    whose(&name),
-                    no_units(m)
-                );
+                let message = format!("the `density` of {} is {what}{}", whose(&name), no_units(m));
                 self.push(Kind::Density, at, message);
             }
         }
@@ -242,8 +241,11 @@ impl Walk<'_> {
 /// `None` for a density within `DENSITY`, else what it is: "0.9 kg/m³,
 /// outside …".
 fn outside(rho: f64) -> Option<String> {
+    // NOTE: a bound written in other units comes back within a few ulps
+    // of itself (1 kg/m³ in g/mm³ and back): those few ulps are inside.
     let [lo, hi] = DENSITY;
-    (!(lo..=hi).contains(&rho)).then(|| {
+    let slack = 1e-12;
+    (!(lo * (1.0 - slack)..=hi * (1.0 + slack)).contains(&rho)).then(|| {
         format!(
             "{} kg/m³, outside 1–25,000 kg/m³ (from foams to osmium): check its number and unit",
             short(rho)
@@ -268,7 +270,9 @@ pub fn short(x: f64) -> String {
 
 /// `x` to `digits` significant digits (`short`).
 pub fn rounded(x: f64, digits: usize) -> String {
-    let r: f64 = format!("{x:.*e}", digits.saturating_sub(1)).parse().unwrap_or(x);
+    let r: f64 = format!("{x:.*e}", digits.saturating_sub(1))
+        .parse()
+        .unwrap_or(x);
     if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
         format!("{r:e}")
     } else {
@@ -276,14 +280,23 @@ pub fn rounded(x: f64, digits: usize) -> String {
     }
 }
 
-/// The span of key `key` (a whole word, followed by `=`) in `text[table]`,
-/// or the table's if it is not found there (the key is an inline table's,
-/// or written with quotes).
+/// The span of key `key` (a whole word, followed by `=`) in the table at
+/// `table` of `text`, or the table's if it is not found there (written
+/// with quotes).
 fn key_in(text: &str, table: Range<usize>, key: &str) -> Range<usize> {
-    let Some(within) = text.get(table.clone()) else {
+    // NOTE: a part's span may be its header alone: its keys run to the
+    // next table header.
+    let end = text
+        .get(table.end..)
+        .and_then(|rest| rest.find("\n[").map(|i| table.end + i))
+        .unwrap_or(text.len())
+        .max(table.end);
+    let Some(within) = text.get(table.start..end) else {
         return table;
     };
-    find_key(within, key).map_or(table.clone(), |r| table.start + r.start..table.start + r.end)
+    find_key(within, key).map_or(table.clone(), |r| {
+        table.start + r.start..table.start + r.end
+    })
 }
 
 /// The first `key` in `text` that is a whole word followed by `=`, `.` or
@@ -329,7 +342,8 @@ mod tests {
         assert_eq!((w[0].span.line, w[0].span.column), (1, 1));
         assert!(w[0].message.contains("span 200 m"), "{}", w[0].message);
         assert!(
-            w[0].message.contains("did you mean `units = { length = \"mm\" }`?"),
+            w[0].message
+                .contains("did you mean `units = { length = \"mm\" }`?"),
             "{}",
             w[0].message
         );

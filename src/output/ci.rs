@@ -121,7 +121,13 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         }
         for w in &r.warnings {
             let text = visible(&w.message);
-            out.push_str(&command("warning", &w.path, Some(w.span), "plausibility", &text));
+            out.push_str(&command(
+                "warning",
+                &w.path,
+                Some(w.span),
+                "plausibility",
+                &text,
+            ));
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for e in l.engines.iter().filter(|e| !e.verdict.valid) {
@@ -358,7 +364,13 @@ pub fn sarif(results: &[FileResult]) -> String {
         }
         for w in &r.warnings {
             let text = visible(&w.message);
-            out.push(result("plausibility", "warning", &text, &w.path, Some(w.span)));
+            out.push(result(
+                "plausibility",
+                "warning",
+                &text,
+                &w.path,
+                Some(w.span),
+            ));
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for e in l.engines.iter().filter(|e| !e.verdict.valid) {

@@ -10,9 +10,12 @@
 //! The warning names the unit factor that brings k nearest a typical
 //! radius of gyration (half of R; with no geometry, the edge of a cube of
 //! water of the link's mass), and the engines that refuse the link: one
-//! warning per link, whatever the engines say.
+//! warning per link, whatever the engines say. A link with a negative
+//! principal moment, or whose slip of units an engine's likely cause
+//! already names (`cause`: one number in other units), is not warned of.
 
 use super::Dialect;
+use super::cause::Kind;
 use super::check::{EngineResult, Values};
 use roxmltree::{Document, Node};
 
@@ -39,8 +42,14 @@ pub fn gyration(
     engines: &[EngineResult],
 ) -> Option<String> {
     let m = values.mass;
-    let i3 = values.principal_moments[2];
-    if !(m > 0.0 && i3 > 0.0) {
+    let [i1, _, i3] = values.principal_moments;
+    // NOTE: a negative moment has no radius of gyration, and a slip of
+    // units some engine's likely cause already names (one number in other
+    // units than the rest) is said there, not twice.
+    let named = engines
+        .iter()
+        .any(|e| e.cause.as_ref().is_some_and(|c| c.kind == Kind::Units));
+    if !(m > 0.0 && i1 >= 0.0 && i3 > 0.0) || named {
         return None;
     }
     let k = (i3 / m).sqrt();
