@@ -182,7 +182,22 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             warnings.extend(cause::mirror_warning(d, &mirrors, i));
         }
         if let (Some(v), Some(element)) = (&values, source.text.get(link.range.clone())) {
-            warnings.extend(super::plausible::gyration(d.format, element, v, &results));
+            let judged = super::plausible::Link {
+                element,
+                mass: v.mass,
+                principal_moments: v.principal_moments,
+                refused: results
+                    .iter()
+                    .filter(|r| !r.verdict.valid)
+                    .map(|r| r.verdict.engine)
+                    .collect(),
+                units_named: results.iter().any(|r| {
+                    r.cause
+                        .as_ref()
+                        .is_some_and(|c| c.kind == cause::Kind::Units)
+                }),
+            };
+            warnings.extend(super::plausible::gyration(d.format, &judged));
         }
         links.push(LinkResult {
             name: link.name.clone(),

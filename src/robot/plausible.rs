@@ -15,8 +15,7 @@
 //! already names (`cause`: one number in other units), is not warned of.
 
 use super::Dialect;
-use super::cause::Kind;
-use super::check::{EngineResult, Values};
+use super::engine::Engine;
 use roxmltree::{Document, Node};
 
 /// The largest radius of gyration, m, of a link without readable geometry.
@@ -32,28 +31,35 @@ const FACTORS: [(f64, &str, &str); 5] = [
     (1e-9, "1e-9", "g·mm²"),
 ];
 
+/// What `gyration` judges of a link: its inertial, and the engines'
+/// verdicts on it.
+pub struct Link<'a> {
+    /// The link's element in the text (URDF and SDFormat `<link>`, MJCF
+    /// `<body>`).
+    pub element: &'a str,
+    /// kg.
+    pub mass: f64,
+    /// Ascending, kg·m².
+    pub principal_moments: [f64; 3],
+    /// The engines that refuse it.
+    pub refused: Vec<Engine>,
+    /// Whether an engine's likely cause is already a slip of units.
+    pub units_named: bool,
+}
+
 /// The warning for a link whose radius of gyration its geometry cannot
-/// hold, if it is one: `element` is the link's element in the text (URDF
-/// and SDFormat `<link>`, MJCF `<body>`), `engines` their verdicts on it.
-pub fn gyration(
-    dialect: Dialect,
-    element: &str,
-    values: &Values,
-    engines: &[EngineResult],
-) -> Option<String> {
-    let m = values.mass;
-    let [i1, _, i3] = values.principal_moments;
+/// hold, if it is one.
+pub fn gyration(dialect: Dialect, link: &Link) -> Option<String> {
+    let m = link.mass;
+    let [i1, _, i3] = link.principal_moments;
     // NOTE: a negative moment has no radius of gyration, and a slip of
     // units some engine's likely cause already names (one number in other
     // units than the rest) is said there, not twice.
-    let named = engines
-        .iter()
-        .any(|e| e.cause.as_ref().is_some_and(|c| c.kind == Kind::Units));
-    if !(m > 0.0 && i1 >= 0.0 && i3 > 0.0) || named {
+    if !(m > 0.0 && i1 >= 0.0 && i3 > 0.0) || link.units_named {
         return None;
     }
     let k = (i3 / m).sqrt();
-    let reach = reach(dialect, element);
+    let reach = reach(dialect, link.element);
     let (limit, what) = match reach {
         Some(r) => (2.0 * r, "twice its geometry's reach from the link origin"),
         None => (NO_GEOMETRY, "the limit for a link without geometry read"),
@@ -77,11 +83,7 @@ pub fn gyration(
         ),
         None => "check the inertia's and the mass's units".to_string(),
     };
-    let refused: Vec<&str> = engines
-        .iter()
-        .filter(|e| !e.verdict.valid)
-        .map(|e| e.verdict.engine.name())
-        .collect();
+    let refused: Vec<&str> = link.refused.iter().map(|e| e.name()).collect();
     let engines = match refused.as_slice() {
         [] => "no engine checked refuses it as written".to_string(),
         names => format!("refused by {}", names.join(", ")),
@@ -93,9 +95,15 @@ pub fn gyration(
     ))
 }
 
-/// `x` to 3 significant digits.
+/// `x` to 3 significant digits, as Rust writes it; in exponent form when
+/// large or small (`1.3e154`).
 fn short(x: f64) -> String {
-    crate::analysis::plausible::rounded(x, 3)
+    let r: f64 = format!("{x:.2e}").parse().unwrap_or(x);
+    if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
+        format!("{r:e}")
+    } else {
+        format!("{r}")
+    }
 }
 
 /// The farthest any of the link's geometry reaches from its origin, m;
