@@ -11,8 +11,9 @@
 //! entry, a predicted mass over `[budget] limit` at the `limit` entry, every failed validity check on its file, every invalid file at its
 //! error's span, every value not certified to `--rtol` as a warning, and
 //! for a robot description each link an engine refuses, at its
-//! `<inertial>`, with the likely cause (a JUnit test case per link and
-//! engine), and each link's warnings.
+//! `<inertial>`, with the likely cause (one GitHub annotation and one SARIF
+//! result per link, naming every engine that refuses it; a JUnit test case
+//! per link and engine), and each link's warnings.
 
 use super::check::{failure, message};
 use super::robot;
@@ -57,8 +58,25 @@ fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
     (e.path, e.span)
 }
 
+/// A link's failures as one annotation (issue 31, item 4: one per link,
+/// not one per engine): the engines that refuse it (`mujoco, drake`) and
+/// each one's message, a line each; None when every engine accepts it.
+fn link_failures(l: &crate::robot::check::LinkResult) -> Option<(String, String)> {
+    let refused: Vec<_> = l.engines.iter().filter(|e| !e.verdict.valid).collect();
+    if refused.is_empty() {
+        return None;
+    }
+    let names: Vec<&str> = refused.iter().map(|e| e.verdict.engine.name()).collect();
+    let text: Vec<String> = refused
+        .iter()
+        .map(|e| visible(&robot::failure(l, e)))
+        .collect();
+    Some((names.join(", "), text.join("\n")))
+}
+
 /// GitHub Actions workflow commands (`::error …::message`), one per failure
-/// and warning, then the summary line as a plain log line.
+/// (one per link a robot's engines refuse) and warning, then the summary
+/// line as a plain log line.
 pub fn github(results: &[FileResult], skipped: usize) -> String {
     // The runner's own escaping (actions/toolkit, `command.ts`): data
     // escapes `%`, CR and LF; a property also `:` and `,`.
@@ -130,13 +148,8 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
             ));
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
-            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
-                let title = format!(
-                    "link {} under {}",
-                    visible(&l.name),
-                    e.verdict.engine.name()
-                );
-                let text = visible(&robot::failure(l, e));
+            if let Some((engines, text)) = link_failures(l) {
+                let title = format!("link {} under {engines}", visible(&l.name));
                 out.push_str(&command("error", &r.path, Some(l.span), &title, &text));
             }
             for w in &l.warnings {
@@ -373,8 +386,7 @@ pub fn sarif(results: &[FileResult]) -> String {
             ));
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
-            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
-                let text = visible(&robot::failure(l, e));
+            if let Some((_, text)) = link_failures(l) {
                 out.push(result("inertial", "error", &text, &r.path, Some(l.span)));
             }
             for w in &l.warnings {
