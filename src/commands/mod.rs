@@ -101,7 +101,8 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
 
 /// The accuracy warnings of a loaded part file (`--rtol` not met), a line
 /// each for standard error: `warning: FILE: …`, `warning` coloured when
-/// `colour`.
+/// `colour`; then its plausibility warnings (`analysis::plausible`),
+/// `warning: FILE:LINE:COL: …`.
 pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> String {
     warning_lines(
         &loaded.source.name,

@@ -401,3 +401,22 @@ fn a_link_an_engine_refuses_is_warned_of_once_naming_it() {
     assert_eq!(text.matches("radius of gyration").count(), 1, "{text}");
     assert!(text.contains("; refused by mujoco\n"), "{text}");
 }
+
+#[test]
+fn massprop_schema_gives_analysis_warnings_as_a_boolean() {
+    let out = massprop(&["schema"]);
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(
+        v["$defs"]["Analysis"]["properties"]["warnings"]["type"],
+        "boolean"
+    );
+    let validator = jsonschema::validator_for(&v).unwrap();
+    let file = |w: &str| -> Value {
+        let t: toml::Table =
+            toml::from_str(&format!("{LAMP}[analysis]\nwarnings = {w}\n")).unwrap();
+        serde_json::to_value(t).unwrap()
+    };
+    assert!(validator.is_valid(&file("false")));
+    assert!(!validator.is_valid(&file("\"no\"")));
+}
