@@ -36,6 +36,10 @@ pub const MAX_MASS: f64 = 1e5;
 /// The densities, kg/m³, within which no warning is given (bounds
 /// included): from aerogels and foams to osmium.
 pub const DENSITY: [f64; 2] = [1.0, 25_000.0];
+/// The most parts of one file whose density is warned of one by one; the
+/// rest are counted in one more warning (a file of 10⁵ parts written in
+/// the wrong unit is one slip, not 10⁵ lines).
+pub const MAX_LISTED: usize = 10;
 
 /// Which rule a warning is of.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
@@ -159,14 +163,18 @@ impl Walk<'_> {
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
         let (mut mass, mut first) = (0.0, None);
+        // The parts whose density is warned of, and the first one past
+        // `MAX_LISTED`.
+        let (mut dense, mut past) = (0, None);
         for item in m.items.iter() {
             let Item::Part { part, .. } = item else {
                 continue;
             };
             first.get_or_insert(part.span.clone());
             if !m.units_given {
+                // Summed at most to f64::MAX: the warning prints no `inf`.
                 if !part.spec.removed {
-                    mass += crate::part::mass_of::<f64>(&part.spec);
+                    mass = (mass + crate::part::mass_of::<f64>(&part.spec)).min(f64::MAX);
                 }
                 let [a, b] = part.spec.place.outline().extent();
                 for k in 0..3 {
@@ -179,6 +187,11 @@ impl Walk<'_> {
                 && part.spec.place.density_power() == 3
                 && let Some(what) = outside(rho * to_si)
             {
+                dense += 1;
+                if dense > MAX_LISTED {
+                    past.get_or_insert(part.span.clone());
+                    continue;
+                }
                 let at = match anchor {
                     None => key_in(&self.source.text, part.span.clone(), "density"),
                     Some(a) => a.span.clone(),
@@ -191,6 +204,18 @@ impl Walk<'_> {
                 let message = format!("the `density` of {} is {what}{}", whose(&name), no_units(m));
                 self.push(Kind::Density, at, message);
             }
+        }
+        if let Some(span) = past {
+            let at = anchor.map_or(span, |a| a.span.clone());
+            let message = format!(
+                "{} more parts {}have a `density` outside 1–25,000 kg/m³ (this one the first of them)",
+                dense - MAX_LISTED,
+                anchor.map_or(String::new(), |a| format!(
+                    "of the sub-assembly `{}` ",
+                    a.path
+                )),
+            );
+            self.push(Kind::Density, at, message);
         }
         for (name, &rho) in &m.materials {
             if let Some(what) = outside(rho) {
@@ -210,7 +235,9 @@ impl Walk<'_> {
             return;
         }
         let Some(first) = first else { return };
-        let span = (0..3).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+        let span = (0..3)
+            .map(|k| (hi[k] - lo[k]).min(f64::MAX))
+            .fold(0.0, f64::max);
         if !(span > MAX_SPAN || mass > MAX_MASS) {
             return;
         }
@@ -270,8 +297,12 @@ pub fn short(x: f64) -> String {
 
 /// `x` to `digits` significant digits (`short`).
 pub fn rounded(x: f64, digits: usize) -> String {
-    let r: f64 = format!("{x:.*e}", digits.saturating_sub(1))
+    // NOTE: rounding up may pass f64::MAX (1.7976…e308 to 3 digits is
+    // 1.80e308): the number is then shown as it is.
+    let r = format!("{x:.*e}", digits.saturating_sub(1))
         .parse()
+        .ok()
+        .filter(|r: &f64| r.is_finite())
         .unwrap_or(x);
     if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
         format!("{r:e}")
@@ -366,11 +397,35 @@ mod tests {
     }
 
     #[test]
+    fn masses_that_sum_past_f64_max_print_no_inf() {
+        let part =
+            "[[part]]\nshape = \"point\"\nmass = 1.7976931348623157e308\ncenter = [0, 0, 0]\n";
+        let w = warned(&part.repeat(2));
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(!w[0].message.contains("inf"), "{}", w[0].message);
+    }
+
+    #[test]
     fn warnings_false_silences_the_file() {
         assert_eq!(
             warned(&format!("{BASE}[analysis]\nwarnings = false\n")),
             vec![]
         );
+    }
+
+    #[test]
+    fn many_parts_of_one_implausible_density_give_max_listed_warnings_and_a_count() {
+        let part =
+            "[[part]]\nshape = \"box\"\ndensity = 0.5\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\n";
+        let w = warned(&part.repeat(MAX_LISTED + 5));
+        assert_eq!(w.len(), MAX_LISTED + 1, "{w:?}");
+        let last = &w[MAX_LISTED];
+        assert!(
+            last.message.starts_with("5 more parts have"),
+            "{}",
+            last.message
+        );
+        assert_eq!(last.span.line, 5 * MAX_LISTED + 1);
     }
 
     #[test]
@@ -386,5 +441,6 @@ mod tests {
         assert_eq!(short(1.15e8), "1.15e8");
         assert_eq!(short(363.241_57), "363.242");
         assert_eq!(rounded(1.696_46e9, 3), "1.7e9");
+        assert_eq!(rounded(f64::MAX, 3), "1.7976931348623157e308");
     }
 }
