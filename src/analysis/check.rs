@@ -114,6 +114,8 @@ pub struct FileResult {
     pub precision: Option<crate::compose::Precision>,
     /// The values whose error bound exceeds `--rtol` (`summary::accuracy`).
     pub accuracy_warnings: Vec<crate::analysis::summary::AccuracyWarning>,
+    /// The plausibility warnings (`analysis::plausible`).
+    pub warnings: Vec<crate::analysis::plausible::Warning>,
     /// A robot description's links under each engine (None for a part
     /// file, and for a robot description that cannot be read).
     pub robot: Option<crate::robot::check::RobotResult>,
@@ -334,6 +336,7 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         validity,
         precision: Some(loaded.summary.precision),
         accuracy_warnings: super::summary::accuracy::with_predicted(&loaded.summary),
+        warnings: loaded.summary.warnings.clone(),
         robot: None,
         format: None,
     }

@@ -220,6 +220,7 @@ impl Run<'_> {
                 validity: Vec::new(),
                 precision: None,
                 accuracy_warnings: Vec::new(),
+                warnings: Vec::new(),
                 robot: Some(r),
                 format: Some(format),
             },
@@ -344,6 +345,7 @@ impl Run<'_> {
             &r.accuracy_warnings,
             self.colour,
         ));
+        stderr.push_str(&super::plausible::lines(&r.warnings, self.colour));
         Ok(r)
     }
 }
@@ -429,6 +431,7 @@ fn invalid(path: String, d: Diagnostic, stderr: &mut String, colour: bool) -> Fi
         validity: Vec::new(),
         precision: None,
         accuracy_warnings: Vec::new(),
+        warnings: Vec::new(),
         robot: None,
         format: None,
     }

@@ -17,6 +17,7 @@ pub mod diff;
 pub mod errors;
 pub mod ideal;
 pub mod link;
+pub mod plausible;
 pub mod search;
 pub mod sigma;
 pub mod summary;
@@ -110,6 +111,7 @@ pub fn load_source_reading(
         summary.sub_assembly = Some(path.clone());
     }
     summary.source = Some(source.name.clone());
+    summary.warnings = plausible::warnings(&model, &source);
     // The predicted body where the command reads it, or the uncertainty
     // of a whole weight-budgeted body (the limit is the whole body's).
     let budgeted = budget::composes_predicted(&model);

@@ -176,6 +176,8 @@ pub struct Summary {
     /// The values whose bound exceeds `rtol` in the arithmetic used
     /// (`accuracy`); empty when every value meets it.
     pub accuracy_warnings: Vec<AccuracyWarning>,
+    /// The plausibility warnings (`analysis::plausible`), set by `load`.
+    pub warnings: Vec<super::plausible::Warning>,
     /// The sub-assemblies (`include`), parents before children; absent
     /// when there are none.
     pub assemblies: Assemblies,
@@ -454,6 +456,7 @@ fn summarize_in(
         error_bounds: bounds::ErrorBounds::new(error_bounds),
         rtol: 0.0,
         accuracy_warnings: Vec::new(),
+        warnings: Vec::new(),
         requested: PrecisionChoice::Auto,
         reference_given: analysis.about.is_some(),
         file_units: model.units,

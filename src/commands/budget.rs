@@ -15,13 +15,15 @@ pub type Options = super::report::Options;
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let loaded = analysis::load(&o.file, &o.settings)?;
     let read = super::files_of(&loaded);
+    let plausible = analysis::plausible::lines(&loaded.summary.warnings, terminal.stderr.colour);
     let statement = analysis::budget::statement(loaded, &o.settings)?;
-    // Both bodies' warnings: the statement's own.
+    // Both bodies' warnings: the statement's own; then the file's
+    // plausibility warnings.
     let stderr = super::warning_lines(
         &statement.source,
         &statement.accuracy_warnings,
         terminal.stderr.colour,
-    );
+    ) + &plausible;
     let met = statement.limit.as_ref().is_none_or(|l| l.met);
     Ok(Outcome {
         stdout: super::Stdout::Text(output::render(

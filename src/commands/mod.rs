@@ -104,13 +104,14 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
 
 /// The accuracy warnings of a loaded part file (`--rtol` not met), a line
 /// each for standard error: `warning: FILE: …`, `warning` coloured when
-/// `colour`.
+/// `colour`; then its plausibility warnings (`analysis::plausible`),
+/// `warning: FILE:LINE:COL: …`.
 pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> String {
     warning_lines(
         &loaded.source.name,
         &loaded.summary.accuracy_warnings,
         colour,
-    )
+    ) + &crate::analysis::plausible::lines(&loaded.summary.warnings, colour)
 }
 
 pub use crate::analysis::check_run::warning_lines;

@@ -438,6 +438,7 @@ impl Ctx<'_> {
             alpha_span: r.alpha.as_ref().map(Spanned::span),
             about_span: r.about.as_ref().map(Spanned::span),
             omega_span: r.omega.as_ref().map(Spanned::span),
+            warnings: r.warnings,
         })
     }
 }

@@ -58,6 +58,8 @@ pub struct Model {
     /// The file's `name`, if given.
     pub name: Option<String>,
     pub units: FileUnits,
+    /// Whether the file gives `units` (else they are m and kg by default).
+    pub units_given: bool,
     /// The file's own parts and sub-assemblies, in file order. The body's
     /// parts, sub-assemblies expanded, come from a walk (`each_part`).
     /// Shared: a model is cloned (into a summary, for its rows) without
@@ -154,6 +156,9 @@ pub struct Analysis {
     /// The report axes: R, whose columns are they in the file's frame
     /// (`axes`); none for the file's own. ω and α are read in them.
     pub axes: Option<crate::rotation::Orientation>,
+    /// `warnings`: `Some(false)` silences the plausibility warnings
+    /// (`analysis::plausible`).
+    pub warnings: Option<bool>,
 }
 
 impl Model {
@@ -162,6 +167,7 @@ impl Model {
         Model {
             name: None,
             units,
+            units_given: false,
             items: std::sync::Arc::new(Vec::new()),
             count: 0,
             analysis: Analysis::default(),
@@ -469,6 +475,7 @@ impl Model {
             group_depth: budget::group_depth(&items),
             name: raw.name.as_ref().map(|n| n.get_ref().clone()),
             units: ctx.units,
+            units_given: raw.units.is_some(),
             items: std::sync::Arc::new(items),
             count,
             analysis,

@@ -154,6 +154,7 @@ impl Model {
             materials: self.materials.clone(),
             budget: self.budget.clone(),
             included: self.included.clone(),
+            units_given: self.units_given,
             ..Model::empty(self.units)
         }
     }

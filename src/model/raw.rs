@@ -193,6 +193,8 @@ pub struct RawAnalysis {
     pub omega: Option<Vector>,
     pub alpha: Option<Vector>,
     pub axes: Option<Spanned<RawAxes>>,
+    /// `false`: no plausibility warnings for this file (`analysis::plausible`).
+    pub warnings: Option<bool>,
 }
 
 /// `[analysis] axes`: the report axes' x and y directions in the file's

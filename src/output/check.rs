@@ -58,6 +58,9 @@ struct JsonFile<'a> {
     precision: Option<crate::compose::Precision>,
     #[serde(skip_serializing_if = "<[_]>::is_empty")]
     accuracy_warnings: &'a [AccuracyWarning],
+    /// The plausibility warnings (`analysis::plausible`).
+    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    warnings: &'a [crate::analysis::plausible::Warning],
     /// A robot description's links (docs/robots.md).
     #[serde(skip_serializing_if = "Option::is_none")]
     links: Option<Vec<JsonLink<'a>>>,
@@ -133,6 +136,7 @@ pub fn json(results: &[FileResult]) -> String {
             validity: r.validity_failures().collect(),
             precision: r.precision,
             accuracy_warnings: &r.accuracy_warnings,
+            warnings: &r.warnings,
             links: r.robot.as_ref().map(|robot| {
                 robot
                     .links

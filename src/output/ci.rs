@@ -11,8 +11,9 @@
 //! entry, a predicted mass over `[budget] limit` at the `limit` entry, every failed validity check on its file, every invalid file at its
 //! error's span, every value not certified to `--rtol` as a warning, and
 //! for a robot description each link an engine refuses, at its
-//! `<inertial>`, with the likely cause (a JUnit test case per link and
-//! engine), and each link's warnings.
+//! `<inertial>`, with the likely cause (one GitHub annotation and one SARIF
+//! result per link, naming every engine that refuses it; a JUnit test case
+//! per link and engine), and each link's warnings.
 
 use super::check::{failure, message};
 use super::robot;
@@ -57,8 +58,25 @@ fn place<'a>(d: &'a Diagnostic, r: &'a FileResult) -> (&'a str, Option<Span>) {
     (e.path, e.span)
 }
 
+/// A link's failures as one annotation (issue 31, item 4: one per link,
+/// not one per engine): the engines that refuse it (`mujoco, drake`) and
+/// each one's message, a line each; None when every engine accepts it.
+fn link_failures(l: &crate::robot::check::LinkResult) -> Option<(String, String)> {
+    let refused: Vec<_> = l.engines.iter().filter(|e| !e.verdict.valid).collect();
+    if refused.is_empty() {
+        return None;
+    }
+    let names: Vec<&str> = refused.iter().map(|e| e.verdict.engine.name()).collect();
+    let text: Vec<String> = refused
+        .iter()
+        .map(|e| visible(&robot::failure(l, e)))
+        .collect();
+    Some((names.join(", "), text.join("\n")))
+}
+
 /// GitHub Actions workflow commands (`::error …::message`), one per failure
-/// and warning, then the summary line as a plain log line.
+/// (one per link a robot's engines refuse) and warning, then the summary
+/// line as a plain log line.
 pub fn github(results: &[FileResult], skipped: usize) -> String {
     // The runner's own escaping (actions/toolkit, `command.ts`): data
     // escapes `%`, CR and LF; a property also `:` and `,`.
@@ -119,14 +137,19 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
                 &visible(&w.message),
             ));
         }
+        for w in &r.warnings {
+            let text = visible(&w.message);
+            out.push_str(&command(
+                "warning",
+                &w.path,
+                Some(w.span),
+                "plausibility",
+                &text,
+            ));
+        }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
-            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
-                let title = format!(
-                    "link {} under {}",
-                    visible(&l.name),
-                    e.verdict.engine.name()
-                );
-                let text = visible(&robot::failure(l, e));
+            if let Some((engines, text)) = link_failures(l) {
+                let title = format!("link {} under {engines}", visible(&l.name));
                 out.push_str(&command("error", &r.path, Some(l.span), &title, &text));
             }
             for w in &l.warnings {
@@ -225,6 +248,14 @@ pub fn junit(results: &[FileResult]) -> String {
             .iter()
             .map(|w| format!("warning: {path}: {}\n", visible(&w.message)))
             .collect();
+        for w in &r.warnings {
+            warnings.push_str(&format!(
+                "warning: {path}:{}:{}: {}\n",
+                w.span.line,
+                w.span.column,
+                visible(&w.message)
+            ));
+        }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for w in &l.warnings {
                 let text = visible(&robot::warning(l, w));
@@ -257,7 +288,7 @@ fn rule_of(c: &CheckResult) -> &'static str {
 }
 
 /// The rules a SARIF result names (`ruleId`), in `ruleIndex` order.
-const RULES: [(&str, &str); 7] = [
+const RULES: [(&str, &str); 8] = [
     (
         "expectation",
         "A value computed from the part file is outside its [expect] entry's tolerance or bounds",
@@ -285,6 +316,10 @@ const RULES: [(&str, &str); 7] = [
     (
         "budget-limit",
         "The predicted mass (basic mass and growth) exceeds the part file's [budget] limit",
+    ),
+    (
+        "plausibility",
+        "A part file's numbers look written in other units than it says (a body over 100 m or 100 t without units, a density outside 1-25,000 kg/m3)",
     ),
 ];
 
@@ -340,9 +375,18 @@ pub fn sarif(results: &[FileResult]) -> String {
             let text = visible(&w.message);
             out.push(result("accuracy", "warning", &text, &r.path, None));
         }
+        for w in &r.warnings {
+            let text = visible(&w.message);
+            out.push(result(
+                "plausibility",
+                "warning",
+                &text,
+                &w.path,
+                Some(w.span),
+            ));
+        }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
-            for e in l.engines.iter().filter(|e| !e.verdict.valid) {
-                let text = visible(&robot::failure(l, e));
+            if let Some((_, text)) = link_failures(l) {
                 out.push(result("inertial", "error", &text, &r.path, Some(l.span)));
             }
             for w in &l.warnings {
@@ -422,6 +466,7 @@ mod tests {
             ],
             precision: None,
             accuracy_warnings: Vec::new(),
+            warnings: Vec::new(),
             robot: None,
             format: None,
         };
@@ -522,6 +567,7 @@ mod tests {
             }],
             precision: None,
             accuracy_warnings: Vec::new(),
+            warnings: Vec::new(),
             robot: None,
             format: None,
         }

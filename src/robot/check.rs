@@ -181,6 +181,24 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
         if !mirror_cause {
             warnings.extend(cause::mirror_warning(d, &mirrors, i));
         }
+        if let (Some(v), Some(element)) = (&values, source.text.get(link.range.clone())) {
+            let judged = super::plausible::Link {
+                element,
+                mass: v.mass,
+                principal_moments: v.principal_moments,
+                refused: results
+                    .iter()
+                    .filter(|r| !r.verdict.valid)
+                    .map(|r| r.verdict.engine)
+                    .collect(),
+                units_named: results.iter().any(|r| {
+                    r.cause
+                        .as_ref()
+                        .is_some_and(|c| c.kind == cause::Kind::Units)
+                }),
+            };
+            warnings.extend(super::plausible::gyration(d.format, &judged));
+        }
         links.push(LinkResult {
             name: link.name.clone(),
             span: spans.span(super::read::start_tag(&source.text, inertial.range.clone())),

@@ -10,6 +10,7 @@
 pub mod cause;
 pub mod check;
 pub mod engine;
+pub mod plausible;
 pub mod read;
 mod steps;
 

@@ -42,6 +42,7 @@ mod package;
 mod params;
 mod physics;
 mod pipes;
+mod plausible;
 mod reference;
 mod render;
 mod report_keys;

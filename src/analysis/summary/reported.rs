@@ -68,6 +68,11 @@ impl Serialize for Summary {
         m.serialize_field("error_bounds", &self.error_bounds)?;
         m.serialize_field("rtol", &self.rtol)?;
         m.serialize_field("accuracy_warnings", &self.accuracy_warnings)?;
+        // Written only when there are some: a plausible file's JSON is
+        // as before.
+        if !self.warnings.is_empty() {
+            m.serialize_field("warnings", &self.warnings)?;
+        }
         if !self.assemblies.is_empty() {
             m.serialize_field("assemblies", &self.assemblies)?;
         }

@@ -26,8 +26,8 @@ pub(super) fn units(node: Node<'_>) -> Read<Spanned<RawUnits>> {
 
 /// `[analysis]`.
 pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
-    const KEYS: &[&str] = &["about", "omega", "alpha", "axes"];
-    let (entries, span) = table(node, "a table with `about`, `omega`, `alpha` or `axes`")?;
+    const KEYS: &[&str] = &["about", "omega", "alpha", "axes", "warnings"];
+    let (entries, span) = table(node, "a table with `about`, `omega`, `alpha`, `axes` or `warnings`")?;
     let mut a = RawAnalysis::default();
     for (k, ks, v) in entries {
         match &*k {
@@ -35,6 +35,10 @@ pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
             "omega" => set(&mut a.omega, keyed(&k, vector(v))?, &ks),
             "alpha" => set(&mut a.alpha, keyed(&k, vector(v))?, &ks),
             "axes" => set(&mut a.axes, keyed(&k, axes(v))?, &ks),
+            "warnings" => {
+                let b = keyed(&k, toml::Spanned::<bool>::from_node(v))?;
+                set(&mut a.warnings, b.into_inner(), &ks)
+            }
             _ => unknown(&k, &ks, KEYS),
         }?;
     }

@@ -46,6 +46,7 @@ pub(super) fn definitions() -> Map<String, Value> {
                 "omega": quantities(3),
                 "alpha": quantities(3),
                 "axes": r("Axes"),
+                "warnings": doc(json!({ "type": "boolean" }), "A boolean (default `true`); `false` silences this file's plausibility warnings (a body over 100 m or 100 t without `units`, a density outside 1–25,000 kg/m³)."),
             }),
             &[],
         ),
