@@ -87,6 +87,7 @@ fn result(
         validity: Vec::new(),
         precision: None,
         accuracy_warnings: Vec::new(),
+        warnings: Vec::new(),
         robot,
         format: Some(format),
     }

@@ -27,7 +27,10 @@ pub(super) fn units(node: Node<'_>) -> Read<Spanned<RawUnits>> {
 /// `[analysis]`.
 pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
     const KEYS: &[&str] = &["about", "omega", "alpha", "axes", "warnings"];
-    let (entries, span) = table(node, "a table with `about`, `omega`, `alpha`, `axes` or `warnings`")?;
+    let (entries, span) = table(
+        node,
+        "a table with `about`, `omega`, `alpha`, `axes` or `warnings`",
+    )?;
     let mut a = RawAnalysis::default();
     for (k, ks, v) in entries {
         match &*k {
