@@ -87,7 +87,7 @@ impl Honest {
 fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
     let mut rng = Rng::new(31);
     let mut honest = Honest::default();
-    for trial in 0..4 {
+    for trial in 0..8 {
         for (kind, mut scene) in [
             ("boxes", twelve_boxes(&mut rng)),
             ("every shape", every_shape(&mut rng)),
@@ -178,6 +178,27 @@ fn bounds_about_a_point_and_of_the_dynamics_are_honest() {
 /// |q|²), every value is the exact one turned: A I Aᵀ, A (c − p), the
 /// radii about the turned axes, H = I_ref ω with ω read in those axes;
 /// each within its bound, in both precisions.
+/// Report axes as two perpendicular directions of rational lengths
+/// (Pythagorean quadruples), `k`-th of a few: the exact A (rows x/|x|,
+/// y/|y|, their cross product) and the `--axes` flag.
+fn directions(k: usize) -> (r::M3, String) {
+    const PAIRS: [([f64; 3], f64, [f64; 3], f64); 4] = [
+        ([-3.0, -4.0, -12.0], 13.0, [4.0, -3.0, 0.0], 5.0),
+        ([1.0, 2.0, 2.0], 3.0, [2.0, 1.0, -2.0], 3.0),
+        ([2.0, 3.0, 6.0], 7.0, [6.0, 2.0, -3.0], 7.0),
+        ([-3.0, -4.0, -12.0], 13.0, [12.0, -9.0, 0.0], 15.0),
+    ];
+    let (x, nx, y, ny) = PAIRS[k % PAIRS.len()];
+    let unit = |v: [f64; 3], n: f64| r::qv(v).map(|c| c / r::q(n));
+    let (a, b) = (unit(x, nx), unit(y, ny));
+    let c = r::cross(&a, &b);
+    let flag = format!(
+        "x={:?},{:?},{:?};y={:?},{:?},{:?}",
+        x[0], x[1], x[2], y[0], y[1], y[2]
+    );
+    ([a, b, c], flag)
+}
+
 #[test]
 fn bounds_in_turned_report_axes_are_honest() {
     let mut rng = Rng::new(47);
@@ -189,10 +210,22 @@ fn bounds_in_turned_report_axes_are_honest() {
         ] {
             let about = rng.grid_point().map(|x| 3.0 * x);
             scene.about = Some(about);
+            // The axes as a quaternion (turned exactly as the reference
+            // turns it), or as two directions of rational length (issue
+            // 30: rounded to f64 first, they broke `extended`'s bounds).
             let raw: [f64; 4] = std::array::from_fn(|_| rng.range(-1.0, 1.0));
             let n = raw.iter().map(|x| x * x).sum::<f64>().sqrt();
             let quat = raw.map(|x| x / n);
-            let a = r::transpose(&r::rotation(&quat.map(r::q)));
+            let (a, axes) = if trial % 2 == 0 {
+                let a = r::transpose(&r::rotation(&quat.map(r::q)));
+                let flag = format!(
+                    "quaternion={:?},{:?},{:?},{:?}",
+                    quat[0], quat[1], quat[2], quat[3]
+                );
+                (a, flag)
+            } else {
+                directions(trial / 2)
+            };
             let w: [f64; 3] = std::array::from_fn(|_| rng.range(-50.0, 50.0));
             let exact = r::compose(&scene);
             let point: r::V3 = about.map(r::q);
@@ -202,10 +235,6 @@ fn bounds_in_turned_report_axes_are_honest() {
             let com_ref = r::mvec(&a, &offset);
             let wq = w.map(r::q);
             let h = r::mvec(&i_ref, &wq);
-            let axes = format!(
-                "quaternion={:?},{:?},{:?},{:?}",
-                quat[0], quat[1], quat[2], quat[3]
-            );
             let omega = format!("{:?},{:?},{:?}", w[0], w[1], w[2]);
             for p in ["standard", "extended"] {
                 let v = run(

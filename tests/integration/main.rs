@@ -3,7 +3,6 @@
 
 mod arrays;
 mod auto;
-mod axes_bounds;
 mod bounded;
 mod bounds;
 mod budget;
