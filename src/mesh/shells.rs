@@ -82,7 +82,7 @@ pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
         if signs[0] < 0 {
             return Err(MeshError::new(
                 super::At::Whole,
-                "the mesh's volume is negative: its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
+                "the mesh is inside out: its volume is negative, its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
             ));
         }
         return Ok(1);
@@ -264,6 +264,12 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
             union(&mut parent, run[0].1, run[1].1);
         } else {
             crowded.push(run);
+        }
+    }
+    // The two sides of each T-junction (`classes`) are one shell.
+    for &(a, b) in &mesh.joins {
+        if live[a as usize] && live[b as usize] {
+            union(&mut parent, a, b);
         }
     }
     // NOTE: an edge shared by four or more triangles joins nothing, so

@@ -92,6 +92,7 @@ impl ShapeKind for Mesh {
             "file",
             "mesh_unit",
             "mode",
+            "weld",
             "origin",
             "rotation",
             "mass",

@@ -97,6 +97,15 @@ pub(super) fn summarize(
         .into_iter()
         .map(|s| s.warning(summary.precision, accuracy.rtol))
         .collect();
+    // A mesh's warnings (`Model::mesh_warnings`) go the same way.
+    summary
+        .accuracy_warnings
+        .extend(model.mesh_warnings.iter().map(|m| AccuracyWarning {
+            quantity: "mesh".into(),
+            value: None,
+            error_bound: 0.0,
+            message: m.clone(),
+        }));
     Ok(summary)
 }
 
