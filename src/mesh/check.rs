@@ -118,7 +118,8 @@ impl Mesh {
             }
             let mut k = keep.iter();
             let mut l = keep.iter();
-            self.faces.retain(|_| *k.next().expect("one flag a triangle"));
+            self.faces
+                .retain(|_| *k.next().expect("one flag a triangle"));
             self.at.retain(|_| *l.next().expect("one flag a triangle"));
             self.edges.take();
             notes.push(format!(

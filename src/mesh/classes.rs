@@ -181,7 +181,9 @@ impl Mesh {
             }
             splits += inside.len();
             let sign = if pb[axis] > pa[axis] { 1.0 } else { -1.0 };
-            inside.sort_by(|p, q| (sign * v[*p as usize][axis]).total_cmp(&(sign * v[*q as usize][axis])));
+            inside.sort_by(|p, q| {
+                (sign * v[*p as usize][axis]).total_cmp(&(sign * v[*q as usize][axis]))
+            });
             let chain: Vec<u32> = std::iter::once(a).chain(inside).chain([b]).collect();
             for w in chain.windows(2) {
                 // Net counts run from the smaller vertex to the larger.
@@ -267,5 +269,8 @@ fn between(a: [f64; 3], m: [f64; 3], b: [f64; 3]) -> bool {
         return false;
     }
     let inside = (0..3).all(|k| a[k].min(b[k]) <= m[k] && m[k] <= a[k].max(b[k]));
-    inside && [(0, 1), (1, 2), (2, 0)].iter().all(|&(i, j)| orient2d(a, m, b, i, j) == 0)
+    inside
+        && [(0, 1), (1, 2), (2, 0)]
+            .iter()
+            .all(|&(i, j)| orient2d(a, m, b, i, j) == 0)
 }

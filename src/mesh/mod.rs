@@ -28,8 +28,8 @@
 pub mod bvh;
 pub mod check;
 mod classes;
-pub mod near;
 pub mod exact;
+pub mod near;
 pub mod read;
 pub mod shells;
 pub mod weld;

@@ -67,7 +67,11 @@ impl Mesh {
                 }
             }
         }
-        let merged = rep.iter().enumerate().filter(|(i, r)| **r != *i as u32).count();
+        let merged = rep
+            .iter()
+            .enumerate()
+            .filter(|(i, r)| **r != *i as u32)
+            .count();
         let mut number = vec![u32::MAX; v.len()];
         let mut vertices = Vec::new();
         for (i, r) in rep.iter().enumerate() {
@@ -96,7 +100,8 @@ impl Mesh {
             let y: [[f64; 3]; 3] = to.map(|c| std::array::from_fn(|k| up((c[k] - p[k]).abs())));
             let e: [[f64; 3]; 3] =
                 std::array::from_fn(|j| std::array::from_fn(|k| up((from[j][k] - to[j][k]).abs())));
-            let ye: [[f64; 3]; 3] = std::array::from_fn(|j| std::array::from_fn(|k| up(y[j][k] + e[j][k])));
+            let ye: [[f64; 3]; 3] =
+                std::array::from_fn(|j| std::array::from_fn(|k| up(y[j][k] + e[j][k])));
             let (hi, lo) = (magnitudes(ye), magnitudes(y));
             for k in 0..10 {
                 moved[k] += hi[k] * (1.0 + 1e-12) - lo[k] * (1.0 - 1e-12);
@@ -104,7 +109,13 @@ impl Mesh {
         }
         // The recursive sums' roundings, all terms nonnegative.
         let grow = 1.0 + 2.0 * (n as f64 + 1.0) * f64::EPSILON;
-        (welded, Welded { merged, moved: moved.map(|m| m * grow) })
+        (
+            welded,
+            Welded {
+                merged,
+                moved: moved.map(|m| m * grow),
+            },
+        )
     }
 }
 

@@ -96,7 +96,10 @@ impl Ctx<'_> {
                 // In the mesh file's units: `scale` is its unit in this file's.
                 let d = d / scale.hi;
                 if !(d.is_finite() && d > 0.0) {
-                    return Err(self.err(w.span(), "`weld` is out of the range of the mesh file's coordinates"));
+                    return Err(self.err(
+                        w.span(),
+                        "`weld` is out of the range of the mesh file's coordinates",
+                    ));
                 }
                 Some((d, w.span()))
             }
@@ -336,7 +339,11 @@ impl Ctx<'_> {
     ) -> Result<Arc<MeshBody>, Diagnostic> {
         let t = self.target_of(file, files, Kind::Mesh)?;
         files.read.push(t.canonical.clone());
-        let key = (t.canonical.clone(), mode, weld.as_ref().map(|w| w.0.to_bits()));
+        let key = (
+            t.canonical.clone(),
+            mode,
+            weld.as_ref().map(|w| w.0.to_bits()),
+        );
         if let Some(m) = files.meshes.get(&key) {
             return Ok(m.clone());
         }
@@ -349,11 +356,11 @@ impl Ctx<'_> {
         })?;
         let (body, notes) = MeshBody::load_with(format, &bytes, mode, weld.as_ref().map(|w| w.0))
             .map_err(|e| {
-                self.err(
-                    file.span(),
-                    format!("the mesh file `{}`: {}", t.shown_name, e.message),
-                )
-            })?;
+            self.err(
+                file.span(),
+                format!("the mesh file `{}`: {}", t.shown_name, e.message),
+            )
+        })?;
         for (i, note) in notes.into_iter().enumerate() {
             // The weld's own warning first, at `weld`.
             let span = match &weld {
