@@ -207,7 +207,10 @@ fn each_fault_of_a_surface_is_named() {
     let mut three = t.clone();
     three.push(t[0]);
     let m = message(FileType::Stl, &ascii(&three), Mode::Solid);
-    assert!(m.contains("triangle 13 (line 86) repeats triangle 1 (line 2)"), "{m}");
+    assert!(
+        m.contains("triangle 13 (line 86) repeats triangle 1 (line 2)"),
+        "{m}"
+    );
     // Degenerate: a repeated corner, collinear corners.
     let mut d = t.clone();
     d[0][1] = d[0][0];
