@@ -6,7 +6,7 @@ runs `massprop report --format json`, trimesh (volume, is_watertight) and
 MuJoCo (default inertia and inertia="exact"), and prints a markdown table.
 Usage: benches/mesh-classes.py target/debug/massprop   (needs trimesh, mujoco)
 """
-import json, os, subprocess, sys, tempfile
+import json, os, re, subprocess, sys, tempfile
 
 def cube(lo=(0, 0, 0), s=1.0):
     x0, y0, z0 = lo
@@ -38,8 +38,8 @@ CLASSES = [
     ("a triangle repeated", c + [c[0]], 1.0, ""),
     ("open (a triangle missing)", c[1:], None, ""),
     ("inside out", [(a, cc, b) for a, b, cc in c], 1.0, ""),
-    ("gap of 1e-12 at one corner", gap, 1.0, ""),
-    ("gap of 1e-12, `weld = \"1e-9 m\"`", gap, 1.0, 'weld = "1e-9 m"\n'),
+    ("gap of 1e-12 at one corner", gap, None, ""),
+    ("gap of 1e-12, `weld = \"1e-9 m\"`", gap, None, 'weld = "1e-9 m"\n'),
 ]
 
 def obj(t):
@@ -48,8 +48,10 @@ def obj(t):
     return v + "".join("f %d %d %d\n" % (3 * i + 1, 3 * i + 2, 3 * i + 3) for i in range(len(t)))
 
 def short(m):
-    m = m.split("`: ", 1)[-1]
-    for stop in (" (", ":", ";"):
+    """A message's first words: no parentheses, up to its first colon."""
+    m = m.split("`: ", 1)[-1].splitlines()[0]
+    m = re.sub(r"\s*\((?:[^()]|\([^()]*\))*\)", "", m)
+    for stop in (":", ";", ","):
         m = m.split(stop)[0]
     return m.strip()
 
@@ -89,7 +91,7 @@ def main():
         path = os.path.join(d, name + ".stl")
         open(path, "w").write(stl(tris))
         open(path[:-3] + "obj", "w").write(obj(tris))
-        cells = [label, "none (open)" if exact is None else "%g" % exact,
+        cells = [label, "none (open; ≈ 1)" if exact is None else "%g" % exact,
                  run_massprop(exe, d, name, extra), run_trimesh(path),
                  run_mujoco(path[:-3] + "obj", False), run_mujoco(path[:-3] + "obj", True)]
         print("| " + " | ".join(cells) + " |")
