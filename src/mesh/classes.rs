@@ -37,6 +37,10 @@ struct Loose {
     net: i32,
 }
 
+/// T-junctions that close the loose edges: the triangles to join across
+/// them, the number of splits, and the loose edge to name.
+type Junctions = (Vec<(u32, u32)>, usize, usize);
+
 fn ends(key: u64) -> (u32, u32) {
     ((key >> 32) as u32, (key & 0xffff_ffff) as u32)
 }
@@ -146,7 +150,7 @@ impl Mesh {
     /// NOTE: only corners of loose edges can lie inside one and close it
     /// (a corner where the other side's edges end is an end of loose
     /// edges), so the search is over those few corners, sorted along x.
-    fn t_junctions(&self, loose: &[Loose]) -> Result<(Vec<(u32, u32)>, usize, usize), usize> {
+    fn t_junctions(&self, loose: &[Loose]) -> Result<Junctions, usize> {
         let mut corners: Vec<u32> = loose
             .iter()
             .flat_map(|l| {
