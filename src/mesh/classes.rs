@@ -101,7 +101,12 @@ impl Mesh {
         }
         let mut notes = Vec::new();
         if !loose.is_empty() {
-            match self.t_junctions(&loose) {
+            // NOTE: the predicates are exact on the corners scaled as
+            // `shells` scales them (by a power of two: exact, and no
+            // product underflows); a mesh they cannot be exact on is
+            // refused there.
+            let pts = super::shells::scaled(self)?;
+            match self.t_junctions(&loose, &pts) {
                 Ok((joins, splits, example)) => {
                     self.joins = joins;
                     let l = &loose[example];
@@ -150,7 +155,7 @@ impl Mesh {
     /// NOTE: only corners of loose edges can lie inside one and close it
     /// (a corner where the other side's edges end is an end of loose
     /// edges), so the search is over those few corners, sorted along x.
-    fn t_junctions(&self, loose: &[Loose]) -> Result<Junctions, usize> {
+    fn t_junctions(&self, loose: &[Loose], v: &[[f64; 3]]) -> Result<Junctions, usize> {
         let mut corners: Vec<u32> = loose
             .iter()
             .flat_map(|l| {
@@ -160,7 +165,6 @@ impl Mesh {
             .collect();
         corners.sort_unstable();
         corners.dedup();
-        let v = &self.vertices;
         corners.sort_by(|p, q| v[*p as usize][0].total_cmp(&v[*q as usize][0]));
         let mut pieces: HashMap<u64, (i32, Vec<usize>)> = HashMap::new();
         let mut splits = 0;

@@ -417,7 +417,7 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
 /// The corners scaled by one power of two so that the largest magnitude is
 /// below 1 (exact), for the predicates; refuses a nonzero coordinate
 /// below `exact::TINY` of that (see `exact`).
-fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
+pub(super) fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
     let big = mesh
         .vertices
         .iter()

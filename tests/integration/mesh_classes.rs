@@ -346,3 +346,61 @@ fn weld_is_never_applied_by_default_and_not_to_a_shell() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("`weld` applies to a solid mesh"), "{err}");
 }
+
+#[test]
+fn weld_bounds_several_gaps_in_a_box_away_from_the_origin() {
+    let dir = scratch("mesh_classes", "weld-gaps");
+    let lo = [3.0, -2.0, 5.0];
+    let welded = cube(lo, 2.0);
+    let mut t = welded.clone();
+    // A corner each of three later triangles moved off its place in
+    // different directions (each first used, in place, by an earlier one).
+    for (i, k) in [(5usize, 1.0), (8, -3.0), (11, 2.0)] {
+        t[i][0] = [
+            t[i][0][0] + k * 1e-7,
+            t[i][0][1] - k * 2e-7,
+            t[i][0][2] + k * 0.5e-7,
+        ];
+    }
+    let (j, w) = answered(&dir, "m.obj", &obj(&t), "weld = \"0.001 mm\"\n");
+    assert!(w[0].contains("`weld` merged 3 corners"), "{w:?}");
+    let p = [4.0, -1.0, 6.0];
+    let unwelded = exact(&t, p);
+    assert!(
+        (unwelded.0.clone() - q(8.0)).abs() > q(1e-8),
+        "the gaps move the volume"
+    );
+    within_bounds(&j, &exact(&welded, p));
+    within_bounds(&j, &unwelded);
+    assert!(j["error_bounds"]["mass"].as_f64().unwrap() < 1e-3);
+}
+
+#[test]
+fn a_lid_joined_to_its_box_only_by_t_junctions_is_one_solid() {
+    let dir = scratch("mesh_classes", "lid");
+    let c = cube([0.0; 3], 1.0);
+    // The top fanned from its centre through every edge's midpoint: no
+    // edge of it is an edge of a side.
+    let ring = [
+        [0.0, 0.0],
+        [0.5, 0.0],
+        [1.0, 0.0],
+        [1.0, 0.5],
+        [1.0, 1.0],
+        [0.5, 1.0],
+        [0.0, 1.0],
+        [0.0, 0.5],
+    ];
+    let mut t: Vec<Tri> = c[..2].iter().chain(&c[4..]).copied().collect();
+    for i in 0..8 {
+        let (a, b) = (ring[i], ring[(i + 1) % 8]);
+        t.push([[0.5, 0.5, 1.0], [a[0], a[1], 1.0], [b[0], b[1], 1.0]]);
+    }
+    let (j, w) = answered(&dir, "m.stl", &stl(&t), "");
+    within_bounds(&j, &exact(&t, [0.5; 3]));
+    assert_eq!(j["mass"], 1.0);
+    assert!(
+        w.len() == 1 && w[0].contains("T-junctions (4 corners inside"),
+        "{w:?}"
+    );
+}
