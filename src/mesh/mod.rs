@@ -1,7 +1,9 @@
 //! Triangle meshes (`shape = "mesh"`): a mesh file read (`read`: binary
-//! and ASCII STL, Wavefront OBJ), its corners welded into a surface and
-//! checked (`check`: closed, consistently oriented, outward, no degenerate
-//! triangle), and its mass properties integrated exactly over the
+//! and ASCII STL, Wavefront OBJ), its corners welded into a surface (and
+//! with a part's `weld`, corners closer than a distance: `near`) and
+//! checked (`check`, `classes`: closed, consistently oriented, outward;
+//! zero-area triangles left out; T-junctions and pieces touching along an
+//! edge answered with a warning), and its mass properties integrated exactly over the
 //! polyhedron (`MeshBody`), once, when the model is read.
 //!
 //! The integrals, a solid's by the divergence theorem as a sum of signed
