@@ -1,11 +1,12 @@
 //! A mesh's corners welded into a surface (corners with exactly equal
 //! coordinates are one vertex) and checked before anything is integrated:
-//! finite coordinates, at least one triangle, no degenerate triangle (a
-//! repeated vertex, zero area); for a solid also closed (every edge shared
-//! by exactly two triangles) and consistently oriented (the two traverse
-//! it in opposite directions, half each way where pieces touch along
-//! it); `MeshBody::load` then has `shells` split it into shells that must
-//! bound one solid.
+//! finite coordinates, at least one triangle of nonzero area (a triangle
+//! of zero area, a repeated vertex or three corners on one line, is left
+//! out with a warning: it encloses nothing and its edges cancel along its
+//! line); for a solid also closed and consistently oriented
+//! (`classes`: the triangles' edges pair up with opposite orientations,
+//! T-junctions allowed); `MeshBody::load` then has `shells` split it into
+//! shells that must bound one solid.
 
 use super::{At, MeshBody, MeshError, Mode, Sums, finish};
 use crate::numeric::{DD, Real};
@@ -19,6 +20,9 @@ pub struct Mesh {
     pub at: Vec<At>,
     /// `edges`, once asked.
     edges: std::sync::OnceLock<Vec<Edge>>,
+    /// Pairs of triangles on the two sides of a T-junction, which `shells`
+    /// joins into one shell (`classes`).
+    pub joins: Vec<(u32, u32)>,
 }
 
 /// "triangle 12 (line 80)": a triangle by its position in the file (from
@@ -43,6 +47,7 @@ impl Mesh {
             faces,
             at,
             edges: std::sync::OnceLock::new(),
+            joins: Vec::new(),
         }
     }
 
@@ -88,14 +93,51 @@ impl Mesh {
         })
     }
 
-    fn name(&self, f: usize) -> String {
+    pub(super) fn name(&self, f: usize) -> String {
         triangle(f, self.at[f])
     }
 
-    /// The checks of the module comment for `mode`.
-    pub fn check(&self, mode: Mode) -> Result<(), MeshError> {
-        // NOTE: the first degenerate triangle, in the file's order, is
-        // named: each thread finds the first in its share, the least wins.
+    /// The checks of the module comment for `mode`: the warnings of what
+    /// the answer survives (a triangle of zero area left out, pieces that
+    /// touch along an edge, T-junctions), one a class, or the error.
+    pub fn check(&mut self, mode: Mode) -> Result<Vec<String>, MeshError> {
+        let mut notes = Vec::new();
+        if let Some(first) = self.first_degenerate() {
+            let keep: Vec<bool> = (0..self.faces.len())
+                .map(|i| self.degenerate(i).is_none())
+                .collect();
+            let dropped = keep.iter().filter(|k| !**k).count();
+            if dropped == keep.len() {
+                return Err(MeshError::new(
+                    first.at,
+                    format!(
+                        "every triangle of the mesh has zero area ({}); it encloses nothing",
+                        first.message
+                    ),
+                ));
+            }
+            let mut k = keep.iter();
+            let mut l = keep.iter();
+            self.faces
+                .retain(|_| *k.next().expect("one flag a triangle"));
+            self.at.retain(|_| *l.next().expect("one flag a triangle"));
+            self.edges.take();
+            notes.push(format!(
+                "{} of zero area left out ({}{}); the answer is still exact: such a triangle encloses nothing and its edges cancel along its line",
+                if dropped == 1 { "a triangle".to_string() } else { format!("{dropped} triangles") },
+                first.message,
+                if dropped > 1 { ", the first" } else { "" }
+            ));
+        }
+        if mode == Mode::Solid {
+            notes.extend(self.closed_and_oriented()?);
+        }
+        Ok(notes)
+    }
+
+    /// The first degenerate triangle in the file's order, if any.
+    pub fn first_degenerate(&self) -> Option<MeshError> {
+        // NOTE: each thread finds the first in its share, the least wins.
         let n = self.faces.len();
         let threads = std::thread::available_parallelism()
             .map_or(1, |t| t.get())
@@ -120,13 +162,7 @@ impl Mesh {
                     .min_by_key(|x| x.0)
             })
         };
-        if let Some((_, e)) = found {
-            return Err(e);
-        }
-        if mode == Mode::Solid {
-            self.closed_and_oriented()?;
-        }
-        Ok(())
+        found.map(|(_, e)| e)
     }
 
     /// Why triangle `i` is degenerate, if it is.
@@ -163,64 +199,6 @@ impl Mesh {
             ));
         }
         None
-    }
-
-    /// Every edge shared by exactly two triangles that traverse it in
-    /// opposite directions; else the first bad edge (by its first
-    /// triangle) is named.
-    fn closed_and_oriented(&self) -> Result<(), MeshError> {
-        let edges = self.edges();
-        let mut worst: Option<(u32, &[Edge])> = None;
-        for run in edges.chunk_by(|x, y| x.0 == y.0) {
-            // NOTE: an edge of two pieces that touch along it is shared by
-            // four (or more) triangles, half each way: closed, and
-            // `shells` tells the pieces apart.
-            let forward = run.iter().filter(|e| e.2).count();
-            let ok = run.len() >= 2 && 2 * forward == run.len();
-            let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
-            if !ok && worst.is_none_or(|(w, _)| first < w) {
-                worst = Some((first, run));
-            }
-        }
-        let Some((_, run)) = worst else {
-            return Ok(());
-        };
-        let key = run[0].0;
-        let (a, b) = (
-            self.vertices[(key >> 32) as usize],
-            self.vertices[(key & 0xffff_ffff) as usize],
-        );
-        let edge = format!("the edge {} – {}", point(a), point(b));
-        let mut faces: Vec<u32> = run.iter().map(|e| e.1).collect();
-        faces.sort_unstable();
-        let names = |fs: &[u32]| {
-            let mut list: Vec<String> = fs.iter().take(4).map(|f| self.name(*f as usize)).collect();
-            if fs.len() > 4 {
-                list.push(format!("and {} more", fs.len() - 4));
-            }
-            list.join(", ")
-        };
-        let first = faces[0] as usize;
-        Err(MeshError::new(
-            self.at[first],
-            match run.len() {
-                1 => format!(
-                    "the mesh is not closed: {edge} of {} belongs to no other triangle (a hole, or a gap between corners that are not exactly equal); a solid needs a closed surface, `mode = \"shell\"` takes an open one",
-                    names(&faces)
-                ),
-                2 => format!(
-                    "the mesh is not consistently oriented: {} and {} both traverse {edge} in the same direction (one of them is wound the other way)",
-                    self.name(first),
-                    self.name(faces[1] as usize)
-                ),
-                n => format!(
-                    "the mesh is not a closed surface: {edge} is shared by {n} triangles ({}), {} traversing it one way and {} the other; a closed surface's triangles pair up along each edge (two, or four where two pieces touch)",
-                    names(&faces),
-                    run.iter().filter(|e| e.2).count(),
-                    run.iter().filter(|e| !e.2).count()
-                ),
-            },
-        ))
     }
 
     /// The centre of the bounding box, the reference point of the sums.
@@ -304,8 +282,14 @@ impl Mesh {
 
     /// The mesh's integrals (see the module comment of `mesh`), in T.
     pub fn integrate<T: Real + Send>(&self, mode: Mode) -> MeshBody {
+        self.integrate_moved::<T>(mode, [0.0; 10])
+    }
+
+    /// `integrate`, its sums' bounds widened by `moved` (`near`).
+    pub fn integrate_moved<T: Real + Send>(&self, mode: Mode, moved: [f64; 10]) -> MeshBody {
         let p = self.reference();
-        let sums = self.sums::<T>(mode, p);
+        let mut sums = self.sums::<T>(mode, p);
+        sums.moved = moved;
         let (measure, g, second, bound) = finish(mode, &sums);
         let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());
         MeshBody {

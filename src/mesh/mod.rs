@@ -1,7 +1,9 @@
 //! Triangle meshes (`shape = "mesh"`): a mesh file read (`read`: binary
-//! and ASCII STL, Wavefront OBJ), its corners welded into a surface and
-//! checked (`check`: closed, consistently oriented, outward, no degenerate
-//! triangle), and its mass properties integrated exactly over the
+//! and ASCII STL, Wavefront OBJ), its corners welded into a surface (and
+//! with a part's `weld`, corners closer than a distance: `near`) and
+//! checked (`check`, `classes`: closed, consistently oriented, outward;
+//! zero-area triangles left out; T-junctions and pieces touching along an
+//! edge answered with a warning), and its mass properties integrated exactly over the
 //! polyhedron (`MeshBody`), once, when the model is read.
 //!
 //! The integrals, a solid's by the divergence theorem as a sum of signed
@@ -27,7 +29,9 @@
 
 pub mod bvh;
 pub mod check;
+mod classes;
 pub mod exact;
+pub mod near;
 pub mod read;
 pub mod shells;
 pub mod weld;
@@ -146,19 +150,52 @@ pub struct Bound {
 impl MeshBody {
     /// Read, weld, check and integrate a mesh file's bytes.
     pub fn load(format: FileType, bytes: &[u8], mode: Mode) -> Result<MeshBody, MeshError> {
+        Ok(MeshBody::load_with(format, bytes, mode, None)?.0)
+    }
+
+    /// `load`, with corners closer than `weld` (in the file's units, > 0;
+    /// a solid's) merged first (`near`), and the warnings of what the
+    /// answer survives (`check`), one a class.
+    pub fn load_with(
+        format: FileType,
+        bytes: &[u8],
+        mode: Mode,
+        weld: Option<f64>,
+    ) -> Result<(MeshBody, Vec<String>), MeshError> {
         let t = read::read(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
         let mut mesh = check::Mesh::weld(t)?;
-        mesh.check(mode)?;
+        let mut notes = Vec::new();
+        let mut moved = [0.0; 10];
+        if let Some(d) = weld {
+            let (welded, w) = mesh.weld_within(d);
+            mesh = welded;
+            moved = w.moved;
+            notes.push(format!(
+                "`weld` merged {} corner{} into corners closer than {d} (the mesh file's units); the bounds count what that can change",
+                w.merged,
+                if w.merged == 1 { "" } else { "s" }
+            ));
+        }
+        notes.extend(mesh.check(mode)?);
         if mode == Mode::Solid {
             shells::check(&mut mesh)?;
         }
         mesh.forget_edges();
-        let body = mesh.integrate::<DD>(mode);
+        let body = mesh.integrate_moved::<DD>(mode, moved);
+        if weld.is_some() && !(body.bound.measure <= body.measure.hi.abs() / 2.0) {
+            return Err(MeshError::new(
+                At::Whole,
+                format!(
+                    "`weld` could change the mesh's volume by up to {:e}, more than half of it ({:e}); give a smaller distance",
+                    body.bound.measure, body.measure.hi
+                ),
+            ));
+        }
         if mode == Mode::Solid && body.measure.hi <= 0.0 {
             return Err(if body.measure.hi < 0.0 {
                 MeshError::new(
                     At::Whole,
-                    "the mesh's volume is negative: its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
+                    "the mesh is inside out: its volume is negative, its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
                 )
             } else {
                 MeshError::new(At::Whole, "the mesh encloses no volume")
@@ -176,7 +213,7 @@ impl MeshBody {
         if mode == Mode::Shell && body.measure.hi <= 0.0 {
             return Err(MeshError::new(At::Whole, "the mesh has no area"));
         }
-        Ok(body)
+        Ok((body, notes))
     }
 
     /// The data reflected through the plane normal to local axis `axis`
@@ -224,10 +261,13 @@ pub struct Sums<T> {
     pub value: [T; 10],
     pub magnitude: [f64; 10],
     pub n: usize,
+    /// How far each sum may be from the file's own corners' by a `weld`
+    /// (`near`), absolute: 0 without one.
+    pub moved: [f64; 10],
 }
 
 /// Index of (i, j), i ≤ j, in the six entries of an upper triangle.
-const PAIRS: [(usize, usize); 6] = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)];
+pub(crate) const PAIRS: [(usize, usize); 6] = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)];
 
 impl<T: Real> Sums<T> {
     pub fn new() -> Sums<T> {
@@ -235,6 +275,7 @@ impl<T: Real> Sums<T> {
             value: [T::of(0.0); 10],
             magnitude: [0.0; 10],
             n: 0,
+            moved: [0.0; 10],
         }
     }
 
@@ -294,8 +335,9 @@ impl<T: Real> Sums<T> {
     /// The error bound of each sum, absolute.
     pub fn error(&self) -> [f64; 10] {
         let unit = unit_of::<T>();
-        self.magnitude
-            .map(|m| unit * (TERM + self.n as f64) * m * (1.0 + 1e-10))
+        std::array::from_fn(|k| {
+            unit * (TERM + self.n as f64) * self.magnitude[k] * (1.0 + 1e-10) + self.moved[k]
+        })
     }
 }
 

@@ -82,7 +82,7 @@ pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
         if signs[0] < 0 {
             return Err(MeshError::new(
                 super::At::Whole,
-                "the mesh's volume is negative: its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
+                "the mesh is inside out: its volume is negative, its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
             ));
         }
         return Ok(1);
@@ -266,6 +266,12 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
             crowded.push(run);
         }
     }
+    // The two sides of each T-junction (`classes`) are one shell.
+    for &(a, b) in &mesh.joins {
+        if live[a as usize] && live[b as usize] {
+            union(&mut parent, a, b);
+        }
+    }
     // NOTE: an edge shared by four or more triangles joins nothing, so
     // that two pieces touching along it stay two shells; but a piece that
     // is not closed without it (one touching itself there, or two pieces
@@ -411,7 +417,7 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
 /// The corners scaled by one power of two so that the largest magnitude is
 /// below 1 (exact), for the predicates; refuses a nonzero coordinate
 /// below `exact::TINY` of that (see `exact`).
-fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
+pub(super) fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
     let big = mesh
         .vertices
         .iter()

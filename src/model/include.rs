@@ -55,7 +55,10 @@ pub(super) struct Files {
     pub(super) read: Vec<PathBuf>,
     /// Each mesh file read once, by its canonical path and mode, however
     /// many parts use it (`model::mesh`).
-    pub(super) meshes: HashMap<(PathBuf, crate::mesh::Mode), std::sync::Arc<crate::mesh::MeshBody>>,
+    pub(super) meshes:
+        HashMap<(PathBuf, crate::mesh::Mode, Option<u64>), std::sync::Arc<crate::mesh::MeshBody>>,
+    /// The warnings of the mesh files read (`model::mesh`), each once.
+    pub(super) mesh_warnings: Vec<String>,
     /// Part files' texts the reader read (`Model::texts_read`).
     pub(super) reads: u64,
     /// The directory trees includes must stay in (canonical): the

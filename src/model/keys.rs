@@ -68,6 +68,7 @@ macro_rules! part_keys {
             file: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "a mesh's file (STL or OBJ), relative to the part file";
             mesh_unit: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "the length unit of a mesh file's coordinates";
             mode: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "a mesh's mode: \"solid\" (the default) or \"shell\"";
+            weld: Kind::Quantity, Dim::LENGTH, Fill::No, Listed, "a solid mesh's corners closer than this merged before it is checked (never by default); the bounds count what that changes";
             tol: Kind::Quantity, Dim::MASS, Fill::No, Listed, "the tolerance of `mass`: `0.1`, `\"0.1 kg\"`, `\"2 %\"`, `\"± 0.1 kg uniform\"`";
             array: Kind::ArrayTable, Dim::DIMENSIONLESS, Fill::No, Every, "copies of the part along a step or about an axis, named `NAME[i]`";
             mirror: Kind::MirrorTable, Dim::DIMENSIONLESS, Fill::No, Every, "the part and its mirror image in a plane: `NAME[0]` and `NAME[1]`";

@@ -84,7 +84,27 @@ impl Ctx<'_> {
             Some(r) => self.rotation(r)?,
             None => Orientation::Identity,
         };
-        let mesh = self.mesh_body(file, mode, files)?;
+        let weld = match p.weld.as_deref() {
+            None => None,
+            Some(w) => {
+                if mode == Mode::Shell {
+                    return Err(self
+                        .err(w.span(), "`weld` applies to a solid mesh")
+                        .help("a shell weighs its surface as it is, open or not"));
+                }
+                let d = self.positive_file(rec, w, "weld", Dim::LENGTH)?;
+                // In the mesh file's units: `scale` is its unit in this file's.
+                let d = d / scale.hi;
+                if !(d.is_finite() && d > 0.0) {
+                    return Err(self.err(
+                        w.span(),
+                        "`weld` is out of the range of the mesh file's coordinates",
+                    ));
+                }
+                Some((d, w.span()))
+            }
+        };
+        let mesh = self.mesh_body(file, mode, weld, files)?;
         let mass = match density {
             Density::Mass(m) => MassSpec::Given(m),
             Density::Per(rho, span) => {
@@ -306,15 +326,24 @@ impl Ctx<'_> {
 
     /// The mesh file `file` names, read once per mode however many parts
     /// use it.
+    ///
+    /// Its warnings (`MeshBody::load_with`) go to `files.mesh_warnings`,
+    /// once per file, mode and weld, said at the part's `file` key (or
+    /// `weld`'s, for the weld's own).
     fn mesh_body(
         &self,
         file: &Spanned<String>,
         mode: Mode,
+        weld: Option<(f64, Range<usize>)>,
         files: &mut Files,
     ) -> Result<Arc<MeshBody>, Diagnostic> {
         let t = self.target_of(file, files, Kind::Mesh)?;
         files.read.push(t.canonical.clone());
-        let key = (t.canonical.clone(), mode);
+        let key = (
+            t.canonical.clone(),
+            mode,
+            weld.as_ref().map(|w| w.0.to_bits()),
+        );
         if let Some(m) = files.meshes.get(&key) {
             return Ok(m.clone());
         }
@@ -325,12 +354,31 @@ impl Ctx<'_> {
                 format!("cannot read the mesh file `{}`: {e}", t.shown_name),
             )
         })?;
-        let body = MeshBody::load(format, &bytes, mode).map_err(|e| {
+        let (body, notes) = MeshBody::load_with(format, &bytes, mode, weld.as_ref().map(|w| w.0))
+            .map_err(|e| {
             self.err(
                 file.span(),
                 format!("the mesh file `{}`: {}", t.shown_name, e.message),
             )
         })?;
+        for (i, note) in notes.into_iter().enumerate() {
+            // The weld's own warning first, at `weld`.
+            let span = match &weld {
+                Some((_, s)) if i == 0 => s.clone(),
+                _ => file.span(),
+            };
+            let (line, column) = self.source.line_col(span.start);
+            // The top-level file is named in front of every warning.
+            let whose = if files.stack.len() > 1 {
+                format!("{}:", self.source.name)
+            } else {
+                String::new()
+            };
+            files.mesh_warnings.push(format!(
+                "{whose}{line}:{column}: the mesh file `{}`: {note}",
+                t.shown_name
+            ));
+        }
         let body = Arc::new(body);
         files.meshes.insert(key, body.clone());
         Ok(body)

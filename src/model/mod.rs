@@ -93,6 +93,9 @@ pub struct Model {
     /// The most names in a part's group path, its sub-assemblies' groups
     /// counted: at most `budget::MAX_GROUP_DEPTH`.
     pub group_depth: usize,
+    /// The warnings of its mesh files, at any depth (`model::mesh`): what
+    /// their answers survive, and what a `weld` merged.
+    pub mesh_warnings: Vec<String>,
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
@@ -179,6 +182,7 @@ impl Model {
             texts_read: 0,
             sources: Vec::new(),
             group_depth: 0,
+            mesh_warnings: Vec::new(),
         }
     }
 
@@ -221,11 +225,13 @@ impl Model {
         let passed = params::flags(&includes.set)?;
         let model = Model::parse_in(source, &mut files, &passed);
         let reads = files.reads;
+        let mesh_warnings = std::mem::take(&mut files.mesh_warnings);
         let included = files.included();
         read.extend(included.iter().cloned());
         let mut model = model?;
         model.included = included;
         model.texts_read = reads;
+        model.mesh_warnings = mesh_warnings;
         Ok(model)
     }
 
@@ -491,6 +497,7 @@ impl Model {
             included: Vec::new(),
             texts_read: 0,
             sources: rec.sources,
+            mesh_warnings: Vec::new(),
         })
     }
 }

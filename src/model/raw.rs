@@ -134,6 +134,8 @@ pub struct RawPart {
     pub file: Option<Box<Spanned<String>>>,
     /// The length unit of a mesh file's coordinates.
     pub mesh_unit: Option<Box<Spanned<String>>>,
+    /// A solid mesh's corners closer than this merged (`mesh::near`).
+    pub weld: Option<Box<Spanned<Quantity>>>,
     /// A mesh's mode: "solid" (the default) or "shell".
     pub mode: Option<Box<Spanned<String>>>,
     /// The part's group in the weight statement: a path of names joined

@@ -236,7 +236,7 @@ fn rules_of(s: &crate::shapes::ShapeInfo) -> Vec<Value> {
 /// A mesh's (`model::mesh`): `file` and `mesh_unit`; a solid weighed by
 /// exactly one of `mass`, `density` and `material`; a shell
 /// (`mode = "shell"`) by `mass`, `areal_density`, or `thickness` with
-/// exactly one of `density` and `material`.
+/// exactly one of `density` and `material`, and no `weld`.
 fn mesh_rules() -> Vec<Value> {
     let only = |given: &[&str]| {
         let others: Vec<&str> = ["mass", "density", "areal_density", "material", "thickness"]
@@ -249,12 +249,13 @@ fn mesh_rules() -> Vec<Value> {
         json!({ "required": ["file", "mesh_unit"] }),
         json!({
             "if": { "properties": { "mode": { "const": "shell" } }, "required": ["mode"] },
+            // `weld` is a solid's alone.
             "then": { "oneOf": [
                 only(&["mass"]),
                 only(&["areal_density"]),
                 only(&["thickness", "density"]),
                 only(&["thickness", "material"]),
-            ] },
+            ], "not": { "required": ["weld"] } },
             "else": { "oneOf": [only(&["mass"]), only(&["density"]), only(&["material"])] },
         }),
     ]

@@ -92,6 +92,7 @@ impl ShapeKind for Mesh {
             "file",
             "mesh_unit",
             "mode",
+            "weld",
             "origin",
             "rotation",
             "mass",
@@ -109,7 +110,7 @@ impl ShapeKind for Mesh {
         material: MaterialRule::Volume,
         real_size: None,
         nonzero_moments: 0,
-        degenerate: "an open, inconsistently oriented or inside-out surface, or a triangle of zero area",
+        degenerate: "an open or inside-out surface, or a triangle repeated (zero-area triangles, T-junctions and pieces touching along an edge are answered, with a warning)",
         help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     };
 

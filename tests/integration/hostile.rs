@@ -758,6 +758,9 @@ fn part(l: u32) -> BoxedStrategy<String> {
                     lines.push(format!("origin = {center}"));
                     if let Some(r) = rot {
                         lines.push(format!("rotation = {r}"));
+                    } else {
+                        // `weld` (issue 30), read before the file is.
+                        lines.push(format!("weld = {length}"));
                     }
                 }
                 _ => {

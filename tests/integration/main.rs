@@ -34,6 +34,7 @@ mod layers;
 mod leftovers;
 mod library;
 mod limits;
+mod mesh_classes;
 mod meshes;
 mod new_shapes;
 mod oracle;

@@ -456,12 +456,12 @@ fn each_bad_mesh_is_refused_at_the_file_key_with_its_reason() {
         (
             "open.stl",
             ascii_stl(&good[1..]).into_bytes(),
-            "the mesh is not closed: the edge",
+            "the mesh is open (not closed): the edge",
         ),
         (
             "flip.stl",
             ascii_stl(&flipped).into_bytes(),
-            "not consistently oriented: triangle",
+            "(not consistently oriented): triangle",
         ),
         (
             "inward.stl",

@@ -374,6 +374,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "file" => "\"shapes/meshes/bracket.stl\"",
         "mesh_unit" => "\"mm\"",
         "mode" => "\"shell\"",
+        "weld" => "\"0.001 mm\"",
         "group" => "\"structure/panels\"",
         "maturity" => "\"sample\"",
         "tol" => "\"1 %\"",
@@ -1084,6 +1085,10 @@ impl Gen<'_, '_> {
             lines.push(format!("mode = \"{}\"", "shell"));
         } else if s.sizes.contains(&"file") && self.p.one_in(3) {
             lines.push("mode = \"solid\"".to_string());
+        }
+        // A solid mesh's `weld` (issue 30): far below the bracket's sizes.
+        if !mode_shell && s.sizes.contains(&"file") && self.p.one_in(3) {
+            lines.push(format!("weld = {}", self.len(1e-7)));
         }
         let spanned = self.dims(s, &mut lines);
         // The real size of an idealised shape.
