@@ -49,6 +49,9 @@ pub enum Kind {
     Units,
     /// A density outside `DENSITY`.
     Density,
+    /// A mesh file answered exactly despite a class of fault it survives,
+    /// or welded (`model::mesh::MeshNote`).
+    Mesh,
 }
 
 /// One plausibility warning: where (the file as named, and the span in it)
@@ -89,6 +92,12 @@ pub fn warnings(model: &Model, source: &Source) -> Vec<Warning> {
         seen: std::collections::HashSet::new(),
     };
     walk.file(model, None);
+    walk.out.extend(model.mesh_warnings.iter().map(|n| Warning {
+        kind: Kind::Mesh,
+        path: n.path.clone(),
+        span: n.span,
+        message: n.message.clone(),
+    }));
     walk.out
 }
 

@@ -58,7 +58,7 @@ pub(super) struct Files {
     pub(super) meshes:
         HashMap<(PathBuf, crate::mesh::Mode, Option<u64>), std::sync::Arc<crate::mesh::MeshBody>>,
     /// The warnings of the mesh files read (`model::mesh`), each once.
-    pub(super) mesh_warnings: Vec<String>,
+    pub(super) mesh_warnings: Vec<super::mesh::MeshNote>,
     /// Part files' texts the reader read (`Model::texts_read`).
     pub(super) reads: u64,
     /// The directory trees includes must stay in (canonical): the

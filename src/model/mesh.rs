@@ -367,22 +367,27 @@ impl Ctx<'_> {
                 Some((_, s)) if i == 0 => s.clone(),
                 _ => file.span(),
             };
-            let (line, column) = self.source.line_col(span.start);
-            // The top-level file is named in front of every warning.
-            let whose = if files.stack.len() > 1 {
-                format!("{}:", self.source.name)
-            } else {
-                String::new()
-            };
-            files.mesh_warnings.push(format!(
-                "{whose}{line}:{column}: the mesh file `{}`: {note}",
-                t.shown_name
-            ));
+            files.mesh_warnings.push(MeshNote {
+                path: self.source.name.clone(),
+                span: self.source.span(span),
+                message: format!("the mesh file `{}`: {note}", t.shown_name),
+            });
         }
         let body = Arc::new(body);
         files.meshes.insert(key, body.clone());
         Ok(body)
     }
+}
+
+/// A warning of a mesh file (what its exact answer survives, what a
+/// `weld` merged): the part file it is in, as named, and the place of the
+/// part's `file` (or `weld`) key there. `analysis::plausible` reports it
+/// with the plausibility warnings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshNote {
+    pub path: String,
+    pub span: crate::diag::Span,
+    pub message: String,
 }
 
 /// A mesh's weight as the file gives it.

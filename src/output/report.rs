@@ -232,13 +232,7 @@ fn precision_line(s: &Summary) -> String {
         precision_label(s.precision),
         s.rtol
     );
-    // A mesh's warnings (quantity `mesh`) are not about a value's bound.
-    match s
-        .accuracy_warnings
-        .iter()
-        .filter(|w| w.quantity != "mesh")
-        .count()
-    {
+    match s.accuracy_warnings.len() {
         0 => {}
         1 => line.push_str("; 1 value is not within it (see the warning)"),
         n => {

@@ -129,12 +129,19 @@ fn answered(dir: &Path, name: &str, mesh: &str, extra: &str) -> (serde_json::Val
     let err = String::from_utf8_lossy(&out.stderr).into_owned();
     assert_eq!(out.status.code(), Some(0), "{err}");
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let warnings = j["accuracy_warnings"]
+    let warnings = j["warnings"]
         .as_array()
-        .unwrap()
+        .map_or(&[][..], Vec::as_slice)
         .iter()
-        .filter(|w| w["quantity"] == "mesh")
-        .map(|w| w["message"].as_str().unwrap().to_string())
+        .filter(|w| w["kind"] == "mesh")
+        .map(|w| {
+            format!(
+                "{}:{}: {}",
+                w["line"],
+                w["column"],
+                w["message"].as_str().unwrap()
+            )
+        })
         .collect();
     (j, warnings)
 }

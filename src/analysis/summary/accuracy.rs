@@ -97,15 +97,6 @@ pub(super) fn summarize(
         .into_iter()
         .map(|s| s.warning(summary.precision, accuracy.rtol))
         .collect();
-    // A mesh's warnings (`Model::mesh_warnings`) go the same way.
-    summary
-        .accuracy_warnings
-        .extend(model.mesh_warnings.iter().map(|m| AccuracyWarning {
-            quantity: "mesh".into(),
-            value: None,
-            error_bound: 0.0,
-            message: m.clone(),
-        }));
     Ok(summary)
 }
 
@@ -244,9 +235,7 @@ fn largest(v: Value) -> f64 {
 pub fn with_predicted(s: &Summary) -> Vec<AccuracyWarning> {
     let mut out = s.accuracy_warnings.clone();
     if let Some(p) = &s.predicted {
-        // A mesh's warnings are the file's, said once.
-        let own = p.accuracy_warnings.iter().filter(|w| w.quantity != "mesh");
-        out.extend(own.map(|w| AccuracyWarning {
+        out.extend(p.accuracy_warnings.iter().map(|w| AccuracyWarning {
             quantity: format!("predicted.{}", w.quantity),
             message: format!("the predicted body's {}", w.message),
             ..w.clone()

@@ -98,7 +98,7 @@ fn precision_worth_a_line(s: &Summary) -> bool {
         PrecisionChoice::Auto => false,
         PrecisionChoice::Standard | PrecisionChoice::Extended => true,
     };
-    asked || s.accuracy_warnings.iter().any(|w| w.quantity != "mesh")
+    asked || !s.accuracy_warnings.is_empty()
 }
 
 /// One table of the vectors and the inertia tensor, which share its
