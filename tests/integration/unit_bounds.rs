@@ -74,7 +74,7 @@ impl Writer<'_> {
     }
 
     fn coin(&mut self) -> bool {
-        self.rng.next_u64() % 2 == 0
+        self.rng.next_u64().is_multiple_of(2)
     }
 
     /// `x` of dimension mass^a length^b: as a plain number in file units,
@@ -171,8 +171,8 @@ fn part(w: &mut Writer) -> Generated {
     let shape = w.rng.next_u64() % 5;
     let (part, density) = match shape {
         // Volumes: box, cylinder, sphere; a density, a mass or a material.
-        0 | 1 | 2 => {
-            let (part, dims) = match shape {
+        0..=2 => {
+            let part = match shape {
                 0 => {
                     let t: Vec<(String, f64)> = (0..3).map(|_| w.length_in(0.2, 3.0)).collect();
                     toml.push_str(&format!(
@@ -180,7 +180,7 @@ fn part(w: &mut Writer) -> Generated {
                         t[0].0, t[1].0, t[2].0
                     ));
                     let v = [t[0].1, t[1].1, t[2].1];
-                    (Part::cuboid(v, centre, None, Amount::Density(1.0)), ())
+                    Part::cuboid(v, centre, None, Amount::Density(1.0))
                 }
                 1 => {
                     let (rt, rv) = w.length_in(0.2, 3.0);
@@ -188,21 +188,14 @@ fn part(w: &mut Writer) -> Generated {
                     toml.push_str(&format!(
                         "shape = \"cylinder\"\nradius = {rt}\nlength = {lt}\n"
                     ));
-                    (
-                        Part::cylinder(rv, None, lv, centre, None, Amount::Density(1.0)),
-                        (),
-                    )
+                    Part::cylinder(rv, None, lv, centre, None, Amount::Density(1.0))
                 }
                 _ => {
                     let (rt, rv) = w.length_in(0.2, 3.0);
                     toml.push_str(&format!("shape = \"sphere\"\nradius = {rt}\n"));
-                    (
-                        Part::sphere(rv, None, centre, None, Amount::Density(1.0)),
-                        (),
-                    )
+                    Part::sphere(rv, None, centre, None, Amount::Density(1.0))
                 }
             };
-            let () = dims;
             match w.rng.next_u64() % 3 {
                 0 => {
                     let (t, v) = w.quantity_in(0.5, 9.0, 1, -3);
