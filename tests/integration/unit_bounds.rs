@@ -90,6 +90,11 @@ impl Writer<'_> {
             (0, 1) => (ls.to_string(), lq),
             (0, 2) => (format!("{ls}^2"), pow(&lq, 2)),
             (1, 0) => (ms.to_string(), mq),
+            // A volume in litres or millilitres now and then.
+            (1, -3) if self.rng.next_u64().is_multiple_of(3) => {
+                let (vs, vq) = self.pick(&[("L", r::frac(1, 1000)), ("mL", r::frac(1, 1_000_000))]);
+                (format!("{ms}/{vs}"), mq / vq)
+            }
             (1, k) => (format!("{ms}/{ls}^{}", -k), mq / pow(&lq, -k)),
             _ => unreachable!("the test writes lengths, areas, masses and densities"),
         };
@@ -646,12 +651,14 @@ fn generated_materials_times_a_size_are_within_their_bounds() {
 #[test]
 fn the_generator_writes_quantities_in_other_units_in_each_kind_of_key() {
     let mut seen = std::collections::BTreeSet::new();
+    let mut litres = false;
     for seed in 0..60 {
         let c = case(
             LENGTHS[(seed % 7) as usize],
             MASSES[(seed % 5) as usize],
             seed,
         );
+        litres |= c.toml.contains("/L\"") || c.toml.contains("/mL\"");
         for line in c.toml.lines() {
             if let Some((key, value)) = line.split_once(" = ")
                 && value.contains('"')
@@ -683,4 +690,5 @@ fn the_generator_writes_quantities_in_other_units_in_each_kind_of_key() {
     ] {
         assert!(seen.contains(key), "no {key} in another unit: {seen:?}");
     }
+    assert!(litres, "no density per litre or millilitre");
 }
