@@ -692,3 +692,98 @@ fn the_generator_writes_quantities_in_other_units_in_each_kind_of_key() {
     }
     assert!(litres, "no density per litre or millilitre");
 }
+
+/// A mesh shell's density times its `thickness` is a product formed in
+/// f64 too: a box's surface a × b × c as twelve triangles, against its six
+/// faces as plates of the exact areal density, in both arithmetics.
+#[test]
+fn a_mesh_shell_s_density_times_its_thickness_is_within_its_bound() {
+    let (a, b, c) = (1.25, 0.75, 2.5);
+    let (x, y, z) = (a / 2.0, b / 2.0, c / 2.0);
+    // Each face's corners counter-clockwise seen from outside.
+    let faces: [[[f64; 3]; 4]; 6] = [
+        [[x, -y, -z], [x, y, -z], [x, y, z], [x, -y, z]],
+        [[-x, -y, -z], [-x, -y, z], [-x, y, z], [-x, y, -z]],
+        [[-x, y, -z], [-x, y, z], [x, y, z], [x, y, -z]],
+        [[-x, -y, -z], [x, -y, -z], [x, -y, z], [-x, -y, z]],
+        [[-x, -y, z], [x, -y, z], [x, y, z], [-x, y, z]],
+        [[-x, -y, -z], [-x, y, -z], [x, y, -z], [x, -y, -z]],
+    ];
+    let mut stl = String::from("solid box\n");
+    for f in &faces {
+        for tri in [[f[0], f[1], f[2]], [f[0], f[2], f[3]]] {
+            stl.push_str(" facet normal 0 0 0\n  outer loop\n");
+            for p in tri {
+                stl.push_str(&format!("   vertex {:?} {:?} {:?}\n", p[0], p[1], p[2]));
+            }
+            stl.push_str("  endloop\n endfacet\n");
+        }
+    }
+    stl.push_str("endsolid box\n");
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("box.stl"), stl).unwrap();
+    // Thicknesses whose product with the density rounds by a good part
+    // of an ulp.
+    for t in [0.0037, 0.0029, 0.0013, 0.0063, 0.0077] {
+        let toml = format!(
+            "units = {{ length = \"m\", mass = \"kg\" }}\n[analysis]\nomega = [0, 0, 1]\n\
+             [[part]]\nshape = \"mesh\"\nfile = \"box.stl\"\nmesh_unit = \"m\"\n\
+             mode = \"shell\"\ndensity = \"2.7 g/cm^3\"\nthickness = {t:?}\n\
+             [[part]]\nshape = \"point\"\nmass = 0.5\ncenter = [0.3, 0.2, 0.1]\n"
+        );
+        // The exact areal density: 2.7 g/cm³ (the nearest f64 of 2700)
+        // times the thickness, not rounded.
+        shell_against_plates(
+            dir.path(),
+            &toml,
+            r::q(nearest(2.7, 1000, 1)) * r::q(t),
+            [a, b, c],
+        );
+    }
+}
+
+/// `toml` (a box's surface a × b × c as a shell mesh `box.stl` in `dir`,
+/// and a point) against six plates of `areal` density and the point.
+fn shell_against_plates(dir: &std::path::Path, toml: &str, areal: Q, [a, b, c]: [f64; 3]) {
+    let (x, y, z) = (a / 2.0, b / 2.0, c / 2.0);
+    let path = dir.join("parts.toml");
+    std::fs::write(&path, toml).unwrap();
+    let turn = |m: [[f64; 3]; 3]| Some(r::Rotation::Matrix(m));
+    let x_normal = turn([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]);
+    let y_normal = turn([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]);
+    let plate = |size: [f64; 2], center: [f64; 3], rotation: Option<r::Rotation>| {
+        alone(
+            Part::plate(size, center, None, Amount::Density(1.0)).with_rotation(rotation),
+            areal.clone(),
+        )
+    };
+    let case = Case {
+        toml: String::new(),
+        length: Length::M,
+        mass: Mass::Kg,
+        parts: vec![
+            // x faces: a plate c × b turned so its normal is x (its local
+            // x is the file's −z, its local y the file's y).
+            plate([c, b], [x, 0.0, 0.0], x_normal),
+            plate([c, b], [-x, 0.0, 0.0], x_normal),
+            // y faces: local x is x, local y is z.
+            plate([a, c], [0.0, y, 0.0], y_normal),
+            plate([a, c], [0.0, -y, 0.0], y_normal),
+            plate([a, b], [0.0, 0.0, z], None),
+            plate([a, b], [0.0, 0.0, -z], None),
+            alone(Part::point(0.5, [0.3, 0.2, 0.1]), r::int(1)),
+        ],
+        about: None,
+        omega: [r::int(0), r::int(0), r::int(1)],
+    };
+    let e = exact(&case);
+    for p in ["standard", "extended"] {
+        let (v, _) = crate::common::report_json_file(&path, &["--precision", p]);
+        let failures = honest(&v, &e);
+        assert!(
+            failures.is_empty(),
+            "{p}:\n  {}\nfor:\n{toml}",
+            failures.join("\n  ")
+        );
+    }
+}
