@@ -279,7 +279,7 @@ fn own_second_moment_in<T: Real, L: Lift>(
 ) -> (M3<T>, Option<Own>) {
     let units = bound.then(|| Units {
         placed: error::placed_units::<T>(&spec.place, &spec.placed),
-        mass: error::mass_error(spec),
+        mass: error::mass_error::<T>(spec),
         by_density: matches!(spec.mass, MassSpec::Density(_)),
     });
     spec.place.own_second_moment(m, units, l)

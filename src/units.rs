@@ -8,6 +8,8 @@
 
 use std::fmt;
 
+mod round;
+
 /// Physical dimension as exponents of (mass, length, time). Angles are
 /// dimensionless (radians), as in SI.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -130,24 +132,19 @@ impl Factor {
         })
     }
 
-    /// `x` in SI. One multiplication and one correctly rounded division for
-    /// the common units (`x / 1000` for millimetres, not `x * 0.001`).
+    /// `x` in SI (or in whatever unit the factor converts to): the f64
+    /// nearest to x times the exact factor, one rounding (`round::ratio`:
+    /// `"10.1 in"` in a millimetre file is the f64 nearest to 256.54, not
+    /// `10.1 * 127 / 5`, which rounds twice and may be an ulp off). A
+    /// factor with π (angle units) is formed in double-double and the
+    /// product rounded once: within half an ulp and 2⁻¹⁰⁰ of the value.
     pub fn apply(self, x: f64) -> f64 {
-        let (num, den) = (self.num as f64, self.den as f64);
-        let mut v = if self.num == 1 {
-            x / den
+        if self.pi == 0 {
+            round::ratio(x, self.num, self.den)
         } else {
-            // Multiply first (exact for small numerators), unless that
-            // overflows where the result itself would not.
-            match x * num {
-                p if p.is_finite() => p / den,
-                _ => x / den * num,
-            }
-        };
-        if self.pi != 0 {
-            v *= std::f64::consts::PI.powi(self.pi);
+            use crate::numeric::{DD, Real};
+            (DD::of(x) * self.dd()).f64()
         }
-        v
     }
 
     /// self / o, exactly, or `None` if the fraction outgrows i128.

@@ -226,7 +226,8 @@ impl Frame {
             && let Some(units) = s.place.scaled_rounding()
         {
             s.placed =
-                crate::part::Placed::new(f64::from(s.placed.units) + units, f64::from(s.placed.at));
+                crate::part::Placed::new(f64::from(s.placed.units) + units, f64::from(s.placed.at))
+                    .with_mass(f64::from(s.placed.mass));
         }
     }
 
@@ -267,6 +268,7 @@ impl Frame {
             f64::from(old.at) * self.length * grow
                 + ops * crate::part::error::U64 * (origin + reach),
         )
+        .with_mass(f64::from(old.mass))
     }
 }
 

@@ -73,6 +73,11 @@ pub(super) struct Material {
     pub span: Range<usize>,
     /// The `thickness` or `diameter` it read, which is a real size too.
     pub size: Option<Value>,
+    /// Units of f64's unit roundoff by which `file` was rounded as the
+    /// density times the thickness, area or π/4 d² (`Placed::mass`; the
+    /// density itself is the correctly rounded conversion the file's
+    /// numbers are taken as).
+    pub roundings: f64,
 }
 
 impl Ctx<'_> {
@@ -190,8 +195,14 @@ impl Ctx<'_> {
             )
         };
         let mut size = None;
+        // NOTE: the product rounds once (thickness, area); π/4 d² four
+        // times: π's own rounding, then three products.
+        let mut roundings = 1.0;
         let out = match shape.info().material {
-            MaterialRule::Volume => (si, file),
+            MaterialRule::Volume => {
+                roundings = 0.0;
+                (si, file)
+            }
             MaterialRule::Thickness => {
                 let t = p.thickness.as_deref().ok_or_else(|| needs("thickness"))?;
                 let t = self.positive_value(rec, t, "thickness", Dim::LENGTH)?;
@@ -211,6 +222,7 @@ impl Ctx<'_> {
                 (None, Some(d)) => {
                     let d = self.positive_value(rec, d, "diameter", Dim::LENGTH)?;
                     size = Some(d);
+                    roundings = 4.0;
                     let q = std::f64::consts::PI / 4.0;
                     factor(q * d.si * d.si, q * d.file * d.file)
                 }
@@ -245,6 +257,7 @@ impl Ctx<'_> {
             file: out.1,
             span: name.span(),
             size,
+            roundings,
         }))
     }
 

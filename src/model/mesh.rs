@@ -105,9 +105,13 @@ impl Ctx<'_> {
             }
         };
         let mesh = self.mesh_body(file, mode, weld, files)?;
+        let roundings = match density {
+            Density::Per(_, _, r) => r,
+            Density::Mass(_) => 0.0,
+        };
         let mass = match density {
             Density::Mass(m) => MassSpec::Given(m),
-            Density::Per(rho, span) => {
+            Density::Per(rho, span, _) => {
                 let spec = Spec {
                     mass: MassSpec::Density(rho),
                     place: Place::Mesh(crate::shapes::mesh::Mesh {
@@ -151,7 +155,7 @@ impl Ctx<'_> {
                 mesh,
             }),
             removed: matches!(&p.remove, Some(r) if *r.get_ref()),
-            placed: Default::default(),
+            placed: crate::part::Placed::default().with_mass(roundings),
         };
         self.in_file_range(&spec, &name, raw.span())?;
         rec.record_material(p, &spec);
@@ -272,7 +276,7 @@ impl Ctx<'_> {
             (_, Some("areal_density"), _) => {
                 let q = p.areal_density.as_deref().expect("given");
                 let d = self.positive_file(rec, q, "areal_density", Dim::AREAL_DENSITY)?;
-                Ok(Density::Per(d, q.span()))
+                Ok(Density::Per(d, q.span(), 0.0))
             }
             (_, Some("density"), _) => {
                 let q = p.density.as_deref().expect("given");
@@ -297,7 +301,7 @@ impl Ctx<'_> {
         span: Range<usize>,
     ) -> Result<Density, Diagnostic> {
         let Some(t) = thickness else {
-            return Ok(Density::Per(d, span));
+            return Ok(Density::Per(d, span, 0.0));
         };
         let t = self.positive_file(rec, t, "thickness", Dim::LENGTH)?;
         // The number kept is the areal density: a density's tolerance
@@ -310,7 +314,7 @@ impl Ctx<'_> {
                 "the density times the thickness is out of the range of f64",
             ));
         }
-        Ok(Density::Per(a, span))
+        Ok(Density::Per(a, span, 1.0))
     }
 
     /// A positive quantity in the file's units (checked in SI too).
@@ -394,8 +398,10 @@ pub struct MeshNote {
 enum Density {
     /// `mass`, in the file's units.
     Mass(f64),
-    /// Per volume or area in the file's units, and the key that gave it.
-    Per(f64, Range<usize>),
+    /// Per volume or area in the file's units, the key that gave it, and
+    /// the f64 roundings that formed it (`Placed::mass`: a density times
+    /// a shell's thickness).
+    Per(f64, Range<usize>, f64),
 }
 
 fn measure_name(mode: Mode) -> &'static str {

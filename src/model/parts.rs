@@ -156,6 +156,7 @@ impl Ctx<'_> {
             }
         }
         let measure = || si_place.measure::<f64, _>(Fixed);
+        let roundings = material.as_ref().map_or(0.0, |m| m.roundings);
         let (mass, mass_spec) = match (&p.mass, density, shape.density_key(), &material) {
             (None, None, _, Some(super::material::Material { si, file, span, .. })) => {
                 if is_thin_shell(&mut si_place.clone()) {
@@ -267,7 +268,7 @@ impl Ctx<'_> {
             mass: mass_spec,
             place,
             removed: matches!(&p.remove, Some(r) if *r.get_ref()),
-            placed: Default::default(),
+            placed: crate::part::Placed::default().with_mass(roundings),
         };
         self.in_file_range(&spec, &name, raw.span())?;
         rec.record_material(p, &spec);

@@ -7,14 +7,17 @@ pub use crate::shapes::error::{
     GIVEN, OUTER, Own, TURN, U_DD, U64, placed_units, turn_error, unit_of,
 };
 
-/// The error of a part's mass, relative, in units: 0 when given; for a
-/// density, one product and its measure's roundings
-/// (`shapes::error::measure_error`).
-pub fn mass_error(spec: &Spec) -> f64 {
+/// The error of a part's mass, relative, in units of the arithmetic `T`:
+/// 0 when given; for a density, one product and its measure's roundings
+/// (`shapes::error::measure_error`), and the f64 roundings that formed the
+/// density from the file's numbers (`Placed::mass`: a material's density
+/// times a thickness, an area or a diameter's π/4 d², in f64 whatever the
+/// arithmetic, so in `extended` worth 2⁵³/7 of its units each).
+pub fn mass_error<T: crate::numeric::Real>(spec: &Spec) -> f64 {
     if let MassSpec::Given(_) = spec.mass {
         return 0.0;
     }
-    1.0 + spec.place.measure_error()
+    1.0 + spec.place.measure_error() + f64::from(spec.placed.mass) * U64 / unit_of::<T>()
 }
 
 /// How far each component of a part's centroid, as `part::centroid` forms

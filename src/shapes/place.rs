@@ -9,12 +9,16 @@ use crate::rotation::Orientation;
 /// The rounding of a part's numbers by the frames that placed it, for its
 /// error bounds (`shapes::error`): `units` of f64's unit roundoff, relative,
 /// in its sizes, edges, mass or density and tensor entries; `at`, absolute
-/// (file units), in each coordinate of its position. Rounded up to f32
-/// (they are bounds; a part stays small).
+/// (file units), in each coordinate of its position; `mass`, units of
+/// f64's unit roundoff, relative, by which its mass or density was rounded
+/// before composition whatever the arithmetic (a material's density times
+/// a `thickness`, `area` or `diameter`, formed in f64 as the file is
+/// read). Rounded up to f32 (they are bounds; a part stays small).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Placed {
     pub units: f32,
     pub at: f32,
+    pub mass: f32,
 }
 
 impl Placed {
@@ -27,6 +31,16 @@ impl Placed {
         Placed {
             units: up(units),
             at: up(at),
+            mass: 0.0,
+        }
+    }
+
+    /// These, with `mass` units of its mass's rounding (rounded up).
+    pub fn with_mass(self, mass: f64) -> Placed {
+        let y = mass as f32;
+        Placed {
+            mass: if f64::from(y) < mass { y.next_up() } else { y },
+            ..self
         }
     }
 }

@@ -53,6 +53,7 @@ mod shell;
 mod short_report;
 mod stress;
 mod uncertainty;
+mod unit_bounds;
 // Shared with the benchmark and an example, each using a part.
 #[path = "../support/mod.rs"]
 #[allow(dead_code)]
