@@ -42,6 +42,17 @@ pub struct Includes {
     pub set: Vec<String>,
 }
 
+/// A warning of a mesh file (what its exact answer survives, what a
+/// `weld` merged): the part file it is in, as named, and the place of the
+/// part's `file` (or `weld`) key there. `analysis::plausible` reports it
+/// with the plausibility warnings.
+#[derive(Debug, Clone, PartialEq)]
+pub struct MeshNote {
+    pub path: String,
+    pub span: crate::diag::Span,
+    pub message: String,
+}
+
 /// The files being read: the chain of includes (for cycles) and each file
 /// parsed once, however many times it is included.
 #[derive(Default)]
@@ -58,7 +69,7 @@ pub(super) struct Files {
     pub(super) meshes:
         HashMap<(PathBuf, crate::mesh::Mode, Option<u64>), std::sync::Arc<crate::mesh::MeshBody>>,
     /// The warnings of the mesh files read (`model::mesh`), each once.
-    pub(super) mesh_warnings: Vec<super::mesh::MeshNote>,
+    pub(super) mesh_warnings: Vec<MeshNote>,
     /// Part files' texts the reader read (`Model::texts_read`).
     pub(super) reads: u64,
     /// The directory trees includes must stay in (canonical): the

@@ -371,7 +371,7 @@ impl Ctx<'_> {
                 Some((_, s)) if i == 0 => s.clone(),
                 _ => file.span(),
             };
-            files.mesh_warnings.push(MeshNote {
+            files.mesh_warnings.push(super::include::MeshNote {
                 path: self.source.name.clone(),
                 span: self.source.span(span),
                 message: format!("the mesh file `{}`: {note}", t.shown_name),
@@ -381,17 +381,6 @@ impl Ctx<'_> {
         files.meshes.insert(key, body.clone());
         Ok(body)
     }
-}
-
-/// A warning of a mesh file (what its exact answer survives, what a
-/// `weld` merged): the part file it is in, as named, and the place of the
-/// part's `file` (or `weld`) key there. `analysis::plausible` reports it
-/// with the plausibility warnings.
-#[derive(Debug, Clone, PartialEq)]
-pub struct MeshNote {
-    pub path: String,
-    pub span: crate::diag::Span,
-    pub message: String,
 }
 
 /// A mesh's weight as the file gives it.

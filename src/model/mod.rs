@@ -95,7 +95,7 @@ pub struct Model {
     pub group_depth: usize,
     /// The warnings of its mesh files, at any depth (`model::mesh`): what
     /// their answers survive, and what a `weld` merged.
-    pub mesh_warnings: Vec<mesh::MeshNote>,
+    pub mesh_warnings: Vec<include::MeshNote>,
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
