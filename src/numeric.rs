@@ -447,6 +447,23 @@ pub fn unit(v: &[f64; 3]) -> [f64; 3] {
     w.map(|x| x / n)
 }
 
+/// `x` to `digits` significant digits, as Rust writes it; in exponent
+/// form when large or small (`1.3e154`): the plausibility warnings' numbers.
+pub fn significant(x: f64, digits: usize) -> String {
+    // NOTE: rounding up may pass f64::MAX (1.7976…e308 to 3 digits is
+    // 1.80e308): the number is then shown as it is.
+    let r = format!("{x:.*e}", digits.saturating_sub(1))
+        .parse()
+        .ok()
+        .filter(|r: &f64| r.is_finite())
+        .unwrap_or(x);
+    if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
+        format!("{r:e}")
+    } else {
+        format!("{r}")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -304,20 +304,9 @@ pub fn short(x: f64) -> String {
     rounded(x, 6)
 }
 
-/// `x` to `digits` significant digits (`short`).
+/// `x` to `digits` significant digits (`numeric::significant`).
 pub fn rounded(x: f64, digits: usize) -> String {
-    // NOTE: rounding up may pass f64::MAX (1.7976…e308 to 3 digits is
-    // 1.80e308): the number is then shown as it is.
-    let r = format!("{x:.*e}", digits.saturating_sub(1))
-        .parse()
-        .ok()
-        .filter(|r: &f64| r.is_finite())
-        .unwrap_or(x);
-    if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
-        format!("{r:e}")
-    } else {
-        format!("{r}")
-    }
+    crate::numeric::significant(x, digits)
 }
 
 /// The span of key `key` (a whole word, followed by `=`) in the table at

@@ -95,21 +95,9 @@ pub fn gyration(dialect: Dialect, link: &Link) -> Option<String> {
     ))
 }
 
-/// `x` to 3 significant digits, as Rust writes it; in exponent form when
-/// large or small (`1.3e154`).
+/// `x` to 3 significant digits (`numeric::significant`).
 fn short(x: f64) -> String {
-    // NOTE: rounding up may pass f64::MAX: the number is then shown as
-    // it is, never `inf`.
-    let r = format!("{x:.2e}")
-        .parse()
-        .ok()
-        .filter(|r: &f64| r.is_finite())
-        .unwrap_or(x);
-    if r != 0.0 && !(1e-3..1e6).contains(&r.abs()) {
-        format!("{r:e}")
-    } else {
-        format!("{r}")
-    }
+    crate::numeric::significant(x, 3)
 }
 
 /// The farthest any of the link's geometry reaches from its origin, m;
