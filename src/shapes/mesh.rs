@@ -111,7 +111,7 @@ impl ShapeKind for Mesh {
         real_size: None,
         nonzero_moments: 0,
         degenerate: "an open or inside-out surface, or a triangle repeated (zero-area triangles, T-junctions and pieces touching along an edge are answered, with a warning)",
-        help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`; `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
+        help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`, and `weld` (corners closer than it merged; never by default); `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     };
 
     /// (its measure is its file’s: `shapes::error`).
