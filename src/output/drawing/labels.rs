@@ -62,6 +62,24 @@ pub fn fit(t: &str, room: f64) -> String {
     out
 }
 
+/// `t` cut to at most `room` px from its start, an ellipsis for what is
+/// left out: the end of a long path, which names the file.
+pub fn fit_end(t: &str, room: f64) -> String {
+    if width(t) <= room {
+        return t.to_string();
+    }
+    let mut kept = Vec::new();
+    let mut w = FONT * advance('…');
+    for c in t.chars().rev() {
+        w += FONT * advance(c);
+        if w > room {
+            break;
+        }
+        kept.push(c);
+    }
+    std::iter::once('…').chain(kept.into_iter().rev()).collect()
+}
+
 /// A box on the page, px: left, top, right, bottom.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Rect(pub [f64; 4]);
@@ -243,6 +261,19 @@ impl Placer {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_path_too_long_keeps_its_end_within_the_room() {
+        let path = format!("/{}/budget.toml", "a".repeat(300));
+        let room = 200.0;
+        let cut = fit_end(&path, room);
+        assert!(width(&cut) <= room, "{cut}");
+        assert!(
+            cut.starts_with('…') && cut.ends_with("/budget.toml"),
+            "{cut}"
+        );
+        assert_eq!(fit_end("short.toml", room), "short.toml");
+    }
 
     #[test]
     fn a_label_keeps_off_a_disc_at_its_anchor() {

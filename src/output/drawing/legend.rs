@@ -50,12 +50,16 @@ pub(super) fn legend_lines(survey: &Survey, small: usize, body: &Body, o: &Optio
     if o.omega.is_some() {
         e.push(Entry::Text("ω: the angular velocity's direction".into()));
     }
-    let title = format!(
-        "{}: lengths in {}, third-angle views, colours by {kind}",
-        crate::output::format::name(&o.title),
+    // NOTE: a long path gives up its start, never the words after it
+    // (which kind the colours are is said here alone).
+    let rest = format!(
+        ": lengths in {}, third-angle views, colours by {kind}",
         body.unit
     );
-    let mut lines = vec![Entry::Text(labels::fit(&title, WIDTH - 20.0))];
+    let room = WIDTH - 20.0 - labels::width(&rest);
+    let name = labels::fit_end(&crate::output::format::name(&o.title), room);
+    let title = labels::fit(&format!("{name}{rest}"), WIDTH - 20.0);
+    let mut lines = vec![Entry::Text(title)];
     let mut row = Vec::new();
     let mut col = 0;
     for entry in e {
