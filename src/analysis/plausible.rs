@@ -16,12 +16,12 @@
 //! mm included from a file in metres is judged by its own numbers, in its
 //! own units. A file read once is judged once, however often included.
 //!
-//! NOTE: a part's `array` and `mirror` copies are not counted: the span
-//! and mass are those of the parts as written (a slip in units shows in
-//! any one of them).
+//! A part's `array` and `mirror` copies count in the span and the mass:
+//! they are the body (a walk of the file's own parts, `Model::each_event`,
+//! only when the file gives no `units`).
 
 use crate::diag::{Palette, Source, Span};
-use crate::model::{Item, Model};
+use crate::model::{Event, Item, Model};
 use crate::part::MassSpec;
 use crate::units::Dim;
 use serde::Serialize;
@@ -180,17 +180,6 @@ impl Walk<'_> {
                 continue;
             };
             first.get_or_insert(part.span.clone());
-            if !m.units_given {
-                // Summed at most to f64::MAX: the warning prints no `inf`.
-                if !part.spec.removed {
-                    mass = (mass + crate::part::mass_of::<f64>(&part.spec)).min(f64::MAX);
-                }
-                let [a, b] = part.spec.place.outline().extent();
-                for k in 0..3 {
-                    lo[k] = lo[k].min(a[k]);
-                    hi[k] = hi[k].max(b[k]);
-                }
-            }
             if let MassSpec::Density(rho) = part.spec.mass
                 && part.material.is_none()
                 && part.spec.place.density_power() == 3
@@ -244,6 +233,26 @@ impl Walk<'_> {
             return;
         }
         let Some(first) = first else { return };
+        // The file's own parts with their `array` and `mirror` copies, in
+        // its frame and units (its sub-assemblies are judged by their own
+        // units, as their own files).
+        let mut depth = 0usize;
+        m.each_event(&mut |e| match e {
+            Event::Enter(_) => depth += 1,
+            Event::Exit => depth = depth.saturating_sub(1),
+            Event::Part(l) if depth == 0 => {
+                // Summed at most to f64::MAX: the warning prints no `inf`.
+                if !l.part.spec.removed {
+                    mass = (mass + crate::part::mass_of::<f64>(&l.part.spec)).min(f64::MAX);
+                }
+                let [a, b] = l.part.spec.place.outline().extent();
+                for k in 0..3 {
+                    lo[k] = lo[k].min(a[k]);
+                    hi[k] = hi[k].max(b[k]);
+                }
+            }
+            Event::Part(_) => {}
+        });
         let span = (0..3)
             .map(|k| (hi[k] - lo[k]).min(f64::MAX))
             .fold(0.0, f64::max);

@@ -420,3 +420,38 @@ fn massprop_schema_gives_analysis_warnings_as_a_boolean() {
     assert!(validator.is_valid(&file("false")));
     assert!(!validator.is_valid(&file("\"no\"")));
 }
+
+/// A row of copies is the body: 150 boxes a metre apart span 150 m, so a
+/// file without `units` is warned of, though each box is a metre; 50 of
+/// them span 50 m and are not.
+#[test]
+fn copies_count_in_the_span_of_a_file_without_units() {
+    let row = |n: u32| {
+        format!(
+            "[[part]]\nname = \"slat\"\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [0, 0, 0]\narray = {{ count = {n}, step = [1, 0, 0] }}\n"
+        )
+    };
+    let (v, _) = json_of(&row(150));
+    let w = warnings(&v);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0]["message"].as_str().unwrap().contains("span 150 m"),
+        "{w:?}"
+    );
+    let (v, _) = json_of(&row(50));
+    assert_eq!(v.get("warnings"), None);
+}
+
+/// Mirror images count too: a box 60 m off the plane and its image span
+/// 121 m.
+#[test]
+fn a_mirror_image_counts_in_the_span_of_a_file_without_units() {
+    let text = "[[part]]\nshape = \"box\"\nmass = 1\nsize = [1, 1, 1]\ncenter = [60, 0, 0]\nmirror = { normal = [1, 0, 0] }\n";
+    let (v, _) = json_of(text);
+    let w = warnings(&v);
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0]["message"].as_str().unwrap().contains("span 121 m"),
+        "{w:?}"
+    );
+}
