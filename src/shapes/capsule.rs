@@ -186,19 +186,8 @@ impl ShapeKind for Capsule {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::shapes::quadrature::gauss5 as gauss;
     use std::f64::consts::PI;
-
-    /// Gauss–Legendre on [lo, hi] (5 nodes, exact to degree 9).
-    fn gauss(lo: f64, hi: f64) -> Vec<(f64, f64)> {
-        let a = (5.0 - 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-        let b = (5.0 + 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-        let wa = (322.0 + 13.0 * 70.0f64.sqrt()) / 900.0;
-        let wb = (322.0 - 13.0 * 70.0f64.sqrt()) / 900.0;
-        [(0.0, 128.0 / 225.0), (a, wa), (-a, wa), (b, wb), (-b, wb)]
-            .iter()
-            .map(|(x, w)| (lo + (hi - lo) * (x + 1.0) / 2.0, w * (hi - lo) / 2.0))
-            .collect()
-    }
 
     /// Volume, ∫x² dV and ∫z² dV of the capsule by quadrature over its
     /// own description, independent of the closed forms: the region

@@ -135,20 +135,9 @@ impl ShapeKind for Ellipsoid {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::shapes::quadrature::gauss5 as gauss;
     use crate::shapes::Shape;
     use std::f64::consts::PI;
-
-    /// Gauss–Legendre on [lo, hi] (5 nodes, exact to degree 9).
-    fn gauss(lo: f64, hi: f64) -> Vec<(f64, f64)> {
-        let p = (5.0 - 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-        let q = (5.0 + 2.0 * (10.0f64 / 7.0).sqrt()).sqrt() / 3.0;
-        let wp = (322.0 + 13.0 * 70.0f64.sqrt()) / 900.0;
-        let wq = (322.0 - 13.0 * 70.0f64.sqrt()) / 900.0;
-        [(0.0, 128.0 / 225.0), (p, wp), (-p, wp), (q, wq), (-q, wq)]
-            .iter()
-            .map(|(x, w)| (lo + (hi - lo) * (x + 1.0) / 2.0, w * (hi - lo) / 2.0))
-            .collect()
-    }
 
     /// Volume and ∫x² dV, ∫y² dV, ∫z² dV of the region x²/a² + y²/b² +
     /// z²/c² ≤ 1, by quadrature over its own description, independent of

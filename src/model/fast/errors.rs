@@ -13,13 +13,10 @@ use crate::units;
 use std::ops::Range;
 use toml_parser::{Expected, ParseError};
 
-/// A syntax or decoding error the parser reported, in massprop's words.
+/// A syntax or decoding error the parser reported, in massprop's words
+/// (`fast::explain` words a `[[analysis]]` header before any).
 pub(in crate::model) fn parse_error(source: &Source, error: &ParseError) -> Diagnostic {
     let text = &source.text;
-    // A `[[analysis]]` header is the error wherever the file fails.
-    if let Some(d) = array_of_tables(source) {
-        return d;
-    }
     let span = error.unexpected().map_or(0..0, |s| s.start()..s.end());
     // Some spans fall inside a multi-byte character (after a BOM, a
     // combining mark): snap to boundaries.
@@ -61,13 +58,12 @@ pub(in crate::model) fn word(source: &Source, f: Failure) -> Diagnostic {
             {
                 return source.error(span, format!("`{k}`: {msg}"));
             }
-            let d = source.error(span.clone(), msg.to_string());
             // TOML names the key twice given: say which.
             if msg == "duplicate key" {
                 let key = text.get(span.clone()).unwrap_or("").trim();
                 return source.error(span, format!("duplicate key `{}`", shorten(key)));
             }
-            d
+            source.error(span, msg.to_string())
         }
         What::PartTable => source
             .error(
