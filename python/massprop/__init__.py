@@ -26,8 +26,17 @@ from typing import Any, Callable, Dict, List, Union
 
 from massprop._find import MassPropNotFound, find_massprop_bin
 
+try:
+    from importlib.metadata import PackageNotFoundError, version
+
+    #: The installed wheel's version: Cargo.toml's, the binary's `--version`.
+    __version__ = version("massprop")
+except PackageNotFoundError:  # imported from a source tree, not installed
+    __version__ = "unknown"
+
 __all__ = [
     "OPTIONS",
+    "__version__",
     "MassPropError",
     "MassPropNotFound",
     "check",

@@ -30,6 +30,7 @@ def test_the_command_prints_the_version_of_the_installed_wheel() -> None:
     done = subprocess.run([massprop.find_massprop_bin(), "--version"], capture_output=True, text=True)
     assert done.returncode == 0
     assert done.stdout.strip() == f"massprop {version('massprop')}"
+    assert massprop.__version__ == version("massprop")
 
 
 def test_the_wheels_version_is_cargo_tomls() -> None:
