@@ -17,6 +17,7 @@ Why a subprocess and no native module: docs/python.md.
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import os
@@ -217,8 +218,13 @@ def _flags(command: str, options: Mapping[str, Any]) -> list[str]:
     return argv
 
 
+# NOTE: the search asks sysconfig for five directories, about a millisecond:
+# done once per process (a failed search is not cached, and raises each time).
+_binary = functools.lru_cache(maxsize=None)(find_massprop_bin)
+
+
 def _run(command: str, paths: list[str], options: Mapping[str, Any], ok: tuple[int, ...]) -> Any:
-    argv = [find_massprop_bin(), "--color=never", command, "--format=json"]
+    argv = [_binary(), "--color=never", command, "--format=json"]
     # `--` ends the options: a path that starts with `-` is a path.
     argv += [*_flags(command, options), "--", *paths]
     done = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True)
