@@ -20,10 +20,11 @@ from __future__ import annotations
 import functools
 import json
 import math
+import numbers
 import os
 import subprocess
 from collections.abc import Iterable, Mapping
-from typing import Any, Callable, Dict, List, Union
+from typing import Any, Callable, Union, cast
 
 from massprop._find import MassPropNotFound, find_massprop_bin
 
@@ -81,17 +82,22 @@ class MassPropError(Exception):
 # here (and one case in python/tests/test_options.py, which checks that
 # every entry has one).
 
-Converter = Callable[[str, Any], Union[str, List[str], bool]]
+Converter = Callable[[str, Any], Union[str, list[str], bool]]
 
 
 def _number_text(keyword: str, value: Any) -> str:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
+    # numbers.Real, not float: numpy's scalars are numbers too (without
+    # importing numpy); bool is an int, but never a number here.
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
         raise TypeError(f"`{keyword}`: expected a number, got {type(value).__name__}")
-    if isinstance(value, float) and not math.isfinite(value):
-        raise ValueError(f"`{keyword}`: expected a finite number, got {value!r}")
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    number = float(value)
+    if not math.isfinite(number):
+        raise ValueError(f"`{keyword}`: expected a finite number, got {number!r}")
     # NOTE: repr is the shortest text that reads back as the same float, so
     # massprop gets exactly the float the script holds.
-    return repr(value)
+    return repr(number)
 
 
 def _text(keyword: str, value: Any) -> str:
@@ -106,9 +112,9 @@ def _number(keyword: str, value: Any) -> str:
 
 
 def _integer(keyword: str, value: Any) -> str:
-    if isinstance(value, bool) or not isinstance(value, int):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise TypeError(f"`{keyword}`: expected an integer, got {type(value).__name__}")
-    return str(value)
+    return str(int(value))
 
 
 def _vector(keyword: str, value: Any) -> str:
@@ -118,7 +124,7 @@ def _vector(keyword: str, value: Any) -> str:
     if isinstance(value, Iterable) and not isinstance(value, (bytes, Mapping)):
         return ",".join(_number_text(keyword, x) for x in value)
     raise TypeError(
-        f"`{keyword}`: expected three numbers or a string such as \"0,0,3000 rpm\", "
+        f'`{keyword}`: expected three numbers or a string such as "0,0,3000 rpm", '
         f"got {type(value).__name__}"
     )
 
@@ -169,7 +175,7 @@ REPORT, CHECK = "report", "check"
 BOTH = (REPORT, CHECK)
 
 #: keyword -> (flag, converter, the commands that take it)
-OPTIONS: Dict[str, tuple[str, Converter, tuple[str, ...]]] = {
+OPTIONS: dict[str, tuple[str, Converter, tuple[str, ...]]] = {
     "about": ("--about", _vector, (REPORT,)),
     "alpha": ("--alpha", _vector, (REPORT,)),
     "axes": ("--axes", _text, BOTH),
@@ -223,7 +229,9 @@ def _flags(command: str, options: Mapping[str, Any]) -> list[str]:
 _binary = functools.lru_cache(maxsize=None)(find_massprop_bin)
 
 
-def _run(command: str, paths: list[str], options: Mapping[str, Any], ok: tuple[int, ...]) -> Any:
+def _run(
+    command: str, paths: list[str], options: Mapping[str, Any], ok: tuple[int, ...]
+) -> dict[str, Any]:
     argv = [_binary(), "--color=never", command, "--format=json"]
     # `--` ends the options: a path that starts with `-` is a path.
     argv += [*_flags(command, options), "--", *paths]
@@ -238,8 +246,8 @@ def _run(command: str, paths: list[str], options: Mapping[str, Any], ok: tuple[i
             result = json.loads(done.stdout.decode("utf-8"))
         except ValueError:
             result = None
-    if done.returncode in ok and result is not None:
-        return result
+    if done.returncode in ok and isinstance(result, dict):
+        return cast("dict[str, Any]", result)
     message = stderr.rstrip("\n")
     if not message:
         if done.returncode in ok:

@@ -33,7 +33,7 @@ def cli(*args: str, cwd: Path | str | None = None) -> subprocess.CompletedProces
 
 
 def cli_json(*args: str, cwd: Path | str | None = None, statuses: tuple[int, ...] = (0,)) -> Any:
-    """The binary's JSON document, parsed by the stdlib; its exit status must be one of `statuses`."""
+    """The binary's JSON document, parsed by the stdlib; its status one of `statuses`."""
     done = cli(*args, cwd=cwd)
     assert done.returncode in statuses, done.stderr
     return json.loads(done.stdout)

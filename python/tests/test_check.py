@@ -16,7 +16,9 @@ def test_check_equals_the_cli_json_on_shapes(monkeypatch: pytest.MonkeyPatch) ->
     got = massprop.check("shapes")
     assert got == expected
     # Every part file and robot description of shapes/, each passing.
-    assert got["summary"]["files"] == len(PART_FILES) + len(list((REPO / "shapes" / "robots").iterdir()))
+    assert got["summary"]["files"] == len(PART_FILES) + len(
+        list((REPO / "shapes" / "robots").iterdir())
+    )
     assert all(entry["status"] == "ok" for entry in got["files"])
 
 
@@ -34,5 +36,10 @@ def test_a_failed_expectation_is_returned_not_raised(failing_part: Path) -> None
     assert entry["status"] == "failed"
     (mass,) = entry["checks"]
     # The box's mass is 2.0 kg as written; the expectation asked for 3.0.
-    assert (mass["quantity"], mass["measured"], mass["value"], mass["pass"]) == ("mass", 2.0, 3.0, False)
+    assert (mass["quantity"], mass["measured"], mass["value"], mass["pass"]) == (
+        "mass",
+        2.0,
+        3.0,
+        False,
+    )
     assert got["summary"] == {"files": 1, "ok": 0, "failed": 1, "invalid": 0}

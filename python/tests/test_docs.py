@@ -29,7 +29,9 @@ def _python_blocks(path: Path) -> list[tuple[str, str]]:
                 i += 1
             skipped = start > 0 and re.match(r"\s*<!-- docs-test: skip \S", lines[start - 1])
             if not skipped:
-                blocks.append((f"{path.relative_to(REPO)}:{start + 1}", "\n".join(lines[start + 1 : i])))
+                blocks.append(
+                    (f"{path.relative_to(REPO)}:{start + 1}", "\n".join(lines[start + 1 : i]))
+                )
         i += 1
     return blocks
 

@@ -69,9 +69,13 @@ def test_an_unknown_keyword_raises_type_error_naming_it() -> None:
 
 
 def test_a_keyword_of_the_other_command_raises_type_error_saying_whose_it_is() -> None:
-    with pytest.raises(TypeError, match=r"'omega' \(`--omega` is an option of `massprop report` only\)"):
+    with pytest.raises(
+        TypeError, match=r"'omega' \(`--omega` is an option of `massprop report` only\)"
+    ):
         massprop.check(REPO / "shapes", omega="0,0,1")
-    with pytest.raises(TypeError, match=r"'hidden' \(`--hidden` is an option of `massprop check` only\)"):
+    with pytest.raises(
+        TypeError, match=r"'hidden' \(`--hidden` is an option of `massprop check` only\)"
+    ):
         massprop.report(REPO / "shapes" / "flywheel.toml", hidden=True)
 
 
@@ -89,7 +93,9 @@ def test_a_value_of_the_wrong_type_raises_type_error_naming_the_keyword(options:
 @pytest.mark.parametrize("keyword", ["samples", "seed"])
 def test_an_integer_option_refuses_a_float(keyword: str) -> None:
     with pytest.raises(TypeError, match=f"`{keyword}`: expected an integer"):
-        massprop.report(REPO / "shapes" / "smallsat.toml", uncertainty="montecarlo", **{keyword: 10.0})
+        massprop.report(
+            REPO / "shapes" / "smallsat.toml", uncertainty="montecarlo", **{keyword: 10.0}
+        )
 
 
 def test_a_non_finite_number_raises_value_error() -> None:
