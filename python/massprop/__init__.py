@@ -251,7 +251,7 @@ def _run(
     message = stderr.rstrip("\n")
     if not message:
         if done.returncode in ok:
-            message = f"massprop {command} printed no JSON document (exit status 0)"
+            message = f"massprop {command} printed no JSON document (exit status {done.returncode})"
         else:
             message = f"massprop {command} ended with exit status {done.returncode} and no message"
     raise MassPropError(message, done.returncode, stderr, argv, result)
