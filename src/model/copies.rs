@@ -86,6 +86,15 @@ impl Copies {
         if i < n { (i, false) } else { (i - n, true) }
     }
 
+    /// Copy `i`'s frames, innermost first: its array's (none for copy 0
+    /// of the array) and its mirror's (for an image): what the composer
+    /// places the part's or the sub-assembly's body through.
+    pub fn frames(&self, i: usize) -> (Option<Frame>, Option<&Frame>) {
+        let (k, image) = self.which(i);
+        let array = (k > 0).then(|| self.array_frame(k));
+        (array, if image { self.image() } else { None })
+    }
+
     /// The mirror's frame, that places the images (none without a
     /// mirror).
     pub(super) fn image(&self) -> Option<&Frame> {

@@ -4,7 +4,7 @@
 //! (`Spec::placed`).
 
 use super::rotation::Orientation;
-use crate::numeric::M3;
+use crate::numeric::{DD, M3, Real, two_prod};
 use crate::part::{MassSpec, Spec};
 
 /// Where an included file's frame goes in this file's.
@@ -24,6 +24,16 @@ pub struct Frame {
     /// A mirror's frame: R is a reflection, and a part placed by its
     /// centre and a turn is completed as its image by `Place::mirror`.
     pub(super) mirror: bool,
+    /// For the composer, which places a composed body in the arithmetic
+    /// asked for (`Frame::placement`): the unit ratios `length` and
+    /// `mass` in double-double, each within `units_rel` of the exact
+    /// ratio (relative); what a linear copy's origin k·step rounded away
+    /// (`origin + origin_lo` is exact) and a polar copy's turn k·θ
+    /// (degrees).
+    pub(super) units_dd: [DD; 2],
+    pub(super) units_rel: [f64; 2],
+    pub(super) origin_lo: [f64; 3],
+    pub(super) angle_lo: f64,
 }
 
 /// How an array places its copies.
@@ -93,7 +103,95 @@ impl Linear {
     }
 }
 
+/// A frame as the composer places a composed body through it
+/// (`compose::placed`), in the arithmetic `T`: p ↦ origin + L R (p − pivot),
+/// masses times k; with how far each of its numbers may lie from the exact
+/// frame the file gives.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement<T> {
+    /// R̂, formed in `T`, and the same as double-double (exactly).
+    pub r: M3<T>,
+    pub r_dd: M3<DD>,
+    /// |R̂ − R| entrywise, absolute: its form's roundings (`turn_error`,
+    /// units of `T`) and, for a polar copy in f64, the rounding of its
+    /// turn k·θ (|δθ| in radians: a turn's entries move by at most the
+    /// angle).
+    pub rho: f64,
+    /// Whether R̂ is a signed permutation: products with it are exact.
+    pub exact_turn: bool,
+    /// Exact, as double-doubles.
+    pub origin: [DD; 3],
+    pub pivot: Option<[DD; 3]>,
+    /// L and k in `T`, and L in double-double for points; each within its
+    /// relative bound of the exact ratio (0 when it is exactly 1).
+    pub length: T,
+    pub mass: T,
+    pub length_dd: DD,
+    pub rel_length: f64,
+    pub rel_mass: f64,
+    pub rel_length_dd: f64,
+}
+
 impl Frame {
+    /// This frame for the composer, in the arithmetic `T`.
+    ///
+    /// NOTE: a polar copy's turn is k·θ rounded to f64; in double-double
+    /// the rest of k·θ (exact, `angle_lo`) is turned too, as a second turn
+    /// about the same axis (R(a + b) = R(a) R(b)), so that the copies of
+    /// an array are placed to double-double's accuracy, not f64's.
+    pub fn placement<T: Real + Into<DD>>(&self) -> Placement<T> {
+        let dd_arith = T::EPS < 1e-20;
+        let unit = crate::part::error::unit_of::<T>();
+        let (orientation, angle) = match (&self.orientation, self.angle_lo) {
+            (Orientation::AxisAngle(axis, deg), lo) if lo != 0.0 && dd_arith => (
+                Orientation::Then(
+                    Box::new(Orientation::AxisAngle(*axis, *deg)),
+                    Box::new(Orientation::AxisAngle(*axis, lo)),
+                ),
+                0.0,
+            ),
+            (o, lo) => (o.clone(), lo.abs() * (std::f64::consts::PI / 180.0) * 1.01),
+        };
+        // In f64 the frame's own matrix (the same orientation).
+        let r: M3<T> = if dd_arith {
+            orientation.matrix()
+        } else {
+            self.r.map(|row| row.map(T::of))
+        };
+        let r_dd: M3<DD> = r.map(|row| row.map(Into::into));
+        let r64 = r_dd.map(|row| row.map(DD::f64));
+        let exact_turn = r64.iter().flatten().all(|x| *x == 0.0 || x.abs() == 1.0);
+        let rho = crate::part::error::turn_error(&orientation, &r64) * unit + angle;
+        let exact_turn = exact_turn && rho == 0.0;
+        // A ratio in `T`, and its relative error: the exact ratio's
+        // double-double's (`units_rel`) and its rounding to `T`.
+        let ratio = |k: usize| -> (T, f64) {
+            let x = T::of_dd(self.units_dd[k]);
+            if self.units_rel[k] == 0.0 {
+                return (x, 0.0);
+            }
+            let back: DD = x.into();
+            let off = ((back - self.units_dd[k]).f64() / self.units_dd[k].f64()).abs();
+            (x, (off + self.units_rel[k]) * 1.01)
+        };
+        let (length, rel_length) = ratio(0);
+        let (mass, rel_mass) = ratio(1);
+        Placement {
+            r,
+            r_dd,
+            rho,
+            exact_turn,
+            origin: std::array::from_fn(|i| DD::new(self.origin[i], self.origin_lo[i])),
+            pivot: self.pivot.map(|q| q.map(DD::of)),
+            length,
+            mass,
+            length_dd: self.units_dd[0],
+            rel_length,
+            rel_mass,
+            rel_length_dd: self.units_rel[0],
+        }
+    }
+
     /// The linear part of placing through this frame.
     pub fn linear(&self) -> Linear {
         Linear {
@@ -133,6 +231,43 @@ impl Frame {
             mass: 1.0,
             pivot: Some(pivot),
             mirror,
+            units_dd: [DD::of(1.0); 2],
+            units_rel: [0.0; 2],
+            origin_lo: [0.0; 3],
+            angle_lo: 0.0,
+        }
+    }
+
+    /// An include's frame: `origin`, turned by `orientation`, the
+    /// included file's length and mass units `units` (exact ratios) in
+    /// this file's.
+    pub(super) fn include(
+        origin: [f64; 3],
+        orientation: Orientation,
+        units: [Option<crate::units::Factor>; 2],
+        fallback: [f64; 2],
+    ) -> Frame {
+        let value = |k: usize| units[k].map_or(fallback[k], |f| f.value());
+        // NOTE: a ratio that outgrew i128 is the quotient of two f64
+        // factors: three roundings of f64.
+        let dd = |k: usize| units[k].map_or(DD::of(fallback[k]), |f| f.dd());
+        let rel = |k: usize| match units[k] {
+            Some(f) if f.parts().0 == f.parts().1 && f.parts().2 == 0 => 0.0,
+            Some(_) => 16.0 * crate::part::error::U_DD,
+            None => 3.0 * crate::part::error::U64,
+        };
+        Frame {
+            origin,
+            r: orientation.matrix(),
+            orientation,
+            length: value(0),
+            mass: value(1),
+            pivot: None,
+            mirror: false,
+            units_dd: [dd(0), dd(1)],
+            units_rel: [rel(0), rel(1)],
+            origin_lo: [0.0; 3],
+            angle_lo: 0.0,
         }
     }
 
@@ -144,19 +279,25 @@ impl Frame {
             Pattern::One => Frame::copy([0.0; 3], [0.0; 3], Orientation::Identity, false),
             Pattern::Linear { step, .. } => {
                 let k = k as f64;
-                Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false)
+                let mut f = Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false);
+                f.origin_lo = step.map(|s| two_prod(k, s).1);
+                f
             }
             Pattern::Polar {
                 axis,
                 degrees,
                 origin,
                 ..
-            } => Frame::copy(
-                *origin,
-                *origin,
-                Orientation::AxisAngle(*axis, k as f64 * degrees),
-                false,
-            ),
+            } => {
+                let mut f = Frame::copy(
+                    *origin,
+                    *origin,
+                    Orientation::AxisAngle(*axis, k as f64 * degrees),
+                    false,
+                );
+                f.angle_lo = two_prod(k as f64, *degrees).1;
+                f
+            }
         }
     }
 
@@ -175,10 +316,12 @@ impl Frame {
                 let origin = step.map(|s| k * s);
                 let moved = (0..3).any(|j| differ(origin[j], self.origin[j]));
                 self.origin = origin;
+                self.origin_lo = step.map(|s| two_prod(k, s).1);
                 moved
             }
             Pattern::Polar { axis, degrees, .. } => {
                 let turn = k as f64 * degrees;
+                self.angle_lo = two_prod(k as f64, *degrees).1;
                 if matches!(self.orientation, Orientation::AxisAngle(_, t) if !differ(t, turn)) {
                     return false;
                 }
