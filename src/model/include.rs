@@ -709,14 +709,21 @@ impl Ctx<'_> {
             ..Model::empty(self.units)
         };
         let mut bad = None;
-        one.each_event(&mut |e| {
-            if let super::Event::Part(l) = e
-                && bad.is_none()
-                && self.in_file_range(&l.part.spec, "", 0..0).is_err()
-            {
-                bad = Some(l.index);
-            }
-        });
+        // NOTE: walked only when some instance might leave the range: a
+        // bound on every instance, formed once per distinct file, says
+        // at once that none can (`walk::Reach`).
+        let si = self.units.factor(Dim::LENGTH).value();
+        let reach = super::walk::Reach::of(&one, &mut HashMap::new());
+        if !reach.safe(si) {
+            one.each_event(&mut |e| {
+                if let super::Event::Part(l) = e
+                    && bad.is_none()
+                    && self.in_file_range(&l.part.spec, "", 0..0).is_err()
+                {
+                    bad = Some(l.index);
+                }
+            });
+        }
         if let Some(index) = bad {
             // Again, named (names are made for the one part that fails).
             let p = one.part(index).expect("the part the walk met");
