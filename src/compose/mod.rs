@@ -57,12 +57,10 @@ pub fn compose_bounded<P: EachPart + ?Sized>(parts: &P, precision: Precision) ->
 /// and placed per instance, each copy placed from its part's physics
 /// (`placed`).
 pub fn compose_model(model: &crate::model::Model, precision: Precision) -> (Body, BodyError) {
-    let plain = model.items.iter().all(|item| {
-        matches!(
-            item,
-            crate::model::Item::Part { copies: None, .. }
-        )
-    });
+    let plain = model
+        .items
+        .iter()
+        .all(|item| matches!(item, crate::model::Item::Part { copies: None, .. }));
     if plain {
         return compose_bounded(model, precision);
     }

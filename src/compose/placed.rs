@@ -192,7 +192,9 @@ pub(super) fn each_entry<T: Arith>(
                 match &inc.copies {
                     None => f(Entry::Body(placed)),
                     Some(c) => {
-                        each_copy(c, &placed, need, &mut |b| f(Entry::Body(b.unwrap_or(placed))));
+                        each_copy(c, &placed, need, &mut |b| {
+                            f(Entry::Body(b.unwrap_or(placed)))
+                        });
                     }
                 }
             }
@@ -202,12 +204,7 @@ pub(super) fn each_entry<T: Arith>(
 
 /// `body` placed through each copy's frames (its array's, then its
 /// mirror's); `None` for a copy with none (the part as written).
-fn each_copy<T: Arith>(
-    c: &Copies,
-    body: &Lump<T>,
-    need: Need,
-    f: &mut dyn FnMut(Option<Lump<T>>),
-) {
+fn each_copy<T: Arith>(c: &Copies, body: &Lump<T>, need: Need, f: &mut dyn FnMut(Option<Lump<T>>)) {
     let mut mirror: Option<Placement<T>> = None;
     for i in c.indices() {
         let (array, image) = c.frames(i);
@@ -309,11 +306,7 @@ fn place<T: Arith>(b: &Lump<T>, p: &Placement<T>, need: Need) -> Lump<T> {
     } else {
         safe(p.mass.f64().abs() * b.e_mass + (p.rel_mass + u) * mass.f64().abs())
     };
-    let mut out = Lump {
-        mass,
-        e_mass,
-        ..*b
-    };
+    let mut out = Lump { mass, e_mass, ..*b };
     if need == Need::Mass {
         return out;
     }
@@ -324,9 +317,8 @@ fn place<T: Arith>(b: &Lump<T>, p: &Placement<T>, need: Need) -> Lump<T> {
             (v, v.map(|x| U_DD * x.f64().abs()))
         }
     };
-    let w: [DD; 3] = std::array::from_fn(|j| {
-        (0..3).fold(DD::of(0.0), |acc, k| acc + p.r_dd[j][k] * v[k])
-    });
+    let w: [DD; 3] =
+        std::array::from_fn(|j| (0..3).fold(DD::of(0.0), |acc, k| acc + p.r_dd[j][k] * v[k]));
     out.pivot = std::array::from_fn(|j| {
         if unit_length {
             p.origin[j] + w[j]
@@ -382,7 +374,10 @@ fn place<T: Arith>(b: &Lump<T>, p: &Placement<T>, need: Need) -> Lump<T> {
     let e_first: [f64; 3] = std::array::from_fn(|j| {
         let carried: f64 = (0..3).map(|k| (ra[j][k] + rho) * b.e_first[k]).sum();
         let rs: f64 = (0..3).map(|k| ra[j][k] * sa[k]).sum();
-        safe(kla * (carried + rho * ssum + rel1 * rs) * (1.0 + 4.0 * crate::bounds::U64) + mass_a * delta[j])
+        safe(
+            kla * (carried + rho * ssum + rel1 * rs) * (1.0 + 4.0 * crate::bounds::U64)
+                + mass_a * delta[j],
+        )
     });
     let ca = b.second.map(|r| r.map(|x| x.f64().abs()));
     let spread: f64 = ca.iter().flatten().sum();

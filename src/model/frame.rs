@@ -279,7 +279,8 @@ impl Frame {
             Pattern::One => Frame::copy([0.0; 3], [0.0; 3], Orientation::Identity, false),
             Pattern::Linear { step, .. } => {
                 let k = k as f64;
-                let mut f = Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false);
+                let mut f =
+                    Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false);
                 f.origin_lo = step.map(|s| two_prod(k, s).1);
                 f
             }

@@ -733,12 +733,12 @@ impl Reach {
             0 => f64::INFINITY,
             e => moments.get(e - 1).copied().unwrap_or(0.0),
         };
-        let pos = spec
-            .place
-            .positions()
-            .fold(0.0f64, |a, x| a.max(x.abs()))
-            + spec.place.reach();
-        let top = j.iter().flatten().chain(&moments).fold(0.0f64, |a, x| a.max(x.abs()));
+        let pos = spec.place.positions().fold(0.0f64, |a, x| a.max(x.abs())) + spec.place.reach();
+        let top = j
+            .iter()
+            .flatten()
+            .chain(&moments)
+            .fold(0.0f64, |a, x| a.max(x.abs()));
         Reach {
             pos,
             mass_max: m,
@@ -750,7 +750,10 @@ impl Reach {
 
     /// Every instance of `model`'s parts, its sub-assemblies' reaches
     /// (kept in `memo` by model) placed through their frames.
-    pub(super) fn of(model: &Model, memo: &mut std::collections::HashMap<*const Model, Reach>) -> Reach {
+    pub(super) fn of(
+        model: &Model,
+        memo: &mut std::collections::HashMap<*const Model, Reach>,
+    ) -> Reach {
         let mut r = Reach::NONE;
         for item in model.items.iter() {
             let (one, copies) = match item {

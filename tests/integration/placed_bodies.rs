@@ -134,7 +134,12 @@ fn tree(rng: &mut Rng, trial: usize, dir: &Path) -> Vec<ExactPart> {
     // mid.toml, in cm and kg.
     let (q1, o1, o2) = (rng.quaternion(), rng.grid_point(), rng.grid_point());
     let (ca, step) = (rng.grid_point(), [0.5, -0.25, 1.5]);
-    let (cb, qb, normal, plane) = (rng.grid_point(), rng.quaternion(), [1.0, 2.0, -2.0], [0.25, 0.0, -0.5]);
+    let (cb, qb, normal, plane) = (
+        rng.grid_point(),
+        rng.quaternion(),
+        [1.0, 2.0, -2.0],
+        [0.25, 0.0, -0.5],
+    );
     let (cc, pivot) = (rng.grid_point(), [1.0, -0.5, 0.0]);
     let mid = format!(
         "units = {{ length = \"cm\", mass = \"kg\" }}\n\
@@ -188,7 +193,12 @@ fn tree(rng: &mut Rng, trial: usize, dir: &Path) -> Vec<ExactPart> {
     }
 
     // top.toml, in m and kg.
-    let (qt, ot, ot2, st) = (rng.quaternion(), rng.grid_point(), rng.grid_point(), [0.125, 2.0, -0.75]);
+    let (qt, ot, ot2, st) = (
+        rng.quaternion(),
+        rng.grid_point(),
+        rng.grid_point(),
+        [0.125, 2.0, -0.75],
+    );
     let (nt, pt) = ([-3.0, 1.0, 0.5], rng.grid_point());
     let top = format!(
         "[[part]]\nname = \"m1\"\ninclude = \"mid.toml\"\norigin = {}\nrotation = {{ quaternion = {} }}\n\
@@ -210,9 +220,7 @@ fn tree(rng: &mut Rng, trial: usize, dir: &Path) -> Vec<ExactPart> {
         parts.push(moved(p, &si_point(ot, m), &rt, &zero));
     }
     for k in 0..2 {
-        let o: r::V3 = std::array::from_fn(|i| {
-            &si_point(ot2, m)[i] + &(r::q(st[i]) * r::int(k))
-        });
+        let o: r::V3 = std::array::from_fn(|i| &si_point(ot2, m)[i] + &(r::q(st[i]) * r::int(k)));
         for p in &mid_parts {
             parts.push(moved(p, &o, &identity(), &zero));
         }
@@ -225,7 +233,12 @@ fn tree(rng: &mut Rng, trial: usize, dir: &Path) -> Vec<ExactPart> {
         parts.push(moved(p, &pt_si, &reflection(nt), &pt_si));
     }
     parts.push(r::exact_part(
-        &r::Part::cuboid([0.5, 0.25, 0.125], [0.5, 0.5, -0.25], None, Amount::Mass(3.0)),
+        &r::Part::cuboid(
+            [0.5, 0.25, 0.125],
+            [0.5, 0.5, -0.25],
+            None,
+            Amount::Mass(3.0),
+        ),
         m,
         Mass::Kg,
     ));
@@ -250,8 +263,9 @@ impl Judge {
             self.worst_honest = (err / bound, what.clone());
         }
         if !(err <= bound) {
-            self.failures
-                .push(format!("dishonest {what}: {value:e} is {err:e} off, bound {bound:e}"));
+            self.failures.push(format!(
+                "dishonest {what}: {value:e} is {err:e} off, bound {bound:e}"
+            ));
         }
         if let Some(floor) = floor {
             let limit = TIGHT * err.max(floor);
@@ -273,7 +287,13 @@ impl Judge {
         let tight = v["precision"] == "extended";
         let floor = |x: f64| tight.then_some(x);
         let mass = num(&v["mass"]);
-        self.check(format!("{what}: mass"), mass, &exact.mass, num(&b["mass"]), floor(U * mass.abs()));
+        self.check(
+            format!("{what}: mass"),
+            mass,
+            &exact.mass,
+            num(&b["mass"]),
+            floor(U * mass.abs()),
+        );
         for j in 0..3 {
             self.check(
                 format!("{what}: center_of_mass[{j}]"),
@@ -315,7 +335,11 @@ impl Judge {
         assert!(self.checked > 0);
         eprintln!(
             "{} values; worst error/bound {:.3} ({}); worst bound/limit {:.3} ({})",
-            self.checked, self.worst_honest.0, self.worst_honest.1, self.worst_tight.0, self.worst_tight.1
+            self.checked,
+            self.worst_honest.0,
+            self.worst_honest.1,
+            self.worst_tight.0,
+            self.worst_tight.1
         );
         assert!(
             self.failures.is_empty(),
@@ -335,7 +359,8 @@ fn trees_of_turned_scaled_and_copied_sub_assemblies_are_within_tight_bounds_in_b
         let dir = crate::common::scratch("placed_bodies", &format!("tree-{trial}"));
         let exact = body(&tree(&mut rng, trial, &dir));
         for p in ["standard", "extended"] {
-            let (v, _) = crate::common::report_json_file(&dir.join("top.toml"), &["--precision", p]);
+            let (v, _) =
+                crate::common::report_json_file(&dir.join("top.toml"), &["--precision", p]);
             judge.report(&format!("tree {trial}, {p}"), &v, &exact);
         }
     }
@@ -351,7 +376,12 @@ fn binary_tree(name: &str, levels: usize) -> std::path::PathBuf {
             "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n".to_string()
         } else {
             (0..2)
-                .map(|k| format!("[[part]]\ninclude = \"t{}.toml\"\norigin = [{k}, {l}, 0]\n", l + 1))
+                .map(|k| {
+                    format!(
+                        "[[part]]\ninclude = \"t{}.toml\"\norigin = [{k}, {l}, 0]\n",
+                        l + 1
+                    )
+                })
                 .collect()
         };
         std::fs::write(dir.join(format!("t{l}.toml")), body).unwrap();
@@ -372,8 +402,15 @@ fn a_tree_of_two_to_the_k_instances_of_d_files_composes_d_bodies() {
             let (body, _) = compose_model(&model, precision);
             // The file itself, and each of the levels − 1 files it
             // includes once.
-            assert_eq!(bodies_composed() - before, levels as u64 - 1, "{name}, {precision:?}");
-            assert_eq!(massprop::numeric::Real::f64(body.mass), (1u64 << (levels - 1)) as f64);
+            assert_eq!(
+                bodies_composed() - before,
+                levels as u64 - 1,
+                "{name}, {precision:?}"
+            );
+            assert_eq!(
+                massprop::numeric::Real::f64(body.mass),
+                (1u64 << (levels - 1)) as f64
+            );
         }
     }
 }
@@ -413,8 +450,20 @@ fn a_sub_assembly_of_cut_outs_only_included_and_placed_composes_to_the_exact_ans
         e
     };
     for p in [
-        cut(r::Part::cuboid([20.0, 10.0, 5.0], [15.0, 5.0, 2.5], None, Amount::Mass(30.0))),
-        cut(r::Part::cylinder(4.0, None, 6.0, [-10.0, 2.0, 1.0], None, Amount::Mass(12.5))),
+        cut(r::Part::cuboid(
+            [20.0, 10.0, 5.0],
+            [15.0, 5.0, 2.5],
+            None,
+            Amount::Mass(30.0),
+        )),
+        cut(r::Part::cylinder(
+            4.0,
+            None,
+            6.0,
+            [-10.0, 2.0, 1.0],
+            None,
+            Amount::Mass(12.5),
+        )),
     ] {
         parts.push(moved(&p, &o, &rot, &zero));
     }
@@ -426,12 +475,18 @@ fn a_sub_assembly_of_cut_outs_only_included_and_placed_composes_to_the_exact_ans
         judge.report(&format!("cut-outs, {p}"), &v, &exact);
         // And the answer itself, to the last few units.
         let mass = num(&v["mass"]);
-        assert!(r::f(&(r::q(mass) - &exact.mass).abs()) <= 4.0 * U * mass, "{p}: {mass}");
+        assert!(
+            r::f(&(r::q(mass) - &exact.mass).abs()) <= 4.0 * U * mass,
+            "{p}: {mass}"
+        );
         for j in 0..3 {
             for k in 0..3 {
                 let x = num(&v["inertia_com"][j][k]);
                 let err = r::f(&(r::q(x) - &exact.inertia[j][k]).abs());
-                assert!(err <= 1e-15 * r::f(&exact.inertia[0][0]).abs().max(1e-300), "{p}: [{j}][{k}] {err:e}");
+                assert!(
+                    err <= 1e-15 * r::f(&exact.inertia[0][0]).abs().max(1e-300),
+                    "{p}: [{j}][{k}] {err:e}"
+                );
             }
         }
     }
