@@ -519,6 +519,7 @@ fn level<T: Arith>(model: &Model, memo: &Memo<T>, weights: Weights) -> Level<T> 
 
 /// A sub-assembly's body: its file's terms composed about a pivot
 /// weighted by |m|, with the bounds of its raw sums.
+#[allow(clippy::needless_range_loop)] // a symmetric matrix by its upper triangle
 fn compose_sub<T: Arith>(model: &Model, memo: &Memo<T>) -> Lump<T> {
     let lv = level(model, memo, Weights::Magnitude);
     let mut second = [[T::of(0.0); 3]; 3];

@@ -96,7 +96,7 @@ impl Copies {
     }
 
     /// A bound on the largest coordinate of any copy of a body whose
-    /// coordinates are at most `pos` (`walk::Reach`): a step's multiple
+    /// coordinates are at most `pos` (`frame::Reach`): a step's multiple
     /// added, or a turn or an image about a point (|R x|∞ ≤ √3 |x|∞).
     pub(super) fn reach(&self, pos: f64) -> f64 {
         let inf = |v: &[f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
@@ -456,8 +456,8 @@ impl Ctx<'_> {
         };
         let si = self.units.factor(Dim::LENGTH).value();
         // NOTE: no copy placed when a bound on every instance, formed once
-        // per distinct file, is far inside the range (`walk::Reach`).
-        if super::walk::Reach::of(&one, &mut HashMap::new()).safe(si) {
+        // per distinct file, is far inside the range (`frame::Reach`).
+        if super::frame::Reach::of(&one, &mut HashMap::new()).safe(si) {
             return Ok(());
         }
         let mut bad = None;

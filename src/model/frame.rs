@@ -1,9 +1,12 @@
 //! A sub-assembly's or a copy's frame: where an included file's origin
 //! and axes go in the including file, in its units, and how a part is
 //! placed through it (`Frame::place`), with the rounding that adds
-//! (`Spec::placed`).
+//! (`Spec::placed`); a frame as the composer places a composed body
+//! through it (`Placement`); and bounds on every instance's numbers,
+//! placed through frames once per distinct file (`Reach`).
 
 use super::rotation::Orientation;
+use super::{Item, Model};
 use crate::numeric::{DD, M3, Real, two_prod};
 use crate::part::{MassSpec, Spec};
 
@@ -436,6 +439,142 @@ impl crate::shapes::Mover for Frame {
 
     fn mass(&self) -> f64 {
         self.mass
+    }
+}
+
+/// Bounds on the numbers of every part of a body over all its instances,
+/// in its own frame and units: the largest coordinate, the largest and
+/// smallest |mass|, the largest entry of a part's own second moment, and
+/// the smallest of the independent moments a part must have normal
+/// (`ShapeKind::independent_moments`). Formed once per distinct file
+/// (`Reach::of`), placed through a frame conservatively (`placed`): what
+/// lets the range check of a sub-assembly placed in another file's units
+/// (`include`, `copies`) see at once that no instance can leave f64's
+/// range, instead of placing each (2²⁰ of them, each through 20 frames,
+/// in a tree of includes).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Reach {
+    pos: f64,
+    mass_max: f64,
+    mass_min: f64,
+    moment_max: f64,
+    need_min: f64,
+}
+
+impl Reach {
+    const NONE: Reach = Reach {
+        pos: 0.0,
+        mass_max: 0.0,
+        mass_min: f64::INFINITY,
+        moment_max: 0.0,
+        need_min: f64::INFINITY,
+    };
+
+    fn join(&mut self, o: Reach) {
+        self.pos = self.pos.max(o.pos);
+        self.mass_max = self.mass_max.max(o.mass_max);
+        self.mass_min = self.mass_min.min(o.mass_min);
+        self.moment_max = self.moment_max.max(o.moment_max);
+        self.need_min = self.need_min.min(o.need_min);
+    }
+
+    fn part(p: &crate::part::Part) -> Reach {
+        let spec = &p.spec;
+        let m = crate::part::mass_of::<f64>(spec).abs();
+        let j = crate::part::own_second_moment::<f64>(spec, m);
+        let (moments, count, expected) = spec.place.independent_moments(m, &j);
+        let mut moments = moments[..count].to_vec();
+        moments.sort_by(|a, b| b.partial_cmp(a).unwrap_or(std::cmp::Ordering::Equal));
+        let need_min = match expected {
+            0 => f64::INFINITY,
+            e => moments.get(e - 1).copied().unwrap_or(0.0),
+        };
+        let pos = spec.place.positions().fold(0.0f64, |a, x| a.max(x.abs())) + spec.place.reach();
+        let top = j
+            .iter()
+            .flatten()
+            .chain(&moments)
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+        Reach {
+            pos,
+            mass_max: m,
+            mass_min: m,
+            moment_max: top,
+            need_min,
+        }
+    }
+
+    /// Every instance of `model`'s parts, its sub-assemblies' reaches
+    /// (kept in `memo` by model) placed through their frames.
+    pub(super) fn of(
+        model: &Model,
+        memo: &mut std::collections::HashMap<*const Model, Reach>,
+    ) -> Reach {
+        let mut r = Reach::NONE;
+        for item in model.items.iter() {
+            let (one, copies) = match item {
+                Item::Part { part, copies, .. } => (Reach::part(part), copies.as_deref()),
+                Item::Include(inc) => {
+                    let key = std::sync::Arc::as_ptr(&inc.model);
+                    let child = match memo.get(&key) {
+                        Some(c) => *c,
+                        None => {
+                            let c = Reach::of(&inc.model, memo);
+                            memo.insert(key, c);
+                            c
+                        }
+                    };
+                    (child.placed(&inc.frame), inc.copies.as_deref())
+                }
+            };
+            r.join(match copies {
+                None => one,
+                Some(c) => one.copied(c),
+            });
+        }
+        r
+    }
+
+    /// Placed through `f`: coordinates |o + L R (p − q)|∞ ≤ |o|∞ +
+    /// 1.8 L (|p|∞ + |q|∞); masses times k; a second moment's entries
+    /// times k L² (three times that turned), its independent moments no
+    /// less than k L²/16 of themselves (a turn moves them by rounding
+    /// alone).
+    pub(super) fn placed(self, f: &Frame) -> Reach {
+        let inf = |v: &[f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let q = f.pivot.as_ref().map_or(0.0, inf);
+        let scale = f.mass * f.length * f.length;
+        Reach {
+            pos: inf(&f.origin) + 1.8 * f.length * (self.pos + q),
+            mass_max: self.mass_max * f.mass,
+            mass_min: self.mass_min * f.mass,
+            moment_max: self.moment_max * scale * 3.0,
+            need_min: self.need_min * scale / 16.0,
+        }
+    }
+
+    /// Every copy of `c` of a body of this reach.
+    fn copied(self, c: &super::Copies) -> Reach {
+        Reach {
+            pos: c.reach(self.pos),
+            moment_max: self.moment_max * 3.0,
+            need_min: self.need_min / 16.0,
+            ..self
+        }
+    }
+
+    /// Whether every number of every instance is far inside f64's range
+    /// (so that no range check can fail: `parts::in_file_range`, and the
+    /// coordinates in SI, times `si`, finite).
+    pub(super) fn safe(&self, si: f64) -> bool {
+        const BIG: f64 = 1e290;
+        const SMALL: f64 = 1e-290;
+        self.pos * si.max(1.0) < BIG
+            && self.pos < BIG
+            && self.mass_max < BIG
+            && self.moment_max < BIG
+            && self.mass_min >= SMALL
+            && self.need_min >= SMALL
     }
 }
 

@@ -711,9 +711,9 @@ impl Ctx<'_> {
         let mut bad = None;
         // NOTE: walked only when some instance might leave the range: a
         // bound on every instance, formed once per distinct file, says
-        // at once that none can (`walk::Reach`).
+        // at once that none can (`frame::Reach`).
         let si = self.units.factor(Dim::LENGTH).value();
-        let reach = super::walk::Reach::of(&one, &mut HashMap::new());
+        let reach = super::frame::Reach::of(&one, &mut HashMap::new());
         if !reach.safe(si) {
             one.each_event(&mut |e| {
                 if let super::Event::Part(l) = e

@@ -117,7 +117,7 @@ fn body(parts: &[ExactPart]) -> Body {
 /// turned, and again arrayed; the leaf mirrored; a box). The exact parts
 /// of the body, SI.
 fn tree(rng: &mut Rng, trial: usize, dir: &Path) -> Vec<ExactPart> {
-    let scene = if trial % 2 == 0 {
+    let scene = if trial.is_multiple_of(2) {
         every_shape(rng)
     } else {
         twelve_boxes(rng)
