@@ -90,6 +90,39 @@ pub struct Tally {
     /// Σ|mᵢ|(o_ij|d_ik| + |d_ij|o_ik + o_ij o_ik) in the parallel-axis terms.
     first_off: [f64; 3],
     shift_off: [f64; 6],
+    /// Composed bodies placed (`add_body`): their absolute errors, in the
+    /// mass, the first moment and the second moment (upper triangle), and
+    /// the magnitudes of their terms beside the parts' (`body_abs`: C',
+    /// s′dᵀ and d s′ᵀ), for the sums' own rounding.
+    body_mass: f64,
+    body_first: [f64; 3],
+    body_second: [f64; 6],
+    body_abs: [f64; 6],
+}
+
+/// A composed body as `Tally::add_body` takes it (`compose::placed`), in
+/// file units: mass m, offset d of its pivot from the composer's, its
+/// residual first moment s and second moment C about its pivot, with the
+/// absolute bounds of each.
+#[derive(Debug, Clone, Copy)]
+pub struct BodyTerm {
+    pub mass: f64,
+    pub d: [f64; 3],
+    pub first: [f64; 3],
+    pub second: M3<f64>,
+    pub e_mass: f64,
+    pub e_first: [f64; 3],
+    pub e_second: M3<f64>,
+}
+
+/// The absolute bounds of a composer's raw sums (`Tally::raw`): the mass,
+/// the residual first moment about its pivot and the second moment about
+/// the pivot (no correction by the residual).
+#[derive(Debug, Clone, Copy)]
+pub struct RawError {
+    pub mass: f64,
+    pub first: [f64; 3],
+    pub second: M3<f64>,
 }
 
 /// The entries of the upper triangle, in `Tally::shift_w`'s order.
@@ -144,6 +177,106 @@ impl Tally {
         self.rot += own.rot;
     }
 
+    /// A composed body placed (`compose::placed`), its pivot at offset
+    /// `b.d` from the composer's: its terms m, m d + s and
+    /// C + m d dᵀ + s dᵀ + d sᵀ, with their errors.
+    ///
+    /// NOTE: the body's own errors are absolute and added as they are;
+    /// what the products with d add: m d (the product and d's own
+    /// rounding, a difference rounded once) 3 units of |m||d| and the
+    /// sum with s one unit of |s|; m d dᵀ 6 units of |m||d_j||d_k|, each
+    /// s dᵀ 3 units of |s_j||d_k|; the mass's error times |d| and |d|²,
+    /// the first moment's times |d| (first order: d is exact but for its
+    /// rounding, counted). A body is four terms of each sum: counted as
+    /// two parts.
+    pub fn add_body(&mut self, precision: Precision, b: &BodyTerm) {
+        let u = unit(precision);
+        let am = b.mass.abs();
+        let dm = b.d.map(f64::abs);
+        let sm = b.first.map(f64::abs);
+        self.parts += 2.0;
+        self.mass_abs += am;
+        self.body_mass += b.e_mass;
+        for j in 0..3 {
+            let md = am * dm[j];
+            self.first_abs[j] += md + sm[j];
+            self.body_first[j] += u * (3.0 * md + sm[j]) + b.e_mass * dm[j] + b.e_first[j];
+        }
+        for (i, (j, k)) in UPPER.into_iter().enumerate() {
+            let mdd = am * dm[j] * dm[k];
+            let sd = sm[j] * dm[k] + dm[j] * sm[k];
+            self.shift_abs[i] += mdd;
+            self.body_abs[i] += b.second[j][k].abs() + sd;
+            self.body_second[i] += u * (6.0 * mdd + 3.0 * sd)
+                + b.e_mass * dm[j] * dm[k]
+                + b.e_first[j] * dm[k]
+                + dm[j] * b.e_first[k]
+                + b.e_second[j][k];
+        }
+    }
+
+    /// The bounds of the composer's raw sums (`RawError`): the total
+    /// `mass`, the residual first moment `s` about the pivot and the
+    /// second moment `c` about the pivot, with no correction.
+    pub fn raw(&self, precision: Precision, mass: f64, s: [f64; 3], c: &M3<f64>) -> RawError {
+        let (mass, first, second) = self.sums(precision, mass, s, c);
+        RawError {
+            mass: safe(mass),
+            first: first.map(safe),
+            second: second.map(|r| r.map(safe)),
+        }
+    }
+
+    /// `raw`, unsafe: the mass's, the first moment's and the second
+    /// moment's errors, as `finish` goes on from them.
+    fn sums(
+        &self,
+        precision: Precision,
+        mass: f64,
+        s: [f64; 3],
+        c: &M3<f64>,
+    ) -> (f64, [f64; 3], M3<f64>) {
+        let u = unit(precision);
+        let n = self.parts;
+        // A sum of `terms` terms of absolute sum `abs`, value `v`.
+        let sum = |v: f64, abs: f64, terms: f64| match precision {
+            Precision::Standard => 2.0 * u * v.abs() + 4.0 * terms * u * u * abs,
+            Precision::Extended => terms * u * abs,
+        };
+        let dm = u * self.mass_w + sum(mass, self.mass_abs, n) + self.body_mass;
+        let ds: [f64; 3] = std::array::from_fn(|j| {
+            u * self.first_w[j]
+                + sum(s[j], self.first_abs[j], n)
+                + self.first_off[j]
+                + self.body_first[j]
+        });
+        let root_w = self.coupled_w.map(f64::sqrt);
+        let root_abs = self.coupled_abs.map(f64::sqrt);
+        let e = std::array::from_fn(|j| {
+            std::array::from_fn(|k| {
+                // The own moments' errors: on the diagonal their sum; off
+                // it, Cauchy–Schwarz over the parts whose own C is not
+                // diagonal (the others' off-diagonal entries are exact
+                // zeros).
+                let (own, own_abs) = if j == k {
+                    (self.own_w[j], self.own_abs[j])
+                } else {
+                    (root_w[j] * root_w[k], root_abs[j] * root_abs[k])
+                };
+                let shift = upper(j, k);
+                self.shift_off[shift]
+                    + u * (own + self.shift_w[shift] + self.rot)
+                    + sum(
+                        c[j][k],
+                        own_abs + self.shift_abs[shift] + self.body_abs[shift],
+                        2.0 * n + 1.0,
+                    )
+                    + self.body_second[shift]
+            })
+        });
+        (dm, ds, e)
+    }
+
     /// The bounds of the composed body, from the composer's results in file
     /// units: the total `mass`, the residual first moment `s` about the
     /// pivot, the centre `com` and the second moment `c` about it.
@@ -156,17 +289,8 @@ impl Tally {
         c: &M3<f64>,
     ) -> BodyError {
         let u = unit(precision);
-        let n = self.parts;
-        // A sum of `terms` terms of absolute sum `abs`, value `v`.
-        let sum = |v: f64, abs: f64, terms: f64| match precision {
-            Precision::Standard => 2.0 * u * v.abs() + 4.0 * terms * u * u * abs,
-            Precision::Extended => terms * u * abs,
-        };
         let am = mass.abs();
-        let dm = u * self.mass_w + sum(mass, self.mass_abs, n);
-        let ds: [f64; 3] = std::array::from_fn(|j| {
-            u * self.first_w[j] + sum(s[j], self.first_abs[j], n) + self.first_off[j]
-        });
+        let (dm, ds, raw) = self.sums(precision, mass, s, c);
         let dc = std::array::from_fn(|j| {
             safe(
                 ds[j] / am
@@ -175,8 +299,6 @@ impl Tally {
                     + u * com[j].abs(),
             )
         });
-        let root_w = self.coupled_w.map(f64::sqrt);
-        let root_abs = self.coupled_abs.map(f64::sqrt);
         let e = std::array::from_fn(|j| {
             std::array::from_fn(|k| {
                 let (sj, sk) = (s[j].abs(), s[k].abs());
@@ -184,22 +306,7 @@ impl Tally {
                     + (sj / am) * ds[k]
                     + sj * (sk / am) * (dm / am)
                     + 3.0 * u * sj * (sk / am);
-                // The own moments' errors: on the diagonal their sum; off
-                // it, Cauchy–Schwarz over the parts whose own C is not
-                // diagonal (the others' off-diagonal entries are exact
-                // zeros).
-                let (own, own_abs) = if j == k {
-                    (self.own_w[j], self.own_abs[j])
-                } else {
-                    (root_w[j] * root_w[k], root_abs[j] * root_abs[k])
-                };
-                let shift = upper(j, k);
-                safe(
-                    self.shift_off[shift]
-                        + u * (own + self.shift_w[shift] + self.rot)
-                        + sum(c[j][k], own_abs + self.shift_abs[shift], 2.0 * n + 1.0)
-                        + correction,
-                )
+                safe(raw[j][k] + correction)
             })
         });
         BodyError {

@@ -18,10 +18,10 @@
 //!
 //! A part's `array` and `mirror` copies count in the span and the mass:
 //! they are the body (a walk of the file's own parts, `Model::each_event`,
-//! only when the file gives no `units`).
+//! only when the file gives no `units`; `Model::each_own_part`).
 
 use crate::diag::{Palette, Source, Span};
-use crate::model::{Event, Item, Model};
+use crate::model::{Item, Model};
 use crate::part::MassSpec;
 use crate::units::Dim;
 use serde::Serialize;
@@ -236,22 +236,19 @@ impl Walk<'_> {
         // The file's own parts with their `array` and `mirror` copies, in
         // its frame and units (its sub-assemblies are judged by their own
         // units, as their own files).
-        let mut depth = 0usize;
-        m.each_event(&mut |e| match e {
-            Event::Enter(_) => depth += 1,
-            Event::Exit => depth = depth.saturating_sub(1),
-            Event::Part(l) if depth == 0 => {
-                // Summed at most to f64::MAX: the warning prints no `inf`.
-                if !l.part.spec.removed {
-                    mass = (mass + crate::part::mass_of::<f64>(&l.part.spec)).min(f64::MAX);
-                }
-                let [a, b] = l.part.spec.place.outline().extent();
-                for k in 0..3 {
-                    lo[k] = lo[k].min(a[k]);
-                    hi[k] = hi[k].max(b[k]);
-                }
+        // NOTE: its own parts alone are walked (`each_own_part`): walking
+        // the whole tree to skip its sub-assemblies' parts cost every
+        // file of a tree of includes all the instances below it.
+        m.each_own_part(&mut |l| {
+            // Summed at most to f64::MAX: the warning prints no `inf`.
+            if !l.part.spec.removed {
+                mass = (mass + crate::part::mass_of::<f64>(&l.part.spec)).min(f64::MAX);
             }
-            Event::Part(_) => {}
+            let [a, b] = l.part.spec.place.outline().extent();
+            for k in 0..3 {
+                lo[k] = lo[k].min(a[k]);
+                hi[k] = hi[k].max(b[k]);
+            }
         });
         let span = (0..3)
             .map(|k| (hi[k] - lo[k]).min(f64::MAX))

@@ -237,7 +237,7 @@ fn summarize_in(
     products: Products,
     precision: Precision,
 ) -> Result<Summary, SummaryError> {
-    let (body, error) = compose::compose_bounded(model, precision);
+    let (body, error) = compose::compose_model(model, precision);
     let u = model.units;
     let factors = SiFactors::of(u);
     let (f_mass, f_length) = (factors.mass, factors.length);

@@ -86,6 +86,32 @@ impl Copies {
         if i < n { (i, false) } else { (i - n, true) }
     }
 
+    /// Copy `i`'s frames, innermost first: its array's (none for copy 0
+    /// of the array) and its mirror's (for an image): what the composer
+    /// places the part's or the sub-assembly's body through.
+    pub fn frames(&self, i: usize) -> (Option<Frame>, Option<&Frame>) {
+        let (k, image) = self.which(i);
+        let array = (k > 0).then(|| self.array_frame(k));
+        (array, if image { self.image() } else { None })
+    }
+
+    /// A bound on the largest coordinate of any copy of a body whose
+    /// coordinates are at most `pos` (`frame::Reach`): a step's multiple
+    /// added, or a turn or an image about a point (|R x|∞ ≤ √3 |x|∞).
+    pub(super) fn reach(&self, pos: f64) -> f64 {
+        let inf = |v: &[f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let turned = |o: &[f64; 3], p: f64| inf(o) + 1.8 * (p + inf(o));
+        let pos = match &self.pattern {
+            Pattern::One => pos,
+            Pattern::Linear { count, step } => pos + (*count as f64) * inf(step),
+            Pattern::Polar { origin, .. } => turned(origin, pos),
+        };
+        match &self.mirror {
+            None => pos,
+            Some((_, origin)) => turned(origin, pos),
+        }
+    }
+
     /// The mirror's frame, that places the images (none without a
     /// mirror).
     pub(super) fn image(&self) -> Option<&Frame> {
@@ -429,6 +455,11 @@ impl Ctx<'_> {
             ..Model::empty(self.units)
         };
         let si = self.units.factor(Dim::LENGTH).value();
+        // NOTE: no copy placed when a bound on every instance, formed once
+        // per distinct file, is far inside the range (`frame::Reach`).
+        if super::frame::Reach::of(&one, &mut HashMap::new()).safe(si) {
+            return Ok(());
+        }
         let mut bad = None;
         // A coincident copy is the copy before it to the bit: its check is
         // that one's (`each_run`).

@@ -1,10 +1,13 @@
 //! A sub-assembly's or a copy's frame: where an included file's origin
 //! and axes go in the including file, in its units, and how a part is
 //! placed through it (`Frame::place`), with the rounding that adds
-//! (`Spec::placed`).
+//! (`Spec::placed`); a frame as the composer places a composed body
+//! through it (`Placement`); and bounds on every instance's numbers,
+//! placed through frames once per distinct file (`Reach`).
 
 use super::rotation::Orientation;
-use crate::numeric::M3;
+use super::{Item, Model};
+use crate::numeric::{DD, M3, Real, two_prod};
 use crate::part::{MassSpec, Spec};
 
 /// Where an included file's frame goes in this file's.
@@ -24,6 +27,16 @@ pub struct Frame {
     /// A mirror's frame: R is a reflection, and a part placed by its
     /// centre and a turn is completed as its image by `Place::mirror`.
     pub(super) mirror: bool,
+    /// For the composer, which places a composed body in the arithmetic
+    /// asked for (`Frame::placement`): the unit ratios `length` and
+    /// `mass` in double-double, each within `units_rel` of the exact
+    /// ratio (relative); what a linear copy's origin k·step rounded away
+    /// (`origin + origin_lo` is exact) and a polar copy's turn k·θ
+    /// (degrees).
+    pub(super) units_dd: [DD; 2],
+    pub(super) units_rel: [f64; 2],
+    pub(super) origin_lo: [f64; 3],
+    pub(super) angle_lo: f64,
 }
 
 /// How an array places its copies.
@@ -93,7 +106,95 @@ impl Linear {
     }
 }
 
+/// A frame as the composer places a composed body through it
+/// (`compose::placed`), in the arithmetic `T`: p ↦ origin + L R (p − pivot),
+/// masses times k; with how far each of its numbers may lie from the exact
+/// frame the file gives.
+#[derive(Debug, Clone, Copy)]
+pub struct Placement<T> {
+    /// R̂, formed in `T`, and the same as double-double (exactly).
+    pub r: M3<T>,
+    pub r_dd: M3<DD>,
+    /// |R̂ − R| entrywise, absolute: its form's roundings (`turn_error`,
+    /// units of `T`) and, for a polar copy in f64, the rounding of its
+    /// turn k·θ (|δθ| in radians: a turn's entries move by at most the
+    /// angle).
+    pub rho: f64,
+    /// Whether R̂ is a signed permutation: products with it are exact.
+    pub exact_turn: bool,
+    /// Exact, as double-doubles.
+    pub origin: [DD; 3],
+    pub pivot: Option<[DD; 3]>,
+    /// L and k in `T`, and L in double-double for points; each within its
+    /// relative bound of the exact ratio (0 when it is exactly 1).
+    pub length: T,
+    pub mass: T,
+    pub length_dd: DD,
+    pub rel_length: f64,
+    pub rel_mass: f64,
+    pub rel_length_dd: f64,
+}
+
 impl Frame {
+    /// This frame for the composer, in the arithmetic `T`.
+    ///
+    /// NOTE: a polar copy's turn is k·θ rounded to f64; in double-double
+    /// the rest of k·θ (exact, `angle_lo`) is turned too, as a second turn
+    /// about the same axis (R(a + b) = R(a) R(b)), so that the copies of
+    /// an array are placed to double-double's accuracy, not f64's.
+    pub fn placement<T: Real + Into<DD>>(&self) -> Placement<T> {
+        let dd_arith = T::EPS < 1e-20;
+        let unit = crate::part::error::unit_of::<T>();
+        let (orientation, angle) = match (&self.orientation, self.angle_lo) {
+            (Orientation::AxisAngle(axis, deg), lo) if lo != 0.0 && dd_arith => (
+                Orientation::Then(
+                    Box::new(Orientation::AxisAngle(*axis, *deg)),
+                    Box::new(Orientation::AxisAngle(*axis, lo)),
+                ),
+                0.0,
+            ),
+            (o, lo) => (o.clone(), lo.abs() * (std::f64::consts::PI / 180.0) * 1.01),
+        };
+        // In f64 the frame's own matrix (the same orientation).
+        let r: M3<T> = if dd_arith {
+            orientation.matrix()
+        } else {
+            self.r.map(|row| row.map(T::of))
+        };
+        let r_dd: M3<DD> = r.map(|row| row.map(Into::into));
+        let r64 = r_dd.map(|row| row.map(DD::f64));
+        let exact_turn = r64.iter().flatten().all(|x| *x == 0.0 || x.abs() == 1.0);
+        let rho = crate::part::error::turn_error(&orientation, &r64) * unit + angle;
+        let exact_turn = exact_turn && rho == 0.0;
+        // A ratio in `T`, and its relative error: the exact ratio's
+        // double-double's (`units_rel`) and its rounding to `T`.
+        let ratio = |k: usize| -> (T, f64) {
+            let x = T::of_dd(self.units_dd[k]);
+            if self.units_rel[k] == 0.0 {
+                return (x, 0.0);
+            }
+            let back: DD = x.into();
+            let off = ((back - self.units_dd[k]).f64() / self.units_dd[k].f64()).abs();
+            (x, (off + self.units_rel[k]) * 1.01)
+        };
+        let (length, rel_length) = ratio(0);
+        let (mass, rel_mass) = ratio(1);
+        Placement {
+            r,
+            r_dd,
+            rho,
+            exact_turn,
+            origin: std::array::from_fn(|i| DD::new(self.origin[i], self.origin_lo[i])),
+            pivot: self.pivot.map(|q| q.map(DD::of)),
+            length,
+            mass,
+            length_dd: self.units_dd[0],
+            rel_length,
+            rel_mass,
+            rel_length_dd: self.units_rel[0],
+        }
+    }
+
     /// The linear part of placing through this frame.
     pub fn linear(&self) -> Linear {
         Linear {
@@ -133,6 +234,43 @@ impl Frame {
             mass: 1.0,
             pivot: Some(pivot),
             mirror,
+            units_dd: [DD::of(1.0); 2],
+            units_rel: [0.0; 2],
+            origin_lo: [0.0; 3],
+            angle_lo: 0.0,
+        }
+    }
+
+    /// An include's frame: `origin`, turned by `orientation`, the
+    /// included file's length and mass units `units` (exact ratios) in
+    /// this file's.
+    pub(super) fn include(
+        origin: [f64; 3],
+        orientation: Orientation,
+        units: [Option<crate::units::Factor>; 2],
+        fallback: [f64; 2],
+    ) -> Frame {
+        let value = |k: usize| units[k].map_or(fallback[k], |f| f.value());
+        // NOTE: a ratio that outgrew i128 is the quotient of two f64
+        // factors: three roundings of f64.
+        let dd = |k: usize| units[k].map_or(DD::of(fallback[k]), |f| f.dd());
+        let rel = |k: usize| match units[k] {
+            Some(f) if f.parts().0 == f.parts().1 && f.parts().2 == 0 => 0.0,
+            Some(_) => 16.0 * crate::part::error::U_DD,
+            None => 3.0 * crate::part::error::U64,
+        };
+        Frame {
+            origin,
+            r: orientation.matrix(),
+            orientation,
+            length: value(0),
+            mass: value(1),
+            pivot: None,
+            mirror: false,
+            units_dd: [dd(0), dd(1)],
+            units_rel: [rel(0), rel(1)],
+            origin_lo: [0.0; 3],
+            angle_lo: 0.0,
         }
     }
 
@@ -144,19 +282,26 @@ impl Frame {
             Pattern::One => Frame::copy([0.0; 3], [0.0; 3], Orientation::Identity, false),
             Pattern::Linear { step, .. } => {
                 let k = k as f64;
-                Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false)
+                let mut f =
+                    Frame::copy(step.map(|s| k * s), [0.0; 3], Orientation::Identity, false);
+                f.origin_lo = step.map(|s| two_prod(k, s).1);
+                f
             }
             Pattern::Polar {
                 axis,
                 degrees,
                 origin,
                 ..
-            } => Frame::copy(
-                *origin,
-                *origin,
-                Orientation::AxisAngle(*axis, k as f64 * degrees),
-                false,
-            ),
+            } => {
+                let mut f = Frame::copy(
+                    *origin,
+                    *origin,
+                    Orientation::AxisAngle(*axis, k as f64 * degrees),
+                    false,
+                );
+                f.angle_lo = two_prod(k as f64, *degrees).1;
+                f
+            }
         }
     }
 
@@ -175,10 +320,12 @@ impl Frame {
                 let origin = step.map(|s| k * s);
                 let moved = (0..3).any(|j| differ(origin[j], self.origin[j]));
                 self.origin = origin;
+                self.origin_lo = step.map(|s| two_prod(k, s).1);
                 moved
             }
             Pattern::Polar { axis, degrees, .. } => {
                 let turn = k as f64 * degrees;
+                self.angle_lo = two_prod(k as f64, *degrees).1;
                 if matches!(self.orientation, Orientation::AxisAngle(_, t) if !differ(t, turn)) {
                     return false;
                 }
@@ -292,6 +439,142 @@ impl crate::shapes::Mover for Frame {
 
     fn mass(&self) -> f64 {
         self.mass
+    }
+}
+
+/// Bounds on the numbers of every part of a body over all its instances,
+/// in its own frame and units: the largest coordinate, the largest and
+/// smallest |mass|, the largest entry of a part's own second moment, and
+/// the smallest of the independent moments a part must have normal
+/// (`ShapeKind::independent_moments`). Formed once per distinct file
+/// (`Reach::of`), placed through a frame conservatively (`placed`): what
+/// lets the range check of a sub-assembly placed in another file's units
+/// (`include`, `copies`) see at once that no instance can leave f64's
+/// range, instead of placing each (2²⁰ of them, each through 20 frames,
+/// in a tree of includes).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Reach {
+    pos: f64,
+    mass_max: f64,
+    mass_min: f64,
+    moment_max: f64,
+    need_min: f64,
+}
+
+impl Reach {
+    const NONE: Reach = Reach {
+        pos: 0.0,
+        mass_max: 0.0,
+        mass_min: f64::INFINITY,
+        moment_max: 0.0,
+        need_min: f64::INFINITY,
+    };
+
+    fn join(&mut self, o: Reach) {
+        self.pos = self.pos.max(o.pos);
+        self.mass_max = self.mass_max.max(o.mass_max);
+        self.mass_min = self.mass_min.min(o.mass_min);
+        self.moment_max = self.moment_max.max(o.moment_max);
+        self.need_min = self.need_min.min(o.need_min);
+    }
+
+    fn part(p: &crate::part::Part) -> Reach {
+        let spec = &p.spec;
+        let m = crate::part::mass_of::<f64>(spec).abs();
+        let j = crate::part::own_second_moment::<f64>(spec, m);
+        let (moments, count, expected) = spec.place.independent_moments(m, &j);
+        let mut moments = moments[..count].to_vec();
+        moments.sort_by(|a, b| b.partial_cmp(a).unwrap_or(std::cmp::Ordering::Equal));
+        let need_min = match expected {
+            0 => f64::INFINITY,
+            e => moments.get(e - 1).copied().unwrap_or(0.0),
+        };
+        let pos = spec.place.positions().fold(0.0f64, |a, x| a.max(x.abs())) + spec.place.reach();
+        let top = j
+            .iter()
+            .flatten()
+            .chain(&moments)
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+        Reach {
+            pos,
+            mass_max: m,
+            mass_min: m,
+            moment_max: top,
+            need_min,
+        }
+    }
+
+    /// Every instance of `model`'s parts, its sub-assemblies' reaches
+    /// (kept in `memo` by model) placed through their frames.
+    pub(super) fn of(
+        model: &Model,
+        memo: &mut std::collections::HashMap<*const Model, Reach>,
+    ) -> Reach {
+        let mut r = Reach::NONE;
+        for item in model.items.iter() {
+            let (one, copies) = match item {
+                Item::Part { part, copies, .. } => (Reach::part(part), copies.as_deref()),
+                Item::Include(inc) => {
+                    let key = std::sync::Arc::as_ptr(&inc.model);
+                    let child = match memo.get(&key) {
+                        Some(c) => *c,
+                        None => {
+                            let c = Reach::of(&inc.model, memo);
+                            memo.insert(key, c);
+                            c
+                        }
+                    };
+                    (child.placed(&inc.frame), inc.copies.as_deref())
+                }
+            };
+            r.join(match copies {
+                None => one,
+                Some(c) => one.copied(c),
+            });
+        }
+        r
+    }
+
+    /// Placed through `f`: coordinates |o + L R (p − q)|∞ ≤ |o|∞ +
+    /// 1.8 L (|p|∞ + |q|∞); masses times k; a second moment's entries
+    /// times k L² (three times that turned), its independent moments no
+    /// less than k L²/16 of themselves (a turn moves them by rounding
+    /// alone).
+    pub(super) fn placed(self, f: &Frame) -> Reach {
+        let inf = |v: &[f64; 3]| v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+        let q = f.pivot.as_ref().map_or(0.0, inf);
+        let scale = f.mass * f.length * f.length;
+        Reach {
+            pos: inf(&f.origin) + 1.8 * f.length * (self.pos + q),
+            mass_max: self.mass_max * f.mass,
+            mass_min: self.mass_min * f.mass,
+            moment_max: self.moment_max * scale * 3.0,
+            need_min: self.need_min * scale / 16.0,
+        }
+    }
+
+    /// Every copy of `c` of a body of this reach.
+    fn copied(self, c: &super::Copies) -> Reach {
+        Reach {
+            pos: c.reach(self.pos),
+            moment_max: self.moment_max * 3.0,
+            need_min: self.need_min / 16.0,
+            ..self
+        }
+    }
+
+    /// Whether every number of every instance is far inside f64's range
+    /// (so that no range check can fail: `parts::in_file_range`, and the
+    /// coordinates in SI, times `si`, finite).
+    pub(super) fn safe(&self, si: f64) -> bool {
+        const BIG: f64 = 1e290;
+        const SMALL: f64 = 1e-290;
+        self.pos * si.max(1.0) < BIG
+            && self.pos < BIG
+            && self.mass_max < BIG
+            && self.moment_max < BIG
+            && self.mass_min >= SMALL
+            && self.need_min >= SMALL
     }
 }
 

@@ -17,7 +17,6 @@ use super::raw::RawPart;
 use super::rotation::Orientation;
 use super::{Ctx, Frame, Include, Item, Model};
 use crate::diag::Diagnostic;
-use crate::numeric::M3;
 use crate::units::Dim;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -667,7 +666,6 @@ impl Ctx<'_> {
             Some(r) => self.rotation(r)?,
             None => Orientation::Identity,
         };
-        let r: M3<f64> = orientation.matrix();
         // Its origin may carry tolerances: the sub-assembly's place.
         rec.enter_origin();
         let origin = match &p.origin {
@@ -676,15 +674,13 @@ impl Ctx<'_> {
             None => [0.0; 3],
         };
         let tol = rec.leave_origin();
-        let frame = Frame {
+        let exact = |dim: Dim| child.units.factor(dim).per(self.units.factor(dim));
+        let frame = Frame::include(
             origin,
-            r,
             orientation,
-            length: ratio(Dim::LENGTH),
-            mass: ratio(Dim::MASS),
-            pivot: None,
-            mirror: false,
-        };
+            [exact(Dim::LENGTH), exact(Dim::MASS)],
+            [ratio(Dim::LENGTH), ratio(Dim::MASS)],
+        );
         if parts + child.count > super::MAX_PARTS {
             return Err(self.err(
                 inc.span(),
@@ -713,14 +709,21 @@ impl Ctx<'_> {
             ..Model::empty(self.units)
         };
         let mut bad = None;
-        one.each_event(&mut |e| {
-            if let super::Event::Part(l) = e
-                && bad.is_none()
-                && self.in_file_range(&l.part.spec, "", 0..0).is_err()
-            {
-                bad = Some(l.index);
-            }
-        });
+        // NOTE: walked only when some instance might leave the range: a
+        // bound on every instance, formed once per distinct file, says
+        // at once that none can (`frame::Reach`).
+        let si = self.units.factor(Dim::LENGTH).value();
+        let reach = super::frame::Reach::of(&one, &mut HashMap::new());
+        if !reach.safe(si) {
+            one.each_event(&mut |e| {
+                if let super::Event::Part(l) = e
+                    && bad.is_none()
+                    && self.in_file_range(&l.part.spec, "", 0..0).is_err()
+                {
+                    bad = Some(l.index);
+                }
+            });
+        }
         if let Some(index) = bad {
             // Again, named (names are made for the one part that fails).
             let p = one.part(index).expect("the part the walk met");

@@ -184,6 +184,37 @@ impl Model {
         });
     }
 
+    /// The file's own parts, each copy of them too, in file order,
+    /// unnamed; its sub-assemblies are passed over (their parts counted in
+    /// `Leaf::index`, never placed): a pass that judges a file by its own
+    /// parts costs its own parts, however deep its tree.
+    pub fn each_own_part(&self, f: &mut dyn FnMut(Leaf<'_>)) {
+        let mut walk = self.walker(false);
+        walk.own_only = true;
+        walk.items(
+            self,
+            &mut Events(&mut |e| {
+                if let Event::Part(l) = e {
+                    f(l);
+                }
+            }),
+        );
+    }
+
+    /// Whether some part of the body, at any depth, is a cut-out: each
+    /// distinct file looked at once.
+    pub fn has_cut_outs(&self) -> bool {
+        fn any(m: &Model, seen: &mut std::collections::HashSet<*const Model>) -> bool {
+            m.items.iter().any(|item| match item {
+                Item::Part { part, .. } => part.spec.removed,
+                Item::Include(inc) => {
+                    seen.insert(std::sync::Arc::as_ptr(&inc.model)) && any(&inc.model, seen)
+                }
+            })
+        }
+        any(self, &mut std::collections::HashSet::new())
+    }
+
     /// Every part and sub-assembly, in file order; parts unnamed, as
     /// `each_body_part`'s.
     pub fn each_event(&self, f: &mut dyn FnMut(Event<'_>)) {
@@ -253,11 +284,19 @@ impl Model {
     }
 
     fn walk_with(&self, named: bool, next: &mut usize, f: &mut impl Visit) {
-        let mut walk = Walk {
+        let mut walk = self.walker(named);
+        walk.next = *next;
+        walk.items(self, f);
+        *next = walk.next;
+    }
+
+    fn walker(&self, named: bool) -> Walk<'_> {
+        Walk {
+            own_only: false,
             frames: Vec::new(),
             keys: vec![0],
             named,
-            next: *next,
+            next: 0,
             prefix: String::new(),
             placed: Part {
                 name: String::new(),
@@ -275,9 +314,7 @@ impl Model {
                 tol: None,
                 material: None,
             },
-        };
-        walk.items(self, f);
-        *next = walk.next;
+        }
     }
 }
 
@@ -324,6 +361,8 @@ pub struct Shift<'a> {
 /// its name or path (made afresh for each, they were 40 of the 2²⁰ parts'
 /// 42 allocations).
 struct Walk<'m> {
+    /// Whether sub-assemblies are passed over (`Model::each_own_part`).
+    own_only: bool,
     /// The frames entered, outermost first.
     frames: Vec<Layer<'m>>,
     /// The instance key of each file entered (`Placing::file`), the root's
@@ -340,6 +379,10 @@ impl<'m> Walk<'m> {
     fn items<V: Visit>(&mut self, model: &'m Model, f: &mut V) {
         for (k, item) in model.items.iter().enumerate() {
             match item {
+                Item::Include(inc) if self.own_only => {
+                    let copies = inc.copies.as_ref().map_or(1, |c| c.indices().len());
+                    self.next += inc.model.count * copies;
+                }
                 Item::Include(inc) => match &inc.copies {
                     None => self.include(model, k, inc, None, f),
                     Some(c) => {

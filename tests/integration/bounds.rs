@@ -391,7 +391,9 @@ fn report_with_sub(name: &str, top: &str, sub: &str, precision: &str) -> Value {
 fn bounds_hold_where_a_review_found_them_short() {
     let mut honest = Honest::default();
     // Two 1 kg points at x = 0.1 and 0.3, moved 1e6 along x: I_yy = I_zz
-    // = 0.02 exactly, the rest 0.
+    // = (x₂ − x₁)²/2 for the f64 numbers the file's 0.1 and 0.3 read as
+    // (0.02 less 3e-18: a bound placed in double-double sees it), the
+    // rest 0.
     let sub = "[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0.1, 0, 0]\n[[part]]\nshape = \"point\"\nmass = 1\ncenter = [0.3, 0, 0]\n";
     let top = "[[part]]\nname = \"far\"\ninclude = \"sub.toml\"\norigin = [1000000, 0, 0]\n";
     // A tensor with `yy` and `zz` on its diagonal, 0 elsewhere.
@@ -410,7 +412,10 @@ fn bounds_hold_where_a_review_found_them_short() {
             &format!("far frame, {p}"),
             &v,
             "inertia_com",
-            &across(r::frac(1, 50)),
+            &across({
+                let gap = r::q(0.3) - r::q(0.1);
+                &gap * &gap / r::int(2)
+            }),
         );
     }
     // A 1 kg rod (0,0,0)→(1,1,0) turned −45° about z: along x, length √2,

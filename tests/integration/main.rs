@@ -42,6 +42,7 @@ mod package;
 mod params;
 mod physics;
 mod pipes;
+mod placed_bodies;
 mod plausible;
 mod reference;
 mod render;

@@ -222,18 +222,24 @@ fn deviations_are_invariant_under_a_rigid_motion_of_the_whole_body() {
     // the figures it is formed from: by their relative bound, and for a
     // principal moment by twice its axis's angle (dλ = pᵀ dI p).
     let bounds = &b["error_bounds"];
+    // NOTE: the σ are formed from the parts as the walk places them, each
+    // number rounded in f64 2.3e6 mm out (`Frame::place`); the composed
+    // body is placed whole (`compose::placed`), and its bounds no longer
+    // carry that rounding. Measured, it moves a σ by 1.4e-9 of itself
+    // (the thinnest size, 6 mm, against the distance): `walk` allows 7×.
+    let walk = 1e-8;
     let rel = |v: &Value, e: &Value| e.as_f64().unwrap() / v.as_f64().unwrap().abs();
     let mass_rel = rel(&b["mass"], &bounds["mass"]);
     assert!(close(
         sigma(&a, "mass"),
         sigma(&b, "mass"),
-        10.0 * mass_rel + 1e-14
+        10.0 * mass_rel + 1e-14 + walk
     ));
     for i in 0..3 {
         let q = format!("principal_moments.{}", i + 1);
         let own = rel(&b["principal_moments"][i], &bounds["principal_moments"][i]);
         let axis = bounds["principal_axes"][i].as_f64().unwrap();
-        let tol = 10.0 * (own + 2.0 * axis + mass_rel) + 1e-14;
+        let tol = 10.0 * (own + 2.0 * axis + mass_rel) + 1e-14 + walk;
         let (sa, sb) = (sigma(&a, &q), sigma(&b, &q));
         assert!(close(sa, sb, tol), "{q}: {sa} {sb}, within {tol}");
     }
@@ -242,7 +248,7 @@ fn deviations_are_invariant_under_a_rigid_motion_of_the_whole_body() {
         let c = &v["uncertainty"]["covariance"];
         (1..4).map(|i| c[i][i].as_f64().unwrap()).sum()
     };
-    assert!(close(trace(&a), trace(&b), 10.0 * mass_rel + 1e-14));
+    assert!(close(trace(&a), trace(&b), 10.0 * mass_rel + 1e-14 + walk));
 }
 
 #[test]

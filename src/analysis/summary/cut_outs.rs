@@ -22,6 +22,10 @@ pub(super) fn leave_a_body(
     body: &crate::mass::Body,
     mass: f64,
 ) -> Result<(), SummaryError> {
+    // NOTE: a body with no cut-out anywhere is not walked at all.
+    if !model.has_cut_outs() {
+        return Ok(());
+    }
     // Relative to the masses that cancel: what is left of equal and
     // opposite masses is rounding, not a body.
     let factors = SiFactors::of(model.units);

@@ -12,6 +12,10 @@
 //! - `extended`: the same steps in double-double (~32 digits): rotation of
 //!   each part, its closed form, the sums and the Jacobi eigen solution.
 
+mod placed;
+
+pub use placed::bodies_composed;
+
 use crate::bounds::{BodyError, Tally};
 use crate::eigen::jacobi_counted;
 use crate::mass::Body;
@@ -44,6 +48,25 @@ pub fn compose_bounded<P: EachPart + ?Sized>(parts: &P, precision: Precision) ->
     match precision {
         Precision::Standard => compose_standard(parts),
         Precision::Extended => compose_extended(parts),
+    }
+}
+
+/// `compose_bounded` of a model: a file of parts alone as a list of its
+/// parts (`compose_standard`, `compose_extended`); one with
+/// sub-assemblies or copies with each distinct sub-assembly composed once
+/// and placed per instance, each copy placed from its part's physics
+/// (`placed`).
+pub fn compose_model(model: &crate::model::Model, precision: Precision) -> (Body, BodyError) {
+    let plain = model
+        .items
+        .iter()
+        .all(|item| matches!(item, crate::model::Item::Part { copies: None, .. }));
+    if plain {
+        return compose_bounded(model, precision);
+    }
+    match precision {
+        Precision::Standard => placed::compose_root::<f64>(model),
+        Precision::Extended => placed::compose_root::<DD>(model),
     }
 }
 
