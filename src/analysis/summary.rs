@@ -323,11 +323,28 @@ fn summarize_in(
         std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
     };
     let h = analysis.omega.map(|w| times(&i_ref, &w));
+    // The body moving (`motion`): what v adds to H and T about the point.
+    let motion = analysis.velocity.zip(analysis.omega).map(|(v, w)| {
+        super::motion::motion(&super::motion::Inputs {
+            mass: mass_dd,
+            r: com_ref_dd.map(|x| x * f_length),
+            i_com: &i_com,
+            omega: [w.x, w.y, w.z],
+            v: [v.x, v.y, v.z].map(|x| DD::of(x) * f_length),
+        })
+    });
     let t = analysis.omega.zip(h).map(|(w, h)| {
-        (0..3)
+        let t = (0..3)
             .fold(DD::of(0.0), |acc, i| acc + h[i].mul_f64(w[i]))
-            .mul_f64(0.5)
-            .f64()
+            .mul_f64(0.5);
+        match &motion {
+            Some(m) => (t + m.t_extra).f64(),
+            None => t.f64(),
+        }
+    });
+    let h_about = h.map(|h| match &motion {
+        Some(m) => std::array::from_fn(|j| h[j] + m.h_extra[j]),
+        None => h,
     });
     let m = analysis
         .alpha
@@ -408,9 +425,10 @@ fn summarize_in(
         inertia_f: [i_com_f, i_ref_f],
         principal: [p_com, p_ref],
         moments: [m_com, m_ref],
-        h: h.map(|h| h.map(DD::f64)),
+        h: h_about.map(|h| h.map(DD::f64)),
         t,
         m,
+        motion,
         bounds: inputs,
         eigen: Default::default(),
     };

@@ -429,13 +429,16 @@ impl Ctx<'_> {
         let about = read(&r.about, "about", Dim::LENGTH)?;
         let omega = read(&r.omega, "omega", Dim::ANGULAR_VELOCITY)?;
         let alpha = read(&r.alpha, "alpha", Dim::ANGULAR_ACCELERATION)?;
+        let velocity = read(&r.velocity, "velocity", Dim::VELOCITY)?;
         let axes = r.axes.as_ref().map(|a| self.axes(a)).transpose()?;
         Ok(Analysis {
             about,
             omega,
             alpha,
+            velocity,
             axes,
             alpha_span: r.alpha.as_ref().map(Spanned::span),
+            velocity_span: r.velocity.as_ref().map(Spanned::span),
             about_span: r.about.as_ref().map(Spanned::span),
             omega_span: r.omega.as_ref().map(Spanned::span),
             warnings: r.warnings,

@@ -150,8 +150,13 @@ pub struct Analysis {
     pub about: Option<Vector3<f64>>,
     pub omega: Option<Vector3<f64>>,
     pub alpha: Option<Vector3<f64>>,
+    /// The reference point's velocity (file length per second), in the
+    /// report axes (`analysis::motion`).
+    pub velocity: Option<Vector3<f64>>,
     /// Where the file gave `alpha`, to point at it if ω is missing.
     pub alpha_span: Option<Range<usize>>,
+    /// Where the file gave `velocity`, likewise.
+    pub velocity_span: Option<Range<usize>>,
     /// Where the file gave `about` and `omega`, to point at them when a
     /// result overflows.
     pub about_span: Option<Range<usize>>,
@@ -469,7 +474,7 @@ impl Model {
             None => Analysis::default(),
         };
         let expect = match &raw.expect {
-            Some(e) => ctx.expectations(&rec, e, analysis.omega.is_some())?,
+            Some(e) => ctx.expectations(&rec, e, &analysis)?,
             None => Vec::new(),
         };
         let budget = raw

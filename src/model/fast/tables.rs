@@ -26,10 +26,10 @@ pub(super) fn units(node: Node<'_>) -> Read<Spanned<RawUnits>> {
 
 /// `[analysis]`.
 pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
-    const KEYS: &[&str] = &["about", "omega", "alpha", "axes", "warnings"];
+    const KEYS: &[&str] = &["about", "omega", "alpha", "velocity", "axes", "warnings"];
     let (entries, span) = table(
         node,
-        "a table with `about`, `omega`, `alpha`, `axes` or `warnings`",
+        "a table with `about`, `omega`, `alpha`, `velocity`, `axes` or `warnings`",
     )?;
     let mut a = RawAnalysis::default();
     for (k, ks, v) in entries {
@@ -37,6 +37,7 @@ pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
             "about" => set(&mut a.about, keyed(&k, vector(v))?, &ks),
             "omega" => set(&mut a.omega, keyed(&k, vector(v))?, &ks),
             "alpha" => set(&mut a.alpha, keyed(&k, vector(v))?, &ks),
+            "velocity" => set(&mut a.velocity, keyed(&k, vector(v))?, &ks),
             "axes" => set(&mut a.axes, keyed(&k, axes(v))?, &ks),
             "warnings" => {
                 let b = keyed(&k, toml::Spanned::<bool>::from_node(v))?;
@@ -152,6 +153,11 @@ pub(in crate::model) const EXPECT_KEYS: &[&str] = &[
     "predicted_center_of_mass",
     "predicted_inertia_com",
     "principal_axes",
+    "velocity_com",
+    "linear_momentum",
+    "angular_momentum_com",
+    "kinetic_energy_translational",
+    "kinetic_energy_rotational",
     "Ixx",
     "Iyy",
     "Izz",
@@ -177,6 +183,11 @@ pub(super) fn expect(node: Node<'_>) -> Read<Spanned<RawExpect>> {
         predicted_center_of_mass: None,
         predicted_inertia_com: None,
         principal_axes: None,
+        velocity_com: None,
+        linear_momentum: None,
+        angular_momentum_com: None,
+        kinetic_energy_translational: None,
+        kinetic_energy_rotational: None,
         ixx: None,
         iyy: None,
         izz: None,
@@ -199,6 +210,11 @@ pub(super) fn expect(node: Node<'_>) -> Read<Spanned<RawExpect>> {
             "predicted_center_of_mass" => &mut e.predicted_center_of_mass,
             "predicted_inertia_com" => &mut e.predicted_inertia_com,
             "principal_axes" => &mut e.principal_axes,
+            "velocity_com" => &mut e.velocity_com,
+            "linear_momentum" => &mut e.linear_momentum,
+            "angular_momentum_com" => &mut e.angular_momentum_com,
+            "kinetic_energy_translational" => &mut e.kinetic_energy_translational,
+            "kinetic_energy_rotational" => &mut e.kinetic_energy_rotational,
             "Ixx" => &mut e.ixx,
             "Iyy" => &mut e.iyy,
             "Izz" => &mut e.izz,

@@ -45,6 +45,7 @@ pub(super) fn definitions() -> Map<String, Value> {
                 "about": quantities(3),
                 "omega": quantities(3),
                 "alpha": quantities(3),
+                "velocity": doc(quantities(3), "The reference point's velocity in the report axes: numbers in the file's length unit per second, or quantities such as \"3 m/s\"; needs `omega`."),
                 "axes": r("Axes"),
                 "warnings": doc(json!({ "type": "boolean" }), "A boolean (default `true`); `false` silences this file's plausibility warnings (a body over 100 m or 100 t without `units`, a density outside 1–25,000 kg/m³)."),
             }),
