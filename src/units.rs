@@ -39,6 +39,8 @@ impl Dim {
     /// A point's velocity (`[analysis] velocity`) and a linear momentum.
     pub const VELOCITY: Dim = Dim::new(0, 1, -1);
     pub const MOMENTUM: Dim = Dim::new(1, 1, -1);
+    /// `[analysis] g`.
+    pub const ACCELERATION: Dim = Dim::new(0, 1, -2);
 
     fn add(self, o: Dim, sign: i32) -> Dim {
         Dim::new(
@@ -64,6 +66,7 @@ impl Dim {
             Dim::ENERGY => "an energy",
             Dim::VELOCITY => "a velocity",
             Dim::MOMENTUM => "a linear momentum",
+            Dim::ACCELERATION => "an acceleration",
             _ => "a quantity of another kind",
         }
     }
@@ -84,6 +87,7 @@ impl Dim {
             Dim::ENERGY => "\"8.25 J\"",
             Dim::VELOCITY => "\"3 m/s\"",
             Dim::MOMENTUM => "\"6 kg*m/s\"",
+            Dim::ACCELERATION => "\"9.81 m/s^2\"",
             _ => "\"1 m\"",
         }
     }

@@ -9,6 +9,7 @@
 //! and the other way round. The commands add only what is theirs: `check`
 //! evaluates expectations (`check`), `diff` compares two summaries (`diff`).
 
+pub mod axles;
 pub mod bless;
 pub mod budget;
 pub mod check;

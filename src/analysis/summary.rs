@@ -163,6 +163,8 @@ pub struct Summary {
     pub kinetic_energy: Option<f64>,
     pub alpha: Option<[f64; 3]>,
     pub euler_moment: Option<[f64; 3]>,
+    /// The static loads on two axles (`[analysis] axles`, `axles`).
+    pub axle_loads: Option<super::axles::AxleLoads>,
     /// The principal moments with thin plates and slender rods made solid;
     /// present only when a part gives its `thickness` or `diameter`.
     pub idealisation: Option<ideal::Idealisation>,
@@ -452,6 +454,21 @@ fn summarize_in(
         error_bounds.set(info.quantity, formed.bound(info.formed));
     }
 
+    // The axle loads: the centre of mass's coordinate along the report
+    // axis, the axles' positions in SI.
+    let axle_loads = match &analysis.axles {
+        None => None,
+        Some(a) => {
+            let row = formed.frame[a.axis];
+            let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
+            let g = analysis.g.unwrap_or(super::axles::G);
+            let loads = super::axles::loads(mass, along, a.front, a.rear, g);
+            Some(loads.ok_or(SummaryError::NotFinite {
+                what: "axle load",
+                blame: Blame::Parts(Contribution::Mass),
+            })?)
+        }
+    };
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,
@@ -500,6 +517,7 @@ fn summarize_in(
         kinetic_energy: values.scalar(Quantity::KineticEnergy),
         alpha: values.triple(Quantity::Alpha),
         euler_moment: values.triple(Quantity::EulerMoment),
+        axle_loads,
         values,
     })
 }

@@ -157,6 +157,11 @@ pub struct Analysis {
     pub alpha_span: Option<Range<usize>>,
     /// Where the file gave `velocity`, likewise.
     pub velocity_span: Option<Range<usize>>,
+    /// Two axles along a report axis (`analysis::axles`).
+    pub axles: Option<Axles>,
+    /// The acceleration of gravity, m/s² (SI: the file's units name no
+    /// time); `analysis::axles::G` without it.
+    pub g: Option<f64>,
     /// Where the file gave `about` and `omega`, to point at them when a
     /// result overflows.
     pub about_span: Option<Range<usize>>,
@@ -167,6 +172,15 @@ pub struct Analysis {
     /// `warnings`: `Some(false)` silences the plausibility warnings
     /// (`analysis::plausible`).
     pub warnings: Option<bool>,
+}
+
+/// `[analysis] axles`: the index of the report axis they lie along and
+/// their positions on it, m (SI; distinct).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axles {
+    pub axis: usize,
+    pub front: f64,
+    pub rear: f64,
 }
 
 impl Model {

@@ -196,9 +196,21 @@ pub struct RawAnalysis {
     pub alpha: Option<Vector>,
     /// The reference point's velocity, report axes (`analysis::motion`).
     pub velocity: Option<Vector>,
+    /// Two axles' positions along an axis (`analysis::axles`).
+    pub axles: Option<Spanned<RawAxles>>,
+    /// The acceleration of gravity for the axle loads.
+    pub g: Option<Spanned<Quantity>>,
     pub axes: Option<Spanned<RawAxes>>,
     /// `false`: no plausibility warnings for this file (`analysis::plausible`).
     pub warnings: Option<bool>,
+}
+
+/// `[analysis] axles = { axis, front, rear }`.
+#[derive(Debug, Default)]
+pub struct RawAxles {
+    pub axis: Option<Spanned<String>>,
+    pub front: Option<Spanned<Quantity>>,
+    pub rear: Option<Spanned<Quantity>>,
 }
 
 /// `[analysis] axes`: the report axes' x and y directions in the file's

@@ -13,6 +13,7 @@ use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
 
+mod axles;
 mod motion;
 mod short;
 
@@ -396,6 +397,7 @@ pub fn write_table_to(
         ..fit(width)
     };
     write_rows(&mut out, &header, &vectors, &right, fit);
+    axles::write(&mut out, s, &u, width);
 
     let _ = writeln!(
         out,

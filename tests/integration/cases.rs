@@ -180,3 +180,78 @@ fn check_compares_the_motions_expectations() {
     );
     assert!(!err.contains("linear_momentum"), "{err}");
 }
+
+/// A point of `mass` kg at `x` m, on axles at `front` and `rear` m along
+/// x, with `extra` in `[analysis]`.
+fn on_axles(mass: f64, x: f64, front: &str, rear: &str, extra: &str) -> Value {
+    let text = format!(
+        "[[part]]\nshape = \"point\"\nmass = {mass}\ncenter = [{x}, 0.3, -2]\n[analysis]\naxles = {{ axis = \"x\", front = {front}, rear = {rear} }}\n{extra}"
+    );
+    report_json(&text, &[]).0
+}
+
+#[test]
+fn axle_loads_are_the_statics_of_a_beam_on_two_supports() {
+    // 1000 kg at x = 0.3 on axles at 1.5 and −0.5: moments about the rear
+    // axle, F_f · 2 = W · 0.8, so 40 % front and 60 % rear.
+    let v = on_axles(1000.0, 0.3, "1.5", "-0.5", "");
+    let a = &v["axle_loads"];
+    let w = 1000.0 * 9.80665;
+    assert!((num(&a["front"]["share"]) - 0.4).abs() < 1e-15);
+    assert!((num(&a["rear"]["share"]) - 0.6).abs() < 1e-15);
+    assert!((num(&a["front"]["load"]) - 0.4 * w).abs() < 1e-9);
+    assert!((num(&a["rear"]["load"]) - 0.6 * w).abs() < 1e-9);
+    assert_eq!(num(&a["front"]["position"]), 1.5);
+    assert_eq!(num(&a["rear"]["position"]), -0.5);
+}
+
+#[test]
+fn axle_positions_take_units_and_g_replaces_standard_gravity() {
+    let a = on_axles(10.0, 0.3, "\"1500 mm\"", "\"-50 cm\"", "g = 10\n");
+    let a = &a["axle_loads"];
+    assert_eq!(num(&a["front"]["position"]), 1.5);
+    assert!((num(&a["front"]["load"]) - 40.0).abs() < 1e-12);
+    assert!((num(&a["rear"]["load"]) - 60.0).abs() < 1e-12);
+}
+
+#[test]
+fn a_centre_of_mass_behind_the_rear_axle_gives_the_front_a_negative_load() {
+    let v = on_axles(1.0, -1.5, "1.5", "-0.5", "");
+    let a = &v["axle_loads"];
+    assert!(num(&a["front"]["load"]) < 0.0);
+    let sum = num(&a["front"]["share"]) + num(&a["rear"]["share"]);
+    assert!((sum - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn the_axle_axis_is_one_of_the_report_axes() {
+    // Report axes turned a quarter about z: their x is the file's y, where
+    // the point is at 0.3; axles at ±1 along it share it 65 / 35.
+    let v = on_axles(
+        1.0,
+        7.0,
+        "1",
+        "-1",
+        "axes = { x = [0, 1, 0], y = [-1, 0, 0] }\n",
+    );
+    let a = &v["axle_loads"];
+    assert!((num(&a["front"]["share"]) - 0.65).abs() < 1e-15);
+}
+
+#[test]
+fn without_axles_the_report_has_no_axle_loads() {
+    let (v, _) = report_json(BOX, &[]);
+    assert!(v.get("axle_loads").is_none());
+}
+
+#[test]
+fn the_table_gives_the_axle_loads_in_newtons_kilograms_and_percent() {
+    let out = massprop(&["report", "shapes/car.toml"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("axle loads (g = 9.80665 m/s²)"), "{text}");
+    // The car's front share by hand: (281500/1330 + 1250) / 2600.
+    let share = (281500.0 / 1330.0 + 1250.0) / 2600.0;
+    let kg = format!("{:.3}", 1330.0 * share);
+    assert!(text.contains(&kg), "{kg} not in\n{text}");
+    assert!(text.contains("56.2175"), "{text}");
+}

@@ -875,8 +875,21 @@ fn analysis(l: u32) -> BoxedStrategy<String> {
         prop::option::weighted(0.7, motion()),
         prop::option::of(motion()),
         prop::option::weighted(0.3, velocity),
+        // `axles` (issue 35): positions far apart, equal, with units, a
+        // third axle, an axis that is none.
+        prop::option::weighted(
+            0.3,
+            prop::sample::select(vec![
+                "{ axis = \"x\", front = 1.35, rear = -1.25 }",
+                "{ axis = \"z\", front = \"1 mm\", rear = \"1e300 m\" }",
+                "{ axis = \"y\", front = 0, rear = 0 }",
+                "{ axis = \"x\", front = 1, rear = 0, middle = 0.5 }",
+                "{ axis = \"w\", front = 1, rear = 0 }",
+                "{ axis = \"x\", front = 1e308, rear = -1e308 }",
+            ]),
+        ),
     )
-        .prop_map(|(about, omega, alpha, velocity)| {
+        .prop_map(|(about, omega, alpha, velocity, axles)| {
             let mut lines = vec!["[analysis]".to_string()];
             for (k, v) in [
                 ("about", about),
@@ -887,6 +900,9 @@ fn analysis(l: u32) -> BoxedStrategy<String> {
                 if let Some(v) = v {
                     lines.push(format!("{k} = {v}"));
                 }
+            }
+            if let Some(a) = axles {
+                lines.push(format!("axles = {a}"));
             }
             lines.join("\n")
         })

@@ -59,6 +59,9 @@ impl Serialize for Summary {
         for info in turning {
             quantity::serialize_field(&mut m, info, self.reported(info.quantity))?;
         }
+        if let Some(a) = &self.axle_loads {
+            m.serialize_field("axle_loads", a)?;
+        }
         if let Some(i) = &self.idealisation {
             m.serialize_field("idealisation", i)?;
         }

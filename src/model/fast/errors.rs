@@ -372,7 +372,7 @@ mod tests {
         let d = ours(text);
         assert!(d.contains("t.toml:2:1: error: unknown key `x`"), "{d}");
         assert!(
-            d.contains("`about`, `omega`, `alpha`, `velocity`, `axes`"),
+            d.contains("`about`, `omega`, `alpha`, `velocity`, `axles`, `g`, `axes`"),
             "{d}"
         );
     }
