@@ -367,6 +367,14 @@ pub struct ReportArgs {
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
     pub alpha: Option<String>,
 
+    // NOTE: issue 35's flags (`cases`), one block.
+    /// Velocity of the reference point, overriding `[analysis].velocity`:
+    /// x,y,z in the report axes, in the file's length unit per second, or
+    /// with units, e.g. "0,0,3 m/s". Needs ω; adds the mass centre's
+    /// velocity, the linear momentum and the translational kinetic energy.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub velocity: Option<String>,
+
     #[command(flatten)]
     pub axes: AxesArgs,
 
@@ -600,6 +608,7 @@ impl Cli {
                         about: a.about.clone(),
                         omega: a.omega.clone(),
                         alpha: a.alpha.clone(),
+                        velocity: a.velocity.clone(),
                         axes: a.axes.axes.clone(),
                     },
                     &a.includes,

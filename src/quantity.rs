@@ -61,6 +61,16 @@ pub enum Quantity {
     Omega,
     Alpha,
     EulerMoment,
+    /// The body moving (`analysis::motion`): the reference point's
+    /// velocity v as given, the mass centre's v̄ = v + ω × r, G = m v̄,
+    /// H_G = I_G ω, ½ m v̄·v̄ and ½ ω·H_G (`angular_momentum` is then
+    /// H_O = H_G + r × G and `kinetic_energy` their sum).
+    Velocity,
+    VelocityCom,
+    LinearMomentum,
+    AngularMomentumCom,
+    KineticEnergyTranslational,
+    KineticEnergyRotational,
 }
 
 /// How a quantity's value is laid out.
@@ -112,6 +122,8 @@ pub enum Needs {
     Predicted,
     /// `alpha` (with `omega`) in `[analysis]`.
     Alpha,
+    /// `velocity` (with `omega`) in `[analysis]`.
+    Velocity,
 }
 
 /// The tolerance `--bless` gives an entry that has none
@@ -269,10 +281,12 @@ const MASS: (Dim, &str) = (Dim::MASS, "kg");
 const LENGTH: (Dim, &str) = (Dim::LENGTH, "m");
 const INERTIA: (Dim, &str) = (Dim::INERTIA, "kg*m^2");
 const NUMBER: (Dim, &str) = (Dim::DIMENSIONLESS, "");
+const ENERGY: (Dim, &str) = (Dim::ENERGY, "J");
+const ANGULAR_MOMENTUM: (Dim, &str) = (Dim::ANGULAR_MOMENTUM, "N*m*s");
 
 /// Every reported quantity, in the order of `Quantity` (the order in which
 /// `[expect]` is read, hence which of two errors is reported).
-pub const QUANTITIES: [Info; 22] = [
+pub const QUANTITIES: [Info; 28] = [
     Info {
         label: "mass",
         sigma: Some(0),
@@ -375,7 +389,7 @@ pub const QUANTITIES: [Info; 22] = [
         ..row(
             Quantity::AngularMomentum,
             "angular_momentum",
-            (Dim::ANGULAR_MOMENTUM, "N*m*s"),
+            ANGULAR_MOMENTUM,
             Layout::Vector,
             Formed::Momentum,
         )
@@ -389,7 +403,7 @@ pub const QUANTITIES: [Info; 22] = [
         ..row(
             Quantity::KineticEnergy,
             "kinetic_energy",
-            (Dim::ENERGY, "J"),
+            ENERGY,
             Layout::Scalar,
             Formed::Energy,
         )
@@ -552,6 +566,86 @@ pub const QUANTITIES: [Info; 22] = [
             Formed::EulerMoment,
         )
     },
+    // Given, but rounded into SI from the file's length unit: bounded.
+    Info {
+        needs: Needs::Velocity,
+        report: Some(19),
+        bound: Some(16),
+        ..reported(
+            Quantity::Velocity,
+            "velocity",
+            (Dim::VELOCITY, "m/s"),
+            Layout::Vector,
+            Formed::Velocity,
+        )
+    },
+    Info {
+        needs: Needs::Velocity,
+        report: Some(20),
+        bound: Some(17),
+        judge: Judge::Whole(15, Scale::Zero),
+        ..row(
+            Quantity::VelocityCom,
+            "velocity_com",
+            (Dim::VELOCITY, "m/s"),
+            Layout::Vector,
+            Formed::VelocityCom,
+        )
+    },
+    Info {
+        needs: Needs::Velocity,
+        report: Some(21),
+        bound: Some(18),
+        judge: Judge::Whole(16, Scale::Zero),
+        ..row(
+            Quantity::LinearMomentum,
+            "linear_momentum",
+            (Dim::MOMENTUM, "kg*m/s"),
+            Layout::Vector,
+            Formed::LinearMomentum,
+        )
+    },
+    Info {
+        needs: Needs::Velocity,
+        report: Some(22),
+        bound: Some(19),
+        judge: Judge::Whole(17, Scale::Zero),
+        ..row(
+            Quantity::AngularMomentumCom,
+            "angular_momentum_com",
+            ANGULAR_MOMENTUM,
+            Layout::Vector,
+            Formed::MomentumCom,
+        )
+    },
+    Info {
+        needs: Needs::Velocity,
+        bless: Bless::Relative,
+        report: Some(23),
+        bound: Some(20),
+        judge: Judge::Each(18, Scale::Own),
+        ..row(
+            Quantity::KineticEnergyTranslational,
+            "kinetic_energy_translational",
+            ENERGY,
+            Layout::Scalar,
+            Formed::EnergyTranslational,
+        )
+    },
+    Info {
+        needs: Needs::Velocity,
+        bless: Bless::Relative,
+        report: Some(24),
+        bound: Some(21),
+        judge: Judge::Each(19, Scale::Own),
+        ..row(
+            Quantity::KineticEnergyRotational,
+            "kinetic_energy_rotational",
+            ENERGY,
+            Layout::Scalar,
+            Formed::EnergyRotational,
+        )
+    },
 ];
 
 /// The rows in the order of `place` (`Info::report`, `Info::bound`, the
@@ -570,7 +664,7 @@ impl Info {
     /// which `report`'s JSON writes after the parts.
     pub fn turning(&self) -> bool {
         match self.needs {
-            Needs::Omega | Needs::Alpha => true,
+            Needs::Omega | Needs::Alpha | Needs::Velocity => true,
             Needs::Nothing | Needs::Predicted => false,
         }
     }
@@ -665,92 +759,4 @@ pub fn component(layout: Layout, k: usize) -> String {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn each_row_stands_at_its_variants_position() {
-        for (k, info) in QUANTITIES.iter().enumerate() {
-            assert_eq!(info.quantity as usize, k, "{}", info.key);
-        }
-    }
-
-    #[test]
-    fn the_sigma_outputs_of_one_body_are_numbered_without_overlap() {
-        let mut taken = [false; 2 * OUTPUTS];
-        for info in &QUANTITIES {
-            let Some(first) = info.sigma else { continue };
-            let n = match info.layout {
-                Layout::Matrix => UPPER.len(),
-                Layout::Scalar | Layout::Vector | Layout::Ordered | Layout::Axes => {
-                    info.layout.count()
-                }
-            };
-            for (o, t) in taken.iter_mut().enumerate().skip(first).take(n) {
-                assert!(!*t, "{} overlaps output {o}", info.key);
-                *t = true;
-            }
-        }
-        // Every output of the basic body is some quantity's (the predicted
-        // body's principal moments have no `[expect]` key).
-        assert!(taken[..OUTPUTS].iter().all(|t| *t), "{taken:?}");
-    }
-
-    /// The places of `place` are 0, 1, 2, … each once.
-    fn dense(place: fn(&Info) -> Option<u8>, what: &str) {
-        let mut places: Vec<u8> = QUANTITIES.iter().filter_map(place).collect();
-        places.sort_unstable();
-        let n = u8::try_from(places.len()).unwrap();
-        assert_eq!(places, (0..n).collect::<Vec<_>>(), "{what}");
-    }
-
-    #[test]
-    fn the_places_in_the_report_in_error_bounds_and_among_the_warnings_are_each_taken_once() {
-        dense(|i| i.report, "report");
-        dense(|i| i.bound, "error_bounds");
-        dense(|i| i.judge.place(), "warnings");
-    }
-
-    #[test]
-    fn a_set_of_axes_in_the_report_names_its_equal_moments_and_nothing_else_does() {
-        for info in &QUANTITIES {
-            let axes = info.layout == Layout::Axes && info.report.is_some();
-            assert_eq!(info.equal.is_some(), axes, "{}", info.key);
-        }
-    }
-
-    #[test]
-    fn only_a_bounded_quantity_is_judged_and_an_angle_only_for_axes() {
-        for info in &QUANTITIES {
-            if info.judge.place().is_some() {
-                assert!(info.bound.is_some(), "{}", info.key);
-            }
-            let angle = matches!(info.judge, Judge::Angle(_));
-            if angle {
-                assert_eq!(info.layout, Layout::Axes, "{}", info.key);
-            }
-        }
-    }
-
-    #[test]
-    fn every_key_is_distinct() {
-        let mut keys: Vec<&str> = QUANTITIES.iter().map(|i| i.key).collect();
-        keys.extend(ALIASES.iter().map(|a| a.0));
-        let n = keys.len();
-        keys.sort_unstable();
-        keys.dedup();
-        assert_eq!(keys.len(), n);
-    }
-
-    #[test]
-    fn a_quantity_compared_by_angle_is_a_set_of_axes() {
-        for info in QUANTITIES.iter().filter(|i| i.expected) {
-            assert_eq!(
-                info.compare == Compare::Angle,
-                info.layout == Layout::Axes,
-                "{}",
-                info.key
-            );
-        }
-    }
-}
+mod tests;

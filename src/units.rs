@@ -36,6 +36,11 @@ impl Dim {
     pub const INERTIA: Dim = Dim::new(1, 2, 0);
     pub const ANGULAR_MOMENTUM: Dim = Dim::new(1, 2, -1);
     pub const ENERGY: Dim = Dim::new(1, 2, -2);
+    /// A point's velocity (`[analysis] velocity`) and a linear momentum.
+    pub const VELOCITY: Dim = Dim::new(0, 1, -1);
+    pub const MOMENTUM: Dim = Dim::new(1, 1, -1);
+    /// `[analysis] g`.
+    pub const ACCELERATION: Dim = Dim::new(0, 1, -2);
 
     fn add(self, o: Dim, sign: i32) -> Dim {
         Dim::new(
@@ -59,6 +64,9 @@ impl Dim {
             Dim::INERTIA => "a moment of inertia",
             Dim::ANGULAR_MOMENTUM => "an angular momentum",
             Dim::ENERGY => "an energy",
+            Dim::VELOCITY => "a velocity",
+            Dim::MOMENTUM => "a linear momentum",
+            Dim::ACCELERATION => "an acceleration",
             _ => "a quantity of another kind",
         }
     }
@@ -77,6 +85,9 @@ impl Dim {
             Dim::INERTIA => "\"1.2 kg*m^2\"",
             Dim::ANGULAR_MOMENTUM => "\"0.5 N*m*s\"",
             Dim::ENERGY => "\"8.25 J\"",
+            Dim::VELOCITY => "\"3 m/s\"",
+            Dim::MOMENTUM => "\"6 kg*m/s\"",
+            Dim::ACCELERATION => "\"9.81 m/s^2\"",
             _ => "\"1 m\"",
         }
     }
@@ -550,9 +561,10 @@ impl FileUnits {
 
     /// Factor from a plain number in file units of dimension `dim` to SI.
     /// Quantities involving time (ω in rad/s, α in rad/s², H in N·m·s, T in
-    /// J) are always SI: the file's units name no unit of time.
+    /// J) are always SI: the file's units name no unit of time. A velocity
+    /// (`[analysis] velocity`) is in the file's length unit per second.
     pub fn factor(&self, dim: Dim) -> Factor {
-        if dim.time != 0 {
+        if dim.time != 0 && dim != Dim::VELOCITY {
             return Factor::ONE;
         }
         let l = Self::symbol(self.length);

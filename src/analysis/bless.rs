@@ -307,6 +307,17 @@ fn body_size(s: &Summary, dim: Dim) -> f64 {
     let omega = s
         .omega
         .map_or(0.0, |w| w.iter().map(|x| x * x).sum::<f64>().sqrt());
+    // The body moving (`analysis::motion`): its mass centre's speed.
+    let speed = s
+        .values
+        .triple(crate::quantity::Quantity::VelocityCom)
+        .map_or(0.0, |v| v.iter().map(|x| x * x).sum::<f64>().sqrt());
+    let offset = s
+        .center_of_mass_ref
+        .iter()
+        .map(|x| x * x)
+        .sum::<f64>()
+        .sqrt();
     if dim == Dim::LENGTH {
         largest(s.radii_of_gyration)
     } else if dim == Dim::INERTIA {
@@ -314,9 +325,13 @@ fn body_size(s: &Summary, dim: Dim) -> f64 {
     } else if dim == Dim::MASS {
         s.mass
     } else if dim == Dim::ANGULAR_MOMENTUM {
-        moment * omega
+        moment * omega + s.mass * offset * speed
     } else if dim == Dim::ENERGY {
-        moment * omega * omega / 2.0
+        moment * omega * omega / 2.0 + s.mass * speed * speed / 2.0
+    } else if dim == Dim::VELOCITY {
+        speed
+    } else if dim == Dim::MOMENTUM {
+        s.mass * speed
     } else {
         0.0
     }

@@ -166,7 +166,13 @@ impl Props {
             | Quantity::RadiiOfGyrationAxesRef
             | Quantity::Omega
             | Quantity::Alpha
-            | Quantity::EulerMoment => None,
+            | Quantity::EulerMoment
+            | Quantity::Velocity
+            | Quantity::VelocityCom
+            | Quantity::LinearMomentum
+            | Quantity::AngularMomentumCom
+            | Quantity::KineticEnergyTranslational
+            | Quantity::KineticEnergyRotational => None,
         }
     }
 

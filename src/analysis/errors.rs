@@ -32,6 +32,8 @@ pub enum Blame {
     /// The angular velocity (H, T) or acceleration (M).
     Omega,
     Alpha,
+    /// The reference point's velocity (G, T, H about the point).
+    Velocity,
 }
 
 impl std::fmt::Display for SummaryError {
@@ -119,6 +121,12 @@ impl SummaryError {
                 "alpha",
                 "with this `omega`, too large for this body",
                 "M = I·α + ω × I·ω exceeds the largest f64 in SI units; are α and ω in the intended units?",
+            ),
+            Blame::Velocity => at(
+                &analysis.velocity_span,
+                "velocity",
+                "too fast for this body",
+                "G = m·v̄ and T = ½ m v̄·v̄ exceed the largest f64 in SI units; is `velocity` in the file's length unit per second (or written as \"N m/s\")?",
             ),
         }
     }

@@ -9,6 +9,7 @@
 //! and the other way round. The commands add only what is theirs: `check`
 //! evaluates expectations (`check`), `diff` compares two summaries (`diff`).
 
+pub mod axles;
 pub mod bless;
 pub mod budget;
 pub mod check;
@@ -17,6 +18,7 @@ pub mod diff;
 pub mod errors;
 pub mod ideal;
 pub mod link;
+pub mod motion;
 pub mod plausible;
 pub mod search;
 pub mod sigma;
@@ -47,6 +49,8 @@ pub struct Overrides {
     pub about: Option<String>,
     pub omega: Option<String>,
     pub alpha: Option<String>,
+    /// `--velocity`: the reference point's velocity (`motion`).
+    pub velocity: Option<String>,
     /// `--axes`, as typed (`model::parse_flag_axes`).
     pub axes: Option<String>,
 }
@@ -177,6 +181,10 @@ pub fn resolve(
         analysis.alpha = Some(v);
         analysis.alpha_span = None;
     }
+    if let Some(v) = flag(&overrides.velocity, "velocity", Dim::VELOCITY)? {
+        analysis.velocity = Some(v);
+        analysis.velocity_span = None;
+    }
     if let Some(t) = &overrides.axes {
         analysis.axes = Some(flag_axes(t)?);
     }
@@ -187,6 +195,16 @@ pub fn resolve(
                 .error(span.clone(), "`alpha` needs `omega`: the Euler moment depends on both")
                 .help("give `omega` here (`report` also takes `--omega`); for a body starting from rest, `omega = [0, 0, 0]`"),
             _ => Diagnostic::plain("`--alpha` needs ω: give `--omega` or `[analysis].omega`"),
+        });
+    }
+    // A velocity without ω: the same rule, for the same reason (v̄ = v_O
+    // + ω × r). A body translating alone gives `omega = [0, 0, 0]`.
+    if analysis.velocity.is_some() && analysis.omega.is_none() {
+        return Err(match (&analysis.velocity_span, &overrides.velocity) {
+            (Some(span), None) => source
+                .error(span.clone(), "`velocity` needs `omega`: the mass centre's velocity is v + ω × r")
+                .help("give `omega` here (`report` also takes `--omega`); for a body translating without turning, `omega = [0, 0, 0]`"),
+            _ => Diagnostic::plain("`--velocity` needs ω: give `--omega` or `[analysis].omega`"),
         });
     }
     Ok(analysis)

@@ -163,6 +163,8 @@ pub struct Summary {
     pub kinetic_energy: Option<f64>,
     pub alpha: Option<[f64; 3]>,
     pub euler_moment: Option<[f64; 3]>,
+    /// The static loads on two axles (`[analysis] axles`, `axles`).
+    pub axle_loads: Option<super::axles::AxleLoads>,
     /// The principal moments with thin plates and slender rods made solid;
     /// present only when a part gives its `thickness` or `diameter`.
     pub idealisation: Option<ideal::Idealisation>,
@@ -323,11 +325,28 @@ fn summarize_in(
         std::array::from_fn(|i| (0..3).fold(DD::of(0.0), |acc, j| acc + m[i][j].mul_f64(v[j])))
     };
     let h = analysis.omega.map(|w| times(&i_ref, &w));
+    // The body moving (`motion`): what v adds to H and T about the point.
+    let motion = analysis.velocity.zip(analysis.omega).map(|(v, w)| {
+        super::motion::motion(&super::motion::Inputs {
+            mass: mass_dd,
+            r: com_ref_dd.map(|x| x * f_length),
+            i_com: &i_com,
+            omega: [w.x, w.y, w.z],
+            v: [v.x, v.y, v.z].map(|x| DD::of(x) * f_length),
+        })
+    });
     let t = analysis.omega.zip(h).map(|(w, h)| {
-        (0..3)
+        let t = (0..3)
             .fold(DD::of(0.0), |acc, i| acc + h[i].mul_f64(w[i]))
-            .mul_f64(0.5)
-            .f64()
+            .mul_f64(0.5);
+        match &motion {
+            Some(m) => (t + m.t_extra).f64(),
+            None => t.f64(),
+        }
+    });
+    let h_about = h.map(|h| match &motion {
+        Some(m) => std::array::from_fn(|j| h[j] + m.h_extra[j]),
+        None => h,
     });
     let m = analysis
         .alpha
@@ -408,9 +427,10 @@ fn summarize_in(
         inertia_f: [i_com_f, i_ref_f],
         principal: [p_com, p_ref],
         moments: [m_com, m_ref],
-        h: h.map(|h| h.map(DD::f64)),
+        h: h_about.map(|h| h.map(DD::f64)),
         t,
         m,
+        motion,
         bounds: inputs,
         eigen: Default::default(),
     };
@@ -434,6 +454,21 @@ fn summarize_in(
         error_bounds.set(info.quantity, formed.bound(info.formed));
     }
 
+    // The axle loads: the centre of mass's coordinate along the report
+    // axis, the axles' positions in SI.
+    let axle_loads = match &analysis.axles {
+        None => None,
+        Some(a) => {
+            let row = formed.frame[a.axis];
+            let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
+            let g = analysis.g.unwrap_or(super::axles::G);
+            let loads = super::axles::loads(mass, along, a.front, a.rear, g);
+            Some(loads.ok_or(SummaryError::NotFinite {
+                what: "axle load",
+                blame: Blame::Parts(Contribution::Mass),
+            })?)
+        }
+    };
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,
@@ -482,6 +517,7 @@ fn summarize_in(
         kinetic_energy: values.scalar(Quantity::KineticEnergy),
         alpha: values.triple(Quantity::Alpha),
         euler_moment: values.triple(Quantity::EulerMoment),
+        axle_loads,
         values,
     })
 }

@@ -429,16 +429,73 @@ impl Ctx<'_> {
         let about = read(&r.about, "about", Dim::LENGTH)?;
         let omega = read(&r.omega, "omega", Dim::ANGULAR_VELOCITY)?;
         let alpha = read(&r.alpha, "alpha", Dim::ANGULAR_ACCELERATION)?;
+        let velocity = read(&r.velocity, "velocity", Dim::VELOCITY)?;
+        let axles = r.axles.as_ref().map(|a| self.axles(rec, a)).transpose()?;
+        let g = (r.g.as_ref())
+            .map(|q| self.positive(rec, q, "g", Dim::ACCELERATION))
+            .transpose()?;
         let axes = r.axes.as_ref().map(|a| self.axes(a)).transpose()?;
         Ok(Analysis {
             about,
             omega,
             alpha,
+            velocity,
+            axles,
+            g,
             axes,
             alpha_span: r.alpha.as_ref().map(Spanned::span),
+            velocity_span: r.velocity.as_ref().map(Spanned::span),
             about_span: r.about.as_ref().map(Spanned::span),
             omega_span: r.omega.as_ref().map(Spanned::span),
             warnings: r.warnings,
+        })
+    }
+}
+
+impl Ctx<'_> {
+    /// `[analysis] axles`: the axis and the two positions (SI), distinct.
+    fn axles(
+        &self,
+        rec: &Recorder,
+        a: &Spanned<raw::RawAxles>,
+    ) -> Result<super::Axles, Diagnostic> {
+        let r = a.get_ref();
+        let missing = |key: &str| {
+            self.err(a.span(), format!("`axles` needs `{key}`"))
+                .help("give `axis` (\"x\", \"y\" or \"z\", of the report axes) and the `front` and `rear` axles' positions along it")
+        };
+        let axis = r.axis.as_ref().ok_or_else(|| missing("axis"))?;
+        let k = match axis.get_ref().as_str() {
+            "x" => 0,
+            "y" => 1,
+            "z" => 2,
+            other => {
+                return Err(self
+                    .err(
+                        axis.span(),
+                        format!("`axis` must be \"x\", \"y\" or \"z\", not {other:?}"),
+                    )
+                    .help("the axis of the report axes along which the axles lie"));
+            }
+        };
+        let front = r.front.as_ref().ok_or_else(|| missing("front"))?;
+        let rear = r.rear.as_ref().ok_or_else(|| missing("rear"))?;
+        let f = self.quantity(rec, front, "front", Dim::LENGTH)?;
+        let b = self.quantity(rec, rear, "rear", Dim::LENGTH)?;
+        // NOTE: the loads divide by the wheelbase: equal positions have no
+        // answer (the body's weight may split between them any way).
+        if f == b {
+            return Err(self
+                .err(
+                    rear.span(),
+                    "`rear` is where `front` is: the axle loads are indeterminate",
+                )
+                .help("the two axles lie apart along `axis`"));
+        }
+        Ok(super::Axles {
+            axis: k,
+            front: f,
+            rear: b,
         })
     }
 }

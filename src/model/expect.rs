@@ -123,7 +123,7 @@ impl Ctx<'_> {
         &self,
         rec: &Recorder,
         raw: &Spanned<RawExpect>,
-        have_omega: bool,
+        analysis: &super::Analysis,
     ) -> Result<Vec<Check>, Diagnostic> {
         let e = raw.get_ref();
         let mut out = Vec::new();
@@ -132,13 +132,27 @@ impl Ctx<'_> {
                 continue;
             };
             let name = info.key;
-            if !have_omega && info.needs == Needs::Omega {
+            let (needs, help) = match info.needs {
+                Needs::Omega if analysis.omega.is_none() => {
+                    ("omega", "the expectation is about the body turning at ω")
+                }
+                Needs::Velocity if analysis.velocity.is_none() => (
+                    "velocity",
+                    "the expectation is about the body moving: give the reference point's velocity (and `omega`)",
+                ),
+                Needs::Nothing
+                | Needs::Omega
+                | Needs::Velocity
+                | Needs::Predicted
+                | Needs::Alpha => ("", ""),
+            };
+            if !needs.is_empty() {
                 return Err(self
                     .err(
                         entry.span(),
-                        format!("`{name}` needs `omega` in `[analysis]`"),
+                        format!("`{name}` needs `{needs}` in `[analysis]`"),
                     )
-                    .help("the expectation is about the body turning at ω"));
+                    .help(help));
             }
             let quantity = info.quantity;
             let at = move |component| Target {

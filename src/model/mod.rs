@@ -150,8 +150,18 @@ pub struct Analysis {
     pub about: Option<Vector3<f64>>,
     pub omega: Option<Vector3<f64>>,
     pub alpha: Option<Vector3<f64>>,
+    /// The reference point's velocity (file length per second), in the
+    /// report axes (`analysis::motion`).
+    pub velocity: Option<Vector3<f64>>,
     /// Where the file gave `alpha`, to point at it if ω is missing.
     pub alpha_span: Option<Range<usize>>,
+    /// Where the file gave `velocity`, likewise.
+    pub velocity_span: Option<Range<usize>>,
+    /// Two axles along a report axis (`analysis::axles`).
+    pub axles: Option<Axles>,
+    /// The acceleration of gravity, m/s² (SI: the file's units name no
+    /// time); `analysis::axles::G` without it.
+    pub g: Option<f64>,
     /// Where the file gave `about` and `omega`, to point at them when a
     /// result overflows.
     pub about_span: Option<Range<usize>>,
@@ -162,6 +172,15 @@ pub struct Analysis {
     /// `warnings`: `Some(false)` silences the plausibility warnings
     /// (`analysis::plausible`).
     pub warnings: Option<bool>,
+}
+
+/// `[analysis] axles`: the index of the report axis they lie along and
+/// their positions on it, m (SI; distinct).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axles {
+    pub axis: usize,
+    pub front: f64,
+    pub rear: f64,
 }
 
 impl Model {
@@ -469,7 +488,7 @@ impl Model {
             None => Analysis::default(),
         };
         let expect = match &raw.expect {
-            Some(e) => ctx.expectations(&rec, e, analysis.omega.is_some())?,
+            Some(e) => ctx.expectations(&rec, e, &analysis)?,
             None => Vec::new(),
         };
         let budget = raw

@@ -194,9 +194,23 @@ pub struct RawAnalysis {
     pub about: Option<Vector>,
     pub omega: Option<Vector>,
     pub alpha: Option<Vector>,
+    /// The reference point's velocity, report axes (`analysis::motion`).
+    pub velocity: Option<Vector>,
+    /// Two axles' positions along an axis (`analysis::axles`).
+    pub axles: Option<Spanned<RawAxles>>,
+    /// The acceleration of gravity for the axle loads.
+    pub g: Option<Spanned<Quantity>>,
     pub axes: Option<Spanned<RawAxes>>,
     /// `false`: no plausibility warnings for this file (`analysis::plausible`).
     pub warnings: Option<bool>,
+}
+
+/// `[analysis] axles = { axis, front, rear }`.
+#[derive(Debug, Default)]
+pub struct RawAxles {
+    pub axis: Option<Spanned<String>>,
+    pub front: Option<Spanned<Quantity>>,
+    pub rear: Option<Spanned<Quantity>>,
 }
 
 /// `[analysis] axes`: the report axes' x and y directions in the file's
@@ -261,6 +275,12 @@ pub struct RawExpect {
     pub predicted_inertia_com: Option<Spanned<RawExpectation>>,
     /// Three unit rows, compared by angle (`tol_degrees`).
     pub principal_axes: Option<Spanned<RawExpectation>>,
+    /// The body moving with `velocity` (`analysis::motion`).
+    pub velocity_com: Option<Spanned<RawExpectation>>,
+    pub linear_momentum: Option<Spanned<RawExpectation>>,
+    pub angular_momentum_com: Option<Spanned<RawExpectation>>,
+    pub kinetic_energy_translational: Option<Spanned<RawExpectation>>,
+    pub kinetic_energy_rotational: Option<Spanned<RawExpectation>>,
     pub ixx: Option<Spanned<RawExpectation>>,
     pub iyy: Option<Spanned<RawExpectation>>,
     pub izz: Option<Spanned<RawExpectation>>,
@@ -287,6 +307,11 @@ impl RawExpect {
             Q::PredictedCenterOfMass => &self.predicted_center_of_mass,
             Q::PredictedInertiaCom => &self.predicted_inertia_com,
             Q::PrincipalAxes => &self.principal_axes,
+            Q::VelocityCom => &self.velocity_com,
+            Q::LinearMomentum => &self.linear_momentum,
+            Q::AngularMomentumCom => &self.angular_momentum_com,
+            Q::KineticEnergyTranslational => &self.kinetic_energy_translational,
+            Q::KineticEnergyRotational => &self.kinetic_energy_rotational,
             // Reported, not expected (`quantity::Info::expected`).
             Q::ReferencePoint
             | Q::CenterOfMassRef
@@ -294,6 +319,7 @@ impl RawExpect {
             | Q::Omega
             | Q::Alpha
             | Q::EulerMoment
+            | Q::Velocity
             | Q::PrincipalMomentsRef
             | Q::PrincipalAxesRef
             | Q::RadiiOfGyrationAxesRef => &None,

@@ -335,6 +335,8 @@ impl DisplayUnits {
             // Also the dimension of a moment, which the report labels
             // with `MOMENT_UNIT` instead.
             Dim::ENERGY => (1.0, "J"),
+            Dim::VELOCITY => (1.0, "m/s"),
+            Dim::MOMENTUM => (1.0, "kg·m/s"),
             _ => (1.0, ""),
         }
     }

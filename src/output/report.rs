@@ -13,6 +13,8 @@ use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
 
+mod axles;
+mod motion;
 mod short;
 
 /// How much of the report a table shows: the essentials (`short`), or
@@ -305,7 +307,8 @@ pub fn write_table_to(
     );
     if let (Some(t), Some(e)) = (s.kinetic_energy, b.kinetic_energy) {
         let (scale, unit) = u.of_dim(Dim::ENERGY);
-        let _ = writeln!(out, "kinetic energy T: {} {unit}", own(t, e, scale));
+        let parts = motion::energy_parts(s);
+        let _ = writeln!(out, "kinetic energy T: {} {unit}{parts}", own(t, e, scale));
     }
 
     let header = ["", "x", "y", "z", "unit"].map(String::from);
@@ -371,6 +374,9 @@ pub fn write_table_to(
     if let (Some(h), Some(e)) = (&s.angular_momentum, &b.angular_momentum) {
         row("angular momentum H", h, e, u.of_dim(Dim::ANGULAR_MOMENTUM));
     }
+    for (label, v, e, unit) in motion::rows(s) {
+        row(label, &v, &e, (1.0, unit));
+    }
     if let Some(a) = &s.alpha {
         row(
             "angular acceleration α",
@@ -391,6 +397,7 @@ pub fn write_table_to(
         ..fit(width)
     };
     write_rows(&mut out, &header, &vectors, &right, fit);
+    axles::write(&mut out, s, &u, width);
 
     let _ = writeln!(
         out,

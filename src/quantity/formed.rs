@@ -53,6 +53,16 @@ pub enum Formed {
     Momentum,
     Energy,
     EulerMoment,
+    /// The body moving with the reference point's velocity v
+    /// (`analysis::motion`): v as given (rounded into SI), v̄ = v + ω × r,
+    /// G = m v̄, H_G = I_G ω, ½ m v̄·v̄ and ½ ω·H_G; bounded from the
+    /// mass's, the offset's and the tensors' bounds (`analysis::motion`).
+    Velocity,
+    VelocityCom,
+    LinearMomentum,
+    MomentumCom,
+    EnergyTranslational,
+    EnergyRotational,
     /// The predicted body's quantity (its own summary's): not bounded.
     Predicted(Quantity),
 }
@@ -73,7 +83,13 @@ impl Formed {
             | Formed::RadiiAxes(_)
             | Formed::Momentum
             | Formed::Energy
-            | Formed::EulerMoment => true,
+            | Formed::EulerMoment
+            | Formed::Velocity
+            | Formed::VelocityCom
+            | Formed::LinearMomentum
+            | Formed::MomentumCom
+            | Formed::EnergyTranslational
+            | Formed::EnergyRotational => true,
             Formed::Frame | Formed::Omega | Formed::Alpha | Formed::Predicted(_) => false,
         }
     }
@@ -96,7 +112,13 @@ impl Formed {
             | Formed::Alpha
             | Formed::Momentum
             | Formed::Energy
-            | Formed::EulerMoment => None,
+            | Formed::EulerMoment
+            | Formed::Velocity
+            | Formed::VelocityCom
+            | Formed::LinearMomentum
+            | Formed::MomentumCom
+            | Formed::EnergyTranslational
+            | Formed::EnergyRotational => None,
         }
     }
 }
@@ -122,6 +144,12 @@ mod tests {
                 Formed::Omega | Formed::Momentum | Formed::Energy => Needs::Omega,
                 Formed::Alpha | Formed::EulerMoment => Needs::Alpha,
                 Formed::Predicted(_) => Needs::Predicted,
+                Formed::Velocity
+                | Formed::VelocityCom
+                | Formed::LinearMomentum
+                | Formed::MomentumCom
+                | Formed::EnergyTranslational
+                | Formed::EnergyRotational => Needs::Velocity,
                 Formed::Mass
                 | Formed::Centre
                 | Formed::Point

@@ -457,3 +457,71 @@ fn bounds_hold_where_a_review_found_them_short() {
         );
     }
 }
+
+/// The body moving (`--velocity`, issue 35): v̄ = v + ω × r, G = m v̄,
+/// H_G = I_G ω, H_O = H_G + r × G, ½ m v̄·v̄, ½ ω·H_G and their sum T, each
+/// against the exact reference, within its claimed bound, in both
+/// arithmetics.
+#[test]
+fn bounds_of_the_body_moving_are_honest() {
+    let mut rng = Rng::new(35);
+    let mut honest = Honest::default();
+    for trial in 0..6 {
+        for (kind, mut scene) in [
+            ("boxes", twelve_boxes(&mut rng)),
+            ("every shape", every_shape(&mut rng)),
+        ] {
+            let about = rng.grid_point().map(|x| 3.0 * x);
+            scene.about = Some(about);
+            let w: [f64; 3] = std::array::from_fn(|_| rng.range(-50.0, 50.0));
+            let v: [f64; 3] = std::array::from_fn(|_| rng.range(-20.0, 20.0));
+            let omega = format!("{},{},{}", w[0], w[1], w[2]);
+            let velocity = format!("{},{},{}", v[0], v[1], v[2]);
+            let exact = r::compose(&scene);
+            let (wq, vq) = (w.map(r::q), v.map(r::q));
+            let rq: r::V3 = std::array::from_fn(|j| &exact.com[j] - r::q(about[j]));
+            let wr = r::cross(&wq, &rq);
+            let vbar: r::V3 = std::array::from_fn(|j| &vq[j] + &wr[j]);
+            let g: r::V3 = vbar.clone().map(|x| &exact.mass * x);
+            let h_g: r::V3 =
+                std::array::from_fn(|j| (0..3).map(|k| &exact.inertia[j][k] * &wq[k]).sum());
+            let rxg = r::cross(&rq, &g);
+            let h_o: r::V3 = std::array::from_fn(|j| &h_g[j] + &rxg[j]);
+            let t_trans = &exact.mass * r::dot(&vbar, &vbar) / r::int(2);
+            let t_rot = r::dot(&wq, &h_g) / r::int(2);
+            let t = &t_trans + &t_rot;
+            for p in ["standard", "extended"] {
+                let out = run(
+                    &scene,
+                    &["--precision", p, "--omega", &omega, "--velocity", &velocity],
+                );
+                let b = &out["error_bounds"];
+                let what = |q: &str| format!("{kind}, trial {trial}, {p}: {q}");
+                for (key, exact) in [
+                    ("velocity", &vq),
+                    ("velocity_com", &vbar),
+                    ("linear_momentum", &g),
+                    ("angular_momentum_com", &h_g),
+                    ("angular_momentum", &h_o),
+                ] {
+                    for j in 0..3 {
+                        honest.check(
+                            what(&format!("{key}[{j}]")),
+                            &out[key][j],
+                            &exact[j],
+                            &b[key][j],
+                        );
+                    }
+                }
+                for (key, exact) in [
+                    ("kinetic_energy_translational", &t_trans),
+                    ("kinetic_energy_rotational", &t_rot),
+                    ("kinetic_energy", &t),
+                ] {
+                    honest.check(what(key), &out[key], exact, &b[key]);
+                }
+            }
+        }
+    }
+    honest.finish();
+}

@@ -857,17 +857,52 @@ fn analysis(l: u32) -> BoxedStrategy<String> {
             .prop_map(str::to_string),
         ]
     };
+    // `velocity` (issue 35): extreme speeds, speeds with units (`m/s`, or a
+    // unit of another kind), and velocities without `omega`.
+    let velocity = prop_oneof![
+        2 => vector(3, l),
+        1 => prop::sample::select(vec![
+            "[0, 0, \"3 m/s\"]",
+            "[0, \"1e300 km/h\", 0]",
+            "[1e308, -1e308, 1e308]",
+            "[0, 0, \"5 rpm\"]",
+            "[\"2 mm/s\", \"1 in/s\", 0]",
+        ])
+        .prop_map(str::to_string),
+    ];
     (
         prop::option::of(vector(3, l)),
         prop::option::weighted(0.7, motion()),
         prop::option::of(motion()),
+        prop::option::weighted(0.3, velocity),
+        // `axles` (issue 35): positions far apart, equal, with units, a
+        // third axle, an axis that is none.
+        prop::option::weighted(
+            0.3,
+            prop::sample::select(vec![
+                "{ axis = \"x\", front = 1.35, rear = -1.25 }",
+                "{ axis = \"z\", front = \"1 mm\", rear = \"1e300 m\" }",
+                "{ axis = \"y\", front = 0, rear = 0 }",
+                "{ axis = \"x\", front = 1, rear = 0, middle = 0.5 }",
+                "{ axis = \"w\", front = 1, rear = 0 }",
+                "{ axis = \"x\", front = 1e308, rear = -1e308 }",
+            ]),
+        ),
     )
-        .prop_map(|(about, omega, alpha)| {
+        .prop_map(|(about, omega, alpha, velocity, axles)| {
             let mut lines = vec!["[analysis]".to_string()];
-            for (k, v) in [("about", about), ("omega", omega), ("alpha", alpha)] {
+            for (k, v) in [
+                ("about", about),
+                ("omega", omega),
+                ("alpha", alpha),
+                ("velocity", velocity),
+            ] {
                 if let Some(v) = v {
                     lines.push(format!("{k} = {v}"));
                 }
+            }
+            if let Some(a) = axles {
+                lines.push(format!("axles = {a}"));
             }
             lines.join("\n")
         })

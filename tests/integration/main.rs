@@ -7,6 +7,7 @@ mod bounded;
 mod bounds;
 mod budget;
 mod capsule;
+mod cases;
 mod channels;
 mod check;
 mod ci;

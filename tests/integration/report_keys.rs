@@ -10,7 +10,8 @@ use crate::common::massprop;
 use massprop::quantity::{Layout, QUANTITIES};
 use serde_json::Value;
 
-/// The bent plate turning at ω with α, about the origin, as JSON text.
+/// The bent plate turning at ω with α and moving, about the origin, as
+/// JSON text.
 fn turning_report() -> String {
     let out = massprop(&[
         "report",
@@ -20,6 +21,8 @@ fn turning_report() -> String {
         "1,2,3",
         "--alpha",
         "0,0,1",
+        "--velocity",
+        "1,-2,0.5",
         "--about",
         "0,0,0",
         "shapes/bent-plate.toml",

@@ -7,6 +7,7 @@
 //! which the compiler asks for.
 
 use super::{Blame, Contribution, Products, SummaryError, finite};
+use crate::analysis::motion::{self, Motion};
 use crate::bounds::{self, BodyError};
 use crate::compose::{Precision, Principal};
 use crate::model::Analysis;
@@ -39,6 +40,8 @@ pub(super) struct Body<'a> {
     pub h: Option<[f64; 3]>,
     pub t: Option<f64>,
     pub m: Option<[f64; 3]>,
+    /// The body moving, where `velocity` is given (`analysis::motion`).
+    pub motion: Option<Motion>,
     pub bounds: Inputs,
     /// The eigen bounds per point, formed once (three rows read each).
     pub eigen: [OnceCell<([f64; 3], [f64; 3])>; 2],
@@ -74,6 +77,55 @@ pub(super) fn rows(m: &M3<f64>, products: Products) -> [[f64; 3]; 3] {
 
 pub(super) fn arr(v: &Vector3<f64>) -> [f64; 3] {
     [v.x, v.y, v.z]
+}
+
+/// A value of the body moving, what it is called and what it is blamed
+/// on when it overflows.
+fn moving(m: &Motion, formed: Formed) -> (Owned, &'static str, Blame) {
+    match formed {
+        Formed::VelocityCom => (
+            Owned::Triple(m.velocity_com),
+            "mass centre's velocity",
+            Blame::Velocity,
+        ),
+        Formed::LinearMomentum => (
+            Owned::Triple(m.linear_momentum),
+            "linear momentum",
+            Blame::Velocity,
+        ),
+        Formed::MomentumCom => (
+            Owned::Triple(m.momentum_com),
+            "angular momentum about the centre of mass",
+            Blame::Omega,
+        ),
+        Formed::EnergyTranslational => (
+            Owned::Scalar(m.energy_translational),
+            "translational kinetic energy",
+            Blame::Velocity,
+        ),
+        Formed::EnergyRotational => (
+            Owned::Scalar(m.energy_rotational),
+            "rotational kinetic energy",
+            Blame::Omega,
+        ),
+        Formed::Velocity
+        | Formed::Mass
+        | Formed::Centre
+        | Formed::Point
+        | Formed::Offset
+        | Formed::Frame
+        | Formed::Tensor(_)
+        | Formed::Moments(_)
+        | Formed::Axes(_)
+        | Formed::Radii(_)
+        | Formed::RadiiAxes(_)
+        | Formed::Omega
+        | Formed::Alpha
+        | Formed::Momentum
+        | Formed::Energy
+        | Formed::EulerMoment
+        | Formed::Predicted(_) => (Owned::Triple(m.velocity), "velocity", Blame::Velocity),
+    }
 }
 
 /// What a value about `about` is blamed on when it overflows.
@@ -138,6 +190,23 @@ impl Body<'_> {
                 finite(&m, "Euler moment", Blame::Alpha)?;
                 Owned::Triple(m)
             }
+            Formed::Velocity
+            | Formed::VelocityCom
+            | Formed::LinearMomentum
+            | Formed::MomentumCom
+            | Formed::EnergyTranslational
+            | Formed::EnergyRotational => {
+                let Some(m) = &self.motion else {
+                    return Ok(None);
+                };
+                let (v, what, blame) = moving(m, formed);
+                match &v {
+                    Owned::Scalar(x) => finite(&[*x], what, blame)?,
+                    Owned::Triple(x) => finite(x, what, blame)?,
+                    Owned::Rows(_) | Owned::Axes(..) => {}
+                }
+                v
+            }
             Formed::Predicted(_) => return Ok(None),
         }))
     }
@@ -178,7 +247,36 @@ impl Body<'_> {
             Formed::Momentum => Owned::Triple(self.dynamics()?.0),
             Formed::Energy => Owned::Scalar(self.dynamics()?.1),
             Formed::EulerMoment => Owned::Triple(self.dynamics()?.2?),
+            Formed::Velocity => Owned::Triple(self.motion_bound()?.velocity),
+            Formed::VelocityCom => Owned::Triple(self.motion_bound()?.velocity_com),
+            Formed::LinearMomentum => Owned::Triple(self.motion_bound()?.linear_momentum),
+            Formed::MomentumCom => Owned::Triple(self.motion_bound()?.momentum_com),
+            Formed::EnergyTranslational => Owned::Scalar(self.motion_bound()?.energy_translational),
+            Formed::EnergyRotational => Owned::Scalar(self.motion_bound()?.energy_rotational),
         })
+    }
+
+    /// The bounds of the body moving, where `velocity` is given.
+    fn motion_bound(&self) -> Option<motion::Bounds> {
+        let m = self.motion.as_ref()?;
+        let b = &self.bounds;
+        let w = self.analysis.omega.as_ref().map(arr)?;
+        let v = self.analysis.velocity.as_ref().map(arr)?;
+        // v as read may be a unit string rounded into the file's unit.
+        let dv = std::array::from_fn(|j| {
+            bounds::to_si(bounds::U64 * v[j].abs(), b.f_length, m.velocity[j])
+        });
+        let dr = std::array::from_fn(|j| bounds::to_si(b.offset[j], b.f_length, self.com_ref[j]));
+        Some(motion::bound(
+            m,
+            &motion::InputBounds {
+                mass: (self.mass, self.mass_bound()),
+                r: (self.com_ref, dr),
+                v: (m.velocity, dv),
+                omega: w,
+                e_com: &self.tensor_bound(About::Centre),
+            },
+        ))
     }
 
     fn mass_bound(&self) -> f64 {
@@ -223,14 +321,25 @@ impl Body<'_> {
     /// The bounds of H, T and M, where ω is given.
     fn dynamics(&self) -> Option<([f64; 3], f64, Option<[f64; 3]>)> {
         let (w, h) = self.analysis.omega.zip(self.h)?;
-        Some(bounds::dynamics(
+        let (dh, dt, dm) = bounds::dynamics(
             &self.tensor_bound(About::Point),
             arr(&w),
             self.analysis.alpha.as_ref().map(arr),
             h,
             self.t.unwrap_or(0.0),
             self.m,
-        ))
+        );
+        // What v adds to H and T about the point (`motion`).
+        Some(match self.motion_bound() {
+            Some(e) => (
+                // NOTE: no `safe` here: `dh` and `dt` are already safe's,
+                // and a point at rest adds exactly 0 (today's bound).
+                std::array::from_fn(|j| dh[j] + e.h_extra[j]),
+                dt + e.t_extra,
+                dm,
+            ),
+            None => (dh, dt, dm),
+        })
     }
 
     /// √I / √m of the principal moments, not √(I/m): the ratio alone can

@@ -59,6 +59,9 @@ impl Serialize for Summary {
         for info in turning {
             quantity::serialize_field(&mut m, info, self.reported(info.quantity))?;
         }
+        if let Some(a) = &self.axle_loads {
+            m.serialize_field("axle_loads", a)?;
+        }
         if let Some(i) = &self.idealisation {
             m.serialize_field("idealisation", i)?;
         }
@@ -88,9 +91,9 @@ mod tests {
     use crate::diag::Source;
     use crate::model::Model;
 
-    /// A turning body, with every value `report` can write.
+    /// A turning and moving body, with every value `report` can write.
     fn turning_box() -> Summary {
-        let text = "[[part]]\nshape = \"box\"\nmass = 2\nsize = [1, 2, 3]\ncenter = [1, 0, 0]\n[analysis]\nabout = [0, 1, 0]\nomega = [1, 2, 3]\nalpha = [0, 0, 1]\n";
+        let text = "[[part]]\nshape = \"box\"\nmass = 2\nsize = [1, 2, 3]\ncenter = [1, 0, 0]\n[analysis]\nabout = [0, 1, 0]\nomega = [1, 2, 3]\nalpha = [0, 0, 1]\nvelocity = [3, -1, 2]\n";
         let model = Model::parse(&Source::new("f.toml", text)).unwrap();
         summarize(
             &model,

@@ -197,7 +197,7 @@ fn expected(key: &str, depth: usize, shape: Option<Shape>) -> Option<String> {
         ("materials", 0) => {
             "a table of materials such as { foam = { density = \"30 kg/m^3\" } }".into()
         }
-        ("about" | "omega" | "alpha", 0) => format!("an array of 3 {QUANTITIES}"),
+        ("about" | "omega" | "alpha" | "velocity", 0) => format!("an array of 3 {QUANTITIES}"),
         ("axis", 0) => "an array of 3 numbers, such as [0, 0, 1]".into(),
         ("quaternion", 0) => "an array of 4 numbers [w, x, y, z]".into(),
         ("matrix", 0) => "3 rows, each an array of 3 numbers".into(),
@@ -371,7 +371,10 @@ mod tests {
         let text = "[analysis]\nx = 1\n[[part]]\nshape = \"sphere\"\nmasss = 1\n";
         let d = ours(text);
         assert!(d.contains("t.toml:2:1: error: unknown key `x`"), "{d}");
-        assert!(d.contains("`about`, `omega`, `alpha`, `axes`"), "{d}");
+        assert!(
+            d.contains("`about`, `omega`, `alpha`, `velocity`, `axles`, `g`, `axes`"),
+            "{d}"
+        );
     }
 
     #[test]

@@ -4,7 +4,7 @@
 //! the parts are converted one at a time as each ends, `fast`).
 
 use super::super::raw::{
-    ExpectValue, Growth, Materials, Params, RawAnalysis, RawAxes, RawBudget, RawExpect,
+    ExpectValue, Growth, Materials, Params, RawAnalysis, RawAxes, RawAxles, RawBudget, RawExpect,
     RawExpectation, RawMaterial, RawRotation, RawUnits,
 };
 use super::failure::{Failure, Read, What};
@@ -26,10 +26,12 @@ pub(super) fn units(node: Node<'_>) -> Read<Spanned<RawUnits>> {
 
 /// `[analysis]`.
 pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
-    const KEYS: &[&str] = &["about", "omega", "alpha", "axes", "warnings"];
+    const KEYS: &[&str] = &[
+        "about", "omega", "alpha", "velocity", "axles", "g", "axes", "warnings",
+    ];
     let (entries, span) = table(
         node,
-        "a table with `about`, `omega`, `alpha`, `axes` or `warnings`",
+        "a table with `about`, `omega`, `alpha`, `velocity`, `axles`, `g`, `axes` or `warnings`",
     )?;
     let mut a = RawAnalysis::default();
     for (k, ks, v) in entries {
@@ -37,12 +39,39 @@ pub(super) fn analysis(node: Node<'_>) -> Read<Spanned<RawAnalysis>> {
             "about" => set(&mut a.about, keyed(&k, vector(v))?, &ks),
             "omega" => set(&mut a.omega, keyed(&k, vector(v))?, &ks),
             "alpha" => set(&mut a.alpha, keyed(&k, vector(v))?, &ks),
+            "velocity" => set(&mut a.velocity, keyed(&k, vector(v))?, &ks),
+            "axles" => set(&mut a.axles, keyed(&k, axles(v))?, &ks),
+            "g" => set(&mut a.g, keyed(&k, quantity(v))?, &ks),
             "axes" => set(&mut a.axes, keyed(&k, axes(v))?, &ks),
             "warnings" => {
                 let b = keyed(&k, toml::Spanned::<bool>::from_node(v))?;
                 set(&mut a.warnings, b.into_inner(), &ks)
             }
             _ => unknown(&k, &ks, KEYS),
+        }?;
+    }
+    Ok(Spanned::new(span, a))
+}
+
+/// `[analysis] axles`: `axis`, `front` and `rear`, and no other key: a
+/// third axle is refused with the reason.
+fn axles(node: Node<'_>) -> Read<Spanned<RawAxles>> {
+    let (entries, span) = table(
+        node,
+        "a table such as { axis = \"x\", front = \"1.35 m\", rear = \"-1.25 m\" }",
+    )?;
+    let mut a = RawAxles::default();
+    for (k, ks, v) in entries {
+        match &*k {
+            "axis" => set(&mut a.axis, keyed(&k, string(v))?, &ks),
+            "front" => set(&mut a.front, keyed(&k, quantity(v))?, &ks),
+            "rear" => set(&mut a.rear, keyed(&k, quantity(v))?, &ks),
+            _ => Err(Failure::new(
+                ks,
+                What::Other(format!(
+                    "`axles` takes `axis`, `front` and `rear` only, not `{k}`: more than two axles are statically indeterminate without suspension data"
+                )),
+            )),
         }?;
     }
     Ok(Spanned::new(span, a))
@@ -152,6 +181,11 @@ pub(in crate::model) const EXPECT_KEYS: &[&str] = &[
     "predicted_center_of_mass",
     "predicted_inertia_com",
     "principal_axes",
+    "velocity_com",
+    "linear_momentum",
+    "angular_momentum_com",
+    "kinetic_energy_translational",
+    "kinetic_energy_rotational",
     "Ixx",
     "Iyy",
     "Izz",
@@ -177,6 +211,11 @@ pub(super) fn expect(node: Node<'_>) -> Read<Spanned<RawExpect>> {
         predicted_center_of_mass: None,
         predicted_inertia_com: None,
         principal_axes: None,
+        velocity_com: None,
+        linear_momentum: None,
+        angular_momentum_com: None,
+        kinetic_energy_translational: None,
+        kinetic_energy_rotational: None,
         ixx: None,
         iyy: None,
         izz: None,
@@ -199,6 +238,11 @@ pub(super) fn expect(node: Node<'_>) -> Read<Spanned<RawExpect>> {
             "predicted_center_of_mass" => &mut e.predicted_center_of_mass,
             "predicted_inertia_com" => &mut e.predicted_inertia_com,
             "principal_axes" => &mut e.principal_axes,
+            "velocity_com" => &mut e.velocity_com,
+            "linear_momentum" => &mut e.linear_momentum,
+            "angular_momentum_com" => &mut e.angular_momentum_com,
+            "kinetic_energy_translational" => &mut e.kinetic_energy_translational,
+            "kinetic_energy_rotational" => &mut e.kinetic_energy_rotational,
             "Ixx" => &mut e.ixx,
             "Iyy" => &mut e.iyy,
             "Izz" => &mut e.izz,

@@ -45,10 +45,27 @@ pub(super) fn definitions() -> Map<String, Value> {
                 "about": quantities(3),
                 "omega": quantities(3),
                 "alpha": quantities(3),
+                "velocity": doc(quantities(3), "The reference point's velocity in the report axes: numbers in the file's length unit per second, or quantities such as \"3 m/s\"; needs `omega`."),
+                "axles": r("Axles"),
+                "g": doc(r("Quantity"), "The acceleration of gravity for the axle loads: m/s² as a plain number, or a quantity such as \"9.81 m/s^2\"; default 9.80665."),
                 "axes": r("Axes"),
                 "warnings": doc(json!({ "type": "boolean" }), "A boolean (default `true`); `false` silences this file's plausibility warnings (a body over 100 m or 100 t without `units`, a density outside 1–25,000 kg/m³)."),
             }),
             &[],
+        ),
+    );
+    def(
+        "Axles",
+        table(
+            Some(
+                "`[analysis] axles`: two axles along a report axis; a third is statically indeterminate without suspension data.",
+            ),
+            json!({
+                "axis": { "enum": ["x", "y", "z"] },
+                "front": doc(r("Quantity"), "The front axle's position along `axis`: a length."),
+                "rear": doc(r("Quantity"), "The rear axle's position along `axis`: a length, not the front's."),
+            }),
+            &["axis", "front", "rear"],
         ),
     );
     let mut axes = json!({ "x": floats(3), "y": floats(3) });

@@ -49,10 +49,16 @@ pub(super) fn table(s: &Summary, source: &str, detail: Detail, width: Option<usi
     );
     if let (Some(t), Some(e)) = (s.kinetic_energy, b.kinetic_energy) {
         let (scale, unit) = u.of_dim(Dim::ENERGY);
-        let _ = write!(out, "; kinetic energy T: {} {unit}", own(t, e, scale));
+        let parts = super::motion::energy_parts(s);
+        let _ = write!(
+            out,
+            "; kinetic energy T: {} {unit}{parts}",
+            own(t, e, scale)
+        );
     }
     out.push('\n');
     body_table(&mut out, s, &u, width);
+    super::axles::write(&mut out, s, &u, width);
 
     if detail.about_flag && s.reference_given {
         let p = s.reference_point.map(|x| fmt_num(x / u.length));
@@ -177,6 +183,10 @@ fn body_table(out: &mut String, s: &Summary, u: &DisplayUnits, width: Option<usi
         let unit = u.of_dim(Dim::ANGULAR_MOMENTUM);
         let top = top_of(h, unit.0);
         rows.push(row(format!("angular momentum H{about}"), h, e, unit, top));
+    }
+    for (label, v, e, unit) in super::motion::rows(s) {
+        let top = top_of(&v, 1.0);
+        rows.push(row(label.into(), &v, &e, (1.0, unit), top));
     }
     if let Some(a) = &s.alpha {
         let unit = u.of_dim(Dim::ANGULAR_ACCELERATION);

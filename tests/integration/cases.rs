@@ -1,0 +1,257 @@
+//! Issue 35: loading cases, and the body moving (`[analysis] velocity`).
+//! Expected values are derived by hand here, never pasted from a run.
+
+use crate::common::{massprop, report_json, report_json_file};
+use serde_json::Value;
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().expect("a number")
+}
+
+fn triple(v: &Value) -> [f64; 3] {
+    std::array::from_fn(|j| num(&v[j]))
+}
+
+/// |value − want| within the value's own error bound (and a few ulps).
+fn within(v: &Value, key: &str, want: &[f64]) {
+    let (value, bound) = (&v[key], &v["error_bounds"][key]);
+    for (j, w) in want.iter().enumerate() {
+        let (x, b) = match value {
+            Value::Array(_) => (num(&value[j]), num(&bound[j])),
+            _ => (num(value), num(bound)),
+        };
+        assert!(
+            (x - w).abs() <= b + 4.0 * f64::EPSILON * w.abs(),
+            "{key}[{j}]: {x} is not {w} within {b}"
+        );
+    }
+}
+
+/// A 2 kg box 1 × 2 × 3 m centred at (1, 0, 0), about the origin.
+const BOX: &str = "[[part]]\nshape = \"box\"\nmass = 2\nsize = [1, 2, 3]\ncenter = [1, 0, 0]\n[analysis]\nabout = [0, 0, 0]\n";
+
+#[test]
+fn the_bent_plate_turning_about_a_still_o_gives_todays_h_and_t_bit_for_bit() {
+    let path = std::path::Path::new("shapes/bent-plate.toml");
+    let (today, _) = report_json_file(path, &[]);
+    let (still, _) = report_json_file(path, &["--velocity", "0,0,0"]);
+    assert_eq!(today["kinetic_energy"], still["kinetic_energy"]);
+    assert_eq!(today["angular_momentum"], still["angular_momentum"]);
+    assert_eq!(
+        today["error_bounds"]["kinetic_energy"],
+        still["error_bounds"]["kinetic_energy"]
+    );
+    // The published T ≈ 8.25 J, by hand 15 · 0.55015625 J.
+    within(&still, "kinetic_energy", &[8.25234375]);
+}
+
+#[test]
+fn the_bent_plates_energy_splits_into_its_mass_centres_motion_and_the_turning_about_it() {
+    let (v, _) = report_json_file(
+        std::path::Path::new("shapes/bent-plate.toml"),
+        &["--velocity", "0,0,0"],
+    );
+    // v̄ = ω × r with ω = 30 k and r the centre of mass (m, from O):
+    // (−30 y, 30 x, 0); by hand from the file's comment.
+    let m = 1.6625;
+    let c = [
+        0.7875 * 0.0375 / m,
+        (0.875 * 0.0625 + 0.7875 * 0.125) / m,
+        (0.875 * 0.05 + 0.7875 * 0.075) / m,
+    ];
+    let vbar = [-30.0 * c[1], 30.0 * c[0], 0.0];
+    within(&v, "velocity_com", &vbar);
+    let t_trans = 0.5 * m * (vbar[0] * vbar[0] + vbar[1] * vbar[1]);
+    let tol = 1e-12;
+    assert!((num(&v["kinetic_energy_translational"]) - t_trans).abs() < tol);
+    let t_rot = 8.25234375 - t_trans;
+    assert!((num(&v["kinetic_energy_rotational"]) - t_rot).abs() < tol);
+}
+
+#[test]
+fn a_box_moving_and_turning_has_the_momenta_and_energies_derived_by_hand() {
+    let (v, _) = report_json(BOX, &["--omega", "0,0,3", "--velocity", "0,1,0"]);
+    // r = (1, 0, 0): ω × r = (0, 3, 0), v̄ = (0, 4, 0), G = m v̄ = (0, 8, 0).
+    within(&v, "velocity", &[0.0, 1.0, 0.0]);
+    within(&v, "velocity_com", &[0.0, 4.0, 0.0]);
+    within(&v, "linear_momentum", &[0.0, 8.0, 0.0]);
+    // I_G,zz = m (1² + 2²)/12 = 5/6: H_G = (0, 0, 2.5); H_O = H_G + r × G
+    // = (0, 0, 2.5 + 8).
+    within(&v, "angular_momentum_com", &[0.0, 0.0, 2.5]);
+    within(&v, "angular_momentum", &[0.0, 0.0, 10.5]);
+    // T = ½ · 2 · 16 + ½ · 3 · 2.5.
+    within(&v, "kinetic_energy_translational", &[16.0]);
+    within(&v, "kinetic_energy_rotational", &[3.75]);
+    within(&v, "kinetic_energy", &[19.75]);
+}
+
+#[test]
+fn a_body_translating_without_turning_has_half_m_v_squared_and_r_cross_g() {
+    let (v, _) = report_json(BOX, &["--omega", "0,0,0", "--velocity", "0,0,5"]);
+    within(&v, "kinetic_energy", &[25.0]);
+    within(&v, "kinetic_energy_rotational", &[0.0]);
+    // r × G = (1, 0, 0) × (0, 0, 10) = (0, −10, 0).
+    within(&v, "angular_momentum", &[0.0, -10.0, 0.0]);
+}
+
+#[test]
+fn in_any_direction_h_about_the_point_is_h_g_plus_r_cross_g_and_t_is_the_sum() {
+    let (v, _) = report_json(
+        BOX,
+        &["--omega", "0.3,-1.2,2.5", "--velocity", "-4,0.5,1.75"],
+    );
+    let (r, g, hg) = (
+        triple(&v["center_of_mass_ref"]),
+        triple(&v["linear_momentum"]),
+        triple(&v["angular_momentum_com"]),
+    );
+    let rxg = [
+        r[1] * g[2] - r[2] * g[1],
+        r[2] * g[0] - r[0] * g[2],
+        r[0] * g[1] - r[1] * g[0],
+    ];
+    let h: Vec<f64> = (0..3).map(|j| hg[j] + rxg[j]).collect();
+    let h_got = triple(&v["angular_momentum"]);
+    for j in 0..3 {
+        assert!((h_got[j] - h[j]).abs() < 1e-12, "{h_got:?} vs {h:?}");
+    }
+    let sum = num(&v["kinetic_energy_translational"]) + num(&v["kinetic_energy_rotational"]);
+    assert!((num(&v["kinetic_energy"]) - sum).abs() < 1e-12 * sum);
+}
+
+#[test]
+fn a_velocity_with_units_per_component_is_the_same_velocity() {
+    let mm = BOX.replace("[[part]]", "units = { length = \"mm\" }\n[[part]]");
+    let (a, _) = report_json(&mm, &["--omega", "0,0,1", "--velocity", "0,0,3000"]);
+    let (b, _) = report_json(&mm, &["--omega", "0,0,1", "--velocity", "0,0,3 m/s"]);
+    assert_eq!(a["velocity"], b["velocity"]);
+    within(&a, "velocity", &[0.0, 0.0, 3.0]);
+    let file = format!("{mm}omega = [0, 0, 1]\nvelocity = [0, 0, \"3 m/s\"]\n");
+    let (c, _) = report_json(&file, &[]);
+    assert_eq!(a["linear_momentum"], c["linear_momentum"]);
+}
+
+#[test]
+fn without_a_velocity_the_report_has_none_of_the_motions_keys() {
+    let (v, _) = report_json(BOX, &["--omega", "0,0,3"]);
+    for key in [
+        "velocity",
+        "velocity_com",
+        "linear_momentum",
+        "angular_momentum_com",
+        "kinetic_energy_translational",
+        "kinetic_energy_rotational",
+    ] {
+        assert!(v.get(key).is_none(), "{key}");
+        assert!(v["error_bounds"].get(key).is_none(), "{key}");
+    }
+}
+
+#[test]
+fn a_velocity_without_omega_is_refused_at_its_key() {
+    let path = std::env::temp_dir().join(format!("massprop-v-{}.toml", std::process::id()));
+    std::fs::write(&path, format!("{BOX}velocity = [1, 0, 0]\n")).unwrap();
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    std::fs::remove_file(&path).ok();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains(":8:12: error: `velocity` needs `omega`"),
+        "{err}"
+    );
+}
+
+#[test]
+fn check_compares_the_motions_expectations() {
+    let text = format!(
+        "{BOX}omega = [0, 0, 3]\nvelocity = [0, 1, 0]\n[expect]\nlinear_momentum = {{ value = [0, 8, 0], tol = 1e-9 }}\nkinetic_energy_translational = {{ value = 16.5, tol = 1e-9 }}\n"
+    );
+    let path = std::env::temp_dir().join(format!("massprop-vx-{}.toml", std::process::id()));
+    std::fs::write(&path, text).unwrap();
+    let out = massprop(&["check", path.to_str().unwrap()]);
+    std::fs::remove_file(&path).ok();
+    assert_eq!(out.status.code(), Some(1));
+    let err =
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("kinetic_energy_translational 16 J is outside 16.5 J"),
+        "{err}"
+    );
+    assert!(!err.contains("linear_momentum"), "{err}");
+}
+
+/// A point of `mass` kg at `x` m, on axles at `front` and `rear` m along
+/// x, with `extra` in `[analysis]`.
+fn on_axles(mass: f64, x: f64, front: &str, rear: &str, extra: &str) -> Value {
+    let text = format!(
+        "[[part]]\nshape = \"point\"\nmass = {mass}\ncenter = [{x}, 0.3, -2]\n[analysis]\naxles = {{ axis = \"x\", front = {front}, rear = {rear} }}\n{extra}"
+    );
+    report_json(&text, &[]).0
+}
+
+#[test]
+fn axle_loads_are_the_statics_of_a_beam_on_two_supports() {
+    // 1000 kg at x = 0.3 on axles at 1.5 and −0.5: moments about the rear
+    // axle, F_f · 2 = W · 0.8, so 40 % front and 60 % rear.
+    let v = on_axles(1000.0, 0.3, "1.5", "-0.5", "");
+    let a = &v["axle_loads"];
+    let w = 1000.0 * 9.80665;
+    assert!((num(&a["front"]["share"]) - 0.4).abs() < 1e-15);
+    assert!((num(&a["rear"]["share"]) - 0.6).abs() < 1e-15);
+    assert!((num(&a["front"]["load"]) - 0.4 * w).abs() < 1e-9);
+    assert!((num(&a["rear"]["load"]) - 0.6 * w).abs() < 1e-9);
+    assert_eq!(num(&a["front"]["position"]), 1.5);
+    assert_eq!(num(&a["rear"]["position"]), -0.5);
+}
+
+#[test]
+fn axle_positions_take_units_and_g_replaces_standard_gravity() {
+    let a = on_axles(10.0, 0.3, "\"1500 mm\"", "\"-50 cm\"", "g = 10\n");
+    let a = &a["axle_loads"];
+    assert_eq!(num(&a["front"]["position"]), 1.5);
+    assert!((num(&a["front"]["load"]) - 40.0).abs() < 1e-12);
+    assert!((num(&a["rear"]["load"]) - 60.0).abs() < 1e-12);
+}
+
+#[test]
+fn a_centre_of_mass_behind_the_rear_axle_gives_the_front_a_negative_load() {
+    let v = on_axles(1.0, -1.5, "1.5", "-0.5", "");
+    let a = &v["axle_loads"];
+    assert!(num(&a["front"]["load"]) < 0.0);
+    let sum = num(&a["front"]["share"]) + num(&a["rear"]["share"]);
+    assert!((sum - 1.0).abs() < 1e-15);
+}
+
+#[test]
+fn the_axle_axis_is_one_of_the_report_axes() {
+    // Report axes turned a quarter about z: their x is the file's y, where
+    // the point is at 0.3; axles at ±1 along it share it 65 / 35.
+    let v = on_axles(
+        1.0,
+        7.0,
+        "1",
+        "-1",
+        "axes = { x = [0, 1, 0], y = [-1, 0, 0] }\n",
+    );
+    let a = &v["axle_loads"];
+    assert!((num(&a["front"]["share"]) - 0.65).abs() < 1e-15);
+}
+
+#[test]
+fn without_axles_the_report_has_no_axle_loads() {
+    let (v, _) = report_json(BOX, &[]);
+    assert!(v.get("axle_loads").is_none());
+}
+
+#[test]
+fn the_table_gives_the_axle_loads_in_newtons_kilograms_and_percent() {
+    let out = massprop(&["report", "shapes/car.toml"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("axle loads (g = 9.80665 m/s²)"), "{text}");
+    // The car's front share by hand: (281500/1330 + 1250) / 2600.
+    let share = (281500.0 / 1330.0 + 1250.0) / 2600.0;
+    let kg = format!("{:.3}", 1330.0 * share);
+    assert!(text.contains(&kg), "{kg} not in\n{text}");
+    assert!(text.contains("56.2175"), "{text}");
+}
