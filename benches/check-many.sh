@@ -35,7 +35,7 @@ echo "== build (cargo build --release --locked)" >&2
 (cd "$repo" && cargo build --release --locked --quiet)
 # Benchmark a copy, so that a concurrent rebuild cannot swap the binary
 # between runs.
-cp "$repo/target/release/massprop" "$tmp/massprop"
+cp "$(cd "$repo" && target_dir .)/release/massprop" "$tmp/massprop"
 
 commit="$(git -C "$repo" rev-parse --short=12 HEAD 2> /dev/null || echo unknown)"
 if [ -n "$(git -C "$repo" status --porcelain -- src Cargo.toml Cargo.lock 2> /dev/null)" ]; then

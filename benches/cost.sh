@@ -36,7 +36,9 @@ if [ ! -x /usr/bin/time ]; then
     apt-get update -qq && apt-get install -y -qq time >/dev/null
 fi
 cargo build --release --quiet --manifest-path "$repo/Cargo.toml"
-bin="$repo/target/release/massprop"
+# shellcheck source=benches/lib.sh
+source "$repo/benches/lib.sh"
+bin="$(target_dir "$repo")/release/massprop"
 
 # One measurement: `measure LABEL COUNT BYTES -- command...` appends a row
 # of seconds and peak KiB (and the exit status) to $tmp/rows.

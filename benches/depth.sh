@@ -32,7 +32,7 @@ need_bench_tools "the files"
 
 echo "== build (cargo build --release --locked)" >&2
 (cd "$repo" && cargo build --release --locked --quiet)
-cp "$repo/target/release/massprop" "$tmp/massprop"
+cp "$(cd "$repo" && target_dir .)/release/massprop" "$tmp/massprop"
 commit="$(git -C "$repo" rev-parse --short=12 HEAD 2> /dev/null || echo unknown)"
 
 echo "== generate" >&2

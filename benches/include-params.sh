@@ -21,7 +21,7 @@ n="${1:-100000}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
-bin="$here/../target/release/massprop"
+bin="$(target_dir "$here/..")/release/massprop"
 python3 - "$tmp" "$n" <<'PY'
 import sys
 out, n = sys.argv[1], int(sys.argv[2])

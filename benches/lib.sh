@@ -20,3 +20,14 @@ need_bench_tools() {
         exit 2
     }
 }
+
+# target_dir DIR: the directory cargo builds the package in DIR into, as
+# cargo itself reports it (`cargo metadata`'s target_directory), asked from
+# the directory the script runs cargo in, as cargo resolves it:
+# CARGO_TARGET_DIR when set (as CI caches often set it), else a
+# .cargo/config's build.target-dir, else DIR/target. The release binary is
+# "$(target_dir DIR)/release/massprop".
+target_dir() {
+    cargo metadata --format-version 1 --no-deps --locked --manifest-path "$1/Cargo.toml" |
+        python3 -c 'import json, sys; print(json.load(sys.stdin)["target_directory"])'
+}

@@ -31,7 +31,7 @@ k="${2:-35}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
-bin="$here/../target/release/massprop"
+bin="$(target_dir "$here/..")/release/massprop"
 python3 - "$tmp" "$n" <<'PY'
 import math, struct, sys
 out, n = sys.argv[1], int(sys.argv[2])

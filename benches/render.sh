@@ -39,7 +39,7 @@ CASE="${CASE:-all}"
 tmp="$(mktemp -d "${TMPDIR:-/tmp}/massprop-render.XXXXXX")"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --locked --quiet --manifest-path "$here/../Cargo.toml" --bin massprop
-cp "$here/../target/release/massprop" "$tmp/massprop"
+cp "$(target_dir "$here/..")/release/massprop" "$tmp/massprop"
 
 # copies N: render N coincident copies of a box; time, peak RSS, SVG size.
 copies() {

@@ -47,8 +47,8 @@ echo "== build (cargo build --release --locked: massprop, example toml_only)" >&
 (cd "$repo" && cargo build --release --locked --quiet --bin massprop --example toml_only)
 # Benchmark copies, so that a concurrent rebuild cannot swap a binary
 # between runs.
-cp "$repo/target/release/massprop" "$tmp/massprop"
-cp "$repo/target/release/examples/toml_only" "$tmp/toml_only"
+cp "$(cd "$repo" && target_dir .)/release/massprop" "$tmp/massprop"
+cp "$(cd "$repo" && target_dir .)/release/examples/toml_only" "$tmp/toml_only"
 
 commit="$(git -C "$repo" rev-parse --short=12 HEAD 2> /dev/null || echo unknown)"
 if [ -n "$(git -C "$repo" status --porcelain -- src Cargo.toml Cargo.lock examples 2> /dev/null)" ]; then

@@ -32,7 +32,7 @@ CASE="${CASE:-all}"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 cargo build --release --quiet --manifest-path "$here/../Cargo.toml"
-bin="$here/../target/release/massprop"
+bin="$(target_dir "$here/..")/release/massprop"
 
 # copies N ARGS…: report N toleranced copies with ARGS; time and peak RSS.
 copies() {
