@@ -100,6 +100,21 @@ impl ShapeKind for Capsule {
         help: "a capsule takes `mass` or `density`, `radius` (or `diameter`) and `length` (between its hemispherical ends' centres, along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it hollow",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "capsule: cylinder of radius R (bore r), length L, with hemispherical ends (src/shapes/capsule.rs)",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+            super::symbol("L", "L", super::Slot::Length),
+        ],
+        measure: "",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// π and ⁴⁄₃ (2), R − r and R + r (2), S₃ (5), the products with L,
     /// ⁴⁄₃ and π D (4), the sum (1), and two of slack.
     const MEASURE_ROUNDINGS: f64 = 16.0;
