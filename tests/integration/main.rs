@@ -21,6 +21,7 @@ mod docs;
 mod docs_run;
 mod drawing_legible;
 mod ellipsoid;
+mod explain;
 mod exact;
 mod expect_axes;
 mod files;
