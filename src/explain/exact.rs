@@ -7,6 +7,10 @@
 //! of i128 leave the exact value behind (`exact` is then `None`) and the
 //! f64 goes on.
 
+// NOTE: a rational's sum and product divide by common factors: the
+// arithmetic is the operation's, not a slip of one operator for another.
+#![allow(clippy::suspicious_arithmetic_impl)]
+
 use crate::numeric::{DD, Real};
 use std::cmp::Ordering;
 use std::ops::{Add, Div, Mul, Neg, Sub};

@@ -59,6 +59,8 @@ impl Math {
 pub type Unit = Math;
 
 /// One row of a step.
+// NOTE: a document holds a few hundred rows at most: no box is worth it.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum Row {
     Note(Vec<Piece>),

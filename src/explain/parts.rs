@@ -2,6 +2,10 @@
 //! sub-assembly, an array or a mesh), then the sums, the centre of mass,
 //! the principal moments, H and T.
 
+// NOTE: the three axes index several arrays together (a centroid, its
+// axis's name, a sum), as the textbook's x, y, z do.
+#![allow(clippy::needless_range_loop)]
+
 use super::formula::{self, Symbols};
 use super::number::{plain, tex};
 use super::{

@@ -67,9 +67,18 @@ fn close(got: f64, want: f64, scale: f64, what: &str) {
 #[test]
 fn the_bent_plate_masses_are_the_lectures() {
     let text = explain(&[BENT]);
-    assert!(text.contains("m = ρ·a·b = 0.00007 × 125 × 100 = 0.875 kg"), "{text}");
-    assert!(text.contains("m = ρ·a·b = 0.00007 × 75 × 150 = 0.7875 kg"), "{text}");
-    assert!(text.contains("m = Σ m = 0.875 + 0.7875 = 1.6625 kg"), "{text}");
+    assert!(
+        text.contains("m = ρ·a·b = 0.00007 × 125 × 100 = 0.875 kg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("m = ρ·a·b = 0.00007 × 75 × 150 = 0.7875 kg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("m = Σ m = 0.875 + 0.7875 = 1.6625 kg"),
+        "{text}"
+    );
 }
 
 /// Each plate about O, by hand: a thin plate's ∫u² dm over [0, a] is
@@ -163,7 +172,9 @@ fn agrees_with_report(args: &[&str], l: f64, k: f64) {
             continue;
         }
         let heading = format!(". part \"{name}\":");
-        let Some(at) = text.find(&heading) else { continue };
+        let Some(at) = text.find(&heading) else {
+            continue;
+        };
         let step = &text[at..];
         let step = &step[..step[1..].find("\n\n").map_or(step.len(), |e| e + 1)];
         close(one(step, "m") * k, num(&p["mass"]), mass, name);
@@ -180,7 +191,11 @@ fn every_number_of_the_bent_plate_is_the_reports() {
 
 #[test]
 fn every_number_of_the_flywheel_and_the_motor_bracket_is_the_reports() {
-    for f in ["shapes/flywheel.toml", "shapes/motor-bracket.toml", "shapes/quickstart.toml"] {
+    for f in [
+        "shapes/flywheel.toml",
+        "shapes/motor-bracket.toml",
+        "shapes/quickstart.toml",
+    ] {
         let text = std::fs::read_to_string(f).unwrap();
         let (l, k) = units_of(&text);
         agrees_with_report(&[f], l, k);
@@ -213,13 +228,20 @@ fn positive_products_flip_the_products_and_keep_t() {
 fn a_sub_assembly_array_or_mesh_is_one_line() {
     let text = explain(&["shapes/bicycle-wheel.toml"]);
     let json = report(&["shapes/bicycle-wheel.toml"]);
-    let lines = text.lines().filter(|l| l.contains("and its copies (")).count();
+    let lines = text
+        .lines()
+        .filter(|l| l.contains("and its copies ("))
+        .count();
     assert!(lines >= 1, "{text}");
     // Fewer steps than parts: copies are not explained one by one.
     let parts = json["parts"].as_array().unwrap().len();
     let steps = text.lines().filter(|l| l.contains(". part \"")).count();
     assert!(steps < parts, "{steps} steps for {parts} parts");
-    agrees_with_report(&["shapes/bicycle-wheel.toml"], units_of(&std::fs::read_to_string("shapes/bicycle-wheel.toml").unwrap()).0, 1.0);
+    agrees_with_report(
+        &["shapes/bicycle-wheel.toml"],
+        units_of(&std::fs::read_to_string("shapes/bicycle-wheel.toml").unwrap()).0,
+        1.0,
+    );
 }
 
 #[test]
@@ -234,7 +256,11 @@ fn a_missing_file_is_exit_2_with_nothing_on_stdout() {
 fn a_bad_file_is_exit_2_at_its_line_and_column() {
     let dir = crate::common::scratch("explain", "bad");
     let f = dir.join("bad.toml");
-    std::fs::write(&f, "[[part]]\nname = \"a\"\nshape = \"box\"\nmass = 1\nsize = [1, 1]\n").unwrap();
+    std::fs::write(
+        &f,
+        "[[part]]\nname = \"a\"\nshape = \"box\"\nmass = 1\nsize = [1, 1]\n",
+    )
+    .unwrap();
     let out = massprop(&["explain", f.to_str().unwrap()]);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
@@ -273,13 +299,19 @@ fn a_hostile_name_is_escaped_in_markdown() {
     let md = hostile("markdown");
     assert!(!md.contains('\u{1b}'));
     let heading = md.lines().find(|l| l.starts_with("## 1. part")).unwrap();
-    assert!(heading.contains(r"a\|b\_c\$d%e\&f\#g\{h\}i\\j\~k^l\*m\[n\]o\<p\>"), "{heading}");
+    assert!(
+        heading.contains(r"a\|b\_c\$d%e\&f\#g\{h\}i\\j\~k^l\*m\[n\]o\<p\>"),
+        "{heading}"
+    );
 }
 
 #[test]
 fn a_hostile_name_is_escaped_in_latex() {
     let tex = hostile("latex");
-    let heading = tex.lines().find(|l| l.starts_with("\\subsection*{1. part")).unwrap();
+    let heading = tex
+        .lines()
+        .find(|l| l.starts_with("\\subsection*{1. part"))
+        .unwrap();
     assert!(
         heading.contains(r"a\textbar{}b\_c\$d\%e\&f\#g\{h\}i\textbackslash{}j\textasciitilde{}k\textasciicircum{}l*m[n]o\textless{}p\textgreater{}[U+241B][31mq[U+240A]r"),
         "{heading}"
@@ -299,9 +331,15 @@ fn markdown_has_a_table_and_maths_per_step() {
 fn latex_compiles_with_pdflatex_where_installed() {
     let tex = explain(&[BENT, "--format", "latex"]);
     assert!(tex.starts_with("\\documentclass{article}"));
-    assert_eq!(tex.matches("\\begin{align*}").count(), tex.matches("\\end{align*}").count());
+    assert_eq!(
+        tex.matches("\\begin{align*}").count(),
+        tex.matches("\\end{align*}").count()
+    );
     assert!(tex.is_ascii(), "pdflatex reads ASCII safely");
-    let Ok(found) = std::process::Command::new("pdflatex").arg("--version").output() else {
+    let Ok(found) = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+    else {
         eprintln!("note: pdflatex is not installed; the LaTeX was not compiled");
         return;
     };
@@ -314,7 +352,11 @@ fn latex_compiles_with_pdflatex_where_installed() {
             .current_dir(&dir)
             .output()
             .unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stdout));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
     }
 }
 
