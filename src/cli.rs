@@ -53,7 +53,7 @@ pub enum Command {
     /// Write the body's `<inertial>` for URDF, SDFormat or MJCF, or put it in place of a link's.
     #[command(after_help = EXPORT_HELP)]
     Export(ExportArgs),
-    /// The worked solution, step by step as a textbook writes it: each part's mass, centroid and inertia, the sums, the principal moments, H and T.
+    /// Print the worked solution step by step, as a textbook writes it: each part's mass, centroid and inertia, the sums, the principal moments, H and T.
     #[command(after_help = explain::EXPLAIN_HELP)]
     Explain(explain::ExplainArgs),
     /// Draw the body as SVG: front, top, side and isometric views, each part's outline, the centre of mass, the principal axes and the inertia ellipsoid.

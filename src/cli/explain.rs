@@ -12,7 +12,7 @@ pub(super) const EXPLAIN_HELP: &str = "\
 Examples:
   massprop explain shapes/bent-plate.toml                 the worked solution, as text
   massprop explain arm.toml --only elbow                  one sub-assembly, part by part
-  massprop explain arm.toml --format markdown > arm.md    tables and $…$ maths
+  massprop explain arm.toml --format markdown             tables and $…$ maths
   massprop explain arm.toml --format latex > arm.tex      an align* per step, for pdflatex";
 
 #[derive(Args, Debug)]

@@ -20,6 +20,7 @@ pub mod formula;
 pub mod number;
 mod parts;
 pub mod render;
+mod totals;
 
 use crate::analysis::{Loaded, Products};
 use crate::numeric::Real;
@@ -194,7 +195,7 @@ pub fn explain(loaded: &Loaded, products: Products) -> Doc {
         steps: Vec::new(),
     };
     let sums = parts::each(loaded, &units, &origin, products, &mut doc.steps);
-    parts::totals(
+    totals::totals(
         loaded,
         &units,
         &origin,

@@ -101,17 +101,17 @@ impl ShapeKind for Capsule {
     };
 
     const EXPLAIN: super::Explain = super::Explain {
-        form: "capsule: cylinder of radius R (bore r), length L, with hemispherical ends (src/shapes/capsule.rs)",
+        form: "capsule: cylinder of radius R (bore r), length L, with hemispherical ends",
         dims: &[
             super::symbol("R", "R", super::Slot::Radius),
             super::symbol("r", "r", super::Slot::InnerRadius),
             super::symbol("L", "L", super::Slot::Length),
         ],
-        measure: "",
+        measure: "pi*((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
         moments: [
-            "",
-            "",
-            "",
+            "m*((R^2 - r^2)*L^3/12 + (R^3 - r^3)*L^2/3 + 3*(R^4 - r^4)*L/4 + 8*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+            "m*((R^2 - r^2)*L^3/12 + (R^3 - r^3)*L^2/3 + 3*(R^4 - r^4)*L/4 + 8*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+            "2*m*((R^4 - r^4)*L/4 + 4*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
         ],
     };
 

@@ -152,7 +152,7 @@ impl ShapeKind for Cone {
     };
 
     const EXPLAIN: super::Explain = super::Explain {
-        form: "cone or frustum: base radius R (bore r), top radius R_t (bore r_t), length L (src/shapes/cone.rs)",
+        form: "cone or frustum: base radius R (bore r), top radius R_t (bore r_t), length L; its moments by the Bernstein form of its section (src/shapes/cone.rs)",
         dims: &[
             super::symbol("R", "R", super::Slot::Radius),
             super::symbol("r", "r", super::Slot::InnerRadius),
@@ -160,7 +160,7 @@ impl ShapeKind for Cone {
             super::symbol("r_t", "r_t", super::Slot::TopInnerRadius),
             super::symbol("L", "L", super::Slot::Length),
         ],
-        measure: "",
+        measure: "pi*L*(R^2 - r^2 + R*R_t - r*r_t + R_t^2 - r_t^2)/3",
         moments: [
             "",
             "",

@@ -245,6 +245,17 @@ fn a_sub_assembly_array_or_mesh_is_one_line() {
 }
 
 #[test]
+fn only_explains_a_sub_assembly_part_by_part() {
+    let args = ["shapes/robot-arm.toml", "--only", "shoulder"];
+    let text = explain(&args);
+    let parts = report(&args)["parts"].as_array().unwrap().len();
+    let steps = text.lines().filter(|l| l.contains(". part \"")).count();
+    assert_eq!(steps, parts, "{text}");
+    assert!(!text.contains("sub-assembly \"shoulder\""), "{text}");
+    agrees_with_report(&args, 1e-3, 1.0);
+}
+
+#[test]
 fn a_missing_file_is_exit_2_with_nothing_on_stdout() {
     let out = massprop(&["explain", "no/such/file.toml"]);
     assert_eq!(out.status.code(), Some(2));
