@@ -267,7 +267,11 @@ fn written(template: &str, v: &Values) -> Option<(Math, Math)> {
 /// A shape's dimensions in the order of its closed forms, from its
 /// numbers by slot (a size given by an edge: the edge's length; a rod by
 /// its ends: their distance), with how each was found.
-fn dims(spec: &Spec, shape: Shape) -> Option<Vec<(Exact, Option<(String, String)>)>> {
+/// A dimension's value, and how it was found (text, TeX) where it is not
+/// a number of the file's.
+type Dimension = (Exact, Option<(String, String)>);
+
+fn dims(spec: &Spec, shape: Shape) -> Option<Vec<Dimension>> {
     let mut place = spec.place.clone();
     let mut found: Vec<(Slot, f64)> = Vec::new();
     place.numbers(&mut |s, x| found.push((s, *x)));
