@@ -347,16 +347,14 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
     match p.spec.mass {
         MassSpec::Given(given) => {
             rows.push(Row::Note(vec![t("its mass is given")]));
-            rows.push(eq(
-                Math::new("m", "m"),
-                Some(Math::new(
-                    format!("{}{}", sign.0, plain(Exact::of(given))),
-                    format!("{}{}", sign.1, tex(Exact::of(given))),
-                )),
-                None,
-                m,
-                &u.mass,
-            ));
+            // A cut-out's given mass counts negative: said as −m.
+            let form = p.spec.removed.then(|| {
+                Math::new(
+                    format!("−{}", plain(Exact::of(given))),
+                    format!("-{}", tex(Exact::of(given))),
+                )
+            });
+            rows.push(eq(Math::new("m", "m"), form, None, m, &u.mass));
         }
         MassSpec::Density(rho) => {
             let rho = Exact::of(rho);
@@ -434,11 +432,14 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
                 &u.inertia,
             ));
         }
+        // Exactly where both are exact; else to the roundings of two
+        // evaluations of one form (a turn off a quarter turn is far more).
+        let scale = own.iter().fold(0.0f64, |a, x| a.max(x.approx.abs()));
         let same = ENTRIES.iter().all(|&(a, b)| {
-            if a == b {
-                i[a][a] == own[a]
-            } else {
-                i[a][b].is_zero()
+            let (x, y) = (i[a][b], if a == b { own[a] } else { zero() });
+            match (x.exact, y.exact) {
+                (Some(_), Some(_)) => x == y,
+                _ => (x.approx - y.approx).abs() <= 1e-13 * scale,
             }
         });
         rows.push(Row::Note(vec![t(if same {
@@ -494,7 +495,12 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
             _ => term,
         };
         let (lhs, subst) = if a == b {
-            let (j, k) = ((a + 1) % 3, (a + 2) % 3);
+            // The other two axes in order: m(dx² + dz²) for Iyy.
+            let (j, k) = if a == 1 {
+                (0, 2)
+            } else {
+                ((a + 1) % 3, (a + 2) % 3)
+            };
             (
                 Math::new(
                     format!("m(d{}² + d{}²)", AXIS[j], AXIS[k]),

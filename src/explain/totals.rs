@@ -103,7 +103,11 @@ pub fn totals(
         let o = shown_entry(&about, (a, b), products);
         let gv = shown_entry(&com, (a, b), products);
         let form = if a == b {
-            let (j, k) = ((a + 1) % 3, (a + 2) % 3);
+            let (j, k) = if a == 1 {
+                (0, 2)
+            } else {
+                ((a + 1) % 3, (a + 2) % 3)
+            };
             Math::new(
                 format!(
                     "{} − m(d{}² + d{}²)",

@@ -190,7 +190,7 @@ fn every_number_of_the_bent_plate_is_the_reports() {
 }
 
 #[test]
-fn every_number_of_the_flywheel_and_the_motor_bracket_is_the_reports() {
+fn every_number_of_the_example_files_is_the_reports() {
     for f in [
         "shapes/flywheel.toml",
         "shapes/motor-bracket.toml",
@@ -214,6 +214,33 @@ fn units_of(text: &str) -> (f64, f64) {
     };
     let k = if line.contains("\"g\"") { 1e-3 } else { 1.0 };
     (l, k)
+}
+
+/// A box 0.2 × 0.1 × 0.05 m of 1 kg turned 90° about z: its local x′
+/// lies along the file's y, so the file's Ixx is its Iy′y′ = m(a² + c²)/12
+/// = (0.04 + 0.0025)/12 = 17/4800; and a bored cut-out counts negative.
+#[test]
+fn a_turned_part_shows_its_own_moments_then_the_files() {
+    let dir = crate::common::scratch("explain", "turned");
+    let f = dir.join("t.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nname = \"block\"\nshape = \"box\"\ndensity = 1000\nsize = [0.2, 0.1, 0.05]\n\
+         center = [1, 0, 0]\nrotation = { intrinsic = \"zyx\", degrees = [90, 0, 0] }\n\n\
+         [[part]]\nname = \"hole\"\nshape = \"cylinder\"\ndensity = 1000\nradius = 0.01\n\
+         length = 0.05\ncenter = [1, 0, 0]\nremove = true\n",
+    )
+    .unwrap();
+    let text = explain(&[f.to_str().unwrap()]);
+    assert!(text.contains("Ix′x′ = m(b² + c²)/12 = 1 × (0.1² + 0.05²)/12 = 0.0010416666666666667 (exactly 1/960) kg·m²"), "{text}");
+    assert!(text.contains("turned into the file's axes"), "{text}");
+    assert_eq!(values(&text, "Ixx")[0], 17.0 / 4800.0);
+    assert!(
+        text.contains("its mass and inertia count negative"),
+        "{text}"
+    );
+    assert!(one(&text, "m") < 1.0);
+    agrees_with_report(&[f.to_str().unwrap()], 1.0, 1.0);
 }
 
 #[test]
