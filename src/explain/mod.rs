@@ -149,16 +149,10 @@ impl Units {
     }
 }
 
-/// The inertia tensor's entries (tensor convention) from a second moment
-/// C = ∫ρρᵀ dm: I = tr(C)·E − C.
-pub fn tensor(c: &M) -> M {
-    let tr = c[0][0] + c[1][1] + c[2][2];
-    std::array::from_fn(|i| std::array::from_fn(|j| if i == j { tr - c[i][i] } else { -c[i][j] }))
-}
-
 /// The six entries in order: xx, yy, zz, xy, xz, yz.
 pub const ENTRIES: [(usize, usize); 6] = [(0, 0), (1, 1), (2, 2), (0, 1), (0, 2), (1, 2)];
-const AXIS: [&str; 3] = ["x", "y", "z"];
+/// The axes' names.
+pub const AXIS: [&str; 3] = ["x", "y", "z"];
 
 /// What a product of inertia is shown as under `products`: the tensor's
 /// entry, or its negative (+∫xy dm).

@@ -55,9 +55,19 @@ fn decimal(n: i128, d: i128) -> Option<String> {
     Some(if scaled < 0 { format!("-{body}") } else { body })
 }
 
+/// What a value beyond f64's range is shown as (an invariant of a large
+/// tensor, I₃ ~ I³, can pass it when the tensor does not): never inf.
+pub const BEYOND: &str = "beyond f64's range";
+
 /// `x` as shown.
 pub fn show(x: Exact) -> Shown {
     let approx = if x.approx == 0.0 { 0.0 } else { x.approx };
+    if !approx.is_finite() && x.exact.is_none() {
+        return Shown {
+            value: BEYOND.into(),
+            fraction: None,
+        };
+    }
     match x.exact {
         Some((n, d)) => match decimal(n, d) {
             Some(s) => Shown {
@@ -111,9 +121,12 @@ pub fn tex(x: Exact) -> String {
 
 /// A number as TeX: `1.5e-7` as `1.5 \times 10^{-7}`.
 pub fn tex_number(s: &str) -> String {
+    if s == BEYOND {
+        return format!("\\text{{{BEYOND}}}");
+    }
     match s.split_once('e') {
-        Some((m, e)) => format!("{m} \\times 10^{{{e}}}"),
-        None => s.to_string(),
+        Some((m, e)) if e.parse::<i32>().is_ok() => format!("{m} \\times 10^{{{e}}}"),
+        _ => s.to_string(),
     }
 }
 
@@ -135,6 +148,12 @@ mod tests {
             text(Exact::ratio(4375, 6)),
             "729.1666666666666 (exactly 4375/6)"
         );
+    }
+
+    #[test]
+    fn an_overflow_is_said_not_printed_as_inf() {
+        assert_eq!(text(Exact::inexact(f64::INFINITY)), BEYOND);
+        assert_eq!(text(Exact::inexact(f64::NAN)), BEYOND);
     }
 
     #[test]

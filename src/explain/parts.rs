@@ -9,7 +9,7 @@
 use super::formula::{self, Symbols};
 use super::number::{plain, tex};
 use super::{
-    ENTRIES, M, Math, Piece, Row, Step, Units, V, entry_name, shift, shown_entry, t, tensor, zero,
+    AXIS, ENTRIES, M, Math, Piece, Row, Step, Units, V, entry_name, shift, shown_entry, t, zero,
 };
 use crate::analysis::{Loaded, Products};
 use crate::explain::exact::Exact;
@@ -25,8 +25,6 @@ pub struct Share {
     /// The inertia tensor about O (tensor convention).
     pub about: M,
 }
-
-const AXIS: [&str; 3] = ["x", "y", "z"];
 
 pub(super) fn eq(
     lhs: Math,
@@ -75,7 +73,7 @@ pub(super) fn sum(xs: &[Exact]) -> Exact {
 /// centroid in the file's axes (tensor convention).
 fn physics(spec: &Spec) -> (Exact, V, M) {
     let (m, c, j) = crate::part::physics_in::<Exact, _>(spec, Fixed);
-    (m, c, tensor(&j))
+    (m, c, crate::mass::inertia_of_rows(&j))
 }
 
 /// The share of a part at its centroid `c` about O.

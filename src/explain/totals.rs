@@ -7,12 +7,10 @@
 
 use super::number::plain;
 use super::parts::{Share, eq, joined, sum};
-use super::{ENTRIES, M, Math, Row, Step, Units, V, entry_name, shift, shown_entry, t, zero};
+use super::{AXIS, ENTRIES, M, Math, Row, Step, Units, V, entry_name, shift, shown_entry, t, zero};
 use crate::analysis::{Loaded, Products};
 use crate::explain::exact::Exact;
 use crate::numeric::Real;
-
-const AXIS: [&str; 3] = ["x", "y", "z"];
 
 /// The sums, the centre of mass, the principal moments, H and T.
 pub fn totals(

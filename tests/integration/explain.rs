@@ -469,3 +469,67 @@ fn an_input_decimal_is_exact_and_pi_is_not() {
     assert_eq!((Exact::of(0.1) + Exact::of(0.2)).exact, Some((3, 10)));
     assert!(Exact::pi().exact.is_none());
 }
+
+/// Every part file of the catalogues and of the fuzz corpus: explained,
+/// or refused with a diagnostic; never a panic, never inf or NaN shown.
+#[test]
+fn no_input_of_the_catalogues_or_the_corpus_makes_explain_panic() {
+    let mut files = Vec::new();
+    for dir in std::fs::read_dir("tests/cmd").unwrap() {
+        let dir = dir.unwrap().path();
+        if dir.is_dir() {
+            files.extend(std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()));
+        }
+    }
+    files.extend(
+        std::fs::read_dir("fuzz/corpus/parse_and_compose")
+            .unwrap()
+            .map(|f| f.unwrap().path()),
+    );
+    files.retain(|f| f.extension().is_some_and(|e| e == "toml") || f.starts_with("fuzz"));
+    assert!(files.len() > 100, "{} files", files.len());
+    // The binary's main thread's stack (8 MiB), not a test thread's: the
+    // catalogues hold inputs nested as deep as the reader allows.
+    std::thread::Builder::new()
+        .stack_size(16 << 20)
+        .spawn(move || explain_each(files))
+        .unwrap()
+        .join()
+        .unwrap();
+}
+
+fn explain_each(files: Vec<std::path::PathBuf>) {
+    for f in files {
+        let path = f.to_str().unwrap().to_string();
+        let argv = ["massprop", "explain", &path, "--format", "markdown"];
+        let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+        let run = std::panic::catch_unwind(|| massprop::run(&cli).map(|o| o.stdout.text()));
+        let Ok(out) = run else {
+            panic!("explain panicked on {path}")
+        };
+        if let Ok(text) = out {
+            assert!(
+                !text.contains("NaN") && !text.contains("inf "),
+                "{path}:\n{text}"
+            );
+        }
+    }
+}
+
+/// A body whose tensor is finite but whose invariant I₃ ~ I³ is not: the
+/// invariant is said to be beyond f64's range, never printed as inf.
+#[test]
+fn a_huge_body_says_beyond_range_and_never_prints_inf() {
+    let dir = crate::common::scratch("explain", "huge");
+    let f = dir.join("h.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nshape = \"sphere\"\nmass = 1\nradius = 1e120\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    for format in ["text", "markdown", "latex"] {
+        let text = explain(&[f.to_str().unwrap(), "--format", format]);
+        assert!(text.contains("beyond f64's range"), "{text}");
+        assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
+    }
+}
