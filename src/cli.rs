@@ -10,6 +10,7 @@ use crate::output::Format;
 use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
+mod explain;
 mod help;
 mod reference;
 mod render;
@@ -52,6 +53,9 @@ pub enum Command {
     /// Write the body's `<inertial>` for URDF, SDFormat or MJCF, or put it in place of a link's.
     #[command(after_help = EXPORT_HELP)]
     Export(ExportArgs),
+    /// Print the worked solution step by step, as a textbook writes it: each part's mass, centroid and inertia, the sums, the principal moments, H and T.
+    #[command(after_help = explain::EXPLAIN_HELP)]
+    Explain(explain::ExplainArgs),
     /// Draw the body as SVG: front, top, side and isometric views, each part's outline, the centre of mass, the principal axes and the inertia ellipsoid.
     #[command(after_help = RENDER_HELP)]
     Render(RenderArgs),
@@ -674,6 +678,7 @@ impl Cli {
                 includes: a.includes.includes(),
             }),
             Command::Render(a) => Request::Render(a.options()),
+            Command::Explain(a) => Request::Explain(a.options()),
             Command::Materials(a) => Request::Materials(commands::materials::Options {
                 file: a.file.clone(),
                 format: a.format,

@@ -61,6 +61,8 @@ pub mod dual;
 #[doc(hidden)]
 pub mod eigen;
 #[doc(hidden)]
+pub mod explain;
+#[doc(hidden)]
 pub mod expr;
 #[doc(hidden)]
 pub mod io;

@@ -6,6 +6,7 @@
 pub mod budget;
 pub mod check;
 pub mod diff;
+pub mod explain;
 pub mod export;
 pub mod init;
 pub mod materials;
@@ -137,6 +138,7 @@ pub enum Request {
     Check(check::Options),
     Diff(diff::Options),
     Export(export::Options),
+    Explain(explain::Options),
     Materials(materials::Options),
     Render(render::Options),
     Init(init::Options),
@@ -157,7 +159,9 @@ impl Request {
             Request::Diff(o) => o.output.as_deref(),
             Request::Export(o) => o.output.as_deref(),
             Request::Render(o) => o.output.as_deref(),
-            Request::Materials(_) | Request::Init(_) | Request::Text(_) => None,
+            Request::Materials(_) | Request::Init(_) | Request::Text(_) | Request::Explain(_) => {
+                None
+            }
         };
         o.filter(|o| *o != "-")
     }
@@ -172,6 +176,7 @@ impl Request {
             Request::Diff(o) => vec![&o.old, &o.new],
             Request::Export(o) => vec![&o.file],
             Request::Render(o) => vec![&o.file],
+            Request::Explain(o) => vec![&o.file],
             Request::Materials(_) | Request::Init(_) | Request::Text(_) => Vec::new(),
         }
     }
@@ -292,6 +297,7 @@ fn dispatch(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnosti
         Request::Export(o) => export::run(o, terminal)?,
         Request::Materials(o) => materials::run(o, terminal)?,
         Request::Render(o) => render::run(o, terminal)?,
+        Request::Explain(o) => explain::run(o)?,
         Request::Init(o) => init::run(o)?,
         Request::Text(text) => Outcome {
             stdout: Stdout::Text(text.clone()),

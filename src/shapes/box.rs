@@ -45,6 +45,21 @@ impl ShapeKind for Cuboid {
         help: "a box takes `mass` or `density`, and `size` with `center` (and optional `rotation`), or `corner` with three `edges`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "solid rectangular box a × b × c",
+        dims: &[
+            super::symbol("a", "a", super::Slot::Size(0)),
+            super::symbol("b", "b", super::Slot::Size(1)),
+            super::symbol("c", "c", super::Slot::Size(2)),
+        ],
+        measure: "a*b*c",
+        moments: [
+            "m*(b^2 + c^2)/12",
+            "m*(a^2 + c^2)/12",
+            "m*(a^2 + b^2)/12",
+        ],
+    };
+
     /// Three products.
     const MEASURE_ROUNDINGS: f64 = 3.0;
 

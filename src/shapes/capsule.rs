@@ -100,6 +100,21 @@ impl ShapeKind for Capsule {
         help: "a capsule takes `mass` or `density`, `radius` (or `diameter`) and `length` (between its hemispherical ends' centres, along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it hollow",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "capsule: cylinder of radius R (bore r), length L, with hemispherical ends",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+            super::symbol("L", "L", super::Slot::Length),
+        ],
+        measure: "pi*((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+        moments: [
+            "m*((R^2 - r^2)*L^3/12 + (R^3 - r^3)*L^2/3 + 3*(R^4 - r^4)*L/4 + 8*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+            "m*((R^2 - r^2)*L^3/12 + (R^3 - r^3)*L^2/3 + 3*(R^4 - r^4)*L/4 + 8*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+            "2*m*((R^4 - r^4)*L/4 + 4*(R^5 - r^5)/15)/((R^2 - r^2)*L + 4*(R^3 - r^3)/3)",
+        ],
+    };
+
     /// π and ⁴⁄₃ (2), R − r and R + r (2), S₃ (5), the products with L,
     /// ⁴⁄₃ and π D (4), the sum (1), and two of slack.
     const MEASURE_ROUNDINGS: f64 = 16.0;

@@ -151,6 +151,23 @@ impl ShapeKind for Cone {
         help: "a cone takes `mass` or `density`, `radius` (or `diameter`) at its base, `top_radius` (0 for a full cone) and `length` along its local z, with `center` at the middle of its axis (and optional `rotation`); `inner_radius` and `top_inner_radius` make it hollow",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "cone or frustum: base radius R (bore r), top radius R_t (bore r_t), length L; its moments by the Bernstein form of its section (src/shapes/cone.rs)",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+            super::symbol("R_t", "R_t", super::Slot::TopRadius),
+            super::symbol("r_t", "r_t", super::Slot::TopInnerRadius),
+            super::symbol("L", "L", super::Slot::Length),
+        ],
+        measure: "pi*L*(R^2 - r^2 + R*R_t - r*r_t + R_t^2 - r_t^2)/3",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// Π, L and W (the Bernstein coefficients' sum, 6), /3, two products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 14.0;
 

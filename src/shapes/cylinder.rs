@@ -58,6 +58,21 @@ impl ShapeKind for Cylinder {
         help: "a cylinder takes `mass` or `density`, `radius` (or `diameter`) and `length` (along its local z) with `center` (and optional `rotation`); an `inner_radius` makes it a tube",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "cylinder of radius R, bore r, length L along local z",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+            super::symbol("L", "L", super::Slot::Length),
+        ],
+        measure: "pi*(R^2 - r^2)*L",
+        moments: [
+            "m*(3*(R^2 + r^2) + L^2)/12",
+            "m*(3*(R^2 + r^2) + L^2)/12",
+            "m*(R^2 + r^2)/2",
+        ],
+    };
+
     /// π (1), R − r and R + r (2), two products, the length (1).
     const MEASURE_ROUNDINGS: f64 = 6.0;
 

@@ -53,6 +53,20 @@ impl ShapeKind for Disk {
         help: "a disk takes `mass` or `areal_density`, and `radius` or `diameter` (in its local x–y plane) with `center` (and optional `rotation`); an `inner_radius` makes it an annulus",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "thin disk of radius R, hole r, in the local x–y plane",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+        ],
+        measure: "pi*(R^2 - r^2)",
+        moments: [
+            "m*(R^2 + r^2)/4",
+            "m*(R^2 + r^2)/4",
+            "m*(R^2 + r^2)/2",
+        ],
+    };
+
     /// π (1), R − r and R + r (2), two products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 6.0;
 

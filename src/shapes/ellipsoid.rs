@@ -68,6 +68,21 @@ impl ShapeKind for Ellipsoid {
         help: "an ellipsoid takes `mass` or `density`, and `radii` = [a, b, c], its semi-axes along its local x, y and z, with `center` (and optional `rotation`)",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "solid ellipsoid of semi-axes a, b, c",
+        dims: &[
+            super::symbol("a", "a", super::Slot::Own(0, 0)),
+            super::symbol("b", "b", super::Slot::Own(0, 1)),
+            super::symbol("c", "c", super::Slot::Own(0, 2)),
+        ],
+        measure: "4*pi*a*b*c/3",
+        moments: [
+            "m*(b^2 + c^2)/5",
+            "m*(a^2 + c^2)/5",
+            "m*(a^2 + b^2)/5",
+        ],
+    };
+
     const OWN_KEYS: &'static [Key] = &[Key::own(
         "radii",
         Kind::Quantities(Some(3)),

@@ -116,6 +116,20 @@ impl ShapeKind for Hemisphere {
         help: "a hemisphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`, the centre of its sphere (flat face in its local x–y plane, dome toward +z; optional `rotation`); an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "hemisphere of radius R, hollow to r, dome along local z; its centroid 3(R⁴ − r⁴)/(8(R³ − r³)) above its centre",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+        ],
+        measure: "2*pi*(R^3 - r^3)/3",
+        moments: [
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3)) - m*(3*(R^4 - r^4)/(8*(R^3 - r^3)))^2",
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3)) - m*(3*(R^4 - r^4)/(8*(R^3 - r^3)))^2",
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3))",
+        ],
+    };
+
     /// 2/3 and π (3), R − r (1), R² + Rr + r² (3), three products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 11.0;
 

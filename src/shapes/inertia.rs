@@ -39,6 +39,17 @@ impl ShapeKind for Given {
         help: "an inertia part takes `mass`, `center`, `inertia` = [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] about its centroid in its local axes (optional `rotation`), tensor convention unless `products = \"positive\"`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "given inertia tensor, turned into the file's axes",
+        dims: &[],
+        measure: "",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// None: its mass is given.
     const MEASURE_ROUNDINGS: f64 = 0.0;
 

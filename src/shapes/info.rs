@@ -348,3 +348,40 @@ pub const PROBE: Key = Key::own(
 )
 .tolerable()
 .positive();
+
+/// How `massprop explain` writes a shape's closed forms (`ShapeKind::EXPLAIN`,
+/// required of every shape: a shape without its explanation does not
+/// compile). The formulas are templates over the dimensions' symbols and
+/// `m`: `+ - * / ^ ( )`, numbers and `pi`; `explain::formula` writes them
+/// as text or TeX, with the symbols or with the part's numbers, and the
+/// shapes' tests evaluate them against `measure_of` and `moments_of`.
+#[derive(Clone, Copy, Debug)]
+pub struct Explain {
+    /// The closed form's name: "thin rectangular plate a × b".
+    pub form: &'static str,
+    /// Its dimensions, in the order its closed forms take them.
+    pub dims: &'static [Symbol],
+    /// Volume, area or length over the symbols; "" where the shape has
+    /// none (a mass only).
+    pub measure: &'static str,
+    /// The moments of inertia about its centroid along its local x, y, z
+    /// (Ixx = ∫(y² + z²) dm, …); "" where there is no closed form over
+    /// its dimensions (a triangle, a given tensor, a prism, a mesh).
+    pub moments: [&'static str; 3],
+}
+
+/// A dimension of a shape as `explain` names it: its symbol in a
+/// template and in text, its TeX, and the number of the part it is
+/// (`Slot`: a box's `Size(k)`, which a box placed by its edges gives as
+/// the length of edge k).
+#[derive(Clone, Copy, Debug)]
+pub struct Symbol {
+    pub name: &'static str,
+    pub tex: &'static str,
+    pub slot: Slot,
+}
+
+/// A symbol of `explain`'s templates.
+pub const fn symbol(name: &'static str, tex: &'static str, slot: Slot) -> Symbol {
+    Symbol { name, tex, slot }
+}

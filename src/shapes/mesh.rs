@@ -114,6 +114,17 @@ impl ShapeKind for Mesh {
         help: "a mesh takes `file` (STL or OBJ, relative to the part file), `mesh_unit` (the file's length unit), `mass`, `density` or `material`, optional `origin` and `rotation`, and `weld` (corners closer than it merged; never by default); `mode = \"shell\"` weighs the surface as a sheet: `mass`, `areal_density`, or `thickness` with `density` or `material`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "triangle mesh: exact polyhedral integrals (src/mesh)",
+        dims: &[],
+        measure: "",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// (its measure is its file’s: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 0.0;
 

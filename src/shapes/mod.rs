@@ -34,8 +34,8 @@ pub use read::Reader;
 #[cfg(test)]
 pub use info::PROBE;
 pub use info::{
-    DensityKind, Fill, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope, ShapeInfo,
-    Solid, Spanned, own_key,
+    DensityKind, Explain, Fill, Key, Kind, MaterialRule, PER_AREA, PER_LENGTH, PER_VOLUME, Scope,
+    ShapeInfo, Solid, Spanned, Symbol, own_key, symbol,
 };
 
 use crate::numeric::{DD, M3, Real};
@@ -55,6 +55,8 @@ use serde::Serialize;
 /// whose module does not answer in full does not compile.
 pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     const INFO: ShapeInfo;
+    /// How `massprop explain` writes its closed forms (`info::Explain`).
+    const EXPLAIN: Explain;
     /// The keys this shape declares itself (a key no other part has, such
     /// as an ellipsoid's `radii`): each also listed in `INFO.keys`, read
     /// by the model's reader as declared (kind, dimension, "±", > 0) and
@@ -227,6 +229,13 @@ macro_rules! registry {
             pub fn second_moments<T: Real>(self, m: T, d: &[T]) -> [T; 3] {
                 match self {
                     $(Shape::$variant => <$module::$kind as ShapeKind>::moments_of(m, d),)+
+                }
+            }
+
+            /// How `explain` writes its closed forms (`ShapeKind::EXPLAIN`).
+            pub fn explain(self) -> &'static Explain {
+                match self {
+                    $(Shape::$variant => &<$module::$kind as ShapeKind>::EXPLAIN,)+
                 }
             }
 

@@ -56,6 +56,20 @@ impl ShapeKind for Plate {
         help: "a plate takes `mass` or `areal_density`, and `size` = [x, y] with `center` (and optional `rotation`), or `corner` with two `edges`; optionally its real `thickness`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "thin rectangular plate a × b",
+        dims: &[
+            super::symbol("a", "a", super::Slot::Size(0)),
+            super::symbol("b", "b", super::Slot::Size(1)),
+        ],
+        measure: "a*b",
+        moments: [
+            "m*b^2/12",
+            "m*a^2/12",
+            "m*(a^2 + b^2)/12",
+        ],
+    };
+
     /// Two products.
     const MEASURE_ROUNDINGS: f64 = 2.0;
 

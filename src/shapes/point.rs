@@ -36,6 +36,17 @@ impl ShapeKind for Point {
         help: "a point takes `mass` and `center`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "point mass",
+        dims: &[],
+        measure: "",
+        moments: [
+            "0",
+            "0",
+            "0",
+        ],
+    };
+
     /// None: its mass is given.
     const MEASURE_ROUNDINGS: f64 = 0.0;
 

@@ -175,6 +175,17 @@ impl ShapeKind for Prism {
         help: "a prism takes `mass` or `density`, a `polygon` = [[x, y], …] in its local x–y plane (either orientation) and `length` along its local z (from −length/2 to +length/2), with optional `origin` (where its local origin goes) and `rotation`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "polygon extruded along local z: its moments by Green's theorem (src/shapes/prism.rs)",
+        dims: &[],
+        measure: "",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// (its area is its polygon's: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 2.0;
 

@@ -73,6 +73,19 @@ impl ShapeKind for Rod {
         help: "a rod takes `mass` or `linear_density`, and `length` with `center` (and optional `rotation`), or `from` and `to`; optionally its real `diameter`",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "slender rod of length L along local z",
+        dims: &[
+            super::symbol("L", "L", super::Slot::Length),
+        ],
+        measure: "L",
+        moments: [
+            "m*L^2/12",
+            "m*L^2/12",
+            "0",
+        ],
+    };
+
     /// One product.
     const MEASURE_ROUNDINGS: f64 = 1.0;
 

@@ -56,6 +56,20 @@ impl ShapeKind for Sphere {
         help: "a sphere takes `mass` or `density`, and `radius` (or `diameter`) with `center`; an `inner_radius` makes it hollow (equal to `radius`: a thin shell)",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "sphere of radius R, hollow to r",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("r", "r", super::Slot::InnerRadius),
+        ],
+        measure: "4*pi*(R^3 - r^3)/3",
+        moments: [
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3))",
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3))",
+            "2*m*(R^5 - r^5)/(5*(R^3 - r^3))",
+        ],
+    };
+
     /// 4/3 and π (3), R − r (1), R² + Rr + r² (3), three products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 11.0;
 

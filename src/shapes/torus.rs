@@ -81,6 +81,21 @@ impl ShapeKind for Torus {
         help: "a torus takes `mass` or `density`, `radius` (its axis to the tube's centre) and `tube_radius` (at most `radius`), with `center` (and optional `rotation`; its axis is local z); an `inner_tube_radius` makes the tube hollow",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "torus: centre-line radius R, tube radius a, bore a_i, about local z",
+        dims: &[
+            super::symbol("R", "R", super::Slot::Radius),
+            super::symbol("a", "a", super::Slot::TubeRadius),
+            super::symbol("a_i", "a_i", super::Slot::InnerTubeRadius),
+        ],
+        measure: "2*pi^2*R*(a^2 - a_i^2)",
+        moments: [
+            "m*(R^2/2 + 5*(a^2 + a_i^2)/8)",
+            "m*(R^2/2 + 5*(a^2 + a_i^2)/8)",
+            "m*(R^2 + 3*(a^2 + a_i^2)/4)",
+        ],
+    };
+
     /// 2π² (3), a − b and a + b (2), four products, and one of slack.
     const MEASURE_ROUNDINGS: f64 = 10.0;
 

@@ -77,6 +77,17 @@ impl ShapeKind for Triangle {
         help: "a triangle takes `mass` or `areal_density`, and three `vertices` = [[x, y, z], [x, y, z], [x, y, z]] in the file's frame",
     };
 
+    const EXPLAIN: super::Explain = super::Explain {
+        form: "thin triangle: (m/12) Σ eₖeₖᵀ over its vertices less its centroid, in the file's axes",
+        dims: &[],
+        measure: "",
+        moments: [
+            "",
+            "",
+            "",
+        ],
+    };
+
     /// (its area is formed from its vertices: `shapes::error`).
     const MEASURE_ROUNDINGS: f64 = 1.0;
 

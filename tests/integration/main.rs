@@ -24,6 +24,7 @@ mod drawing_legible;
 mod ellipsoid;
 mod exact;
 mod expect_axes;
+mod explain;
 mod files;
 mod frames;
 mod hostile;

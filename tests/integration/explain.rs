@@ -1,0 +1,535 @@
+//! `massprop explain` (issue 36): the bent plate of ME101's lecture 39
+//! worked as the lecture works it, every number of an explanation the
+//! report's, random files' explanations summing to their reports, its
+//! formats, its bad input and hostile names, and the exact arithmetic
+//! against num-rational.
+
+use crate::common::massprop;
+use massprop::explain::exact::Exact;
+use massprop::numeric::Real;
+use num_rational::Ratio;
+use proptest::prelude::*;
+use serde_json::Value;
+
+const BENT: &str = "shapes/bent-plate.toml";
+
+/// `massprop explain ARGS…`, in process: its standard output.
+fn explain(args: &[&str]) -> String {
+    let mut argv = vec!["massprop", "explain"];
+    argv.extend(args);
+    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+    let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}"));
+    out.stdout.text()
+}
+
+/// `massprop report --format json ARGS…`, in process.
+fn report(args: &[&str]) -> Value {
+    let mut argv = vec!["massprop", "report", "--format", "json"];
+    argv.extend(args);
+    let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+    let out = massprop::run(&cli).unwrap_or_else(|d| panic!("{d}"));
+    serde_json::from_str(&out.stdout.text()).unwrap()
+}
+
+/// The value of each text line `LHS = … = VALUE [(exactly n/d)] UNIT`, in
+/// order: the number after the last ` = `, exact where a fraction is
+/// given (parsed here, not by the program).
+fn values(text: &str, lhs: &str) -> Vec<f64> {
+    let head = format!("{lhs} = ");
+    text.lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with(&head))
+        .map(|l| {
+            let last = l.rsplit(" = ").next().unwrap();
+            if let Some(i) = last.find("(exactly ") {
+                let f = &last[i + 9..last[i..].find(')').unwrap() + i];
+                let (n, d) = f.split_once('/').unwrap();
+                return n.parse::<f64>().unwrap() / d.parse::<f64>().unwrap();
+            }
+            last.split_whitespace().next().unwrap().parse().unwrap()
+        })
+        .collect()
+}
+
+fn one(text: &str, lhs: &str) -> f64 {
+    let v = values(text, lhs);
+    assert!(!v.is_empty(), "no line `{lhs} = …` in:\n{text}");
+    *v.last().unwrap()
+}
+
+fn close(got: f64, want: f64, scale: f64, what: &str) {
+    assert!(
+        (got - want).abs() <= 1e-12 * scale.abs().max(want.abs()),
+        "{what}: {got} vs {want}"
+    );
+}
+
+#[test]
+fn the_bent_plate_masses_are_the_lectures() {
+    let text = explain(&[BENT]);
+    assert!(
+        text.contains("m = ρ·a·b = 0.00007 × 125 × 100 = 0.875 kg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("m = ρ·a·b = 0.00007 × 75 × 150 = 0.7875 kg"),
+        "{text}"
+    );
+    assert!(
+        text.contains("m = Σ m = 0.875 + 0.7875 = 1.6625 kg"),
+        "{text}"
+    );
+}
+
+/// Each plate about O, by hand: a thin plate's ∫u² dm over [0, a] is
+/// m a²/3, its ∫uv dm m (a/2)(b/2); products in the tensor convention.
+#[test]
+fn each_plate_moments_and_products_about_o_are_the_lectures() {
+    let text = explain(&[BENT]);
+    let (ma, mb) = (0.875, 0.7875);
+    let a = [
+        ma * (125.0 * 125.0 + 100.0 * 100.0) / 3.0,
+        ma * 100.0 * 100.0 / 3.0,
+        ma * 125.0 * 125.0 / 3.0,
+        0.0,
+        0.0,
+        -ma * 62.5 * 50.0,
+    ];
+    let b = [
+        mb * (125.0 * 125.0 + 150.0 * 150.0 / 3.0),
+        mb * (75.0 * 75.0 + 150.0 * 150.0) / 3.0,
+        mb * (75.0 * 75.0 / 3.0 + 125.0 * 125.0),
+        -mb * 37.5 * 125.0,
+        -mb * 37.5 * 75.0,
+        -mb * 125.0 * 75.0,
+    ];
+    for (k, lhs) in ["Ixx(O)", "Iyy(O)", "Izz(O)", "Ixy(O)", "Ixz(O)", "Iyz(O)"]
+        .iter()
+        .enumerate()
+    {
+        let v = values(&text, lhs);
+        // Plate A's, plate B's, their sum.
+        assert_eq!(v.len(), 3, "{lhs}: {v:?}");
+        close(v[0], a[k], 1e4, &format!("A {lhs}"));
+        close(v[1], b[k], 1e4, &format!("B {lhs}"));
+        close(v[2], a[k] + b[k], 1e4, &format!("Σ {lhs}"));
+    }
+}
+
+#[test]
+fn the_bent_plate_h_and_t_are_the_lectures_exactly() {
+    let text = explain(&[BENT]);
+    for line in [
+        "= -0.0664453125 N·m·s",
+        "= -0.303515625 N·m·s",
+        "= 0.55015625 N·m·s",
+        "= 8.25234375 J",
+    ] {
+        assert!(text.contains(line), "{line} in:\n{text}");
+    }
+}
+
+/// The totals of an explanation against the report's JSON (SI): the
+/// file's length unit is `l` metres, its mass unit `k` kilograms.
+fn agrees_with_report(args: &[&str], l: f64, k: f64) {
+    let text = explain(args);
+    let json = report(args);
+    let num = |v: &Value| v.as_f64().unwrap();
+    let mass = num(&json["mass"]);
+    close(one(&text, "m") * k, mass, mass, "mass");
+    for (i, a) in ["x_G", "y_G", "z_G"].iter().enumerate() {
+        let g = num(&json["center_of_mass"][i]);
+        close(one(&text, a) * l, g, 1.0, a);
+    }
+    let i = &json["inertia_com"];
+    let scale: f64 = (0..3).map(|a| num(&i[a][a]).abs()).fold(0.0, f64::max);
+    for (name, (a, b)) in [
+        ("Ixx(G)", (0, 0)),
+        ("Iyy(G)", (1, 1)),
+        ("Izz(G)", (2, 2)),
+        ("Ixy(G)", (0, 1)),
+        ("Ixz(G)", (0, 2)),
+        ("Iyz(G)", (1, 2)),
+    ] {
+        close(one(&text, name) * k * l * l, num(&i[a][b]), scale, name);
+    }
+    for (n, name) in ["λ1", "λ2", "λ3"].iter().enumerate() {
+        let want = num(&json["principal_moments"][n]);
+        close(one(&text, name) * k * l * l, want, scale, name);
+    }
+    if let Some(h) = json["angular_momentum"].as_array() {
+        let hs = h.iter().map(num).fold(0.0, |a: f64, x| a.max(x.abs()));
+        for (n, name) in ["Hx", "Hy", "Hz"].iter().enumerate() {
+            close(one(&text, name), num(&h[n]), hs, name);
+        }
+        let t = num(&json["kinetic_energy"]);
+        close(one(&text, "T"), t, t, "T");
+    }
+    // Each part's mass and centroid, where the part is explained whole.
+    for p in json["parts"].as_array().unwrap() {
+        let name = p["name"].as_str().unwrap();
+        if !p["assembly"].as_array().unwrap().is_empty() {
+            continue;
+        }
+        let heading = format!(". part \"{name}\":");
+        let Some(at) = text.find(&heading) else {
+            continue;
+        };
+        let step = &text[at..];
+        let step = &step[..step[1..].find("\n\n").map_or(step.len(), |e| e + 1)];
+        close(one(step, "m") * k, num(&p["mass"]), mass, name);
+        for (i, a) in ["x_c", "y_c", "z_c"].iter().enumerate() {
+            close(one(step, a) * l, num(&p["center_of_mass"][i]), 1.0, a);
+        }
+    }
+}
+
+#[test]
+fn every_number_of_the_bent_plate_is_the_reports() {
+    agrees_with_report(&[BENT], 1e-3, 1.0);
+}
+
+#[test]
+fn every_number_of_the_example_files_is_the_reports() {
+    for f in [
+        "shapes/flywheel.toml",
+        "shapes/motor-bracket.toml",
+        "shapes/quickstart.toml",
+    ] {
+        let text = std::fs::read_to_string(f).unwrap();
+        let (l, k) = units_of(&text);
+        agrees_with_report(&[f], l, k);
+    }
+}
+
+/// A file's units in metres and kilograms, read from its `units` line.
+fn units_of(text: &str) -> (f64, f64) {
+    let line = text.lines().find(|l| l.starts_with("units")).unwrap_or("");
+    let l = if line.contains("\"mm\"") {
+        1e-3
+    } else if line.contains("\"cm\"") {
+        1e-2
+    } else {
+        1.0
+    };
+    let k = if line.contains("\"g\"") { 1e-3 } else { 1.0 };
+    (l, k)
+}
+
+/// A box 0.2 × 0.1 × 0.05 m of 1 kg turned 90° about z: its local x′
+/// lies along the file's y, so the file's Ixx is its Iy′y′ = m(a² + c²)/12
+/// = (0.04 + 0.0025)/12 = 17/4800; and a bored cut-out counts negative.
+#[test]
+fn a_turned_part_shows_its_own_moments_then_the_files() {
+    let dir = crate::common::scratch("explain", "turned");
+    let f = dir.join("t.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nname = \"block\"\nshape = \"box\"\ndensity = 1000\nsize = [0.2, 0.1, 0.05]\n\
+         center = [1, 0, 0]\nrotation = { intrinsic = \"zyx\", degrees = [90, 0, 0] }\n\n\
+         [[part]]\nname = \"hole\"\nshape = \"cylinder\"\ndensity = 1000\nradius = 0.01\n\
+         length = 0.05\ncenter = [1, 0, 0]\nremove = true\n",
+    )
+    .unwrap();
+    let text = explain(&[f.to_str().unwrap()]);
+    assert!(text.contains("Ix′x′ = m(b² + c²)/12 = 1 × (0.1² + 0.05²)/12 = 0.0010416666666666667 (exactly 1/960) kg·m²"), "{text}");
+    assert!(text.contains("turned into the file's axes"), "{text}");
+    assert_eq!(values(&text, "Ixx")[0], 17.0 / 4800.0);
+    assert!(
+        text.contains("its mass and inertia count negative"),
+        "{text}"
+    );
+    assert!(one(&text, "m") < 1.0);
+    agrees_with_report(&[f.to_str().unwrap()], 1.0, 1.0);
+}
+
+#[test]
+fn positive_products_flip_the_products_and_keep_t() {
+    let text = explain(&[BENT, "--products", "positive"]);
+    assert!(text.contains("Ixy = +∫xy dm"));
+    assert_eq!(*values(&text, "Iyz(O)").last().unwrap(), 10117.1875);
+    assert!(text.contains("= 8.25234375 J"), "{text}");
+}
+
+#[test]
+fn a_sub_assembly_array_or_mesh_is_one_line() {
+    let text = explain(&["shapes/bicycle-wheel.toml"]);
+    let json = report(&["shapes/bicycle-wheel.toml"]);
+    let lines = text
+        .lines()
+        .filter(|l| l.contains("and its copies ("))
+        .count();
+    assert!(lines >= 1, "{text}");
+    // Fewer steps than parts: copies are not explained one by one.
+    let parts = json["parts"].as_array().unwrap().len();
+    let steps = text.lines().filter(|l| l.contains(". part \"")).count();
+    assert!(steps < parts, "{steps} steps for {parts} parts");
+    agrees_with_report(
+        &["shapes/bicycle-wheel.toml"],
+        units_of(&std::fs::read_to_string("shapes/bicycle-wheel.toml").unwrap()).0,
+        1.0,
+    );
+}
+
+#[test]
+fn only_explains_a_sub_assembly_part_by_part() {
+    let args = ["shapes/robot-arm.toml", "--only", "shoulder"];
+    let text = explain(&args);
+    let parts = report(&args)["parts"].as_array().unwrap().len();
+    let steps = text.lines().filter(|l| l.contains(". part \"")).count();
+    assert_eq!(steps, parts, "{text}");
+    assert!(!text.contains("sub-assembly \"shoulder\""), "{text}");
+    agrees_with_report(&args, 1e-3, 1.0);
+}
+
+#[test]
+fn a_missing_file_is_exit_2_with_nothing_on_stdout() {
+    let out = massprop(&["explain", "no/such/file.toml"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no/such/file.toml"));
+}
+
+#[test]
+fn a_bad_file_is_exit_2_at_its_line_and_column() {
+    let dir = crate::common::scratch("explain", "bad");
+    let f = dir.join("bad.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nname = \"a\"\nshape = \"box\"\nmass = 1\nsize = [1, 1]\n",
+    )
+    .unwrap();
+    let out = massprop(&["explain", f.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(err.contains("bad.toml:5:"), "{err}");
+    assert!(err.contains("`size`"), "{err}");
+}
+
+#[test]
+fn an_unknown_only_is_exit_2() {
+    let out = massprop(&["explain", BENT, "--only", "nothing"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("nothing"));
+}
+
+const HOSTILE: &str = "[[part]]\nname = \"a|b_c$d%e&f#g{h}i\\\\j~k^l*m[n]o<p>\\u001b[31mq\\nr\"\nshape = \"point\"\nmass = 1\ncenter = [1, 2, 3]\n";
+
+fn hostile(format: &str) -> String {
+    let dir = crate::common::scratch("explain", &format!("hostile-{format}"));
+    let f = dir.join("h.toml");
+    std::fs::write(&f, HOSTILE).unwrap();
+    explain(&[f.to_str().unwrap(), "--format", format])
+}
+
+#[test]
+fn a_hostile_name_neither_acts_nor_adds_a_line_in_text() {
+    let text = hostile("text");
+    assert!(!text.contains('\u{1b}'));
+    let heading = text.lines().find(|l| l.starts_with("1. part")).unwrap();
+    assert!(heading.contains("␛[31mq␊r"), "{heading}");
+}
+
+#[test]
+fn a_hostile_name_is_escaped_in_markdown() {
+    let md = hostile("markdown");
+    assert!(!md.contains('\u{1b}'));
+    let heading = md.lines().find(|l| l.starts_with("## 1. part")).unwrap();
+    assert!(
+        heading.contains(r"a\|b\_c\$d%e\&f\#g\{h\}i\\j\~k^l\*m\[n\]o\<p\>"),
+        "{heading}"
+    );
+}
+
+#[test]
+fn a_hostile_name_is_escaped_in_latex() {
+    let tex = hostile("latex");
+    let heading = tex
+        .lines()
+        .find(|l| l.starts_with("\\subsection*{1. part"))
+        .unwrap();
+    assert!(
+        heading.contains(r"a\textbar{}b\_c\$d\%e\&f\#g\{h\}i\textbackslash{}j\textasciitilde{}k\textasciicircum{}l*m[n]o\textless{}p\textgreater{}[U+241B][31mq[U+240A]r"),
+        "{heading}"
+    );
+}
+
+#[test]
+fn markdown_has_a_table_and_maths_per_step() {
+    let md = explain(&[BENT, "--format", "markdown"]);
+    assert!(md.contains("| quantity | formula | with the numbers | value |"));
+    assert!(md.contains("| $m$ | $= \\rho \\cdot a \\cdot b$ | $= 0.00007 \\times 125 \\times 100$ | 0\\.875 kg |"), "{md}");
+    assert!(md.contains("8\\.25234375 J"));
+}
+
+/// The LaTeX compiles with pdflatex where it is installed.
+#[test]
+fn latex_compiles_with_pdflatex_where_installed() {
+    let tex = explain(&[BENT, "--format", "latex"]);
+    assert!(tex.starts_with("\\documentclass{article}"));
+    assert_eq!(
+        tex.matches("\\begin{align*}").count(),
+        tex.matches("\\end{align*}").count()
+    );
+    assert!(tex.is_ascii(), "pdflatex reads ASCII safely");
+    let Ok(found) = std::process::Command::new("pdflatex")
+        .arg("--version")
+        .output()
+    else {
+        eprintln!("note: pdflatex is not installed; the LaTeX was not compiled");
+        return;
+    };
+    assert!(found.status.success());
+    for (name, text) in [("bent", tex), ("hostile", hostile("latex"))] {
+        let dir = crate::common::scratch("explain", &format!("latex-{name}"));
+        std::fs::write(dir.join("x.tex"), text).unwrap();
+        let out = std::process::Command::new("pdflatex")
+            .args(["-interaction=nonstopmode", "-halt-on-error", "x.tex"])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+    }
+}
+
+/// A random file: a few parts of several shapes, offset and turned.
+fn part_strategy() -> impl Strategy<Value = String> {
+    let at = prop::array::uniform3(-40i32..40);
+    let size = prop::array::uniform3(1u32..30);
+    let deg = prop::array::uniform3(-180i32..180);
+    (0usize..6, at, size, deg, 1u32..50).prop_map(|(kind, at, s, deg, rho)| {
+        let c = format!("center = [{}, {}, {}]", at[0], at[1], at[2]);
+        let rot = format!("rotation = {{ intrinsic = \"zyx\", degrees = [{}, {}, {}] }}", deg[0], deg[1], deg[2]);
+        match kind {
+            0 => format!("shape = \"box\"\ndensity = {rho}\nsize = [{}, {}, {}]\n{c}\n{rot}", s[0], s[1], s[2]),
+            1 => format!("shape = \"sphere\"\nmass = {rho}\nradius = {}\n{c}", s[0]),
+            2 => format!("shape = \"cylinder\"\ndensity = {rho}\nradius = {}\nlength = {}\n{c}\n{rot}", s[0], s[1]),
+            3 => format!(
+                "shape = \"plate\"\nareal_density = {rho}\ncorner = [{}, {}, {}]\nedges = [[{}, 0, 0], [0, {}, 0]]",
+                at[0], at[1], at[2], s[0], s[1]
+            ),
+            4 => format!(
+                "shape = \"rod\"\nlinear_density = {rho}\nfrom = [{}, {}, {}]\nto = [{}, {}, {}]",
+                at[0], at[1], at[2], at[0] + s[0] as i32, at[1] - s[1] as i32, at[2] + s[2] as i32
+            ),
+            _ => format!("shape = \"point\"\nmass = {rho}\n{c}"),
+        }
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 24, ..ProptestConfig::default() })]
+
+    /// The explanation of a random file sums to its report.
+    #[test]
+    fn the_explanation_of_a_random_file_sums_to_its_report(
+        parts in prop::collection::vec(part_strategy(), 1..5),
+        omega in prop::array::uniform3(-5i32..5),
+        n in 0u32..1_000_000,
+    ) {
+        let mut text = String::new();
+        for (i, p) in parts.iter().enumerate() {
+            text.push_str(&format!("[[part]]\nname = \"p{i}\"\n{p}\n\n"));
+        }
+        text.push_str(&format!("[analysis]\nabout = [1, -2, 3]\nomega = [{}, {}, {}]\n", omega[0], omega[1], omega[2]));
+        let dir = crate::common::scratch("explain", &format!("random-{n}"));
+        let f = dir.join("r.toml");
+        std::fs::write(&f, &text).unwrap();
+        agrees_with_report(&[f.to_str().unwrap()], 1.0, 1.0);
+    }
+
+    /// `Exact` is num-rational's arithmetic wherever it stays exact.
+    #[test]
+    fn exact_arithmetic_is_num_rationals(
+        a in -10_000i64..10_000, b in 1i64..10_000,
+        c in -10_000i64..10_000, d in 1i64..10_000,
+    ) {
+        let (x, y) = (Exact::ratio(a as i128, b as i128), Exact::ratio(c as i128, d as i128));
+        let (p, q) = (Ratio::new(a as i128, b as i128), Ratio::new(c as i128, d as i128));
+        let same = |e: Exact, r: Ratio<i128>| e.exact == Some((*r.numer(), *r.denom()));
+        prop_assert!(same(x + y, p + q));
+        prop_assert!(same(x - y, p - q));
+        prop_assert!(same(x * y, p * q));
+        if c != 0 {
+            prop_assert!(same(x / y, p / q));
+        }
+        prop_assert_eq!(x < y, p < q);
+    }
+}
+
+#[test]
+fn an_input_decimal_is_exact_and_pi_is_not() {
+    assert_eq!(Exact::of(0.1).exact, Some((1, 10)));
+    assert_eq!((Exact::of(0.1) + Exact::of(0.2)).exact, Some((3, 10)));
+    assert!(Exact::pi().exact.is_none());
+}
+
+/// Every part file of the catalogues and of the fuzz corpus: explained,
+/// or refused with a diagnostic; never a panic, never inf or NaN shown.
+#[test]
+fn no_input_of_the_catalogues_or_the_corpus_makes_explain_panic() {
+    let mut files = Vec::new();
+    for dir in std::fs::read_dir("tests/cmd").unwrap() {
+        let dir = dir.unwrap().path();
+        if dir.is_dir() {
+            files.extend(std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()));
+        }
+    }
+    files.extend(
+        std::fs::read_dir("fuzz/corpus/parse_and_compose")
+            .unwrap()
+            .map(|f| f.unwrap().path()),
+    );
+    files.retain(|f| f.extension().is_some_and(|e| e == "toml") || f.starts_with("fuzz"));
+    assert!(files.len() > 100, "{} files", files.len());
+    // The binary's main thread's stack (8 MiB), not a test thread's: the
+    // catalogues hold inputs nested as deep as the reader allows.
+    std::thread::Builder::new()
+        .stack_size(16 << 20)
+        .spawn(move || explain_each(files))
+        .unwrap()
+        .join()
+        .unwrap();
+}
+
+fn explain_each(files: Vec<std::path::PathBuf>) {
+    for f in files {
+        let path = f.to_str().unwrap().to_string();
+        let argv = ["massprop", "explain", &path, "--format", "markdown"];
+        let cli = <massprop::cli::Cli as clap::Parser>::try_parse_from(argv).unwrap();
+        let run = std::panic::catch_unwind(|| massprop::run(&cli).map(|o| o.stdout.text()));
+        let Ok(out) = run else {
+            panic!("explain panicked on {path}")
+        };
+        if let Ok(text) = out {
+            assert!(
+                !text.contains("NaN") && !text.contains("inf "),
+                "{path}:\n{text}"
+            );
+        }
+    }
+}
+
+/// A body whose tensor is finite but whose invariant I₃ ~ I³ is not: the
+/// invariant is said to be beyond f64's range, never printed as inf.
+#[test]
+fn a_huge_body_says_beyond_range_and_never_prints_inf() {
+    let dir = crate::common::scratch("explain", "huge");
+    let f = dir.join("h.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nshape = \"sphere\"\nmass = 1\nradius = 1e120\ncenter = [0, 0, 0]\n",
+    )
+    .unwrap();
+    for format in ["text", "markdown", "latex"] {
+        let text = explain(&[f.to_str().unwrap(), "--format", format]);
+        assert!(text.contains("beyond f64's range"), "{text}");
+        assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
+    }
+}
