@@ -606,7 +606,13 @@ mod tests {
         for length in LENGTH_UNITS {
             for mass in MASS_UNITS {
                 let u = FileUnits { length, mass };
-                for dim in [Dim::LENGTH, Dim::MASS, Dim::DENSITY, Dim::new(1, 2, 0), Dim::new(0, -3, 0)] {
+                for dim in [
+                    Dim::LENGTH,
+                    Dim::MASS,
+                    Dim::DENSITY,
+                    Dim::new(1, 2, 0),
+                    Dim::new(0, -3, 0),
+                ] {
                     // Asked twice: made, then kept.
                     assert_eq!(u.factor(dim), u.factor_made(dim), "{length} {mass} {dim:?}");
                     assert_eq!(u.factor(dim), u.factor_made(dim), "{length} {mass} {dim:?}");

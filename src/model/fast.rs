@@ -35,6 +35,7 @@ pub(in crate::model) mod tables;
 mod tree;
 mod values;
 use failure::{Failure, Found, Read, Valid, What};
+use pieces::Shift;
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -42,7 +43,6 @@ use toml_parser::decoder::{Encoding, ScalarKind};
 use toml_parser::lexer::{Token, TokenKind};
 use toml_parser::parser::{EventReceiver, RecursionGuard, ValidateWhitespace};
 use toml_parser::{ErrorSink, ParseError, Raw, Source, Span};
-use pieces::Shift;
 use tree::{Refused, enter, header_table, put};
 
 /// The toml crate's own nesting limit (`toml::de::parser::LIMIT`).

@@ -62,7 +62,7 @@ impl Streamed {
                 s.take(source, units, materials, p);
             };
             if let Pieces::Read(raw, read) = fast::pieces::read(text, pieces, &new, &take) {
-                return (Streamed::merge(read), Some(raw));
+                return (Streamed::merge(read), Some(*raw));
             }
         }
         // At the size the file's `[[part]]` lines say: a list doubled up
@@ -241,12 +241,26 @@ mod tests {
         );
         for k in 0..n {
             let mass = if bad.contains(&k) { "-1" } else { "1.5" };
-            let name = if k % 4 == 0 { String::new() } else { format!("name = \"p{k}\"\n") };
-            let extra = if unknown.contains(&k) { "colour = 1\n" } else { "" };
+            let name = if k % 4 == 0 {
+                String::new()
+            } else {
+                format!("name = \"p{k}\"\n")
+            };
+            let extra = if unknown.contains(&k) {
+                "colour = 1\n"
+            } else {
+                ""
+            };
             text += &match k % 3 {
-                0 => format!("[[part]]\n{name}shape = \"point\"\nmass = {mass}\ncenter = [{k}, 0.25, 0]\n{extra}"),
-                1 => format!("[[part]]\n{name}shape = \"box\"\nmaterial = \"foam\"\nsize = [1, 2, {k}]\ncenter = [0, {k}, 0]\n{extra}"),
-                _ => format!("[[part]]\n{name}shape = \"rod\"\nmass = \"{mass} kg\"\nlength = {k}\ncenter = [0, 0, {k}]\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = {k}\n{extra}"),
+                0 => format!(
+                    "[[part]]\n{name}shape = \"point\"\nmass = {mass}\ncenter = [{k}, 0.25, 0]\n{extra}"
+                ),
+                1 => format!(
+                    "[[part]]\n{name}shape = \"box\"\nmaterial = \"foam\"\nsize = [1, 2, {k}]\ncenter = [0, {k}, 0]\n{extra}"
+                ),
+                _ => format!(
+                    "[[part]]\n{name}shape = \"rod\"\nmass = \"{mass} kg\"\nlength = {k}\ncenter = [0, 0, {k}]\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = {k}\n{extra}"
+                ),
             };
         }
         text
@@ -274,7 +288,10 @@ mod tests {
     fn a_file_read_in_pieces_gives_the_model_of_one_core() {
         let one = same_on_one_core_and_in_pieces(&file(60, &[], &[]));
         assert!(!one.starts_with("error"), "{one}");
-        assert!(one.contains("part 57"), "an unnamed part is numbered in the file");
+        assert!(
+            one.contains("part 57"),
+            "an unnamed part is numbered in the file"
+        );
     }
 
     #[test]

@@ -187,7 +187,9 @@ impl serde_json::ser::Formatter for ControlsEscaped {
         // rather than `may_hide`'s two (its test and `##[`'s search). Such
         // text is never one `may_hide` finds (the same bytes either way:
         // `plain_ascii_is_never_hidden`).
-        if fragment.bytes().all(|b| (0x20..0x7f).contains(&b) && b != b'#')
+        if fragment
+            .bytes()
+            .all(|b| (0x20..0x7f).contains(&b) && b != b'#')
             || !crate::diag::may_hide(fragment)
         {
             return w.write_all(fragment.as_bytes());
@@ -220,7 +222,10 @@ mod tests {
     fn plain_ascii_is_never_hidden() {
         // Every printable ASCII character but `#`, alone and in a run: the
         // fast path's text, which `may_hide` passes too.
-        let plain: String = (0x20u8..0x7f).filter(|&b| b != b'#').map(char::from).collect();
+        let plain: String = (0x20u8..0x7f)
+            .filter(|&b| b != b'#')
+            .map(char::from)
+            .collect();
         assert!(!crate::diag::may_hide(&plain));
         for c in plain.chars() {
             assert!(!crate::diag::may_hide(&c.to_string()), "{c:?}");

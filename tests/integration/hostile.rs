@@ -986,7 +986,9 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
         if let Some(pieces) = fast::pieces::parse_in_pieces(text, n)
             && format!("{:#?}", Some(pieces)) != whole
         {
-            return Err(format!("the fast path in {n} pieces reads another file:\n{text}"));
+            return Err(format!(
+                "the fast path in {n} pieces reads another file:\n{text}"
+            ));
         }
     }
     Ok(true)

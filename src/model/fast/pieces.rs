@@ -79,7 +79,7 @@ pub fn pieces_for(text: &str) -> usize {
 pub enum Pieces<S> {
     /// The file, with the parts handed to each piece's state (in the
     /// file's order); its `part` list empty, as when streaming.
-    Read(RawFile, Vec<S>),
+    Read(Box<RawFile>, Vec<S>),
     /// Not read in pieces (too few `[[part]]` lines, a piece not ending
     /// clean, a part or table the pieces cannot take, or anything
     /// refused): read it on one core.
@@ -159,7 +159,7 @@ pub fn read<S: Send>(
         return Pieces::Declined;
     };
     match first.finish() {
-        Ok(raw) => Pieces::Read(raw, std::iter::once(head).chain(rest).collect()),
+        Ok(raw) => Pieces::Read(Box::new(raw), std::iter::once(head).chain(rest).collect()),
         Err(_) => Pieces::Declined,
     }
 }
@@ -176,7 +176,7 @@ pub fn parse_in_pieces(text: &str, pieces: usize) -> Option<RawFile> {
             if let Some(list) = raw.part.as_mut() {
                 list.get_mut().extend(parts.into_iter().flatten());
             }
-            Some(raw)
+            Some(*raw)
         }
         Pieces::Declined => None,
     }

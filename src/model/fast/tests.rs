@@ -231,7 +231,11 @@ fn what_toml_or_the_files_form_refuses_is_declined() {
 fn many_parts(n: usize) -> String {
     let mut text = String::from("name = \"n\"\nunits = { length = \"mm\" }\n");
     for i in 0..n {
-        let name = if i % 3 == 0 { String::new() } else { format!("name = \"p{i}\"\n") };
+        let name = if i % 3 == 0 {
+            String::new()
+        } else {
+            format!("name = \"p{i}\"\n")
+        };
         text += &format!(
             "\n[[part]]\n{name}shape = \"box\"\nmass = {i}.5\nsize = [1, 2, 3]\ncenter = [{i}, 0, 0]\n"
         );
@@ -269,7 +273,8 @@ fn a_header_line_inside_a_multi_line_string_is_no_place_to_cut() {
 fn a_table_of_the_file_after_its_parts_declines_the_pieces() {
     // `[units]` after the parts: the later pieces' parts would have been
     // made without it.
-    let text = many_parts(10).replace("units = { length = \"mm\" }\n", "") + "[units]\nlength = \"mm\"\n";
+    let text =
+        many_parts(10).replace("units = { length = \"mm\" }\n", "") + "[units]\nlength = \"mm\"\n";
     assert!(parse(&text).is_some());
     for n in 2..=5 {
         assert!(pieces::parse_in_pieces(&text, n).is_none(), "{n} pieces");
