@@ -134,7 +134,9 @@ pub fn read<S: Send>(
         let handles: Vec<_> = (1..=last)
             .map(|k| {
                 let (one, root) = (&one, root.clone());
-                scope.spawn(move || {
+                // A thread the system cannot start declines the pieces
+                // (`None` below), rather than panicking.
+                std::thread::Builder::new().spawn_scoped(scope, move || {
                     let mut b = Builder::new(Source::new(text));
                     b.streaming = true;
                     b.root = root;
@@ -148,7 +150,10 @@ pub fn read<S: Send>(
         let head = one(&mut first, 0).filter(|_| first.tables == tables);
         let rest: Vec<Option<S>> = handles
             .into_iter()
-            .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .map(|h| {
+                h.ok()
+                    .and_then(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            })
             .collect();
         (head, rest)
     });
