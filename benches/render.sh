@@ -6,7 +6,8 @@
 #   bash benches/render.sh              # 100,000 parts
 #   PARTS=20000 bash benches/render.sh
 #
-# Target: about two seconds (release build). Generates (python,
+# Target: at most one second (issue 33, item 4; issue 19 asked for about
+# two), release build. Generates (python,
 # deterministic, fixed seed) boxes, plates, rods, cylinders, tubes, disks,
 # spheres, cones, tori and point masses, 1 to 60 mm, in a 2 m cube, units
 # mm and kg (at the drawing's scale, ~0.17 px/mm, the parts under ~6 mm

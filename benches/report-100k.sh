@@ -6,9 +6,10 @@
 #
 #   bash benches/report-100k.sh
 #
-# Requirement: end to end, massprop at most 1.3x the time and 1.2x the peak
-# memory of the toml crate deserializing the file into a generic
-# `toml::Table`. Builds the release binary and the example, generates the
+# Requirement (issue 33, item 1; issue 4 asked for 1.3x): end to end,
+# massprop at most 0.5x the time and 1.2x the peak memory of the toml crate
+# deserializing the file into a generic `toml::Table`, and within 3x the
+# file plus 64 MiB of memory (the file is read on both cores: src/model/fast/pieces.rs). Builds the release binary and the example, generates the
 # file deterministically (fixed seed) into a temporary directory, checks
 # that massprop reports it and that the total mass matches the generator's,
 # times every command with hyperfine (medians), measures peak RSS with GNU
@@ -24,7 +25,7 @@
 # installed with apt-get when missing (as root).
 #
 # Environment: RUNS (default 5) and WARMUP (default 1) for hyperfine; PARTS
-# (default 100000); MAX_TIME_RATIO (default 1.3) and MAX_RSS_RATIO
+# (default 100000); MAX_TIME_RATIO (default 0.5) and MAX_RSS_RATIO
 # (default 1.2).
 set -euo pipefail
 
@@ -32,7 +33,7 @@ PARTS="${PARTS:-100000}"
 SEED=20260104
 RUNS="${RUNS:-5}"
 WARMUP="${WARMUP:-1}"
-MAX_TIME_RATIO="${MAX_TIME_RATIO:-1.3}"
+MAX_TIME_RATIO="${MAX_TIME_RATIO:-0.5}"
 MAX_RSS_RATIO="${MAX_RSS_RATIO:-1.2}"
 
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -226,6 +227,11 @@ for label, i, m in rows:
     r = results[i]
     print(f"  {label:34} {s(med[i]):>8} {r['min']:.3f} … {r['max']:.3f} s {mib(m):>9} {m * 1024 / $bytes:8.1f}")
 print(f"  ({n} runs each after $WARMUP warm-up, medians; peak RSS the median of 3 runs)")
+budget = 3 * $bytes / 2**20 + 64
+print(f"  memory budget 3 x the file + 64 MiB: {budget:.0f} MiB (table {table_m / 1024:.0f} MiB, json {json_m / 1024:.0f} MiB)")
+if max(table_m, json_m) / 1024 > budget:
+    print("  FAILED: over the memory budget")
+    sys.exit(1)
 print()
 print(f"  limits: time {max_t}x, peak memory {max_m}x the toml::Table baseline")
 fail = []
@@ -239,7 +245,7 @@ if fail:
     print(f"  FAILED: {', '.join(fail)} over the limit")
     sys.exit(1)
 PY
-echo "  machine      $(nproc) CPUs, $(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo), $(uname -sr)"
+echo "  machine      $(nproc) CPUs, load average $(cut -d' ' -f1-3 /proc/loadavg), $(awk -F': ' '/^model name/ {print $2; exit}' /proc/cpuinfo), $(uname -sr)"
 echo "  massprop     $commit ($(cd "$repo" && rustc --version 2> /dev/null || echo 'rustc unknown'))"
 echo "  date         $(date -u +%Y-%m-%dT%H:%MZ)"
 exit "$status"

@@ -567,6 +567,35 @@ impl FileUnits {
         if dim.time != 0 && dim != Dim::VELOCITY {
             return Factor::ONE;
         }
+        // NOTE: asked for every number a part file holds (~20 a part),
+        // and made by a search of the symbol table and exact i128 powers
+        // and gcds (18 % of reading a large file, perf): kept per thread
+        // for the few (units, dimension) a file asks for. The same value
+        // (`a_factor_kept_is_the_factor_made`).
+        thread_local! {
+            static MADE: std::cell::RefCell<Vec<(FileUnits, Dim, Factor)>> =
+                const { std::cell::RefCell::new(Vec::new()) };
+        }
+        MADE.with(|made| {
+            let found = made
+                .borrow()
+                .iter()
+                .find(|(u, d, _)| u == self && *d == dim)
+                .map(|&(_, _, f)| f);
+            found.unwrap_or_else(|| {
+                let f = self.factor_made(dim);
+                let mut made = made.borrow_mut();
+                if made.len() >= 32 {
+                    made.clear();
+                }
+                made.push((*self, dim, f));
+                f
+            })
+        })
+    }
+
+    /// `factor`, made from the symbol table.
+    fn factor_made(&self, dim: Dim) -> Factor {
         let l = Self::symbol(self.length);
         let m = Self::symbol(self.mass);
         m.pow(dim.mass)
@@ -583,6 +612,26 @@ impl FileUnits {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_factor_kept_is_the_factor_made() {
+        for length in LENGTH_UNITS {
+            for mass in MASS_UNITS {
+                let u = FileUnits { length, mass };
+                for dim in [
+                    Dim::LENGTH,
+                    Dim::MASS,
+                    Dim::DENSITY,
+                    Dim::new(1, 2, 0),
+                    Dim::new(0, -3, 0),
+                ] {
+                    // Asked twice: made, then kept.
+                    assert_eq!(u.factor(dim), u.factor_made(dim), "{length} {mass} {dim:?}");
+                    assert_eq!(u.factor(dim), u.factor_made(dim), "{length} {mass} {dim:?}");
+                }
+            }
+        }
+    }
 
     /// The spellings people type (issue 14): each the same unit as its
     /// canonical form, exactly.

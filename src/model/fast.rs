@@ -29,11 +29,13 @@ use values::{Entry, How, Node, Seg, own_value, set_from};
 
 pub(in crate::model) mod errors;
 pub(in crate::model) mod failure;
+pub mod pieces;
 pub mod reference;
 pub(in crate::model) mod tables;
 mod tree;
 mod values;
 use failure::{Failure, Found, Read, Valid, What};
+use pieces::Shift;
 use std::borrow::Cow;
 use std::ops::Range;
 use toml::Spanned;
@@ -136,9 +138,31 @@ pub fn parse_in_chunks(text: &str, chunk_tokens: usize) -> Option<RawFile> {
 /// `parse_in_chunks`, the parts read handed to `sink` after each chunk if
 /// there is one.
 fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) -> Option<RawFile> {
-    let source = Source::new(text);
-    let mut builder = Builder::new(source);
+    let mut builder = Builder::new(Source::new(text));
     builder.streaming = sink.is_some();
+    feed(&mut builder, 0..text.len(), chunk_tokens, &mut sink)?;
+    builder.finish().ok()
+}
+
+/// Reads the stretch `range` of the builder's file into `builder`, a chunk
+/// at a time, the parts read handed to `sink` after each chunk; the part
+/// still open is closed at its end (the end of the file, or of a stretch
+/// the next of which begins with a `[[part]]` header, which closes it).
+/// `None` on a syntax error or a refusal; else whether the stretch ended
+/// clean: after a newline, outside any array or inline table (a stretch
+/// that ends so ends where the whole file's lexer has a token boundary, the
+/// start of a line: `pieces`).
+fn feed(
+    builder: &mut Builder<'_>,
+    range: Range<usize>,
+    chunk_tokens: usize,
+    sink: &mut Option<&mut PartSink<'_>>,
+) -> Option<bool> {
+    let whole = builder.source;
+    let text = &whole.input()[range.clone()];
+    // Lexed from the stretch's own text (its spans from its start), the
+    // events shifted to the file's (`Shift`).
+    let source = Source::new(text);
     let mut error = First(None);
     // NOTE: lexed and parsed a chunk of whole tables at a time, not the
     // whole file: the lexer's tokens take 14 bytes of memory per byte of
@@ -174,7 +198,8 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
             if chunk.last().is_some_and(|t| t.kind() != TokenKind::Eof) {
                 chunk.push(eof);
             }
-            let mut ws = ValidateWhitespace::new(&mut builder, source);
+            let mut shifted = Shift(builder, range.start);
+            let mut ws = ValidateWhitespace::new(&mut shifted, source);
             let mut guarded = RecursionGuard::new(&mut ws, RECURSION_LIMIT);
             toml_parser::parser::parse_document(&chunk, &mut guarded, &mut error);
             chunk.clear();
@@ -182,8 +207,11 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
                 return None;
             }
             if token.is_none() {
-                // The last part is complete.
+                // The last part is complete (and may be refused).
                 builder.close_part();
+                if builder.failed {
+                    return None;
+                }
             }
             if let Some(sink) = sink.as_mut() {
                 builder.hand_out(&mut **sink);
@@ -197,10 +225,12 @@ fn read(text: &str, chunk_tokens: usize, mut sink: Option<&mut PartSink<'_>>) ->
             }
             _ => {}
         }
-        line_start = t.kind() == TokenKind::Newline;
+        if t.kind() != TokenKind::Eof {
+            line_start = t.kind() == TokenKind::Newline;
+        }
         chunk.push(t);
     }
-    builder.finish().ok()
+    Some(line_start && depth == 0)
 }
 
 /// Tokens lexed and parsed at a time (24 bytes each): a few thousand
@@ -252,6 +282,10 @@ struct Builder<'i> {
     part: Option<(Range<usize>, Vec<Entry<'i>>)>,
     /// Parts are handed out as read (`parse_streaming`), not kept.
     streaming: bool,
+    /// `[[part]]` headers read, and headers of the file's own tables
+    /// (`pieces` checks both).
+    opened: usize,
+    tables: usize,
 }
 
 impl<'i> Builder<'i> {
@@ -271,6 +305,8 @@ impl<'i> Builder<'i> {
             parts: None,
             part: None,
             streaming: false,
+            opened: 0,
+            tables: 0,
         }
     }
 
@@ -411,6 +447,7 @@ impl<'i> Builder<'i> {
                     self.parts = Some((span.clone(), Vec::with_capacity(tables)));
                 }
                 self.part = Some((span, Vec::new()));
+                self.opened += 1;
                 self.in_part = true;
                 self.at.clear();
                 return;
@@ -469,6 +506,7 @@ impl<'i> Builder<'i> {
             return self.fail(f);
         }
         self.close_part();
+        self.tables += 1;
         let text = self.source.input();
         if let Err(f) = header_table(&mut self.root, &path, span, text).map_err(Refused::word) {
             return self.fail(f);

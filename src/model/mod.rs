@@ -274,19 +274,10 @@ impl Model {
         // are the file's.
         files.reads += 1;
         let whole = tolerance::may_have(&source.text);
-        let mut streamed = if whole {
-            Streamed::off()
+        let (mut streamed, fast) = if whole {
+            (Streamed::off(), fast::read_file(&source.text))
         } else {
-            // At the size the file's `[[part]]` lines say: a list doubled
-            // up to its size holds up to twice the parts.
-            Streamed::with_room(part_tables(&source.text) as usize)
-        };
-        let fast = if whole {
-            fast::read_file(&source.text)
-        } else {
-            fast::parse_streaming(&source.text, fast::CHUNK, &mut |units, materials, p| {
-                streamed.take(source, units, materials, p);
-            })
+            Streamed::read(source)
         };
         let raw = match fast {
             Some(raw) if whole => Some(raw),

@@ -1,6 +1,7 @@
 //! The parts of a file, made as they are read
 //! (`fast::parse_streaming`).
 
+use super::fast::{self, pieces::Pieces};
 use super::raw::{self, RawFile};
 use super::tolerance::Recorder;
 use super::{Ctx, Item, MAX_PARTS, Model};
@@ -28,8 +29,10 @@ pub(super) struct Streamed {
     /// The units and materials the parts are made with.
     ctx: Option<Result<(FileUnits, Materials), ()>>,
     pub(super) items: Vec<Item>,
-    /// Parts read, made or not.
+    /// Parts read, made or not; the index in the file of the first (when
+    /// read in pieces, `read`).
     count: usize,
+    first: usize,
     has_real_sizes: bool,
     /// The first part that is not valid.
     error: Option<Diagnostic>,
@@ -42,6 +45,54 @@ impl Streamed {
             items: Vec::with_capacity(parts.min(MAX_PARTS)),
             ..Streamed::default()
         }
+    }
+
+    /// The file read, its parts made as they are read: on every core for
+    /// a large file (`fast::pieces`), else on one (`fast::parse_streaming`).
+    /// `None` where the reader refuses the file.
+    pub(super) fn read(source: &Source) -> (Streamed, Option<RawFile>) {
+        let text = &source.text;
+        let pieces = fast::pieces::pieces_for(text);
+        if pieces > 1 {
+            let new = |first, parts| Streamed {
+                first,
+                ..Streamed::with_room(parts)
+            };
+            let take = |s: &mut Streamed, units: Option<&_>, materials: Option<&_>, p| {
+                s.take(source, units, materials, p);
+            };
+            if let Pieces::Read(raw, read) = fast::pieces::read(text, pieces, &new, &take) {
+                return (Streamed::merge(read), Some(*raw));
+            }
+        }
+        // At the size the file's `[[part]]` lines say: a list doubled up
+        // to its size holds up to twice the parts.
+        let mut streamed = Streamed::with_room(super::part_tables(text) as usize);
+        let raw = fast::parse_streaming(text, fast::CHUNK, &mut |units, materials, p| {
+            streamed.take(source, units, materials, p);
+        });
+        (streamed, raw)
+    }
+
+    /// The pieces' parts as one reading made them: in order, up to the
+    /// first part that is not valid, whose error is the first in the file.
+    /// (Each piece made its parts with the same units and materials, the
+    /// preamble's: `fast::pieces`.)
+    fn merge(pieces: Vec<Streamed>) -> Streamed {
+        let mut pieces = pieces.into_iter();
+        let mut all = pieces.next().unwrap_or_default();
+        let more: usize = pieces.as_slice().iter().map(|p| p.items.len()).sum();
+        all.items.reserve_exact(more);
+        for mut p in pieces {
+            all.off |= p.off;
+            all.count += p.count;
+            if all.error.is_none() {
+                all.has_real_sizes |= p.has_real_sizes;
+                all.items.append(&mut p.items);
+                all.error = p.error;
+            }
+        }
+        all
     }
 
     /// Not used: the file is read whole first.
@@ -59,7 +110,7 @@ impl Streamed {
         materials: Option<&raw::Materials>,
         p: toml::Spanned<raw::RawPart>,
     ) {
-        let index = self.count;
+        let index = self.first + self.count;
         self.count += 1;
         let q = p.get_ref();
         if q.include.is_some() || q.array.is_some() || q.mirror.is_some() || super::mesh::is_mesh(q)
@@ -174,5 +225,88 @@ impl Streamed {
         let mut items = self.items;
         items.shrink_to_fit();
         Model::rest(ctx, rec, &raw, items, self.count, self.has_real_sizes)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::{Model, fast::pieces::with_pieces};
+    use crate::diag::Source;
+
+    /// `n` parts of every kind the stream takes; `bad` parts (by index)
+    /// with a negative mass, `unknown` ones with an unknown key.
+    fn file(n: usize, bad: &[usize], unknown: &[usize]) -> String {
+        let mut text = String::from(
+            "name = \"pieces\"\nunits = { length = \"mm\", mass = \"g\" }\n[materials]\nfoam = { density = \"30 kg/m^3\" }\n",
+        );
+        for k in 0..n {
+            let mass = if bad.contains(&k) { "-1" } else { "1.5" };
+            let name = if k % 4 == 0 {
+                String::new()
+            } else {
+                format!("name = \"p{k}\"\n")
+            };
+            let extra = if unknown.contains(&k) {
+                "colour = 1\n"
+            } else {
+                ""
+            };
+            text += &match k % 3 {
+                0 => format!(
+                    "[[part]]\n{name}shape = \"point\"\nmass = {mass}\ncenter = [{k}, 0.25, 0]\n{extra}"
+                ),
+                1 => format!(
+                    "[[part]]\n{name}shape = \"box\"\nmaterial = \"foam\"\nsize = [1, 2, {k}]\ncenter = [0, {k}, 0]\n{extra}"
+                ),
+                _ => format!(
+                    "[[part]]\n{name}shape = \"rod\"\nmass = \"{mass} kg\"\nlength = {k}\ncenter = [0, 0, {k}]\n[part.rotation]\naxis = [0, 0, 1]\ndegrees = {k}\n{extra}"
+                ),
+            };
+        }
+        text
+    }
+
+    /// The model, or the error in full, read in `pieces` pieces.
+    fn read(text: &str, pieces: usize) -> String {
+        with_pieces(pieces, || {
+            match Model::parse(&Source::new("p.toml", text)) {
+                Ok(m) => format!("{:?} {} {:?}", m.flattened(), m.count, m.has_real_sizes),
+                Err(d) => format!("error: {d}"),
+            }
+        })
+    }
+
+    fn same_on_one_core_and_in_pieces(text: &str) -> String {
+        let one = read(text, 1);
+        for n in 2..=5 {
+            assert_eq!(read(text, n), one, "{n} pieces");
+        }
+        one
+    }
+
+    #[test]
+    fn a_file_read_in_pieces_gives_the_model_of_one_core() {
+        let one = same_on_one_core_and_in_pieces(&file(60, &[], &[]));
+        assert!(!one.starts_with("error"), "{one}");
+        assert!(
+            one.contains("part 57"),
+            "an unnamed part is numbered in the file"
+        );
+    }
+
+    #[test]
+    fn the_first_invalid_part_in_the_file_is_the_error_however_it_is_read() {
+        for bad in [&[3][..], &[50], &[7, 41], &[58, 2]] {
+            let one = same_on_one_core_and_in_pieces(&file(60, bad, &[]));
+            assert!(one.starts_with("error"), "{one}");
+        }
+    }
+
+    #[test]
+    fn a_refused_key_is_the_error_however_the_file_is_read() {
+        for unknown in [&[5][..], &[44], &[9, 30]] {
+            let one = same_on_one_core_and_in_pieces(&file(60, &[30], unknown));
+            assert!(one.contains("colour"), "{one}");
+        }
     }
 }

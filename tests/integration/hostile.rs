@@ -1015,6 +1015,17 @@ fn fast_path_agrees(text: &[u8]) -> Result<bool, String> {
             ));
         }
     }
+    // Read in pieces on several threads (`fast::pieces`, forced on a small
+    // file): the same, or declined (then read on one core).
+    for n in [2, 3] {
+        if let Some(pieces) = fast::pieces::parse_in_pieces(text, n)
+            && format!("{:#?}", Some(pieces)) != whole
+        {
+            return Err(format!(
+                "the fast path in {n} pieces reads another file:\n{text}"
+            ));
+        }
+    }
     Ok(true)
 }
 
@@ -1030,8 +1041,29 @@ fn refused_with_a_place(text: &str) -> Result<(), String> {
     }
 }
 
+/// The model of `text` (or its error, in full) read on one core and in 3
+/// pieces on as many threads (`fast::pieces`, forced on a small file):
+/// the same.
+fn one_core_and_pieces_agree(text: &[u8]) -> Result<(), String> {
+    let Ok(text) = std::str::from_utf8(text) else {
+        return Ok(());
+    };
+    let model = |pieces| {
+        fast::pieces::with_pieces(pieces, || {
+            let source = massprop::diag::Source::new("h.toml", text);
+            format!("{:?}", massprop::model::Model::parse(&source))
+        })
+    };
+    let one = model(1);
+    if model(3) != one {
+        return Err(format!("read in 3 pieces, another model or error:\n{text}"));
+    }
+    Ok(())
+}
+
 /// `fast_path_agrees`, counting in `taken` the files the fast path took.
 fn fast_path_checked(taken: &Cell<u32>, text: &[u8]) -> Result<(), String> {
+    one_core_and_pieces_agree(text)?;
     if fast_path_agrees(text)? {
         taken.set(taken.get() + 1);
     }

@@ -11,6 +11,18 @@ pub(in crate::model) fn same(text: &str) {
         panic!("{e}");
     }
     assert_eq!(in_chunks_the_same_or_declined(text), 0, "{text}");
+    in_pieces_the_same_or_declined(text);
+}
+
+/// Read in 2 to 5 pieces (`pieces`): the same `RawFile` as read on one
+/// core, or declined; never another.
+fn in_pieces_the_same_or_declined(text: &str) {
+    let whole = format!("{:?}", parse(text));
+    for n in 2..=5 {
+        if let Some(raw) = pieces::parse_in_pieces(text, n) {
+            assert_eq!(format!("{:?}", Some(raw)), whole, "{n} pieces:\n{text}");
+        }
+    }
 }
 
 /// Read in chunks of 1 to 40 tokens: the same `RawFile` as read whole,
@@ -213,4 +225,58 @@ fn what_toml_or_the_files_form_refuses_is_declined() {
     declines("[[part]]\nshape = \"point\"\nmass = 1979-05-27\n");
     declines("name = 1\n");
     declines("[[part]]\nshape = \"point\"\n[[part.x]]\n");
+}
+
+/// `n` parts, some unnamed, in the file's units.
+fn many_parts(n: usize) -> String {
+    let mut text = String::from("name = \"n\"\nunits = { length = \"mm\" }\n");
+    for i in 0..n {
+        let name = if i % 3 == 0 {
+            String::new()
+        } else {
+            format!("name = \"p{i}\"\n")
+        };
+        text += &format!(
+            "\n[[part]]\n{name}shape = \"box\"\nmass = {i}.5\nsize = [1, 2, 3]\ncenter = [{i}, 0, 0]\n"
+        );
+    }
+    text
+}
+
+#[test]
+fn a_file_read_in_pieces_reads_as_on_one_core() {
+    let text = many_parts(40);
+    let whole = format!("{:?}", parse(&text));
+    for n in 2..=7 {
+        let raw = pieces::parse_in_pieces(&text, n).expect("read in pieces");
+        assert_eq!(format!("{:?}", Some(raw)), whole, "{n} pieces");
+    }
+}
+
+#[test]
+fn a_header_line_inside_a_multi_line_string_is_no_place_to_cut() {
+    // The second piece would begin inside the string: declined, and the
+    // file read on one core as it is.
+    let mut text = many_parts(4);
+    text += "\n[[part]]\nname = \"\"\"\n[[part]]\nshape = \"box\"\n\"\"\"\nshape = \"point\"\nmass = 1\ncenter = [0, 0, 0]\n";
+    text += &many_parts(4).replace("name = \"n\"\nunits = { length = \"mm\" }\n", "");
+    assert!(parse(&text).is_some());
+    same(&text);
+    for n in 2..=9 {
+        if let Some(raw) = pieces::parse_in_pieces(&text, n) {
+            assert_eq!(format!("{:?}", Some(raw)), format!("{:?}", parse(&text)));
+        }
+    }
+}
+
+#[test]
+fn a_table_of_the_file_after_its_parts_declines_the_pieces() {
+    // `[units]` after the parts: the later pieces' parts would have been
+    // made without it.
+    let text =
+        many_parts(10).replace("units = { length = \"mm\" }\n", "") + "[units]\nlength = \"mm\"\n";
+    assert!(parse(&text).is_some());
+    for n in 2..=5 {
+        assert!(pieces::parse_in_pieces(&text, n).is_none(), "{n} pieces");
+    }
 }
