@@ -21,7 +21,6 @@
 pub mod labels;
 mod legend;
 pub mod outline;
-mod sheet;
 pub mod view;
 mod walks;
 
@@ -31,11 +30,10 @@ use crate::units::Dim;
 use labels::{Placer, Rect};
 use legend::{legend_lines, write_legend};
 use outline::{Marker, Outline, V3};
-use sheet::Sheet;
 use std::fmt::Write as _;
 pub use view::View;
 use view::{Projector, num, pair};
-use walks::{Sink, Survey};
+use walks::{Drawn, Last, Met, Sink, Survey, each_part, key};
 
 /// What to draw besides the body.
 #[derive(Debug, Clone, Default)]
@@ -90,25 +88,12 @@ pub fn svg(model: &Model, summary: &Summary, o: &Options) -> String {
     String::from_utf8(out).expect("invariant: the drawing is UTF-8")
 }
 
-/// The body drawn: an SVG document, written to `w` as it is made (two
-/// views at once where there are two cores).
+/// The body drawn: an SVG document, written to `w` as it is made.
 pub fn write_svg(
     model: &Model,
     summary: &Summary,
     o: &Options,
     w: &mut dyn std::io::Write,
-) -> std::io::Result<()> {
-    let two = std::thread::available_parallelism().is_ok_and(|n| n.get() >= 2);
-    write_svg_on(model, summary, o, w, two)
-}
-
-/// `write_svg`, two views at once or not (`two`).
-fn write_svg_on(
-    model: &Model,
-    summary: &Summary,
-    o: &Options,
-    w: &mut dyn std::io::Write,
-    two: bool,
 ) -> std::io::Result<()> {
     let survey = Survey::of(model);
     let body = Body::of(model, summary, o, survey.extent);
@@ -148,59 +133,120 @@ fn write_svg_on(
     // NOTE: a walk per view, each written straight out as it is made: a
     // view's parts held apart until the end would hold the SVG twice
     // (187 MB for 100,000 parts); a walk costs a small part of that time.
-    // With two cores, two views are drawn at once (issue 33, item 4): the
-    // first straight out, the second into a buffer written after it, so
-    // that one view is held at most and the bytes are the one-core
-    // drawing's (`two_views_at_once_draw_the_bytes_of_one_at_a_time`).
-    let at = Sheet {
-        model,
-        survey: &survey,
-        body: &body,
-        o,
-        min_scale,
-    };
+    let mut d = String::new();
+    let mut element = String::new();
     let mut small = 0;
-    let mut v = 0;
-    while v < cells.len() {
-        if let Some(next) = cells.get(v + 1).filter(|_| two) {
-            let mut buffer: Vec<u8> = Vec::new();
-            let (n, done) = std::thread::scope(|scope| {
-                let worker = std::thread::Builder::new().spawn_scoped(scope, || {
-                    let mut aside = Sink {
-                        s: String::new(),
-                        w: &mut buffer,
-                        error: None,
-                    };
-                    at.view(next, false, &mut aside);
-                    aside.spill(true);
-                });
-                let n = at.view(&cells[v], v == 0, &mut out);
-                let done = match worker {
-                    Ok(h) => {
-                        h.join().unwrap_or_else(|e| std::panic::resume_unwind(e));
-                        true
-                    }
-                    Err(_) => false,
-                };
-                (n, done)
-            });
-            small += n;
-            if done {
-                out.spill(true);
-                if out.error.is_none()
-                    && let Err(e) = out.w.write_all(&buffer)
-                {
-                    out.error = Some(e);
+    for (v, cell) in cells.iter().enumerate() {
+        // The view's placing, for tools (and the tests): pixels per
+        // length unit, and where the file's origin lies on the page.
+        let s = &mut out.s;
+        let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
+        let _ = write!(s, "{}", cell.projector.scale);
+        s.push_str("\" data-origin=\"");
+        let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
+        s.push_str("\">\n");
+        let mut seen = Drawn::default();
+        // NOTE: cut-outs are drawn after every other part, in a second
+        // walk when there are any: a hole is drawn over the parts it is
+        // cut from, not hidden under them or under the parts after it.
+        let passes: &[bool] = if survey.seen.cut {
+            &[false, true]
+        } else {
+            &[false]
+        };
+        for &cuts in passes {
+            let mut last = Last::default();
+            // Whether the part met last belongs to the other walk.
+            let mut other = false;
+            each_part(model, &mut |met| {
+                if out.error.is_some() {
+                    return;
                 }
-                v += 2;
-                continue;
-            }
-            // No second thread: the next view drawn after this one.
-            v += 1;
-            continue;
+                let (part, group, own) = match met {
+                    Met::Part(part, group, own) => (part, group, own),
+                    // Each as a copy `last.again` finds below.
+                    Met::Again(n) => {
+                        if other {
+                            return;
+                        }
+                        if last.drawn {
+                            seen.again += n;
+                        } else if v == 0 {
+                            small += n;
+                        }
+                        return;
+                    }
+                };
+                other = part.spec.removed != cuts;
+                if other {
+                    return;
+                }
+                let colour = key(survey.kind, part, group);
+                if last.again(own, colour, part) {
+                    if last.drawn {
+                        seen.again += 1;
+                    } else {
+                        small += usize::from(v == 0);
+                    }
+                    return;
+                }
+                last.drawn = true;
+                let class = survey.keys.get(colour) % 9;
+                let cut = if part.spec.removed { " cut" } else { "" };
+                let outline = outline::of(part);
+                element.clear();
+                match &outline {
+                    Outline::Marker(kind, at) => {
+                        marker(
+                            &mut element,
+                            *kind,
+                            cell.projector.point(at),
+                            PALETTE[class],
+                            cut,
+                        );
+                    }
+                    Outline::Pieces(pieces) => {
+                        if !drawn(outline.size()) {
+                            last.drawn = false;
+                            small += usize::from(v == 0);
+                            return;
+                        }
+                        d.clear();
+                        pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
+                        let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                    }
+                }
+                seen.draw(&mut out.s, own, &element);
+                out.spill(false);
+            });
         }
-        small += at.view(&cells[v], v == 0, &mut out);
-        v += 1;
+        let s = &mut out.s;
+        // The symbols' labels keep to the room between the view's own
+        // words above and below (`frame`).
+        let [x, y] = cell.at;
+        let bounds = Rect([
+            x + 2.0,
+            y + ABOVE,
+            x + cell.size[0] - 2.0,
+            y + cell.size[1] - BELOW,
+        ]);
+        symbols(s, &cell.projector, &body, o, bounds);
+        let note = frame(s, cell, model.units.length);
+        if seen.again > 0 {
+            // Beside the view's label.
+            let n = seen.again;
+            let plural = if n == 1 { "y" } else { "ies" };
+            text(
+                s,
+                note,
+                &format!("{n} coincident cop{plural} not drawn again"),
+                None,
+            );
+        }
+        s.push_str("</g>\n");
+        // Its outlines forgotten before the next view's are drawn.
+        drop(seen);
+        out.spill(false);
     }
     let legend = legend_lines(&survey, small, &body, o);
     debug_assert_eq!(legend.len(), lines, "the legend's height was known");
