@@ -223,11 +223,13 @@ fn deviations_are_invariant_under_a_rigid_motion_of_the_whole_body() {
     // principal moment by twice its axis's angle (dλ = pᵀ dI p).
     let bounds = &b["error_bounds"];
     // NOTE: the σ are formed from the parts as the walk places them, each
-    // number rounded in f64 2.3e6 mm out (`Frame::place`); the composed
-    // body is placed whole (`compose::placed`), and its bounds no longer
-    // carry that rounding. Measured, it moves a σ by 1.4e-9 of itself
-    // (the thinnest size, 6 mm, against the distance): `walk` allows 7×.
-    let walk = 1e-8;
+    // number rounded in f64 at |origin|₁ = 3.3e6 mm out (`Frame::place`:
+    // (4 + ρ) units of that reach, ρ ≤ 12 for the turn); the composed body
+    // is placed whole (`compose::placed`), and its bounds no longer carry
+    // that rounding. A σ formed from a 6 mm size moves by up to that
+    // rounding over the size, and twice it through a square: 2 (4 + 12)
+    // u · 3.3e6 / 6, with u = 2⁻⁵³ (measured: 1.4e-9 of itself, 0.5 of it).
+    let walk = 2.0 * 16.0 * (f64::EPSILON / 2.0) * 3.3e6 / 6.0;
     let rel = |v: &Value, e: &Value| e.as_f64().unwrap() / v.as_f64().unwrap().abs();
     let mass_rel = rel(&b["mass"], &bounds["mass"]);
     assert!(close(
