@@ -13,6 +13,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 mod help;
 mod reference;
 mod render;
+mod robot;
 mod terminal;
 mod uncertainty;
 use help::*;
@@ -214,6 +215,9 @@ pub struct DiffArgs {
     pub names: bool,
 
     #[command(flatten)]
+    pub robot: robot::RobotArgs,
+
+    #[command(flatten)]
     pub accuracy: AccuracyArgs,
 
     #[command(flatten)]
@@ -375,6 +379,9 @@ pub struct ReportArgs {
 
     #[command(flatten)]
     pub uncertainty: uncertainty::UncertaintyArgs,
+
+    #[command(flatten)]
+    pub robot: robot::RobotArgs,
 }
 
 /// What every command that reports one body takes: the file, the output
@@ -426,6 +433,7 @@ impl BodyArgs {
                 predicted: false,
             },
             full: false,
+            configuration: Default::default(),
         }
     }
 }
@@ -607,6 +615,7 @@ impl Cli {
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
+                options.configuration = a.robot.configuration();
                 Request::Report(options)
             }
             Command::Budget(a) => Request::Budget(a.body.options(
@@ -663,6 +672,7 @@ impl Cli {
                 about: a.about.clone(),
                 link: a.link.clone(),
                 includes: a.includes.includes(),
+                configuration: a.robot.configuration(),
             }),
             Command::Render(a) => Request::Render(a.options()),
             Command::Materials(a) => Request::Materials(commands::materials::Options {

@@ -11,6 +11,7 @@ pub mod init;
 pub mod materials;
 pub mod render;
 pub mod report;
+pub mod robot;
 
 use crate::diag::Diagnostic;
 use crate::io::{FileId, write_atomically_with};

@@ -26,6 +26,7 @@ mod params;
 mod parts;
 mod place;
 pub mod raw;
+mod robot_body;
 pub mod rotation;
 pub mod schema;
 mod solids;
@@ -37,6 +38,7 @@ pub mod walk;
 pub use copies::{Copies, push_copy_name};
 pub use frame::Frame;
 pub use include::Includes;
+pub use robot_body::{BodyLink, LinkInertial};
 pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};

@@ -13,7 +13,10 @@
 mod mjcf;
 mod orient;
 mod sdf;
+mod tree;
 mod urdf;
+
+pub use tree::tree;
 
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};

@@ -1,0 +1,146 @@
+//! A robot as a composite body: each link a sub-assembly placed in its
+//! parent link's frame (at the configuration the caller chose), holding
+//! the link's inertial as a given-inertia part (`shapes::inertia`) and its
+//! child links' sub-assemblies; the roots placed in the report frame. So
+//! the composer, its bounds, the precision modes, `--only` (a link's
+//! subtree) and every table and JSON key of a part file's report apply
+//! unchanged.
+//!
+//! The robot's own types stay with `robot` (a later layer): it hands over
+//! each link as a `BodyLink`, SI (kg, m, kg·m²), which is all this needs.
+
+use super::rotation::Orientation;
+use super::{Frame, Include, Item, Model};
+use crate::numeric::M3;
+use crate::part::{MassSpec, Part, Place, Spec};
+use crate::units::FileUnits;
+use std::ops::Range;
+use std::sync::Arc;
+
+/// A link's inertial, SI: its tensor about its centre in the inertial
+/// frame, turned by `rotation` (columns: the inertial frame's axes in the
+/// link's) into the link frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LinkInertial {
+    pub mass: f64,
+    pub center: [f64; 3],
+    pub tensor: M3<f64>,
+    pub rotation: Option<M3<f64>>,
+    /// Its `<inertial>` element in the robot file.
+    pub span: Range<usize>,
+}
+
+/// A link, its frame placed in its parent's (a root's in the report
+/// frame): a point p of the link frame is `origin + turn p` there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyLink {
+    pub name: String,
+    /// An index into the links given with it, before it.
+    pub parent: Option<usize>,
+    pub origin: [f64; 3],
+    /// None: not turned.
+    pub turn: Option<M3<f64>>,
+    /// None: massless.
+    pub inertial: Option<LinkInertial>,
+    /// Its element in the robot file.
+    pub span: Range<usize>,
+}
+
+fn orientation(m: &Option<M3<f64>>) -> Orientation {
+    match m {
+        Some(m) => Orientation::Matrix(Box::new(*m)),
+        None => Orientation::Identity,
+    }
+}
+
+impl Model {
+    /// The body of `links` (each after its parent), named `name`.
+    pub fn of_robot(name: Option<String>, links: &[BodyLink]) -> Model {
+        let mut children: Vec<Vec<usize>> = vec![Vec::new(); links.len()];
+        let mut roots = Vec::new();
+        for (i, l) in links.iter().enumerate() {
+            match l.parent {
+                Some(p) => children[p].push(i),
+                None => roots.push(i),
+            }
+        }
+        // Children after parents: each link's model made after its
+        // children's, from the last link back.
+        let mut made: Vec<Option<Arc<Model>>> = vec![None; links.len()];
+        for i in (0..links.len()).rev() {
+            let l = &links[i];
+            let mut items = Vec::with_capacity(children[i].len() + 1);
+            let mut count = 0;
+            if let Some(inertial) = &l.inertial {
+                items.push(Item::Part {
+                    part: part(&l.name, inertial),
+                    real: None,
+                    copies: None,
+                    tag: None,
+                });
+                count += 1;
+            }
+            for &c in &children[i] {
+                let (inc, n) = include(&links[c], made[c].take().expect("a child made first"));
+                items.push(inc);
+                count += n;
+            }
+            made[i] = Some(Arc::new(Model {
+                name: Some(l.name.clone()),
+                items: Arc::new(items),
+                count,
+                ..Model::empty(FileUnits::default())
+            }));
+        }
+        let mut items = Vec::with_capacity(roots.len());
+        let mut count = 0;
+        for r in roots {
+            let (inc, n) = include(&links[r], made[r].take().expect("every link made"));
+            items.push(inc);
+            count += n;
+        }
+        Model {
+            name,
+            items: Arc::new(items),
+            count,
+            ..Model::empty(FileUnits::default())
+        }
+    }
+}
+
+/// A link's sub-assembly, and the parts it holds.
+fn include(l: &BodyLink, model: Arc<Model>) -> (Item, usize) {
+    let count = model.count;
+    let item = Item::Include(Box::new(Include {
+        name: l.name.clone(),
+        frame: Frame::of_link(l.origin, orientation(&l.turn)),
+        model,
+        span: l.span.clone(),
+        copies: None,
+        tol: None,
+        tag: None,
+    }));
+    (item, count)
+}
+
+/// A link's inertial as a given-inertia part named for the link.
+fn part(name: &str, i: &LinkInertial) -> Part {
+    Part {
+        name: name.to_string(),
+        named: true,
+        spec: Spec {
+            mass: MassSpec::Given(i.mass),
+            place: Place::Inertia(crate::shapes::inertia::Given {
+                center: i.center,
+                inertia: Box::new(i.tensor),
+                orientation: orientation(&i.rotation),
+            }),
+            removed: false,
+            placed: Default::default(),
+        },
+        assembly: Vec::new(),
+        span: i.span.clone(),
+        tol: None,
+        material: None,
+    }
+}
