@@ -200,11 +200,11 @@ impl Robot {
                     range: l.range.clone(),
                     message: match d.format {
                         Dialect::Mjcf => format!(
-                            "body {:?} has no `<inertial>`: composed massless (MuJoCo would take its inertia from its geoms, which massprop does not yet)",
-                            l.name
+                            "body \"{}\" has no `<inertial>`: composed massless (MuJoCo would take its inertia from its geoms, which massprop does not yet)",
+                            crate::diag::shorten(&l.name)
                         ),
                         Dialect::Urdf | Dialect::Sdf => {
-                            format!("link {:?} has no `<inertial>`: composed massless", l.name)
+                            format!("link \"{}\" has no `<inertial>`: composed massless", crate::diag::shorten(&l.name))
                         }
                     },
                 }),
@@ -213,8 +213,8 @@ impl Robot {
                         out.push(Note {
                             range: i.range.clone(),
                             message: format!(
-                                "link {:?}: its inertial is not physically valid ({why}); composed as written (`massprop check` judges it by each engine's rule)",
-                                l.name
+                                "link \"{}\": its inertial is not physically valid ({why}); composed as written (`massprop check` judges it by each engine's rule)",
+                                crate::diag::shorten(&l.name)
                             ),
                         });
                     }
@@ -234,8 +234,8 @@ impl Robot {
             out.push(Note {
                 range: joint.range.clone(),
                 message: format!(
-                    "joint {:?} at {x} is beyond its {side} limit {limit} ({}); the value is used as given",
-                    joint.name,
+                    "joint \"{}\" at {x} is beyond its {side} limit {limit} ({}); the value is used as given",
+                    crate::diag::shorten(&joint.name),
                     if joint.motion == Motion::Prismatic { "m" } else { "rad" }
                 ),
             });
