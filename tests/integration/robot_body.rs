@@ -1,0 +1,201 @@
+//! A robot description as a whole body (`report ROBOT`, issue 34 items 1
+//! and 4): against Pinocchio (`tests/oracle/pinocchio_oracle.py`, when the
+//! interpreter `MASSPROP_ORACLE_PYTHON`, else `python3`, has `pin`), and
+//! against exact references that need no Python: a robot and the same body
+//! written as a part file compose to the same bits; a link turned by a
+//! quarter turn moves its centre as the turn says.
+
+use crate::common::{massprop, scratch_files};
+use serde_json::Value;
+use std::path::Path;
+use std::process::Command;
+
+fn json(path: &Path, args: &[&str]) -> Value {
+    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
+    argv.extend(args);
+    let out = massprop(&argv);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+fn bits(v: &Value) -> Vec<u64> {
+    match v {
+        Value::Number(n) => vec![n.as_f64().unwrap().to_bits()],
+        Value::Array(a) => a.iter().flat_map(bits).collect(),
+        _ => panic!("{v}"),
+    }
+}
+
+const ARM: &str = r#"<robot name="two">
+  <link name="base"><inertial><origin xyz="0 0 0.5"/><mass value="2"/>
+    <inertia ixx="0.25" ixy="0" ixz="0" iyy="0.5" iyz="0" izz="0.75"/></inertial></link>
+  <link name="tip"><inertial><origin xyz="0 0.25 0"/><mass value="0.5"/>
+    <inertia ixx="0.125" ixy="0.0625" ixz="0" iyy="0.25" iyz="0" izz="0.375"/></inertial></link>
+  <joint name="hinge" type="revolute"><parent link="base"/><child link="tip"/>
+    <origin xyz="1 0 0"/><axis xyz="0 0 1"/><limit lower="-1" upper="1"/></joint>
+</robot>
+"#;
+
+const SAME: &str = r#"
+[[part]]
+name = "base"
+shape = "inertia"
+mass = 2
+center = [0, 0, 0.5]
+inertia = [[0.25, 0, 0], [0, 0.5, 0], [0, 0, 0.75]]
+
+[[part]]
+name = "tip"
+shape = "inertia"
+mass = 0.5
+center = [1, 0.25, 0]
+inertia = [[0.125, 0.0625, 0], [0.0625, 0.25, 0], [0, 0, 0.375]]
+"#;
+
+#[test]
+fn a_robot_and_its_part_file_compose_to_the_same_bits() {
+    let robot = scratch_files("robot_body", "same", &[("two.urdf", ARM)]);
+    let part = scratch_files("robot_body", "same_part", &[("two.toml", SAME)]);
+    let (r, p) = (json(&robot, &[]), json(&part, &[]));
+    for key in ["mass", "center_of_mass", "inertia_com", "principal_moments"] {
+        assert_eq!(bits(&r[key]), bits(&p[key]), "{key}: {} vs {}", r[key], p[key]);
+    }
+}
+
+#[test]
+fn a_quarter_turn_of_the_joint_turns_the_childs_centre_about_the_axis() {
+    let robot = scratch_files("robot_body", "quarter", &[("two.urdf", ARM)]);
+    let v = json(&robot, &["--joints", "hinge=90 deg"]);
+    // The tip's centre (0, 0.25, 0) in its frame turns to (−0.25, 0, 0),
+    // at x = 1: (0.75, 0, 0); the base's at (0, 0, 0.5).
+    let c: Vec<f64> = v["center_of_mass"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let want = [0.5 * 0.75 / 2.5, 0.0, 2.0 * 0.5 / 2.5];
+    for k in 0..3 {
+        assert!((c[k] - want[k]).abs() < 1e-15, "{c:?} vs {want:?}");
+    }
+}
+
+#[test]
+fn an_unknown_joint_is_refused_with_the_nearest_name() {
+    let robot = scratch_files("robot_body", "unknown", &[("two.urdf", ARM)]);
+    let out = massprop(&["report", robot.to_str().unwrap(), "--joints", "hinje=1"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(stderr.contains("`--joints`") && stderr.contains("did you mean `hinge`?"), "{stderr}");
+}
+
+#[test]
+fn a_value_beyond_a_limit_is_a_warning_naming_the_limit() {
+    let robot = scratch_files("robot_body", "limit", &[("two.urdf", ARM)]);
+    let out = massprop(&["report", robot.to_str().unwrap(), "--joints", "hinge=2"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("beyond its upper limit 1"), "{stderr}");
+}
+
+#[test]
+fn a_sweep_has_one_sample_per_value_with_its_joints() {
+    let robot = scratch_files("robot_body", "sweep", &[("two.urdf", ARM)]);
+    let v = json(&robot, &["--sweep", "hinge=-1..1:5"]);
+    let samples = v["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 5);
+    assert_eq!(samples[0]["joints"]["hinge"], -1.0);
+    assert_eq!(samples[4]["joints"]["hinge"], 1.0);
+    // The mass never moves; the centre does.
+    assert!(samples.iter().all(|s| s["mass"] == 2.5));
+    assert_ne!(samples[0]["center_of_mass"], samples[4]["center_of_mass"]);
+}
+
+#[test]
+fn only_a_link_reports_its_subtree() {
+    let robot = scratch_files("robot_body", "only", &[("two.urdf", ARM)]);
+    let v = json(&robot, &["--only", "tip"]);
+    assert_eq!(v["mass"], 0.5);
+}
+
+#[test]
+fn a_link_without_an_inertial_is_massless_and_named() {
+    let text = ARM.replace(
+        r#"<link name="tip"><inertial><origin xyz="0 0.25 0"/><mass value="0.5"/>
+    <inertia ixx="0.125" ixy="0.0625" ixz="0" iyy="0.25" iyz="0" izz="0.375"/></inertial></link>"#,
+        r#"<link name="tip"/>"#,
+    );
+    let robot = scratch_files("robot_body", "massless", &[("two.urdf", &text)]);
+    let out = massprop(&["report", robot.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("link \"tip\" has no `<inertial>`: composed massless"), "{stderr}");
+}
+
+#[test]
+fn joints_on_a_part_file_are_refused() {
+    let part = scratch_files("robot_body", "part_joints", &[("two.toml", SAME)]);
+    let out = massprop(&["report", part.to_str().unwrap(), "--joints", "a=1"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn every_example_robot_reports_as_a_whole_body() {
+    for dir in ["shapes/robots", "tests/robots"] {
+        for e in std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)).unwrap() {
+            let p = e.unwrap().path();
+            if p.extension().is_none_or(|x| x == "md") {
+                continue;
+            }
+            let out = massprop(&["report", p.to_str().unwrap(), "--format", "json"]);
+            // Readable files report; the others are refused with a place.
+            match out.status.code() {
+                Some(0) => {
+                    let _: Value = serde_json::from_slice(&out.stdout).unwrap();
+                }
+                Some(2) => assert!(out.stdout.is_empty(), "{p:?}"),
+                c => panic!("{p:?}: {c:?}"),
+            }
+        }
+    }
+}
+
+/// The interpreter to try: `MASSPROP_ORACLE_PYTHON`, else `python3`.
+fn python() -> String {
+    std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
+}
+
+#[test]
+fn the_whole_body_agrees_with_pinocchio() {
+    let python = python();
+    let has = Command::new(&python)
+        .args(["-c", "import pinocchio"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !has {
+        eprintln!(
+            "skipped: the Pinocchio oracle needs Python with the pin package (`pip install pin`); \
+             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
+        );
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/pinocchio_oracle.py");
+    let out = Command::new(&python)
+        .arg(&script)
+        .args(["--massprop", env!("CARGO_BIN_EXE_massprop"), "--cases", "6"])
+        .output()
+        .expect("the oracle script runs");
+    assert!(
+        out.status.success(),
+        "the Pinocchio oracle found disagreements:\n{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
