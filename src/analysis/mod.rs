@@ -105,7 +105,11 @@ pub fn load_source_reading(
 /// The rest of the pipeline for a model already made (a part file parsed,
 /// or a robot description's body, `robot::body`): `--only`, the analysis
 /// resolved, the summary.
-pub fn load_model(source: Source, mut model: Model, settings: &Settings) -> Result<Loaded, Diagnostic> {
+pub fn load_model(
+    source: Source,
+    mut model: Model,
+    settings: &Settings,
+) -> Result<Loaded, Diagnostic> {
     let only = match &settings.only {
         Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
         None => None,

@@ -91,7 +91,10 @@ fn sweep(
             principal_moments: s.principal_moments,
         });
     }
-    let read = std::fs::canonicalize(loading.source.path()).ok().into_iter().collect();
+    let read = std::fs::canonicalize(loading.source.path())
+        .ok()
+        .into_iter()
+        .collect();
     Ok(Outcome {
         stdout: super::Stdout::Text(super::robot::render_samples(
             &loading.source.name,

@@ -92,7 +92,7 @@ impl Loading {
             set.push((j, x));
         }
         let values = self.robot.values(&set);
-        let model = self.robot.model(&values);
+        let model = crate::model::Model::of_robot_at(&self.robot, &values);
         let mut loaded = analysis::load_model(self.source.clone(), model, settings)?;
         loaded.summary.warnings = self
             .robot
@@ -201,11 +201,7 @@ pub struct Sample {
 }
 
 /// The samples' document: JSON, or a table.
-pub fn render_samples(
-    name: &str,
-    samples: &[Sample],
-    format: crate::output::Format,
-) -> String {
+pub fn render_samples(name: &str, samples: &[Sample], format: crate::output::Format) -> String {
     use crate::output::Format;
     match format {
         Format::Json => {
@@ -214,7 +210,8 @@ pub fn render_samples(
                 "units": { "mass": "kg", "length": "m", "inertia": "kg*m^2", "angle": "rad" },
                 "samples": samples,
             });
-            let mut s = serde_json::to_string_pretty(&doc).expect("invariant: plain numbers and strings");
+            let mut s =
+                serde_json::to_string_pretty(&doc).expect("invariant: plain numbers and strings");
             s.push('\n');
             s
         }
@@ -227,8 +224,16 @@ pub fn render_samples(
                 .unwrap_or_default();
             header.extend(
                 [
-                    "mass (kg)", "x (m)", "y (m)", "z (m)", "Ixx (kg·m²)", "Iyy", "Izz", "Ixy",
-                    "Ixz", "Iyz",
+                    "mass (kg)",
+                    "x (m)",
+                    "y (m)",
+                    "z (m)",
+                    "Ixx (kg·m²)",
+                    "Iyy",
+                    "Izz",
+                    "Ixy",
+                    "Ixz",
+                    "Iyz",
                 ]
                 .map(String::from),
             );

@@ -38,7 +38,6 @@ pub mod walk;
 pub use copies::{Copies, push_copy_name};
 pub use frame::Frame;
 pub use include::Includes;
-pub use robot_body::{BodyLink, LinkInertial};
 pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};

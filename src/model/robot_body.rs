@@ -6,8 +6,9 @@
 //! subtree) and every table and JSON key of a part file's report apply
 //! unchanged.
 //!
-//! The robot's own types stay with `robot` (a later layer): it hands over
-//! each link as a `BodyLink`, SI (kg, m, kg·m²), which is all this needs.
+//! Each link is handed to the builder as a `BodyLink`, SI (kg, m, kg·m²):
+//! its frame in its parent's at the configuration (`robot::kinematics`)
+//! and its inertial.
 
 use super::rotation::Orientation;
 use super::{Frame, Include, Item, Model};
@@ -21,7 +22,7 @@ use std::sync::Arc;
 /// frame, turned by `rotation` (columns: the inertial frame's axes in the
 /// link's) into the link frame.
 #[derive(Clone, Debug, PartialEq)]
-pub struct LinkInertial {
+pub(super) struct LinkInertial {
     pub mass: f64,
     pub center: [f64; 3],
     pub tensor: M3<f64>,
@@ -33,7 +34,7 @@ pub struct LinkInertial {
 /// A link, its frame placed in its parent's (a root's in the report
 /// frame): a point p of the link frame is `origin + turn p` there.
 #[derive(Clone, Debug, PartialEq)]
-pub struct BodyLink {
+pub(super) struct BodyLink {
     pub name: String,
     /// An index into the links given with it, before it.
     pub parent: Option<usize>,
@@ -54,8 +55,57 @@ fn orientation(m: &Option<M3<f64>>) -> Orientation {
 }
 
 impl Model {
+    /// The body of `robot` with its joints at `values` (one per joint of
+    /// its tree, `Robot::values`): each link placed in its parent's
+    /// through its joints.
+    pub fn of_robot_at(robot: &crate::robot::body::Robot, values: &[f64]) -> Model {
+        let d = &robot.description;
+        let t = &robot.tree;
+        // Parents before children: breadth first from the roots.
+        let children = t.children();
+        let mut order: Vec<usize> = t.roots().collect();
+        let mut k = 0;
+        while k < order.len() {
+            order.extend(children[order[k]].iter().copied());
+            k += 1;
+        }
+        let mut at = vec![usize::MAX; d.links.len()];
+        for (n, &i) in order.iter().enumerate() {
+            at[i] = n;
+        }
+        let links: Vec<BodyLink> =
+            order
+                .iter()
+                .map(|&i| {
+                    let l = &d.links[i];
+                    let pose = t.relative(i, values);
+                    BodyLink {
+                        name: l.name.clone(),
+                        parent: t.links[i].parent.map(|p| at[p]),
+                        origin: pose.p,
+                        turn: (!pose.unturned()).then_some(pose.r),
+                        // NOTE: a mass of exactly 0 is massless whatever its
+                        // tensor (a tensor without mass has no centre to
+                        // place it at); `notes` says so.
+                        inertial: l.inertial.as_ref().filter(|i| i.mass != 0.0).map(|i| {
+                            LinkInertial {
+                                mass: i.mass,
+                                center: i.pos,
+                                tensor: i.tensor.matrix(),
+                                rotation: i.rotation,
+                                span: i.range.clone(),
+                            }
+                        }),
+                        span: l.range.clone(),
+                    }
+                })
+                .collect();
+        Model::of_robot(d.name.clone(), &links)
+    }
+
+
     /// The body of `links` (each after its parent), named `name`.
-    pub fn of_robot(name: Option<String>, links: &[BodyLink]) -> Model {
+    fn of_robot(name: Option<String>, links: &[BodyLink]) -> Model {
         let mut children: Vec<Vec<usize>> = vec![Vec::new(); links.len()];
         let mut roots = Vec::new();
         for (i, l) in links.iter().enumerate() {

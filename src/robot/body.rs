@@ -1,7 +1,7 @@
 //! A robot description as one composite body (`report`, `diff`, and a part
 //! file's `include`): its links at a configuration (`--joints`, followers
-//! followed, unset joints at their zero), handed to the model as
-//! sub-assemblies (`model::Model::of_robot`), with the warnings of what is
+//! followed, unset joints at their zero), which the model composes as
+//! sub-assemblies (`model::Model::of_robot_at`), with the warnings of what is
 //! composed as written (a link without an inertial, one that is not
 //! physically valid, a value beyond a joint's limits). docs/robots.md,
 //! "The whole robot", is the contract.
@@ -9,7 +9,6 @@
 use super::kinematics::{Motion, Tree};
 use super::{Description, Dialect, Tensor};
 use crate::diag::{Diagnostic, Source};
-use crate::model::{BodyLink, LinkInertial, Model};
 use crate::units::{self, Dim};
 
 /// A robot description read whole: its links and its tree.
@@ -46,46 +45,6 @@ impl Robot {
         // (`joints`): here every follower has a leader's value.
         let _ = self.tree.follow(&mut v);
         v
-    }
-
-    /// The body at the joint values `values` (`values`).
-    pub fn model(&self, values: &[f64]) -> Model {
-        let d = &self.description;
-        let t = &self.tree;
-        // Parents before children: breadth first from the roots.
-        let children = t.children();
-        let mut order: Vec<usize> = t.roots().collect();
-        let mut k = 0;
-        while k < order.len() {
-            order.extend(children[order[k]].iter().copied());
-            k += 1;
-        }
-        let mut at = vec![usize::MAX; d.links.len()];
-        for (n, &i) in order.iter().enumerate() {
-            at[i] = n;
-        }
-        let links: Vec<BodyLink> = order
-            .iter()
-            .map(|&i| {
-                let l = &d.links[i];
-                let pose = t.relative(i, values);
-                BodyLink {
-                    name: l.name.clone(),
-                    parent: t.links[i].parent.map(|p| at[p]),
-                    origin: pose.p,
-                    turn: (!pose.unturned()).then_some(pose.r),
-                    inertial: l.inertial.as_ref().map(|i| LinkInertial {
-                        mass: i.mass,
-                        center: i.pos,
-                        tensor: i.tensor.matrix(),
-                        rotation: i.rotation,
-                        span: i.range.clone(),
-                    }),
-                    span: l.range.clone(),
-                }
-            })
-            .collect();
-        Model::of_robot(d.name.clone(), &links)
     }
 
     /// Read `--joints` (`flag` names the flag in messages): `name=value`
@@ -186,7 +145,10 @@ impl Robot {
         if unit.is_empty() {
             return Ok(number);
         }
-        units::parse_quantity(text, dim).map_err(|e| bad(e.to_string()))
+        units::parse_quantity(text, dim).map_err(|e| match e {
+            units::UnitError::WrongDim { unit, .. } => bad(format!("`{unit}` is not its unit")),
+            e => bad(e.to_string()),
+        })
     }
 
     /// The warnings of the body at `values`: links without an inertial,
@@ -208,6 +170,13 @@ impl Robot {
                         }
                     },
                 }),
+                Some(i) if i.mass == 0.0 => out.push(Note {
+                    range: i.range.clone(),
+                    message: format!(
+                        "link \"{}\" has mass 0: composed massless (its tensor left out)",
+                        crate::diag::shorten(&l.name)
+                    ),
+                }),
                 Some(i) => {
                     if let Some(why) = invalid(i.mass, &i.tensor) {
                         out.push(Note {
@@ -222,7 +191,9 @@ impl Robot {
             }
         }
         for (j, joint) in self.tree.joints.iter().enumerate() {
-            let Some((lo, hi)) = joint.limits else { continue };
+            let Some((lo, hi)) = joint.limits else {
+                continue;
+            };
             let x = values[j];
             let (side, limit) = if x < lo {
                 ("lower", lo)

@@ -28,10 +28,7 @@ pub struct Pose {
 const I3: M3<f64> = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
 
 impl Pose {
-    pub const IDENTITY: Pose = Pose {
-        p: [0.0; 3],
-        r: I3,
-    };
+    pub const IDENTITY: Pose = Pose { p: [0.0; 3], r: I3 };
 
     /// `self` after `inner`: a point of `inner`'s child frame placed
     /// through `inner`, then through `self`.
@@ -259,10 +256,7 @@ mod tests {
     fn a_turn_about_an_anchor_keeps_the_anchor_in_place() {
         let a = [1.0, 2.0, 0.5];
         let p = Pose::turn_about(a, [0.0, 0.6, 0.8], 1.1);
-        let moved = Pose::IDENTITY.then(&p).then(&Pose {
-            p: a,
-            r: I3,
-        });
+        let moved = Pose::IDENTITY.then(&p).then(&Pose { p: a, r: I3 });
         for k in 0..3 {
             assert!(close(moved.p[k], a[k]), "{moved:?}");
         }

@@ -63,7 +63,13 @@ fn a_robot_and_its_part_file_compose_to_the_same_bits() {
     let part = scratch_files("robot_body", "same_part", &[("two.toml", SAME)]);
     let (r, p) = (json(&robot, &[]), json(&part, &[]));
     for key in ["mass", "center_of_mass", "inertia_com", "principal_moments"] {
-        assert_eq!(bits(&r[key]), bits(&p[key]), "{key}: {} vs {}", r[key], p[key]);
+        assert_eq!(
+            bits(&r[key]),
+            bits(&p[key]),
+            "{key}: {} vs {}",
+            r[key],
+            p[key]
+        );
     }
 }
 
@@ -92,7 +98,10 @@ fn an_unknown_joint_is_refused_with_the_nearest_name() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
-    assert!(stderr.contains("`--joints`") && stderr.contains("did you mean `hinge`?"), "{stderr}");
+    assert!(
+        stderr.contains("`--joints`") && stderr.contains("did you mean `hinge`?"),
+        "{stderr}"
+    );
 }
 
 #[test]
@@ -135,7 +144,10 @@ fn a_link_without_an_inertial_is_massless_and_named() {
     let out = massprop(&["report", robot.to_str().unwrap()]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert!(stderr.contains("link \"tip\" has no `<inertial>`: composed massless"), "{stderr}");
+    assert!(
+        stderr.contains("link \"tip\" has no `<inertial>`: composed massless"),
+        "{stderr}"
+    );
 }
 
 #[test]

@@ -108,7 +108,11 @@ fn link_named(
             .unwrap_or_default();
         xml.error(
             v.range.clone(),
-            format!("{} of {owner} names no link: {}{near}", v.name, quoted(&v.text)),
+            format!(
+                "{} of {owner} names no link: {}{near}",
+                v.name,
+                quoted(&v.text)
+            ),
         )
     })
 }
@@ -125,7 +129,10 @@ fn set_parent(
     if t.links[child].parent.is_some() {
         return Err(xml.error(
             at.range.clone(),
-            format!("{} of {owner}: the link already has a parent joint", at.name),
+            format!(
+                "{} of {owner}: the link already has a parent joint",
+                at.name
+            ),
         ));
     }
     let mut p = Some(parent);
@@ -218,17 +225,24 @@ fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 .transpose()
         };
         let limits = match (kind.text.as_str(), limit) {
-            ("revolute" | "prismatic", Some(_)) => {
-                limits(Some(bound("lower")?.unwrap_or(0.0)), Some(bound("upper")?.unwrap_or(0.0)))
-            }
+            ("revolute" | "prismatic", Some(_)) => limits(
+                Some(bound("lower")?.unwrap_or(0.0)),
+                Some(bound("upper")?.unwrap_or(0.0)),
+            ),
             _ => None,
         };
         if let Some(m) = child(j, "mimic") {
             let leader = xml.required(m, "joint", &owner)?;
             let number = |n: &str, default: f64| -> Result<f64, Diagnostic> {
-                xml.attr(m, n).map_or(Ok(default), |v| xml.number(&v, &owner))
+                xml.attr(m, n)
+                    .map_or(Ok(default), |v| xml.number(&v, &owner))
             };
-            mimics.push((t.joints.len(), leader, number("offset", 0.0)?, number("multiplier", 1.0)?));
+            mimics.push((
+                t.joints.len(),
+                leader,
+                number("offset", 0.0)?,
+                number("multiplier", 1.0)?,
+            ));
         }
         t.links[c].place = place;
         t.links[c].joints.push(t.joints.len());
@@ -280,7 +294,11 @@ fn joint_named(xml: &Xml, t: &Tree, v: &Value, owner: &str) -> Result<usize, Dia
                 .unwrap_or_default();
             xml.error(
                 v.range.clone(),
-                format!("{} of {owner} names no joint: {}{near}", v.name, quoted(&v.text)),
+                format!(
+                    "{} of {owner} names no joint: {}{near}",
+                    v.name,
+                    quoted(&v.text)
+                ),
             )
         })
 }
@@ -322,9 +340,10 @@ fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tree, Diagnost
         .find(|c| qname(*c) == "world")
         .or_else(|| models.get(1).copied())
         .or_else(|| {
-            models
-                .first()
-                .and_then(|m| m.children().find(|c| qname(*c) == "model" || qname(*c) == "include"))
+            models.first().and_then(|m| {
+                m.children()
+                    .find(|c| qname(*c) == "model" || qname(*c) == "include")
+            })
         });
     if let Some(n) = unsupported {
         return Err(xml
@@ -355,7 +374,12 @@ fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tree, Diagnost
     let old = sdf_node
         .attribute("version")
         .and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
-        .is_some_and(|minor| sdf_node.attribute("version").is_some_and(|v| v.starts_with("1.")) && minor < 7);
+        .is_some_and(|minor| {
+            sdf_node
+                .attribute("version")
+                .is_some_and(|v| v.starts_with("1."))
+                && minor < 7
+        });
     for j in children(*model, "joint") {
         let name = xml.required(j, "name", "`<model>`")?;
         let owner = format!("joint {}", quoted(&name.text));
@@ -490,9 +514,15 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
     // Default classes may set a joint's type, axis, anchor, range or ref,
     // or a body's frame: not read, so refused where they would apply.
     for def in root.descendants().filter(|n| qname(*n) == "default") {
-        for n in def.children().filter(|n| matches!(qname(*n), "joint" | "body")) {
+        for n in def
+            .children()
+            .filter(|n| matches!(qname(*n), "joint" | "body"))
+        {
             if let Some(a) = n.attributes().find(|a| {
-                matches!(a.name(), "type" | "axis" | "pos" | "ref" | "range" | "limited")
+                matches!(
+                    a.name(),
+                    "type" | "axis" | "pos" | "ref" | "range" | "limited"
+                )
             }) {
                 let v = xml.attr(n, a.name()).expect("the attribute is there");
                 return Err(xml
@@ -533,7 +563,10 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
             }
             t.links[i].parent = up.and_then(|n| index.get(&n.id()).copied());
             t.links[i].place = place;
-            for j in body.children().filter(|c| matches!(qname(*c), "joint" | "freejoint")) {
+            for j in body
+                .children()
+                .filter(|c| matches!(qname(*c), "joint" | "freejoint"))
+            {
                 let name = j
                     .attribute("name")
                     .map_or_else(|| format!("joint {}", t.joints.len() + 1), str::to_string);
@@ -617,7 +650,10 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 if list.len() > 5 {
                     return Err(xml.error(
                         v.range.clone(),
-                        format!("`polycoef` of {owner}: expected at most 5 numbers, found {}", list.len()),
+                        format!(
+                            "`polycoef` of {owner}: expected at most 5 numbers, found {}",
+                            list.len()
+                        ),
                     ));
                 }
                 coef = [0.0; 5];
@@ -626,7 +662,10 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
             if t.joints[y].follows.is_some() {
                 return Err(xml.error(
                     j1.range.clone(),
-                    format!("`joint1` of {owner}: joint {} already follows another joint", quoted(&j1.text)),
+                    format!(
+                        "`joint1` of {owner}: joint {} already follows another joint",
+                        quoted(&j1.text)
+                    ),
                 ));
             }
             t.joints[y].follows = Some(Follow { leader: x, coef });
