@@ -54,6 +54,21 @@ pub fn source(path: &str) -> Result<Input, Diagnostic> {
     }
 }
 
+/// The body `file` names, a part file or a robot description at
+/// `c`'s joints (`--sweep` is the caller's to refuse or run).
+pub fn load_any(file: &str, settings: &Settings, c: &Configuration) -> Result<Loaded, Diagnostic> {
+    match source(file)? {
+        Input::Robot(source, format) => Loading::new(source, format, c)?.load(settings, &[]),
+        Input::Part(source) => {
+            c.refuse_for_part_file(file)?;
+            match source {
+                Some(s) => analysis::load_source(s, settings),
+                None => analysis::load(file, settings),
+            }
+        }
+    }
+}
+
 /// What a command's file is.
 pub enum Input {
     /// A part file, read already unless standard input or `*.toml`.
