@@ -327,10 +327,12 @@ impl Ctx<'_> {
         match kind {
             // Only part files: `.env` or `.git/config` (where a CI checkout
             // keeps its token) would be parsed as TOML and quoted in the error.
-            Kind::Include if !crate::io::is_toml(&canonical) => {
+            Kind::Include
+                if !crate::io::is_toml(&canonical) && !crate::robot::may_be_robot(&canonical) =>
+            {
                 return Err(self
-                    .err(inc.span(), format!("{the} is not a part file (`*.toml`)"))
-                    .help("`include` names a part file, after following symlinks"));
+                    .err(inc.span(), format!("{the} is not a part file (`*.toml`) or a robot description (`*.urdf`, `*.sdf`, `*.xml`)"))
+                    .help("`include` names a part file or a robot description, after following symlinks"));
             }
             // Only mesh files, by their extension (after following
             // symlinks): nothing else is read and quoted as a mesh.
@@ -478,7 +480,7 @@ impl Ctx<'_> {
 
 /// The keys of a part that includes a file, besides `name` (the JSON
 /// Schema reads them too: `model::schema`).
-pub(super) const INCLUDE_KEYS: [&str; 4] = ["include", "origin", "rotation", "params"];
+pub(super) const INCLUDE_KEYS: [&str; 5] = ["include", "origin", "rotation", "params", "joints"];
 
 impl Ctx<'_> {
     /// Read `[[part]] include = ".."` at position `index` into the
@@ -544,13 +546,27 @@ impl Ctx<'_> {
                 .help("a sub-assembly cannot contain itself")
                 .with_chain_in_message());
         }
+        let robot = !crate::io::is_toml(&canonical);
+        if let (false, Some(j)) = (robot, &p.joints) {
+            return Err(self
+                .err(j.span(), "`joints` sets the joints of an included robot description, and this include names a part file")
+                .help("a robot description is a `*.urdf`, `*.sdf` or `*.xml` (URDF, SDFormat, MJCF)"));
+        }
+        if let (true, Some(table)) = (robot, &p.params) {
+            return Err(self
+                .err(table.span(), "`params` passes parameters to an included part file, and this include names a robot description")
+                .help("an included robot takes `joints = { NAME = VALUE }`"));
+        }
         let passes = match &p.params {
             Some(table) => self.include_params(table, &shown_name)?,
             None => Vec::new(),
         };
         let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
-        let child = match files.cache.get(&key) {
+        let child = if robot {
+            std::sync::Arc::new(self.robot_include(inc, &shown, &shown_name, p.joints.as_deref())?)
+        } else {
+            match files.cache.get(&key) {
             Some(m) => m.clone(),
             None => {
                 // An error inside says where it was included from, as
@@ -623,6 +639,7 @@ impl Ctx<'_> {
                 files.cache.insert(key, child.clone());
                 child
             }
+        }
         };
 
         let base_name = match (&p.name, &child.name) {

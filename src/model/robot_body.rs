@@ -194,3 +194,68 @@ fn part(name: &str, i: &LinkInertial) -> Part {
         material: None,
     }
 }
+
+impl super::Ctx<'_> {
+    /// `include = "arm.urdf"` with `joints = { elbow = "30 deg" }`: the
+    /// robot description `shown` names, read whole, at those joints (the
+    /// rest at their zero), as a body of its own in SI. Errors inside the
+    /// robot file say where it was included from; a joint's, at its key.
+    pub(super) fn robot_include(
+        &self,
+        inc: &toml::Spanned<String>,
+        shown: &std::path::Path,
+        shown_name: &str,
+        joints: Option<&super::raw::Params>,
+    ) -> Result<Model, crate::diag::Diagnostic> {
+        use crate::robot::Dialect;
+        use crate::robot::body::Robot;
+        let included_here = |d: crate::diag::Diagnostic| {
+            let (line, col) = self.source.line_col(inc.span().start);
+            d.included_from(format!("{}:{line}:{col}", self.source.name))
+        };
+        let bytes = std::fs::read(shown).map_err(|e| {
+            self.err(
+                inc.span(),
+                format!("cannot read the included file `{shown_name}`: {e}"),
+            )
+        })?;
+        let source = crate::io::source_of(shown_name, bytes)
+            .map_err(included_here)?
+            .read_from(shown.to_path_buf());
+        let format = Dialect::of_path(shown)
+            .or_else(|| Dialect::of_text(&source.text))
+            .ok_or_else(|| {
+                self.err(
+                    inc.span(),
+                    format!("the included `{shown_name}` is not a robot description: its root element is not `<robot>`, `<sdf>` or `<mujoco>`"),
+                )
+            })?;
+        let robot = Robot::read(&source, format).map_err(included_here)?;
+        if robot.tree.follow(&mut robot.tree.zeros()).is_none() {
+            return Err(self.err(
+                inc.span(),
+                format!("the joints of `{shown_name}` follow each other in a cycle (`<mimic>` or joint equalities): no configuration satisfies them"),
+            ));
+        }
+        let mut set = Vec::new();
+        for (key, q) in joints.map(|t| t.get_ref().iter()).into_iter().flatten() {
+            let here = |d: crate::diag::Diagnostic, at: std::ops::Range<usize>| {
+                self.err(at, d.message().to_string())
+            };
+            let j = robot
+                .joint(key.get_ref(), "joints")
+                .map_err(|d| here(d, key.span()))?;
+            let x = match q.get_ref() {
+                super::raw::Quantity::Number(x) if x.is_finite() => *x,
+                super::raw::Quantity::Number(_) => {
+                    return Err(self.err(q.span(), "`joints`: expected a finite joint position"));
+                }
+                super::raw::Quantity::Text(t) => robot
+                    .value(j, t, "joints")
+                    .map_err(|d| here(d, q.span()))?,
+            };
+            set.push((j, x));
+        }
+        Ok(Model::of_robot_at(&robot, &robot.values(&set)))
+    }
+}
