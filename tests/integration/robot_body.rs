@@ -211,3 +211,77 @@ fn the_whole_body_agrees_with_pinocchio() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+fn figures(v: &Value) -> (f64, Vec<f64>, Vec<f64>) {
+    let nums = |x: &Value| -> Vec<f64> { bits(x).into_iter().map(f64::from_bits).collect() };
+    (
+        v["mass"].as_f64().unwrap(),
+        nums(&v["center_of_mass"]),
+        nums(&v["inertia_com"]),
+    )
+}
+
+#[test]
+fn a_robot_included_at_an_origin_is_the_robot_moved_there() {
+    let part = "[[part]]\ninclude = \"two.urdf\"\norigin = [0.5, -2, 3]\njoints = { hinge = \"40 deg\" }\n";
+    let path = scratch_files(
+        "robot_body",
+        "included",
+        &[("two.urdf", ARM), ("with.toml", part)],
+    );
+    let robot = path.with_file_name("two.urdf");
+    let (m, c, i) = figures(&json(&path, &[]));
+    let (m0, c0, i0) = figures(&json(&robot, &["--joints", "hinge=40deg"]));
+    assert_eq!(m, m0);
+    for (k, o) in [0.5, -2.0, 3.0].iter().enumerate() {
+        assert!((c[k] - (c0[k] + o)).abs() < 1e-15, "{c:?} vs {c0:?}");
+    }
+    for k in 0..9 {
+        assert!((i[k] - i0[k]).abs() < 1e-15 * i0[0].abs(), "{i:?} vs {i0:?}");
+    }
+}
+
+#[test]
+fn an_included_robots_unknown_joint_is_refused_at_its_key() {
+    let part = "[[part]]\ninclude = \"two.urdf\"\njoints = { hinje = 1 }\n";
+    let path = scratch_files(
+        "robot_body",
+        "included_bad",
+        &[("two.urdf", ARM), ("with.toml", part)],
+    );
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(stderr.starts_with(&format!("{}:3:12: error: `joints`", path.display())), "{stderr}");
+    assert!(stderr.contains("did you mean `hinge`?"), "{stderr}");
+}
+
+#[test]
+fn joints_on_an_included_part_file_are_refused() {
+    let part = "[[part]]\ninclude = \"same.toml\"\njoints = { hinge = 1 }\n";
+    let path = scratch_files(
+        "robot_body",
+        "joints_on_part",
+        &[("same.toml", SAME), ("with.toml", part)],
+    );
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr.contains(":3:10: error: `joints` sets the joints of an included robot description"), "{stderr}");
+}
+
+#[test]
+fn a_mirrored_pair_of_robots_weighs_twice_one() {
+    let part = "[[part]]\ninclude = \"two.urdf\"\norigin = [0, 1, 0]\nmirror = { normal = [0, 1, 0] }\n";
+    let path = scratch_files(
+        "robot_body",
+        "mirrored",
+        &[("two.urdf", ARM), ("with.toml", part)],
+    );
+    let robot = path.with_file_name("two.urdf");
+    let (m, c, _) = figures(&json(&path, &[]));
+    let (m0, _, _) = figures(&json(&robot, &[]));
+    assert_eq!(m, 2.0 * m0);
+    assert!(c[1].abs() < 1e-15, "{c:?}");
+}
