@@ -238,7 +238,7 @@ pub struct ExportArgs {
         long,
         value_enum,
         value_name = "FORMAT",
-        required_unless_present = "update"
+        required_unless_present_any = ["update", "from_geometry"]
     )]
     pub to: Option<RobotFormat>,
 
@@ -264,14 +264,16 @@ pub struct ExportArgs {
     #[arg(
         long,
         value_name = "ROBOT_FILE",
-        requires = "link",
         conflicts_with = "output"
     )]
     pub update: Option<std::path::PathBuf>,
 
     /// The link (MJCF: body) whose inertial `--update` replaces.
-    #[arg(long, value_name = "NAME", visible_alias = "body", requires = "update")]
+    #[arg(long, value_name = "NAME", visible_alias = "body")]
     pub link: Option<String>,
+
+    #[command(flatten)]
+    pub geometry: robot::GeometryArgs,
 
     /// With `--update`: print the change as a unified diff; write nothing.
     #[arg(long, requires = "update")]
@@ -659,6 +661,7 @@ impl Cli {
                 update: a.update.clone().zip(a.link.clone()),
                 dry_run: a.dry_run,
                 output: a.output.clone(),
+                from_geometry: a.geometry.options(a.link.clone(), a.update.clone(), a.dry_run),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),

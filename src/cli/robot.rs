@@ -27,3 +27,57 @@ impl RobotArgs {
         }
     }
 }
+
+/// `export --from-geometry`'s flags.
+#[derive(Args, Debug, Default)]
+pub struct GeometryArgs {
+    /// FILE is a robot description: compute each link's inertial from its
+    /// `<collision>` or `<visual>` geometry (box, cylinder, sphere, capsule,
+    /// ellipsoid, STL/OBJ meshes), summed per link, and print them (or
+    /// write them with `--update`).
+    #[arg(long, value_enum, value_name = "KIND")]
+    pub from_geometry: Option<GeometryKind>,
+
+    /// With `--from-geometry`: the density, kg/m³ (or with its unit, e.g.
+    /// "1.2 g/cm^3").
+    #[arg(long, value_name = "DENSITY", requires = "from_geometry")]
+    pub density: Option<String>,
+
+    /// With `--from-geometry`: a built-in material instead of `--density`.
+    #[arg(long, value_name = "NAME", requires = "from_geometry")]
+    pub material: Option<String>,
+
+    /// With `--from-geometry`: the directory `package://NAME/` names in
+    /// mesh file names (repeatable).
+    #[arg(long, value_name = "NAME=DIR", requires = "from_geometry")]
+    pub package: Vec<String>,
+}
+
+/// `--from-geometry`'s values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum GeometryKind {
+    /// The `<collision>` elements
+    Collision,
+    /// The `<visual>` elements
+    Visual,
+}
+
+impl GeometryArgs {
+    /// The options, with `--link`, `--update` and `--dry-run` (export's).
+    pub fn options(
+        &self,
+        link: Option<String>,
+        update: Option<std::path::PathBuf>,
+        dry_run: bool,
+    ) -> Option<crate::commands::geometry::FromGeometry> {
+        Some(crate::commands::geometry::FromGeometry {
+            visual: self.from_geometry? == GeometryKind::Visual,
+            density: self.density.clone(),
+            material: self.material.clone(),
+            packages: self.package.clone(),
+            link,
+            update,
+            dry_run,
+        })
+    }
+}

@@ -31,6 +31,9 @@ pub struct Options {
     pub dry_run: bool,
     /// `-o FILE`.
     pub output: Option<String>,
+    /// `--from-geometry`: FILE is a robot description whose links'
+    /// inertials are computed from their geometry.
+    pub from_geometry: Option<super::geometry::FromGeometry>,
 }
 
 /// The inertial of a summary in its link frame: the centre of mass from
@@ -60,6 +63,9 @@ pub fn export_of(s: &Summary, principal: bool) -> Export {
 }
 
 pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
+    if let Some(g) = &o.from_geometry {
+        return super::geometry::run(&o.file, g, &o.settings);
+    }
     if o.principal && o.to.is_some_and(|f| f != Dialect::Mjcf) {
         return Err(Diagnostic::plain(
             "`--principal` is for `--to mjcf` (diaginertia and quat); URDF and SDFormat write the full tensor",
@@ -151,7 +157,7 @@ fn dialect(o: &Options, path: &std::path::Path, source: &Source) -> Result<Diale
 /// (`--dry-run`, `file` None), or written over `file`, said on standard
 /// error (after `stderr`, what was there). Returns standard output and
 /// standard error.
-fn written(
+pub(super) fn written(
     file: Option<crate::io::Rewrite>,
     source: &Source,
     new: &str,

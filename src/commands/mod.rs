@@ -7,6 +7,7 @@ pub mod budget;
 pub mod check;
 pub mod diff;
 pub mod export;
+pub mod geometry;
 pub mod init;
 pub mod materials;
 pub mod render;

@@ -13,9 +13,11 @@
 mod mjcf;
 mod orient;
 mod sdf;
+mod geometry;
 mod tree;
 mod urdf;
 
+pub use geometry::{Geometry, Solid, geometry};
 pub use tree::tree;
 
 use super::{Description, Dialect};
