@@ -101,6 +101,18 @@ fn mesh_path(uri: &str, base: &Path, packages: &[(String, PathBuf)]) -> Result<P
     Ok(base.join(path))
 }
 
+/// The length unit whose factor a mesh's uniform `scale` is: a URDF or
+/// SDFormat mesh's coordinates times its scale are metres.
+fn mesh_unit(scale: [f64; 3]) -> Option<&'static str> {
+    if scale[0] != scale[1] || scale[1] != scale[2] {
+        return None;
+    }
+    [(1.0, "m"), (0.01, "cm"), (0.001, "mm"), (0.0254, "in"), (0.3048, "ft")]
+        .into_iter()
+        .find(|(f, _)| *f == scale[0])
+        .map(|(_, u)| u)
+}
+
 fn point(p: [f64; 3]) -> String {
     format!("[{:?}, {:?}, {:?}]", p[0], p[1], p[2])
 }
@@ -133,9 +145,10 @@ fn part(g: &Geometry, k: usize, made: &str, file: Option<&Path>) -> String {
         }
         Solid::Sphere(r) => format!("shape = \"sphere\"\nradius = {r:?}\n"),
         Solid::Ellipsoid(r) => format!("shape = \"ellipsoid\"\nradii = {}\n", point(*r)),
-        Solid::Mesh { .. } => format!(
-            "shape = \"mesh\"\nfile = {:?}\n",
-            file.expect("a mesh's file resolved").to_string_lossy()
+        Solid::Mesh { scale, .. } => format!(
+            "shape = \"mesh\"\nfile = {:?}\nmesh_unit = {:?}\n",
+            file.expect("a mesh's file resolved").to_string_lossy(),
+            mesh_unit(*scale).expect("a scale checked")
         ),
     };
     t + &shape
@@ -205,8 +218,11 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             };
             let file = match &geo.solid {
                 Solid::Mesh { uri, scale } => {
-                    if *scale != [1.0; 3] {
-                        return Err(at(format!("the mesh's `scale` {scale:?} is not read yet: only 1 1 1")));
+                    if mesh_unit(*scale).is_none() {
+                        return Err(at(format!(
+                            "the mesh's `scale` {} {} {} is not read: a mesh is read with the same scale on each axis, one of a length unit's (1 m, 0.01 cm, 0.001 mm, 0.0254 in, 0.3048 ft)",
+                            scale[0], scale[1], scale[2]
+                        )));
                     }
                     Some(mesh_path(uri, &base, &packages).map_err(at)?)
                 }

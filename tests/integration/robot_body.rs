@@ -285,3 +285,111 @@ fn a_mirrored_pair_of_robots_weighs_twice_one() {
     assert_eq!(m, 2.0 * m0);
     assert!(c[1].abs() < 1e-15, "{c:?}");
 }
+
+/// The numbers of an attribute `name="…"` in `text`, in order.
+fn attr(text: &str, name: &str) -> Vec<f64> {
+    let key = format!(" {name}=\"");
+    text.split(&key)
+        .skip(1)
+        .map(|r| r[..r.find('"').unwrap()].parse().unwrap())
+        .collect()
+}
+
+const GEOMETRY: &str = r#"<robot name="g">
+  <link name="ball"><collision><origin xyz="0.5 0 0"/><geometry><sphere radius="0.05"/></geometry></collision></link>
+  <link name="bracket"><collision><origin xyz="0 0.25 0"/><geometry><mesh filename="package://demo/bracket.stl" scale="0.001 0.001 0.001"/></geometry></collision></link>
+  <link name="bare"/>
+  <joint name="a" type="fixed"><parent link="ball"/><child link="bracket"/></joint>
+  <joint name="b" type="fixed"><parent link="ball"/><child link="bare"/></joint>
+</robot>
+"#;
+
+fn geometry_robot(name: &str) -> std::path::PathBuf {
+    scratch_files("robot_body", name, &[("g.urdf", GEOMETRY)])
+}
+
+fn meshes() -> String {
+    format!("demo={}/shapes/meshes", env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn a_spheres_inertial_from_geometry_is_its_closed_form() {
+    let robot = geometry_robot("sphere");
+    let out = massprop(&[
+        "export", robot.to_str().unwrap(), "--from-geometry", "collision",
+        "--density", "1000", "--link", "ball",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let m = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * 0.05f64.powi(3);
+    let got = attr(&text, "value")[0];
+    assert!((got - m).abs() <= 2.0 * f64::EPSILON * m, "{got} vs {m}");
+    let i = 0.4 * m * 0.05 * 0.05;
+    for k in ["ixx", "iyy", "izz"] {
+        let got = attr(&text, k)[0];
+        assert!((got - i).abs() <= 4.0 * f64::EPSILON * i, "{k}: {got} vs {i}");
+    }
+    assert!(text.contains("<origin xyz=\"0.5 0 0\""), "{text}");
+}
+
+#[test]
+fn a_meshs_inertial_from_geometry_is_the_mesh_readers() {
+    let robot = geometry_robot("mesh");
+    let out = massprop(&[
+        "export", robot.to_str().unwrap(), "--from-geometry", "collision",
+        "--density", "2700", "--link", "bracket", "--package", &meshes(),
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let stl = format!("{}/shapes/meshes/bracket.stl", env!("CARGO_MANIFEST_DIR"));
+    let part = format!(
+        "[[part]]\nshape = \"mesh\"\nfile = {stl:?}\nmesh_unit = \"mm\"\ndensity = 2700\norigin = [0, 0.25, 0]\n"
+    );
+    let path = scratch_files("robot_body", "mesh_part", &[("m.toml", &part)]);
+    let dir = format!("{}/shapes/meshes", env!("CARGO_MANIFEST_DIR"));
+    let v = json(&path, &["--include-root", &dir]);
+    assert_eq!(attr(&text, "value")[0], v["mass"].as_f64().unwrap());
+}
+
+#[test]
+fn a_link_without_geometry_keeps_its_inertial_with_a_note() {
+    let robot = geometry_robot("bare");
+    let out = massprop(&[
+        "export", robot.to_str().unwrap(), "--from-geometry", "visual", "--density", "1000",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(stderr.contains("link \"bare\" has no <visual> geometry: it keeps its inertial"), "{stderr}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn inertials_from_geometry_written_in_place_read_back_as_computed() {
+    let robot = geometry_robot("update");
+    let r = robot.to_str().unwrap();
+    let printed = massprop(&[
+        "export", r, "--from-geometry", "collision", "--material", "steel", "--package", &meshes(),
+    ]);
+    assert_eq!(printed.status.code(), Some(0), "{}", String::from_utf8_lossy(&printed.stderr));
+    let out = massprop(&[
+        "export", r, "--from-geometry", "collision", "--material", "steel", "--package", &meshes(),
+        "--update", r,
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = std::fs::read_to_string(&robot).unwrap();
+    let printed = String::from_utf8_lossy(&printed.stdout);
+    assert_eq!(attr(&text, "value"), attr(&printed, "value"));
+    assert_eq!(attr(&text, "ixx"), attr(&printed, "ixx"));
+}
+
+#[test]
+fn a_package_not_given_is_refused_at_the_geometry() {
+    let robot = geometry_robot("package");
+    let out = massprop(&[
+        "export", robot.to_str().unwrap(), "--from-geometry", "collision", "--density", "1",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    assert!(stderr.contains(":3:24: error: link \"bracket\"") && stderr.contains("--package demo=DIR"), "{stderr}");
+}
