@@ -261,11 +261,7 @@ pub struct ExportArgs {
 
     /// Replace a link's inertial in this URDF, SDFormat or MJCF file,
     /// leaving every other byte as it was.
-    #[arg(
-        long,
-        value_name = "ROBOT_FILE",
-        conflicts_with = "output"
-    )]
+    #[arg(long, value_name = "ROBOT_FILE", conflicts_with = "output")]
     pub update: Option<std::path::PathBuf>,
 
     /// The link (MJCF: body) whose inertial `--update` replaces.
@@ -661,7 +657,9 @@ impl Cli {
                 update: a.update.clone().zip(a.link.clone()),
                 dry_run: a.dry_run,
                 output: a.output.clone(),
-                from_geometry: a.geometry.options(a.link.clone(), a.update.clone(), a.dry_run),
+                from_geometry: a
+                    .geometry
+                    .options(a.link.clone(), a.update.clone(), a.dry_run),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),

@@ -103,8 +103,12 @@ impl Cli {
             // Without `--from-geometry`, `--update` and `--link` go
             // together (with it, each alone: all links, or one printed).
             let missing = match (&a.update, &a.link) {
-                (Some(_), None) => Some("`--update` replaces one link's inertial: give `--link NAME` (or compute every link's with `--from-geometry`)"),
-                (None, Some(_)) => Some("`--link` names the link `--update ROBOT_FILE` replaces: give `--update` (or print that link's inertial from its geometry with `--from-geometry`)"),
+                (Some(_), None) => Some(
+                    "`--update` replaces one link's inertial: give `--link NAME` (or compute every link's with `--from-geometry`)",
+                ),
+                (None, Some(_)) => Some(
+                    "`--link` names the link `--update ROBOT_FILE` replaces: give `--update` (or print that link's inertial from its geometry with `--from-geometry`)",
+                ),
                 _ => None,
             };
             if let Some(m) = missing {

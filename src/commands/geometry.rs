@@ -14,8 +14,8 @@ use super::Outcome;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::output::inertial::{inertial_element, update};
-use crate::robot::read::{Geometry, Solid};
 use crate::robot::Dialect;
+use crate::robot::read::{Geometry, Solid};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -107,10 +107,16 @@ fn mesh_unit(scale: [f64; 3]) -> Option<&'static str> {
     if scale[0] != scale[1] || scale[1] != scale[2] {
         return None;
     }
-    [(1.0, "m"), (0.01, "cm"), (0.001, "mm"), (0.0254, "in"), (0.3048, "ft")]
-        .into_iter()
-        .find(|(f, _)| *f == scale[0])
-        .map(|(_, u)| u)
+    [
+        (1.0, "m"),
+        (0.01, "cm"),
+        (0.001, "mm"),
+        (0.0254, "in"),
+        (0.3048, "ft"),
+    ]
+    .into_iter()
+    .find(|(f, _)| *f == scale[0])
+    .map(|(_, u)| u)
 }
 
 fn point(p: [f64; 3]) -> String {
@@ -196,8 +202,13 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     } else {
         base.clone()
     });
-    includes.roots.extend(packages.iter().map(|(_, d)| d.clone()));
-    let mut read: Vec<PathBuf> = std::fs::canonicalize(source.path()).ok().into_iter().collect();
+    includes
+        .roots
+        .extend(packages.iter().map(|(_, d)| d.clone()));
+    let mut read: Vec<PathBuf> = std::fs::canonicalize(source.path())
+        .ok()
+        .into_iter()
+        .collect();
     let (mut stdout, mut stderr) = (String::new(), String::new());
     let mut computed = Vec::new();
     for i in chosen {
@@ -214,7 +225,10 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
         for (k, geo) in geos[i].iter().enumerate() {
             let at = |m: String| {
-                source.error(geo.range.clone(), format!("link \"{}\": {m}", crate::diag::shorten(name)))
+                source.error(
+                    geo.range.clone(),
+                    format!("link \"{}\": {m}", crate::diag::shorten(name)),
+                )
             };
             let file = match &geo.solid {
                 Solid::Mesh { uri, scale } => {
@@ -235,7 +249,10 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         }
         let loaded = body(&text, &source, &includes, settings)?;
         read.extend(loaded.model.included.iter().cloned());
-        computed.push((name.clone(), super::export::export_of(&loaded.summary, false)));
+        computed.push((
+            name.clone(),
+            super::export::export_of(&loaded.summary, false),
+        ));
     }
     match &g.update {
         None => {
@@ -269,8 +286,14 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
                 })?;
             }
             let links: Vec<&str> = computed.iter().map(|(n, _)| n.as_str()).collect();
-            let (out, err) =
-                super::export::written(file, &target, &new, &links.join("\", \""), g.dry_run, stderr)?;
+            let (out, err) = super::export::written(
+                file,
+                &target,
+                &new,
+                &links.join("\", \""),
+                g.dry_run,
+                stderr,
+            )?;
             Ok(Outcome {
                 stderr: err,
                 ..Outcome::ok(out, read)
@@ -286,7 +309,7 @@ fn body(
     includes: &crate::model::Includes,
     settings: &Settings,
 ) -> Result<analysis::Loaded, Diagnostic> {
-    let source = Source::new(&format!("{} (geometry)", robot.name), text.to_string());
+    let source = Source::new(format!("{} (geometry)", robot.name), text.to_string());
     let model = crate::model::Model::parse_with(&source, includes)?;
     analysis::load_model(source, model, settings)
 }

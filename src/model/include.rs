@@ -564,82 +564,88 @@ impl Ctx<'_> {
         let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
         let child = if robot {
-            std::sync::Arc::new(self.robot_include(inc, &shown, &shown_name, p.joints.as_deref())?)
+            std::sync::Arc::new(self.robot_include(
+                inc,
+                &shown,
+                &shown_name,
+                p.joints.as_deref(),
+            )?)
         } else {
             match files.cache.get(&key) {
-            Some(m) => m.clone(),
-            None => {
-                // An error inside says where it was included from, as
-                // compilers do: one note per level, innermost first.
-                let included_here = |d: Diagnostic| {
-                    let (line, col) = self.source.line_col(inc.span().start);
-                    d.included_from(format!("{}:{line}:{col}", self.source.name))
-                };
-                // An error inside a file that is not a part file at all
-                // (a `secrets.toml`) is said without quoting any of it.
-                let not_a_part_file = || {
-                    self.err(
+                Some(m) => m.clone(),
+                None => {
+                    // An error inside says where it was included from, as
+                    // compilers do: one note per level, innermost first.
+                    let included_here = |d: Diagnostic| {
+                        let (line, col) = self.source.line_col(inc.span().start);
+                        d.included_from(format!("{}:{line}:{col}", self.source.name))
+                    };
+                    // An error inside a file that is not a part file at all
+                    // (a `secrets.toml`) is said without quoting any of it.
+                    let not_a_part_file = || {
+                        self.err(
                         inc.span(),
                         format!("the included `{shown_name}` is not a part file: it has no `[[part]]` table"),
                     )
                     .help("`include` names a part file; its contents are not shown")
-                };
-                let quoted = |looks_like_a_part_file: bool| {
-                    move |d: Diagnostic| {
-                        if looks_like_a_part_file {
-                            included_here(d)
-                        } else {
-                            not_a_part_file()
+                    };
+                    let quoted = |looks_like_a_part_file: bool| {
+                        move |d: Diagnostic| {
+                            if looks_like_a_part_file {
+                                included_here(d)
+                            } else {
+                                not_a_part_file()
+                            }
                         }
-                    }
-                };
-                let (child, looks_like_a_part_file) = match files.parsed.get(&canonical).cloned() {
-                    Some(parsed) => (
-                        parsed.convert(&target, files, &passes),
-                        parsed.looks_like_a_part_file,
-                    ),
-                    None => {
-                        let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                        let looks_like_a_part_file =
-                            super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
-                        let source = crate::io::source_of(&shown_name, bytes)
-                            .map_err(quoted(looks_like_a_part_file))?
-                            .read_from(shown.clone());
-                        // NOTE: a file that may have parameters is parsed
-                        // once and kept (`Parsed`): each other set of
-                        // `params` converts it again, re-evaluating only
-                        // the parameters that change.
-                        let child = if source.text.contains("params") {
-                            files.reads += 1;
-                            Model::raw(&source).and_then(|raw| {
-                                let parsed = Parsed::keep(source, raw);
-                                if parsed.raw.params.is_some() {
-                                    files.parsed.insert(canonical.clone(), parsed.clone());
-                                }
-                                parsed.convert(&target, files, &passes)
-                            })
-                        } else {
-                            files.stack.push((canonical.clone(), shown_name.clone()));
-                            let child = Model::parse_in(&source, files, &passes);
-                            files.stack.pop();
-                            child
+                    };
+                    let (child, looks_like_a_part_file) =
+                        match files.parsed.get(&canonical).cloned() {
+                            Some(parsed) => (
+                                parsed.convert(&target, files, &passes),
+                                parsed.looks_like_a_part_file,
+                            ),
+                            None => {
+                                let bytes = std::fs::read(&shown).map_err(unreadable)?;
+                                let looks_like_a_part_file =
+                                    super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
+                                let source = crate::io::source_of(&shown_name, bytes)
+                                    .map_err(quoted(looks_like_a_part_file))?
+                                    .read_from(shown.clone());
+                                // NOTE: a file that may have parameters is parsed
+                                // once and kept (`Parsed`): each other set of
+                                // `params` converts it again, re-evaluating only
+                                // the parameters that change.
+                                let child = if source.text.contains("params") {
+                                    files.reads += 1;
+                                    Model::raw(&source).and_then(|raw| {
+                                        let parsed = Parsed::keep(source, raw);
+                                        if parsed.raw.params.is_some() {
+                                            files.parsed.insert(canonical.clone(), parsed.clone());
+                                        }
+                                        parsed.convert(&target, files, &passes)
+                                    })
+                                } else {
+                                    files.stack.push((canonical.clone(), shown_name.clone()));
+                                    let child = Model::parse_in(&source, files, &passes);
+                                    files.stack.pop();
+                                    child
+                                };
+                                (child, looks_like_a_part_file)
+                            }
                         };
-                        (child, looks_like_a_part_file)
-                    }
-                };
-                let child = std::sync::Arc::new(child.map_err(|d| {
-                    // A name the included file does not define: said at
-                    // the include's key, in this file.
-                    if passes.iter().any(|p| p.undefined.message() == d.message()) {
-                        d
-                    } else {
-                        quoted(looks_like_a_part_file)(d)
-                    }
-                })?);
-                files.cache.insert(key, child.clone());
-                child
+                    let child = std::sync::Arc::new(child.map_err(|d| {
+                        // A name the included file does not define: said at
+                        // the include's key, in this file.
+                        if passes.iter().any(|p| p.undefined.message() == d.message()) {
+                            d
+                        } else {
+                            quoted(looks_like_a_part_file)(d)
+                        }
+                    })?);
+                    files.cache.insert(key, child.clone());
+                    child
+                }
             }
-        }
         };
 
         let base_name = match (&p.name, &child.name) {

@@ -340,7 +340,6 @@ mod tests {
             units: Default::default(),
             materials: Default::default(),
             params: Default::default(),
-            joints: Default::default(),
             growth: Default::default(),
         };
         ctx.units = ctx

@@ -103,7 +103,6 @@ impl Model {
         Model::of_robot(d.name.clone(), &links)
     }
 
-
     /// The body of `links` (each after its parent), named `name`.
     fn of_robot(name: Option<String>, links: &[BodyLink]) -> Model {
         let mut children: Vec<Vec<usize>> = vec![Vec::new(); links.len()];
@@ -250,9 +249,9 @@ impl super::Ctx<'_> {
                 super::raw::Quantity::Number(_) => {
                     return Err(self.err(q.span(), "`joints`: expected a finite joint position"));
                 }
-                super::raw::Quantity::Text(t) => robot
-                    .value(j, t, "joints")
-                    .map_err(|d| here(d, q.span()))?,
+                super::raw::Quantity::Text(t) => {
+                    robot.value(j, t, "joints").map_err(|d| here(d, q.span()))?
+                }
             };
             set.push((j, x));
         }

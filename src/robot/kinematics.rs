@@ -257,8 +257,8 @@ mod tests {
         let a = [1.0, 2.0, 0.5];
         let p = Pose::turn_about(a, [0.0, 0.6, 0.8], 1.1);
         let moved = Pose::IDENTITY.then(&p).then(&Pose { p: a, r: I3 });
-        for k in 0..3 {
-            assert!(close(moved.p[k], a[k]), "{moved:?}");
+        for (got, want) in moved.p.iter().zip(a) {
+            assert!(close(*got, want), "{moved:?}");
         }
     }
 
@@ -269,10 +269,10 @@ mod tests {
             r: axis_angle([0.0, 0.6, 0.8], 0.7),
         };
         let id = p.then(&p.inverse());
-        for i in 0..3 {
-            assert!(close(id.p[i], 0.0));
-            for j in 0..3 {
-                assert!(close(id.r[i][j], I3[i][j]));
+        assert!(id.p.iter().all(|x| close(*x, 0.0)));
+        for (row, want) in id.r.iter().zip(I3) {
+            for (x, w) in row.iter().zip(want) {
+                assert!(close(*x, w));
             }
         }
     }

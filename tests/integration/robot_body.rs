@@ -237,7 +237,10 @@ fn a_robot_included_at_an_origin_is_the_robot_moved_there() {
         assert!((c[k] - (c0[k] + o)).abs() < 1e-15, "{c:?} vs {c0:?}");
     }
     for k in 0..9 {
-        assert!((i[k] - i0[k]).abs() < 1e-15 * i0[0].abs(), "{i:?} vs {i0:?}");
+        assert!(
+            (i[k] - i0[k]).abs() < 1e-15 * i0[0].abs(),
+            "{i:?} vs {i0:?}"
+        );
     }
 }
 
@@ -253,7 +256,10 @@ fn an_included_robots_unknown_joint_is_refused_at_its_key() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
-    assert!(stderr.starts_with(&format!("{}:3:12: error: `joints`", path.display())), "{stderr}");
+    assert!(
+        stderr.starts_with(&format!("{}:3:12: error: `joints`", path.display())),
+        "{stderr}"
+    );
     assert!(stderr.contains("did you mean `hinge`?"), "{stderr}");
 }
 
@@ -268,12 +274,16 @@ fn joints_on_an_included_part_file_are_refused() {
     let out = massprop(&["report", path.to_str().unwrap()]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
-    assert!(stderr.contains(":3:10: error: `joints` sets the joints of an included robot description"), "{stderr}");
+    assert!(
+        stderr.contains(":3:10: error: `joints` sets the joints of an included robot description"),
+        "{stderr}"
+    );
 }
 
 #[test]
 fn a_mirrored_pair_of_robots_weighs_twice_one() {
-    let part = "[[part]]\ninclude = \"two.urdf\"\norigin = [0, 1, 0]\nmirror = { normal = [0, 1, 0] }\n";
+    let part =
+        "[[part]]\ninclude = \"two.urdf\"\norigin = [0, 1, 0]\nmirror = { normal = [0, 1, 0] }\n";
     let path = scratch_files(
         "robot_body",
         "mirrored",
@@ -316,10 +326,21 @@ fn meshes() -> String {
 fn a_spheres_inertial_from_geometry_is_its_closed_form() {
     let robot = geometry_robot("sphere");
     let out = massprop(&[
-        "export", robot.to_str().unwrap(), "--from-geometry", "collision",
-        "--density", "1000", "--link", "ball",
+        "export",
+        robot.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+        "--density",
+        "1000",
+        "--link",
+        "ball",
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8_lossy(&out.stdout);
     let m = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * 0.05f64.powi(3);
     let got = attr(&text, "value")[0];
@@ -327,7 +348,10 @@ fn a_spheres_inertial_from_geometry_is_its_closed_form() {
     let i = 0.4 * m * 0.05 * 0.05;
     for k in ["ixx", "iyy", "izz"] {
         let got = attr(&text, k)[0];
-        assert!((got - i).abs() <= 4.0 * f64::EPSILON * i, "{k}: {got} vs {i}");
+        assert!(
+            (got - i).abs() <= 4.0 * f64::EPSILON * i,
+            "{k}: {got} vs {i}"
+        );
     }
     assert!(text.contains("<origin xyz=\"0.5 0 0\""), "{text}");
 }
@@ -336,10 +360,23 @@ fn a_spheres_inertial_from_geometry_is_its_closed_form() {
 fn a_meshs_inertial_from_geometry_is_the_mesh_readers() {
     let robot = geometry_robot("mesh");
     let out = massprop(&[
-        "export", robot.to_str().unwrap(), "--from-geometry", "collision",
-        "--density", "2700", "--link", "bracket", "--package", &meshes(),
+        "export",
+        robot.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+        "--density",
+        "2700",
+        "--link",
+        "bracket",
+        "--package",
+        &meshes(),
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = String::from_utf8_lossy(&out.stdout).to_string();
     let stl = format!("{}/shapes/meshes/bracket.stl", env!("CARGO_MANIFEST_DIR"));
     let part = format!(
@@ -355,11 +392,19 @@ fn a_meshs_inertial_from_geometry_is_the_mesh_readers() {
 fn a_link_without_geometry_keeps_its_inertial_with_a_note() {
     let robot = geometry_robot("bare");
     let out = massprop(&[
-        "export", robot.to_str().unwrap(), "--from-geometry", "visual", "--density", "1000",
+        "export",
+        robot.to_str().unwrap(),
+        "--from-geometry",
+        "visual",
+        "--density",
+        "1000",
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stderr}");
-    assert!(stderr.contains("link \"bare\" has no <visual> geometry: it keeps its inertial"), "{stderr}");
+    assert!(
+        stderr.contains("link \"bare\" has no <visual> geometry: it keeps its inertial"),
+        "{stderr}"
+    );
     assert!(out.stdout.is_empty());
 }
 
@@ -368,14 +413,39 @@ fn inertials_from_geometry_written_in_place_read_back_as_computed() {
     let robot = geometry_robot("update");
     let r = robot.to_str().unwrap();
     let printed = massprop(&[
-        "export", r, "--from-geometry", "collision", "--material", "steel", "--package", &meshes(),
+        "export",
+        r,
+        "--from-geometry",
+        "collision",
+        "--material",
+        "steel",
+        "--package",
+        &meshes(),
     ]);
-    assert_eq!(printed.status.code(), Some(0), "{}", String::from_utf8_lossy(&printed.stderr));
+    assert_eq!(
+        printed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&printed.stderr)
+    );
     let out = massprop(&[
-        "export", r, "--from-geometry", "collision", "--material", "steel", "--package", &meshes(),
-        "--update", r,
+        "export",
+        r,
+        "--from-geometry",
+        "collision",
+        "--material",
+        "steel",
+        "--package",
+        &meshes(),
+        "--update",
+        r,
     ]);
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let text = std::fs::read_to_string(&robot).unwrap();
     let printed = String::from_utf8_lossy(&printed.stdout);
     assert_eq!(attr(&text, "value"), attr(&printed, "value"));
@@ -386,10 +456,18 @@ fn inertials_from_geometry_written_in_place_read_back_as_computed() {
 fn a_package_not_given_is_refused_at_the_geometry() {
     let robot = geometry_robot("package");
     let out = massprop(&[
-        "export", robot.to_str().unwrap(), "--from-geometry", "collision", "--density", "1",
+        "export",
+        robot.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+        "--density",
+        "1",
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
-    assert!(stderr.contains(":3:24: error: link \"bracket\"") && stderr.contains("--package demo=DIR"), "{stderr}");
+    assert!(
+        stderr.contains(":3:24: error: link \"bracket\"") && stderr.contains("--package demo=DIR"),
+        "{stderr}"
+    );
 }

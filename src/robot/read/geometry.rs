@@ -14,14 +14,23 @@ use std::ops::Range;
 pub enum Solid {
     /// Full sizes along x, y, z.
     Box([f64; 3]),
-    Cylinder { radius: f64, length: f64 },
+    Cylinder {
+        radius: f64,
+        length: f64,
+    },
     Sphere(f64),
     /// `length` between the hemispheres' centres.
-    Capsule { radius: f64, length: f64 },
+    Capsule {
+        radius: f64,
+        length: f64,
+    },
     Ellipsoid([f64; 3]),
     /// The file as written (`package://…`, `file://…`, or a path) and its
     /// `scale`.
-    Mesh { uri: String, scale: [f64; 3] },
+    Mesh {
+        uri: String,
+        scale: [f64; 3],
+    },
 }
 
 /// One `<collision>` or `<visual>` element.
@@ -49,7 +58,11 @@ pub fn geometry(
         Dialect::Sdf => {
             let models: Vec<Node> = children(root, "model").collect();
             match models.as_slice() {
-                [one] if !one.children().any(|c| matches!(qname(c), "model" | "include")) => {
+                [one]
+                    if !one
+                        .children()
+                        .any(|c| matches!(qname(c), "model" | "include")) =>
+                {
                     children(*one, "link").collect()
                 }
                 _ => {
@@ -122,7 +135,9 @@ fn sdf_pose(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
     {
         return Err(xml.error(
             v.range.clone(),
-            format!("`relative_to` of a geometry's `<pose>` of {owner}: only the link frame is read"),
+            format!(
+                "`relative_to` of a geometry's `<pose>` of {owner}: only the link frame is read"
+            ),
         ));
     }
     let (p, r) = super::sdf::pose(xml, p, "", owner)?;

@@ -10,10 +10,10 @@
 //! values make a valid inertial is the engine checks' question, so negative
 //! masses and moments are read as given.
 
+mod geometry;
 mod mjcf;
 mod orient;
 mod sdf;
-mod geometry;
 mod tree;
 mod urdf;
 
