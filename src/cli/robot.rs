@@ -69,8 +69,8 @@ impl GeometryArgs {
         link: Option<String>,
         update: Option<std::path::PathBuf>,
         dry_run: bool,
-    ) -> Option<crate::commands::geometry::FromGeometry> {
-        Some(crate::commands::geometry::FromGeometry {
+    ) -> Option<crate::commands::export::FromGeometry> {
+        Some(crate::commands::export::FromGeometry {
             visual: self.from_geometry? == GeometryKind::Visual,
             density: self.density.clone(),
             material: self.material.clone(),

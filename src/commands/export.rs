@@ -33,7 +33,25 @@ pub struct Options {
     pub output: Option<String>,
     /// `--from-geometry`: FILE is a robot description whose links'
     /// inertials are computed from their geometry.
-    pub from_geometry: Option<super::geometry::FromGeometry>,
+    pub from_geometry: Option<FromGeometry>,
+}
+
+/// `--from-geometry` and the flags that go with it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FromGeometry {
+    /// `visual`, else `collision`.
+    pub visual: bool,
+    /// `--density`, as typed.
+    pub density: Option<String>,
+    /// `--material`.
+    pub material: Option<String>,
+    /// `--package NAME=DIR`, as typed.
+    pub packages: Vec<String>,
+    /// `--link`: one link only.
+    pub link: Option<String>,
+    /// `--update FILE`.
+    pub update: Option<PathBuf>,
+    pub dry_run: bool,
 }
 
 /// The inertial of a summary in its link frame: the centre of mass from
@@ -63,9 +81,6 @@ pub fn export_of(s: &Summary, principal: bool) -> Export {
 }
 
 pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
-    if let Some(g) = &o.from_geometry {
-        return super::geometry::run(&o.file, g, &o.settings);
-    }
     if o.principal && o.to.is_some_and(|f| f != Dialect::Mjcf) {
         return Err(Diagnostic::plain(
             "`--principal` is for `--to mjcf` (diaginertia and quat); URDF and SDFormat write the full tensor",

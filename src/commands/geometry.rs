@@ -11,6 +11,7 @@
 //! geometry element in the robot file.
 
 use super::Outcome;
+use super::export::FromGeometry;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::output::inertial::{inertial_element, update};
@@ -18,24 +19,6 @@ use crate::robot::Dialect;
 use crate::robot::read::{Geometry, Solid};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-
-/// `--from-geometry` and the flags that go with it.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct FromGeometry {
-    /// `visual`, else `collision`.
-    pub visual: bool,
-    /// `--density`, as typed.
-    pub density: Option<String>,
-    /// `--material`.
-    pub material: Option<String>,
-    /// `--package NAME=DIR`, as typed.
-    pub packages: Vec<String>,
-    /// `--link`: one link only.
-    pub link: Option<String>,
-    /// `--update FILE`.
-    pub update: Option<PathBuf>,
-    pub dry_run: bool,
-}
 
 /// What each part is made of, as its part file writes it.
 fn made_of(g: &FromGeometry) -> Result<String, Diagnostic> {

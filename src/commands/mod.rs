@@ -291,7 +291,10 @@ fn dispatch(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnosti
         Request::Budget(o) => budget::run(o, terminal)?,
         Request::Check(o) => check::run(o, terminal)?,
         Request::Diff(o) => diff::run(o, terminal)?,
-        Request::Export(o) => export::run(o, terminal)?,
+        Request::Export(o) => match &o.from_geometry {
+            Some(g) => geometry::run(&o.file, g, &o.settings)?,
+            None => export::run(o, terminal)?,
+        },
         Request::Materials(o) => materials::run(o, terminal)?,
         Request::Render(o) => render::run(o, terminal)?,
         Request::Init(o) => init::run(o)?,

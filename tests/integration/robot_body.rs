@@ -471,3 +471,63 @@ fn a_package_not_given_is_refused_at_the_geometry() {
         "{stderr}"
     );
 }
+
+#[test]
+fn an_sdformat_leg_turns_about_its_joint_through_the_childs_origin() {
+    // shapes/robots/quadruped_leg.sdf by hand: each link's pose and centre
+    // in the model frame; FL_thigh_joint (axis y, at FL_thigh's origin
+    // (0.19, 0.13, 0.45)) turns the thigh, calf and foot by 0.8 rad.
+    let links: [([f64; 3], f64, [f64; 3], bool); 9] = [
+        ([0.0, 0.0, 0.45], 5.2, [0.0; 3], false),
+        ([0.19, 0.05, 0.45], 0.55, [0.0, 0.012, 0.0], false),
+        (
+            [0.19, 0.13, 0.45],
+            0.95,
+            [-0.00575696, 0.0116627, -0.109582],
+            true,
+        ),
+        (
+            [0.19, 0.13, 0.23],
+            0.106877,
+            [0.0138982, 0.0052336, -0.0988911],
+            true,
+        ),
+        ([0.19, 0.13, 0.03], 0.06, [0.0; 3], true),
+        ([0.19, -0.05, 0.45], 0.55, [0.0, -0.012, 0.0], false),
+        (
+            [0.19, -0.13, 0.45],
+            0.95,
+            [-0.00575696, -0.0116627, -0.109582],
+            false,
+        ),
+        (
+            [0.19, -0.13, 0.23],
+            0.106877,
+            [0.0138982, -0.0052336, -0.0988911],
+            false,
+        ),
+        ([0.19, -0.13, 0.03], 0.06, [0.0; 3], false),
+    ];
+    let (s, c) = 0.8f64.sin_cos();
+    let pivot = [0.19, 0.13, 0.45];
+    let (mut mass, mut moment) = (0.0, [0.0; 3]);
+    for (p, m, o, turned) in links {
+        let mut w: [f64; 3] = std::array::from_fn(|i| p[i] + o[i]);
+        if turned {
+            let d: [f64; 3] = std::array::from_fn(|i| w[i] - pivot[i]);
+            let d = [c * d[0] + s * d[2], d[1], -s * d[0] + c * d[2]];
+            w = std::array::from_fn(|i| pivot[i] + d[i]);
+        }
+        mass += m;
+        for i in 0..3 {
+            moment[i] += m * w[i];
+        }
+    }
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shapes/robots/quadruped_leg.sdf");
+    let v = json(&path, &["--joints", "FL_thigh_joint=0.8"]);
+    let (m, com, _) = figures(&v);
+    assert!((m - mass).abs() < 1e-14);
+    for i in 0..3 {
+        assert!((com[i] - moment[i] / mass).abs() < 1e-15, "{com:?}");
+    }
+}
