@@ -14,6 +14,7 @@ mod explain;
 mod help;
 mod reference;
 mod render;
+mod robot;
 mod terminal;
 mod uncertainty;
 use help::*;
@@ -218,6 +219,9 @@ pub struct DiffArgs {
     pub names: bool,
 
     #[command(flatten)]
+    pub robot: robot::RobotArgs,
+
+    #[command(flatten)]
     pub accuracy: AccuracyArgs,
 
     #[command(flatten)]
@@ -238,7 +242,7 @@ pub struct ExportArgs {
         long,
         value_enum,
         value_name = "FORMAT",
-        required_unless_present = "update"
+        required_unless_present_any = ["update", "from_geometry"]
     )]
     pub to: Option<RobotFormat>,
 
@@ -261,17 +265,15 @@ pub struct ExportArgs {
 
     /// Replace a link's inertial in this URDF, SDFormat or MJCF file,
     /// leaving every other byte as it was.
-    #[arg(
-        long,
-        value_name = "ROBOT_FILE",
-        requires = "link",
-        conflicts_with = "output"
-    )]
+    #[arg(long, value_name = "ROBOT_FILE", conflicts_with = "output")]
     pub update: Option<std::path::PathBuf>,
 
     /// The link (MJCF: body) whose inertial `--update` replaces.
-    #[arg(long, value_name = "NAME", visible_alias = "body", requires = "update")]
+    #[arg(long, value_name = "NAME", visible_alias = "body")]
     pub link: Option<String>,
+
+    #[command(flatten)]
+    pub geometry: robot::GeometryArgs,
 
     /// With `--update`: print the change as a unified diff; write nothing.
     #[arg(long, requires = "update")]
@@ -387,6 +389,9 @@ pub struct ReportArgs {
 
     #[command(flatten)]
     pub uncertainty: uncertainty::UncertaintyArgs,
+
+    #[command(flatten)]
+    pub robot: robot::RobotArgs,
 }
 
 /// What every command that reports one body takes: the file, the output
@@ -438,6 +443,7 @@ impl BodyArgs {
                 predicted: false,
             },
             full: false,
+            configuration: Default::default(),
         }
     }
 }
@@ -620,6 +626,7 @@ impl Cli {
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
+                options.configuration = a.robot.configuration();
                 Request::Report(options)
             }
             Command::Budget(a) => Request::Budget(a.body.options(
@@ -663,6 +670,9 @@ impl Cli {
                 update: a.update.clone().zip(a.link.clone()),
                 dry_run: a.dry_run,
                 output: a.output.clone(),
+                from_geometry: a
+                    .geometry
+                    .options(a.link.clone(), a.update.clone(), a.dry_run),
             }),
             Command::Diff(a) => Request::Diff(commands::diff::Options {
                 old: a.old.clone(),
@@ -676,6 +686,7 @@ impl Cli {
                 about: a.about.clone(),
                 link: a.link.clone(),
                 includes: a.includes.includes(),
+                configuration: a.robot.configuration(),
             }),
             Command::Render(a) => Request::Render(a.options()),
             Command::Explain(a) => Request::Explain(a.options()),

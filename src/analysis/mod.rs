@@ -102,7 +102,18 @@ pub fn load_source_reading(
     settings: &Settings,
     read: &mut Vec<std::path::PathBuf>,
 ) -> Result<Loaded, Diagnostic> {
-    let mut model = Model::parse_reading(&source, &settings.includes, read)?;
+    let model = Model::parse_reading(&source, &settings.includes, read)?;
+    load_model(source, model, settings)
+}
+
+/// The rest of the pipeline for a model already made (a part file parsed,
+/// or a robot description's body, `robot::body`): `--only`, the analysis
+/// resolved, the summary.
+pub fn load_model(
+    source: Source,
+    mut model: Model,
+    settings: &Settings,
+) -> Result<Loaded, Diagnostic> {
     let only = match &settings.only {
         Some(name) => Some(model.only(name).map_err(Diagnostic::plain)?),
         None => None,

@@ -52,6 +52,10 @@ pub enum Kind {
     /// A mesh file answered exactly despite a class of fault it survives,
     /// or welded (`model::mesh::MeshNote`).
     Mesh,
+    /// A robot description's body composed as written: a link without an
+    /// inertial, or one not physically valid, or a joint beyond its
+    /// limits (`robot::body::Note`).
+    Robot,
 }
 
 /// One plausibility warning: where (the file as named, and the span in it)

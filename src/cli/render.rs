@@ -42,6 +42,10 @@ pub struct RenderArgs {
 
     #[command(flatten)]
     pub includes: IncludeArgs,
+
+    /// A robot description's joint positions, as `report --joints`.
+    #[arg(long, value_name = "JOINT=VALUE,…", allow_hyphen_values = true)]
+    pub joints: Option<String>,
 }
 
 /// `render --view`'s values.
@@ -86,6 +90,10 @@ impl RenderArgs {
                     ..Default::default()
                 },
                 ..Settings::default()
+            },
+            configuration: commands::robot::Configuration {
+                joints: self.joints.clone(),
+                sweep: Vec::new(),
             },
         }
     }

@@ -97,6 +97,27 @@ impl Cli {
                 .check_rules()
                 .map_err(|m| command.error(clap::error::ErrorKind::ArgumentConflict, m))?;
         }
+        if let super::Command::Export(a) = &cli.command
+            && a.geometry.from_geometry.is_none()
+        {
+            // Without `--from-geometry`, `--update` and `--link` go
+            // together (with it, each alone: all links, or one printed).
+            let missing = match (&a.update, &a.link) {
+                (Some(_), None) => Some(
+                    "`--update` replaces one link's inertial: give `--link NAME` (or compute every link's with `--from-geometry`)",
+                ),
+                (None, Some(_)) => Some(
+                    "`--link` names the link `--update ROBOT_FILE` replaces: give `--update` (or print that link's inertial from its geometry with `--from-geometry`)",
+                ),
+                _ => None,
+            };
+            if let Some(m) = missing {
+                let export = command
+                    .find_subcommand_mut("export")
+                    .expect("invariant: `export` is a subcommand");
+                return Err(export.error(clap::error::ErrorKind::MissingRequiredArgument, m));
+            }
+        }
         if let super::Command::Check(a) = &cli.command
             && a.paths.iter().filter(|p| p.as_os_str() == "-").count() > 1
         {

@@ -31,6 +31,9 @@ pub struct Options {
     pub about: Option<String>,
     /// `--link`: the link compared when a side is a robot description.
     pub link: Option<String>,
+    /// `--joints`, applied to each side that is a robot description (as a
+    /// whole body, without `--link`).
+    pub configuration: super::robot::Configuration,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
@@ -39,12 +42,37 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let settings = settings(o);
     // A robot description on either side: a part file against a link.
     let (old_robot, new_robot) = (robot_source(&o.old)?, robot_source(&o.new)?);
-    if old_robot.is_some() || new_robot.is_some() {
+    if let Some(s) = o.configuration.sweep.first() {
+        return Err(Diagnostic::plain(format!(
+            "`--sweep {s}`: `diff` compares two bodies at one configuration each; `--joints` sets it"
+        )));
+    }
+    if (old_robot.is_some() || new_robot.is_some()) && o.link.is_some() {
+        if o.configuration.joints.is_some() {
+            return Err(Diagnostic::plain(
+                "`--joints` poses a robot as a whole body, and `--link` compares one link's inertial, which no joint moves: give one of them",
+            ));
+        }
         return against_link(o, &settings, old_robot, new_robot, terminal);
     }
-    refuse_link_flags(o)?;
-    let old = analysis::load(&o.old, &settings)?;
-    let new = analysis::load(&o.new, &settings)?;
+    if old_robot.is_none() && new_robot.is_none() {
+        refuse_link_flags(o)?;
+        o.configuration.refuse_for_part_file(&o.old)?;
+    } else if o.about.is_some() {
+        return Err(Diagnostic::plain(
+            "`--about` sets the link frame with `--link`: a robot as a whole body is compared in its root frame",
+        ));
+    }
+    // A robot description on a side without `--link`: the whole robot,
+    // at `--joints`.
+    let side = |path: &str, robot: Option<Robot>| match robot {
+        Some((source, format)) => {
+            super::robot::Loading::new(source, format, &o.configuration)?.load(&settings, &[])
+        }
+        None => analysis::load(path, &settings),
+    };
+    let old = side(&o.old, old_robot)?;
+    let new = side(&o.new, new_robot)?;
     let read = [&old, &new].into_iter().flat_map(super::files_of).collect();
     let colour = terminal.stderr.colour;
     let stderr = super::accuracy_warnings(&old, colour) + &super::accuracy_warnings(&new, colour);

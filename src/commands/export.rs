@@ -31,6 +31,27 @@ pub struct Options {
     pub dry_run: bool,
     /// `-o FILE`.
     pub output: Option<String>,
+    /// `--from-geometry`: FILE is a robot description whose links'
+    /// inertials are computed from their geometry.
+    pub from_geometry: Option<FromGeometry>,
+}
+
+/// `--from-geometry` and the flags that go with it.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct FromGeometry {
+    /// `visual`, else `collision`.
+    pub visual: bool,
+    /// `--density`, as typed.
+    pub density: Option<String>,
+    /// `--material`.
+    pub material: Option<String>,
+    /// `--package NAME=DIR`, as typed.
+    pub packages: Vec<String>,
+    /// `--link`: one link only.
+    pub link: Option<String>,
+    /// `--update FILE`.
+    pub update: Option<PathBuf>,
+    pub dry_run: bool,
 }
 
 /// The inertial of a summary in its link frame: the centre of mass from
@@ -151,7 +172,7 @@ fn dialect(o: &Options, path: &std::path::Path, source: &Source) -> Result<Diale
 /// (`--dry-run`, `file` None), or written over `file`, said on standard
 /// error (after `stderr`, what was there). Returns standard output and
 /// standard error.
-fn written(
+pub(super) fn written(
     file: Option<crate::io::Rewrite>,
     source: &Source,
     new: &str,

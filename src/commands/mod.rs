@@ -8,10 +8,12 @@ pub mod check;
 pub mod diff;
 pub mod explain;
 pub mod export;
+pub mod geometry;
 pub mod init;
 pub mod materials;
 pub mod render;
 pub mod report;
+pub mod robot;
 
 use crate::diag::Diagnostic;
 use crate::io::{FileId, write_atomically_with};
@@ -294,7 +296,10 @@ fn dispatch(request: &Request, terminal: &Terminal) -> Result<Outcome, Diagnosti
         Request::Budget(o) => budget::run(o, terminal)?,
         Request::Check(o) => check::run(o, terminal)?,
         Request::Diff(o) => diff::run(o, terminal)?,
-        Request::Export(o) => export::run(o, terminal)?,
+        Request::Export(o) => match &o.from_geometry {
+            Some(g) => geometry::run(&o.file, g, &o.settings)?,
+            None => export::run(o, terminal)?,
+        },
         Request::Materials(o) => materials::run(o, terminal)?,
         Request::Render(o) => render::run(o, terminal)?,
         Request::Explain(o) => explain::run(o)?,

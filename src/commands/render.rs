@@ -1,7 +1,7 @@
 //! `massprop render FILE`: the body drawn as SVG (docs/render.md).
 
 use super::Outcome;
-use crate::analysis::{self, Settings};
+use crate::analysis::Settings;
 use crate::diag::Diagnostic;
 use crate::output::drawing::{self, View};
 
@@ -15,10 +15,12 @@ pub struct Options {
     pub view: Option<View>,
     /// `--only`, `--about`, `--omega`, the includes: as `report`'s.
     pub settings: Settings,
+    /// A robot description's `--joints`.
+    pub configuration: super::robot::Configuration,
 }
 
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
-    let loaded = analysis::load(&o.file, &o.settings)?;
+    let loaded = super::robot::load_any(&o.file, &o.settings, &o.configuration)?;
     let s = &loaded.summary;
     // Report axes to the file's frame: their rows are they in it.
     let to_file = |v: [f64; 3]| std::array::from_fn(|j| (0..3).map(|k| v[k] * s.axes[k][j]).sum());

@@ -17,11 +17,28 @@ pub struct Options {
     pub settings: Settings,
     /// Every table (`--full`), not the short report's essentials.
     pub full: bool,
+    /// A robot description's `--joints` and `--sweep`.
+    pub configuration: super::robot::Configuration,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
-    let loaded = analysis::load(&o.file, &o.settings)?;
+    let loaded = match super::robot::source(&o.file)? {
+        super::robot::Input::Robot(source, format) => {
+            let loading = super::robot::Loading::new(source, format, &o.configuration)?;
+            if !o.configuration.sweep.is_empty() {
+                return sweep(o, &loading, terminal);
+            }
+            loading.load(&o.settings, &[])?
+        }
+        super::robot::Input::Part(source) => {
+            o.configuration.refuse_for_part_file(&o.file)?;
+            match source {
+                Some(s) => analysis::load_source(s, &o.settings)?,
+                None => analysis::load(&o.file, &o.settings)?,
+            }
+        }
+    };
     let read = super::files_of(&loaded);
     let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
     Ok(Outcome {
@@ -37,6 +54,53 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             },
             style: terminal.stdout,
         },
+        stderr,
+        status: 0,
+        read,
+    })
+}
+
+/// `report ROBOT --sweep …`: the body at every sample of the grid.
+fn sweep(
+    o: &Options,
+    loading: &super::robot::Loading,
+    terminal: &super::Terminal,
+) -> Result<Outcome, Diagnostic> {
+    let mut samples = Vec::new();
+    let mut stderr = String::new();
+    for sample in loading.samples(&o.configuration.sweep)? {
+        let loaded = loading.load(&o.settings, &sample)?;
+        if stderr.is_empty() {
+            stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
+        }
+        let s = &loaded.summary;
+        let joints = sample
+            .iter()
+            .map(|&(j, x)| {
+                (
+                    loading.robot.tree.joints[j].name.clone(),
+                    serde_json::Value::from(x),
+                )
+            })
+            .collect();
+        samples.push(super::robot::Sample {
+            joints,
+            mass: s.mass,
+            center_of_mass: s.center_of_mass,
+            inertia_com: s.inertia_com,
+            principal_moments: s.principal_moments,
+        });
+    }
+    let read = std::fs::canonicalize(loading.source.path())
+        .ok()
+        .into_iter()
+        .collect();
+    Ok(Outcome {
+        stdout: super::Stdout::Text(super::robot::render_samples(
+            &loading.source.name,
+            &samples,
+            o.format,
+        )),
         stderr,
         status: 0,
         read,

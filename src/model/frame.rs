@@ -417,6 +417,20 @@ impl Frame {
         )
         .with_mass(f64::from(old.mass))
     }
+
+    /// A robot link's frame in its parent link's (`model::robot_body`):
+    /// turned by `orientation` and moved to `origin`, SI on both sides.
+    pub(super) fn of_link(origin: [f64; 3], orientation: Orientation) -> Frame {
+        Frame {
+            origin,
+            r: orientation.matrix(),
+            orientation,
+            length: 1.0,
+            mass: 1.0,
+            pivot: None,
+            mirror: false,
+        }
+    }
 }
 
 /// A frame moves a placement's numbers (`Place::moved`).

@@ -326,10 +326,12 @@ impl Ctx<'_> {
         match kind {
             // Only part files: `.env` or `.git/config` (where a CI checkout
             // keeps its token) would be parsed as TOML and quoted in the error.
-            Kind::Include if !crate::io::is_toml(&canonical) => {
+            Kind::Include
+                if !crate::io::is_toml(&canonical) && !crate::robot::may_be_robot(&canonical) =>
+            {
                 return Err(self
-                    .err(inc.span(), format!("{the} is not a part file (`*.toml`)"))
-                    .help("`include` names a part file, after following symlinks"));
+                    .err(inc.span(), format!("{the} is not a part file (`*.toml`) or a robot description (`*.urdf`, `*.sdf`, `*.xml`)"))
+                    .help("`include` names a part file or a robot description, after following symlinks"));
             }
             // Only mesh files, by their extension (after following
             // symlinks): nothing else is read and quoted as a mesh.
@@ -477,7 +479,7 @@ impl Ctx<'_> {
 
 /// The keys of a part that includes a file, besides `name` (the JSON
 /// Schema reads them too: `model::schema`).
-pub(super) const INCLUDE_KEYS: [&str; 4] = ["include", "origin", "rotation", "params"];
+pub(super) const INCLUDE_KEYS: [&str; 5] = ["include", "origin", "rotation", "params", "joints"];
 
 impl Ctx<'_> {
     /// Read `[[part]] include = ".."` at position `index` into the
@@ -543,84 +545,105 @@ impl Ctx<'_> {
                 .help("a sub-assembly cannot contain itself")
                 .with_chain_in_message());
         }
+        let robot = !crate::io::is_toml(&canonical);
+        if let (false, Some(j)) = (robot, &p.joints) {
+            return Err(self
+                .err(j.span(), "`joints` sets the joints of an included robot description, and this include names a part file")
+                .help("a robot description is a `*.urdf`, `*.sdf` or `*.xml` (URDF, SDFormat, MJCF)"));
+        }
+        if let (true, Some(table)) = (robot, &p.params) {
+            return Err(self
+                .err(table.span(), "`params` passes parameters to an included part file, and this include names a robot description")
+                .help("an included robot takes `joints = { NAME = VALUE }`"));
+        }
         let passes = match &p.params {
             Some(table) => self.include_params(table, &shown_name)?,
             None => Vec::new(),
         };
         let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
-        let child = match files.cache.get(&key) {
-            Some(m) => m.clone(),
-            None => {
-                // An error inside says where it was included from, as
-                // compilers do: one note per level, innermost first.
-                let included_here = |d: Diagnostic| {
-                    let (line, col) = self.source.line_col(inc.span().start);
-                    d.included_from(format!("{}:{line}:{col}", self.source.name))
-                };
-                // An error inside a file that is not a part file at all
-                // (a `secrets.toml`) is said without quoting any of it.
-                let not_a_part_file = || {
-                    self.err(
+        let child = if robot {
+            std::sync::Arc::new(self.robot_include(
+                inc,
+                &shown,
+                &shown_name,
+                p.joints.as_deref(),
+            )?)
+        } else {
+            match files.cache.get(&key) {
+                Some(m) => m.clone(),
+                None => {
+                    // An error inside says where it was included from, as
+                    // compilers do: one note per level, innermost first.
+                    let included_here = |d: Diagnostic| {
+                        let (line, col) = self.source.line_col(inc.span().start);
+                        d.included_from(format!("{}:{line}:{col}", self.source.name))
+                    };
+                    // An error inside a file that is not a part file at all
+                    // (a `secrets.toml`) is said without quoting any of it.
+                    let not_a_part_file = || {
+                        self.err(
                         inc.span(),
                         format!("the included `{shown_name}` is not a part file: it has no `[[part]]` table"),
                     )
                     .help("`include` names a part file; its contents are not shown")
-                };
-                let quoted = |looks_like_a_part_file: bool| {
-                    move |d: Diagnostic| {
-                        if looks_like_a_part_file {
-                            included_here(d)
-                        } else {
-                            not_a_part_file()
+                    };
+                    let quoted = |looks_like_a_part_file: bool| {
+                        move |d: Diagnostic| {
+                            if looks_like_a_part_file {
+                                included_here(d)
+                            } else {
+                                not_a_part_file()
+                            }
                         }
-                    }
-                };
-                let (child, looks_like_a_part_file) = match files.parsed.get(&canonical).cloned() {
-                    Some(parsed) => (
-                        parsed.convert(&target, files, &passes),
-                        parsed.looks_like_a_part_file,
-                    ),
-                    None => {
-                        let bytes = std::fs::read(&shown).map_err(unreadable)?;
-                        let looks_like_a_part_file =
-                            super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
-                        let source = crate::io::source_of(&shown_name, bytes)
-                            .map_err(quoted(looks_like_a_part_file))?
-                            .read_from(shown.clone());
-                        // NOTE: a file that may have parameters is parsed
-                        // once and kept (`Parsed`): each other set of
-                        // `params` converts it again, re-evaluating only
-                        // the parameters that change.
-                        let child = if source.text.contains("params") {
-                            files.reads += 1;
-                            Model::raw(&source).and_then(|raw| {
-                                let parsed = Parsed::keep(source, raw);
-                                if parsed.raw.params.is_some() {
-                                    files.parsed.insert(canonical.clone(), parsed.clone());
-                                }
-                                parsed.convert(&target, files, &passes)
-                            })
-                        } else {
-                            files.stack.push((canonical.clone(), shown_name.clone()));
-                            let child = Model::parse_in(&source, files, &passes);
-                            files.stack.pop();
-                            child
+                    };
+                    let (child, looks_like_a_part_file) =
+                        match files.parsed.get(&canonical).cloned() {
+                            Some(parsed) => (
+                                parsed.convert(&target, files, &passes),
+                                parsed.looks_like_a_part_file,
+                            ),
+                            None => {
+                                let bytes = std::fs::read(&shown).map_err(unreadable)?;
+                                let looks_like_a_part_file =
+                                    super::looks_like_a_part_file(&String::from_utf8_lossy(&bytes));
+                                let source = crate::io::source_of(&shown_name, bytes)
+                                    .map_err(quoted(looks_like_a_part_file))?
+                                    .read_from(shown.clone());
+                                // NOTE: a file that may have parameters is parsed
+                                // once and kept (`Parsed`): each other set of
+                                // `params` converts it again, re-evaluating only
+                                // the parameters that change.
+                                let child = if source.text.contains("params") {
+                                    files.reads += 1;
+                                    Model::raw(&source).and_then(|raw| {
+                                        let parsed = Parsed::keep(source, raw);
+                                        if parsed.raw.params.is_some() {
+                                            files.parsed.insert(canonical.clone(), parsed.clone());
+                                        }
+                                        parsed.convert(&target, files, &passes)
+                                    })
+                                } else {
+                                    files.stack.push((canonical.clone(), shown_name.clone()));
+                                    let child = Model::parse_in(&source, files, &passes);
+                                    files.stack.pop();
+                                    child
+                                };
+                                (child, looks_like_a_part_file)
+                            }
                         };
-                        (child, looks_like_a_part_file)
-                    }
-                };
-                let child = std::sync::Arc::new(child.map_err(|d| {
-                    // A name the included file does not define: said at
-                    // the include's key, in this file.
-                    if passes.iter().any(|p| p.undefined.message() == d.message()) {
-                        d
-                    } else {
-                        quoted(looks_like_a_part_file)(d)
-                    }
-                })?);
-                files.cache.insert(key, child.clone());
-                child
+                    let child = std::sync::Arc::new(child.map_err(|d| {
+                        // A name the included file does not define: said at
+                        // the include's key, in this file.
+                        if passes.iter().any(|p| p.undefined.message() == d.message()) {
+                            d
+                        } else {
+                            quoted(looks_like_a_part_file)(d)
+                        }
+                    })?);
+                    files.cache.insert(key, child.clone());
+                    child
+                }
             }
         };
 

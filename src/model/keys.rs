@@ -59,6 +59,7 @@ macro_rules! part_keys {
             include: Kind::Str, Dim::DIMENSIONLESS, Fill::No, Listed, "another part file placed here as a sub-assembly";
             origin: Kind::Point, Dim::LENGTH, Fill::At, Listed, "where an included file's origin goes, or a prism's or mesh's local origin";
             params: Kind::ParamsTable, Dim::DIMENSIONLESS, Fill::No, Listed, "parameters passed to the included file";
+            joints: Kind::ParamsTable, Dim::DIMENSIONLESS, Fill::No, Listed, "an included robot description's joint positions: name → a number (rad or m) or a quantity";
             inner_diameter: Kind::Quantity, Dim::LENGTH, Fill::Half("inner_radius"), Listed, "the inner diameter, instead of `inner_radius` (`diameter` gives the outer one)";
             top_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::TopRadius), Listed, "a cone's radius at its top (local z = +length/2)";
             top_inner_radius: Kind::Quantity, Dim::LENGTH, Fill::Dim(Slot::TopInnerRadius), Listed, "a hollow cone's inner radius at its top";
@@ -441,7 +442,7 @@ mod tests {
         }
         let mut accepted: BTreeSet<&str> =
             SHAPES.iter().flat_map(|s| s.keys.iter().copied()).collect();
-        accepted.extend(["include", "origin", "params"]);
+        accepted.extend(["include", "origin", "params", "joints"]);
         // `tol` goes wherever `mass` does (`tolerance::accepts`).
         accepted.insert(crate::model::tolerance::TOL_KEY);
         // A shape's own keys are not among the common ones read here.

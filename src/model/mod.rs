@@ -26,6 +26,7 @@ mod params;
 mod parts;
 mod place;
 pub mod raw;
+mod robot_body;
 pub mod rotation;
 pub mod schema;
 mod solids;

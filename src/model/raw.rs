@@ -114,6 +114,8 @@ pub struct RawPart {
     pub origin: Option<Box<Vector>>,
     /// Parameters passed to the included file (with `include`).
     pub params: Option<Box<Params>>,
+    /// An included robot description's joint positions (with `include`).
+    pub joints: Option<Box<Params>>,
     /// A named material instead of a density.
     pub material: Option<Box<Spanned<String>>>,
     /// A rod's cross-section area (with `material`).

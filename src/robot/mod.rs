@@ -7,9 +7,11 @@
 //! Every value here is SI (kg, m, kg·m²) and every tensor is in the tensor
 //! convention (I_xy = −∫xy dm), as URDF, SDFormat and MJCF all write it.
 
+pub mod body;
 pub mod cause;
 pub mod check;
 pub mod engine;
+pub mod kinematics;
 pub mod plausible;
 pub mod read;
 mod steps;

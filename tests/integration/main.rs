@@ -49,6 +49,7 @@ mod plausible;
 mod reference;
 mod render;
 mod report_keys;
+mod robot_body;
 mod robots;
 mod robots_hostile;
 mod schema;

@@ -201,6 +201,34 @@ fn robot_hostile(path: &Path, link: &str) -> Result<bool, String> {
             }
         }
     }
+    // report: the whole robot (issue 34), JSON and table: a report, or an
+    // error that names the file.
+    for args in [
+        vec!["report", p, "--format", "json"],
+        vec!["report", p, "--full"],
+    ] {
+        let what = args.join(" ");
+        match run(&args)? {
+            Ok(out) => {
+                if out.status != 0 {
+                    return Err(format!("{what}: Ok with status {}", out.status));
+                }
+                let stdout = out.stdout.text();
+                if args.contains(&"json") {
+                    serde_json::from_str::<Value>(&stdout)
+                        .map_err(|e| format!("{what}: output is not JSON ({e})"))?;
+                } else if let Some(w) = non_finite_word(&stdout).filter(|_| quiet) {
+                    return Err(format!("{what} prints {w:?}:\n{stdout}"));
+                }
+            }
+            Err(d) => {
+                let text = d.to_string();
+                if !text.contains(name) {
+                    return Err(format!("{what}: diagnostic does not name the file: {text}"));
+                }
+            }
+        }
+    }
     // export --update: the dry run, then for real on a copy.
     let args = ["export", &part, "--update", p, "--link", link, "--dry-run"];
     let dry = match run(&args)? {

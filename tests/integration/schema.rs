@@ -371,6 +371,7 @@ fn sample_value(key: &str, shape: &str) -> &'static str {
         "array" => "{ count = 2, step = [1, 0, 0] }",
         "mirror" => "{ normal = [1, 0, 0] }",
         "params" => "{ a = \"1 m\" }",
+        "joints" => "{ elbow = \"30 deg\" }",
         "file" => "\"shapes/meshes/bracket.stl\"",
         "mesh_unit" => "\"mm\"",
         "mode" => "\"shell\"",

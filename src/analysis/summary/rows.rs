@@ -162,7 +162,11 @@ impl Assemblies {
                 };
                 sums[done.at] = sum;
                 if let Some(parent) = open.last_mut() {
-                    parent.items.push((mass, center_of_mass));
+                    // NOTE: a sub-assembly of no parts (a robot's massless
+                    // link) adds nothing: its 0/0 centre is no centre.
+                    if done.parts > 0 {
+                        parent.items.push((mass, center_of_mass));
+                    }
                     parent.parts += done.parts;
                     for (t, x) in parent.share.iter_mut().zip(done.share) {
                         *t = t.zip(x).map(|(a, b)| a + b);

@@ -10,10 +10,15 @@
 //! values make a valid inertial is the engine checks' question, so negative
 //! masses and moments are read as given.
 
+mod geometry;
 mod mjcf;
 mod orient;
 mod sdf;
+mod tree;
 mod urdf;
+
+pub use geometry::{Geometry, Solid, geometry};
+pub use tree::tree;
 
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};

@@ -300,7 +300,7 @@ impl<'a, 'i> Scope<'a, 'i> {
 
 /// An SDFormat bool: `true`, `false`, `1` or `0`, any case, as
 /// libsdformat reads it.
-fn flag(xml: &Xml, v: &Value, owner: &str) -> Result<bool, Diagnostic> {
+pub(super) fn flag(xml: &Xml, v: &Value, owner: &str) -> Result<bool, Diagnostic> {
     match v.text.to_ascii_lowercase().as_str() {
         "true" | "1" => Ok(true),
         "false" | "0" => Ok(false),
@@ -358,7 +358,7 @@ fn inertial(
 /// An inertial `<pose>`: `x y z roll pitch yaw` (radians, or degrees under
 /// `degrees="true"`), or `x y z qx qy qz qw` under
 /// `rotation_format="quat_xyzw"`.
-fn pose(
+pub(super) fn pose(
     xml: &Xml,
     node: Node,
     local: &str,

@@ -1,0 +1,298 @@
+//! `massprop export ROBOT --from-geometry collision|visual --density D`:
+//! each link's inertial computed from its geometry elements — each a
+//! shape of massprop's own (box, cylinder, sphere, capsule, ellipsoid) or
+//! a mesh read by its mesh reader, at the element's pose, summed per link
+//! by the composer — printed, or written in place (`--update`).
+//!
+//! NOTE: each link's geometry is handed to the model as a part file in SI
+//! (written here, numbers in shortest round-trip form, so exactly the
+//! robot's), so that every shape's closed form, the mesh reader and the
+//! composer are the ones a part file uses; an error in it is said at the
+//! geometry element in the robot file.
+
+use super::Outcome;
+use super::export::FromGeometry;
+use crate::analysis::{self, Settings};
+use crate::diag::{Diagnostic, Source};
+use crate::output::inertial::{inertial_element, update};
+use crate::robot::Dialect;
+use crate::robot::read::{Geometry, Solid};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// What each part is made of, as its part file writes it.
+fn made_of(g: &FromGeometry) -> Result<String, Diagnostic> {
+    match (&g.density, &g.material) {
+        (Some(d), None) => {
+            let rho = match crate::units::split_number(d) {
+                Ok((x, "")) => x,
+                _ => crate::units::parse_quantity(d, crate::units::Dim::DENSITY).map_err(|e| {
+                    Diagnostic::plain(format!("invalid value {d:?} for `--density`: {e}; expected kg/m³ or a density with its unit, such as \"1.2 g/cm^3\""))
+                })?,
+            };
+            if !(rho > 0.0 && rho.is_finite()) {
+                return Err(Diagnostic::plain(format!(
+                    "invalid value {d:?} for `--density`: expected a density > 0"
+                )));
+            }
+            Ok(format!("density = {rho:?}\n"))
+        }
+        (None, Some(m)) => match crate::materials::built_in(m) {
+            Some(_) => Ok(format!("material = {:?}\n", m)),
+            None => Err(Diagnostic::plain(format!(
+                "`--material {}`: no built-in material of that name (`massprop materials` lists them)",
+                crate::diag::shorten(m)
+            ))),
+        },
+        (None, None) => Err(Diagnostic::plain(
+            "`--from-geometry` needs `--density` (kg/m³, or with its unit) or `--material NAME`",
+        )),
+        (Some(_), Some(_)) => Err(Diagnostic::plain(
+            "`--density` and `--material` both given: give one",
+        )),
+    }
+}
+
+/// `--package NAME=DIR`s.
+fn packages(g: &FromGeometry) -> Result<Vec<(String, PathBuf)>, Diagnostic> {
+    g.packages
+        .iter()
+        .map(|p| match p.split_once('=') {
+            Some((n, d)) if !n.is_empty() && !d.is_empty() => Ok((n.to_string(), PathBuf::from(d))),
+            _ => Err(Diagnostic::plain(format!(
+                "invalid value {p:?} for `--package`: expected `NAME=DIR`, the directory `package://NAME/` names"
+            ))),
+        })
+        .collect()
+}
+
+/// The mesh file a `filename` or `<uri>` names.
+fn mesh_path(uri: &str, base: &Path, packages: &[(String, PathBuf)]) -> Result<PathBuf, String> {
+    if let Some(rest) = uri.strip_prefix("package://") {
+        let (name, path) = rest.split_once('/').unwrap_or((rest, ""));
+        return match packages.iter().find(|(n, _)| n == name) {
+            Some((_, dir)) => Ok(dir.join(path)),
+            None => Err(format!(
+                "the mesh `{}` names the package `{}`: give its directory with `--package {}=DIR`",
+                crate::diag::shorten(uri),
+                crate::diag::shorten(name),
+                crate::diag::shorten(name)
+            )),
+        };
+    }
+    let path = uri.strip_prefix("file://").unwrap_or(uri);
+    Ok(base.join(path))
+}
+
+/// The length unit whose factor a mesh's uniform `scale` is: a URDF or
+/// SDFormat mesh's coordinates times its scale are metres.
+fn mesh_unit(scale: [f64; 3]) -> Option<&'static str> {
+    if scale[0] != scale[1] || scale[1] != scale[2] {
+        return None;
+    }
+    [
+        (1.0, "m"),
+        (0.01, "cm"),
+        (0.001, "mm"),
+        (0.0254, "in"),
+        (0.3048, "ft"),
+    ]
+    .into_iter()
+    .find(|(f, _)| *f == scale[0])
+    .map(|(_, u)| u)
+}
+
+fn point(p: [f64; 3]) -> String {
+    format!("[{:?}, {:?}, {:?}]", p[0], p[1], p[2])
+}
+
+/// One geometry as a `[[part]]` table.
+fn part(g: &Geometry, k: usize, made: &str, file: Option<&Path>) -> String {
+    let mut t = format!("[[part]]\nname = \"geometry {k}\"\n{made}");
+    let at = match &g.solid {
+        Solid::Mesh { .. } => "origin",
+        _ => "center",
+    };
+    let _ = writeln!(t, "{at} = {}", point(g.pose.p));
+    if !g.pose.unturned() {
+        let r = g.pose.r;
+        let _ = writeln!(
+            t,
+            "rotation = {{ matrix = [{}, {}, {}] }}",
+            point(r[0]),
+            point(r[1]),
+            point(r[2])
+        );
+    }
+    let shape = match &g.solid {
+        Solid::Box(s) => format!("shape = \"box\"\nsize = {}\n", point(*s)),
+        Solid::Cylinder { radius, length } => {
+            format!("shape = \"cylinder\"\nradius = {radius:?}\nlength = {length:?}\n")
+        }
+        Solid::Capsule { radius, length } => {
+            format!("shape = \"capsule\"\nradius = {radius:?}\nlength = {length:?}\n")
+        }
+        Solid::Sphere(r) => format!("shape = \"sphere\"\nradius = {r:?}\n"),
+        Solid::Ellipsoid(r) => format!("shape = \"ellipsoid\"\nradii = {}\n", point(*r)),
+        Solid::Mesh { scale, .. } => format!(
+            "shape = \"mesh\"\nfile = {:?}\nmesh_unit = {:?}\n",
+            file.expect("a mesh's file resolved").to_string_lossy(),
+            mesh_unit(*scale).expect("a scale checked")
+        ),
+    };
+    t + &shape
+}
+
+/// Run `export ROBOT --from-geometry …`.
+pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome, Diagnostic> {
+    let source = crate::io::read_source(robot)?;
+    let format = Dialect::of_path(Path::new(robot))
+        .or_else(|| Dialect::of_text(&source.text))
+        .ok_or_else(|| {
+            Diagnostic::file(
+                &source.name,
+                "`--from-geometry` reads a robot description: its root element is not <robot> (URDF), <sdf> or <mujoco> (MJCF)",
+            )
+        })?;
+    let made = made_of(g)?;
+    let packages = packages(g)?;
+    let d = crate::robot::read::read(&source, format)?;
+    let geos = crate::robot::read::geometry(&source, &d, g.visual)?;
+    let kind = if g.visual { "visual" } else { "collision" };
+    let chosen: Vec<usize> = match &g.link {
+        Some(name) => match d.links.iter().position(|l| l.name == *name) {
+            Some(i) => vec![i],
+            None => {
+                let near = crate::units::suggest(name, d.links.iter().map(|l| l.name.as_str()))
+                    .map(|s| format!("; did you mean `{}`?", crate::diag::shorten(s)))
+                    .unwrap_or_default();
+                return Err(Diagnostic::plain(format!(
+                    "`--link {}`: `{}` has no link of that name{near}",
+                    crate::diag::shorten(name),
+                    source.name
+                )));
+            }
+        },
+        None => (0..d.links.len()).collect(),
+    };
+    let base = source
+        .path()
+        .parent()
+        .map_or_else(PathBuf::new, Path::to_path_buf);
+    let mut includes = settings.includes.clone();
+    includes.roots.push(if base.as_os_str().is_empty() {
+        PathBuf::from(".")
+    } else {
+        base.clone()
+    });
+    includes
+        .roots
+        .extend(packages.iter().map(|(_, d)| d.clone()));
+    let mut read: Vec<PathBuf> = std::fs::canonicalize(source.path())
+        .ok()
+        .into_iter()
+        .collect();
+    let (mut stdout, mut stderr) = (String::new(), String::new());
+    let mut computed = Vec::new();
+    for i in chosen {
+        let name = &d.links[i].name;
+        if geos[i].is_empty() {
+            let _ = writeln!(
+                stderr,
+                "note: {}: link \"{}\" has no <{kind}> geometry: it keeps its inertial",
+                source.name,
+                crate::diag::shorten(name)
+            );
+            continue;
+        }
+        let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
+        for (k, geo) in geos[i].iter().enumerate() {
+            let at = |m: String| {
+                source.error(
+                    geo.range.clone(),
+                    format!("link \"{}\": {m}", crate::diag::shorten(name)),
+                )
+            };
+            let file = match &geo.solid {
+                Solid::Mesh { uri, scale } => {
+                    if mesh_unit(*scale).is_none() {
+                        return Err(at(format!(
+                            "the mesh's `scale` {} {} {} is not read: a mesh is read with the same scale on each axis, one of a length unit's (1 m, 0.01 cm, 0.001 mm, 0.0254 in, 0.3048 ft)",
+                            scale[0], scale[1], scale[2]
+                        )));
+                    }
+                    Some(mesh_path(uri, &base, &packages).map_err(at)?)
+                }
+                _ => None,
+            };
+            let one = part(geo, k + 1, &made, file.as_deref());
+            // Each geometry alone first: its error is said at its element.
+            body(&one, &source, &includes, settings).map_err(|e| at(e.message().to_string()))?;
+            text.push_str(&one);
+        }
+        let loaded = body(&text, &source, &includes, settings)?;
+        read.extend(loaded.model.included.iter().cloned());
+        computed.push((
+            name.clone(),
+            super::export::export_of(&loaded.summary, false),
+        ));
+    }
+    match &g.update {
+        None => {
+            for (name, e) in &computed {
+                let _ = writeln!(stdout, "<!-- link \"{}\" -->", crate::diag::shorten(name));
+                stdout.push_str(&inertial_element(format, e, ""));
+                stdout.push('\n');
+            }
+            Ok(Outcome {
+                stderr,
+                ..Outcome::ok(stdout, read)
+            })
+        }
+        Some(path) => {
+            let name = path.to_string_lossy().into_owned();
+            let (file, target) = if g.dry_run {
+                (None, crate::io::read_source_at(path)?)
+            } else {
+                let (file, target) = crate::io::Rewrite::open(&name)?;
+                (Some(file), target)
+            };
+            read.extend(std::fs::canonicalize(path).ok());
+            let tformat = Dialect::of_path(path)
+                .or_else(|| Dialect::of_text(&target.text))
+                .ok_or_else(|| Diagnostic::file(&target.name, "not a robot description: its root element is not <robot> (URDF), <sdf> or <mujoco> (MJCF)"))?;
+            let mut new = target.text.clone();
+            for (link, e) in &computed {
+                new = update(&new, tformat, link, e).map_err(|err| match err.at() {
+                    Some(at) => Source::error(&target, at..at + 1, err.to_string()),
+                    None => Diagnostic::file(&target.name, err.to_string()),
+                })?;
+            }
+            let links: Vec<&str> = computed.iter().map(|(n, _)| n.as_str()).collect();
+            let (out, err) = super::export::written(
+                file,
+                &target,
+                &new,
+                &links.join("\", \""),
+                g.dry_run,
+                stderr,
+            )?;
+            Ok(Outcome {
+                stderr: err,
+                ..Outcome::ok(out, read)
+            })
+        }
+    }
+}
+
+/// A link's geometry, as a part file, composed.
+fn body(
+    text: &str,
+    robot: &Source,
+    includes: &crate::model::Includes,
+    settings: &Settings,
+) -> Result<analysis::Loaded, Diagnostic> {
+    let source = Source::new(format!("{} (geometry)", robot.name), text.to_string());
+    let model = crate::model::Model::parse_with(&source, includes)?;
+    analysis::load_model(source, model, settings)
+}

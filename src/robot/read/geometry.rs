@@ -1,0 +1,262 @@
+//! Each link's `<collision>` or `<visual>` geometry (URDF, SDFormat), for
+//! inertials computed from it (`export --from-geometry`): the solid, its
+//! pose in the link frame and its element. SI.
+
+use super::{Xml, child, children, qname, quoted, rpy};
+use crate::diag::{Diagnostic, Source};
+use crate::robot::kinematics::Pose;
+use crate::robot::{Description, Dialect};
+use roxmltree::Node;
+use std::ops::Range;
+
+/// A geometry's solid, in its own frame (cylinder and capsule along z).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Solid {
+    /// Full sizes along x, y, z.
+    Box([f64; 3]),
+    Cylinder {
+        radius: f64,
+        length: f64,
+    },
+    Sphere(f64),
+    /// `length` between the hemispheres' centres.
+    Capsule {
+        radius: f64,
+        length: f64,
+    },
+    Ellipsoid([f64; 3]),
+    /// The file as written (`package://…`, `file://…`, or a path) and its
+    /// `scale`.
+    Mesh {
+        uri: String,
+        scale: [f64; 3],
+    },
+}
+
+/// One `<collision>` or `<visual>` element.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Geometry {
+    pub solid: Solid,
+    pub pose: Pose,
+    /// The element's start tag.
+    pub range: Range<usize>,
+}
+
+/// Per link of `d` (in its order), its geometries of the kind asked for
+/// (`visual`, else collision).
+pub fn geometry(
+    source: &Source,
+    d: &Description,
+    visual: bool,
+) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+    let doc = super::parse(source)?;
+    let xml = Xml { source };
+    let root = doc.root_element();
+    let kind = if visual { "visual" } else { "collision" };
+    let links: Vec<Node> = match d.format {
+        Dialect::Urdf => children(root, "link").collect(),
+        Dialect::Sdf => {
+            let models: Vec<Node> = children(root, "model").collect();
+            match models.as_slice() {
+                [one]
+                    if !one
+                        .children()
+                        .any(|c| matches!(qname(c), "model" | "include")) =>
+                {
+                    children(*one, "link").collect()
+                }
+                _ => {
+                    return Err(xml.error(
+                        xml.tag(root),
+                        "inertials from geometry read one `<model>` of links, without worlds, nested models or includes",
+                    ));
+                }
+            }
+        }
+        Dialect::Mjcf => {
+            return Err(xml
+                .error(
+                    xml.tag(root),
+                    "inertials from geometry are read from URDF and SDFormat files; MJCF geoms are not yet",
+                )
+                .help("MuJoCo computes them itself: `<compiler inertiafromgeom=\"true\"/>`"));
+        }
+    };
+    let mut out = Vec::with_capacity(links.len());
+    for (i, link) in links.iter().enumerate() {
+        let owner = format!("link {}", quoted(&d.links[i].name));
+        let mut items = Vec::new();
+        for g in children(*link, kind) {
+            let pose = match d.format {
+                Dialect::Urdf => urdf_origin(&xml, g, &owner)?,
+                Dialect::Sdf | Dialect::Mjcf => sdf_pose(&xml, g, &owner)?,
+            };
+            let Some(geo) = child(g, "geometry") else {
+                return Err(xml.error(
+                    xml.tag(g),
+                    format!("`<{kind}>` of {owner} has no `<geometry>`"),
+                ));
+            };
+            let solid = match d.format {
+                Dialect::Urdf => urdf_solid(&xml, geo, &owner)?,
+                Dialect::Sdf | Dialect::Mjcf => sdf_solid(&xml, geo, &owner)?,
+            };
+            items.push(Geometry {
+                solid,
+                pose,
+                range: xml.tag(g),
+            });
+        }
+        out.push(items);
+    }
+    Ok(out)
+}
+
+fn urdf_origin(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
+    let mut pose = Pose::IDENTITY;
+    if let Some(o) = child(g, "origin") {
+        if let Some(v) = xml.attr(o, "xyz") {
+            pose.p = xml.numbers::<3>(&v, owner)?;
+        }
+        if let Some(v) = xml.attr(o, "rpy") {
+            let [r, p, y] = xml.numbers::<3>(&v, owner)?;
+            pose.r = rpy(r.sin_cos(), p.sin_cos(), y.sin_cos());
+        }
+    }
+    Ok(pose)
+}
+
+fn sdf_pose(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
+    let Some(p) = child(g, "pose") else {
+        return Ok(Pose::IDENTITY);
+    };
+    if let Some(v) = xml.attr(p, "relative_to")
+        && !v.text.is_empty()
+    {
+        return Err(xml.error(
+            v.range.clone(),
+            format!(
+                "`relative_to` of a geometry's `<pose>` of {owner}: only the link frame is read"
+            ),
+        ));
+    }
+    let (p, r) = super::sdf::pose(xml, p, "", owner)?;
+    Ok(Pose {
+        p,
+        r: r.unwrap_or(Pose::IDENTITY.r),
+    })
+}
+
+/// A positive size, or an error at it.
+fn positive(xml: &Xml, v: &super::Value, x: f64, owner: &str) -> Result<f64, Diagnostic> {
+    if x > 0.0 {
+        Ok(x)
+    } else {
+        Err(xml.error(
+            v.range.clone(),
+            format!("{} of {owner}: expected a size > 0, found {x}", v.name),
+        ))
+    }
+}
+
+fn urdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
+    let Some(s) = geo.children().find(Node::is_element) else {
+        return Err(xml.error(xml.tag(geo), format!("`<geometry>` of {owner} is empty")));
+    };
+    let num = |name: &str| -> Result<f64, Diagnostic> {
+        let v = xml.required(s, name, owner)?;
+        let x = xml.number(&v, owner)?;
+        positive(xml, &v, x, owner)
+    };
+    Ok(match qname(s) {
+        "box" => {
+            let v = xml.required(s, "size", owner)?;
+            let n = xml.numbers::<3>(&v, owner)?;
+            for x in n {
+                positive(xml, &v, x, owner)?;
+            }
+            Solid::Box(n)
+        }
+        "cylinder" => Solid::Cylinder {
+            radius: num("radius")?,
+            length: num("length")?,
+        },
+        "capsule" => Solid::Capsule {
+            radius: num("radius")?,
+            length: num("length")?,
+        },
+        "sphere" => Solid::Sphere(num("radius")?),
+        "mesh" => Solid::Mesh {
+            uri: xml.required(s, "filename", owner)?.text,
+            scale: match xml.attr(s, "scale") {
+                Some(v) => xml.numbers::<3>(&v, owner)?,
+                None => [1.0; 3],
+            },
+        },
+        other => {
+            return Err(xml.error(
+                xml.tag(s),
+                format!(
+                    "`<{}>` of {owner}: expected `<box>`, `<cylinder>`, `<sphere>`, `<capsule>` or `<mesh>`",
+                    crate::diag::shorten(other)
+                ),
+            ));
+        }
+    })
+}
+
+fn sdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
+    let Some(s) = geo.children().find(Node::is_element) else {
+        return Err(xml.error(xml.tag(geo), format!("`<geometry>` of {owner} is empty")));
+    };
+    let text = |name: &str| -> Result<super::Value, Diagnostic> {
+        child(s, name).map(|e| xml.text(e)).ok_or_else(|| {
+            xml.error(
+                xml.tag(s),
+                format!("`<{}>` of {owner} is missing `<{name}>`", qname(s)),
+            )
+        })
+    };
+    let num = |name: &str| -> Result<f64, Diagnostic> {
+        let v = text(name)?;
+        let x = xml.number(&v, owner)?;
+        positive(xml, &v, x, owner)
+    };
+    let three = |name: &str| -> Result<[f64; 3], Diagnostic> {
+        let v = text(name)?;
+        let n = xml.numbers::<3>(&v, owner)?;
+        for x in n {
+            positive(xml, &v, x, owner)?;
+        }
+        Ok(n)
+    };
+    Ok(match qname(s) {
+        "box" => Solid::Box(three("size")?),
+        "cylinder" => Solid::Cylinder {
+            radius: num("radius")?,
+            length: num("length")?,
+        },
+        "capsule" => Solid::Capsule {
+            radius: num("radius")?,
+            length: num("length")?,
+        },
+        "sphere" => Solid::Sphere(num("radius")?),
+        "ellipsoid" => Solid::Ellipsoid(three("radii")?),
+        "mesh" => Solid::Mesh {
+            uri: text("uri")?.text,
+            scale: match child(s, "scale") {
+                Some(e) => xml.numbers::<3>(&xml.text(e), owner)?,
+                None => [1.0; 3],
+            },
+        },
+        other => {
+            return Err(xml.error(
+                xml.tag(s),
+                format!(
+                    "`<{}>` of {owner}: expected `<box>`, `<cylinder>`, `<sphere>`, `<capsule>`, `<ellipsoid>` or `<mesh>`",
+                    crate::diag::shorten(other)
+                ),
+            ));
+        }
+    })
+}
