@@ -429,6 +429,10 @@ impl Frame {
             mass: 1.0,
             pivot: None,
             mirror: false,
+            units_dd: [DD::of(1.0); 2],
+            units_rel: [0.0; 2],
+            origin_lo: [0.0; 3],
+            angle_lo: 0.0,
         }
     }
 }
