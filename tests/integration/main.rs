@@ -1,6 +1,7 @@
 //! massprop's integration tests, in one binary: each extra test binary is
 //! another link on a 2-core machine.
 
+mod alarms;
 mod arrays;
 mod auto;
 mod bounded;
@@ -25,6 +26,7 @@ mod exact;
 mod expect_axes;
 mod files;
 mod frames;
+mod honesty;
 mod hostile;
 mod hostile_round_two;
 mod invariants;
