@@ -209,11 +209,15 @@ impl Big {
             return None;
         }
         let (a, b) = (self.n.sqrt(), self.d.sqrt());
-        (&a * &a == self.n && &b * &b == self.d).then(|| Big {
-            n: a,
-            d: b,
-            pi: self.pi / 2,
-        })
+        if &a * &a == self.n && &b * &b == self.d {
+            Some(Big {
+                n: a,
+                d: b,
+                pi: self.pi / 2,
+            })
+        } else {
+            None
+        }
     }
 
     /// Compare, where both are of one power of π (or zero).

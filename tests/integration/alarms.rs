@@ -95,7 +95,7 @@ fn scene(seed: u64) -> Scene {
             r::number(origin[1]),
             r::number(origin[2])
         ));
-        let turn = if rng.next_u64() % 3 != 0 {
+        let turn = if !rng.next_u64().is_multiple_of(3) {
             let (t, m) = rotation(rng, &mut seen);
             top.push_str(&format!("rotation = {t}\n"));
             m

@@ -50,12 +50,6 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
 use std::collections::BTreeSet;
 
-/// Whether the composer places sub-assemblies and copies in double-double
-/// in `extended` (the compose branch, issue 30 item 2). While it is
-/// `false`, nothing is skipped: every failure is reported. Kept as the
-/// switch the lead may need if an `extended` placement turns out short.
-pub(crate) const COMPOSE_PLACES_IN_DD: bool = false;
-
 /// Whether a sub-assembly's frame counts, in its bounds, what its rounding
 /// of a thin wall's radii does to the part's mass and moments. Found by
 /// tests/integration/alarms.rs: a hollow sphere R = 930968.6179167209 µm,
@@ -799,7 +793,7 @@ fn file(files: &mut Files, seed: u64, depth: usize, passed: Option<&Q>) -> FileO
         };
         let body: Vec<ExactPart> = body.iter().map(placed::on_grid).collect();
         // Copies of the last part written (the table the keys land in).
-        let (keys, body) = if rng.next_u64() % 3 == 0 {
+        let (keys, body) = if rng.next_u64().is_multiple_of(3) {
             copies(rng, &c.l, body, &mut files.seen)
         } else {
             (String::new(), body)
@@ -936,7 +930,7 @@ fn failures_in(
     let (v, _) = crate::common::report_json_file(path, &["--precision", precision]);
     let items = honest::measure(&v, &g.expected, prepared);
     let bad = honest::dishonest(&items);
-    if bad.is_empty() || COMPOSE_PLACES_IN_DD {
+    if bad.is_empty() {
         return Ok(items.len());
     }
     let files: Vec<String> = g
@@ -980,27 +974,6 @@ fn every_value_of_a_scene_over_every_feature_is_within_its_bound_in_both_arithme
 
 /// The generator reaches every feature the property is about, over the
 /// first seeds the property runs.
-#[test]
-#[ignore = "timing"]
-fn timing() {
-    for seed in 0..6 {
-        let t = std::time::Instant::now();
-        let g = scene(seed);
-        let t1 = t.elapsed();
-        let p = honest::prepare(&g.expected);
-        let t2 = t.elapsed();
-        let path = write(&g, "honesty-t");
-        let (v, _) = crate::common::report_json_file(&path, &["--precision", "extended"]);
-        let t3 = t.elapsed();
-        let _ = honest::measure(&v, &g.expected, &p);
-        eprintln!(
-            "{seed}: parts {} scene {t1:?} prepare {t2:?} run {t3:?} measure {:?}",
-            g.expected.body.parts.len(),
-            t.elapsed()
-        );
-    }
-}
-
 #[test]
 fn the_generator_covers_every_feature() {
     let mut seen = BTreeSet::new();

@@ -103,7 +103,7 @@ fn cos_sin_radians(x: &Q) -> (Q, Q) {
     let (mut c, mut s) = (one.clone(), BigInt::zero());
     let mut term = one.clone();
     for n in 1..200u32 {
-        term = (&term * &xf >> BITS) / BigInt::from(n);
+        term = ((&term * &xf) >> BITS) / BigInt::from(n);
         if term.is_zero() {
             break;
         }
@@ -236,6 +236,8 @@ pub fn decimal(text: &str) -> Q {
 
 #[cfg(test)]
 mod tests {
+    // The benchmark compiles this module without its tests (no harness).
+    #[allow(unused_imports)]
     use super::*;
 
     #[test]
