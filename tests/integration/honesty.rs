@@ -689,7 +689,10 @@ fn file(files: &mut Files, seed: u64, depth: usize, passed: Option<&Q>) -> FileO
         rho: placed::decimal(&rho_text) * r::int(1000),
         foam: r::int(0),
     };
-    c.foam = c.density(&placed::decimal(&foam_si), 3);
+    // A plain quantity string: its number rounded to f64 first, then
+    // converted by the nearest f64 (a parameter's string is an
+    // expression, read exactly).
+    c.foam = c.density(&r::q(foam_si.parse::<f64>().unwrap()), 3);
     let foam_text = if plain_foam {
         r::number(r::f(&c.foam))
     } else {
