@@ -261,9 +261,10 @@ mod tests {
         // Orthogonal to its rounding (2⁻³⁰⁰ an entry).
         let mmt = r::mmul(&m, &r::transpose(&m));
         let tiny = Q::new(BigInt::one(), BigInt::one() << 290usize);
-        for i in 0..3 {
-            for j in 0..3 {
-                assert!((&mmt[i][j] - &identity()[i][j]).abs() < tiny);
+        let e = identity();
+        for (row, want) in mmt.iter().zip(&e) {
+            for (x, w) in row.iter().zip(want) {
+                assert!((x - w).abs() < tiny);
             }
         }
     }
