@@ -220,6 +220,8 @@ struct Figures {
     needless: usize,
     bounds: usize,
     loose: usize,
+    /// Each bound beyond the limit: where, and its ratio.
+    loose_at: Vec<String>,
     /// The loosest bound over max(error, floor), and where.
     worst: (f64, String),
     /// The quantities warned, with how many were real.
@@ -293,6 +295,10 @@ fn measure(seeds: std::ops::Range<u64>) -> Figures {
                 let ratio = i.bound / i.error.max(i.floor);
                 if ratio > TIGHT {
                     f.loose += 1;
+                    f.loose_at.push(format!(
+                        "seed {seed}, {what}: {} {:.3e}× (bound {:e}, error {:e}, floor {:e})",
+                        i.key, ratio, i.bound, i.error, i.floor
+                    ));
                 }
                 if ratio > f.worst.0 {
                     f.worst = (ratio, format!("seed {seed}, {what}: {}", i.key));
