@@ -61,7 +61,10 @@ fn edge(data: &[u8]) -> Option<(String, Option<(usize, u128, bool)>)> {
         format!(" * {d}e-{x}")
     });
     let text = format!("{}^{exp}{}", BASES[base], lit.clone().unwrap_or_default());
-    Some((text, exact.filter(|_| lit.is_none()).map(|e| (base, e, minus))))
+    Some((
+        text,
+        exact.filter(|_| lit.is_none()).map(|e| (base, e, minus)),
+    ))
 }
 
 fuzz_target!(|data: &[u8]| {
@@ -88,7 +91,10 @@ fuzz_target!(|data: &[u8]| {
             Ok(v) => {
                 let x = v.in_units(Factor::ONE);
                 assert!(x.is_finite(), "{text:?} gave {x}");
-                assert!(x == 0.0 || x.abs() >= f64::MIN_POSITIVE, "{text:?} gave {x}");
+                assert!(
+                    x == 0.0 || x.abs() >= f64::MIN_POSITIVE,
+                    "{text:?} gave {x}"
+                );
                 if let Some((base, e, minus)) = exact {
                     let want = match (base, minus) {
                         (0, _) => Some(0.0),

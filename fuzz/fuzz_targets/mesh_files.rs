@@ -14,6 +14,13 @@
 //! solid has a positive volume, and when the boxes are wound outward and
 //! pairwise disjoint (the generator knows) it is accepted and weighs their
 //! sum.
+//!
+//! `weld` (issue 30): the same bytes are read again as a solid with
+//! corners closer than a distance the bytes choose merged first (a part's
+//! `weld = "…"`): refused in words, or a body of positive, finite volume
+//! whose bounds are finite, with the weld's note first among the
+//! warnings. Disjoint outward boxes are half a unit apart at least, so a
+//! weld below that merges nothing and weighs what the boxes do.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -83,23 +90,73 @@ fn shells(data: &[u8]) {
     let text = box_obj(&list);
     let result = MeshBody::load(FileType::Obj, text.as_bytes(), Mode::Solid);
     if let Ok(m) = &result {
-        assert!(m.measure.hi > 0.0, "an accepted solid has a positive volume");
+        assert!(
+            m.measure.hi > 0.0,
+            "an accepted solid has a positive volume"
+        );
     }
     let plain = list
         .iter()
         .all(|((_, _, inward), nudge)| !inward && nudge & 8 == 0);
-    let apart = (0..list.len())
-        .all(|i| (0..i).all(|j| disjoint(&list[i].0, &list[j].0)));
+    let apart = (0..list.len()).all(|i| (0..i).all(|j| disjoint(&list[i].0, &list[j].0)));
     if plain && apart {
         let m = result.expect("outward disjoint boxes are one solid");
         let sum: f64 = list.iter().map(|((_, s, _), _)| s[0] * s[1] * s[2]).sum();
         let v = m.measure.hi + m.measure.lo;
         assert!((v - sum).abs() <= 1e-12 * sum, "{v} against {sum}");
+        // A weld closer than the boxes' gaps (half a unit at least)
+        // merges no corner of two boxes, nor of one (sizes ≥ ½).
+        let (w, notes) =
+            MeshBody::load_with(FileType::Obj, text.as_bytes(), Mode::Solid, Some(0.1))
+                .expect("a weld closer than every gap changes nothing");
+        assert!(notes[0].starts_with("`weld` merged 0 corners"), "{notes:?}");
+        let vw = w.measure.hi + w.measure.lo;
+        assert!((vw - sum).abs() <= 1e-12 * sum, "{vw} against {sum}");
+    }
+}
+
+/// The weld distance the bytes choose: from 2⁻⁴⁰ to 2⁷ of the file's
+/// units (the last byte's bits), so that it merges nothing, some corners
+/// or whole triangles.
+fn weld_distance(data: &[u8]) -> Option<f64> {
+    let b = *data.last()?;
+    Some(2f64.powi(i32::from(b % 48) - 40))
+}
+
+/// `data` read as a welded solid, in each format.
+fn welded(data: &[u8]) {
+    let Some(d) = weld_distance(data) else {
+        return;
+    };
+    for format in [FileType::Stl, FileType::Obj] {
+        match MeshBody::load_with(format, data, Mode::Solid, Some(d)) {
+            Err(e) => assert!(!e.message.is_empty()),
+            Ok((m, notes)) => {
+                assert!(
+                    notes
+                        .first()
+                        .is_some_and(|n| n.starts_with("`weld` merged ")),
+                    "{notes:?}"
+                );
+                let v = m.measure.hi + m.measure.lo;
+                if !(v > 0.0 && v.is_finite()) {
+                    continue;
+                }
+                // A weld that could change the volume by half is refused.
+                assert!(
+                    m.bound.measure <= v.abs() / 2.0 * (1.0 + 1e-12),
+                    "{:?}",
+                    m.bound
+                );
+                assert!(m.bound.centroid >= 0.0 && m.bound.second >= 0.0);
+            }
+        }
     }
 }
 
 fuzz_target!(|data: &[u8]| {
     shells(data);
+    welded(data);
     for format in [FileType::Stl, FileType::Obj] {
         for mode in [Mode::Solid, Mode::Shell] {
             match MeshBody::load(format, data, mode) {

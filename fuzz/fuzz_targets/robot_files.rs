@@ -58,7 +58,10 @@ fuzz_target!(|data: &[u8]| {
         let source = Source::new("fuzz.xml", text);
         match massprop::robot::read::read(&source, format) {
             Ok(d) => {
-                assert!(!entity, "read a document that uses an entity of its doctype");
+                assert!(
+                    !entity,
+                    "read a document that uses an entity of its doctype"
+                );
                 checked(&source, &d, format, quiet);
                 updated(&source, &d, format);
             }
@@ -103,7 +106,11 @@ fn checked(source: &Source, d: &Description, format: Dialect, quiet: bool) {
     ] {
         let r = massprop::robot::check::check(source, d, engines);
         assert_eq!(r.links.len(), d.links.len());
-        let status = if r.failed() { Status::Failed } else { Status::Ok };
+        let status = if r.failed() {
+            Status::Failed
+        } else {
+            Status::Ok
+        };
         rendered(&[result(format, status, Some(r))], quiet);
     }
 }

@@ -9,7 +9,9 @@
 //! factors. `sqrt` of a non-square, the trigonometric functions, a
 //! non-integer power, a sum of different powers of π and a rational that
 //! outgrows i128 go on in double-double (`numeric::DD`). The one rounding
-//! to f64 is at the end (`Value::in_units`).
+//! to f64 is at the end (`Value::in_units`); where double-double was used
+//! and the value is rational after all, `Expr::exact` evaluates it again
+//! in big rationals (`big`), so that it is rounded to the nearest f64.
 //!
 //! Grammar (precedence from low to high):
 //!
@@ -28,6 +30,7 @@
 //! one is given that name, else `pi`, else a unit symbol (one of it:
 //! `3 * mm`).
 
+pub mod big;
 mod exact;
 
 use crate::numeric::{DD, Real};
@@ -278,6 +281,9 @@ enum Op {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Expr {
     steps: Vec<(Op, Range<usize>)>,
+    /// The text read: a literal beyond i128 is read again from it,
+    /// exactly (`exact`).
+    text: String,
 }
 
 mod parse;
@@ -354,6 +360,81 @@ impl Expr {
             .pop()
             .expect("invariant: a parsed expression has a value"))
     }
+}
+
+impl Expr {
+    /// The exact value, where it is rational (no `pi` left, no function
+    /// but `abs`, `min`, `max` and a `sqrt` of a square, integer powers)
+    /// and its numbers stay within `big::MAX_BITS`; parameters looked up in
+    /// `params` (`None`: not known exactly). Else `None`. Call it after
+    /// `eval` succeeded: it assumes the dimensions and names checked.
+    pub fn exact(&self, params: &dyn Fn(&str) -> Option<big::Big>) -> Option<big::Big> {
+        use big::Big;
+        let mut stack: Vec<Big> = Vec::new();
+        for (op, at) in &self.steps {
+            let v = match op {
+                Op::Push(v) => match v.num {
+                    Num::Exact(q) => Big::of(q),
+                    Num::Float(_) => literal(self.text.get(at.clone())?)?,
+                },
+                Op::Name(n) => match params(n) {
+                    Some(b) => b,
+                    None if n == "pi" => Big::of(Q { n: 1, d: 1, pi: 1 }),
+                    None => {
+                        let u = units::parse_unit(n).ok()?;
+                        let (num, den, pi) = u.factor.parts();
+                        Big::of(Q::new(num, den, pi)?)
+                    }
+                },
+                Op::Neg => stack.pop()?.negated(),
+                Op::Call(f, argc) => {
+                    let args = stack.split_off(stack.len().checked_sub(*argc)?);
+                    match f {
+                        Func::Abs => args.into_iter().next()?.abs(),
+                        Func::Sqrt => args.first()?.sqrt()?,
+                        Func::Min | Func::Max => {
+                            let mut best = args.first()?.clone();
+                            for b in &args[1..] {
+                                let o = b.compare(&best)?;
+                                if (*f == Func::Min && o.is_lt()) || (*f == Func::Max && o.is_gt())
+                                {
+                                    best = b.clone();
+                                }
+                            }
+                            best
+                        }
+                        Func::Sin | Func::Cos | Func::Tan => return None,
+                    }
+                }
+                Op::Add | Op::Sub | Op::Mul | Op::Div | Op::Pow => {
+                    let b = stack.pop()?;
+                    let a = stack.pop()?;
+                    match op {
+                        Op::Add => a.plus(&b)?,
+                        Op::Sub => a.plus(&b.negated())?,
+                        Op::Mul => a.times(&b)?,
+                        Op::Div => a.over(&b)?,
+                        _ => a.powi(&b)?,
+                    }
+                }
+            };
+            stack.push(v);
+        }
+        stack.pop()
+    }
+}
+
+/// A number token, or a number and its unit, exactly: the decimal's digits
+/// and the unit's rational factor.
+fn literal(text: &str) -> Option<big::Big> {
+    let end = units::number_end(text.as_bytes(), 0);
+    let number = big::Big::decimal(text.get(..end)?)?;
+    let unit = text.get(end..)?.trim();
+    if unit.is_empty() {
+        return Some(number);
+    }
+    let (num, den, pi) = units::parse_unit(unit).ok()?.factor.parts();
+    number.times(&big::Big::of(Q::new(num, den, pi)?))
 }
 
 fn name(

@@ -176,7 +176,10 @@ pub(super) fn parse(text: &str) -> Result<Expr, Error> {
             format!("expected an operator before `{}`", &text[t.at.clone()]),
         );
     }
-    Ok(Expr { steps: p.steps })
+    Ok(Expr {
+        steps: p.steps,
+        text: text.to_string(),
+    })
 }
 
 impl Parser<'_> {

@@ -10,6 +10,7 @@ use super::Ctx;
 use super::raw::{Params as RawParams, Quantity};
 use super::tolerance::{Index, Recorder};
 use crate::diag::{Diagnostic, Source};
+use crate::expr::big::Big;
 use crate::expr::tangent::{Grad, axpy};
 use crate::expr::{self, Expr, Value};
 use crate::units::{self, Dim, Factor};
@@ -34,6 +35,10 @@ pub(crate) struct Params {
     /// The parameters `--set` gives, each with the note an error it may
     /// have caused carries (`Params::blame_set`).
     set: BTreeMap<String, String>,
+    /// The exact value of each parameter evaluated in double-double that
+    /// is rational after all (`Expr::exact`): the expressions that use it
+    /// round to the nearest f64 of their exact value too.
+    exact: BTreeMap<String, Big>,
 }
 
 impl Params {
@@ -42,6 +47,41 @@ impl Params {
             .get(name)
             .or_else(|| self.base.get(name))
             .copied()
+    }
+
+    /// A parameter's exact value, where it is known.
+    fn exact_of(&self, name: &str) -> Option<Big> {
+        match self.get(name)?.num {
+            expr::Num::Exact(q) => Some(Big::of(q)),
+            expr::Num::Float(_) => self.exact.get(name).cloned(),
+        }
+    }
+
+    /// The nearest f64 of `e`'s value `v` in units of `factor`: `v`'s own
+    /// rounding, or where `v` went through double-double, its exact value
+    /// rounded once, if it is rational.
+    fn nearest(&self, e: &Expr, v: Value, factor: Factor) -> f64 {
+        let x = v.in_units(factor);
+        if let expr::Num::Float(_) = v.num
+            && let Some(b) = e.exact(&|n| self.exact_of(n))
+            && let (n, d, pi) = factor.parts()
+            && let Some(y) = b.nearest_over(n, d, pi)
+        {
+            return y;
+        }
+        x
+    }
+
+    /// `v`, the value of `e`, exactly if it went through double-double and
+    /// is rational.
+    fn exact_value(&self, e: Option<&Expr>, v: Value) -> Option<Big> {
+        match v.num {
+            expr::Num::Exact(_) => None,
+            expr::Num::Float(x) => match e {
+                Some(e) => e.exact(&|n| self.exact_of(n)),
+                None => Big::of_f64(x.hi + x.lo).filter(|_| x.lo == 0.0),
+            },
+        }
     }
 
     /// A parameter's value and gradient (empty without a tolerance).
@@ -113,6 +153,9 @@ pub(crate) struct Pass {
     /// The error if the file does not define `name` (located where it was
     /// given: the flag, or the include's key).
     pub(crate) undefined: Diagnostic,
+    /// A passed value's exact value, where it went through double-double
+    /// and is rational (`Params::exact`).
+    pub(crate) exact: Option<Big>,
 }
 
 #[derive(Clone, Debug)]
@@ -160,6 +203,7 @@ pub(crate) fn flags(set: &[String]) -> Result<Vec<Pass>, Diagnostic> {
             undefined: Diagnostic::plain(format!(
                 "`--set {name}`: the file defines no parameter `{name}` in `[params]`"
             )),
+            exact: None,
         });
     }
     Ok(out)
@@ -192,8 +236,13 @@ impl Ctx<'_> {
             if !expr::is_name(name) {
                 return Err(self.err(key.span(), format!("`{name}` is not a parameter name")));
             }
+            let exact;
             let value = match q.get_ref() {
-                Quantity::Number(x) => self.number_param(q, *x, &format!("parameter `{name}`"))?,
+                Quantity::Number(x) => {
+                    let v = self.number_param(q, *x, &format!("parameter `{name}`"))?;
+                    exact = self.params.exact_value(None, v);
+                    v
+                }
                 Quantity::Text(t) => {
                     let what = format!("parameter `{name}`");
                     // NOTE: a tolerance's source belongs to one file's
@@ -217,6 +266,7 @@ impl Ctx<'_> {
                             )
                             .help("give the tolerance in the included file's `[params]`"));
                     }
+                    exact = self.params.exact_value(Some(&e), v);
                     v
                 }
             };
@@ -227,6 +277,7 @@ impl Ctx<'_> {
                     key.span(),
                     format!("`params`: the included `{shown}` defines no parameter `{name}`"),
                 ),
+                exact,
             });
         }
         Ok(out)
@@ -347,12 +398,25 @@ impl Ctx<'_> {
         let order = self.order(&defs, &exprs)?;
         for name in order {
             let value = match &defs[name] {
-                Def::Value(v) => *v,
+                Def::Value(v) => {
+                    if let Some(b) = passed
+                        .iter()
+                        .find(|p| p.name == name)
+                        .and_then(|p| p.exact.clone())
+                    {
+                        self.params.exact.insert(name.to_string(), b);
+                    }
+                    *v
+                }
                 Def::File(_, q) if matches!(q.get_ref(), Quantity::Number(_)) => {
                     let Quantity::Number(x) = q.get_ref() else {
                         unreachable!("invariant: matched above")
                     };
-                    self.number_param(q, *x, &format!("parameter `{name}`"))?
+                    let v = self.number_param(q, *x, &format!("parameter `{name}`"))?;
+                    if let Some(b) = self.params.exact_value(None, v) {
+                        self.params.exact.insert(name.to_string(), b);
+                    }
+                    v
                 }
                 def => {
                     let (text, span, source) = match def {
@@ -400,6 +464,9 @@ impl Ctx<'_> {
                     }
                     if !grad.is_empty() {
                         self.params.grads.insert(name.to_string(), grad);
+                    }
+                    if let Some(b) = self.params.exact_value(Some(&exprs[name]), value) {
+                        self.params.exact.insert(name.to_string(), b);
                     }
                     value
                 }
@@ -557,7 +624,7 @@ impl Ctx<'_> {
             let f = factor.value();
             grad.iter_mut().for_each(|(_, d)| *d /= f);
         }
-        let x = v.in_units(factor);
+        let x = params.nearest(&e, v, factor);
         if !x.is_finite() {
             return Err(self.err(
                 q.span(),

@@ -1,6 +1,7 @@
 //! massprop's integration tests, in one binary: each extra test binary is
 //! another link on a 2-core machine.
 
+mod alarms;
 mod arrays;
 mod auto;
 mod bounded;
@@ -27,6 +28,7 @@ mod expect_axes;
 mod explain;
 mod files;
 mod frames;
+mod honesty;
 mod hostile;
 mod hostile_round_two;
 mod invariants;

@@ -7,6 +7,10 @@
 //!
 //! - [`reference`]: the exact rational reference composer and the scene
 //!   description (`Scene`, `Part`, `to_toml`) every accuracy test uses;
+//! - [`placed`]: parts placed by include frames, array copies, mirror
+//!   images, and meshes, exactly (issue 30);
+//! - [`honest`]: every value of a JSON report against the exact body, with
+//!   its bound and storage floor;
 //! - [`scenes`]: the stress scenes of docs/accuracy.md;
 //! - [`solids`]: the reference's exact forms of the cone, torus,
 //!   hemisphere and prism.
@@ -14,6 +18,8 @@
 //! It does not depend on massprop: the reference must stay independent of
 //! the code it checks.
 
+pub mod honest;
+pub mod placed;
 pub mod reference;
 pub mod scenes;
 pub mod solids;

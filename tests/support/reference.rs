@@ -1316,6 +1316,15 @@ pub fn compose(scene: &Scene) -> Exact {
         .iter()
         .map(|p| exact_part(p, scene.length, scene.mass))
         .collect();
+    let l = scene.length.si();
+    let about = scene.about.map(|a| scale(&qv(a), &l));
+    compose_parts(parts, about)
+}
+
+/// Compose parts given exactly (SI), with a reference point (SI): what
+/// `compose` does for a scene, for bodies a `Scene` cannot write
+/// (sub-assemblies, copies, meshes: tests/support/placed.rs).
+pub fn compose_parts(parts: Vec<ExactPart>, about: Option<V3>) -> Exact {
     let mass: Q = parts.iter().map(|p| p.mass.clone()).sum();
     let first = parts
         .iter()
@@ -1328,10 +1337,9 @@ pub fn compose(scene: &Scene) -> Exact {
             &mscale(&outer(&d, &d), &p.mass),
         )
     });
-    let l = scene.length.si();
     Exact {
         inertia: inertia_of(&second_moment),
-        about: scene.about.map(|a| scale(&qv(a), &l)),
+        about,
         mass,
         com,
         second_moment,

@@ -38,7 +38,10 @@ impl Base {
         };
         let mut rec = Recorder::default();
         ctx.read_params(&mut rec, Some(table), &[]).ok()?;
-        if !ctx.params.grads.is_empty() || !rec.sources.is_empty() {
+        // NOTE: a parameter evaluated in double-double keeps its exact
+        // value beside (`Params::exact`); such files, rare, are read in
+        // full for each set of `params`, which keeps it.
+        if !ctx.params.grads.is_empty() || !rec.sources.is_empty() || !ctx.params.exact.is_empty() {
             return None;
         }
         let mut defs: BTreeMap<&str, Def> = BTreeMap::new();
@@ -115,7 +118,7 @@ fn over(passed: &[Pass], base: &Base) -> Option<Params> {
         let Given::Value(v) = &p.given else {
             return None;
         };
-        if !base.rank.contains_key(&p.name) {
+        if !base.rank.contains_key(&p.name) || p.exact.is_some() {
             return None;
         }
         values.insert(p.name.clone(), *v);
@@ -139,11 +142,16 @@ fn over(passed: &[Pass], base: &Base) -> Option<Params> {
         base: base.values.clone(),
         grads: BTreeMap::new(),
         set: BTreeMap::new(),
+        exact: BTreeMap::new(),
     };
     for name in affected {
         let v = base.exprs[name]
             .eval(&|n| params.get(n), &|| params.names())
             .ok()?;
+        // Through double-double: read in full, to keep its exact value.
+        if let crate::expr::Num::Float(_) = v.num {
+            return None;
+        }
         params.values.insert(name.to_string(), v);
     }
     Some(params)
