@@ -81,6 +81,21 @@ pub struct Lump<T> {
     pub e_mass: f64,
     pub e_first: [f64; 3],
     pub e_second: M3<f64>,
+    /// A bound on the Frobenius norm of the second moment's error, which a
+    /// turn or a reflection keeps (`place`): a body turned twice (an
+    /// include's frame, then a mirror) is then bounded by its norm, not by
+    /// |R| applied twice entry by entry.
+    pub e_norm: f64,
+}
+
+/// √(Σ eᵢⱼ²) of a bound's entries: a bound on the Frobenius norm of the
+/// error they bound, scaled so that no square overflows.
+fn frobenius(e: &M3<f64>) -> f64 {
+    let top = e.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    if top == 0.0 || !top.is_finite() {
+        return top;
+    }
+    safe(top * e.iter().flatten().map(|x| (x / top) * (x / top)).sum::<f64>().sqrt())
 }
 
 std::thread_local! {
@@ -243,6 +258,7 @@ fn part_lump<T: Arith>(p: &Part, need: Need) -> Lump<T> {
         e_mass: 0.0,
         e_first: [0.0; 3],
         e_second: [[0.0; 3]; 3],
+        e_norm: 0.0,
     };
     if need == Need::Mass {
         return lump;
@@ -269,6 +285,7 @@ fn part_lump<T: Arith>(p: &Part, need: Need) -> Lump<T> {
             safe(u * (own + error.rot) + am * off[j] * off[k])
         })
     });
+    lump.e_norm = frobenius(&lump.e_second);
     lump
 }
 
@@ -382,6 +399,15 @@ fn place<T: Arith>(b: &Lump<T>, p: &Placement<T>, need: Need) -> Lump<T> {
     let ca = b.second.map(|r| r.map(|x| x.f64().abs()));
     let spread: f64 = ca.iter().flatten().sum();
     let sp = first.map(|x| x.f64().abs());
+    // NOTE: R̂ ΔC R̂ᵀ's entries are at most its 2-norm, ‖R̂‖₂² ‖ΔC‖₂, with
+    // ‖R̂‖₂ ≤ 1 + ‖R̂ − R‖_F ≤ 1 + 3ρ: the carried error is the smaller of
+    // that and the entrywise (|R̂| + ρ)|δC|(|R̂| + ρ)ᵀ, and its norm is
+    // carried on (`Lump::e_norm`), so that a second turn does not grow it
+    // by |R| again.
+    let keep = (1.0 + 3.0 * rho) * (1.0 + 3.0 * rho);
+    let cap = keep * b.e_norm;
+    let grow = 1.0 + 8.0 * crate::bounds::U64;
+    let mut rest = [[0.0f64; 3]; 3];
     let e_second: M3<f64> = std::array::from_fn(|j| {
         std::array::from_fn(|l2| {
             let mut carried = 0.0;
@@ -392,19 +418,23 @@ fn place<T: Arith>(b: &Lump<T>, p: &Placement<T>, need: Need) -> Lump<T> {
                     mag += ra[j][k] * ca[k][m] * ra[l2][m];
                 }
             }
-            safe(
-                kl2a * (carried + (2.0 * rho + rho * rho) * spread + rel2 * mag)
-                    * (1.0 + 8.0 * crate::bounds::U64)
+            let others = safe(
+                kl2a * ((2.0 * rho + rho * rho) * spread + rel2 * mag) * grow
                     + (sp[j] + e_first[j]) * delta[l2]
                     + delta[j] * (sp[l2] + e_first[l2])
                     + mass_a * delta[j] * delta[l2],
-            )
+            );
+            rest[j][l2] = others;
+            safe(kl2a * carried.min(cap) * grow + others)
         })
     });
     out.first = first;
     out.second = second;
     out.e_first = e_first;
     out.e_second = e_second;
+    // The carried error's norm is at most k L² ‖R̂‖₂² ‖ΔC‖_F; the rest's,
+    // that of its entries' bounds; and never more than all the entries'.
+    out.e_norm = safe(kl2a * cap * grow + frobenius(&rest)).min(frobenius(&e_second));
     out
 }
 
@@ -543,6 +573,7 @@ fn compose_sub<T: Arith>(model: &Model, memo: &Memo<T>) -> Lump<T> {
         e_mass: e.mass,
         e_first: e.first,
         e_second: e.second,
+        e_norm: frobenius(&e.second),
     }
 }
 

@@ -155,16 +155,25 @@ impl Frame {
             ),
             (o, lo) => (o.clone(), lo.abs() * (std::f64::consts::PI / 180.0) * 1.01),
         };
-        // In f64 the frame's own matrix (the same orientation).
+        // NOTE: in f64 too the matrix is formed in double-double and
+        // rounded once, so that it is within a unit of the exact turn
+        // rather than the f64 form's 10–35 units (an Euler turn's 24): a
+        // placed body's bound carries R's error times its whole second
+        // moment, which dominated the bounds of turned sub-assemblies.
+        // A frame is placed once per instance, not per part: the cost is
+        // a double-double turn per frame.
+        let formed: M3<DD> = orientation.matrix();
         let r: M3<T> = if dd_arith {
-            orientation.matrix()
+            formed.map(|row| row.map(|x| T::of(x.hi) + T::of(x.lo)))
         } else {
-            self.r.map(|row| row.map(T::of))
+            formed.map(|row| row.map(|x| T::of(x.f64())))
         };
         let r_dd: M3<DD> = r.map(|row| row.map(Into::into));
         let r64 = r_dd.map(|row| row.map(DD::f64));
         let exact_turn = r64.iter().flatten().all(|x| *x == 0.0 || x.abs() == 1.0);
-        let rho = crate::part::error::turn_error(&orientation, &r64) * unit + angle;
+        let form = crate::part::error::turn_error(&orientation, &r64) * crate::part::error::U_DD;
+        let rounding = if dd_arith || form == 0.0 { 0.0 } else { unit };
+        let rho = form + rounding + angle;
         let exact_turn = exact_turn && rho == 0.0;
         // A ratio in `T`, and its relative error: the exact ratio's
         // double-double's (`units_rel`) and its rounding to `T`.

@@ -258,12 +258,27 @@ pub fn measure(v: &Value, e: &Expected, p: &Prepared) -> Vec<Item> {
                     let (lo, hi) = ((k - bound).max(0.0), k + bound);
                     let honest = r::q(lo) * r::q(lo) <= ratio && ratio <= r::q(hi) * r::q(hi);
                     let exact = r::sqrt(&ratio);
+                    // A radius is √(I/m): storing the tensor moves I by
+                    // the arithmetic's unit of its largest moment (entry,
+                    // for a radius about an axis), as a principal
+                    // moment's floor says, and so the radius by
+                    // δ/(√(I + δ) + √I)/√m.
+                    let largest = match key.as_str() {
+                        "radii_of_gyration" => r::f(&pr.moments[2]),
+                        "radii_of_gyration_axes" => top(i_com),
+                        _ => top(i_ref),
+                    };
+                    let delta = unit * largest;
+                    let lam = r::f(&ratio) * r::f(&body.mass);
+                    let moved = delta
+                        / (((lam + delta).max(0.0)).sqrt() + lam.max(0.0).sqrt())
+                        / r::f(&body.mass).abs().sqrt();
                     out.push(Item {
                         key: at(j),
                         value: k,
                         error: r::f(&(r::q(k) - &exact).abs()),
                         bound,
-                        floor: U * r::f(&exact),
+                        floor: U * r::f(&exact) + moved,
                         honest,
                     });
                 }
