@@ -446,6 +446,23 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
             "turned into the file's axes, I = R I′ Rᵀ (R's columns: its local axes in the file's frame, from its `rotation` or its edges):"
         })]));
         if !same {
+            // R as the composer forms it (`Place::turn`), entry by entry.
+            if let Some(r) = p.spec.place.turn() {
+                for (a, row) in r.iter().enumerate() {
+                    for (b, x) in row.iter().enumerate() {
+                        rows.push(eq(
+                            Math::new(
+                                format!("R{}{}", a + 1, b + 1),
+                                format!("R_{{{}{}}}", a + 1, b + 1),
+                            ),
+                            None,
+                            None,
+                            Exact::of(*x),
+                            &Math::new("", ""),
+                        ));
+                    }
+                }
+            }
             for e in ENTRIES {
                 rows.push(eq(
                     entry_name(e, "", ""),

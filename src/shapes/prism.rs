@@ -388,6 +388,10 @@ impl ShapeKind for Prism {
         None
     }
 
+    fn turn(&self) -> Option<M3<f64>> {
+        Some(self.orientation.matrix())
+    }
+
     /// Both ends' polygons and the edges between them.
     fn outline(&self) -> Outline {
         let [x, y, z] = axes(&self.orientation.matrix());

@@ -533,3 +533,65 @@ fn a_huge_body_says_beyond_range_and_never_prints_inf() {
         assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
     }
 }
+
+/// The nine numbers `R11 … R33` the explanation prints for its first
+/// turned part, and the tensor it prints after them (tensor entries).
+fn printed_turn(text: &str) -> ([[f64; 3]; 3], [f64; 3], [[f64; 3]; 3]) {
+    let r = std::array::from_fn(|a| {
+        std::array::from_fn(|b| values(text, &format!("R{}{}", a + 1, b + 1))[0])
+    });
+    let own = ["Ix′x′", "Iy′y′", "Iz′z′"].map(|n| values(text, n)[0]);
+    let after = text.split("R33 = ").nth(1).unwrap();
+    let at = |n: &str| values(after, n)[0];
+    let (xy, xz, yz) = (at("Ixy"), at("Ixz"), at("Iyz"));
+    let i = [
+        [at("Ixx"), xy, xz],
+        [xy, at("Iyy"), yz],
+        [xz, yz, at("Izz")],
+    ];
+    (r, own, i)
+}
+
+/// R diag(own) Rᵀ, formed here from the printed numbers, is the printed
+/// tensor to rounding; R is a rotation (RᵀR = 1).
+fn turn_reproduces_tensor(toml: &str, name: &str) {
+    let dir = crate::common::scratch("explain", name);
+    let f = dir.join("t.toml");
+    std::fs::write(&f, toml).unwrap();
+    let text = explain(&[f.to_str().unwrap()]);
+    assert!(text.contains("turned into the file's axes"), "{text}");
+    let (r, own, i) = printed_turn(&text);
+    let scale = own.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    for a in 0..3 {
+        for b in 0..3 {
+            let want: f64 = (0..3).map(|k| r[a][k] * own[k] * r[b][k]).sum();
+            close(i[a][b], want, scale, &format!("I[{a}][{b}]"));
+            let dot: f64 = (0..3).map(|k| r[k][a] * r[k][b]).sum();
+            close(dot, if a == b { 1.0 } else { 0.0 }, 1.0, "RᵀR");
+        }
+    }
+    assert!(
+        r.iter()
+            .flatten()
+            .any(|x| x.abs() > 1e-3 && (x.abs() - 1.0).abs() > 1e-3),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_box_turned_by_a_quaternion_prints_r_and_r_i_rt_is_its_tensor() {
+    turn_reproduces_tensor(
+        "[[part]]\nname = \"block\"\nshape = \"box\"\ndensity = 1000\nsize = [0.2, 0.1, 0.05]\n\
+         center = [1, 0, 0]\nrotation = { quaternion = [0.8, 0.4, -0.4, 0.2] }\n",
+        "turn-box",
+    );
+}
+
+#[test]
+fn a_cylinder_turned_by_euler_angles_prints_r_and_r_i_rt_is_its_tensor() {
+    turn_reproduces_tensor(
+        "[[part]]\nname = \"can\"\nshape = \"cylinder\"\ndensity = 1000\nradius = 0.05\n\
+         length = 0.3\ncenter = [0, 1, 0]\nrotation = { intrinsic = \"zyx\", degrees = [30, 20, 10] }\n",
+        "turn-cylinder",
+    );
+}
