@@ -595,3 +595,73 @@ fn a_cylinder_turned_by_euler_angles_prints_r_and_r_i_rt_is_its_tensor() {
         "turn-cylinder",
     );
 }
+
+const TRIANGLE_AND_GIVEN: &str = "[[part]]\nname = \"tri\"\nshape = \"triangle\"\nmass = 2\n\
+    vertices = [[0, 0, 0], [0.3, 0, 0], [0, 0.2, 0.1]]\n\n\
+    [[part]]\nname = \"bought\"\nshape = \"inertia\"\nmass = 1.5\ncenter = [0, 0, 0]\n\
+    inertia = [[0.02, -0.001, 0], [-0.001, 0.03, 0.002], [0, 0.002, 0.04]]\n\
+    rotation = { quaternion = [0.8, 0.4, -0.4, 0.2] }\n";
+
+fn triangle_and_given() -> String {
+    let dir = crate::common::scratch("explain", "triangle-given");
+    let f = dir.join("t.toml");
+    std::fs::write(&f, TRIANGLE_AND_GIVEN).unwrap();
+    explain(&[f.to_str().unwrap()])
+}
+
+/// The printed tensor entries after `from` (tensor convention).
+fn tensor_after(text: &str, from: &str) -> [[f64; 3]; 3] {
+    let after = text.split(from).nth(1).unwrap();
+    let at = |n: &str| values(after, n)[0];
+    let (xy, xz, yz) = (at("Ixy"), at("Ixz"), at("Iyz"));
+    [
+        [at("Ixx"), xy, xz],
+        [xy, at("Iyy"), yz],
+        [xz, yz, at("Izz")],
+    ]
+}
+
+#[test]
+fn a_triangle_prints_its_e_k_and_m_over_12_sum_gives_its_tensor() {
+    let text = triangle_and_given();
+    let e: Vec<[f64; 3]> = (1..=3)
+        .map(|n| ["x", "y", "z"].map(|k| values(&text, &format!("e{n}{k}"))[0]))
+        .collect();
+    // ∫ρρᵀ dm = (m/12) Σ eₖeₖᵀ; I = tr E − it (here, not by the program).
+    let s: [[f64; 3]; 3] = std::array::from_fn(|a| {
+        std::array::from_fn(|b| 2.0 / 12.0 * e.iter().map(|v| v[a] * v[b]).sum::<f64>())
+    });
+    let tr = s[0][0] + s[1][1] + s[2][2];
+    let i = tensor_after(&text, "e3z = ");
+    for a in 0..3 {
+        for b in 0..3 {
+            let want = if a == b { tr - s[a][a] } else { -s[a][b] };
+            close(i[a][b], want, tr, &format!("I[{a}][{b}]"));
+        }
+    }
+}
+
+#[test]
+fn a_given_inertia_prints_the_tensor_as_given_then_r_then_r_i_rt() {
+    let text = triangle_and_given();
+    assert!(text.contains("Ix′x′ = 0.02 kg·m²"), "{text}");
+    assert!(text.contains("Iy′z′ = 0.002 kg·m²"), "{text}");
+    let g = [
+        [0.02, -0.001, 0.0],
+        [-0.001, 0.03, 0.002],
+        [0.0, 0.002, 0.04],
+    ];
+    let r: [[f64; 3]; 3] = std::array::from_fn(|a| {
+        std::array::from_fn(|b| values(&text, &format!("R{}{}", a + 1, b + 1))[0])
+    });
+    let i = tensor_after(&text, "R33 = ");
+    for a in 0..3 {
+        for b in 0..3 {
+            let want: f64 = (0..3)
+                .flat_map(|k| (0..3).map(move |l| (k, l)))
+                .map(|(k, l)| r[a][k] * g[k][l] * r[b][l])
+                .sum();
+            close(i[a][b], want, 0.04, &format!("I[{a}][{b}]"));
+        }
+    }
+}
