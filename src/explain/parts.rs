@@ -39,6 +39,37 @@ pub(super) fn eq(
         subst,
         value,
         unit: unit.clone(),
+        reported: None,
+    }
+}
+
+/// `eq` for a final figure, shown as the report's f64 `reported` (where
+/// the report has it in these units), `value` exactly beside it.
+pub(super) fn eq_reported(
+    lhs: Math,
+    form: Option<Math>,
+    subst: Option<Math>,
+    value: Exact,
+    unit: &Math,
+    reported: Option<f64>,
+) -> Row {
+    match eq(lhs, form, subst, value, unit) {
+        Row::Eq {
+            lhs,
+            form,
+            subst,
+            value,
+            unit,
+            ..
+        } => Row::Eq {
+            lhs,
+            form,
+            subst,
+            value,
+            unit,
+            reported,
+        },
+        other => other,
     }
 }
 
