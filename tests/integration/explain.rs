@@ -689,7 +689,7 @@ fn final_figures_are_the_reports(args: &[&str], l: f64, k: f64) -> usize {
     let text = explain(args);
     let json = report(args);
     let num = |v: &Value| v.as_f64().unwrap();
-    let mut same = |got: f64, want: &Value, what: &str| {
+    let same = |got: f64, want: &Value, what: &str| {
         assert_eq!(
             got.to_bits(),
             num(want).to_bits(),
