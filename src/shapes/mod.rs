@@ -147,10 +147,7 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     fn real_size_direction(&self) -> Option<[DD; 3]>;
     /// Its outline in 3-D in the file's frame (`outline`).
     fn outline(&self) -> Outline;
-    /// The turn R from its own axes into the file's, as the composer
-    /// forms its tensor (R I′ Rᵀ; columns: its local axes in the file's
-    /// frame), for `explain`; `None` where its numbers are in the file's
-    /// axes already or no one turn places it (a triangle, a rod by its ends).
+    /// Its turn R into the file's axes, as composed (`Place::turn`).
     fn turn(&self) -> Option<M3<f64>>;
 }
 
@@ -410,13 +407,6 @@ macro_rules! registry {
             pub fn outline(&self) -> Outline {
                 match self {
                     $(Place::$variant(s) => s.outline(),)+
-                }
-            }
-
-            /// `ShapeKind::turn`.
-            pub fn turn(&self) -> Option<M3<f64>> {
-                match self {
-                    $(Place::$variant(s) => s.turn(),)+
                 }
             }
         }
