@@ -72,6 +72,9 @@ pub enum Row {
         subst: Option<Math>,
         value: Exact,
         unit: Unit,
+        /// A final figure: the report's own f64 for it, shown in its
+        /// place (shortest round-trip), the exact value beside it.
+        reported: Option<f64>,
     },
     /// A sub-assembly, array or mesh in one line: its label, then each
     /// total.

@@ -98,6 +98,33 @@ pub fn text(x: Exact) -> String {
     }
 }
 
+/// A final figure: the report's f64 `r` (shortest round-trip, as its
+/// JSON writes it), and `x` exactly as a fraction where it has one that
+/// is short and the report's figure is not it already.
+pub fn show_reported(x: Exact, r: f64) -> Shown {
+    let value = shortest(if r == 0.0 { 0.0 } else { r });
+    let fraction = x.exact.and_then(|(n, d)| {
+        let same = decimal(n, d).is_some_and(|s| s == value);
+        let (ns, ds) = (n.to_string(), d.to_string());
+        (!same && ns.len() + ds.len() <= SHORT).then_some((ns, ds))
+    });
+    Shown { value, fraction }
+}
+
+/// `text` of a final figure (`show_reported`).
+pub fn text_reported(x: Exact, r: f64) -> String {
+    let s = show_reported(x, r);
+    match s.fraction {
+        Some((n, d)) => format!("{} (exactly {n}/{d})", s.value),
+        None => s.value,
+    }
+}
+
+/// `tex` of a final figure (`show_reported`).
+pub fn tex_reported(x: Exact, r: f64) -> String {
+    tex_shown(show_reported(x, r))
+}
+
 /// `x`'s value alone (inside a formula with numbers).
 pub fn plain(x: Exact) -> String {
     show(x).value
@@ -105,7 +132,10 @@ pub fn plain(x: Exact) -> String {
 
 /// `x` as TeX: the value, and the exact fraction as `\tfrac`.
 pub fn tex(x: Exact) -> String {
-    let s = show(x);
+    tex_shown(show(x))
+}
+
+fn tex_shown(s: Shown) -> String {
     let value = tex_number(&s.value);
     match s.fraction {
         Some((n, d)) => {

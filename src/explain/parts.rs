@@ -15,7 +15,7 @@ use crate::analysis::{Loaded, Products};
 use crate::explain::exact::Exact;
 use crate::numeric::Real;
 use crate::part::{MassSpec, Part, Spec};
-use crate::shapes::{Fixed, Shape, Slot};
+use crate::shapes::{Fixed, Place, Shape, Slot};
 
 /// One item's share of the sums: a part's, or a group's.
 pub struct Share {
@@ -39,6 +39,37 @@ pub(super) fn eq(
         subst,
         value,
         unit: unit.clone(),
+        reported: None,
+    }
+}
+
+/// `eq` for a final figure, shown as the report's f64 `reported` (where
+/// the report has it in these units), `value` exactly beside it.
+pub(super) fn eq_reported(
+    lhs: Math,
+    form: Option<Math>,
+    subst: Option<Math>,
+    value: Exact,
+    unit: &Math,
+    reported: Option<f64>,
+) -> Row {
+    match eq(lhs, form, subst, value, unit) {
+        Row::Eq {
+            lhs,
+            form,
+            subst,
+            value,
+            unit,
+            ..
+        } => Row::Eq {
+            lhs,
+            form,
+            subst,
+            value,
+            unit,
+            reported,
+        },
+        other => other,
     }
 }
 
@@ -314,6 +345,101 @@ fn dims(spec: &Spec, shape: Shape) -> Option<Vec<Dimension>> {
 }
 
 /// A part of the file's own, explained in full; its share.
+/// R as the composer forms it (`Place::turn`), entry by entry.
+fn turn_rows(p: &Part, rows: &mut Vec<Row>) {
+    if let Some(r) = p.spec.place.turn() {
+        for (a, row) in r.iter().enumerate() {
+            for (b, x) in row.iter().enumerate() {
+                rows.push(eq(
+                    Math::new(
+                        format!("R{}{}", a + 1, b + 1),
+                        format!("R_{{{}{}}}", a + 1, b + 1),
+                    ),
+                    None,
+                    None,
+                    Exact::of(*x),
+                    &Math::new("", ""),
+                ));
+            }
+        }
+    }
+}
+
+/// The working of a shape whose closed form is over its points or a
+/// given tensor, not its dimensions: a given tensor as given, then R
+/// (the turn the next rows are); a triangle's vertices less its
+/// centroid, eₖ, whose (m/12) Σ eₖeₖᵀ is ∫ρρᵀ dm. (A prism's and a
+/// mesh's sums are named in their form; their many terms are not
+/// printed.)
+fn written_out(p: &Part, u: &Units, rows: &mut Vec<Row>) {
+    match &p.spec.place {
+        Place::Inertia(g) => {
+            rows.push(Row::Note(vec![t(
+                "the tensor as given, about its centroid in its own axes x′, y′, z′ (tensor convention):",
+            )]));
+            for (a, b) in ENTRIES {
+                rows.push(eq(
+                    Math::new(
+                        format!("I{}′{}′", AXIS[a], AXIS[b]),
+                        format!("I_{{{}'{}'}}", AXIS[a], AXIS[b]),
+                    ),
+                    None,
+                    None,
+                    Exact::of(g.inertia[a][b]),
+                    &u.inertia,
+                ));
+            }
+            if p.spec.place.turn().is_some_and(|r| r != IDENTITY) {
+                rows.push(Row::Note(vec![t(
+                    "turned into the file's axes, I = R I′ Rᵀ, with R:",
+                )]));
+                turn_rows(p, rows);
+            }
+        }
+        Place::Triangle(tri) => {
+            let c: [Exact; 3] = std::array::from_fn(|k| {
+                (Exact::of(tri.vertices[0][k])
+                    + Exact::of(tri.vertices[1][k])
+                    + Exact::of(tri.vertices[2][k]))
+                    / Exact::of(3.0)
+            });
+            rows.push(Row::Note(vec![t(
+                "its vertices less its centroid, eₖ = vₖ − c; ∫ρρᵀ dm = (m/12) Σ eₖeₖᵀ, I = tr(∫ρρᵀ dm) E − ∫ρρᵀ dm:",
+            )]));
+            for (n, v) in tri.vertices.iter().enumerate() {
+                for k in 0..3 {
+                    rows.push(eq(
+                        Math::new(
+                            format!("e{}{}", n + 1, AXIS[k]),
+                            format!("e_{{{}{}}}", n + 1, AXIS[k]),
+                        ),
+                        None,
+                        None,
+                        Exact::of(v[k]) - c[k],
+                        &u.length,
+                    ));
+                }
+            }
+        }
+        Place::Box(_)
+        | Place::Capsule(_)
+        | Place::Cone(_)
+        | Place::Cylinder(_)
+        | Place::Disk(_)
+        | Place::Ellipsoid(_)
+        | Place::Hemisphere(_)
+        | Place::Mesh(_)
+        | Place::Plate(_)
+        | Place::Point(_)
+        | Place::Prism(_)
+        | Place::Rod(_)
+        | Place::Sphere(_)
+        | Place::Torus(_) => {}
+    }
+}
+
+const IDENTITY: [[f64; 3]; 3] = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+
 fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (Step, Share) {
     let shape = p.shape();
     let e = shape.explain();
@@ -446,6 +572,7 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
             "turned into the file's axes, I = R I′ Rᵀ (R's columns: its local axes in the file's frame, from its `rotation` or its edges):"
         })]));
         if !same {
+            turn_rows(p, &mut rows);
             for e in ENTRIES {
                 rows.push(eq(
                     entry_name(e, "", ""),
@@ -457,6 +584,7 @@ fn part_step(p: &Part, n: usize, u: &Units, origin: &V, products: Products) -> (
             }
         }
     } else {
+        written_out(p, u, &mut rows);
         rows.push(Row::Note(vec![t(format!(
             "own inertia about its centroid in the file's axes ({})",
             e.form

@@ -137,6 +137,7 @@ fn text(doc: &Doc) -> String {
                     subst,
                     value,
                     unit,
+                    reported,
                 } => {
                     out.push_str(&lhs.text);
                     for m in [form, subst].into_iter().flatten() {
@@ -144,7 +145,7 @@ fn text(doc: &Doc) -> String {
                         out.push_str(&m.text);
                     }
                     out.push_str(" = ");
-                    out.push_str(&number::text(*value));
+                    out.push_str(&value_text(*value, *reported));
                     out.push_str(&unit_text(unit));
                 }
                 Row::Summary { label, items } => {
@@ -186,6 +187,7 @@ fn markdown(doc: &Doc) -> String {
                     subst,
                     value,
                     unit,
+                    reported,
                 } => {
                     if !table {
                         out.push_str("| quantity | formula | with the numbers | value |\n|---|---|---|---|\n");
@@ -200,7 +202,7 @@ fn markdown(doc: &Doc) -> String {
                         lhs.tex,
                         cell(form),
                         cell(subst),
-                        md_escape(&number::text(*value)),
+                        md_escape(&value_text(*value, *reported)),
                         md_escape(&unit_text(unit))
                     ));
                 }
@@ -242,11 +244,23 @@ fn markdown(doc: &Doc) -> String {
     out
 }
 
-fn tex_value(v: super::exact::Exact, u: &Math) -> String {
+fn tex_value(v: super::exact::Exact, reported: Option<f64>, u: &Math) -> String {
+    let n = match reported {
+        Some(r) => number::tex_reported(v, r),
+        None => number::tex(v),
+    };
     if u.tex.is_empty() {
-        number::tex(v)
+        n
     } else {
-        format!("{}\\;{}", number::tex(v), u.tex)
+        format!("{n}\\;{}", u.tex)
+    }
+}
+
+/// A value as text: a final figure as the report's (`number::text_reported`).
+fn value_text(v: super::exact::Exact, reported: Option<f64>) -> String {
+    match reported {
+        Some(r) => number::text_reported(v, r),
+        None => number::text(v),
     }
 }
 
@@ -276,6 +290,7 @@ fn latex(doc: &Doc) -> String {
                     subst,
                     value,
                     unit,
+                    reported,
                 } => {
                     if !align {
                         out.push_str("\\begin{align*}\n");
@@ -286,7 +301,7 @@ fn latex(doc: &Doc) -> String {
                     for m in [form, subst].into_iter().flatten() {
                         out.push_str(&format!("= {} ", m.tex));
                     }
-                    out.push_str(&format!("= {} \\\\\n", tex_value(*value, unit)));
+                    out.push_str(&format!("= {} \\\\\n", tex_value(*value, *reported, unit)));
                 }
                 Row::Note(p) | Row::Summary { label: p, .. } => {
                     if align {
@@ -297,7 +312,7 @@ fn latex(doc: &Doc) -> String {
                     if let Row::Summary { items, .. } = row {
                         let items: Vec<String> = items
                             .iter()
-                            .map(|(m, v, u)| format!("${} = {}$", m.tex, tex_value(*v, u)))
+                            .map(|(m, v, u)| format!("${} = {}$", m.tex, tex_value(*v, None, u)))
                             .collect();
                         out.push_str(": ");
                         out.push_str(&items.join("; "));

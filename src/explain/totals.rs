@@ -6,7 +6,7 @@
 #![allow(clippy::needless_range_loop)]
 
 use super::number::plain;
-use super::parts::{Share, eq, joined, sum};
+use super::parts::{Share, eq, eq_reported, joined, sum};
 use super::{AXIS, ENTRIES, M, Math, Row, Step, Units, V, entry_name, shift, shown_entry, t, zero};
 use crate::analysis::{Loaded, Products};
 use crate::explain::exact::Exact;
@@ -28,12 +28,19 @@ pub fn totals(
         "summing the respective terms of the {} items above",
         shares.len()
     ))])];
-    rows.push(eq(
+    let rep = &loaded.summary;
+    // The report's figures are in SI: the same numbers where the file's
+    // units are they.
+    let si = u.inertia_si.exact == Some((1, 1));
+    let kg = u.mass.text == "kg";
+    let metre = u.length.text == "m";
+    rows.push(eq_reported(
         Math::new("m", "m"),
         Some(Math::new("Σ m", "\\sum m")),
         Some(joined(&masses, " + ", " + ")),
         mass,
         &u.mass,
+        reported(mass, rep.mass, kg),
     ));
     let mut g = [zero(); 3];
     for k in 0..3 {
@@ -51,7 +58,7 @@ pub fn totals(
             ),
         ));
         g[k] = if mass.is_zero() { zero() } else { first / mass };
-        rows.push(eq(
+        rows.push(eq_reported(
             Math::new(format!("{name}_G"), format!("{name}_G")),
             Some(Math::new(
                 format!("Σ m·{name}_c / m"),
@@ -60,6 +67,7 @@ pub fn totals(
             Some(joined(&[first, mass], " / ", " / ")),
             g[k],
             &u.length,
+            reported(g[k], rep.center_of_mass[k], metre),
         ));
     }
     let mut about = [[zero(); 3]; 3];
@@ -146,12 +154,17 @@ pub fn totals(
                 ),
             )
         };
-        rows.push(eq(
+        rows.push(eq_reported(
             entry_name((a, b), "(G)", "(G)"),
             Some(form),
             Some(joined(&[o, o - gv], " − ", " - ")),
             gv,
             &u.inertia,
+            reported(
+                gv,
+                rep.inertia_com[a][b],
+                si && loaded.analysis.axes.is_none(),
+            ),
         ));
     }
     steps.push(Step {
@@ -167,6 +180,18 @@ pub fn totals(
     } else {
         dynamics(loaded, u, &com, products, steps);
     }
+}
+
+/// The report's figure `r` for `x`, where it is in the same units and
+/// axes (`same`).
+// NOTE: and within 1e-9 of the exact value: the report's f64 rounds the
+// same sum; a figure further off is not this one (a convention or axes
+// not accounted for), and the exact value is shown alone rather than it.
+fn reported(x: Exact, r: f64, same: bool) -> Option<f64> {
+    (same
+        && r.is_finite()
+        && (r - x.approx).abs() <= 1e-9 * x.approx.abs().max(r.abs()).max(f64::MIN_POSITIVE))
+    .then_some(r)
 }
 
 /// The principal moments about G: the characteristic equation's
@@ -312,7 +337,7 @@ fn dynamics(loaded: &Loaded, u: &Units, i: &M, products: Products, steps: &mut V
                 })
                 .collect::<String>()
         };
-        rows.push(eq(
+        rows.push(eq_reported(
             Math::new(format!("H{}", AXIS[a]), format!("H_{}", AXIS[a])),
             Some(Math::new(join(form_t, false), join(form_x, true))),
             Some(Math::new(
@@ -321,10 +346,14 @@ fn dynamics(loaded: &Loaded, u: &Units, i: &M, products: Products, steps: &mut V
             )),
             h[a],
             &Math::new("N·m·s", "\\mathrm{N\\,m\\,s}"),
+            loaded
+                .summary
+                .angular_momentum
+                .and_then(|r| reported(h[a], r[a], true)),
         ));
     }
     let energy = (0..3).fold(zero(), |acc, a| acc + w[a] * h[a]) * Exact::ratio(1, 2);
-    rows.push(eq(
+    rows.push(eq_reported(
         Math::new("T", "T"),
         Some(Math::new("½ ωᵀ I ω = ½(ωx·Hx + ωy·Hy + ωz·Hz)", "\\tfrac{1}{2}\\,\\omega^{T} I\\,\\omega = \\tfrac{1}{2}\\left(\\omega_x H_x + \\omega_y H_y + \\omega_z H_z\\right)")),
         Some({
@@ -338,6 +367,10 @@ fn dynamics(loaded: &Loaded, u: &Units, i: &M, products: Products, steps: &mut V
         }),
         energy,
         &Math::new("J", "\\mathrm{J}"),
+        loaded
+            .summary
+            .kinetic_energy
+            .and_then(|r| reported(energy, r, true)),
     ));
     steps.push(Step {
         heading: vec![t(format!(

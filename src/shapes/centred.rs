@@ -80,6 +80,10 @@ macro_rules! placed_by_centre {
                 &mut self.orientation,
             );
         }
+
+        fn turn(&self) -> Option<$crate::numeric::M3<f64>> {
+            Some(self.orientation.matrix())
+        }
     };
     ($field:ident: [Own($key:literal); $n:literal]) => {
         placed_by_centre!(@methods self, l, m, f, src;
@@ -362,6 +366,31 @@ macro_rules! by_corner_or_centre {
                     orientation,
                 ),
                 $ty::Spanned { .. } => {}
+            }
+        }
+
+        /// Centred, its `rotation`'s; spanned, its edges' directions
+        /// (the third of a plate, their cross product's).
+        fn turn(&self) -> Option<$crate::numeric::M3<f64>> {
+            match self {
+                $ty::Centred { orientation, .. } => Some(orientation.matrix()),
+                $ty::Spanned { edges, .. } => {
+                    let unit = |e: [f64; 3]| {
+                        let n = (e[0] * e[0] + e[1] * e[1] + e[2] * e[2]).sqrt();
+                        e.map(|x| x / n)
+                    };
+                    let a = unit(edges[0]);
+                    let b = unit(edges[1]);
+                    let c = match edges.get(2) {
+                        Some(e) => unit(*e),
+                        None => unit([
+                            a[1] * b[2] - a[2] * b[1],
+                            a[2] * b[0] - a[0] * b[2],
+                            a[0] * b[1] - a[1] * b[0],
+                        ]),
+                    };
+                    Some(std::array::from_fn(|i| [a[i], b[i], c[i]]))
+                }
             }
         }
 

@@ -152,7 +152,7 @@ impl ShapeKind for Cone {
     };
 
     const EXPLAIN: super::Explain = super::Explain {
-        form: "cone or frustum: base radius R (bore r), top radius R_t (bore r_t), length L; its moments by the Bernstein form of its section (src/shapes/cone.rs)",
+        form: "cone or frustum: base radius R (bore r), top radius R_t (bore r_t), length L; its section A(1−t)² + 2Bt(1−t) + Ct² along the axis, A = R² − r², B = R·R_t − r·r_t, C = R_t² − r_t²",
         dims: &[
             super::symbol("R", "R", super::Slot::Radius),
             super::symbol("r", "r", super::Slot::InnerRadius),
@@ -161,10 +161,14 @@ impl ShapeKind for Cone {
             super::symbol("L", "L", super::Slot::Length),
         ],
         measure: "pi*L*(R^2 - r^2 + R*R_t - r*r_t + R_t^2 - r_t^2)/3",
+        // NOTE: ∫x² dm = 3m(S₄ − s₄)/(20(S₂ − s₂)), Sₙ the complete
+        // homogeneous sums of degree n in R, R_t (sₙ in r, r_t); ∫z² dm about
+        // the centroid is m L² times the variance of the section's height,
+        // its area along the axis in Bernstein form A(1−t)² + 2Bt(1−t) + Ct².
         moments: [
-            "",
-            "",
-            "",
+            "3*m*(R^4 + R^3*R_t + R^2*R_t^2 + R*R_t^3 + R_t^4 - r^4 - r^3*r_t - r^2*r_t^2 - r*r_t^3 - r_t^4)/(20*(R^2 + R*R_t + R_t^2 - r^2 - r*r_t - r_t^2)) + m*L^2*(((R^2 - r^2) + 3*(R*R_t - r*r_t) + 6*(R_t^2 - r_t^2))/(10*((R^2 - r^2) + (R*R_t - r*r_t) + (R_t^2 - r_t^2))) - ((R^2 - r^2) + 2*(R*R_t - r*r_t) + 3*(R_t^2 - r_t^2))^2/(16*((R^2 - r^2) + (R*R_t - r*r_t) + (R_t^2 - r_t^2))^2))",
+            "3*m*(R^4 + R^3*R_t + R^2*R_t^2 + R*R_t^3 + R_t^4 - r^4 - r^3*r_t - r^2*r_t^2 - r*r_t^3 - r_t^4)/(20*(R^2 + R*R_t + R_t^2 - r^2 - r*r_t - r_t^2)) + m*L^2*(((R^2 - r^2) + 3*(R*R_t - r*r_t) + 6*(R_t^2 - r_t^2))/(10*((R^2 - r^2) + (R*R_t - r*r_t) + (R_t^2 - r_t^2))) - ((R^2 - r^2) + 2*(R*R_t - r*r_t) + 3*(R_t^2 - r_t^2))^2/(16*((R^2 - r^2) + (R*R_t - r*r_t) + (R_t^2 - r_t^2))^2))",
+            "2*3*m*(R^4 + R^3*R_t + R^2*R_t^2 + R*R_t^3 + R_t^4 - r^4 - r^3*r_t - r^2*r_t^2 - r*r_t^3 - r_t^4)/(20*(R^2 + R*R_t + R_t^2 - r^2 - r*r_t - r_t^2))",
         ],
     };
 

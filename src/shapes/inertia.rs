@@ -145,6 +145,10 @@ impl ShapeKind for Given {
         None
     }
 
+    fn turn(&self) -> Option<M3<f64>> {
+        Some(self.orientation.matrix())
+    }
+
     fn outline(&self) -> Outline {
         Outline::Marker(Marker::Inertia, self.center)
     }

@@ -262,6 +262,10 @@ impl ShapeKind for Mesh {
         None
     }
 
+    fn turn(&self) -> Option<M3<f64>> {
+        Some(self.orientation.matrix())
+    }
+
     /// Its silhouette edges in each view.
     fn outline(&self) -> Outline {
         let [x, y, z] = axes(&self.orientation.matrix());

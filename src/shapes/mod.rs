@@ -147,6 +147,8 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     fn real_size_direction(&self) -> Option<[DD; 3]>;
     /// Its outline in 3-D in the file's frame (`outline`).
     fn outline(&self) -> Outline;
+    /// Its turn R into the file's axes, as composed (`Place::turn`).
+    fn turn(&self) -> Option<M3<f64>>;
 }
 
 /// The product of the dimensions (a box's volume, a plate's area, a rod's

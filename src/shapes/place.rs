@@ -75,6 +75,36 @@ impl Place {
     }
 }
 
+impl Place {
+    /// The turn R from its own axes into the file's, as the composer forms
+    /// its tensor (R I′ Rᵀ; columns: its local axes in the file's frame),
+    /// for `explain`; `None` where its numbers are in the file's axes
+    /// already or no one turn places it (a triangle, a rod by its ends).
+    // NOTE: matched here, not in `registry!`, to keep shapes/mod.rs under
+    // 800 lines; the match is exhaustive, so a new shape must answer.
+    pub fn turn(&self) -> Option<crate::numeric::M3<f64>> {
+        use super::ShapeKind;
+        match self {
+            Place::Box(s) => s.turn(),
+            Place::Plate(s) => s.turn(),
+            Place::Rod(s) => s.turn(),
+            Place::Cylinder(s) => s.turn(),
+            Place::Disk(s) => s.turn(),
+            Place::Sphere(s) => s.turn(),
+            Place::Triangle(s) => s.turn(),
+            Place::Point(s) => s.turn(),
+            Place::Inertia(s) => s.turn(),
+            Place::Cone(s) => s.turn(),
+            Place::Torus(s) => s.turn(),
+            Place::Hemisphere(s) => s.turn(),
+            Place::Prism(s) => s.turn(),
+            Place::Mesh(s) => s.turn(),
+            Place::Capsule(s) => s.turn(),
+            Place::Ellipsoid(s) => s.turn(),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -176,7 +176,7 @@ impl ShapeKind for Prism {
     };
 
     const EXPLAIN: super::Explain = super::Explain {
-        form: "polygon extruded along local z: its moments by Green's theorem (src/shapes/prism.rs)",
+        form: "polygon extruded along local z, length L; by Green's theorem over its edges (xᵢ, yᵢ)→(xᵢ₊₁, yᵢ₊₁), cᵢ = xᵢyᵢ₊₁ − xᵢ₊₁yᵢ: A = Σcᵢ/2, ∫x dA = Σ(xᵢ + xᵢ₊₁)cᵢ/6, ∫x² dA = Σ(xᵢ² + xᵢxᵢ₊₁ + xᵢ₊₁²)cᵢ/12, ∫xy dA = Σ(2xᵢyᵢ + xᵢyᵢ₊₁ + xᵢ₊₁yᵢ + 2xᵢ₊₁yᵢ₊₁)cᵢ/24 (y likewise), each less its centroid's share, times m/A; ∫z² dm = mL²/12",
         dims: &[],
         measure: "",
         moments: [
@@ -386,6 +386,10 @@ impl ShapeKind for Prism {
 
     fn real_size_direction(&self) -> Option<[DD; 3]> {
         None
+    }
+
+    fn turn(&self) -> Option<M3<f64>> {
+        Some(self.orientation.matrix())
     }
 
     /// Both ends' polygons and the edges between them.

@@ -303,6 +303,13 @@ impl ShapeKind for Rod {
         })
     }
 
+    fn turn(&self) -> Option<M3<f64>> {
+        match self {
+            Rod::Centred { orientation, .. } => Some(orientation.matrix()),
+            Rod::Ends { .. } => None,
+        }
+    }
+
     fn outline(&self) -> Outline {
         let points = match self {
             Rod::Centred {

@@ -214,6 +214,10 @@ impl ShapeKind for Triangle {
         None
     }
 
+    fn turn(&self) -> Option<M3<f64>> {
+        None
+    }
+
     fn outline(&self) -> Outline {
         Outline::Pieces(vec![Piece::Line {
             points: self.vertices.to_vec(),

@@ -75,10 +75,12 @@ fn the_bent_plate_masses_are_the_lectures() {
         text.contains("m = ρ·a·b = 0.00007 × 75 × 150 = 0.7875 kg"),
         "{text}"
     );
+    // The sum as the report's f64, the lecture's 1.6625 exactly beside it.
     assert!(
-        text.contains("m = Σ m = 0.875 + 0.7875 = 1.6625 kg"),
+        text.contains("m = Σ m = 0.875 + 0.7875 = 1.6624999999999999 (exactly 133/80) kg"),
         "{text}"
     );
+    assert_eq!(one(&text, "m"), 1.6625);
 }
 
 /// Each plate about O, by hand: a thin plate's ∫u² dm over [0, a] is
@@ -121,12 +123,13 @@ fn the_bent_plate_h_and_t_are_the_lectures_exactly() {
     let text = explain(&[BENT]);
     for line in [
         "= -0.0664453125 N·m·s",
-        "= -0.303515625 N·m·s",
+        "= -0.30351562499999996 (exactly -777/2560) N·m·s",
         "= 0.55015625 N·m·s",
         "= 8.25234375 J",
     ] {
         assert!(text.contains(line), "{line} in:\n{text}");
     }
+    assert_eq!(one(&text, "Hy"), -0.303515625);
 }
 
 /// The totals of an explanation against the report's JSON (SI): the
@@ -532,4 +535,249 @@ fn a_huge_body_says_beyond_range_and_never_prints_inf() {
         assert!(text.contains("beyond f64's range"), "{text}");
         assert!(!text.contains("inf") && !text.contains("NaN"), "{text}");
     }
+}
+
+/// The nine numbers `R11 … R33` the explanation prints for its first
+/// turned part, and the tensor it prints after them (tensor entries).
+fn printed_turn(text: &str) -> ([[f64; 3]; 3], [f64; 3], [[f64; 3]; 3]) {
+    let r = std::array::from_fn(|a| {
+        std::array::from_fn(|b| values(text, &format!("R{}{}", a + 1, b + 1))[0])
+    });
+    let own = ["Ix′x′", "Iy′y′", "Iz′z′"].map(|n| values(text, n)[0]);
+    let after = text.split("R33 = ").nth(1).unwrap();
+    let at = |n: &str| values(after, n)[0];
+    let (xy, xz, yz) = (at("Ixy"), at("Ixz"), at("Iyz"));
+    let i = [
+        [at("Ixx"), xy, xz],
+        [xy, at("Iyy"), yz],
+        [xz, yz, at("Izz")],
+    ];
+    (r, own, i)
+}
+
+/// R diag(own) Rᵀ, formed here from the printed numbers, is the printed
+/// tensor to rounding; R is a rotation (RᵀR = 1).
+fn turn_reproduces_tensor(toml: &str, name: &str) {
+    let dir = crate::common::scratch("explain", name);
+    let f = dir.join("t.toml");
+    std::fs::write(&f, toml).unwrap();
+    let text = explain(&[f.to_str().unwrap()]);
+    assert!(text.contains("turned into the file's axes"), "{text}");
+    let (r, own, i) = printed_turn(&text);
+    let scale = own.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    for a in 0..3 {
+        for b in 0..3 {
+            let want: f64 = (0..3).map(|k| r[a][k] * own[k] * r[b][k]).sum();
+            close(i[a][b], want, scale, &format!("I[{a}][{b}]"));
+            let dot: f64 = (0..3).map(|k| r[k][a] * r[k][b]).sum();
+            close(dot, if a == b { 1.0 } else { 0.0 }, 1.0, "RᵀR");
+        }
+    }
+    assert!(
+        r.iter()
+            .flatten()
+            .any(|x| x.abs() > 1e-3 && (x.abs() - 1.0).abs() > 1e-3),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_box_turned_by_a_quaternion_prints_r_and_r_i_rt_is_its_tensor() {
+    turn_reproduces_tensor(
+        "[[part]]\nname = \"block\"\nshape = \"box\"\ndensity = 1000\nsize = [0.2, 0.1, 0.05]\n\
+         center = [1, 0, 0]\nrotation = { quaternion = [0.8, 0.4, -0.4, 0.2] }\n",
+        "turn-box",
+    );
+}
+
+#[test]
+fn a_cylinder_turned_by_euler_angles_prints_r_and_r_i_rt_is_its_tensor() {
+    turn_reproduces_tensor(
+        "[[part]]\nname = \"can\"\nshape = \"cylinder\"\ndensity = 1000\nradius = 0.05\n\
+         length = 0.3\ncenter = [0, 1, 0]\nrotation = { intrinsic = \"zyx\", degrees = [30, 20, 10] }\n",
+        "turn-cylinder",
+    );
+}
+
+const TRIANGLE_AND_GIVEN: &str = "[[part]]\nname = \"tri\"\nshape = \"triangle\"\nmass = 2\n\
+    vertices = [[0, 0, 0], [0.3, 0, 0], [0, 0.2, 0.1]]\n\n\
+    [[part]]\nname = \"bought\"\nshape = \"inertia\"\nmass = 1.5\ncenter = [0, 0, 0]\n\
+    inertia = [[0.02, -0.001, 0], [-0.001, 0.03, 0.002], [0, 0.002, 0.04]]\n\
+    rotation = { quaternion = [0.8, 0.4, -0.4, 0.2] }\n";
+
+fn triangle_and_given() -> String {
+    let dir = crate::common::scratch("explain", "triangle-given");
+    let f = dir.join("t.toml");
+    std::fs::write(&f, TRIANGLE_AND_GIVEN).unwrap();
+    explain(&[f.to_str().unwrap()])
+}
+
+/// The printed tensor entries after `from` (tensor convention).
+fn tensor_after(text: &str, from: &str) -> [[f64; 3]; 3] {
+    let after = text.split(from).nth(1).unwrap();
+    let at = |n: &str| values(after, n)[0];
+    let (xy, xz, yz) = (at("Ixy"), at("Ixz"), at("Iyz"));
+    [
+        [at("Ixx"), xy, xz],
+        [xy, at("Iyy"), yz],
+        [xz, yz, at("Izz")],
+    ]
+}
+
+#[test]
+fn a_triangle_prints_its_e_k_and_m_over_12_sum_gives_its_tensor() {
+    let text = triangle_and_given();
+    let e: Vec<[f64; 3]> = (1..=3)
+        .map(|n| ["x", "y", "z"].map(|k| values(&text, &format!("e{n}{k}"))[0]))
+        .collect();
+    // ∫ρρᵀ dm = (m/12) Σ eₖeₖᵀ; I = tr E − it (here, not by the program).
+    let s: [[f64; 3]; 3] = std::array::from_fn(|a| {
+        std::array::from_fn(|b| 2.0 / 12.0 * e.iter().map(|v| v[a] * v[b]).sum::<f64>())
+    });
+    let tr = s[0][0] + s[1][1] + s[2][2];
+    let i = tensor_after(&text, "e3z = ");
+    for a in 0..3 {
+        for b in 0..3 {
+            let want = if a == b { tr - s[a][a] } else { -s[a][b] };
+            close(i[a][b], want, tr, &format!("I[{a}][{b}]"));
+        }
+    }
+}
+
+#[test]
+fn a_given_inertia_prints_the_tensor_as_given_then_r_then_r_i_rt() {
+    let text = triangle_and_given();
+    assert!(text.contains("Ix′x′ = 0.02 kg·m²"), "{text}");
+    assert!(text.contains("Iy′z′ = 0.002 kg·m²"), "{text}");
+    let g = [
+        [0.02, -0.001, 0.0],
+        [-0.001, 0.03, 0.002],
+        [0.0, 0.002, 0.04],
+    ];
+    let r: [[f64; 3]; 3] = std::array::from_fn(|a| {
+        std::array::from_fn(|b| values(&text, &format!("R{}{}", a + 1, b + 1))[0])
+    });
+    let i = tensor_after(&text, "R33 = ");
+    for a in 0..3 {
+        for b in 0..3 {
+            let want: f64 = (0..3)
+                .flat_map(|k| (0..3).map(move |l| (k, l)))
+                .map(|(k, l)| r[a][k] * g[k][l] * r[b][l])
+                .sum();
+            close(i[a][b], want, 0.04, &format!("I[{a}][{b}]"));
+        }
+    }
+}
+
+/// The value a line `LHS = … = VALUE …` prints first (not its exact
+/// fraction): the last such line's.
+fn printed(text: &str, lhs: &str) -> f64 {
+    let head = format!("{lhs} = ");
+    let line = text
+        .lines()
+        .map(str::trim)
+        .rfind(|l| l.starts_with(&head))
+        .unwrap_or_else(|| panic!("no line `{lhs} = …` in:\n{text}"));
+    let last = line.rsplit(" = ").next().unwrap();
+    last.split_whitespace().next().unwrap().parse().unwrap()
+}
+
+/// The explanation's final figures are the report's own f64s, bit for
+/// bit, wherever the file's units are the report's (SI): the mass in kg,
+/// G in m, I(G) and λ in kg·m², and always H and T.
+fn final_figures_are_the_reports(args: &[&str], l: f64, k: f64) -> usize {
+    let text = explain(args);
+    let json = report(args);
+    let num = |v: &Value| v.as_f64().unwrap();
+    let same = |got: f64, want: &Value, what: &str| {
+        assert_eq!(
+            got.to_bits(),
+            num(want).to_bits(),
+            "{what}: {got} vs {want}"
+        );
+    };
+    let mut n = 0;
+    if k == 1.0 {
+        same(printed(&text, "m"), &json["mass"], "mass");
+        n += 1;
+    }
+    if l == 1.0 {
+        for (i, a) in ["x_G", "y_G", "z_G"].iter().enumerate() {
+            same(printed(&text, a), &json["center_of_mass"][i], a);
+            n += 1;
+        }
+    }
+    if l == 1.0 && k == 1.0 {
+        for (name, (a, b)) in [
+            ("Ixx(G)", (0, 0)),
+            ("Iyy(G)", (1, 1)),
+            ("Izz(G)", (2, 2)),
+            ("Ixy(G)", (0, 1)),
+            ("Ixz(G)", (0, 2)),
+            ("Iyz(G)", (1, 2)),
+        ] {
+            same(printed(&text, name), &json["inertia_com"][a][b], name);
+            n += 1;
+        }
+        for (i, name) in ["λ1", "λ2", "λ3"].iter().enumerate() {
+            same(printed(&text, name), &json["principal_moments"][i], name);
+            n += 1;
+        }
+    }
+    if json["angular_momentum"].is_array() {
+        for (i, name) in ["Hx", "Hy", "Hz"].iter().enumerate() {
+            same(printed(&text, name), &json["angular_momentum"][i], name);
+        }
+        same(printed(&text, "T"), &json["kinetic_energy"], "T");
+        n += 4;
+    }
+    n
+}
+
+#[test]
+fn the_bent_plates_final_figures_are_the_reports_own_numbers() {
+    // Its file is in mm: its mass (kg), H and T are the report's units.
+    assert_eq!(final_figures_are_the_reports(&[BENT], 1e-3, 1.0), 5);
+    let text = explain(&[BENT]);
+    // The report's f64, then the exact sum beside it.
+    assert!(
+        text.contains("= 1.6624999999999999 (exactly 133/80) kg"),
+        "{text}"
+    );
+}
+
+#[test]
+fn the_example_files_final_figures_are_the_reports_own_numbers() {
+    let mut n = 0;
+    for f in [
+        "shapes/flywheel.toml",
+        "shapes/motor-bracket.toml",
+        "shapes/quickstart.toml",
+    ] {
+        let text = std::fs::read_to_string(f).unwrap();
+        let (l, k) = units_of(&text);
+        n += final_figures_are_the_reports(&[f], l, k);
+    }
+    // Each file in mm and kg: its mass; the flywheel's H and T.
+    assert!(n >= 7, "{n} figures compared");
+}
+
+#[test]
+fn an_si_files_final_figures_are_all_the_reports_own_numbers() {
+    let dir = crate::common::scratch("explain", "si-figures");
+    let f = dir.join("t.toml");
+    std::fs::write(
+        &f,
+        "[[part]]\nname = \"block\"\nshape = \"box\"\ndensity = 1000\n\
+         size = [0.2, 0.1, 0.05]\ncenter = [1, 0.3, 0]\nrotation = { quaternion = [0.8, 0.4, -0.4, 0.2] }\n\n\
+         [[part]]\nname = \"can\"\nshape = \"cylinder\"\ndensity = 1000\nradius = 0.05\nlength = 0.3\n\
+         center = [0, 1, 0.1]\nrotation = { intrinsic = \"zyx\", degrees = [30, 20, 10] }\n\n\
+         [analysis]\nomega = [1.5, -2, 30]\n",
+    )
+    .unwrap();
+    // m, G (3), I(G) (6), λ (3), H (3) and T.
+    assert_eq!(
+        final_figures_are_the_reports(&[f.to_str().unwrap()], 1.0, 1.0),
+        17
+    );
 }
