@@ -81,6 +81,8 @@ pub struct Loading {
     pub source: Source,
     pub robot: Robot,
     pub set: Vec<(usize, f64)>,
+    /// `robot` with its MJCF bodies' inertials from geoms, at first load.
+    filled: std::cell::OnceCell<Robot>,
 }
 
 impl Loading {
@@ -96,21 +98,34 @@ impl Loading {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),
         };
-        Ok(Loading { source, robot, set })
+        Ok(Loading {
+            source,
+            robot,
+            set,
+            filled: std::cell::OnceCell::new(),
+        })
     }
 
     /// The body with the joints `set` (then `extra`), through the pipeline.
     pub fn load(&self, settings: &Settings, extra: &[(usize, f64)]) -> Result<Loaded, Diagnostic> {
+        // NOTE: an MJCF body's inertial from its geoms is composed once,
+        // at the first load (a sweep loads many times); it does not depend
+        // on the joints.
+        if self.filled.get().is_none() {
+            let mut robot = self.robot.clone();
+            super::geometry::mjcf_inertials(&self.source, &mut robot, settings)?;
+            let _ = self.filled.set(robot);
+        }
+        let robot = self.filled.get().expect("filled above");
         let mut set = self.set.clone();
         for &(j, x) in extra {
             set.retain(|(k, _)| *k != j);
             set.push((j, x));
         }
-        let values = self.robot.values(&set);
-        let model = crate::model::Model::of_robot_at(&self.robot, &values);
+        let values = robot.values(&set);
+        let model = crate::model::Model::of_robot_at(robot, &values);
         let mut loaded = analysis::load_model(self.source.clone(), model, settings)?;
-        loaded.summary.warnings = self
-            .robot
+        loaded.summary.warnings = robot
             .notes(&values)
             .into_iter()
             .map(|n| {

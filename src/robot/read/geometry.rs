@@ -40,6 +40,17 @@ pub struct Geometry {
     pub pose: Pose,
     /// The element's start tag.
     pub range: Range<usize>,
+    /// MJCF: the geom's own `mass`, else its `density`; None where it
+    /// gives neither (MJCF: `--density`/`--material`, else MuJoCo's 1000
+    /// kg/m³) and for URDF and SDFormat (the command's flag).
+    pub amount: Option<Amount>,
+}
+
+/// What an MJCF geom says it weighs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Amount {
+    Mass(f64),
+    Density(f64),
 }
 
 /// Per link of `d` (in its order), its geometries of the kind asked for
@@ -73,14 +84,7 @@ pub fn geometry(
                 }
             }
         }
-        Dialect::Mjcf => {
-            return Err(xml
-                .error(
-                    xml.tag(root),
-                    "inertials from geometry are read from URDF and SDFormat files; MJCF geoms are not yet",
-                )
-                .help("MuJoCo computes them itself: `<compiler inertiafromgeom=\"true\"/>`"));
-        }
+        Dialect::Mjcf => return super::mjcf_geoms::geoms(&xml, root, d),
     };
     let mut out = Vec::with_capacity(links.len());
     for (i, link) in links.iter().enumerate() {
@@ -105,6 +109,7 @@ pub fn geometry(
                 solid,
                 pose,
                 range: xml.tag(g),
+                amount: None,
             });
         }
         out.push(items);
@@ -148,7 +153,7 @@ fn sdf_pose(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
 }
 
 /// A positive size, or an error at it.
-fn positive(xml: &Xml, v: &super::Value, x: f64, owner: &str) -> Result<f64, Diagnostic> {
+pub(super) fn positive(xml: &Xml, v: &super::Value, x: f64, owner: &str) -> Result<f64, Diagnostic> {
     if x > 0.0 {
         Ok(x)
     } else {

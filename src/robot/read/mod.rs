@@ -11,13 +11,14 @@
 //! masses and moments are read as given.
 
 mod geometry;
+mod mjcf_geoms;
 mod mjcf;
 mod orient;
 mod sdf;
 mod tree;
 mod urdf;
 
-pub use geometry::{Geometry, Solid, geometry};
+pub use geometry::{Amount, Geometry, Solid, geometry};
 pub use tree::tree;
 
 use super::{Description, Dialect};
