@@ -212,14 +212,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             continue;
         }
         let (e, files) = link_inertial(
-            &geos[i],
-            name,
-            &source,
-            &made,
-            &base,
-            &packages,
-            &includes,
-            settings,
+            &geos[i], name, &source, &made, &base, &packages, &includes, settings,
         )?;
         read.extend(files);
         computed.push((name.clone(), e));
@@ -355,7 +348,14 @@ pub fn mjcf_inertials(
             continue;
         }
         let (e, _) = link_inertial(
-            &geos[i], &l.name, source, made, Path::new("."), &[], &includes, settings,
+            &geos[i],
+            &l.name,
+            source,
+            made,
+            Path::new("."),
+            &[],
+            &includes,
+            settings,
         )?;
         filled.push((i, e));
     }

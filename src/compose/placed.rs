@@ -95,7 +95,14 @@ fn frobenius(e: &M3<f64>) -> f64 {
     if top == 0.0 || !top.is_finite() {
         return top;
     }
-    safe(top * e.iter().flatten().map(|x| (x / top) * (x / top)).sum::<f64>().sqrt())
+    safe(
+        top * e
+            .iter()
+            .flatten()
+            .map(|x| (x / top) * (x / top))
+            .sum::<f64>()
+            .sqrt(),
+    )
 }
 
 std::thread_local! {

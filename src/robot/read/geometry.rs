@@ -153,7 +153,12 @@ fn sdf_pose(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
 }
 
 /// A positive size, or an error at it.
-pub(super) fn positive(xml: &Xml, v: &super::Value, x: f64, owner: &str) -> Result<f64, Diagnostic> {
+pub(super) fn positive(
+    xml: &Xml,
+    v: &super::Value,
+    x: f64,
+    owner: &str,
+) -> Result<f64, Diagnostic> {
     if x > 0.0 {
         Ok(x)
     } else {

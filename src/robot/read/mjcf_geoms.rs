@@ -67,7 +67,10 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             (Some(v), Some(&x)) => positive(xml, v, x, owner),
             (Some(v), None) => Err(xml.error(
                 v.range.clone(),
-                format!("`size` of a {kind_text} geom of {owner}: expected its {what} as number {}", i + 1),
+                format!(
+                    "`size` of a {kind_text} geom of {owner}: expected its {what} as number {}",
+                    i + 1
+                ),
             )),
             (None, _) => Err(xml.error(
                 xml.tag(g),
@@ -76,14 +79,24 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
         }
     };
     let fromto = xml.attr(g, "fromto");
-    let ends = fromto.as_ref().map(|v| xml.numbers::<6>(v, owner)).transpose()?;
+    let ends = fromto
+        .as_ref()
+        .map(|v| xml.numbers::<6>(v, owner))
+        .transpose()?;
     let (solid, along) = match kind_text {
         "sphere" => (Solid::Sphere(at(0, "radius")?), None),
         "box" => (
-            Solid::Box([2.0 * at(0, "x half-size")?, 2.0 * at(1, "y half-size")?, 2.0 * at(2, "z half-size")?]),
+            Solid::Box([
+                2.0 * at(0, "x half-size")?,
+                2.0 * at(1, "y half-size")?,
+                2.0 * at(2, "z half-size")?,
+            ]),
             None,
         ),
-        "ellipsoid" => (Solid::Ellipsoid([at(0, "x radius")?, at(1, "y radius")?, at(2, "z radius")?]), None),
+        "ellipsoid" => (
+            Solid::Ellipsoid([at(0, "x radius")?, at(1, "y radius")?, at(2, "z radius")?]),
+            None,
+        ),
         "capsule" | "cylinder" => {
             let radius = at(0, "radius")?;
             let (length, along) = match ends {
@@ -94,7 +107,11 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
                         let f = fromto.as_ref().expect("ends read from it");
                         return Err(xml.error(f.range.clone(), format!("`fromto` of a {kind_text} geom of {owner}: expected two different points")));
                     }
-                    let mid = [(e[0] + e[3]) / 2.0, (e[1] + e[4]) / 2.0, (e[2] + e[5]) / 2.0];
+                    let mid = [
+                        (e[0] + e[3]) / 2.0,
+                        (e[1] + e[4]) / 2.0,
+                        (e[2] + e[5]) / 2.0,
+                    ];
                     (l, Some((mid, [v[0] / l, v[1] / l, v[2] / l])))
                 }
                 None => (2.0 * at(1, "half-length")?, None),
@@ -107,7 +124,9 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             (solid, along)
         }
         other => {
-            let range = kind.as_ref().map_or_else(|| xml.tag(g), |v| v.range.clone());
+            let range = kind
+                .as_ref()
+                .map_or_else(|| xml.tag(g), |v| v.range.clone());
             return Err(xml.error(
                 range,
                 format!(
@@ -118,14 +137,19 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
         }
     };
     let pose = match along {
-        Some((mid, z)) => Pose { p: mid, r: quat_to_matrix(z_to_quat(&z)) },
+        Some((mid, z)) => Pose {
+            p: mid,
+            r: quat_to_matrix(z_to_quat(&z)),
+        },
         None => {
             let p = match xml.attr(g, "pos") {
                 Some(v) => xml.numbers::<3>(&v, owner)?,
                 None => [0.0; 3],
             };
-            let mut forms: Vec<(&str, Value)> =
-                ORIENTATIONS.iter().filter_map(|&f| Some((f, xml.attr(g, f)?))).collect();
+            let mut forms: Vec<(&str, Value)> = ORIENTATIONS
+                .iter()
+                .filter_map(|&f| Some((f, xml.attr(g, f)?)))
+                .collect();
             forms.sort_by_key(|(_, v)| v.range.start);
             if let [(first, _), (second, v), ..] = forms.as_slice() {
                 return Err(xml.error(
@@ -143,7 +167,19 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
     let amount = match (xml.attr(g, "mass"), xml.attr(g, "density")) {
         (Some(m), _) => Amount::Mass(positive(xml, &m, xml.number(&m, owner)?, owner)?),
         (None, Some(d)) => Amount::Density(positive(xml, &d, xml.number(&d, owner)?, owner)?),
-        (None, None) => return Ok(Geometry { solid, pose, range: xml.tag(g), amount: None }),
+        (None, None) => {
+            return Ok(Geometry {
+                solid,
+                pose,
+                range: xml.tag(g),
+                amount: None,
+            });
+        }
     };
-    Ok(Geometry { solid, pose, range: xml.tag(g), amount: Some(amount) })
+    Ok(Geometry {
+        solid,
+        pose,
+        range: xml.tag(g),
+        amount: Some(amount),
+    })
 }

@@ -11,8 +11,8 @@
 //! masses and moments are read as given.
 
 mod geometry;
-mod mjcf_geoms;
 mod mjcf;
+mod mjcf_geoms;
 mod orient;
 mod sdf;
 mod tree;
