@@ -339,12 +339,17 @@ pub fn mjcf_inertials(
     if !all && d.links.iter().all(|l| l.inertial.is_some()) {
         return Ok(());
     }
-    let geos = crate::robot::read::geometry(source, d, false)?;
+    let need: Vec<bool> = d
+        .links
+        .iter()
+        .map(|l| all || l.inertial.is_none())
+        .collect();
+    let geos = crate::robot::read::mjcf_geometry(source, d, &need)?;
     let includes = settings.includes.clone();
     let made = "density = 1000.0\n";
     let mut filled = Vec::new();
     for (i, l) in d.links.iter().enumerate() {
-        if geos[i].is_empty() || !(all || l.inertial.is_none()) {
+        if geos[i].is_empty() {
             continue;
         }
         let (e, _) = link_inertial(

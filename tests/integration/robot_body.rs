@@ -681,3 +681,18 @@ fn inertials_from_geometry_agree_with_mujocos_compiler() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+#[test]
+fn each_sweep_sample_is_the_plain_report_at_its_joints() {
+    let path = scratch_files("robot_body", "sweep-keys", &[("two.urdf", ARM)]);
+    let swept = json(&path, &["--sweep", "hinge=-0.5..0.5:3"]);
+    let samples = swept["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 3);
+    for s in samples {
+        let x = s["joints"]["hinge"].as_f64().unwrap();
+        let plain = json(&path, &["--joints", &format!("hinge={x:?}")]);
+        let mut rest = s.as_object().unwrap().clone();
+        rest.remove("joints");
+        assert_eq!(Value::Object(rest), plain, "at hinge = {x}");
+    }
+}

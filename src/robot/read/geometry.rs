@@ -84,7 +84,7 @@ pub fn geometry(
                 }
             }
         }
-        Dialect::Mjcf => return super::mjcf_geoms::geoms(&xml, root, d),
+        Dialect::Mjcf => return super::mjcf_geoms::geoms(&xml, root, d, None),
     };
     let mut out = Vec::with_capacity(links.len());
     for (i, link) in links.iter().enumerate() {
@@ -269,4 +269,17 @@ fn sdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
             ));
         }
     })
+}
+
+/// Per body of the MJCF description `d`, its geoms that count for inertia,
+/// read only for the bodies `need` marks (a geom massprop cannot weigh is
+/// refused only where it is needed).
+pub fn mjcf_geometry(
+    source: &Source,
+    d: &Description,
+    need: &[bool],
+) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+    let doc = super::parse(source)?;
+    let xml = Xml { source };
+    super::mjcf_geoms::geoms(&xml, doc.root_element(), d, Some(need))
 }

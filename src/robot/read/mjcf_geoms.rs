@@ -17,11 +17,13 @@ use roxmltree::Node;
 
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
-/// Per body of `d` (in its order), its geoms that count for inertia.
+/// Per body of `d` (in its order), its geoms that count for inertia; none
+/// read for a body `need` leaves out (None: every body).
 pub(super) fn geoms(
     xml: &Xml,
     mujoco: Node,
     d: &Description,
+    need: Option<&[bool]>,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
     let mut settings = Settings::default();
     let mut range = (0.0, 5.0);
@@ -37,6 +39,10 @@ pub(super) fn geoms(
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
             let owner = format!("body {}", super::quoted(&d.links[out.len()].name));
             let mut items = Vec::new();
+            if need.is_some_and(|n| !n[out.len()]) {
+                out.push(items);
+                continue;
+            }
             for g in children(body, "geom") {
                 let group = match xml.attr(g, "group") {
                     Some(v) => xml.number(&v, &owner)?,

@@ -18,7 +18,7 @@ mod sdf;
 mod tree;
 mod urdf;
 
-pub use geometry::{Amount, Geometry, Solid, geometry};
+pub use geometry::{Amount, Geometry, Solid, geometry, mjcf_geometry};
 pub use tree::tree;
 
 use super::{Description, Dialect};
