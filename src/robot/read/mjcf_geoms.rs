@@ -17,6 +17,23 @@ use roxmltree::Node;
 
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
+/// The geom attributes its weighing reads.
+const WEIGHED: [&str; 13] = [
+    "type",
+    "size",
+    "mass",
+    "density",
+    "group",
+    "pos",
+    "fromto",
+    "quat",
+    "axisangle",
+    "xyaxes",
+    "zaxis",
+    "euler",
+    "shellinertia",
+];
+
 /// Per body of `d` (in its order), its geoms that count for inertia; none
 /// read for a body `need` leaves out (None: every body).
 pub(super) fn geoms(
@@ -34,6 +51,13 @@ pub(super) fn geoms(
             range = (lo, hi);
         }
     }
+    // NOTE: a `<default>` geom that sets what the weighing reads would
+    // change geoms massprop reads as written: refused, rather than a
+    // silently different body.
+    let defaulted = mujoco
+        .descendants()
+        .filter(|n| qname(*n) == "geom" && n.parent().is_some_and(|p| qname(p) == "default"))
+        .find_map(|g| WEIGHED.iter().find_map(|a| xml.attr(g, a)));
     let mut out = Vec::with_capacity(d.links.len());
     for world in children(mujoco, "worldbody") {
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
@@ -42,6 +66,24 @@ pub(super) fn geoms(
             if need.is_some_and(|n| !n[out.len()]) {
                 out.push(items);
                 continue;
+            }
+            if let Some(g) = children(body, "frame")
+                .flat_map(|f| f.descendants())
+                .find(|n| qname(*n) == "geom")
+            {
+                return Err(xml
+                    .error(
+                        xml.tag(g),
+                        format!("a geom inside a `<frame>` of {owner}: not read for inertia"),
+                    )
+                    .help("give the body an `<inertial>`"));
+            }
+            if let (Some(v), Some(_)) = (&defaulted, children(body, "geom").next()) {
+                return Err(xml.error(
+                    v.range.clone(),
+                    format!("{} of a `<default>` geom: defaults are not read for inertia, and {owner} takes its inertia from its geoms", v.name),
+                )
+                .help("give the body an `<inertial>`, or write the attribute on each geom"));
             }
             for g in children(body, "geom") {
                 let group = match xml.attr(g, "group") {
@@ -61,6 +103,14 @@ pub(super) fn geoms(
 
 /// One `<geom>`: its solid, pose and what it weighs.
 fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagnostic> {
+    if let Some(v) = xml.attr(g, "shellinertia")
+        && v.text == "true"
+    {
+        return Err(xml.error(
+            v.range.clone(),
+            format!("`shellinertia` of a geom of {owner}: a shell's inertia is not read; expected a solid"),
+        ));
+    }
     let kind = xml.attr(g, "type");
     let kind_text = kind.as_ref().map_or("sphere", |v| v.text.as_str());
     let size = xml.attr(g, "size");
