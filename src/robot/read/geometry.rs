@@ -84,7 +84,7 @@ pub fn geometry(
                 }
             }
         }
-        Dialect::Mjcf => return super::mjcf_geoms::geoms(&xml, root, d, None),
+        Dialect::Mjcf => return super::geoms_of_mjcf(&xml, root, d, None),
     };
     let mut out = Vec::with_capacity(links.len());
     for (i, link) in links.iter().enumerate() {
@@ -281,5 +281,5 @@ pub fn mjcf_geometry(
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
     let doc = super::parse(source)?;
     let xml = Xml { source };
-    super::mjcf_geoms::geoms(&xml, doc.root_element(), d, Some(need))
+    super::geoms_of_mjcf(&xml, doc.root_element(), d, Some(need))
 }
