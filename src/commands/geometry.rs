@@ -16,12 +16,12 @@ use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::output::inertial::{inertial_element, update};
 use crate::robot::Dialect;
-use crate::robot::read::{Geometry, Solid};
+use crate::robot::read::{Amount, Geometry, Solid};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 /// What each part is made of, as its part file writes it.
-fn made_of(g: &FromGeometry) -> Result<String, Diagnostic> {
+fn made_of(g: &FromGeometry, mjcf: bool) -> Result<String, Diagnostic> {
     match (&g.density, &g.material) {
         (Some(d), None) => {
             let rho = match crate::units::split_number(d) {
@@ -44,6 +44,7 @@ fn made_of(g: &FromGeometry) -> Result<String, Diagnostic> {
                 crate::diag::shorten(m)
             ))),
         },
+        (None, None) if mjcf => Ok("density = 1000.0\n".to_string()),
         (None, None) => Err(Diagnostic::plain(
             "`--from-geometry` needs `--density` (kg/m³, or with its unit) or `--material NAME`",
         )),
@@ -108,7 +109,12 @@ fn point(p: [f64; 3]) -> String {
 
 /// One geometry as a `[[part]]` table.
 fn part(g: &Geometry, k: usize, made: &str, file: Option<&Path>) -> String {
-    let mut t = format!("[[part]]\nname = \"geometry {k}\"\n{made}");
+    let own = match g.amount {
+        Some(Amount::Mass(m)) => format!("mass = {m:?}\n"),
+        Some(Amount::Density(d)) => format!("density = {d:?}\n"),
+        None => made.to_string(),
+    };
+    let mut t = format!("[[part]]\nname = \"geometry {k}\"\n{own}");
     let at = match &g.solid {
         Solid::Mesh { .. } => "origin",
         _ => "center",
@@ -154,7 +160,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
                 "`--from-geometry` reads a robot description: its root element is not <robot> (URDF), <sdf> or <mujoco> (MJCF)",
             )
         })?;
-    let made = made_of(g)?;
+    let made = made_of(g, format == Dialect::Mjcf)?;
     let packages = packages(g)?;
     let d = crate::robot::read::read(&source, format)?;
     let geos = crate::robot::read::geometry(&source, &d, g.visual)?;
@@ -205,37 +211,11 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             );
             continue;
         }
-        let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
-        for (k, geo) in geos[i].iter().enumerate() {
-            let at = |m: String| {
-                source.error(
-                    geo.range.clone(),
-                    format!("link \"{}\": {m}", crate::diag::shorten(name)),
-                )
-            };
-            let file = match &geo.solid {
-                Solid::Mesh { uri, scale } => {
-                    if mesh_unit(*scale).is_none() {
-                        return Err(at(format!(
-                            "the mesh's `scale` {} {} {} is not read: a mesh is read with the same scale on each axis, one of a length unit's (1 m, 0.01 cm, 0.001 mm, 0.0254 in, 0.3048 ft)",
-                            scale[0], scale[1], scale[2]
-                        )));
-                    }
-                    Some(mesh_path(uri, &base, &packages).map_err(at)?)
-                }
-                _ => None,
-            };
-            let one = part(geo, k + 1, &made, file.as_deref());
-            // Each geometry alone first: its error is said at its element.
-            body(&one, &source, &includes, settings).map_err(|e| at(e.message().to_string()))?;
-            text.push_str(&one);
-        }
-        let loaded = body(&text, &source, &includes, settings)?;
-        read.extend(loaded.model.included.iter().cloned());
-        computed.push((
-            name.clone(),
-            super::export::export_of(&loaded.summary, false),
-        ));
+        let (e, files) = link_inertial(
+            &geos[i], name, &source, &made, &base, &packages, &includes, settings,
+        )?;
+        read.extend(files);
+        computed.push((name.clone(), e));
     }
     match &g.update {
         None => {
@@ -295,4 +275,105 @@ fn body(
     let source = Source::new(format!("{} (geometry)", robot.name), text.to_string());
     let model = crate::model::Model::parse_with(&source, includes)?;
     analysis::load_model(source, model, settings)
+}
+
+/// One link's inertial from its geometries `geos` (each alone first, so
+/// that its error is said at its element), and the files read.
+#[allow(clippy::too_many_arguments)]
+fn link_inertial(
+    geos: &[Geometry],
+    name: &str,
+    source: &Source,
+    made: &str,
+    base: &Path,
+    packages: &[(String, PathBuf)],
+    includes: &crate::model::Includes,
+    settings: &Settings,
+) -> Result<(crate::output::inertial::Export, Vec<PathBuf>), Diagnostic> {
+    let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
+    for (k, geo) in geos.iter().enumerate() {
+        let at = |m: String| {
+            source.error(
+                geo.range.clone(),
+                format!("link \"{}\": {m}", crate::diag::shorten(name)),
+            )
+        };
+        let file = match &geo.solid {
+            Solid::Mesh { uri, scale } => {
+                if mesh_unit(*scale).is_none() {
+                    return Err(at(format!(
+                        "the mesh's `scale` {} {} {} is not read: a mesh is read with the same scale on each axis, one of a length unit's (1 m, 0.01 cm, 0.001 mm, 0.0254 in, 0.3048 ft)",
+                        scale[0], scale[1], scale[2]
+                    )));
+                }
+                Some(mesh_path(uri, base, packages).map_err(at)?)
+            }
+            _ => None,
+        };
+        let one = part(geo, k + 1, made, file.as_deref());
+        body(&one, source, includes, settings).map_err(|e| at(e.message().to_string()))?;
+        text.push_str(&one);
+    }
+    let loaded = body(&text, source, includes, settings)?;
+    Ok((
+        super::export::export_of(&loaded.summary, false),
+        loaded.model.included.clone(),
+    ))
+}
+
+/// An MJCF robot's bodies given what MuJoCo's compiler gives them
+/// (`inertiafromgeom`): under "auto" (the default) each body without an
+/// `<inertial>`, under "true" every body, its inertial from its geoms that
+/// count (their own `mass` or `density`, else 1000 kg/m³); a body without
+/// such geoms keeps what it has. URDF and SDFormat robots are unchanged.
+pub fn mjcf_inertials(
+    source: &Source,
+    robot: &mut crate::robot::body::Robot,
+    settings: &Settings,
+) -> Result<(), Diagnostic> {
+    let d = &robot.description;
+    if d.format != Dialect::Mjcf || d.compiler.inertiafromgeom == Some(false) {
+        return Ok(());
+    }
+    let all = d.compiler.inertiafromgeom == Some(true);
+    if !all && d.links.iter().all(|l| l.inertial.is_some()) {
+        return Ok(());
+    }
+    let need: Vec<bool> = d
+        .links
+        .iter()
+        .map(|l| all || l.inertial.is_none())
+        .collect();
+    let geos = crate::robot::read::mjcf_geometry(source, d, &need)?;
+    let includes = settings.includes.clone();
+    let made = "density = 1000.0\n";
+    let mut filled = Vec::new();
+    for (i, l) in d.links.iter().enumerate() {
+        if geos[i].is_empty() {
+            continue;
+        }
+        let (e, _) = link_inertial(
+            &geos[i],
+            &l.name,
+            source,
+            made,
+            Path::new("."),
+            &[],
+            &includes,
+            settings,
+        )?;
+        filled.push((i, e));
+    }
+    for (i, e) in filled {
+        let l = &mut robot.description.links[i];
+        l.inertial = Some(crate::robot::Inertial {
+            mass: e.mass,
+            pos: e.pos,
+            rotation: None,
+            tensor: e.tensor,
+            written: crate::robot::Written::Full,
+            range: l.range.clone(),
+        });
+    }
+    Ok(())
 }

@@ -89,6 +89,7 @@ fn sweep(
             center_of_mass: s.center_of_mass,
             inertia_com: s.inertia_com,
             principal_moments: s.principal_moments,
+            report: crate::output::report::json(s),
         });
     }
     let read = std::fs::canonicalize(loading.source.path())

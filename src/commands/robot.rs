@@ -6,6 +6,7 @@ use crate::analysis::{self, Loaded, Settings, plausible};
 use crate::diag::{Diagnostic, Source};
 use crate::robot::Dialect;
 use crate::robot::body::Robot;
+use std::fmt::Write as _;
 
 /// `--joints` and `--sweep`, as typed.
 #[derive(Debug, Clone, Default, PartialEq)]
@@ -81,6 +82,8 @@ pub struct Loading {
     pub source: Source,
     pub robot: Robot,
     pub set: Vec<(usize, f64)>,
+    /// `robot` with its MJCF bodies' inertials from geoms, at first load.
+    filled: std::cell::OnceCell<Robot>,
 }
 
 impl Loading {
@@ -96,21 +99,34 @@ impl Loading {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),
         };
-        Ok(Loading { source, robot, set })
+        Ok(Loading {
+            source,
+            robot,
+            set,
+            filled: std::cell::OnceCell::new(),
+        })
     }
 
     /// The body with the joints `set` (then `extra`), through the pipeline.
     pub fn load(&self, settings: &Settings, extra: &[(usize, f64)]) -> Result<Loaded, Diagnostic> {
+        // NOTE: an MJCF body's inertial from its geoms is composed once,
+        // at the first load (a sweep loads many times); it does not depend
+        // on the joints.
+        if self.filled.get().is_none() {
+            let mut robot = self.robot.clone();
+            super::geometry::mjcf_inertials(&self.source, &mut robot, settings)?;
+            let _ = self.filled.set(robot);
+        }
+        let robot = self.filled.get().expect("filled above");
         let mut set = self.set.clone();
         for &(j, x) in extra {
             set.retain(|(k, _)| *k != j);
             set.push((j, x));
         }
-        let values = self.robot.values(&set);
-        let model = crate::model::Model::of_robot_at(&self.robot, &values);
+        let values = robot.values(&set);
+        let model = crate::model::Model::of_robot_at(robot, &values);
         let mut loaded = analysis::load_model(self.source.clone(), model, settings)?;
-        loaded.summary.warnings = self
-            .robot
+        loaded.summary.warnings = robot
             .notes(&values)
             .into_iter()
             .map(|n| {
@@ -204,8 +220,7 @@ impl Loading {
 /// The most samples a sweep's grid may have.
 pub const MAX_SAMPLES: usize = 100_000;
 
-/// One sample of a sweep, as its JSON writes it.
-#[derive(serde::Serialize)]
+/// One sample of a sweep: its joints and the body's summary.
 pub struct Sample {
     /// Joint name → value, SI.
     pub joints: serde_json::Map<String, serde_json::Value>,
@@ -213,6 +228,9 @@ pub struct Sample {
     pub center_of_mass: [f64; 3],
     pub inertia_com: [[f64; 3]; 3],
     pub principal_moments: [f64; 3],
+    /// The plain report's JSON object of the body at this sample
+    /// (`output::report::json`), every key of it.
+    pub report: String,
 }
 
 /// The samples' document: JSON, or a table.
@@ -220,14 +238,26 @@ pub fn render_samples(name: &str, samples: &[Sample], format: crate::output::For
     use crate::output::Format;
     match format {
         Format::Json => {
-            let doc = serde_json::json!({
-                "source": name,
-                "units": { "mass": "kg", "length": "m", "inertia": "kg*m^2", "angle": "rad" },
-                "samples": samples,
-            });
-            let mut s =
-                serde_json::to_string_pretty(&doc).expect("invariant: plain numbers and strings");
-            s.push('\n');
+            // NOTE: each sample is `{"joints": …,` and then the plain
+            // report's own JSON object (its writer, so every key and every
+            // number exactly as `report --format json` writes them), one
+            // line per sample.
+            let mut s = format!(
+                "{{\n  \"source\": {},\n  \"units\": {{\"mass\": \"kg\", \"length\": \"m\", \"inertia\": \"kg*m^2\", \"angle\": \"rad\"}},\n  \"samples\": [",
+                crate::output::json_line(name).trim_end()
+            );
+            for (k, sample) in samples.iter().enumerate() {
+                let report = sample.report.trim_end();
+                let rest = report.strip_prefix('{').unwrap_or(report);
+                let _ = write!(
+                    s,
+                    "{}\n    {{\"joints\":{}{}{rest}",
+                    if k == 0 { "" } else { "," },
+                    crate::output::json_line(&sample.joints).trim_end(),
+                    if rest == "}" { "" } else { "," }
+                );
+            }
+            s.push_str("\n  ]\n}\n");
             s
         }
         Format::Table | Format::Github | Format::Junit | Format::Sarif => {

@@ -162,7 +162,7 @@ impl Robot {
                     range: l.range.clone(),
                     message: match d.format {
                         Dialect::Mjcf => format!(
-                            "body \"{}\" has no `<inertial>`: composed massless (MuJoCo would take its inertia from its geoms, which massprop does not yet)",
+                            "body \"{}\" has no `<inertial>` and no geom that counts for inertia: composed massless",
                             crate::diag::shorten(&l.name)
                         ),
                         Dialect::Urdf | Dialect::Sdf => {

@@ -531,3 +531,181 @@ fn an_sdformat_leg_turns_about_its_joint_through_the_childs_origin() {
         assert!((com[i] - moment[i] / mass).abs() < 1e-15, "{com:?}");
     }
 }
+
+// MJCF bodies without `<inertial>`: what MuJoCo's compiler gives them
+// (`inertiafromgeom`), from their geoms, against closed forms.
+
+fn mjcf(name: &str, bodies: &str) -> std::path::PathBuf {
+    let text = format!("<mujoco><worldbody>{bodies}</worldbody></mujoco>\n");
+    scratch_files("robot_body", name, &[("r.xml", text.as_str())])
+}
+
+#[test]
+fn a_box_geom_gives_a_body_its_mass_and_inertia_from_half_extents() {
+    let path = mjcf(
+        "geom-box",
+        "<body name='b'><geom type='box' size='0.5 1 1.5' pos='1 2 3' density='2'/></body>",
+    );
+    let v = json(&path, &[]);
+    let (a, b, c) = (1.0_f64, 2.0_f64, 3.0_f64);
+    let m = 2.0 * a * b * c;
+    assert!((v["mass"].as_f64().unwrap() - m).abs() < 1e-12 * m);
+    let com: Vec<f64> = bits(&v["center_of_mass"])
+        .into_iter()
+        .map(f64::from_bits)
+        .collect();
+    assert_eq!(com, vec![1.0, 2.0, 3.0]);
+    let i = &v["inertia_com"];
+    let want = [
+        m * (b * b + c * c) / 12.0,
+        m * (a * a + c * c) / 12.0,
+        m * (a * a + b * b) / 12.0,
+    ];
+    for k in 0..3 {
+        let got = i[k][k].as_f64().unwrap();
+        assert!(
+            (got - want[k]).abs() < 1e-12 * want[k],
+            "{got} vs {}",
+            want[k]
+        );
+    }
+}
+
+#[test]
+fn a_geoms_mass_wins_over_density_and_the_default_density_is_1000() {
+    let path = mjcf(
+        "geom-mass",
+        "<body><geom size='0.1' mass='3' density='5'/><geom size='0.2' pos='0 0 1'/></body>",
+    );
+    let v = json(&path, &[]);
+    let second = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * 0.2_f64.powi(3);
+    let want = 3.0 + second;
+    assert!((v["mass"].as_f64().unwrap() - want).abs() < 1e-12 * want);
+}
+
+#[test]
+fn a_capsule_from_to_is_its_segment_with_hemispherical_ends() {
+    let path = mjcf(
+        "geom-capsule",
+        "<body><geom type='capsule' fromto='0 0 0 2 0 0' size='0.5' density='1'/></body>",
+    );
+    let v = json(&path, &[]);
+    let (r, h) = (0.5_f64, 2.0_f64);
+    let pi = std::f64::consts::PI;
+    let (mc, ms) = (pi * r * r * h, 4.0 / 3.0 * pi * r.powi(3));
+    let axial = mc * r * r / 2.0 + ms * 2.0 * r * r / 5.0;
+    let across = mc * (3.0 * r * r + h * h) / 12.0
+        + ms * (2.0 * r * r / 5.0 + h * h / 4.0 + 3.0 * h * r / 8.0);
+    assert!((v["mass"].as_f64().unwrap() - (mc + ms)).abs() < 1e-12 * (mc + ms));
+    let com = v["center_of_mass"][0].as_f64().unwrap();
+    assert!((com - 1.0).abs() < 1e-12);
+    let i = &v["inertia_com"];
+    assert!((i[0][0].as_f64().unwrap() - axial).abs() < 1e-12 * axial);
+    assert!((i[1][1].as_f64().unwrap() - across).abs() < 1e-12 * across);
+}
+
+#[test]
+fn a_geom_outside_the_inertia_group_range_weighs_nothing() {
+    let path = mjcf(
+        "geom-group",
+        "<body><geom size='1' mass='2'/><geom size='1' mass='7' group='6'/></body>",
+    );
+    assert_eq!(json(&path, &[])["mass"].as_f64(), Some(2.0));
+}
+
+#[test]
+fn export_from_geometry_reads_mjcf_geoms() {
+    let path = mjcf(
+        "geom-export",
+        "<body name='b'><geom size='0.5' mass='2'/></body>",
+    );
+    let out = massprop(&[
+        "export",
+        path.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    // A solid sphere: 2/5 m r² = 0.2.
+    assert!(
+        text.contains("mass=\"2\" fullinertia=\"0.2 0.2 0.2 0 0 0\""),
+        "{text}"
+    );
+}
+
+#[test]
+fn a_mesh_geom_of_a_body_without_inertial_is_refused_at_its_type() {
+    let path = mjcf("geom-mesh", "<body>\n<geom type='mesh' mesh='m'/></body>");
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("r.xml:2:13: error: `type` of a geom"), "{err}");
+}
+
+#[test]
+fn inertials_from_geometry_agree_with_mujocos_compiler() {
+    let python = python();
+    let has = Command::new(&python)
+        .args(["-c", "import mujoco, numpy"])
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !has {
+        eprintln!(
+            "skipped: the geoms oracle needs Python with the mujoco package (`pip install mujoco`); \
+             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
+        );
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/geoms_oracle.py");
+    let out = Command::new(&python)
+        .arg(&script)
+        .args([
+            "--massprop",
+            env!("CARGO_BIN_EXE_massprop"),
+            "--cases",
+            "40",
+        ])
+        .output()
+        .expect("the oracle script runs");
+    assert!(
+        out.status.success(),
+        "the MuJoCo geoms oracle found disagreements:\n{}\n{}",
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn each_sweep_sample_is_the_plain_report_at_its_joints() {
+    let path = scratch_files("robot_body", "sweep-keys", &[("two.urdf", ARM)]);
+    let swept = json(&path, &["--sweep", "hinge=-0.5..0.5:3"]);
+    let samples = swept["samples"].as_array().unwrap();
+    assert_eq!(samples.len(), 3);
+    for s in samples {
+        let x = s["joints"]["hinge"].as_f64().unwrap();
+        let plain = json(&path, &["--joints", &format!("hinge={x:?}")]);
+        let mut rest = s.as_object().unwrap().clone();
+        rest.remove("joints");
+        assert_eq!(Value::Object(rest), plain, "at hinge = {x}");
+    }
+}
+
+#[test]
+fn a_default_geom_size_is_refused_where_a_body_takes_its_inertia_from_geoms() {
+    let text = "<mujoco><default><geom size='0.3'/></default>\n<worldbody><body><geom size='1'/></body></worldbody></mujoco>\n";
+    let path = scratch_files("robot_body", "geom-default", &[("r.xml", text)]);
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("r.xml:1:30: error: `size` of a `<default>` geom"),
+        "{err}"
+    );
+}

@@ -40,6 +40,17 @@ pub struct Geometry {
     pub pose: Pose,
     /// The element's start tag.
     pub range: Range<usize>,
+    /// MJCF: the geom's own `mass`, else its `density`; None where it
+    /// gives neither (MJCF: `--density`/`--material`, else MuJoCo's 1000
+    /// kg/m³) and for URDF and SDFormat (the command's flag).
+    pub amount: Option<Amount>,
+}
+
+/// What an MJCF geom says it weighs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Amount {
+    Mass(f64),
+    Density(f64),
 }
 
 /// Per link of `d` (in its order), its geometries of the kind asked for
@@ -73,14 +84,7 @@ pub fn geometry(
                 }
             }
         }
-        Dialect::Mjcf => {
-            return Err(xml
-                .error(
-                    xml.tag(root),
-                    "inertials from geometry are read from URDF and SDFormat files; MJCF geoms are not yet",
-                )
-                .help("MuJoCo computes them itself: `<compiler inertiafromgeom=\"true\"/>`"));
-        }
+        Dialect::Mjcf => return super::geoms_of_mjcf(&xml, root, d, None),
     };
     let mut out = Vec::with_capacity(links.len());
     for (i, link) in links.iter().enumerate() {
@@ -105,6 +109,7 @@ pub fn geometry(
                 solid,
                 pose,
                 range: xml.tag(g),
+                amount: None,
             });
         }
         out.push(items);
@@ -148,7 +153,12 @@ fn sdf_pose(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {
 }
 
 /// A positive size, or an error at it.
-fn positive(xml: &Xml, v: &super::Value, x: f64, owner: &str) -> Result<f64, Diagnostic> {
+pub(super) fn positive(
+    xml: &Xml,
+    v: &super::Value,
+    x: f64,
+    owner: &str,
+) -> Result<f64, Diagnostic> {
     if x > 0.0 {
         Ok(x)
     } else {
@@ -259,4 +269,17 @@ fn sdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
             ));
         }
     })
+}
+
+/// Per body of the MJCF description `d`, its geoms that count for inertia,
+/// read only for the bodies `need` marks (a geom massprop cannot weigh is
+/// refused only where it is needed).
+pub fn mjcf_geometry(
+    source: &Source,
+    d: &Description,
+    need: &[bool],
+) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+    let doc = super::parse(source)?;
+    let xml = Xml { source };
+    super::geoms_of_mjcf(&xml, doc.root_element(), d, Some(need))
 }

@@ -12,13 +12,25 @@
 
 mod geometry;
 mod mjcf;
+mod mjcf_geoms;
 mod orient;
 mod sdf;
 mod tree;
 mod urdf;
 
-pub use geometry::{Geometry, Solid, geometry};
+pub use geometry::{Amount, Geometry, Solid, geometry, mjcf_geometry};
 pub use tree::tree;
+
+/// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
+/// for `geometry.rs`: through here, so that neither imports the other.
+fn geoms_of_mjcf(
+    xml: &Xml,
+    mujoco: Node,
+    d: &Description,
+    need: Option<&[bool]>,
+) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+    mjcf_geoms::geoms(xml, mujoco, d, need)
+}
 
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};
