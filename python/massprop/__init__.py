@@ -185,6 +185,7 @@ OPTIONS: dict[str, tuple[str, Converter, tuple[str, ...]]] = {
     "exclude": ("--exclude", _repeated(_text), (CHECK,)),
     "hidden": ("--hidden", _switch, (CHECK,)),
     "include_root": ("--include-root", _repeated(_path), BOTH),
+    "joints": ("--joints", _text, (REPORT,)),
     "omega": ("--omega", _vector, (REPORT,)),
     "only": ("--only", _text, (REPORT,)),
     "precision": ("--precision", _text, BOTH),
@@ -193,7 +194,9 @@ OPTIONS: dict[str, tuple[str, Converter, tuple[str, ...]]] = {
     "samples": ("--samples", _integer, (REPORT,)),
     "seed": ("--seed", _integer, (REPORT,)),
     "set": ("--set", _params, BOTH),
+    "sweep": ("--sweep", _repeated(_text), (REPORT,)),
     "uncertainty": ("--uncertainty", _text, (REPORT,)),
+    "velocity": ("--velocity", _vector, (REPORT,)),
 }
 
 

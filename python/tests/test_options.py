@@ -78,6 +78,21 @@ CASES = {
     "uncertainty": Case(
         "report", {"uncertainty": "linear"}, ["--uncertainty", "linear"], ["shapes/smallsat.toml"]
     ),
+    "joints": Case(
+        "report", {"joints": "elbow=30deg"}, ["--joints", "elbow=30deg"], ["shapes/robots/arm.urdf"]
+    ),
+    "sweep": Case(
+        "report",
+        {"sweep": ["elbow=0deg..90deg:3"]},
+        ["--sweep", "elbow=0deg..90deg:3"],
+        ["shapes/robots/arm.urdf"],
+    ),
+    "velocity": Case(
+        "report",
+        {"omega": "0,0,1", "velocity": "0,0,3 m/s"},
+        ["--omega", "0,0,1", "--velocity", "0,0,3 m/s"],
+        ["shapes/bent-plate.toml"],
+    ),
     "samples and seed": Case(
         "report",
         {"uncertainty": "montecarlo", "samples": 300, "seed": 7},
