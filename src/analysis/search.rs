@@ -5,6 +5,11 @@
 use crate::diag::{Diagnostic, display_path, visible};
 use std::path::{Path, PathBuf};
 
+mod git_config;
+mod glob;
+mod ignore_rules;
+mod walk;
+
 /// How directories are searched (`--hidden`, `--exclude`).
 #[derive(Debug, Clone, Default)]
 pub struct Search {
@@ -71,12 +76,27 @@ pub fn find(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic
 /// Every file `dir` holds that is checked or said to be skipped, in
 /// sorted order. `root`: the directory named, canonical.
 fn walk(dir: &Path, root: &Path, search: &Search, out: &mut Vec<Found>) -> Result<(), Diagnostic> {
-    for entry in walker(dir, search)? {
-        match entry {
-            Ok(entry) => out.extend(found(&entry, root)),
-            Err(e) => {
-                // An unreadable directory, or an ignore file that cannot
-                // be read or parsed: said, and the search goes on.
+    let mut excluded = ignore_rules::Rules::new(dir);
+    for glob in &search.exclude {
+        // NOTE: as ripgrep's overrides: a `!` rule each, an unclosed `[`
+        // an error.
+        excluded
+            .add_line(&format!("!{glob}"), false)
+            .map_err(|e| Diagnostic::plain(format!("--exclude `{}`: {e}", visible(glob))))?;
+    }
+    if let Some(p) = excluded.void_problem() {
+        return Err(Diagnostic::plain(format!("--exclude: {}", p.text)));
+    }
+    // Symlinked directories are not followed (as ripgrep does not by
+    // default: `ln -s .. up` would loop); symlinked files are, to a part
+    // file inside the directory named.
+    for event in walk::walk(dir, search.hidden, &excluded) {
+        match event {
+            walk::Event::Entry(path, t) => out.extend(found(&path, t, root)),
+            walk::Event::Error(e) => {
+                // An unreadable directory, or an ignore file above the
+                // directory named that cannot be parsed: said, and the
+                // search goes on.
                 let name = display_path(dir);
                 let d = Diagnostic::file(&name, format!("cannot search: {e}"));
                 out.push(Found::Skipped(name, d));
@@ -86,34 +106,10 @@ fn walk(dir: &Path, root: &Path, search: &Search, out: &mut Vec<Found>) -> Resul
     Ok(())
 }
 
-/// The search of `dir`, with `--hidden` and `--exclude`.
-fn walker(dir: &Path, search: &Search) -> Result<ignore::Walk, Diagnostic> {
-    let mut excluded = ignore::overrides::OverrideBuilder::new(dir);
-    for glob in &search.exclude {
-        excluded
-            .add(&format!("!{glob}"))
-            .map_err(|e| Diagnostic::plain(format!("--exclude `{}`: {e}", visible(glob))))?;
-    }
-    let excluded = excluded
-        .build()
-        .map_err(|e| Diagnostic::plain(format!("--exclude: {e}")))?;
-    // Symlinked directories are not followed (as ripgrep does not by
-    // default: `ln -s .. up` would loop); symlinked files are, to a part
-    // file inside the directory named.
-    Ok(ignore::WalkBuilder::new(dir)
-        .hidden(!search.hidden)
-        .overrides(excluded)
-        .follow_links(false)
-        .sort_by_file_name(|a, b| a.cmp(b))
-        .build())
-}
-
 /// What one entry of a directory's search is: a file to check, one
 /// skipped with why, or nothing (a directory, a file of another kind).
-fn found(entry: &ignore::DirEntry, root: &Path) -> Option<Found> {
-    // Its own type (from the directory, not following a symlink).
-    let t = entry.file_type()?;
-    let p = entry.path();
+fn found(p: &Path, t: std::fs::FileType, root: &Path) -> Option<Found> {
+    // `t`: its own type (from the directory, not following a symlink).
     let wanted = |p: &Path| crate::io::is_toml(p) || crate::robot::may_be_robot(p);
     if t.is_dir() || !wanted(p) {
         return None;
