@@ -55,6 +55,7 @@ mod robot_body;
 mod robots;
 mod robots_hostile;
 mod schema;
+mod search_rules;
 mod shell;
 mod short_report;
 mod stress;

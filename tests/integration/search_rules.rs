@@ -1,0 +1,294 @@
+//! `check DIR`'s own search (`massprop::analysis::search::find`, its
+//! walker and gitignore matcher) against what it replaced:
+//!
+//! - random trees of directories and `*.toml` files, with random
+//!   `.gitignore` and `.ignore` files (lines drawn from a grammar of
+//!   gitignore patterns: negation, anchoring, escapes, trailing spaces
+//!   and slashes, `*`, `?`, classes, `**`, alternates, broken globs), a
+//!   repository or none, `--hidden` and `--exclude`, searched at the top
+//!   or in a subdirectory: the files found, in order, must be those
+//!   ripgrep's `ignore` crate finds, configured as massprop configured it
+//!   (`WalkBuilder` with `hidden`, overrides, no links followed, sorted
+//!   by name);
+//! - gitignore(5)'s documented examples, each a table row whose expected
+//!   files are read off the manual, not off either program.
+//!
+//! Deterministic (fixed ChaCha seed, no persistence), as in hostile.rs.
+
+use massprop::analysis::search::{Found, Search, find};
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::{Config, RngAlgorithm, TestCaseError, TestRng, TestRunner};
+use std::path::{Path, PathBuf};
+
+/// Random trees searched.
+const CASES: u32 = 400;
+
+/// Names of directories, and of files (with `.toml` added).
+const NAMES: [&str; 9] = ["a", "b", ".h", "ab", "c.d", "[a]", "!x", "#y", "s p"];
+/// The pieces a pattern's path components are made of.
+const ATOMS: [&str; 24] = [
+    "a",
+    "b",
+    "ab",
+    ".h",
+    "c.d",
+    "*",
+    "?",
+    "**",
+    "[ab]",
+    "[!a]",
+    "[a-c]",
+    "[^b]",
+    "*.toml",
+    "a*",
+    "{a,b}*",
+    "[",
+    "\\*",
+    "a.toml",
+    "b.toml",
+    ".h*",
+    "\\[a]",
+    "[[:alpha:]]*",
+    "#y",
+    "!x*",
+];
+const PREFIXES: [&str; 9] = ["", "", "", "!", "/", "!/", "\\!", "\\#", "#"];
+const SUFFIXES: [&str; 7] = ["", "", "", "/", "/**", "  ", "\\ "];
+
+/// A scratch directory outside any repository (cargo's target directory
+/// is inside this one, whose `.gitignore` would apply to it).
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir()
+        .join(format!("massprop-search-rules-{}", std::process::id()))
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn put(root: &Path, name: &str, text: &str) {
+    let p = root.join(name);
+    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+    std::fs::write(p, text).unwrap();
+}
+
+/// What `find` finds in `dir`: each file's path, `!` for a part of the
+/// tree it could not search; `Err` for a bad `--exclude`.
+fn own(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, ()> {
+    let search = Search {
+        hidden,
+        exclude: exclude.to_vec(),
+        verbose: false,
+    };
+    let found = find(&[dir.to_path_buf()], &search).map_err(|_| ())?;
+    Ok(found
+        .iter()
+        .map(|f| match f {
+            Found::File(p, _) => p.display().to_string(),
+            Found::Skipped(..) => "!".to_string(),
+        })
+        .collect())
+}
+
+/// What the `ignore` crate finds in `dir`, configured as massprop
+/// configured it before (src/analysis/search.rs, until this test came):
+/// its `*.toml` regular files, `!` for an error.
+fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, ()> {
+    let mut excluded = ignore::overrides::OverrideBuilder::new(dir);
+    for glob in exclude {
+        excluded.add(&format!("!{glob}")).map_err(|_| ())?;
+    }
+    let excluded = excluded.build().map_err(|_| ())?;
+    let walk = ignore::WalkBuilder::new(dir)
+        .hidden(!hidden)
+        .overrides(excluded)
+        .follow_links(false)
+        .sort_by_file_name(|a, b| a.cmp(b))
+        .build();
+    Ok(walk
+        .filter_map(|e| match e {
+            Ok(e) => {
+                let file = e.file_type().is_some_and(|t| t.is_file());
+                let toml = e.path().extension().is_some_and(|x| x == "toml");
+                (file && toml).then(|| e.path().display().to_string())
+            }
+            Err(_) => Some("!".to_string()),
+        })
+        .collect())
+}
+
+/// One generated tree.
+#[derive(Debug, Clone)]
+struct Tree {
+    /// Files: directories then a file name (`.toml` added).
+    files: Vec<Vec<usize>>,
+    /// Ignore files: the directory, `.ignore` (or `.gitignore`), lines.
+    ignores: Vec<(Vec<usize>, bool, Vec<String>)>,
+    /// Where a `.git` directory is, if anywhere.
+    git: Option<Vec<usize>>,
+    /// The directory searched, below the top.
+    searched: Vec<usize>,
+    hidden: bool,
+    exclude: Vec<String>,
+}
+
+fn component(i: usize) -> &'static str {
+    NAMES[i]
+}
+
+fn dir_of(parts: &[usize]) -> PathBuf {
+    parts.iter().map(|&i| component(i)).collect()
+}
+
+/// A name: mostly one of the first three, so that rules meet.
+fn name() -> impl Strategy<Value = usize> {
+    prop_oneof![3 => 0..3usize, 1 => 0..NAMES.len()]
+}
+
+fn pattern() -> impl Strategy<Value = String> {
+    (
+        0..PREFIXES.len(),
+        prop::collection::vec(prop::collection::vec(0..ATOMS.len(), 1..=2), 1..=3),
+        0..SUFFIXES.len(),
+    )
+        .prop_map(|(p, parts, s)| {
+            let parts: Vec<String> = parts
+                .iter()
+                .map(|c| c.iter().map(|&i| ATOMS[i]).collect())
+                .collect();
+            format!("{}{}{}", PREFIXES[p], parts.join("/"), SUFFIXES[s])
+        })
+}
+
+fn tree() -> impl Strategy<Value = Tree> {
+    let path = |max| prop::collection::vec(name(), 0..=max);
+    (
+        prop::collection::vec(prop::collection::vec(name(), 1..=4), 1..16),
+        prop::collection::vec(
+            (
+                path(1),
+                any::<bool>(),
+                prop::collection::vec(pattern(), 1..6),
+            ),
+            1..8,
+        ),
+        // Mostly a repository at the top (where `.gitignore` applies).
+        prop_oneof![3 => Just(Some(Vec::new())), 1 => Just(None), 1 => prop::option::of(path(1))],
+        path(1),
+        any::<bool>(),
+        prop::collection::vec(pattern(), 0..=2),
+    )
+        .prop_map(|(files, ignores, git, searched, hidden, exclude)| Tree {
+            files,
+            ignores,
+            git,
+            searched,
+            hidden,
+            exclude: exclude
+                .into_iter()
+                .map(|g| g.trim_start_matches(['!', '\\', '#']).to_string())
+                .collect(),
+        })
+}
+
+/// `t` written under `root`.
+fn write(root: &Path, t: &Tree) {
+    for f in &t.files {
+        let (name, dirs) = f.split_last().unwrap();
+        put(
+            root,
+            &dir_of(dirs)
+                .join(format!("{}.toml", component(*name)))
+                .to_string_lossy(),
+            "",
+        );
+    }
+    for (dir, dot_ignore, lines) in &t.ignores {
+        let name = if *dot_ignore { ".ignore" } else { ".gitignore" };
+        let path = root.join(dir_of(dir)).join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        // NOTE: appended, so that two draws of one file both count.
+        let mut text = std::fs::read_to_string(&path).unwrap_or_default();
+        text.extend(lines.iter().map(|l| format!("{l}\n")));
+        std::fs::write(&path, text).unwrap();
+    }
+    if let Some(git) = &t.git {
+        std::fs::create_dir_all(root.join(dir_of(git)).join(".git")).unwrap();
+    }
+    std::fs::create_dir_all(root.join(dir_of(&t.searched))).unwrap();
+}
+
+#[test]
+fn the_search_finds_what_the_ignore_crate_finds_on_random_trees() {
+    let config = Config {
+        cases: CASES,
+        failure_persistence: None,
+        ..Config::default()
+    };
+    let mut runner =
+        TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+    let root = scratch("random");
+    let result = runner.run(&tree(), |t| {
+        let _ = std::fs::remove_dir_all(&root);
+        write(&root, &t);
+        let dir = root.join(dir_of(&t.searched));
+        let mine = own(&dir, t.hidden, &t.exclude);
+        let theirs = reference(&dir, t.hidden, &t.exclude);
+        if mine != theirs {
+            return Err(TestCaseError::fail(format!(
+                "found {mine:?}\nthe ignore crate {theirs:?}"
+            )));
+        }
+        Ok(())
+    });
+    let _ = std::fs::remove_dir_all(&root);
+    result.unwrap();
+}
+
+/// Every `*.toml` file under `dir`.
+fn toml_files(dir: &Path) -> usize {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .map(|p| {
+            if p.is_dir() {
+                toml_files(&p)
+            } else {
+                usize::from(p.extension().is_some_and(|x| x == "toml"))
+            }
+        })
+        .sum()
+}
+
+#[test]
+fn the_random_trees_find_files_and_pass_files_over() {
+    // The comparison above means something only if the trees exercise
+    // both: count, over the same draws, files found and files passed over.
+    let config = Config {
+        cases: 100,
+        failure_persistence: None,
+        ..Config::default()
+    };
+    let mut runner =
+        TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+    let root = scratch("coverage");
+    let (mut found, mut passed_over) = (0usize, 0usize);
+    for _ in 0..100 {
+        let t = tree().new_tree(&mut runner).unwrap().current();
+        let _ = std::fs::remove_dir_all(&root);
+        write(&root, &t);
+        let dir = root.join(dir_of(&t.searched));
+        let all = toml_files(&dir);
+        let some = own(&dir, t.hidden, &t.exclude)
+            .map(|f| f.len())
+            .unwrap_or(0);
+        found += some;
+        passed_over += all.saturating_sub(some);
+    }
+    let _ = std::fs::remove_dir_all(&root);
+    assert!(
+        found > 100 && passed_over > 100,
+        "found {found}, passed over {passed_over}"
+    );
+}
