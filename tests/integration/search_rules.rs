@@ -27,7 +27,7 @@ const CASES: u32 = 400;
 /// Names of directories, and of files (with `.toml` added).
 const NAMES: [&str; 9] = ["a", "b", ".h", "ab", "c.d", "[a]", "!x", "#y", "s p"];
 /// The pieces a pattern's path components are made of.
-const ATOMS: [&str; 24] = [
+const ATOMS: [&str; 26] = [
     "a",
     "b",
     "ab",
@@ -52,6 +52,8 @@ const ATOMS: [&str; 24] = [
     "[[:alpha:]]*",
     "#y",
     "!x*",
+    "{a",
+    "b}",
 ];
 const PREFIXES: [&str; 9] = ["", "", "", "!", "/", "!/", "\\!", "\\#", "#"];
 const SUFFIXES: [&str; 7] = ["", "", "", "/", "/**", "  ", "\\ "];
@@ -73,33 +75,37 @@ fn put(root: &Path, name: &str, text: &str) {
     std::fs::write(p, text).unwrap();
 }
 
-/// What `find` finds in `dir`: each file's path, `!` for a part of the
-/// tree it could not search; `Err` for a bad `--exclude`.
-fn own(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, ()> {
+/// What `find` finds in `dir`: each file's path, `!` and the message for
+/// a part of the tree it could not search; `Err` for a bad `--exclude`,
+/// with its message.
+fn own(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, String> {
     let search = Search {
         hidden,
         exclude: exclude.to_vec(),
         verbose: false,
     };
-    let found = find(&[dir.to_path_buf()], &search).map_err(|_| ())?;
+    let found = find(&[dir.to_path_buf()], &search).map_err(|d| d.message().to_string())?;
     Ok(found
         .iter()
         .map(|f| match f {
             Found::File(p, _) => p.display().to_string(),
-            Found::Skipped(..) => "!".to_string(),
+            Found::Skipped(_, d) => format!("! {}", d.message()),
         })
         .collect())
 }
 
 /// What the `ignore` crate finds in `dir`, configured as massprop
 /// configured it before (src/analysis/search.rs, until this test came):
-/// its `*.toml` regular files, `!` for an error.
-fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, ()> {
+/// its `*.toml` regular files, `!` and the message massprop made of an
+/// error.
+fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, String> {
     let mut excluded = ignore::overrides::OverrideBuilder::new(dir);
     for glob in exclude {
-        excluded.add(&format!("!{glob}")).map_err(|_| ())?;
+        excluded
+            .add(&format!("!{glob}"))
+            .map_err(|e| format!("--exclude `{glob}`: {e}"))?;
     }
-    let excluded = excluded.build().map_err(|_| ())?;
+    let excluded = excluded.build().map_err(|e| format!("--exclude: {e}"))?;
     let walk = ignore::WalkBuilder::new(dir)
         .hidden(!hidden)
         .overrides(excluded)
@@ -113,7 +119,7 @@ fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>
                 let toml = e.path().extension().is_some_and(|x| x == "toml");
                 (file && toml).then(|| e.path().display().to_string())
             }
-            Err(_) => Some("!".to_string()),
+            Err(e) => Some(format!("! cannot search: {e}")),
         })
         .collect())
 }
@@ -291,4 +297,238 @@ fn the_random_trees_find_files_and_pass_files_over() {
         found > 100 && passed_over > 100,
         "found {found}, passed over {passed_over}"
     );
+}
+
+// ---------------------------------------------------------------------------
+// gitignore(5)'s examples, and ripgrep's precedence, one fact a test
+
+/// The files `find` finds in `root/dir` of a tree of `files` (path,
+/// text; every directory with a `.git` entry in it written as such),
+/// relative to `root`, sorted.
+fn found_in(name: &str, files: &[(&str, &str)], dir: &str) -> Vec<String> {
+    let root = scratch(name);
+    for (path, text) in files {
+        if path.ends_with(".git") {
+            std::fs::create_dir_all(root.join(path)).unwrap();
+        } else {
+            put(&root, path, text);
+        }
+    }
+    let search = Search::default();
+    let found = find(&[root.join(dir)], &search).unwrap();
+    let mut names: Vec<String> = found
+        .iter()
+        .filter_map(|f| match f {
+            Found::File(p, _) => Some(
+                p.strip_prefix(&root)
+                    .unwrap()
+                    .to_string_lossy()
+                    .into_owned(),
+            ),
+            Found::Skipped(..) => None,
+        })
+        .collect();
+    names.sort();
+    let _ = std::fs::remove_dir_all(&root);
+    names
+}
+
+/// `found_in` a repository whose `.gitignore` is `rules`.
+fn kept(name: &str, rules: &str, files: &[&str]) -> Vec<String> {
+    let mut tree = vec![(".git", ""), (".gitignore", rules)];
+    tree.extend(files.iter().map(|f| (*f, "")));
+    found_in(name, &tree, "")
+}
+
+#[test]
+fn blank_lines_and_comments_match_nothing() {
+    assert_eq!(kept("blank", "\n# a.toml\n   \n", &["a.toml"]), ["a.toml"]);
+}
+
+#[test]
+fn a_backslash_before_a_hash_or_bang_makes_it_literal() {
+    let files = ["#y.toml", "!x.toml", "y.toml", "x.toml"];
+    assert_eq!(
+        kept("escapes", "\\#y.toml\n\\!x.toml\n", &files),
+        ["x.toml", "y.toml"]
+    );
+}
+
+#[test]
+fn trailing_spaces_are_ignored_unless_escaped() {
+    let files = ["a.toml", "b.toml", "b.toml /c.toml"];
+    assert_eq!(kept("spaces", "a.toml   \nb.toml\\ \n", &files), ["b.toml"]);
+}
+
+#[test]
+fn a_negation_re_includes_what_an_earlier_pattern_excluded() {
+    assert_eq!(
+        kept("negation", "*.toml\n!keep.toml\n", &["a.toml", "keep.toml"]),
+        ["keep.toml"]
+    );
+}
+
+#[test]
+fn a_file_is_not_re_included_when_its_directory_is_excluded() {
+    assert_eq!(
+        kept("parent", "dir/\n!dir/a.toml\n", &["dir/a.toml", "a.toml"]),
+        ["a.toml"]
+    );
+}
+
+#[test]
+fn a_trailing_slash_matches_directories_only() {
+    let files = ["a.toml", "d/a.toml/x.toml"];
+    assert_eq!(kept("dir-only", "a.toml/\n", &files), ["a.toml"]);
+}
+
+#[test]
+fn a_slash_in_the_middle_anchors_to_the_ignore_files_directory() {
+    let files = ["doc/frotz/x.toml", "a/doc/frotz/x.toml"];
+    assert_eq!(
+        kept("middle", "doc/frotz/\n", &files),
+        ["a/doc/frotz/x.toml"]
+    );
+}
+
+#[test]
+fn a_name_without_a_slash_matches_at_any_depth() {
+    let files = ["doc/frotz/x.toml", "a/frotz/x.toml", "frotz.toml"];
+    assert_eq!(kept("any-depth", "frotz/\n", &files), ["frotz.toml"]);
+}
+
+#[test]
+fn a_leading_slash_anchors_to_the_ignore_files_directory() {
+    let files = ["hello.toml", "a/hello.toml"];
+    assert_eq!(kept("leading", "/hello.*\n", &files), ["a/hello.toml"]);
+    assert!(kept("unanchored", "hello.*\n", &files).is_empty());
+}
+
+#[test]
+fn a_leading_double_star_matches_in_all_directories() {
+    let files = ["foo/bar.toml", "a/foo/bar.toml", "foo/a/bar.toml"];
+    assert_eq!(
+        kept("double-star", "**/foo/bar.toml\n", &files),
+        ["foo/a/bar.toml"]
+    );
+}
+
+#[test]
+fn a_trailing_double_star_matches_everything_inside() {
+    let files = ["abc/x.toml", "abc/d/y.toml", "a/abc/x.toml", "abc.toml"];
+    assert_eq!(
+        kept("trailing", "abc/**\n", &files),
+        ["a/abc/x.toml", "abc.toml"]
+    );
+}
+
+#[test]
+fn a_middle_double_star_matches_zero_or_more_directories() {
+    let files = ["a/b.toml", "a/x/b.toml", "a/x/y/b.toml", "c/a/b.toml"];
+    assert_eq!(kept("middle-star", "a/**/b.toml\n", &files), ["c/a/b.toml"]);
+}
+
+#[test]
+fn everything_but_one_directory_is_excluded_as_the_manual_shows() {
+    let files = ["a.toml", "foo/a.toml", "foo/bar/a.toml", "baz/a.toml"];
+    let rules = "/*\n!/foo\n/foo/*\n!/foo/bar\n";
+    assert_eq!(kept("all-but", rules, &files), ["foo/bar/a.toml"]);
+}
+
+#[test]
+fn a_star_does_not_match_a_slash() {
+    let files = ["a/x.toml", "a/b/x.toml"];
+    assert_eq!(kept("star", "a/*.toml\n", &files), ["a/b/x.toml"]);
+}
+
+#[test]
+fn a_question_mark_matches_one_character() {
+    let files = ["a.toml", "ab.toml"];
+    assert_eq!(kept("question", "?.toml\n", &files), ["ab.toml"]);
+}
+
+#[test]
+fn a_class_matches_one_of_its_characters_or_range() {
+    let files = ["a.toml", "b.toml", "c.toml", "d.toml"];
+    assert_eq!(kept("class", "[ab].toml\n", &files), ["c.toml", "d.toml"]);
+    assert_eq!(kept("range", "[b-c].toml\n", &files), ["a.toml", "d.toml"]);
+}
+
+#[test]
+fn a_negated_class_matches_any_other_character() {
+    let files = ["a.toml", "b.toml", "c.toml"];
+    assert_eq!(kept("bang-class", "[!a].toml\n", &files), ["a.toml"]);
+    assert_eq!(kept("caret-class", "[^a].toml\n", &files), ["a.toml"]);
+}
+
+#[test]
+fn a_deeper_ignore_file_overrides_a_shallower_one() {
+    let tree = [
+        (".git", ""),
+        (".gitignore", "*.toml\n"),
+        ("sub/.gitignore", "!b.toml\n"),
+        ("sub/b.toml", ""),
+        ("a.toml", ""),
+    ];
+    assert_eq!(found_in("deeper", &tree, ""), ["sub/b.toml"]);
+}
+
+#[test]
+fn a_dot_ignore_rule_wins_over_a_dot_gitignore_rule() {
+    let tree = [
+        (".git", ""),
+        (".gitignore", "a.toml\n"),
+        (".ignore", "!a.toml\n"),
+        ("a.toml", ""),
+    ];
+    assert_eq!(found_in("dot-ignore", &tree, ""), ["a.toml"]);
+}
+
+#[test]
+fn a_gitignore_applies_only_inside_a_repository() {
+    let tree = [
+        (".gitignore", "a.toml\n"),
+        (".ignore", "b.toml\n"),
+        ("a.toml", ""),
+        ("b.toml", ""),
+    ];
+    assert_eq!(found_in("no-repo", &tree, ""), ["a.toml"]);
+}
+
+#[test]
+fn a_gitignore_above_the_repository_does_not_apply() {
+    let tree = [
+        (".gitignore", "*.toml\n"),
+        ("repo/.git", ""),
+        ("repo/a.toml", ""),
+    ];
+    assert_eq!(found_in("above-repo", &tree, "repo"), ["repo/a.toml"]);
+}
+
+#[test]
+fn a_gitignore_above_the_directory_searched_applies_within_the_repository() {
+    let tree = [
+        (".git", ""),
+        (".gitignore", "/sub/a.toml\n"),
+        ("sub/a.toml", ""),
+        ("sub/b.toml", ""),
+    ];
+    assert_eq!(found_in("parent-rules", &tree, "sub"), ["sub/b.toml"]);
+}
+
+#[test]
+fn the_repositorys_info_exclude_applies() {
+    let tree = [
+        (".git", ""),
+        (".git/info/exclude", "a.toml\n"),
+        ("a.toml", ""),
+        ("b.toml", ""),
+    ];
+    assert_eq!(found_in("exclude", &tree, ""), ["b.toml"]);
+}
+
+#[test]
+fn a_negation_finds_a_hidden_file_without_hidden() {
+    let tree = [(".ignore", "!.h.toml\n"), (".h.toml", ""), (".g.toml", "")];
+    assert_eq!(found_in("hidden", &tree, ""), [".h.toml"]);
 }
