@@ -57,8 +57,8 @@ pub fn shown(path: &Path) -> String {
 }
 
 /// The part files named: files as given; directories searched recursively
-/// as ripgrep searches them (the `ignore` crate: `.gitignore`, `.ignore`
-/// and git's excludes honoured, hidden entries skipped unless
+/// as ripgrep searches them (`walk`, massprop's own: `.gitignore`,
+/// `.ignore` and git's excludes honoured, hidden entries skipped unless
 /// `--hidden`, `--exclude` globs), `*.toml` files in sorted order.
 pub fn find(paths: &[PathBuf], search: &Search) -> Result<Vec<Found>, Diagnostic> {
     let mut out = Vec::new();

@@ -532,3 +532,19 @@ fn a_negation_finds_a_hidden_file_without_hidden() {
     let tree = [(".ignore", "!.h.toml\n"), (".h.toml", ""), (".g.toml", "")];
     assert_eq!(found_in("hidden", &tree, ""), [".h.toml"]);
 }
+
+#[test]
+fn a_worktrees_info_exclude_is_its_common_directorys() {
+    let root = scratch("worktree");
+    let gitdir = root.join("main/.git/worktrees/w");
+    put(&root, "main/.git/info/exclude", "a.toml\n");
+    put(&root, "main/.git/worktrees/w/commondir", "../..\n");
+    put(&root, "w/.git", &format!("gitdir: {}\n", gitdir.display()));
+    put(&root, "w/a.toml", "");
+    put(&root, "w/b.toml", "");
+    let w = root.join("w");
+    let found = own(&w, false, &[]).unwrap();
+    assert_eq!(found, [w.join("b.toml").display().to_string()]);
+    assert_eq!(Ok(found), reference(&w, false, &[]));
+    let _ = std::fs::remove_dir_all(&root);
+}

@@ -1,6 +1,7 @@
-//! `check DIR` searches as ripgrep does (the `ignore` crate): ignore files
-//! honoured, hidden entries skipped unless `--hidden`, `--exclude` globs,
-//! and only `*.toml` files that are part files.
+//! `check DIR` searches as ripgrep does (search_rules.rs holds it to the
+//! `ignore` crate): ignore files honoured, hidden entries skipped unless
+//! `--hidden`, `--exclude` globs, and only `*.toml` files that are part
+//! files.
 
 use crate::common::{massprop, scratch};
 use std::path::Path;

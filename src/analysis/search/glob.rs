@@ -137,9 +137,9 @@ impl Glob {
         for &b in path {
             next.fill(false);
             let mut any = false;
-            for pc in 0..n {
+            for (pc, inst) in self.prog.iter().enumerate() {
                 if now[pc]
-                    && let Inst::Byte(set) = &self.prog[pc]
+                    && let Inst::Byte(set) = inst
                     && set.has(b)
                 {
                     self.add(&mut next, &mut stack, pc + 1);
@@ -151,7 +151,10 @@ impl Glob {
             }
             std::mem::swap(&mut now, &mut next);
         }
-        (0..n).any(|pc| now[pc] && matches!(self.prog[pc], Inst::Match))
+        self.prog
+            .iter()
+            .zip(&now)
+            .any(|(inst, &on)| on && matches!(inst, Inst::Match))
     }
 
     /// `pc` and every instruction reached from it without a byte.
@@ -577,4 +580,88 @@ fn posix_ranges(name: &str) -> Option<&'static [(char, char)]> {
         "xdigit" => &[('0', '9'), ('A', 'F'), ('a', 'f')],
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn matches(glob: &str, path: &[u8]) -> bool {
+        Glob::new(glob, true).unwrap().unwrap().is_match(path)
+    }
+
+    #[test]
+    fn a_star_matches_within_one_component_only() {
+        assert!(matches("a/*.toml", b"a/x.toml"));
+        assert!(!matches("a/*.toml", b"a/b/x.toml"));
+    }
+
+    #[test]
+    fn a_path_that_is_not_utf8_matches_by_its_bytes() {
+        assert!(matches("**/caf*.toml", b"d/caf\xe9.toml"));
+        assert!(matches("caf?.toml", b"caf\xe9.toml"));
+    }
+
+    #[test]
+    fn a_double_star_alone_matches_everything_but_a_newline() {
+        assert!(matches("**", b"a/b/c"));
+        assert!(!matches("**", b"a\nb"));
+    }
+
+    #[test]
+    fn a_middle_double_star_matches_zero_or_more_components() {
+        for p in [&b"a/b"[..], b"a/x/b", b"a/x/y/b"] {
+            assert!(matches("a/**/b", p));
+        }
+        assert!(!matches("a/**/b", b"ab"));
+    }
+
+    #[test]
+    fn a_class_never_matches_a_slash() {
+        assert!(!matches("a[-0]b", b"a/b"));
+        assert!(!matches("a[!x]b", b"a/b"));
+        assert!(matches("a[!x]b", b"a.b"));
+    }
+
+    #[test]
+    fn an_unclosed_class_is_a_literal_in_an_ignore_file_and_an_error_elsewhere() {
+        assert!(matches("a[b", b"a[b"));
+        assert_eq!(
+            Glob::new("a[b", false).unwrap_err(),
+            GlobError::UnclosedClass
+        );
+    }
+
+    #[test]
+    fn an_alternate_group_matches_either_branch_and_drops_an_empty_one() {
+        assert!(matches("{a,b}.toml", b"b.toml"));
+        assert!(matches("x{,y}", b"xy"));
+        assert!(!matches("x{,y}", b"x"));
+    }
+
+    #[test]
+    fn a_reversed_range_and_a_trailing_backslash_are_errors() {
+        assert_eq!(
+            Glob::new("[z-a]", true).unwrap_err(),
+            GlobError::InvalidRange('z', 'a')
+        );
+        assert_eq!(
+            Glob::new("a\\", true).unwrap_err(),
+            GlobError::DanglingEscape
+        );
+        assert_eq!(
+            Glob::new("{a", true).unwrap_err(),
+            GlobError::UnclosedAlternates
+        );
+        assert_eq!(
+            Glob::new("a}", true).unwrap_err(),
+            GlobError::UnopenedAlternates
+        );
+    }
+
+    #[test]
+    fn a_posix_class_matches_its_characters() {
+        assert!(matches("[[:digit:]]x", b"7x"));
+        assert!(!matches("[[:digit:]]x", b"ax"));
+    }
 }

@@ -264,7 +264,7 @@ fn parse_line(line: &str) -> Option<Parsed> {
         line = rest.strip_suffix('\\').unwrap_or(rest);
     }
     let mut actual = line.to_string();
-    if !anchored && !line.contains('/') && !(actual.starts_with("**/") || actual == "**") {
+    if !(anchored || line.contains('/') || actual.starts_with("**/") || actual == "**") {
         actual = format!("**/{actual}");
     }
     if actual.ends_with("/**") {

@@ -202,7 +202,7 @@ impl Walker<'_> {
         };
         let mut found = Vec::new();
         for entry in entries {
-            match entry.and_then(|e| Ok((e.file_name(), e.path(), e.file_type()))) {
+            match entry.map(|e| (e.file_name(), e.path(), e.file_type())) {
                 Ok((name, path, Ok(t))) => found.push((name, path, t)),
                 Ok((_, path, Err(e))) => self.out.push(Event::Error(io_error(&path, &e))),
                 Err(e) => self.out.push(Event::Error(e.to_string())),
