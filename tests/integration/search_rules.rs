@@ -96,7 +96,7 @@ fn own(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, Stri
 
 /// What the `ignore` crate finds in `dir`, configured as massprop
 /// configured it before (src/analysis/search.rs, until this test came):
-/// its `*.toml` regular files, `!` and the message massprop made of an
+/// its `*.toml` regular files and robot descriptions, `!` and the message massprop made of an
 /// error.
 fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>, String> {
     let mut excluded = ignore::overrides::OverrideBuilder::new(dir);
@@ -116,8 +116,11 @@ fn reference(dir: &Path, hidden: bool, exclude: &[String]) -> Result<Vec<String>
         .filter_map(|e| match e {
             Ok(e) => {
                 let file = e.file_type().is_some_and(|t| t.is_file());
-                let toml = e.path().extension().is_some_and(|x| x == "toml");
-                (file && toml).then(|| e.path().display().to_string())
+                // The names `find` looks at: part files and robot
+                // descriptions.
+                let p = e.path();
+                let wanted = massprop::io::is_toml(p) || massprop::robot::may_be_robot(p);
+                (file && wanted).then(|| p.display().to_string())
             }
             Err(e) => Some(format!("! cannot search: {e}")),
         })
@@ -547,4 +550,14 @@ fn a_worktrees_info_exclude_is_its_common_directorys() {
     assert_eq!(found, [w.join("b.toml").display().to_string()]);
     assert_eq!(Ok(found), reference(&w, false, &[]));
     let _ = std::fs::remove_dir_all(&root);
+}
+
+#[test]
+fn the_search_of_this_repository_finds_what_the_ignore_crate_finds() {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for hidden in [false, true] {
+        let found = own(repo, hidden, &[]);
+        assert!(found.as_ref().is_ok_and(|f| f.len() > 10), "{found:?}");
+        assert_eq!(found, reference(repo, hidden, &[]), "hidden: {hidden}");
+    }
 }
