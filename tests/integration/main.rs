@@ -19,6 +19,7 @@ mod copies_walk;
 mod cost;
 mod depth;
 mod diff;
+mod diff_junit;
 mod docs;
 mod docs_run;
 mod drawing_legible;
