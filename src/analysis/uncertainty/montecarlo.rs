@@ -12,6 +12,7 @@
 //! largest three per output. Every sum is formed in the order it always
 //! was: the same bits.
 
+use super::motion::FIRST;
 use super::walk::{At, Body, Numbering, dep_label};
 use super::{N, Sums, TOP, Uncertainty, W, split};
 use crate::numeric::M3;
@@ -135,6 +136,10 @@ fn chunk(
                 let c0 = v.c0.map(|x| x * v.reported.length);
                 out[b * N..(b + 1) * N].copy_from_slice(&v.reported.outputs(&sums[b], c0)?);
             }
+            if let Some(m) = body.motion {
+                let motion = m.outputs(&out[..N]);
+                out[FIRST..].copy_from_slice(&motion);
+            }
             Some(out)
         })
         .collect()
@@ -244,14 +249,13 @@ pub(super) fn run(
     }
     let all = &kept.all;
     let n = all.len();
-    let width = N * body.views.len();
     let mean: [f64; W] =
         std::array::from_fn(|o| all.iter().map(|r| r[o]).sum::<f64>() / n.max(1) as f64);
     let covariance: Vec<Vec<f64>> = (0..W)
         .map(|a| {
             (0..W)
                 .map(|b| {
-                    if a >= width || b >= width {
+                    if !body.live(a) || !body.live(b) {
                         return 0.0;
                     }
                     all.iter()
@@ -330,14 +334,10 @@ pub(super) fn run(
             ]),
         )
     };
-    let (outputs, covariance, predicted) = split(
-        body.views.len(),
-        &nominal,
-        &covariance,
-        &share,
-        &stats,
-        &|k| labels[&k].clone(),
-    );
+    let (outputs, covariance, predicted) =
+        split(body, &nominal, &covariance, &share, &stats, &|k| {
+            labels[&k].clone()
+        });
     let u = Uncertainty {
         method: "montecarlo",
         samples: Some(samples),
