@@ -41,6 +41,7 @@ mod library;
 mod limits;
 mod mesh_classes;
 mod meshes;
+mod motion_sigma;
 mod new_shapes;
 mod oracle;
 mod package;
