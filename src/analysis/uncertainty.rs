@@ -408,9 +408,8 @@ pub fn propagate(
             let p = checks
                 .iter()
                 .map(|(_, _, (lo, hi), o)| {
-                    let out = all
-                        .iter()
-                        .filter(|r| !(r[*o] >= *lo && r[*o] <= *hi))
+                    let out = (0..all.len())
+                        .filter(|&i| !(all.get(i, *o) >= *lo && all.get(i, *o) <= *hi))
                         .count();
                     out as f64 / all.len().max(1) as f64
                 })
