@@ -317,3 +317,39 @@ fn in_turned_axes_about_another_point_each_linear_sigma_is_the_finite_difference
         );
     }
 }
+
+/// The outputs docs/uncertainty.md's `outputs[]` row lists, in its order
+/// (`center_of_mass.x/y/z` is three).
+fn documented_outputs() -> Vec<String> {
+    let doc = std::fs::read_to_string("docs/uncertainty.md").unwrap();
+    let row = doc
+        .lines()
+        .find(|l| l.starts_with("| `outputs[]` |"))
+        .expect("docs/uncertainty.md has a row for `outputs[]`");
+    let mut out = Vec::new();
+    for token in row.split('`').skip(1).step_by(2) {
+        if matches!(token, "outputs[]" | "omega" | "velocity" | "[expect]") {
+            continue;
+        }
+        match token.split_once('.') {
+            Some((stem, comps)) => out.extend(comps.split('/').map(|c| format!("{stem}.{c}"))),
+            None => out.push(token.to_string()),
+        }
+    }
+    out
+}
+
+#[test]
+fn docs_list_every_output_of_a_body_moving_in_the_order_json_gives_them() {
+    let (v, _) = report_json(
+        &toleranced(MOVING_ABOUT_A_POINT),
+        &["--uncertainty", "linear"],
+    );
+    let given: Vec<String> = v["uncertainty"]["outputs"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|o| o["quantity"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(documented_outputs(), given);
+}
