@@ -381,7 +381,7 @@ pub fn propagate(
         Method::Linear => {
             let u = linear::run(&body, nominal);
             let sigma = |o: usize| {
-                if o < N || o >= motion::FIRST {
+                if !(N..motion::FIRST).contains(&o) {
                     u.outputs
                         .iter()
                         .find(|x| x.quantity == name_of(o))
