@@ -57,6 +57,8 @@ pub mod compose;
 #[doc(hidden)]
 pub mod diag;
 #[doc(hidden)]
+pub mod diff_lines;
+#[doc(hidden)]
 pub mod dual;
 #[doc(hidden)]
 pub mod eigen;

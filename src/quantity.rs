@@ -382,6 +382,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS),
         needs: Needs::Omega,
         report: Some(15),
         bound: Some(13),
@@ -395,6 +396,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 3),
         needs: Needs::Omega,
         bless: Bless::Relative,
         report: Some(16),
@@ -580,6 +582,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 4),
         needs: Needs::Velocity,
         report: Some(20),
         bound: Some(17),
@@ -593,6 +596,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 7),
         needs: Needs::Velocity,
         report: Some(21),
         bound: Some(18),
@@ -606,6 +610,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 10),
         needs: Needs::Velocity,
         report: Some(22),
         bound: Some(19),
@@ -619,6 +624,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 13),
         needs: Needs::Velocity,
         bless: Bless::Relative,
         report: Some(23),
@@ -633,6 +639,7 @@ pub const QUANTITIES: [Info; 28] = [
         )
     },
     Info {
+        sigma: Some(2 * OUTPUTS + 14),
         needs: Needs::Velocity,
         bless: Bless::Relative,
         report: Some(24),
@@ -699,6 +706,12 @@ impl Judge {
 /// How many σ outputs one body has (`analysis::sigma`): mass, centre of
 /// mass, the six entries of the inertia tensor, the principal moments.
 pub const OUTPUTS: usize = 13;
+
+/// How many σ outputs the body moving has, after both bodies' outputs
+/// (`analysis::uncertainty::motion`): the angular momentum about the
+/// point and the kinetic energy (with ω), v̄, G, H_G and the two parts of
+/// the kinetic energy (with `velocity`).
+pub const MOTION_OUTPUTS: usize = 15;
 
 /// The `[expect]` keys that name one entry of the inertia tensor about the
 /// centre of mass: key, row, column.

@@ -171,25 +171,25 @@ impl Endings {
     fn endings_of(&self, new: &[&str]) -> Vec<Option<bool>> {
         let old: Vec<&str> = self.lines.iter().map(String::as_str).collect();
         let mut crlf: Vec<Option<bool>> = vec![None; new.len()];
-        for op in similar::capture_diff_slices(similar::Algorithm::Myers, &old, new) {
+        for op in crate::diff_lines::diff(&old, new) {
             match op {
-                similar::DiffOp::Equal {
-                    old_index,
-                    new_index,
+                crate::diff_lines::Op::Equal {
+                    old: old_index,
+                    new: new_index,
                     len,
                 } => crlf[new_index..new_index + len]
                     .copy_from_slice(&self.crlf[old_index..old_index + len]),
-                similar::DiffOp::Replace {
-                    old_index,
+                crate::diff_lines::Op::Replace {
+                    old: old_index,
                     old_len,
-                    new_index,
+                    new: new_index,
                     new_len,
                 } => {
                     let n = old_len.min(new_len);
                     crlf[new_index..new_index + n]
                         .copy_from_slice(&self.crlf[old_index..old_index + n]);
                 }
-                similar::DiffOp::Delete { .. } | similar::DiffOp::Insert { .. } => {}
+                crate::diff_lines::Op::Delete { .. } | crate::diff_lines::Op::Insert { .. } => {}
             }
         }
         crlf

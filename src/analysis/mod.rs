@@ -139,7 +139,7 @@ pub fn load_model(
     if let Some(method) = settings.uncertainty {
         let whole = predicted.as_ref().filter(|_| only.is_none());
         summary.uncertainty = Some(uncertainty::propagate(
-            &model, &summary, whole, method, &source,
+            &model, &analysis, &summary, whole, method, &source,
         )?);
     }
     if settings.predicted {

@@ -33,6 +33,7 @@ pub use super::sigma::{Contributor, Exceed, Output, Predicted, Uncertainty};
 
 mod linear;
 mod montecarlo;
+mod motion;
 mod walk;
 use walk::Body;
 
@@ -47,9 +48,12 @@ pub enum Method {
 /// of the inertia tensor, the principal moments (`quantity::OUTPUTS`:
 /// the table's `sigma` numbers them).
 const N: usize = crate::quantity::OUTPUTS;
+/// How many outputs the body moving has (`motion`).
+const K: usize = crate::quantity::MOTION_OUTPUTS;
 /// The outputs of both bodies, the basic's first (the predicted body's
-/// are zero where the file has none).
-const W: usize = 2 * N;
+/// are zero where the file has none), then the basic body's motion's
+/// (zero where it has none).
+const W: usize = 2 * N + K;
 
 /// Where quantity `q`'s outputs begin (`quantity::Info::sigma`).
 const fn first(q: Quantity) -> usize {
@@ -99,8 +103,27 @@ static NAMES: LazyLock<Vec<String>> = LazyLock::new(|| {
     }
     let predicted: Vec<String> = names.iter().map(|n| format!("predicted_{n}")).collect();
     names.extend(predicted);
+    names.resize(W, String::new());
+    for (info, o) in moving() {
+        for (n, k) in components(info.layout).into_iter().enumerate() {
+            names[o + n] = match info.layout {
+                Layout::Scalar => info.key.to_string(),
+                Layout::Vector | Layout::Ordered | Layout::Matrix | Layout::Axes => {
+                    format!("{}.{}", info.key, component(info.layout, k))
+                }
+            };
+        }
+    }
     names
 });
+
+/// The body moving's quantities whose σ is propagated (`motion`), each
+/// with its first output.
+fn moving() -> impl Iterator<Item = (&'static crate::quantity::Info, usize)> {
+    QUANTITIES
+        .iter()
+        .filter_map(|i| i.sigma.filter(|o| *o >= motion::FIRST).map(|o| (i, o)))
+}
 
 /// The name of output `o` of `W`.
 fn name_of(o: usize) -> &'static str {
@@ -293,6 +316,7 @@ fn moved(dm: f64, dc: [f64; 3], dj: &M3<f64>, m: f64, d: [f64; 3], k: f64) -> Su
 /// of its predicted body where `predicted` gives its nominal figures.
 pub fn propagate(
     model: &Model,
+    analysis: &crate::model::Analysis,
     summary: &Summary,
     predicted: Option<&Summary>,
     method: Method,
@@ -301,16 +325,39 @@ pub fn propagate(
     let mut views = vec![View::new(model, summary)];
     views.extend(predicted.map(|p| View::new(model, p)));
     let allowances = predicted.map(|_| super::budget::allowances(model));
+    let mut nominal = [0.0; W];
+    nominal[..N].copy_from_slice(&nominal_outputs(summary));
+    if let Some(p) = predicted {
+        nominal[N..2 * N].copy_from_slice(&nominal_outputs(p));
+    }
+    let motion = summary.omega.map(|omega| {
+        let velocity = summary
+            .reported(Quantity::Velocity)
+            .map(|v| std::array::from_fn(|k| v.component(k)));
+        motion::Motion {
+            axes: summary.axes,
+            point: analysis.about.map(|_| summary.reference_point),
+            omega,
+            velocity,
+            positive: summary.products_convention == Products::Positive,
+            nominal: std::array::from_fn(|o| nominal[o]),
+        }
+    });
+    if motion.is_some() {
+        for (info, o) in moving() {
+            if let Some(v) = summary.reported(info.quantity) {
+                for (n, k) in components(info.layout).into_iter().enumerate() {
+                    nominal[o + n] = v.component(k);
+                }
+            }
+        }
+    }
     let body = Body {
         model,
         views: &views,
         allowances: allowances.as_deref(),
+        motion: motion.as_ref(),
     };
-    let mut nominal = [0.0; W];
-    nominal[..N].copy_from_slice(&nominal_outputs(summary));
-    if let Some(p) = predicted {
-        nominal[N..].copy_from_slice(&nominal_outputs(p));
-    }
     // The chance of each `[expect]` entry on an output to fail, and of the
     // predicted mass to pass `[budget] limit`: (name, where, bounds, output).
     let mut checks: Vec<(String, usize, (f64, f64), usize)> = model
@@ -318,7 +365,8 @@ pub fn propagate(
         .iter()
         .filter_map(|c| {
             let o = output_of(c.target)?;
-            (o < N * views.len()).then(|| (c.name.clone(), c.span.start, c.bound.limits(), o))
+            body.live(o)
+                .then(|| (c.name.clone(), c.span.start, c.bound.limits(), o))
         })
         .collect();
     if let (Some(limit), true) = (&model.budget, views.len() == 2) {
@@ -333,8 +381,11 @@ pub fn propagate(
         Method::Linear => {
             let u = linear::run(&body, nominal);
             let sigma = |o: usize| {
-                if o < N {
-                    u.outputs[o].sigma
+                if !(N..motion::FIRST).contains(&o) {
+                    u.outputs
+                        .iter()
+                        .find(|x| x.quantity == name_of(o))
+                        .map_or(0.0, |x| x.sigma)
                 } else {
                     u.predicted.as_ref().map_or(0.0, |p| p.outputs[o - N].sigma)
                 }
@@ -357,9 +408,8 @@ pub fn propagate(
             let p = checks
                 .iter()
                 .map(|(_, _, (lo, hi), o)| {
-                    let out = all
-                        .iter()
-                        .filter(|r| !(r[*o] >= *lo && r[*o] <= *hi))
+                    let out = (0..all.len())
+                        .filter(|&i| !(all.get(i, *o) >= *lo && all.get(i, *o) <= *hi))
                         .count();
                     out as f64 / all.len().max(1) as f64
                 })
@@ -474,7 +524,7 @@ fn top(
 /// output o's variance `var`); Monte Carlo's mean and percentiles from
 /// `stats`.
 fn outputs_of(
-    range: std::ops::Range<usize>,
+    range: &[usize],
     nominal: &[f64; W],
     cov: &[Vec<f64>],
     share: &dyn Fn(usize, f64) -> Vec<(usize, f64)>,
@@ -482,8 +532,8 @@ fn outputs_of(
     labels: &dyn Fn(usize) -> String,
 ) -> (Vec<Output>, Vec<Vec<f64>>) {
     let outputs = range
-        .clone()
-        .map(|o| {
+        .iter()
+        .map(|&o| {
             let var = cov[o][o];
             let (mean, percentiles) = stats(o);
             Output {
@@ -497,24 +547,29 @@ fn outputs_of(
         })
         .collect();
     let block = range
-        .clone()
-        .map(|a| range.clone().map(|b| cov[a][b]).collect())
+        .iter()
+        .map(|&a| range.iter().map(|&b| cov[a][b]).collect())
         .collect();
     (outputs, block)
 }
 
-/// The basic body's outputs and, with a second view, the predicted's.
+/// The basic body's outputs (its motion's among them) and, with a second
+/// view, the predicted's.
 fn split(
-    views: usize,
+    body: &Body<'_>,
     nominal: &[f64; W],
     cov: &[Vec<f64>],
     share: &dyn Fn(usize, f64) -> Vec<(usize, f64)>,
     stats: &dyn Fn(usize) -> (Option<f64>, Option<[f64; 3]>),
     labels: &dyn Fn(usize) -> String,
 ) -> (Vec<Output>, Vec<Vec<f64>>, Option<Predicted>) {
-    let (outputs, covariance) = outputs_of(0..N, nominal, cov, share, stats, labels);
-    let predicted = (views == 2).then(|| {
-        let (outputs, covariance) = outputs_of(N..W, nominal, cov, share, stats, labels);
+    let basic: Vec<usize> = (0..N)
+        .chain((motion::FIRST..W).filter(|&o| body.live(o)))
+        .collect();
+    let (outputs, covariance) = outputs_of(&basic, nominal, cov, share, stats, labels);
+    let predicted = (body.views.len() == 2).then(|| {
+        let range: Vec<usize> = (N..2 * N).collect();
+        let (outputs, covariance) = outputs_of(&range, nominal, cov, share, stats, labels);
         Predicted {
             outputs,
             covariance,

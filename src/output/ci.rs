@@ -2,8 +2,8 @@
 //!
 //! - `github`: GitHub Actions workflow commands, `::error file=…,line=…::…`,
 //!   one per failure, which the runner turns into annotations on the diff;
-//! - `junit`: JUnit XML as cargo-nextest writes it (its own crate,
-//!   quick-junit): a test suite per file, a test case per expectation and
+//! - `junit`: JUnit XML as cargo-nextest writes it (`output::junit`,
+//!   byte for byte what its crate, quick-junit, writes): a test suite per file, a test case per expectation and
 //!   validity check;
 //! - `sarif`: SARIF 2.1.0, for code scanning.
 //!
@@ -170,78 +170,75 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
 /// `<error>`; values not certified to `--rtol` go to the suite's
 /// `<system-err>`.
 pub fn junit(results: &[FileResult]) -> String {
-    use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
-    let failed = |kind, ty: &str, message: &str, description: &str| {
-        let mut s = TestCaseStatus::non_success(kind);
-        s.set_type(ty)
-            .set_message(message)
-            .set_description(description);
-        s
+    use super::junit::{Case, Report, Status, Suite, write};
+    let failed = |error, ty: &str, message: &str, description: &str| Status::NonSuccess {
+        error,
+        ty: ty.to_string(),
+        message: message.to_string(),
+        description: description.to_string(),
     };
-    let mut report = Report::new(TITLE);
+    let mut report = Report {
+        name: TITLE.to_string(),
+        suites: Vec::new(),
+    };
     for r in results {
         let path = visible(&r.path);
-        let mut suite = TestSuite::new(path.as_str());
-        let case = |name: &str, status| {
-            let mut c = TestCase::new(name, status);
-            c.set_classname(path.as_str());
-            c
+        let mut cases = Vec::new();
+        let case = |name: &str, status| Case {
+            name: name.to_string(),
+            classname: path.clone(),
+            status,
         };
         let valid = match &r.error {
-            Some(d) => failed(
-                NonSuccessKind::Error,
-                "invalid",
-                &visible(d.message()),
-                &d.to_string(),
-            ),
-            None => TestCaseStatus::success(),
+            Some(d) => failed(true, "invalid", &visible(d.message()), &d.to_string()),
+            None => Status::Success,
         };
         let valid_name = match r.format {
             Some(f) => format!("valid {} file", f.name()),
             None => "valid part file".to_string(),
         };
-        suite.add_test_case(case(&valid_name, valid));
+        cases.push(case(&valid_name, valid));
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             for e in &l.engines {
                 let status = if e.verdict.valid {
-                    TestCaseStatus::success()
+                    Status::Success
                 } else {
                     let text = visible(&robot::failure(l, e));
                     failed(
-                        NonSuccessKind::Failure,
+                        false,
                         "inertial",
                         &text,
                         &format!("{path}:{}:{}: error: {text}", l.span.line, l.span.column),
                     )
                 };
                 let name = format!("link {}: {}", visible(&l.name), e.verdict.engine.name());
-                suite.add_test_case(case(&name, status));
+                cases.push(case(&name, status));
             }
         }
         for c in &r.checks {
             let status = if c.pass {
-                TestCaseStatus::success()
+                Status::Success
             } else {
                 failed(
-                    NonSuccessKind::Failure,
+                    false,
                     rule_of(c),
                     &visible(&failure(c)),
                     &visible(&message(&r.path, c)),
                 )
             };
-            suite.add_test_case(case(&visible(&c.quantity), status));
+            cases.push(case(&visible(&c.quantity), status));
         }
         for v in &r.validity {
             let status = match &v.failure {
-                None => TestCaseStatus::success(),
+                None => Status::Success,
                 Some(m) => failed(
-                    NonSuccessKind::Failure,
+                    false,
                     "validity",
                     &visible(m),
                     &format!("{path}: error: {}", visible(m)),
                 ),
             };
-            suite.add_test_case(case(&format!("validity: {}", v.name), status));
+            cases.push(case(&format!("validity: {}", v.name), status));
         }
         let mut warnings: String = r
             .accuracy_warnings
@@ -265,18 +262,13 @@ pub fn junit(results: &[FileResult]) -> String {
                 ));
             }
         }
-        if !warnings.is_empty() {
-            suite.set_system_err(warnings);
-        }
-        report.add_test_suite(suite);
+        report.suites.push(Suite {
+            name: path.clone(),
+            cases,
+            system_err: (!warnings.is_empty()).then_some(warnings),
+        });
     }
-    let mut xml = report
-        .to_string()
-        .expect("invariant: a report in memory serializes");
-    if !xml.ends_with('\n') {
-        xml.push('\n');
-    }
-    xml
+    write(&report)
 }
 
 /// A failed check's rule (SARIF's `ruleId`, JUnit's failure `type`).

@@ -21,6 +21,7 @@ pub mod drawing;
 pub mod format;
 pub mod grid;
 pub mod inertial;
+pub mod junit;
 pub mod materials;
 pub mod report;
 pub mod robot;

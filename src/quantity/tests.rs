@@ -11,7 +11,7 @@ fn each_row_stands_at_its_variants_position() {
 
 #[test]
 fn the_sigma_outputs_of_one_body_are_numbered_without_overlap() {
-    let mut taken = [false; 2 * OUTPUTS];
+    let mut taken = [false; 2 * OUTPUTS + MOTION_OUTPUTS];
     for info in &QUANTITIES {
         let Some(first) = info.sigma else { continue };
         let n = match info.layout {
@@ -26,6 +26,8 @@ fn the_sigma_outputs_of_one_body_are_numbered_without_overlap() {
     // Every output of the basic body is some quantity's (the predicted
     // body's principal moments have no `[expect]` key).
     assert!(taken[..OUTPUTS].iter().all(|t| *t), "{taken:?}");
+    // And every output of the body moving.
+    assert!(taken[2 * OUTPUTS..].iter().all(|t| *t), "{taken:?}");
 }
 
 /// The places of `place` are 0, 1, 2, … each once.

@@ -12,6 +12,7 @@
 //! per part), then for the rest, each shared row added where its source
 //! was first met.
 
+use super::motion::FIRST;
 use super::walk::{At, Body, Meets, Met, Numbering, dep_label};
 use super::{N, Sums, Uncertainty, W, moved, split};
 use crate::dual::Dual;
@@ -91,6 +92,10 @@ fn row(body: &Body<'_>, d: &[Sums; 2]) -> [f64; W] {
     let mut row = [0.0; W];
     for (b, v) in body.views.iter().enumerate() {
         row[b * N..(b + 1) * N].copy_from_slice(&v.reported.linear(&d[b], v.m));
+    }
+    if let Some(m) = body.motion {
+        let motion = m.linear(&row[..N]);
+        row[FIRST..].copy_from_slice(&motion);
     }
     row
 }
@@ -260,14 +265,10 @@ pub(super) fn run(body: &Body<'_>, nominal: [f64; W]) -> Uncertainty {
             .map(|&(k, r)| (k, if var > 0.0 { r * r / var } else { 0.0 }))
             .collect()
     };
-    let (outputs, covariance, predicted) = split(
-        body.views.len(),
-        &nominal,
-        &cov,
-        &share,
-        &|_| (None, None),
-        &|k| sink.labels[&k].clone(),
-    );
+    let (outputs, covariance, predicted) =
+        split(body, &nominal, &cov, &share, &|_| (None, None), &|k| {
+            sink.labels[&k].clone()
+        });
     Uncertainty {
         method: "linear",
         samples: None,

@@ -12,6 +12,7 @@
 //! largest three per output. Every sum is formed in the order it always
 //! was: the same bits.
 
+use super::motion::FIRST;
 use super::walk::{At, Body, Numbering, dep_label};
 use super::{N, Sums, TOP, Uncertainty, W, split};
 use crate::numeric::M3;
@@ -135,6 +136,10 @@ fn chunk(
                 let c0 = v.c0.map(|x| x * v.reported.length);
                 out[b * N..(b + 1) * N].copy_from_slice(&v.reported.outputs(&sums[b], c0)?);
             }
+            if let Some(m) = body.motion {
+                let motion = m.outputs(&out[..N]);
+                out[FIRST..].copy_from_slice(&motion);
+            }
             Some(out)
         })
         .collect()
@@ -177,13 +182,55 @@ fn on_every_core<T: Send>(n: usize, f: &(dyn Fn(usize) -> T + Sync)) -> Vec<T> {
 
 /// The samples' outputs kept (at most `--samples` of them) for the
 /// statistics and the sources' contributions.
-struct Kept {
-    /// The samples that make a body: their numbers and outputs.
+pub(super) struct Kept {
+    /// The samples that make a body: their numbers.
     at: Vec<usize>,
-    all: Vec<[f64; W]>,
+    /// Their outputs that are reported (`Body::live`), `live.len()` per
+    /// sample: only those are held (8 bytes each).
+    all: Vec<f64>,
+    live: Vec<usize>,
+    /// Output o's column among `live`, or `usize::MAX`.
+    column: [usize; W],
 }
 
 impl Kept {
+    fn new(body: &Body<'_>, samples: usize) -> Kept {
+        let live: Vec<usize> = (0..W).filter(|&o| body.live(o)).collect();
+        let mut column = [usize::MAX; W];
+        for (c, &o) in live.iter().enumerate() {
+            column[o] = c;
+        }
+        Kept {
+            at: Vec::new(),
+            all: Vec::with_capacity(samples.saturating_mul(live.len())),
+            live,
+            column,
+        }
+    }
+
+    /// How many samples are kept.
+    pub(super) fn len(&self) -> usize {
+        self.at.len()
+    }
+
+    /// Whether every sample was left out.
+    pub(super) fn is_empty(&self) -> bool {
+        self.at.is_empty()
+    }
+
+    /// Output `o` of kept sample `i` (0 for an output not reported).
+    pub(super) fn get(&self, i: usize, o: usize) -> f64 {
+        match self.column[o] {
+            usize::MAX => 0.0,
+            c => self.all[i * self.live.len() + c],
+        }
+    }
+
+    fn push(&mut self, s: usize, out: &[f64; W]) {
+        self.at.push(s);
+        self.all.extend(self.live.iter().map(|&o| out[o]));
+    }
+
     /// Source `k`'s sums for its contribution: Σ (out − nominal) z over
     /// the samples kept and, last, Σ z, block by block, the blocks added
     /// in order.
@@ -197,8 +244,9 @@ impl Kept {
                 let z = draw(seed, self.at[i], k, uniform);
                 // Centred on the nominal value, so that the sums keep the
                 // digits of the deviations.
-                for (r, (v, n)) in row.iter_mut().zip(self.all[i].iter().zip(nominal)) {
-                    *r += (v - n) * z;
+                let values = &self.all[i * self.live.len()..(i + 1) * self.live.len()];
+                for (&o, v) in self.live.iter().zip(values) {
+                    row[o] += (v - nominal[o]) * z;
                 }
                 row[W] += z;
                 i += 1;
@@ -218,7 +266,7 @@ pub(super) fn run(
     body: &Body<'_>,
     nominal: [f64; W],
     (samples, seed): (usize, u64),
-) -> (Uncertainty, Vec<[f64; W]>) {
+) -> (Uncertainty, Kept) {
     let fixed = fixed(body);
     let workers = std::thread::available_parallelism().map_or(1, usize::from);
     // Enough chunks for every core, none larger than `CHUNK`.
@@ -228,34 +276,27 @@ pub(super) fn run(
     let outs = on_every_core(chunks, &|c| {
         chunk(body, &fixed, seed, c * size..((c + 1) * size).min(samples))
     });
-    let mut kept = Kept {
-        at: Vec::new(),
-        all: Vec::with_capacity(samples),
-    };
+    let mut kept = Kept::new(body, samples);
     let mut rejected = 0;
     for (s, o) in outs.into_iter().flatten().enumerate() {
         match o {
-            Some(o) => {
-                kept.at.push(s);
-                kept.all.push(o);
-            }
+            Some(o) => kept.push(s, &o),
             None => rejected += 1,
         }
     }
-    let all = &kept.all;
+    let all = &kept;
     let n = all.len();
-    let width = N * body.views.len();
     let mean: [f64; W] =
-        std::array::from_fn(|o| all.iter().map(|r| r[o]).sum::<f64>() / n.max(1) as f64);
+        std::array::from_fn(|o| (0..n).map(|i| all.get(i, o)).sum::<f64>() / n.max(1) as f64);
     let covariance: Vec<Vec<f64>> = (0..W)
         .map(|a| {
             (0..W)
                 .map(|b| {
-                    if a >= width || b >= width {
+                    if !body.live(a) || !body.live(b) {
                         return 0.0;
                     }
-                    all.iter()
-                        .map(|r| (r[a] - mean[a]) * (r[b] - mean[b]))
+                    (0..n)
+                        .map(|i| (all.get(i, a) - mean[a]) * (all.get(i, b) - mean[b]))
                         .sum::<f64>()
                         / (n.max(2) - 1) as f64
                 })
@@ -319,7 +360,7 @@ pub(super) fn run(
     weigh(&mut batch);
     let share = |o: usize, _var: f64| best[o].clone();
     let stats = |o: usize| {
-        let mut v: Vec<f64> = all.iter().map(|r| r[o]).collect();
+        let mut v: Vec<f64> = (0..n).map(|i| all.get(i, o)).collect();
         v.sort_by(f64::total_cmp);
         (
             Some(mean[o]),
@@ -330,14 +371,10 @@ pub(super) fn run(
             ]),
         )
     };
-    let (outputs, covariance, predicted) = split(
-        body.views.len(),
-        &nominal,
-        &covariance,
-        &share,
-        &stats,
-        &|k| labels[&k].clone(),
-    );
+    let (outputs, covariance, predicted) =
+        split(body, &nominal, &covariance, &share, &stats, &|k| {
+            labels[&k].clone()
+        });
     let u = Uncertainty {
         method: "montecarlo",
         samples: Some(samples),
@@ -350,7 +387,7 @@ pub(super) fn run(
         exceed: Vec::new(),
         equal_moments: Vec::new(),
     };
-    (u, kept.all)
+    (u, kept)
 }
 
 /// The p-quantile of sorted values (linear between order statistics).

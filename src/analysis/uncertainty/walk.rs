@@ -24,6 +24,21 @@ pub(super) struct Body<'a> {
     pub(super) model: &'a Model,
     pub(super) views: &'a [View],
     pub(super) allowances: Option<&'a [f64]>,
+    /// The basic body moving, where ω is given (`motion`).
+    pub(super) motion: Option<&'a super::motion::Motion>,
+}
+
+impl Body<'_> {
+    /// Whether output `o` (of `W`) is reported: a body's that exists, or
+    /// a motion output the analysis gives.
+    pub(super) fn live(&self, o: usize) -> bool {
+        use super::{N, motion::FIRST};
+        if o < FIRST {
+            o < N * self.views.len()
+        } else {
+            self.motion.is_some_and(|m| m.live(o - FIRST))
+        }
+    }
 }
 
 /// A source as a part meets it.

@@ -192,11 +192,7 @@ pub fn unified_diff(old: &str, new: &str, path: &str) -> String {
     // The path escaped before it is put in the header: its newline would
     // be a line break there.
     let path = crate::diag::visible(path);
-    let diff = similar::TextDiff::from_lines(old, new)
-        .unified_diff()
-        .context_radius(3)
-        .header(&format!("a/{path}"), &format!("b/{path}"))
-        .to_string();
+    let diff = crate::diff_lines::unified(old, new, 3, &format!("a/{path}"), &format!("b/{path}"));
     let mut out = String::with_capacity(diff.len());
     for line in diff.split_inclusive('\n') {
         let (text, end) = match line.strip_suffix("\r\n") {
