@@ -635,3 +635,73 @@ fn a_case_with_its_own_values_passed_in_is_that_case() {
     assert_eq!(again.summary.center_of_mass, case.summary.center_of_mass);
     assert_eq!(again.summary.inertia_com, case.summary.inertia_com);
 }
+
+/// A seat (a 70 kg point at its origin, group `crew`) and a crate of
+/// cargo, included; the seat twice by an array.
+const SEAT: &str = "[[part]]\nname = \"occupant\"\nshape = \"point\"\nmass = 70\ncenter = [0, 0, 0]\ngroup = \"crew\"\n[[part]]\nname = \"cushion\"\nshape = \"point\"\nmass = 5\ncenter = [0, 0, 0]\n";
+
+fn cabin(case: &str) -> String {
+    format!(
+        "[[part]]\nname = \"floor\"\nshape = \"point\"\nmass = 100\ncenter = [0, 0, 0]\n[[part]]\nname = \"seat\"\ninclude = \"seat.toml\"\norigin = [1, 0, 0]\narray = {{ count = 2, step = [1, 0, 0] }}\ngroup = \"cabin\"\n[[case]]\n{case}\n"
+    )
+}
+
+#[test]
+fn a_case_without_one_copy_of_a_sub_assembly_keeps_the_other() {
+    let file = cabin("name = \"one seat\"\nwithout = [\"seat[1]\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-copy",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "one seat"]);
+    // The floor at 0 and the first seat's 75 kg at x = 1: by hand.
+    assert_eq!(num(&v["mass"]), 175.0);
+    within(&v, "center_of_mass", &[75.0 / 175.0, 0.0, 0.0]);
+}
+
+#[test]
+fn a_case_without_a_group_reaches_into_a_sub_assembly() {
+    // `cabin/crew`: each seat's occupant (its group under the include's).
+    let file = cabin("name = \"empty\"\nwithout_groups = [\"cabin/crew\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-group",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "empty"]);
+    // The floor and two 5 kg cushions at x = 1 and 2.
+    assert_eq!(num(&v["mass"]), 110.0);
+    within(&v, "center_of_mass", &[15.0 / 110.0, 0.0, 0.0]);
+    // A path inside a copy of a sub-assembly, by name.
+    let file = cabin("name = \"x\"\nwithout = [\"seat[0] / occupant\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-path",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "x"]);
+    assert_eq!(num(&v["mass"]), 180.0);
+    within(
+        &v,
+        "center_of_mass",
+        &[(5.0 + 75.0 * 2.0) / 180.0, 0.0, 0.0],
+    );
+}
+
+#[test]
+fn an_ambiguous_name_in_without_asks_for_the_path() {
+    let file = cabin("name = \"x\"\nwithout = [\"occupant\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-ambiguous",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(
+        e.contains("is ambiguous") && e.contains("`seat[0] / occupant`"),
+        "{e}"
+    );
+}
