@@ -339,7 +339,8 @@ impl Run<'_> {
         read: &mut Vec<PathBuf>,
     ) -> Result<FileResult, Diagnostic> {
         let loaded = source.and_then(|s| super::load_source_reading(s, &self.settings, read))?;
-        let r = check_loaded(&loaded);
+        let mut r = check_loaded(&loaded);
+        super::check::check_cases(&loaded, &self.settings, &mut r)?;
         stderr.push_str(&warning_lines(
             &loaded.source.name,
             &r.accuracy_warnings,

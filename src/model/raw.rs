@@ -33,6 +33,22 @@ pub struct RawFile {
     pub growth: Option<Growth>,
     /// `[budget]`: the not-to-exceed limit of the predicted mass.
     pub budget: Option<Spanned<RawBudget>>,
+    /// `[[case]]`: the body's loading cases, in file order (`model::case`).
+    pub case: Option<Spanned<Vec<Spanned<RawCase>>>>,
+}
+
+/// One `[[case]]`: the file in another state (`model::case`).
+#[derive(Debug, Default)]
+pub struct RawCase {
+    pub name: Option<Spanned<String>>,
+    /// Values in place of the file's `[params]` definitions.
+    pub params: Option<Params>,
+    /// Parts and sub-assemblies absent, named as `--only` names them.
+    pub without: Option<Spanned<Vec<Spanned<String>>>>,
+    /// `group` paths absent, with their sub-groups.
+    pub without_groups: Option<Spanned<Vec<Spanned<String>>>>,
+    /// The case's own `[expect]`.
+    pub expect: Option<Spanned<RawExpect>>,
 }
 
 /// `[params]`, or an include's `params`: name → a number or a quantity

@@ -124,7 +124,7 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
                 "error",
                 &r.path,
                 Some(span),
-                &visible(&c.quantity),
+                &visible(&c.label()),
                 &text,
             ));
         }
@@ -226,7 +226,7 @@ pub fn junit(results: &[FileResult]) -> String {
                     &visible(&message(&r.path, c)),
                 )
             };
-            cases.push(case(&visible(&c.quantity), status));
+            cases.push(case(&visible(&c.label()), status));
         }
         for v in &r.validity {
             let status = match &v.failure {
