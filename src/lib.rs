@@ -67,6 +67,8 @@ pub mod expr;
 #[doc(hidden)]
 pub mod io;
 #[doc(hidden)]
+pub mod la;
+#[doc(hidden)]
 pub mod mass;
 #[doc(hidden)]
 pub mod materials;

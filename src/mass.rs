@@ -6,8 +6,8 @@
 //! shipped a wrong-sign product in their I-form shift); I is formed only for
 //! output.
 
+use crate::la::Matrix3;
 use crate::numeric::{DD, M3, Real};
-use nalgebra::Matrix3;
 
 /// A composed body in the file's units and axes, held in double-double so
 /// that the `extended` mode loses nothing before output (the `standard`
@@ -57,7 +57,7 @@ pub fn inertia_of(c: &Matrix3<f64>) -> Matrix3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector3;
+    use crate::la::Vector3;
 
     #[test]
     fn inertia_of_a_point_mass_matches_the_textbook_form() {

@@ -8,8 +8,8 @@
 //! then fixed y, then fixed z (also R = Rz·Ry·Rx). `model::rotation` reads
 //! them from a part file.
 
+use crate::la::Matrix3;
 use crate::numeric::{M3, Real, norm_of};
-use nalgebra::Matrix3;
 
 /// How a part's local axes are turned, as the file gave it, so that the
 /// matrix can be formed in the precision the composer works in.
