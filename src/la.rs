@@ -77,7 +77,7 @@ impl<T: Copy> Vector3<T> {
         Vector3 { x, y, z }
     }
 
-    /// Component i (`f(i, 0)`) for i = 0, 1, 2, in that order.
+    /// Component i is `f(i, 0)`, called for i = 0, 1, 2 in that order.
     pub fn from_fn(mut f: impl FnMut(usize, usize) -> T) -> Self {
         let x = f(0, 0);
         let y = f(1, 0);
@@ -94,10 +94,6 @@ impl<T: Copy> Vector3<T> {
 
     pub fn iter(&self) -> std::array::IntoIter<&T, 3> {
         [&self.x, &self.y, &self.z].into_iter()
-    }
-
-    pub fn iter_mut(&mut self) -> std::array::IntoIter<&mut T, 3> {
-        [&mut self.x, &mut self.y, &mut self.z].into_iter()
     }
 
     pub fn transpose(&self) -> RowVector3<T> {
@@ -173,10 +169,6 @@ impl Vector3<f64> {
         self.map(|e| e / n)
     }
 
-    pub fn abs(&self) -> Self {
-        self.map(f64::abs)
-    }
-
     /// The largest |component|; the running value is kept only where
     /// `a >= b` (simba's `simd_max`), so a NaN is dropped first, not last.
     pub fn amax(&self) -> f64 {
@@ -188,16 +180,8 @@ impl Vector3<f64> {
         a
     }
 
-    /// The largest component, by the same rule as `amax`.
-    pub fn max(&self) -> f64 {
-        let mut a = self.x;
-        for b in [self.y, self.z] {
-            a = if a >= b { a } else { b };
-        }
-        a
-    }
-
-    /// The smallest |component|, by `min`'s rule.
+    /// The smallest |component|: the running value is kept where `a <= b`
+    /// (simba's `simd_min`).
     pub fn amin(&self) -> f64 {
         let mut a = self.x.abs();
         for b in [self.y, self.z] {
@@ -220,15 +204,6 @@ impl Vector3<f64> {
             }
         }
         the_i
-    }
-
-    /// The smallest component: the running value is kept where `a <= b`.
-    pub fn min(&self) -> f64 {
-        let mut a = self.x;
-        for b in [self.y, self.z] {
-            a = if a <= b { a } else { b };
-        }
-        a
     }
 
     pub fn component_mul(&self, rhs: &Self) -> Self {
@@ -384,12 +359,6 @@ impl<T: Copy> Matrix3<T> {
         Matrix3 { cols: [c0, c1, c2] }
     }
 
-    pub fn from_columns(c: &[Vector3<T>; 3]) -> Self {
-        Matrix3 {
-            cols: [c[0].as_array(), c[1].as_array(), c[2].as_array()],
-        }
-    }
-
     pub fn column(&self, j: usize) -> Vector3<T> {
         Vector3::from(self.cols[j])
     }
@@ -406,14 +375,6 @@ impl<T: Copy> Matrix3<T> {
     /// The entries column by column.
     pub fn iter(&self) -> impl Iterator<Item = &T> {
         self.cols.iter().flatten()
-    }
-
-    pub fn iter_mut(&mut self) -> impl Iterator<Item = &mut T> {
-        self.cols.iter_mut().flatten()
-    }
-
-    pub fn diagonal(&self) -> Vector3<T> {
-        Vector3::new(self.cols[0][0], self.cols[1][1], self.cols[2][2])
     }
 
     /// The entries by column as one slice.
@@ -471,10 +432,6 @@ impl Matrix3<f64> {
 
     pub fn norm(&self) -> f64 {
         self.norm_squared().sqrt()
-    }
-
-    pub fn abs(&self) -> Self {
-        self.map(f64::abs)
     }
 
     /// The largest |entry|, column by column, by `Vector3::amax`'s rule.
