@@ -6,12 +6,14 @@
 //! matrixmultiply, num-complex, approx and typenum was about a tenth of a
 //! cold release build, its generics monomorphised again inside massprop's
 //! own compile (docs/performance.md, "Build time"). The names, the
-//! methods and their meanings are nalgebra's, so the call sites did not
-//! change; every operation repeats nalgebra 0.35's floating-point
+//! methods and their meanings are nalgebra's, so the call sites kept
+//! their code (but for a vector's `as_slice`, which named fields cannot
+//! give without unsafe code: `as_array` instead); every operation repeats nalgebra 0.35's floating-point
 //! operations in nalgebra's order (a product accumulates column by column
 //! as its gemv does; `norm_squared` and `trace` start from +0.0; `amax`
 //! keeps the running value unless `a >= b` fails), so every result is
-//! bit for bit what nalgebra gave. tests/integration/la_pin.rs holds each
+//! bit for bit what nalgebra gave (a NaN's sign and payload excepted,
+//! which Rust itself leaves open). tests/integration/la_pin.rs holds each
 //! operation to nalgebra's bits over random and adversarial inputs.
 //! Storage is by column, as nalgebra's: `iter`, `map` and `from_fn` visit
 //! a matrix's entries column by column.
@@ -445,12 +447,13 @@ impl Matrix3<f64> {
         a
     }
 
-    /// A·x as nalgebra's gemv: y = A₀x₀, then y += Aⱼxⱼ for j = 1, 2.
+    /// A·x as nalgebra's gemv: y = A₀x₀, then y += Aⱼxⱼ for j = 1, 2
+    /// (nalgebra writes Aⱼxⱼ + y: addition commutes, to the bit).
     fn mul_vec(&self, x: &[f64; 3]) -> [f64; 3] {
         let mut y = self.cols[0].map(|a| a * x[0]);
-        for j in 1..3 {
-            for (yi, a) in y.iter_mut().zip(self.cols[j]) {
-                *yi = a * x[j] + *yi;
+        for (c, xj) in self.cols.iter().zip(x).skip(1) {
+            for (yi, a) in y.iter_mut().zip(c) {
+                *yi += a * xj;
             }
         }
         y
@@ -553,7 +556,7 @@ impl Mul<Matrix3<f64>> for RowVector3<f64> {
     fn mul(self, a: Matrix3<f64>) -> RowVector3<f64> {
         let [x, y, z] = a.cols.map(|c| {
             let mut s = self.x * c[0];
-            s = self.y * c[1] + s;
+            s += self.y * c[1];
             self.z * c[2] + s
         });
         RowVector3 { x, y, z }
@@ -577,7 +580,7 @@ impl Mul<Vector3<f64>> for RowVector3<f64> {
     type Output = Matrix1<f64>;
     fn mul(self, v: Vector3<f64>) -> Matrix1<f64> {
         let mut s = self.x * v.x;
-        s = self.y * v.y + s;
+        s += self.y * v.y;
         Matrix1(self.z * v.z + s)
     }
 }

@@ -47,7 +47,7 @@ pub fn inertia_of_rows<T: Real>(c: &M3<T>) -> M3<T> {
     })
 }
 
-/// `inertia_of_rows` for an nalgebra matrix.
+/// `inertia_of_rows` for a `Matrix3`.
 pub fn inertia_of(c: &Matrix3<f64>) -> Matrix3<f64> {
     let rows: M3<f64> = std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)]));
     let i = inertia_of_rows(&rows);

@@ -199,7 +199,7 @@ fn newton_schulz<T: Real>(mut r: M3<T>) -> M3<T> {
     r
 }
 
-/// An f64 matrix of rows as an nalgebra matrix.
+/// An f64 matrix of rows as a `Matrix3`.
 pub fn to_matrix3(m: &M3<f64>) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| m[i][j])
 }

@@ -11,6 +11,10 @@
 //! constructor differently, both spellings are given (`pin!`).
 //! Deterministic: a fixed ChaCha seed, no persistence.
 
+// The `by_reference` properties take references on purpose: they pin the
+// operators on `&Vector3` and `&Matrix3` that massprop's code calls.
+#![allow(clippy::op_ref)]
+
 use massprop::la::{Matrix3, Vector3};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, RngSeed};
