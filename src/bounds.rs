@@ -21,10 +21,10 @@
 //! - the correction −s sᵀ/m by the residual first moment s, and the centre
 //!   ĉ + s/m, carry the errors of s and m.
 
+use crate::la::Vector3;
 use crate::numeric::{DD, M3, Precision, Real};
 use crate::part::Own;
 use crate::quantity::{Quantity, Table, Value};
-use nalgebra::Vector3;
 use serde::Serialize;
 
 pub use crate::part::error::U64;

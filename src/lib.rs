@@ -31,8 +31,8 @@
 //! bottom up (each uses only those above it; docs/architecture.md has the
 //! list with each module's job):
 //!
-//! 1. numbers, units, diagnostics: `numeric`, `eigen`, `thresholds`,
-//!    `units`, `diag`, `io`;
+//! 1. numbers, units, diagnostics: `numeric`, `la`, `eigen`,
+//!    `thresholds`, `units`, `diag`, `io`;
 //! 2. shapes and parts: `shapes` (one description per shape and the closed
 //!    forms), `rotation` (the forms of a part's turn), `mesh` (triangle
 //!    meshes read, checked and integrated), `part` (a part and
@@ -68,6 +68,8 @@ pub mod explain;
 pub mod expr;
 #[doc(hidden)]
 pub mod io;
+#[doc(hidden)]
+pub mod la;
 #[doc(hidden)]
 pub mod mass;
 #[doc(hidden)]

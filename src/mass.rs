@@ -6,8 +6,8 @@
 //! shipped a wrong-sign product in their I-form shift); I is formed only for
 //! output.
 
+use crate::la::Matrix3;
 use crate::numeric::{DD, M3, Real};
-use nalgebra::Matrix3;
 
 /// A composed body in the file's units and axes, held in double-double so
 /// that the `extended` mode loses nothing before output (the `standard`
@@ -47,7 +47,7 @@ pub fn inertia_of_rows<T: Real>(c: &M3<T>) -> M3<T> {
     })
 }
 
-/// `inertia_of_rows` for an nalgebra matrix.
+/// `inertia_of_rows` for a `Matrix3`.
 pub fn inertia_of(c: &Matrix3<f64>) -> Matrix3<f64> {
     let rows: M3<f64> = std::array::from_fn(|i| std::array::from_fn(|j| c[(i, j)]));
     let i = inertia_of_rows(&rows);
@@ -57,7 +57,7 @@ pub fn inertia_of(c: &Matrix3<f64>) -> Matrix3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector3;
+    use crate::la::Vector3;
 
     #[test]
     fn inertia_of_a_point_mass_matches_the_textbook_form() {

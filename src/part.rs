@@ -3,10 +3,10 @@
 //! for. The composer, the per-part figures of every report and the checks
 //! on the input all use these functions: one path per quantity.
 
+use crate::la::{Matrix3, Vector3};
 use crate::numeric::{DD, M3, Real};
 use crate::shapes::Shape;
 use crate::units::{Dim, FileUnits};
-use nalgebra::{Matrix3, Vector3};
 use std::ops::Range;
 use std::sync::Arc;
 

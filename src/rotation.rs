@@ -8,8 +8,8 @@
 //! then fixed y, then fixed z (also R = Rz·Ry·Rx). `model::rotation` reads
 //! them from a part file.
 
+use crate::la::Matrix3;
 use crate::numeric::{M3, Real, norm_of};
-use nalgebra::Matrix3;
 
 /// How a part's local axes are turned, as the file gave it, so that the
 /// matrix can be formed in the precision the composer works in.
@@ -199,7 +199,7 @@ fn newton_schulz<T: Real>(mut r: M3<T>) -> M3<T> {
     r
 }
 
-/// An f64 matrix of rows as an nalgebra matrix.
+/// An f64 matrix of rows as a `Matrix3`.
 pub fn to_matrix3(m: &M3<f64>) -> Matrix3<f64> {
     Matrix3::from_fn(|i, j| m[i][j])
 }

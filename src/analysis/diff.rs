@@ -451,7 +451,7 @@ fn part_changes(o: &PartView, n: &PartView, length: f64, tol: f64) -> Vec<Change
     if !((n.si.mass - o.si.mass).abs() <= tol * o.si.mass.abs()) {
         what.push(Change::Mass);
     }
-    let moved = norm((n.si.center - o.si.center).as_slice());
+    let moved = norm(&(n.si.center - o.si.center).as_array());
     if !(moved <= tol * length) {
         what.push(Change::Centroid);
     }

@@ -4,9 +4,9 @@
 //! more than the body has.
 
 use crate::diag::{Diagnostic, Source};
+use crate::la::Vector3;
 use crate::model::{Analysis, Model};
 use crate::part::SiFactors;
-use nalgebra::Vector3;
 
 /// Why a summary could not be formed from valid parts.
 #[derive(Debug, Clone, PartialEq)]

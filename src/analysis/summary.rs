@@ -18,6 +18,7 @@ use super::Products;
 use super::ideal;
 use crate::bounds;
 use crate::compose::{self, Precision, Principal};
+use crate::la::Vector3;
 use crate::mass::inertia_of_rows;
 use crate::model::{Analysis, Model};
 use crate::numeric::{DD, M3, Real};
@@ -25,7 +26,6 @@ use crate::part::SiFactors;
 use crate::quantity::{Info, QUANTITIES, Quantity, Table, unit};
 use crate::units::Dim;
 use crate::units::FileUnits;
-use nalgebra::Vector3;
 use serde::Serialize;
 
 /// Version of the JSON contract: bumped only if a key changes meaning.

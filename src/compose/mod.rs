@@ -18,10 +18,10 @@ pub use placed::bodies_composed;
 
 use crate::bounds::{BodyError, Tally};
 use crate::eigen::jacobi_counted;
+use crate::la::Vector3;
 use crate::mass::Body;
 use crate::numeric::{DD, M3, Real, Sum, two_sum};
 use crate::part::EachPart;
-use nalgebra::Vector3;
 
 pub use crate::thresholds::EQUAL_MOMENT_RTOL;
 use crate::thresholds::SIGN_TIE;
@@ -352,10 +352,10 @@ fn in_plane(u: &Vector3<f64>) -> Vector3<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::la::Matrix3;
     use crate::mass::inertia_of;
     use crate::model::rotation::Orientation;
     use crate::part::{MassSpec, Part, Place, Spec};
-    use nalgebra::Matrix3;
 
     #[derive(Debug, PartialEq)]
     struct P {

@@ -6,8 +6,8 @@ use super::raw::{Quantity, RawAnalysis, Vector};
 use super::tolerance::{Index, Recorder};
 use super::{Analysis, raw};
 use crate::diag::{Diagnostic, Source};
+use crate::la::Vector3;
 use crate::units::{self, Dim, FileUnits, UnitError};
-use nalgebra::Vector3;
 use std::ops::Range;
 use toml::Spanned;
 

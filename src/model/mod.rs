@@ -42,10 +42,10 @@ pub use include::Includes;
 pub use walk::{Event, Leaf};
 
 use crate::diag::{Diagnostic, Source};
+use crate::la::Vector3;
 use crate::part::{Part, Solid};
 use crate::units::{self, Dim, FileUnits};
 use ctx::Ctx;
-use nalgebra::Vector3;
 use raw::RawFile;
 use std::ops::Range;
 use streamed::Streamed;

@@ -10,10 +10,10 @@ use super::raw::{RawPart, Vector};
 use super::rotation::Orientation;
 use super::tolerance::{Index, Recorder};
 use crate::diag::Diagnostic;
+use crate::la::Vector3;
 use crate::part::{MassSpec, Part, Place, Solid, Spec};
 use crate::shapes::{Fixed, Mover, Reader, Shape, Spanned as Spans};
 use crate::units::{self, Dim};
-use nalgebra::Vector3;
 use std::ops::Range;
 use toml::Spanned;
 

@@ -8,18 +8,18 @@ use super::ctx::Whose;
 use super::raw::{RawPart, Vector};
 use super::tolerance::Recorder;
 use crate::diag::Diagnostic;
+use crate::la::Vector3;
 use crate::shapes::Shape;
 use crate::thresholds::{
     COLLINEAR_TOLERANCE, PERPENDICULAR_TOLERANCE, SYMMETRY_TOLERANCE, VALIDITY_RTOL,
 };
 use crate::units::Dim;
-use nalgebra::Vector3;
 use std::ops::Range;
 use toml::Spanned;
 
 /// `numeric::norm` of a vector.
 fn vnorm(v: &Vector3<f64>) -> f64 {
-    crate::numeric::norm(v.as_slice())
+    crate::numeric::norm(&v.as_array())
 }
 
 /// `numeric::unit` of a vector.

@@ -8,8 +8,8 @@ use super::Ctx;
 use super::ctx::Whose;
 use super::raw::{Angles, Floats, RawAxes, RawRotation};
 use crate::diag::Diagnostic;
+use crate::la::Matrix3;
 use crate::thresholds::{MATRIX_TOLERANCE, QUATERNION_TOLERANCE};
-use nalgebra::Matrix3;
 use toml::Spanned;
 
 /// The rotation form keys present (not `degrees`, which goes with some),
@@ -355,7 +355,7 @@ pub fn parse_flag_axes(text: &str) -> Result<Orientation, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use nalgebra::Vector3;
+    use crate::la::Vector3;
 
     fn q(x: [f64; 4]) -> Matrix3<f64> {
         to_matrix3(&quaternion(x))

@@ -220,7 +220,7 @@ fn part_labels(parts: &[PartView]) -> Vec<String> {
 }
 
 fn describe_lone(p: &PartView, u: &DisplayUnits) -> String {
-    let c = p.si.center.as_slice();
+    let c = p.si.center.as_array();
     format!(
         "{}, {} {} at ({}, {}, {}) {}",
         p.shape.name(),
@@ -245,7 +245,7 @@ fn describe_change(o: &PartView, n: &PartView, what: &[Change], u: &DisplayUnits
                 percent(Some((n.si.mass - o.si.mass) / o.si.mass))
             ),
             Change::Centroid => {
-                let moved = norm((n.si.center - o.si.center).as_slice());
+                let moved = norm(&(n.si.center - o.si.center).as_array());
                 if moved < f64::MAX {
                     format!(
                         "centroid moved {} {}",

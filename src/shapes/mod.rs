@@ -38,8 +38,8 @@ pub use info::{
     ShapeInfo, Solid, Spanned, Symbol, own_key, symbol,
 };
 
+use crate::la::Vector3;
 use crate::numeric::{DD, M3, Real};
-use nalgebra::Vector3;
 use serde::Serialize;
 
 /// Everything one shape's module says of it: its description (`INFO`:

@@ -35,6 +35,7 @@ mod hostile_round_two;
 mod invariants;
 mod json_types;
 mod keys_docs;
+mod la_pin;
 mod layers;
 mod leftovers;
 mod library;

@@ -7,9 +7,9 @@ use massprop::analysis::Products;
 use massprop::analysis::summary::{Accuracy, Summary, summarize};
 use massprop::compose::Precision;
 use massprop::diag::Source;
+use massprop::la::{Matrix3, Vector3};
 use massprop::model::{Analysis, Model};
 use massprop::numeric::Real;
-use nalgebra::{Matrix3, Vector3};
 
 const EPS: f64 = f64::EPSILON;
 

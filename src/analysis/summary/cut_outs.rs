@@ -3,11 +3,11 @@
 //! not, which cut-out to name.
 
 use super::SummaryError;
+use crate::la::{Matrix3, Vector3};
 use crate::model::Model;
 use crate::numeric::{M3, Real};
 use crate::part::{Part, SiFactors};
 use crate::thresholds::VALIDITY_RTOL;
-use nalgebra::{Matrix3, Vector3};
 
 /// With cut-outs (`remove = true`) the composed body can be impossible: no
 /// mass left, or a second moment that is negative along some direction (a

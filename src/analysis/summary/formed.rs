@@ -10,10 +10,10 @@ use super::{Blame, Contribution, Products, SummaryError, finite};
 use crate::analysis::motion::{self, Motion};
 use crate::bounds::{self, BodyError};
 use crate::compose::{Precision, Principal};
+use crate::la::Vector3;
 use crate::model::Analysis;
 use crate::numeric::{DD, M3, Real};
 use crate::quantity::{About, Formed, Owned};
-use nalgebra::Vector3;
 use std::cell::OnceCell;
 
 /// The composed body in SI, rounded where reported, and what its bounds
