@@ -54,6 +54,7 @@ mod report_keys;
 mod robot_body;
 mod robots;
 mod robots_hostile;
+mod robots_more;
 mod schema;
 mod shell;
 mod short_report;
