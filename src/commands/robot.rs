@@ -87,12 +87,6 @@ pub struct Loading {
 impl Loading {
     pub fn new(source: Source, format: Dialect, c: &Configuration) -> Result<Loading, Diagnostic> {
         let robot = Robot::read(&source, format)?;
-        if robot.tree.follow(&mut robot.tree.zeros()).is_none() {
-            return Err(Diagnostic::file(
-                &source.name,
-                "its joints follow each other in a cycle (`<mimic>` or joint equalities): no configuration satisfies them",
-            ));
-        }
         let set = match &c.joints {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),

@@ -44,8 +44,8 @@ impl Robot {
         for &(j, x) in set {
             v[j] = x;
         }
-        // A cycle of followers is refused when the values are read
-        // (`joints`): here every follower has a leader's value.
+        // A cycle of followers is refused when the tree is read
+        // (`read::tree`): here every follower has a leader's value.
         let _ = self.tree.follow(&mut v);
         v
     }

@@ -12,9 +12,11 @@
 
 mod geometry;
 mod mjcf;
+mod mjcf_class;
 mod mjcf_geoms;
 mod orient;
 mod sdf;
+mod sdf_tree;
 mod tree;
 mod urdf;
 
