@@ -696,4 +696,3 @@ fn each_sweep_sample_is_the_plain_report_at_its_joints() {
         assert_eq!(Value::Object(rest), plain, "at hinge = {x}");
     }
 }
-

@@ -132,8 +132,16 @@ impl<'a, 'i> Classes<'a, 'i> {
 
     /// The attribute `name` of `node`, a `<kind>` element of class `class`:
     /// its own, else the nearest class's up the chain that sets it.
-    pub fn attr(&self, xml: &Xml, node: Node, class: Class, kind: &str, name: &str) -> Option<Value> {
-        xml.attr(node, name).or_else(|| self.inherited(xml, class, kind, name))
+    pub fn attr(
+        &self,
+        xml: &Xml,
+        node: Node,
+        class: Class,
+        kind: &str,
+        name: &str,
+    ) -> Option<Value> {
+        xml.attr(node, name)
+            .or_else(|| self.inherited(xml, class, kind, name))
     }
 
     /// The value class `class` (or a class it inherits from) gives the
@@ -153,7 +161,10 @@ impl<'a, 'i> Classes<'a, 'i> {
             c = parent;
             // Parents come before their children: the chain ends.
             hops += 1;
-            debug_assert!(hops <= self.classes.len(), "a class's parent is read before it");
+            debug_assert!(
+                hops <= self.classes.len(),
+                "a class's parent is read before it"
+            );
         }
         None
     }

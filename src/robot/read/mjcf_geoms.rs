@@ -20,7 +20,15 @@ const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"
 
 /// The geom attributes that place it, read only where the geom writes
 /// them.
-const PLACED: [&str; 7] = ["pos", "fromto", "quat", "axisangle", "xyaxes", "zaxis", "euler"];
+const PLACED: [&str; 7] = [
+    "pos",
+    "fromto",
+    "quat",
+    "axisangle",
+    "xyaxes",
+    "zaxis",
+    "euler",
+];
 
 /// Per body of `d` (in its order), its geoms that count for inertia; none
 /// read for a body `need` leaves out (None: every body).

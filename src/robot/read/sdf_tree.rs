@@ -394,13 +394,22 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
         });
     }
     for m in mimics {
-        let owner = format!("the `<mimic>` of joint {}", quoted(&t.joints[m.follower].name));
+        let owner = format!(
+            "the `<mimic>` of joint {}",
+            quoted(&t.joints[m.follower].name)
+        );
         let l = joint_named(xml, &t, &m.leader, &owner)?;
         // NOTE: multiplier·(x − reference) + offset, as the polynomial
         // c₀ + c₁x that `Follow` holds (every SDFormat joint's zero is 0).
         t.joints[m.follower].follows = Some(Follow {
             leader: Some(l),
-            coef: [m.offset - m.multiplier * m.reference, m.multiplier, 0.0, 0.0, 0.0],
+            coef: [
+                m.offset - m.multiplier * m.reference,
+                m.multiplier,
+                0.0,
+                0.0,
+                0.0,
+            ],
         });
     }
     for i in 0..t.links.len() {

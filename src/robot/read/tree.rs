@@ -116,7 +116,10 @@ pub(super) fn axis(xml: &Xml, v: &Value, owner: &str) -> Result<[f64; 3], Diagno
 }
 
 /// Link names to indices (the first of a name), refusing a name twice.
-pub(super) fn names<'d>(xml: &Xml, d: &'d Description) -> Result<HashMap<&'d str, usize>, Diagnostic> {
+pub(super) fn names<'d>(
+    xml: &Xml,
+    d: &'d Description,
+) -> Result<HashMap<&'d str, usize>, Diagnostic> {
     let mut out = HashMap::with_capacity(d.links.len());
     for (i, l) in d.links.iter().enumerate() {
         if out.insert(l.name.as_str(), i).is_some() {
@@ -323,7 +326,12 @@ fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
 }
 
 /// The joint `v` names, or an error with the nearest name.
-pub(super) fn joint_named(xml: &Xml, t: &Tree, v: &Value, owner: &str) -> Result<usize, Diagnostic> {
+pub(super) fn joint_named(
+    xml: &Xml,
+    t: &Tree,
+    v: &Value,
+    owner: &str,
+) -> Result<usize, Diagnostic> {
     t.joints
         .iter()
         .position(|j| j.name == v.text)
