@@ -11,6 +11,7 @@
 //! masses and moments are read as given.
 
 mod geometry;
+mod links;
 mod mjcf;
 mod mjcf_class;
 mod mjcf_geoms;

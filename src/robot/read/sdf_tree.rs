@@ -12,7 +12,7 @@
 //! `relative_to` or `attached_to` naming no frame; frames placed relative
 //! to each other in a cycle.
 
-use super::tree::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
 use super::{Value, Xml, child, children, qname, quoted, sdf};
 use crate::diag::Diagnostic;
 use crate::robot::Description;
