@@ -178,6 +178,9 @@ def main():
     rng = random.Random(args.seed)
     bad = 0
     with tempfile.TemporaryDirectory() as tmp:
+        # MuJoCo writes its warnings to MUJOCO_LOG.TXT in the working
+        # directory: keep it out of the repository.
+        os.chdir(tmp)
         for case in range(args.cases):
             text = robot(rng)
             path = os.path.join(tmp, f"c{case}.xml")
