@@ -175,6 +175,7 @@ def main():
     parser.add_argument("--cases", type=int, default=30)
     parser.add_argument("--seed", type=int, default=34)
     args = parser.parse_args()
+    args.massprop = os.path.abspath(args.massprop)
     rng = random.Random(args.seed)
     bad = 0
     with tempfile.TemporaryDirectory() as tmp:
