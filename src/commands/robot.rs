@@ -82,42 +82,21 @@ pub struct Loading {
     pub source: Source,
     pub robot: Robot,
     pub set: Vec<(usize, f64)>,
-    /// `robot` with its MJCF bodies' inertials from geoms, at first load.
-    filled: std::cell::OnceCell<Robot>,
 }
 
 impl Loading {
     pub fn new(source: Source, format: Dialect, c: &Configuration) -> Result<Loading, Diagnostic> {
         let robot = Robot::read(&source, format)?;
-        if robot.tree.follow(&mut robot.tree.zeros()).is_none() {
-            return Err(Diagnostic::file(
-                &source.name,
-                "its joints follow each other in a cycle (`<mimic>` or joint equalities): no configuration satisfies them",
-            ));
-        }
         let set = match &c.joints {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),
         };
-        Ok(Loading {
-            source,
-            robot,
-            set,
-            filled: std::cell::OnceCell::new(),
-        })
+        Ok(Loading { source, robot, set })
     }
 
     /// The body with the joints `set` (then `extra`), through the pipeline.
     pub fn load(&self, settings: &Settings, extra: &[(usize, f64)]) -> Result<Loaded, Diagnostic> {
-        // NOTE: an MJCF body's inertial from its geoms is composed once,
-        // at the first load (a sweep loads many times); it does not depend
-        // on the joints.
-        if self.filled.get().is_none() {
-            let mut robot = self.robot.clone();
-            super::geometry::mjcf_inertials(&self.source, &mut robot, settings)?;
-            let _ = self.filled.set(robot);
-        }
-        let robot = self.filled.get().expect("filled above");
+        let robot = &self.robot;
         let mut set = self.set.clone();
         for &(j, x) in extra {
             set.retain(|(k, _)| *k != j);

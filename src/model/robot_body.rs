@@ -230,12 +230,6 @@ impl super::Ctx<'_> {
                 )
             })?;
         let robot = Robot::read(&source, format).map_err(included_here)?;
-        if robot.tree.follow(&mut robot.tree.zeros()).is_none() {
-            return Err(self.err(
-                inc.span(),
-                format!("the joints of `{shown_name}` follow each other in a cycle (`<mimic>` or joint equalities): no configuration satisfies them"),
-            ));
-        }
         let mut set = Vec::new();
         for (key, q) in joints.map(|t| t.get_ref().iter()).into_iter().flatten() {
             let here = |d: crate::diag::Diagnostic, at: std::ops::Range<usize>| {

@@ -27,9 +27,12 @@ pub struct Note {
 }
 
 impl Robot {
-    /// `source`, a robot description of `format`, read with its tree.
+    /// `source`, a robot description of `format`, read with its tree; an
+    /// MJCF body weighed from its geoms where MuJoCo's compiler would
+    /// (`weigh`).
     pub fn read(source: &Source, format: Dialect) -> Result<Robot, Diagnostic> {
-        let description = super::read::read(source, format)?;
+        let mut description = super::read::read(source, format)?;
+        super::weigh::mjcf_inertials(source, &mut description)?;
         let tree = super::read::tree(source, &description)?;
         Ok(Robot { description, tree })
     }
@@ -41,8 +44,8 @@ impl Robot {
         for &(j, x) in set {
             v[j] = x;
         }
-        // A cycle of followers is refused when the values are read
-        // (`joints`): here every follower has a leader's value.
+        // A cycle of followers is refused when the tree is read
+        // (`read::tree`): here every follower has a leader's value.
         let _ = self.tree.follow(&mut v);
         v
     }

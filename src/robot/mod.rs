@@ -15,6 +15,7 @@ pub mod kinematics;
 pub mod plausible;
 pub mod read;
 mod steps;
+pub mod weigh;
 
 use std::ops::Range;
 

@@ -57,6 +57,7 @@ mod report_keys;
 mod robot_body;
 mod robots;
 mod robots_hostile;
+mod robots_more;
 mod schema;
 mod search_rules;
 mod shell;

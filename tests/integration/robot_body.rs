@@ -696,16 +696,3 @@ fn each_sweep_sample_is_the_plain_report_at_its_joints() {
         assert_eq!(Value::Object(rest), plain, "at hinge = {x}");
     }
 }
-
-#[test]
-fn a_default_geom_size_is_refused_where_a_body_takes_its_inertia_from_geoms() {
-    let text = "<mujoco><default><geom size='0.3'/></default>\n<worldbody><body><geom size='1'/></body></worldbody></mujoco>\n";
-    let path = scratch_files("robot_body", "geom-default", &[("r.xml", text)]);
-    let out = massprop(&["report", path.to_str().unwrap()]);
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(
-        err.contains("r.xml:1:30: error: `size` of a `<default>` geom"),
-        "{err}"
-    );
-}

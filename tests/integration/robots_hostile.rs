@@ -771,6 +771,13 @@ const SNIPPETS: &[&str] = &[
     "<frame>",
     "xmlns:x=\"u\" ",
     "x:",
+    // Default classes, frames and followers (issue 34, second round).
+    "<default class=\"c\"><joint type=\"slide\" axis=\"1 0 0\"/><geom size=\"0.1\"/></default>",
+    " class=\"c\" ",
+    " childclass=\"nope\" ",
+    "<pose relative_to=\"base\">0 0 1 0 0 0</pose>",
+    "<frame name=\"f\" attached_to=\"f\"/>",
+    "<mimic joint=\"j\"><multiplier>2</multiplier></mimic>",
 ];
 
 #[derive(Clone, Debug)]

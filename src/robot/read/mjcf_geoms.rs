@@ -8,6 +8,7 @@
 //! its `fromto`), an ellipsoid's radii. SI.
 
 use super::geometry::{Amount, Geometry, Solid, positive};
+use super::mjcf_class::{Class, Classes};
 use super::orient::{Settings, orientation, quat_to_matrix, z_to_quat};
 use super::{Value, Xml, children, qname};
 use crate::diag::Diagnostic;
@@ -17,13 +18,9 @@ use roxmltree::Node;
 
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
-/// The geom attributes its weighing reads.
-const WEIGHED: [&str; 13] = [
-    "type",
-    "size",
-    "mass",
-    "density",
-    "group",
+/// The geom attributes that place it, read only where the geom writes
+/// them.
+const PLACED: [&str; 7] = [
     "pos",
     "fromto",
     "quat",
@@ -31,7 +28,6 @@ const WEIGHED: [&str; 13] = [
     "xyaxes",
     "zaxis",
     "euler",
-    "shellinertia",
 ];
 
 /// Per body of `d` (in its order), its geoms that count for inertia; none
@@ -51,13 +47,7 @@ pub(super) fn geoms(
             range = (lo, hi);
         }
     }
-    // NOTE: a `<default>` geom that sets what the weighing reads would
-    // change geoms massprop reads as written: refused, rather than a
-    // silently different body.
-    let defaulted = mujoco
-        .descendants()
-        .filter(|n| qname(*n) == "geom" && n.parent().is_some_and(|p| qname(p) == "default"))
-        .find_map(|g| WEIGHED.iter().find_map(|a| xml.attr(g, a)));
+    let classes = Classes::read(xml, mujoco)?;
     let mut out = Vec::with_capacity(d.links.len());
     for world in children(mujoco, "worldbody") {
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
@@ -78,22 +68,16 @@ pub(super) fn geoms(
                     )
                     .help("give the body an `<inertial>`"));
             }
-            if let (Some(v), Some(_)) = (&defaulted, children(body, "geom").next()) {
-                return Err(xml.error(
-                    v.range.clone(),
-                    format!("{} of a `<default>` geom: defaults are not read for inertia, and {owner} takes its inertia from its geoms", v.name),
-                )
-                .help("give the body an `<inertial>`, or write the attribute on each geom"));
-            }
             for g in children(body, "geom") {
-                let group = match xml.attr(g, "group") {
+                let class = classes.of(xml, g)?;
+                let group = match classes.attr(xml, g, class, "geom", "group") {
                     Some(v) => xml.number(&v, &owner)?,
                     None => 0.0,
                 };
                 if group < range.0 || group > range.1 {
                     continue;
                 }
-                items.push(geom(xml, g, &owner, &settings)?);
+                items.push(geom(xml, g, &owner, &settings, &classes, class)?);
             }
             out.push(items);
         }
@@ -102,8 +86,32 @@ pub(super) fn geoms(
 }
 
 /// One `<geom>`: its solid, pose and what it weighs.
-fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagnostic> {
-    if let Some(v) = xml.attr(g, "shellinertia")
+fn geom(
+    xml: &Xml,
+    g: Node,
+    owner: &str,
+    s: &Settings,
+    classes: &Classes,
+    class: Class,
+) -> Result<Geometry, Diagnostic> {
+    let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
+    // NOTE: a geom's placement from a default class is refused: MuJoCo
+    // keeps a default's alternative orientation (`euler`, …) even where
+    // the geom writes its own `quat`, a rule not worth copying for a value
+    // real files write on each geom.
+    if let Some(v) = PLACED
+        .iter()
+        .filter(|a| xml.attr(g, a).is_none())
+        .find_map(|a| classes.inherited(xml, class, "geom", a))
+    {
+        return Err(xml
+            .error(
+                v.range.clone(),
+                format!("{} of a default class's `<geom>`: a geom's placement is read only where the geom writes it ({owner} takes its inertia from its geoms)", v.name),
+            )
+            .help("write the placement on each geom, or give the body an `<inertial>`"));
+    }
+    if let Some(v) = attr("shellinertia")
         && v.text == "true"
     {
         return Err(xml.error(
@@ -111,9 +119,9 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             format!("`shellinertia` of a geom of {owner}: a shell's inertia is not read; expected a solid"),
         ));
     }
-    let kind = xml.attr(g, "type");
+    let kind = attr("type");
     let kind_text = kind.as_ref().map_or("sphere", |v| v.text.as_str());
-    let size = xml.attr(g, "size");
+    let size = attr("size");
     let sizes = match &size {
         Some(v) => xml.list(v, owner)?,
         None => Vec::new(),
@@ -134,7 +142,7 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             )),
         }
     };
-    let fromto = xml.attr(g, "fromto");
+    let fromto = attr("fromto");
     let ends = fromto
         .as_ref()
         .map(|v| xml.numbers::<6>(v, owner))
@@ -198,7 +206,7 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             r: quat_to_matrix(z_to_quat(&z)),
         },
         None => {
-            let p = match xml.attr(g, "pos") {
+            let p = match attr("pos") {
                 Some(v) => xml.numbers::<3>(&v, owner)?,
                 None => [0.0; 3],
             };
@@ -220,7 +228,7 @@ fn geom(xml: &Xml, g: Node, owner: &str, s: &Settings) -> Result<Geometry, Diagn
             Pose { p, r }
         }
     };
-    let amount = match (xml.attr(g, "mass"), xml.attr(g, "density")) {
+    let amount = match (attr("mass"), attr("density")) {
         (Some(m), _) => Amount::Mass(positive(xml, &m, xml.number(&m, owner)?, owner)?),
         (None, Some(d)) => Amount::Density(positive(xml, &d, xml.number(&d, owner)?, owner)?),
         (None, None) => {

@@ -11,10 +11,13 @@
 //! masses and moments are read as given.
 
 mod geometry;
+mod links;
 mod mjcf;
+mod mjcf_class;
 mod mjcf_geoms;
 mod orient;
 mod sdf;
+mod sdf_tree;
 mod tree;
 mod urdf;
 

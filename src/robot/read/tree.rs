@@ -7,10 +7,12 @@
 //! worlds, and poses relative to other frames; MJCF default classes that
 //! set a joint's or a body's placement; URDF joint types it does not know.
 
+use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::mjcf_class::Classes;
 use super::orient::{Settings, orientation, quat_to_matrix};
-use super::{Value, Xml, child, children, mjcf, proper, qname, quoted, rpy, sdf};
+use super::{Value, Xml, child, children, mjcf, proper, qname, quoted, rpy};
 use crate::diag::{Diagnostic, Source};
-use crate::robot::kinematics::{Follow, Joint, Motion, Node as TreeNode, Pose, Tree};
+use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
 use crate::robot::{Description, Dialect};
 use roxmltree::Node;
 use std::collections::HashMap;
@@ -22,11 +24,49 @@ pub fn tree(source: &Source, d: &Description) -> Result<Tree, Diagnostic> {
     let root = doc.root_element();
     let tree = match d.format {
         Dialect::Urdf => urdf(&xml, root, d)?,
-        Dialect::Sdf => sdformat(&xml, root, d)?,
+        Dialect::Sdf => super::sdf_tree::sdformat(&xml, root, d)?,
         Dialect::Mjcf => mujoco(&xml, root, d)?,
     };
     depth(&xml, &tree, d)?;
+    followers(&xml, &tree)?;
     Ok(tree)
+}
+
+/// Refuse followers in a cycle (`<mimic>`, joint equalities), at the first
+/// joint of the cycle, naming each: no configuration satisfies them.
+fn followers(xml: &Xml, t: &Tree) -> Result<(), Diagnostic> {
+    if t.follow(&mut t.zeros()).is_some() {
+        return Ok(());
+    }
+    for start in 0..t.joints.len() {
+        // Up the leaders from `start`: back at `start` within as many
+        // steps as there are joints, or never.
+        let mut chain = vec![start];
+        let mut at = start;
+        while let Some(l) = t.joints[at].follows.as_ref().and_then(|f| f.leader) {
+            if l == start {
+                let names: Vec<String> = chain
+                    .iter()
+                    .chain([&start])
+                    .map(|&j| quoted(&t.joints[j].name))
+                    .collect();
+                return Err(xml.error(
+                    super::start_tag(&xml.source.text, t.joints[start].range.clone()),
+                    format!(
+                        "joint {} follows itself through a cycle of followers (`<mimic>` or joint equalities): {}; no configuration satisfies them",
+                        quoted(&t.joints[start].name),
+                        names.join(" → ")
+                    ),
+                ));
+            }
+            if chain.len() > t.joints.len() {
+                break;
+            }
+            chain.push(l);
+            at = l;
+        }
+    }
+    unreachable!("`follow` fails only on a cycle of leaders")
 }
 
 /// Refuse a chain deeper than `MAX_CHAIN` links.
@@ -61,110 +101,6 @@ fn depth(xml: &Xml, t: &Tree, d: &Description) -> Result<(), Diagnostic> {
         }
     }
     Ok(())
-}
-
-/// A unit axis from `v` (three numbers, not all zero).
-fn axis(xml: &Xml, v: &Value, owner: &str) -> Result<[f64; 3], Diagnostic> {
-    let a = xml.numbers::<3>(v, owner)?;
-    let n = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-    if !(n > 0.0 && n.is_finite()) {
-        return Err(xml.error(
-            v.range.clone(),
-            format!("{} of {owner}: a zero axis gives no direction", v.name),
-        ));
-    }
-    Ok(a.map(|x| x / n))
-}
-
-/// Link names to indices (the first of a name), refusing a name twice.
-fn names<'d>(xml: &Xml, d: &'d Description) -> Result<HashMap<&'d str, usize>, Diagnostic> {
-    let mut out = HashMap::with_capacity(d.links.len());
-    for (i, l) in d.links.iter().enumerate() {
-        if out.insert(l.name.as_str(), i).is_some() {
-            return Err(xml
-                .error(
-                    super::start_tag(&xml.source.text, l.range.clone()),
-                    format!(
-                        "two links are named {}: the kinematic tree cannot be followed",
-                        quoted(&l.name)
-                    ),
-                )
-                .help("name each link once"));
-        }
-    }
-    Ok(out)
-}
-
-/// The link `name` names, or an error at `v` with the nearest name.
-fn link_named(
-    xml: &Xml,
-    names: &HashMap<&str, usize>,
-    v: &Value,
-    owner: &str,
-) -> Result<usize, Diagnostic> {
-    names.get(v.text.as_str()).copied().ok_or_else(|| {
-        let near = crate::units::suggest(&v.text, names.keys().copied())
-            .map(|s| format!("; did you mean {}?", quoted(s)))
-            .unwrap_or_default();
-        xml.error(
-            v.range.clone(),
-            format!(
-                "{} of {owner} names no link: {}{near}",
-                v.name,
-                quoted(&v.text)
-            ),
-        )
-    })
-}
-
-/// Each child given its parent once, and no cycle.
-fn set_parent(
-    xml: &Xml,
-    t: &mut Tree,
-    child: usize,
-    parent: usize,
-    at: &Value,
-    owner: &str,
-) -> Result<(), Diagnostic> {
-    if t.links[child].parent.is_some() {
-        return Err(xml.error(
-            at.range.clone(),
-            format!(
-                "{} of {owner}: the link already has a parent joint",
-                at.name
-            ),
-        ));
-    }
-    let mut p = Some(parent);
-    let mut hops = 0;
-    while let Some(k) = p {
-        if k == child || hops > t.links.len() {
-            return Err(xml.error(
-                at.range.clone(),
-                format!("{owner} closes a loop: the link is its own ancestor"),
-            ));
-        }
-        p = t.links[k].parent;
-        hops += 1;
-    }
-    t.links[child].parent = Some(parent);
-    Ok(())
-}
-
-fn unplaced(n: usize) -> Vec<TreeNode> {
-    vec![
-        TreeNode {
-            parent: None,
-            place: Pose::IDENTITY,
-            joints: Vec::new(),
-        };
-        n
-    ]
-}
-
-/// `(lower, upper)` if both are given.
-fn limits(lower: Option<f64>, upper: Option<f64>) -> Option<(f64, f64)> {
-    Some((lower?, upper?))
 }
 
 fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
@@ -283,214 +219,6 @@ fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
     Ok(t)
 }
 
-/// The joint `v` names, or an error with the nearest name.
-fn joint_named(xml: &Xml, t: &Tree, v: &Value, owner: &str) -> Result<usize, Diagnostic> {
-    t.joints
-        .iter()
-        .position(|j| j.name == v.text)
-        .ok_or_else(|| {
-            let near = crate::units::suggest(&v.text, t.joints.iter().map(|j| j.name.as_str()))
-                .map(|s| format!("; did you mean {}?", quoted(s)))
-                .unwrap_or_default();
-            xml.error(
-                v.range.clone(),
-                format!(
-                    "{} of {owner} names no joint: {}{near}",
-                    v.name,
-                    quoted(&v.text)
-                ),
-            )
-        })
-}
-
-/// A link's or joint's `<pose>` in the model frame (no `relative_to` but
-/// the one allowed, `allowed`).
-fn sdf_pose(xml: &Xml, node: Node, allowed: &str, owner: &str) -> Result<Pose, Diagnostic> {
-    let Some(p) = child(node, "pose") else {
-        return Ok(Pose::IDENTITY);
-    };
-    if let Some(v) = xml.attr(p, "relative_to")
-        && !v.text.is_empty()
-        && v.text != allowed
-    {
-        return Err(xml
-            .error(
-                v.range.clone(),
-                format!(
-                    "`relative_to` of the `<pose>` of {owner} names {}: the whole robot is composed from poses in their default frames only",
-                    quoted(&v.text)
-                ),
-            )
-            .help("give the pose in its default frame (a link's: the model's; a joint's: its child link's) and drop `relative_to`"));
-    }
-    let (p, r) = sdf::pose(xml, p, allowed, owner)?;
-    Ok(Pose {
-        p,
-        r: r.unwrap_or(Pose::IDENTITY.r),
-    })
-}
-
-fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tree, Diagnostic> {
-    let models: Vec<Node> = sdf_node
-        .children()
-        .filter(|c| qname(*c) == "model")
-        .collect();
-    let unsupported = sdf_node
-        .children()
-        .find(|c| qname(*c) == "world")
-        .or_else(|| models.get(1).copied())
-        .or_else(|| {
-            models.first().and_then(|m| {
-                m.children()
-                    .find(|c| qname(*c) == "model" || qname(*c) == "include")
-            })
-        });
-    if let Some(n) = unsupported {
-        return Err(xml
-            .error(
-                xml.tag(n),
-                format!(
-                    "`<{}>` here: the whole robot is composed from one `<model>` of links and joints, without worlds, nested models or includes",
-                    qname(n)
-                ),
-            )
-            .help("`check` reads every link of such a file; compose one model at a time"));
-    }
-    let Some(model) = models.first() else {
-        return Ok(Tree::default());
-    };
-    let names = names(xml, d)?;
-    let mut t = Tree {
-        links: unplaced(d.links.len()),
-        joints: Vec::new(),
-    };
-    // Each link's pose in the model frame.
-    let model_name = model.attribute("name").unwrap_or_default();
-    let mut world = vec![Pose::IDENTITY; d.links.len()];
-    for (i, l) in children(*model, "link").enumerate() {
-        let owner = format!("link {}", quoted(&d.links[i].name));
-        world[i] = sdf_pose(xml, l, model_name, &owner)?;
-    }
-    let old = sdf_node
-        .attribute("version")
-        .and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
-        .is_some_and(|minor| {
-            sdf_node
-                .attribute("version")
-                .is_some_and(|v| v.starts_with("1."))
-                && minor < 7
-        });
-    for j in children(*model, "joint") {
-        let name = xml.required(j, "name", "`<model>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kind = xml.required(j, "type", &owner)?;
-        let motion = xml.keyword(
-            &kind,
-            &owner,
-            &[
-                ("revolute", Motion::Revolute),
-                ("continuous", Motion::Revolute),
-                ("prismatic", Motion::Prismatic),
-                ("fixed", Motion::Fixed),
-                ("ball", Motion::Stays),
-            ],
-        )?;
-        let end = |tag: &str| -> Result<Value, Diagnostic> {
-            let e = child(j, tag).ok_or_else(|| {
-                xml.error(
-                    xml.tag(j),
-                    format!("{owner} is missing the required element `<{tag}>`"),
-                )
-            })?;
-            Ok(xml.text(e))
-        };
-        let (parent, kid) = (end("parent")?, end("child")?);
-        let c = link_named(xml, &names, &kid, &owner)?;
-        let p = if parent.text == "world" {
-            None
-        } else {
-            let p = link_named(xml, &names, &parent, &owner)?;
-            set_parent(xml, &mut t, c, p, &kid, &owner)?;
-            Some(p)
-        };
-        let joint_pose = sdf_pose(xml, j, &kid.text, &owner)?;
-        let ax = child(j, "axis");
-        let (axis_in_joint, lower, upper, in_model) = match ax {
-            Some(a) => {
-                let xyz = child(a, "xyz");
-                let v = xyz
-                    .map(|x| axis(xml, &xml.text(x), &owner))
-                    .transpose()?
-                    .unwrap_or([0.0, 0.0, 1.0]);
-                let expressed = xyz.and_then(|x| x.attribute("expressed_in"));
-                let parent_model = child(a, "use_parent_model_frame")
-                    .map(|u| sdf::flag(xml, &xml.text(u), &owner))
-                    .transpose()?
-                    .unwrap_or(false);
-                let in_model = match expressed {
-                    Some("__model__") => true,
-                    Some(e) if e == model_name => true,
-                    Some(e) if e.is_empty() || e == name.text => false,
-                    Some(e) => {
-                        let v = xml.attr(xyz.expect("has the attribute"), "expressed_in");
-                        let range = v.map_or(xml.tag(j), |v| v.range);
-                        return Err(xml.error(
-                            range,
-                            format!(
-                                "`expressed_in` of the axis of {owner} names {}: only the joint's frame and the model's are supported",
-                                quoted(e)
-                            ),
-                        ));
-                    }
-                    None => old && parent_model,
-                };
-                let lim = child(a, "limit");
-                let bound = |n: &str| -> Result<Option<f64>, Diagnostic> {
-                    lim.and_then(|l| child(l, n))
-                        .map(|e| xml.number(&xml.text(e), &owner))
-                        .transpose()
-                };
-                (v, bound("lower")?, bound("upper")?, in_model)
-            }
-            None => ([0.0, 0.0, 1.0], None, None, false),
-        };
-        // The axis in the child's frame: turned by the joint's pose, or
-        // from the model frame by the child's.
-        let axis = if in_model {
-            let r = world[c].r;
-            std::array::from_fn(|i| (0..3).map(|k| r[k][i] * axis_in_joint[k]).sum())
-        } else {
-            let r = joint_pose.r;
-            std::array::from_fn(|i| (0..3).map(|k| r[i][k] * axis_in_joint[k]).sum())
-        };
-        if p.is_some() {
-            t.links[c].joints.push(t.joints.len());
-        }
-        let limits = match (motion, kind.text.as_str()) {
-            (Motion::Revolute, "continuous") => None,
-            (Motion::Revolute | Motion::Prismatic, _) => limits(lower, upper),
-            _ => None,
-        };
-        t.joints.push(Joint {
-            name: name.text.clone(),
-            motion,
-            axis,
-            anchor: joint_pose.p,
-            zero: 0.0,
-            limits,
-            follows: None,
-            range: j.range(),
-        });
-    }
-    for i in 0..t.links.len() {
-        t.links[i].place = match t.links[i].parent {
-            Some(p) => world[p].inverse().then(&world[i]),
-            None => world[i],
-        };
-    }
-    Ok(t)
-}
-
 /// The pose `pos` and an orientation attribute give an MJCF element (a
 /// body or a frame).
 fn mj_pose(xml: &Xml, node: Node, owner: &str, s: &Settings) -> Result<Pose, Diagnostic> {
@@ -511,33 +239,10 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
     for c in children(root, "compiler") {
         mjcf::compiler(xml, c, &mut s)?;
     }
-    // Default classes may set a joint's type, axis, anchor, range or ref,
-    // or a body's frame: not read, so refused where they would apply.
-    for def in root.descendants().filter(|n| qname(*n) == "default") {
-        for n in def
-            .children()
-            .filter(|n| matches!(qname(*n), "joint" | "body"))
-        {
-            if let Some(a) = n.attributes().find(|a| {
-                matches!(
-                    a.name(),
-                    "type" | "axis" | "pos" | "ref" | "range" | "limited"
-                )
-            }) {
-                let v = xml.attr(n, a.name()).expect("the attribute is there");
-                return Err(xml
-                    .error(
-                        v.range,
-                        format!(
-                            "a default class sets `{}` of `<{}>`: the whole robot is composed only from values written on each element",
-                            a.name(),
-                            qname(n)
-                        ),
-                    )
-                    .help("write the value on each joint (MuJoCo's `mj_saveLastXML` writes a model with its defaults applied)"));
-            }
-        }
-    }
+    // Default classes give a joint the values it does not write itself
+    // (`mjcf_class`).
+    let classes = Classes::read(xml, root)?;
+    classes.check_names(xml, root)?;
     let radians = |a: f64| if s.degree { a.to_radians() } else { a };
     let mut t = Tree {
         links: unplaced(d.links.len()),
@@ -571,10 +276,12 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                     .attribute("name")
                     .map_or_else(|| format!("joint {}", t.joints.len() + 1), str::to_string);
                 let jowner = format!("joint {}", quoted(&name));
+                let class = classes.of(xml, j)?;
+                let attr = |n: &str| classes.attr(xml, j, class, "joint", n);
                 let motion = if qname(j) == "freejoint" {
                     Motion::Stays
                 } else {
-                    match xml.attr(j, "type") {
+                    match attr("type") {
                         Some(v) => xml.keyword(
                             &v,
                             &jowner,
@@ -590,25 +297,25 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 };
                 let angular = motion == Motion::Revolute;
                 let scale = |x: f64| if angular { radians(x) } else { x };
-                let axis = match xml.attr(j, "axis") {
+                let axis = match attr("axis") {
                     Some(v) => axis(xml, &v, &jowner)?,
                     None => [0.0, 0.0, 1.0],
                 };
-                let anchor = match xml.attr(j, "pos") {
+                let anchor = match attr("pos") {
                     Some(v) => xml.numbers::<3>(&v, &jowner)?,
                     None => [0.0; 3],
                 };
-                let zero = match xml.attr(j, "ref") {
+                let zero = match attr("ref") {
                     Some(v) if matches!(motion, Motion::Revolute | Motion::Prismatic) => {
                         scale(xml.number(&v, &jowner)?)
                     }
                     _ => 0.0,
                 };
-                let range = match xml.attr(j, "range") {
+                let range = match attr("range") {
                     Some(v) => Some(xml.numbers::<2>(&v, &jowner)?.map(scale)),
                     None => None,
                 };
-                let limited = match xml.attr(j, "limited") {
+                let limited = match attr("limited") {
                     Some(v) => xml.keyword(
                         &v,
                         &jowner,
@@ -633,7 +340,9 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
     for eq in children(root, "equality") {
         for e in children(eq, "joint") {
             let owner = "`<equality><joint>`".to_string();
-            if let Some(v) = xml.attr(e, "active")
+            let class = classes.of(xml, e)?;
+            let attr = |n: &str| classes.attr(xml, e, class, "equality", n);
+            if let Some(v) = attr("active")
                 && !xml.keyword(&v, &owner, &[("true", true), ("false", false)])?
             {
                 continue;
@@ -645,7 +354,7 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 .map(|v| joint_named(xml, &t, &v, &owner))
                 .transpose()?;
             let mut coef = [0.0, 1.0, 0.0, 0.0, 0.0];
-            if let Some(v) = xml.attr(e, "polycoef") {
+            if let Some(v) = attr("polycoef") {
                 let list = xml.list(&v, &owner)?;
                 if list.len() > 5 {
                     return Err(xml.error(

@@ -1,0 +1,171 @@
+//! MJCF default classes, as MuJoCo applies them (MuJoCo's XML reference,
+//! "default" and "Default settings"; `xml_native_reader.cc`): the
+//! `<default>` directly under `<mujoco>` is the class "main"; a
+//! `<default class="name">` inside another inherits every value of its
+//! parent's that it does not set itself. An element that admits a class
+//! (`<joint>`, `<geom>`, `<equality>`'s children, …) takes its own `class`,
+//! else the `childclass` of its nearest enclosing `<body>` or `<frame>`
+//! that has one, else "main"; each of its attributes is its own, else its
+//! class's (that class's `<joint>`, `<geom>`, … element), else the parent
+//! class's, up to "main", else MuJoCo's built-in default (the caller's).
+
+use super::{Value, Xml, qname, quoted};
+use crate::diag::Diagnostic;
+use roxmltree::Node;
+use std::collections::HashMap;
+
+/// The default classes of an MJCF file.
+pub(super) struct Classes<'a, 'i> {
+    /// Each class: its `<default>` element and its parent class.
+    classes: Vec<(Node<'a, 'i>, Option<usize>)>,
+    by_name: HashMap<String, usize>,
+}
+
+/// The class an element takes: an index into `Classes`, or none (no
+/// `<default>` at all).
+pub(super) type Class = Option<usize>;
+
+impl<'a, 'i> Classes<'a, 'i> {
+    /// The classes under `mujoco` (the root element), a name given twice
+    /// refused at its second `class`.
+    pub fn read(xml: &Xml, mujoco: Node<'a, 'i>) -> Result<Classes<'a, 'i>, Diagnostic> {
+        let mut out = Classes {
+            classes: Vec::new(),
+            by_name: HashMap::new(),
+        };
+        // Depth first, parents before children, with an explicit stack (a
+        // nesting as deep as the parser allows must not overflow ours).
+        let mut stack: Vec<(Node, Option<usize>)> = mujoco
+            .children()
+            .filter(|c| qname(*c) == "default")
+            .map(|d| (d, None))
+            .collect();
+        stack.reverse();
+        while let Some((d, parent)) = stack.pop() {
+            let name = match (xml.attr(d, "class"), parent) {
+                (Some(v), _) => v,
+                (None, None) => Value {
+                    name: "`class`".to_string(),
+                    text: "main".to_string(),
+                    range: xml.tag(d),
+                    exact: false,
+                },
+                (None, Some(_)) => {
+                    return Err(xml.error(
+                        xml.tag(d),
+                        "a `<default>` inside another needs a `class` name (MuJoCo requires one)",
+                    ));
+                }
+            };
+            let k = out.classes.len();
+            if out.by_name.insert(name.text.clone(), k).is_some() {
+                return Err(xml.error(
+                    name.range.clone(),
+                    format!(
+                        "`class` {}: two default classes have this name (MuJoCo refuses a repeated class name)",
+                        quoted(&name.text)
+                    ),
+                ));
+            }
+            out.classes.push((d, parent));
+            let mut kids: Vec<_> = d
+                .children()
+                .filter(|c| qname(*c) == "default")
+                .map(|c| (c, Some(k)))
+                .collect();
+            kids.reverse();
+            stack.extend(kids);
+        }
+        Ok(out)
+    }
+
+    /// The class `v` (a `class` or `childclass` attribute) names, or an
+    /// error at it with the nearest name.
+    fn named(&self, xml: &Xml, v: &Value) -> Result<usize, Diagnostic> {
+        self.by_name.get(&v.text).copied().ok_or_else(|| {
+            let near = crate::units::suggest(&v.text, self.by_name.keys().map(String::as_str))
+                .map(|s| format!("; did you mean {}?", quoted(s)))
+                .unwrap_or_default();
+            xml.error(
+                v.range.clone(),
+                format!(
+                    "{} names no default class: {}{near}",
+                    v.name,
+                    quoted(&v.text)
+                ),
+            )
+        })
+    }
+
+    /// The class `node` takes: its own `class`, else the nearest enclosing
+    /// `childclass`, else "main" (where there is a `<default>`).
+    pub fn of(&self, xml: &Xml, node: Node) -> Result<Class, Diagnostic> {
+        if let Some(v) = xml.attr(node, "class") {
+            return self.named(xml, &v).map(Some);
+        }
+        for up in node.ancestors().skip(1) {
+            if matches!(qname(up), "body" | "frame")
+                && let Some(v) = xml.attr(up, "childclass")
+            {
+                return self.named(xml, &v).map(Some);
+            }
+        }
+        Ok(self.by_name.get("main").copied())
+    }
+
+    /// Every `class` and `childclass` in the file names a class: checked
+    /// once, so that a misspelt name is refused even on an element whose
+    /// values are not read.
+    pub fn check_names(&self, xml: &Xml, mujoco: Node) -> Result<(), Diagnostic> {
+        for n in mujoco.descendants().filter(|n| n.is_element()) {
+            if qname(n) == "default" {
+                continue;
+            }
+            for a in ["class", "childclass"] {
+                if let Some(v) = xml.attr(n, a) {
+                    self.named(xml, &v)?;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The attribute `name` of `node`, a `<kind>` element of class `class`:
+    /// its own, else the nearest class's up the chain that sets it.
+    pub fn attr(
+        &self,
+        xml: &Xml,
+        node: Node,
+        class: Class,
+        kind: &str,
+        name: &str,
+    ) -> Option<Value> {
+        xml.attr(node, name)
+            .or_else(|| self.inherited(xml, class, kind, name))
+    }
+
+    /// The value class `class` (or a class it inherits from) gives the
+    /// attribute `name` of a `<kind>` element.
+    pub fn inherited(&self, xml: &Xml, class: Class, kind: &str, name: &str) -> Option<Value> {
+        let mut c = class;
+        let mut hops = 0;
+        while let Some(k) = c {
+            let (d, parent) = self.classes[k];
+            if let Some(v) = d
+                .children()
+                .filter(|e| qname(*e) == kind)
+                .find_map(|e| xml.attr(e, name))
+            {
+                return Some(v);
+            }
+            c = parent;
+            // Parents come before their children: the chain ends.
+            hops += 1;
+            debug_assert!(
+                hops <= self.classes.len(),
+                "a class's parent is read before it"
+            );
+        }
+        None
+    }
+}

@@ -1,0 +1,221 @@
+"""The whole MJCF robot, with default classes, against MuJoCo itself
+(issue 34, second round).
+
+Random MJCF trees whose joints and geoms take their values from default
+classes (the main class, nested classes, `childclass` on bodies, `class`
+on joints and geoms: joint type, axis, pos, ref, range, limited; geom
+type, size, density, mass, group), some bodies weighed from their geoms
+(`inertiafromgeom`), some with an `<inertial>`. For each, at random joint
+values: MuJoCo's `mj_kinematics` and `mj_comPos` at that `qpos`, and the
+world body's subtree mass, centre of mass and inertia about it formed from
+every body's `body_mass`, `xipos`, `ximat` and `body_inertia`, against
+`massprop report --format json --joints …` of the same file, and against a
+part file that includes it with the same `joints`.
+
+Usage: python mjcf_classes_oracle.py --massprop BIN [--cases N]. Exit 1 on
+any disagreement beyond 1e-9 relative.
+"""
+
+import argparse
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+
+import mujoco
+import numpy as np
+
+RTOL = 1e-9
+
+
+def nums(rng, n, lo, hi):
+    return " ".join(repr(rng.uniform(lo, hi)) for _ in range(n))
+
+
+def joint_defaults(rng):
+    attrs = {}
+    if rng.random() < 0.5:
+        attrs["type"] = rng.choice(["hinge", "slide"])
+    if rng.random() < 0.5:
+        attrs["axis"] = nums(rng, 3, -1, 1)
+    if rng.random() < 0.4:
+        attrs["pos"] = nums(rng, 3, -0.2, 0.2)
+    if rng.random() < 0.4:
+        attrs["ref"] = repr(rng.uniform(-20, 20))
+    if rng.random() < 0.3:
+        attrs["range"] = "-30 40"
+    return attrs
+
+
+def geom_defaults(rng):
+    attrs = {}
+    if rng.random() < 0.5:
+        attrs["type"] = rng.choice(["box", "sphere", "capsule", "cylinder", "ellipsoid"])
+    if rng.random() < 0.6:
+        attrs["size"] = nums(rng, 3, 0.02, 0.2)
+    r = rng.random()
+    if r < 0.3:
+        attrs["density"] = repr(rng.uniform(200, 5000))
+    elif r < 0.45:
+        attrs["mass"] = repr(rng.uniform(0.1, 3))
+    if rng.random() < 0.2:
+        attrs["group"] = "6"
+    return attrs
+
+
+def element(tag, attrs):
+    return f"<{tag} " + " ".join(f'{k}="{v}"' for k, v in attrs.items()) + "/>"
+
+
+def defaults(rng):
+    """A main class and three more (b inside a), each setting some joint
+    and geom values."""
+
+    def block(name, inner=""):
+        head = "<default>" if name is None else f'<default class="{name}">'
+        j, g = joint_defaults(rng), geom_defaults(rng)
+        body = (element("joint", j) if j else "") + (element("geom", g) if g else "")
+        return head + body + inner + "</default>"
+
+    return block(None, block("a", block("b")) + block("c"))
+
+
+CLASSES = ["a", "b", "c"]
+
+
+def body_xml(rng, depth, counter):
+    counter[0] += 1
+    k = counter[0]
+    attrs = {"name": f"b{k}", "pos": nums(rng, 3, -0.5, 0.5)}
+    if rng.random() < 0.5:
+        attrs["euler"] = nums(rng, 3, -90, 90)
+    if rng.random() < 0.3:
+        attrs["childclass"] = rng.choice(CLASSES)
+    inner = []
+    for j in range(rng.randint(0, 2)):
+        ja = {"name": f"j{k}_{j}"}
+        if rng.random() < 0.4:
+            ja["class"] = rng.choice(CLASSES)
+        if rng.random() < 0.2:
+            ja["type"] = rng.choice(["hinge", "slide"])
+        inner.append(element("joint", ja))
+    if rng.random() < 0.3:
+        inner.append(
+            '<inertial pos="%s" mass="%r" diaginertia="0.02 0.03 0.04"/>'
+            % (nums(rng, 3, -0.1, 0.1), rng.uniform(0.5, 3))
+        )
+    for g in range(rng.randint(1, 2)):
+        ga = {"size": nums(rng, 3, 0.02, 0.2), "pos": nums(rng, 3, -0.1, 0.1)}
+        if g == 0:
+            ga["group"] = "0"
+        if rng.random() < 0.5:
+            ga["class"] = rng.choice(CLASSES)
+        if rng.random() < 0.3:
+            del ga["size"]
+            ga["type"] = "box"
+            ga["size"] = nums(rng, 3, 0.02, 0.2)
+        if rng.random() < 0.3:
+            ga["quat"] = nums(rng, 4, -1, 1)
+        inner.append(element("geom", ga))
+    if depth > 0:
+        for _ in range(rng.randint(1, 2)):
+            inner.append(body_xml(rng, depth - 1, counter))
+    return f"<body {' '.join(f'{a}={chr(34)}{v}{chr(34)}' for a, v in attrs.items())}>" + "".join(inner) + "</body>"
+
+
+def robot(rng):
+    counter = [0]
+    return (
+        '<mujoco model="classes">'
+        + defaults(rng)
+        + "<worldbody>"
+        + body_xml(rng, 2, counter)
+        + "</worldbody></mujoco>"
+    )
+
+
+def mujoco_whole(model, data):
+    """Mass, centre of mass and inertia about it of every body but the
+    world, in the world frame."""
+    mass, first, inertia = 0.0, np.zeros(3), np.zeros((3, 3))
+    for b in range(1, model.nbody):
+        m = model.body_mass[b]
+        mass += m
+        first += m * data.xipos[b]
+    com = first / mass
+    for b in range(1, model.nbody):
+        m = model.body_mass[b]
+        r = data.ximat[b].reshape(3, 3)
+        d = data.xipos[b] - com
+        inertia += r @ np.diag(model.body_inertia[b]) @ r.T + m * (d @ d * np.eye(3) - np.outer(d, d))
+    return mass, com, inertia
+
+
+def massprop_json(binary, args):
+    out = subprocess.run([binary, "report", *args, "--format", "json"], capture_output=True, text=True)
+    if out.returncode != 0:
+        raise RuntimeError(f"massprop report {args}: {out.stderr}")
+    return json.loads(out.stdout)
+
+
+def agree(name, got, want):
+    scale = max(1e-300, float(np.max(np.abs(want))))
+    if np.max(np.abs(np.asarray(got) - np.asarray(want))) > RTOL * scale:
+        print(f"{name}: massprop {got} MuJoCo {want}", file=sys.stderr)
+        return False
+    return True
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--massprop", required=True)
+    parser.add_argument("--cases", type=int, default=30)
+    parser.add_argument("--seed", type=int, default=34)
+    args = parser.parse_args()
+    args.massprop = os.path.abspath(args.massprop)
+    rng = random.Random(args.seed)
+    bad = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        # MuJoCo writes its warnings to MUJOCO_LOG.TXT in the working
+        # directory: keep it out of the repository.
+        os.chdir(tmp)
+        for case in range(args.cases):
+            text = robot(rng)
+            path = os.path.join(tmp, f"c{case}.xml")
+            with open(path, "w") as f:
+                f.write(text)
+            model = mujoco.MjModel.from_xml_path(path)
+            data = mujoco.MjData(model)
+            data.qpos[:] = model.qpos0
+            values = {}
+            for j in range(model.njnt):
+                if model.jnt_type[j] in (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE):
+                    x = rng.uniform(-1.0, 1.0)
+                    data.qpos[model.jnt_qposadr[j]] = x
+                    values[mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_JOINT, j)] = x
+            mujoco.mj_kinematics(model, data)
+            mujoco.mj_comPos(model, data)
+            mass, com, inertia = mujoco_whole(model, data)
+            joints = ", ".join(f"{k}={v!r}" for k, v in values.items())
+            alone = massprop_json(args.massprop, [path, "--joints", joints])
+            part = os.path.join(tmp, f"c{case}.toml")
+            with open(part, "w") as f:
+                table = ", ".join(f"{k} = {v!r}" for k, v in values.items())
+                f.write(f'[[part]]\ninclude = "c{case}.xml"\njoints = {{ {table} }}\n')
+            included = massprop_json(args.massprop, [part])
+            for label, got in (("report", alone), ("include", included)):
+                ok = agree(f"case {case} {label} mass", [got["mass"]], [mass])
+                ok &= agree(f"case {case} {label} centre", got["center_of_mass"], com)
+                ok &= agree(f"case {case} {label} inertia", got["inertia_com"], inertia)
+                if not ok:
+                    bad += 1
+                    print(text, file=sys.stderr)
+    print(f"{args.cases} MJCF robots with default classes: {bad} disagreements")
+    sys.exit(1 if bad else 0)
+
+
+if __name__ == "__main__":
+    main()
