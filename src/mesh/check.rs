@@ -139,9 +139,7 @@ impl Mesh {
     pub fn first_degenerate(&self) -> Option<MeshError> {
         // NOTE: each thread finds the first in its share, the least wins.
         let n = self.faces.len();
-        let threads = std::thread::available_parallelism()
-            .map_or(1, |t| t.get())
-            .clamp(1, n.div_ceil(1 << 16).max(1));
+        let threads = super::threads_for(n, 1 << 16);
         let piece = n.div_ceil(threads).max(1);
         let first = |from: usize| {
             (from..(from + piece).min(n)).find_map(|i| self.degenerate(i).map(|e| (i, e)))
@@ -226,8 +224,7 @@ impl Mesh {
     /// sum never exceeds: its terms pass through at most CHUNK + n/CHUNK ≤ n
     /// additions.
     pub fn sums<T: Real + Send>(&self, mode: Mode, p: [f64; 3]) -> Sums<T> {
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-        self.sums_on(mode, p, threads)
+        self.sums_on(mode, p, super::threads_for(self.faces.len(), CHUNK))
     }
 
     /// `sums` on at most `threads` threads.

@@ -322,9 +322,7 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
     let n = mesh.faces.len();
     let mut boxes = vec![Aabb::empty(); n];
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
     std::thread::scope(|scope| {
         for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
@@ -360,9 +358,7 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
     // thread (the shells are shared out in ranges, each thread reading
     // every triangle and keeping its own): the same sums on any number of
     // cores. Only the volume is summed (`Sums::add_volume`).
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, count.div_ceil(1024).max(1));
+    let threads = super::threads_for(count, 1024);
     let range = |t: usize| t * count / threads..(t + 1) * count / threads;
     let sum = |t: usize| {
         let mine = range(t);
@@ -526,9 +522,7 @@ fn per_shell<R: Send>(
 ) -> Vec<R> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     const BLOCK: usize = 256;
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, count.div_ceil(BLOCK).max(1));
+    let threads = super::threads_for(count, BLOCK);
     let next = AtomicUsize::new(0);
     // Each thread's marks allocated here, on the calling thread (memory a
     // thread allocates stays in its own arena once freed).

@@ -39,6 +39,7 @@ mod leftovers;
 mod library;
 mod limits;
 mod mesh_classes;
+mod mesh_threads;
 mod meshes;
 mod new_shapes;
 mod oracle;
