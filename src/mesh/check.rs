@@ -51,6 +51,14 @@ impl Mesh {
         }
     }
 
+    /// `edges`, taken out of the mesh (made first if they are not yet).
+    pub fn take_edges(&mut self) -> Vec<Edge> {
+        self.edges();
+        self.edges
+            .take()
+            .expect("invariant: the edges were made just now")
+    }
+
     /// Let go of `edges` (48 bytes a triangle) once the checks are done.
     pub fn forget_edges(&mut self) {
         self.edges.take();
@@ -285,7 +293,18 @@ impl Mesh {
     /// `integrate`, its sums' bounds widened by `moved` (`near`).
     pub fn integrate_moved<T: Real + Send>(&self, mode: Mode, moved: [f64; 10]) -> MeshBody {
         let p = self.reference();
-        let mut sums = self.sums::<T>(mode, p);
+        self.body_of(mode, p, self.sums::<T>(mode, p), moved)
+    }
+
+    /// The body of the sums about `p` (`reference`), their bounds widened
+    /// by `moved`.
+    pub fn body_of<T: Real>(
+        &self,
+        mode: Mode,
+        p: [f64; 3],
+        mut sums: Sums<T>,
+        moved: [f64; 10],
+    ) -> MeshBody {
         sums.moved = moved;
         let (measure, g, second, bound) = finish(mode, &sums);
         let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());

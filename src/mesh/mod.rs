@@ -209,11 +209,33 @@ impl MeshBody {
             ));
         }
         notes.extend(mesh.check(mode)?);
-        if mode == Mode::Solid {
-            shells::check(&mut mesh)?;
-        }
-        mesh.forget_edges();
-        let body = mesh.integrate_moved::<DD>(mode, moved);
+        let p = mesh.reference();
+        let sums = if mode == Mode::Solid {
+            // NOTE: the integrals are summed on a thread of their own while
+            // the shells are checked, which they do not depend on (the
+            // triangles are final once `check` has left out those of zero
+            // area): its threads fill the cores the checks' one-thread
+            // steps leave idle (the shells' union, the scaled corners, the
+            // tree's top split, a single shell's volume). The same sums,
+            // chunk by chunk, as after the checks; a refusal by the
+            // checks still comes first, its sums thrown away.
+            let edges = mesh.take_edges();
+            let mesh = &mesh;
+            let (checked, sums) = std::thread::scope(|scope| {
+                let sums = scope.spawn(move || mesh.sums::<DD>(mode, p));
+                let checked = shells::check_with(mesh, edges);
+                let sums = sums
+                    .join()
+                    .expect("invariant: summing a mesh's terms does not panic");
+                (checked, sums)
+            });
+            checked?;
+            sums
+        } else {
+            mesh.forget_edges();
+            mesh.sums::<DD>(mode, p)
+        };
+        let body = mesh.body_of(mode, p, sums, moved);
         if weld.is_some() && !(body.bound.measure <= body.measure.hi.abs() / 2.0) {
             return Err(MeshError::new(
                 At::Whole,
