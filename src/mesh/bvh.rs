@@ -70,7 +70,8 @@ pub struct Node {
 
 impl Bvh {
     pub fn build(boxes: &[Aabb], items: Vec<u32>) -> Bvh {
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        // Few items are not worth a thread.
+        let threads = super::threads_for(items.len(), 1 << 14);
         Bvh::build_on(boxes, items, threads)
     }
 
@@ -86,7 +87,7 @@ impl Bvh {
     pub fn build_on(boxes: &[Aabb], mut items: Vec<u32>, threads: usize) -> Bvh {
         // Enough levels for a subtree per thread.
         let top = threads.next_power_of_two().trailing_zeros() as usize;
-        let depth = if threads > 1 && items.len() > 1 << 14 {
+        let depth = if threads > 1 && items.len() > LEAF {
             top
         } else {
             usize::MAX

@@ -51,6 +51,14 @@ impl Mesh {
         }
     }
 
+    /// `edges`, taken out of the mesh (made first if they are not yet).
+    pub fn take_edges(&mut self) -> Vec<Edge> {
+        self.edges();
+        self.edges
+            .take()
+            .expect("invariant: the edges were made just now")
+    }
+
     /// Let go of `edges` (48 bytes a triangle) once the checks are done.
     pub fn forget_edges(&mut self) {
         self.edges.take();
@@ -139,9 +147,7 @@ impl Mesh {
     pub fn first_degenerate(&self) -> Option<MeshError> {
         // NOTE: each thread finds the first in its share, the least wins.
         let n = self.faces.len();
-        let threads = std::thread::available_parallelism()
-            .map_or(1, |t| t.get())
-            .clamp(1, n.div_ceil(1 << 16).max(1));
+        let threads = super::threads_for(n, 1 << 16);
         let piece = n.div_ceil(threads).max(1);
         let first = |from: usize| {
             (from..(from + piece).min(n)).find_map(|i| self.degenerate(i).map(|e| (i, e)))
@@ -226,8 +232,7 @@ impl Mesh {
     /// sum never exceeds: its terms pass through at most CHUNK + n/CHUNK ≤ n
     /// additions.
     pub fn sums<T: Real + Send>(&self, mode: Mode, p: [f64; 3]) -> Sums<T> {
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-        self.sums_on(mode, p, threads)
+        self.sums_on(mode, p, super::threads_for(self.faces.len(), CHUNK))
     }
 
     /// `sums` on at most `threads` threads.
@@ -288,7 +293,18 @@ impl Mesh {
     /// `integrate`, its sums' bounds widened by `moved` (`near`).
     pub fn integrate_moved<T: Real + Send>(&self, mode: Mode, moved: [f64; 10]) -> MeshBody {
         let p = self.reference();
-        let mut sums = self.sums::<T>(mode, p);
+        self.body_of(mode, p, self.sums::<T>(mode, p), moved)
+    }
+
+    /// The body of the sums about `p` (`reference`), their bounds widened
+    /// by `moved`.
+    pub fn body_of<T: Real>(
+        &self,
+        mode: Mode,
+        p: [f64; 3],
+        mut sums: Sums<T>,
+        moved: [f64; 10],
+    ) -> MeshBody {
         sums.moved = moved;
         let (measure, g, second, bound) = finish(mode, &sums);
         let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());

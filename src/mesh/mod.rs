@@ -38,6 +38,38 @@ pub mod weld;
 
 pub use read::FileType;
 
+use std::cell::Cell;
+
+thread_local! {
+    /// Threads forced for this thread's meshes (`with_threads`).
+    static FORCED: Cell<Option<usize>> = const { Cell::new(None) };
+}
+
+/// Runs `f` with every stage of the meshes this thread loads on
+/// `threads` threads, however few their items: for the tests, which hold
+/// the answers on 1, 2 and 3 threads equal bit for bit on small meshes.
+/// The answers never depend on it (the work is cut into pieces fixed by
+/// the mesh alone, and merged in a fixed order), only the speed.
+#[doc(hidden)]
+pub fn with_threads<T>(threads: usize, f: impl FnOnce() -> T) -> T {
+    let before = FORCED.with(|c| c.replace(Some(threads.max(1))));
+    let out = f();
+    FORCED.with(|c| c.set(before));
+    out
+}
+
+/// The threads a stage of `items` items runs on: one per core, each with
+/// at least `grain` items (few items are not worth a thread), or as
+/// `with_threads` forces (at most one a item).
+pub(crate) fn threads_for(items: usize, grain: usize) -> usize {
+    match FORCED.with(Cell::get) {
+        Some(n) => n.clamp(1, items.max(1)),
+        None => std::thread::available_parallelism()
+            .map_or(1, |t| t.get())
+            .clamp(1, items.div_ceil(grain.max(1)).max(1)),
+    }
+}
+
 use crate::numeric::{DD, M3, Real};
 
 /// The most triangles a mesh may have: 72 bytes of corners each while it
@@ -177,11 +209,33 @@ impl MeshBody {
             ));
         }
         notes.extend(mesh.check(mode)?);
-        if mode == Mode::Solid {
-            shells::check(&mut mesh)?;
-        }
-        mesh.forget_edges();
-        let body = mesh.integrate_moved::<DD>(mode, moved);
+        let p = mesh.reference();
+        let sums = if mode == Mode::Solid {
+            // NOTE: the integrals are summed on a thread of their own while
+            // the shells are checked, which they do not depend on (the
+            // triangles are final once `check` has left out those of zero
+            // area): its threads fill the cores the checks' one-thread
+            // steps leave idle (the shells' union, the scaled corners, the
+            // tree's top split, a single shell's volume). The same sums,
+            // chunk by chunk, as after the checks; a refusal by the
+            // checks still comes first, its sums thrown away.
+            let edges = mesh.take_edges();
+            let mesh = &mesh;
+            let (checked, sums) = std::thread::scope(|scope| {
+                let sums = scope.spawn(move || mesh.sums::<DD>(mode, p));
+                let checked = shells::check_with(mesh, edges);
+                let sums = sums
+                    .join()
+                    .expect("invariant: summing a mesh's terms does not panic");
+                (checked, sums)
+            });
+            checked?;
+            sums
+        } else {
+            mesh.forget_edges();
+            mesh.sums::<DD>(mode, p)
+        };
+        let body = mesh.body_of(mode, p, sums, moved);
         if weld.is_some() && !(body.bound.measure <= body.measure.hi.abs() / 2.0) {
             return Err(MeshError::new(
                 At::Whole,

@@ -143,9 +143,7 @@ fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     // the corners (allocated here, zeroed lazily: the threads' first
     // writes fault its pages in, in parallel too).
     let mut points = vec![[0.0f64; 3]; 3 * n];
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
     let records = &bytes[84..];
     std::thread::scope(|scope| {

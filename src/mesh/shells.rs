@@ -38,11 +38,18 @@ const NONE: u32 = u32::MAX;
 /// Returns the number of shells. Lets go of the mesh's edges once the
 /// shells are found.
 pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
+    let edges = mesh.take_edges();
+    check_with(mesh, edges)
+}
+
+/// `check`, given the mesh's edges (`Mesh::take_edges`), which it lets go
+/// of once the shells are found: the mesh itself is only read, so that
+/// its integrals can be summed meanwhile (`MeshBody::load_with`).
+pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
-    let live = cancel_twins(mesh);
-    let shell = components(mesh, &live);
-    mesh.forget_edges();
-    let mesh = &*mesh;
+    let live = cancel_twins(mesh, &edges);
+    let shell = components(mesh, &live, &edges);
+    drop(edges);
     let count = shell
         .iter()
         .filter(|s| **s != NONE)
@@ -171,7 +178,7 @@ pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
 /// only triangles that meet another with the same corners in an edge's run
 /// can have a twin: those few are paired as the whole list once was
 /// (sorted by corners, winding and number), the rest pass at once.
-fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
+fn cancel_twins(mesh: &Mesh, edges: &[Edge]) -> Vec<bool> {
     let faces = &mesh.faces;
     let mut maybe = vec![false; faces.len()];
     let same = |x: u32, y: u32| {
@@ -180,7 +187,7 @@ fn cancel_twins(mesh: &Mesh) -> Vec<bool> {
         b.sort_unstable();
         a == b
     };
-    for run in mesh.edges().chunk_by(|x, y| x.0 == y.0) {
+    for run in edges.chunk_by(|x, y| x.0 == y.0) {
         if run.len() > 16 {
             // A crowded edge: all its triangles take the sort.
             run.iter().for_each(|e| maybe[e.1 as usize] = true);
@@ -241,20 +248,15 @@ fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
 
 /// Each live triangle's shell (numbered by their first triangles, in the
 /// file's order), `NONE` for those set aside.
-fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
+fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
     let n = mesh.faces.len();
     // The live triangles' edges, in the sorted order (the whole list when
     // every triangle is live, as in nearly every mesh).
     let kept: Vec<Edge>;
     let edges: &[Edge] = if live.iter().all(|l| *l) {
-        mesh.edges()
+        all
     } else {
-        kept = mesh
-            .edges()
-            .iter()
-            .filter(|e| live[e.1 as usize])
-            .copied()
-            .collect();
+        kept = all.iter().filter(|e| live[e.1 as usize]).copied().collect();
         &kept
     };
     let mut parent: Vec<u32> = (0..n as u32).collect();
@@ -322,9 +324,7 @@ fn components(mesh: &Mesh, live: &[bool]) -> Vec<u32> {
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
     let n = mesh.faces.len();
     let mut boxes = vec![Aabb::empty(); n];
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, n.div_ceil(1 << 16).max(1));
+    let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
     std::thread::scope(|scope| {
         for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
@@ -360,9 +360,7 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
     // thread (the shells are shared out in ranges, each thread reading
     // every triangle and keeping its own): the same sums on any number of
     // cores. Only the volume is summed (`Sums::add_volume`).
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, count.div_ceil(1024).max(1));
+    let threads = super::threads_for(count, 1024);
     let range = |t: usize| t * count / threads..(t + 1) * count / threads;
     let sum = |t: usize| {
         let mine = range(t);
@@ -526,9 +524,7 @@ fn per_shell<R: Send>(
 ) -> Vec<R> {
     use std::sync::atomic::{AtomicUsize, Ordering};
     const BLOCK: usize = 256;
-    let threads = std::thread::available_parallelism()
-        .map_or(1, |t| t.get())
-        .clamp(1, count.div_ceil(BLOCK).max(1));
+    let threads = super::threads_for(count, BLOCK);
     let next = AtomicUsize::new(0);
     // Each thread's marks allocated here, on the calling thread (memory a
     // thread allocates stays in its own arena once freed).

@@ -100,7 +100,7 @@ impl Mesh {
     /// +0 equal). Refuses a non-finite coordinate (the first corner, in
     /// the triangles' order, that has one).
     pub fn weld(t: Triangles) -> Result<Mesh, MeshError> {
-        let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+        let threads = super::threads_for(t.points.len(), 1 << 16);
         Mesh::weld_on(t, threads)
     }
 
@@ -110,8 +110,7 @@ impl Mesh {
             return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
         }
         let n = t.points.len();
-        // Few points are not worth a thread.
-        let threads = threads.clamp(1, n.div_ceil(1 << 16).max(1));
+        let threads = threads.clamp(1, n.max(1));
         let rep: Vec<AtomicU32> = (0..n as u32).map(AtomicU32::new).collect();
         let (points, rep_ref) = (&t.points, &rep);
         // NOTE: every thread hashes every point (a few nanoseconds each)

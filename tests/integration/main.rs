@@ -41,6 +41,7 @@ mod leftovers;
 mod library;
 mod limits;
 mod mesh_classes;
+mod mesh_threads;
 mod meshes;
 mod motion_sigma;
 mod new_shapes;

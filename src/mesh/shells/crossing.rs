@@ -23,7 +23,7 @@ pub(super) fn first_crossing(
     boxes: &[Aabb],
     bvh: &Bvh,
 ) -> Option<(usize, usize)> {
-    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    let threads = super::super::threads_for(bvh.items.len(), 1);
     // Tasks of about 1/64 of a thread's share: enough for the threads to
     // even out, few enough that cutting them costs nothing.
     let size = (bvh.items.len() / (64 * threads)).max(256);
