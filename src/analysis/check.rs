@@ -135,7 +135,7 @@ impl FileResult {
 /// fails, why.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Validity {
-    pub name: &'static str,
+    pub name: std::borrow::Cow<'static, str>,
     pub failure: Option<String>,
 }
 
@@ -288,8 +288,8 @@ pub fn budget_limit(source: &Source, s: &Summary, limit: &Limit) -> CheckResult 
 pub fn validity(s: &Summary) -> Vec<Validity> {
     let [i1, i2, i3] = s.principal_moments;
     let tol = VALIDITY_RTOL * i3.abs();
-    let check = |name, fails: bool, message: &dyn Fn() -> String| Validity {
-        name,
+    let check = |name: &'static str, fails: bool, message: &dyn Fn() -> String| Validity {
+        name: name.into(),
         failure: fails.then(message),
     };
     vec![
@@ -310,6 +310,19 @@ pub fn validity(s: &Summary) -> Vec<Validity> {
     ]
 }
 
+/// The base body against `[envelope]`, as a validity check named
+/// `envelope: base`.
+fn envelope(loaded: &Loaded) -> Vec<Validity> {
+    let (Some(env), Some(p)) = (&loaded.model.envelope, &loaded.summary.envelope) else {
+        return Vec::new();
+    };
+    let u = crate::output::format::DisplayUnits::of(loaded.model.units);
+    vec![Validity {
+        name: "envelope: base".into(),
+        failure: super::envelope::point_failure(env, "base", p, &u),
+    }]
+}
+
 /// The messages of the validity checks that fail.
 pub fn validity_failures(s: &Summary) -> Vec<String> {
     validity(s).into_iter().filter_map(|v| v.failure).collect()
@@ -317,7 +330,8 @@ pub fn validity_failures(s: &Summary) -> Vec<String> {
 
 /// The expectations and validity of a file that loaded.
 pub fn check_loaded(loaded: &Loaded) -> FileResult {
-    let validity = validity(&loaded.summary);
+    let mut validity = validity(&loaded.summary);
+    validity.extend(envelope(loaded));
     let mut checks: Vec<CheckResult> = loaded
         .model
         .expect

@@ -15,6 +15,7 @@ pub mod budget;
 pub mod check;
 pub mod check_run;
 pub mod diff;
+pub mod envelope;
 pub mod errors;
 pub mod ideal;
 pub mod link;

@@ -165,6 +165,8 @@ pub struct Summary {
     pub euler_moment: Option<[f64; 3]>,
     /// The static loads on two axles (`[analysis] axles`, `axles`).
     pub axle_loads: Option<super::axles::AxleLoads>,
+    /// The centre of mass against `[envelope]`, if the file gives one.
+    pub envelope: Option<super::envelope::Placed>,
     /// The principal moments with thin plates and slender rods made solid;
     /// present only when a part gives its `thickness` or `diameter`.
     pub idealisation: Option<ideal::Idealisation>,
@@ -469,6 +471,12 @@ fn summarize_in(
             })?)
         }
     };
+    // The envelope: the same coordinate along its axis, against the mass.
+    let envelope = model.envelope.as_ref().map(|e| {
+        let row = formed.frame[e.axis];
+        let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
+        super::envelope::place(e, along, mass)
+    });
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,
@@ -518,6 +526,7 @@ fn summarize_in(
         alpha: values.triple(Quantity::Alpha),
         euler_moment: values.triple(Quantity::EulerMoment),
         axle_loads,
+        envelope,
         values,
     })
 }

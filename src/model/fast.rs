@@ -376,6 +376,7 @@ impl<'i> Builder<'i> {
             params: None,
             growth: None,
             budget: None,
+            envelope: None,
         };
         for (k, ks, v) in std::mem::take(&mut self.root) {
             if let Err(f) = self.root_key(&mut raw, &k, &ks, v) {
@@ -568,6 +569,7 @@ fn root_value(raw: &mut RawFile, k: &str, ks: &Range<usize>, v: Node<'_>) -> Rea
         "params" => set(&mut raw.params, tables::params(v)?, ks),
         "growth" => set(&mut raw.growth, tables::growth(v)?, ks),
         "budget" => set(&mut raw.budget, tables::budget(v)?, ks),
+        "envelope" => set(&mut raw.envelope, tables::envelope(v)?, ks),
         // `part = [{ .. }, ..]`: the parts as an array of inline tables
         // (not beside `[[part]]`: TOML refuses the key then). Kept, not
         // handed out, when streaming (`Streamed::saw_all_of` then has the
@@ -604,6 +606,7 @@ pub(in crate::model) const ROOT_KEYS: &[&str] = &[
     "params",
     "growth",
     "budget",
+    "envelope",
 ];
 
 /// A part from its keys, by the key registry (`assign_part`); refused for

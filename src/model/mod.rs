@@ -14,6 +14,7 @@
 pub mod budget;
 mod copies;
 mod ctx;
+pub mod envelope;
 pub mod expect;
 pub mod fast;
 pub mod frame;
@@ -80,6 +81,8 @@ pub struct Model {
     pub materials: std::collections::BTreeMap<String, f64>,
     /// `[budget]`'s limit of the predicted mass, if given.
     pub budget: Option<budget::Limit>,
+    /// `[envelope]`, if given (the file's own; an include's is not read).
+    pub envelope: Option<envelope::Envelope>,
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
@@ -198,6 +201,7 @@ impl Model {
             has_real_sizes: false,
             materials: Default::default(),
             budget: None,
+            envelope: None,
             included: Vec::new(),
             texts_read: 0,
             sources: Vec::new(),
@@ -488,6 +492,9 @@ impl Model {
             .as_ref()
             .map(|b| ctx.budget(&rec, b))
             .transpose()?;
+        let envelope = (raw.envelope.as_ref())
+            .map(|e| ctx.envelope(&rec, e))
+            .transpose()?;
         Ok(Model {
             group_depth: budget::group_depth(&items),
             name: raw.name.as_ref().map(|n| n.get_ref().clone()),
@@ -504,6 +511,7 @@ impl Model {
                 .collect(),
             has_real_sizes,
             budget,
+            envelope,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
             texts_read: 0,

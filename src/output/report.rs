@@ -14,6 +14,7 @@ use crate::units::Dim;
 use std::fmt::Write;
 
 mod axles;
+pub mod envelope;
 mod motion;
 mod short;
 
@@ -398,6 +399,7 @@ pub fn write_table_to(
     };
     write_rows(&mut out, &header, &vectors, &right, fit);
     axles::write(&mut out, s, &u, width);
+    envelope::write(&mut out, s.envelope.as_ref(), &u);
 
     let _ = writeln!(
         out,
