@@ -72,6 +72,7 @@ pub fn schema() -> Value {
                 "`[growth]`: maturity name → mass growth allowance, a percentage\nstring (`estimated = \"15 %\"`; `model::budget`).",
             ),
             "budget": doc(r("Budget"), "`[budget]`: the not-to-exceed limit of the predicted mass."),
+            "envelope": doc(r("Envelope"), "`[envelope]`: the loading envelope (docs/cases.md): a polygon in (centre-of-mass coordinate, mass) the base and every case must lie in."),
         },
         "$defs": defs,
     })
