@@ -10,6 +10,7 @@ use clap::builder::PossibleValue;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 mod accuracy;
+mod cases;
 mod explain;
 mod help;
 mod reference;
@@ -393,6 +394,9 @@ pub struct ReportArgs {
 
     #[command(flatten)]
     pub robot: robot::RobotArgs,
+
+    #[command(flatten)]
+    pub cases: cases::CaseArgs,
 }
 
 /// What every command that reports one body takes: the file, the output
@@ -445,6 +449,7 @@ impl BodyArgs {
             },
             full: false,
             configuration: Default::default(),
+            cases: Default::default(),
         }
     }
 }
@@ -545,6 +550,7 @@ impl Cli {
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
                 options.configuration = a.robot.configuration();
+                options.cases = a.cases.selection();
                 Request::Report(options)
             }
             Command::Budget(a) => Request::Budget(a.body.options(

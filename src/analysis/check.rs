@@ -310,19 +310,6 @@ pub fn validity(s: &Summary) -> Vec<Validity> {
     ]
 }
 
-/// The base body against `[envelope]`, as a validity check named
-/// `envelope: base`.
-fn envelope(loaded: &Loaded) -> Vec<Validity> {
-    let (Some(env), Some(p)) = (&loaded.model.envelope, &loaded.summary.envelope) else {
-        return Vec::new();
-    };
-    let u = crate::output::format::DisplayUnits::of(loaded.model.units);
-    vec![Validity {
-        name: "envelope: base".into(),
-        failure: super::envelope::point_failure(env, "base", p, &u),
-    }]
-}
-
 /// The messages of the validity checks that fail.
 pub fn validity_failures(s: &Summary) -> Vec<String> {
     validity(s).into_iter().filter_map(|v| v.failure).collect()
@@ -330,8 +317,7 @@ pub fn validity_failures(s: &Summary) -> Vec<String> {
 
 /// The expectations and validity of a file that loaded.
 pub fn check_loaded(loaded: &Loaded) -> FileResult {
-    let mut validity = validity(&loaded.summary);
-    validity.extend(envelope(loaded));
+    let validity = validity(&loaded.summary);
     let mut checks: Vec<CheckResult> = loaded
         .model
         .expect

@@ -339,7 +339,8 @@ impl Run<'_> {
         read: &mut Vec<PathBuf>,
     ) -> Result<FileResult, Diagnostic> {
         let loaded = source.and_then(|s| super::load_source_reading(s, &self.settings, read))?;
-        let r = check_loaded(&loaded);
+        let mut r = check_loaded(&loaded);
+        super::envelope::sequences::add_to(&mut r, &loaded, &self.settings)?;
         stderr.push_str(&warning_lines(
             &loaded.source.name,
             &r.accuracy_warnings,

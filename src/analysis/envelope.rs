@@ -17,6 +17,8 @@
 //! stated: an excursion shorter than 1/`SAMPLES` of the path can pass
 //! between two samples unseen. `check_path` decides which (`PROBES`).
 
+pub mod sequences;
+
 use crate::model::envelope::{Envelope, Mac};
 use crate::output::format::{DisplayUnits, fmt_num};
 
@@ -299,10 +301,12 @@ pub fn check_samples(poly: &[[f64; 2]], samples: &[(f64, (f64, f64))]) -> PathCh
 /// kg·m along the axis) with the parameters at t. Probed at `PROBES` + 1
 /// points; affine within `AFFINE_RTOL`, checked exactly, else sampled at
 /// `SAMPLES` + 1 points.
+/// Also the path's points (coordinate m, mass kg) for drawing: 65 along
+/// an affine path, the samples of another.
 pub fn check_path<E>(
     poly: &[[f64; 2]],
     mut eval: impl FnMut(f64) -> Result<(f64, f64), E>,
-) -> Result<PathCheck, E> {
+) -> Result<(PathCheck, Vec<(f64, f64)>), E> {
     let probes = (0..=PROBES)
         .map(|k| {
             let t = k as f64 / PROBES as f64;
@@ -322,7 +326,8 @@ pub fn check_path<E>(
     });
     let positive = probes.iter().all(|p| p.1.0 > 0.0);
     if affine && positive {
-        return Ok(check_affine(poly, &path));
+        let curve = (0..=64).map(|k| path.at(f64::from(k) / 64.0)).collect();
+        return Ok((check_affine(poly, &path), curve));
     }
     let samples = (0..=SAMPLES)
         .map(|k| {
@@ -330,7 +335,8 @@ pub fn check_path<E>(
             eval(t).map(|(m, q)| (t, (q / m, m)))
         })
         .collect::<Result<Vec<_>, E>>()?;
-    Ok(check_samples(poly, &samples))
+    let curve = samples.iter().map(|s| s.1).collect();
+    Ok((check_samples(poly, &samples), curve))
 }
 
 /// An edge as a message names it: its corners, 1-based, and where they

@@ -12,6 +12,7 @@
 pub mod axles;
 pub mod bless;
 pub mod budget;
+pub mod cases;
 pub mod check;
 pub mod check_run;
 pub mod diff;

@@ -38,7 +38,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         title,
     };
     let chart = if o.envelope {
-        Some(envelope_chart(&loaded, &options.title)?)
+        Some(envelope_chart(&loaded, &o.settings, &options.title)?)
     } else {
         None
     };
@@ -81,19 +81,30 @@ impl Drawing {
 
 /// `--envelope`: the chart of the file's `[envelope]`, with the base's
 /// point; an error without one.
-fn envelope_chart(loaded: &crate::analysis::Loaded, title: &str) -> Result<String, Diagnostic> {
+fn envelope_chart(
+    loaded: &crate::analysis::Loaded,
+    settings: &Settings,
+    title: &str,
+) -> Result<String, Diagnostic> {
     let (Some(env), Some(base)) = (&loaded.model.envelope, &loaded.summary.envelope) else {
         return Err(Diagnostic::plain(
             "`--envelope` needs an `[envelope]` table in the part file, and it has none",
         )
         .help("give `[envelope]` with `axis` and `points` (docs/cases.md, \"The envelope\")"));
     };
+    let (_, cases) =
+        crate::analysis::cases::each(loaded.source.clone(), loaded.model.clone(), settings)?;
+    let mut points = vec![("base".to_string(), *base)];
+    points.extend((cases.iter()).filter_map(|(name, l)| Some((name.clone(), l.summary.envelope?))));
+    let legs = crate::analysis::envelope::sequences::legs(loaded, settings)?;
     let chart = drawing::envelope::Chart {
         title,
         envelope: env,
         units: crate::output::format::DisplayUnits::of(loaded.model.units),
-        points: vec![("base".to_string(), *base)],
-        paths: Vec::new(),
+        points,
+        paths: (legs.into_iter())
+            .map(|l| (format!("{} → {}", l.from, l.to), l.curve))
+            .collect(),
     };
     Ok(drawing::envelope::svg(&chart))
 }

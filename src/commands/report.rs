@@ -19,12 +19,27 @@ pub struct Options {
     pub full: bool,
     /// A robot description's `--joints` and `--sweep`.
     pub configuration: super::robot::Configuration,
+    /// `--case NAME`, `--cases` (`[[case]]`).
+    pub cases: Cases,
+}
+
+/// Which of a file's states a report shows (`analysis::cases`).
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub enum Cases {
+    /// The file as written.
+    #[default]
+    Base,
+    /// `--case NAME`: that case, as a plain report.
+    One(String),
+    /// `--cases`: the base and a row (an object) per case.
+    All,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one).
 pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnostic> {
     let loaded = match super::robot::source(&o.file)? {
         super::robot::Input::Robot(source, format) => {
+            refuse_cases_for_robot(&o.cases)?;
             let loading = super::robot::Loading::new(source, format, &o.configuration)?;
             if !o.configuration.sweep.is_empty() {
                 return sweep(o, &loading, terminal);
@@ -33,9 +48,14 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         }
         super::robot::Input::Part(source) => {
             o.configuration.refuse_for_part_file(&o.file)?;
-            match source {
-                Some(s) => analysis::load_source(s, &o.settings)?,
-                None => analysis::load(&o.file, &o.settings)?,
+            let source = match source {
+                Some(s) => s,
+                None => crate::io::read_source(&o.file)?,
+            };
+            match &o.cases {
+                Cases::Base => analysis::load_source(source, &o.settings)?,
+                Cases::One(name) => analysis::cases::load_case(source, &o.settings, name)?,
+                Cases::All => return all_cases(o, source, terminal),
             }
         }
     };
@@ -102,6 +122,52 @@ fn sweep(
             &samples,
             o.format,
         )),
+        stderr,
+        status: 0,
+        read,
+    })
+}
+
+/// `--case` and `--cases` take a part file's `[[case]]`s.
+fn refuse_cases_for_robot(cases: &Cases) -> Result<(), Diagnostic> {
+    let flag = match cases {
+        Cases::Base => return Ok(()),
+        Cases::One(_) => "--case",
+        Cases::All => "--cases",
+    };
+    Err(Diagnostic::plain(format!(
+        "`{flag}` takes a part file's `[[case]]`s; a robot description has none"
+    )))
+}
+
+/// `report --cases`: the base and every case, a row (a JSON object) each.
+fn all_cases(
+    o: &Options,
+    source: crate::diag::Source,
+    terminal: &super::Terminal,
+) -> Result<Outcome, Diagnostic> {
+    let (base, cases) = analysis::cases::load_all(source, &o.settings)?;
+    if cases.is_empty() {
+        return Err(Diagnostic::plain(format!(
+            "`--cases`: {} has no `[[case]]`",
+            base.source.name
+        ))
+        .help("add a `[[case]]` table with a `name` for each state of the body"));
+    }
+    let read = super::files_of(&base);
+    let stderr = super::accuracy_warnings(&base, terminal.stderr.colour);
+    let summaries: Vec<(&str, &analysis::summary::Summary)> = (cases.iter())
+        .map(|(name, l)| (name.as_str(), &l.summary))
+        .collect();
+    let text = crate::output::report::cases::render(
+        &base.summary,
+        &summaries,
+        o.format,
+        o.full,
+        terminal.stdout.width,
+    );
+    Ok(Outcome {
+        stdout: super::Stdout::Text(text),
         stderr,
         status: 0,
         read,

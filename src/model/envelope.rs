@@ -226,6 +226,86 @@ impl Ctx<'_> {
     }
 }
 
+impl super::Model {
+    /// The file's own value (its `[params]`, after `--set`) of each of
+    /// `names`, `None` for a name it does not define: where a path
+    /// between two cases moves a parameter only one of them gives, it
+    /// moves from that value to the file's.
+    pub fn file_params(
+        source: &crate::diag::Source,
+        includes: &super::Includes,
+        names: &[String],
+    ) -> Result<Vec<Option<crate::expr::Value>>, Diagnostic> {
+        let raw = super::Model::raw(source)?;
+        let passed = super::params::flags(&includes.set)?;
+        let (ctx, _) = super::Model::context(source, &raw, &passed, None)?;
+        Ok(names.iter().map(|n| ctx.params.get(n)).collect())
+    }
+}
+
+/// `sequences` against the file's cases: each name a case's, and the
+/// cases each two neighbours join differ only in `params` (the same
+/// `without` and `without_groups`): a path moves parameters, it cannot
+/// take a part in or out halfway.
+pub(super) fn check_sequences(
+    source: &crate::diag::Source,
+    model: &super::Model,
+) -> Result<(), Diagnostic> {
+    let Some(env) = &model.envelope else {
+        return Ok(());
+    };
+    for seq in &env.sequences {
+        let mut before: Option<&super::case::Case> = None;
+        for name in seq {
+            let shown = crate::diag::shorten(name.get_ref());
+            let Some(case) = model.cases.iter().find(|c| c.name == *name.get_ref()) else {
+                let d = source.error(
+                    name.span(),
+                    format!("`sequences` names `{shown}`, and the file has no case of that name"),
+                );
+                let d = match crate::units::suggest(
+                    name.get_ref(),
+                    model.cases.iter().map(|c| c.name.as_str()),
+                ) {
+                    Some(s) => d.suggest(Some(s)),
+                    None if model.cases.is_empty() => {
+                        d.help("a sequence joins `[[case]]`s by their `name`; the file has none")
+                    }
+                    None => d.help("a sequence joins `[[case]]`s by their `name`"),
+                };
+                return Err(d);
+            };
+            if let Some(b) = before {
+                fn names(l: &[(String, Range<usize>)]) -> Vec<&str> {
+                    let mut v: Vec<&str> = l.iter().map(|(s, _)| s.as_str()).collect();
+                    v.sort_unstable();
+                    v
+                }
+                let key = if names(&b.without) != names(&case.without) {
+                    Some("without")
+                } else if names(&b.without_groups) != names(&case.without_groups) {
+                    Some("without_groups")
+                } else {
+                    None
+                };
+                if let Some(key) = key {
+                    return Err(source
+                        .error(
+                            name.span(),
+                            format!(
+                                "`sequences`: cases `{}` and `{shown}` differ in `{key}`, so no path joins them",
+                                crate::diag::shorten(&b.name)
+                            ),
+                        )
+                        .help("a path moves parameters (fuel burned); cases that take different parts out are separate states, not points of one path"));
+                }
+            }
+            before = Some(case);
+        }
+    }
+    Ok(())
+}
+
 /// The signed area (shoelace), positive counter-clockwise.
 pub fn area(p: &[[f64; 2]]) -> f64 {
     let n = p.len();

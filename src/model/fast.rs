@@ -27,6 +27,7 @@
 use super::raw::{Materials, RawFile, RawPart, RawUnits};
 use values::{Entry, How, Node, Seg, own_value, set_from};
 
+mod cases;
 pub(in crate::model) mod errors;
 pub(in crate::model) mod failure;
 pub mod pieces;
@@ -377,6 +378,7 @@ impl<'i> Builder<'i> {
             growth: None,
             budget: None,
             envelope: None,
+            case: None,
         };
         for (k, ks, v) in std::mem::take(&mut self.root) {
             if let Err(f) = self.root_key(&mut raw, &k, &ks, v) {
@@ -483,6 +485,9 @@ impl<'i> Builder<'i> {
             self.at = rest.iter().map(|(k, _)| k.clone()).collect();
             return;
         }
+        if first == "case" {
+            return self.open_case(span, path, is_array);
+        }
         if is_array {
             // `[[analysis]]` and the like are worded before (`explain`);
             // any other name is an unknown key here, or an array of tables
@@ -570,6 +575,7 @@ fn root_value(raw: &mut RawFile, k: &str, ks: &Range<usize>, v: Node<'_>) -> Rea
         "growth" => set(&mut raw.growth, tables::growth(v)?, ks),
         "budget" => set(&mut raw.budget, tables::budget(v)?, ks),
         "envelope" => set(&mut raw.envelope, tables::envelope(v)?, ks),
+        "case" => set(&mut raw.case, cases::cases(v)?, ks),
         // `part = [{ .. }, ..]`: the parts as an array of inline tables
         // (not beside `[[part]]`: TOML refuses the key then). Kept, not
         // handed out, when streaming (`Streamed::saw_all_of` then has the
@@ -607,6 +613,7 @@ pub(in crate::model) const ROOT_KEYS: &[&str] = &[
     "growth",
     "budget",
     "envelope",
+    "case",
 ];
 
 /// A part from its keys, by the key registry (`assign_part`); refused for

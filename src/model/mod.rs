@@ -12,6 +12,7 @@
 //! `schema` is the file's JSON Schema, made from `raw` and the shapes.
 
 pub mod budget;
+pub mod case;
 mod copies;
 mod ctx;
 pub mod envelope;
@@ -100,6 +101,8 @@ pub struct Model {
     /// The warnings of its mesh files, at any depth (`model::mesh`): what
     /// their answers survive, and what a `weld` merged.
     pub mesh_warnings: Vec<include::MeshNote>,
+    /// `[[case]]`: the body's loading cases, in file order (`case`).
+    pub cases: Vec<case::Case>,
 }
 
 /// One `[[part]]` of a file: a part, or a sub-assembly placed.
@@ -207,6 +210,7 @@ impl Model {
             sources: Vec::new(),
             group_depth: 0,
             mesh_warnings: Vec::new(),
+            cases: Vec::new(),
         }
     }
 
@@ -229,6 +233,17 @@ impl Model {
         includes: &Includes,
         read: &mut Vec<std::path::PathBuf>,
     ) -> Result<Model, Diagnostic> {
+        Model::parse_passing(source, includes, read, &[])
+    }
+
+    /// `parse_reading`, with the parameters `values` in place of the
+    /// file's definitions, its cases' and `--set`'s (`analysis::cases`).
+    pub fn parse_passing(
+        source: &Source,
+        includes: &Includes,
+        read: &mut Vec<std::path::PathBuf>,
+        values: &[(String, crate::expr::Value)],
+    ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
         if source.piped {
             // A piped file's tree is the one it is based in.
@@ -246,13 +261,18 @@ impl Model {
         files
             .roots
             .extend((includes.roots.iter()).filter_map(|r| std::fs::canonicalize(r).ok()));
-        let passed = params::flags(&includes.set)?;
+        let mut passed = params::flags(&includes.set)?;
+        for (name, value) in values {
+            passed.retain(|p| p.name != *name);
+            passed.push(params::Pass::value(name, *value));
+        }
         let model = Model::parse_in(source, &mut files, &passed);
         let reads = files.reads;
         let mesh_warnings = std::mem::take(&mut files.mesh_warnings);
         let included = files.included();
         read.extend(included.iter().cloned());
         let mut model = model?;
+        envelope::check_sequences(source, &model)?;
         model.included = included;
         model.texts_read = reads;
         model.mesh_warnings = mesh_warnings;
@@ -286,7 +306,8 @@ impl Model {
         };
         let raw = match fast {
             Some(raw) if whole => Some(raw),
-            Some(raw) if streamed.saw_all_of(&raw) => Some(raw),
+            // A file with cases is read whole: each case is made from it.
+            Some(raw) if streamed.saw_all_of(&raw) && raw.case.is_none() => Some(raw),
             // Read whole (a file the stream cannot take, or refused: then
             // read whole to be sure before its error is worded).
             Some(_) | None if !whole => {
@@ -302,6 +323,11 @@ impl Model {
         let (ctx, mut rec) = Model::context(source, &raw, passed, None)?;
         if !streamed.off {
             return streamed.model(&ctx, rec, raw);
+        }
+        if raw.case.is_some() && files.stack.len() <= 1 {
+            let mut model = Model::from_raw(source, &raw, files, passed, None)?;
+            model.cases = Model::read_cases(source, &mut raw, files, passed)?;
+            return Ok(model);
         }
         Model::check_parts(&ctx, &raw, files)?;
         // Each raw part dropped once read: its vectors and rare keys are
@@ -517,6 +543,7 @@ impl Model {
             texts_read: 0,
             sources: rec.sources,
             mesh_warnings: Vec::new(),
+            cases: Vec::new(),
         })
     }
 }

@@ -168,6 +168,21 @@ pub(crate) enum Given {
     Value(Value),
 }
 
+impl Pass {
+    /// `value` passed in for the parameter `name` (`Model::parse_passing`).
+    pub(crate) fn value(name: &str, value: Value) -> Pass {
+        Pass {
+            name: name.to_string(),
+            given: Given::Value(value),
+            undefined: Diagnostic::plain(format!(
+                "the file defines no parameter `{}` in `[params]`",
+                crate::diag::shorten(name)
+            )),
+            exact: None,
+        }
+    }
+}
+
 /// `--set NAME=VALUE` flags as passes; a flag without `=`, or with a name
 /// that cannot be a parameter's, is an error.
 pub(crate) fn flags(set: &[String]) -> Result<Vec<Pass>, Diagnostic> {

@@ -35,6 +35,8 @@ pub struct RawFile {
     pub budget: Option<Spanned<RawBudget>>,
     /// `[envelope]`: the loading envelope (`model::envelope`).
     pub envelope: Option<Spanned<RawEnvelope>>,
+    /// `[[case]]`: the body's loading cases, in file order (`model::case`).
+    pub case: Option<Spanned<Vec<Spanned<RawCase>>>>,
 }
 
 /// `[envelope]`: the axis, the polygon's `points` (`[x, mass]` pairs), the
@@ -44,14 +46,31 @@ pub struct RawEnvelope {
     pub axis: Option<Spanned<String>>,
     pub points: Option<Spanned<Vec<Vector>>>,
     pub mac: Option<Spanned<RawMac>>,
-    pub sequences: Option<Spanned<Vec<Spanned<Vec<Spanned<String>>>>>>,
+    pub sequences: Option<Spanned<Vec<Names>>>,
 }
+
+/// An array of names, e.g. one of `sequences`.
+pub type Names = Spanned<Vec<Spanned<String>>>;
 
 /// `[envelope] mac = { leading_edge, length }`.
 #[derive(Debug, Default)]
 pub struct RawMac {
     pub leading_edge: Option<Spanned<Quantity>>,
     pub length: Option<Spanned<Quantity>>,
+}
+
+/// One `[[case]]`: the file in another state (`model::case`).
+#[derive(Debug, Default)]
+pub struct RawCase {
+    pub name: Option<Spanned<String>>,
+    /// Values in place of the file's `[params]` definitions.
+    pub params: Option<Params>,
+    /// Parts and sub-assemblies absent, named as `--only` names them.
+    pub without: Option<Spanned<Vec<Spanned<String>>>>,
+    /// `group` paths absent, with their sub-groups.
+    pub without_groups: Option<Spanned<Vec<Spanned<String>>>>,
+    /// The case's own `[expect]`.
+    pub expect: Option<Spanned<RawExpect>>,
 }
 
 /// `[params]`, or an include's `params`: name → a number or a quantity

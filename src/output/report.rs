@@ -14,6 +14,7 @@ use crate::units::Dim;
 use std::fmt::Write;
 
 mod axles;
+pub mod cases;
 pub mod envelope;
 mod motion;
 mod short;

@@ -255,3 +255,274 @@ fn the_table_gives_the_axle_loads_in_newtons_kilograms_and_percent() {
     assert!(text.contains(&kg), "{kg} not in\n{text}");
     assert!(text.contains("56.2175"), "{text}");
 }
+
+// ---- Loading cases (`[[case]]`, issue 35 item 1) ----
+
+/// A report's JSON without its `source` (the files compared differ in it).
+fn body_of(mut v: Value) -> Value {
+    v.as_object_mut().expect("an object").remove("source");
+    v
+}
+
+/// A small aircraft-like body: parameters used by expressions, an
+/// array, a group, and its cases.
+const LOADED: &str = r#"units = { length = "mm", mass = "kg" }
+[params]
+fuel = "120 kg"
+crew = "80 kg"
+arm = "300 mm"
+
+[[part]]
+name = "airframe"
+shape = "box"
+mass = 600
+size = [6000, 1200, 1000]
+center = [0, 0, 0]
+
+[[part]]
+name = "pilot"
+shape = "point"
+mass = "crew"
+center = ["-arm", 0, 200]
+group = "payload/crew"
+
+[[part]]
+name = "tank"
+shape = "cylinder"
+mass = "fuel"
+radius = 200
+length = 800
+center = ["2 * arm", 0, -100]
+
+[[part]]
+name = "box"
+shape = "box"
+mass = 10
+size = [100, 100, 100]
+center = [-2000, 0, 0]
+array = { count = 3, step = [250, 0, 0] }
+group = "payload/cargo"
+"#;
+
+/// The cases of `LOADED`, appended.
+const CASES: &str = r#"
+[[case]]
+name = "ferry"
+params = { fuel = "200 kg", arm = "350 mm" }
+without = ["pilot"]
+
+[[case]]
+name = "light"
+without_groups = ["payload"]
+
+[[case]]
+name = "two boxes"
+without = ["box[1]"]
+"#;
+
+#[test]
+fn a_case_is_the_file_edited_by_hand_to_it_bit_for_bit() {
+    let file = format!("{LOADED}{CASES}");
+    let (case, _) = report_json(&file, &["--case", "ferry"]);
+    // Edited by hand: the parameters' definitions replaced, the pilot's
+    // table deleted.
+    let edited = LOADED
+        .replace("fuel = \"120 kg\"", "fuel = \"200 kg\"")
+        .replace("arm = \"300 mm\"", "arm = \"350 mm\"");
+    let start = edited.find("[[part]]\nname = \"pilot\"").unwrap();
+    let end = edited.find("[[part]]\nname = \"tank\"").unwrap();
+    let edited = format!("{}{}", &edited[..start], &edited[end..]);
+    assert!(!edited.contains("pilot") && edited.contains("200 kg"));
+    let (plain, _) = report_json(&edited, &[]);
+    assert_eq!(body_of(case), body_of(plain));
+}
+
+#[test]
+fn a_case_without_groups_drops_every_part_under_them() {
+    let file = format!("{LOADED}{CASES}");
+    let (case, _) = report_json(&file, &["--case", "light"]);
+    // The pilot (payload/crew) and the boxes (payload/cargo) gone: the
+    // airframe and the tank, by hand.
+    let (m, x) = (600.0 + 120.0, 120.0 * 0.6 / 720.0);
+    assert_eq!(num(&case["mass"]), m);
+    within(&case, "center_of_mass", &[x, 0.0, -120.0 * 0.1 / 720.0]);
+}
+
+#[test]
+fn a_case_without_one_copy_keeps_the_others() {
+    let file = format!("{LOADED}{CASES}");
+    let (case, _) = report_json(&file, &["--case", "two boxes"]);
+    // The boxes at x = −2000 and −1500 mm stay, −1750 goes: by hand.
+    let m = 600.0 + 80.0 + 120.0 + 20.0;
+    let x = (80.0 * -0.3 + 120.0 * 0.6 + 10.0 * (-2.0 - 1.5)) / m;
+    assert_eq!(num(&case["mass"]), m);
+    within(
+        &case,
+        "center_of_mass",
+        &[x, 0.0, (80.0 * 0.2 - 120.0 * 0.1) / m],
+    );
+}
+
+#[test]
+fn every_object_of_cases_json_is_that_cases_own_report() {
+    let file = format!("{LOADED}{CASES}");
+    let (all, _) = report_json(&file, &["--cases"]);
+    let list = all["cases"].as_array().expect("`cases` is an array");
+    let names: Vec<&str> = list.iter().map(|c| c["case"].as_str().unwrap()).collect();
+    assert_eq!(names, ["ferry", "light", "two boxes"], "file order");
+    for object in list {
+        let name = object["case"].as_str().unwrap();
+        let (one, _) = report_json(&file, &["--case", name]);
+        let mut object = object.clone();
+        object.as_object_mut().unwrap().remove("case");
+        assert_eq!(body_of(object), body_of(one), "case {name}");
+    }
+}
+
+#[test]
+fn the_base_stays_the_top_level_of_cases_json() {
+    let file = format!("{LOADED}{CASES}");
+    let (all, _) = report_json(&file, &["--cases"]);
+    let (plain, _) = report_json(&file, &[]);
+    let mut top = all.clone();
+    top.as_object_mut().unwrap().remove("cases");
+    assert_eq!(body_of(top), body_of(plain));
+}
+
+#[test]
+fn a_file_with_cases_reports_its_base_as_it_did_without_them() {
+    let (with, _) = report_json(&format!("{LOADED}{CASES}"), &[]);
+    let (without, _) = report_json(LOADED, &[]);
+    assert_eq!(body_of(with), body_of(without));
+}
+
+#[test]
+fn cases_reach_an_included_file_through_its_params() {
+    let wheel = "[params]\nrim_mass = \"5 kg\"\n[[part]]\nname = \"rim\"\nshape = \"point\"\nmass = \"rim_mass\"\ncenter = [0, 0, 0]\n";
+    let car = "[params]\nw = \"5 kg\"\n[[part]]\nname = \"hub\"\ninclude = \"wheel.toml\"\nparams = { rim_mass = \"w\" }\norigin = [1, 0, 0]\n[[part]]\nname = \"frame\"\nshape = \"point\"\nmass = 15\ncenter = [0, 0, 0]\n[[case]]\nname = \"heavy\"\nparams = { w = \"25 kg\" }\n[[case]]\nname = \"bare\"\nwithout = [\"hub / rim\"]\n";
+    let path = crate::common::scratch_files(
+        "cases",
+        "include",
+        &[("wheel.toml", wheel), ("car.toml", car)],
+    );
+    let (heavy, _) = report_json_file(&path, &["--case", "heavy"]);
+    assert_eq!(num(&heavy["mass"]), 40.0);
+    assert_eq!(triple(&heavy["center_of_mass"])[0], 25.0 / 40.0);
+    let (bare, _) = report_json_file(&path, &["--case", "bare"]);
+    assert_eq!(num(&bare["mass"]), 15.0);
+}
+
+#[test]
+fn cases_json_and_table_give_each_cases_axle_loads() {
+    let file = format!(
+        "{BOX}axles = {{ axis = \"x\", front = 2, rear = 0 }}\n[[part]]\nname = \"load\"\nshape = \"point\"\nmass = 2\ncenter = [0, 0, 0]\n[[case]]\nname = \"unloaded\"\nwithout = [\"load\"]\n"
+    );
+    let (all, _) = report_json(&file, &["--cases"]);
+    // Base: 4 kg at x = 0.5 → front share 0.25; unloaded: 2 kg at 1 → 0.5.
+    assert_eq!(num(&all["axle_loads"]["front"]["share"]), 0.25);
+    let case = &all["cases"][0];
+    assert_eq!(num(&case["axle_loads"]["front"]["share"]), 0.5);
+    assert!((num(&case["axle_loads"]["rear"]["load"]) - 2.0 * 9.80665 * 0.5).abs() < 1e-12);
+    let dir = crate::common::scratch_files("cases", "axles", &[("a.toml", &file)]);
+    let out = massprop(&["report", "--cases", dir.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("front (%)") && text.contains("unloaded"),
+        "{text}"
+    );
+    let row = text.lines().find(|l| l.contains("unloaded")).unwrap();
+    assert!(row.contains(" 50 ") && row.contains("9.80665"), "{row}");
+}
+
+/// `:LINE:COL: error:` of the first `needle` in `text`, as a message
+/// begins.
+fn at(text: &str, needle: &str) -> String {
+    let start = text
+        .find(needle)
+        .unwrap_or_else(|| panic!("{needle} in the file"));
+    let line = text[..start].matches('\n').count() + 1;
+    let col = text[..start].rfind('\n').map_or(start, |n| start - n - 1) + 1;
+    format!(":{line}:{col}: error:")
+}
+
+/// `massprop report ARGS… FILE` on `text`: refused with status 2, nothing
+/// on stdout; its stderr.
+fn refused(text: &str, args: &[&str]) -> String {
+    static COUNT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = COUNT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let path = crate::common::scratch_files("cases", &format!("refused-{n}"), &[("f.toml", text)]);
+    let mut argv = vec!["report"];
+    argv.extend(args);
+    argv.push(path.to_str().unwrap());
+    let out = massprop(&argv);
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty(), "{stderr}");
+    stderr
+}
+
+#[test]
+fn an_unknown_name_in_without_is_a_located_error_with_a_suggestion() {
+    let file = format!("{LOADED}{CASES}").replace("[\"pilot\"]", "[\"pilto\"]");
+    let e = refused(&file, &[]);
+    assert!(
+        e.contains(&at(&file, "\"pilto\"")) && e.contains("`pilto`"),
+        "{e}"
+    );
+    assert!(
+        e.contains("did you mean `pilot`?") && e.contains("case `ferry`"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_unknown_group_is_a_located_error_with_a_suggestion() {
+    let file = format!("{LOADED}{CASES}").replace("[\"payload\"]", "[\"payload/crw\"]");
+    let e = refused(&file, &[]);
+    assert!(
+        e.contains(&at(&file, "\"payload/crw")) && e.contains("did you mean `payload/crew`?"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_unknown_parameter_of_a_case_is_a_located_error_with_a_suggestion() {
+    let file = format!("{LOADED}{CASES}").replace("fuel = \"200", "fule = \"200");
+    let e = refused(&file, &[]);
+    assert!(
+        e.contains(&at(&file, "fule")) && e.contains("`fule`"),
+        "{e}"
+    );
+    assert!(e.contains("did you mean `fuel`?"), "{e}");
+}
+
+#[test]
+fn two_cases_of_one_name_are_a_located_error() {
+    let file = format!("{LOADED}{CASES}").replace("\"light\"", "\"ferry\"");
+    let e = refused(&file, &[]);
+    let second = file.rfind("\"ferry\"").unwrap();
+    let line = file[..second].matches('\n').count() + 1;
+    assert!(
+        e.contains(&format!(":{line}:8: error:")) && e.contains("`ferry`"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_unknown_key_of_a_case_is_a_located_error_with_a_suggestion() {
+    let file = format!("{LOADED}{CASES}").replace("without_groups", "without_group");
+    let e = refused(&file, &[]);
+    assert!(
+        e.contains(&at(&file, "without_group ")) && e.contains("did you mean `without_groups`?"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_unknown_case_on_the_command_line_names_the_flag_and_suggests() {
+    let e = refused(&format!("{LOADED}{CASES}"), &["--case", "feryy"]);
+    assert!(
+        e.contains("`--case feryy`") && e.contains("did you mean `ferry`?"),
+        "{e}"
+    );
+}

@@ -65,6 +65,11 @@ pub(super) fn enter<'t, 'i>(
         let i = table.iter().position(|(e, _, _)| e == k)?;
         match &mut table[i].2 {
             Node::Table(entries, _, _) => table = entries,
+            // `[[case]]`'s keys go to the last table of its array.
+            Node::Array(items, _) => match items.last_mut() {
+                Some(Node::Table(entries, _, How::Header)) => table = entries,
+                _ => return None,
+            },
             _ => return None,
         }
     }

@@ -82,9 +82,9 @@ pub fn svg(c: &Chart<'_>) -> String {
         "<rect width=\"{WIDTH}\" height=\"{HEIGHT}\" fill=\"#fff\"/>"
     );
     super::text(&mut s, [LEFT, 30.0], c.title, None);
-    let _ = write!(
+    let _ = writeln!(
         s,
-        "<g id=\"envelope\" data-scale=\"{sx} {sy}\" data-origin=\"{ox} {oy}\">\n"
+        "<g id=\"envelope\" data-scale=\"{sx} {sy}\" data-origin=\"{ox} {oy}\">"
     );
 
     // The polygon.
@@ -125,7 +125,22 @@ pub fn svg(c: &Chart<'_>) -> String {
         let q = at(x, m);
         super::text(&mut s, [q[0] + 8.0, q[1] + 16.0], label, Some(PATH));
     }
+    // NOTE: states at one place (the base and a case that gives the
+    // file's own values) share a ring, their names joined.
+    let mut shown: Vec<(String, Placed)> = Vec::new();
     for (label, p) in &c.points {
+        match shown
+            .iter_mut()
+            .find(|(_, q)| q.coordinate == p.coordinate && q.mass == p.mass)
+        {
+            Some((l, _)) => {
+                l.push_str(", ");
+                l.push_str(label);
+            }
+            None => shown.push((label.clone(), *p)),
+        }
+    }
+    for (label, p) in &shown {
         let q = at(p.coordinate, p.mass);
         let colour = if p.inside() { INSIDE } else { OUTSIDE };
         s.push_str("<circle class=\"case\" cx=\"");
