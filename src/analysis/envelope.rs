@@ -260,11 +260,15 @@ pub fn check_affine(poly: &[[f64; 2]], path: &Affine) -> PathCheck {
             });
         }
     }
+    // The least margin: at the samples, and inside each piece between
+    // crossings (a piece narrower than a sample's step, such as a notch
+    // passed through, has its own points).
     let samples = (0..=SAMPLES).map(|k| k as f64 / SAMPLES as f64);
-    let worst = least(
-        poly,
-        samples.chain(cuts.iter().map(|c| c.0)).map(|t| path.at(t)),
-    );
+    let pieces = ts.windows(2).flat_map(|w| {
+        let (t0, t1) = (w[0].0, w[1].0);
+        (1..32).map(move |k| t0 + (t1 - t0) * f64::from(k) / 32.0)
+    });
+    let worst = least(poly, samples.chain(pieces).map(|t| path.at(t)));
     PathCheck {
         exit,
         worst,
@@ -405,7 +409,8 @@ fn outside(
 }
 
 /// Why a path leaves (`None` if it stays inside): `from` and `to` are the
-/// cases it joins.
+/// cases it joins; where it first leaves, across which edge, and the
+/// least margin found on it.
 pub fn path_failure(
     env: &Envelope,
     from: &str,
@@ -413,6 +418,7 @@ pub fn path_failure(
     c: &PathCheck,
     u: &DisplayUnits,
 ) -> Option<String> {
+    const AXES: [&str; 3] = ["x", "y", "z"];
     let exit = c.exit?;
     let (x, m) = exit.at;
     let how = if c.exact {
@@ -421,15 +427,25 @@ pub fn path_failure(
         format!("sampled at {} points", SAMPLES + 1)
     };
     let worst = c.worst.map_or(
-        "none: some of it is outside the range of masses".to_string(),
+        "none: some of it is outside the envelope's range of masses".to_string(),
         |w| format!("{} {}", fmt_num(w / u.length), u.length_label),
     );
-    let who = format!("sequence {from} → {to}");
-    let margin = margin(&env.points, x, m).map(|(d, _)| d);
+    let across = match exit.edge {
+        Some(e) => format!(", across {}", edge_name(env, e, u)),
+        None => ", outside the envelope's range of masses".to_string(),
+    };
+    let place = if exit.t == 0.0 {
+        "starts outside `[envelope]`".to_string()
+    } else {
+        format!("leaves `[envelope]` {} of the way", fmt_num(exit.t))
+    };
     Some(format!(
-        "{}, {} of the way ({how}); least margin on the path {worst}",
-        outside(env, &who, x, m, exit.edge, margin, u),
-        fmt_num(exit.t)
+        "sequence {from} → {to}: the path {place}, at {} = {} {} and {} {}{across}; least margin on the path {worst} ({how})",
+        AXES[env.axis],
+        fmt_num(x / u.length),
+        u.length_label,
+        fmt_num(m / u.mass),
+        u.mass_label,
     ))
 }
 

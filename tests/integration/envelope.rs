@@ -331,3 +331,154 @@ fn render_envelope_without_an_envelope_is_an_error() {
     assert!(out.stdout.is_empty());
     assert!(String::from_utf8_lossy(&out.stderr).contains("`--envelope` needs an `[envelope]`"));
 }
+
+// Cases and sequences.
+
+/// A body of 700 kg at `x0` and fuel of `fuel_fraction * 200 kg` at 2.7 m
+/// (burning it moves the centre of mass forward), its cases `full` and
+/// `reserve`, a `light` case without the fuel, and `[envelope]` with
+/// `points` and `extra` lines.
+fn fuelled(x0: f64, points: &str, extra: &str) -> String {
+    format!(
+        "name = \"plane\"\nunits = {{ length = \"m\", mass = \"kg\" }}\n[params]\nfuel_fraction = 1\n[[part]]\nname = \"body\"\nshape = \"point\"\nmass = 700\ncenter = [{x0}, 0, 0]\n[[part]]\nname = \"fuel\"\nshape = \"point\"\nmass = \"fuel_fraction * 200 kg\"\ncenter = [2.7, 0, 0]\n[[case]]\nname = \"full\"\nparams = {{ fuel_fraction = 1 }}\n[[case]]\nname = \"reserve\"\nparams = {{ fuel_fraction = 0.05 }}\n[[case]]\nname = \"light\"\nwithout = [\"fuel\"]\n\n[envelope]\naxis = \"x\"\npoints = {points}\n{extra}"
+    )
+}
+
+/// `NOTCHED` as the file writes it.
+fn notched() -> String {
+    let p: Vec<String> = NOTCHED
+        .iter()
+        .map(|c| format!("[{}, {}]", c[0], c[1]))
+        .collect();
+    format!("[{}]", p.join(", "))
+}
+
+#[test]
+fn each_case_has_its_margin_in_json() {
+    let text = fuelled(2.34, TRAPEZOID, "");
+    let out = massprop_stdin(&["report", "-", "--cases", "--format", "json"], &text);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    // `light`: 700 kg at 2.34 m; the forward edge at 700 kg by hand.
+    let light = &v["cases"][2];
+    assert_eq!(light["case"], "light");
+    let expected = (2.34 - forward(700.0)).min(2.5 - 2.34);
+    let got = light["envelope_margin"].as_f64().unwrap();
+    assert!((got - expected).abs() < 1e-12, "{got} vs {expected}");
+}
+
+#[test]
+fn report_cases_shows_a_margin_column() {
+    let text = fuelled(2.34, TRAPEZOID, "");
+    let out = massprop_stdin(&["report", "-", "--cases"], &text);
+    let table = String::from_utf8(out.stdout).unwrap();
+    assert!(table.contains("margin (m)"), "{table}");
+}
+
+#[test]
+fn a_fuel_burn_that_stays_inside_passes_check() {
+    let text = fuelled(2.34, TRAPEZOID, "sequences = [[\"full\", \"reserve\"]]");
+    let (code, out) = check("burn-inside", &text, "table");
+    assert_eq!(code, Some(0), "{out}");
+}
+
+#[test]
+fn a_fuel_burn_through_a_notch_fails_check_though_both_ends_are_inside() {
+    let text = fuelled(2.34, &notched(), "sequences = [[\"full\", \"reserve\"]]");
+    let (code, out) = check("burn-notch", &text, "table");
+    assert_eq!(code, Some(1), "{out}");
+    assert!(out.contains("sequence full → reserve"), "{out}");
+    // The mass falls as the fuel burns: the path meets the notch's upper
+    // edge first, from corner 5 to corner 6.
+    assert!(
+        out.contains("across the edge from corner 5 (2.3 m, 800.41 kg)"),
+        "{out}"
+    );
+    // Inside the notch the path is aft of its forward edge (2.3 m) by
+    // about 2.385 − 2.3 m: the least margin is negative.
+    let worst: f64 = out
+        .split("least margin on the path ")
+        .nth(1)
+        .and_then(|r| r.split(' ').next())
+        .and_then(|w| w.parse().ok())
+        .expect("a least margin");
+    assert!(worst < -0.05 && worst > -0.09, "{worst}");
+    assert!(out.contains("checked exactly"), "{out}");
+    assert!(
+        !out.contains("case `full`") && !out.contains("case `reserve`"),
+        "{out}"
+    );
+}
+
+#[test]
+fn a_case_outside_fails_check_naming_it() {
+    // `light` (700 kg at 2.55 m) is aft of the trapezoid; `full` (900 kg
+    // at (700·2.55 + 200·2.7)/900 = 2.583) too.
+    let text = fuelled(2.55, TRAPEZOID, "");
+    let (code, out) = check("case-outside", &text, "github");
+    assert_eq!(code, Some(1), "{out}");
+    assert!(
+        out.contains("case `light`: the centre of mass x = 2.55 m at 700 kg"),
+        "{out}"
+    );
+}
+
+#[test]
+fn a_path_whose_mass_is_not_affine_is_sampled_and_says_so() {
+    // The fuel a box whose side grows with the parameter: its mass goes
+    // as the cube, not linearly.
+    // A notch 20 kg high, wider than the samples' step in mass.
+    let wide = "[[2.0, 500], [2.5, 500], [2.5, 790], [2.3, 799], [2.3, 801], [2.5, 810], [2.5, 1100], [2.1, 1100]]";
+    let text = fuelled(2.34, wide, "sequences = [[\"full\", \"reserve\"]]")
+        .replace(
+            "shape = \"point\"\nmass = \"fuel_fraction * 200 kg\"",
+            "shape = \"box\"\ndensity = 1000\nsize = [\"side\", \"side\", \"side\"]",
+        )
+        .replace(
+            "fuel_fraction = 1\n[[part]]",
+            "fuel_fraction = 1\nside = \"0.2 m + fuel_fraction * 0.4 m\"\n[[part]]",
+        );
+    let dir = scratch_files("envelope", "cubic", &[("plane.toml", &text)]);
+    let out = massprop(&["check", dir.to_str().unwrap()]);
+    let text_out = String::from_utf8(out.stdout).unwrap();
+    // The path through the notch is found by its samples, and the
+    // message says it was sampled, not checked exactly.
+    assert!(!text_out.contains("checked exactly"), "{text_out}");
+    assert!(text_out.contains("sampled at 257 points"), "{text_out}");
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn the_chart_labels_each_case_and_draws_the_path() {
+    let text = fuelled(2.34, TRAPEZOID, "sequences = [[\"full\", \"reserve\"]]");
+    let svg = chart(&text);
+    for label in ["base, full", "reserve", "light", "full → reserve"] {
+        assert!(svg.contains(&format!(">{label}</text>")), "{label}: {svg}");
+    }
+    assert_eq!(svg.matches("class=\"path\"").count(), 1);
+}
+
+#[test]
+fn the_chart_escapes_a_hostile_case_name() {
+    let text = fuelled(2.34, TRAPEZOID, "")
+        .replace("name = \"light\"", "name = \"<\\u0007/text>&\\u202e\"");
+    let svg = chart(&text);
+    parse(&svg);
+    assert!(!svg.contains("</text>&"), "{svg}");
+    assert!(svg.contains("&lt;"), "{svg}");
+}
+
+#[test]
+fn a_case_at_the_chart_fill_is_inside_and_one_on_white_is_outside() {
+    // `light` at 2.3 m (inside at 700 kg); `full` at
+    // (700·2.3 + 200·2.7)/900 = 2.3889 m, inside too; then move the body
+    // aft so `light` is at 2.6 m, outside.
+    let svg = chart(&fuelled(2.3, TRAPEZOID, ""));
+    assert_eq!(pixel_at(&svg, 2.3, 700.0), [0xdd, 0xe8, 0xf4]);
+    let svg = chart(&fuelled(2.6, TRAPEZOID, ""));
+    assert_eq!(pixel_at(&svg, 2.6, 700.0), [255, 255, 255]);
+}
