@@ -472,11 +472,31 @@ fn summarize_in(
         }
     };
     // The envelope: the same coordinate along its axis, against the mass.
-    let envelope = model.envelope.as_ref().map(|e| {
-        let row = formed.frame[e.axis];
-        let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
-        super::envelope::place(e, along, mass)
-    });
+    let envelope = match &model.envelope {
+        None => None,
+        Some(e) => {
+            let row = formed.frame[e.axis];
+            let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
+            let placed = super::envelope::place(e, along, mass);
+            let bad = |v: Option<f64>| v.is_some_and(|x| !x.is_finite());
+            // NOTE: a centre of mass far out overflows its distance to an
+            // edge or its % MAC; said, not printed as null.
+            let what = if bad(placed.margin) {
+                Some("envelope margin")
+            } else if bad(placed.mac) {
+                Some("centre of mass in % MAC")
+            } else {
+                None
+            };
+            if let Some(what) = what {
+                return Err(SummaryError::NotFinite {
+                    what,
+                    blame: Blame::Parts(Contribution::Mass),
+                });
+            }
+            Some(placed)
+        }
+    };
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,

@@ -196,6 +196,11 @@ impl Ctx<'_> {
         // whose corners all lie on one line has an area of rounding only.
         let (lo, hi) = bounds(p);
         let box_area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+        if !(area.is_finite() && box_area.is_finite()) {
+            return Err(self
+                .err(all, "`points` spans more than f64 can measure: its area overflows")
+                .help("give the envelope's corners in the file's units, within a sane range"));
+        }
         if !(area.abs() > 1e-12 * box_area) {
             return Err(self
                 .err(
