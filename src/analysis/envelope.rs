@@ -20,7 +20,7 @@
 pub mod sequences;
 
 use crate::model::envelope::{Envelope, Mac};
-use crate::output::format::{DisplayUnits, fmt_num};
+use crate::units::{Dim, FileUnits};
 
 /// Intervals of the affinity probe: the model is evaluated at t = k /
 /// `PROBES`, k = 0 … `PROBES`. NOTE: a polynomial of degree ≤ 16 in t that
@@ -343,18 +343,63 @@ pub fn check_path<E>(
     Ok((check_samples(poly, &samples), curve))
 }
 
+/// The file's units as messages show values in them: SI per unit, and
+/// the symbols.
+#[derive(Debug, Clone, Copy)]
+pub struct Shown {
+    pub length: f64,
+    pub mass: f64,
+    pub length_label: &'static str,
+    pub mass_label: &'static str,
+}
+
+impl Shown {
+    pub fn of(u: FileUnits) -> Shown {
+        Shown {
+            length: u.factor(Dim::LENGTH).value(),
+            mass: u.factor(Dim::MASS).value(),
+            length_label: u.length,
+            mass_label: u.mass,
+        }
+    }
+}
+
+/// `x` to six significant digits, trailing zeros dropped, as the tables
+/// show numbers (here, below `output`, in check's messages).
+pub fn num(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{}", if x == 0.0 { 0.0 } else { x });
+    }
+    let trim = |s: &str| -> String {
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            s.to_string()
+        }
+    };
+    let e = x.abs().log10().floor();
+    if (-5.0..15.0).contains(&e) {
+        let places = (5.0 - e).max(0.0) as usize;
+        trim(&format!("{x:.places$}"))
+    } else {
+        let s = format!("{x:.5e}");
+        let (m, ex) = s.split_once('e').unwrap_or((&s, "0"));
+        format!("{}e{ex}", trim(m))
+    }
+}
+
 /// An edge as a message names it: its corners, 1-based, and where they
 /// are, in the file's units.
-pub fn edge_name(env: &Envelope, e: usize, u: &DisplayUnits) -> String {
+pub fn edge_name(env: &Envelope, e: usize, u: &Shown) -> String {
     let n = env.points.len();
     let corner = |i: usize| {
         let [x, m] = env.points[i];
         format!(
             "corner {} ({} {}, {} {})",
             i + 1,
-            fmt_num(x / u.length),
+            num(x / u.length),
             u.length_label,
-            fmt_num(m / u.mass),
+            num(m / u.mass),
             u.mass_label
         )
     };
@@ -363,7 +408,7 @@ pub fn edge_name(env: &Envelope, e: usize, u: &DisplayUnits) -> String {
 
 /// Why a point is outside (`None` inside): `who` is `base` or the case's
 /// name, as the message shows it.
-pub fn point_failure(env: &Envelope, who: &str, p: &Placed, u: &DisplayUnits) -> Option<String> {
+pub fn point_failure(env: &Envelope, who: &str, p: &Placed, u: &Shown) -> Option<String> {
     if p.inside() {
         return None;
     }
@@ -378,30 +423,30 @@ fn outside(
     m: f64,
     edge: Option<usize>,
     margin: Option<f64>,
-    u: &DisplayUnits,
+    u: &Shown,
 ) -> String {
     const AXES: [&str; 3] = ["x", "y", "z"];
     let at = format!(
         "{} = {} {} at {} {}",
         AXES[env.axis],
-        fmt_num(x / u.length),
+        num(x / u.length),
         u.length_label,
-        fmt_num(m / u.mass),
+        num(m / u.mass),
         u.mass_label
     );
     match (edge, margin) {
         (Some(e), Some(d)) => format!(
             "{who}: the centre of mass {at} is outside `[envelope]`, past {}: margin {} {}",
             edge_name(env, e, u),
-            fmt_num(d / u.length),
+            num(d / u.length),
             u.length_label
         ),
         _ => {
             let (lo, hi) = crate::model::envelope::bounds(&env.points);
             format!(
                 "{who}: the centre of mass {at} is outside `[envelope]`: the mass is outside its range of masses, {} to {} {} (no margin)",
-                fmt_num(lo[1] / u.mass),
-                fmt_num(hi[1] / u.mass),
+                num(lo[1] / u.mass),
+                num(hi[1] / u.mass),
                 u.mass_label
             )
         }
@@ -416,7 +461,7 @@ pub fn path_failure(
     from: &str,
     to: &str,
     c: &PathCheck,
-    u: &DisplayUnits,
+    u: &Shown,
 ) -> Option<String> {
     const AXES: [&str; 3] = ["x", "y", "z"];
     let exit = c.exit?;
@@ -428,7 +473,7 @@ pub fn path_failure(
     };
     let worst = c.worst.map_or(
         "none: some of it is outside the envelope's range of masses".to_string(),
-        |w| format!("{} {}", fmt_num(w / u.length), u.length_label),
+        |w| format!("{} {}", num(w / u.length), u.length_label),
     );
     let across = match exit.edge {
         Some(e) => format!(", across {}", edge_name(env, e, u)),
@@ -437,14 +482,14 @@ pub fn path_failure(
     let place = if exit.t == 0.0 {
         "starts outside `[envelope]`".to_string()
     } else {
-        format!("leaves `[envelope]` {} of the way", fmt_num(exit.t))
+        format!("leaves `[envelope]` {} of the way", num(exit.t))
     };
     Some(format!(
         "sequence {from} → {to}: the path {place}, at {} = {} {} and {} {}{across}; least margin on the path {worst} ({how})",
         AXES[env.axis],
-        fmt_num(x / u.length),
+        num(x / u.length),
         u.length_label,
-        fmt_num(m / u.mass),
+        num(m / u.mass),
         u.mass_label,
     ))
 }
@@ -469,6 +514,14 @@ mod tests {
     #[test]
     fn a_mass_above_the_polygon_has_no_margin() {
         assert_eq!(margin(&SQUARE, 1.0, 3.0), None);
+    }
+
+    #[test]
+    fn numbers_show_six_significant_digits_without_trailing_zeros() {
+        assert_eq!(num(-0.10000000000000009), "-0.1");
+        assert_eq!(num(2.309134615), "2.30913");
+        assert_eq!(num(1100.0), "1100");
+        assert_eq!(num(1.865e-14), "1.865e-14");
     }
 
     #[test]

@@ -198,7 +198,10 @@ impl Ctx<'_> {
         let box_area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
         if !(area.is_finite() && box_area.is_finite()) {
             return Err(self
-                .err(all, "`points` spans more than f64 can measure: its area overflows")
+                .err(
+                    all,
+                    "`points` spans more than f64 can measure: its area overflows",
+                )
                 .help("give the envelope's corners in the file's units, within a sane range"));
         }
         if !(area.abs() > 1e-12 * box_area) {

@@ -2,15 +2,13 @@
 //! the toml crate's own lexer and event parser (`toml_parser`), driven by
 //! the key registry (`keys::part_keys!`, each shape's own keys).
 //!
-//! NOTE: `toml::from_str` parses the whole document into a generic tree
-//! (`toml::de::DeTable`: every key, value and span as a node, ~22 bytes of
-//! memory per input byte with the lexer's tokens and the parser's events)
-//! and only then deserializes from it. Here the parser's events build a
-//! small tree of `Node`s for one part at a time, converted to a `RawPart`
-//! as the part ends (and handed out at once when streaming), and one for
-//! the file's own tables (`units`, `[analysis]`, `[expect]`,
-//! `[materials]`, `[params]`, `[growth]`, `[budget]`: small), converted at
-//! the end (`tables`). Only the result, and the tokens of a chunk of whole
+//! NOTE: `toml::from_str` parses the whole document into a generic tree (`toml::de::DeTable`:
+//! every key, value and span as a node, ~22 bytes of memory per input byte with the lexer's
+//! tokens and the parser's events) and only then deserializes from it. Here the parser's events
+//! build a small tree of `Node`s for one part at a time, converted to a `RawPart` as the part
+//! ends (and handed out at once when streaming), and one for the file's own tables (`units`,
+//! `[analysis]`, `[expect]`, `[materials]`, `[params]`, `[growth]`, `[budget]`, `[envelope]`,
+//! `[[case]]`: small), converted at the end (`tables`). Only the result, and the tokens of a chunk of whole
 //! tables (`CHUNK`), are ever in memory. It reads everything a valid part
 //! file holds: includes and their `params`, `array`, `mirror`, dotted keys,
 //! sub-tables (`[part.rotation]`, `[materials.steel]`), booleans,

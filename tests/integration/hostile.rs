@@ -932,7 +932,10 @@ fn envelope(l: u32) -> BoxedStrategy<String> {
         prop::sample::select(vec!["x", "y", "z", "w"]),
         points,
         prop::option::weighted(0.3, (value(l), value(l))),
-        prop::option::weighted(0.2, prop::sample::select(vec!["[[\"a\", \"b\"]]", "[[]]", "[]"])),
+        prop::option::weighted(
+            0.2,
+            prop::sample::select(vec!["[[\"a\", \"b\"]]", "[[]]", "[]"]),
+        ),
     )
         .prop_map(|(axis, points, mac, sequences)| {
             let mut lines = vec![

@@ -16,7 +16,6 @@ use crate::diag::{Diagnostic, shorten};
 use crate::expr::Value;
 use crate::model::Model;
 use crate::model::case::{Case, value_like};
-use crate::output::format::DisplayUnits;
 
 /// One leg of a sequence: the cases it joins, how it was checked, and
 /// its points (coordinate m, mass kg) for drawing.
@@ -90,7 +89,7 @@ fn leg(
                     "on the path from case `{}` to case `{}`, {} of the way",
                     shorten(&a.name),
                     shorten(&b.name),
-                    crate::output::format::fmt_num(t)
+                    super::num(t)
                 ))
             })?;
         let s = &at.summary;
@@ -118,7 +117,7 @@ pub fn add_to(r: &mut FileResult, loaded: &Loaded, settings: &Settings) -> Resul
     let Some(env) = &loaded.model.envelope else {
         return Ok(());
     };
-    let u = DisplayUnits::of(loaded.model.units);
+    let u = super::Shown::of(loaded.model.units);
     let (_, each) = cases::each(loaded.source.clone(), loaded.model.clone(), settings)?;
     let mut points: Vec<(String, String, &Summary)> =
         vec![("base".into(), "base".into(), &loaded.summary)];
