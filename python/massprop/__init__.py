@@ -181,6 +181,8 @@ OPTIONS: dict[str, tuple[str, Converter, tuple[str, ...]]] = {
     "axes": ("--axes", _text, BOTH),
     "base_dir": ("--base-dir", _path, BOTH),
     "bless": ("--bless", _switch, (CHECK,)),
+    "case": ("--case", _text, (REPORT,)),
+    "cases": ("--cases", _switch, (REPORT,)),
     "engine": ("--engine", _repeated(_text), (CHECK,)),
     "exclude": ("--exclude", _repeated(_text), (CHECK,)),
     "hidden": ("--hidden", _switch, (CHECK,)),

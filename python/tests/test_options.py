@@ -93,6 +93,8 @@ CASES = {
         ["--omega", "0,0,1", "--velocity", "0,0,3 m/s"],
         ["shapes/bent-plate.toml"],
     ),
+    "case": Case("report", {"case": "driver"}, ["--case", "driver"], ["shapes/car.toml"]),
+    "cases": Case("report", {"cases": True}, ["--cases"], ["shapes/car.toml"]),
     "samples and seed": Case(
         "report",
         {"uncertainty": "montecarlo", "samples": 300, "seed": 7},
@@ -166,6 +168,8 @@ def test_the_option_changes_the_result_in_the_cases_that_show_it(
         "axes",
         "products",
         "only",
+        "case",
+        "cases",
         "set a quantity",
         "uncertainty",
         "check exclude",

@@ -23,8 +23,8 @@
 
 mod digits;
 
+use super::Settings;
 use super::summary::Summary;
-use super::{Loaded, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::model::Model;
 use crate::model::expect::{Bound, Check, Target, Tol};
@@ -92,15 +92,34 @@ fn bless_document(
     // Entries with `value` but no `tol` get a placeholder first, so that
     // the file parses as a model; their tolerance is computed from the
     // value written in its place (`write_values`).
-    let untoleranced = add_placeholder_tols(doc);
+    let cases = doc.get("case").map_or(0, |c| match c {
+        Item::ArrayOfTables(a) => a.len(),
+        Item::Value(Value::Array(a)) => a.len(),
+        Item::None | Item::Value(_) | Item::Table(_) => 0,
+    });
+    let mut untoleranced = add_placeholder_tols(doc, None);
+    // Each case's own `expect` too: its entries are written with its
+    // body's values (`--bless` writes into the table it reads).
+    for i in 0..cases {
+        untoleranced.extend(add_placeholder_tols(doc, Some(i)));
+    }
     let staged = Source::new(source.name.clone(), doc.to_string());
-    let Loaded { model, summary, .. } = super::load_source(staged, settings)?;
+    let loaded = super::load_source(staged, settings)?;
     let mut changed = !untoleranced.is_empty();
     if doc.get("expect").is_none() {
-        add_default_expect(doc, &summary);
+        add_default_expect(doc, &loaded.summary);
         changed = true;
     } else {
-        changed |= write_values(doc, &model.expect, &summary, &untoleranced);
+        let (checks, s) = (&loaded.model.expect, &loaded.summary);
+        changed |= write_values(doc, None, checks, s, &untoleranced);
+    }
+    for (i, case) in loaded.model.cases.iter().enumerate() {
+        if case.model.expect.is_empty() {
+            continue;
+        }
+        let one = super::cases::load_of(&loaded, case, settings)?;
+        let checks = &case.model.expect;
+        changed |= write_values(doc, Some(i), checks, &one.summary, &untoleranced);
     }
     Ok(changed)
 }
@@ -200,18 +219,30 @@ impl Endings {
 /// `["center_of_mass", "z"]` for a component.
 type EntryPath = Vec<String>;
 
+/// Which expectations: the file's `[expect]` (`None`), or the `expect` of
+/// its `i`-th `[[case]]`.
+type At = Option<usize>;
+
+/// The expectations' table at `at`, if the file has it.
+fn expect_mut(doc: &mut DocumentMut, at: At) -> Option<&mut Item> {
+    match at {
+        None => doc.get_mut("expect"),
+        Some(i) => doc.get_mut("case")?.get_mut(i)?.get_mut("expect"),
+    }
+}
+
 /// Give every entry (and component entry) with a `value` but no `tol` a
 /// placeholder tolerance, so that the file parses as a model; returns
 /// their paths, whose tolerance `write_values` then computes from the
 /// value it writes.
-fn add_placeholder_tols(doc: &mut DocumentMut) -> Vec<EntryPath> {
+fn add_placeholder_tols(doc: &mut DocumentMut, at: At) -> Vec<(At, EntryPath)> {
     let mut added = Vec::new();
-    if let Some(t) = doc.get_mut("expect").and_then(Item::as_table_like_mut) {
+    if let Some(t) = expect_mut(doc, at).and_then(Item::as_table_like_mut) {
         for (key, entry) in t.iter_mut() {
             placeholder_tols(entry, &mut vec![key.get().to_string()], &mut added);
         }
     }
-    added
+    added.into_iter().map(|p| (at, p)).collect()
 }
 
 /// `add_placeholder_tols` of one entry (at `path`) and its components.
@@ -346,9 +377,10 @@ fn round1(x: f64) -> f64 {
 /// each of `untoleranced` its default tolerance, from the value written.
 fn write_values(
     doc: &mut DocumentMut,
+    at: At,
     checks: &[Check],
     s: &Summary,
-    untoleranced: &[EntryPath],
+    untoleranced: &[(At, EntryPath)],
 ) -> bool {
     let mut changed = false;
     for group in entries(checks).values() {
@@ -364,14 +396,14 @@ fn write_values(
         }
         let tol = untoleranced
             .iter()
-            .any(|p| p.iter().map(String::as_str).eq(path.iter().copied()))
+            .any(|(a, p)| *a == at && p.iter().map(String::as_str).eq(path.iter().copied()))
             .then(|| default_tol(&measured, first.target, first.dim, scale, s));
         let within = match &tol {
             Some(t) => tolerances_of(t, &si, scale, degrees(first.target)),
             None => tolerances(group, &si),
         };
         let value = |old: Option<&Value>| digits::shaped(old, &si, &within, first.dim, scale);
-        changed |= write_entry(doc, &path, value, tol);
+        changed |= write_entry(doc, at, &path, value, tol);
     }
     changed
 }
@@ -470,11 +502,12 @@ fn measured(group: &[&Check], s: &Summary, scale: f64) -> Vec<f64> {
 /// entry changed.
 fn write_entry(
     doc: &mut DocumentMut,
+    at: At,
     path: &[&str],
     value: impl FnOnce(Option<&Value>) -> Value,
     tol: Option<Value>,
 ) -> bool {
-    let Some(t) = entry_mut(doc, path).and_then(Item::as_table_like_mut) else {
+    let Some(t) = entry_mut(doc, at, path).and_then(Item::as_table_like_mut) else {
         return false;
     };
     let Some(old) = t.get_mut("value") else {
@@ -501,8 +534,8 @@ fn write_entry(
 }
 
 /// The `[expect]` entry at `path` (`["center_of_mass", "z"]`).
-fn entry_mut<'a>(doc: &'a mut DocumentMut, path: &[&str]) -> Option<&'a mut Item> {
-    let mut item = doc.get_mut("expect")?;
+fn entry_mut<'a>(doc: &'a mut DocumentMut, at: At, path: &[&str]) -> Option<&'a mut Item> {
+    let mut item = expect_mut(doc, at)?;
     for key in path {
         item = item.get_mut(*key)?;
     }

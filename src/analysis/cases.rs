@@ -57,6 +57,13 @@ fn unknown(model: &Model, name: &str) -> Diagnostic {
     ))
 }
 
+/// `case` of the file `base` loaded, through the pipeline as `base` was
+/// (its errors say which case).
+pub fn load_of(base: &Loaded, case: &Case, settings: &Settings) -> Result<Loaded, Diagnostic> {
+    load_model(base.source.clone(), as_file(&base.model, case), settings)
+        .map_err(|d| d.note(format!("in case `{}`", shorten(&case.name))))
+}
+
 /// The file's case `name`, run through the pipeline as a plain report.
 pub fn load_case(source: Source, settings: &Settings, name: &str) -> Result<Loaded, Diagnostic> {
     let model = Model::parse_with(&source, &settings.includes)?;
@@ -80,12 +87,10 @@ pub fn each(
     settings: &Settings,
 ) -> Result<(Loaded, Vec<(String, Loaded)>), Diagnostic> {
     let mut cases = Vec::with_capacity(model.cases.len());
-    for case in &model.cases {
-        let loaded = load_model(source.clone(), as_file(&model, case), settings)
-            .map_err(|d| d.note(format!("in case `{}`", shorten(&case.name))))?;
-        cases.push((case.name.clone(), loaded));
-    }
     let base = load_model(source, model, settings)?;
+    for case in &base.model.cases {
+        cases.push((case.name.clone(), load_of(&base, case, settings)?));
+    }
     Ok((base, cases))
 }
 

@@ -24,6 +24,10 @@ pub fn limits(b: &Bound) -> (f64, f64) {
 
 #[derive(Debug, Clone, Serialize)]
 pub struct CheckResult {
+    /// The `[[case]]` whose `expect` this is (none: the file's own
+    /// `[expect]`, the base body's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub case: Option<String>,
     pub quantity: String,
     pub line: usize,
     pub column: usize,
@@ -77,6 +81,15 @@ pub enum Against {
 }
 
 impl CheckResult {
+    /// Its name in a list of checks: the quantity, after its case's name
+    /// (`ferry: mass`).
+    pub fn label(&self) -> String {
+        match &self.case {
+            Some(case) => format!("{case}: {}", self.quantity),
+            None => self.quantity.clone(),
+        }
+    }
+
     /// The entry's place in its file.
     pub fn span(&self) -> Span {
         Span {
@@ -169,6 +182,7 @@ pub fn evaluate(source: &Source, s: &Summary, c: &Check) -> CheckResult {
         Bound::Axes { tol, .. } => (None, None, None, None, Some(tol)),
     };
     CheckResult {
+        case: None,
         quantity: c.name.clone(),
         line,
         column,
@@ -340,6 +354,33 @@ pub fn check_loaded(loaded: &Loaded) -> FileResult {
         robot: None,
         format: None,
     }
+}
+
+/// Each `[[case]]`'s own `expect` of a file checked (`check_loaded`),
+/// its body summarized with the file's settings: each result names its
+/// case, in file order after the file's own.
+pub fn check_cases(
+    loaded: &Loaded,
+    settings: &super::Settings,
+    r: &mut FileResult,
+) -> Result<(), Diagnostic> {
+    for case in &loaded.model.cases {
+        if case.model.expect.is_empty() {
+            continue;
+        }
+        let one = super::cases::load_of(loaded, case, settings)?;
+        for c in &case.model.expect {
+            let result = CheckResult {
+                case: Some(case.name.clone()),
+                ..evaluate(&loaded.source, &one.summary, c)
+            };
+            if !result.pass && r.status == Status::Ok {
+                r.status = Status::Failed;
+            }
+            r.checks.push(result);
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -45,6 +45,7 @@ pub fn text() -> String {
 pub fn schema() -> Value {
     let mut defs = definitions();
     defs.insert("Part".into(), part());
+    defs.insert("Case".into(), case());
     json!({
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "$id": ID,
@@ -73,8 +74,31 @@ pub fn schema() -> Value {
             ),
             "budget": doc(r("Budget"), "`[budget]`: the not-to-exceed limit of the predicted mass."),
             "envelope": doc(r("Envelope"), "`[envelope]`: the loading envelope (docs/cases.md): a polygon in (centre-of-mass coordinate, mass) the base and every case must lie in."),
+            "case": doc(
+                json!({ "type": "array", "items": r("Case") }),
+                "`[[case]]`: the body's loading cases, each the file in another state (docs/cases.md).",
+            ),
         },
         "$defs": defs,
+    })
+}
+
+/// `[[case]]` (`model::case`): its name, the `[params]` values it
+/// replaces, what it takes out and its own `[expect]`.
+fn case() -> Value {
+    let names = |d: &str| doc(array(json!({ "type": "string" }), None), d);
+    json!({
+        "description": "a loading case: the file with other parameter values and without some parts",
+        "type": "object",
+        "additionalProperties": false,
+        "required": ["name"],
+        "properties": {
+            "name": doc(json!({ "type": "string" }), "the case's name, unique in the file (`report --case NAME`)"),
+            "params": map_of(r("PlainNumber"), "values in place of the file's `[params]` definitions"),
+            "without": names("parts and sub-assemblies absent in this case, named as `--only` names them (`cargo / box[2]`)"),
+            "without_groups": doc(array(r("GroupPath"), None), "`group` paths absent in this case, with their sub-groups"),
+            "expect": r("Expect"),
+        },
     })
 }
 

@@ -264,6 +264,14 @@ fn message_in(path: &str, c: &CheckResult, e: anstyle::Style) -> String {
 /// What is wrong with a failed expectation: `NAME VALUE is outside …`,
 /// values in the file's units.
 pub fn failure(c: &CheckResult) -> String {
+    match &c.case {
+        Some(case) => format!("case `{case}`: {}", failure_of(c)),
+        None => failure_of(c),
+    }
+}
+
+/// `failure`, its case aside.
+fn failure_of(c: &CheckResult) -> String {
     let units = DisplayUnits::of(c.file_units);
     let show = |x: f64| units.show(x, c.dim);
     let m = c.measured;

@@ -130,7 +130,7 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
                 "error",
                 &r.path,
                 Some(span),
-                &visible(&c.quantity),
+                &visible(&c.label()),
                 &text,
             ));
         }
@@ -235,7 +235,7 @@ pub fn junit(results: &[FileResult]) -> String {
                     &visible(&message(&r.path, c)),
                 )
             };
-            suite.add_test_case(case(&visible(&c.quantity), status));
+            suite.add_test_case(case(&visible(&c.label()), status));
         }
         for v in &r.validity {
             let status = match &v.failure {

@@ -526,3 +526,182 @@ fn an_unknown_case_on_the_command_line_names_the_flag_and_suggests() {
         "{e}"
     );
 }
+
+/// `LOADED` with an expectation of the `ferry` case that fails: 200 kg
+/// of fuel and no pilot weigh 600 + 200 + 30 = 830 kg, not 900.
+fn failing() -> String {
+    format!("{LOADED}{CASES}").replace(
+        "without = [\"pilot\"]\n",
+        "without = [\"pilot\"]\nexpect = { mass = { value = 900, tol = 1 } }\n",
+    )
+}
+
+#[test]
+fn check_names_the_case_in_every_format() {
+    let file = failing();
+    let path = crate::common::scratch_files("cases", "check-formats", &[("f.toml", &file)]);
+    let p = path.to_str().unwrap();
+    let place = at(&file, "{ value = 900").replace(": error:", "");
+    for format in ["table", "json", "github", "junit", "sarif"] {
+        let out = massprop(&["check", "--format", format, p]);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(1), "{format}: {text}");
+        assert!(
+            text.contains("case `ferry`: mass 830 kg is outside 900 kg"),
+            "{format}: {text}"
+        );
+        if format == "table" {
+            assert!(text.contains(&format!("{p}{place}")), "{text}");
+        }
+    }
+    let out = massprop(&["check", "--format", "json", p]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let checks = v["files"][0]["checks"].as_array().unwrap();
+    assert_eq!(checks.len(), 1);
+    assert_eq!(checks[0]["case"], "ferry");
+    assert_eq!(checks[0]["measured"], 830.0);
+    let junit =
+        String::from_utf8_lossy(&massprop(&["check", "--format", "junit", p]).stdout).to_string();
+    assert!(junit.contains("name=\"ferry: mass\""), "{junit}");
+}
+
+#[test]
+fn check_holds_the_files_own_expect_against_the_base_not_a_case() {
+    // The base weighs 600 + 80 + 120 + 30 = 830 kg too: the file's own
+    // `[expect]` of 830 passes while the case's 900 fails.
+    let file = format!(
+        "{}\n[expect]\nmass = {{ value = 830, tol = 1e-9 }}\n",
+        failing()
+    );
+    let path = crate::common::scratch_files("cases", "check-base", &[("f.toml", &file)]);
+    let out = massprop(&["check", "--format", "json", path.to_str().unwrap()]);
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let checks = v["files"][0]["checks"].as_array().unwrap();
+    let pass: Vec<(Option<&str>, bool)> = checks
+        .iter()
+        .map(|c| (c["case"].as_str(), c["pass"].as_bool().unwrap()))
+        .collect();
+    assert_eq!(pass, [(None, true), (Some("ferry"), false)]);
+}
+
+#[test]
+fn bless_writes_each_cases_expect_into_its_own_table() {
+    let file = failing();
+    let path = crate::common::scratch_files("cases", "bless", &[("f.toml", &file)]);
+    let p = path.to_str().unwrap();
+    let out = massprop(&["check", "--bless", p]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let blessed = std::fs::read_to_string(&path).unwrap();
+    // The case's inline table has the case's mass; the file gained its
+    // own `[expect]` (it had none) with the base's.
+    assert!(
+        blessed.contains("expect = { mass = { value = 830"),
+        "{blessed}"
+    );
+    let doc: toml::Table = blessed.parse().unwrap();
+    let case = &doc["case"].as_array().unwrap()[0];
+    assert_eq!(case["expect"]["mass"]["value"].as_float(), Some(830.0));
+    assert_eq!(doc["expect"]["mass"]["value"].as_float(), Some(830.0));
+    assert_eq!(massprop(&["check", p]).status.code(), Some(0));
+}
+
+#[test]
+fn a_case_with_its_own_values_passed_in_is_that_case() {
+    use massprop::analysis::cases;
+    let file = format!("{LOADED}{CASES}");
+    let source = massprop::diag::Source::new("f.toml", file.clone());
+    let settings = massprop::analysis::Settings::default();
+    let model = massprop::model::Model::parse(&source).unwrap();
+    let ferry = &model.cases[0];
+    let names: Vec<&str> = ferry.params.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["arm", "fuel"]);
+    assert_eq!(ferry.params[1].si, 200.0);
+    // Half way from the base's 120 kg of fuel to the ferry's 200 kg.
+    let half = massprop::model::case::value_like(&ferry.params[1].value, 160.0);
+    let values = [("fuel".to_string(), half)];
+    let mid = cases::load_with(source.clone(), &settings, Some("ferry"), &values).unwrap();
+    assert_eq!(mid.summary.mass, 600.0 + 160.0 + 30.0);
+    let same = [
+        ("fuel".to_string(), ferry.params[1].value),
+        ("arm".to_string(), ferry.params[0].value),
+    ];
+    let again = cases::load_with(source.clone(), &settings, Some("ferry"), &same).unwrap();
+    let case = cases::load_case(source, &settings, "ferry").unwrap();
+    assert_eq!(again.summary.center_of_mass, case.summary.center_of_mass);
+    assert_eq!(again.summary.inertia_com, case.summary.inertia_com);
+}
+
+/// A seat (a 70 kg point at its origin, group `crew`) and a crate of
+/// cargo, included; the seat twice by an array.
+const SEAT: &str = "[[part]]\nname = \"occupant\"\nshape = \"point\"\nmass = 70\ncenter = [0, 0, 0]\ngroup = \"crew\"\n[[part]]\nname = \"cushion\"\nshape = \"point\"\nmass = 5\ncenter = [0, 0, 0]\n";
+
+fn cabin(case: &str) -> String {
+    format!(
+        "[[part]]\nname = \"floor\"\nshape = \"point\"\nmass = 100\ncenter = [0, 0, 0]\n[[part]]\nname = \"seat\"\ninclude = \"seat.toml\"\norigin = [1, 0, 0]\narray = {{ count = 2, step = [1, 0, 0] }}\ngroup = \"cabin\"\n[[case]]\n{case}\n"
+    )
+}
+
+#[test]
+fn a_case_without_one_copy_of_a_sub_assembly_keeps_the_other() {
+    let file = cabin("name = \"one seat\"\nwithout = [\"seat[1]\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-copy",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "one seat"]);
+    // The floor at 0 and the first seat's 75 kg at x = 1: by hand.
+    assert_eq!(num(&v["mass"]), 175.0);
+    within(&v, "center_of_mass", &[75.0 / 175.0, 0.0, 0.0]);
+}
+
+#[test]
+fn a_case_without_a_group_reaches_into_a_sub_assembly() {
+    // `cabin/crew`: each seat's occupant (its group under the include's).
+    let file = cabin("name = \"empty\"\nwithout_groups = [\"cabin/crew\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-group",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "empty"]);
+    // The floor and two 5 kg cushions at x = 1 and 2.
+    assert_eq!(num(&v["mass"]), 110.0);
+    within(&v, "center_of_mass", &[15.0 / 110.0, 0.0, 0.0]);
+    // A path inside a copy of a sub-assembly, by name.
+    let file = cabin("name = \"x\"\nwithout = [\"seat[0] / occupant\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-path",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let (v, _) = report_json_file(&path, &["--case", "x"]);
+    assert_eq!(num(&v["mass"]), 180.0);
+    within(
+        &v,
+        "center_of_mass",
+        &[(5.0 + 75.0 * 2.0) / 180.0, 0.0, 0.0],
+    );
+}
+
+#[test]
+fn an_ambiguous_name_in_without_asks_for_the_path() {
+    let file = cabin("name = \"x\"\nwithout = [\"occupant\"]");
+    let path = crate::common::scratch_files(
+        "cases",
+        "seat-ambiguous",
+        &[("seat.toml", SEAT), ("cabin.toml", &file)],
+    );
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{e}");
+    assert!(
+        e.contains("is ambiguous") && e.contains("`seat[0] / occupant`"),
+        "{e}"
+    );
+}

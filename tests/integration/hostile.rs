@@ -977,8 +977,21 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
         prop::option::weighted(0.1, (value(l), value(l))),
         Just(l),
         prop::option::weighted(0.15, envelope(l)),
+        // `[[case]]`s: a name (twice: refused), a part taken out by a name
+        // that may be none, a parameter the file may not define, an
+        // expectation.
+        prop::option::weighted(
+            0.25,
+            (
+                prop::sample::select(vec!["a", "a", "b c"]),
+                prop::sample::select(vec!["part 1", "part 2", "nope", "part 1[0]", ""]),
+                prop::option::weighted(0.3, value(l)),
+                prop::option::weighted(0.3, value(l)),
+            ),
+        ),
     )
-        .prop_map(|(name, units, material, parts, analysis, expect, axes, l, envelope)| {
+        .prop_map(
+            |(name, units, material, parts, analysis, expect, axes, l, envelope, case)| {
             let mut out = vec![format!("# hostility {l}")];
             if let Some(n) = name {
                 out.push(format!("name = \"{n}\""));
@@ -1009,8 +1022,19 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
             if let Some(e) = envelope {
                 out.push(format!("\n{e}"));
             }
+            if let Some((second, without, param, mass)) = case {
+                out.push("\n[[case]]\nname = \"a\"\nwithout_groups = []".to_string());
+                out.push(format!("\n[[case]]\nname = \"{second}\"\nwithout = [\"{without}\"]"));
+                if let Some(v) = param {
+                    out.push(format!("params = {{ size = {v} }}"));
+                }
+                if let Some(v) = mass {
+                    out.push(format!("[case.expect]\nmass = {{ max = {v} }}"));
+                }
+            }
             out.join("\n") + "\n"
-        })
+            },
+        )
         .boxed()
 }
 
@@ -1638,6 +1662,7 @@ fn fast_path_file_at(l: u32) -> BoxedStrategy<String> {
             prop::option::weighted(0.6, prop::sample::select(NAMES)),
             prop::option::weighted(0.6, units),
             prop::option::weighted(0.4, analysis),
+            prop::option::weighted(0.3, (spelled_quantity(l), any::<bool>())),
         ),
         prop::collection::vec(part_values(l), 1..=4),
         prop::collection::vec(look(), 24),
@@ -1648,7 +1673,7 @@ fn fast_path_file_at(l: u32) -> BoxedStrategy<String> {
         ),
     )
         .prop_map(
-            |((name, units, analysis), parts, looks, (newline, bom, order))| {
+            |((name, units, analysis, case), parts, looks, (newline, bom, order))| {
                 let mut looks = Looks(looks.iter().cycle());
                 let mut top = Vec::new();
                 let mut tables = Vec::new();
@@ -1688,6 +1713,26 @@ fn fast_path_file_at(l: u32) -> BoxedStrategy<String> {
                             let value = array(v, looks.next());
                             t.push(pair(k, &value, looks.next()));
                         }
+                    }
+                    tables.push(t.join("\n"));
+                }
+                // A `[[case]]` (its `expect` a table of its own, or inline).
+                if let Some((q, sub)) = case {
+                    let header = ["[[case]]", "[[ case ]]", "[[\"case\"]] # a case"];
+                    let mut t = vec![header[usize::from(looks.next().key) % 3].to_string()];
+                    t.push(pair("name", "\"full\"", looks.next()));
+                    let names = ["\"pilot\"".to_string(), "'cargo / box[2]'".to_string()];
+                    let without = array(&names, looks.next());
+                    t.push(pair("without", &without, looks.next()));
+                    let params = inline_table(&[("fuel", q.clone())], looks.next());
+                    t.push(pair("params", &params, looks.next()));
+                    let mass = inline_table(&[("value", q), ("tol", "1".into())], looks.next());
+                    if sub {
+                        t.push("[case.expect]".to_string());
+                        t.push(pair("mass", &mass, looks.next()));
+                    } else {
+                        let expect = inline_table(&[("mass", mass)], looks.next());
+                        t.push(pair("expect", &expect, looks.next()));
                     }
                     tables.push(t.join("\n"));
                 }
