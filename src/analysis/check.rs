@@ -148,7 +148,7 @@ impl FileResult {
 /// fails, why.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Validity {
-    pub name: &'static str,
+    pub name: std::borrow::Cow<'static, str>,
     pub failure: Option<String>,
 }
 
@@ -302,8 +302,8 @@ pub fn budget_limit(source: &Source, s: &Summary, limit: &Limit) -> CheckResult 
 pub fn validity(s: &Summary) -> Vec<Validity> {
     let [i1, i2, i3] = s.principal_moments;
     let tol = VALIDITY_RTOL * i3.abs();
-    let check = |name, fails: bool, message: &dyn Fn() -> String| Validity {
-        name,
+    let check = |name: &'static str, fails: bool, message: &dyn Fn() -> String| Validity {
+        name: name.into(),
         failure: fails.then(message),
     };
     vec![

@@ -341,6 +341,7 @@ impl Run<'_> {
         let loaded = source.and_then(|s| super::load_source_reading(s, &self.settings, read))?;
         let mut r = check_loaded(&loaded);
         super::check::check_cases(&loaded, &self.settings, &mut r)?;
+        super::envelope::sequences::add_to(&mut r, &loaded, &self.settings)?;
         stderr.push_str(&warning_lines(
             &loaded.source.name,
             &r.accuracy_warnings,

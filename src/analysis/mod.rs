@@ -16,6 +16,7 @@ pub mod cases;
 pub mod check;
 pub mod check_run;
 pub mod diff;
+pub mod envelope;
 pub mod errors;
 pub mod ideal;
 pub mod link;

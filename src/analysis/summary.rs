@@ -165,6 +165,8 @@ pub struct Summary {
     pub euler_moment: Option<[f64; 3]>,
     /// The static loads on two axles (`[analysis] axles`, `axles`).
     pub axle_loads: Option<super::axles::AxleLoads>,
+    /// The centre of mass against `[envelope]`, if the file gives one.
+    pub envelope: Option<super::envelope::Placed>,
     /// The principal moments with thin plates and slender rods made solid;
     /// present only when a part gives its `thickness` or `diameter`.
     pub idealisation: Option<ideal::Idealisation>,
@@ -469,6 +471,32 @@ fn summarize_in(
             })?)
         }
     };
+    // The envelope: the same coordinate along its axis, against the mass.
+    let envelope = match &model.envelope {
+        None => None,
+        Some(e) => {
+            let row = formed.frame[e.axis];
+            let along = (0..3).map(|j| row[j] * com[j]).sum::<f64>();
+            let placed = super::envelope::place(e, along, mass);
+            let bad = |v: Option<f64>| v.is_some_and(|x| !x.is_finite());
+            // NOTE: a centre of mass far out overflows its distance to an
+            // edge or its % MAC; said, not printed as null.
+            let what = if bad(placed.margin) {
+                Some("envelope margin")
+            } else if bad(placed.mac) {
+                Some("centre of mass in % MAC")
+            } else {
+                None
+            };
+            if let Some(what) = what {
+                return Err(SummaryError::NotFinite {
+                    what,
+                    blame: Blame::Parts(Contribution::Mass),
+                });
+            }
+            Some(placed)
+        }
+    };
     let made_from = std::sync::Arc::new(rows::RowData {
         model: model.clone(),
         factors,
@@ -518,6 +546,7 @@ fn summarize_in(
         alpha: values.triple(Quantity::Alpha),
         euler_moment: values.triple(Quantity::EulerMoment),
         axle_loads,
+        envelope,
         values,
     })
 }

@@ -43,6 +43,13 @@ pub struct RenderArgs {
     #[command(flatten)]
     pub includes: IncludeArgs,
 
+    /// Draw the loading envelope's chart (`[envelope]`) instead of the
+    /// body: the polygon, the base's and each case's centre of mass, the
+    /// sequences' paths; the axis in the file's length unit and in % MAC
+    /// when `mac` is given.
+    #[arg(long, conflicts_with = "view")]
+    pub envelope: bool,
+
     /// A robot description's joint positions, as `report --joints`.
     #[arg(long, value_name = "JOINT=VALUE,…", allow_hyphen_values = true)]
     pub joints: Option<String>,
@@ -80,6 +87,7 @@ impl RenderArgs {
             file: self.file.clone(),
             output: self.output.clone(),
             view: self.view.map(ViewArg::view),
+            envelope: self.envelope,
             settings: Settings {
                 only: self.only.clone(),
                 includes: self.includes.includes(),

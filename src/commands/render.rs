@@ -15,6 +15,8 @@ pub struct Options {
     pub view: Option<View>,
     /// `--only`, `--about`, `--omega`, the includes: as `report`'s.
     pub settings: Settings,
+    /// `--envelope`: the loading envelope's chart instead of the body.
+    pub envelope: bool,
     /// A robot description's `--joints`.
     pub configuration: super::robot::Configuration,
 }
@@ -35,6 +37,11 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         omega: s.omega.map(to_file),
         title,
     };
+    let chart = if o.envelope {
+        Some(envelope_chart(&loaded, &o.settings, &options.title)?)
+    } else {
+        None
+    };
     let read = super::files_of(&loaded);
     let stderr = super::accuracy_warnings(&loaded, terminal.stderr.colour);
     Ok(Outcome {
@@ -42,6 +49,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
             model: loaded.model,
             summary: loaded.summary,
             options,
+            chart,
         })),
         stderr,
         status: 0,
@@ -57,11 +65,46 @@ pub struct Drawing {
     model: crate::model::Model,
     summary: crate::analysis::summary::Summary,
     options: drawing::Options,
+    /// `--envelope`'s chart, made already (it is small).
+    chart: Option<String>,
 }
 
 impl Drawing {
     /// Write the SVG to `w`.
     pub fn write_to(&self, w: &mut dyn std::io::Write) -> std::io::Result<()> {
+        if let Some(chart) = &self.chart {
+            return w.write_all(chart.as_bytes());
+        }
         drawing::write_svg(&self.model, &self.summary, &self.options, w)
     }
+}
+
+/// `--envelope`: the chart of the file's `[envelope]`, with the base's
+/// point; an error without one.
+fn envelope_chart(
+    loaded: &crate::analysis::Loaded,
+    settings: &Settings,
+    title: &str,
+) -> Result<String, Diagnostic> {
+    let (Some(env), Some(base)) = (&loaded.model.envelope, &loaded.summary.envelope) else {
+        return Err(Diagnostic::plain(
+            "`--envelope` needs an `[envelope]` table in the part file, and it has none",
+        )
+        .help("give `[envelope]` with `axis` and `points` (docs/cases.md, \"The envelope\")"));
+    };
+    let (_, cases) =
+        crate::analysis::cases::each(loaded.source.clone(), loaded.model.clone(), settings)?;
+    let mut points = vec![("base".to_string(), *base)];
+    points.extend((cases.iter()).filter_map(|(name, l)| Some((name.clone(), l.summary.envelope?))));
+    let legs = crate::analysis::envelope::sequences::legs(loaded, settings)?;
+    let chart = drawing::envelope::Chart {
+        title,
+        envelope: env,
+        units: crate::output::format::DisplayUnits::of(loaded.model.units),
+        points,
+        paths: (legs.into_iter())
+            .map(|l| (format!("{} → {}", l.from, l.to), l.curve))
+            .collect(),
+    };
+    Ok(drawing::envelope::svg(&chart))
 }

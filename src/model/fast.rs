@@ -2,15 +2,13 @@
 //! the toml crate's own lexer and event parser (`toml_parser`), driven by
 //! the key registry (`keys::part_keys!`, each shape's own keys).
 //!
-//! NOTE: `toml::from_str` parses the whole document into a generic tree
-//! (`toml::de::DeTable`: every key, value and span as a node, ~22 bytes of
-//! memory per input byte with the lexer's tokens and the parser's events)
-//! and only then deserializes from it. Here the parser's events build a
-//! small tree of `Node`s for one part at a time, converted to a `RawPart`
-//! as the part ends (and handed out at once when streaming), and one for
-//! the file's own tables (`units`, `[analysis]`, `[expect]`,
-//! `[materials]`, `[params]`, `[growth]`, `[budget]`: small), converted at
-//! the end (`tables`). Only the result, and the tokens of a chunk of whole
+//! NOTE: `toml::from_str` parses the whole document into a generic tree (`toml::de::DeTable`:
+//! every key, value and span as a node, ~22 bytes of memory per input byte with the lexer's
+//! tokens and the parser's events) and only then deserializes from it. Here the parser's events
+//! build a small tree of `Node`s for one part at a time, converted to a `RawPart` as the part
+//! ends (and handed out at once when streaming), and one for the file's own tables (`units`,
+//! `[analysis]`, `[expect]`, `[materials]`, `[params]`, `[growth]`, `[budget]`, `[envelope]`,
+//! `[[case]]`: small), converted at the end (`tables`). Only the result, and the tokens of a chunk of whole
 //! tables (`CHUNK`), are ever in memory. It reads everything a valid part
 //! file holds: includes and their `params`, `array`, `mirror`, dotted keys,
 //! sub-tables (`[part.rotation]`, `[materials.steel]`), booleans,
@@ -377,6 +375,7 @@ impl<'i> Builder<'i> {
             params: None,
             growth: None,
             budget: None,
+            envelope: None,
             case: None,
         };
         for (k, ks, v) in std::mem::take(&mut self.root) {
@@ -573,6 +572,7 @@ fn root_value(raw: &mut RawFile, k: &str, ks: &Range<usize>, v: Node<'_>) -> Rea
         "params" => set(&mut raw.params, tables::params(v)?, ks),
         "growth" => set(&mut raw.growth, tables::growth(v)?, ks),
         "budget" => set(&mut raw.budget, tables::budget(v)?, ks),
+        "envelope" => set(&mut raw.envelope, tables::envelope(v)?, ks),
         "case" => set(&mut raw.case, cases::cases(v)?, ks),
         // `part = [{ .. }, ..]`: the parts as an array of inline tables
         // (not beside `[[part]]`: TOML refuses the key then). Kept, not
@@ -610,6 +610,7 @@ pub(in crate::model) const ROOT_KEYS: &[&str] = &[
     "params",
     "growth",
     "budget",
+    "envelope",
     "case",
 ];
 

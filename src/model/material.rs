@@ -33,7 +33,8 @@ impl super::Model {
             && raw.analysis.is_none()
             && raw.expect.is_none()
             && raw.growth.is_none()
-            && raw.budget.is_none();
+            && raw.budget.is_none()
+            && raw.envelope.is_none();
         let Some(table) = raw.materials.as_ref().filter(|_| only_materials) else {
             return Ok(None);
         };

@@ -15,6 +15,7 @@ pub mod budget;
 pub mod case;
 mod copies;
 mod ctx;
+pub mod envelope;
 pub mod expect;
 pub mod fast;
 pub mod frame;
@@ -81,6 +82,8 @@ pub struct Model {
     pub materials: std::collections::BTreeMap<String, f64>,
     /// `[budget]`'s limit of the predicted mass, if given.
     pub budget: Option<budget::Limit>,
+    /// `[envelope]`, if given (the file's own; an include's is not read).
+    pub envelope: Option<envelope::Envelope>,
     /// Every file this one includes, at any depth, by its canonical path
     /// (so that `-o` can refuse to write onto any of them).
     pub included: Vec<std::path::PathBuf>,
@@ -201,6 +204,7 @@ impl Model {
             has_real_sizes: false,
             materials: Default::default(),
             budget: None,
+            envelope: None,
             included: Vec::new(),
             texts_read: 0,
             sources: Vec::new(),
@@ -268,6 +272,7 @@ impl Model {
         let included = files.included();
         read.extend(included.iter().cloned());
         let mut model = model?;
+        envelope::check_sequences(source, &model)?;
         model.included = included;
         model.texts_read = reads;
         model.mesh_warnings = mesh_warnings;
@@ -513,6 +518,9 @@ impl Model {
             .as_ref()
             .map(|b| ctx.budget(&rec, b))
             .transpose()?;
+        let envelope = (raw.envelope.as_ref())
+            .map(|e| ctx.envelope(&rec, e))
+            .transpose()?;
         Ok(Model {
             group_depth: budget::group_depth(&items),
             name: raw.name.as_ref().map(|n| n.get_ref().clone()),
@@ -529,6 +537,7 @@ impl Model {
                 .collect(),
             has_real_sizes,
             budget,
+            envelope,
             // Filled in by `parse` for the file it reads.
             included: Vec::new(),
             texts_read: 0,

@@ -153,6 +153,7 @@ impl Model {
             expect: self.expect.clone(),
             materials: self.materials.clone(),
             budget: self.budget.clone(),
+            envelope: self.envelope.clone(),
             included: self.included.clone(),
             units_given: self.units_given,
             ..Model::empty(self.units)

@@ -33,8 +33,30 @@ pub struct RawFile {
     pub growth: Option<Growth>,
     /// `[budget]`: the not-to-exceed limit of the predicted mass.
     pub budget: Option<Spanned<RawBudget>>,
+    /// `[envelope]`: the loading envelope (`model::envelope`).
+    pub envelope: Option<Spanned<RawEnvelope>>,
     /// `[[case]]`: the body's loading cases, in file order (`model::case`).
     pub case: Option<Spanned<Vec<Spanned<RawCase>>>>,
+}
+
+/// `[envelope]`: the axis, the polygon's `points` (`[x, mass]` pairs), the
+/// optional `mac` and the `sequences` of case names.
+#[derive(Debug, Default)]
+pub struct RawEnvelope {
+    pub axis: Option<Spanned<String>>,
+    pub points: Option<Spanned<Vec<Vector>>>,
+    pub mac: Option<Spanned<RawMac>>,
+    pub sequences: Option<Spanned<Vec<Names>>>,
+}
+
+/// An array of names, e.g. one of `sequences`.
+pub type Names = Spanned<Vec<Spanned<String>>>;
+
+/// `[envelope] mac = { leading_edge, length }`.
+#[derive(Debug, Default)]
+pub struct RawMac {
+    pub leading_edge: Option<Spanned<Quantity>>,
+    pub length: Option<Spanned<Quantity>>,
 }
 
 /// One `[[case]]`: the file in another state (`model::case`).

@@ -73,6 +73,7 @@ pub fn schema() -> Value {
                 "`[growth]`: maturity name → mass growth allowance, a percentage\nstring (`estimated = \"15 %\"`; `model::budget`).",
             ),
             "budget": doc(r("Budget"), "`[budget]`: the not-to-exceed limit of the predicted mass."),
+            "envelope": doc(r("Envelope"), "`[envelope]`: the loading envelope (docs/cases.md): a polygon in (centre-of-mass coordinate, mass) the base and every case must lie in."),
             "case": doc(
                 json!({ "type": "array", "items": r("Case") }),
                 "`[[case]]`: the body's loading cases, each the file in another state (docs/cases.md).",

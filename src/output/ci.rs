@@ -114,7 +114,13 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         }
         for v in &r.validity {
             if let Some(m) = &v.failure {
-                out.push_str(&command("error", &r.path, None, v.name, &visible(m)));
+                out.push_str(&command(
+                    "error",
+                    &r.path,
+                    None,
+                    &visible(&v.name),
+                    &visible(m),
+                ));
             }
         }
         for c in r.checks.iter().filter(|c| !c.pass) {
@@ -238,7 +244,7 @@ pub fn junit(results: &[FileResult]) -> String {
                     &format!("{path}: error: {}", visible(m)),
                 ),
             };
-            cases.push(case(&format!("validity: {}", v.name), status));
+            cases.push(case(&format!("validity: {}", visible(&v.name)), status));
         }
         let mut warnings: String = r
             .accuracy_warnings
@@ -448,11 +454,11 @@ mod tests {
             checks: Vec::new(),
             validity: vec![
                 Validity {
-                    name: "mass is positive",
+                    name: "mass is positive".into(),
                     failure: None,
                 },
                 Validity {
-                    name: "triangle inequality",
+                    name: "triangle inequality".into(),
                     failure: Some("I1 + I2 = 2 < I3 = 5".into()),
                 },
             ],
@@ -554,7 +560,7 @@ mod tests {
             ),
             checks: Vec::new(),
             validity: vec![Validity {
-                name: "triangle inequality",
+                name: "triangle inequality".into(),
                 failure: Some(other.to_string()),
             }],
             precision: None,

@@ -15,6 +15,7 @@ use std::fmt::Write;
 
 mod axles;
 pub mod cases;
+pub mod envelope;
 mod motion;
 mod short;
 
@@ -399,6 +400,7 @@ pub fn write_table_to(
     };
     write_rows(&mut out, &header, &vectors, &right, fit);
     axles::write(&mut out, s, &u, width);
+    envelope::write(&mut out, s.envelope.as_ref(), &u);
 
     let _ = writeln!(
         out,

@@ -94,6 +94,7 @@ pub(crate) fn non_finite_word(text: &str) -> Option<String> {
 const MAY_BE_NULL: &[&str] = &[
     "name",
     "principal_moment_share",
+    "envelope_margin",
     "relative_change",
     "rel_change",
 ];
@@ -909,6 +910,50 @@ fn analysis(l: u32) -> BoxedStrategy<String> {
         .boxed()
 }
 
+/// `[envelope]` (issue 35): polygons of random corners (too few, crossing,
+/// flat, extreme or mistyped numbers), fixed ones valid and not, a `mac`
+/// of any length, and sequences naming cases the file lacks.
+fn envelope(l: u32) -> BoxedStrategy<String> {
+    let corner = (value(l), value(l)).prop_map(|(x, m)| format!("[{x}, {m}]"));
+    let points = prop_oneof![
+        2 => prop::collection::vec(corner, 0..=6).prop_map(|c| format!("[{}]", c.join(", "))),
+        1 => prop::sample::select(vec![
+            "[[0, 0], [1, 0], [1, 1], [0, 1]]",
+            "[[0, 0], [1, 1], [1, 0], [0, 1]]",
+            "[[0, 0], [1, 1], [2, 2]]",
+            "[[-1e308, 0], [1e308, 0], [1e308, 1e308], [-1e308, 1e308]]",
+            "[[\"1 mm\", \"1 g\"], [\"1 m\", \"1 g\"], [\"1 m\", \"1 t\"]]",
+            "[[0, 0], [1e-320, 0], [0, 1e-320]]",
+            "[[0, 0], [1, 0], [1, 0], [0, 1]]",
+        ])
+        .prop_map(str::to_string),
+    ];
+    (
+        prop::sample::select(vec!["x", "y", "z", "w"]),
+        points,
+        prop::option::weighted(0.3, (value(l), value(l))),
+        prop::option::weighted(
+            0.2,
+            prop::sample::select(vec!["[[\"a\", \"b\"]]", "[[]]", "[]"]),
+        ),
+    )
+        .prop_map(|(axis, points, mac, sequences)| {
+            let mut lines = vec![
+                "[envelope]".to_string(),
+                format!("axis = \"{axis}\""),
+                format!("points = {points}"),
+            ];
+            if let Some((le, len)) = mac {
+                lines.push(format!("mac = {{ leading_edge = {le}, length = {len} }}"));
+            }
+            if let Some(s) = sequences {
+                lines.push(format!("sequences = {s}"));
+            }
+            lines.join("\n")
+        })
+        .boxed()
+}
+
 /// A whole part file.
 fn part_file_at(l: u32) -> BoxedStrategy<String> {
     let units = (
@@ -931,6 +976,7 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
         // `principal_axes`: a first row and `tol_degrees` of any value.
         prop::option::weighted(0.1, (value(l), value(l))),
         Just(l),
+        prop::option::weighted(0.15, envelope(l)),
         // `[[case]]`s: a name (twice: refused), a part taken out by a name
         // that may be none, a parameter the file may not define, an
         // expectation.
@@ -944,7 +990,8 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
             ),
         ),
     )
-        .prop_map(|(name, units, material, parts, analysis, expect, axes, l, case)| {
+        .prop_map(
+            |(name, units, material, parts, analysis, expect, axes, l, envelope, case)| {
             let mut out = vec![format!("# hostility {l}")];
             if let Some(n) = name {
                 out.push(format!("name = \"{n}\""));
@@ -972,6 +1019,9 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
                     "principal_axes = {{ value = [[{x}, 0, 0], [0, 1, 0], [0, 0, 1]], tol_degrees = {tol} }}"
                 ));
             }
+            if let Some(e) = envelope {
+                out.push(format!("\n{e}"));
+            }
             if let Some((second, without, param, mass)) = case {
                 out.push("\n[[case]]\nname = \"a\"\nwithout_groups = []".to_string());
                 out.push(format!("\n[[case]]\nname = \"{second}\"\nwithout = [\"{without}\"]"));
@@ -983,7 +1033,8 @@ fn part_file_at(l: u32) -> BoxedStrategy<String> {
                 }
             }
             out.join("\n") + "\n"
-        })
+            },
+        )
         .boxed()
 }
 

@@ -24,6 +24,7 @@ mod docs;
 mod docs_run;
 mod drawing_legible;
 mod ellipsoid;
+mod envelope;
 mod exact;
 mod expect_axes;
 mod explain;

@@ -62,6 +62,12 @@ impl Serialize for Summary {
         if let Some(a) = &self.axle_loads {
             m.serialize_field("axle_loads", a)?;
         }
+        if let Some(e) = &self.envelope {
+            m.serialize_field("envelope_margin", &e.margin)?;
+            if let Some(mac) = e.mac {
+                m.serialize_field("center_of_mass_mac", &mac)?;
+            }
+        }
         if let Some(i) = &self.idealisation {
             m.serialize_field("idealisation", i)?;
         }

@@ -4,13 +4,13 @@
 //! the parts are converted one at a time as each ends, `fast`).
 
 use super::super::raw::{
-    ExpectValue, Growth, Materials, Params, RawAnalysis, RawAxes, RawAxles, RawBudget, RawExpect,
-    RawExpectation, RawMaterial, RawRotation, RawUnits,
+    ExpectValue, Growth, Materials, Params, RawAnalysis, RawAxes, RawAxles, RawBudget, RawEnvelope,
+    RawExpect, RawExpectation, RawMac, RawMaterial, RawRotation, RawUnits,
 };
 use super::failure::{Failure, Read, What};
 use super::values::{
-    Entry, FromNode, Node, keyed, quantity, rotation_key, set, string, table, units_key, unknown,
-    vector,
+    Entry, FromNode, Node, array_of, keyed, quantity, rotation_key, set, string, table, units_key,
+    unknown, vector,
 };
 use toml::Spanned;
 
@@ -136,6 +136,49 @@ pub(super) fn budget(node: Node<'_>) -> Read<Spanned<RawBudget>> {
     }
     let limit = limit.ok_or_else(|| Failure::new(span.clone(), What::Missing("limit")))?;
     Ok(Spanned::new(span, RawBudget { limit }))
+}
+
+/// `[envelope]`: `axis`, `points`, `mac`, `sequences` (checked in
+/// `model::envelope`).
+pub(super) fn envelope(node: Node<'_>) -> Read<Spanned<RawEnvelope>> {
+    const KEYS: &[&str] = &["axis", "points", "mac", "sequences"];
+    let (entries, span) = table(
+        node,
+        "a table such as { axis = \"x\", points = [[2.0, 600], [2.4, 600], [2.4, 1100], [2.1, 1100]] }",
+    )?;
+    let mut e = RawEnvelope::default();
+    for (k, ks, v) in entries {
+        match &*k {
+            "axis" => set(&mut e.axis, keyed(&k, string(v))?, &ks),
+            "points" => set(&mut e.points, keyed(&k, array_of(v, vector))?, &ks),
+            "mac" => set(&mut e.mac, keyed(&k, mac(v))?, &ks),
+            "sequences" => set(&mut e.sequences, keyed(&k, array_of(v, names))?, &ks),
+            _ => unknown(&k, &ks, KEYS),
+        }?;
+    }
+    Ok(Spanned::new(span, e))
+}
+
+/// One sequence: an array of case names.
+fn names(node: Node<'_>) -> Read<Spanned<Vec<Spanned<String>>>> {
+    array_of(node, string)
+}
+
+/// `[envelope] mac`: `leading_edge` and `length`.
+fn mac(node: Node<'_>) -> Read<Spanned<RawMac>> {
+    let (entries, span) = table(
+        node,
+        "a table such as { leading_edge = \"2.05 m\", length = \"1.5 m\" }",
+    )?;
+    let mut m = RawMac::default();
+    for (k, ks, v) in entries {
+        match &*k {
+            "leading_edge" => set(&mut m.leading_edge, keyed(&k, quantity(v))?, &ks),
+            "length" => set(&mut m.length, keyed(&k, quantity(v))?, &ks),
+            _ => unknown(&k, &ks, &["leading_edge", "length"]),
+        }?;
+    }
+    Ok(Spanned::new(span, m))
 }
 
 /// `[materials]`: name → `{ density }`, required.

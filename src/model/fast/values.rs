@@ -187,7 +187,10 @@ pub(super) fn quantity(node: Node<'_>) -> Read<Spanned<Quantity>> {
 }
 
 /// An array of what `item` reads.
-fn array_of<'i, T>(node: Node<'i>, item: fn(Node<'i>) -> Read<T>) -> Read<Spanned<Vec<T>>> {
+pub(super) fn array_of<'i, T>(
+    node: Node<'i>,
+    item: fn(Node<'i>) -> Read<T>,
+) -> Read<Spanned<Vec<T>>> {
     let Node::Array(items, span) = node else {
         return wrong(&node, ARRAY);
     };

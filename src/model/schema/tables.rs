@@ -38,6 +38,32 @@ pub(super) fn definitions() -> Map<String, Value> {
         ),
     );
     def(
+        "Envelope",
+        table(
+            Some("`[envelope]`."),
+            json!({
+                "axis": doc(json!({ "enum": ["x", "y", "z"] }), "The coordinate of the centre of mass, in the report axes, that the envelope bounds."),
+                "points": doc(
+                    json!({ "type": "array", "items": quantities(2), "minItems": 3, "maxItems": super::super::envelope::MAX_POINTS }),
+                    "The polygon's corners in order, each `[coordinate, mass]`: numbers in the file's units, or quantities with units; a simple polygon of non-zero area.",
+                ),
+                "mac": table(
+                    Some("The mean aerodynamic chord, to show the coordinate in % MAC."),
+                    json!({
+                        "leading_edge": doc(r("Quantity"), "Where the chord begins along `axis`: a length."),
+                        "length": doc(r("Quantity"), "The chord's length: a positive length."),
+                    }),
+                    &["leading_edge", "length"],
+                ),
+                "sequences": doc(
+                    array(array(json!({ "type": "string" }), None), None),
+                    "Paths between cases that differ only in `params`, each parameter moving linearly, e.g. [[\"ramp\", \"landing\"]]: at least two case names each.",
+                ),
+            }),
+            &["axis", "points"],
+        ),
+    );
+    def(
         "Analysis",
         table(
             None,

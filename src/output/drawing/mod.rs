@@ -12,12 +12,14 @@
 //!   tell apart (one kind a drawing: group, else material, else shape);
 //! - `labels`: each label's box and its place, clear of the centre of
 //!   mass, the axis tips and the other labels;
-//! - `legend`: the legend below the views.
+//! - `legend`: the legend below the views;
+//! - `envelope`: `--envelope`'s chart, a document of its own.
 //!
 //! Deterministic: numbers to two decimals in pixels, parts in file order,
 //! nothing from the clock or the machine; a snapshot test pins the
 //! README's images byte for byte.
 
+pub mod envelope;
 pub mod labels;
 mod legend;
 pub mod outline;

@@ -68,6 +68,10 @@ pub fn table(
 ) -> String {
     let u = DisplayUnits::of(base.file_units);
     let axles = base.axle_loads.is_some() || cases.iter().any(|(_, s)| s.axle_loads.is_some());
+    let envelope = base.envelope.is_some() || cases.iter().any(|(_, s)| s.envelope.is_some());
+    let mac = (base.envelope.iter())
+        .chain(cases.iter().filter_map(|(_, s)| s.envelope.as_ref()))
+        .any(|e| e.mac.is_some());
     let length = u.length_label;
     let mut header: Vec<String> = vec![
         "case".into(),
@@ -84,6 +88,12 @@ pub fn table(
     }
     if axles {
         header.extend(["front (N)", "front (%)", "rear (N)", "rear (%)"].map(String::from));
+    }
+    if envelope {
+        header.push(format!("margin ({length})"));
+    }
+    if mac {
+        header.push("% MAC".into());
     }
     let row = |name: &str, s: &Summary| {
         let mut label = String::new();
@@ -106,6 +116,16 @@ pub fn table(
                 ]),
                 None => cells.extend(["-", "-", "-", "-"].map(String::from)),
             }
+        }
+        // The envelope's margin (`-` where the mass is outside its
+        // range) and the coordinate in % MAC.
+        if envelope {
+            let margin = s.envelope.and_then(|e| e.margin);
+            cells.push(margin.map_or("-".into(), |d| fmt_num(d / u.length)));
+        }
+        if mac {
+            let p = s.envelope.and_then(|e| e.mac);
+            cells.push(p.map_or("-".into(), fmt_num));
         }
         cells
     };

@@ -59,6 +59,7 @@ pub(super) fn table(s: &Summary, source: &str, detail: Detail, width: Option<usi
     out.push('\n');
     body_table(&mut out, s, &u, width);
     super::axles::write(&mut out, s, &u, width);
+    super::envelope::write(&mut out, s.envelope.as_ref(), &u);
 
     if detail.about_flag && s.reference_given {
         let p = s.reference_point.map(|x| fmt_num(x / u.length));
