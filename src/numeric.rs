@@ -14,8 +14,8 @@
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 
-/// A 3×3 matrix as rows, for the generic composer (nalgebra's types need
-/// traits a double-double does not have).
+/// A 3×3 matrix as rows, for the generic composer over any `Real` (f64,
+/// double-double, dual numbers); `la::Matrix3` serves f64 alone.
 pub type M3<T> = [[T; 3]; 3];
 
 /// The arithmetic of composition and of the principal axes.
