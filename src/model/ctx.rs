@@ -453,6 +453,26 @@ impl Ctx<'_> {
 }
 
 impl Ctx<'_> {
+    /// An `axis` key's coordinate: 0, 1 or 2 for "x", "y" or "z" (of the
+    /// report axes); `help` says what the axis is for.
+    pub(super) fn axis_index(
+        &self,
+        axis: &Spanned<String>,
+        help: &str,
+    ) -> Result<usize, Diagnostic> {
+        match axis.get_ref().as_str() {
+            "x" => Ok(0),
+            "y" => Ok(1),
+            "z" => Ok(2),
+            other => Err(self
+                .err(
+                    axis.span(),
+                    format!("`axis` must be \"x\", \"y\" or \"z\", not {other:?}"),
+                )
+                .help(help.to_string())),
+        }
+    }
+
     /// `[analysis] axles`: the axis and the two positions (SI), distinct.
     fn axles(
         &self,
@@ -465,19 +485,10 @@ impl Ctx<'_> {
                 .help("give `axis` (\"x\", \"y\" or \"z\", of the report axes) and the `front` and `rear` axles' positions along it")
         };
         let axis = r.axis.as_ref().ok_or_else(|| missing("axis"))?;
-        let k = match axis.get_ref().as_str() {
-            "x" => 0,
-            "y" => 1,
-            "z" => 2,
-            other => {
-                return Err(self
-                    .err(
-                        axis.span(),
-                        format!("`axis` must be \"x\", \"y\" or \"z\", not {other:?}"),
-                    )
-                    .help("the axis of the report axes along which the axles lie"));
-            }
-        };
+        let k = self.axis_index(
+            axis,
+            "the axis of the report axes along which the axles lie",
+        )?;
         let front = r.front.as_ref().ok_or_else(|| missing("front"))?;
         let rear = r.rear.as_ref().ok_or_else(|| missing("rear"))?;
         let f = self.quantity(rec, front, "front", Dim::LENGTH)?;

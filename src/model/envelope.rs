@@ -62,19 +62,10 @@ impl Ctx<'_> {
         let missing =
             |key: &str| (self.err(raw.span(), format!("`envelope` needs `{key}`"))).help(HELP);
         let axis = r.axis.as_ref().ok_or_else(|| missing("axis"))?;
-        let axis = match axis.get_ref().as_str() {
-            "x" => 0,
-            "y" => 1,
-            "z" => 2,
-            other => {
-                return Err(self
-                    .err(
-                        axis.span(),
-                        format!("`axis` must be \"x\", \"y\" or \"z\", not {other:?}"),
-                    )
-                    .help("the coordinate of the centre of mass, in the report axes, that the envelope bounds"));
-            }
-        };
+        let axis = self.axis_index(
+            axis,
+            "the coordinate of the centre of mass, in the report axes, that the envelope bounds",
+        )?;
         let points = r.points.as_ref().ok_or_else(|| missing("points"))?;
         let mut corners = Vec::new();
         let mut spans = Vec::new();
