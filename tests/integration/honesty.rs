@@ -32,7 +32,9 @@
 //! through any origin) and a `mirror`. The top file's `[analysis]` has
 //! ω and α, maybe `about` (plain or with units) and maybe report `axes`
 //! in every form (two perpendicular directions of irrational lengths
-//! included).
+//! included). One scene in three also has a `[[case]]` that sets the top
+//! file's `a` (issue 35): `report --case` is held to the same bounds
+//! against the scene generated with that `a` passed in.
 //!
 //! The exact reference is tests/support: each part exactly in SI
 //! (`exact_part`, `placed::mesh`), placed exactly (`placed`: include
@@ -814,6 +816,8 @@ pub(crate) struct Generated {
     pub files: Files,
     pub top: String,
     pub expected: Expected,
+    /// A `[[case]]` of the top file, its name and body (`report --case`).
+    pub case: Option<(&'static str, Expected)>,
 }
 
 /// The scene of `seed`.
@@ -885,20 +889,40 @@ pub(crate) fn scene(seed: u64) -> Generated {
             placed::rounded(&[unit(&xq), unit(&y), unit(&z)])
         }
     };
+    // Now and then a `[[case]]` that sets the top file's `a` (issue 35):
+    // the same files generated with that `a` passed in are its body.
+    let case = rng.next_u64().is_multiple_of(3).then(|| {
+        files.seen.insert("a case");
+        let text = decimal_text(rng.range(0.1, 0.5) * 1000.0, 3);
+        let a = placed::decimal(&text) * symbol_si("mm");
+        let mut again = Files::default();
+        let other = file(&mut again, seed, 0, Some(&a));
+        // NOTE: the case's body is the generator's with `a` passed in,
+        // which writes the same text: the files are the ones written.
+        assert_eq!(other.text, out.text, "seed {seed}: a case's files differ");
+        analysis.push_str(&format!(
+            "\n[[case]]\nname = \"other a\"\nparams = {{ a = \"{text} mm\" }}\n"
+        ));
+        other.parts
+    });
     let top = format!("top-{seed:016x}.toml");
     files.add(top.clone(), format!("{}{analysis}", out.text));
-    let body = r::compose_parts(out.parts, about.clone());
-    let point = about.unwrap_or_else(|| body.com.clone());
+    let expected = |parts: Vec<ExactPart>| {
+        let body = r::compose_parts(parts, about.clone());
+        let point = about.clone().unwrap_or_else(|| body.com.clone());
+        Expected {
+            body,
+            point,
+            axes: axes.clone(),
+            omega: omega.map(r::q),
+            alpha: alpha.map(r::q),
+        }
+    };
     Generated {
         files,
         top,
-        expected: Expected {
-            body,
-            point,
-            axes,
-            omega: omega.map(r::q),
-            alpha: alpha.map(r::q),
-        },
+        case: case.map(|parts| ("other a", expected(parts))),
+        expected: expected(out.parts),
     }
 }
 
@@ -918,37 +942,60 @@ fn failures(seed: u64) -> Result<usize, String> {
     let prepared = honest::prepare(&g.expected);
     let mut checked = 0;
     for precision in ["standard", "extended"] {
-        checked += failures_in(&g, &path, &prepared, precision)?;
+        checked += failures_in(
+            &g,
+            &path,
+            &g.expected,
+            &prepared,
+            &["--precision", precision],
+        )?;
+        if let Some((name, expected)) = &g.case {
+            let prepared = honest::prepare(expected);
+            checked += failures_in(
+                &g,
+                &path,
+                expected,
+                &prepared,
+                &["--precision", precision, "--case", name],
+            )?;
+        }
     }
     Ok(checked)
+}
+
+impl Generated {
+    /// The part files, each under its name, for a failure's message.
+    fn files_text(&self) -> Vec<String> {
+        self.files
+            .files
+            .iter()
+            .filter(|(n, _)| n.ends_with(".toml"))
+            .map(|(n, t)| format!("--- {n}\n{t}"))
+            .collect()
+    }
 }
 
 fn failures_in(
     g: &Generated,
     path: &std::path::Path,
+    expected: &Expected,
     prepared: &honest::Prepared,
-    precision: &str,
+    args: &[&str],
 ) -> Result<usize, String> {
-    let seed = &g.top;
-    let (v, _) = crate::common::report_json_file(path, &["--precision", precision]);
-    let items = honest::measure(&v, &g.expected, prepared);
+    let (v, _) = crate::common::report_json_file(path, args);
+    let items = honest::measure(&v, expected, prepared);
     let bad = honest::dishonest(&items);
     if bad.is_empty() {
         return Ok(items.len());
     }
-    let files: Vec<String> = g
-        .files
-        .files
-        .iter()
-        .filter(|(n, _)| n.ends_with(".toml"))
-        .map(|(n, t)| format!("--- {n}\n{t}"))
-        .collect();
     Err(format!(
-        "{seed}, {precision}: {} of {} values beyond their bounds:\n  {}\n{}",
+        "{}, {}: {} of {} values beyond their bounds:\n  {}\n{}",
+        g.top,
+        args.join(" "),
         bad.len(),
         items.len(),
         bad.join("\n  "),
-        files.join("\n")
+        g.files_text().join("\n")
     ))
 }
 
@@ -1018,6 +1065,7 @@ fn the_generator_covers_every_feature() {
         "about",
         "axes: a rotation",
         "axes: two directions",
+        "a case",
     ];
     let missing: Vec<&str> = want.iter().copied().filter(|w| !seen.contains(w)).collect();
     assert!(missing.is_empty(), "not generated: {missing:?}");
