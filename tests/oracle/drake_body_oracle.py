@@ -76,6 +76,8 @@ from oracle_common import massprop_whole_body, num, nums, relative_disagreement
 # inertia, a mimic outside a discrete plant): handled here, so quiet.
 logging.getLogger("drake").setLevel(logging.ERROR)
 WORST = [0.0, ""]
+# `--root-joints`: a root held by a revolute or prismatic joint from `world`.
+ROOT_JOINTS = False
 
 RTOL = 1e-12
 EPS = np.finfo(float).eps
@@ -118,6 +120,14 @@ class DrakeRobot:
                 self.joints[self.scoped(j)] = j
         self.bodies = [BodyIndex(k) for k in range(1, p.num_bodies())]
         self.written = {}
+        # massprop's frame is the model frame; Drake places the model at its
+        # `<pose>` in the world: its `__model__` frame, where it is with every
+        # joint at zero (Drake attaches that frame to the canonical link, and
+        # it moves with a root that a joint from `world` moves).
+        self.model_pose = None
+        if self.top is not None and p.HasModelInstanceNamed(self.top):
+            frame = p.GetFrameByName("__model__", p.GetModelInstanceByName(self.top))
+            self.model_pose = frame.CalcPoseInWorld(p.CreateDefaultContext())
 
     def as_written(self, path, link):
         """Give `link` its inertial as `path` writes it, valid or not.
@@ -168,6 +178,10 @@ class DrakeRobot:
             m_b = p.get_body(b).CalcSpatialInertiaInBodyFrame(ctx).ReExpress(x.rotation())
             total += m_b.Shift(com - x.translation())
         i_w = total.CalcRotationalInertia()
+        if self.model_pose is not None:
+            x_wm = self.model_pose
+            com = x_wm.inverse().multiply(com)
+            i_w = i_w.ReExpress(x_wm.rotation().inverse())
         far = max(np.linalg.norm(x.translation()) for x in poses)
         return (mass, list(com), i_w.CopyToFullMatrix3().tolist()), far
 
@@ -391,6 +405,12 @@ def model_body(rng, kind, anchored=True, base=None):
         r = rng.random()
         if r < 0.4:
             out.append(f'<joint name="anchor" type="fixed">{pose(rng, rand3(rng, scale))}<parent>world</parent><child>l0</child></joint>')
+        elif r < 0.6 and ROOT_JOINTS:
+            t = rng.choice(["revolute", "prismatic"])
+            out.append(
+                f'<joint name="anchor" type="{t}">{pose(rng, rand3(rng, scale))}<parent>world</parent><child>l0</child>'
+                f"<axis><xyz>{nums(rand3(rng, 1.0))}</xyz></axis></joint>"
+            )
     for i in range(1, n):
         parent = i - 1 if kind in ("chain", "far", "remote") else rng.randrange(i)
         if kind == "frames" or rng.random() < 0.25:
@@ -431,8 +451,10 @@ def model_body(rng, kind, anchored=True, base=None):
     return out
 
 
-def sdf(body, name="m"):
-    return f'<?xml version="1.0"?>\n<sdf version="1.11">\n<model name="{name}">\n' + "\n".join(body) + "\n</model>\n</sdf>\n"
+def sdf(body, name="m", placed=""):
+    """A file of one model; `placed`: the model's own `<pose>` (where Drake
+    puts it in its world; massprop reports in the model frame)."""
+    return f'<?xml version="1.0"?>\n<sdf version="1.11">\n<model name="{name}">{placed}\n' + "\n".join(body) + "\n</model>\n</sdf>\n"
 
 
 def nested_files(rng, kind, tmp, k):
@@ -467,8 +489,15 @@ def main():
     ap.add_argument("--models", type=int, default=2, help="generated models of each family")
     ap.add_argument("--nested", type=int, default=2, help="generated models of each of nested, world, include")
     ap.add_argument("--seed", type=int, default=34)
+    ap.add_argument(
+        "--root-joints",
+        action="store_true",
+        help="also hold generated roots by revolute and prismatic joints from `world` (massprop ignores them today)",
+    )
     ap.add_argument("files", nargs="*")
     a = ap.parse_args()
+    global ROOT_JOINTS
+    ROOT_JOINTS = a.root_joints
     rng = random.Random(a.seed)
     files = a.files or sorted(
         glob.glob(os.path.join(repo, "shapes/robots/*")) + glob.glob(os.path.join(repo, "tests/robots/*"))
@@ -479,7 +508,8 @@ def main():
         made = []
         for kind in FAMILIES:
             for k in range(a.models):
-                made.append((os.path.join(tmp, f"{kind}{k}.sdf"), sdf(model_body(rng, kind)), False))
+                placed = pose(rng, rand3(rng, FAMILIES[kind][1] * 5)) if k % 2 else ""
+                made.append((os.path.join(tmp, f"{kind}{k}.sdf"), sdf(model_body(rng, kind), placed=placed), False))
         for kind in NESTED:
             for k in range(a.nested):
                 made.append((os.path.join(tmp, f"{kind}{k}.sdf"), nested_files(rng, kind, tmp, f"{kind}{k}"), True))
