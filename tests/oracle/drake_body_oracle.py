@@ -132,6 +132,18 @@ class DrakeRobot:
             j = p.get_joint(JointIndex(k))
             if j.num_positions() == 1 and j.type_name() in ("revolute", "prismatic"):
                 self.joints[self.scoped(j)] = j
+        if path.endswith(".xml"):
+            # MJCF: an unnamed joint is `joint N` to massprop (N counting
+            # every joint in document order) and `PARENT-CHILD` to Drake;
+            # the hinges and slides paired in order.
+            ours, count = [], 0
+            for j in ET.parse(path).getroot().iter():
+                if j.tag in ("joint", "freejoint"):
+                    count += 1
+                    if j.tag == "joint" and j.get("type", "hinge") in ("hinge", "slide"):
+                        ours.append(j.get("name") or f"joint {count}")
+            if len(ours) == len(self.joints):
+                self.joints = dict(zip(ours, self.joints.values()))
         self.bodies = [BodyIndex(k) for k in range(1, p.num_bodies())]
         self.written = {}
         # massprop's frame is the model frame; Drake places the model at its
