@@ -3,7 +3,9 @@
 //! MuJoCo's own compiler on every file, and that `export --to mjcf` loads
 //! into MuJoCo with the report's mass, centre and principal moments;
 //! `tests/oracle/engines_oracle.py` that `--engine drake` and `--engine
-//! gazebo` agree with pydrake and gz-math on every link.
+//! gazebo` agree with pydrake and gz-math on every link;
+//! `tests/oracle/drake_body_oracle.py` that the whole robot agrees with
+//! Drake's MultibodyPlant.
 //!
 //! It needs Python with the `mujoco` package: `MASSPROP_ORACLE_PYTHON` if
 //! set, else `python3`. Without it the test says why on stderr and passes,
@@ -99,4 +101,34 @@ fn check_agrees_with_gz_maths_own_library() {
     let python =
         std::env::var("MASSPROP_GZ_PYTHON").unwrap_or_else(|_| "/usr/bin/python3".to_string());
     engine_oracle("gazebo", python, "ignition.math");
+}
+
+/// tests/oracle/drake_body_oracle.py: the whole robot (mass, centre, inertia
+/// about the centre) against Drake's MultibodyPlant at random
+/// configurations, on every robot file and generated SDFormat models, with
+/// Drake's interpreter (as `check_agrees_with_drakes_own_library`). Four
+/// configurations per model here; .ci/run runs forty.
+#[test]
+fn the_whole_robot_agrees_with_drakes_multibody_plant() {
+    let python = std::env::var("MASSPROP_DRAKE_PYTHON").unwrap_or_else(|_| python());
+    if let Some(why) = missing(&python, "pydrake.multibody.plant") {
+        eprintln!(
+            "skipped: the Drake whole-body oracle needs Python with `pydrake` (`pip install drake`); {why}. \
+             Set MASSPROP_DRAKE_PYTHON to such an interpreter to run it."
+        );
+        return;
+    }
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/drake_body_oracle.py");
+    let out = Command::new(&python)
+        .arg(&script)
+        .args(["--massprop", env!("CARGO_BIN_EXE_massprop"), "--cases", "4"])
+        .output()
+        .expect("the oracle script runs");
+    assert!(
+        out.status.success(),
+        "the Drake whole-body oracle found disagreements (exit {:?}):\n{}\n{}",
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
