@@ -1,0 +1,423 @@
+//! MJCF mesh geoms for inertia: `<asset><mesh name file scale inertia>`
+//! (its values also from the mesh default classes), the file found as
+//! MuJoCo finds it (`<compiler meshdir>`, else `assetdir`, relative to the
+//! model file; an absolute path as it is) and confined as a part file's
+//! includes are (the model file's directory and the working directory),
+//! read by massprop's mesh reader (STL, OBJ: a closed, consistently
+//! oriented surface, else refused with the mesh's own message), and
+//! weighed as MuJoCo's compiler weighs it (`user_mesh.cc`,
+//! `mjCMesh::Process`).
+//!
+//! MuJoCo moves a mesh's vertices into its inertial frame and moves the
+//! geom by the same pose, so the body's mass lies where the file's
+//! vertices, scaled and placed at the geom's pose, put it: the exact
+//! integrals of that solid, in the geom's frame. Per `<mesh inertia>`:
+//!
+//! - `exact`: those integrals.
+//! - `shell` (mass on the surface, per area): the surface's integrals (a
+//!   uniform `scale` only: a non-uniform one changes areas unevenly).
+//! - `legacy` (MuJoCo's default): the sum of the tetrahedra joining each
+//!   triangle to the surface's centroid, then to the centre of mass, each
+//!   counted positive. Equal to the exact solid's when no tetrahedron is
+//!   negative (a convex mesh, or any mesh star-shaped about those points);
+//!   otherwise MuJoCo over-counts, and that case is refused, naming
+//!   `inertia="exact"`.
+//! - `convex`: the convex hull's. Equal to the exact solid's when the mesh
+//!   is convex (every corner on or behind every triangle's plane); a mesh
+//!   that is not is refused.
+//!
+//! NOTE: MuJoCo keeps vertices in f32 (binary STL is f32 already; an OBJ's
+//! decimals, and a `scale` that is not a power of two, are rounded to f32
+//! there): massprop reads them in f64, so the two differ by up to ~1e-7 of
+//! the mesh's size where the file's numbers are not f32 numbers.
+
+use super::geometry::MeshMass;
+use super::{Value, Xml, children, quoted};
+use crate::diag::{Diagnostic, Source, shorten};
+use crate::mesh::{FileType, MeshBody, Mode};
+use crate::numeric::{DD, Real};
+use roxmltree::Node;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// How MuJoCo weighs a mesh (`<mesh inertia>`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Inertia {
+    Legacy,
+    Convex,
+    Exact,
+    Shell,
+}
+
+/// A mesh asset, read.
+#[derive(Clone, Debug)]
+pub(super) struct Loaded {
+    pub mass: Arc<MeshMass>,
+    /// The file, relative to the model file's directory (or absolute).
+    pub uri: String,
+    pub scale: [f64; 3],
+    /// Weighed as a shell (`inertia="shell"`).
+    pub shell: bool,
+}
+
+/// An MJCF file's mesh assets, each read once when a geom needs it.
+pub(super) struct Meshes<'a, 'i> {
+    by_name: HashMap<String, Node<'a, 'i>>,
+    /// `meshdir`, else `assetdir`, as written (empty: none).
+    dir: String,
+    /// The model file's directory.
+    base: PathBuf,
+    roots: Vec<PathBuf>,
+    loaded: HashMap<roxmltree::NodeId, Loaded>,
+}
+
+impl<'a, 'i> Meshes<'a, 'i> {
+    /// The `<mesh>` assets under `mujoco`, a name given twice refused.
+    pub fn read(
+        xml: &Xml,
+        mujoco: Node<'a, 'i>,
+        source: &Source,
+    ) -> Result<Meshes<'a, 'i>, Diagnostic> {
+        let (mut meshdir, mut assetdir) = (None, None);
+        for c in children(mujoco, "compiler") {
+            if let Some(v) = xml.attr(c, "meshdir") {
+                meshdir = Some(v.text);
+            }
+            if let Some(v) = xml.attr(c, "assetdir") {
+                assetdir = Some(v.text);
+            }
+        }
+        let base = source
+            .path()
+            .parent()
+            .filter(|p| !p.as_os_str().is_empty())
+            .unwrap_or(Path::new("."))
+            .to_path_buf();
+        let roots = [base.clone(), PathBuf::from(".")]
+            .iter()
+            .filter_map(|p| std::fs::canonicalize(p).ok())
+            .collect();
+        let mut by_name = HashMap::new();
+        for asset in children(mujoco, "asset") {
+            for m in children(asset, "mesh") {
+                // MuJoCo names an unnamed mesh after its file, without
+                // the directory and the extension.
+                let name = match (xml.attr(m, "name"), xml.attr(m, "file")) {
+                    (Some(n), _) => n,
+                    (None, Some(f)) => Value {
+                        text: Path::new(&f.text)
+                            .file_stem()
+                            .map_or_else(String::new, |s| s.to_string_lossy().into_owned()),
+                        ..f
+                    },
+                    (None, None) => continue,
+                };
+                if by_name.insert(name.text.clone(), m).is_some() {
+                    return Err(xml.error(
+                        name.range.clone(),
+                        format!(
+                            "`<mesh>` {}: two meshes have this name (MuJoCo refuses a repeated name)",
+                            quoted(&name.text)
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(Meshes {
+            by_name,
+            dir: meshdir.or(assetdir).unwrap_or_default(),
+            base,
+            roots,
+            loaded: HashMap::new(),
+        })
+    }
+
+    /// The mesh a geom's `mesh` attribute `v` names, read and weighed.
+    pub fn load(
+        &mut self,
+        xml: &Xml,
+        v: &Value,
+        owner: &str,
+        classes: &super::mjcf_class::Classes,
+    ) -> Result<Loaded, Diagnostic> {
+        let Some(&node) = self.by_name.get(&v.text) else {
+            let near = crate::units::suggest(&v.text, self.by_name.keys().map(String::as_str))
+                .map(|s| format!("; did you mean {}?", quoted(s)))
+                .unwrap_or_default();
+            return Err(xml.error(
+                v.range.clone(),
+                format!(
+                    "`mesh` of a geom of {owner}: no `<mesh>` asset is named {}{near}",
+                    quoted(&v.text)
+                ),
+            ));
+        };
+        if let Some(l) = self.loaded.get(&node.id()) {
+            return Ok(l.clone());
+        }
+        let class = classes.of(xml, node)?;
+        let attr = |n: &str| classes.attr(xml, node, class, "mesh", n);
+        let what = format!("`<mesh>` {}", quoted(&v.text));
+        for refused in ["vertex", "face", "refpos", "refquat"] {
+            if let Some(r) = attr(refused) {
+                return Err(xml
+                    .error(
+                        r.range.clone(),
+                        format!("`{refused}` of {what}: not read for inertia; expected a mesh `file` in its own frame"),
+                    )
+                    .help(format!("give {owner} an `<inertial>`")));
+            }
+        }
+        if let Some(b) = attr("builtin").filter(|b| b.text != "none") {
+            return Err(xml
+                .error(
+                    b.range.clone(),
+                    format!("`builtin` of {what}: a built-in mesh is not read for inertia; expected a mesh `file`"),
+                )
+                .help(format!("give {owner} an `<inertial>`")));
+        }
+        let file = attr("file").ok_or_else(|| {
+            xml.error(
+                xml.tag(node),
+                format!("{what} has no `file`: expected an STL or OBJ file"),
+            )
+        })?;
+        let inertia = match attr("inertia") {
+            Some(i) => xml.keyword(
+                &i,
+                &what,
+                &[
+                    ("convex", Inertia::Convex),
+                    ("exact", Inertia::Exact),
+                    ("legacy", Inertia::Legacy),
+                    ("shell", Inertia::Shell),
+                ],
+            )?,
+            None => Inertia::Legacy,
+        };
+        let scale_value = attr("scale");
+        let scale = match &scale_value {
+            Some(s) => {
+                let n = xml.numbers::<3>(s, &what)?;
+                if n.iter().any(|x| *x == 0.0) {
+                    return Err(xml.error(
+                        s.range.clone(),
+                        format!(
+                            "`scale` of {what}: expected no zero factor (it flattens the mesh)"
+                        ),
+                    ));
+                }
+                n
+            }
+            None => [1.0; 3],
+        };
+        let uri = Path::new(&self.dir).join(&file.text);
+        let shown = self.base.join(&uri);
+        let bytes = self.bytes(xml, &file, &shown)?;
+        let format = FileType::of(&shown).expect("`bytes` checked the extension");
+        let mode = match inertia {
+            Inertia::Shell => Mode::Shell,
+            Inertia::Legacy | Inertia::Convex | Inertia::Exact => Mode::Solid,
+        };
+        let shown_name = crate::diag::display_path(&shown);
+        let body = MeshBody::load(format, &bytes, mode).map_err(|e| {
+            xml.error(
+                file.range.clone(),
+                format!("the mesh file `{shown_name}`: {}", e.message),
+            )
+        })?;
+        let uniform = scale[0].abs() == scale[1].abs() && scale[1].abs() == scale[2].abs();
+        if inertia == Inertia::Shell && !uniform {
+            let at = scale_value.map_or_else(|| file.range.clone(), |s| s.range);
+            return Err(xml.error(
+                at,
+                format!("`scale` of {what}: a shell (`inertia=\"shell\"`) is read with the same scale on each axis"),
+            ));
+        }
+        let mass = scaled(&body, scale);
+        match inertia {
+            Inertia::Legacy => {
+                if let Some(why) = legacy_differs(&body, scale, &mass) {
+                    return Err(xml
+                        .error(
+                            file.range.clone(),
+                            format!("{what}: MuJoCo's default `inertia=\"legacy\"` counts every tetrahedron of this mesh positive, and {why}, so it weighs more than the solid the mesh bounds; not copied"),
+                        )
+                        .help("set `inertia=\"exact\"` on the `<mesh>` (what the solid weighs), or give the body an `<inertial>`"));
+                }
+            }
+            Inertia::Convex => {
+                if let Some(why) = not_convex(&body) {
+                    return Err(xml
+                        .error(
+                            file.range.clone(),
+                            format!("{what}: `inertia=\"convex\"` weighs the mesh's convex hull, and the mesh is not convex ({why}); the hull is not computed"),
+                        )
+                        .help("set `inertia=\"exact\"` on the `<mesh>` (what the solid weighs), or give the body an `<inertial>`"));
+                }
+            }
+            Inertia::Exact | Inertia::Shell => {}
+        }
+        let l = Loaded {
+            mass: Arc::new(mass),
+            uri: uri.to_string_lossy().into_owned(),
+            scale,
+            shell: inertia == Inertia::Shell,
+        };
+        self.loaded.insert(node.id(), l.clone());
+        Ok(l)
+    }
+
+    /// The bytes of the mesh file `shown` (`file` names it), confined.
+    fn bytes(&self, xml: &Xml, file: &Value, shown: &Path) -> Result<Vec<u8>, Diagnostic> {
+        let shown_name = crate::diag::display_path(shown);
+        let at = |m: String| xml.error(file.range.clone(), m);
+        let canonical = std::fs::canonicalize(shown).map_err(|e| {
+            at(format!("cannot read the mesh file `{shown_name}`: {e}"))
+                .help("the path is relative to the model file, after `<compiler meshdir>` (else `assetdir`)")
+        })?;
+        if !self.roots.iter().any(|r| canonical.starts_with(r)) {
+            return Err(at(format!(
+                "the mesh file `{shown_name}` is outside the directory of the model file and the working directory"
+            ))
+            .help("mesh files stay inside those directory trees (after following symlinks)"));
+        }
+        if FileType::of(&canonical).is_none() {
+            return Err(at(format!(
+                "the mesh file `{shown_name}` is not a mesh file massprop reads (`*.stl` or `*.obj`)"
+            )));
+        }
+        let meta = std::fs::metadata(&canonical)
+            .map_err(|e| at(format!("cannot read the mesh file `{shown_name}`: {e}")))?;
+        if !meta.is_file() {
+            return Err(at(format!(
+                "the mesh file `{shown_name}` is not a regular file"
+            )));
+        }
+        if meta.len() > crate::io::MAX_FILE_BYTES {
+            return Err(at(format!(
+                "the mesh file `{shown_name}` is larger than the limit of {} MiB",
+                crate::io::MAX_FILE_BYTES >> 20
+            )));
+        }
+        std::fs::read(&canonical).map_err(|e| {
+            at(format!(
+                "cannot read the mesh file `{}`: {e}",
+                shorten(&shown_name)
+            ))
+        })
+    }
+}
+
+/// The mesh's integrals with its vertices scaled by `s` (D = diag(s)):
+/// measure |det D| V (a shell's: s² A, `s` uniform), centroid D c, second
+/// moments |det D| D S D (a shell's: s⁴ S).
+fn scaled(b: &MeshBody, s: [f64; 3]) -> MeshMass {
+    let d = s.map(DD::of);
+    let det = (d[0] * d[1] * d[2]).abs();
+    let k = match b.mode {
+        Mode::Solid => det,
+        // Uniform: |s|³ / |s| = s², area's factor.
+        Mode::Shell => det / DD::of(s[0].abs()),
+    };
+    MeshMass {
+        measure: k * b.measure,
+        centroid: std::array::from_fn(|i| d[i] * b.centroid[i]),
+        second: std::array::from_fn(|i| std::array::from_fn(|j| k * d[i] * d[j] * b.second[i][j])),
+    }
+}
+
+/// Six times the signed volume of the tetrahedron (apex, a, b, c).
+fn tet6(apex: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
+    let u = [a[0] - apex[0], a[1] - apex[1], a[2] - apex[2]];
+    let v = [b[0] - apex[0], b[1] - apex[1], b[2] - apex[2]];
+    let w = [c[0] - apex[0], c[1] - apex[1], c[2] - apex[2]];
+    u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
+        + u[2] * (v[0] * w[1] - v[1] * w[0])
+}
+
+/// Why MuJoCo's legacy weighing of the mesh (scaled by `s`) differs from
+/// the solid's: a tetrahedron from the surface's centroid or from the
+/// centre of mass to a triangle that is negative (beyond round-off).
+fn legacy_differs(b: &MeshBody, s: [f64; 3], m: &MeshMass) -> Option<String> {
+    let pts: Vec<[f64; 3]> = b
+        .points
+        .iter()
+        .map(|p| [p[0] * s[0], p[1] * s[1], p[2] * s[2]])
+        .collect();
+    // A mirroring scale turns the outward triangles inward.
+    let sign = if s[0] * s[1] * s[2] < 0.0 { -1.0 } else { 1.0 };
+    let corners = |f: &[u32; 3]| f.map(|i| pts[i as usize]);
+    let (mut area, mut first) = (0.0, [0.0; 3]);
+    for f in b.faces.iter() {
+        let [a, bb, c] = corners(f);
+        let u = [bb[0] - a[0], bb[1] - a[1], bb[2] - a[2]];
+        let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+        let n = [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ];
+        let w = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        area += w;
+        for i in 0..3 {
+            first[i] += w * (a[i] + bb[i] + c[i]) / 3.0;
+        }
+    }
+    let facecen = first.map(|x| x / area);
+    let com = m.centroid.map(|x| x.f64());
+    let tol = 1e-12 * 6.0 * m.measure.f64();
+    for (apex, said) in [
+        (facecen, "some are negative from the surface's centroid"),
+        (com, "some are negative from the centre of mass"),
+    ] {
+        if b.faces.iter().any(|f| {
+            let [a, bb, c] = corners(f);
+            sign * tet6(apex, a, bb, c) < -tol
+        }) {
+            return Some(said.to_string());
+        }
+    }
+    None
+}
+
+/// The most corner-plane tests the convexity check makes.
+const CONVEX_WORK: usize = 50_000_000;
+
+/// Why the mesh is not convex (a corner in front of a triangle's plane),
+/// or too large to check.
+fn not_convex(b: &MeshBody) -> Option<String> {
+    let (pts, faces) = (&b.points, &b.faces);
+    if pts.len().saturating_mul(faces.len()) > CONVEX_WORK {
+        return Some(format!(
+            "not checked: {} corners by {} triangles is past the {CONVEX_WORK} tests the check makes",
+            pts.len(),
+            faces.len()
+        ));
+    }
+    let size = (0..3)
+        .map(|i| b.extent[1][i] - b.extent[0][i])
+        .fold(0.0, f64::max);
+    for f in faces.iter() {
+        let [a, bb, c] = f.map(|i| pts[i as usize]);
+        let u = [bb[0] - a[0], bb[1] - a[1], bb[2] - a[2]];
+        let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+        let n = [
+            u[1] * v[2] - u[2] * v[1],
+            u[2] * v[0] - u[0] * v[2],
+            u[0] * v[1] - u[1] * v[0],
+        ];
+        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        for p in pts.iter() {
+            let h = (n[0] * (p[0] - a[0]) + n[1] * (p[1] - a[1]) + n[2] * (p[2] - a[2])) / len;
+            if h > 1e-12 * size {
+                return Some(format!(
+                    "its corner {} lies in front of a triangle's plane",
+                    crate::mesh::check::point(*p)
+                ));
+            }
+        }
+    }
+    None
+}
