@@ -17,11 +17,12 @@
 //! - `shell` (mass on the surface, per area): the surface's integrals (a
 //!   uniform `scale` only: a non-uniform one changes areas unevenly).
 //! - `legacy` (MuJoCo's default): the sum of the tetrahedra joining each
-//!   triangle to the surface's centroid, then to the centre of mass, each
+//!   triangle to the surface's centroid (for the centre of mass), then to
+//!   the centre of mass (for the volume and the second moments), each
 //!   counted positive. Equal to the exact solid's when no tetrahedron is
 //!   negative (a convex mesh, or any mesh star-shaped about those points);
-//!   otherwise MuJoCo over-counts, and that case is refused, naming
-//!   `inertia="exact"`.
+//!   otherwise MuJoCo over-counts, and massprop copies it (MuJoCo's
+//!   formula, in f64): what MuJoCo simulates.
 //! - `convex`: the convex hull's. Equal to the exact solid's when the mesh
 //!   is convex (every corner on or behind every triangle's plane); a mesh
 //!   that is not is refused.
@@ -213,7 +214,11 @@ impl<'a, 'i> Meshes<'a, 'i> {
             None => [1.0; 3],
         };
         let uri = Path::new(&self.dir).join(&file.text);
-        let shown = self.base.join(&uri);
+        let shown = if self.base == Path::new(".") {
+            uri.clone()
+        } else {
+            self.base.join(&uri)
+        };
         let bytes = self.bytes(xml, &file, &shown)?;
         let format = FileType::of(&shown).expect("`bytes` checked the extension");
         let mode = match inertia {
@@ -222,10 +227,14 @@ impl<'a, 'i> Meshes<'a, 'i> {
         };
         let shown_name = crate::diag::display_path(&shown);
         let body = MeshBody::load(format, &bytes, mode).map_err(|e| {
-            xml.error(
+            let d = xml.error(
                 file.range.clone(),
                 format!("the mesh file `{shown_name}`: {}", e.message),
-            )
+            );
+            match mode {
+                Mode::Solid => d.help(format!("MuJoCo weighs this mesh as a solid, which needs a closed surface; `inertia=\"shell\"` on the `<mesh>` weighs the surface itself, or give {owner} an `<inertial>`")),
+                Mode::Shell => d,
+            }
         })?;
         let uniform = scale[0].abs() == scale[1].abs() && scale[1].abs() == scale[2].abs();
         if inertia == Inertia::Shell && !uniform {
@@ -235,18 +244,13 @@ impl<'a, 'i> Meshes<'a, 'i> {
                 format!("`scale` of {what}: a shell (`inertia=\"shell\"`) is read with the same scale on each axis"),
             ));
         }
-        let mass = scaled(&body, scale);
+        let mut mass = scaled(&body, scale);
         match inertia {
-            Inertia::Legacy => {
-                if let Some(why) = legacy_differs(&body, scale, &mass) {
-                    return Err(xml
-                        .error(
-                            file.range.clone(),
-                            format!("{what}: MuJoCo's default `inertia=\"legacy\"` counts every tetrahedron of this mesh positive, and {why}, so it weighs more than the solid the mesh bounds; not copied"),
-                        )
-                        .help("set `inertia=\"exact\"` on the `<mesh>` (what the solid weighs), or give the body an `<inertial>`"));
-                }
-            }
+            // NOTE: where no tetrahedron is negative MuJoCo's legacy
+            // weighing is the solid's, which the exact integrals give to
+            // the last bits; elsewhere its own formula, in f64.
+            Inertia::Legacy if legacy_differs(&body, scale, &mass) => mass = legacy(&body, scale),
+            Inertia::Legacy => {}
             Inertia::Convex => {
                 if let Some(why) = not_convex(&body) {
                     return Err(xml
@@ -330,56 +334,109 @@ fn scaled(b: &MeshBody, s: [f64; 3]) -> MeshMass {
 
 /// Six times the signed volume of the tetrahedron (apex, a, b, c).
 fn tet6(apex: [f64; 3], a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> f64 {
-    let u = [a[0] - apex[0], a[1] - apex[1], a[2] - apex[2]];
-    let v = [b[0] - apex[0], b[1] - apex[1], b[2] - apex[2]];
-    let w = [c[0] - apex[0], c[1] - apex[1], c[2] - apex[2]];
-    u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
-        + u[2] * (v[0] * w[1] - v[1] * w[0])
+    let u = sub(a, apex);
+    let v = sub(b, apex);
+    let w = sub(c, apex);
+    dot(u, cross(v, w))
 }
 
-/// Why MuJoCo's legacy weighing of the mesh (scaled by `s`) differs from
-/// the solid's: a tetrahedron from the surface's centroid or from the
-/// centre of mass to a triangle that is negative (beyond round-off).
-fn legacy_differs(b: &MeshBody, s: [f64; 3], m: &MeshMass) -> Option<String> {
-    let pts: Vec<[f64; 3]> = b
-        .points
+fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The mesh's triangles with its corners scaled by `s`.
+fn scaled_triangles(b: &MeshBody, s: [f64; 3]) -> Vec<[[f64; 3]; 3]> {
+    b.faces
         .iter()
-        .map(|p| [p[0] * s[0], p[1] * s[1], p[2] * s[2]])
-        .collect();
-    // A mirroring scale turns the outward triangles inward.
-    let sign = if s[0] * s[1] * s[2] < 0.0 { -1.0 } else { 1.0 };
-    let corners = |f: &[u32; 3]| f.map(|i| pts[i as usize]);
+        .map(|f| f.map(|i| std::array::from_fn(|k| b.points[i as usize][k] * s[k])))
+        .collect()
+}
+
+/// The surface's centroid (each triangle's centroid weighted by its area).
+fn face_centroid(tris: &[[[f64; 3]; 3]]) -> [f64; 3] {
     let (mut area, mut first) = (0.0, [0.0; 3]);
-    for f in b.faces.iter() {
-        let [a, bb, c] = corners(f);
-        let u = [bb[0] - a[0], bb[1] - a[1], bb[2] - a[2]];
-        let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-        let n = [
-            u[1] * v[2] - u[2] * v[1],
-            u[2] * v[0] - u[0] * v[2],
-            u[0] * v[1] - u[1] * v[0],
-        ];
-        let w = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    for [a, b, c] in tris {
+        let w = dot(
+            cross(sub(*b, *a), sub(*c, *a)),
+            cross(sub(*b, *a), sub(*c, *a)),
+        )
+        .sqrt();
         area += w;
         for i in 0..3 {
-            first[i] += w * (a[i] + bb[i] + c[i]) / 3.0;
+            first[i] += w * (a[i] + b[i] + c[i]) / 3.0;
         }
     }
-    let facecen = first.map(|x| x / area);
-    let com = m.centroid.map(|x| x.f64());
+    first.map(|x| x / area)
+}
+
+/// Whether MuJoCo's legacy weighing of the mesh (scaled by `s`) differs
+/// from the solid's `m`: a tetrahedron from the surface's centroid or from
+/// the centre of mass to a triangle that is negative (beyond round-off).
+fn legacy_differs(b: &MeshBody, s: [f64; 3], m: &MeshMass) -> bool {
+    let tris = scaled_triangles(b, s);
+    // A mirroring scale turns the outward triangles inward.
+    let sign = if s[0] * s[1] * s[2] < 0.0 { -1.0 } else { 1.0 };
     let tol = 1e-12 * 6.0 * m.measure.f64();
-    for (apex, said) in [
-        (facecen, "some are negative from the surface's centroid"),
-        (com, "some are negative from the centre of mass"),
-    ] {
-        if b.faces.iter().any(|f| {
-            let [a, bb, c] = corners(f);
-            sign * tet6(apex, a, bb, c) < -tol
-        }) {
-            return Some(said.to_string());
+    let com = m.centroid.map(|x| x.f64());
+    [face_centroid(&tris), com].into_iter().any(|apex| {
+        tris.iter()
+            .any(|[a, bb, c]| sign * tet6(apex, *a, *bb, *c) < -tol)
+    })
+}
+
+/// MuJoCo's legacy weighing (`mjCMesh::ComputeVolume` and
+/// `ComputeInertia` with `mjMESH_INERTIA_LEGACY`), in f64 as MuJoCo
+/// computes it: the centre of mass of the tetrahedra from the surface's
+/// centroid to each triangle, each volume counted positive; then the
+/// second moments and the volume (the mass's) of the tetrahedra from that
+/// centre, each counted positive.
+fn legacy(b: &MeshBody, s: [f64; 3]) -> MeshMass {
+    let tris = scaled_triangles(b, s);
+    let facecen = face_centroid(&tris);
+    let (mut volume, mut first) = (0.0, [0.0; 3]);
+    for [a, bb, c] in &tris {
+        let v = (tet6(facecen, *a, *bb, *c) / 6.0).abs();
+        volume += v;
+        for i in 0..3 {
+            first[i] += v * ((a[i] + bb[i] + c[i]) / 3.0 * 0.75 + facecen[i] * 0.25);
         }
     }
-    None
+    let com = first.map(|x| x / volume);
+    let (mut total, mut p) = (0.0, [[0.0; 3]; 3]);
+    for t in &tris {
+        let [d, e, f] = t.map(|x| sub(x, com));
+        let v = (tet6([0.0; 3], d, e, f) / 6.0).abs();
+        total += v;
+        for i in 0..3 {
+            for j in 0..3 {
+                p[i][j] += v / 20.0
+                    * (2.0 * (d[i] * d[j] + e[i] * e[j] + f[i] * f[j])
+                        + d[i] * e[j]
+                        + d[j] * e[i]
+                        + d[i] * f[j]
+                        + d[j] * f[i]
+                        + e[i] * f[j]
+                        + e[j] * f[i]);
+            }
+        }
+    }
+    MeshMass {
+        measure: DD::of(total),
+        centroid: com.map(DD::of),
+        second: p.map(|row| row.map(DD::of)),
+    }
 }
 
 /// The most corner-plane tests the convexity check makes.
