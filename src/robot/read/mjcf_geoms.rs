@@ -90,6 +90,9 @@ pub(super) fn geoms(
                     None => 0.0,
                 };
                 if group < range.0 || group > range.1 {
+                    let kind = cx.classes.attr(xml, g, class, "geom", "type");
+                    let kind = kind.as_ref().map_or("sphere", |v| v.text.as_str());
+                    segment(xml, g, &cx.classes, class, kind, &owner)?;
                     continue;
                 }
                 let mut geo = geom(&mut cx, g, &owner, class)?;
@@ -202,47 +205,7 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
             )),
         }
     };
-    let fromto = attr("fromto");
-    if let (Some(f), Some(p)) = (&fromto, attr("pos")) {
-        let later = if f.range.start > p.range.start {
-            f.range.clone()
-        } else {
-            p.range
-        };
-        return Err(xml.error(
-            later,
-            format!("a geom of {owner} has both `pos` and `fromto` (its own or its default class's): MuJoCo refuses both"),
-        ));
-    }
-    // The segment `fromto` gives: its midpoint, direction and length.
-    let along = match &fromto {
-        Some(f) => {
-            if !matches!(kind_text, "capsule" | "cylinder" | "box" | "ellipsoid") {
-                return Err(xml.error(
-                    f.range.clone(),
-                    format!("`fromto` of a {kind_text} geom of {owner}: MuJoCo allows it only on a capsule, cylinder, box or ellipsoid"),
-                ));
-            }
-            let e = xml.numbers::<6>(f, owner)?;
-            let v = [e[3] - e[0], e[4] - e[1], e[5] - e[2]];
-            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-            if !(l > 0.0) {
-                return Err(xml.error(
-                    f.range.clone(),
-                    format!(
-                        "`fromto` of a {kind_text} geom of {owner}: expected two different points"
-                    ),
-                ));
-            }
-            let mid = [
-                (e[0] + e[3]) / 2.0,
-                (e[1] + e[4]) / 2.0,
-                (e[2] + e[5]) / 2.0,
-            ];
-            Some((mid, [v[0] / l, v[1] / l, v[2] / l], l))
-        }
-        None => None,
-    };
+    let along = segment(xml, g, classes, class, kind_text, owner)?;
     let mut mesh = None;
     let solid = match kind_text {
         "sphere" => Solid::Sphere(at(0, "radius")?),
@@ -368,5 +331,60 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
         range: xml.tag(g),
         amount,
         mesh,
+    })
+}
+
+/// The segment a geom's `fromto` (its own or its class's) gives: its
+/// midpoint, direction and length; checked as MuJoCo checks it (not with
+/// `pos`, only on a capsule, cylinder, box or ellipsoid) also for a geom
+/// that is not weighed, since MuJoCo refuses the model.
+fn segment(
+    xml: &Xml,
+    g: Node,
+    classes: &Classes,
+    class: Class,
+    kind_text: &str,
+    owner: &str,
+) -> Result<Option<([f64; 3], [f64; 3], f64)>, Diagnostic> {
+    let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
+    let fromto = attr("fromto");
+    if let (Some(f), Some(p)) = (&fromto, attr("pos")) {
+        let later = if f.range.start > p.range.start {
+            f.range.clone()
+        } else {
+            p.range
+        };
+        return Err(xml.error(
+            later,
+            format!("a geom of {owner} has both `pos` and `fromto` (its own or its default class's): MuJoCo refuses both"),
+        ));
+    }
+    Ok(match &fromto {
+        Some(f) => {
+            if !matches!(kind_text, "capsule" | "cylinder" | "box" | "ellipsoid") {
+                return Err(xml.error(
+                    f.range.clone(),
+                    format!("`fromto` of a {kind_text} geom of {owner}: MuJoCo allows it only on a capsule, cylinder, box or ellipsoid"),
+                ));
+            }
+            let e = xml.numbers::<6>(f, owner)?;
+            let v = [e[3] - e[0], e[4] - e[1], e[5] - e[2]];
+            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            if !(l > 0.0) {
+                return Err(xml.error(
+                    f.range.clone(),
+                    format!(
+                        "`fromto` of a {kind_text} geom of {owner}: expected two different points"
+                    ),
+                ));
+            }
+            let mid = [
+                (e[0] + e[3]) / 2.0,
+                (e[1] + e[4]) / 2.0,
+                (e[2] + e[5]) / 2.0,
+            ];
+            Some((mid, [v[0] / l, v[1] / l, v[2] / l], l))
+        }
+        None => None,
     })
 }
