@@ -66,7 +66,11 @@ pub(super) fn geoms(
     let mut out = Vec::with_capacity(d.links.len());
     for world in children(mujoco, "worldbody") {
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
-            let owner = format!("body {}", super::quoted(&d.links[out.len()].name));
+            // An unnamed body is "body N", as `mjcf` names it.
+            let owner = match body.attribute("name").filter(|n| !n.is_empty()) {
+                Some(_) => format!("body {}", super::quoted(&d.links[out.len()].name)),
+                None => d.links[out.len()].name.clone(),
+            };
             let mut items = Vec::new();
             if need.is_some_and(|n| !n[out.len()]) {
                 out.push(items);
@@ -249,11 +253,18 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
                 ));
             };
             let l = cx.meshes.load(xml, name, owner, classes)?;
-            if cx.export && l.shell {
-                return Err(xml.error(
-                    name.range.clone(),
-                    format!("`mesh` of a geom of {owner}: a shell mesh (`inertia=\"shell\"`) is weighed by `report`, not by `export --from-geometry`"),
-                ));
+            if cx.export && (l.shell || l.legacy) {
+                let why = if l.shell {
+                    "a shell mesh (`inertia=\"shell\"`)"
+                } else {
+                    "a mesh MuJoCo's default `inertia=\"legacy\"` weighs otherwise than the solid it bounds"
+                };
+                return Err(xml
+                    .error(
+                        name.range.clone(),
+                        format!("`mesh` of a geom of {owner}: {why} is weighed by `report`, not by `export --from-geometry`, which weighs the solid"),
+                    )
+                    .help("set `inertia=\"exact\"` on the `<mesh>` to export the solid's inertial"));
             }
             mesh = Some(l.mass);
             Solid::Mesh {

@@ -60,6 +60,8 @@ pub(super) struct Loaded {
     pub scale: [f64; 3],
     /// Weighed as a shell (`inertia="shell"`).
     pub shell: bool,
+    /// Weighed by MuJoCo's legacy formula, not as the solid.
+    pub legacy: bool,
 }
 
 /// An MJCF file's mesh assets, each read once when a geom needs it.
@@ -245,11 +247,15 @@ impl<'a, 'i> Meshes<'a, 'i> {
             ));
         }
         let mut mass = scaled(&body, scale);
+        let mut by_legacy = false;
         match inertia {
             // NOTE: where no tetrahedron is negative MuJoCo's legacy
             // weighing is the solid's, which the exact integrals give to
             // the last bits; elsewhere its own formula, in f64.
-            Inertia::Legacy if legacy_differs(&body, scale, &mass) => mass = legacy(&body, scale),
+            Inertia::Legacy if legacy_differs(&body, scale, &mass) => {
+                mass = legacy(&body, scale);
+                by_legacy = true;
+            }
             Inertia::Legacy => {}
             Inertia::Convex => {
                 if let Some(why) = not_convex(&body) {
@@ -268,6 +274,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
             uri: uri.to_string_lossy().into_owned(),
             scale,
             shell: inertia == Inertia::Shell,
+            legacy: by_legacy,
         };
         self.loaded.insert(node.id(), l.clone());
         Ok(l)
