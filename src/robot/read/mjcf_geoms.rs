@@ -345,6 +345,9 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
     })
 }
 
+/// A `fromto` segment: its midpoint, unit direction and length.
+type Segment = ([f64; 3], [f64; 3], f64);
+
 /// The segment a geom's `fromto` (its own or its class's) gives: its
 /// midpoint, direction and length; checked as MuJoCo checks it (not with
 /// `pos`, only on a capsule, cylinder, box or ellipsoid) also for a geom
@@ -356,7 +359,7 @@ fn segment(
     class: Class,
     kind_text: &str,
     owner: &str,
-) -> Result<Option<([f64; 3], [f64; 3], f64)>, Diagnostic> {
+) -> Result<Option<Segment>, Diagnostic> {
     let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
     let fromto = attr("fromto");
     if let (Some(f), Some(p)) = (&fromto, attr("pos")) {

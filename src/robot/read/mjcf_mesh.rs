@@ -203,7 +203,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
         let scale = match &scale_value {
             Some(s) => {
                 let n = xml.numbers::<3>(s, &what)?;
-                if n.iter().any(|x| *x == 0.0) {
+                if n.contains(&0.0) {
                     return Err(xml.error(
                         s.range.clone(),
                         format!(
@@ -484,4 +484,70 @@ fn not_convex(b: &MeshBody) -> Option<String> {
         }
     }
     None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A unit cube from (1, 2, 3) to (2, 3, 4), triangles outward.
+    const CUBE: &str = "v 1 2 3\nv 2 2 3\nv 2 3 3\nv 1 3 3\nv 1 2 4\nv 2 2 4\nv 2 3 4\nv 1 3 4\n\
+f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
+
+    fn cube(mode: Mode) -> MeshBody {
+        MeshBody::load(FileType::Obj, CUBE.as_bytes(), mode).unwrap()
+    }
+
+    fn f(x: DD) -> f64 {
+        x.f64()
+    }
+
+    #[test]
+    fn a_scale_stretches_the_volume_and_mirrors_the_centroid() {
+        // Scaled by (2, −1, 3): a 2 × 1 × 3 box of volume 6, centroid
+        // (3, −2.5, 10.5); ∫x² about it = V a²/12 with a = 2.
+        let m = scaled(&cube(Mode::Solid), [2.0, -1.0, 3.0]);
+        assert!((f(m.measure) - 6.0).abs() < 1e-14);
+        let c = m.centroid.map(f);
+        assert!(
+            (c[0] - 3.0).abs() < 1e-14 && (c[1] + 2.5).abs() < 1e-14 && (c[2] - 10.5).abs() < 1e-14
+        );
+        assert!((f(m.second[0][0]) - 6.0 * 4.0 / 12.0).abs() < 1e-13);
+        assert!((f(m.second[2][2]) - 6.0 * 9.0 / 12.0).abs() < 1e-13);
+        assert!(f(m.second[0][1]).abs() < 1e-13);
+    }
+
+    #[test]
+    fn a_uniform_scale_multiplies_a_shells_area_by_its_square() {
+        let m = scaled(&cube(Mode::Shell), [-2.0, 2.0, 2.0]);
+        assert!((f(m.measure) - 24.0).abs() < 1e-13);
+    }
+
+    #[test]
+    fn mujocos_legacy_formula_on_a_cube_is_the_cube() {
+        // Convex: no tetrahedron negative, and the formula itself gives
+        // the solid: volume 1, centroid (1.5, 2.5, 3.5), ∫x² = 1/12.
+        let b = cube(Mode::Solid);
+        let exact = scaled(&b, [1.0; 3]);
+        assert!(!legacy_differs(&b, [1.0; 3], &exact));
+        let l = legacy(&b, [1.0; 3]);
+        assert!((f(l.measure) - 1.0).abs() < 1e-14);
+        let c = l.centroid.map(f);
+        assert!(
+            (c[0] - 1.5).abs() < 1e-14 && (c[1] - 2.5).abs() < 1e-14 && (c[2] - 3.5).abs() < 1e-14
+        );
+        assert!((f(l.second[1][1]) - 1.0 / 12.0).abs() < 1e-14);
+        assert!(f(l.second[0][2]).abs() < 1e-14);
+    }
+
+    #[test]
+    fn a_cube_is_convex_and_an_l_is_not() {
+        assert_eq!(not_convex(&cube(Mode::Solid)), None);
+        let l = "v 0 0 1\nv 2 0 1\nv 2 1 1\nv 1 1 1\nv 1 2 1\nv 0 2 1\n\
+v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\n\
+f 1 2 3\nf 1 3 4\nf 1 4 5\nf 1 5 6\nf 7 9 8\nf 7 10 9\nf 7 11 10\nf 7 12 11\n\
+f 7 8 2\nf 7 2 1\nf 8 9 3\nf 8 3 2\nf 9 10 4\nf 9 4 3\nf 10 11 5\nf 10 5 4\nf 11 12 6\nf 11 6 5\nf 12 7 1\nf 12 1 6\n";
+        let b = MeshBody::load(FileType::Obj, l.as_bytes(), Mode::Solid).unwrap();
+        assert!(not_convex(&b).is_some_and(|w| w.contains("in front of a triangle's plane")));
+    }
 }
