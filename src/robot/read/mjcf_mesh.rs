@@ -269,6 +269,19 @@ impl<'a, 'i> Meshes<'a, 'i> {
             }
             Inertia::Exact | Inertia::Shell => {}
         }
+        // A scale (or mesh) far beyond f64's range: the integrals
+        // overflow or vanish.
+        let finite = mass.measure.f64() > 0.0
+            && mass.measure.f64().is_finite()
+            && mass.centroid.iter().all(|c| c.f64().is_finite())
+            && mass.second.iter().flatten().all(|x| x.f64().is_finite());
+        if !finite {
+            let at = scale_value.map_or_else(|| file.range.clone(), |s| s.range);
+            return Err(xml.error(
+                at,
+                format!("{what}: its volume, centre or moments, scaled, leave the range of f64; expected a `scale` that keeps them finite and the volume above zero"),
+            ));
+        }
         let l = Loaded {
             mass: Arc::new(mass),
             uri: uri.to_string_lossy().into_owned(),
