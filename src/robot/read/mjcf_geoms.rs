@@ -77,16 +77,27 @@ pub(super) fn geoms(
                 continue;
             }
             // The body's geoms, also those inside its frames (not those
-            // of the bodies inside it), in document order.
-            for g in body.descendants().skip(1).filter(|n| qname(*n) == "geom") {
+            // of the bodies inside it), in document order: a walk into
+            // frames only, with a stack of its own (a long chain of bodies
+            // is not walked once per body).
+            let mut stack: Vec<Node> = body.children().filter(Node::is_element).collect();
+            stack.reverse();
+            while let Some(g) = stack.pop() {
+                match qname(g) {
+                    "frame" => {
+                        let from = stack.len();
+                        stack.extend(g.children().filter(Node::is_element));
+                        stack[from..].reverse();
+                        continue;
+                    }
+                    "geom" => {}
+                    _ => continue,
+                }
                 let mut frames = Vec::new();
                 let mut up = g.parent();
                 while let Some(n) = up.filter(|n| qname(*n) == "frame") {
                     frames.push(n);
                     up = n.parent();
-                }
-                if up != Some(body) {
-                    continue;
                 }
                 let class = cx.classes.of(xml, g)?;
                 let group = match cx.classes.attr(xml, g, class, "geom", "group") {
