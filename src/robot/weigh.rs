@@ -15,7 +15,7 @@
 //! evaluated and summed in double-double about the body's centre of mass,
 //! and rounded once to f64: the inertial a file would carry.
 
-use super::read::{Amount, Geometry, Solid};
+use super::read::{Amount, Geometry, MeshMass, Solid};
 use super::{Description, Dialect, Inertial, Tensor, Written};
 use crate::diag::{Diagnostic, Source};
 use crate::numeric::{DD, Real};
@@ -57,45 +57,70 @@ pub fn mjcf_inertials(source: &Source, d: &mut Description) -> Result<(), Diagno
     Ok(())
 }
 
-/// One geom's shape and dimensions, as its closed forms take them.
-fn closed_form(s: &Solid) -> (Shape, Vec<DD>) {
+/// One geom's mass, centre and second moments about its centre, in the
+/// body frame: a shape's closed forms, or a mesh's integrals (`MeshMass`:
+/// MuJoCo's weighing of it, read with the geom).
+fn part(geo: &Geometry) -> (DD, [DD; 3], [[DD; 3]; 3]) {
     let d = |x: &[f64]| x.iter().map(|&v| DD::of(v)).collect::<Vec<_>>();
-    match s {
+    let (shape, dims) = match &geo.solid {
         Solid::Box(size) => (Shape::Box, d(size)),
         Solid::Sphere(r) => (Shape::Sphere, d(&[*r, 0.0])),
         Solid::Cylinder { radius, length } => (Shape::Cylinder, d(&[*radius, 0.0, *length])),
         Solid::Capsule { radius, length } => (Shape::Capsule, d(&[*radius, 0.0, *length])),
         Solid::Ellipsoid(r) => (Shape::Ellipsoid, d(r)),
-        Solid::Mesh { .. } => unreachable!("an MJCF mesh geom is refused when it is read"),
-    }
+        Solid::Mesh { .. } => {
+            let mesh = geo
+                .mesh
+                .as_ref()
+                .expect("invariant: an MJCF mesh geom is weighed when it is read");
+            return mesh_part(geo, mesh);
+        }
+    };
+    let m = match geo.amount {
+        Some(Amount::Mass(m)) => DD::of(m),
+        Some(Amount::Density(rho)) => DD::of(rho) * shape.measure_of(&dims),
+        None => DD::of(MUJOCO_DENSITY) * shape.measure_of(&dims),
+    };
+    let s = shape.second_moments(m, &dims);
+    let r = geo.pose.r;
+    let own = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            (0..3).fold(DD::of(0.0), |acc, k| {
+                acc + DD::of(r[i][k]) * DD::of(r[j][k]) * s[k]
+            })
+        })
+    });
+    (m, geo.pose.p.map(DD::of), own)
+}
+
+/// A mesh geom: its mass (its `mass`, else its density times the mesh's
+/// volume or area), its centroid placed by the geom's pose, and R S Rᵀ of
+/// its second moments scaled to that mass.
+fn mesh_part(geo: &Geometry, mesh: &MeshMass) -> (DD, [DD; 3], [[DD; 3]; 3]) {
+    let m = match geo.amount {
+        Some(Amount::Mass(m)) => DD::of(m),
+        Some(Amount::Density(rho)) => DD::of(rho) * mesh.measure,
+        None => DD::of(MUJOCO_DENSITY) * mesh.measure,
+    };
+    let per = m / mesh.measure;
+    let r = geo.pose.r.map(|row| row.map(DD::of));
+    let center = std::array::from_fn(|i| {
+        (0..3).fold(DD::of(geo.pose.p[i]), |a, k| a + r[i][k] * mesh.centroid[k])
+    });
+    // R S Rᵀ, then times the density.
+    let rs: [[DD; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| (0..3).fold(DD::of(0.0), |a, k| a + r[i][k] * mesh.second[k][j]))
+    });
+    let own = std::array::from_fn(|i| {
+        std::array::from_fn(|j| (0..3).fold(DD::of(0.0), |a, k| a + rs[i][k] * r[j][k]) * per)
+    });
+    (m, center, own)
 }
 
 /// Mass (kg), centre (m) and inertia tensor about the centre (kg·m², the
 /// tensor convention) of the geoms `g`, in the body frame.
 pub fn weigh(g: &[Geometry]) -> (f64, [f64; 3], Tensor) {
-    // Each geom: mass, centre, second moments about its centre in the
-    // body's axes (R diag(s) Rᵀ).
-    let parts: Vec<(DD, [DD; 3], [[DD; 3]; 3])> = g
-        .iter()
-        .map(|geo| {
-            let (shape, dims) = closed_form(&geo.solid);
-            let m = match geo.amount {
-                Some(Amount::Mass(m)) => DD::of(m),
-                Some(Amount::Density(rho)) => DD::of(rho) * shape.measure_of(&dims),
-                None => DD::of(MUJOCO_DENSITY) * shape.measure_of(&dims),
-            };
-            let s = shape.second_moments(m, &dims);
-            let r = geo.pose.r;
-            let own = std::array::from_fn(|i| {
-                std::array::from_fn(|j| {
-                    (0..3).fold(DD::of(0.0), |acc, k| {
-                        acc + DD::of(r[i][k]) * DD::of(r[j][k]) * s[k]
-                    })
-                })
-            });
-            (m, geo.pose.p.map(DD::of), own)
-        })
-        .collect();
+    let parts: Vec<(DD, [DD; 3], [[DD; 3]; 3])> = g.iter().map(part).collect();
     let mass = parts.iter().fold(DD::of(0.0), |a, p| a + p.0);
     let center: [DD; 3] =
         std::array::from_fn(|i| parts.iter().fold(DD::of(0.0), |a, p| a + p.0 * p.1[i]) / mass);
@@ -137,6 +162,7 @@ mod tests {
             },
             range: 0..0,
             amount,
+            mesh: None,
         }
     }
 

@@ -59,6 +59,7 @@ mod report_keys;
 mod robot_body;
 mod robots;
 mod robots_hostile;
+mod robots_mjcf;
 mod robots_more;
 mod schema;
 mod search_rules;

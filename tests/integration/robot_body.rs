@@ -640,13 +640,20 @@ fn export_from_geometry_reads_mjcf_geoms() {
 }
 
 #[test]
-fn a_mesh_geom_of_a_body_without_inertial_is_refused_at_its_type() {
+fn a_mesh_geom_naming_no_mesh_asset_is_refused_at_its_mesh() {
+    // Mesh geoms are weighed (tests/integration/robots_mjcf.rs); one whose
+    // `mesh` names no `<asset><mesh>` is an error at the name.
     let path = mjcf("geom-mesh", "<body>\n<geom type='mesh' mesh='m'/></body>");
     let out = massprop(&["report", path.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("r.xml:2:13: error: `type` of a geom"), "{err}");
+    assert!(
+        err.contains(
+            "r.xml:2:25: error: `mesh` of a geom of body 1: no `<mesh>` asset is named \"m\""
+        ),
+        "{err}"
+    );
 }
 
 #[test]

@@ -1267,3 +1267,166 @@ fn robot_fuzz_regressions_keep_the_promise() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------
+// MJCF bodies weighed from their geoms (issue 34, third round): mesh
+// assets (a closed block, an open surface, bytes that are no mesh, a file
+// that is missing or outside the model's directory), `meshdir`, `scale`,
+// every `<mesh inertia>`, geoms inside nested `<frame>`s and placed by
+// their default class.
+
+/// A closed block and an open surface, as OBJ; bytes that are no mesh.
+const MESH_FILES: &[(&str, &str)] = &[
+    (
+        "block.obj",
+        "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 0 1 0\nv 0 0 1\nv 2 0 1\nv 2 1 1\nv 0 1 1\n\
+         f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n",
+    ),
+    (
+        "open.obj",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\n",
+    ),
+    ("junk.stl", "solid nothing\nendsolid\n\u{0}\u{1}"),
+];
+
+/// What a mesh asset's `file` may name.
+const MESH_NAMES: &[&str] = &[
+    "block.obj",
+    "block.obj",
+    "open.obj",
+    "junk.stl",
+    "missing.obj",
+    "../outside.obj",
+    "/etc/passwd",
+    "block.OBJ",
+    "",
+];
+
+const MESH_INERTIAS: &[&str] = &["", "", "exact", "legacy", "convex", "shell", "solid"];
+
+const ORIENTATION_FORMS: &[(&str, usize)] = &[
+    ("quat", 4),
+    ("euler", 3),
+    ("axisangle", 4),
+    ("zaxis", 3),
+    ("xyaxes", 6),
+];
+
+fn numbers_of(n: usize) -> BoxedStrategy<String> {
+    prop::collection::vec(number(), n..=n)
+        .prop_map(|v| v.join(" "))
+        .boxed()
+}
+
+/// An orientation attribute (one form), or none.
+fn turn_attr() -> BoxedStrategy<String> {
+    prop_oneof![
+        2 => Just(String::new()),
+        3 => (prop::sample::select(ORIENTATION_FORMS), numbers_of(6))
+            .prop_map(|((form, n), nums)| {
+                let v: Vec<&str> = nums.split(' ').take(n).collect();
+                format!(" {form}=\"{}\"", v.join(" "))
+            }),
+    ]
+    .boxed()
+}
+
+/// One geom: a type (a mesh sometimes), a size, a placement and a weight.
+fn mesh_geom() -> BoxedStrategy<String> {
+    (
+        prop::sample::select(&["mesh", "mesh", "box", "capsule", "sphere", "plane", ""][..]),
+        numbers_of(3),
+        prop_oneof![
+            Just(String::new()),
+            numbers_of(3).prop_map(|p| format!(" pos=\"{p}\"")),
+            numbers_of(6).prop_map(|p| format!(" fromto=\"{p}\"")),
+        ],
+        turn_attr(),
+        prop_oneof![
+            3 => Just(String::new()),
+            1 => number().prop_map(|m| format!(" mass=\"{m}\"")),
+            1 => number().prop_map(|d| format!(" density=\"{d}\"")),
+            1 => Just(" shellinertia=\"true\"".to_string()),
+        ],
+        prop::sample::select(&["m0", "m1", "m2", "nope"][..]),
+    )
+        .prop_map(|(kind, size, place, turn, weight, mesh)| {
+            let kind = if kind.is_empty() {
+                String::new()
+            } else {
+                format!(" type=\"{kind}\"")
+            };
+            format!("<geom{kind} mesh=\"{mesh}\" size=\"{size}\"{place}{turn}{weight}/>")
+        })
+        .boxed()
+}
+
+/// A generated MJCF file of mesh assets, classes and frames.
+fn mesh_model() -> impl Strategy<Value = String> {
+    (
+        prop::collection::vec(
+            (
+                prop::sample::select(MESH_NAMES),
+                prop::sample::select(MESH_INERTIAS),
+                prop_oneof![Just(String::new()), numbers_of(3)],
+            ),
+            1..4,
+        ),
+        prop::sample::select(&["", "meshdir=\"sub\"", "meshdir=\"..\"", "assetdir=\".\""][..]),
+        (mesh_geom(), turn_attr()),
+        prop::collection::vec((mesh_geom(), 0usize..3, turn_attr(), any::<bool>()), 1..5),
+        prop::sample::select(&["", "inertiafromgeom=\"true\""][..]),
+    )
+        .prop_map(|(meshes, dir, (default_geom, frame_turn), geoms, fromgeom)| {
+            let assets: String = meshes
+                .iter()
+                .enumerate()
+                .map(|(i, (file, inertia, scale))| {
+                    let mut a = format!("<mesh name=\"m{i}\" file=\"{file}\"");
+                    if !inertia.is_empty() {
+                        a.push_str(&format!(" inertia=\"{inertia}\""));
+                    }
+                    if !scale.is_empty() {
+                        a.push_str(&format!(" scale=\"{scale}\""));
+                    }
+                    a + "/>"
+                })
+                .collect();
+            let mut body = String::new();
+            for (g, depth, turn, joint) in &geoms {
+                if *joint {
+                    body.push_str("<body><joint/>");
+                }
+                for _ in 0..*depth {
+                    body.push_str(&format!("<frame pos=\"0.1 0 0\"{turn}{frame_turn}>"));
+                }
+                body.push_str(g);
+                body.push_str(&"</frame>".repeat(*depth));
+                if *joint {
+                    body.push_str("</body>");
+                }
+            }
+            format!(
+                "<mujoco>\n<compiler {dir} {fromgeom}/>\n<default>{}</default>\n<asset>{assets}</asset>\n\
+                 <worldbody>\n<body name=\"b\"><freejoint/>\n{body}\n</body>\n</worldbody>\n</mujoco>\n",
+                default_geom
+            )
+        })
+}
+
+#[test]
+fn generated_mjcf_mesh_frame_and_class_files_keep_the_promise() {
+    let dir = crate::common::scratch("robots_hostile", "mesh_models");
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    for (name, text) in MESH_FILES {
+        std::fs::write(dir.join(name), text).unwrap();
+        std::fs::write(dir.join("sub").join(name), text).unwrap();
+    }
+    std::fs::write(dir.parent().unwrap().join("outside.obj"), MESH_FILES[0].1).unwrap();
+    property(
+        "MJCF mesh, frame and class files generated",
+        GENERATED,
+        (mesh_model(), 0.0..1.0f64),
+        |(text, pick)| hostile_robot(&dir, "mesh.xml", text.as_bytes(), *pick),
+    );
+}

@@ -332,11 +332,14 @@ fn two_default_classes_of_one_name_are_refused_at_the_second() {
 }
 
 #[test]
-fn a_geom_placed_by_its_default_class_is_refused_at_the_default() {
-    let text = "<mujoco><default><geom euler='0 90 0'/></default>\n<worldbody><body><geom size='1'/></body></worldbody></mujoco>\n";
+fn a_default_classs_geom_with_two_orientations_is_refused_at_the_second() {
+    // A geom's placement comes from its class (tests/integration/
+    // robots_mjcf.rs); a class that writes two orientations is MuJoCo's
+    // error ("multiple orientation specifiers").
+    let text = "<mujoco><default><geom euler='0 90 0' quat='1 0 0 0'/></default>\n<worldbody><body><geom size='1'/></body></worldbody></mujoco>\n";
     let err = refused("placed.xml", text, &[]);
     assert!(
-        err.contains("placed.xml:1:31: error: `euler` of a default class's `<geom>`"),
+        err.contains("placed.xml:1:45: error: a default class's `<geom>` gives two orientations, `euler` and `quat`: MuJoCo allows one"),
         "{err}"
     );
 }

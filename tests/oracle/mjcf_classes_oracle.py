@@ -2,9 +2,11 @@
 (issue 34, second round).
 
 Random MJCF trees whose joints and geoms take their values from default
-classes (the main class, nested classes, `childclass` on bodies, `class`
-on joints and geoms: joint type, axis, pos, ref, range, limited; geom
-type, size, density, mass, group), some bodies weighed from their geoms
+classes (the main class, nested classes, `childclass` on bodies and
+frames, `class` on joints and geoms: joint type, axis, pos, ref, range,
+limited; geom type, size, density, mass, group, and placement: pos,
+fromto, quat/euler/axisangle/zaxis/xyaxes against a geom's own), geoms and
+bodies inside (nested) `<frame>`s, some bodies weighed from their geoms
 (`inertiafromgeom`), some with an `<inertial>`. For each, at random joint
 values: MuJoCo's `mj_kinematics` and `mj_comPos` at that `qpos`, and the
 world body's subtree mass, centre of mass and inertia about it formed from
@@ -63,7 +65,27 @@ def geom_defaults(rng):
         attrs["mass"] = repr(rng.uniform(0.1, 3))
     if rng.random() < 0.2:
         attrs["group"] = "6"
+    # A geom's placement from its class: a position, one orientation form,
+    # or a segment (where a geom of the class writes `pos` too, MuJoCo
+    # refuses the model, and so must massprop).
+    r = rng.random()
+    if r < 0.06:
+        attrs["fromto"] = nums(rng, 6, -0.2, 0.2)
+    elif r < 0.45:
+        attrs["pos"] = nums(rng, 3, -0.2, 0.2)
+    attrs.update(orientation(rng, 0.5))
     return attrs
+
+
+def orientation(rng, p):
+    """One orientation form, with probability p."""
+    if rng.random() >= p:
+        return {}
+    form = rng.choice(["quat", "euler", "axisangle", "zaxis", "xyaxes"])
+    n = {"quat": 4, "euler": 3, "axisangle": 4, "zaxis": 3, "xyaxes": 6}[form]
+    if form == "euler":
+        return {form: nums(rng, 3, -90, 90)}
+    return {form: nums(rng, n, -1, 1)}
 
 
 def element(tag, attrs):
@@ -108,7 +130,9 @@ def body_xml(rng, depth, counter):
             % (nums(rng, 3, -0.1, 0.1), rng.uniform(0.5, 3))
         )
     for g in range(rng.randint(1, 2)):
-        ga = {"size": nums(rng, 3, 0.02, 0.2), "pos": nums(rng, 3, -0.1, 0.1)}
+        ga = {"size": nums(rng, 3, 0.02, 0.2)}
+        if rng.random() < 0.6:
+            ga["pos"] = nums(rng, 3, -0.1, 0.1)
         if g == 0:
             ga["group"] = "0"
         if rng.random() < 0.5:
@@ -117,12 +141,26 @@ def body_xml(rng, depth, counter):
             del ga["size"]
             ga["type"] = "box"
             ga["size"] = nums(rng, 3, 0.02, 0.2)
-        if rng.random() < 0.3:
-            ga["quat"] = nums(rng, 4, -1, 1)
+        ga.update(orientation(rng, 0.3))
         inner.append(element("geom", ga))
     if depth > 0:
         for _ in range(rng.randint(1, 2)):
             inner.append(body_xml(rng, depth - 1, counter))
+    # Some of its geoms and bodies inside a `<frame>` (nested, sometimes),
+    # placed by the frame's pose, taking its `childclass`.
+    if rng.random() < 0.4:
+        movable = [i for i, x in enumerate(inner) if x.startswith(("<geom", "<body"))]
+        if movable:
+            lo = rng.choice(movable)
+            hi = rng.choice([i for i in movable if i >= lo])
+            for _ in range(rng.randint(1, 2)):
+                fa = {"pos": nums(rng, 3, -0.3, 0.3)}
+                fa.update(orientation(rng, 0.7))
+                if rng.random() < 0.3:
+                    fa["childclass"] = rng.choice(CLASSES)
+                head = "<frame " + " ".join(f'{a}="{v}"' for a, v in fa.items()) + ">"
+                inner[lo : hi + 1] = [head + "".join(inner[lo : hi + 1]) + "</frame>"]
+                hi = lo
     return f"<body {' '.join(f'{a}={chr(34)}{v}{chr(34)}' for a, v in attrs.items())}>" + "".join(inner) + "</body>"
 
 
@@ -182,12 +220,31 @@ def main():
         # MuJoCo writes its warnings to MUJOCO_LOG.TXT in the working
         # directory: keep it out of the repository.
         os.chdir(tmp)
+        refusals = 0
         for case in range(args.cases):
-            text = robot(rng)
-            path = os.path.join(tmp, f"c{case}.xml")
-            with open(path, "w") as f:
-                f.write(text)
-            model = mujoco.MjModel.from_xml_path(path)
+            # A model MuJoCo refuses for a geom's placement (`pos` and
+            # `fromto` both, `fromto` on a sphere) massprop must refuse
+            # too; then another is drawn.
+            while True:
+                text = robot(rng)
+                path = os.path.join(tmp, f"c{case}.xml")
+                with open(path, "w") as f:
+                    f.write(text)
+                try:
+                    model = mujoco.MjModel.from_xml_path(path)
+                    break
+                except ValueError as e:
+                    if "fromto" not in str(e):
+                        raise
+                    # Every geom read (massprop reads only the geoms of
+                    # the bodies it weighs from them).
+                    with open(path, "w") as f:
+                        f.write(text.replace("<worldbody>", '<compiler inertiafromgeom="true"/><worldbody>', 1))
+                    out = subprocess.run([args.massprop, "report", path], capture_output=True, text=True)
+                    if out.returncode != 2 or "fromto" not in out.stderr:
+                        bad += 1
+                        print(f"MuJoCo refuses ({e}) and massprop does not:\n{out.stderr}\n{text}", file=sys.stderr)
+                    refusals += 1
             data = mujoco.MjData(model)
             data.qpos[:] = model.qpos0
             values = {}
@@ -213,7 +270,10 @@ def main():
                 if not ok:
                     bad += 1
                     print(text, file=sys.stderr)
-    print(f"{args.cases} MJCF robots with default classes: {bad} disagreements")
+    print(
+        f"{args.cases} MJCF robots with default classes and frames: {bad} disagreements "
+        f"({refusals} more refused by both for a geom's `fromto`)"
+    )
     sys.exit(1 if bad else 0)
 
 

@@ -44,6 +44,19 @@ pub struct Geometry {
     /// gives neither (MJCF: `--density`/`--material`, else MuJoCo's 1000
     /// kg/m³) and for URDF and SDFormat (the command's flag).
     pub amount: Option<Amount>,
+    /// MJCF: a mesh geom's integrals as MuJoCo weighs them (`mjcf_mesh`);
+    /// None for every other geometry.
+    pub mesh: Option<std::sync::Arc<MeshMass>>,
+}
+
+/// An MJCF mesh's integrals per unit density, in the geom's frame (its
+/// `scale` applied): volume (a shell's area), centroid, and ∫ρρᵀ about the
+/// centroid.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshMass {
+    pub measure: crate::numeric::DD,
+    pub centroid: [crate::numeric::DD; 3],
+    pub second: crate::numeric::M3<crate::numeric::DD>,
 }
 
 /// What an MJCF geom says it weighs.
@@ -110,6 +123,7 @@ pub fn geometry(
                 pose,
                 range: xml.tag(g),
                 amount: None,
+                mesh: None,
             });
         }
         out.push(items);

@@ -144,6 +144,20 @@ impl<'a, 'i> Classes<'a, 'i> {
             .or_else(|| self.inherited(xml, class, kind, name))
     }
 
+    /// The `<kind>` elements of class `class` and the classes it inherits
+    /// from, nearest first.
+    pub fn defaults(&self, class: Class, kind: &str) -> Vec<Node<'a, 'i>> {
+        let mut out = Vec::new();
+        let mut c = class;
+        while let Some(k) = c {
+            let (d, parent) = self.classes[k];
+            out.extend(d.children().filter(|e| qname(*e) == kind));
+            // Parents come before their children: the chain ends.
+            c = parent;
+        }
+        out
+    }
+
     /// The value class `class` (or a class it inherits from) gives the
     /// attribute `name` of a `<kind>` element.
     pub fn inherited(&self, xml: &Xml, class: Class, kind: &str, name: &str) -> Option<Value> {

@@ -3,12 +3,23 @@
 //! what MuJoCo's compiler (`inertiafromgeom`) sums. MJCF has no
 //! collision/visual split: as MuJoCo's compiler does for inertia, the geoms
 //! whose `group` (default 0) lies within `<compiler inertiagrouprange>`
-//! (default 0 5) count. Sizes as MuJoCo reads them: a box's half-extents,
-//! a sphere's radius, a capsule's or cylinder's radius and half-length (or
-//! its `fromto`), an ellipsoid's radii. SI.
+//! (default 0 5) count: the body's own and those inside its `<frame>`s
+//! (placed by each frame's pose, nested frames composed). Sizes as MuJoCo
+//! reads them: a box's half-extents, a sphere's radius, a capsule's or
+//! cylinder's radius and half-length (or its `fromto`), an ellipsoid's
+//! radii; a mesh's file through `mjcf_mesh`. SI.
+//!
+//! A geom's placement is its own or its default class's, as MuJoCo 4
+//! applies it: `pos` and `fromto` each the nearest that writes it (both at
+//! once is MuJoCo's error); the orientation is the one form written at the
+//! nearest level (the geom, then its class, its parent class, …) that
+//! writes any (`quat`, `axisangle`, `xyaxes`, `zaxis` or `euler`), so a
+//! geom's own `euler` overrides its class's `quat`; `fromto` overrides
+//! both `pos` and the orientation.
 
 use super::geometry::{Amount, Geometry, Solid, positive};
 use super::mjcf_class::{Class, Classes};
+use super::mjcf_mesh::Meshes;
 use super::orient::{Settings, orientation, quat_to_matrix, z_to_quat};
 use super::{Value, Xml, children, qname};
 use crate::diag::Diagnostic;
@@ -18,20 +29,18 @@ use roxmltree::Node;
 
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
-/// The geom attributes that place it, read only where the geom writes
-/// them.
-const PLACED: [&str; 7] = [
-    "pos",
-    "fromto",
-    "quat",
-    "axisangle",
-    "xyaxes",
-    "zaxis",
-    "euler",
-];
+/// What reading a body's geoms shares.
+struct Ctx<'x, 's, 'a, 'i> {
+    xml: &'x Xml<'s>,
+    settings: Settings,
+    classes: Classes<'a, 'i>,
+    meshes: Meshes<'a, 'i>,
+    /// Read for `export --from-geometry` (not for the whole robot).
+    export: bool,
+}
 
 /// Per body of `d` (in its order), its geoms that count for inertia; none
-/// read for a body `need` leaves out (None: every body).
+/// read for a body `need` leaves out (None: every body, for `export`).
 pub(super) fn geoms(
     xml: &Xml,
     mujoco: Node,
@@ -47,37 +56,68 @@ pub(super) fn geoms(
             range = (lo, hi);
         }
     }
-    let classes = Classes::read(xml, mujoco)?;
+    let mut cx = Ctx {
+        xml,
+        settings,
+        classes: Classes::read(xml, mujoco)?,
+        meshes: Meshes::read(xml, mujoco, xml.source)?,
+        export: need.is_none(),
+    };
     let mut out = Vec::with_capacity(d.links.len());
     for world in children(mujoco, "worldbody") {
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
-            let owner = format!("body {}", super::quoted(&d.links[out.len()].name));
+            // An unnamed body is "body N", as `mjcf` names it.
+            let owner = match body.attribute("name").filter(|n| !n.is_empty()) {
+                Some(_) => format!("body {}", super::quoted(&d.links[out.len()].name)),
+                None => d.links[out.len()].name.clone(),
+            };
             let mut items = Vec::new();
             if need.is_some_and(|n| !n[out.len()]) {
                 out.push(items);
                 continue;
             }
-            if let Some(g) = children(body, "frame")
-                .flat_map(|f| f.descendants())
-                .find(|n| qname(*n) == "geom")
-            {
-                return Err(xml
-                    .error(
-                        xml.tag(g),
-                        format!("a geom inside a `<frame>` of {owner}: not read for inertia"),
-                    )
-                    .help("give the body an `<inertial>`"));
-            }
-            for g in children(body, "geom") {
-                let class = classes.of(xml, g)?;
-                let group = match classes.attr(xml, g, class, "geom", "group") {
+            // The body's geoms, also those inside its frames (not those
+            // of the bodies inside it), in document order: a walk into
+            // frames only, with a stack of its own (a long chain of bodies
+            // is not walked once per body).
+            let mut stack: Vec<Node> = body.children().filter(Node::is_element).collect();
+            stack.reverse();
+            while let Some(g) = stack.pop() {
+                match qname(g) {
+                    "frame" => {
+                        let from = stack.len();
+                        stack.extend(g.children().filter(Node::is_element));
+                        stack[from..].reverse();
+                        continue;
+                    }
+                    "geom" => {}
+                    _ => continue,
+                }
+                let mut frames = Vec::new();
+                let mut up = g.parent();
+                while let Some(n) = up.filter(|n| qname(*n) == "frame") {
+                    frames.push(n);
+                    up = n.parent();
+                }
+                let class = cx.classes.of(xml, g)?;
+                let group = match cx.classes.attr(xml, g, class, "geom", "group") {
                     Some(v) => xml.number(&v, &owner)?,
                     None => 0.0,
                 };
                 if group < range.0 || group > range.1 {
+                    let kind = cx.classes.attr(xml, g, class, "geom", "type");
+                    let kind = kind.as_ref().map_or("sphere", |v| v.text.as_str());
+                    segment(xml, g, &cx.classes, class, kind, &owner)?;
                     continue;
                 }
-                items.push(geom(xml, g, &owner, &settings, &classes, class)?);
+                let mut geo = geom(&mut cx, g, &owner, class)?;
+                // Outermost frame first: body ← frame ← … ← geom.
+                let mut at = Pose::IDENTITY;
+                for f in frames.iter().rev() {
+                    at = at.then(&frame_pose(&cx, *f, &owner)?);
+                }
+                geo.pose = at.then(&geo.pose);
+                items.push(geo);
             }
             out.push(items);
         }
@@ -85,42 +125,80 @@ pub(super) fn geoms(
     Ok(out)
 }
 
-/// One `<geom>`: its solid, pose and what it weighs.
-fn geom(
+/// A `<frame>`'s pose in what encloses it: its `pos` and orientation.
+fn frame_pose(cx: &Ctx, f: Node, owner: &str) -> Result<Pose, Diagnostic> {
+    let xml = cx.xml;
+    let p = match xml.attr(f, "pos") {
+        Some(v) => xml.numbers::<3>(&v, owner)?,
+        None => [0.0; 3],
+    };
+    let r = match one_orientation(xml, f, &format!("a `<frame>` of {owner}"))? {
+        Some((form, v)) => quat_to_matrix(orientation(xml, form, &v, owner, &cx.settings)?),
+        None => Pose::IDENTITY.r,
+    };
+    Ok(Pose { p, r })
+}
+
+/// The orientation `node` writes, at most one form (MuJoCo refuses two).
+fn one_orientation(
     xml: &Xml,
-    g: Node,
-    owner: &str,
-    s: &Settings,
-    classes: &Classes,
-    class: Class,
-) -> Result<Geometry, Diagnostic> {
-    let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
-    // NOTE: a geom's placement from a default class is refused: MuJoCo
-    // keeps a default's alternative orientation (`euler`, …) even where
-    // the geom writes its own `quat`, a rule not worth copying for a value
-    // real files write on each geom.
-    if let Some(v) = PLACED
+    node: Node,
+    what: &str,
+) -> Result<Option<(&'static str, Value)>, Diagnostic> {
+    let mut forms: Vec<(&str, Value)> = ORIENTATIONS
         .iter()
-        .filter(|a| xml.attr(g, a).is_none())
-        .find_map(|a| classes.inherited(xml, class, "geom", a))
-    {
-        return Err(xml
-            .error(
-                v.range.clone(),
-                format!("{} of a default class's `<geom>`: a geom's placement is read only where the geom writes it ({owner} takes its inertia from its geoms)", v.name),
-            )
-            .help("write the placement on each geom, or give the body an `<inertial>`"));
+        .filter_map(|&f| Some((f, xml.attr(node, f)?)))
+        .collect();
+    forms.sort_by_key(|(_, v)| v.range.start);
+    if let [(first, _), (second, v), ..] = forms.as_slice() {
+        return Err(xml.error(
+            v.range.clone(),
+            format!("{what} gives two orientations, `{first}` and `{second}`: MuJoCo allows one"),
+        ));
     }
+    Ok(forms.pop())
+}
+
+/// One `<geom>`: its solid, pose and what it weighs.
+fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Diagnostic> {
+    let xml = cx.xml;
+    let classes = &cx.classes;
+    let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
+    let kind = attr("type");
+    let kind_text = kind
+        .as_ref()
+        .map_or("sphere", |v| v.text.as_str())
+        .to_string();
+    let kind_text = kind_text.as_str();
+    let kind_range = || {
+        kind.as_ref()
+            .map_or_else(|| xml.tag(g), |v| v.range.clone())
+    };
+    let mesh_name = attr("mesh");
     if let Some(v) = attr("shellinertia")
         && v.text == "true"
     {
+        if kind_text == "mesh" {
+            return Err(xml.error(
+                v.range.clone(),
+                format!("`shellinertia` of a mesh geom of {owner}: MuJoCo refuses it (a mesh's inertia is set by its `<mesh inertia>`, `shell` for a surface)"),
+            ));
+        }
         return Err(xml.error(
             v.range.clone(),
             format!("`shellinertia` of a geom of {owner}: a shell's inertia is not read; expected a solid"),
         ));
     }
-    let kind = attr("type");
-    let kind_text = kind.as_ref().map_or("sphere", |v| v.text.as_str());
+    if let Some(m) = &mesh_name
+        && kind_text != "mesh"
+    {
+        return Err(xml
+            .error(
+                m.range.clone(),
+                format!("`mesh` of a {kind_text} geom of {owner}: MuJoCo fits a {kind_text} to the mesh, which is not read for inertia; expected `type=\"mesh\"`"),
+            )
+            .help("give the body an `<inertial>`, or put the geom in a `group` outside `<compiler inertiagrouprange>`"));
+    }
     let size = attr("size");
     let sizes = match &size {
         Some(v) => xml.list(v, owner)?,
@@ -142,66 +220,89 @@ fn geom(
             )),
         }
     };
-    let fromto = attr("fromto");
-    let ends = fromto
-        .as_ref()
-        .map(|v| xml.numbers::<6>(v, owner))
-        .transpose()?;
-    let (solid, along) = match kind_text {
-        "sphere" => (Solid::Sphere(at(0, "radius")?), None),
-        "box" => (
-            Solid::Box([
+    let along = segment(xml, g, classes, class, kind_text, owner)?;
+    let mut mesh = None;
+    let solid = match kind_text {
+        "sphere" => Solid::Sphere(at(0, "radius")?),
+        // NOTE: with `fromto`, MuJoCo sizes a box or an ellipsoid by its
+        // first `size` across and the segment along (half-length l/2).
+        "box" => Solid::Box(match along {
+            Some((_, _, l)) => {
+                let r = at(0, "x half-size")?;
+                [2.0 * r, 2.0 * r, l]
+            }
+            None => [
                 2.0 * at(0, "x half-size")?,
                 2.0 * at(1, "y half-size")?,
                 2.0 * at(2, "z half-size")?,
-            ]),
-            None,
-        ),
-        "ellipsoid" => (
-            Solid::Ellipsoid([at(0, "x radius")?, at(1, "y radius")?, at(2, "z radius")?]),
-            None,
-        ),
+            ],
+        }),
+        "ellipsoid" => Solid::Ellipsoid(match along {
+            Some((_, _, l)) => {
+                let r = at(0, "x radius")?;
+                [r, r, l / 2.0]
+            }
+            None => [at(0, "x radius")?, at(1, "y radius")?, at(2, "z radius")?],
+        }),
         "capsule" | "cylinder" => {
             let radius = at(0, "radius")?;
-            let (length, along) = match ends {
-                Some(e) => {
-                    let v = [e[3] - e[0], e[4] - e[1], e[5] - e[2]];
-                    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
-                    if !(l > 0.0) {
-                        let f = fromto.as_ref().expect("ends read from it");
-                        return Err(xml.error(f.range.clone(), format!("`fromto` of a {kind_text} geom of {owner}: expected two different points")));
-                    }
-                    let mid = [
-                        (e[0] + e[3]) / 2.0,
-                        (e[1] + e[4]) / 2.0,
-                        (e[2] + e[5]) / 2.0,
-                    ];
-                    (l, Some((mid, [v[0] / l, v[1] / l, v[2] / l])))
-                }
-                None => (2.0 * at(1, "half-length")?, None),
+            let length = match along {
+                Some((_, _, l)) => l,
+                None => 2.0 * at(1, "half-length")?,
             };
-            let solid = if kind_text == "capsule" {
+            if kind_text == "capsule" {
                 Solid::Capsule { radius, length }
             } else {
                 Solid::Cylinder { radius, length }
+            }
+        }
+        "mesh" => {
+            let Some(name) = &mesh_name else {
+                return Err(xml.error(
+                    kind_range(),
+                    format!("a mesh geom of {owner} names no `mesh` asset"),
+                ));
             };
-            (solid, along)
+            let l = cx.meshes.load(xml, name, owner, classes)?;
+            if cx.export && (l.shell || l.legacy) {
+                let why = if l.shell {
+                    "a shell mesh (`inertia=\"shell\"`)"
+                } else {
+                    "a mesh MuJoCo's default `inertia=\"legacy\"` weighs otherwise than the solid it bounds"
+                };
+                return Err(xml
+                    .error(
+                        name.range.clone(),
+                        format!("`mesh` of a geom of {owner}: {why} is weighed by `report`, not by `export --from-geometry`, which weighs the solid"),
+                    )
+                    .help("set `inertia=\"exact\"` on the `<mesh>` to export the solid's inertial"));
+            }
+            mesh = Some(l.mass);
+            Solid::Mesh {
+                uri: l.uri,
+                scale: l.scale,
+            }
+        }
+        "plane" | "hfield" => {
+            return Err(xml
+                .error(
+                    kind_range(),
+                    format!("`type` of a geom of {owner}: a `{kind_text}` has no volume to weigh, and MuJoCo allows one only in a static body (without joints), never in a moving one"),
+                )
+                .help("give the body an `<inertial>`, or put the geom in a `group` outside `<compiler inertiagrouprange>`"));
         }
         other => {
-            let range = kind
-                .as_ref()
-                .map_or_else(|| xml.tag(g), |v| v.range.clone());
             return Err(xml.error(
-                range,
+                kind_range(),
                 format!(
-                    "`type` of a geom of {owner}: `{}` is not read for inertia; expected sphere, box, capsule, cylinder or ellipsoid",
+                    "`type` of a geom of {owner}: `{}` is not read for inertia; expected sphere, box, capsule, cylinder, ellipsoid or mesh",
                     crate::diag::shorten(other)
                 ),
             ).help("give the body an `<inertial>`, or put the geom in a `group` outside `<compiler inertiagrouprange>`"));
         }
     };
     let pose = match along {
-        Some((mid, z)) => Pose {
+        Some((mid, z, _)) => Pose {
             p: mid,
             r: quat_to_matrix(z_to_quat(&z)),
         },
@@ -210,40 +311,105 @@ fn geom(
                 Some(v) => xml.numbers::<3>(&v, owner)?,
                 None => [0.0; 3],
             };
-            let mut forms: Vec<(&str, Value)> = ORIENTATIONS
-                .iter()
-                .filter_map(|&f| Some((f, xml.attr(g, f)?)))
-                .collect();
-            forms.sort_by_key(|(_, v)| v.range.start);
-            if let [(first, _), (second, v), ..] = forms.as_slice() {
-                return Err(xml.error(
-                    v.range.clone(),
-                    format!("a geom of {owner} gives two orientations, `{first}` and `{second}`: MuJoCo allows one"),
-                ));
+            // The nearest level that writes an orientation: the geom,
+            // then its class, its parent class, …
+            let mut found = None;
+            for level in std::iter::once(g).chain(classes.defaults(class, "geom")) {
+                let what = if level == g {
+                    format!("a geom of {owner}")
+                } else {
+                    "a default class's `<geom>`".to_string()
+                };
+                if let Some(o) = one_orientation(xml, level, &what)? {
+                    found = Some(o);
+                    break;
+                }
             }
-            let r = match forms.first() {
-                Some((form, v)) => quat_to_matrix(orientation(xml, form, v, owner, s)?),
+            let r = match found {
+                Some((form, v)) => quat_to_matrix(orientation(xml, form, &v, owner, &cx.settings)?),
                 None => Pose::IDENTITY.r,
             };
             Pose { p, r }
         }
     };
     let amount = match (attr("mass"), attr("density")) {
-        (Some(m), _) => Amount::Mass(positive(xml, &m, xml.number(&m, owner)?, owner)?),
-        (None, Some(d)) => Amount::Density(positive(xml, &d, xml.number(&d, owner)?, owner)?),
-        (None, None) => {
-            return Ok(Geometry {
-                solid,
-                pose,
-                range: xml.tag(g),
-                amount: None,
-            });
-        }
+        (Some(m), _) => Some(Amount::Mass(positive(
+            xml,
+            &m,
+            xml.number(&m, owner)?,
+            owner,
+        )?)),
+        (None, Some(d)) => Some(Amount::Density(positive(
+            xml,
+            &d,
+            xml.number(&d, owner)?,
+            owner,
+        )?)),
+        (None, None) => None,
     };
     Ok(Geometry {
         solid,
         pose,
         range: xml.tag(g),
-        amount: Some(amount),
+        amount,
+        mesh,
+    })
+}
+
+/// A `fromto` segment: its midpoint, unit direction and length.
+type Segment = ([f64; 3], [f64; 3], f64);
+
+/// The segment a geom's `fromto` (its own or its class's) gives: its
+/// midpoint, direction and length; checked as MuJoCo checks it (not with
+/// `pos`, only on a capsule, cylinder, box or ellipsoid) also for a geom
+/// that is not weighed, since MuJoCo refuses the model.
+fn segment(
+    xml: &Xml,
+    g: Node,
+    classes: &Classes,
+    class: Class,
+    kind_text: &str,
+    owner: &str,
+) -> Result<Option<Segment>, Diagnostic> {
+    let attr = |n: &str| classes.attr(xml, g, class, "geom", n);
+    let fromto = attr("fromto");
+    if let (Some(f), Some(p)) = (&fromto, attr("pos")) {
+        let later = if f.range.start > p.range.start {
+            f.range.clone()
+        } else {
+            p.range
+        };
+        return Err(xml.error(
+            later,
+            format!("a geom of {owner} has both `pos` and `fromto` (its own or its default class's): MuJoCo refuses both"),
+        ));
+    }
+    Ok(match &fromto {
+        Some(f) => {
+            if !matches!(kind_text, "capsule" | "cylinder" | "box" | "ellipsoid") {
+                return Err(xml.error(
+                    f.range.clone(),
+                    format!("`fromto` of a {kind_text} geom of {owner}: MuJoCo allows it only on a capsule, cylinder, box or ellipsoid"),
+                ));
+            }
+            let e = xml.numbers::<6>(f, owner)?;
+            let v = [e[3] - e[0], e[4] - e[1], e[5] - e[2]];
+            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            if !(l > 0.0) {
+                return Err(xml.error(
+                    f.range.clone(),
+                    format!(
+                        "`fromto` of a {kind_text} geom of {owner}: expected two different points"
+                    ),
+                ));
+            }
+            let mid = [
+                (e[0] + e[3]) / 2.0,
+                (e[1] + e[4]) / 2.0,
+                (e[2] + e[5]) / 2.0,
+            ];
+            Some((mid, [v[0] / l, v[1] / l, v[2] / l], l))
+        }
+        None => None,
     })
 }

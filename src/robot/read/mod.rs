@@ -15,13 +15,14 @@ mod links;
 mod mjcf;
 mod mjcf_class;
 mod mjcf_geoms;
+mod mjcf_mesh;
 mod orient;
 mod sdf;
 mod sdf_tree;
 mod tree;
 mod urdf;
 
-pub use geometry::{Amount, Geometry, Solid, geometry, mjcf_geometry};
+pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, mjcf_geometry};
 pub use tree::tree;
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
