@@ -67,22 +67,33 @@ fn packages(g: &FromGeometry) -> Result<Vec<(String, PathBuf)>, Diagnostic> {
         .collect()
 }
 
-/// The mesh file a `filename` or `<uri>` names.
+/// The mesh file a `filename` or `<uri>` names, absolute.
+///
+/// NOTE: absolute because the part file written for the link resolves a
+/// relative `file` against the robot's own directory again: a robot
+/// given as `ex/u.urdf` with `meshes/c.stl` would be looked for at
+/// `ex/ex/meshes/c.stl`.
 fn mesh_path(uri: &str, base: &Path, packages: &[(String, PathBuf)]) -> Result<PathBuf, String> {
-    if let Some(rest) = uri.strip_prefix("package://") {
+    let path = if let Some(rest) = uri.strip_prefix("package://") {
         let (name, path) = rest.split_once('/').unwrap_or((rest, ""));
-        return match packages.iter().find(|(n, _)| n == name) {
-            Some((_, dir)) => Ok(dir.join(path)),
-            None => Err(format!(
-                "the mesh `{}` names the package `{}`: give its directory with `--package {}=DIR`",
-                crate::diag::shorten(uri),
-                crate::diag::shorten(name),
-                crate::diag::shorten(name)
-            )),
-        };
-    }
-    let path = uri.strip_prefix("file://").unwrap_or(uri);
-    Ok(base.join(path))
+        match packages.iter().find(|(n, _)| n == name) {
+            Some((_, dir)) => dir.join(path),
+            None => {
+                return Err(format!(
+                    "the mesh `{}` names the package `{}`: give its directory with `--package {}=DIR`",
+                    crate::diag::shorten(uri),
+                    crate::diag::shorten(name),
+                    crate::diag::shorten(name)
+                ));
+            }
+        }
+    } else {
+        base.join(uri.strip_prefix("file://").unwrap_or(uri))
+    };
+    Ok(match std::env::current_dir() {
+        Ok(here) if path.is_relative() => here.join(path),
+        _ => path,
+    })
 }
 
 /// The length unit whose factor a mesh's uniform `scale` is: a URDF or

@@ -388,6 +388,43 @@ fn a_meshs_inertial_from_geometry_is_the_mesh_readers() {
     assert_eq!(attr(&text, "value")[0], v["mass"].as_f64().unwrap());
 }
 
+/// A robot given by a path with a directory, its mesh relative to it, is
+/// read from the robot's directory once (it was looked for at
+/// `dir/dir/meshes/…`).
+#[test]
+fn a_relative_mesh_of_a_robot_in_another_directory_is_found_beside_the_robot() {
+    let dir = crate::common::scratch("robot_body", "relative_mesh");
+    std::fs::create_dir_all(dir.join("ex/meshes")).unwrap();
+    let stl = format!("{}/shapes/meshes/bracket.stl", env!("CARGO_MANIFEST_DIR"));
+    std::fs::copy(&stl, dir.join("ex/meshes/bracket.stl")).unwrap();
+    let urdf = GEOMETRY.replace("package://demo/bracket.stl", "meshes/bracket.stl");
+    std::fs::write(dir.join("ex/g.urdf"), urdf).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .current_dir(&dir)
+        .args([
+            "export",
+            "ex/g.urdf",
+            "--from-geometry",
+            "collision",
+            "--density",
+            "2700",
+            "--link",
+            "bracket",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let part = format!(
+        "[[part]]\nshape = \"mesh\"\nfile = {stl:?}\nmesh_unit = \"mm\"\ndensity = 2700\norigin = [0, 0.25, 0]\n"
+    );
+    let path = scratch_files("robot_body", "relative_mesh_part", &[("m.toml", &part)]);
+    let meshes = format!("{}/shapes/meshes", env!("CARGO_MANIFEST_DIR"));
+    let v = json(&path, &["--include-root", &meshes]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(attr(&text, "value")[0], v["mass"].as_f64().unwrap());
+}
+
 #[test]
 fn a_link_without_geometry_keeps_its_inertial_with_a_note() {
     let robot = geometry_robot("bare");
