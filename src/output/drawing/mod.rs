@@ -135,7 +135,6 @@ pub fn write_svg(
     // NOTE: a walk per view, each written straight out as it is made: a
     // view's parts held apart until the end would hold the SVG twice
     // (187 MB for 100,000 parts); a walk costs a small part of that time.
-    let mut d = String::new();
     let mut element = String::new();
     let mut small = 0;
     for (v, cell) in cells.iter().enumerate() {
@@ -147,7 +146,7 @@ pub fn write_svg(
         s.push_str("\" data-origin=\"");
         let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
         s.push_str("\">\n");
-        let mut seen = Drawn::default();
+        let mut seen = Drawn::new(&survey.copies);
         // NOTE: cut-outs are drawn after every other part, in a second
         // walk when there are any: a hole is drawn over the parts it is
         // cut from, not hidden under them or under the parts after it.
@@ -196,16 +195,14 @@ pub fn write_svg(
                 let class = survey.keys.get(colour) % 9;
                 let cut = if part.spec.removed { " cut" } else { "" };
                 let outline = outline::of(part);
-                element.clear();
+                // NOTE: a part without copies is written straight into
+                // the document; a copy's element is made apart first, to
+                // be drawn once (`Drawn`).
+                let copy = seen.has_copies(own);
+                let to = if copy { &mut element } else { &mut out.s };
                 match &outline {
                     Outline::Marker(kind, at) => {
-                        marker(
-                            &mut element,
-                            *kind,
-                            cell.projector.point(at),
-                            PALETTE[class],
-                            cut,
-                        );
+                        marker(to, *kind, cell.projector.point(at), PALETTE[class], cut);
                     }
                     Outline::Pieces(pieces) => {
                         if !drawn(outline.size()) {
@@ -213,12 +210,18 @@ pub fn write_svg(
                             small += usize::from(v == 0);
                             return;
                         }
-                        d.clear();
-                        pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                        let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
+                        to.push_str("<path class=\"c");
+                        to.push(char::from(b'0' + class as u8));
+                        to.push_str(cut);
+                        to.push_str("\" d=\"");
+                        pieces.iter().for_each(|p| cell.projector.piece(p, to));
+                        to.push_str("\"/>\n");
                     }
                 }
-                seen.draw(&mut out.s, own, &element);
+                if copy {
+                    seen.draw(&mut out.s, own, &element);
+                    element.clear();
+                }
                 out.spill(false);
             });
         }

@@ -7,8 +7,7 @@
 use super::outline::{self, Outline, V3};
 use crate::model::Model;
 use crate::model::walk::{Event, Run};
-use std::collections::HashMap;
-use std::fmt::Write as _;
+use std::collections::{HashMap, HashSet};
 
 /// The document as it is made: each element goes into a small buffer
 /// that is handed to the writer whenever it fills, so the document is
@@ -49,30 +48,95 @@ impl Sink<'_> {
 /// NOTE: copies of one part only (an array's, a mirror's, an included
 /// file's instances'): two parts written apart whose outlines meet in a
 /// view (a pair of wings seen edge-on) are each drawn, as they always
-/// were.
-#[derive(Default)]
-pub(super) struct Drawn {
-    /// The part's address in the model (`Leaf::own`: the same for each of
-    /// its copies), then the element.
-    elements: std::collections::HashSet<String>,
-    key: String,
+/// were. So a part the walk meets once (`Copies`: most parts of a large
+/// file) has nothing to be a copy of and is written at once, its text
+/// neither hashed nor kept (issue 33, item 4: hashing and keeping every
+/// element was a tenth of `render`'s time); only copies' elements are
+/// kept, by part, in std's `HashSet` (SipHash with a key chosen at run
+/// time: a file cannot be written so that its elements collide).
+pub(super) struct Drawn<'c> {
+    copies: &'c Copies,
+    /// By part (`Leaf::own`: the same for each of its copies), the
+    /// elements drawn for its copies.
+    elements: HashMap<usize, HashSet<String>>,
     /// The copies not drawn again.
     pub(super) again: usize,
 }
 
-impl Drawn {
+impl<'c> Drawn<'c> {
+    pub(super) fn new(copies: &'c Copies) -> Self {
+        Drawn {
+            copies,
+            elements: HashMap::new(),
+            again: 0,
+        }
+    }
+
+    /// Whether `part` has copies: its elements go through `draw`; else
+    /// they may be written at once.
+    pub(super) fn has_copies(&self, part: usize) -> bool {
+        self.copies.of(part)
+    }
+
     /// Write `element`, drawn for a copy of `part`, unless this view has
     /// drawn it for another.
     pub(super) fn draw(&mut self, s: &mut String, part: usize, element: &str) {
-        self.key.clear();
-        let _ = write!(self.key, "{part:x} ");
-        self.key.push_str(element);
-        if self.elements.contains(self.key.as_str()) {
+        let drawn = self.elements.entry(part).or_default();
+        if drawn.contains(element) {
             self.again += 1;
         } else {
             s.push_str(element);
-            self.elements.insert(self.key.clone());
+            drawn.insert(element.to_string());
         }
+    }
+}
+
+/// The parts (`Leaf::own`) the walk meets more than once, sorted: the
+/// only ones a view must remember what it drew for (`Drawn`). Found by
+/// the survey; a run of coincident copies met as one (`Met::Again`) counts
+/// once, as no view draws those.
+#[derive(Default)]
+pub(super) struct Copies(Vec<usize>);
+
+impl Copies {
+    pub(super) fn of(&self, part: usize) -> bool {
+        !self.0.is_empty() && self.0.binary_search(&part).is_ok()
+    }
+}
+
+/// `Copies` in the making: each part met, in the walk's order (`met`);
+/// consecutive ones (an array's copies) kept once in `met` and noted at
+/// once, so 2,000,000 copies take one entry.
+#[derive(Default)]
+struct Counter {
+    met: Vec<usize>,
+    copies: Vec<usize>,
+    /// Whether the last part met is noted in `copies` already.
+    noted: bool,
+}
+
+impl Counter {
+    fn meet(&mut self, part: usize) {
+        if self.met.last() == Some(&part) {
+            if !self.noted {
+                self.copies.push(part);
+                self.noted = true;
+            }
+        } else {
+            self.met.push(part);
+            self.noted = false;
+        }
+    }
+
+    fn done(mut self) -> Copies {
+        // NOTE: a sort, not a hash of each part's address: the same cost
+        // whatever the addresses, and nothing kept but the copies.
+        self.met.sort_unstable();
+        self.copies
+            .extend(self.met.windows(2).filter(|w| w[0] == w[1]).map(|w| w[0]));
+        self.copies.sort_unstable();
+        self.copies.dedup();
+        Copies(self.copies)
     }
 }
 
@@ -133,6 +197,8 @@ pub(super) struct Survey {
     pub(super) kind: Kind,
     pub(super) keys: Keys,
     pub(super) seen: Seen,
+    /// The parts with copies that a view may draw.
+    pub(super) copies: Copies,
     pub(super) extent: [V3; 2],
     /// NaN if any size is (never drawn, as a size below a pixel).
     pub(super) smallest: f64,
@@ -144,6 +210,7 @@ impl Survey {
             kind: Kind::Shape,
             keys: Keys::default(),
             seen: Seen::default(),
+            copies: Copies::default(),
             extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
             smallest: f64::INFINITY,
         };
@@ -151,11 +218,13 @@ impl Survey {
         // each kind are gathered in the one walk, and one kept.
         let mut keys: [Keys; 3] = Default::default();
         let mut last = Last::default();
+        let mut copies = Counter::default();
         each_part(model, &mut |met| {
             // A coincident copy's key, marks, extent and size are its last's.
             let Met::Part(part, group, own) = met else {
                 return;
             };
+            copies.meet(own);
             if last.again(own, group, part) {
                 return; // its keys, marks, extent and size are known
             }
@@ -182,6 +251,7 @@ impl Survey {
                 v.extent[1][k] = v.extent[1][k].max(hi[k]);
             }
         });
+        v.copies = copies.done();
         let [group, material, shape] = keys;
         (v.kind, v.keys) = if !group.index.is_empty() {
             (Kind::Group, group)
