@@ -89,8 +89,14 @@ impl Projector {
     pub fn piece(&self, piece: &Piece, d: &mut String) {
         match piece {
             Piece::Line { points, closed } => {
-                let pts: Vec<P2> = points.iter().map(|p| self.point(p)).collect();
-                polyline(d, &pts, *closed);
+                // As `polyline` writes them, without a buffer.
+                for (k, p) in points.iter().enumerate() {
+                    d.push(if k == 0 { 'M' } else { 'L' });
+                    pair(d, self.point(p));
+                }
+                if *closed && points.len() > 2 {
+                    d.push('Z');
+                }
             }
             Piece::Hull(points) => {
                 let pts: Vec<P2> = points.iter().map(|p| self.point(p)).collect();
@@ -402,29 +408,32 @@ pub fn num(d: &mut String, x: f64) {
 
 /// k/100 with two decimals (`-` before a negative k; none before zero).
 fn digits(d: &mut String, k: i64) {
-    let mut buf = [0u8; 24];
-    let mut at = buf.len();
-    let mut n = k.unsigned_abs();
-    for _ in 0..2 {
-        at -= 1;
-        buf[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-    }
-    at -= 1;
-    buf[at] = b'.';
-    loop {
-        at -= 1;
-        buf[at] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
     if k < 0 {
-        at -= 1;
-        buf[at] = b'-';
+        d.push('-');
     }
-    d.push_str(std::str::from_utf8(&buf[at..]).expect("invariant: ASCII digits"));
+    let n = k.unsigned_abs();
+    whole(d, n / 100);
+    d.push('.');
+    d.push_str(two(n % 100));
+}
+
+/// `n` in decimal, two digits at a time.
+fn whole(d: &mut String, n: u64) {
+    if n >= 100 {
+        whole(d, n / 100);
+        d.push_str(two(n % 100));
+    } else if n >= 10 {
+        d.push_str(two(n));
+    } else {
+        d.push(char::from(b'0' + n as u8));
+    }
+}
+
+/// `n` < 100 as two digits.
+fn two(n: u64) -> &'static str {
+    const PAIRS: &str = "00010203040506070809101112131415161718192021222324252627282930313233343536373839404142434445464748495051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
+    let n = n as usize * 2;
+    &PAIRS[n..n + 2]
 }
 
 /// The convex hull of points, counter-clockwise on the page from the

@@ -15,7 +15,8 @@ use std::collections::{HashMap, HashSet};
 /// draw it once: `Drawn`).
 pub(super) struct Sink<'w> {
     pub(super) s: String,
-    pub(super) w: &'w mut dyn std::io::Write,
+    /// `None`: a view drawn apart (on a thread of its own), held whole.
+    pub(super) w: Option<&'w mut dyn std::io::Write>,
     /// The first write that failed: the walks that follow write nothing.
     pub(super) error: Option<std::io::Error>,
 }
@@ -27,11 +28,14 @@ impl Sink<'_> {
     /// Hand the buffer to the writer once it is full (`all`: whatever it
     /// holds).
     pub(super) fn spill(&mut self, all: bool) {
+        let Some(w) = &mut self.w else {
+            return;
+        };
         if self.s.len() < Self::SPILL && !all {
             return;
         }
         if self.error.is_none()
-            && let Err(e) = self.w.write_all(self.s.as_bytes())
+            && let Err(e) = w.write_all(self.s.as_bytes())
         {
             self.error = Some(e);
         }
@@ -199,6 +203,8 @@ pub(super) struct Survey {
     pub(super) seen: Seen,
     /// The parts with copies that a view may draw.
     pub(super) copies: Copies,
+    /// The parts met, a run of coincident copies as one: the views' work.
+    pub(super) parts: usize,
     pub(super) extent: [V3; 2],
     /// NaN if any size is (never drawn, as a size below a pixel).
     pub(super) smallest: f64,
@@ -211,6 +217,7 @@ impl Survey {
             keys: Keys::default(),
             seen: Seen::default(),
             copies: Copies::default(),
+            parts: 0,
             extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
             smallest: f64::INFINITY,
         };
@@ -225,6 +232,7 @@ impl Survey {
                 return;
             };
             copies.meet(own);
+            v.parts += 1;
             if last.again(own, group, part) {
                 return; // its keys, marks, extent and size are known
             }
