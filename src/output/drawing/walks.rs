@@ -11,8 +11,9 @@ use std::collections::{HashMap, HashSet};
 
 /// The document as it is made: each element goes into a small buffer
 /// that is handed to the writer whenever it fills, so the document is
-/// never all in memory (only what is drawn of one view is remembered, to
-/// draw it once: `Drawn`).
+/// never all in memory (only a copy's elements are remembered, to draw
+/// them once: `Drawn`; and on two threads, the one view the helper draws
+/// while the one before it is written: `w` is `None`).
 pub(super) struct Sink<'w> {
     pub(super) s: String,
     /// `None`: a view drawn apart (on a thread of its own), held whole.
@@ -422,4 +423,70 @@ pub(super) struct Seen {
     pub(super) cut: bool,
     /// Point masses, given inertias (`Marker as usize`).
     pub(super) markers: [bool; 2],
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn copies(met: &[usize]) -> Copies {
+        let mut c = Counter::default();
+        met.iter().for_each(|p| c.meet(*p));
+        c.done()
+    }
+
+    #[test]
+    fn a_part_met_twice_anywhere_has_copies_and_one_met_once_has_none() {
+        let c = copies(&[7, 3, 9, 3, 5, 5, 5, 1]);
+        assert_eq!(c.0, vec![3, 5]);
+        assert!(!c.of(7) && !c.of(9) && !c.of(1) && !c.of(4));
+    }
+
+    #[test]
+    fn an_array_met_in_a_row_is_kept_once() {
+        let mut c = Counter::default();
+        (0..1000).for_each(|_| c.meet(42));
+        assert_eq!(c.met.len(), 1);
+        assert_eq!(c.done().0, vec![42]);
+    }
+
+    #[test]
+    fn elements_a_hundredth_of_a_pixel_apart_are_each_drawn() {
+        let c = copies(&[1, 1]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.00\"/>\n");
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.01\"/>\n");
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.00\"/>\n");
+        assert_eq!(s, "<path d=\"M1.00 2.00\"/>\n<path d=\"M1.00 2.01\"/>\n");
+        assert_eq!(d.again, 1);
+    }
+
+    #[test]
+    fn the_same_element_of_two_parts_is_drawn_for_each() {
+        let c = copies(&[1, 2, 1, 2]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        d.draw(&mut s, 1, "e\n");
+        d.draw(&mut s, 2, "e\n");
+        d.draw(&mut s, 1, "e\n");
+        assert_eq!(s, "e\ne\n");
+        assert_eq!(d.again, 1);
+    }
+
+    #[test]
+    fn many_elements_differing_in_their_last_digit_are_each_drawn() {
+        // Near-collisions a file could craft: every text kept apart.
+        let c = copies(&[5, 5]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        for k in 0..10_000 {
+            d.draw(&mut s, 5, &format!("M0.00 {}.{:02}\n", k / 100, k % 100));
+        }
+        for k in 0..10_000 {
+            d.draw(&mut s, 5, &format!("M0.00 {}.{:02}\n", k / 100, k % 100));
+        }
+        assert_eq!(s.lines().count(), 10_000);
+        assert_eq!(d.again, 10_000);
+    }
 }
