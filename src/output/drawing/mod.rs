@@ -8,8 +8,9 @@
 //! - `view`: the views, the projection, each piece's silhouette as path
 //!   data;
 //! - `walks`: what the walks keep (the survey, the document's buffer,
-//!   what a view has drawn, to draw copies once) and what the colours
-//!   tell apart (one kind a drawing: group, else material, else shape);
+//!   what a view has drawn, to draw copies once, the threads the views
+//!   are drawn on) and what the colours tell apart (one kind a drawing:
+//!   group, else material, else shape);
 //! - `labels`: each label's box and its place, clear of the centre of
 //!   mass, the axis tips and the other labels;
 //! - `legend`: the legend below the views;
@@ -35,7 +36,8 @@ use outline::{Marker, Outline, V3};
 use std::fmt::Write as _;
 pub use view::View;
 use view::{Projector, num, pair};
-use walks::{Drawn, Last, Met, Sink, Survey, each_part, key};
+pub use walks::with_threads;
+use walks::{Drawn, Last, Met, Sink, Survey, each_part, key, threads};
 
 /// What to draw besides the body.
 #[derive(Debug, Clone, Default)]
@@ -205,35 +207,6 @@ struct Page<'a> {
     min_scale: f64,
 }
 
-/// The threads the views are drawn on: two when there are two views or
-/// more, two cores, and enough parts to be worth a thread (or as
-/// `with_threads` forces).
-fn threads(parts: usize, views: usize) -> usize {
-    const GRAIN: usize = 1_000;
-    let n = FORCED.with(std::cell::Cell::get).unwrap_or_else(|| {
-        if parts < GRAIN {
-            1
-        } else {
-            std::thread::available_parallelism().map_or(1, |t| t.get())
-        }
-    });
-    n.clamp(1, 2).min(views.max(1))
-}
-
-thread_local! {
-    static FORCED: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
-}
-
-/// Run `f` with the drawing's views on `threads` threads (at most two are
-/// used), however few the parts: for the tests, which hold one and two
-/// to the same document.
-pub fn with_threads<T>(threads: usize, f: impl FnOnce() -> T) -> T {
-    let before = FORCED.with(|c| c.replace(Some(threads.max(1))));
-    let out = f();
-    FORCED.with(|c| c.set(before));
-    out
-}
-
 /// One view, written into `out` as it is made: its group, its parts
 /// (copies drawn once), its symbols and its words. The parts too small to
 /// draw, each counted.
@@ -345,7 +318,7 @@ fn draw_view(page: &Page, cell: &Cell, out: &mut Sink) -> usize {
         x + cell.size[0] - 2.0,
         y + cell.size[1] - BELOW,
     ]);
-    symbols(s, &cell.projector, &body, o, bounds);
+    symbols(s, &cell.projector, body, o, bounds);
     let note = frame(s, cell, model.units.length);
     if seen.again > 0 {
         // Beside the view's label.

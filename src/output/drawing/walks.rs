@@ -1,8 +1,9 @@
 //! What the drawing's walks keep, and nothing more: the survey made
 //! before anything is drawn (the legend's keys, the extent, the smallest
 //! outline), the document's buffer (`Sink`: written out as it fills),
-//! what one view has drawn (`Drawn`: copies drawn once), and the last part
-//! met (`Last`: a copy in the same place known at once).
+//! what one view has drawn (`Drawn`: copies drawn once), the last part
+//! met (`Last`: a copy in the same place known at once), and the threads
+//! the views are drawn on (`threads`).
 
 use super::outline::{self, Outline, V3};
 use crate::model::Model;
@@ -423,6 +424,35 @@ pub(super) struct Seen {
     pub(super) cut: bool,
     /// Point masses, given inertias (`Marker as usize`).
     pub(super) markers: [bool; 2],
+}
+
+/// The threads the views are drawn on: two when there are two views or
+/// more, two cores, and enough parts to be worth a thread (or as
+/// `with_threads` forces).
+pub(super) fn threads(parts: usize, views: usize) -> usize {
+    const GRAIN: usize = 1_000;
+    let n = FORCED.with(std::cell::Cell::get).unwrap_or_else(|| {
+        if parts < GRAIN {
+            1
+        } else {
+            std::thread::available_parallelism().map_or(1, |t| t.get())
+        }
+    });
+    n.clamp(1, 2).min(views.max(1))
+}
+
+thread_local! {
+    static FORCED: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+}
+
+/// Run `f` with the drawing's views on `threads` threads (at most two are
+/// used), however few the parts: for the tests, which hold one and two
+/// to the same document.
+pub fn with_threads<T>(threads: usize, f: impl FnOnce() -> T) -> T {
+    let before = FORCED.with(|c| c.replace(Some(threads.max(1))));
+    let out = f();
+    FORCED.with(|c| c.set(before));
+    out
 }
 
 #[cfg(test)]
