@@ -24,10 +24,17 @@
 # copy) and `report --format json` of the same file, wall and user time.
 # `CASE=copies` runs this case alone.
 #
+# Issue 33, item 4: with BASE=/path/to/another/massprop (main's build,
+# say), then RUNS renders of the 100,000 parts by each binary in turn
+# (interleaved, so both see the same load), each's median wall and user +
+# system CPU time (GNU time), the SVGs compared byte for byte, and the
+# load average before and after: on a shared machine the CPU times are
+# the figures to read.
+#
 # Needs python3, hyperfine and GNU time (the latter two installed with
 # apt-get when missing, as root). Environment: PARTS (default 100000),
 # RUNS (default 5), WARMUP (default 1), COPIES (default 2000000), CASE
-# (`all`, default, or `copies`).
+# (`all`, default, or `copies`), BASE (unset: no comparison).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 . "$here/lib.sh"
@@ -105,3 +112,27 @@ for _ in 1 2 3; do
     rss+=("$(/usr/bin/time -f '%M' "$tmp/massprop" render "$tmp/parts.toml" -o "$tmp/out.svg" 2>&1 > /dev/null | tail -1)")
 done
 printf '%s\n' "${rss[@]}" | sort -n | sed -n 2p | awk '{ printf "render peak RSS (median of 3): %.0f MB\n", $1 / 1024 }'
+
+[ -n "${BASE:-}" ] || exit 0
+echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+for _ in $(seq "$RUNS"); do
+    for who in base this; do
+        bin="$tmp/massprop"
+        [ "$who" = base ] && bin="$BASE"
+        /usr/bin/time -f "$who %e %U %S" -a -o "$tmp/pairs" "$bin" render "$tmp/parts.toml" -o "$tmp/$who.svg"
+    done
+done
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+cmp "$tmp/base.svg" "$tmp/this.svg" && echo "the two SVGs are byte-identical"
+python3 - "$tmp/pairs" << 'PY'
+import statistics, sys
+runs = {}
+for line in open(sys.argv[1]):
+    who, wall, user, system = line.split()
+    runs.setdefault(who, []).append((float(wall), float(user) + float(system)))
+for who in ("base", "this"):
+    r = runs[who]
+    print("%s: render median wall %.2f s, median user+sys %.2f s (runs: %s)" % (
+        who, statistics.median(w for w, _ in r), statistics.median(c for _, c in r),
+        ", ".join("%.2f/%.2f" % x for x in r)))
+PY

@@ -55,6 +55,7 @@ mod placed_bodies;
 mod plausible;
 mod reference;
 mod render;
+mod render_speed;
 mod report_keys;
 mod robot_body;
 mod robots;

@@ -8,8 +8,9 @@
 //! - `view`: the views, the projection, each piece's silhouette as path
 //!   data;
 //! - `walks`: what the walks keep (the survey, the document's buffer,
-//!   what a view has drawn, to draw copies once) and what the colours
-//!   tell apart (one kind a drawing: group, else material, else shape);
+//!   what a view has drawn, to draw copies once, the threads the views
+//!   are drawn on) and what the colours tell apart (one kind a drawing:
+//!   group, else material, else shape);
 //! - `labels`: each label's box and its place, clear of the centre of
 //!   mass, the axis tips and the other labels;
 //! - `legend`: the legend below the views;
@@ -35,7 +36,8 @@ use outline::{Marker, Outline, V3};
 use std::fmt::Write as _;
 pub use view::View;
 use view::{Projector, num, pair};
-use walks::{Drawn, Last, Met, Sink, Survey, each_part, key};
+pub use walks::with_threads;
+use walks::{Drawn, Last, Met, Sink, Survey, each_part, key, threads};
 
 /// What to draw besides the body.
 #[derive(Debug, Clone, Default)]
@@ -115,7 +117,7 @@ pub fn write_svg(
     let height = GRID_HEIGHT + LINE * (lines as f64 + 2.0);
     let mut out = Sink {
         s: String::new(),
-        w,
+        w: Some(w),
         error: None,
     };
     let s = &mut out.s;
@@ -135,121 +137,54 @@ pub fn write_svg(
     // NOTE: a walk per view, each written straight out as it is made: a
     // view's parts held apart until the end would hold the SVG twice
     // (187 MB for 100,000 parts); a walk costs a small part of that time.
-    let mut d = String::new();
-    let mut element = String::new();
+    // On two threads (issue 33, item 4), each view with an odd index is
+    // drawn by a helper into a buffer while this thread writes the one
+    // before it out; the buffer follows it. One view is held at a time,
+    // and the document is the same, byte for byte, on any number.
+    let page = Page {
+        model,
+        survey: &survey,
+        body: &body,
+        o,
+        min_scale,
+    };
+    let two = threads(survey.parts, cells.len()) > 1;
     let mut small = 0;
-    for (v, cell) in cells.iter().enumerate() {
-        // The view's placing, for tools (and the tests): pixels per
-        // length unit, and where the file's origin lies on the page.
-        let s = &mut out.s;
-        let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
-        let _ = write!(s, "{}", cell.projector.scale);
-        s.push_str("\" data-origin=\"");
-        let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
-        s.push_str("\">\n");
-        let mut seen = Drawn::default();
-        // NOTE: cut-outs are drawn after every other part, in a second
-        // walk when there are any: a hole is drawn over the parts it is
-        // cut from, not hidden under them or under the parts after it.
-        let passes: &[bool] = if survey.seen.cut {
-            &[false, true]
-        } else {
-            &[false]
-        };
-        for &cuts in passes {
-            let mut last = Last::default();
-            // Whether the part met last belongs to the other walk.
-            let mut other = false;
-            each_part(model, &mut |met| {
-                if out.error.is_some() {
-                    return;
+    std::thread::scope(|scope| {
+        for (v, pair) in cells.chunks(2).enumerate() {
+            let helper = match pair {
+                [_, next] if two => Some(scope.spawn(|| {
+                    let mut buffer = Sink {
+                        s: String::new(),
+                        w: None,
+                        error: None,
+                    };
+                    draw_view(&page, next, &mut buffer);
+                    buffer.s
+                })),
+                _ => None,
+            };
+            let n = draw_view(&page, &pair[0], &mut out);
+            if v == 0 {
+                small = n;
+            }
+            match (helper, pair) {
+                (Some(helper), _) => {
+                    let drawn = helper
+                        .join()
+                        .unwrap_or_else(|e| std::panic::resume_unwind(e));
+                    out.spill(true);
+                    let mine = std::mem::replace(&mut out.s, drawn);
+                    out.spill(true);
+                    out.s = mine;
                 }
-                let (part, group, own) = match met {
-                    Met::Part(part, group, own) => (part, group, own),
-                    // Each as a copy `last.again` finds below.
-                    Met::Again(n) => {
-                        if other {
-                            return;
-                        }
-                        if last.drawn {
-                            seen.again += n;
-                        } else if v == 0 {
-                            small += n;
-                        }
-                        return;
-                    }
-                };
-                other = part.spec.removed != cuts;
-                if other {
-                    return;
+                (None, [_, next]) => {
+                    draw_view(&page, next, &mut out);
                 }
-                let colour = key(survey.kind, part, group);
-                if last.again(own, colour, part) {
-                    if last.drawn {
-                        seen.again += 1;
-                    } else {
-                        small += usize::from(v == 0);
-                    }
-                    return;
-                }
-                last.drawn = true;
-                let class = survey.keys.get(colour) % 9;
-                let cut = if part.spec.removed { " cut" } else { "" };
-                let outline = outline::of(part);
-                element.clear();
-                match &outline {
-                    Outline::Marker(kind, at) => {
-                        marker(
-                            &mut element,
-                            *kind,
-                            cell.projector.point(at),
-                            PALETTE[class],
-                            cut,
-                        );
-                    }
-                    Outline::Pieces(pieces) => {
-                        if !drawn(outline.size()) {
-                            last.drawn = false;
-                            small += usize::from(v == 0);
-                            return;
-                        }
-                        d.clear();
-                        pieces.iter().for_each(|p| cell.projector.piece(p, &mut d));
-                        let _ = writeln!(element, "<path class=\"c{class}{cut}\" d=\"{d}\"/>");
-                    }
-                }
-                seen.draw(&mut out.s, own, &element);
-                out.spill(false);
-            });
+                (None, _) => {}
+            }
         }
-        let s = &mut out.s;
-        // The symbols' labels keep to the room between the view's own
-        // words above and below (`frame`).
-        let [x, y] = cell.at;
-        let bounds = Rect([
-            x + 2.0,
-            y + ABOVE,
-            x + cell.size[0] - 2.0,
-            y + cell.size[1] - BELOW,
-        ]);
-        symbols(s, &cell.projector, &body, o, bounds);
-        let note = frame(s, cell, model.units.length);
-        if seen.again > 0 {
-            // Beside the view's label.
-            let n = seen.again;
-            let plural = if n == 1 { "y" } else { "ies" };
-            text(
-                s,
-                note,
-                &format!("{n} coincident cop{plural} not drawn again"),
-                None,
-            );
-        }
-        s.push_str("</g>\n");
-        // Its outlines forgotten before the next view's are drawn.
-        drop(seen);
-        out.spill(false);
-    }
+    });
     let legend = legend_lines(&survey, small, &body, o);
     debug_assert_eq!(legend.len(), lines, "the legend's height was known");
     write_legend(&mut out.s, &legend, cells.len() > 1);
@@ -259,6 +194,146 @@ pub fn write_svg(
         Some(e) => Err(e),
         None => Ok(()),
     }
+}
+
+/// What every view is drawn from (shared by the threads).
+struct Page<'a> {
+    model: &'a Model,
+    survey: &'a Survey,
+    body: &'a Body,
+    o: &'a Options,
+    /// The least scale of the views: a part smaller than a pixel at it is
+    /// not drawn in any.
+    min_scale: f64,
+}
+
+/// One view, written into `out` as it is made: its group, its parts
+/// (copies drawn once), its symbols and its words. The parts too small to
+/// draw, each counted.
+fn draw_view(page: &Page, cell: &Cell, out: &mut Sink) -> usize {
+    let Page {
+        model,
+        survey,
+        body,
+        o,
+        min_scale,
+    } = *page;
+    let drawn = |size: f64| size * min_scale >= 1.0;
+    let mut element = String::new();
+    let mut small = 0;
+    // The view's placing, for tools (and the tests): pixels per
+    // length unit, and where the file's origin lies on the page.
+    let s = &mut out.s;
+    let _ = write!(s, "<g id=\"{}\" data-scale=\"", cell.view.name());
+    let _ = write!(s, "{}", cell.projector.scale);
+    s.push_str("\" data-origin=\"");
+    let _ = write!(s, "{} {}", cell.projector.at[0], cell.projector.at[1]);
+    s.push_str("\">\n");
+    let mut seen = Drawn::new(&survey.copies);
+    // NOTE: cut-outs are drawn after every other part, in a second
+    // walk when there are any: a hole is drawn over the parts it is
+    // cut from, not hidden under them or under the parts after it.
+    let passes: &[bool] = if survey.seen.cut {
+        &[false, true]
+    } else {
+        &[false]
+    };
+    for &cuts in passes {
+        let mut last = Last::default();
+        // Whether the part met last belongs to the other walk.
+        let mut other = false;
+        each_part(model, &mut |met| {
+            if out.error.is_some() {
+                return;
+            }
+            let (part, group, own) = match met {
+                Met::Part(part, group, own) => (part, group, own),
+                // Each as a copy `last.again` finds below.
+                Met::Again(n) => {
+                    if other {
+                        return;
+                    }
+                    if last.drawn {
+                        seen.again += n;
+                    } else {
+                        small += n;
+                    }
+                    return;
+                }
+            };
+            other = part.spec.removed != cuts;
+            if other {
+                return;
+            }
+            let colour = key(survey.kind, part, group);
+            if last.again(own, colour, part) {
+                if last.drawn {
+                    seen.again += 1;
+                } else {
+                    small += 1;
+                }
+                return;
+            }
+            last.drawn = true;
+            let class = survey.keys.get(colour) % 9;
+            let cut = if part.spec.removed { " cut" } else { "" };
+            let outline = outline::of(part);
+            // NOTE: a part without copies is written straight into
+            // the document; a copy's element is made apart first, to
+            // be drawn once (`Drawn`).
+            let copy = seen.has_copies(own);
+            let to = if copy { &mut element } else { &mut out.s };
+            match &outline {
+                Outline::Marker(kind, at) => {
+                    marker(to, *kind, cell.projector.point(at), PALETTE[class], cut);
+                }
+                Outline::Pieces(pieces) => {
+                    if !drawn(outline.size()) {
+                        last.drawn = false;
+                        small += 1;
+                        return;
+                    }
+                    to.push_str("<path class=\"c");
+                    to.push(char::from(b'0' + class as u8));
+                    to.push_str(cut);
+                    to.push_str("\" d=\"");
+                    pieces.iter().for_each(|p| cell.projector.piece(p, to));
+                    to.push_str("\"/>\n");
+                }
+            }
+            if copy {
+                seen.draw(&mut out.s, own, &element);
+                element.clear();
+            }
+            out.spill(false);
+        });
+    }
+    let s = &mut out.s;
+    // The symbols' labels keep to the room between the view's own
+    // words above and below (`frame`).
+    let [x, y] = cell.at;
+    let bounds = Rect([
+        x + 2.0,
+        y + ABOVE,
+        x + cell.size[0] - 2.0,
+        y + cell.size[1] - BELOW,
+    ]);
+    symbols(s, &cell.projector, body, o, bounds);
+    let note = frame(s, cell, model.units.length);
+    if seen.again > 0 {
+        // Beside the view's label.
+        let n = seen.again;
+        let plural = if n == 1 { "y" } else { "ies" };
+        text(
+            s,
+            note,
+            &format!("{n} coincident cop{plural} not drawn again"),
+            None,
+        );
+    }
+    s.push_str("</g>\n");
+    out.spill(false);
+    small
 }
 
 /// The body's figures in the file's frame and length unit.

@@ -89,8 +89,14 @@ impl Projector {
     pub fn piece(&self, piece: &Piece, d: &mut String) {
         match piece {
             Piece::Line { points, closed } => {
-                let pts: Vec<P2> = points.iter().map(|p| self.point(p)).collect();
-                polyline(d, &pts, *closed);
+                // As `polyline` writes them, without a buffer.
+                for (k, p) in points.iter().enumerate() {
+                    d.push(if k == 0 { 'M' } else { 'L' });
+                    pair(d, self.point(p));
+                }
+                if *closed && points.len() > 2 {
+                    d.push('Z');
+                }
             }
             Piece::Hull(points) => {
                 let pts: Vec<P2> = points.iter().map(|p| self.point(p)).collect();
@@ -375,21 +381,59 @@ pub fn pair(d: &mut String, p: P2) {
 /// number `{:.2}` would print is the double nearest k/100, which is
 /// within far less than 0.005 of k/100 while |k| < 2⁵³, so it prints as
 /// k/100 exactly. Larger and non-finite values take `{:.2}` as before.
+/// The digits are made by hand, not by `write!` (whose machinery was
+/// still a quarter of `render`'s instructions), and k is rounded half
+/// away from zero as `f64::round` does, without its library call: t − ⌊t⌉₀
+/// (t less its truncation) is exact, so comparing it with ±½ decides.
 pub fn num(d: &mut String, x: f64) {
-    let k = (x * 100.0).round();
-    if k.abs() < 1e15 {
-        let k = k as i64;
-        if k < 0 {
-            d.push('-');
+    let t = x * 100.0;
+    if t.abs() < 1e15 {
+        // `as` truncates toward zero; |t| < 2⁵³ so `i as f64` is exact.
+        let mut i = t as i64;
+        let f = t - i as f64;
+        if f >= 0.5 {
+            i += 1;
+        } else if f <= -0.5 {
+            i -= 1;
         }
-        let k = k.unsigned_abs();
-        write!(d, "{}.{:02}", k / 100, k % 100)
-            .expect("invariant: writing to a String does not fail");
-        return;
+        if i.unsigned_abs() < 1_000_000_000_000_000 {
+            digits(d, i);
+            return;
+        }
     }
-    let x = k / 100.0;
+    let x = t.round() / 100.0;
     let x = if x == 0.0 { 0.0 } else { x };
     write!(d, "{x:.2}").expect("invariant: writing to a String does not fail");
+}
+
+/// k/100 with two decimals (`-` before a negative k; none before zero).
+fn digits(d: &mut String, k: i64) {
+    if k < 0 {
+        d.push('-');
+    }
+    let n = k.unsigned_abs();
+    whole(d, n / 100);
+    d.push('.');
+    d.push_str(two(n % 100));
+}
+
+/// `n` in decimal, two digits at a time.
+fn whole(d: &mut String, n: u64) {
+    if n >= 100 {
+        whole(d, n / 100);
+        d.push_str(two(n % 100));
+    } else if n >= 10 {
+        d.push_str(two(n));
+    } else {
+        d.push(char::from(b'0' + n as u8));
+    }
+}
+
+/// `n` < 100 as two digits.
+fn two(n: u64) -> &'static str {
+    const PAIRS: &str = "00010203040506070809101112131415161718192021222324252627282930313233343536373839404142434445464748495051525354555657585960616263646566676869707172737475767778798081828384858687888990919293949596979899";
+    let n = n as usize * 2;
+    &PAIRS[n..n + 2]
 }
 
 /// The convex hull of points, counter-clockwise on the page from the
@@ -506,6 +550,9 @@ mod tests {
             f64::NEG_INFINITY,
             f64::MIN_POSITIVE,
         ];
+        // Multiples of 0.005: x·100 lands on or beside a half.
+        v.extend((-4000..4000).map(|j| f64::from(j) * 0.005));
+        v.extend((-4000..4000).map(|j| f64::from(j) * 0.005 + 1e6));
         let mut x = 0x9e37_79b9_7f4a_7c15u64;
         for k in 0..20_000 {
             x ^= x << 13;

@@ -1,22 +1,24 @@
 //! What the drawing's walks keep, and nothing more: the survey made
 //! before anything is drawn (the legend's keys, the extent, the smallest
 //! outline), the document's buffer (`Sink`: written out as it fills),
-//! what one view has drawn (`Drawn`: copies drawn once), and the last part
-//! met (`Last`: a copy in the same place known at once).
+//! what one view has drawn (`Drawn`: copies drawn once), the last part
+//! met (`Last`: a copy in the same place known at once), and the threads
+//! the views are drawn on (`threads`).
 
 use super::outline::{self, Outline, V3};
 use crate::model::Model;
 use crate::model::walk::{Event, Run};
-use std::collections::HashMap;
-use std::fmt::Write as _;
+use std::collections::{HashMap, HashSet};
 
 /// The document as it is made: each element goes into a small buffer
 /// that is handed to the writer whenever it fills, so the document is
-/// never all in memory (only what is drawn of one view is remembered, to
-/// draw it once: `Drawn`).
+/// never all in memory (only a copy's elements are remembered, to draw
+/// them once: `Drawn`; and on two threads, the one view the helper draws
+/// while the one before it is written: `w` is `None`).
 pub(super) struct Sink<'w> {
     pub(super) s: String,
-    pub(super) w: &'w mut dyn std::io::Write,
+    /// `None`: a view drawn apart (on a thread of its own), held whole.
+    pub(super) w: Option<&'w mut dyn std::io::Write>,
     /// The first write that failed: the walks that follow write nothing.
     pub(super) error: Option<std::io::Error>,
 }
@@ -28,11 +30,14 @@ impl Sink<'_> {
     /// Hand the buffer to the writer once it is full (`all`: whatever it
     /// holds).
     pub(super) fn spill(&mut self, all: bool) {
+        let Some(w) = &mut self.w else {
+            return;
+        };
         if self.s.len() < Self::SPILL && !all {
             return;
         }
         if self.error.is_none()
-            && let Err(e) = self.w.write_all(self.s.as_bytes())
+            && let Err(e) = w.write_all(self.s.as_bytes())
         {
             self.error = Some(e);
         }
@@ -49,30 +54,95 @@ impl Sink<'_> {
 /// NOTE: copies of one part only (an array's, a mirror's, an included
 /// file's instances'): two parts written apart whose outlines meet in a
 /// view (a pair of wings seen edge-on) are each drawn, as they always
-/// were.
-#[derive(Default)]
-pub(super) struct Drawn {
-    /// The part's address in the model (`Leaf::own`: the same for each of
-    /// its copies), then the element.
-    elements: std::collections::HashSet<String>,
-    key: String,
+/// were. So a part the walk meets once (`Copies`: most parts of a large
+/// file) has nothing to be a copy of and is written at once, its text
+/// neither hashed nor kept (issue 33, item 4: hashing and keeping every
+/// element was a tenth of `render`'s time); only copies' elements are
+/// kept, by part, in std's `HashSet` (SipHash with a key chosen at run
+/// time: a file cannot be written so that its elements collide).
+pub(super) struct Drawn<'c> {
+    copies: &'c Copies,
+    /// By part (`Leaf::own`: the same for each of its copies), the
+    /// elements drawn for its copies.
+    elements: HashMap<usize, HashSet<String>>,
     /// The copies not drawn again.
     pub(super) again: usize,
 }
 
-impl Drawn {
+impl<'c> Drawn<'c> {
+    pub(super) fn new(copies: &'c Copies) -> Self {
+        Drawn {
+            copies,
+            elements: HashMap::new(),
+            again: 0,
+        }
+    }
+
+    /// Whether `part` has copies: its elements go through `draw`; else
+    /// they may be written at once.
+    pub(super) fn has_copies(&self, part: usize) -> bool {
+        self.copies.of(part)
+    }
+
     /// Write `element`, drawn for a copy of `part`, unless this view has
     /// drawn it for another.
     pub(super) fn draw(&mut self, s: &mut String, part: usize, element: &str) {
-        self.key.clear();
-        let _ = write!(self.key, "{part:x} ");
-        self.key.push_str(element);
-        if self.elements.contains(self.key.as_str()) {
+        let drawn = self.elements.entry(part).or_default();
+        if drawn.contains(element) {
             self.again += 1;
         } else {
             s.push_str(element);
-            self.elements.insert(self.key.clone());
+            drawn.insert(element.to_string());
         }
+    }
+}
+
+/// The parts (`Leaf::own`) the walk meets more than once, sorted: the
+/// only ones a view must remember what it drew for (`Drawn`). Found by
+/// the survey; a run of coincident copies met as one (`Met::Again`) counts
+/// once, as no view draws those.
+#[derive(Default)]
+pub(super) struct Copies(Vec<usize>);
+
+impl Copies {
+    pub(super) fn of(&self, part: usize) -> bool {
+        !self.0.is_empty() && self.0.binary_search(&part).is_ok()
+    }
+}
+
+/// `Copies` in the making: each part met, in the walk's order (`met`);
+/// consecutive ones (an array's copies) kept once in `met` and noted at
+/// once, so 2,000,000 copies take one entry.
+#[derive(Default)]
+struct Counter {
+    met: Vec<usize>,
+    copies: Vec<usize>,
+    /// Whether the last part met is noted in `copies` already.
+    noted: bool,
+}
+
+impl Counter {
+    fn meet(&mut self, part: usize) {
+        if self.met.last() == Some(&part) {
+            if !self.noted {
+                self.copies.push(part);
+                self.noted = true;
+            }
+        } else {
+            self.met.push(part);
+            self.noted = false;
+        }
+    }
+
+    fn done(mut self) -> Copies {
+        // NOTE: a sort, not a hash of each part's address: the same cost
+        // whatever the addresses, and nothing kept but the copies.
+        self.met.sort_unstable();
+        self.copies
+            .extend(self.met.windows(2).filter(|w| w[0] == w[1]).map(|w| w[0]));
+        self.copies.sort_unstable();
+        self.copies.dedup();
+        Copies(self.copies)
     }
 }
 
@@ -133,6 +203,10 @@ pub(super) struct Survey {
     pub(super) kind: Kind,
     pub(super) keys: Keys,
     pub(super) seen: Seen,
+    /// The parts with copies that a view may draw.
+    pub(super) copies: Copies,
+    /// The parts met, a run of coincident copies as one: the views' work.
+    pub(super) parts: usize,
     pub(super) extent: [V3; 2],
     /// NaN if any size is (never drawn, as a size below a pixel).
     pub(super) smallest: f64,
@@ -144,6 +218,8 @@ impl Survey {
             kind: Kind::Shape,
             keys: Keys::default(),
             seen: Seen::default(),
+            copies: Copies::default(),
+            parts: 0,
             extent: [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
             smallest: f64::INFINITY,
         };
@@ -151,11 +227,14 @@ impl Survey {
         // each kind are gathered in the one walk, and one kept.
         let mut keys: [Keys; 3] = Default::default();
         let mut last = Last::default();
+        let mut copies = Counter::default();
         each_part(model, &mut |met| {
             // A coincident copy's key, marks, extent and size are its last's.
             let Met::Part(part, group, own) = met else {
                 return;
             };
+            copies.meet(own);
+            v.parts += 1;
             if last.again(own, group, part) {
                 return; // its keys, marks, extent and size are known
             }
@@ -182,6 +261,7 @@ impl Survey {
                 v.extent[1][k] = v.extent[1][k].max(hi[k]);
             }
         });
+        v.copies = copies.done();
         let [group, material, shape] = keys;
         (v.kind, v.keys) = if !group.index.is_empty() {
             (Kind::Group, group)
@@ -344,4 +424,99 @@ pub(super) struct Seen {
     pub(super) cut: bool,
     /// Point masses, given inertias (`Marker as usize`).
     pub(super) markers: [bool; 2],
+}
+
+/// The threads the views are drawn on: two when there are two views or
+/// more, two cores, and enough parts to be worth a thread (or as
+/// `with_threads` forces).
+pub(super) fn threads(parts: usize, views: usize) -> usize {
+    const GRAIN: usize = 1_000;
+    let n = FORCED.with(std::cell::Cell::get).unwrap_or_else(|| {
+        if parts < GRAIN {
+            1
+        } else {
+            std::thread::available_parallelism().map_or(1, |t| t.get())
+        }
+    });
+    n.clamp(1, 2).min(views.max(1))
+}
+
+thread_local! {
+    static FORCED: std::cell::Cell<Option<usize>> = const { std::cell::Cell::new(None) };
+}
+
+/// Run `f` with the drawing's views on `threads` threads (at most two are
+/// used), however few the parts: for the tests, which hold one and two
+/// to the same document.
+pub fn with_threads<T>(threads: usize, f: impl FnOnce() -> T) -> T {
+    let before = FORCED.with(|c| c.replace(Some(threads.max(1))));
+    let out = f();
+    FORCED.with(|c| c.set(before));
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn copies(met: &[usize]) -> Copies {
+        let mut c = Counter::default();
+        met.iter().for_each(|p| c.meet(*p));
+        c.done()
+    }
+
+    #[test]
+    fn a_part_met_twice_anywhere_has_copies_and_one_met_once_has_none() {
+        let c = copies(&[7, 3, 9, 3, 5, 5, 5, 1]);
+        assert_eq!(c.0, vec![3, 5]);
+        assert!(!c.of(7) && !c.of(9) && !c.of(1) && !c.of(4));
+    }
+
+    #[test]
+    fn an_array_met_in_a_row_is_kept_once() {
+        let mut c = Counter::default();
+        (0..1000).for_each(|_| c.meet(42));
+        assert_eq!(c.met.len(), 1);
+        assert_eq!(c.done().0, vec![42]);
+    }
+
+    #[test]
+    fn elements_a_hundredth_of_a_pixel_apart_are_each_drawn() {
+        let c = copies(&[1, 1]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.00\"/>\n");
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.01\"/>\n");
+        d.draw(&mut s, 1, "<path d=\"M1.00 2.00\"/>\n");
+        assert_eq!(s, "<path d=\"M1.00 2.00\"/>\n<path d=\"M1.00 2.01\"/>\n");
+        assert_eq!(d.again, 1);
+    }
+
+    #[test]
+    fn the_same_element_of_two_parts_is_drawn_for_each() {
+        let c = copies(&[1, 2, 1, 2]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        d.draw(&mut s, 1, "e\n");
+        d.draw(&mut s, 2, "e\n");
+        d.draw(&mut s, 1, "e\n");
+        assert_eq!(s, "e\ne\n");
+        assert_eq!(d.again, 1);
+    }
+
+    #[test]
+    fn many_elements_differing_in_their_last_digit_are_each_drawn() {
+        // Near-collisions a file could craft: every text kept apart.
+        let c = copies(&[5, 5]);
+        let mut d = Drawn::new(&c);
+        let mut s = String::new();
+        for k in 0..10_000 {
+            d.draw(&mut s, 5, &format!("M0.00 {}.{:02}\n", k / 100, k % 100));
+        }
+        for k in 0..10_000 {
+            d.draw(&mut s, 5, &format!("M0.00 {}.{:02}\n", k / 100, k % 100));
+        }
+        assert_eq!(s.lines().count(), 10_000);
+        assert_eq!(d.again, 10_000);
+    }
 }
