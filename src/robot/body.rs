@@ -33,7 +33,7 @@ impl Robot {
     pub fn read(source: &Source, format: Dialect) -> Result<Robot, Diagnostic> {
         let mut description = super::read::read(source, format)?;
         super::weigh::mjcf_inertials(source, &mut description)?;
-        let tree = super::read::tree(source, &description)?;
+        let tree = super::read::tree(source, &mut description, &Default::default())?;
         Ok(Robot { description, tree })
     }
 

@@ -310,7 +310,7 @@ pub(super) fn flag(xml: &Xml, v: &Value, owner: &str) -> Result<bool, Diagnostic
 
 /// The `<inertial>` `node` of the link named `local` in its model; None
 /// when the simulator computes it (`auto="true"`, SDFormat 1.11).
-fn inertial(
+pub(super) fn inertial(
     xml: &Xml,
     node: Node,
     local: &str,

@@ -8,291 +8,713 @@
 //! `<axis><mimic joint><multiplier/><offset/><reference/></mimic>`:
 //! follower = multiplier·(leader − reference) + offset, sdf/1.11/mimic.sdf).
 //!
-//! Refused with their place: worlds, nested models and includes; a
-//! `relative_to` or `attached_to` naming no frame; frames placed relative
-//! to each other in a cycle.
+//! Nested models and includes are scopes (SDFormat 1.8, "Model
+//! composition"): a name is looked up in the scope of the element that
+//! writes it, `a::b` in the nested model `a`'s, `__model__` is the scope's
+//! own model frame; a nested model's `<pose>` is in its parent's scope
+//! (by default the parent model frame), of its `placement_frame` when it
+//! names one; a model's frame is attached to its canonical link
+//! (`canonical_link`, else its first link, else its first nested model's).
+//! A joint's `<parent>` and `<child>` may name any frame: the link it is
+//! attached to is the one the tree joins. A `<world>` (or several models
+//! under `<sdf>`) is the scope of its models, each at its `<pose>` in the
+//! world frame, which is the report frame. Names in the tree are paths
+//! from the top, the outermost model's name left out unless there are
+//! several (as `sdf::read` names links for `check`).
+//!
+//! Refused with their place: two worlds; a `relative_to`, `attached_to`,
+//! `canonical_link` or `placement_frame` naming no frame; frames placed
+//! relative to each other in a cycle; models nested deeper than
+//! `MAX_NESTING`; more than `MAX_MODELS` models.
 
-use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::links::{axis, joint_named, limits, set_parent, unplaced};
+use super::sdf_include::{self, Files, Resolve};
+use super::tree::{Head, joint_head};
 use super::{Value, Xml, child, children, qname, quoted, sdf};
-use crate::diag::Diagnostic;
-use crate::robot::Description;
+use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
+use crate::robot::{Description, Link};
 use roxmltree::Node;
 use std::collections::HashMap;
+use std::ops::Range;
 
-/// A frame of the model's scope: a link, a joint or a `<frame>`.
+/// How deep models may nest (inline or included) for the whole robot.
+pub(super) const MAX_NESTING: usize = 64;
+/// How many models (nested and included, each time it is included) the
+/// whole robot may hold.
+pub(super) const MAX_MODELS: usize = 10_000;
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    /// The report frame: the top model's, or the world's.
+    Top,
+    /// Link `k` of the description.
+    Link(usize),
+    Joint,
+    Frame,
+    /// A nested or included model, whose scope is the one given.
+    Model(usize),
+}
+
+/// A frame of some scope: a link, a joint, a `<frame>` or a model.
 struct Frame<'a, 'i> {
     name: String,
-    /// "link", "joint" or "frame", for messages.
-    kind: &'static str,
+    kind: Kind,
     element: Node<'a, 'i>,
+    /// The file `element` and `default` are in.
+    file: usize,
+    /// The scope its names are looked up in (a model's: its parent's).
+    scope: usize,
     /// The frame its pose is in when its `<pose>` names none: None is the
-    /// model frame.
+    /// scope's model frame.
     default: Option<Value>,
+    /// Its `<pose>` and the file that writes it (an include's own, else
+    /// the included model's).
+    pose: Option<(Node<'a, 'i>, usize)>,
+    /// A model's `placement_frame`, in its own scope, and its file.
+    placement: Option<(Value, usize)>,
 }
 
-/// The frames of a model, each placed in the model frame once asked.
-struct Frames<'a, 'i> {
-    frames: Vec<Frame<'a, 'i>>,
-    by_name: HashMap<String, usize>,
-    /// Names two frames share: naming one is ambiguous.
+/// A model's (or the world's) namespace.
+struct Scope<'a, 'i> {
+    /// Its path from the top scope (`""` there).
+    path: String,
+    /// Its model frame.
+    frame: usize,
+    /// Its model's own name, which names its model frame.
+    own: String,
+    element: Node<'a, 'i>,
+    file: usize,
+    names: HashMap<String, usize>,
     shared: Vec<String>,
-    /// Names that are the model frame: `__model__`, and the model's own.
-    model: [String; 2],
-    placed: Vec<Option<Pose>>,
+    /// Within an include: the top file's outermost `<include>`, which
+    /// messages about its links and joints point at.
+    anchor: Option<Range<usize>>,
+    depth: usize,
+    world: bool,
+    fixed: bool,
 }
 
-impl<'a, 'i> Frames<'a, 'i> {
-    fn new(model: Node<'a, 'i>) -> Frames<'a, 'i> {
-        Frames {
-            frames: Vec::new(),
-            by_name: HashMap::new(),
-            shared: Vec::new(),
-            model: [
-                "__model__".to_string(),
-                model.attribute("name").unwrap_or("__model__").to_string(),
-            ],
-            placed: Vec::new(),
-        }
-    }
+/// Every frame of the whole robot.
+struct Graph<'a, 'i, 'x> {
+    xmls: &'x [Xml<'x>],
+    frames: Vec<Frame<'a, 'i>>,
+    scopes: Vec<Scope<'a, 'i>>,
+    placed: Vec<Option<Pose>>,
+    /// Each link's frame, in the description's order.
+    links: Vec<usize>,
+    joints: Vec<usize>,
+    /// Whether the outermost model's name is left out of paths.
+    strip: bool,
+}
 
-    fn add(&mut self, f: Frame<'a, 'i>) -> usize {
+impl<'a, 'i> Graph<'a, 'i, '_> {
+    fn add(&mut self, f: Frame<'a, 'i>, scope: usize) -> usize {
         let k = self.frames.len();
-        if self.by_name.contains_key(&f.name) {
-            self.shared.push(f.name.clone());
+        let s = &mut self.scopes[scope];
+        if s.names.contains_key(&f.name) {
+            s.shared.push(f.name.clone());
         } else {
-            self.by_name.insert(f.name.clone(), k);
+            s.names.insert(f.name.clone(), k);
         }
         self.frames.push(f);
         self.placed.push(None);
         k
     }
 
-    /// The frame `v` names (None: the model frame), or an error at it.
-    fn named(&self, xml: &Xml, v: &Value, owner: &str) -> Result<Option<usize>, Diagnostic> {
-        if v.text.is_empty() || self.model.contains(&v.text) {
-            return Ok(None);
+    /// A path from the top as messages and `--only` name it.
+    fn shown(&self, scope: usize, name: &str) -> String {
+        let full = join(&self.scopes[scope].path, name);
+        if self.strip {
+            full.split_once("::").map_or(full.clone(), |(_, r)| r.to_string())
+        } else {
+            full
         }
-        if self.shared.contains(&v.text) {
-            return Err(xml.error(
-                v.range.clone(),
-                format!(
-                    "{} of {owner} names {}, which two frames (links, joints or `<frame>`s) share: the frame is ambiguous",
-                    v.name,
-                    quoted(&v.text)
-                ),
-            ));
-        }
-        match self.by_name.get(&v.text) {
-            Some(&k) => Ok(Some(k)),
-            None => {
-                let near = crate::units::suggest(
-                    &v.text,
-                    self.by_name.keys().map(String::as_str).chain(["__model__"]),
-                )
-                .map(|s| format!("; did you mean {}?", quoted(s)))
-                .unwrap_or_default();
-                Err(xml.error(
+    }
+
+    /// The frame `v` (written in file `file`) names in `scope`, or an
+    /// error at it.
+    fn named(&self, scope: usize, file: usize, v: &Value, owner: &str) -> Result<usize, Diagnostic> {
+        let xml = &self.xmls[file];
+        let mut s = scope;
+        let mut rest = v.text.as_str();
+        loop {
+            let sc = &self.scopes[s];
+            if rest.is_empty() || rest == "__model__" || rest == sc.own {
+                return Ok(sc.frame);
+            }
+            if sc.world && rest == "world" {
+                return Ok(sc.frame);
+            }
+            if sc.shared.iter().any(|n| n == rest) {
+                return Err(xml.error(
                     v.range.clone(),
                     format!(
-                        "{} of {owner} names no frame of the model: {}{near}",
+                        "{} of {owner} names {}, which two frames (links, joints or `<frame>`s) share: the frame is ambiguous",
                         v.name,
                         quoted(&v.text)
                     ),
-                ))
+                ));
+            }
+            if let Some(&k) = sc.names.get(rest) {
+                return Ok(k);
+            }
+            // `a::b`: `b` in the nested model `a`.
+            let inner = rest.split_once("::").and_then(|(head, tail)| {
+                match self.frames[*sc.names.get(head)?].kind {
+                    Kind::Model(m) => Some((m, tail)),
+                    Kind::Top | Kind::Link(_) | Kind::Joint | Kind::Frame => None,
+                }
+            });
+            match inner {
+                Some((m, tail)) => (s, rest) = (m, tail),
+                None => {
+                    let near = crate::units::suggest(
+                        rest,
+                        sc.names.keys().map(String::as_str).chain(["__model__"]),
+                    )
+                    .map(|s| format!("; did you mean {}?", quoted(s)))
+                    .unwrap_or_default();
+                    return Err(xml.error(
+                        v.range.clone(),
+                        format!(
+                            "{} of {owner} names no frame of the model: {}{near}",
+                            v.name,
+                            quoted(&v.text)
+                        ),
+                    ));
+                }
             }
         }
     }
 
     fn owner(&self, k: usize) -> String {
         let f = &self.frames[k];
-        format!("{} {}", f.kind, quoted(&f.name))
+        let kind = match f.kind {
+            Kind::Top | Kind::Model(_) => "model",
+            Kind::Link(_) => "link",
+            Kind::Joint => "joint",
+            Kind::Frame => "frame",
+        };
+        let scope = match f.kind {
+            Kind::Model(m) => self.scopes[m].path.clone(),
+            _ => self.shown(f.scope, &f.name),
+        };
+        format!("{kind} {}", quoted(&scope))
     }
 
-    /// The frame frame `k`'s pose is in (None: the model's), and the pose
-    /// as written there.
-    fn local(&self, xml: &Xml, k: usize) -> Result<(Option<usize>, Pose), Diagnostic> {
+    /// The frame frame `k`'s pose is in, and the pose as written there.
+    fn local(&self, k: usize) -> Result<(usize, Pose), Diagnostic> {
         let f = &self.frames[k];
         let owner = self.owner(k);
-        let Some(p) = child(f.element, "pose") else {
-            let base = match &f.default {
-                Some(v) => self.named(xml, v, &owner)?,
-                None => None,
+        let home = self.scopes[f.scope].frame;
+        let default = match &f.default {
+            Some(v) => self.named(f.scope, f.file, v, &owner)?,
+            None => home,
+        };
+        let mut pose = Pose::IDENTITY;
+        let mut base = default;
+        if let Some((p, file)) = f.pose {
+            let xml = &self.xmls[file];
+            let relative = match xml.attr(p, "relative_to").filter(|v| !v.text.is_empty()) {
+                Some(v) => {
+                    base = self.named(f.scope, file, &v, &owner)?;
+                    v.text
+                }
+                None => String::new(),
             };
-            return Ok((base, Pose::IDENTITY));
-        };
-        let (base, relative) = match xml.attr(p, "relative_to").filter(|v| !v.text.is_empty()) {
-            Some(v) => (self.named(xml, &v, &owner)?, v.text),
-            None => (
-                match &f.default {
-                    Some(v) => self.named(xml, v, &owner)?,
-                    None => None,
-                },
-                String::new(),
-            ),
-        };
-        // `sdf::pose` reads the numbers; `relative_to` is resolved here.
-        let (pos, r) = sdf::pose(xml, p, &relative, &owner)?;
-        Ok((
-            base,
-            Pose {
+            // `sdf::pose` reads the numbers; `relative_to` is resolved here.
+            let (pos, r) = sdf::pose(xml, p, &relative, &owner)?;
+            pose = Pose {
                 p: pos,
                 r: r.unwrap_or(Pose::IDENTITY.r),
-            },
+            };
+        }
+        if let (Kind::Model(m), Some((v, file))) = (f.kind, &f.placement) {
+            // The pose places the placement frame: the model frame is
+            // that pose after the placement frame's pose in it, inverted.
+            let target = self.named(m, *file, v, &format!("the `placement_frame` of {owner}"))?;
+            pose = pose.then(&self.within(target, k, v, *file)?.inverse());
+        }
+        Ok((base, pose))
+    }
+
+    /// Frame `target`'s pose in frame `stop`, which its chain of frames
+    /// reaches (a model's frames are all placed, at last, in its frame).
+    fn within(&self, target: usize, stop: usize, v: &Value, file: usize) -> Result<Pose, Diagnostic> {
+        let mut at = target;
+        let mut acc = Pose::IDENTITY;
+        for _ in 0..=self.frames.len() {
+            if at == stop {
+                return Ok(acc);
+            }
+            let (up, pose) = self.local(at)?;
+            acc = pose.then(&acc);
+            at = up;
+        }
+        Err(self.xmls[file].error(
+            v.range.clone(),
+            format!("`placement_frame` {}: its pose is relative to frames in a cycle", quoted(&v.text)),
         ))
     }
 
-    /// Frame `k`'s pose in the model frame: up the chain of frames each is
-    /// relative to, then down again (no recursion: a chain may be long),
-    /// a cycle refused at the `relative_to` that closes it.
-    fn in_model(&mut self, xml: &Xml, k: usize) -> Result<Pose, Diagnostic> {
+    /// Frame `k`'s pose in the report frame: up the chain of frames each
+    /// is relative to, then down again (no recursion: a chain may be
+    /// long), a cycle refused at the `relative_to` that closes it.
+    fn in_model(&mut self, k: usize) -> Result<Pose, Diagnostic> {
         let mut chain: Vec<(usize, Pose)> = Vec::new();
-        let mut at = Some(k);
-        let mut base = Pose::IDENTITY;
-        while let Some(c) = at {
-            if let Some(p) = self.placed[c] {
+        let mut at = k;
+        let base;
+        loop {
+            if let Some(p) = self.placed[at] {
                 base = p;
                 break;
             }
-            if let Some(i) = chain.iter().position(|(f, _)| *f == c) {
+            if let Some(i) = chain.iter().position(|(f, _)| *f == at) {
                 let names: Vec<String> = chain[i..]
                     .iter()
                     .map(|(f, _)| quoted(&self.frames[*f].name))
-                    .chain([quoted(&self.frames[c].name)])
+                    .chain([quoted(&self.frames[at].name)])
                     .collect();
-                let start = self.frames[c].element;
-                let v = child(start, "pose")
-                    .and_then(|p| xml.attr(p, "relative_to"))
-                    .filter(|v| !v.text.is_empty())
-                    .or_else(|| xml.attr(start, "attached_to"))
-                    .map_or_else(|| xml.tag(start), |v| v.range);
+                let f = &self.frames[at];
+                let (xml, v) = match f.pose.and_then(|(p, file)| {
+                    let v = self.xmls[file].attr(p, "relative_to").filter(|v| !v.text.is_empty())?;
+                    Some((&self.xmls[file], v.range))
+                }) {
+                    Some(found) => found,
+                    None => {
+                        let xml = &self.xmls[f.file];
+                        let r = xml
+                            .attr(f.element, "attached_to")
+                            .map_or_else(|| xml.tag(f.element), |v| v.range);
+                        (xml, r)
+                    }
+                };
                 return Err(xml
                     .error(
                         v,
                         format!(
                             "the pose of {} is relative to frames in a cycle: {}",
-                            self.owner(c),
+                            self.owner(at),
                             names.join(" → ")
                         ),
                     )
                     .help("place one of them relative to the model frame (`__model__`) or a link outside the cycle"));
             }
-            let (up, pose) = self.local(xml, c)?;
-            chain.push((c, pose));
+            let (up, pose) = self.local(at)?;
+            chain.push((at, pose));
             at = up;
         }
+        let mut base = base;
         for (c, pose) in chain.into_iter().rev() {
             base = base.then(&pose);
             self.placed[c] = Some(base);
         }
         Ok(base)
     }
+
+    /// The link frame `k` is attached to (a joint: its child's; a frame:
+    /// its `attached_to`'s; a model: its canonical link's), or an error at
+    /// `v`, which names `k`.
+    fn body(&self, k: usize, v: &Value, file: usize, owner: &str) -> Result<usize, Diagnostic> {
+        let mut at = k;
+        for _ in 0..=self.frames.len() {
+            let f = &self.frames[at];
+            at = match f.kind {
+                Kind::Link(l) => return Ok(l),
+                Kind::Joint | Kind::Frame => match &f.default {
+                    Some(d) => self.named(f.scope, f.file, d, &self.owner(at))?,
+                    None => self.scopes[f.scope].frame,
+                },
+                Kind::Model(m) => self.canonical(m)?,
+                Kind::Top => {
+                    return Err(self.xmls[file].error(
+                        v.range.clone(),
+                        format!(
+                            "{} of {owner} names {}, the report frame, which no link is attached to",
+                            v.name,
+                            quoted(&v.text)
+                        ),
+                    ));
+                }
+            };
+        }
+        Err(self.xmls[file].error(
+            v.range.clone(),
+            format!("{} of {owner} names {}, which is attached to frames in a cycle", v.name, quoted(&v.text)),
+        ))
+    }
+
+    /// Model `m`'s canonical frame: `canonical_link`, else its first
+    /// link, else its first nested model.
+    fn canonical(&self, m: usize) -> Result<usize, Diagnostic> {
+        let s = &self.scopes[m];
+        let xml = &self.xmls[s.file];
+        let this = self.owner(s.frame);
+        if let Some(v) = xml.attr(s.element, "canonical_link").filter(|v| !v.text.is_empty()) {
+            let k = self.named(m, s.file, &v, &this)?;
+            return match self.frames[k].kind {
+                Kind::Link(_) => Ok(k),
+                Kind::Top | Kind::Model(_) | Kind::Joint | Kind::Frame => Err(xml.error(
+                    v.range.clone(),
+                    format!("`canonical_link` of {this} names {}, which is not a link", quoted(&v.text)),
+                )),
+            };
+        }
+        let first = |want: fn(Kind) -> bool| {
+            self.frames
+                .iter()
+                .position(|f| f.scope == m && want(f.kind) && !matches!(f.kind, Kind::Top))
+        };
+        first(|k| matches!(k, Kind::Link(_)))
+            .or_else(|| first(|k| matches!(k, Kind::Model(_))))
+            .ok_or_else(|| {
+                xml.error(
+                    xml.tag(s.element),
+                    format!("{this} has no link, nor a nested model with one: it has no canonical link for a joint or a frame to be attached to"),
+                )
+            })
+    }
 }
 
-/// A joint's `<mimic>` waiting for every joint to be read: the follower,
-/// its leader's name, multiplier, offset and reference.
+/// `scope::name`, or `name` at the top.
+fn join(scope: &str, name: &str) -> String {
+    if scope.is_empty() {
+        name.to_string()
+    } else {
+        format!("{scope}::{name}")
+    }
+}
+
+/// A `<mimic>` waiting for every joint to be read: the follower, its
+/// leader's name (in the scope given, written in the file given),
+/// multiplier, offset and reference.
 struct Mimic {
     follower: usize,
     leader: Value,
+    scope: usize,
+    file: usize,
     multiplier: f64,
     offset: f64,
     reference: f64,
 }
 
-/// The model's links and joints, `d`'s links in the same order.
-pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tree, Diagnostic> {
-    let models: Vec<Node> = sdf_node
-        .children()
-        .filter(|c| qname(*c) == "model")
-        .collect();
-    let unsupported = sdf_node
-        .children()
-        .find(|c| qname(*c) == "world")
-        .or_else(|| models.get(1).copied())
-        .or_else(|| {
-            models.first().and_then(|m| {
-                m.children()
-                    .find(|c| qname(*c) == "model" || qname(*c) == "include")
-            })
-        });
-    if let Some(n) = unsupported {
+/// The whole robot's tree, `d`'s links replaced by every link of the
+/// models read (the top file's as `sdf::read` read them, in the same
+/// order, then each include's in its place), with includes resolved by
+/// `r`.
+pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tree, Diagnostic> {
+    let files = sdf_include::load(xml.source, r)?;
+    let count = files.included.len() + 1;
+    let sources: Vec<&Source> = (0..count).map(|k| files.source(k)).collect();
+    let docs = sources
+        .iter()
+        .map(|s| super::parse(s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let xmls: Vec<Xml> = sources.iter().map(|s| Xml { source: s }).collect();
+    let sdf_node = docs[0].root_element();
+    let worlds: Vec<Node> = children(sdf_node, "world").collect();
+    let models: Vec<Node> = children(sdf_node, "model").collect();
+    if let Some(n) = worlds.get(1).or(worlds.first().and(models.first())) {
         return Err(xml
             .error(
-                xml.tag(n),
+                xml.tag(*n),
                 format!(
-                    "`<{}>` here: the whole robot is composed from one `<model>` of links, joints and frames, without worlds, nested models or includes",
-                    qname(n)
+                    "`<{}>` here: the whole robot is composed from one `<world>`, or the models written under `<sdf>`",
+                    qname(*n)
                 ),
             )
-            .help("`check` reads every link of such a file; compose one model at a time"));
+            .help("compose one world at a time"));
     }
-    let Some(&model) = models.first() else {
-        return Ok(Tree::default());
+    let (top, world) = match (worlds.first(), models.as_slice()) {
+        (Some(w), _) => (*w, true),
+        (None, [m]) => (*m, false),
+        (None, []) => return Ok(Tree::default()),
+        (None, [_, _, ..]) => (sdf_node, true),
     };
-    let names = names(xml, d)?;
+    let entries = top
+        .children()
+        .filter(|c| matches!(qname(*c), "model" | "include"))
+        .count();
+    let mut g = Graph {
+        xmls: &xmls,
+        frames: Vec::new(),
+        scopes: Vec::new(),
+        placed: Vec::new(),
+        links: Vec::new(),
+        joints: Vec::new(),
+        strip: world && entries == 1,
+    };
+    let own = if world {
+        "__model__".to_string()
+    } else {
+        top.attribute("name").unwrap_or("__model__").to_string()
+    };
+    g.scopes.push(Scope {
+        path: String::new(),
+        frame: 0,
+        own: own.clone(),
+        element: top,
+        file: 0,
+        names: HashMap::new(),
+        shared: Vec::new(),
+        anchor: None,
+        depth: 0,
+        world,
+        fixed: false,
+    });
+    g.frames.push(Frame {
+        name: own,
+        kind: Kind::Top,
+        element: top,
+        file: 0,
+        scope: 0,
+        default: None,
+        pose: None,
+        placement: None,
+    });
+    g.placed.push(Some(Pose::IDENTITY));
+    let mut links = walk(&mut g, &files, &docs, d)?;
+    std::mem::swap(&mut d.links, &mut links);
+    let names = super::links::names(xml, d)?;
+    drop(names);
+    build(&mut g, d)
+}
+
+/// Every scope's frames, depth first in document order (an include's
+/// model in its place); the links of the whole robot.
+fn walk<'a, 'i>(
+    g: &mut Graph<'a, 'i, '_>,
+    files: &Files,
+    docs: &'a [roxmltree::Document<'i>],
+    d: &Description,
+) -> Result<Vec<Link>, Diagnostic> {
+    let written: HashMap<usize, &Link> = d.links.iter().map(|l| (l.range.start, l)).collect();
+    let mut out = Vec::new();
+    let mut stack: Vec<(usize, roxmltree::Children<'a, 'i>)> =
+        vec![(0, g.scopes[0].element.children())];
+    while let Some((s, it)) = stack.last_mut() {
+        let s = *s;
+        let Some(c) = it.next() else {
+            stack.pop();
+            continue;
+        };
+        let file = g.scopes[s].file;
+        let xml = &g.xmls[file];
+        let this = match s {
+            0 if g.scopes[0].world => "`<world>`".to_string(),
+            _ => "`<model>`".to_string(),
+        };
+        let scope_name = |g: &Graph, s: usize| match s {
+            0 => "`<model>`".to_string(),
+            _ => g.owner(g.scopes[s].frame),
+        };
+        match qname(c) {
+            "link" if !g.scopes[s].world => {
+                let name = xml.required(c, "name", &scope_name(g, s))?;
+                let k = out.len();
+                let shown = g.shown(s, &name.text);
+                let anchor = g.scopes[s].anchor.clone();
+                let link = match (file, written.get(&c.range().start)) {
+                    (0, Some(l)) => Link { name: shown, ..(*l).clone() },
+                    _ => {
+                        let owner = format!("link {}", quoted(&shown));
+                        let range = anchor.clone().unwrap_or(c.range());
+                        let mut inertial = match child(c, "inertial") {
+                            Some(i) => sdf::inertial(xml, i, &name.text, &owner)?,
+                            None => None,
+                        };
+                        if let Some(i) = &mut inertial {
+                            i.range = anchor.unwrap_or(i.range.clone());
+                        }
+                        Link {
+                            name: shown,
+                            range,
+                            inertial,
+                            moving: !g.scopes[s].fixed,
+                            parent: None,
+                        }
+                    }
+                };
+                out.push(link);
+                let f = g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Link(k),
+                        element: c,
+                        file,
+                        scope: s,
+                        default: None,
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+                g.links.push(f);
+            }
+            "joint" => {
+                let name = xml.required(c, "name", &this)?;
+                let owner = format!("joint {}", quoted(&name.text));
+                let kid = child(c, "child").ok_or_else(|| {
+                    xml.error(
+                        xml.tag(c),
+                        format!("{owner} is missing the required element `<child>`"),
+                    )
+                })?;
+                let f = g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Joint,
+                        element: c,
+                        file,
+                        scope: s,
+                        default: Some(xml.text(kid)),
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+                g.joints.push(f);
+            }
+            "frame" => {
+                let name = xml.required(c, "name", &this)?;
+                g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Frame,
+                        element: c,
+                        file,
+                        scope: s,
+                        default: xml.attr(c, "attached_to").filter(|v| !v.text.is_empty()),
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+            }
+            "model" | "include" => {
+                let included = qname(c) == "include";
+                let (element, mfile) = if included {
+                    let t = files.targets[&(file, c.range().start)];
+                    let root = docs[t].root_element();
+                    let models: Vec<Node> = children(root, "model").collect();
+                    let [m] = models.as_slice() else {
+                        return Err(xml.error(
+                            xml.tag(c),
+                            format!(
+                                "the included `{}` holds {} `<model>`s under `<sdf>`: an include names one model",
+                                files.source(t).name,
+                                models.len()
+                            ),
+                        ));
+                    };
+                    (*m, t)
+                } else {
+                    (c, file)
+                };
+                let mxml = &g.xmls[mfile];
+                let name = match child(c, "name").filter(|_| included) {
+                    Some(n) => xml.text(n),
+                    None => mxml.required(element, "name", &scope_name(g, s))?,
+                };
+                let pose = match child(c, "pose").filter(|_| included) {
+                    Some(p) => Some((p, file)),
+                    None => child(element, "pose").map(|p| (p, mfile)),
+                };
+                let placement = match child(c, "placement_frame").filter(|_| included) {
+                    Some(p) => Some((xml.text(p), file)),
+                    None => mxml
+                        .attr(element, "placement_frame")
+                        .filter(|v| !v.text.is_empty())
+                        .map(|v| (v, mfile)),
+                };
+                let stat = match child(c, "static") {
+                    Some(v) => Some(sdf::flag(xml, &xml.text(v), &scope_name(g, s))?),
+                    None => None,
+                };
+                let stat = match (stat, child(element, "static")) {
+                    (Some(v), _) => v,
+                    (None, Some(v)) => sdf::flag(mxml, &mxml.text(v), &scope_name(g, s))?,
+                    (None, None) => false,
+                };
+                let depth = g.scopes[s].depth + 1;
+                let path = join(&g.scopes[s].path, &name.text);
+                if depth > MAX_NESTING || g.scopes.len() >= MAX_MODELS {
+                    return Err(xml.error(
+                        xml.tag(c),
+                        format!(
+                            "model {} is one model too many for the whole robot: models nest at most {MAX_NESTING} deep, {MAX_MODELS} in all (includes counted each time)",
+                            quoted(&path)
+                        ),
+                    ));
+                }
+                let anchor = g.scopes[s]
+                    .anchor
+                    .clone()
+                    .or_else(|| included.then(|| c.range()));
+                let m = g.scopes.len();
+                let fixed = g.scopes[s].fixed || stat;
+                let f = g.add(
+                    Frame {
+                        name: name.text.clone(),
+                        kind: Kind::Model(m),
+                        element,
+                        file: mfile,
+                        scope: s,
+                        default: None,
+                        pose,
+                        placement,
+                    },
+                    s,
+                );
+                g.scopes.push(Scope {
+                    path,
+                    frame: f,
+                    own: name.text,
+                    element,
+                    file: mfile,
+                    names: HashMap::new(),
+                    shared: Vec::new(),
+                    anchor,
+                    depth,
+                    world: false,
+                    fixed,
+                });
+                stack.push((m, element.children()));
+            }
+            _ => {}
+        }
+    }
+    Ok(out)
+}
+
+/// The tree: each link's pose, the joints joining them, their followers.
+fn build(g: &mut Graph, d: &Description) -> Result<Tree, Diagnostic> {
     let mut t = Tree {
         links: unplaced(d.links.len()),
         joints: Vec::new(),
     };
-    let model_name = model.attribute("name").unwrap_or_default();
-    let mut frames = Frames::new(model);
-    for (i, l) in children(model, "link").enumerate() {
-        frames.add(Frame {
-            name: d.links[i].name.clone(),
-            kind: "link",
-            element: l,
-            default: None,
-        });
-    }
-    let joints: Vec<Node> = children(model, "joint").collect();
-    let mut joint_frame = Vec::with_capacity(joints.len());
-    for &j in &joints {
-        let name = xml.required(j, "name", "`<model>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kid = child(j, "child").ok_or_else(|| {
-            xml.error(
-                xml.tag(j),
-                format!("{owner} is missing the required element `<child>`"),
-            )
-        })?;
-        joint_frame.push(frames.add(Frame {
-            name: name.text.clone(),
-            kind: "joint",
-            element: j,
-            default: Some(xml.text(kid)),
-        }));
-    }
-    for f in children(model, "frame") {
-        let name = xml.required(f, "name", "`<model>`")?;
-        frames.add(Frame {
-            name: name.text.clone(),
-            kind: "frame",
-            element: f,
-            default: xml.attr(f, "attached_to").filter(|v| !v.text.is_empty()),
-        });
-    }
-    // Each link's pose in the model frame.
+    // Each link's pose in the report frame.
     let mut world = vec![Pose::IDENTITY; d.links.len()];
     for (i, w) in world.iter_mut().enumerate() {
-        *w = frames.in_model(xml, i)?;
+        *w = g.in_model(g.links[i])?;
     }
-    let old = sdf_node
-        .attribute("version")
-        .and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
-        .is_some_and(|minor| {
-            sdf_node
-                .attribute("version")
-                .is_some_and(|v| v.starts_with("1."))
-                && minor < 7
-        });
     let mut mimics = Vec::new();
-    for (&j, &jf) in joints.iter().zip(&joint_frame) {
-        let name = xml.required(j, "name", "`<model>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kind = xml.required(j, "type", &owner)?;
-        let motion = xml.keyword(
-            &kind,
-            &owner,
+    for jf in g.joints.clone() {
+        let (j, file, s) = (g.frames[jf].element, g.frames[jf].file, g.frames[jf].scope);
+        let xml = &g.xmls[file];
+        let old = old_version(j);
+        let Head {
+            name,
+            owner,
+            kind,
+            motion,
+            parent,
+            child: kid,
+        } = joint_head(
+            xml,
+            j,
+            "`<model>`",
             &[
                 ("revolute", Motion::Revolute),
                 ("continuous", Motion::Revolute),
@@ -300,29 +722,20 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                 ("fixed", Motion::Fixed),
                 ("ball", Motion::Stays),
             ],
+            |e, _| Ok(xml.text(e)),
         )?;
-        let end = |tag: &str| -> Result<Value, Diagnostic> {
-            let e = child(j, tag).ok_or_else(|| {
-                xml.error(
-                    xml.tag(j),
-                    format!("{owner} is missing the required element `<{tag}>`"),
-                )
-            })?;
-            Ok(xml.text(e))
-        };
-        let (parent, kid) = (end("parent")?, end("child")?);
-        let c = link_named(xml, &names, &kid, &owner)?;
+        let c = g.end(s, file, &kid, &owner)?;
         let p = if parent.text == "world" {
             None
         } else {
-            let p = link_named(xml, &names, &parent, &owner)?;
+            let p = g.end(s, file, &parent, &owner)?;
             set_parent(xml, &mut t, c, p, &kid, &owner)?;
             Some(p)
         };
         // The joint frame in the child link's.
-        let joint_pose = world[c].inverse().then(&frames.in_model(xml, jf)?);
-        let ax = child(j, "axis");
-        let (axis_in_joint, lower, upper, expressed) = match ax {
+        let joint_pose = world[c].inverse().then(&g.in_model(jf)?);
+        let home = g.scopes[s].frame;
+        let (axis_in_joint, lower, upper, expressed) = match child(j, "axis") {
             Some(a) => {
                 let xyz = child(a, "xyz");
                 let v = xyz
@@ -333,13 +746,12 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                     .map(|u| sdf::flag(xml, &xml.text(u), &owner))
                     .transpose()?
                     .unwrap_or(false);
-                // Where the axis is expressed: Some(None) the model frame,
-                // Some(Some(k)) frame k, None the joint's own.
+                // Where the axis is expressed: Some(k) frame k, None the
+                // joint's own.
                 let expressed = match xyz.and_then(|x| xml.attr(x, "expressed_in")) {
                     Some(e) if e.text.is_empty() || e.text == name.text => None,
-                    Some(e) if e.text == "__model__" || e.text == model_name => Some(None),
-                    Some(e) => Some(frames.named(xml, &e, &owner)?),
-                    None if old && parent_model => Some(None),
+                    Some(e) => Some(g.named(s, file, &e, &owner)?),
+                    None if old && parent_model => Some(home),
                     None => None,
                 };
                 let lim = child(a, "limit");
@@ -349,14 +761,14 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                         .transpose()
                 };
                 if let Some(m) = child(a, "mimic") {
-                    mimics.push(mimic(xml, m, t.joints.len(), &owner)?);
+                    mimics.push(mimic(xml, m, t.joints.len(), s, file, &owner)?);
                 }
                 (v, bound("lower")?, bound("upper")?, expressed)
             }
             None => ([0.0, 0.0, 1.0], None, None, None),
         };
         // The axis in the child's frame: turned by the joint's pose, or
-        // from the frame it is expressed in (in the model frame) by the
+        // from the frame it is expressed in (in the report frame) by the
         // child's.
         let axis = match expressed {
             None => {
@@ -364,10 +776,7 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                 std::array::from_fn(|i| (0..3).map(|k| r[i][k] * axis_in_joint[k]).sum())
             }
             Some(frame) => {
-                let e = match frame {
-                    Some(k) => frames.in_model(xml, k)?.r,
-                    None => Pose::IDENTITY.r,
-                };
+                let e = g.in_model(frame)?.r;
                 let in_model: [f64; 3] =
                     std::array::from_fn(|i| (0..3).map(|k| e[i][k] * axis_in_joint[k]).sum());
                 let r = world[c].r;
@@ -383,14 +792,14 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
             _ => None,
         };
         t.joints.push(Joint {
-            name: name.text.clone(),
+            name: g.shown(s, &name.text),
             motion,
             axis,
             anchor: joint_pose.p,
             zero: 0.0,
             limits,
             follows: None,
-            range: j.range(),
+            range: g.scopes[s].anchor.clone().unwrap_or(j.range()),
         });
     }
     for m in mimics {
@@ -398,7 +807,11 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
             "the `<mimic>` of joint {}",
             quoted(&t.joints[m.follower].name)
         );
-        let l = joint_named(xml, &t, &m.leader, &owner)?;
+        let leader = Value {
+            text: g.shown(m.scope, &m.leader.text),
+            ..m.leader
+        };
+        let l = joint_named(&g.xmls[m.file], &t, &leader, &owner)?;
         // NOTE: multiplier·(x − reference) + offset, as the polynomial
         // c₀ + c₁x that `Follow` holds (every SDFormat joint's zero is 0).
         t.joints[m.follower].follows = Some(Follow {
@@ -421,8 +834,53 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
     Ok(t)
 }
 
+/// Whether the file of `node` is SDFormat older than 1.7 (where
+/// `use_parent_model_frame` still counts).
+fn old_version(node: Node) -> bool {
+    let v = node.document().root_element().attribute("version");
+    v.is_some_and(|v| v.starts_with("1."))
+        && v.and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
+            .is_some_and(|minor| minor < 7)
+}
+
+impl Graph<'_, '_, '_> {
+    /// The link a joint's `<parent>` or `<child>` `v` is attached to.
+    fn end(&self, s: usize, file: usize, v: &Value, owner: &str) -> Result<usize, Diagnostic> {
+        let sc = &self.scopes[s];
+        let known = !v.text.is_empty()
+            && (sc.names.contains_key(&v.text)
+                || v.text.contains("::")
+                || v.text == "__model__"
+                || sc.shared.contains(&v.text));
+        if !known {
+            // As `links::link_named` says it: the scope's links nearest.
+            let links = sc
+                .names
+                .iter()
+                .filter(|(_, k)| matches!(self.frames[**k].kind, Kind::Link(_)))
+                .map(|(n, _)| n.as_str());
+            let near = crate::units::suggest(&v.text, links)
+                .map(|s| format!("; did you mean {}?", quoted(s)))
+                .unwrap_or_default();
+            return Err(self.xmls[file].error(
+                v.range.clone(),
+                format!("{} of {owner} names no link: {}{near}", v.name, quoted(&v.text)),
+            ));
+        }
+        let k = self.named(s, file, v, owner)?;
+        self.body(k, v, file, owner)
+    }
+}
+
 /// A `<mimic>` element of joint `follower`'s `<axis>`.
-fn mimic(xml: &Xml, m: Node, follower: usize, owner: &str) -> Result<Mimic, Diagnostic> {
+fn mimic(
+    xml: &Xml,
+    m: Node,
+    follower: usize,
+    scope: usize,
+    file: usize,
+    owner: &str,
+) -> Result<Mimic, Diagnostic> {
     let owner = format!("the `<mimic>` of {owner}");
     let leader = xml.required(m, "joint", &owner)?;
     if let Some(a) = xml.attr(m, "axis") {
@@ -451,6 +909,8 @@ fn mimic(xml: &Xml, m: Node, follower: usize, owner: &str) -> Result<Mimic, Diag
     Ok(Mimic {
         follower,
         leader,
+        scope,
+        file,
         // sdf/1.11/mimic.sdf: multiplier 1, offset 0, reference 0.
         multiplier: number("multiplier", 1.0)?,
         offset: number("offset", 0.0)?,
