@@ -37,6 +37,8 @@ pub(super) struct Files<'s> {
     pub included: Vec<Source>,
     /// (file, byte offset of an `<include>` element) → the file it names.
     pub targets: HashMap<(usize, usize), usize>,
+    /// Per included file, where it was first included: `FILE:LINE:COL`.
+    pub from: Vec<String>,
 }
 
 impl<'s> Files<'s> {
@@ -45,6 +47,24 @@ impl<'s> Files<'s> {
             0 => self.top,
             k => &self.included[k - 1],
         }
+    }
+
+    /// `d` with where its file was included from, up to the top file.
+    pub fn located(&self, d: Diagnostic) -> Diagnostic {
+        let Some(path) = d.place().map(|p| p.path.clone()) else {
+            return d;
+        };
+        let mut at = self.included.iter().position(|s| s.name == path);
+        let mut d = d;
+        let mut hops = 0;
+        while let Some(k) = at.filter(|_| hops <= MAX_DEPTH) {
+            let site = self.from[k].clone();
+            d = d.included_from(site.clone());
+            let file = site.rsplitn(3, ':').nth(2).unwrap_or_default().to_string();
+            at = self.included.iter().position(|s| s.name == file);
+            hops += 1;
+        }
+        d
     }
 }
 
@@ -88,6 +108,7 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
             top,
             included: Vec::new(),
             targets: HashMap::new(),
+            from: Vec::new(),
         },
         known: HashMap::new(),
         chain: vec![(canon(top.path()), top.name.clone())],
@@ -114,6 +135,8 @@ impl Loader<'_> {
                 )
             })?;
             let at_uri = || xml.text(child(inc, "uri").expect("a target has a uri")).range;
+            let (line, col) = source.line_col(at_uri().start);
+            let site = format!("{}:{line}:{col}", source.name);
             if let Some(i) = self.chain.iter().position(|(p, _)| *p == canonical) {
                 let names: Vec<String> = self.chain[i..]
                     .iter()
@@ -131,14 +154,7 @@ impl Loader<'_> {
                     format!("`<include>` of `{shown}`: includes nest more than {MAX_DEPTH} files deep"),
                 ));
             }
-            if !self.roots.iter().any(|r| canonical.starts_with(r)) {
-                return Err(xml
-                    .error(
-                        at_uri(),
-                        format!("the included file `{shown}` lies outside the directories includes may read"),
-                    )
-                    .help("an SDFormat include may read the top file's directory, the working directory, `--package` and `model://` directories, and `--include-root`s"));
-            }
+            self.confined(&xml, &canonical, &shown, at_uri())?;
             let target = match self.known.get(&canonical) {
                 Some(&t) => t,
                 None => {
@@ -150,10 +166,11 @@ impl Loader<'_> {
                     })?;
                     let s = crate::io::source_of(&shown, bytes)?.read_from(path.clone());
                     self.files.included.push(s);
+                    self.files.from.push(site.clone());
                     let t = self.files.included.len();
                     self.known.insert(canonical.clone(), t);
                     self.chain.push((canonical, shown));
-                    self.file(t)?;
+                    self.file(t).map_err(|d| d.included_from(site))?;
                     self.chain.pop();
                     t
                 }
@@ -161,6 +178,25 @@ impl Loader<'_> {
             self.files.targets.insert((k, inc.range().start), target);
         }
         Ok(())
+    }
+
+    /// Refuse `canonical` outside the directories includes may read.
+    fn confined(
+        &self,
+        xml: &Xml,
+        canonical: &Path,
+        shown: &str,
+        at: std::ops::Range<usize>,
+    ) -> Result<(), Diagnostic> {
+        if self.roots.iter().any(|r| canonical.starts_with(r)) {
+            return Ok(());
+        }
+        Err(xml
+            .error(
+                at,
+                format!("the included `{shown}` lies outside the directories includes may read"),
+            )
+            .help("an SDFormat include may read the top file's directory, the working directory, `--package` and `model://` directories, and `--include-root`s"))
     }
 
     /// The file an `<include>` names, and how messages show it.
@@ -205,6 +241,9 @@ impl Loader<'_> {
             dir.join(&uri.text)
         };
         if path.is_dir() {
+            let shown = path.display().to_string();
+            let canonical = std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone());
+            self.confined(xml, &canonical, &shown, uri.range.clone())?;
             path = model_file(xml, &path, &uri.range)?;
         }
         let shown = path.display().to_string();

@@ -160,6 +160,19 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
                 return Ok(k);
             }
             // `a::b`: `b` in the nested model `a`.
+            if let Some((head, _)) = rest.split_once("::")
+                && sc.shared.iter().any(|n| n == head)
+            {
+                return Err(xml.error(
+                    v.range.clone(),
+                    format!(
+                        "{} of {owner} names {}, in {}, which two frames (links, joints, `<frame>`s or models) share: the frame is ambiguous",
+                        v.name,
+                        quoted(&v.text),
+                        quoted(head)
+                    ),
+                ));
+            }
             let inner = rest.split_once("::").and_then(|(head, tail)| {
                 match self.frames[*sc.names.get(head)?].kind {
                     Kind::Model(m) => Some((m, tail)),
@@ -474,11 +487,10 @@ pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tr
         placement: None,
     });
     g.placed.push(Some(Pose::IDENTITY));
-    let mut links = walk(&mut g, &files, &docs, d)?;
+    let mut links = walk(&mut g, &files, &docs, d).map_err(|e| files.located(e))?;
     std::mem::swap(&mut d.links, &mut links);
-    let names = super::links::names(xml, d)?;
-    drop(names);
-    build(&mut g, d)
+    super::links::names(xml, d)?;
+    build(&mut g, d).map_err(|e| files.located(e))
 }
 
 /// Every scope's frames, depth first in document order (an include's
@@ -639,11 +651,20 @@ fn walk<'a, 'i>(
                 };
                 let depth = g.scopes[s].depth + 1;
                 let path = join(&g.scopes[s].path, &name.text);
-                if depth > MAX_NESTING || g.scopes.len() >= MAX_MODELS {
+                if depth > MAX_NESTING {
                     return Err(xml.error(
                         xml.tag(c),
                         format!(
-                            "model {} is one model too many for the whole robot: models nest at most {MAX_NESTING} deep, {MAX_MODELS} in all (includes counted each time)",
+                            "model {} is nested {depth} models deep: the whole robot is composed of models nested at most {MAX_NESTING} deep",
+                            quoted(&path)
+                        ),
+                    ));
+                }
+                if g.scopes.len() > MAX_MODELS {
+                    return Err(xml.error(
+                        xml.tag(c),
+                        format!(
+                            "model {} is one model more than {MAX_MODELS}, the most the whole robot is composed of (an include counts each time it is read)",
                             quoted(&path)
                         ),
                     ));
