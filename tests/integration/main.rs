@@ -60,6 +60,7 @@ mod robot_body;
 mod robots;
 mod robots_hostile;
 mod robots_more;
+mod robots_sdf;
 mod schema;
 mod search_rules;
 mod shell;

@@ -91,7 +91,11 @@ struct Loader<'s> {
 /// Read every file `top` includes, at any depth.
 pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagnostic> {
     let canon = |p: &Path| std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf());
-    let dir = top.path().parent().map(Path::to_path_buf).unwrap_or_default();
+    let dir = top
+        .path()
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default();
     let dir = if dir.as_os_str().is_empty() {
         PathBuf::from(".")
     } else {
@@ -134,7 +138,10 @@ impl Loader<'_> {
                     format!("cannot read the included file `{shown}`: {e}"),
                 )
             })?;
-            let at_uri = || xml.text(child(inc, "uri").expect("a target has a uri")).range;
+            let at_uri = || {
+                xml.text(child(inc, "uri").expect("a target has a uri"))
+                    .range
+            };
             let (line, col) = source.line_col(at_uri().start);
             let site = format!("{}:{line}:{col}", source.name);
             if let Some(i) = self.chain.iter().position(|(p, _)| *p == canonical) {
@@ -145,13 +152,18 @@ impl Loader<'_> {
                     .collect();
                 return Err(xml.error(
                     at_uri(),
-                    format!("`<include>` closes a cycle of includes: {}", names.join(" → ")),
+                    format!(
+                        "`<include>` closes a cycle of includes: {}",
+                        names.join(" → ")
+                    ),
                 ));
             }
             if self.chain.len() > MAX_DEPTH {
                 return Err(xml.error(
                     at_uri(),
-                    format!("`<include>` of `{shown}`: includes nest more than {MAX_DEPTH} files deep"),
+                    format!(
+                        "`<include>` of `{shown}`: includes nest more than {MAX_DEPTH} files deep"
+                    ),
                 ));
             }
             self.confined(&xml, &canonical, &shown, at_uri())?;
@@ -209,11 +221,18 @@ impl Loader<'_> {
         };
         let uri = xml.text(u);
         let dir = xml.source.path().parent().unwrap_or(Path::new(""));
-        let bad = |why: String| xml.error(uri.range.clone(), format!("`<uri>` {}: {why}", quoted(&uri.text)));
+        let bad = |why: String| {
+            xml.error(
+                uri.range.clone(),
+                format!("`<uri>` {}: {why}", quoted(&uri.text)),
+            )
+        };
         let mut path = if let Some(rest) = uri.text.strip_prefix("model://") {
             let (name, tail) = rest.split_once('/').unwrap_or((rest, ""));
             if name.is_empty() || name == "." || name == ".." {
-                return Err(bad("expected `model://NAME`, NAME a model's directory".into()));
+                return Err(bad(
+                    "expected `model://NAME`, NAME a model's directory".into()
+                ));
             }
             let base = match self.packages.iter().find(|(n, _)| n == name) {
                 Some((_, d)) => d.clone(),
@@ -230,11 +249,17 @@ impl Loader<'_> {
             if let Ok(c) = std::fs::canonicalize(&base) {
                 self.roots.push(c);
             }
-            if tail.is_empty() { base } else { base.join(tail) }
+            if tail.is_empty() {
+                base
+            } else {
+                base.join(tail)
+            }
         } else if let Some(rest) = uri.text.strip_prefix("file://") {
             PathBuf::from(rest)
         } else if uri.text.contains("://") {
-            return Err(bad("only `model://` and file paths are read (massprop downloads nothing)".into()));
+            return Err(bad(
+                "only `model://` and file paths are read (massprop downloads nothing)".into(),
+            ));
         } else if uri.text.is_empty() {
             return Err(bad("expected a path or `model://NAME`".into()));
         } else {

@@ -126,7 +126,8 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
     fn shown(&self, scope: usize, name: &str) -> String {
         let full = join(&self.scopes[scope].path, name);
         if self.strip {
-            full.split_once("::").map_or(full.clone(), |(_, r)| r.to_string())
+            full.split_once("::")
+                .map_or(full.clone(), |(_, r)| r.to_string())
         } else {
             full
         }
@@ -134,7 +135,13 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
 
     /// The frame `v` (written in file `file`) names in `scope`, or an
     /// error at it.
-    fn named(&self, scope: usize, file: usize, v: &Value, owner: &str) -> Result<usize, Diagnostic> {
+    fn named(
+        &self,
+        scope: usize,
+        file: usize,
+        v: &Value,
+        owner: &str,
+    ) -> Result<usize, Diagnostic> {
         let xml = &self.xmls[file];
         let mut s = scope;
         let mut rest = v.text.as_str();
@@ -254,7 +261,13 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
 
     /// Frame `target`'s pose in frame `stop`, which its chain of frames
     /// reaches (a model's frames are all placed, at last, in its frame).
-    fn within(&self, target: usize, stop: usize, v: &Value, file: usize) -> Result<Pose, Diagnostic> {
+    fn within(
+        &self,
+        target: usize,
+        stop: usize,
+        v: &Value,
+        file: usize,
+    ) -> Result<Pose, Diagnostic> {
         let mut at = target;
         let mut acc = Pose::IDENTITY;
         for _ in 0..=self.frames.len() {
@@ -267,7 +280,10 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
         }
         Err(self.xmls[file].error(
             v.range.clone(),
-            format!("`placement_frame` {}: its pose is relative to frames in a cycle", quoted(&v.text)),
+            format!(
+                "`placement_frame` {}: its pose is relative to frames in a cycle",
+                quoted(&v.text)
+            ),
         ))
     }
 
@@ -291,7 +307,9 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
                     .collect();
                 let f = &self.frames[at];
                 let (xml, v) = match f.pose.and_then(|(p, file)| {
-                    let v = self.xmls[file].attr(p, "relative_to").filter(|v| !v.text.is_empty())?;
+                    let v = self.xmls[file]
+                        .attr(p, "relative_to")
+                        .filter(|v| !v.text.is_empty())?;
                     Some((&self.xmls[file], v.range))
                 }) {
                     Some(found) => found,
@@ -354,7 +372,11 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
         }
         Err(self.xmls[file].error(
             v.range.clone(),
-            format!("{} of {owner} names {}, which is attached to frames in a cycle", v.name, quoted(&v.text)),
+            format!(
+                "{} of {owner} names {}, which is attached to frames in a cycle",
+                v.name,
+                quoted(&v.text)
+            ),
         ))
     }
 
@@ -364,13 +386,19 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
         let s = &self.scopes[m];
         let xml = &self.xmls[s.file];
         let this = self.owner(s.frame);
-        if let Some(v) = xml.attr(s.element, "canonical_link").filter(|v| !v.text.is_empty()) {
+        if let Some(v) = xml
+            .attr(s.element, "canonical_link")
+            .filter(|v| !v.text.is_empty())
+        {
             let k = self.named(m, s.file, &v, &this)?;
             return match self.frames[k].kind {
                 Kind::Link(_) => Ok(k),
                 Kind::Top | Kind::Model(_) | Kind::Joint | Kind::Frame => Err(xml.error(
                     v.range.clone(),
-                    format!("`canonical_link` of {this} names {}, which is not a link", quoted(&v.text)),
+                    format!(
+                        "`canonical_link` of {this} names {}, which is not a link",
+                        quoted(&v.text)
+                    ),
                 )),
             };
         }
@@ -528,7 +556,10 @@ fn walk<'a, 'i>(
                 let shown = g.shown(s, &name.text);
                 let anchor = g.scopes[s].anchor.clone();
                 let link = match (file, written.get(&c.range().start)) {
-                    (0, Some(l)) => Link { name: shown, ..(*l).clone() },
+                    (0, Some(l)) => Link {
+                        name: shown,
+                        ..(*l).clone()
+                    },
                     _ => {
                         let owner = format!("link {}", quoted(&shown));
                         let range = anchor.clone().unwrap_or(c.range());
@@ -885,7 +916,11 @@ impl Graph<'_, '_, '_> {
                 .unwrap_or_default();
             return Err(self.xmls[file].error(
                 v.range.clone(),
-                format!("{} of {owner} names no link: {}{near}", v.name, quoted(&v.text)),
+                format!(
+                    "{} of {owner} names no link: {}{near}",
+                    v.name,
+                    quoted(&v.text)
+                ),
             ));
         }
         let k = self.named(s, file, v, owner)?;

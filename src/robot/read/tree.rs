@@ -8,9 +8,9 @@
 //! joint types it does not know.
 
 use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
-pub use super::sdf_include::Resolve;
 use super::mjcf_class::Classes;
 use super::orient::{Settings, orientation, quat_to_matrix};
+pub use super::sdf_include::Resolve;
 use super::{Value, Xml, child, children, mjcf, proper, qname, quoted, rpy};
 use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
