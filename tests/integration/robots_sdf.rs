@@ -291,3 +291,25 @@ fn models_nested_past_the_limit_are_refused_at_the_deepest() {
     let e = refused(&path);
     assert!(e.contains("nested 65 models deep"), "{e}");
 }
+
+#[test]
+fn a_model_uri_is_found_through_package() {
+    let robot = std::fs::read_to_string(robots("sdf_include/models/robot/model.sdf")).unwrap();
+    let path = scratch_files("robots_sdf", "package", &[("r.sdf", &robot)]);
+    let arm = robots("sdf_include/models/arm");
+    let with = json(&path, &["--package", &format!("arm={}", arm.display())]);
+    let nested = json(&robots("sdf_nested.sdf"), &[]);
+    assert_close(&figures(&with), &figures(&nested), 1e-14);
+}
+
+#[test]
+fn a_model_uri_without_its_directory_is_refused_naming_the_package_flag() {
+    let robot = std::fs::read_to_string(robots("sdf_include/models/robot/model.sdf")).unwrap();
+    let path = scratch_files("robots_sdf", "no-package", &[("r.sdf", &robot)]);
+    let e = refused(&path);
+    assert!(
+        e.contains("r.sdf:14:12: error: `<uri>` \"model://arm\"")
+            && e.contains("`--package arm=DIR`"),
+        "{e}"
+    );
+}

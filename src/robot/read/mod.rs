@@ -23,7 +23,7 @@ mod tree;
 mod urdf;
 
 pub use geometry::{Amount, Geometry, Solid, geometry, mjcf_geometry};
-pub use tree::tree;
+pub use tree::{Resolve, tree};
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
 /// for `geometry.rs`: through here, so that neither imports the other.

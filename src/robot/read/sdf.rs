@@ -26,9 +26,14 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
     // straight under `<sdf>`.
     let mut scopes = vec![Scope::new(sdf)];
     scopes.extend(elements(sdf).filter(|c| is(c, "world")).map(Scope::new));
+    // A world's includes are top-level models too (the whole robot reads
+    // them, `sdf_tree`): names are prefixed as it prefixes them.
     let top_level: Vec<Node> = scopes
         .iter()
-        .flat_map(|s| elements(s.node).filter(|c| is(c, "model")))
+        .flat_map(|s| {
+            let world = is(&s.node, "world");
+            elements(s.node).filter(move |c| is(c, "model") || world && is(c, "include"))
+        })
         .collect();
     let mut found = Vec::new();
     for scope in &mut scopes {
@@ -63,7 +68,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         });
     }
     let name = match top_level.as_slice() {
-        [one] => one.attribute("name"),
+        [one] if is(one, "model") => one.attribute("name"),
         _ => elements(sdf)
             .find(|c| is(c, "world"))
             .and_then(|w| w.attribute("name")),

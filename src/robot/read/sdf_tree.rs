@@ -637,8 +637,15 @@ fn walk<'a, 'i>(
             }
             "model" | "include" => {
                 let included = qname(c) == "include";
-                let (element, mfile) = if included {
-                    let t = files.targets[&(file, c.range().start)];
+                // NOTE: an `<include>` straight under `<sdf>` (beside
+                // several models) is no include of SDFormat's, and
+                // `sdf_include` did not read it: passed over, as `check`
+                // passes it.
+                let target = files.targets.get(&(file, c.range().start));
+                if included && target.is_none() {
+                    continue;
+                }
+                let (element, mfile) = if let Some(&t) = target {
                     let root = docs[t].root_element();
                     let models: Vec<Node> = children(root, "model").collect();
                     let [m] = models.as_slice() else {
