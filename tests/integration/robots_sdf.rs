@@ -313,3 +313,13 @@ fn a_model_uri_without_its_directory_is_refused_naming_the_package_flag() {
         "{e}"
     );
 }
+
+#[test]
+fn a_joint_from_a_frame_of_the_top_model_hangs_its_child_on_the_canonical_link() {
+    // `f` is attached to the model frame, which is attached to the first
+    // link `a`: `b` is `a`'s child, and `--only a` holds both.
+    let top = "<sdf version='1.9'>\n<model name='m'><link name='a'><inertial><mass>1</mass></inertial></link>\n<frame name='f'><pose>1 0 0 0 0 0</pose></frame>\n<link name='b'><pose relative_to='f'/><inertial><mass>2</mass></inertial></link>\n<joint name='j' type='revolute'><parent>f</parent><child>b</child></joint>\n</model>\n</sdf>\n";
+    let path = scratch_files("robots_sdf", "top-frame", &[("m.sdf", top)]);
+    let v = json(&path, &["--only", "a"]);
+    assert_close(&numbers(&v["mass"]), &[3.0], 1e-15);
+}

@@ -627,6 +627,15 @@ mod tests {
     }
 
     #[test]
+    fn a_worlds_include_is_a_top_level_model_that_prefixes_the_names() {
+        let d = read_ok(&sdf(
+            "<world name='w'><model name='m'><link name='l'/></model><include><uri>x</uri></include></world>",
+        ));
+        assert_eq!(d.links[0].name, "m::l");
+        assert_eq!(d.name.as_deref(), Some("w"));
+    }
+
+    #[test]
     fn a_free_root_link_and_a_jointed_child_move_and_a_fixed_child_does_not() {
         let d = read_ok(&sdf(
             "<model name='m'><link name='base'/><link name='arm'/><link name='tool'/>\

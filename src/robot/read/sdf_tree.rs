@@ -358,6 +358,9 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
                     None => self.scopes[f.scope].frame,
                 },
                 Kind::Model(m) => self.canonical(m)?,
+                // The top model's frame is attached to its canonical link
+                // too; a world's frame to none.
+                Kind::Top if !self.scopes[0].world => self.canonical(0)?,
                 Kind::Top => {
                     return Err(self.xmls[file].error(
                         v.range.clone(),
