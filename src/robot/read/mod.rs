@@ -17,6 +17,7 @@ mod mjcf_class;
 mod mjcf_geoms;
 mod orient;
 mod sdf;
+mod sdf_frames;
 mod sdf_include;
 mod sdf_tree;
 mod tree;
