@@ -27,10 +27,9 @@
 //! relative to each other in a cycle; models nested deeper than
 //! `MAX_NESTING`; more than `MAX_MODELS` models.
 
-use super::links::{axis, joint_named, limits, set_parent, unplaced};
+use super::links::{Head, axis, joint_head, joint_named, limits, set_parent, unplaced};
 use super::sdf_frames::{Frame, Graph, Kind, MAX_MODELS, MAX_NESTING, Scope, join};
 use super::sdf_include::{self, Files, Resolve};
-use super::tree::{Head, joint_head};
 use super::{Value, Xml, child, children, qname, quoted, sdf};
 use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};

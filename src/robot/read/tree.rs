@@ -7,11 +7,13 @@
 //! MJCF default classes that set a joint's or a body's placement; URDF
 //! joint types it does not know.
 
-use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::links::{
+    Head, axis, joint_head, joint_named, limits, link_named, names, set_parent, unplaced,
+};
 use super::mjcf_class::Classes;
 use super::orient::{Settings, orientation, quat_to_matrix};
 pub use super::sdf_include::Resolve;
-use super::{Value, Xml, child, children, mjcf, proper, qname, quoted, rpy};
+use super::{Xml, child, children, mjcf, proper, qname, quoted, rpy};
 use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
 use crate::robot::{Description, Dialect};
@@ -104,52 +106,6 @@ fn depth(xml: &Xml, t: &Tree, d: &Description) -> Result<(), Diagnostic> {
         }
     }
     Ok(())
-}
-
-/// A joint's name, its `type` (one of `kinds`), and its `<parent>` and
-/// `<child>` as `end` reads them: what the URDF and SDFormat readers
-/// share, with the same messages.
-pub(super) struct Head {
-    pub name: Value,
-    /// `joint "NAME"`, for messages.
-    pub owner: String,
-    pub kind: Value,
-    pub motion: Motion,
-    pub parent: Value,
-    pub child: Value,
-}
-
-/// Read a joint's `Head`; `within` names the element that holds joints
-/// (`` `<robot>` ``, `` `<model>` ``).
-pub(super) fn joint_head(
-    xml: &Xml,
-    j: Node,
-    within: &str,
-    kinds: &[(&str, Motion)],
-    end: impl Fn(Node, &str) -> Result<Value, Diagnostic>,
-) -> Result<Head, Diagnostic> {
-    let name = xml.required(j, "name", within)?;
-    let owner = format!("joint {}", quoted(&name.text));
-    let kind = xml.required(j, "type", &owner)?;
-    let motion = xml.keyword(&kind, &owner, kinds)?;
-    let element = |tag: &str| -> Result<Value, Diagnostic> {
-        let e = child(j, tag).ok_or_else(|| {
-            xml.error(
-                xml.tag(j),
-                format!("{owner} is missing the required element `<{tag}>`"),
-            )
-        })?;
-        end(e, &owner)
-    };
-    let (parent, child) = (element("parent")?, element("child")?);
-    Ok(Head {
-        name,
-        owner,
-        kind,
-        motion,
-        parent,
-        child,
-    })
 }
 
 fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
