@@ -386,10 +386,14 @@ impl<'a, 'i> Graph<'a, 'i, '_> {
                 )),
             };
         }
+        // NOTE: the scope's own names, not every frame: a joint asks for
+        // it, and a robot may hold thousands of models.
         let first = |want: fn(Kind) -> bool| {
-            self.frames
-                .iter()
-                .position(|f| f.scope == m && want(f.kind) && !matches!(f.kind, Kind::Top))
+            s.names
+                .values()
+                .copied()
+                .filter(|&k| want(self.frames[k].kind))
+                .min()
         };
         first(|k| matches!(k, Kind::Link(_)))
             .or_else(|| first(|k| matches!(k, Kind::Model(_))))
