@@ -549,7 +549,7 @@ impl Cli {
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
-                options.configuration = a.robot.configuration();
+                options.configuration = a.robot.configuration(&a.includes.include_root);
                 options.cases = a.cases.selection();
                 Request::Report(options)
             }
@@ -610,7 +610,7 @@ impl Cli {
                 about: a.about.clone(),
                 link: a.link.clone(),
                 includes: a.includes.includes(),
-                configuration: a.robot.configuration(),
+                configuration: a.robot.configuration(&a.includes.include_root),
             }),
             Command::Render(a) => Request::Render(a.options()),
             Command::Explain(a) => Request::Explain(a.options()),

@@ -101,7 +101,7 @@ impl RenderArgs {
             },
             configuration: commands::robot::Configuration {
                 joints: self.joints.clone(),
-                sweep: Vec::new(),
+                ..Default::default()
             },
         }
     }

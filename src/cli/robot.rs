@@ -17,13 +17,26 @@ pub struct RobotArgs {
     /// mass and inertia at every sample.
     #[arg(long, value_name = "JOINT=FROM..TO:COUNT", allow_hyphen_values = true)]
     pub sweep: Vec<String>,
+
+    /// The directory an SDFormat `<include>`'s `model://NAME` names
+    /// (repeatable); without it, the including file's directory's sibling
+    /// `NAME/`.
+    #[arg(long, value_name = "NAME=DIR")]
+    pub package: Vec<String>,
 }
 
 impl RobotArgs {
-    pub fn configuration(&self) -> crate::commands::robot::Configuration {
+    /// The configuration, includes of an SDFormat robot reaching `roots`
+    /// (`--include-root`) too.
+    pub fn configuration(
+        &self,
+        roots: &[std::path::PathBuf],
+    ) -> crate::commands::robot::Configuration {
         crate::commands::robot::Configuration {
             joints: self.joints.clone(),
             sweep: self.sweep.clone(),
+            packages: self.package.clone(),
+            roots: roots.to_vec(),
         }
     }
 }

@@ -54,10 +54,10 @@ fn made_of(g: &FromGeometry, mjcf: bool) -> Result<String, Diagnostic> {
     }
 }
 
-/// `--package NAME=DIR`s.
-fn packages(g: &FromGeometry) -> Result<Vec<(String, PathBuf)>, Diagnostic> {
-    g.packages
-        .iter()
+/// `--package NAME=DIR`s (`export --from-geometry`'s, and `report`'s and
+/// `diff`'s for an SDFormat robot's `model://` includes).
+pub fn packages(list: &[String]) -> Result<Vec<(String, PathBuf)>, Diagnostic> {
+    list.iter()
         .map(|p| match p.split_once('=') {
             Some((n, d)) if !n.is_empty() && !d.is_empty() => Ok((n.to_string(), PathBuf::from(d))),
             _ => Err(Diagnostic::plain(format!(
@@ -172,7 +172,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             )
         })?;
     let made = made_of(g, format == Dialect::Mjcf)?;
-    let packages = packages(g)?;
+    let packages = packages(&g.packages)?;
     let d = crate::robot::read::read(&source, format)?;
     let geos = crate::robot::read::geometry(&source, &d, g.visual)?;
     let kind = if g.visual { "visual" } else { "collision" };

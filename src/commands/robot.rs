@@ -15,6 +15,10 @@ pub struct Configuration {
     pub joints: Option<String>,
     /// `--sweep "elbow=-90deg..90deg:19"`, one joint each.
     pub sweep: Vec<String>,
+    /// `--package NAME=DIR`, for an SDFormat robot's `model://` includes.
+    pub packages: Vec<String>,
+    /// `--include-root`s, which an SDFormat robot's includes may read.
+    pub roots: Vec<std::path::PathBuf>,
 }
 
 impl Configuration {
@@ -86,7 +90,11 @@ pub struct Loading {
 
 impl Loading {
     pub fn new(source: Source, format: Dialect, c: &Configuration) -> Result<Loading, Diagnostic> {
-        let robot = Robot::read(&source, format)?;
+        let resolve = crate::robot::read::Resolve {
+            packages: super::geometry::packages(&c.packages)?,
+            roots: c.roots.clone(),
+        };
+        let robot = Robot::read_in(&source, format, &resolve)?;
         let set = match &c.joints {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),

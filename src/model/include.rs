@@ -568,6 +568,7 @@ impl Ctx<'_> {
                 &shown,
                 &shown_name,
                 p.joints.as_deref(),
+                &files.roots,
             )?)
         } else {
             match files.cache.get(&key) {

@@ -31,9 +31,18 @@ impl Robot {
     /// MJCF body weighed from its geoms where MuJoCo's compiler would
     /// (`weigh`).
     pub fn read(source: &Source, format: Dialect) -> Result<Robot, Diagnostic> {
+        Robot::read_in(source, format, &Default::default())
+    }
+
+    /// `read`, an SDFormat file's includes resolved by `r`.
+    pub fn read_in(
+        source: &Source,
+        format: Dialect,
+        r: &super::read::Resolve,
+    ) -> Result<Robot, Diagnostic> {
         let mut description = super::read::read(source, format)?;
         super::weigh::mjcf_inertials(source, &mut description)?;
-        let tree = super::read::tree(source, &description)?;
+        let tree = super::read::tree(source, &mut description, r)?;
         Ok(Robot { description, tree })
     }
 

@@ -62,6 +62,7 @@ mod robots;
 mod robots_hostile;
 mod robots_mjcf;
 mod robots_more;
+mod robots_sdf;
 mod schema;
 mod search_rules;
 mod shell;

@@ -1327,6 +1327,69 @@ fn turn_attr() -> BoxedStrategy<String> {
                 let v: Vec<&str> = nums.split(' ').take(n).collect();
                 format!(" {form}=\"{}\"", v.join(" "))
             }),
+// SDFormat scopes: nested models, worlds, includes (issue 34)
+
+/// Names an SDFormat reference may give: the generated frames', scoped
+/// ones, the reserved ones, and names of nothing.
+const SDF_REFS: &[&str] = &[
+    "base",
+    "arm",
+    "n",
+    "n::arm",
+    "n::n::base",
+    "s::l",
+    "__model__",
+    "n::__model__",
+    "world",
+    "",
+    "f",
+    "j",
+    "nothing",
+    "::",
+    "n::",
+    "::arm",
+];
+
+/// What an `<include>` may name: a model beside it, itself (a cycle), a
+/// directory with a `model.config`, nothing, a place outside, a URL.
+const SDF_URIS: &[&str] = &[
+    "side.sdf",
+    "gen-scope.sdf",
+    "sidedir",
+    "model://sidedir",
+    "model://",
+    "model://..",
+    "missing.sdf",
+    "../../../../../../../../etc",
+    "https://fuel.gazebosim.org/x",
+    "",
+];
+
+/// One piece of a generated model: an element, or the start or the end
+/// of a nested model.
+fn sdf_piece() -> BoxedStrategy<String> {
+    let r = || prop::sample::select(SDF_REFS);
+    let name = || prop::sample::select(vec!["base", "arm", "n", "s", "f", "j", "l"]);
+    prop_oneof![
+        4 => (name(), r(), number()).prop_map(|(n, r, m)| format!(
+            "<link name=\"{n}\"><pose relative_to=\"{r}\">0 0 0.5 0 0 0.3</pose><inertial><mass>{m}</mass></inertial></link>"
+        )),
+        3 => (name(), r(), r()).prop_map(|(n, c, p)| format!(
+            "<model name=\"{n}\" canonical_link=\"{c}\" placement_frame=\"{p}\"><pose>0.1 0 0 0 0 0</pose>"
+        )),
+        3 => Just("</model>".to_string()),
+        3 => (prop::sample::select(SDF_URIS), name(), r(), r(), any::<bool>()).prop_map(
+            |(u, n, rel, pf, st)| format!(
+                "<include><uri>{u}</uri><name>{n}</name><pose relative_to=\"{rel}\">1 0 0 0 0 1</pose><placement_frame>{pf}</placement_frame><static>{st}</static></include>"
+            )
+        ),
+        2 => (name(), r()).prop_map(|(n, a)| format!(
+            "<frame name=\"{n}\" attached_to=\"{a}\"><pose>0 1 0 0 0 0</pose></frame>"
+        )),
+        4 => (name(), prop::sample::select(vec!["revolute", "fixed", "prismatic", "ball"]), r(), r(), r(), r())
+            .prop_map(|(n, t, p, c, e, m)| format!(
+                "<joint name=\"{n}\" type=\"{t}\"><parent>{p}</parent><child>{c}</child><axis><xyz expressed_in=\"{e}\">0 0 1</xyz><mimic joint=\"{m}\"/></axis></joint>"
+            )),
     ]
     .boxed()
 }
@@ -1428,5 +1491,49 @@ fn generated_mjcf_mesh_frame_and_class_files_keep_the_promise() {
         GENERATED,
         (mesh_model(), 0.0..1.0f64),
         |(text, pick)| hostile_robot(&dir, "mesh.xml", text.as_bytes(), *pick),
+/// A model or a world of generated pieces, nested models balanced.
+fn sdf_scoped() -> impl Strategy<Value = String> {
+    (any::<bool>(), prop::collection::vec(sdf_piece(), 0..14)).prop_map(|(world, pieces)| {
+        let (open, close) = if world {
+            ("<world name=\"w\">", "</world>")
+        } else {
+            ("<model name=\"m\">", "</model>")
+        };
+        let mut s = format!("<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n{open}\n");
+        let mut depth = 0;
+        for p in pieces {
+            if p == "</model>" {
+                if depth == 0 {
+                    continue;
+                }
+                depth -= 1;
+            } else if p.starts_with("<model") {
+                depth += 1;
+            }
+            s.push_str(&p);
+            s.push('\n');
+        }
+        s.push_str(&"</model>".repeat(depth));
+        s + close + "\n</sdf>\n"
+    })
+}
+
+#[test]
+fn generated_sdformat_scopes_and_includes_keep_the_promise() {
+    let dir = crate::common::scratch("robots_hostile", "scopes");
+    let side = "<?xml version=\"1.0\"?>\n<sdf version=\"1.9\"><model name=\"side\"><link name=\"l\"><inertial><mass>1</mass></inertial></link><link name=\"base\"/><joint name=\"j\" type=\"revolute\"><parent>l</parent><child>base</child></joint></model></sdf>\n";
+    std::fs::write(dir.join("side.sdf"), side).unwrap();
+    std::fs::create_dir_all(dir.join("sidedir")).unwrap();
+    std::fs::write(dir.join("sidedir/s.sdf"), side).unwrap();
+    std::fs::write(
+        dir.join("sidedir/model.config"),
+        "<?xml version=\"1.0\"?><model><sdf version=\"1.9\">s.sdf</sdf></model>",
+    )
+    .unwrap();
+    property(
+        "SDFormat scopes generated",
+        GENERATED,
+        (sdf_scoped(), 0.0..1.0f64),
+        |(text, pick)| hostile_robot(&dir, "gen-scope.sdf", text.as_bytes(), *pick),
     );
 }

@@ -1,11 +1,13 @@
-//! What the kinematic-tree readers (`tree`, `sdf_tree`) share: links and
-//! joints found by name (with the nearest name when none is), a child given
-//! its parent once and without a loop, a unit axis, the unplaced links.
+//! What the kinematic-tree readers (`tree`, `sdf_tree`) share: a joint's
+//! head (name, type, parent and child), links and joints found by name
+//! (with the nearest name when none is), a child given its parent once and
+//! without a loop, a unit axis, the unplaced links.
 
-use super::{Value, Xml, quoted};
+use super::{Value, Xml, child, quoted};
 use crate::diag::Diagnostic;
 use crate::robot::Description;
-use crate::robot::kinematics::{Node as TreeNode, Pose, Tree};
+use crate::robot::kinematics::{Motion, Node as TreeNode, Pose, Tree};
+use roxmltree::Node;
 use std::collections::HashMap;
 
 /// A unit axis from `v` (three numbers, not all zero).
@@ -138,4 +140,50 @@ pub(super) fn joint_named(
                 ),
             )
         })
+}
+
+/// A joint's name, its `type` (one of `kinds`), and its `<parent>` and
+/// `<child>` as `end` reads them: what the URDF and SDFormat readers
+/// share, with the same messages.
+pub(super) struct Head {
+    pub name: Value,
+    /// `joint "NAME"`, for messages.
+    pub owner: String,
+    pub kind: Value,
+    pub motion: Motion,
+    pub parent: Value,
+    pub child: Value,
+}
+
+/// Read a joint's `Head`; `within` names the element that holds joints
+/// (`` `<robot>` ``, `` `<model>` ``).
+pub(super) fn joint_head(
+    xml: &Xml,
+    j: Node,
+    within: &str,
+    kinds: &[(&str, Motion)],
+    end: impl Fn(Node, &str) -> Result<Value, Diagnostic>,
+) -> Result<Head, Diagnostic> {
+    let name = xml.required(j, "name", within)?;
+    let owner = format!("joint {}", quoted(&name.text));
+    let kind = xml.required(j, "type", &owner)?;
+    let motion = xml.keyword(&kind, &owner, kinds)?;
+    let element = |tag: &str| -> Result<Value, Diagnostic> {
+        let e = child(j, tag).ok_or_else(|| {
+            xml.error(
+                xml.tag(j),
+                format!("{owner} is missing the required element `<{tag}>`"),
+            )
+        })?;
+        end(e, &owner)
+    };
+    let (parent, child) = (element("parent")?, element("child")?);
+    Ok(Head {
+        name,
+        owner,
+        kind,
+        motion,
+        parent,
+        child,
+    })
 }

@@ -18,12 +18,14 @@ mod mjcf_geoms;
 mod mjcf_mesh;
 mod orient;
 mod sdf;
+mod sdf_frames;
+mod sdf_include;
 mod sdf_tree;
 mod tree;
 mod urdf;
 
 pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, mjcf_geometry};
-pub use tree::tree;
+pub use tree::{Resolve, tree};
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
 /// for `geometry.rs`: through here, so that neither imports the other.

@@ -26,9 +26,14 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
     // straight under `<sdf>`.
     let mut scopes = vec![Scope::new(sdf)];
     scopes.extend(elements(sdf).filter(|c| is(c, "world")).map(Scope::new));
+    // A world's includes are top-level models too (the whole robot reads
+    // them, `sdf_tree`): names are prefixed as it prefixes them.
     let top_level: Vec<Node> = scopes
         .iter()
-        .flat_map(|s| elements(s.node).filter(|c| is(c, "model")))
+        .flat_map(|s| {
+            let world = is(&s.node, "world");
+            elements(s.node).filter(move |c| is(c, "model") || world && is(c, "include"))
+        })
         .collect();
     let mut found = Vec::new();
     for scope in &mut scopes {
@@ -63,7 +68,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         });
     }
     let name = match top_level.as_slice() {
-        [one] => one.attribute("name"),
+        [one] if is(one, "model") => one.attribute("name"),
         _ => elements(sdf)
             .find(|c| is(c, "world"))
             .and_then(|w| w.attribute("name")),
@@ -310,7 +315,7 @@ pub(super) fn flag(xml: &Xml, v: &Value, owner: &str) -> Result<bool, Diagnostic
 
 /// The `<inertial>` `node` of the link named `local` in its model; None
 /// when the simulator computes it (`auto="true"`, SDFormat 1.11).
-fn inertial(
+pub(super) fn inertial(
     xml: &Xml,
     node: Node,
     local: &str,
@@ -618,6 +623,15 @@ mod tests {
         ));
         let names: Vec<&str> = d.links.iter().map(|l| l.name.as_str()).collect();
         assert_eq!(names, ["m1::l", "m2::l"]);
+        assert_eq!(d.name.as_deref(), Some("w"));
+    }
+
+    #[test]
+    fn a_worlds_include_is_a_top_level_model_that_prefixes_the_names() {
+        let d = read_ok(&sdf(
+            "<world name='w'><model name='m'><link name='l'/></model><include><uri>x</uri></include></world>",
+        ));
+        assert_eq!(d.links[0].name, "m::l");
         assert_eq!(d.name.as_deref(), Some("w"));
     }
 

@@ -8,291 +8,382 @@
 //! `<axis><mimic joint><multiplier/><offset/><reference/></mimic>`:
 //! follower = multiplier·(leader − reference) + offset, sdf/1.11/mimic.sdf).
 //!
-//! Refused with their place: worlds, nested models and includes; a
-//! `relative_to` or `attached_to` naming no frame; frames placed relative
-//! to each other in a cycle.
+//! Nested models and includes are scopes (SDFormat 1.8, "Model
+//! composition"): a name is looked up in the scope of the element that
+//! writes it, `a::b` in the nested model `a`'s, `__model__` is the scope's
+//! own model frame; a nested model's `<pose>` is in its parent's scope
+//! (by default the parent model frame), of its `placement_frame` when it
+//! names one; a model's frame is attached to its canonical link
+//! (`canonical_link`, else its first link, else its first nested model's).
+//! A joint's `<parent>` and `<child>` may name any frame: the link it is
+//! attached to is the one the tree joins. A `<world>` (or several models
+//! under `<sdf>`) is the scope of its models, each at its `<pose>` in the
+//! world frame, which is the report frame. Names in the tree are paths
+//! from the top, the outermost model's name left out unless there are
+//! several (as `sdf::read` names links for `check`).
+//!
+//! Refused with their place: two worlds; a `relative_to`, `attached_to`,
+//! `canonical_link` or `placement_frame` naming no frame; frames placed
+//! relative to each other in a cycle; models nested deeper than
+//! `MAX_NESTING`; more than `MAX_MODELS` models.
 
-use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::links::{Head, axis, joint_head, joint_named, limits, set_parent, unplaced};
+use super::sdf_frames::{Frame, Graph, Kind, MAX_MODELS, MAX_NESTING, Scope, join};
+use super::sdf_include::{self, Files, Resolve};
 use super::{Value, Xml, child, children, qname, quoted, sdf};
-use crate::diag::Diagnostic;
-use crate::robot::Description;
+use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
+use crate::robot::{Description, Link};
 use roxmltree::Node;
 use std::collections::HashMap;
 
-/// A frame of the model's scope: a link, a joint or a `<frame>`.
-struct Frame<'a, 'i> {
-    name: String,
-    /// "link", "joint" or "frame", for messages.
-    kind: &'static str,
-    element: Node<'a, 'i>,
-    /// The frame its pose is in when its `<pose>` names none: None is the
-    /// model frame.
-    default: Option<Value>,
-}
-
-/// The frames of a model, each placed in the model frame once asked.
-struct Frames<'a, 'i> {
-    frames: Vec<Frame<'a, 'i>>,
-    by_name: HashMap<String, usize>,
-    /// Names two frames share: naming one is ambiguous.
-    shared: Vec<String>,
-    /// Names that are the model frame: `__model__`, and the model's own.
-    model: [String; 2],
-    placed: Vec<Option<Pose>>,
-}
-
-impl<'a, 'i> Frames<'a, 'i> {
-    fn new(model: Node<'a, 'i>) -> Frames<'a, 'i> {
-        Frames {
-            frames: Vec::new(),
-            by_name: HashMap::new(),
-            shared: Vec::new(),
-            model: [
-                "__model__".to_string(),
-                model.attribute("name").unwrap_or("__model__").to_string(),
-            ],
-            placed: Vec::new(),
-        }
-    }
-
-    fn add(&mut self, f: Frame<'a, 'i>) -> usize {
-        let k = self.frames.len();
-        if self.by_name.contains_key(&f.name) {
-            self.shared.push(f.name.clone());
-        } else {
-            self.by_name.insert(f.name.clone(), k);
-        }
-        self.frames.push(f);
-        self.placed.push(None);
-        k
-    }
-
-    /// The frame `v` names (None: the model frame), or an error at it.
-    fn named(&self, xml: &Xml, v: &Value, owner: &str) -> Result<Option<usize>, Diagnostic> {
-        if v.text.is_empty() || self.model.contains(&v.text) {
-            return Ok(None);
-        }
-        if self.shared.contains(&v.text) {
-            return Err(xml.error(
-                v.range.clone(),
-                format!(
-                    "{} of {owner} names {}, which two frames (links, joints or `<frame>`s) share: the frame is ambiguous",
-                    v.name,
-                    quoted(&v.text)
-                ),
-            ));
-        }
-        match self.by_name.get(&v.text) {
-            Some(&k) => Ok(Some(k)),
-            None => {
-                let near = crate::units::suggest(
-                    &v.text,
-                    self.by_name.keys().map(String::as_str).chain(["__model__"]),
-                )
-                .map(|s| format!("; did you mean {}?", quoted(s)))
-                .unwrap_or_default();
-                Err(xml.error(
-                    v.range.clone(),
-                    format!(
-                        "{} of {owner} names no frame of the model: {}{near}",
-                        v.name,
-                        quoted(&v.text)
-                    ),
-                ))
-            }
-        }
-    }
-
-    fn owner(&self, k: usize) -> String {
-        let f = &self.frames[k];
-        format!("{} {}", f.kind, quoted(&f.name))
-    }
-
-    /// The frame frame `k`'s pose is in (None: the model's), and the pose
-    /// as written there.
-    fn local(&self, xml: &Xml, k: usize) -> Result<(Option<usize>, Pose), Diagnostic> {
-        let f = &self.frames[k];
-        let owner = self.owner(k);
-        let Some(p) = child(f.element, "pose") else {
-            let base = match &f.default {
-                Some(v) => self.named(xml, v, &owner)?,
-                None => None,
-            };
-            return Ok((base, Pose::IDENTITY));
-        };
-        let (base, relative) = match xml.attr(p, "relative_to").filter(|v| !v.text.is_empty()) {
-            Some(v) => (self.named(xml, &v, &owner)?, v.text),
-            None => (
-                match &f.default {
-                    Some(v) => self.named(xml, v, &owner)?,
-                    None => None,
-                },
-                String::new(),
-            ),
-        };
-        // `sdf::pose` reads the numbers; `relative_to` is resolved here.
-        let (pos, r) = sdf::pose(xml, p, &relative, &owner)?;
-        Ok((
-            base,
-            Pose {
-                p: pos,
-                r: r.unwrap_or(Pose::IDENTITY.r),
-            },
-        ))
-    }
-
-    /// Frame `k`'s pose in the model frame: up the chain of frames each is
-    /// relative to, then down again (no recursion: a chain may be long),
-    /// a cycle refused at the `relative_to` that closes it.
-    fn in_model(&mut self, xml: &Xml, k: usize) -> Result<Pose, Diagnostic> {
-        let mut chain: Vec<(usize, Pose)> = Vec::new();
-        let mut at = Some(k);
-        let mut base = Pose::IDENTITY;
-        while let Some(c) = at {
-            if let Some(p) = self.placed[c] {
-                base = p;
-                break;
-            }
-            if let Some(i) = chain.iter().position(|(f, _)| *f == c) {
-                let names: Vec<String> = chain[i..]
-                    .iter()
-                    .map(|(f, _)| quoted(&self.frames[*f].name))
-                    .chain([quoted(&self.frames[c].name)])
-                    .collect();
-                let start = self.frames[c].element;
-                let v = child(start, "pose")
-                    .and_then(|p| xml.attr(p, "relative_to"))
-                    .filter(|v| !v.text.is_empty())
-                    .or_else(|| xml.attr(start, "attached_to"))
-                    .map_or_else(|| xml.tag(start), |v| v.range);
-                return Err(xml
-                    .error(
-                        v,
-                        format!(
-                            "the pose of {} is relative to frames in a cycle: {}",
-                            self.owner(c),
-                            names.join(" → ")
-                        ),
-                    )
-                    .help("place one of them relative to the model frame (`__model__`) or a link outside the cycle"));
-            }
-            let (up, pose) = self.local(xml, c)?;
-            chain.push((c, pose));
-            at = up;
-        }
-        for (c, pose) in chain.into_iter().rev() {
-            base = base.then(&pose);
-            self.placed[c] = Some(base);
-        }
-        Ok(base)
-    }
-}
-
-/// A joint's `<mimic>` waiting for every joint to be read: the follower,
-/// its leader's name, multiplier, offset and reference.
+/// A `<mimic>` waiting for every joint to be read: the follower, its
+/// leader's name (in the scope given, written in the file given),
+/// multiplier, offset and reference.
 struct Mimic {
     follower: usize,
     leader: Value,
+    scope: usize,
+    file: usize,
     multiplier: f64,
     offset: f64,
     reference: f64,
 }
 
-/// The model's links and joints, `d`'s links in the same order.
-pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tree, Diagnostic> {
-    let models: Vec<Node> = sdf_node
-        .children()
-        .filter(|c| qname(*c) == "model")
-        .collect();
-    let unsupported = sdf_node
-        .children()
-        .find(|c| qname(*c) == "world")
-        .or_else(|| models.get(1).copied())
-        .or_else(|| {
-            models.first().and_then(|m| {
-                m.children()
-                    .find(|c| qname(*c) == "model" || qname(*c) == "include")
-            })
-        });
-    if let Some(n) = unsupported {
+/// The whole robot's tree, `d`'s links replaced by every link of the
+/// models read (the top file's as `sdf::read` read them, in the same
+/// order, then each include's in its place), with includes resolved by
+/// `r`.
+pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tree, Diagnostic> {
+    let files = sdf_include::load(xml.source, r)?;
+    let count = files.included.len() + 1;
+    let sources: Vec<&Source> = (0..count).map(|k| files.source(k)).collect();
+    let docs = sources
+        .iter()
+        .map(|s| super::parse(s))
+        .collect::<Result<Vec<_>, _>>()?;
+    let xmls: Vec<Xml> = sources.iter().map(|s| Xml { source: s }).collect();
+    let sdf_node = docs[0].root_element();
+    let worlds: Vec<Node> = children(sdf_node, "world").collect();
+    let models: Vec<Node> = children(sdf_node, "model").collect();
+    if let Some(n) = worlds.get(1).or(worlds.first().and(models.first())) {
         return Err(xml
             .error(
-                xml.tag(n),
+                xml.tag(*n),
                 format!(
-                    "`<{}>` here: the whole robot is composed from one `<model>` of links, joints and frames, without worlds, nested models or includes",
-                    qname(n)
+                    "`<{}>` here: the whole robot is composed from one `<world>`, or the models written under `<sdf>`",
+                    qname(*n)
                 ),
             )
-            .help("`check` reads every link of such a file; compose one model at a time"));
+            .help("compose one world at a time"));
     }
-    let Some(&model) = models.first() else {
-        return Ok(Tree::default());
+    let (top, world) = match (worlds.first(), models.as_slice()) {
+        (Some(w), _) => (*w, true),
+        (None, [m]) => (*m, false),
+        (None, []) => return Ok(Tree::default()),
+        (None, [_, _, ..]) => (sdf_node, true),
     };
-    let names = names(xml, d)?;
+    let entries = top
+        .children()
+        .filter(|c| matches!(qname(*c), "model" | "include"))
+        .count();
+    let mut g = Graph {
+        xmls: &xmls,
+        frames: Vec::new(),
+        scopes: Vec::new(),
+        placed: Vec::new(),
+        links: Vec::new(),
+        joints: Vec::new(),
+        strip: world && entries == 1,
+    };
+    let own = if world {
+        "__model__".to_string()
+    } else {
+        top.attribute("name").unwrap_or("__model__").to_string()
+    };
+    g.scopes.push(Scope {
+        path: String::new(),
+        frame: 0,
+        own: own.clone(),
+        element: top,
+        file: 0,
+        names: HashMap::new(),
+        shared: Vec::new(),
+        anchor: None,
+        depth: 0,
+        world,
+        fixed: false,
+    });
+    g.frames.push(Frame {
+        name: own,
+        kind: Kind::Top,
+        element: top,
+        file: 0,
+        scope: 0,
+        default: None,
+        pose: None,
+        placement: None,
+    });
+    g.placed.push(Some(Pose::IDENTITY));
+    let mut links = walk(&mut g, &files, &docs, d).map_err(|e| files.located(e))?;
+    std::mem::swap(&mut d.links, &mut links);
+    super::links::names(xml, d)?;
+    build(&mut g, d).map_err(|e| files.located(e))
+}
+
+/// Every scope's frames, depth first in document order (an include's
+/// model in its place); the links of the whole robot.
+fn walk<'a, 'i>(
+    g: &mut Graph<'a, 'i, '_>,
+    files: &Files,
+    docs: &'a [roxmltree::Document<'i>],
+    d: &Description,
+) -> Result<Vec<Link>, Diagnostic> {
+    let written: HashMap<usize, &Link> = d.links.iter().map(|l| (l.range.start, l)).collect();
+    let mut out = Vec::new();
+    let mut stack: Vec<(usize, roxmltree::Children<'a, 'i>)> =
+        vec![(0, g.scopes[0].element.children())];
+    while let Some((s, it)) = stack.last_mut() {
+        let s = *s;
+        let Some(c) = it.next() else {
+            stack.pop();
+            continue;
+        };
+        let file = g.scopes[s].file;
+        let xml = &g.xmls[file];
+        let this = match s {
+            0 if g.scopes[0].world => "`<world>`".to_string(),
+            _ => "`<model>`".to_string(),
+        };
+        let scope_name = |g: &Graph, s: usize| match s {
+            0 => "`<model>`".to_string(),
+            _ => g.owner(g.scopes[s].frame),
+        };
+        match qname(c) {
+            "link" if !g.scopes[s].world => {
+                let name = xml.required(c, "name", &scope_name(g, s))?;
+                let k = out.len();
+                let shown = g.shown(s, &name.text);
+                let anchor = g.scopes[s].anchor.clone();
+                let link = match (file, written.get(&c.range().start)) {
+                    (0, Some(l)) => Link {
+                        name: shown,
+                        ..(*l).clone()
+                    },
+                    _ => {
+                        let owner = format!("link {}", quoted(&shown));
+                        let range = anchor.clone().unwrap_or(c.range());
+                        let mut inertial = match child(c, "inertial") {
+                            Some(i) => sdf::inertial(xml, i, &name.text, &owner)?,
+                            None => None,
+                        };
+                        if let Some(i) = &mut inertial {
+                            i.range = anchor.unwrap_or(i.range.clone());
+                        }
+                        Link {
+                            name: shown,
+                            range,
+                            inertial,
+                            moving: !g.scopes[s].fixed,
+                            parent: None,
+                        }
+                    }
+                };
+                out.push(link);
+                let f = g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Link(k),
+                        element: c,
+                        file,
+                        scope: s,
+                        default: None,
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+                g.links.push(f);
+            }
+            "joint" => {
+                let name = xml.required(c, "name", &this)?;
+                let owner = format!("joint {}", quoted(&name.text));
+                let kid = child(c, "child").ok_or_else(|| {
+                    xml.error(
+                        xml.tag(c),
+                        format!("{owner} is missing the required element `<child>`"),
+                    )
+                })?;
+                let f = g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Joint,
+                        element: c,
+                        file,
+                        scope: s,
+                        default: Some(xml.text(kid)),
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+                g.joints.push(f);
+            }
+            "frame" => {
+                let name = xml.required(c, "name", &this)?;
+                g.add(
+                    Frame {
+                        name: name.text,
+                        kind: Kind::Frame,
+                        element: c,
+                        file,
+                        scope: s,
+                        default: xml.attr(c, "attached_to").filter(|v| !v.text.is_empty()),
+                        pose: child(c, "pose").map(|p| (p, file)),
+                        placement: None,
+                    },
+                    s,
+                );
+            }
+            "model" | "include" => {
+                let included = qname(c) == "include";
+                // NOTE: an `<include>` straight under `<sdf>` (beside
+                // several models) is no include of SDFormat's, and
+                // `sdf_include` did not read it: passed over, as `check`
+                // passes it.
+                let target = files.targets.get(&(file, c.range().start));
+                if included && target.is_none() {
+                    continue;
+                }
+                let (element, mfile) = if let Some(&t) = target {
+                    let root = docs[t].root_element();
+                    let models: Vec<Node> = children(root, "model").collect();
+                    let [m] = models.as_slice() else {
+                        return Err(xml.error(
+                            xml.tag(c),
+                            format!(
+                                "the included `{}` holds {} `<model>`s under `<sdf>`: an include names one model",
+                                files.source(t).name,
+                                models.len()
+                            ),
+                        ));
+                    };
+                    (*m, t)
+                } else {
+                    (c, file)
+                };
+                let mxml = &g.xmls[mfile];
+                let name = match child(c, "name").filter(|_| included) {
+                    Some(n) => xml.text(n),
+                    None => mxml.required(element, "name", &scope_name(g, s))?,
+                };
+                let pose = match child(c, "pose").filter(|_| included) {
+                    Some(p) => Some((p, file)),
+                    None => child(element, "pose").map(|p| (p, mfile)),
+                };
+                let placement = match child(c, "placement_frame").filter(|_| included) {
+                    Some(p) => Some((xml.text(p), file)),
+                    None => mxml
+                        .attr(element, "placement_frame")
+                        .filter(|v| !v.text.is_empty())
+                        .map(|v| (v, mfile)),
+                };
+                let stat = match child(c, "static") {
+                    Some(v) => Some(sdf::flag(xml, &xml.text(v), &scope_name(g, s))?),
+                    None => None,
+                };
+                let stat = match (stat, child(element, "static")) {
+                    (Some(v), _) => v,
+                    (None, Some(v)) => sdf::flag(mxml, &mxml.text(v), &scope_name(g, s))?,
+                    (None, None) => false,
+                };
+                let depth = g.scopes[s].depth + 1;
+                let path = join(&g.scopes[s].path, &name.text);
+                if depth > MAX_NESTING {
+                    return Err(xml.error(
+                        xml.tag(c),
+                        format!(
+                            "model {} is nested {depth} models deep: the whole robot is composed of models nested at most {MAX_NESTING} deep",
+                            quoted(&path)
+                        ),
+                    ));
+                }
+                if g.scopes.len() > MAX_MODELS {
+                    return Err(xml.error(
+                        xml.tag(c),
+                        format!(
+                            "model {} is one model more than {MAX_MODELS}, the most the whole robot is composed of (an include counts each time it is read)",
+                            quoted(&path)
+                        ),
+                    ));
+                }
+                let anchor = g.scopes[s]
+                    .anchor
+                    .clone()
+                    .or_else(|| included.then(|| c.range()));
+                let m = g.scopes.len();
+                let fixed = g.scopes[s].fixed || stat;
+                let f = g.add(
+                    Frame {
+                        name: name.text.clone(),
+                        kind: Kind::Model(m),
+                        element,
+                        file: mfile,
+                        scope: s,
+                        default: None,
+                        pose,
+                        placement,
+                    },
+                    s,
+                );
+                g.scopes.push(Scope {
+                    path,
+                    frame: f,
+                    own: name.text,
+                    element,
+                    file: mfile,
+                    names: HashMap::new(),
+                    shared: Vec::new(),
+                    anchor,
+                    depth,
+                    world: false,
+                    fixed,
+                });
+                stack.push((m, element.children()));
+            }
+            _ => {}
+        }
+    }
+    Ok(out)
+}
+
+/// The tree: each link's pose, the joints joining them, their followers.
+fn build(g: &mut Graph, d: &Description) -> Result<Tree, Diagnostic> {
     let mut t = Tree {
         links: unplaced(d.links.len()),
         joints: Vec::new(),
     };
-    let model_name = model.attribute("name").unwrap_or_default();
-    let mut frames = Frames::new(model);
-    for (i, l) in children(model, "link").enumerate() {
-        frames.add(Frame {
-            name: d.links[i].name.clone(),
-            kind: "link",
-            element: l,
-            default: None,
-        });
-    }
-    let joints: Vec<Node> = children(model, "joint").collect();
-    let mut joint_frame = Vec::with_capacity(joints.len());
-    for &j in &joints {
-        let name = xml.required(j, "name", "`<model>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kid = child(j, "child").ok_or_else(|| {
-            xml.error(
-                xml.tag(j),
-                format!("{owner} is missing the required element `<child>`"),
-            )
-        })?;
-        joint_frame.push(frames.add(Frame {
-            name: name.text.clone(),
-            kind: "joint",
-            element: j,
-            default: Some(xml.text(kid)),
-        }));
-    }
-    for f in children(model, "frame") {
-        let name = xml.required(f, "name", "`<model>`")?;
-        frames.add(Frame {
-            name: name.text.clone(),
-            kind: "frame",
-            element: f,
-            default: xml.attr(f, "attached_to").filter(|v| !v.text.is_empty()),
-        });
-    }
-    // Each link's pose in the model frame.
+    // Each link's pose in the report frame.
     let mut world = vec![Pose::IDENTITY; d.links.len()];
     for (i, w) in world.iter_mut().enumerate() {
-        *w = frames.in_model(xml, i)?;
+        *w = g.in_model(g.links[i])?;
     }
-    let old = sdf_node
-        .attribute("version")
-        .and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
-        .is_some_and(|minor| {
-            sdf_node
-                .attribute("version")
-                .is_some_and(|v| v.starts_with("1."))
-                && minor < 7
-        });
     let mut mimics = Vec::new();
-    for (&j, &jf) in joints.iter().zip(&joint_frame) {
-        let name = xml.required(j, "name", "`<model>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kind = xml.required(j, "type", &owner)?;
-        let motion = xml.keyword(
-            &kind,
-            &owner,
+    for jf in g.joints.clone() {
+        let (j, file, s) = (g.frames[jf].element, g.frames[jf].file, g.frames[jf].scope);
+        let xml = &g.xmls[file];
+        let old = old_version(j);
+        let Head {
+            name,
+            owner,
+            kind,
+            motion,
+            parent,
+            child: kid,
+        } = joint_head(
+            xml,
+            j,
+            "`<model>`",
             &[
                 ("revolute", Motion::Revolute),
                 ("continuous", Motion::Revolute),
@@ -300,29 +391,20 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                 ("fixed", Motion::Fixed),
                 ("ball", Motion::Stays),
             ],
+            |e, _| Ok(xml.text(e)),
         )?;
-        let end = |tag: &str| -> Result<Value, Diagnostic> {
-            let e = child(j, tag).ok_or_else(|| {
-                xml.error(
-                    xml.tag(j),
-                    format!("{owner} is missing the required element `<{tag}>`"),
-                )
-            })?;
-            Ok(xml.text(e))
-        };
-        let (parent, kid) = (end("parent")?, end("child")?);
-        let c = link_named(xml, &names, &kid, &owner)?;
+        let c = g.end(s, file, &kid, &owner)?;
         let p = if parent.text == "world" {
             None
         } else {
-            let p = link_named(xml, &names, &parent, &owner)?;
+            let p = g.end(s, file, &parent, &owner)?;
             set_parent(xml, &mut t, c, p, &kid, &owner)?;
             Some(p)
         };
         // The joint frame in the child link's.
-        let joint_pose = world[c].inverse().then(&frames.in_model(xml, jf)?);
-        let ax = child(j, "axis");
-        let (axis_in_joint, lower, upper, expressed) = match ax {
+        let joint_pose = world[c].inverse().then(&g.in_model(jf)?);
+        let home = g.scopes[s].frame;
+        let (axis_in_joint, lower, upper, expressed) = match child(j, "axis") {
             Some(a) => {
                 let xyz = child(a, "xyz");
                 let v = xyz
@@ -333,13 +415,12 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                     .map(|u| sdf::flag(xml, &xml.text(u), &owner))
                     .transpose()?
                     .unwrap_or(false);
-                // Where the axis is expressed: Some(None) the model frame,
-                // Some(Some(k)) frame k, None the joint's own.
+                // Where the axis is expressed: Some(k) frame k, None the
+                // joint's own.
                 let expressed = match xyz.and_then(|x| xml.attr(x, "expressed_in")) {
                     Some(e) if e.text.is_empty() || e.text == name.text => None,
-                    Some(e) if e.text == "__model__" || e.text == model_name => Some(None),
-                    Some(e) => Some(frames.named(xml, &e, &owner)?),
-                    None if old && parent_model => Some(None),
+                    Some(e) => Some(g.named(s, file, &e, &owner)?),
+                    None if old && parent_model => Some(home),
                     None => None,
                 };
                 let lim = child(a, "limit");
@@ -349,14 +430,14 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                         .transpose()
                 };
                 if let Some(m) = child(a, "mimic") {
-                    mimics.push(mimic(xml, m, t.joints.len(), &owner)?);
+                    mimics.push(mimic(xml, m, t.joints.len(), s, file, &owner)?);
                 }
                 (v, bound("lower")?, bound("upper")?, expressed)
             }
             None => ([0.0, 0.0, 1.0], None, None, None),
         };
         // The axis in the child's frame: turned by the joint's pose, or
-        // from the frame it is expressed in (in the model frame) by the
+        // from the frame it is expressed in (in the report frame) by the
         // child's.
         let axis = match expressed {
             None => {
@@ -364,10 +445,7 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
                 std::array::from_fn(|i| (0..3).map(|k| r[i][k] * axis_in_joint[k]).sum())
             }
             Some(frame) => {
-                let e = match frame {
-                    Some(k) => frames.in_model(xml, k)?.r,
-                    None => Pose::IDENTITY.r,
-                };
+                let e = g.in_model(frame)?.r;
                 let in_model: [f64; 3] =
                     std::array::from_fn(|i| (0..3).map(|k| e[i][k] * axis_in_joint[k]).sum());
                 let r = world[c].r;
@@ -383,14 +461,14 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
             _ => None,
         };
         t.joints.push(Joint {
-            name: name.text.clone(),
+            name: g.shown(s, &name.text),
             motion,
             axis,
             anchor: joint_pose.p,
             zero: 0.0,
             limits,
             follows: None,
-            range: j.range(),
+            range: g.scopes[s].anchor.clone().unwrap_or(j.range()),
         });
     }
     for m in mimics {
@@ -398,7 +476,11 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
             "the `<mimic>` of joint {}",
             quoted(&t.joints[m.follower].name)
         );
-        let l = joint_named(xml, &t, &m.leader, &owner)?;
+        let leader = Value {
+            text: g.shown(m.scope, &m.leader.text),
+            ..m.leader
+        };
+        let l = joint_named(&g.xmls[m.file], &t, &leader, &owner)?;
         // NOTE: multiplier·(x − reference) + offset, as the polynomial
         // c₀ + c₁x that `Follow` holds (every SDFormat joint's zero is 0).
         t.joints[m.follower].follows = Some(Follow {
@@ -421,8 +503,24 @@ pub(super) fn sdformat(xml: &Xml, sdf_node: Node, d: &Description) -> Result<Tre
     Ok(t)
 }
 
+/// Whether the file of `node` is SDFormat older than 1.7 (where
+/// `use_parent_model_frame` still counts).
+fn old_version(node: Node) -> bool {
+    let v = node.document().root_element().attribute("version");
+    v.is_some_and(|v| v.starts_with("1."))
+        && v.and_then(|v| v.split('.').nth(1)?.parse::<u32>().ok())
+            .is_some_and(|minor| minor < 7)
+}
+
 /// A `<mimic>` element of joint `follower`'s `<axis>`.
-fn mimic(xml: &Xml, m: Node, follower: usize, owner: &str) -> Result<Mimic, Diagnostic> {
+fn mimic(
+    xml: &Xml,
+    m: Node,
+    follower: usize,
+    scope: usize,
+    file: usize,
+    owner: &str,
+) -> Result<Mimic, Diagnostic> {
     let owner = format!("the `<mimic>` of {owner}");
     let leader = xml.required(m, "joint", &owner)?;
     if let Some(a) = xml.attr(m, "axis") {
@@ -451,6 +549,8 @@ fn mimic(xml: &Xml, m: Node, follower: usize, owner: &str) -> Result<Mimic, Diag
     Ok(Mimic {
         follower,
         leader,
+        scope,
+        file,
         // sdf/1.11/mimic.sdf: multiplier 1, offset 0, reference 0.
         multiplier: number("multiplier", 1.0)?,
         offset: number("offset", 0.0)?,

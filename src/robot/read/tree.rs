@@ -3,14 +3,17 @@
 //! links' poses and the followers (URDF `<mimic>`, MJCF `<equality><joint>`),
 //! parallel to the `Description` of the same text (links in the same order).
 //!
-//! What is not read is refused with its place: SDFormat nested models,
-//! worlds, and poses relative to other frames; MJCF default classes that
-//! set a joint's or a body's placement; URDF joint types it does not know.
+//! What is not read is refused with its place (SDFormat's: `sdf_tree`):
+//! MJCF default classes that set a joint's or a body's placement; URDF
+//! joint types it does not know.
 
-use super::links::{axis, joint_named, limits, link_named, names, set_parent, unplaced};
+use super::links::{
+    Head, axis, joint_head, joint_named, limits, link_named, names, set_parent, unplaced,
+};
 use super::mjcf_class::Classes;
 use super::orient::{Settings, orientation, quat_to_matrix};
-use super::{Value, Xml, child, children, mjcf, proper, qname, quoted, rpy};
+pub use super::sdf_include::Resolve;
+use super::{Xml, child, children, mjcf, proper, qname, quoted, rpy};
 use crate::diag::{Diagnostic, Source};
 use crate::robot::kinematics::{Follow, Joint, Motion, Pose, Tree};
 use crate::robot::{Description, Dialect};
@@ -18,13 +21,15 @@ use roxmltree::Node;
 use std::collections::HashMap;
 
 /// The tree of `source`, whose links `d` holds (read from the same text).
-pub fn tree(source: &Source, d: &Description) -> Result<Tree, Diagnostic> {
+/// An SDFormat file's includes are resolved by `r`, and `d` then holds
+/// their links too (`sdf_tree`).
+pub fn tree(source: &Source, d: &mut Description, r: &Resolve) -> Result<Tree, Diagnostic> {
     let doc = super::parse(source)?;
     let xml = Xml { source };
     let root = doc.root_element();
     let tree = match d.format {
         Dialect::Urdf => urdf(&xml, root, d)?,
-        Dialect::Sdf => super::sdf_tree::sdformat(&xml, root, d)?,
+        Dialect::Sdf => super::sdf_tree::sdformat(&xml, d, r)?,
         Dialect::Mjcf => mujoco(&xml, root, d)?,
     };
     depth(&xml, &tree, d)?;
@@ -111,12 +116,17 @@ fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
     };
     let mut mimics = Vec::new();
     for j in children(robot, "joint") {
-        let name = xml.required(j, "name", "`<robot>`")?;
-        let owner = format!("joint {}", quoted(&name.text));
-        let kind = xml.required(j, "type", &owner)?;
-        let motion = xml.keyword(
-            &kind,
-            &owner,
+        let Head {
+            name,
+            owner,
+            kind,
+            motion,
+            parent,
+            child: kid,
+        } = joint_head(
+            xml,
+            j,
+            "`<robot>`",
             &[
                 ("revolute", Motion::Revolute),
                 ("continuous", Motion::Revolute),
@@ -125,17 +135,8 @@ fn urdf(xml: &Xml, robot: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 ("floating", Motion::Stays),
                 ("planar", Motion::Stays),
             ],
+            |e, owner| xml.required(e, "link", owner),
         )?;
-        let end = |tag: &str| -> Result<Value, Diagnostic> {
-            let e = child(j, tag).ok_or_else(|| {
-                xml.error(
-                    xml.tag(j),
-                    format!("{owner} is missing the required element `<{tag}>`"),
-                )
-            })?;
-            xml.required(e, "link", &owner)
-        };
-        let (parent, kid) = (end("parent")?, end("child")?);
         let p = link_named(xml, &names, &parent, &owner)?;
         let c = link_named(xml, &names, &kid, &owner)?;
         set_parent(xml, &mut t, c, p, &kid, &owner)?;
