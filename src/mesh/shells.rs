@@ -66,7 +66,9 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    if let Some((i, j)) = first_crossing(mesh, &pts, &boxes, &bvh) {
+    let sorted = bvh.sorted(&boxes);
+    drop(boxes);
+    if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
             mesh.at[i],
@@ -103,13 +105,12 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
     // whose boxes hold a corner are found in a tree of the shells' boxes,
     // most corners of a mesh of separate pieces have none (winding 0 at
     // once), and a ray need go no further than those shells' boxes.
-    let shell_boxes: Vec<Aabb> = (0..count)
-        .map(|s| {
-            list[start[s]..start[s + 1]]
-                .iter()
-                .fold(Aabb::empty(), |b, &t| b.join(boxes[t as usize]))
-        })
-        .collect();
+    let mut shell_boxes = vec![Aabb::empty(); count];
+    for (&t, b) in bvh.items.iter().zip(&sorted) {
+        let s = &mut shell_boxes[shell[t as usize] as usize];
+        *s = s.join(*b);
+    }
+    drop(sorted);
     let shell_tree = Bvh::build(&shell_boxes, (0..count as u32).collect());
     let near = Near {
         boxes: &shell_boxes,
