@@ -66,8 +66,11 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    let sorted = bvh.sorted(&boxes);
+    // NOTE: the boxes again, in the tree's item order (`Bvh::join`), made
+    // afresh from the corners once the first list is let go of: the two
+    // never held at once.
     drop(boxes);
+    let sorted = boxes_in(mesh, &pts, &bvh.items, bvh.items.len());
     if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
@@ -323,17 +326,35 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
 /// triangle, allocated here and written (its pages faulted in) by the
 /// threads.
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
-    let n = mesh.faces.len();
+    let all: Vec<u32> = Vec::new();
+    boxes_in(mesh, pts, &all, mesh.faces.len())
+}
+
+/// The boxes of triangles `items` (all `n` of them, in order, when
+/// `items` is empty), in that order, on every core.
+fn boxes_in(mesh: &Mesh, pts: &[P3], items: &[u32], n: usize) -> Vec<Aabb> {
     let mut boxes = vec![Aabb::empty(); n];
     let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
-    std::thread::scope(|scope| {
-        for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
-            scope.spawn(move || {
-                for (b, f) in out.iter_mut().zip(faces) {
-                    *b = Aabb::of(&f.map(|k| pts[k as usize]));
-                }
+    let of = |t: u32| Aabb::of(&mesh.faces[t as usize].map(|k| pts[k as usize]));
+    let fill = |from: usize, out: &mut [Aabb]| {
+        for (k, b) in out.iter_mut().enumerate() {
+            let at = from + k;
+            *b = of(if items.is_empty() {
+                at as u32
+            } else {
+                items[at]
             });
+        }
+    };
+    if threads == 1 {
+        fill(0, &mut boxes);
+        return boxes;
+    }
+    std::thread::scope(|scope| {
+        for (c, out) in boxes.chunks_mut(piece).enumerate() {
+            let fill = &fill;
+            scope.spawn(move || fill(c * piece, out));
         }
     });
     boxes

@@ -119,8 +119,17 @@ pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool 
             if strictly_one_side(
                 v,
                 [q[(m + 1) % 3], q[(m + 2) % 3]],
-                [p[(k + 1) % 3], p[(k + 2) % 3]],
+                &[p[(k + 1) % 3], p[(k + 2) % 3]],
             ) {
+                return false;
+            }
+        }
+        0 => {
+            // NOTE: no shared corner: p wholly on one side of q's plane,
+            // or q of p's, meet nowhere; the same filter decides most
+            // such pairs of a mesh's (neighbours a corner apart).
+            if strictly_one_side(q[0], [q[1], q[2]], p) || strictly_one_side(p[0], [p[1], p[2]], q)
+            {
                 return false;
             }
         }
@@ -129,11 +138,11 @@ pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool 
     cross_exact(f, g, p, q)
 }
 
-/// Whether the points `d` both lie strictly on one side of the plane of
+/// Whether the points `d` all lie strictly on one side of the plane of
 /// the triangle (v, e₀, e₁), by the floating-point filter of `orient3d`
-/// alone (false: on opposite sides, or the filter cannot tell).
+/// alone (false: on both sides or on it, or the filter cannot tell).
 #[inline]
-fn strictly_one_side(v: P3, e: [P3; 2], d: [P3; 2]) -> bool {
+fn strictly_one_side(v: P3, e: [P3; 2], d: &[P3]) -> bool {
     let sub = |a: P3| [a[0] - v[0], a[1] - v[1], a[2] - v[2]];
     let (b, c) = (sub(e[0]), sub(e[1]));
     let x = [
@@ -154,7 +163,7 @@ fn strictly_one_side(v: P3, e: [P3; 2], d: [P3; 2]) -> bool {
         (det > bound) as i8 - (det < -bound) as i8
     };
     let s = side(d[0]);
-    s != 0 && s == side(d[1])
+    s != 0 && d[1..].iter().all(|p| side(*p) == s)
 }
 
 /// `cross` by the predicates alone.

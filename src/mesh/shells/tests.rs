@@ -487,3 +487,27 @@ proptest::proptest! {
         proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+
+    /// Two triangles with no corner in common, on a small grid (coplanar,
+    /// touching, crossing and apart often): the filter's shortcut answers
+    /// as the predicates do.
+    #[test]
+    fn triangles_sharing_no_corner_cross_as_the_predicates_say(
+        c in proptest::array::uniform6(proptest::array::uniform3(-2i8..3)),
+    ) {
+        let pt = c.map(|p| p.map(f64::from));
+        let x = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+            let (d1, d2): ([f64; 3], [f64; 3]) = (std::array::from_fn(|k| b[k] - a[k]), std::array::from_fn(|k| c[k] - a[k]));
+            [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        };
+        proptest::prop_assume!(x(pt[0], pt[1], pt[2]) != [0.0; 3] && x(pt[3], pt[4], pt[5]) != [0.0; 3]);
+        proptest::prop_assume!((0..3).all(|a| (3..6).all(|b| pt[a] != pt[b])));
+        let (f, g) = ([0, 1, 2], [3, 4, 5]);
+        let (p, q) = ([pt[0], pt[1], pt[2]], [pt[3], pt[4], pt[5]]);
+        proptest::prop_assert_eq!(cross(f, g, &p, &q), cross_exact(f, g, &p, &q));
+        proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
+    }
+}
