@@ -124,14 +124,13 @@ pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool 
                 return false;
             }
         }
-        0 => {
-            // NOTE: no shared corner: p wholly on one side of q's plane,
-            // or q of p's, meet nowhere; the same filter decides most
-            // such pairs of a mesh's (neighbours a corner apart).
-            if strictly_one_side(q[0], [q[1], q[2]], p) || strictly_one_side(p[0], [p[1], p[2]], q)
-            {
-                return false;
-            }
+        // NOTE: no shared corner: p wholly on one side of q's plane, or q
+        // of p's, meet nowhere; the same filter decides most such pairs of
+        // a mesh's (neighbours a corner apart).
+        0 if strictly_one_side(q[0], [q[1], q[2]], p)
+            || strictly_one_side(p[0], [p[1], p[2]], q) =>
+        {
+            return false;
         }
         _ => {}
     }
