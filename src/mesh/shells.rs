@@ -67,10 +67,9 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         .collect();
     let bvh = Bvh::build(&boxes, order);
     // NOTE: the boxes again, in the tree's item order (`Bvh::join`), made
-    // afresh from the corners once the first list is let go of: the two
-    // never held at once.
-    drop(boxes);
-    let sorted = boxes_in(mesh, &pts, &bvh.items, bvh.items.len());
+    // afresh from the corners over the first list (the tree's items are
+    // some of the triangles): no second list, no fresh pages.
+    let sorted = boxes_in(mesh, &pts, &bvh.items, bvh.items.len(), boxes);
     if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
@@ -326,14 +325,15 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
 /// triangle, allocated here and written (its pages faulted in) by the
 /// threads.
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
-    let all: Vec<u32> = Vec::new();
-    boxes_in(mesh, pts, &all, mesh.faces.len())
+    let n = mesh.faces.len();
+    boxes_in(mesh, pts, &[], n, vec![Aabb::empty(); n])
 }
 
 /// The boxes of triangles `items` (all `n` of them, in order, when
-/// `items` is empty), in that order, on every core.
-fn boxes_in(mesh: &Mesh, pts: &[P3], items: &[u32], n: usize) -> Vec<Aabb> {
-    let mut boxes = vec![Aabb::empty(); n];
+/// `items` is empty), in that order, on every core, written over `boxes`
+/// (at least `n` long; its pages already in memory), which is cut to `n`.
+fn boxes_in(mesh: &Mesh, pts: &[P3], items: &[u32], n: usize, mut boxes: Vec<Aabb>) -> Vec<Aabb> {
+    boxes.truncate(n);
     let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
     let of = |t: u32| Aabb::of(&mesh.faces[t as usize].map(|k| pts[k as usize]));
