@@ -93,7 +93,9 @@ impl Bvh {
             usize::MAX
         };
         let mut nodes = Vec::with_capacity(node_count(items.len()));
-        let pending = grow(boxes, &mut items, 0, depth, &mut nodes);
+        let centres = centres(boxes, threads);
+        let (boxes, centres) = (boxes, &centres[..]);
+        let pending = grow(boxes, centres, &mut items, 0, depth, &mut nodes);
         if pending.is_empty() {
             return Bvh { nodes, items };
         }
@@ -123,7 +125,7 @@ impl Bvh {
                 .into_iter()
                 .map(|(k, s, mine, mut room)| {
                     scope.spawn(move || {
-                        grow(boxes, mine, s, usize::MAX, &mut room);
+                        grow(boxes, centres, mine, s, usize::MAX, &mut room);
                         (k, room)
                     })
                 })
@@ -204,7 +206,13 @@ impl Bvh {
 
     /// Every pair of items under a task whose boxes meet, each once, as
     /// (smaller, larger) item: a dual-tree self-join, without recursion
-    /// (`stack` is scratch space, reused between tasks).
+    /// (`stack` is scratch space, reused between tasks). `sorted` holds
+    /// the boxes in the items' order (`sorted`: `sorted[k]` is the box of
+    /// `items[k]`).
+    ///
+    /// NOTE: the boxes in the items' order, so that a leaf's boxes are
+    /// read one after another rather than each from wherever its item's
+    /// number puts it: the same pairs, in the same order.
     ///
     /// NOTE: hand-written (parry's and bvh's trees answer one box's query
     /// at a time, the per-triangle search this replaces): a million
@@ -213,7 +221,7 @@ impl Bvh {
     /// per-item query's pairs exactly.
     pub fn join(
         &self,
-        boxes: &[Aabb],
+        sorted: &[Aabb],
         task: Task,
         stack: &mut Vec<Task>,
         mut visit: impl FnMut(u32, u32),
@@ -224,10 +232,11 @@ impl Bvh {
             let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
             if a == b {
                 if self.is_leaf(na) {
-                    let items = &self.items[na.start as usize..na.end as usize];
-                    for (k, &x) in items.iter().enumerate() {
-                        for &y in &items[k + 1..] {
-                            if boxes[x as usize].meets(&boxes[y as usize]) {
+                    let r = na.start as usize..na.end as usize;
+                    let (items, bs) = (&self.items[r.clone()], &sorted[r]);
+                    for (k, (&x, bx)) in items.iter().zip(bs).enumerate() {
+                        for (&y, by) in items[k + 1..].iter().zip(&bs[k + 1..]) {
+                            if bx.meets(by) {
                                 visit(x.min(y), x.max(y));
                             }
                         }
@@ -241,14 +250,15 @@ impl Bvh {
                 continue;
             }
             if self.is_leaf(na) && self.is_leaf(nb) {
-                let ys = &self.items[nb.start as usize..nb.end as usize];
-                for &x in &self.items[na.start as usize..na.end as usize] {
-                    let bx = &boxes[x as usize];
+                let rb = nb.start as usize..nb.end as usize;
+                let (ys, bys) = (&self.items[rb.clone()], &sorted[rb]);
+                let ra = na.start as usize..na.end as usize;
+                for (&x, bx) in self.items[ra.clone()].iter().zip(&sorted[ra]) {
                     if !bx.meets(&nb.bounds) {
                         continue;
                     }
-                    for &y in ys {
-                        if bx.meets(&boxes[y as usize]) {
+                    for (&y, by) in ys.iter().zip(bys) {
+                        if bx.meets(by) {
                             visit(x.min(y), x.max(y));
                         }
                     }
@@ -257,6 +267,28 @@ impl Bvh {
                 stack.extend(self.split(a, b));
             }
         }
+    }
+
+    /// The items' boxes in their order (`join`'s `sorted`), on every
+    /// core (each thread writes, and so faults in, its share's pages).
+    pub fn sorted(&self, boxes: &[Aabb]) -> Vec<Aabb> {
+        let n = self.items.len();
+        let threads = super::threads_for(n, 1 << 16);
+        if threads == 1 {
+            return self.items.iter().map(|&i| boxes[i as usize]).collect();
+        }
+        let mut out = vec![Aabb::empty(); n];
+        let piece = n.div_ceil(threads).max(1);
+        std::thread::scope(|scope| {
+            for (out, items) in out.chunks_mut(piece).zip(self.items.chunks(piece)) {
+                scope.spawn(move || {
+                    for (b, &i) in out.iter_mut().zip(items) {
+                        *b = boxes[i as usize];
+                    }
+                });
+            }
+        });
+        out
     }
 
     /// The items whose boxes meet `b` (the per-item query the join
@@ -291,6 +323,7 @@ impl Bvh {
 /// (the pending subtrees' roots).
 fn grow(
     boxes: &[Aabb],
+    centres: &[P3],
     items: &mut [u32],
     offset: usize,
     depth: usize,
@@ -303,10 +336,7 @@ fn grow(
         end: (offset + items.len()) as u32,
         left: 0,
     });
-    let centre = |i: u32, k: usize| {
-        let b = &boxes[i as usize];
-        b.lo[k] / 2.0 + b.hi[k] / 2.0
-    };
+    let centre = |i: u32, k: usize| centres[i as usize][k];
     let mut stack = vec![(0usize, 0usize)];
     while let Some((at, level)) = stack.pop() {
         let (s, e) = (
@@ -345,6 +375,28 @@ fn grow(
         stack.push((left + 1, level + 1));
     }
     pending
+}
+
+/// Each box's centre (halves added: no overflow), which the splits
+/// compare: computed once rather than at each comparison, on `threads`
+/// threads.
+fn centres(boxes: &[Aabb], threads: usize) -> Vec<P3> {
+    let centre = |b: &Aabb| std::array::from_fn(|k| b.lo[k] / 2.0 + b.hi[k] / 2.0);
+    if threads <= 1 {
+        return boxes.iter().map(centre).collect();
+    }
+    let mut out = vec![[0.0; 3]; boxes.len()];
+    let piece = boxes.len().div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        for (out, boxes) in out.chunks_mut(piece).zip(boxes.chunks(piece)) {
+            scope.spawn(move || {
+                for (c, b) in out.iter_mut().zip(boxes) {
+                    *c = centre(b);
+                }
+            });
+        }
+    });
+    out
 }
 
 /// A subtree's node moved to the whole tree, its nodes from `base` on.

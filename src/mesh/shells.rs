@@ -66,7 +66,11 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    if let Some((i, j)) = first_crossing(mesh, &pts, &boxes, &bvh) {
+    // NOTE: the boxes again, in the tree's item order (`Bvh::join`), made
+    // afresh from the corners over the first list (the tree's items are
+    // some of the triangles): no second list, no fresh pages.
+    let sorted = boxes_in(mesh, &pts, &bvh.items, bvh.items.len(), boxes);
+    if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
             mesh.at[i],
@@ -103,13 +107,12 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
     // whose boxes hold a corner are found in a tree of the shells' boxes,
     // most corners of a mesh of separate pieces have none (winding 0 at
     // once), and a ray need go no further than those shells' boxes.
-    let shell_boxes: Vec<Aabb> = (0..count)
-        .map(|s| {
-            list[start[s]..start[s + 1]]
-                .iter()
-                .fold(Aabb::empty(), |b, &t| b.join(boxes[t as usize]))
-        })
-        .collect();
+    let mut shell_boxes = vec![Aabb::empty(); count];
+    for (&t, b) in bvh.items.iter().zip(&sorted) {
+        let s = &mut shell_boxes[shell[t as usize] as usize];
+        *s = s.join(*b);
+    }
+    drop(sorted);
     let shell_tree = Bvh::build(&shell_boxes, (0..count as u32).collect());
     let near = Near {
         boxes: &shell_boxes,
@@ -323,16 +326,35 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
 /// threads.
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
     let n = mesh.faces.len();
-    let mut boxes = vec![Aabb::empty(); n];
+    boxes_in(mesh, pts, &[], n, vec![Aabb::empty(); n])
+}
+
+/// The boxes of triangles `items` (all `n` of them, in order, when
+/// `items` is empty), in that order, on every core, written over `boxes`
+/// (at least `n` long; its pages already in memory), which is cut to `n`.
+fn boxes_in(mesh: &Mesh, pts: &[P3], items: &[u32], n: usize, mut boxes: Vec<Aabb>) -> Vec<Aabb> {
+    boxes.truncate(n);
     let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
-    std::thread::scope(|scope| {
-        for (out, faces) in boxes.chunks_mut(piece).zip(mesh.faces.chunks(piece)) {
-            scope.spawn(move || {
-                for (b, f) in out.iter_mut().zip(faces) {
-                    *b = Aabb::of(&f.map(|k| pts[k as usize]));
-                }
+    let of = |t: u32| Aabb::of(&mesh.faces[t as usize].map(|k| pts[k as usize]));
+    let fill = |from: usize, out: &mut [Aabb]| {
+        for (k, b) in out.iter_mut().enumerate() {
+            let at = from + k;
+            *b = of(if items.is_empty() {
+                at as u32
+            } else {
+                items[at]
             });
+        }
+    };
+    if threads == 1 {
+        fill(0, &mut boxes);
+        return boxes;
+    }
+    std::thread::scope(|scope| {
+        for (c, out) in boxes.chunks_mut(piece).enumerate() {
+            let fill = &fill;
+            scope.spawn(move || fill(c * piece, out));
         }
     });
     boxes

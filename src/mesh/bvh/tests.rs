@@ -23,8 +23,9 @@ fn by_query(bvh: &Bvh, boxes: &[Aabb]) -> Vec<(u32, u32)> {
 fn by_join(bvh: &Bvh, boxes: &[Aabb], size: usize) -> Vec<(u32, u32)> {
     let mut out = Vec::new();
     let mut stack = Vec::new();
+    let sorted = bvh.sorted(boxes);
     for task in bvh.join_tasks(size) {
-        bvh.join(boxes, task, &mut stack, |i, j| out.push((i, j)));
+        bvh.join(&sorted, task, &mut stack, |i, j| out.push((i, j)));
     }
     out
 }

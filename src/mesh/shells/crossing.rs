@@ -8,7 +8,8 @@ use super::super::check::Mesh;
 use super::super::exact::{P3, Plane, orient2d, orient3d};
 
 /// The first pair (by the first triangle's number, then the second's) of
-/// triangles that cross, if any; on every core.
+/// triangles that cross, if any; on every core. `sorted`: the
+/// triangles' boxes in the tree's items' order (`Bvh::sorted`).
 ///
 /// NOTE: the pairs whose boxes meet come from the tree's self-join
 /// (`Bvh::join`), cut into tasks that the threads take from a counter;
@@ -20,14 +21,14 @@ use super::super::exact::{P3, Plane, orient2d, orient3d};
 pub(super) fn first_crossing(
     mesh: &Mesh,
     pts: &[P3],
-    boxes: &[Aabb],
+    sorted: &[Aabb],
     bvh: &Bvh,
 ) -> Option<(usize, usize)> {
     let threads = super::super::threads_for(bvh.items.len(), 1);
     // Tasks of about 1/64 of a thread's share: enough for the threads to
     // even out, few enough that cutting them costs nothing.
     let size = (bvh.items.len() / (64 * threads)).max(256);
-    first_crossing_on(mesh, pts, boxes, bvh, threads, size)
+    first_crossing_on(mesh, pts, sorted, bvh, threads, size)
 }
 
 /// `first_crossing` on at most `threads` threads, the join cut into tasks
@@ -35,7 +36,7 @@ pub(super) fn first_crossing(
 pub(super) fn first_crossing_on(
     mesh: &Mesh,
     pts: &[P3],
-    boxes: &[Aabb],
+    sorted: &[Aabb],
     bvh: &Bvh,
     threads: usize,
     size: usize,
@@ -54,7 +55,7 @@ pub(super) fn first_crossing_on(
             let Some(&task) = tasks.get(t) else {
                 return mine;
             };
-            bvh.join(boxes, task, &mut stack, |i, j| {
+            bvh.join(sorted, task, &mut stack, |i, j| {
                 let (i, j) = (i as usize, j as usize);
                 if i > best.load(Ordering::Relaxed) || mine.is_some_and(|m| (i, j) >= m) {
                     return;
@@ -85,21 +86,83 @@ pub(super) fn first_crossing_on(
 /// points) cross: share a segment inside both, or overlap in an area
 /// facing the same way.
 pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
-    // NOTE: two triangles that run their shared edge in opposite
-    // directions (the neighbours of a closed surface) never cross: not
-    // coplanar, they meet on the planes' line only along that edge; coplanar,
-    // they lie on the two sides of it (side by side) or face opposite ways
-    // (folded flat). The exact path below answers the same (a test holds
-    // them equal); this spares a third of a smooth mesh's pairs its
-    // predicates.
-    if let Some(k) = (0..3).find(|&k| g.contains(&f[k]) && g.contains(&f[(k + 1) % 3])) {
-        let (u, v) = (f[k], f[(k + 1) % 3]);
-        let at = g.iter().position(|x| *x == v).expect("v is shared");
-        if g[(at + 1) % 3] == u && !g.contains(&f[(k + 2) % 3]) {
+    // Where each of f's corners is among g's (3: not there).
+    let at = f.map(|v| g.iter().position(|w| *w == v).unwrap_or(3));
+    match at.iter().filter(|m| **m < 3).count() {
+        2 => {
+            // NOTE: two triangles that run their shared edge in opposite
+            // directions (the neighbours of a closed surface) never cross:
+            // not coplanar, they meet on the planes' line only along that
+            // edge; coplanar, they lie on the two sides of it (side by
+            // side) or face opposite ways (folded flat). The exact path
+            // below answers the same (a test holds them equal); this
+            // spares a third of a smooth mesh's pairs its predicates.
+            let k = (0..3)
+                .find(|&k| at[k] < 3 && at[(k + 1) % 3] < 3)
+                .expect("invariant: two shared corners of a triangle make one of its edges");
+            if g[(at[(k + 1) % 3] + 1) % 3] == f[k] {
+                return false;
+            }
+        }
+        1 => {
+            // NOTE: two triangles that share one corner v, the most
+            // common pair of a mesh's boxes that meet (a million of them
+            // in a sphere's two polar fans), meet only at v when p's two
+            // other corners lie strictly on one side of q's plane: then
+            // no predicate need be exact, and this filter (the one
+            // `exact::Plane::side` tries first, on q turned to start at
+            // v, which leaves the sign as it is) decides most of them.
+            // Undecided, the exact path answers (a test holds them equal).
+            let k = (0..3).find(|&k| at[k] < 3).expect("one shared corner");
+            let m = at[k];
+            let v = p[k];
+            if strictly_one_side(
+                v,
+                [q[(m + 1) % 3], q[(m + 2) % 3]],
+                &[p[(k + 1) % 3], p[(k + 2) % 3]],
+            ) {
+                return false;
+            }
+        }
+        // NOTE: no shared corner: p wholly on one side of q's plane, or q
+        // of p's, meet nowhere; the same filter decides most such pairs of
+        // a mesh's (neighbours a corner apart).
+        0 if strictly_one_side(q[0], [q[1], q[2]], p)
+            || strictly_one_side(p[0], [p[1], p[2]], q) =>
+        {
             return false;
         }
+        _ => {}
     }
     cross_exact(f, g, p, q)
+}
+
+/// Whether the points `d` all lie strictly on one side of the plane of
+/// the triangle (v, e₀, e₁), by the floating-point filter of `orient3d`
+/// alone (false: on both sides or on it, or the filter cannot tell).
+#[inline]
+fn strictly_one_side(v: P3, e: [P3; 2], d: &[P3]) -> bool {
+    let sub = |a: P3| [a[0] - v[0], a[1] - v[1], a[2] - v[2]];
+    let (b, c) = (sub(e[0]), sub(e[1]));
+    let x = [
+        b[1] * c[2] - b[2] * c[1],
+        b[2] * c[0] - b[0] * c[2],
+        b[0] * c[1] - b[1] * c[0],
+    ];
+    let (bm, cm) = (b.map(f64::abs), c.map(f64::abs));
+    let xm = [
+        bm[1] * cm[2] + bm[2] * cm[1],
+        bm[2] * cm[0] + bm[0] * cm[2],
+        bm[0] * cm[1] + bm[1] * cm[0],
+    ];
+    let side = |p: P3| {
+        let d = sub(p);
+        let det = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
+        let bound = 1e-15 * (xm[0] * d[0].abs() + xm[1] * d[1].abs() + xm[2] * d[2].abs());
+        (det > bound) as i8 - (det < -bound) as i8
+    };
+    let s = side(d[0]);
+    s != 0 && d[1..].iter().all(|p| side(*p) == s)
 }
 
 /// `cross` by the predicates alone.

@@ -372,11 +372,12 @@ fn first_crossings(t: Vec<Tri>) -> [Option<(usize, usize)>; 4] {
         .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
         .collect();
     let bvh = Bvh::build(&boxes, (0..m.faces.len() as u32).collect());
+    let sorted = bvh.sorted(&boxes);
     [
         brute_first_crossing(&m, &pts, &boxes),
-        first_crossing_on(&m, &pts, &boxes, &bvh, 1, 1 << 20),
-        first_crossing_on(&m, &pts, &boxes, &bvh, 2, 8),
-        first_crossing_on(&m, &pts, &boxes, &bvh, 5, 1),
+        first_crossing_on(&m, &pts, &sorted, &bvh, 1, 1 << 20),
+        first_crossing_on(&m, &pts, &sorted, &bvh, 2, 8),
+        first_crossing_on(&m, &pts, &sorted, &bvh, 5, 1),
     ]
 }
 
@@ -454,5 +455,59 @@ proptest::proptest! {
         if opposite {
             proptest::prop_assert!(!exact);
         }
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+
+    /// Two triangles sharing one corner, on a small grid (coplanar, one
+    /// straddling the other's plane, touching along a segment often): the
+    /// shortcut for a shared corner answers as the predicates do.
+    #[test]
+    fn triangles_sharing_one_corner_cross_as_the_predicates_say(
+        c in proptest::array::uniform5(proptest::array::uniform3(-2i8..3)),
+        rf in 0usize..3,
+        rg in 0usize..3,
+        flip in proptest::bool::ANY,
+    ) {
+        let pt = c.map(|p| p.map(f64::from));
+        let x = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+            let (d1, d2): ([f64; 3], [f64; 3]) = (std::array::from_fn(|k| b[k] - a[k]), std::array::from_fn(|k| c[k] - a[k]));
+            [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        };
+        proptest::prop_assume!(x(pt[0], pt[1], pt[2]) != [0.0; 3] && x(pt[0], pt[3], pt[4]) != [0.0; 3]);
+        // Distinct points, distinct welded corners.
+        proptest::prop_assume!((1..3).all(|a| (3..5).all(|b| pt[a] != pt[b])));
+        let turn = |t: [u32; 3], r: usize| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]];
+        let f = turn([0, 1, 2], rf);
+        let g = turn(if flip { [0, 4, 3] } else { [0, 3, 4] }, rg);
+        let (p, q) = (f.map(|k| pt[k as usize]), g.map(|k| pt[k as usize]));
+        proptest::prop_assert_eq!(cross(f, g, &p, &q), cross_exact(f, g, &p, &q));
+        proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(512))]
+
+    /// Two triangles with no corner in common, on a small grid (coplanar,
+    /// touching, crossing and apart often): the filter's shortcut answers
+    /// as the predicates do.
+    #[test]
+    fn triangles_sharing_no_corner_cross_as_the_predicates_say(
+        c in proptest::array::uniform6(proptest::array::uniform3(-2i8..3)),
+    ) {
+        let pt = c.map(|p| p.map(f64::from));
+        let x = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+            let (d1, d2): ([f64; 3], [f64; 3]) = (std::array::from_fn(|k| b[k] - a[k]), std::array::from_fn(|k| c[k] - a[k]));
+            [d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]]
+        };
+        proptest::prop_assume!(x(pt[0], pt[1], pt[2]) != [0.0; 3] && x(pt[3], pt[4], pt[5]) != [0.0; 3]);
+        proptest::prop_assume!((0..3).all(|a| (3..6).all(|b| pt[a] != pt[b])));
+        let (f, g) = ([0, 1, 2], [3, 4, 5]);
+        let (p, q) = ([pt[0], pt[1], pt[2]], [pt[3], pt[4], pt[5]]);
+        proptest::prop_assert_eq!(cross(f, g, &p, &q), cross_exact(f, g, &p, &q));
+        proptest::prop_assert_eq!(cross(g, f, &q, &p), cross_exact(g, f, &q, &p));
     }
 }
