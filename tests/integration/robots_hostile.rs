@@ -1327,69 +1327,6 @@ fn turn_attr() -> BoxedStrategy<String> {
                 let v: Vec<&str> = nums.split(' ').take(n).collect();
                 format!(" {form}=\"{}\"", v.join(" "))
             }),
-// SDFormat scopes: nested models, worlds, includes (issue 34)
-
-/// Names an SDFormat reference may give: the generated frames', scoped
-/// ones, the reserved ones, and names of nothing.
-const SDF_REFS: &[&str] = &[
-    "base",
-    "arm",
-    "n",
-    "n::arm",
-    "n::n::base",
-    "s::l",
-    "__model__",
-    "n::__model__",
-    "world",
-    "",
-    "f",
-    "j",
-    "nothing",
-    "::",
-    "n::",
-    "::arm",
-];
-
-/// What an `<include>` may name: a model beside it, itself (a cycle), a
-/// directory with a `model.config`, nothing, a place outside, a URL.
-const SDF_URIS: &[&str] = &[
-    "side.sdf",
-    "gen-scope.sdf",
-    "sidedir",
-    "model://sidedir",
-    "model://",
-    "model://..",
-    "missing.sdf",
-    "../../../../../../../../etc",
-    "https://fuel.gazebosim.org/x",
-    "",
-];
-
-/// One piece of a generated model: an element, or the start or the end
-/// of a nested model.
-fn sdf_piece() -> BoxedStrategy<String> {
-    let r = || prop::sample::select(SDF_REFS);
-    let name = || prop::sample::select(vec!["base", "arm", "n", "s", "f", "j", "l"]);
-    prop_oneof![
-        4 => (name(), r(), number()).prop_map(|(n, r, m)| format!(
-            "<link name=\"{n}\"><pose relative_to=\"{r}\">0 0 0.5 0 0 0.3</pose><inertial><mass>{m}</mass></inertial></link>"
-        )),
-        3 => (name(), r(), r()).prop_map(|(n, c, p)| format!(
-            "<model name=\"{n}\" canonical_link=\"{c}\" placement_frame=\"{p}\"><pose>0.1 0 0 0 0 0</pose>"
-        )),
-        3 => Just("</model>".to_string()),
-        3 => (prop::sample::select(SDF_URIS), name(), r(), r(), any::<bool>()).prop_map(
-            |(u, n, rel, pf, st)| format!(
-                "<include><uri>{u}</uri><name>{n}</name><pose relative_to=\"{rel}\">1 0 0 0 0 1</pose><placement_frame>{pf}</placement_frame><static>{st}</static></include>"
-            )
-        ),
-        2 => (name(), r()).prop_map(|(n, a)| format!(
-            "<frame name=\"{n}\" attached_to=\"{a}\"><pose>0 1 0 0 0 0</pose></frame>"
-        )),
-        4 => (name(), prop::sample::select(vec!["revolute", "fixed", "prismatic", "ball"]), r(), r(), r(), r())
-            .prop_map(|(n, t, p, c, e, m)| format!(
-                "<joint name=\"{n}\" type=\"{t}\"><parent>{p}</parent><child>{c}</child><axis><xyz expressed_in=\"{e}\">0 0 1</xyz><mimic joint=\"{m}\"/></axis></joint>"
-            )),
     ]
     .boxed()
 }
@@ -1491,6 +1428,77 @@ fn generated_mjcf_mesh_frame_and_class_files_keep_the_promise() {
         GENERATED,
         (mesh_model(), 0.0..1.0f64),
         |(text, pick)| hostile_robot(&dir, "mesh.xml", text.as_bytes(), *pick),
+    );
+}
+
+// ---------------------------------------------------------------------------
+// SDFormat scopes: nested models, worlds, includes (issue 34)
+
+/// Names an SDFormat reference may give: the generated frames', scoped
+/// ones, the reserved ones, and names of nothing.
+const SDF_REFS: &[&str] = &[
+    "base",
+    "arm",
+    "n",
+    "n::arm",
+    "n::n::base",
+    "s::l",
+    "__model__",
+    "n::__model__",
+    "world",
+    "",
+    "f",
+    "j",
+    "nothing",
+    "::",
+    "n::",
+    "::arm",
+];
+
+/// What an `<include>` may name: a model beside it, itself (a cycle), a
+/// directory with a `model.config`, nothing, a place outside, a URL.
+const SDF_URIS: &[&str] = &[
+    "side.sdf",
+    "gen-scope.sdf",
+    "sidedir",
+    "model://sidedir",
+    "model://",
+    "model://..",
+    "missing.sdf",
+    "../../../../../../../../etc",
+    "https://fuel.gazebosim.org/x",
+    "",
+];
+
+/// One piece of a generated model: an element, or the start or the end
+/// of a nested model.
+fn sdf_piece() -> BoxedStrategy<String> {
+    let r = || prop::sample::select(SDF_REFS);
+    let name = || prop::sample::select(vec!["base", "arm", "n", "s", "f", "j", "l"]);
+    prop_oneof![
+        4 => (name(), r(), number()).prop_map(|(n, r, m)| format!(
+            "<link name=\"{n}\"><pose relative_to=\"{r}\">0 0 0.5 0 0 0.3</pose><inertial><mass>{m}</mass></inertial></link>"
+        )),
+        3 => (name(), r(), r()).prop_map(|(n, c, p)| format!(
+            "<model name=\"{n}\" canonical_link=\"{c}\" placement_frame=\"{p}\"><pose>0.1 0 0 0 0 0</pose>"
+        )),
+        3 => Just("</model>".to_string()),
+        3 => (prop::sample::select(SDF_URIS), name(), r(), r(), any::<bool>()).prop_map(
+            |(u, n, rel, pf, st)| format!(
+                "<include><uri>{u}</uri><name>{n}</name><pose relative_to=\"{rel}\">1 0 0 0 0 1</pose><placement_frame>{pf}</placement_frame><static>{st}</static></include>"
+            )
+        ),
+        2 => (name(), r()).prop_map(|(n, a)| format!(
+            "<frame name=\"{n}\" attached_to=\"{a}\"><pose>0 1 0 0 0 0</pose></frame>"
+        )),
+        4 => (name(), prop::sample::select(vec!["revolute", "fixed", "prismatic", "ball"]), r(), r(), r(), r())
+            .prop_map(|(n, t, p, c, e, m)| format!(
+                "<joint name=\"{n}\" type=\"{t}\"><parent>{p}</parent><child>{c}</child><axis><xyz expressed_in=\"{e}\">0 0 1</xyz><mimic joint=\"{m}\"/></axis></joint>"
+            )),
+    ]
+    .boxed()
+}
+
 /// A model or a world of generated pieces, nested models balanced.
 fn sdf_scoped() -> impl Strategy<Value = String> {
     (any::<bool>(), prop::collection::vec(sdf_piece(), 0..14)).prop_map(|(world, pieces)| {
