@@ -323,3 +323,41 @@ fn a_joint_from_a_frame_of_the_top_model_hangs_its_child_on_the_canonical_link()
     let v = json(&path, &["--only", "a"]);
     assert_close(&numbers(&v["mass"]), &[3.0], 1e-15);
 }
+
+const WORLD_JOINT: &str = r#"<?xml version="1.0"?>
+<sdf version="1.11"><model name="m">
+<link name="a"><pose>0.3 0 0.5 0 0 0</pose><inertial><pose>0.1 0.02 -0.03 0 0 0</pose><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.2</iyy><izz>0.25</izz></inertia></inertial></link>
+<joint name="spin" type="revolute"><pose>0.1 0.2 0 0 0 0</pose><parent>world</parent><child>a</child><axis><xyz>0 0 1</xyz></axis></joint>
+</model></sdf>
+"#;
+
+/// A joint from `world` turns its child (it was read and then dropped;
+/// found by tests/oracle/drake_body_oracle.py). By hand: the joint's axis
+/// is vertical through (0.4, 0.2) (its pose in the child's frame, the
+/// child at (0.3, 0, 0.5)); the centre (0.4, 0.02, 0.47) turned a quarter
+/// about it is (0.58, 0.2, 0.47), and Ixx and Iyy change places.
+#[test]
+fn a_joint_from_the_world_turns_its_child() {
+    let path = scratch_files("robots_sdf", "world_joint", &[("w.sdf", WORLD_JOINT)]);
+    let v = json(&path, &["--joints", "spin=90deg"]);
+    let want = [
+        2.0, 0.58, 0.2, 0.47, 0.2, 0.0, 0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 0.25,
+    ];
+    let got = figures(&v);
+    assert_eq!(got.len(), want.len(), "{got:?}");
+    for (g, w) in got.iter().zip(want) {
+        assert!((g - w).abs() <= 1e-15, "{got:?} against {want:?}");
+    }
+}
+
+/// A link is the child of one joint, from `world` or from a link.
+#[test]
+fn a_link_with_a_joint_from_the_world_and_another_parent_is_refused() {
+    let two = WORLD_JOINT.replace(
+        "</model>",
+        r#"<link name="b"/><joint name="j2" type="fixed"><parent>b</parent><child>a</child></joint></model>"#,
+    );
+    let path = scratch_files("robots_sdf", "world_joint_two", &[("w.sdf", &two)]);
+    let msg = refused(&path);
+    assert!(msg.contains("already has a parent joint"), "{msg}");
+}

@@ -394,13 +394,10 @@ fn build(g: &mut Graph, d: &Description) -> Result<Tree, Diagnostic> {
             |e, _| Ok(xml.text(e)),
         )?;
         let c = g.end(s, file, &kid, &owner)?;
-        let p = if parent.text == "world" {
-            None
-        } else {
+        if parent.text != "world" {
             let p = g.end(s, file, &parent, &owner)?;
             set_parent(xml, &mut t, c, p, &kid, &owner)?;
-            Some(p)
-        };
+        }
         // The joint frame in the child link's.
         let joint_pose = world[c].inverse().then(&g.in_model(jf)?);
         let home = g.scopes[s].frame;
@@ -452,9 +449,20 @@ fn build(g: &mut Graph, d: &Description) -> Result<Tree, Diagnostic> {
                 std::array::from_fn(|i| (0..3).map(|k| r[k][i] * in_model[k]).sum())
             }
         };
-        if p.is_some() {
-            t.links[c].joints.push(t.joints.len());
+        // NOTE: a joint from `world` moves its child too (the child is a
+        // root, placed in the model frame): Drake and Gazebo turn it, and
+        // it was dropped here (found by tests/oracle/drake_body_oracle.py).
+        // One joint per child, whichever its parent.
+        if !t.links[c].joints.is_empty() {
+            return Err(xml.error(
+                kid.range.clone(),
+                format!(
+                    "{} of {owner}: the link already has a parent joint",
+                    kid.name
+                ),
+            ));
         }
+        t.links[c].joints.push(t.joints.len());
         let limits = match (motion, kind.text.as_str()) {
             (Motion::Revolute, "continuous") => None,
             (Motion::Revolute | Motion::Prismatic, _) => limits(lower, upper),
