@@ -16,6 +16,7 @@ use std::fmt::Write;
 mod axles;
 pub mod cases;
 pub mod envelope;
+mod json_rows;
 mod motion;
 mod short;
 
@@ -275,9 +276,10 @@ pub fn write_detail_to(
     }
 }
 
-/// The report as one JSON object, written to `w` as it is made.
+/// The report as one JSON object, written to `w` as it is made: the same
+/// bytes as `json`, the part rows written by `json_rows`.
 pub fn write_json_to(summary: &Summary, w: &mut dyn std::io::Write) -> std::io::Result<()> {
-    super::json_line_to(summary, w)
+    json_rows::write(summary, w)
 }
 
 /// `table` (the full report), written to `w` as it is made: the rows of parts and
