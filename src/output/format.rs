@@ -10,6 +10,8 @@ use crate::compose::{EQUAL_MOMENT_RTOL, Precision};
 use crate::units::{Dim, FileUnits};
 use std::fmt::Write;
 
+mod rounded;
+
 /// How an undefined ratio (a share of a zero moment, a change relative to
 /// zero) is shown in every table.
 pub const UNDEFINED: &str = "—";
@@ -187,7 +189,7 @@ pub fn push_sig(out: &mut String, x: f64, digits: usize) {
     }
     let places = digits.max(1) - 1;
     let mut sci = Ascii::<64>::new();
-    let _ = write!(sci, "{x:.places$e}");
+    rounded::push_rounded_sci(&mut sci, x, places);
     let sci = sci.as_str();
     let (mantissa, exp) = sci.split_once('e').expect("{:e} always has an exponent");
     let exp: i32 = exp.parse().expect("{:e} exponent is an integer");
