@@ -1,50 +1,85 @@
 //! Six significant digits without the exact rounding's big integers:
-//! `push_sig`'s `{:.N$e}`, from the shortest digits where they are the
-//! rounding.
+//! `push_sig`'s `{:.N$e}`, from the shortest digits rounded, where they
+//! round as the number does.
 
 use super::Ascii;
 use std::fmt::Write;
 
 /// `x` as `{x:.places$e}` writes it: `places` digits after the point.
 ///
-/// NOTE: the shortest digits that read back as `x` (serde_json's, which
-/// JSON writes every number with: far faster than the exact rounding,
-/// whose fallback to big integers was a third of the time of `report
-/// --full` of a tree of 2²⁰ instances) are the rounding itself when there
-/// are no more of them than asked for: x lies within half an ulp of them,
-/// and for a normal x and up to 15 digits that is far less than half a
-/// unit of the last digit, so no other decimal of that many digits is
-/// nearer (nor a tie). They are then padded with zeros; else the exact
-/// rounding is made. (`the_shortest_digits_padded_are_the_rounding`.)
+/// NOTE: from the shortest digits that read back as `x` (serde_json's,
+/// which JSON writes every number with), rounded as decimal digits: far
+/// faster than the exact rounding, whose fallback to big integers was a
+/// third of the time of `report --full` of a tree of 2²⁰ instances. They
+/// round as `x` does unless they end in a tie, a `5` right after the
+/// digits kept: x lies within half an ulp of them, and for a normal x and
+/// up to 15 digits kept that is far less than a unit of the last digit;
+/// a boundary of the rounding (a decimal of one digit more, ending in 5)
+/// strictly between them and x would be a shorter or as short decimal
+/// nearer x, which the shortest digits are not. A tie is rounded exactly
+/// (Rust's `{:e}`, half to even on the exact value).
+/// (`the_shortest_digits_rounded_are_the_rounding`.)
 pub(super) fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
-    if places <= 14 && x.is_normal() {
-        let mut short = [0u8; 40];
-        let mut w = &mut short[..];
-        use serde_json::ser::Formatter as _;
-        if serde_json::ser::CompactFormatter
-            .write_f64(&mut w, x)
-            .is_ok()
-        {
-            let len = 40 - w.len();
-            if let Some((neg, all, exp)) = decimal(&short[..len])
-                && all.len() <= places + 1
-            {
-                let digits = &all[..];
-                let digit = |d: u8| char::from(b'0' + d);
-                let _ = buf.write_str(if neg { "-" } else { "" });
-                let _ = buf.write_char(digit(digits[0]));
-                if places > 0 {
-                    let _ = buf.write_char('.');
-                }
-                for k in 1..=places {
-                    let _ = buf.write_char(digit(digits.get(k).copied().unwrap_or(0)));
-                }
-                let _ = write!(buf, "e{exp}");
-                return;
+    if places <= 14
+        && x.is_normal()
+        && let Some((neg, digits, exp)) = rounded(x, places)
+    {
+        let digit = |d: u8| char::from(b'0' + d);
+        let _ = buf.write_str(if neg { "-" } else { "" });
+        let _ = buf.write_char(digit(digits[0]));
+        if places > 0 {
+            let _ = buf.write_char('.');
+        }
+        for k in 1..=places {
+            let _ = buf.write_char(digit(digits[k]));
+        }
+        let _ = write!(buf, "e{exp}");
+        return;
+    }
+    let _ = write!(buf, "{x:.places$e}");
+}
+
+/// `x` rounded to `places` + 1 significant digits from its shortest
+/// digits: its sign, the digits and the decimal exponent of the first;
+/// `None` at a tie (or where the shortest digits cannot be read).
+fn rounded(x: f64, places: usize) -> Option<(bool, [u8; 16], i32)> {
+    let mut short = [0u8; 40];
+    let mut w = &mut short[..];
+    use serde_json::ser::Formatter as _;
+    serde_json::ser::CompactFormatter.write_f64(&mut w, x).ok()?;
+    let len = 40 - w.len();
+    let (neg, all, mut exp) = decimal(&short[..len])?;
+    let kept = places + 1;
+    let mut out = [0u8; 16];
+    for (k, d) in out.iter_mut().enumerate().take(kept) {
+        *d = all.get(k).copied().unwrap_or(0);
+    }
+    let up = match all.get(kept) {
+        None => false,
+        Some(&d) if d != 5 => d > 5,
+        // A tie in the shortest digits: x is on either side of it.
+        Some(_) if all.len() == kept + 1 => return None,
+        Some(_) => true,
+    };
+    if up {
+        let mut k = kept;
+        loop {
+            if k == 0 {
+                // 9.99… rounded up: 1.00… times ten.
+                out[0] = 1;
+                exp += 1;
+                break;
+            }
+            k -= 1;
+            if out[k] == 9 {
+                out[k] = 0;
+            } else {
+                out[k] += 1;
+                break;
             }
         }
     }
-    let _ = write!(buf, "{x:.places$e}");
+    Some((neg, out, exp))
 }
 
 /// A number as serde_json writes one (`-12.5`, `1e-7`, `1.5e300`,
@@ -118,24 +153,26 @@ mod tests {
     }
 
     #[test]
-    fn the_shortest_digits_padded_are_the_rounding() {
+    fn the_shortest_digits_rounded_are_the_rounding() {
         use proptest::prelude::*;
         use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
         let mut runner = TestRunner::new_with_rng(
             Config::with_cases(20_000),
             TestRng::deterministic_rng(RngAlgorithm::ChaCha),
         );
-        // Every bit pattern (the slow path, mostly), and numbers of few
-        // digits (the fast one): integers, halves, short decimals, each
-        // scaled by a power of ten, and the doubles next to them.
+        // Every bit pattern; numbers of few digits (integers, halves,
+        // short decimals, each scaled by a power of ten, and the doubles
+        // next to them: ties and near ties of the rounding); and shares
+        // as the tables show them (100 a / b, a percentage).
         let few = (any::<i32>(), -30i32..30, 0u32..4, -2i64..=2).prop_map(|(m, e, cut, step)| {
             let m = f64::from(m / 10i32.pow(cut));
             let x = m * 10f64.powi(e);
             f64::from_bits(x.to_bits().wrapping_add_signed(step))
         });
         let any_bits = any::<u64>().prop_map(f64::from_bits);
+        let shares = (1u32..1_000_000, 1u32..5000).prop_map(|(a, b)| 100.0 * f64::from(a) / f64::from(b));
         runner
-            .run(&(prop_oneof![few, any_bits], 0usize..16), |(x, places)| {
+            .run(&(prop_oneof![few, any_bits, shares], 0usize..16), |(x, places)| {
                 if x.is_finite() {
                     same_as_exact(x, places);
                 }
