@@ -2,24 +2,15 @@
 //! `push_sig`'s `{:.N$e}`, from the shortest digits rounded, where they
 //! round as the number does.
 
+#[cfg(test)]
 use super::Ascii;
+#[cfg(test)]
 use std::fmt::Write;
 
-/// `x` as `{x:.places$e}` writes it: `places` digits after the point.
-///
-/// NOTE: from the shortest digits that read back as `x` (serde_json's,
-/// which JSON writes every number with), rounded as decimal digits: far
-/// faster than the exact rounding, whose fallback to big integers was a
-/// third of the time of `report --full` of a tree of 2²⁰ instances. They
-/// round as `x` does unless they end in a tie, a `5` right after the
-/// digits kept: x lies within half an ulp of them, and for a normal x and
-/// up to 15 digits kept that is far less than a unit of the last digit;
-/// a boundary of the rounding (a decimal of one digit more, ending in 5)
-/// strictly between them and x would be a shorter or as short decimal
-/// nearer x, which the shortest digits are not. A tie is rounded exactly
-/// (Rust's `{:e}`, half to even on the exact value).
-/// (`the_shortest_digits_rounded_are_the_rounding`.)
-pub(super) fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
+/// `x` as `{x:.places$e}` writes it: `places` digits after the point,
+/// from `rounded` where it rounds (what the tests hold to `{:e}`).
+#[cfg(test)]
+fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
     if places <= 14
         && x.is_normal()
         && let Some((neg, digits, exp)) = rounded(x, places)
@@ -39,9 +30,107 @@ pub(super) fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
     let _ = write!(buf, "{x:.places$e}");
 }
 
+/// `push_sig`'s text of `x` to `places` + 1 significant digits, after
+/// `out`, made from the rounded digits (`rounded`) with no text between:
+/// whether it was (else a tie, a number not normal, more than 15 digits
+/// or a whole number past the digits, `push_sig`'s own path).
+///
+/// NOTE: the same text as `push_sig` writes from `{x:.places$e}`: with an
+/// exponent outside −4..6, the digits without trailing zeros; else fixed,
+/// trailing zeros and a bare point dropped
+/// (`push_sig_from_the_rounded_digits_is_push_sig_from_the_exact_rounding`).
+pub(super) fn push_sig_fast(out: &mut String, x: f64, places: usize) -> bool {
+    if places > 14 || !x.is_normal() {
+        return false;
+    }
+    let Some((neg, d, exp)) = rounded(x, places) else {
+        return false;
+    };
+    let digit = |d: u8| char::from(b'0' + d);
+    let start = out.len();
+    if neg {
+        out.push('-');
+    }
+    if !(-4..6).contains(&exp) {
+        out.push(digit(d[0]));
+        // The digits after the first, without trailing zeros.
+        let last = (1..=places).rev().find(|&k| d[k] != 0);
+        if let Some(last) = last {
+            out.push('.');
+            for &k in &d[1..=last] {
+                out.push(digit(k));
+            }
+        }
+        out.push('e');
+        push_int(out, exp);
+        return true;
+    }
+    if exp > places as i32 {
+        out.truncate(start);
+        return false;
+    }
+    // Fixed: the digits before the point, then after it.
+    let (before, zeros) = if exp >= 0 {
+        (exp as usize + 1, 0)
+    } else {
+        (0, (-exp - 1) as usize)
+    };
+    if before == 0 {
+        out.push('0');
+    }
+    for &k in &d[..before] {
+        out.push(digit(k));
+    }
+    let last = (before..=places).rev().find(|&k| d[k] != 0);
+    if let Some(last) = last {
+        out.push('.');
+        for _ in 0..zeros {
+            out.push('0');
+        }
+        for &k in &d[before..=last] {
+            out.push(digit(k));
+        }
+    }
+    true
+}
+
+/// `n` in decimal, as `{n}` writes it.
+fn push_int(out: &mut String, n: i32) {
+    if n < 0 {
+        out.push('-');
+    }
+    let mut m = n.unsigned_abs();
+    let mut digits = [0u8; 10];
+    let mut k = digits.len();
+    loop {
+        k -= 1;
+        digits[k] = b'0' + (m % 10) as u8;
+        m /= 10;
+        if m == 0 {
+            break;
+        }
+    }
+    for &b in &digits[k..] {
+        out.push(char::from(b));
+    }
+}
+
 /// `x` rounded to `places` + 1 significant digits from its shortest
 /// digits: its sign, the digits and the decimal exponent of the first;
 /// `None` at a tie (or where the shortest digits cannot be read).
+///
+/// NOTE: from the shortest digits that read back as `x` (serde_json's,
+/// which JSON writes every number with), rounded as decimal digits: far
+/// faster than the exact rounding, whose fallback to big integers was a
+/// third of the time of `report --full` of a tree of 2²⁰ instances. They
+/// round as `x` does unless they end in a tie, a `5` right after the
+/// digits kept: x lies within half an ulp of them, and for a normal x and
+/// up to 15 digits kept that is far less than a unit of the last digit;
+/// a boundary of the rounding (a decimal of one digit more, ending in 5)
+/// strictly between them and x would be a shorter or as short decimal
+/// nearer x, which the shortest digits are not. A tie is rounded exactly
+/// (Rust's `{:e}`, half to even on the exact value).
+/// (`the_shortest_digits_rounded_are_the_rounding`.)
 fn rounded(x: f64, places: usize) -> Option<(bool, [u8; 16], i32)> {
     let mut short = [0u8; 40];
     let mut w = &mut short[..];
@@ -150,6 +239,39 @@ mod tests {
             format!("{x:.places$e}"),
             "{x:e}, {places} places"
         );
+    }
+
+    #[test]
+    fn push_sig_from_the_rounded_digits_is_push_sig_from_the_exact_rounding() {
+        use proptest::prelude::*;
+        use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+        let mut runner = TestRunner::new_with_rng(
+            Config::with_cases(20_000),
+            TestRng::deterministic_rng(RngAlgorithm::ChaCha),
+        );
+        let few = (any::<i32>(), -12i32..12, 0u32..4, -2i64..=2).prop_map(|(m, e, cut, step)| {
+            let m = f64::from(m / 10i32.pow(cut));
+            let x = m * 10f64.powi(e);
+            f64::from_bits(x.to_bits().wrapping_add_signed(step))
+        });
+        let any_bits = any::<u64>().prop_map(f64::from_bits);
+        let shares =
+            (1u32..1_000_000, 1u32..5000).prop_map(|(a, b)| 100.0 * f64::from(a) / f64::from(b));
+        runner
+            .run(
+                &(prop_oneof![few, any_bits, shares], 1usize..=15),
+                |(x, digits)| {
+                    if x.is_finite() {
+                        let mut fast = String::from("≤");
+                        let mut exact = String::from("≤");
+                        super::super::push_sig(&mut fast, x, digits);
+                        super::super::push_sig_exact(&mut exact, x, digits);
+                        prop_assert_eq!(fast, exact, "{:e}, {} digits", x, digits);
+                    }
+                    Ok(())
+                },
+            )
+            .unwrap();
     }
 
     #[test]
