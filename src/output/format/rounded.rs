@@ -46,72 +46,94 @@ pub(super) fn push_sig_fast(out: &mut String, x: f64, places: usize) -> bool {
     let Some((neg, d, exp)) = rounded(x, places) else {
         return false;
     };
-    let digit = |d: u8| char::from(b'0' + d);
-    let start = out.len();
+    // Made as bytes (at most a sign, 15 digits, a point, 4 zeros and an
+    // exponent's 5), then appended at once.
+    let mut text = Text::default();
     if neg {
-        out.push('-');
+        text.push(b'-');
     }
     if !(-4..6).contains(&exp) {
-        out.push(digit(d[0]));
+        text.push(b'0' + d[0]);
         // The digits after the first, without trailing zeros.
-        let last = (1..=places).rev().find(|&k| d[k] != 0);
-        if let Some(last) = last {
-            out.push('.');
-            for &k in &d[1..=last] {
-                out.push(digit(k));
-            }
+        if let Some(last) = (1..=places).rev().find(|&k| d[k] != 0) {
+            text.push(b'.');
+            text.digits(&d[1..=last]);
         }
-        out.push('e');
-        push_int(out, exp);
-        return true;
-    }
-    if exp > places as i32 {
-        out.truncate(start);
+        text.push(b'e');
+        text.int(exp);
+    } else if exp > places as i32 {
         return false;
-    }
-    // Fixed: the digits before the point, then after it.
-    let (before, zeros) = if exp >= 0 {
-        (exp as usize + 1, 0)
     } else {
-        (0, (-exp - 1) as usize)
-    };
-    if before == 0 {
-        out.push('0');
-    }
-    for &k in &d[..before] {
-        out.push(digit(k));
-    }
-    let last = (before..=places).rev().find(|&k| d[k] != 0);
-    if let Some(last) = last {
-        out.push('.');
-        for _ in 0..zeros {
-            out.push('0');
+        // Fixed: the digits before the point, then after it.
+        let (before, zeros) = if exp >= 0 {
+            (exp as usize + 1, 0)
+        } else {
+            (0, (-exp - 1) as usize)
+        };
+        if before == 0 {
+            text.push(b'0');
         }
-        for &k in &d[before..=last] {
-            out.push(digit(k));
+        text.digits(&d[..before]);
+        if let Some(last) = (before..=places).rev().find(|&k| d[k] != 0) {
+            text.push(b'.');
+            for _ in 0..zeros {
+                text.push(b'0');
+            }
+            text.digits(&d[before..=last]);
         }
     }
+    out.push_str(std::str::from_utf8(text.as_bytes()).expect("invariant: ASCII"));
     true
 }
 
-/// `n` in decimal, as `{n}` writes it.
-fn push_int(out: &mut String, n: i32) {
-    if n < 0 {
-        out.push('-');
-    }
-    let mut m = n.unsigned_abs();
-    let mut digits = [0u8; 10];
-    let mut k = digits.len();
-    loop {
-        k -= 1;
-        digits[k] = b'0' + (m % 10) as u8;
-        m /= 10;
-        if m == 0 {
-            break;
+/// A number's text as it is made, on the stack.
+struct Text {
+    bytes: [u8; 40],
+    len: usize,
+}
+
+impl Default for Text {
+    fn default() -> Text {
+        Text {
+            bytes: [0; 40],
+            len: 0,
         }
     }
-    for &b in &digits[k..] {
-        out.push(char::from(b));
+}
+
+impl Text {
+    fn push(&mut self, b: u8) {
+        self.bytes[self.len] = b;
+        self.len += 1;
+    }
+
+    fn digits(&mut self, d: &[u8]) {
+        for &k in d {
+            self.push(b'0' + k);
+        }
+    }
+
+    /// `n` in decimal, as `{n}` writes it.
+    fn int(&mut self, n: i32) {
+        if n < 0 {
+            self.push(b'-');
+        }
+        let mut m = n.unsigned_abs();
+        let mut digits = [0u8; 10];
+        let mut k = digits.len();
+        loop {
+            k -= 1;
+            digits[k] = (m % 10) as u8;
+            m /= 10;
+            if m == 0 {
+                break;
+            }
+        }
+        self.digits(&digits[k..]);
+    }
+
+    fn as_bytes(&self) -> &[u8] {
+        &self.bytes[..self.len]
     }
 }
 
