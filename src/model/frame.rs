@@ -378,8 +378,9 @@ impl Frame {
 
     /// `place`'s numbers alone (the same arithmetic), without the bound of
     /// their rounding (`Spec::placed`, left as it was): for the report's
-    /// rows (`Model::each_row`), which show the numbers only. (The bound
-    /// was half of a row's placing through 20 frames.)
+    /// rows (`Model::each_row`), which show the numbers only. (perf, the
+    /// JSON of 2¹⁷ instances: `place` 7 % of the time, `Place::moved`,
+    /// the numbers, 3 %.)
     pub(super) fn place_numbers(&self, s: &mut Spec) {
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,

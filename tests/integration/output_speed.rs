@@ -275,7 +275,10 @@ fn each_part_row_is_its_part_placed_through_every_frame_of_its_path() {
         let mass = if what.ends_with("rod") { 2.0 } else { 0.3 };
         assert_eq!(row["mass"].as_f64().unwrap(), mass, "{what}");
         let fraction = row["mass_fraction"].as_f64().unwrap();
-        assert!((fraction - mass / total).abs() <= 4.0 * f64::EPSILON, "{what}");
+        assert!(
+            (fraction - mass / total).abs() <= 4.0 * f64::EPSILON,
+            "{what}"
+        );
     }
 }
 
@@ -337,11 +340,7 @@ fn the_full_tables_part_rows_show_the_json_rows() {
             .collect();
         assert_eq!(body.len(), rows.len(), "leaf {leaf}");
         for (k, (line, row)) in body.iter().zip(rows).enumerate() {
-            let cells: Vec<&str> = line
-                .trim_matches('│')
-                .split('┆')
-                .map(str::trim)
-                .collect();
+            let cells: Vec<&str> = line.trim_matches('│').split('┆').map(str::trim).collect();
             assert_eq!(cells[0], (k + 1).to_string());
             assert_eq!(cells[1], row["name"].as_str().unwrap());
             assert_eq!(cells[2], row["shape"].as_str().unwrap());

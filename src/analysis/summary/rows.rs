@@ -91,7 +91,12 @@ impl Parts {
         s.model.each_row(&mut |e| match e {
             RowEvent::Enter(name) => f(Row::Enter(name)),
             RowEvent::Exit => f(Row::Exit),
-            RowEvent::Part { part: p, own, k, copy } => {
+            RowEvent::Part {
+                part: p,
+                own,
+                k,
+                copy,
+            } => {
                 // NOTE: as `Part::mass_si` and `Part::center_si`, the
                 // mass and the centroid formed once for both.
                 let m: f64 = p.mass();

@@ -21,8 +21,8 @@ fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
         if places > 0 {
             let _ = buf.write_char('.');
         }
-        for k in 1..=places {
-            let _ = buf.write_char(digit(digits[k]));
+        for &d in &digits[1..=places] {
+            let _ = buf.write_char(digit(d));
         }
         let _ = write!(buf, "e{exp}");
         return;
@@ -157,7 +157,9 @@ fn rounded(x: f64, places: usize) -> Option<(bool, [u8; 16], i32)> {
     let mut short = [0u8; 40];
     let mut w = &mut short[..];
     use serde_json::ser::Formatter as _;
-    serde_json::ser::CompactFormatter.write_f64(&mut w, x).ok()?;
+    serde_json::ser::CompactFormatter
+        .write_f64(&mut w, x)
+        .ok()?;
     let len = 40 - w.len();
     let (neg, all, mut exp) = decimal(&short[..len])?;
     let kept = places + 1;
@@ -314,14 +316,18 @@ mod tests {
             f64::from_bits(x.to_bits().wrapping_add_signed(step))
         });
         let any_bits = any::<u64>().prop_map(f64::from_bits);
-        let shares = (1u32..1_000_000, 1u32..5000).prop_map(|(a, b)| 100.0 * f64::from(a) / f64::from(b));
+        let shares =
+            (1u32..1_000_000, 1u32..5000).prop_map(|(a, b)| 100.0 * f64::from(a) / f64::from(b));
         runner
-            .run(&(prop_oneof![few, any_bits, shares], 0usize..16), |(x, places)| {
-                if x.is_finite() {
-                    same_as_exact(x, places);
-                }
-                Ok(())
-            })
+            .run(
+                &(prop_oneof![few, any_bits, shares], 0usize..16),
+                |(x, places)| {
+                    if x.is_finite() {
+                        same_as_exact(x, places);
+                    }
+                    Ok(())
+                },
+            )
             .unwrap();
         for x in [
             1.0,
