@@ -363,6 +363,25 @@ impl Frame {
     /// time of a report of 2²⁰ instances).
     pub(super) fn place(&self, s: &mut Spec) {
         let reach = s.place.reach() * self.length;
+        self.place_numbers(s);
+        s.placed = self.rounding(s.placed, reach);
+        // A prism's vertices, scaled in its own frame, round each by a unit
+        // of their distance from its origin (`Place::scaled_rounding`).
+        if self.length != 1.0
+            && let Some(units) = s.place.scaled_rounding()
+        {
+            s.placed =
+                crate::part::Placed::new(f64::from(s.placed.units) + units, f64::from(s.placed.at))
+                    .with_mass(f64::from(s.placed.mass));
+        }
+    }
+
+    /// `place`'s numbers alone (the same arithmetic), without the bound of
+    /// their rounding (`Spec::placed`, left as it was): for the report's
+    /// rows (`Model::each_row`), which show the numbers only. (perf, the
+    /// JSON of 2¹⁷ instances: `place` 7 % of the time, `Place::moved`,
+    /// the numbers, 3 %.)
+    pub(super) fn place_numbers(&self, s: &mut Spec) {
         match &mut s.mass {
             MassSpec::Given(m) => *m *= self.mass,
             MassSpec::Density(d) => {
@@ -374,16 +393,6 @@ impl Frame {
         s.place.moved(self);
         if self.mirror {
             s.place.mirror();
-        }
-        s.placed = self.rounding(s.placed, reach);
-        // A prism's vertices, scaled in its own frame, round each by a unit
-        // of their distance from its origin (`Place::scaled_rounding`).
-        if self.length != 1.0
-            && let Some(units) = s.place.scaled_rounding()
-        {
-            s.placed =
-                crate::part::Placed::new(f64::from(s.placed.units) + units, f64::from(s.placed.at))
-                    .with_mass(f64::from(s.placed.mass));
         }
     }
 

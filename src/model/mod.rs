@@ -40,7 +40,7 @@ pub mod walk;
 pub use copies::{Copies, push_copy_name};
 pub use frame::Frame;
 pub use include::Includes;
-pub use walk::{Event, Leaf};
+pub use walk::{Event, Leaf, RowEvent};
 
 use crate::diag::{Diagnostic, Source};
 use crate::la::Vector3;

@@ -150,6 +150,15 @@ trait Visit {
     const RUNS: bool;
     fn event(&mut self, e: Event<'_>);
     fn again(&mut self, n: usize);
+    /// A sub-assembly entered: its copy `copy` (`Rows` names it).
+    fn enter(&mut self, inc: &Include, _copy: Option<usize>) {
+        self.event(Event::Enter(inc));
+    }
+    /// A part, `k` its position in its file, its copy `copy` (`Rows`
+    /// names it).
+    fn leaf(&mut self, l: Leaf<'_>, _k: usize, _copy: Option<usize>) {
+        self.event(Event::Part(l));
+    }
 }
 
 struct Events<'f>(&'f mut dyn FnMut(Event<'_>));
@@ -171,6 +180,69 @@ impl Visit for Runs<'_> {
     }
     fn again(&mut self, n: usize) {
         (self.0)(Run::Again(n));
+    }
+}
+
+/// What a walk for the report's rows meets (`Model::each_row`), in file
+/// order: a sub-assembly entered, with the name its row path shows
+/// (`wheel[2]` for a copy); a part, placed (its numbers only: no bound of
+/// its rounding is formed), with what names it; the sub-assembly left.
+pub enum RowEvent<'a> {
+    Enter(&'a str),
+    Part {
+        /// Placed into the root's frame and units, its numbers the same
+        /// bits as `each_part`'s.
+        part: &'a Part,
+        /// As its own file gives it (its `name` and `named`), `k` its
+        /// position in that file and `copy` which copy it is.
+        own: &'a Part,
+        k: usize,
+        copy: Option<usize>,
+    },
+    Exit,
+}
+
+impl RowEvent<'_> {
+    /// A part's own name, as its row shows it after the path of its
+    /// sub-assemblies: its name, or `part N`, with its copy's index.
+    pub fn push_own_name(out: &mut String, own: &Part, k: usize, copy: Option<usize>) {
+        write_name(out, "", k, own, copy);
+    }
+}
+
+/// `RowEvent`s handed out, each name made once per sub-assembly entered.
+struct Rows<'f> {
+    f: &'f mut dyn FnMut(RowEvent<'_>),
+    name: String,
+}
+
+impl Visit for Rows<'_> {
+    const RUNS: bool = false;
+    fn event(&mut self, e: Event<'_>) {
+        match e {
+            // Named by `enter`.
+            Event::Enter(_) => {}
+            // Handed out by `leaf`.
+            Event::Part(_) => {}
+            Event::Exit => (self.f)(RowEvent::Exit),
+        }
+    }
+    fn again(&mut self, _: usize) {}
+    fn enter(&mut self, inc: &Include, copy: Option<usize>) {
+        self.name.clear();
+        match copy {
+            None => self.name.push_str(&inc.name),
+            Some(i) => push_copy_name(&mut self.name, &inc.name, i),
+        }
+        (self.f)(RowEvent::Enter(&self.name));
+    }
+    fn leaf(&mut self, l: Leaf<'_>, k: usize, copy: Option<usize>) {
+        (self.f)(RowEvent::Part {
+            part: l.part,
+            own: l.own,
+            k,
+            copy,
+        });
     }
 }
 
@@ -278,6 +350,23 @@ impl Model {
         self.walk_with(false, &mut 0, &mut Runs(f));
     }
 
+    /// Every part of the body, in file order, for the report's rows
+    /// (`RowEvent`): each sub-assembly named once as it is entered, not
+    /// per part; each part placed through the same frames by the same
+    /// arithmetic as `each_part` (the same bits), without the bound of
+    /// its rounding (`Frame::place_numbers`), which no row shows.
+    pub fn each_row(&self, f: &mut dyn FnMut(RowEvent<'_>)) {
+        let mut walk = self.walker(false);
+        walk.bounds = false;
+        walk.items(
+            self,
+            &mut Rows {
+                f,
+                name: String::new(),
+            },
+        );
+    }
+
     /// Walk the items, `next` the index of the next part.
     pub(super) fn walk(&self, named: bool, next: &mut usize, f: &mut dyn FnMut(Event<'_>)) {
         self.walk_with(named, next, &mut Events(f));
@@ -293,6 +382,7 @@ impl Model {
     fn walker(&self, named: bool) -> Walk<'_> {
         Walk {
             own_only: false,
+            bounds: true,
             frames: Vec::new(),
             keys: vec![0],
             named,
@@ -363,6 +453,9 @@ pub struct Shift<'a> {
 struct Walk<'m> {
     /// Whether sub-assemblies are passed over (`Model::each_own_part`).
     own_only: bool,
+    /// Whether a placed part's bound of its rounding is formed
+    /// (`Spec::placed`); not for the rows (`Model::each_row`).
+    bounds: bool,
     /// The frames entered, outermost first.
     frames: Vec<Layer<'m>>,
     /// The instance key of each file entered (`Placing::file`), the root's
@@ -504,7 +597,7 @@ impl<'m> Walk<'m> {
         copy: Option<usize>,
         f: &mut impl Visit,
     ) {
-        f.event(Event::Enter(inc));
+        f.enter(inc, copy);
         let file = *self.keys.last().expect("the root's key");
         let key = mix(file, k as u64, copy.map_or(u64::MAX, |i| i as u64));
         self.keys.push(key);
@@ -574,14 +667,15 @@ impl<'m> Walk<'m> {
         let placed = &mut self.placed;
         let Some(outermost) = self.frames.first() else {
             if !unnamed && copy.is_none() {
-                f.event(Event::Part(Leaf {
+                let leaf = Leaf {
                     index,
                     part,
                     real,
                     own: part,
                     placing,
                     tag,
-                }));
+                };
+                f.leaf(leaf, k, copy);
                 return;
             }
             // As `placed.clone_from(part)`, its buffers kept.
@@ -599,14 +693,15 @@ impl<'m> Walk<'m> {
                 write_name(&mut placed.name, "", k, part, copy);
                 placed.named = true;
             }
-            f.event(Event::Part(Leaf {
+            let leaf = Leaf {
                 index,
                 part: placed,
                 real,
                 own: part,
                 placing,
                 tag,
-            }));
+            };
+            f.leaf(leaf, k, copy);
             return;
         };
         if moved {
@@ -615,8 +710,10 @@ impl<'m> Walk<'m> {
             reset::shared(&mut placed.material, &part.material);
         }
         for layer in self.frames.iter().rev() {
-            if moved {
+            if moved && self.bounds {
                 layer.frame.place(&mut placed.spec);
+            } else if moved {
+                layer.frame.place_numbers(&mut placed.spec);
             }
             if let Some(r) = &mut real {
                 r.size *= layer.frame.length;
@@ -626,14 +723,15 @@ impl<'m> Walk<'m> {
             placed.name.clear();
             write_name(&mut placed.name, &self.prefix, k, part, copy);
         }
-        f.event(Event::Part(Leaf {
+        let leaf = Leaf {
             index,
             part: placed,
             real,
             own: part,
             placing,
             tag,
-        }));
+        };
+        f.leaf(leaf, k, copy);
     }
 }
 

@@ -10,6 +10,8 @@ use crate::compose::{EQUAL_MOMENT_RTOL, Precision};
 use crate::units::{Dim, FileUnits};
 use std::fmt::Write;
 
+mod rounded;
+
 /// How an undefined ratio (a share of a zero moment, a change relative to
 /// zero) is shown in every table.
 pub const UNDEFINED: &str = "—";
@@ -175,6 +177,16 @@ pub fn fmt_sig(x: f64, digits: usize) -> String {
 /// of 100,000 parts formats ~800,000 numbers.
 pub fn push_sig(out: &mut String, x: f64, digits: usize) {
     debug_assert!((1..=40).contains(&digits), "the buffers hold 40 digits");
+    // NOTE: almost every number: the same text from the shortest digits,
+    // rounded (`rounded`: the table of 2²⁰ parts formats 18 million).
+    if !rounded::push_sig_fast(out, x, digits.max(1) - 1) {
+        push_sig_exact(out, x, digits);
+    }
+}
+
+/// `push_sig` from the exact rounding (`{:.N$e}`): a tie of the shortest
+/// digits, and the reference in the tests.
+fn push_sig_exact(out: &mut String, x: f64, digits: usize) {
     if x == 0.0 {
         out.push('0');
         return;

@@ -212,9 +212,9 @@ pub fn stream_table(
     let mut lines = vec![1; n];
     let mut multiline = false;
     let mut measure = |i: usize, c: &str| {
-        let w = c.width();
+        let w = cell_width(c);
         widths[i] = widths[i].max(w);
-        if c.contains('\n') {
+        if !printable_ascii(c) && c.contains('\n') {
             multiline = true;
             lines[i] = lines[i].max(c.split('\n').map(str::width).max().unwrap_or(0));
         } else {
@@ -284,14 +284,14 @@ fn write_part(
             if !shown[i] {
                 continue;
             }
-            let pad = widths[i] - c.width();
+            let pad = widths[i] - cell_width(c);
             out.push(' ');
             if right[i] {
-                out.extend(std::iter::repeat_n(' ', pad));
+                push_spaces(out, pad);
                 out.push_str(c);
             } else {
                 out.push_str(c);
-                out.extend(std::iter::repeat_n(' ', pad));
+                push_spaces(out, pad);
             }
             out.push(' ');
             out.push(if i == last { '│' } else { '┆' });
@@ -318,6 +318,32 @@ fn write_part(
     failed?;
     rule(&mut buf, ['└', '─', '┴', '┘']);
     out.write_all(buf.as_bytes())
+}
+
+/// Whether `c` is printable ASCII alone: a column a character, no break.
+fn printable_ascii(c: &str) -> bool {
+    c.bytes().all(|b| (0x20..0x7f).contains(&b))
+}
+
+/// The columns `c` takes: `width()`, which is its length in bytes for
+/// printable ASCII (what almost every cell of a row per part is: the
+/// table of 2²⁰ parts measures and pads 22 million cells).
+fn cell_width(c: &str) -> usize {
+    if printable_ascii(c) {
+        c.len()
+    } else {
+        c.width()
+    }
+}
+
+/// `n` spaces after `out`, as `str`s rather than char by char.
+fn push_spaces(out: &mut String, mut n: usize) {
+    const SPACES: &str = "                                ";
+    while n > 0 {
+        let k = n.min(SPACES.len());
+        out.push_str(&SPACES[..k]);
+        n -= k;
+    }
 }
 
 /// The columns `cols` of a table with a line break in a cell or in the

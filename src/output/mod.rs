@@ -157,6 +157,14 @@ pub fn json_line_to<T: serde::Serialize + ?Sized>(
     w.flush()
 }
 
+/// A serializer of `json_line`'s JSON into `w`, unbuffered (the report's
+/// rows are written between its tokens: `report::write_json_to`).
+pub(crate) fn json_serializer<W: std::io::Write>(
+    w: W,
+) -> serde_json::Serializer<W, impl serde_json::ser::Formatter> {
+    serde_json::Serializer::with_formatter(w, ControlsEscaped)
+}
+
 /// serde_json's compact formatter, with DEL and C1 controls escaped and
 /// every real written as a float without a sign on zero.
 struct ControlsEscaped;

@@ -8,7 +8,7 @@ use super::format::{
 };
 use super::grid::{Cells, Fit, stream_table, write_rows, write_table};
 use crate::analysis::ideal::Idealisation;
-use crate::analysis::summary::Summary;
+use crate::analysis::summary::{Row, Summary};
 use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
@@ -16,6 +16,7 @@ use std::fmt::Write;
 mod axles;
 pub mod cases;
 pub mod envelope;
+mod json_rows;
 mod motion;
 mod short;
 
@@ -275,9 +276,10 @@ pub fn write_detail_to(
     }
 }
 
-/// The report as one JSON object, written to `w` as it is made.
+/// The report as one JSON object, written to `w` as it is made: the same
+/// bytes as `json`, the part rows written by `json_rows`.
 pub fn write_json_to(summary: &Summary, w: &mut dyn std::io::Write) -> std::io::Result<()> {
-    super::json_line_to(summary, w)
+    json_rows::write(summary, w)
 }
 
 /// `table` (the full report), written to `w` as it is made: the rows of parts and
@@ -465,14 +467,38 @@ pub fn write_table_to(
         groups: &[(5, 8), (8, 11)],
         ..Fit::new(width, 2)
     };
+    // NOTE: the path of sub-assemblies (`a / b / `) is made once per
+    // sub-assembly entered (`Parts::each_row`), not per part; each row's
+    // name is that and the part's own.
+    let mut prefix = String::new();
+    let mut lengths = Vec::new();
+    let mut name = String::new();
     stream_table(w, &header, &right, parts_fit, &mut |sink| {
         let mut i = 0usize;
-        s.parts.each(&mut |p| {
+        prefix.clear();
+        lengths.clear();
+        s.parts.each_row(&mut |r| {
+            let p = match r {
+                Row::Enter(n) => {
+                    lengths.push(prefix.len());
+                    prefix.push_str(n);
+                    prefix.push_str(" / ");
+                    return;
+                }
+                Row::Exit => {
+                    prefix.truncate(lengths.pop().expect("an Exit follows its Enter"));
+                    return;
+                }
+                Row::Part(p) => p,
+            };
             cells.clear();
             i += 1;
             let _ = write!(cells.text, "{i}");
             cells.end();
-            push_name(&mut cells.text, &p.name);
+            name.clear();
+            name.push_str(&prefix);
+            p.push_name(&mut name);
+            push_name(&mut cells.text, &name);
             cells.end();
             cells.text.push_str(p.shape.name());
             cells.end();

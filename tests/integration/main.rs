@@ -47,6 +47,7 @@ mod meshes;
 mod motion_sigma;
 mod new_shapes;
 mod oracle;
+mod output_speed;
 mod package;
 mod params;
 mod physics;

@@ -10,7 +10,8 @@
 
 use super::{AssemblySummary, PartSummary, formed::arr};
 use crate::analysis::ideal::Shares;
-use crate::model::{Event, Item, Model};
+use crate::model::{Item, Model, RowEvent};
+use crate::numeric::{DD, Real};
 use crate::part::SiFactors;
 use serde::ser::SerializeSeq;
 use std::sync::Arc;
@@ -45,7 +46,6 @@ impl Parts {
 
     /// Each part's row, in file order.
     pub fn each(&self, f: &mut dyn FnMut(&PartSummary)) {
-        let s = &*self.0;
         let mut row = PartSummary {
             name: String::new(),
             shape: crate::shapes::Shape::ALL[0],
@@ -55,20 +55,65 @@ impl Parts {
             principal_moment_share: [None; 3],
             assembly: Vec::new(),
         };
-        s.model.each_part(&mut |l| {
-            let p = l.part;
-            let m = p.mass_si(&s.factors);
-            row.name.clear();
-            row.name.push_str(&p.name);
-            row.shape = p.shape();
-            row.mass = m;
-            row.mass_fraction = m / s.mass;
-            row.center_of_mass = arr(&p.center_si(&s.factors));
-            row.principal_moment_share = s.shares.of(p);
-            if row.assembly != p.assembly {
-                row.assembly.clone_from(&p.assembly);
+        // `a / b / `: the path, as the row's name begins.
+        let mut prefix = String::new();
+        let mut lengths = Vec::new();
+        self.each_row(&mut |r| match r {
+            Row::Enter(name) => {
+                lengths.push(prefix.len());
+                prefix.push_str(name);
+                prefix.push_str(" / ");
+                row.assembly.push(name.to_string());
             }
-            f(&row);
+            Row::Exit => {
+                prefix.truncate(lengths.pop().expect("an Exit follows its Enter"));
+                row.assembly.pop();
+            }
+            Row::Part(p) => {
+                row.name.clear();
+                row.name.push_str(&prefix);
+                p.push_name(&mut row.name);
+                row.shape = p.shape;
+                row.mass = p.mass;
+                row.mass_fraction = p.mass_fraction;
+                row.center_of_mass = p.center_of_mass;
+                row.principal_moment_share = p.principal_moment_share;
+                f(&row);
+            }
+        });
+    }
+
+    /// Each part's row, in file order, with the path of sub-assemblies as
+    /// it changes (`Row::Enter`, `Row::Exit`): a writer makes each
+    /// sub-assembly's part of the rows once, not once per part in it.
+    pub fn each_row(&self, f: &mut dyn FnMut(Row<'_>)) {
+        let s = &*self.0;
+        s.model.each_row(&mut |e| match e {
+            RowEvent::Enter(name) => f(Row::Enter(name)),
+            RowEvent::Exit => f(Row::Exit),
+            RowEvent::Part {
+                part: p,
+                own,
+                k,
+                copy,
+            } => {
+                // NOTE: as `Part::mass_si` and `Part::center_si`, the
+                // mass and the centroid formed once for both.
+                let m: f64 = p.mass();
+                let mass = (DD::of(m) * s.factors.mass).f64();
+                let c = p.centroid();
+                let row = PartRow {
+                    own,
+                    k,
+                    copy,
+                    shape: p.shape(),
+                    mass,
+                    mass_fraction: mass / s.mass,
+                    center_of_mass: c.map(|x| (x * s.factors.length).f64()),
+                    principal_moment_share: s.shares.of(p),
+                };
+                f(Row::Part(&row));
+            }
         });
     }
 
@@ -77,6 +122,35 @@ impl Parts {
         let mut all = Vec::with_capacity(self.len());
         self.each(&mut |r| all.push(r.clone()));
         all
+    }
+}
+
+/// What `Parts::each_row` meets, in file order: a sub-assembly entered
+/// (its name in the path: `wheel[2]` for a copy), a part's row, the
+/// sub-assembly left.
+pub enum Row<'a> {
+    Enter(&'a str),
+    Part(&'a PartRow<'a>),
+    Exit,
+}
+
+/// A part's row without its path (`PartSummary`'s other fields).
+pub struct PartRow<'a> {
+    own: &'a crate::part::Part,
+    k: usize,
+    copy: Option<usize>,
+    pub shape: crate::shapes::Shape,
+    pub mass: f64,
+    pub mass_fraction: f64,
+    pub center_of_mass: [f64; 3],
+    pub principal_moment_share: [Option<f64>; 3],
+}
+
+impl PartRow<'_> {
+    /// Its name after the path: its own, or `part N`, with its copy's
+    /// index.
+    pub fn push_name(&self, out: &mut String) {
+        RowEvent::push_own_name(out, self.own, self.k, self.copy);
     }
 }
 
@@ -111,6 +185,34 @@ impl Assemblies {
     /// the second walk, of the sub-assemblies alone, writes them in that
     /// order with their paths.
     pub fn each(&self, f: &mut dyn FnMut(&AssemblySummary)) {
+        let mut row = AssemblySummary {
+            path: Vec::new(),
+            parts: 0,
+            mass: 0.0,
+            mass_fraction: 0.0,
+            center_of_mass: [0.0; 3],
+            principal_moment_share: [None; 3],
+        };
+        self.each_row(&mut |r| match r {
+            AssemblyRow::Enter(name, sums) => {
+                row.path.push(name.to_string());
+                row.parts = sums.parts;
+                row.mass = sums.mass;
+                row.mass_fraction = sums.mass_fraction;
+                row.center_of_mass = sums.center_of_mass;
+                row.principal_moment_share = sums.principal_moment_share;
+                f(&row);
+            }
+            AssemblyRow::Exit => {
+                row.path.pop();
+            }
+        });
+    }
+
+    /// Each sub-assembly's row, parents before children, its path as it
+    /// changes: `AssemblyRow::Enter` with its name and its row (its
+    /// `path` left empty), then its children's, then `AssemblyRow::Exit`.
+    pub fn each_row(&self, f: &mut dyn FnMut(AssemblyRow<'_>)) {
         let s = &*self.0;
         /// A sub-assembly being summed: where its sums go, its items'
         /// masses and centres, its parts and shares.
@@ -122,8 +224,10 @@ impl Assemblies {
         }
         let mut sums: Vec<Sums> = Vec::new();
         let mut open: Vec<Open> = Vec::new();
-        s.model.each_event(&mut |e| match e {
-            Event::Enter(_) => {
+        // NOTE: the parts placed as the rows' walk places them: the same
+        // bits, no bound of their rounding formed (`Model::each_row`).
+        s.model.each_row(&mut |e| match e {
+            RowEvent::Enter(_) => {
                 open.push(Open {
                     at: sums.len(),
                     items: Vec::new(),
@@ -137,9 +241,8 @@ impl Assemblies {
                     share: [None; 3],
                 });
             }
-            Event::Part(l) => {
+            RowEvent::Part { part: p, .. } => {
                 if let Some(top) = open.last_mut() {
-                    let p = l.part;
                     top.items
                         .push((p.mass_si(&s.factors), arr(&p.center_si(&s.factors))));
                     top.parts += 1;
@@ -149,7 +252,7 @@ impl Assemblies {
                     }
                 }
             }
-            Event::Exit => {
+            RowEvent::Exit => {
                 let done = open.pop().expect("an Exit follows its Enter");
                 let mass: f64 = done.items.iter().map(|(m, _)| m).sum();
                 let center_of_mass =
@@ -201,36 +304,43 @@ fn write(
     next: &mut usize,
     row: &mut AssemblySummary,
     total: f64,
-    f: &mut dyn FnMut(&AssemblySummary),
+    f: &mut dyn FnMut(AssemblyRow<'_>),
 ) {
+    let mut name = String::new();
     for item in model.items.iter() {
         let Item::Include(inc) = item else { continue };
         // A sub-assembly with copies is a row per copy, `wheel[i]`, as the
         // walk entered them.
-        let mut one = |name: String, next: &mut usize, row: &mut AssemblySummary| {
+        let mut one = |name: &str, next: &mut usize, row: &mut AssemblySummary| {
             let s = sums[*next];
             *next += 1;
-            row.path.push(name);
             row.parts = s.parts;
             row.mass = s.mass;
             row.mass_fraction = s.mass / total;
             row.center_of_mass = s.center_of_mass;
             row.principal_moment_share = s.share;
-            f(row);
+            f(AssemblyRow::Enter(name, row));
             write(&inc.model, sums, next, row, total, f);
-            row.path.pop();
+            f(AssemblyRow::Exit);
         };
         match &inc.copies {
-            None => one(inc.name.clone(), next, row),
+            None => one(&inc.name, next, row),
             Some(c) => {
                 for i in c.indices() {
-                    let mut name = String::new();
+                    name.clear();
                     crate::model::push_copy_name(&mut name, &inc.name, i);
-                    one(name, next, row);
+                    one(&name, next, row);
                 }
             }
         }
     }
+}
+
+/// What `Assemblies::each_row` meets: a sub-assembly entered, its name
+/// in the path and its row (`path` empty), and left.
+pub enum AssemblyRow<'a> {
+    Enter(&'a str, &'a AssemblySummary),
+    Exit,
 }
 
 /// Serialized element by element as the walk meets them; the first error
@@ -257,13 +367,91 @@ fn serialize_each<S: serde::Serializer, T: serde::Serialize>(
 
 impl serde::Serialize for Parts {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        if !self.is_empty() && deferred::armed() {
+            // serde_json writes `[` now and `]` at `end`: the writer puts
+            // the rows between (`deferred`).
+            let seq = serializer.serialize_seq(Some(self.len()))?;
+            deferred::mark(deferred::Rows::Parts);
+            return serde::ser::SerializeSeq::end(seq);
+        }
         serialize_each(serializer, Some(self.len()), |f| self.each(f))
     }
 }
 
 impl serde::Serialize for Assemblies {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        if !self.is_empty() && deferred::armed() {
+            let seq = serializer.serialize_seq(None)?;
+            deferred::mark(deferred::Rows::Assemblies);
+            return serde::ser::SerializeSeq::end(seq);
+        }
         serialize_each(serializer, None, |f| self.each(f))
+    }
+}
+
+/// The rows left out of a serialization for its writer to write
+/// (`output::report::write_json_to`, which writes each sub-assembly's part
+/// of the rows once: issue 33, item 3).
+///
+/// NOTE: serde hands a `Serialize` only the serializer, never the stream
+/// under it. While `armed` (on this thread), `Parts` and `Assemblies` serialize as an
+/// array opened and closed with no element, and `mark`s which rows
+/// belong there just before the close; the writer, which sees every write
+/// serde_json makes, finds the mark (`take`) at the write of the array's
+/// `]` and writes the rows first. (The idea of the `output` branch,
+/// unmerged.)
+pub mod deferred {
+    use std::cell::Cell;
+
+    /// Which rows go before the next write.
+    #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+    pub enum Rows {
+        Parts,
+        Assemblies,
+    }
+
+    #[derive(Clone, Copy, PartialEq, Eq)]
+    enum State {
+        Off,
+        Armed,
+        Marked(Rows),
+    }
+
+    thread_local! {
+        static STATE: Cell<State> = const { Cell::new(State::Off) };
+    }
+
+    /// `f` run with the rows left to the writer (on this thread).
+    pub fn while_armed<T>(f: impl FnOnce() -> T) -> T {
+        /// As it was again however `f` ends (a panic too).
+        struct Restore(State);
+        impl Drop for Restore {
+            fn drop(&mut self) {
+                STATE.with(|s| s.set(self.0));
+            }
+        }
+        let _guard = Restore(STATE.with(|s| s.replace(State::Armed)));
+        f()
+    }
+
+    pub(super) fn armed() -> bool {
+        STATE.with(Cell::get) == State::Armed
+    }
+
+    pub(super) fn mark(rows: Rows) {
+        STATE.with(|s| s.set(State::Marked(rows)));
+    }
+
+    /// The rows to write before the write under way, if any (then armed
+    /// again).
+    pub fn take() -> Option<Rows> {
+        STATE.with(|s| match s.get() {
+            State::Marked(r) => {
+                s.set(State::Armed);
+                Some(r)
+            }
+            State::Off | State::Armed => None,
+        })
     }
 }
 
