@@ -167,3 +167,44 @@ pub fn same_body(a: &str, b: &str, tol: f64) {
         }
     }
 }
+
+/// `massprop report PATH --format json ARGS` as a user runs it, which must
+/// succeed: its JSON.
+pub fn report_cli(path: &std::path::Path, args: &[&str]) -> serde_json::Value {
+    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
+    argv.extend(args);
+    let out = massprop(&argv);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// Every number of a JSON number or (nested) array, in order.
+pub fn numbers(v: &serde_json::Value) -> Vec<f64> {
+    match v {
+        serde_json::Value::Number(n) => vec![n.as_f64().unwrap()],
+        serde_json::Value::Array(a) => a.iter().flat_map(numbers).collect(),
+        _ => panic!("{v}"),
+    }
+}
+
+/// A report's mass, centre of mass and inertia about it, flattened.
+pub fn figures_flat(v: &serde_json::Value) -> Vec<f64> {
+    let mut out = numbers(&v["mass"]);
+    out.extend(numbers(&v["center_of_mass"]));
+    out.extend(numbers(&v["inertia_com"]));
+    out
+}
+
+/// `a` and `b` agree to `rtol` of their largest entry.
+pub fn assert_close(a: &[f64], b: &[f64], rtol: f64) {
+    assert_eq!(a.len(), b.len());
+    let scale = a.iter().chain(b).fold(0.0f64, |m, x| m.max(x.abs()));
+    for (x, y) in a.iter().zip(b) {
+        assert!((x - y).abs() <= rtol * scale, "{a:?}\n{b:?}");
+    }
+}

@@ -15,7 +15,7 @@ use std::path::Path;
 use std::process::Command;
 
 /// The interpreter to try: `MASSPROP_ORACLE_PYTHON`, else `python3`.
-fn python() -> String {
+pub(crate) fn python() -> String {
     std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
 }
 
@@ -29,12 +29,12 @@ fn check_and_export_agree_with_mujocos_own_compiler() {
         );
         return;
     }
-    run_oracle(&python, "mujoco_oracle.py", &[], "MuJoCo");
+    run_oracle(&python, "mujoco_oracle.py", "300", &[], "MuJoCo");
 }
 
-/// Run `tests/oracle/SCRIPT` with `python` on 300 cases, `args` added, and
-/// fail with its report unless it agrees on every one.
-fn run_oracle(python: &str, script: &str, args: &[&str], engine: &str) {
+/// Run `tests/oracle/SCRIPT` with `python` on `cases` cases, `args` added,
+/// and fail with its report unless it agrees on every one.
+fn run_oracle(python: &str, script: &str, cases: &str, args: &[&str], engine: &str) {
     let script = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/oracle")
         .join(script);
@@ -44,7 +44,7 @@ fn run_oracle(python: &str, script: &str, args: &[&str], engine: &str) {
             "--massprop",
             env!("CARGO_BIN_EXE_massprop"),
             "--cases",
-            "300",
+            cases,
         ])
         .args(args)
         .output()
@@ -87,7 +87,13 @@ fn engine_oracle(engine: &str, python: String, module: &str) {
         );
         return;
     }
-    run_oracle(&python, "engines_oracle.py", &["--engine", engine], engine);
+    run_oracle(
+        &python,
+        "engines_oracle.py",
+        "300",
+        &["--engine", engine],
+        engine,
+    );
 }
 
 #[test]
@@ -111,24 +117,25 @@ fn check_agrees_with_gz_maths_own_library() {
 #[test]
 fn the_whole_robot_agrees_with_drakes_multibody_plant() {
     let python = std::env::var("MASSPROP_DRAKE_PYTHON").unwrap_or_else(|_| python());
-    if let Some(why) = missing(&python, "pydrake.multibody.plant") {
+    oracle_or_skip(
+        &python,
+        "pydrake.multibody.plant",
+        "drake_body_oracle.py",
+        "4",
+        "Drake whole-body",
+    );
+}
+
+/// `tests/oracle/SCRIPT` on `cases` cases, run by `python` (from
+/// [`python`], or an engine's own variable) where it can import `module`;
+/// else skipped, saying why: how every oracle test calls its script.
+pub(crate) fn oracle_or_skip(python: &str, module: &str, script: &str, cases: &str, engine: &str) {
+    if let Some(why) = missing(python, module) {
         eprintln!(
-            "skipped: the Drake whole-body oracle needs Python with `pydrake` (`pip install drake`); {why}. \
-             Set MASSPROP_DRAKE_PYTHON to such an interpreter to run it."
+            "skipped: the {engine} oracle needs Python with `{module}`; {why}. \
+             Set MASSPROP_ORACLE_PYTHON (MASSPROP_DRAKE_PYTHON for Drake) to such an interpreter to run it."
         );
         return;
     }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/drake_body_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args(["--massprop", env!("CARGO_BIN_EXE_massprop"), "--cases", "4"])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the Drake whole-body oracle found disagreements (exit {:?}):\n{}\n{}",
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    run_oracle(python, script, cases, &[], engine);
 }

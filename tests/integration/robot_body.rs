@@ -5,23 +5,9 @@
 //! written as a part file compose to the same bits; a link turned by a
 //! quarter turn moves its centre as the turn says.
 
-use crate::common::{massprop, scratch_files};
+use crate::common::{massprop, report_cli as json, scratch_files};
 use serde_json::Value;
 use std::path::Path;
-use std::process::Command;
-
-fn json(path: &Path, args: &[&str]) -> Value {
-    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
-    argv.extend(args);
-    let out = massprop(&argv);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
 
 fn bits(v: &Value) -> Vec<u64> {
     match v {
@@ -179,36 +165,15 @@ fn every_example_robot_reports_as_a_whole_body() {
     }
 }
 
-/// The interpreter to try: `MASSPROP_ORACLE_PYTHON`, else `python3`.
-fn python() -> String {
-    std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
-}
-
 #[test]
 fn the_whole_body_agrees_with_pinocchio() {
-    let python = python();
-    let has = Command::new(&python)
-        .args(["-c", "import pinocchio"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !has {
-        eprintln!(
-            "skipped: the Pinocchio oracle needs Python with the pin package (`pip install pin`); \
-             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
-        );
-        return;
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/pinocchio_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args(["--massprop", env!("CARGO_BIN_EXE_massprop"), "--cases", "6"])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the Pinocchio oracle found disagreements:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
+    let python = crate::oracle::python();
+    crate::oracle::oracle_or_skip(
+        &python,
+        "pinocchio",
+        "pinocchio_oracle.py",
+        "6",
+        "Pinocchio",
     );
 }
 
@@ -695,35 +660,8 @@ fn a_mesh_geom_naming_no_mesh_asset_is_refused_at_its_mesh() {
 
 #[test]
 fn inertials_from_geometry_agree_with_mujocos_compiler() {
-    let python = python();
-    let has = Command::new(&python)
-        .args(["-c", "import mujoco, numpy"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !has {
-        eprintln!(
-            "skipped: the geoms oracle needs Python with the mujoco package (`pip install mujoco`); \
-             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
-        );
-        return;
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/geoms_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args([
-            "--massprop",
-            env!("CARGO_BIN_EXE_massprop"),
-            "--cases",
-            "40",
-        ])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the MuJoCo geoms oracle found disagreements:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let python = crate::oracle::python();
+    crate::oracle::oracle_or_skip(&python, "mujoco", "geoms_oracle.py", "40", "MuJoCo geoms");
 }
 
 #[test]

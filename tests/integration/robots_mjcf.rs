@@ -518,39 +518,14 @@ fn an_unread_mesh_on_a_body_with_an_inertial_is_not_opened() {
     close(&numbers(&json(&path)["mass"]), &[1.0]);
 }
 
-fn python() -> String {
-    std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
-}
-
 #[test]
 fn mjcf_mesh_geoms_agree_with_mujocos_compiler() {
-    let python = python();
-    let has = Command::new(&python)
-        .args(["-c", "import mujoco, numpy"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !has {
-        eprintln!(
-            "skipped: the mesh-geom oracle needs Python with the mujoco package (`pip install mujoco`); \
-             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
-        );
-        return;
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/mjcf_mesh_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args([
-            "--massprop",
-            env!("CARGO_BIN_EXE_massprop"),
-            "--cases",
-            "20",
-        ])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the MuJoCo mesh oracle found disagreements:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
+    let python = crate::oracle::python();
+    crate::oracle::oracle_or_skip(
+        &python,
+        "mujoco",
+        "mjcf_mesh_oracle.py",
+        "20",
+        "MuJoCo mesh-geom",
     );
 }

@@ -7,47 +7,10 @@
 //! where Python has `mujoco`, from MuJoCo itself
 //! (`tests/oracle/mjcf_classes_oracle.py`).
 
-use crate::common::{massprop, scratch_files};
-use serde_json::Value;
+use crate::common::{
+    assert_close, figures_flat as figures, massprop, numbers, report_cli as json, scratch_files,
+};
 use std::path::Path;
-use std::process::Command;
-
-fn json(path: &Path, args: &[&str]) -> Value {
-    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
-    argv.extend(args);
-    let out = massprop(&argv);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn numbers(v: &Value) -> Vec<f64> {
-    match v {
-        Value::Number(n) => vec![n.as_f64().unwrap()],
-        Value::Array(a) => a.iter().flat_map(numbers).collect(),
-        _ => panic!("{v}"),
-    }
-}
-
-/// Mass, centre of mass and inertia about it, flattened.
-fn figures(v: &Value) -> Vec<f64> {
-    let mut out = numbers(&v["mass"]);
-    out.extend(numbers(&v["center_of_mass"]));
-    out.extend(numbers(&v["inertia_com"]));
-    out
-}
-
-fn assert_close(a: &[f64], b: &[f64], rtol: f64) {
-    assert_eq!(a.len(), b.len());
-    let scale = a.iter().chain(b).fold(0.0f64, |m, x| m.max(x.abs()));
-    for (x, y) in a.iter().zip(b) {
-        assert!((x - y).abs() <= rtol * scale, "{a:?}\n{b:?}");
-    }
-}
 
 /// An arm whose bodies have no `<inertial>`: MuJoCo weighs them from their
 /// geoms (`inertiafromgeom="auto"`).
@@ -263,41 +226,15 @@ fn an_mjcf_slide_at_its_class_ref_is_at_its_written_pose() {
     assert_close(&[x(&["--joints", "slide=0"])], &[0.05], 1e-15);
 }
 
-/// The interpreter to try: `MASSPROP_ORACLE_PYTHON`, else `python3`.
-fn python() -> String {
-    std::env::var("MASSPROP_ORACLE_PYTHON").unwrap_or_else(|_| "python3".to_string())
-}
-
 #[test]
 fn mjcf_robots_with_default_classes_agree_with_mujoco() {
-    let python = python();
-    let has = Command::new(&python)
-        .args(["-c", "import mujoco, numpy"])
-        .output()
-        .is_ok_and(|o| o.status.success());
-    if !has {
-        eprintln!(
-            "skipped: the default-classes oracle needs Python with the mujoco package (`pip install mujoco`); \
-             set MASSPROP_ORACLE_PYTHON to such an interpreter to run it."
-        );
-        return;
-    }
-    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/oracle/mjcf_classes_oracle.py");
-    let out = Command::new(&python)
-        .arg(&script)
-        .args([
-            "--massprop",
-            env!("CARGO_BIN_EXE_massprop"),
-            "--cases",
-            "12",
-        ])
-        .output()
-        .expect("the oracle script runs");
-    assert!(
-        out.status.success(),
-        "the MuJoCo default-classes oracle found disagreements:\n{}\n{}",
-        String::from_utf8_lossy(&out.stdout),
-        String::from_utf8_lossy(&out.stderr)
+    let python = crate::oracle::python();
+    crate::oracle::oracle_or_skip(
+        &python,
+        "mujoco",
+        "mjcf_classes_oracle.py",
+        "12",
+        "MuJoCo default-classes",
     );
 }
 

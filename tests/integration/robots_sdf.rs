@@ -6,7 +6,9 @@
 //! world by `origin` and `rotation`. Hostile includes and scopes are
 //! refused at their place, without a hang or a panic.
 
-use crate::common::{massprop, scratch_files};
+use crate::common::{
+    assert_close, figures_flat as figures, massprop, numbers, report_cli as json, scratch_files,
+};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -14,43 +16,6 @@ fn robots(file: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/robots")
         .join(file)
-}
-
-fn json(path: &Path, args: &[&str]) -> Value {
-    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
-    argv.extend(args);
-    let out = massprop(&argv);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn numbers(v: &Value) -> Vec<f64> {
-    match v {
-        Value::Number(n) => vec![n.as_f64().unwrap()],
-        Value::Array(a) => a.iter().flat_map(numbers).collect(),
-        _ => panic!("{v}"),
-    }
-}
-
-/// Mass, centre of mass and inertia about it, flattened.
-fn figures(v: &Value) -> Vec<f64> {
-    let mut out = numbers(&v["mass"]);
-    out.extend(numbers(&v["center_of_mass"]));
-    out.extend(numbers(&v["inertia_com"]));
-    out
-}
-
-fn assert_close(a: &[f64], b: &[f64], rtol: f64) {
-    assert_eq!(a.len(), b.len());
-    let scale = a.iter().chain(b).fold(0.0f64, |m, x| m.max(x.abs()));
-    for (x, y) in a.iter().zip(b) {
-        assert!((x - y).abs() <= rtol * scale, "{a:?}\n{b:?}");
-    }
 }
 
 fn part_names(v: &Value) -> Vec<String> {
