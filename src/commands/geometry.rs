@@ -14,9 +14,9 @@ use super::Outcome;
 use super::export::FromGeometry;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
+use crate::numeric::{DD, Real};
 use crate::output::inertial::{inertial_element, update};
 use crate::robot::Dialect;
-use crate::numeric::{DD, Real};
 use crate::robot::read::{Amount, Geometry, MeshMass, Solid};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -399,7 +399,10 @@ fn inertia_part(g: &Geometry, k: usize, rho: f64, m: &MeshMass) -> Option<String
     let finite = m.measure.f64() > 0.0
         && m.measure.f64().is_finite()
         && mass.f64().is_finite()
-        && center.iter().chain(tensor.iter().flatten()).all(|x| x.is_finite());
+        && center
+            .iter()
+            .chain(tensor.iter().flatten())
+            .all(|x| x.is_finite());
     if !finite {
         return None;
     }
