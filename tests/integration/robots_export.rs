@@ -4,7 +4,7 @@
 //! mirrored body), against closed forms.
 
 use crate::common::{massprop, scratch_files};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The unit cube [0, 1]³, outward triangles.
 const CUBE: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n\
@@ -34,7 +34,7 @@ fn one_mesh(name: &str, mesh: &str, xyz: &str) -> PathBuf {
 
 /// Stdout of `export ROBOT --from-geometry collision --density RHO ARGS`,
 /// which must succeed.
-fn export(robot: &PathBuf, rho: &str, args: &[&str]) -> String {
+fn export(robot: &Path, rho: &str, args: &[&str]) -> String {
     let mut argv = vec![
         "export",
         robot.to_str().unwrap(),
