@@ -14,14 +14,16 @@ use super::Outcome;
 use super::export::FromGeometry;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
+use crate::numeric::{DD, Real};
 use crate::output::inertial::{inertial_element, update};
 use crate::robot::Dialect;
-use crate::robot::read::{Amount, Geometry, Solid};
+use crate::robot::read::{Amount, Geometry, MeshMass, Solid};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-/// What each part is made of, as its part file writes it.
-fn made_of(g: &FromGeometry, mjcf: bool) -> Result<String, Diagnostic> {
+/// What each part is made of, as its part file writes it, and its density
+/// (kg/m³, for a scaled mesh's `inertia` part).
+fn made_of(g: &FromGeometry, mjcf: bool) -> Result<(String, f64), Diagnostic> {
     match (&g.density, &g.material) {
         (Some(d), None) => {
             let rho = match crate::units::split_number(d) {
@@ -35,16 +37,16 @@ fn made_of(g: &FromGeometry, mjcf: bool) -> Result<String, Diagnostic> {
                     "invalid value {d:?} for `--density`: expected a density > 0"
                 )));
             }
-            Ok(format!("density = {rho:?}\n"))
+            Ok((format!("density = {rho:?}\n"), rho))
         }
         (None, Some(m)) => match crate::materials::built_in(m) {
-            Some(_) => Ok(format!("material = {:?}\n", m)),
+            Some(mat) => Ok((format!("material = {:?}\n", m), mat.density)),
             None => Err(Diagnostic::plain(format!(
                 "`--material {}`: no built-in material of that name (`massprop materials` lists them)",
                 crate::diag::shorten(m)
             ))),
         },
-        (None, None) if mjcf => Ok("density = 1000.0\n".to_string()),
+        (None, None) if mjcf => Ok(("density = 1000.0\n".to_string(), 1000.0)),
         (None, None) => Err(Diagnostic::plain(
             "`--from-geometry` needs `--density` (kg/m³, or with its unit) or `--material NAME`",
         )),
@@ -174,7 +176,6 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     let made = made_of(g, format == Dialect::Mjcf)?;
     let packages = packages(&g.packages)?;
     let d = crate::robot::read::read(&source, format)?;
-    let geos = crate::robot::read::geometry(&source, &d, g.visual)?;
     let kind = if g.visual { "visual" } else { "collision" };
     let chosen: Vec<usize> = match &g.link {
         Some(name) => match d.links.iter().position(|l| l.name == *name) {
@@ -192,6 +193,11 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         },
         None => (0..d.links.len()).collect(),
     };
+    // NOTE: only the chosen links' geometry is read: another link's (a
+    // missing mesh, a bad `scale`) cannot stop `--link NAME`.
+    let mut need = vec![false; d.links.len()];
+    chosen.iter().for_each(|&i| need[i] = true);
+    let geos = crate::robot::read::geometry(&source, &d, g.visual, Some(&need))?;
     let base = source
         .path()
         .parent()
@@ -295,13 +301,14 @@ fn link_inertial(
     geos: &[Geometry],
     name: &str,
     source: &Source,
-    made: &str,
+    made: &(String, f64),
     base: &Path,
     packages: &[(String, PathBuf)],
     includes: &crate::model::Includes,
     settings: &Settings,
 ) -> Result<(crate::output::inertial::Export, Vec<PathBuf>), Diagnostic> {
     let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
+    let mut files = Vec::new();
     for (k, geo) in geos.iter().enumerate() {
         let at = |m: String| {
             source.error(
@@ -309,25 +316,117 @@ fn link_inertial(
                 format!("link \"{}\": {m}", crate::diag::shorten(name)),
             )
         };
-        let file = match &geo.solid {
+        let one = match &geo.solid {
             Solid::Mesh { uri, scale } => {
-                if mesh_unit(*scale).is_none() {
-                    return Err(at(format!(
-                        "the mesh's `scale` {} {} {} is not read: a mesh is read with the same scale on each axis, one of a length unit's (1 m, 0.01 cm, 0.001 mm, 0.0254 in, 0.3048 ft)",
-                        scale[0], scale[1], scale[2]
-                    )));
+                let file = mesh_path(uri, base, packages).map_err(at)?;
+                if mesh_unit(*scale).is_some() {
+                    part(geo, k + 1, &made.0, Some(&file))
+                } else {
+                    let unit = format!(
+                        "[[part]]\nname = \"geometry {}\"\ndensity = 1.0\norigin = [0.0, 0.0, 0.0]\nshape = \"mesh\"\nfile = {:?}\nmesh_unit = \"m\"\n",
+                        k + 1,
+                        file.to_string_lossy()
+                    );
+                    let loaded = body(&unit, source, includes, settings)
+                        .map_err(|e| at(e.message().to_string()))?;
+                    files.extend(loaded.model.included.iter().cloned());
+                    let mass = scaled_mesh(&loaded.model, *scale);
+                    inertia_part(geo, k + 1, made.1, &mass).ok_or_else(|| {
+                        at(format!(
+                            "the mesh's `scale` {} {} {} takes its volume, centre or moments out of the range of f64; expected a `scale` that keeps them finite and the volume above zero",
+                            scale[0], scale[1], scale[2]
+                        ))
+                    })?
                 }
-                Some(mesh_path(uri, base, packages).map_err(at)?)
             }
-            _ => None,
+            _ => part(geo, k + 1, &made.0, None),
         };
-        let one = part(geo, k + 1, made, file.as_deref());
         body(&one, source, includes, settings).map_err(|e| at(e.message().to_string()))?;
         text.push_str(&one);
     }
     let loaded = body(&text, source, includes, settings)?;
-    Ok((
-        super::export::export_of(&loaded.summary, false),
-        loaded.model.included.clone(),
-    ))
+    files.extend(loaded.model.included.iter().cloned());
+    Ok((super::export::export_of(&loaded.summary, false), files))
+}
+
+/// The integrals of the one mesh part of `model` (read at unit scale, at
+/// the origin), scaled by the geometry's `scale` (`read::scaled`, the rule
+/// MJCF's mesh geoms are weighed by).
+fn scaled_mesh(model: &crate::model::Model, scale: [f64; 3]) -> MeshMass {
+    let mesh = model
+        .items
+        .iter()
+        .find_map(|item| match item {
+            crate::model::Item::Part { part, .. } => match &part.spec.place {
+                crate::shapes::Place::Mesh(m) => Some(m.mesh.clone()),
+                _ => None,
+            },
+            crate::model::Item::Include(_) => None,
+        })
+        .expect("invariant: the part file written for a mesh has its mesh part");
+    crate::robot::read::scaled(&mesh, scale)
+}
+
+/// A mesh scaled by a `scale` that is no length unit's, as a `[[part]]` of
+/// `shape = "inertia"`: its mass (the geometry's own, else `rho` times its
+/// volume), its centroid placed by the geometry's pose, its tensor about
+/// the centroid in the geometry's axes, turned by its rotation. None where
+/// a number leaves the range of f64 or the volume is not above zero.
+///
+/// NOTE: the part file's mesh shape takes one length unit, not a scale per
+/// axis (nor a mirror): the scaled solid's integrals are computed here, in
+/// double-double, and given to the composer as the part they are.
+fn inertia_part(g: &Geometry, k: usize, rho: f64, m: &MeshMass) -> Option<String> {
+    let mass = match g.amount {
+        Some(Amount::Mass(mass)) => DD::of(mass),
+        Some(Amount::Density(d)) => DD::of(d) * m.measure,
+        None => DD::of(rho) * m.measure,
+    };
+    let per = mass / m.measure;
+    let r = g.pose.r.map(|row| row.map(DD::of));
+    let center: [f64; 3] = std::array::from_fn(|i| {
+        (0..3)
+            .fold(DD::of(g.pose.p[i]), |a, j| a + r[i][j] * m.centroid[j])
+            .f64()
+    });
+    let trace = m.second[0][0] + m.second[1][1] + m.second[2][2];
+    let tensor: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        std::array::from_fn(|j| {
+            let own = if i == j { trace } else { DD::of(0.0) };
+            ((own - m.second[i][j]) * per).f64()
+        })
+    });
+    let finite = m.measure.f64() > 0.0
+        && m.measure.f64().is_finite()
+        && mass.f64().is_finite()
+        && center
+            .iter()
+            .chain(tensor.iter().flatten())
+            .all(|x| x.is_finite());
+    if !finite {
+        return None;
+    }
+    let mut t = format!(
+        "[[part]]\nname = \"geometry {k}\"\nshape = \"inertia\"\nmass = {:?}\ncenter = {}\n",
+        mass.f64(),
+        point(center)
+    );
+    if !g.pose.unturned() {
+        let r = g.pose.r;
+        let _ = writeln!(
+            t,
+            "rotation = {{ matrix = [{}, {}, {}] }}",
+            point(r[0]),
+            point(r[1]),
+            point(r[2])
+        );
+    }
+    let _ = writeln!(
+        t,
+        "inertia = [{}, {}, {}]",
+        point(tensor[0]),
+        point(tensor[1]),
+        point(tensor[2])
+    );
+    Some(t)
 }

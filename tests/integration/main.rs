@@ -60,6 +60,7 @@ mod render_speed;
 mod report_keys;
 mod robot_body;
 mod robots;
+mod robots_export;
 mod robots_hostile;
 mod robots_mjcf;
 mod robots_more;

@@ -67,11 +67,14 @@ pub enum Amount {
 }
 
 /// Per link of `d` (in its order), its geometries of the kind asked for
-/// (`visual`, else collision).
+/// (`visual`, else collision), read only for the links `need` marks (all
+/// where None): another link's geometry is not read, so what it says
+/// cannot stop the export of the link asked for (`--link`).
 pub fn geometry(
     source: &Source,
     d: &Description,
     visual: bool,
+    need: Option<&[bool]>,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
     let doc = super::parse(source)?;
     let xml = Xml { source };
@@ -97,10 +100,14 @@ pub fn geometry(
                 }
             }
         }
-        Dialect::Mjcf => return super::geoms_of_mjcf(&xml, root, d, None),
+        Dialect::Mjcf => return super::geoms_of_mjcf(&xml, root, d, need),
     };
     let mut out = Vec::with_capacity(links.len());
     for (i, link) in links.iter().enumerate() {
+        if need.is_some_and(|n| !n[i]) {
+            out.push(Vec::new());
+            continue;
+        }
         let owner = format!("link {}", quoted(&d.links[i].name));
         let mut items = Vec::new();
         for g in children(*link, kind) {
@@ -183,6 +190,45 @@ pub(super) fn positive(
     }
 }
 
+/// A mesh's `scale`: three finite numbers, none zero (a negative one
+/// mirrors the mesh), or an error at it.
+fn nonzero_scale(xml: &Xml, v: &super::Value, owner: &str) -> Result<[f64; 3], Diagnostic> {
+    let s = xml.numbers::<3>(v, owner)?;
+    if s.iter().any(|&x| x == 0.0 || !x.is_finite()) {
+        return Err(xml.error(
+            v.range.clone(),
+            format!(
+                "`scale` of {owner}'s mesh: expected three finite numbers, none zero (a zero flattens the mesh to no volume), found {} {} {}",
+                s[0], s[1], s[2]
+            ),
+        ));
+    }
+    Ok(s)
+}
+
+/// The integrals of the mesh `b` with its vertices scaled by `s` (D =
+/// diag(s), each finite and nonzero; a negative one mirrors it): measure
+/// |det D| V (a shell's: s² A, `s` uniform), centroid D c, second moments
+/// |det D| D S D (a shell's: s⁴ S). The one rule for a scaled mesh: MJCF's
+/// mesh geoms (`mjcf_mesh`) and `export --from-geometry`'s URDF and
+/// SDFormat meshes are both weighed by it.
+pub fn scaled(b: &crate::mesh::MeshBody, s: [f64; 3]) -> MeshMass {
+    use crate::mesh::Mode;
+    use crate::numeric::{DD, Real};
+    let d = s.map(DD::of);
+    let det = (d[0] * d[1] * d[2]).abs();
+    let k = match b.mode {
+        Mode::Solid => det,
+        // Uniform: |s|³ / |s| = s², area's factor.
+        Mode::Shell => det / DD::of(s[0].abs()),
+    };
+    MeshMass {
+        measure: k * b.measure,
+        centroid: std::array::from_fn(|i| d[i] * b.centroid[i]),
+        second: std::array::from_fn(|i| std::array::from_fn(|j| k * d[i] * d[j] * b.second[i][j])),
+    }
+}
+
 fn urdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
     let Some(s) = geo.children().find(Node::is_element) else {
         return Err(xml.error(xml.tag(geo), format!("`<geometry>` of {owner} is empty")));
@@ -213,7 +259,7 @@ fn urdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
         "mesh" => Solid::Mesh {
             uri: xml.required(s, "filename", owner)?.text,
             scale: match xml.attr(s, "scale") {
-                Some(v) => xml.numbers::<3>(&v, owner)?,
+                Some(v) => nonzero_scale(xml, &v, owner)?,
                 None => [1.0; 3],
             },
         },
@@ -269,7 +315,7 @@ fn sdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
         "mesh" => Solid::Mesh {
             uri: text("uri")?.text,
             scale: match child(s, "scale") {
-                Some(e) => xml.numbers::<3>(&xml.text(e), owner)?,
+                Some(e) => nonzero_scale(xml, &xml.text(e), owner)?,
                 None => [1.0; 3],
             },
         },

@@ -32,7 +32,7 @@
 //! there): massprop reads them in f64, so the two differ by up to ~1e-7 of
 //! the mesh's size where the file's numbers are not f32 numbers.
 
-use super::geometry::MeshMass;
+use super::geometry::{MeshMass, scaled};
 use super::{Value, Xml, children, quoted};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::mesh::{FileType, MeshBody, Mode};
@@ -331,24 +331,6 @@ impl<'a, 'i> Meshes<'a, 'i> {
                 shorten(&shown_name)
             ))
         })
-    }
-}
-
-/// The mesh's integrals with its vertices scaled by `s` (D = diag(s)):
-/// measure |det D| V (a shell's: s² A, `s` uniform), centroid D c, second
-/// moments |det D| D S D (a shell's: s⁴ S).
-fn scaled(b: &MeshBody, s: [f64; 3]) -> MeshMass {
-    let d = s.map(DD::of);
-    let det = (d[0] * d[1] * d[2]).abs();
-    let k = match b.mode {
-        Mode::Solid => det,
-        // Uniform: |s|³ / |s| = s², area's factor.
-        Mode::Shell => det / DD::of(s[0].abs()),
-    };
-    MeshMass {
-        measure: k * b.measure,
-        centroid: std::array::from_fn(|i| d[i] * b.centroid[i]),
-        second: std::array::from_fn(|i| std::array::from_fn(|j| k * d[i] * d[j] * b.second[i][j])),
     }
 }
 

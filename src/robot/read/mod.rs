@@ -24,7 +24,7 @@ mod sdf_tree;
 mod tree;
 mod urdf;
 
-pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, mjcf_geometry};
+pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, mjcf_geometry, scaled};
 pub use tree::{Resolve, tree};
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
