@@ -62,6 +62,7 @@ mod robot_body;
 mod robots;
 mod robots_hostile;
 mod robots_mjcf;
+mod robots_mjcfinc;
 mod robots_more;
 mod robots_sdf;
 mod schema;

@@ -59,7 +59,8 @@ pub(super) fn compiler(xml: &Xml, node: Node, s: &mut Settings) -> Result<(), Di
 
 pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     // An included file may hold bodies and compiler settings: reading
-    // around it would judge a different model than MuJoCo compiles.
+    // around it would judge a different model than MuJoCo compiles. The
+    // whole robot follows includes (`read_in`, `mjcf_include`).
     if let Some(include) = mujoco.descendants().find(|n| qname(*n) == "include") {
         let (range, file) = match xml.attr(include, "file") {
             Some(v) => (v.range.clone(), format!(" of {}", quoted(&v.text))),
@@ -70,7 +71,7 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
                 range,
                 format!("`<include>`{file} is not followed: only one file is read"),
             )
-            .help("read the whole model as one file: MuJoCo's `mj_saveLastXML` writes the model it loaded, includes inlined"));
+            .help("`report` and `diff` follow includes (the whole robot); to judge or export links, write the model as one file: MuJoCo's `mj_saveLastXML` writes the model it loaded, includes inlined"));
     }
     model(&Model::single(xml.source, mujoco))
 }
