@@ -78,8 +78,16 @@ fn a_part_file_including_the_scene_is_the_part_file_including_the_inline_model()
             robots(file).to_str().unwrap()
         )
     };
-    let a = scratch_files("robots_mjcfinc", "part-scene", &[("a.toml", &part("scene.xml"))]);
-    let b = scratch_files("robots_mjcfinc", "part-single", &[("b.toml", &part("single.xml"))]);
+    let a = scratch_files(
+        "robots_mjcfinc",
+        "part-scene",
+        &[("a.toml", &part("scene.xml"))],
+    );
+    let b = scratch_files(
+        "robots_mjcfinc",
+        "part-single",
+        &[("b.toml", &part("single.xml"))],
+    );
     let root = robots("");
     let args = ["--include-root", root.to_str().unwrap()];
     let (a, b) = (json(&a, &args), json(&b, &args));
@@ -121,7 +129,9 @@ fn a_nested_include_is_found_from_the_main_files_directory_else_its_own() {
     // `sub/a.xml` names `sub/b.xml` (from the main file's directory) and
     // `c.xml` (only beside `sub/a.xml`: MuJoCo's second try).
     let body = |name: &str, mass: f64| {
-        format!("<mujoco>\n<worldbody><body name='{name}'><inertial pos='0 0 0' mass='{mass}' diaginertia='1 1 1'/></body></worldbody>\n</mujoco>\n")
+        format!(
+            "<mujoco>\n<worldbody><body name='{name}'><inertial pos='0 0 0' mass='{mass}' diaginertia='1 1 1'/></body></worldbody>\n</mujoco>\n"
+        )
     };
     let dir = scratch_files("robots_mjcfinc", "nested", &[]);
     std::fs::create_dir_all(dir.join("sub")).unwrap();
@@ -143,19 +153,22 @@ fn a_missing_included_file_is_refused_at_its_file_attribute() {
     let path = scratch_files(
         "robots_mjcfinc",
         "missing",
-        &[("m.xml", "<mujoco>\n  <include file='nope.xml'/>\n</mujoco>\n")],
+        &[(
+            "m.xml",
+            "<mujoco>\n  <include file='nope.xml'/>\n</mujoco>\n",
+        )],
     );
     let e = refused(&path);
     assert!(
-        e.contains("m.xml:2:18: error: cannot read the included file `")
-            && e.contains("nope.xml`"),
+        e.contains("m.xml:2:18: error: cannot read the included file `") && e.contains("nope.xml`"),
         "{e}"
     );
 }
 
 #[test]
 fn an_include_outside_the_readable_directories_is_refused_at_its_file_attribute() {
-    let top = "<mujoco>\n  <include file='../../../../../../../../../../etc/hostname'/>\n</mujoco>\n";
+    let top =
+        "<mujoco>\n  <include file='../../../../../../../../../../etc/hostname'/>\n</mujoco>\n";
     let path = scratch_files("robots_mjcfinc", "escape", &[("m.xml", top)]);
     let e = refused(&path);
     assert!(
@@ -175,7 +188,10 @@ fn includes_in_a_cycle_are_refused_naming_the_chain() {
         e.contains("b.xml:2:18: error: `<include>` closes a cycle of includes: `"),
         "{e}"
     );
-    assert!(e.contains("included from ") && e.contains("a.xml:2:18"), "{e}");
+    assert!(
+        e.contains("included from ") && e.contains("a.xml:2:18"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -213,20 +229,33 @@ fn an_included_file_whose_root_is_not_mujoco_is_refused_naming_it() {
 fn an_error_inside_an_included_file_names_that_file_and_where_it_was_included() {
     let bad = "<mujoco>\n<worldbody><body name='x'><inertial pos='0 0 0' mass='1' diaginertia='1 1 q'/></body></worldbody>\n</mujoco>\n";
     let top = "<mujoco>\n  <include file='bad.xml'/>\n</mujoco>\n";
-    let path = scratch_files("robots_mjcfinc", "inside", &[("bad.xml", bad), ("m.xml", top)]);
+    let path = scratch_files(
+        "robots_mjcfinc",
+        "inside",
+        &[("bad.xml", bad), ("m.xml", top)],
+    );
     let e = refused(&path);
     assert!(
-        e.contains("bad.xml:2:75: error: `diaginertia` of body \"x\": expected a number, found \"q\""),
+        e.contains(
+            "bad.xml:2:75: error: `diaginertia` of body \"x\": expected a number, found \"q\""
+        ),
         "{e}"
     );
-    assert!(e.contains("= note: included from ") && e.contains("m.xml:2:18"), "{e}");
+    assert!(
+        e.contains("= note: included from ") && e.contains("m.xml:2:18"),
+        "{e}"
+    );
 }
 
 #[test]
 fn an_include_inside_the_worldbody_is_refused_at_it() {
     let w = "<mujoco>\n<worldbody><body name='x'/></worldbody>\n</mujoco>\n";
     let top = "<mujoco>\n  <worldbody>\n    <include file='w.xml'/>\n  </worldbody>\n</mujoco>\n";
-    let path = scratch_files("robots_mjcfinc", "in-world", &[("w.xml", w), ("m.xml", top)]);
+    let path = scratch_files(
+        "robots_mjcfinc",
+        "in-world",
+        &[("w.xml", w), ("m.xml", top)],
+    );
     let e = refused(&path);
     assert!(
         e.contains("m.xml:3:5: error: `<include>` inside `<worldbody>` is not followed"),
