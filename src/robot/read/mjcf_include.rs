@@ -92,6 +92,9 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
                 m.sections.push((file, node));
                 continue;
             }
+            // NOTE: `load` read every `<include>` under a `<mujoco>` (or
+            // refused the model); one without a target is only in a model
+            // of one file (`single`), whose includes `read` refuses first.
             let Some(&target) = files.targets.get(&(file, node.range().start)) else {
                 continue;
             };
