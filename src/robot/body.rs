@@ -34,14 +34,14 @@ impl Robot {
         Robot::read_in(source, format, &Default::default())
     }
 
-    /// `read`, an SDFormat file's includes resolved by `r`.
+    /// `read`, an SDFormat or MJCF file's includes resolved by `r`.
     pub fn read_in(
         source: &Source,
         format: Dialect,
         r: &super::read::Resolve,
     ) -> Result<Robot, Diagnostic> {
-        let mut description = super::read::read(source, format)?;
-        super::weigh::mjcf_inertials(source, &mut description)?;
+        let mut description = super::read::read_in(source, format, r)?;
+        super::weigh::mjcf_inertials(source, &mut description, r)?;
         let tree = super::read::tree(source, &mut description, r)?;
         Ok(Robot { description, tree })
     }

@@ -26,7 +26,12 @@ const MUJOCO_DENSITY: f64 = 1000.0;
 
 /// Fill the inertials MuJoCo's compiler gives an MJCF description's bodies
 /// from their geoms (see the module's comment).
-pub fn mjcf_inertials(source: &Source, d: &mut Description) -> Result<(), Diagnostic> {
+/// An MJCF file's includes are resolved by `r`.
+pub fn mjcf_inertials(
+    source: &Source,
+    d: &mut Description,
+    r: &super::read::Resolve,
+) -> Result<(), Diagnostic> {
     if d.format != Dialect::Mjcf || d.compiler.inertiafromgeom == Some(false) {
         return Ok(());
     }
@@ -39,7 +44,7 @@ pub fn mjcf_inertials(source: &Source, d: &mut Description) -> Result<(), Diagno
         .iter()
         .map(|l| all || l.inertial.is_none())
         .collect();
-    let geos = super::read::mjcf_geometry(source, d, &need)?;
+    let geos = super::read::mjcf_geometry_in(source, d, &need, r)?;
     for (l, g) in d.links.iter_mut().zip(&geos) {
         if g.is_empty() {
             continue;

@@ -63,6 +63,7 @@ mod robots;
 mod robots_export;
 mod robots_hostile;
 mod robots_mjcf;
+mod robots_mjcfinc;
 mod robots_more;
 mod robots_sdf;
 mod schema;

@@ -6,6 +6,7 @@
 //! Orientations are turned into a matrix as MuJoCo's compiler turns them
 //! (`orient`).
 
+use super::mjcf_include::Model;
 use super::orient::{Settings, orientation, quat_to_matrix};
 use super::{Value, Xml, children, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
@@ -58,7 +59,8 @@ pub(super) fn compiler(xml: &Xml, node: Node, s: &mut Settings) -> Result<(), Di
 
 pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     // An included file may hold bodies and compiler settings: reading
-    // around it would judge a different model than MuJoCo compiles.
+    // around it would judge a different model than MuJoCo compiles. The
+    // whole robot follows includes (`read_in`, `mjcf_include`).
     if let Some(include) = mujoco.descendants().find(|n| qname(*n) == "include") {
         let (range, file) = match xml.attr(include, "file") {
             Some(v) => (v.range.clone(), format!(" of {}", quoted(&v.text))),
@@ -69,12 +71,18 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
                 range,
                 format!("`<include>`{file} is not followed: only one file is read"),
             )
-            .help("read the whole model as one file: MuJoCo's `mj_saveLastXML` writes the model it loaded, includes inlined"));
+            .help("`report` and `diff` follow includes (the whole robot); to judge or export links, write the model as one file: MuJoCo's `mj_saveLastXML` writes the model it loaded, includes inlined"));
     }
+    model(&Model::single(xml.source, mujoco))
+}
+
+/// The description of the model `m` (its included files' bodies in their
+/// places, each standing at the `<include>` that brings it in).
+pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
     // MuJoCo reads every `<compiler>` before the bodies, wherever it
     // stands in the file.
     let mut settings = Settings::default();
-    for c in children(mujoco, "compiler") {
+    for (xml, _, c) in m.sections("compiler") {
         compiler(xml, c, &mut settings)?;
     }
     let mut links = Vec::new();
@@ -84,23 +92,24 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     // element's parent is there before it: a body's parent is found in one
     // step, however deep the tree (a walk up its ancestors would make a
     // long chain of bodies quadratic).
-    let mut enclosing: std::collections::HashMap<roxmltree::NodeId, Option<usize>> =
+    // Keyed by file too: each file is a document of its own.
+    let mut enclosing: std::collections::HashMap<(usize, roxmltree::NodeId), Option<usize>> =
         std::collections::HashMap::new();
-    for world in children(mujoco, "worldbody") {
-        enclosing.insert(world.id(), None);
+    for (xml, file, world) in m.sections("worldbody") {
+        enclosing.insert((file, world.id()), None);
         // Bodies at any depth, also inside `<frame>`s; the world body
         // itself is not one.
         for node in world.descendants().skip(1).filter(Node::is_element) {
             let parent = node
                 .parent()
-                .and_then(|p| enclosing.get(&p.id()).copied())
+                .and_then(|p| enclosing.get(&(file, p.id())).copied())
                 .flatten();
             if qname(node) != "body" {
-                enclosing.insert(node.id(), parent);
+                enclosing.insert((file, node.id()), parent);
                 continue;
             }
             let body = node;
-            enclosing.insert(body.id(), Some(links.len()));
+            enclosing.insert((file, body.id()), Some(links.len()));
             count += 1;
             let (name, owner) = match body.attribute("name").filter(|n| !n.is_empty()) {
                 Some(n) => (n.to_string(), format!("body {}", quoted(n))),
@@ -110,7 +119,11 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
             let inertial = inertials
                 .next()
                 .map(|i| inertial(xml, i, &owner, &settings))
-                .transpose()?;
+                .transpose()?
+                .map(|i| Inertial {
+                    range: m.range(file, i.range.clone()),
+                    ..i
+                });
             if let Some(second) = inertials.next() {
                 return Err(xml.error(
                     xml.tag(second),
@@ -124,7 +137,7 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
                 .any(|c| matches!(qname(c), "joint" | "freejoint"));
             links.push(Link {
                 name,
-                range: body.range(),
+                range: m.range(file, body.range()),
                 inertial,
                 moving,
                 parent,
@@ -133,7 +146,7 @@ pub(super) fn read(xml: &Xml, mujoco: Node) -> Result<Description, Diagnostic> {
     }
     Ok(Description {
         format: Dialect::Mjcf,
-        name: mujoco.attribute("model").map(str::to_string),
+        name: m.root.attribute("model").map(str::to_string),
         links,
         compiler: settings.compiler,
     })

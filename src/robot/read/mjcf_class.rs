@@ -9,15 +9,17 @@
 //! class's (that class's `<joint>`, `<geom>`, … element), else the parent
 //! class's, up to "main", else MuJoCo's built-in default (the caller's).
 
+use super::mjcf_include::Model;
 use super::{Value, Xml, qname, quoted};
-use crate::diag::Diagnostic;
+use crate::diag::{Diagnostic, Source};
 use roxmltree::Node;
 use std::collections::HashMap;
 
-/// The default classes of an MJCF file.
-pub(super) struct Classes<'a, 'i> {
-    /// Each class: its `<default>` element and its parent class.
-    classes: Vec<(Node<'a, 'i>, Option<usize>)>,
+/// The default classes of an MJCF model (its included files' too).
+pub(super) struct Classes<'s, 'a, 'i> {
+    /// Each class: its `<default>` element, its parent class, and the file
+    /// it is written in.
+    classes: Vec<(Node<'a, 'i>, Option<usize>, &'s Source)>,
     by_name: HashMap<String, usize>,
 }
 
@@ -25,23 +27,22 @@ pub(super) struct Classes<'a, 'i> {
 /// `<default>` at all).
 pub(super) type Class = Option<usize>;
 
-impl<'a, 'i> Classes<'a, 'i> {
-    /// The classes under `mujoco` (the root element), a name given twice
-    /// refused at its second `class`.
-    pub fn read(xml: &Xml, mujoco: Node<'a, 'i>) -> Result<Classes<'a, 'i>, Diagnostic> {
+impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
+    /// The classes under `<mujoco>` (in every file of the model), a name
+    /// given twice refused at its second `class`.
+    pub fn read(m: &Model<'s, 'a, 'i>) -> Result<Classes<'s, 'a, 'i>, Diagnostic> {
         let mut out = Classes {
             classes: Vec::new(),
             by_name: HashMap::new(),
         };
         // Depth first, parents before children, with an explicit stack (a
         // nesting as deep as the parser allows must not overflow ours).
-        let mut stack: Vec<(Node, Option<usize>)> = mujoco
-            .children()
-            .filter(|c| qname(*c) == "default")
-            .map(|d| (d, None))
+        let mut stack: Vec<(Node, Option<usize>, &Xml<'s>)> = m
+            .sections("default")
+            .map(|(xml, _, d)| (d, None, xml))
             .collect();
         stack.reverse();
-        while let Some((d, parent)) = stack.pop() {
+        while let Some((d, parent, xml)) = stack.pop() {
             let name = match (xml.attr(d, "class"), parent) {
                 (Some(v), _) => v,
                 (None, None) => Value {
@@ -67,11 +68,11 @@ impl<'a, 'i> Classes<'a, 'i> {
                     ),
                 ));
             }
-            out.classes.push((d, parent));
+            out.classes.push((d, parent, xml.source));
             let mut kids: Vec<_> = d
                 .children()
                 .filter(|c| qname(*c) == "default")
-                .map(|c| (c, Some(k)))
+                .map(|c| (c, Some(k), xml))
                 .collect();
             kids.reverse();
             stack.extend(kids);
@@ -116,14 +117,16 @@ impl<'a, 'i> Classes<'a, 'i> {
     /// Every `class` and `childclass` in the file names a class: checked
     /// once, so that a misspelt name is refused even on an element whose
     /// values are not read.
-    pub fn check_names(&self, xml: &Xml, mujoco: Node) -> Result<(), Diagnostic> {
-        for n in mujoco.descendants().filter(|n| n.is_element()) {
-            if qname(n) == "default" {
-                continue;
-            }
-            for a in ["class", "childclass"] {
-                if let Some(v) = xml.attr(n, a) {
-                    self.named(xml, &v)?;
+    pub fn check_names(&self, m: &Model) -> Result<(), Diagnostic> {
+        for (xml, root) in m.xmls.iter().zip(&m.roots) {
+            for n in root.descendants().filter(|n| n.is_element()) {
+                if qname(n) == "default" {
+                    continue;
+                }
+                for a in ["class", "childclass"] {
+                    if let Some(v) = xml.attr(n, a) {
+                        self.named(xml, &v)?;
+                    }
                 }
             }
         }
@@ -140,18 +143,34 @@ impl<'a, 'i> Classes<'a, 'i> {
         kind: &str,
         name: &str,
     ) -> Option<Value> {
-        xml.attr(node, name)
-            .or_else(|| self.inherited(xml, class, kind, name))
+        xml.attr(node, name).or_else(|| {
+            let (v, from) = self.inherited(class, kind, name)?;
+            // NOTE: a value a class of another file gives is pointed at
+            // the element that takes it: a place names one file.
+            Some(if std::ptr::eq(from, xml.source) {
+                v
+            } else {
+                Value {
+                    range: xml.tag(node),
+                    exact: false,
+                    ..v
+                }
+            })
+        })
     }
 
     /// The `<kind>` elements of class `class` and the classes it inherits
     /// from, nearest first.
-    pub fn defaults(&self, class: Class, kind: &str) -> Vec<Node<'a, 'i>> {
+    pub fn defaults(&self, class: Class, kind: &str) -> Vec<(Node<'a, 'i>, &'s Source)> {
         let mut out = Vec::new();
         let mut c = class;
         while let Some(k) = c {
-            let (d, parent) = self.classes[k];
-            out.extend(d.children().filter(|e| qname(*e) == kind));
+            let (d, parent, source) = self.classes[k];
+            out.extend(
+                d.children()
+                    .filter(|e| qname(*e) == kind)
+                    .map(|e| (e, source)),
+            );
             // Parents come before their children: the chain ends.
             c = parent;
         }
@@ -159,18 +178,19 @@ impl<'a, 'i> Classes<'a, 'i> {
     }
 
     /// The value class `class` (or a class it inherits from) gives the
-    /// attribute `name` of a `<kind>` element.
-    pub fn inherited(&self, xml: &Xml, class: Class, kind: &str, name: &str) -> Option<Value> {
+    /// attribute `name` of a `<kind>` element, and the file it is in.
+    fn inherited(&self, class: Class, kind: &str, name: &str) -> Option<(Value, &'s Source)> {
         let mut c = class;
         let mut hops = 0;
         while let Some(k) = c {
-            let (d, parent) = self.classes[k];
+            let (d, parent, source) = self.classes[k];
+            let xml = Xml { source };
             if let Some(v) = d
                 .children()
                 .filter(|e| qname(*e) == kind)
                 .find_map(|e| xml.attr(e, name))
             {
-                return Some(v);
+                return Some((v, source));
             }
             c = parent;
             // Parents come before their children: the chain ends.

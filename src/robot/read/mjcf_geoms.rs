@@ -19,9 +19,10 @@
 
 use super::geometry::{Amount, Geometry, Solid, positive};
 use super::mjcf_class::{Class, Classes};
+use super::mjcf_include::Model;
 use super::mjcf_mesh::Meshes;
 use super::orient::{Settings, orientation, quat_to_matrix, z_to_quat};
-use super::{Value, Xml, children, qname};
+use super::{Value, Xml, qname};
 use crate::diag::Diagnostic;
 use crate::robot::Description;
 use crate::robot::kinematics::Pose;
@@ -33,8 +34,8 @@ const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"
 struct Ctx<'x, 's, 'a, 'i> {
     xml: &'x Xml<'s>,
     settings: Settings,
-    classes: Classes<'a, 'i>,
-    meshes: Meshes<'a, 'i>,
+    classes: Classes<'s, 'a, 'i>,
+    meshes: Meshes<'s, 'a, 'i>,
     /// Read for `export --from-geometry` (not for the whole robot).
     export: bool,
 }
@@ -42,14 +43,13 @@ struct Ctx<'x, 's, 'a, 'i> {
 /// Per body of `d` (in its order), its geoms that count for inertia; none
 /// read for a body `need` leaves out (None: every body, for `export`).
 pub(super) fn geoms(
-    xml: &Xml,
-    mujoco: Node,
+    m: &Model,
     d: &Description,
     need: Option<&[bool]>,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
     let mut settings = Settings::default();
     let mut range = (0.0, 5.0);
-    for c in children(mujoco, "compiler") {
+    for (xml, _, c) in m.sections("compiler") {
         super::mjcf::compiler(xml, c, &mut settings)?;
         if let Some(v) = xml.attr(c, "inertiagrouprange") {
             let [lo, hi] = xml.numbers::<2>(&v, "`<compiler>`")?;
@@ -57,14 +57,16 @@ pub(super) fn geoms(
         }
     }
     let mut cx = Ctx {
-        xml,
+        xml: &m.xmls[0],
         settings,
-        classes: Classes::read(xml, mujoco)?,
-        meshes: Meshes::read(xml, mujoco, xml.source)?,
+        classes: Classes::read(m)?,
+        meshes: Meshes::read(m)?,
         export: need.is_none(),
     };
     let mut out = Vec::with_capacity(d.links.len());
-    for world in children(mujoco, "worldbody") {
+    for (xml, _, world) in m.sections("worldbody") {
+        // A body's geoms are in the body's file.
+        cx.xml = xml;
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
             // An unnamed body is "body N", as `mjcf` names it.
             let owner = match body.attribute("name").filter(|n| !n.is_empty()) {
@@ -314,14 +316,26 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
             // The nearest level that writes an orientation: the geom,
             // then its class, its parent class, …
             let mut found = None;
-            for level in std::iter::once(g).chain(classes.defaults(class, "geom")) {
+            let levels = std::iter::once((g, xml.source)).chain(classes.defaults(class, "geom"));
+            for (level, source) in levels {
                 let what = if level == g {
                     format!("a geom of {owner}")
                 } else {
                     "a default class's `<geom>`".to_string()
                 };
-                if let Some(o) = one_orientation(xml, level, &what)? {
-                    found = Some(o);
+                if let Some((form, v)) = one_orientation(&Xml { source }, level, &what)? {
+                    // NOTE: a class of another file is pointed at the
+                    // geom that takes it (`Classes::attr`).
+                    let v = if std::ptr::eq(source, xml.source) {
+                        v
+                    } else {
+                        Value {
+                            range: xml.tag(g),
+                            exact: false,
+                            ..v
+                        }
+                    };
+                    found = Some((form, v));
                     break;
                 }
             }

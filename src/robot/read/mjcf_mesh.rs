@@ -33,6 +33,7 @@
 //! the mesh's size where the file's numbers are not f32 numbers.
 
 use super::geometry::{MeshMass, scaled};
+use super::mjcf_include::Model;
 use super::{Value, Xml, children, quoted};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::mesh::{FileType, MeshBody, Mode};
@@ -64,26 +65,30 @@ pub(super) struct Loaded {
     pub legacy: bool,
 }
 
-/// An MJCF file's mesh assets, each read once when a geom needs it.
-pub(super) struct Meshes<'a, 'i> {
-    by_name: HashMap<String, Node<'a, 'i>>,
+/// An MJCF model's mesh assets (its included files' too), each read once
+/// when a geom needs it.
+pub(super) struct Meshes<'s, 'a, 'i> {
+    /// Each mesh, with the file it is written in.
+    by_name: HashMap<String, (Node<'a, 'i>, &'s Source)>,
     /// `meshdir`, else `assetdir`, as written (empty: none).
     dir: String,
     /// The model file's directory.
     base: PathBuf,
     roots: Vec<PathBuf>,
-    loaded: HashMap<roxmltree::NodeId, Loaded>,
+    /// By name (unique).
+    loaded: HashMap<String, Loaded>,
 }
 
-impl<'a, 'i> Meshes<'a, 'i> {
-    /// The `<mesh>` assets under `mujoco`, a name given twice refused.
-    pub fn read(
-        xml: &Xml,
-        mujoco: Node<'a, 'i>,
-        source: &Source,
-    ) -> Result<Meshes<'a, 'i>, Diagnostic> {
+impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
+    /// The `<mesh>` assets under `<mujoco>` (in every file of the model),
+    /// a name given twice refused.
+    pub fn read(m: &Model<'s, 'a, 'i>) -> Result<Meshes<'s, 'a, 'i>, Diagnostic> {
+        // NOTE: a mesh's file is relative to the main model file's
+        // directory, wherever the `<mesh>` or the `<compiler meshdir>` is
+        // written (MuJoCo's `ModelFileDir`).
+        let source = m.xmls[0].source;
         let (mut meshdir, mut assetdir) = (None, None);
-        for c in children(mujoco, "compiler") {
+        for (xml, _, c) in m.sections("compiler") {
             if let Some(v) = xml.attr(c, "meshdir") {
                 meshdir = Some(v.text);
             }
@@ -102,7 +107,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
             .filter_map(|p| std::fs::canonicalize(p).ok())
             .collect();
         let mut by_name = HashMap::new();
-        for asset in children(mujoco, "asset") {
+        for (xml, _, asset) in m.sections("asset") {
             for m in children(asset, "mesh") {
                 // MuJoCo names an unnamed mesh after its file, without
                 // the directory and the extension.
@@ -116,7 +121,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
                     },
                     (None, None) => continue,
                 };
-                if by_name.insert(name.text.clone(), m).is_some() {
+                if by_name.insert(name.text.clone(), (m, xml.source)).is_some() {
                     return Err(xml.error(
                         name.range.clone(),
                         format!(
@@ -144,7 +149,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
         owner: &str,
         classes: &super::mjcf_class::Classes,
     ) -> Result<Loaded, Diagnostic> {
-        let Some(&node) = self.by_name.get(&v.text) else {
+        let Some(&(node, source)) = self.by_name.get(&v.text) else {
             let near = crate::units::suggest(&v.text, self.by_name.keys().map(String::as_str))
                 .map(|s| format!("; did you mean {}?", quoted(s)))
                 .unwrap_or_default();
@@ -156,9 +161,12 @@ impl<'a, 'i> Meshes<'a, 'i> {
                 ),
             ));
         };
-        if let Some(l) = self.loaded.get(&node.id()) {
+        if let Some(l) = self.loaded.get(&v.text) {
             return Ok(l.clone());
         }
+        // The mesh's own values are read, and refused, in its file.
+        let mesh_xml = Xml { source };
+        let xml = &mesh_xml;
         let class = classes.of(xml, node)?;
         let attr = |n: &str| classes.attr(xml, node, class, "mesh", n);
         let what = format!("`<mesh>` {}", quoted(&v.text));
@@ -289,7 +297,7 @@ impl<'a, 'i> Meshes<'a, 'i> {
             shell: inertia == Inertia::Shell,
             legacy: by_legacy,
         };
-        self.loaded.insert(node.id(), l.clone());
+        self.loaded.insert(v.text.clone(), l.clone());
         Ok(l)
     }
 

@@ -15,6 +15,7 @@ mod links;
 mod mjcf;
 mod mjcf_class;
 mod mjcf_geoms;
+mod mjcf_include;
 mod mjcf_mesh;
 mod orient;
 mod sdf;
@@ -35,7 +36,31 @@ fn geoms_of_mjcf(
     d: &Description,
     need: Option<&[bool]>,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
-    mjcf_geoms::geoms(xml, mujoco, d, need)
+    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need)
+}
+
+/// `geometry::mjcf_geometry` for the whole robot: the MJCF file's includes
+/// followed, resolved by `r` (`robot::weigh`).
+pub fn mjcf_geometry_in(
+    source: &Source,
+    d: &Description,
+    need: &[bool],
+    r: &Resolve,
+) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+    mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need)))
+}
+
+/// `read`, an MJCF file's `<include>`s followed, resolved by `r` (the
+/// whole robot: `Robot::read_in`); other formats as `read` reads them.
+pub fn read_in(source: &Source, format: Dialect, r: &Resolve) -> Result<Description, Diagnostic> {
+    if format != Dialect::Mjcf {
+        return read(source, format);
+    }
+    {
+        let doc = parse(source)?;
+        root(&Xml { source }, doc.root_element(), format)?;
+    }
+    mjcf_include::with_model(source, r, mjcf::model)
 }
 
 use super::{Description, Dialect};
@@ -50,6 +75,16 @@ pub fn read(source: &Source, format: Dialect) -> Result<Description, Diagnostic>
     let doc = parse(source)?;
     let xml = Xml { source };
     let root = doc.root_element();
+    self::root(&xml, root, format)?;
+    match format {
+        Dialect::Urdf => urdf::read(&xml, root),
+        Dialect::Sdf => sdf::read(&xml, root),
+        Dialect::Mjcf => mjcf::read(&xml, root),
+    }
+}
+
+/// Refuse a root element that is not `format`'s.
+fn root(xml: &Xml, root: Node, format: Dialect) -> Result<(), Diagnostic> {
     let expected = match format {
         Dialect::Urdf => "robot",
         Dialect::Sdf => "sdf",
@@ -66,11 +101,7 @@ pub fn read(source: &Source, format: Dialect) -> Result<Description, Diagnostic>
             ),
         ));
     }
-    match format {
-        Dialect::Urdf => urdf::read(&xml, root),
-        Dialect::Sdf => sdf::read(&xml, root),
-        Dialect::Mjcf => mjcf::read(&xml, root),
-    }
+    Ok(())
 }
 
 /// The document, or roxmltree's message at the place it names.

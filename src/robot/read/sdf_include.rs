@@ -79,6 +79,42 @@ pub(super) fn includes<'a, 'i>(doc: &'a roxmltree::Document<'i>) -> Vec<Node<'a,
         .collect()
 }
 
+/// `p` after following symlinks, else as written (a file that is not
+/// there is refused where it is read).
+pub(super) fn canonical(p: &Path) -> PathBuf {
+    std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf())
+}
+
+/// The directories a robot file's includes may read, after following
+/// symlinks: the top file's directory, the working directory, each
+/// `--include-root` and `--package` directory (SDFormat's `<include>` and
+/// MJCF's `<include>` alike).
+pub(super) fn roots(top: &Source, r: &Resolve) -> Vec<PathBuf> {
+    let dir = top
+        .path()
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default();
+    let dir = if dir.as_os_str().is_empty() {
+        PathBuf::from(".")
+    } else {
+        dir
+    };
+    let mut roots = vec![canonical(&dir)];
+    if let Ok(cwd) = std::env::current_dir() {
+        roots.push(canonical(&cwd));
+    }
+    roots.extend(r.roots.iter().map(|p| canonical(p)));
+    roots.extend(r.packages.iter().map(|(_, p)| canonical(p)));
+    roots
+}
+
+/// Whether the file `canonical` (symlinks followed) lies inside one of
+/// `roots`.
+pub(super) fn inside(roots: &[PathBuf], canonical: &Path) -> bool {
+    roots.iter().any(|r| canonical.starts_with(r))
+}
+
 struct Loader<'s> {
     files: Files<'s>,
     /// Canonical path → file index; the chain being read (gray) is `chain`.
@@ -90,23 +126,6 @@ struct Loader<'s> {
 
 /// Read every file `top` includes, at any depth.
 pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagnostic> {
-    let canon = |p: &Path| std::fs::canonicalize(p).unwrap_or_else(|_| p.to_path_buf());
-    let dir = top
-        .path()
-        .parent()
-        .map(Path::to_path_buf)
-        .unwrap_or_default();
-    let dir = if dir.as_os_str().is_empty() {
-        PathBuf::from(".")
-    } else {
-        dir
-    };
-    let mut roots = vec![canon(&dir)];
-    if let Ok(cwd) = std::env::current_dir() {
-        roots.push(canon(&cwd));
-    }
-    roots.extend(r.roots.iter().map(|p| canon(p)));
-    roots.extend(r.packages.iter().map(|(_, p)| canon(p)));
     let mut l = Loader {
         files: Files {
             top,
@@ -115,8 +134,8 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
             from: Vec::new(),
         },
         known: HashMap::new(),
-        chain: vec![(canon(top.path()), top.name.clone())],
-        roots,
+        chain: vec![(canonical(top.path()), top.name.clone())],
+        roots: roots(top, r),
         packages: r.packages.clone(),
     };
     l.file(0)?;
@@ -200,7 +219,7 @@ impl Loader<'_> {
         shown: &str,
         at: std::ops::Range<usize>,
     ) -> Result<(), Diagnostic> {
-        if self.roots.iter().any(|r| canonical.starts_with(r)) {
+        if inside(&self.roots, canonical) {
             return Ok(());
         }
         Err(xml

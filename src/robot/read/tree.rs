@@ -11,6 +11,7 @@ use super::links::{
     Head, axis, joint_head, joint_named, limits, link_named, names, set_parent, unplaced,
 };
 use super::mjcf_class::Classes;
+use super::mjcf_include::Model;
 use super::orient::{Settings, orientation, quat_to_matrix};
 pub use super::sdf_include::Resolve;
 use super::{Xml, child, children, mjcf, proper, qname, quoted, rpy};
@@ -30,7 +31,7 @@ pub fn tree(source: &Source, d: &mut Description, r: &Resolve) -> Result<Tree, D
     let tree = match d.format {
         Dialect::Urdf => urdf(&xml, root, d)?,
         Dialect::Sdf => super::sdf_tree::sdformat(&xml, d, r)?,
-        Dialect::Mjcf => mujoco(&xml, root, d)?,
+        Dialect::Mjcf => super::mjcf_include::with_model(source, r, |m| mujoco(m, d))?,
     };
     depth(&xml, &tree, d)?;
     followers(&xml, &tree)?;
@@ -235,27 +236,28 @@ fn mj_pose(xml: &Xml, node: Node, owner: &str, s: &Settings) -> Result<Pose, Dia
     Ok(pose)
 }
 
-fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
+fn mujoco(m: &Model, d: &Description) -> Result<Tree, Diagnostic> {
     let mut s = Settings::default();
-    for c in children(root, "compiler") {
+    for (xml, _, c) in m.sections("compiler") {
         mjcf::compiler(xml, c, &mut s)?;
     }
     // Default classes give a joint the values it does not write itself
     // (`mjcf_class`).
-    let classes = Classes::read(xml, root)?;
-    classes.check_names(xml, root)?;
+    let classes = Classes::read(m)?;
+    classes.check_names(m)?;
     let radians = |a: f64| if s.degree { a.to_radians() } else { a };
     let mut t = Tree {
         links: unplaced(d.links.len()),
         joints: Vec::new(),
     };
-    let mut index: HashMap<roxmltree::NodeId, usize> = HashMap::new();
+    // Keyed by file too: each file is a document of its own.
+    let mut index: HashMap<(usize, roxmltree::NodeId), usize> = HashMap::new();
     let mut count = 0;
-    for world in children(root, "worldbody") {
+    for (xml, file, world) in m.sections("worldbody") {
         for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
             let i = count;
             count += 1;
-            index.insert(body.id(), i);
+            index.insert((file, body.id()), i);
             let owner = format!("body {}", quoted(&d.links[i].name));
             // Its pose in the enclosing body's frame, through any frames.
             let mut place = mj_pose(xml, body, &owner, &s)?;
@@ -267,7 +269,7 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                 place = mj_pose(xml, n, &owner, &s)?.then(&place);
                 up = n.parent();
             }
-            t.links[i].parent = up.and_then(|n| index.get(&n.id()).copied());
+            t.links[i].parent = up.and_then(|n| index.get(&(file, n.id())).copied());
             t.links[i].place = place;
             for j in body
                 .children()
@@ -333,12 +335,12 @@ fn mujoco(xml: &Xml, root: Node, d: &Description) -> Result<Tree, Diagnostic> {
                     zero,
                     limits: range.filter(|_| limited).map(|[a, b]| (a, b)),
                     follows: None,
-                    range: j.range(),
+                    range: m.range(file, j.range()),
                 });
             }
         }
     }
-    for eq in children(root, "equality") {
+    for (xml, _, eq) in m.sections("equality") {
         for e in children(eq, "joint") {
             let owner = "`<equality><joint>`".to_string();
             let class = classes.of(xml, e)?;

@@ -1,0 +1,312 @@
+//! MJCF `<include file="…"/>` for the whole robot (`report`, `diff`, a
+//! part file's `include` of an MJCF robot), as MuJoCo follows it
+//! (`xml.cc`, `IncludeXML`): the included file's root element's children
+//! take the `<include>`'s place, so an included file may hold
+//! `<compiler>`, `<default>`, `<asset>`, `<worldbody>`, … (repeated
+//! sections merge as in one file); includes nest; the path is relative to
+//! the main model file's directory (else, for an include inside an
+//! included file, to that file's directory, MuJoCo's second try); a file
+//! included twice (the main file too) is MuJoCo's error.
+//!
+//! Each file is read as a document of its own, so that a message names the
+//! place in the file where the element is written, with where that file
+//! was included from (`sdf_include::Files::located`). A body, inertial or
+//! joint of an included file stands, in the `Description` and the tree, at
+//! the outermost `<include>` of the main file that brings it in (as an
+//! SDFormat include's links do): warnings about it point there.
+//!
+//! Confined as SDFormat includes are (`sdf_include::roots`): the main
+//! file's directory, the working directory, `--include-root`s. Refused
+//! with their place: a missing `file`, a file that cannot be read or lies
+//! outside those directories, one whose root is not `<mujoco>` or that
+//! holds no element, a file included twice (or in a cycle, named), an
+//! `<include>` with children, includes deeper than `MAX_DEPTH`, and an
+//! `<include>` anywhere but directly under `<mujoco>` (not followed there:
+//! an error rather than a different model).
+
+use super::sdf_include::{Files, MAX_DEPTH, Resolve, canonical, inside, roots};
+use super::{Xml, qname};
+use crate::diag::{Diagnostic, Source};
+use roxmltree::{Document, Node};
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::{Path, PathBuf};
+
+/// A model MuJoCo compiles from a main file and the files it includes.
+pub(super) struct Model<'s, 'a, 'i> {
+    /// Per file (0: the main one), for located messages.
+    pub xmls: Vec<Xml<'s>>,
+    /// The main file's `<mujoco>`.
+    pub root: Node<'a, 'i>,
+    /// Per file, its `<mujoco>`.
+    pub roots: Vec<Node<'a, 'i>>,
+    /// `<mujoco>`'s children in MuJoCo's order, each `<include>` replaced
+    /// by the children of its file's `<mujoco>`: (file, element).
+    sections: Vec<(usize, Node<'a, 'i>)>,
+    /// Per file, the main file's `<include>` element that brings it in
+    /// (None for the main file).
+    anchors: Vec<Option<Range<usize>>>,
+}
+
+impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
+    /// The model of one file, its includes not followed (`read`'s callers
+    /// that refuse them first).
+    pub fn single(source: &'s Source, root: Node<'a, 'i>) -> Self {
+        Model {
+            xmls: vec![Xml { source }],
+            root,
+            roots: vec![root],
+            sections: root
+                .children()
+                .filter(Node::is_element)
+                .map(|c| (0, c))
+                .collect(),
+            anchors: vec![None],
+        }
+    }
+
+    /// The model of `files`, each parsed into `docs` (in the same order).
+    pub fn of(files: &'s Files<'s>, docs: &'a [Document<'i>]) -> Self {
+        let count = docs.len();
+        let mut m = Model {
+            xmls: (0..count)
+                .map(|k| Xml {
+                    source: files.source(k),
+                })
+                .collect(),
+            root: docs[0].root_element(),
+            roots: docs.iter().map(Document::root_element).collect(),
+            sections: Vec::new(),
+            anchors: vec![None; count],
+        };
+        // Depth first, in document order, with a stack of its own.
+        let mut stack: Vec<(usize, Node, Option<Range<usize>>)> = docs[0]
+            .root_element()
+            .children()
+            .filter(Node::is_element)
+            .map(|c| (0, c, None))
+            .collect();
+        stack.reverse();
+        while let Some((file, node, anchor)) = stack.pop() {
+            if qname(node) != "include" {
+                m.sections.push((file, node));
+                continue;
+            }
+            // NOTE: `load` read every `<include>` under a `<mujoco>` (or
+            // refused the model); one without a target is only in a model
+            // of one file (`single`), whose includes `read` refuses first.
+            let Some(&target) = files.targets.get(&(file, node.range().start)) else {
+                continue;
+            };
+            let anchor = anchor.unwrap_or_else(|| node.range());
+            m.anchors[target] = Some(anchor.clone());
+            let from = stack.len();
+            stack.extend(
+                docs[target]
+                    .root_element()
+                    .children()
+                    .filter(Node::is_element)
+                    .map(|c| (target, c, Some(anchor.clone()))),
+            );
+            stack[from..].reverse();
+        }
+        m
+    }
+
+    /// The sections named `name`, each with its file's `Xml` and index.
+    pub fn sections<'m>(
+        &'m self,
+        name: &'m str,
+    ) -> impl Iterator<Item = (&'m Xml<'s>, usize, Node<'a, 'i>)> + 'm {
+        self.sections
+            .iter()
+            .filter(move |(_, n)| qname(*n) == name)
+            .map(|&(f, n)| (&self.xmls[f], f, n))
+    }
+
+    /// Where an element of `file` whose bytes are `range` stands in the
+    /// main file: there, or at the `<include>` that brings its file in.
+    pub fn range(&self, file: usize, range: Range<usize>) -> Range<usize> {
+        self.anchors[file].clone().unwrap_or(range)
+    }
+}
+
+/// Every file `top` (an MJCF main file) includes, at any depth; each
+/// document parsed (index 0: `top`'s).
+pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagnostic> {
+    let mut l = Loader {
+        files: Files {
+            top,
+            included: Vec::new(),
+            targets: HashMap::new(),
+            from: Vec::new(),
+        },
+        known: HashMap::new(),
+        chain: vec![(canonical(top.path()), top.name.clone())],
+        roots: roots(top, r),
+        base: top
+            .path()
+            .parent()
+            .map(Path::to_path_buf)
+            .unwrap_or_default(),
+    };
+    l.known.insert(canonical(top.path()), (0, top.name.clone()));
+    l.file(0)?;
+    Ok(l.files)
+}
+
+/// Parse every file of `files`, in its order.
+pub(super) fn parse<'s>(files: &'s Files<'s>) -> Result<Vec<Document<'s>>, Diagnostic> {
+    (0..files.included.len() + 1)
+        .map(|k| super::parse(files.source(k)))
+        .collect()
+}
+
+struct Loader<'s> {
+    files: Files<'s>,
+    /// Canonical path → (file index, where it was included from, or its
+    /// name for the main file): MuJoCo reads each file once.
+    known: HashMap<PathBuf, (usize, String)>,
+    /// The files being read, outermost first: a file met again among them
+    /// closes a cycle.
+    chain: Vec<(PathBuf, String)>,
+    roots: Vec<PathBuf>,
+    /// The main file's directory, which MuJoCo resolves every include
+    /// against first.
+    base: PathBuf,
+}
+
+impl Loader<'_> {
+    /// The includes of file `k`, each read (depth first).
+    fn file(&mut self, k: usize) -> Result<(), Diagnostic> {
+        let source = self.files.source(k).clone();
+        let doc = super::parse(&source)?;
+        let xml = Xml { source: &source };
+        let root = doc.root_element();
+        for inc in doc.descendants().filter(|n| qname(*n) == "include") {
+            if inc.parent_element() != Some(root) {
+                let within = inc.parent_element().map_or("", |p| qname(p));
+                return Err(xml
+                    .error(
+                        xml.tag(inc),
+                        format!("`<include>` inside `<{within}>` is not followed: only an `<include>` directly under `<mujoco>` is read"),
+                    )
+                    .help("move the `<include>` under `<mujoco>`, its file's elements wrapped as that place needs (a `<worldbody>` around bodies)"));
+            }
+            if let Some(c) = inc.children().find(Node::is_element) {
+                return Err(xml.error(
+                    xml.tag(c),
+                    "an `<include>` cannot have children (MuJoCo refuses them)",
+                ));
+            }
+            let file = xml.required(inc, "file", "an `<include>`")?;
+            let at = file.range.clone();
+            let written = Path::new(&file.text);
+            // MuJoCo's first try is the main file's directory; an include
+            // of an included file falls back to that file's directory.
+            let first = self.base.join(written);
+            let path = match source.path().parent() {
+                Some(dir) if k > 0 && !first.exists() && !written.is_absolute() => {
+                    dir.join(written)
+                }
+                _ => first,
+            };
+            let shown = crate::diag::display_path(&path);
+            let canon = std::fs::canonicalize(&path).map_err(|e| {
+                xml.error(
+                    at.clone(),
+                    format!("cannot read the included file `{shown}`: {e}"),
+                )
+                .help("an MJCF include's path is relative to the main model file's directory")
+            })?;
+            if let Some(i) = self.chain.iter().position(|(p, _)| *p == canon) {
+                let names: Vec<String> = self.chain[i..]
+                    .iter()
+                    .map(|(_, n)| format!("`{n}`"))
+                    .chain([format!("`{shown}`")])
+                    .collect();
+                return Err(xml.error(
+                    at,
+                    format!(
+                        "`<include>` closes a cycle of includes: {}",
+                        names.join(" → ")
+                    ),
+                ));
+            }
+            if let Some((_, first)) = self.known.get(&canon) {
+                return Err(xml.error(
+                    at,
+                    format!("`<include>` of `{shown}`: the file is already included, at {first} (MuJoCo includes a file once)"),
+                ));
+            }
+            if self.chain.len() > MAX_DEPTH {
+                return Err(xml.error(
+                    at,
+                    format!(
+                        "`<include>` of `{shown}`: includes nest more than {MAX_DEPTH} files deep"
+                    ),
+                ));
+            }
+            if !inside(&self.roots, &canon) {
+                return Err(xml
+                    .error(
+                        at,
+                        format!("the included `{shown}` lies outside the directories includes may read"),
+                    )
+                    .help("an MJCF include may read the main file's directory, the working directory, and `--include-root`s"));
+            }
+            let bytes = std::fs::read(&canon).map_err(|e| {
+                xml.error(
+                    at.clone(),
+                    format!("cannot read the included file `{shown}`: {e}"),
+                )
+            })?;
+            let (line, col) = source.line_col(at.start);
+            let site = format!("{}:{line}:{col}", source.name);
+            let s = crate::io::source_of(&shown, bytes)
+                .map_err(|d| d.included_from(site.clone()))?
+                .read_from(path.clone());
+            let included = super::parse(&s).map_err(|d| d.included_from(site.clone()))?;
+            let found = qname(included.root_element());
+            if found != "mujoco" {
+                return Err(xml.error(
+                    at,
+                    format!(
+                        "`<include>` of `{shown}`: its root element is `<{}>`, expected `<mujoco>` (MuJoCo puts the children of an included file's `<mujoco>` in the `<include>`'s place)",
+                        crate::diag::shorten(found)
+                    ),
+                ));
+            }
+            if !included.root_element().children().any(|c| c.is_element()) {
+                return Err(xml.error(
+                    at,
+                    format!("`<include>` of `{shown}`: its `<mujoco>` holds no element (MuJoCo refuses an empty include)"),
+                ));
+            }
+            drop(included);
+            self.files.included.push(s);
+            self.files.from.push(site.clone());
+            let t = self.files.included.len();
+            self.known.insert(canon.clone(), (t, site.clone()));
+            self.chain.push((canon, shown));
+            self.file(t).map_err(|d| d.included_from(site))?;
+            self.chain.pop();
+            self.files.targets.insert((k, inc.range().start), t);
+        }
+        Ok(())
+    }
+}
+
+/// `f` of the model of the MJCF main file `source` and its includes
+/// (resolved by `r`), its errors located with where their file was
+/// included from.
+pub(super) fn with_model<T>(
+    source: &Source,
+    r: &Resolve,
+    f: impl FnOnce(&Model) -> Result<T, Diagnostic>,
+) -> Result<T, Diagnostic> {
+    let files = load(source, r)?;
+    let docs = parse(&files)?;
+    let m = Model::of(&files, &docs);
+    f(&m).map_err(|d| files.located(d))
+}
