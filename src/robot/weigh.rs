@@ -2,7 +2,7 @@
 //! (`<compiler inertiafromgeom>`, MuJoCo's XML reference): under "auto"
 //! (the default) each body without an `<inertial>`, under "true" every
 //! body, takes the sum of its geoms that count for inertia (`read`'s
-//! `mjcf_geometry`: their group within `inertiagrouprange`), each of its
+//! `mjcf_geometry_in`: their group within `inertiagrouprange`), each of its
 //! own `mass`, else its `density`, else MuJoCo's 1000 kg/m³; a body without
 //! such geoms keeps what it has. URDF and SDFormat links are unchanged.
 //!

@@ -458,6 +458,43 @@ fn a_mesh_file_outside_the_model_files_directory_is_refused_at_file() {
     );
 }
 
+/// `--include-root` lets a mesh file outside the model file's directory
+/// and the working directory be read, as it lets a part file's include.
+#[test]
+fn a_mesh_file_under_an_include_root_is_read() {
+    let path = files(
+        "include_root",
+        &[
+            ("block.obj", BLOCK),
+            (
+                "inner/r.xml",
+                &model(
+                    "<asset><mesh name='m' file='../block.obj'/></asset>",
+                    "<geom type='mesh' mesh='m'/>",
+                ),
+            ),
+        ],
+    );
+    let inner = path.parent().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_massprop"))
+        .args([
+            "report",
+            "r.xml",
+            "--format",
+            "json",
+            "--include-root",
+            "..",
+        ])
+        .current_dir(inner)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    // The block is 2 × 1 × 0.5 m at MuJoCo's 1000 kg/m³.
+    close(&numbers(&v["mass"]), &[1000.0]);
+}
+
 #[test]
 fn a_geom_naming_no_mesh_asset_is_refused_with_the_nearest_name() {
     let path = files(

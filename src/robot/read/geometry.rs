@@ -330,16 +330,3 @@ fn sdf_solid(xml: &Xml, geo: Node, owner: &str) -> Result<Solid, Diagnostic> {
         }
     })
 }
-
-/// Per body of the MJCF description `d`, its geoms that count for inertia,
-/// read only for the bodies `need` marks (a geom massprop cannot weigh is
-/// refused only where it is needed).
-pub fn mjcf_geometry(
-    source: &Source,
-    d: &Description,
-    need: &[bool],
-) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
-    let doc = super::parse(source)?;
-    let xml = Xml { source };
-    super::geoms_of_mjcf(&xml, doc.root_element(), d, Some(need))
-}

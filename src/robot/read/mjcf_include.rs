@@ -46,6 +46,8 @@ pub(super) struct Model<'s, 'a, 'i> {
     /// Per file, the main file's `<include>` element that brings it in
     /// (None for the main file).
     anchors: Vec<Option<Range<usize>>>,
+    /// Where its files and mesh files may be read from (`roots`).
+    pub dirs: Vec<PathBuf>,
 }
 
 impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
@@ -62,6 +64,7 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
                 .map(|c| (0, c))
                 .collect(),
             anchors: vec![None],
+            dirs: roots(source, &Resolve::default()),
         }
     }
 
@@ -78,6 +81,7 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
             roots: docs.iter().map(Document::root_element).collect(),
             sections: Vec::new(),
             anchors: vec![None; count],
+            dirs: files.roots.clone(),
         };
         // Depth first, in document order, with a stack of its own.
         let mut stack: Vec<(usize, Node, Option<Range<usize>>)> = docs[0]
@@ -140,6 +144,7 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
             included: Vec::new(),
             targets: HashMap::new(),
             from: Vec::new(),
+            roots: Vec::new(),
         },
         known: HashMap::new(),
         chain: vec![(canonical(top.path()), top.name.clone())],
@@ -152,6 +157,7 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
     };
     l.known.insert(canonical(top.path()), (0, top.name.clone()));
     l.file(0)?;
+    l.files.roots = l.roots;
     Ok(l.files)
 }
 

@@ -102,10 +102,10 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
             .filter(|p| !p.as_os_str().is_empty())
             .unwrap_or(Path::new("."))
             .to_path_buf();
-        let roots = [base.clone(), PathBuf::from(".")]
-            .iter()
-            .filter_map(|p| std::fs::canonicalize(p).ok())
-            .collect();
+        // Confined as the model's includes are (`sdf_include::roots`): the
+        // main file's directory, the working directory, `--include-root`
+        // and `--package` directories.
+        let roots = m.dirs.clone();
         let mut by_name = HashMap::new();
         for (xml, _, asset) in m.sections("asset") {
             for m in children(asset, "mesh") {
@@ -309,11 +309,11 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
             at(format!("cannot read the mesh file `{shown_name}`: {e}"))
                 .help("the path is relative to the model file, after `<compiler meshdir>` (else `assetdir`)")
         })?;
-        if !self.roots.iter().any(|r| canonical.starts_with(r)) {
+        if !super::sdf_include::inside(&self.roots, &canonical) {
             return Err(at(format!(
                 "the mesh file `{shown_name}` is outside the directory of the model file and the working directory"
             ))
-            .help("mesh files stay inside those directory trees (after following symlinks)"));
+            .help("mesh files stay inside those directory trees (after following symlinks); `--include-root DIR` allows another"));
         }
         if FileType::of(&canonical).is_none() {
             return Err(at(format!(

@@ -25,7 +25,7 @@ mod sdf_tree;
 mod tree;
 mod urdf;
 
-pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, mjcf_geometry, scaled};
+pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, scaled};
 pub use tree::{Resolve, tree};
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
@@ -39,8 +39,10 @@ fn geoms_of_mjcf(
     mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need)
 }
 
-/// `geometry::mjcf_geometry` for the whole robot: the MJCF file's includes
-/// followed, resolved by `r` (`robot::weigh`).
+/// Per body of the MJCF description `d`, its geoms that count for inertia,
+/// read only for the bodies `need` marks (a geom massprop cannot weigh is
+/// refused only where it is needed); the file's includes followed,
+/// resolved by `r` (`robot::weigh`).
 pub fn mjcf_geometry_in(
     source: &Source,
     d: &Description,

@@ -39,6 +39,9 @@ pub(super) struct Files<'s> {
     pub targets: HashMap<(usize, usize), usize>,
     /// Per included file, where it was first included: `FILE:LINE:COL`.
     pub from: Vec<String>,
+    /// The directories the files, and the mesh files they name, may be
+    /// read from (after following symlinks): `roots`.
+    pub roots: Vec<PathBuf>,
 }
 
 impl<'s> Files<'s> {
@@ -132,6 +135,7 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
             included: Vec::new(),
             targets: HashMap::new(),
             from: Vec::new(),
+            roots: Vec::new(),
         },
         known: HashMap::new(),
         chain: vec![(canonical(top.path()), top.name.clone())],
@@ -139,6 +143,7 @@ pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagno
         packages: r.packages.clone(),
     };
     l.file(0)?;
+    l.files.roots = l.roots;
     Ok(l.files)
 }
 
