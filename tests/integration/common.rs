@@ -208,3 +208,28 @@ pub fn assert_close(a: &[f64], b: &[f64], rtol: f64) {
         assert!((x - y).abs() <= rtol * scale, "{a:?}\n{b:?}");
     }
 }
+
+/// `report` of `path` refused: status 2, nothing on stdout, no panic; its
+/// standard error.
+pub fn report_refused(path: &std::path::Path) -> String {
+    let out = massprop(&["report", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    stderr
+}
+
+/// The numbers of the XML attribute `name="…"` in `text`, in order.
+pub fn attr(text: &str, name: &str) -> Vec<f64> {
+    let key = format!(" {name}=\"");
+    text.split(&key)
+        .skip(1)
+        .flat_map(|r| {
+            r[..r.find('"').unwrap()]
+                .split_whitespace()
+                .map(|x| x.parse::<f64>().unwrap())
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}

@@ -5,7 +5,7 @@
 //! written as a part file compose to the same bits; a link turned by a
 //! quarter turn moves its centre as the turn says.
 
-use crate::common::{massprop, report_cli as json, scratch_files};
+use crate::common::{attr, massprop, report_cli as json, scratch_files};
 use serde_json::Value;
 use std::path::Path;
 
@@ -259,15 +259,6 @@ fn a_mirrored_pair_of_robots_weighs_twice_one() {
     let (m0, _, _) = figures(&json(&robot, &[]));
     assert_eq!(m, 2.0 * m0);
     assert!(c[1].abs() < 1e-15, "{c:?}");
-}
-
-/// The numbers of an attribute `name="…"` in `text`, in order.
-fn attr(text: &str, name: &str) -> Vec<f64> {
-    let key = format!(" {name}=\"");
-    text.split(&key)
-        .skip(1)
-        .map(|r| r[..r.find('"').unwrap()].parse().unwrap())
-        .collect()
 }
 
 const GEOMETRY: &str = r#"<robot name="g">

@@ -3,7 +3,7 @@
 //! (a box mesh scaled is the box of those sides; a mirror gives the
 //! mirrored body), against closed forms.
 
-use crate::common::{massprop, scratch_files};
+use crate::common::{attr, massprop, scratch_files};
 use std::path::{Path, PathBuf};
 
 /// The unit cube [0, 1]³, outward triangles.
@@ -52,20 +52,6 @@ fn export(robot: &Path, rho: &str, args: &[&str]) -> String {
         String::from_utf8_lossy(&out.stderr)
     );
     String::from_utf8(out.stdout).unwrap()
-}
-
-/// The numbers of the attribute `name="…"` in `text`, in order.
-fn attr(text: &str, name: &str) -> Vec<f64> {
-    let key = format!(" {name}=\"");
-    text.split(&key)
-        .skip(1)
-        .flat_map(|r| {
-            r[..r.find('"').unwrap()]
-                .split_whitespace()
-                .map(|x| x.parse::<f64>().unwrap())
-                .collect::<Vec<_>>()
-        })
-        .collect()
 }
 
 fn close(got: f64, want: f64, scale: f64) {

@@ -6,7 +6,9 @@
 //! file, line and column where the `<include>` is written, and the files it
 //! was included from.
 
-use crate::common::{massprop, scratch_files};
+use crate::common::{
+    assert_close, massprop, numbers, report_cli as json, report_refused as refused, scratch_files,
+};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 
@@ -14,45 +16,6 @@ fn robots(file: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/robots/mjcf_include")
         .join(file)
-}
-
-fn json(path: &Path, args: &[&str]) -> Value {
-    let mut argv = vec!["report", path.to_str().unwrap(), "--format", "json"];
-    argv.extend(args);
-    let out = massprop(&argv);
-    assert_eq!(
-        out.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn numbers(v: &Value) -> Vec<f64> {
-    match v {
-        Value::Number(n) => vec![n.as_f64().unwrap()],
-        Value::Array(a) => a.iter().flat_map(numbers).collect(),
-        _ => panic!("{v}"),
-    }
-}
-
-fn assert_close(a: &[f64], b: &[f64], rtol: f64) {
-    assert_eq!(a.len(), b.len());
-    let scale = a.iter().chain(b).fold(0.0f64, |m, x| m.max(x.abs()));
-    for (x, y) in a.iter().zip(b) {
-        assert!((x - y).abs() <= rtol * scale, "{a:?}\n{b:?}");
-    }
-}
-
-/// `report` of `path` refused: status 2, nothing on stdout, no panic.
-fn refused(path: &Path) -> String {
-    let out = massprop(&["report", path.to_str().unwrap()]);
-    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(out.stdout.is_empty());
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    stderr
 }
 
 /// The report without its `source`, which names the file run.

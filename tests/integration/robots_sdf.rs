@@ -7,7 +7,8 @@
 //! refused at their place, without a hang or a panic.
 
 use crate::common::{
-    assert_close, figures_flat as figures, massprop, numbers, report_cli as json, scratch_files,
+    assert_close, figures_flat as figures, numbers, report_cli as json, report_refused as refused,
+    scratch_files,
 };
 use serde_json::Value;
 use std::path::{Path, PathBuf};
@@ -34,16 +35,6 @@ fn part_names(v: &Value) -> Vec<String> {
                 .to_string()
         })
         .collect()
-}
-
-/// The refusal of `report FILE`: status 2, nothing on stdout, stderr.
-fn refused(path: &Path) -> String {
-    let out = massprop(&["report", path.to_str().unwrap()]);
-    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(out.stdout.is_empty());
-    assert!(!stderr.contains("panicked"), "{stderr}");
-    stderr
 }
 
 #[test]

@@ -139,13 +139,7 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
 /// document parsed (index 0: `top`'s).
 pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagnostic> {
     let mut l = Loader {
-        files: Files {
-            top,
-            included: Vec::new(),
-            targets: HashMap::new(),
-            from: Vec::new(),
-            roots: Vec::new(),
-        },
+        files: Files::new(top),
         known: HashMap::new(),
         chain: vec![(canonical(top.path()), top.name.clone())],
         roots: roots(top, r),

@@ -45,6 +45,17 @@ pub(super) struct Files<'s> {
 }
 
 impl<'s> Files<'s> {
+    /// `top` alone, before its includes are read.
+    pub fn new(top: &'s Source) -> Self {
+        Files {
+            top,
+            included: Vec::new(),
+            targets: HashMap::new(),
+            from: Vec::new(),
+            roots: Vec::new(),
+        }
+    }
+
     pub fn source(&self, file: usize) -> &Source {
         match file {
             0 => self.top,
@@ -130,13 +141,7 @@ struct Loader<'s> {
 /// Read every file `top` includes, at any depth.
 pub(super) fn load<'s>(top: &'s Source, r: &Resolve) -> Result<Files<'s>, Diagnostic> {
     let mut l = Loader {
-        files: Files {
-            top,
-            included: Vec::new(),
-            targets: HashMap::new(),
-            from: Vec::new(),
-            roots: Vec::new(),
-        },
+        files: Files::new(top),
         known: HashMap::new(),
         chain: vec![(canonical(top.path()), top.name.clone())],
         roots: roots(top, r),
