@@ -81,6 +81,12 @@ CASES = {
     "joints": Case(
         "report", {"joints": "elbow=30deg"}, ["--joints", "elbow=30deg"], ["shapes/robots/arm.urdf"]
     ),
+    "package": Case(
+        "report",
+        {"package": ["arm=tests/robots/sdf_include/models/arm"]},
+        ["--package", "arm=tests/robots/sdf_include/models/arm"],
+        ["tests/robots/sdf_include/models/robot/model.sdf"],
+    ),
     "sweep": Case(
         "report",
         {"sweep": ["elbow=0deg..90deg:3"]},
