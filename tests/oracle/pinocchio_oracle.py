@@ -19,7 +19,9 @@ multiplier * q_leader): Pinocchio reads them as independent joints.
 
 Exit status 0 when every case agrees, 1 otherwise (each disagreement is
 printed); files Pinocchio cannot read (SDFormat without its SDFormat
-support, files massprop refuses) are named as skipped.
+support, files massprop refuses) are named as skipped. For SDFormat,
+drake_body_oracle.py has Pinocchio compose what Drake reads
+(pin_of_drake.py).
 """
 
 import argparse
