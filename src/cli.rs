@@ -549,7 +549,7 @@ impl Cli {
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
-                options.configuration = a.robot.configuration(&a.includes.include_root);
+                options.configuration = a.robot.configuration();
                 options.cases = a.cases.selection();
                 Request::Report(options)
             }
@@ -610,7 +610,7 @@ impl Cli {
                 about: a.about.clone(),
                 link: a.link.clone(),
                 includes: a.includes.includes(),
-                configuration: a.robot.configuration(&a.includes.include_root),
+                configuration: a.robot.configuration(),
             }),
             Command::Render(a) => Request::Render(a.options()),
             Command::Explain(a) => Request::Explain(a.options()),
@@ -696,6 +696,14 @@ pub struct IncludeArgs {
     /// their parameters from `params` on the include, not from `--set`.
     #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub set: Vec<String>,
+
+    /// The directory a robot description's `model://NAME` names (an
+    /// SDFormat `<include>`; with `export --from-geometry`, a mesh's
+    /// `package://NAME/` too), repeatable: for a robot file named here or
+    /// included by a part file at any depth. Without it, `model://NAME` is
+    /// the including file's directory's sibling `NAME/`.
+    #[arg(long = "package", value_name = "NAME=DIR", value_parser = crate::model::Includes::package)]
+    pub package: Vec<(String, std::path::PathBuf)>,
 }
 
 impl IncludeArgs {
@@ -704,6 +712,7 @@ impl IncludeArgs {
             roots: self.include_root.clone(),
             base_dir: self.base_dir.clone(),
             set: self.set.clone(),
+            packages: self.package.clone(),
         }
     }
 }

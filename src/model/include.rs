@@ -27,7 +27,7 @@ use super::{Ctx, Frame, Include, Item, Model};
 use crate::diag::Diagnostic;
 use crate::units::Dim;
 use std::collections::HashMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::rc::Rc;
 use toml::Spanned;
 
@@ -47,6 +47,49 @@ pub struct Includes {
     /// the files it includes, which take theirs from `params` on the
     /// include).
     pub set: Vec<String>,
+    /// `--package NAME=DIR` (`package`): the directory an SDFormat
+    /// `<include>`'s `model://NAME` names (and a mesh's `package://NAME/`
+    /// in `export --from-geometry`), for a robot description named on the
+    /// command line or included by a part file at any depth.
+    pub packages: Vec<(String, PathBuf)>,
+}
+
+impl Includes {
+    /// `--package`'s value read: `NAME=DIR`, NAME not empty, DIR an
+    /// existing directory. The one rule of the flag (every command that
+    /// takes `--include-root` takes it, through `cli::IncludeArgs`).
+    pub fn package(text: &str) -> Result<(String, PathBuf), String> {
+        let (name, dir) = match text.split_once('=') {
+            Some((n, d)) if !n.is_empty() && !d.is_empty() => (n, d),
+            _ => {
+                return Err(
+                    "expected `NAME=DIR`: the directory that `model://NAME` (or `package://NAME/`) names"
+                        .to_string(),
+                );
+            }
+        };
+        // NOTE: checked here, not where a robot first names it: a mistyped
+        // DIR would otherwise pass in silence for a file that happens not
+        // to use it, and be said as a missing model where one does.
+        if !Path::new(dir).is_dir() {
+            return Err(format!(
+                "`{}` is not a directory (`--package NAME=DIR` names the directory of package `{}`)",
+                crate::diag::shorten(dir),
+                crate::diag::shorten(name)
+            ));
+        }
+        Ok((name.to_string(), PathBuf::from(dir)))
+    }
+
+    /// Where a robot description named on the command line reads its
+    /// includes from: `--package` and `--include-root` (the robot file's
+    /// directory and the working directory are its own).
+    pub fn resolve(&self) -> crate::robot::read::Resolve {
+        crate::robot::read::Resolve {
+            packages: self.packages.clone(),
+            roots: self.roots.clone(),
+        }
+    }
 }
 
 /// A warning of a mesh file (what its exact answer survives, what a
@@ -84,6 +127,8 @@ pub(super) struct Files {
     pub(super) roots: Vec<PathBuf>,
     /// `Includes::base_dir`, for the top-level file when it is piped.
     pub(super) base_dir: Option<PathBuf>,
+    /// `Includes::packages`, for the robot descriptions included.
+    pub(super) packages: Vec<(String, PathBuf)>,
     /// The parts each file holds with its includes, counted before any is
     /// expanded (`Ctx::count_includes`).
     counts: HashMap<PathBuf, u64>,
@@ -283,12 +328,19 @@ impl Ctx<'_> {
         let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
         let child = if robot {
+            // NOTE: an SDFormat robot's own includes may read where the
+            // part file's may (`--include-root` too), `--package`'s
+            // directories, and the robot file's directory.
+            let resolve = crate::robot::read::Resolve {
+                packages: files.packages.clone(),
+                roots: files.roots.clone(),
+            };
             std::sync::Arc::new(self.robot_include(
                 inc,
                 &shown,
                 &shown_name,
                 p.joints.as_deref(),
-                &files.roots,
+                &resolve,
             )?)
         } else {
             match files.cache.get(&key) {
