@@ -706,7 +706,43 @@ pub struct IncludeArgs {
     pub package: Vec<(String, std::path::PathBuf)>,
 }
 
+impl Command {
+    /// Its `IncludeArgs`, for a command that reads part files.
+    pub(crate) fn includes(&self) -> Option<&IncludeArgs> {
+        match self {
+            Command::Report(a) => Some(&a.includes),
+            Command::Budget(a) => Some(&a.includes),
+            Command::Check(a) => Some(&a.includes),
+            Command::Diff(a) => Some(&a.includes),
+            Command::Export(a) => Some(&a.includes),
+            Command::Explain(a) => Some(&a.includes),
+            Command::Render(a) => Some(&a.includes),
+            Command::Materials(a) => Some(&a.includes),
+            Command::Completions(_)
+            | Command::Man
+            | Command::Schema
+            | Command::PartFile
+            | Command::Init(_) => None,
+        }
+    }
+}
+
 impl IncludeArgs {
+    /// The rule across `--package`s (each value's own is
+    /// `Includes::package`): a package named twice is refused, as `--set`
+    /// refuses a parameter set twice; which DIR to read would be a guess.
+    pub(crate) fn check_rules(&self) -> Result<(), String> {
+        for (k, (name, _)) in self.package.iter().enumerate() {
+            if self.package[..k].iter().any(|(n, _)| n == name) {
+                return Err(format!(
+                    "`--package {}=DIR` is given twice: give each package's directory once",
+                    crate::diag::shorten(name)
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn includes(&self) -> crate::model::Includes {
         crate::model::Includes {
             roots: self.include_root.clone(),

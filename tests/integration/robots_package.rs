@@ -347,6 +347,19 @@ fn a_package_flag_without_a_name_is_refused_naming_the_flag() {
     );
 }
 
+#[test]
+fn a_package_named_twice_is_refused_naming_the_flag() {
+    let e = refused(massprop(&[
+        "check",
+        "x.toml",
+        "--package",
+        "gripper=.",
+        "--package",
+        "gripper=tests",
+    ]));
+    assert!(e.contains("`--package gripper=DIR` is given twice"), "{e}");
+}
+
 /// The robot's own include reaching outside every root (the part file's
 /// directory, the working directory, `--include-root`s, the robot's
 /// directory and the `--package` directories) is refused at its `<uri>`.
