@@ -549,7 +549,7 @@ impl Cli {
                 // Checked as the command line was parsed (`check_rules`).
                 options.settings.uncertainty = a.uncertainty.method().ok().flatten();
                 options.full = a.full;
-                options.configuration = a.robot.configuration(&a.includes.include_root);
+                options.configuration = a.robot.configuration();
                 options.cases = a.cases.selection();
                 Request::Report(options)
             }
@@ -610,7 +610,7 @@ impl Cli {
                 about: a.about.clone(),
                 link: a.link.clone(),
                 includes: a.includes.includes(),
-                configuration: a.robot.configuration(&a.includes.include_root),
+                configuration: a.robot.configuration(),
             }),
             Command::Render(a) => Request::Render(a.options()),
             Command::Explain(a) => Request::Explain(a.options()),
@@ -696,14 +696,59 @@ pub struct IncludeArgs {
     /// their parameters from `params` on the include, not from `--set`.
     #[arg(long = "set", value_name = "NAME=VALUE", allow_hyphen_values = true)]
     pub set: Vec<String>,
+
+    /// The directory a robot description's `model://NAME` names (an
+    /// SDFormat `<include>`; with `export --from-geometry`, a mesh's
+    /// `package://NAME/` too), repeatable: for a robot file named here or
+    /// included by a part file at any depth. Without it, `model://NAME` is
+    /// the including file's directory's sibling `NAME/`.
+    #[arg(long = "package", value_name = "NAME=DIR", value_parser = crate::model::Includes::package)]
+    pub package: Vec<(String, std::path::PathBuf)>,
+}
+
+impl Command {
+    /// Its `IncludeArgs`, for a command that reads part files.
+    pub(crate) fn includes(&self) -> Option<&IncludeArgs> {
+        match self {
+            Command::Report(a) => Some(&a.includes),
+            Command::Budget(a) => Some(&a.includes),
+            Command::Check(a) => Some(&a.includes),
+            Command::Diff(a) => Some(&a.includes),
+            Command::Export(a) => Some(&a.includes),
+            Command::Explain(a) => Some(&a.includes),
+            Command::Render(a) => Some(&a.includes),
+            Command::Materials(a) => Some(&a.includes),
+            Command::Completions(_)
+            | Command::Man
+            | Command::Schema
+            | Command::PartFile
+            | Command::Init(_) => None,
+        }
+    }
 }
 
 impl IncludeArgs {
+    /// The rule across `--package`s (each value's own is
+    /// `Includes::package`): a package named twice is refused, as `--set`
+    /// refuses a parameter set twice; which DIR to read would be a guess.
+    pub(crate) fn check_rules(&self) -> Result<(), String> {
+        for (k, (name, _)) in self.package.iter().enumerate() {
+            if self.package[..k].iter().any(|(n, _)| n == name) {
+                return Err(format!(
+                    "`--package {}=DIR` is given twice: give each package's directory once",
+                    crate::diag::shorten(name)
+                ));
+            }
+        }
+        Ok(())
+    }
+
     fn includes(&self) -> crate::model::Includes {
         crate::model::Includes {
             roots: self.include_root.clone(),
             base_dir: self.base_dir.clone(),
             set: self.set.clone(),
+            packages: self.package.clone(),
         }
     }
 }

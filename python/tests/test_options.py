@@ -269,6 +269,37 @@ def test_include_root_allows_an_include_from_another_tree(
     assert massprop.check("main.toml", include_root=["../lib"]) == expected
 
 
+def test_package_reaches_a_robot_a_part_file_includes(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # tests/robots/sdf_package/carrier.sdf's `model://gripper` is found
+    # only through `--package`: `check` of a part file including it needs
+    # the keyword as `report` does.
+    robot_dir = REPO / "tests" / "robots" / "sdf_package"
+    (tmp_path / "cart.toml").write_text(
+        f'[[part]]\ninclude = "{(robot_dir / "carrier.sdf").as_posix()}"\norigin = [0, 0, 1]\n'
+    )
+    monkeypatch.chdir(tmp_path)
+    package = f"gripper={(robot_dir / 'vendor' / 'gripper').as_posix()}"
+    with pytest.raises(massprop.MassPropError) as refused:
+        massprop.check("cart.toml", include_root=robot_dir)
+    assert refused.value.status == 2
+    assert "--package gripper=DIR" in str(refused.value)
+    for command, run in (("report", massprop.report), ("check", massprop.check)):
+        expected = cli_json(
+            command,
+            "--format",
+            "json",
+            "--include-root",
+            str(robot_dir),
+            "--package",
+            package,
+            "cart.toml",
+            cwd=tmp_path,
+        )
+        assert run("cart.toml", include_root=robot_dir, package=package) == expected
+
+
 def test_none_is_an_option_left_out(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(REPO)
     assert massprop.report("shapes/flywheel.toml", omega=None, set=None) == massprop.report(

@@ -17,26 +17,15 @@ pub struct RobotArgs {
     /// mass and inertia at every sample.
     #[arg(long, value_name = "JOINT=FROM..TO:COUNT", allow_hyphen_values = true)]
     pub sweep: Vec<String>,
-
-    /// The directory an SDFormat `<include>`'s `model://NAME` names
-    /// (repeatable); without it, the including file's directory's sibling
-    /// `NAME/`.
-    #[arg(long, value_name = "NAME=DIR")]
-    pub package: Vec<String>,
 }
 
 impl RobotArgs {
-    /// The configuration, includes of an SDFormat robot reaching `roots`
-    /// (`--include-root`) too.
-    pub fn configuration(
-        &self,
-        roots: &[std::path::PathBuf],
-    ) -> crate::commands::robot::Configuration {
+    /// The configuration (`--package` and `--include-root`, where a
+    /// robot's includes are found, are `IncludeArgs`').
+    pub fn configuration(&self) -> crate::commands::robot::Configuration {
         crate::commands::robot::Configuration {
             joints: self.joints.clone(),
             sweep: self.sweep.clone(),
-            packages: self.package.clone(),
-            roots: roots.to_vec(),
         }
     }
 }
@@ -59,11 +48,6 @@ pub struct GeometryArgs {
     /// With `--from-geometry`: a built-in material instead of `--density`.
     #[arg(long, value_name = "NAME", requires = "from_geometry")]
     pub material: Option<String>,
-
-    /// With `--from-geometry`: the directory `package://NAME/` names in
-    /// mesh file names (repeatable).
-    #[arg(long, value_name = "NAME=DIR", requires = "from_geometry")]
-    pub package: Vec<String>,
 }
 
 /// `--from-geometry`'s values.
@@ -87,7 +71,6 @@ impl GeometryArgs {
             visual: self.from_geometry? == GeometryKind::Visual,
             density: self.density.clone(),
             material: self.material.clone(),
-            packages: self.package.clone(),
             link,
             update,
             dry_run,

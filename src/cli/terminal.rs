@@ -92,6 +92,11 @@ impl Cli {
         let mut command = Cli::command().color(asked_colour(&args));
         let mut matches = command.try_get_matches_from_mut(args)?;
         let cli = Cli::from_arg_matches_mut(&mut matches).map_err(|e| e.format(&mut command))?;
+        if let Some(includes) = cli.command.includes() {
+            includes
+                .check_rules()
+                .map_err(|m| command.error(clap::error::ErrorKind::ArgumentConflict, m))?;
+        }
         if let super::Command::Report(a) = &cli.command {
             a.uncertainty
                 .check_rules()

@@ -67,7 +67,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     // at `--joints`.
     let side = |path: &str, robot: Option<Robot>| match robot {
         Some((source, format)) => {
-            super::robot::Loading::new(source, format, &o.configuration)?.load(&settings, &[])
+            super::robot::Loading::new(source, format, &o.configuration, &settings.includes)?
+                .load(&settings, &[])
         }
         None => analysis::load(path, &settings),
     };

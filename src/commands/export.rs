@@ -45,8 +45,6 @@ pub struct FromGeometry {
     pub density: Option<String>,
     /// `--material`.
     pub material: Option<String>,
-    /// `--package NAME=DIR`, as typed.
-    pub packages: Vec<String>,
     /// `--link`: one link only.
     pub link: Option<String>,
     /// `--update FILE`.

@@ -56,19 +56,6 @@ fn made_of(g: &FromGeometry, mjcf: bool) -> Result<(String, f64), Diagnostic> {
     }
 }
 
-/// `--package NAME=DIR`s (`export --from-geometry`'s, and `report`'s and
-/// `diff`'s for an SDFormat robot's `model://` includes).
-pub fn packages(list: &[String]) -> Result<Vec<(String, PathBuf)>, Diagnostic> {
-    list.iter()
-        .map(|p| match p.split_once('=') {
-            Some((n, d)) if !n.is_empty() && !d.is_empty() => Ok((n.to_string(), PathBuf::from(d))),
-            _ => Err(Diagnostic::plain(format!(
-                "invalid value {p:?} for `--package`: expected `NAME=DIR`, the directory `package://NAME/` names"
-            ))),
-        })
-        .collect()
-}
-
 /// The mesh file a `filename` or `<uri>` names, absolute.
 ///
 /// NOTE: absolute because the part file written for the link resolves a
@@ -174,7 +161,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             )
         })?;
     let made = made_of(g, format == Dialect::Mjcf)?;
-    let packages = packages(&g.packages)?;
+    let packages = settings.includes.packages.clone();
     let d = crate::robot::read::read(&source, format)?;
     let kind = if g.visual { "visual" } else { "collision" };
     let chosen: Vec<usize> = match &g.link {

@@ -40,7 +40,8 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
     let loaded = match super::robot::source(&o.file)? {
         super::robot::Input::Robot(source, format) => {
             refuse_cases_for_robot(&o.cases)?;
-            let loading = super::robot::Loading::new(source, format, &o.configuration)?;
+            let loading =
+                super::robot::Loading::new(source, format, &o.configuration, &o.settings.includes)?;
             if !o.configuration.sweep.is_empty() {
                 return sweep(o, &loading, terminal);
             }

@@ -15,10 +15,6 @@ pub struct Configuration {
     pub joints: Option<String>,
     /// `--sweep "elbow=-90deg..90deg:19"`, one joint each.
     pub sweep: Vec<String>,
-    /// `--package NAME=DIR`, for an SDFormat robot's `model://` includes.
-    pub packages: Vec<String>,
-    /// `--include-root`s, which an SDFormat robot's includes may read.
-    pub roots: Vec<std::path::PathBuf>,
 }
 
 impl Configuration {
@@ -63,7 +59,9 @@ pub fn source(path: &str) -> Result<Input, Diagnostic> {
 /// `c`'s joints (`--sweep` is the caller's to refuse or run).
 pub fn load_any(file: &str, settings: &Settings, c: &Configuration) -> Result<Loaded, Diagnostic> {
     match source(file)? {
-        Input::Robot(source, format) => Loading::new(source, format, c)?.load(settings, &[]),
+        Input::Robot(source, format) => {
+            Loading::new(source, format, c, &settings.includes)?.load(settings, &[])
+        }
         Input::Part(source) => {
             c.refuse_for_part_file(file)?;
             match source {
@@ -89,12 +87,15 @@ pub struct Loading {
 }
 
 impl Loading {
-    pub fn new(source: Source, format: Dialect, c: &Configuration) -> Result<Loading, Diagnostic> {
-        let resolve = crate::robot::read::Resolve {
-            packages: super::geometry::packages(&c.packages)?,
-            roots: c.roots.clone(),
-        };
-        let robot = Robot::read_in(&source, format, &resolve)?;
+    /// Its includes found through `includes` (`--package`,
+    /// `--include-root`).
+    pub fn new(
+        source: Source,
+        format: Dialect,
+        c: &Configuration,
+        includes: &crate::model::Includes,
+    ) -> Result<Loading, Diagnostic> {
+        let robot = Robot::read_in(&source, format, &includes.resolve())?;
         let set = match &c.joints {
             Some(t) => robot.joints(t, "--joints")?,
             None => Vec::new(),

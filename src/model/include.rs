@@ -12,6 +12,14 @@
 //! sub-assembly placed without rotation, at an origin and in units that make
 //! the arithmetic exact (the same units, integer origins) is carried over
 //! exactly.
+//!
+//! Where an include may point (resolved, confined, of its kind) is
+//! `target`; counting a body's parts before it is expanded, `count`.
+
+mod count;
+mod target;
+
+pub(super) use target::{Kind, Target};
 
 use super::raw::RawPart;
 use super::rotation::Orientation;
@@ -39,6 +47,49 @@ pub struct Includes {
     /// the files it includes, which take theirs from `params` on the
     /// include).
     pub set: Vec<String>,
+    /// `--package NAME=DIR` (`package`): the directory an SDFormat
+    /// `<include>`'s `model://NAME` names (and a mesh's `package://NAME/`
+    /// in `export --from-geometry`), for a robot description named on the
+    /// command line or included by a part file at any depth.
+    pub packages: Vec<(String, PathBuf)>,
+}
+
+impl Includes {
+    /// `--package`'s value read: `NAME=DIR`, NAME not empty, DIR an
+    /// existing directory. The one rule of the flag (every command that
+    /// takes `--include-root` takes it, through `cli::IncludeArgs`).
+    pub fn package(text: &str) -> Result<(String, PathBuf), String> {
+        let (name, dir) = match text.split_once('=') {
+            Some((n, d)) if !n.is_empty() && !d.is_empty() => (n, d),
+            _ => {
+                return Err(
+                    "expected `NAME=DIR`: the directory that `model://NAME` (or `package://NAME/`) names"
+                        .to_string(),
+                );
+            }
+        };
+        // NOTE: checked here, not where a robot first names it: a mistyped
+        // DIR would otherwise pass in silence for a file that happens not
+        // to use it, and be said as a missing model where one does.
+        if !Path::new(dir).is_dir() {
+            return Err(format!(
+                "`{}` is not a directory (`--package NAME=DIR` names the directory of package `{}`)",
+                crate::diag::shorten(dir),
+                crate::diag::shorten(name)
+            ));
+        }
+        Ok((name.to_string(), PathBuf::from(dir)))
+    }
+
+    /// Where a robot description named on the command line reads its
+    /// includes from: `--package` and `--include-root` (the robot file's
+    /// directory and the working directory are its own).
+    pub fn resolve(&self) -> crate::robot::read::Resolve {
+        crate::robot::read::Resolve {
+            packages: self.packages.clone(),
+            roots: self.roots.clone(),
+        }
+    }
 }
 
 /// A warning of a mesh file (what its exact answer survives, what a
@@ -76,6 +127,8 @@ pub(super) struct Files {
     pub(super) roots: Vec<PathBuf>,
     /// `Includes::base_dir`, for the top-level file when it is piped.
     pub(super) base_dir: Option<PathBuf>,
+    /// `Includes::packages`, for the robot descriptions included.
+    pub(super) packages: Vec<(String, PathBuf)>,
     /// The parts each file holds with its includes, counted before any is
     /// expanded (`Ctx::count_includes`).
     counts: HashMap<PathBuf, u64>,
@@ -189,294 +242,6 @@ impl AssemblyNames {
     }
 }
 
-/// Where an include points, checked.
-pub(super) struct Target {
-    /// Canonical: symlinks followed.
-    pub(super) canonical: PathBuf,
-    /// As the including file names it, relative to the working directory.
-    pub(super) shown: PathBuf,
-    pub(super) shown_name: String,
-}
-
-/// What a path a part names is: a part file to include, or a mesh file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(super) enum Kind {
-    Include,
-    Mesh,
-}
-
-impl Kind {
-    /// "the included `x`" or "the mesh file `x`".
-    fn the(self, shown: &str) -> String {
-        match self {
-            Kind::Include => format!("the included `{shown}`"),
-            Kind::Mesh => format!("the mesh file `{shown}`"),
-        }
-    }
-
-    fn plural(self) -> &'static str {
-        match self {
-            Kind::Include => "includes",
-            Kind::Mesh => "mesh files",
-        }
-    }
-
-    fn key(self) -> &'static str {
-        match self {
-            Kind::Include => "include",
-            Kind::Mesh => "file",
-        }
-    }
-}
-
-impl Ctx<'_> {
-    /// Resolve `include = ".."` (see `target_of`).
-    fn target(&self, inc: &Spanned<String>, files: &Files) -> Result<Target, Diagnostic> {
-        self.target_of(inc, files, Kind::Include)
-    }
-
-    /// Resolve a path a part names (`include = ".."`, a mesh's `file`)
-    /// and apply every rule on where it may point before anything of it is
-    /// read: relative to the part file (or `--base-dir` for a piped one),
-    /// inside the allowed directory trees, a regular file, within the size
-    /// limit, of the kind's extension. The one place these rules live:
-    /// counting and expanding includes, and reading meshes, all come
-    /// through here.
-    pub(super) fn target_of(
-        &self,
-        inc: &Spanned<String>,
-        files: &Files,
-        kind: Kind,
-    ) -> Result<Target, Diagnostic> {
-        let key = kind.key();
-        let base = match (self.source.piped, &files.base_dir) {
-            (false, _) => self.source.path().parent().unwrap_or(Path::new("")),
-            (true, Some(dir)) => dir.as_path(),
-            (true, None) => {
-                // Relative to what? Not silently the working directory: a
-                // file piped in (`git show OLD:arm.toml | massprop diff -
-                // arm.toml`) would include today's sub-assemblies unasked.
-                let what = if self.source.name == "<stdin>" {
-                    "standard input"
-                } else {
-                    "a pipe"
-                };
-                return Err(self
-                    .err(inc.span(), format!("`{key}` in a file read from {what}: its path has nothing to be relative to"))
-                    .help(format!("give `--base-dir DIR`, the directory its {} are relative to, or the file by its path", kind.plural())));
-            }
-        };
-        let shown = base.join(inc.get_ref());
-        let shown_name = crate::diag::display_path(&shown);
-        let the = kind.the(&shown_name);
-        let unreadable = |e: std::io::Error| {
-            let what = match kind {
-                Kind::Include => "the included file",
-                Kind::Mesh => "the mesh file",
-            };
-            self.err(
-                inc.span(),
-                format!("cannot read {what} `{shown_name}`: {e}"),
-            )
-            .help(match kind {
-                Kind::Include => "the path is relative to the including file",
-                Kind::Mesh => "the path is relative to the part file",
-            })
-        };
-        let canonical = std::fs::canonicalize(&shown).map_err(|e| {
-            let d = unreadable(e);
-            match near_include(&shown, inc.get_ref(), &files.roots, kind) {
-                Some(near) => {
-                    let why = d.help_text().unwrap_or_default().to_string();
-                    d.help(format!("did you mean `{near}`? ({why})"))
-                }
-                None => d,
-            }
-        })?;
-        // Confined: a part file from a pull request must not read, and
-        // quote in an error, any file it names (`/proc/self/environ`).
-        if !files.roots.iter().any(|r| canonical.starts_with(r)) {
-            return Err(self
-                .err(
-                    inc.span(),
-                    format!(
-                        "{the} is outside the directory of the part file and the working directory"
-                    ),
-                )
-                .help(format!("{} stay inside those directory trees (after following symlinks); `--include-root DIR` allows another", kind.plural())));
-        }
-        let meta = std::fs::metadata(&canonical).map_err(unreadable)?;
-        if meta.len() > crate::io::MAX_FILE_BYTES {
-            return Err(self.err(
-                inc.span(),
-                format!(
-                    "{the} is larger than the limit of {} MiB",
-                    crate::io::MAX_FILE_BYTES >> 20
-                ),
-            ));
-        }
-        if !meta.is_file() {
-            return Err(self
-                .err(inc.span(), format!("{the} is not a regular file"))
-                .help(match kind {
-                    Kind::Include => "`include` names a part file",
-                    Kind::Mesh => "`file` names a mesh file",
-                }));
-        }
-        match kind {
-            // Only part files: `.env` or `.git/config` (where a CI checkout
-            // keeps its token) would be parsed as TOML and quoted in the error.
-            Kind::Include
-                if !crate::io::is_toml(&canonical) && !crate::robot::may_be_robot(&canonical) =>
-            {
-                return Err(self
-                    .err(inc.span(), format!("{the} is not a part file (`*.toml`) or a robot description (`*.urdf`, `*.sdf`, `*.xml`)"))
-                    .help("`include` names a part file or a robot description, after following symlinks"));
-            }
-            // Only mesh files, by their extension (after following
-            // symlinks): nothing else is read and quoted as a mesh.
-            Kind::Mesh if crate::mesh::FileType::of(&canonical).is_none() => {
-                return Err(self
-                    .err(
-                        inc.span(),
-                        format!("{the} is not a mesh file (`*.stl` or `*.obj`)"),
-                    )
-                    .help("`file` names an STL or Wavefront OBJ file, after following symlinks"));
-            }
-            _ => {}
-        }
-        Ok(Target {
-            canonical,
-            shown,
-            shown_name,
-        })
-    }
-}
-
-impl Ctx<'_> {
-    /// Refuse a body of more than `MAX_PARTS` parts before any include is
-    /// expanded: the parts of `raw_parts` counted with every file they
-    /// include, each file read and counted once however often it is
-    /// included. A binary tree of 32 files describing 2³¹ parts was
-    /// refused only once 2²¹ of them had been built, after 7 GB.
-    ///
-    /// NOTE: an included file that includes others is parsed here and
-    /// again when it is expanded; one that includes nothing (most, and the
-    /// large ones) has its `[[part]]` lines counted, not parsed (parsing
-    /// every included file twice cost 40 % on a file that includes one of
-    /// 60,000 parts). Either count may miss parts written otherwise (a
-    /// `part = [...]` array) or count a `[[part]]` line inside a multi-line
-    /// string: the limit is enforced exactly again as parts are expanded.
-    /// An include that cannot be counted (any error, a cycle) counts as one
-    /// part: expanding it reports the error where it is.
-    pub(super) fn check_part_count(
-        &self,
-        raw_parts: &[Spanned<RawPart>],
-        files: &mut Files,
-    ) -> Result<(), Diagnostic> {
-        if !raw_parts.iter().any(|p| p.get_ref().include.is_some()) {
-            return Ok(());
-        }
-        let max = super::MAX_PARTS as u64;
-        let mut total = 0u64;
-        for p in raw_parts {
-            // Its copies (`array`, `mirror`) count it again each.
-            let copies = super::copies::raw_multiplicity(p.get_ref());
-            let Some(inc) = &p.get_ref().include else {
-                total = total.saturating_add(copies);
-                continue;
-            };
-            let (n, shown) = match self.count_include(inc, files) {
-                Some((n, shown)) => (n, shown),
-                None => (1, String::new()),
-            };
-            let n = n.saturating_mul(copies);
-            total = total.saturating_add(n);
-            if total > max {
-                // A count that saturated is past u64.
-                let said = |n: u64| match n {
-                    u64::MAX => "more than 2⁶⁴".to_string(),
-                    n => n.to_string(),
-                };
-                return Err(self
-                    .err(
-                        inc.span(),
-                        format!(
-                            "with this include the body has {} parts, past the limit of {max}: `{shown}` holds {} with its includes",
-                            said(total),
-                            said(n)
-                        ),
-                    )
-                    .help("each copy of a sub-assembly counts its parts again"));
-            }
-        }
-        Ok(())
-    }
-
-    /// The parts the file `inc` names holds with its includes, and its name
-    /// as shown; `None` if it cannot be counted.
-    fn count_include(&self, inc: &Spanned<String>, files: &mut Files) -> Option<(u64, String)> {
-        let t = self.target(inc, files).ok()?;
-        if let Some(n) = files.counts.get(&t.canonical) {
-            return Some((*n, t.shown_name));
-        }
-        if files.stack.len() >= MAX_INCLUDE_DEPTH
-            || files.stack.iter().any(|(c, _)| *c == t.canonical)
-        {
-            return None;
-        }
-        files.read.push(t.canonical.clone());
-        let bytes = std::fs::read(&t.shown).ok()?;
-        let source = crate::io::source_of(&t.shown_name, bytes)
-            .ok()?
-            .read_from(t.shown.clone());
-        // A file that includes nothing holds its `[[part]]` tables: counted
-        // from the text, not parsed (it is parsed when it is expanded).
-        if !["include", "array", "mirror"]
-            .iter()
-            .any(|k| source.text.contains(k))
-        {
-            let n = super::part_tables(&source.text);
-            files.counts.insert(t.canonical, n);
-            return Some((n, t.shown_name));
-        }
-        files.reads += 1;
-        let raw = Model::raw(&source).ok()?;
-        // Kept, not parsed again when it is expanded, if it has parameters.
-        let (raw, kept) = match raw.params {
-            Some(_) => {
-                let kept = Parsed::keep(source.clone(), raw);
-                files.parsed.insert(t.canonical.clone(), kept.clone());
-                (None, Some(kept))
-            }
-            None => (Some(raw), None),
-        };
-        let raw = raw.as_ref().or(kept.as_ref().map(|k| &k.raw))?;
-        let child = Ctx {
-            source: &source,
-            units: Default::default(),
-            materials: Default::default(),
-            params: Default::default(),
-            growth: Default::default(),
-        };
-        files
-            .stack
-            .push((t.canonical.clone(), t.shown_name.clone()));
-        let n = raw.part.as_ref().map_or(0, |parts| {
-            parts.get_ref().iter().fold(0u64, |n, p| {
-                let copies = super::copies::raw_multiplicity(p.get_ref());
-                n.saturating_add(copies.saturating_mul(match &p.get_ref().include {
-                    None => 1,
-                    Some(inc) => child.count_include(inc, files).map_or(1, |(n, _)| n),
-                }))
-            })
-        });
-        files.stack.pop();
-        files.counts.insert(t.canonical, n);
-        Some((n, t.shown_name))
-    }
-}
-
 /// The keys of a part that includes a file, besides `name` (the JSON
 /// Schema reads them too: `model::schema`).
 pub(super) const INCLUDE_KEYS: [&str; 5] = ["include", "origin", "rotation", "params", "joints"];
@@ -563,12 +328,19 @@ impl Ctx<'_> {
         let key = (canonical.clone(), super::params::cache_key(&passes));
         files.read.push(canonical.clone());
         let child = if robot {
+            // NOTE: an SDFormat robot's own includes may read where the
+            // part file's may (`--include-root` too), `--package`'s
+            // directories, and the robot file's directory.
+            let resolve = crate::robot::read::Resolve {
+                packages: files.packages.clone(),
+                roots: files.roots.clone(),
+            };
             std::sync::Arc::new(self.robot_include(
                 inc,
                 &shown,
                 &shown_name,
                 p.joints.as_deref(),
-                &files.roots,
+                &resolve,
             )?)
         } else {
             match files.cache.get(&key) {
@@ -755,30 +527,6 @@ impl Ctx<'_> {
         }
         Ok(one.items[0].clone())
     }
-}
-
-/// For an include or a mesh that does not exist: the path as the file
-/// writes it, its file name replaced by the nearest name of its kind in
-/// its directory (`io::near_name`: `arm.tom` → `arm.toml`), when that
-/// directory lies inside the roots includes may read: no name outside
-/// them is listed.
-fn near_include(shown: &Path, written: &str, roots: &[PathBuf], kind: Kind) -> Option<String> {
-    let dir = shown
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let dir = std::fs::canonicalize(dir).ok()?;
-    if !roots.iter().any(|r| dir.starts_with(r)) {
-        return None;
-    }
-    let near = crate::io::near_name(shown, |p| match kind {
-        Kind::Include => crate::io::is_toml(p),
-        Kind::Mesh => crate::mesh::FileType::of(p).is_some(),
-    })?;
-    let name = Path::new(&near).file_name()?;
-    Some(crate::diag::display_path(
-        &Path::new(written).with_file_name(name),
-    ))
 }
 
 #[cfg(test)]

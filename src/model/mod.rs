@@ -245,6 +245,7 @@ impl Model {
         values: &[(String, crate::expr::Value)],
     ) -> Result<Model, Diagnostic> {
         let mut files = include::Files::default();
+        files.packages = includes.packages.clone();
         if source.piped {
             // A piped file's tree is the one it is based in.
             files.base_dir = includes.base_dir.clone();

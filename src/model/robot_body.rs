@@ -199,15 +199,16 @@ impl super::Ctx<'_> {
     /// robot description `shown` names, read whole, at those joints (the
     /// rest at their zero), as a body of its own in SI. Errors inside the
     /// robot file say where it was included from; a joint's, at its key.
-    /// An SDFormat robot's `<include>`s may read `roots` (the part file's
-    /// include roots) and the robot file's directory.
+    /// An SDFormat robot's `<include>`s are resolved by `resolve` (the
+    /// part file's include roots and `--package`s) and may read the robot
+    /// file's directory.
     pub(super) fn robot_include(
         &self,
         inc: &toml::Spanned<String>,
         shown: &std::path::Path,
         shown_name: &str,
         joints: Option<&super::raw::Params>,
-        roots: &[std::path::PathBuf],
+        resolve: &crate::robot::read::Resolve,
     ) -> Result<Model, crate::diag::Diagnostic> {
         use crate::robot::Dialect;
         use crate::robot::body::Robot;
@@ -232,13 +233,7 @@ impl super::Ctx<'_> {
                     format!("the included `{shown_name}` is not a robot description: its root element is not `<robot>`, `<sdf>` or `<mujoco>`"),
                 )
             })?;
-        // An SDFormat robot's own includes may read where the part file's
-        // may (`--include-root` too), and the robot file's directory.
-        let resolve = crate::robot::read::Resolve {
-            packages: Vec::new(),
-            roots: roots.to_vec(),
-        };
-        let robot = Robot::read_in(&source, format, &resolve).map_err(included_here)?;
+        let robot = Robot::read_in(&source, format, resolve).map_err(included_here)?;
         let mut set = Vec::new();
         for (key, q) in joints.map(|t| t.get_ref().iter()).into_iter().flatten() {
             let here = |d: crate::diag::Diagnostic, at: std::ops::Range<usize>| {

@@ -65,6 +65,7 @@ mod robots_hostile;
 mod robots_mjcf;
 mod robots_mjcfinc;
 mod robots_more;
+mod robots_package;
 mod robots_sdf;
 mod schema;
 mod search_rules;
