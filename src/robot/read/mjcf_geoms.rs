@@ -101,10 +101,7 @@ pub(super) fn geoms(
                         let from = stack.len();
                         let mut within = frames.clone();
                         within.push((f, g));
-                        stack.extend(
-                            m.children(f, g)
-                                .map(|(k, n)| (k, n, within.clone())),
-                        );
+                        stack.extend(m.children(f, g).map(|(k, n)| (k, n, within.clone())));
                         stack[from..].reverse();
                         continue;
                     }

@@ -83,8 +83,7 @@ impl<'a, 'i> Iterator for Children<'_, '_, 'a, 'i> {
             // one without a target is only in a model of one file
             // (`single`), whose includes its callers refuse first.
             if let Some(&t) = self.m.targets.get(&(file, node.id())) {
-                self.stack
-                    .push((t, self.m.roots[t].first_element_child()));
+                self.stack.push((t, self.m.roots[t].first_element_child()));
             }
         }
     }
