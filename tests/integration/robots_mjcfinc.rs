@@ -573,3 +573,51 @@ fn a_mesh_warning_is_said_once_per_mesh_file_at_its_mesh_asset_in_the_included_f
     );
     assert!(w["path"].as_str().unwrap().ends_with("a.xml"), "{w}");
 }
+
+#[test]
+fn a_whole_model_included_inside_a_body_is_refused_at_its_worldbody() {
+    // MuJoCo splices the file's `<worldbody>` into the body and refuses it
+    // there (an unrecognized element); read, it would be another model.
+    let arm = "<mujoco>\n  <worldbody>\n    <body name='arm'><geom size='1'/></body>\n  </worldbody>\n</mujoco>\n";
+    let e = refusal(
+        "whole-in-body",
+        &[("arm.xml", arm)],
+        "<mujoco>\n<worldbody>\n<body name='b'>\n  <include file='arm.xml'/>\n</body>\n</worldbody>\n</mujoco>\n",
+    );
+    assert!(
+        e.contains("arm.xml:2:3: error: `<worldbody>` inside `<body>`: MuJoCo refuses it there"),
+        "{e}"
+    );
+    assert!(
+        e.contains("= help: an `<include>` is replaced by the children of its file's root element")
+            && e.contains("= note: included from ")
+            && e.contains("m.xml:4:18"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_asset_section_included_inside_an_asset_is_refused() {
+    let a = "<mujoco>\n  <asset>\n    <mesh name='m' file='block.obj'/>\n  </asset>\n</mujoco>\n";
+    let e = refusal(
+        "asset-in-asset",
+        &[("a.xml", a)],
+        "<mujoco>\n<asset><include file='a.xml'/></asset>\n<worldbody><body name='b'><geom type='mesh' mesh='m'/></body></worldbody>\n</mujoco>\n",
+    );
+    assert!(
+        e.contains("a.xml:2:3: error: `<asset>` inside `<asset>`: MuJoCo refuses it there"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_nested_default_class_is_not_a_misplaced_section() {
+    let d = "<x><default class='c'><geom density='10'/></default></x>";
+    same_as_inline(
+        "class-in-default",
+        &[("d.xml", d)],
+        "<mujoco><default><include file='d.xml'/></default><worldbody><body name='b'><joint name='j'/><geom class='c' size='1'/></body></worldbody></mujoco>",
+        "<mujoco><default><default class='c'><geom density='10'/></default></default><worldbody><body name='b'><joint name='j'/><geom class='c' size='1'/></body></worldbody></mujoco>",
+        "j=0",
+    );
+}

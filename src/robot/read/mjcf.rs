@@ -97,6 +97,7 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
             m.children(file, world).map(|(f, n)| (f, n, None)).collect();
         stack.reverse();
         while let Some((file, node, parent)) = stack.pop() {
+            m.in_place(file, node)?;
             let inside = if qname(node) == "body" {
                 let l = body(m, file, node, parent, &settings, &mut count)?;
                 links.push(l);

@@ -75,6 +75,9 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
             let (kids, elems): (Vec<_>, Vec<_>) = m
                 .children(file, d)
                 .partition(|(_, c)| qname(*c) == "default");
+            for &(f, e) in &elems {
+                m.in_place(f, e)?;
+            }
             out.classes.push((
                 parent,
                 elems

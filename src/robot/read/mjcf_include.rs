@@ -37,6 +37,29 @@ use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+/// The sections of `<mujoco>` (MuJoCo's schema, `mjcf.xsd`): each stands
+/// directly under `<mujoco>` only (`<default>` inside `<default>` is a
+/// class).
+const SECTIONS: [&str; 17] = [
+    "actuator",
+    "asset",
+    "compiler",
+    "contact",
+    "custom",
+    "default",
+    "deformable",
+    "equality",
+    "extension",
+    "keyframe",
+    "option",
+    "sensor",
+    "size",
+    "statistic",
+    "tendon",
+    "visual",
+    "worldbody",
+];
+
 /// A model MuJoCo compiles from a main file and the files it includes.
 pub(super) struct Model<'s, 'a, 'i> {
     /// Per file (0: the main one), for located messages.
@@ -185,6 +208,38 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
                 _ => return Some((f, p)),
             }
         }
+    }
+
+    /// Refuse `node` (of file `file`) if it is a section of `<mujoco>`
+    /// standing anywhere else once includes are spliced (MuJoCo: "Schema
+    /// violation: unrecognized element"): a whole model's file included
+    /// inside `<worldbody>`, say, whose `<worldbody>` MuJoCo refuses there
+    /// and massprop would otherwise read as a different model.
+    pub fn in_place(&self, file: usize, node: Node<'a, 'i>) -> Result<(), Diagnostic> {
+        let name = qname(node);
+        if !SECTIONS.contains(&name) {
+            return Ok(());
+        }
+        let Some((pf, parent)) = self.parent(file, node) else {
+            return Ok(());
+        };
+        let within = qname(parent);
+        if (pf == 0 && parent == self.root) || (name == "default" && within == "default") {
+            return Ok(());
+        }
+        let xml = self.xml(file);
+        let d = xml.error(
+            xml.tag(node),
+            format!("`<{name}>` inside `<{within}>`: MuJoCo refuses it there (an unrecognized element); `<{name}>` stands directly under `<mujoco>`"),
+        );
+        // Where an include put it there, say how an include is spliced.
+        Err(
+            if node.parent_element() == Some(self.roots[file]) && file > 0 {
+                d.help(format!("an `<include>` is replaced by the children of its file's root element: a file included inside `<{within}>` holds what is written there (bodies, not a `<worldbody>` around them)"))
+            } else {
+                d
+            },
+        )
     }
 
     /// The file's `Xml`, for its located messages.

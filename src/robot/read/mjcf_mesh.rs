@@ -34,7 +34,7 @@
 
 use super::geometry::{MeshMass, scaled};
 use super::mjcf_include::Model;
-use super::{Value, Xml, quoted};
+use super::{Value, Xml, qname, quoted};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::mesh::{FileType, MeshBody, Mode};
 use crate::numeric::{DD, Real};
@@ -127,7 +127,11 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
         let mut by_name = HashMap::new();
         for (_, file, asset) in m.sections("asset") {
             // An `<include>` in an `<asset>` brings its meshes there.
-            for (file, mesh) in m.named(file, asset, "mesh") {
+            for (file, mesh) in m.children(file, asset) {
+                m.in_place(file, mesh)?;
+                if qname(mesh) != "mesh" {
+                    continue;
+                }
                 let xml = m.xml(file);
                 let m = mesh;
                 // MuJoCo names an unnamed mesh after its file, without
