@@ -17,12 +17,15 @@ use crate::diag::{Diagnostic, Source};
 use roxmltree::Node;
 use std::collections::HashMap;
 
+/// An element of a file of the model, with that file.
+type Placed<'s, 'a, 'i> = (Node<'a, 'i>, &'s Source);
+
 /// The default classes of an MJCF model (its included files' too).
 pub(super) struct Classes<'s, 'a, 'i> {
     /// Each class: its parent class, and its elements other than
     /// `<default>`s (`<joint>`, `<geom>`, …), each with the file it is
     /// written in (an included one, where an `<include>` stands there).
-    classes: Vec<(Option<usize>, Vec<(Node<'a, 'i>, &'s Source)>)>,
+    classes: Vec<(Option<usize>, Vec<Placed<'s, 'a, 'i>>)>,
     by_name: HashMap<String, usize>,
 }
 

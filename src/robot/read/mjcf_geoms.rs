@@ -28,6 +28,9 @@ use crate::robot::Description;
 use crate::robot::kinematics::Pose;
 use roxmltree::Node;
 
+/// The `<frame>`s an element is in (file, element), outermost first.
+type Frames<'a, 'i> = Vec<(usize, Node<'a, 'i>)>;
+
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
 /// What reading a body's geoms shares.
@@ -90,7 +93,7 @@ pub(super) fn geoms(
             // frames only, with a stack of its own (a long chain of bodies
             // is not walked once per body). Each with the frames it is
             // in, outermost first.
-            let mut stack: Vec<(usize, Node, Vec<(usize, Node)>)> = m
+            let mut stack: Vec<(usize, Node, Frames)> = m
                 .children(file, body)
                 .map(|(f, n)| (f, n, Vec::new()))
                 .collect();
