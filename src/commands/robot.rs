@@ -126,6 +126,12 @@ impl Loading {
                     message: n.message,
                 }
             })
+            .chain(robot.mesh_warnings.iter().map(|w| plausible::Warning {
+                kind: plausible::Kind::Mesh,
+                path: w.path.clone(),
+                span: w.span,
+                message: w.message.clone(),
+            }))
             .collect();
         Ok(loaded)
     }

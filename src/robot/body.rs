@@ -16,6 +16,9 @@ use crate::units::{self, Dim};
 pub struct Robot {
     pub description: Description,
     pub tree: Tree,
+    /// The warnings of the MJCF mesh files weighed (`weigh`), each at its
+    /// `<mesh>` asset, in whichever file that is written.
+    pub mesh_warnings: Vec<super::read::MeshWarning>,
 }
 
 /// What a robot's body warns of: where (a byte range of its text) and
@@ -41,9 +44,13 @@ impl Robot {
         r: &super::read::Resolve,
     ) -> Result<Robot, Diagnostic> {
         let mut description = super::read::read_in(source, format, r)?;
-        super::weigh::mjcf_inertials(source, &mut description, r)?;
+        let mesh_warnings = super::weigh::mjcf_inertials(source, &mut description, r)?;
         let tree = super::read::tree(source, &mut description, r)?;
-        Ok(Robot { description, tree })
+        Ok(Robot {
+            description,
+            tree,
+            mesh_warnings,
+        })
     }
 
     /// The joints' values: each at its zero, then `set` (joint index,

@@ -15,7 +15,7 @@
 //! evaluated and summed in double-double about the body's centre of mass,
 //! and rounded once to f64: the inertial a file would carry.
 
-use super::read::{Amount, Geometry, MeshMass, Solid};
+use super::read::{Amount, Geometry, MeshMass, MeshWarning, Solid};
 use super::{Description, Dialect, Inertial, Tensor, Written};
 use crate::diag::{Diagnostic, Source};
 use crate::numeric::{DD, Real};
@@ -25,26 +25,27 @@ use crate::shapes::Shape;
 const MUJOCO_DENSITY: f64 = 1000.0;
 
 /// Fill the inertials MuJoCo's compiler gives an MJCF description's bodies
-/// from their geoms (see the module's comment).
+/// from their geoms (see the module's comment); the warnings of the mesh
+/// files weighed.
 /// An MJCF file's includes are resolved by `r`.
 pub fn mjcf_inertials(
     source: &Source,
     d: &mut Description,
     r: &super::read::Resolve,
-) -> Result<(), Diagnostic> {
+) -> Result<Vec<MeshWarning>, Diagnostic> {
     if d.format != Dialect::Mjcf || d.compiler.inertiafromgeom == Some(false) {
-        return Ok(());
+        return Ok(Vec::new());
     }
     let all = d.compiler.inertiafromgeom == Some(true);
     if !all && d.links.iter().all(|l| l.inertial.is_some()) {
-        return Ok(());
+        return Ok(Vec::new());
     }
     let need: Vec<bool> = d
         .links
         .iter()
         .map(|l| all || l.inertial.is_none())
         .collect();
-    let geos = super::read::mjcf_geometry_in(source, d, &need, r)?;
+    let (geos, warnings) = super::read::mjcf_geometry_in(source, d, &need, r)?;
     for (l, g) in d.links.iter_mut().zip(&geos) {
         if g.is_empty() {
             continue;
@@ -59,7 +60,7 @@ pub fn mjcf_inertials(
             range: l.range.clone(),
         });
     }
-    Ok(())
+    Ok(warnings)
 }
 
 /// One geom's mass, centre and second moments about its centre, in the

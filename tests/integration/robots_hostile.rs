@@ -1545,3 +1545,289 @@ fn generated_sdformat_scopes_and_includes_keep_the_promise() {
         |(text, pick)| hostile_robot(&dir, "gen-scope.sdf", text.as_bytes(), *pick),
     );
 }
+
+// ---------------------------------------------------------------------------
+// MJCF includes anywhere (issue 34, item 1): a valid model written in one
+// file, then split at random elements into included files (nested, in
+// sections, bodies, frames, default classes), reports bit for bit as the
+// one file: MuJoCo puts an included file's root's children where the
+// `<include>` stands.
+
+/// A small deterministic generator (SplitMix64): the model and its cuts
+/// come from the seeds proptest draws.
+struct Mix(u64);
+
+impl Mix {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// A number in [0, 1).
+    fn unit(&mut self) -> f64 {
+        (self.next() >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+
+    fn chance(&mut self, p: f64) -> bool {
+        self.unit() < p
+    }
+
+    fn nums(&mut self, n: usize, lo: f64, hi: f64) -> String {
+        (0..n)
+            .map(|_| format!("{:?}", lo + (hi - lo) * self.unit()))
+            .collect::<Vec<_>>()
+            .join(" ")
+    }
+}
+
+/// An XML element: its tag with attributes, and its children.
+struct El {
+    head: String,
+    tag: &'static str,
+    kids: Vec<El>,
+}
+
+fn el(tag: &'static str, attrs: String, kids: Vec<El>) -> El {
+    El {
+        head: format!("{tag}{attrs}"),
+        tag,
+        kids,
+    }
+}
+
+/// A body of the generated model (`depth` more levels below it), its
+/// joints' names pushed to `joints`.
+fn split_body(r: &mut Mix, depth: usize, count: &mut usize, joints: &mut Vec<String>) -> El {
+    *count += 1;
+    let k = *count;
+    let mut attrs = format!(" name=\"b{k}\" pos=\"{}\"", r.nums(3, -0.5, 0.5));
+    if r.chance(0.5) {
+        attrs.push_str(&format!(" euler=\"{}\"", r.nums(3, -90.0, 90.0)));
+    }
+    if r.chance(0.3) {
+        attrs.push_str(&format!(" childclass=\"{}\"", ["a", "b"][r.below(2)]));
+    }
+    let mut kids = Vec::new();
+    for j in 0..r.below(3) {
+        let name = format!("j{k}_{j}");
+        let class = if r.chance(0.4) { " class=\"a\"" } else { "" };
+        kids.push(el("joint", format!(" name=\"{name}\"{class}"), Vec::new()));
+        joints.push(name);
+    }
+    if r.chance(0.3) {
+        let a = format!(
+            " pos=\"{}\" mass=\"{:?}\" diaginertia=\"0.02 0.03 0.04\"",
+            r.nums(3, -0.1, 0.1),
+            0.5 + 2.0 * r.unit()
+        );
+        kids.push(el("inertial", a, Vec::new()));
+    }
+    for _ in 0..1 + r.below(2) {
+        let kind = ["sphere", "box", "capsule", "cylinder", "ellipsoid"][r.below(5)];
+        let mut a = format!(" type=\"{kind}\" size=\"{}\"", r.nums(3, 0.02, 0.2));
+        if r.chance(0.5) {
+            a.push_str(&format!(" pos=\"{}\"", r.nums(3, -0.1, 0.1)));
+        }
+        if r.chance(0.3) {
+            a.push_str(&format!(" euler=\"{}\"", r.nums(3, -90.0, 90.0)));
+        }
+        if r.chance(0.4) {
+            a.push_str(&format!(" class=\"{}\"", ["a", "b"][r.below(2)]));
+        }
+        kids.push(el("geom", a, Vec::new()));
+    }
+    if depth > 0 {
+        for _ in 0..1 + r.below(2) {
+            kids.push(split_body(r, depth - 1, count, joints));
+        }
+    }
+    // Some of its children inside a `<frame>`, placed by its pose.
+    if r.chance(0.4) {
+        let lo = kids
+            .iter()
+            .position(|e| matches!(e.tag, "geom" | "body"))
+            .unwrap_or(kids.len());
+        if lo < kids.len() {
+            let moved: Vec<El> = kids.drain(lo..).collect();
+            let a = format!(
+                " pos=\"{}\" euler=\"{}\"",
+                r.nums(3, -0.3, 0.3),
+                r.nums(3, -90.0, 90.0)
+            );
+            kids.push(el("frame", a, moved));
+        }
+    }
+    el("body", attrs, kids)
+}
+
+/// A valid MJCF model: classes, nested bodies (frames, joints, geoms,
+/// inertials), a joint equality.
+fn split_model(r: &mut Mix) -> El {
+    let mut kids = Vec::new();
+    if r.chance(0.5) {
+        kids.push(el("compiler", " angle=\"radian\"".to_string(), Vec::new()));
+    }
+    let b = el(
+        "default",
+        " class=\"b\"".to_string(),
+        vec![el(
+            "geom",
+            format!(" density=\"{:?}\"", 100.0 + 5000.0 * r.unit()),
+            Vec::new(),
+        )],
+    );
+    let a = el(
+        "default",
+        " class=\"a\"".to_string(),
+        vec![
+            el(
+                "joint",
+                format!(" axis=\"{}\"", r.nums(3, 0.1, 1.0)),
+                Vec::new(),
+            ),
+            el(
+                "geom",
+                format!(" density=\"{:?}\"", 100.0 + 5000.0 * r.unit()),
+                Vec::new(),
+            ),
+            b,
+        ],
+    );
+    let main = vec![
+        el(
+            "geom",
+            format!(" density=\"{:?}\"", 200.0 + 3000.0 * r.unit()),
+            Vec::new(),
+        ),
+        a,
+    ];
+    kids.push(el("default", String::new(), main));
+    let (mut count, mut joints) = (0, Vec::new());
+    let bodies = (0..1 + r.below(2))
+        .map(|_| split_body(r, 2, &mut count, &mut joints))
+        .collect();
+    kids.push(el("worldbody", String::new(), bodies));
+    if let [first, .., last] = joints.as_slice() {
+        let e = format!(
+            " joint1=\"{last}\" joint2=\"{first}\" polycoef=\"0 {:?} 0 0 0\"",
+            r.unit()
+        );
+        kids.push(el(
+            "equality",
+            String::new(),
+            vec![el("joint", e, Vec::new())],
+        ));
+    }
+    el("mujoco", " model=\"split\"".to_string(), kids)
+}
+
+/// `e`'s children written out; where `cut` says, a run of them moved into
+/// a new file of `files` (nested cuts inside it, up to `depth` files
+/// deep) and an `<include>` of it in their place.
+fn write_kids(e: &El, cut: &mut Option<&mut Mix>, depth: usize, files: &mut Vec<String>) -> String {
+    let mut out = String::new();
+    let mut i = 0;
+    while i < e.kids.len() {
+        let split = match cut.as_deref_mut() {
+            Some(r) if depth < 5 => {
+                let n = e.kids.len() - i;
+                r.chance(0.3).then(|| i + 1 + r.below(n))
+            }
+            _ => None,
+        };
+        match split {
+            Some(end) => {
+                let inner: String = e.kids[i..end]
+                    .iter()
+                    .map(|k| write_el(k, cut, depth + 1, files))
+                    .collect();
+                let root = match cut.as_deref_mut().map(|r| r.below(2)) {
+                    Some(0) => "mujocoinclude",
+                    _ => "mujoco",
+                };
+                files.push(format!("<{root}>\n{inner}</{root}>\n"));
+                out.push_str(&format!("<include file=\"inc{}.xml\"/>\n", files.len()));
+                i = end;
+            }
+            None => {
+                out.push_str(&write_el(&e.kids[i], cut, depth, files));
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+fn write_el(e: &El, cut: &mut Option<&mut Mix>, depth: usize, files: &mut Vec<String>) -> String {
+    if e.kids.is_empty() {
+        return format!("<{}/>\n", e.head);
+    }
+    let inner = write_kids(e, cut, depth, files);
+    format!("<{}>\n{inner}</{}>\n", e.head, e.tag)
+}
+
+/// The report's JSON of `path`, less `source`, or why not.
+fn report_json(path: &Path) -> Result<Value, String> {
+    let out = crate::common::massprop(&["report", path.to_str().unwrap(), "--format", "json"]);
+    if out.status.code() != Some(0) {
+        return Err(format!(
+            "report {} failed: {}",
+            path.display(),
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    let mut v: Value = serde_json::from_slice(&out.stdout).map_err(|e| e.to_string())?;
+    v.as_object_mut().unwrap().remove("source");
+    Ok(v)
+}
+
+#[test]
+fn a_valid_mjcf_model_split_into_included_files_anywhere_reports_as_the_one_file() {
+    let top = crate::common::scratch("robots_hostile", "mjcf_split");
+    let split_cases = std::cell::Cell::new(0);
+    property(
+        "MJCF models split over includes",
+        16,
+        (any::<u64>(), any::<u64>()),
+        |&(model, cut)| {
+            let e = split_model(&mut Mix(model));
+            let single = write_el(&e, &mut None, 0, &mut Vec::new());
+            let mut files = Vec::new();
+            let mut r = Mix(cut);
+            // The root's own children are cut too: sections in files.
+            let inner = write_kids(&e, &mut Some(&mut r), 0, &mut files);
+            let main = format!("<{}>\n{inner}</mujoco>\n", e.head);
+            let dir = top.join(format!("{model:x}-{cut:x}"));
+            std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
+            for (k, f) in files.iter().enumerate() {
+                std::fs::write(dir.join(format!("inc{}.xml", k + 1)), f)
+                    .map_err(|e| e.to_string())?;
+            }
+            std::fs::write(dir.join("split.xml"), &main).map_err(|e| e.to_string())?;
+            std::fs::write(dir.join("single.xml"), &single).map_err(|e| e.to_string())?;
+            let (a, b) = (
+                report_json(&dir.join("split.xml"))?,
+                report_json(&dir.join("single.xml"))?,
+            );
+            if a != b {
+                return Err(format!(
+                    "{}: split over {} files, reports otherwise than the one file",
+                    dir.display(),
+                    files.len()
+                ));
+            }
+            split_cases.set(split_cases.get() + u32::from(!files.is_empty()));
+            Ok(true)
+        },
+    );
+    // Most cases cut somewhere (a case without a cut proves nothing).
+    let n = split_cases.get();
+    assert!(n >= 8, "{n} of 16 cases split the model");
+}

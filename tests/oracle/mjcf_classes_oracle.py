@@ -15,8 +15,12 @@ every body's `body_mass`, `xipos`, `ximat` and `body_inertia`, against
 part file that includes it with the same `joints`.
 
 Each model is also written split over an MJCF `<include>` (its classes in
-a file of their own): MuJoCo compiles it to the same masses and inertias,
-and massprop's report of it agrees with MuJoCo as the one file does.
+a file of their own), and split again at random inner places: runs of the
+children of `<worldbody>`, of bodies, frames and default classes moved
+into included files (nested, their roots `<mujoco>` or `<mujocoinclude>`),
+each `<include>` where they stood. MuJoCo compiles each split to the same
+masses and inertias as the one file, massprop's report of it agrees with
+MuJoCo, and massprop reports it bit for bit as the one file.
 
 Usage: python mjcf_classes_oracle.py --massprop BIN [--cases N]. Exit 1 on
 any disagreement beyond 1e-9 relative.
@@ -30,6 +34,7 @@ import random
 import subprocess
 import sys
 import tempfile
+import xml.etree.ElementTree as ET
 
 import mujoco
 import numpy as np
@@ -179,6 +184,47 @@ def robot(rng):
     )
 
 
+SPLIT_AT = ("worldbody", "body", "frame", "default")
+
+
+def split_inner(text, rng, directory, stem):
+    """`text` with runs of children of worldbody, bodies, frames and
+    default classes moved into included files (written in `directory`),
+    innermost first, so that cuts nest; the number of files."""
+    root = ET.fromstring(text)
+    files = []
+
+    def visit(elem):
+        for child in list(elem):
+            visit(child)
+        kids = list(elem)
+        if elem.tag not in SPLIT_AT or not kids or rng.random() >= 0.5:
+            return
+        i = rng.randrange(len(kids))
+        j = rng.randrange(i, len(kids))
+        inc = ET.Element(rng.choice(["mujoco", "mujocoinclude"]))
+        for k in kids[i : j + 1]:
+            elem.remove(k)
+            inc.append(k)
+        name = f"{stem}_inc{len(files) + 1}.xml"
+        files.append(name)
+        with open(os.path.join(directory, name), "w") as f:
+            f.write(ET.tostring(inc, encoding="unicode"))
+        elem.insert(i, ET.Element("include", {"file": name}))
+
+    visit(root)
+    return ET.tostring(root, encoding="unicode"), len(files)
+
+
+def placeless(report):
+    """A report less `source` and its warnings' places: a warning about an
+    element of an included file points at the `<include>` that brings it
+    in (docs/robots.md)."""
+    out = {k: v for k, v in report.items() if k != "source"}
+    out["warnings"] = [(w["kind"], w["message"]) for w in report.get("warnings", [])]
+    return out
+
+
 def mujoco_whole(model, data):
     """Mass, centre of mass and inertia about it of every body but the
     world, in the world frame."""
@@ -225,6 +271,7 @@ def main():
         # directory: keep it out of the repository.
         os.chdir(tmp)
         refusals = 0
+        inner_files = 0
         for case in range(args.cases):
             # A model MuJoCo refuses for a geom's placement (`pos` and
             # `fromto` both, `fromto` on a sphere) massprop must refuse
@@ -286,7 +333,30 @@ def main():
                 bad += 1
                 print(f"case {case}: MuJoCo compiles the split model differently", file=sys.stderr)
             divided = massprop_json(args.massprop, [split, "--joints", joints])
-            for label, got in (("report", alone), ("include", included), ("split", divided)):
+            # Split at inner places: includes in the world body, bodies,
+            # frames and default classes, nested.
+            inner_text, count = split_inner(written, rng, tmp, f"i{case}")
+            inner = os.path.join(tmp, f"i{case}.xml")
+            with open(inner, "w") as f:
+                f.write(inner_text)
+            inner_files += count
+            spliced = mujoco.MjModel.from_xml_path(inner)
+            if not (
+                np.array_equal(spliced.body_mass, model.body_mass)
+                and np.array_equal(spliced.body_inertia, model.body_inertia)
+            ):
+                bad += 1
+                print(f"case {case}: MuJoCo compiles the inner split model differently", file=sys.stderr)
+            anywhere = massprop_json(args.massprop, [inner, "--joints", joints])
+            if placeless(anywhere) != placeless(alone):
+                bad += 1
+                print(f"case {case}: massprop reports the inner split otherwise than the one file", file=sys.stderr)
+            for label, got in (
+                ("report", alone),
+                ("include", included),
+                ("split", divided),
+                ("inner split", anywhere),
+            ):
                 ok = agree(f"case {case} {label} mass", [got["mass"]], [mass])
                 ok &= agree(f"case {case} {label} centre", got["center_of_mass"], com)
                 ok &= agree(f"case {case} {label} inertia", got["inertia_com"], inertia)
@@ -295,7 +365,8 @@ def main():
                     print(text, file=sys.stderr)
     print(
         f"{args.cases} MJCF robots with default classes and frames: {bad} disagreements "
-        f"({refusals} more refused by both for a geom's `fromto`)"
+        f"({refusals} more refused by both for a geom's `fromto`; "
+        f"{inner_files} included files in the inner splits)"
     )
     sys.exit(1 if bad else 0)
 

@@ -8,7 +8,7 @@
 
 use super::mjcf_include::Model;
 use super::orient::{Settings, orientation, quat_to_matrix};
-use super::{Value, Xml, children, proper, qname, quoted, turn};
+use super::{Value, Xml, proper, qname, quoted, turn};
 use crate::diag::Diagnostic;
 use crate::robot::{Description, Dialect, Inertial, Link, Tensor, Written};
 use roxmltree::Node;
@@ -87,61 +87,27 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
     }
     let mut links = Vec::new();
     let mut count = 0;
-    // Per element under a world body, the index of the body it is in (None
-    // in the world body itself), filled in document order, so that each
-    // element's parent is there before it: a body's parent is found in one
-    // step, however deep the tree (a walk up its ancestors would make a
-    // long chain of bodies quadratic).
-    // Keyed by file too: each file is a document of its own.
-    let mut enclosing: std::collections::HashMap<(usize, roxmltree::NodeId), Option<usize>> =
-        std::collections::HashMap::new();
-    for (xml, file, world) in m.sections("worldbody") {
-        enclosing.insert((file, world.id()), None);
-        // Bodies at any depth, also inside `<frame>`s; the world body
-        // itself is not one.
-        for node in world.descendants().skip(1).filter(Node::is_element) {
-            let parent = node
-                .parent()
-                .and_then(|p| enclosing.get(&(file, p.id())).copied())
-                .flatten();
-            if qname(node) != "body" {
-                enclosing.insert((file, node.id()), parent);
-                continue;
-            }
-            let body = node;
-            enclosing.insert((file, body.id()), Some(links.len()));
-            count += 1;
-            let (name, owner) = match body.attribute("name").filter(|n| !n.is_empty()) {
-                Some(n) => (n.to_string(), format!("body {}", quoted(n))),
-                None => (format!("body {count}"), format!("body {count}")),
+    for (_, file, world) in m.sections("worldbody") {
+        // Bodies at any depth, also inside `<frame>`s and included files;
+        // the world body itself is not one. Depth first in document
+        // order, each element with the index of the body it is in (None
+        // in the world body itself), with a stack of our own: a body's
+        // parent is known in one step, however deep the tree.
+        let mut stack: Vec<(usize, Node, Option<usize>)> =
+            m.children(file, world).map(|(f, n)| (f, n, None)).collect();
+        stack.reverse();
+        while let Some((file, node, parent)) = stack.pop() {
+            m.in_place(file, node)?;
+            let inside = if qname(node) == "body" {
+                let l = body(m, file, node, parent, &settings, &mut count)?;
+                links.push(l);
+                Some(links.len() - 1)
+            } else {
+                parent
             };
-            let mut inertials = children(body, "inertial");
-            let inertial = inertials
-                .next()
-                .map(|i| inertial(xml, i, &owner, &settings))
-                .transpose()?
-                .map(|i| Inertial {
-                    range: m.range(file, i.range.clone()),
-                    ..i
-                });
-            if let Some(second) = inertials.next() {
-                return Err(xml.error(
-                    xml.tag(second),
-                    format!("{owner} has a second `<inertial>`: MuJoCo allows one"),
-                ));
-            }
-            // Any joint moves the body (a hinge, a slide, a ball, a free
-            // joint): MuJoCo then needs its mass and inertia.
-            let moving = body
-                .children()
-                .any(|c| matches!(qname(c), "joint" | "freejoint"));
-            links.push(Link {
-                name,
-                range: m.range(file, body.range()),
-                inertial,
-                moving,
-                parent,
-            });
+            let from = stack.len();
+            stack.extend(m.children(file, node).map(|(f, n)| (f, n, inside)));
+            stack[from..].reverse();
         }
     }
     Ok(Description {
@@ -149,6 +115,53 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
         name: m.root.attribute("model").map(str::to_string),
         links,
         compiler: settings.compiler,
+    })
+}
+
+/// The link of `node`, a `<body>` of file `file` (the `count`th of the
+/// model, counting it), in the body `parent`.
+fn body(
+    m: &Model,
+    file: usize,
+    node: Node,
+    parent: Option<usize>,
+    settings: &Settings,
+    count: &mut usize,
+) -> Result<Link, Diagnostic> {
+    *count += 1;
+    let (name, owner) = match node.attribute("name").filter(|n| !n.is_empty()) {
+        Some(n) => (n.to_string(), format!("body {}", quoted(n))),
+        None => (format!("body {count}"), format!("body {count}")),
+    };
+    // An `<inertial>` may come from an included file: read in its own.
+    let mut inertials = m.named(file, node, "inertial");
+    let inertial = inertials
+        .next()
+        .map(|(f, i)| {
+            inertial(m.xml(f), i, &owner, settings).map(|i| Inertial {
+                range: m.range(f, i.range.clone()),
+                ..i
+            })
+        })
+        .transpose()?;
+    if let Some((f, second)) = inertials.next() {
+        let xml = m.xml(f);
+        return Err(xml.error(
+            xml.tag(second),
+            format!("{owner} has a second `<inertial>`: MuJoCo allows one"),
+        ));
+    }
+    // Any joint moves the body (a hinge, a slide, a ball, a free joint):
+    // MuJoCo then needs its mass and inertia.
+    let moving = m
+        .children(file, node)
+        .any(|(_, c)| matches!(qname(c), "joint" | "freejoint"));
+    Ok(Link {
+        name,
+        range: m.range(file, node.range()),
+        inertial,
+        moving,
+        parent,
     })
 }
 

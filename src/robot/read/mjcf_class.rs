@@ -8,6 +8,8 @@
 //! that has one, else "main"; each of its attributes is its own, else its
 //! class's (that class's `<joint>`, `<geom>`, … element), else the parent
 //! class's, up to "main", else MuJoCo's built-in default (the caller's).
+//! An `<include>` inside a `<default>` (or a `<body>` with a `childclass`)
+//! is spliced there (`Model::children`, `Model::parent`).
 
 use super::mjcf_include::Model;
 use super::{Value, Xml, qname, quoted};
@@ -15,11 +17,15 @@ use crate::diag::{Diagnostic, Source};
 use roxmltree::Node;
 use std::collections::HashMap;
 
+/// An element of a file of the model, with that file.
+type Placed<'s, 'a, 'i> = (Node<'a, 'i>, &'s Source);
+
 /// The default classes of an MJCF model (its included files' too).
 pub(super) struct Classes<'s, 'a, 'i> {
-    /// Each class: its `<default>` element, its parent class, and the file
-    /// it is written in.
-    classes: Vec<(Node<'a, 'i>, Option<usize>, &'s Source)>,
+    /// Each class: its parent class, and its elements other than
+    /// `<default>`s (`<joint>`, `<geom>`, …), each with the file it is
+    /// written in (an included one, where an `<include>` stands there).
+    classes: Vec<(Option<usize>, Vec<Placed<'s, 'a, 'i>>)>,
     by_name: HashMap<String, usize>,
 }
 
@@ -37,12 +43,13 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
         };
         // Depth first, parents before children, with an explicit stack (a
         // nesting as deep as the parser allows must not overflow ours).
-        let mut stack: Vec<(Node, Option<usize>, &Xml<'s>)> = m
+        let mut stack: Vec<(usize, Node, Option<usize>)> = m
             .sections("default")
-            .map(|(xml, _, d)| (d, None, xml))
+            .map(|(_, f, d)| (f, d, None))
             .collect();
         stack.reverse();
-        while let Some((d, parent, xml)) = stack.pop() {
+        while let Some((file, d, parent)) = stack.pop() {
+            let xml = m.xml(file);
             let name = match (xml.attr(d, "class"), parent) {
                 (Some(v), _) => v,
                 (None, None) => Value {
@@ -68,14 +75,20 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
                     ),
                 ));
             }
-            out.classes.push((d, parent, xml.source));
-            let mut kids: Vec<_> = d
-                .children()
-                .filter(|c| qname(*c) == "default")
-                .map(|c| (c, Some(k), xml))
-                .collect();
-            kids.reverse();
-            stack.extend(kids);
+            let (kids, elems): (Vec<_>, Vec<_>) = m
+                .children(file, d)
+                .partition(|(_, c)| qname(*c) == "default");
+            for &(f, e) in &elems {
+                m.in_place(f, e)?;
+            }
+            out.classes.push((
+                parent,
+                elems
+                    .into_iter()
+                    .map(|(f, e)| (e, m.xml(f).source))
+                    .collect(),
+            ));
+            stack.extend(kids.into_iter().rev().map(|(f, c)| (f, c, Some(k))));
         }
         Ok(out)
     }
@@ -98,25 +111,32 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
         })
     }
 
-    /// The class `node` takes: its own `class`, else the nearest enclosing
-    /// `childclass`, else "main" (where there is a `<default>`).
-    pub fn of(&self, xml: &Xml, node: Node) -> Result<Class, Diagnostic> {
+    /// The class `node` (of file `file`) takes: its own `class`, else the
+    /// nearest enclosing `childclass` (through the `<include>`s that bring
+    /// it in), else "main" (where there is a `<default>`).
+    pub fn of(&self, m: &Model, file: usize, node: Node) -> Result<Class, Diagnostic> {
+        let xml = m.xml(file);
         if let Some(v) = xml.attr(node, "class") {
             return self.named(xml, &v).map(Some);
         }
-        for up in node.ancestors().skip(1) {
-            if matches!(qname(up), "body" | "frame")
-                && let Some(v) = xml.attr(up, "childclass")
+        let mut up = m.parent(file, node);
+        while let Some((f, n)) = up {
+            let xml = m.xml(f);
+            if matches!(qname(n), "body" | "frame")
+                && let Some(v) = xml.attr(n, "childclass")
             {
                 return self.named(xml, &v).map(Some);
             }
+            up = m.parent(f, n);
         }
         Ok(self.by_name.get("main").copied())
     }
 
     /// Every `class` and `childclass` in the file names a class: checked
     /// once, so that a misspelt name is refused even on an element whose
-    /// values are not read.
+    /// values are not read. NOTE: a walk of each file's own elements, not
+    /// of the spliced model: every file is spliced somewhere in it, and
+    /// the order of the check does not matter.
     pub fn check_names(&self, m: &Model) -> Result<(), Diagnostic> {
         for (xml, root) in m.xmls.iter().zip(&m.roots) {
             for n in root.descendants().filter(|n| n.is_element()) {
@@ -165,12 +185,8 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
         let mut out = Vec::new();
         let mut c = class;
         while let Some(k) = c {
-            let (d, parent, source) = self.classes[k];
-            out.extend(
-                d.children()
-                    .filter(|e| qname(*e) == kind)
-                    .map(|e| (e, source)),
-            );
+            let (parent, ref elems) = self.classes[k];
+            out.extend(elems.iter().filter(|(e, _)| qname(*e) == kind).copied());
             // Parents come before their children: the chain ends.
             c = parent;
         }
@@ -183,14 +199,13 @@ impl<'s, 'a, 'i> Classes<'s, 'a, 'i> {
         let mut c = class;
         let mut hops = 0;
         while let Some(k) = c {
-            let (d, parent, source) = self.classes[k];
-            let xml = Xml { source };
-            if let Some(v) = d
-                .children()
-                .filter(|e| qname(*e) == kind)
-                .find_map(|e| xml.attr(e, name))
+            let (parent, ref elems) = self.classes[k];
+            if let Some(found) = elems
+                .iter()
+                .filter(|(e, _)| qname(*e) == kind)
+                .find_map(|&(e, source)| Some((Xml { source }.attr(e, name)?, source)))
             {
-                return Some((v, source));
+                return Some(found);
             }
             c = parent;
             // Parents come before their children: the chain ends.

@@ -20,7 +20,7 @@
 use super::geometry::{Amount, Geometry, Solid, positive};
 use super::mjcf_class::{Class, Classes};
 use super::mjcf_include::Model;
-use super::mjcf_mesh::Meshes;
+use super::mjcf_mesh::{MeshWarning, Meshes};
 use super::orient::{Settings, orientation, quat_to_matrix, z_to_quat};
 use super::{Value, Xml, qname};
 use crate::diag::Diagnostic;
@@ -28,10 +28,15 @@ use crate::robot::Description;
 use crate::robot::kinematics::Pose;
 use roxmltree::Node;
 
+/// The `<frame>`s an element is in (file, element), outermost first.
+type Frames<'a, 'i> = Vec<(usize, Node<'a, 'i>)>;
+
 const ORIENTATIONS: [&str; 5] = ["quat", "axisangle", "xyaxes", "zaxis", "euler"];
 
 /// What reading a body's geoms shares.
 struct Ctx<'x, 's, 'a, 'i> {
+    m: &'x Model<'s, 'a, 'i>,
+    /// The file of the element being read.
     xml: &'x Xml<'s>,
     settings: Settings,
     classes: Classes<'s, 'a, 'i>,
@@ -41,12 +46,13 @@ struct Ctx<'x, 's, 'a, 'i> {
 }
 
 /// Per body of `d` (in its order), its geoms that count for inertia; none
-/// read for a body `need` leaves out (None: every body, for `export`).
+/// read for a body `need` leaves out (None: every body, for `export`);
+/// and the warnings of the mesh files read.
 pub(super) fn geoms(
     m: &Model,
     d: &Description,
     need: Option<&[bool]>,
-) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
     let mut settings = Settings::default();
     let mut range = (0.0, 5.0);
     for (xml, _, c) in m.sections("compiler") {
@@ -57,6 +63,7 @@ pub(super) fn geoms(
         }
     }
     let mut cx = Ctx {
+        m,
         xml: &m.xmls[0],
         settings,
         classes: Classes::read(m)?,
@@ -64,10 +71,13 @@ pub(super) fn geoms(
         export: need.is_none(),
     };
     let mut out = Vec::with_capacity(d.links.len());
-    for (xml, _, world) in m.sections("worldbody") {
-        // A body's geoms are in the body's file.
-        cx.xml = xml;
-        for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
+    for (_, file, world) in m.sections("worldbody") {
+        // Bodies at any depth, includes spliced, in document order (as
+        // `mjcf` reads them).
+        for (file, body) in m.descendants(file, world) {
+            if qname(body) != "body" {
+                continue;
+            }
             // An unnamed body is "body N", as `mjcf` names it.
             let owner = match body.attribute("name").filter(|n| !n.is_empty()) {
                 Some(_) => format!("body {}", super::quoted(&d.links[out.len()].name)),
@@ -81,27 +91,30 @@ pub(super) fn geoms(
             // The body's geoms, also those inside its frames (not those
             // of the bodies inside it), in document order: a walk into
             // frames only, with a stack of its own (a long chain of bodies
-            // is not walked once per body).
-            let mut stack: Vec<Node> = body.children().filter(Node::is_element).collect();
+            // is not walked once per body). Each with the frames it is
+            // in, outermost first.
+            let mut stack: Vec<(usize, Node, Frames)> = m
+                .children(file, body)
+                .map(|(f, n)| (f, n, Vec::new()))
+                .collect();
             stack.reverse();
-            while let Some(g) = stack.pop() {
+            while let Some((f, g, frames)) = stack.pop() {
                 match qname(g) {
                     "frame" => {
                         let from = stack.len();
-                        stack.extend(g.children().filter(Node::is_element));
+                        let mut within = frames.clone();
+                        within.push((f, g));
+                        stack.extend(m.children(f, g).map(|(k, n)| (k, n, within.clone())));
                         stack[from..].reverse();
                         continue;
                     }
                     "geom" => {}
                     _ => continue,
                 }
-                let mut frames = Vec::new();
-                let mut up = g.parent();
-                while let Some(n) = up.filter(|n| qname(*n) == "frame") {
-                    frames.push(n);
-                    up = n.parent();
-                }
-                let class = cx.classes.of(xml, g)?;
+                // A geom is read in its own file (an included one too).
+                let xml = m.xml(f);
+                cx.xml = xml;
+                let class = cx.classes.of(m, f, g)?;
                 let group = match cx.classes.attr(xml, g, class, "geom", "group") {
                     Some(v) => xml.number(&v, &owner)?,
                     None => 0.0,
@@ -115,8 +128,9 @@ pub(super) fn geoms(
                 let mut geo = geom(&mut cx, g, &owner, class)?;
                 // Outermost frame first: body ← frame ← … ← geom.
                 let mut at = Pose::IDENTITY;
-                for f in frames.iter().rev() {
-                    at = at.then(&frame_pose(&cx, *f, &owner)?);
+                for &(k, fr) in &frames {
+                    cx.xml = m.xml(k);
+                    at = at.then(&frame_pose(&cx, fr, &owner)?);
                 }
                 geo.pose = at.then(&geo.pose);
                 items.push(geo);
@@ -124,7 +138,7 @@ pub(super) fn geoms(
             out.push(items);
         }
     }
-    Ok(out)
+    Ok((out, cx.meshes.warnings))
 }
 
 /// A `<frame>`'s pose in what encloses it: its `pos` and orientation.
@@ -265,7 +279,7 @@ fn geom(cx: &mut Ctx, g: Node, owner: &str, class: Class) -> Result<Geometry, Di
                     format!("a mesh geom of {owner} names no `mesh` asset"),
                 ));
             };
-            let l = cx.meshes.load(xml, name, owner, classes)?;
+            let l = cx.meshes.load(cx.m, xml, name, owner, classes)?;
             if cx.export && (l.shell || l.legacy) {
                 let why = if l.shell {
                     "a shell mesh (`inertia=\"shell\"`)"

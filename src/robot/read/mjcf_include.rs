@@ -1,36 +1,64 @@
 //! MJCF `<include file="…"/>` for the whole robot (`report`, `diff`, a
 //! part file's `include` of an MJCF robot), as MuJoCo follows it
-//! (`xml.cc`, `IncludeXML`): the included file's root element's children
-//! take the `<include>`'s place, so an included file may hold
-//! `<compiler>`, `<default>`, `<asset>`, `<worldbody>`, … (repeated
-//! sections merge as in one file); includes nest; the path is relative to
-//! the main model file's directory (else, for an include inside an
-//! included file, to that file's directory, MuJoCo's second try); a file
-//! included twice (the main file too) is MuJoCo's error.
+//! (`xml.cc`, `IncludeXML`; XML reference, "include"): wherever an
+//! `<include>` stands (under `<mujoco>`, in `<worldbody>`, a `<body>`, a
+//! `<frame>`, `<default>`, `<asset>`, `<equality>`, …), the children of
+//! the included file's root element (whatever its name: `<mujoco>`,
+//! `<mujocoinclude>`, …) take its place, as if written there; includes
+//! nest; the path is relative to the main model file's directory (else,
+//! for an include inside an included file, to that file's directory,
+//! MuJoCo's second try); a file included twice (the main file too) is
+//! MuJoCo's error.
 //!
 //! Each file is read as a document of its own, so that a message names the
 //! place in the file where the element is written, with where that file
-//! was included from (`sdf_include::Files::located`). A body, inertial or
-//! joint of an included file stands, in the `Description` and the tree, at
-//! the outermost `<include>` of the main file that brings it in (as an
-//! SDFormat include's links do): warnings about it point there.
+//! was included from (`sdf_include::Files::located`). Every walk of the
+//! model's elements goes through `Model::children` (and `descendants`,
+//! `parent`), which splice each `<include>`: no reader sees one. A body,
+//! inertial or joint of an included file stands, in the `Description` and
+//! the tree, at the outermost `<include>` of the main file that brings it
+//! in (`Model::range`, as an SDFormat include's links do): warnings about
+//! it point there.
 //!
 //! Confined as SDFormat includes are (`sdf_include::roots`): the main
 //! file's directory, the working directory, `--include-root`s. Refused
 //! with their place: a missing `file`, a file that cannot be read or lies
-//! outside those directories, one whose root is not `<mujoco>` or that
-//! holds no element, a file included twice (or in a cycle, named), an
-//! `<include>` with children, includes deeper than `MAX_DEPTH`, and an
-//! `<include>` anywhere but directly under `<mujoco>` (not followed there:
-//! an error rather than a different model).
+//! outside those directories, one with no element under its root (MuJoCo:
+//! "Empty include file"), one whose root is a URDF's `<robot>` or an
+//! SDFormat `<sdf>` (MuJoCo splices their elements and refuses them as
+//! MJCF), a file included twice (or in a cycle, named), an `<include>`
+//! with children, and includes deeper than `MAX_DEPTH`.
 
 use super::sdf_include::{Files, MAX_DEPTH, Resolve, canonical, inside, roots};
 use super::{Xml, qname};
 use crate::diag::{Diagnostic, Source};
-use roxmltree::{Document, Node};
+use roxmltree::{Document, Node, NodeId};
 use std::collections::HashMap;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
+
+/// The sections of `<mujoco>` (MuJoCo's schema, `mjcf.xsd`): each stands
+/// directly under `<mujoco>` only (`<default>` inside `<default>` is a
+/// class).
+const SECTIONS: [&str; 17] = [
+    "actuator",
+    "asset",
+    "compiler",
+    "contact",
+    "custom",
+    "default",
+    "deformable",
+    "equality",
+    "extension",
+    "keyframe",
+    "option",
+    "sensor",
+    "size",
+    "statistic",
+    "tendon",
+    "visual",
+    "worldbody",
+];
 
 /// A model MuJoCo compiles from a main file and the files it includes.
 pub(super) struct Model<'s, 'a, 'i> {
@@ -38,16 +66,50 @@ pub(super) struct Model<'s, 'a, 'i> {
     pub xmls: Vec<Xml<'s>>,
     /// The main file's `<mujoco>`.
     pub root: Node<'a, 'i>,
-    /// Per file, its `<mujoco>`.
+    /// Per file, its root element.
     pub roots: Vec<Node<'a, 'i>>,
-    /// `<mujoco>`'s children in MuJoCo's order, each `<include>` replaced
-    /// by the children of its file's `<mujoco>`: (file, element).
-    sections: Vec<(usize, Node<'a, 'i>)>,
+    /// (file, an `<include>` element of it) → the file it brings in.
+    targets: HashMap<(usize, NodeId), usize>,
+    /// Per file, the `<include>` that brings it in: (file, element) (None
+    /// for the main file).
+    sites: Vec<Option<(usize, Node<'a, 'i>)>>,
     /// Per file, the main file's `<include>` element that brings it in
     /// (None for the main file).
     anchors: Vec<Option<Range<usize>>>,
     /// Where its files and mesh files may be read from (`roots`).
     pub dirs: Vec<PathBuf>,
+}
+
+/// The children of an element with each `<include>` spliced
+/// (`Model::children`): a cursor per level of includes entered.
+pub(super) struct Children<'m, 's, 'a, 'i> {
+    m: &'m Model<'s, 'a, 'i>,
+    /// (file, the next element to visit at that level), innermost last.
+    stack: Vec<(usize, Option<Node<'a, 'i>>)>,
+}
+
+impl<'a, 'i> Iterator for Children<'_, '_, 'a, 'i> {
+    type Item = (usize, Node<'a, 'i>);
+
+    fn next(&mut self) -> Option<Self::Item> {
+        loop {
+            let top = self.stack.last_mut()?;
+            let (file, Some(node)) = *top else {
+                self.stack.pop();
+                continue;
+            };
+            top.1 = node.next_sibling_element();
+            if qname(node) != "include" {
+                return Some((file, node));
+            }
+            // NOTE: `load` read every `<include>` (or refused the model);
+            // one without a target is only in a model of one file
+            // (`single`), whose includes its callers refuse first.
+            if let Some(&t) = self.m.targets.get(&(file, node.id())) {
+                self.stack.push((t, self.m.roots[t].first_element_child()));
+            }
+        }
+    }
 }
 
 impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
@@ -58,11 +120,8 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
             xmls: vec![Xml { source }],
             root,
             roots: vec![root],
-            sections: root
-                .children()
-                .filter(Node::is_element)
-                .map(|c| (0, c))
-                .collect(),
+            targets: HashMap::new(),
+            sites: vec![None],
             anchors: vec![None],
             dirs: roots(source, &Resolve::default()),
         }
@@ -79,53 +138,123 @@ impl<'s, 'a, 'i> Model<'s, 'a, 'i> {
                 .collect(),
             root: docs[0].root_element(),
             roots: docs.iter().map(Document::root_element).collect(),
-            sections: Vec::new(),
+            targets: HashMap::new(),
+            sites: vec![None; count],
             anchors: vec![None; count],
             dirs: files.roots.clone(),
         };
-        // Depth first, in document order, with a stack of its own.
-        let mut stack: Vec<(usize, Node, Option<Range<usize>>)> = docs[0]
-            .root_element()
-            .children()
-            .filter(Node::is_element)
-            .map(|c| (0, c, None))
-            .collect();
-        stack.reverse();
-        while let Some((file, node, anchor)) = stack.pop() {
-            if qname(node) != "include" {
-                m.sections.push((file, node));
-                continue;
+        // A file brings in only files read after it (`load`): each file's
+        // anchor is known before its own includes are met.
+        for (k, doc) in docs.iter().enumerate() {
+            for inc in doc.descendants().filter(|n| qname(*n) == "include") {
+                let Some(&t) = files.targets.get(&(k, inc.range().start)) else {
+                    continue;
+                };
+                m.targets.insert((k, inc.id()), t);
+                m.sites[t] = Some((k, inc));
+                m.anchors[t] = Some(m.anchors[k].clone().unwrap_or_else(|| inc.range()));
             }
-            // NOTE: `load` read every `<include>` under a `<mujoco>` (or
-            // refused the model); one without a target is only in a model
-            // of one file (`single`), whose includes `read` refuses first.
-            let Some(&target) = files.targets.get(&(file, node.range().start)) else {
-                continue;
-            };
-            let anchor = anchor.unwrap_or_else(|| node.range());
-            m.anchors[target] = Some(anchor.clone());
-            let from = stack.len();
-            stack.extend(
-                docs[target]
-                    .root_element()
-                    .children()
-                    .filter(Node::is_element)
-                    .map(|c| (target, c, Some(anchor.clone()))),
-            );
-            stack[from..].reverse();
         }
         m
     }
 
-    /// The sections named `name`, each with its file's `Xml` and index.
+    /// The element children of `node` (of file `file`), each `<include>`
+    /// replaced by the children of its file's root, at any depth: what
+    /// MuJoCo's reader sees there. (file, element).
+    pub fn children<'m>(&'m self, file: usize, node: Node<'a, 'i>) -> Children<'m, 's, 'a, 'i> {
+        Children {
+            m: self,
+            stack: vec![(file, node.first_element_child())],
+        }
+    }
+
+    /// The children of `node` named `name`.
+    pub fn named<'m>(
+        &'m self,
+        file: usize,
+        node: Node<'a, 'i>,
+        name: &'m str,
+    ) -> impl Iterator<Item = (usize, Node<'a, 'i>)> + 'm {
+        self.children(file, node)
+            .filter(move |(_, n)| qname(*n) == name)
+    }
+
+    /// The elements under `node`, at any depth, includes spliced, in
+    /// document order (`node` itself not among them), with a stack of its
+    /// own.
+    pub fn descendants(&self, file: usize, node: Node<'a, 'i>) -> Vec<(usize, Node<'a, 'i>)> {
+        let mut out = Vec::new();
+        let mut stack: Vec<(usize, Node)> = self.children(file, node).collect();
+        stack.reverse();
+        while let Some((f, n)) = stack.pop() {
+            out.push((f, n));
+            let from = stack.len();
+            stack.extend(self.children(f, n));
+            stack[from..].reverse();
+        }
+        out
+    }
+
+    /// The element `node` (of file `file`) stands in once includes are
+    /// spliced: its parent, or for a child of an included file's root, the
+    /// parent of the `<include>` that brings it in. None for the main
+    /// file's root.
+    pub fn parent(&self, file: usize, node: Node<'a, 'i>) -> Option<(usize, Node<'a, 'i>)> {
+        let (mut f, mut n) = (file, node);
+        loop {
+            let p = n.parent_element()?;
+            match self.sites[f] {
+                Some((g, inc)) if p == self.roots[f] => (f, n) = (g, inc),
+                _ => return Some((f, p)),
+            }
+        }
+    }
+
+    /// Refuse `node` (of file `file`) if it is a section of `<mujoco>`
+    /// standing anywhere else once includes are spliced (MuJoCo: "Schema
+    /// violation: unrecognized element"): a whole model's file included
+    /// inside `<worldbody>`, say, whose `<worldbody>` MuJoCo refuses there
+    /// and massprop would otherwise read as a different model.
+    pub fn in_place(&self, file: usize, node: Node<'a, 'i>) -> Result<(), Diagnostic> {
+        let name = qname(node);
+        if !SECTIONS.contains(&name) {
+            return Ok(());
+        }
+        let Some((pf, parent)) = self.parent(file, node) else {
+            return Ok(());
+        };
+        let within = qname(parent);
+        if (pf == 0 && parent == self.root) || (name == "default" && within == "default") {
+            return Ok(());
+        }
+        let xml = self.xml(file);
+        let d = xml.error(
+            xml.tag(node),
+            format!("`<{name}>` inside `<{within}>`: MuJoCo refuses it there (an unrecognized element); `<{name}>` stands directly under `<mujoco>`"),
+        );
+        // Where an include put it there, say how an include is spliced.
+        Err(
+            if node.parent_element() == Some(self.roots[file]) && file > 0 {
+                d.help(format!("an `<include>` is replaced by the children of its file's root element: a file included inside `<{within}>` holds what is written there (bodies, not a `<worldbody>` around them)"))
+            } else {
+                d
+            },
+        )
+    }
+
+    /// The file's `Xml`, for its located messages.
+    pub fn xml(&self, file: usize) -> &Xml<'s> {
+        &self.xmls[file]
+    }
+
+    /// The sections named `name` (`<mujoco>`'s children, includes
+    /// spliced), each with its file's `Xml` and index.
     pub fn sections<'m>(
         &'m self,
         name: &'m str,
     ) -> impl Iterator<Item = (&'m Xml<'s>, usize, Node<'a, 'i>)> + 'm {
-        self.sections
-            .iter()
-            .filter(move |(_, n)| qname(*n) == name)
-            .map(|&(f, n)| (&self.xmls[f], f, n))
+        self.named(0, self.root, name)
+            .map(|(f, n)| (&self.xmls[f], f, n))
     }
 
     /// Where an element of `file` whose bytes are `range` stands in the
@@ -182,17 +311,7 @@ impl Loader<'_> {
         let source = self.files.source(k).clone();
         let doc = super::parse(&source)?;
         let xml = Xml { source: &source };
-        let root = doc.root_element();
         for inc in doc.descendants().filter(|n| qname(*n) == "include") {
-            if inc.parent_element() != Some(root) {
-                let within = inc.parent_element().map_or("", |p| qname(p));
-                return Err(xml
-                    .error(
-                        xml.tag(inc),
-                        format!("`<include>` inside `<{within}>` is not followed: only an `<include>` directly under `<mujoco>` is read"),
-                    )
-                    .help("move the `<include>` under `<mujoco>`, its file's elements wrapped as that place needs (a `<worldbody>` around bodies)"));
-            }
             if let Some(c) = inc.children().find(Node::is_element) {
                 return Err(xml.error(
                     xml.tag(c),
@@ -263,24 +382,38 @@ impl Loader<'_> {
             })?;
             let (line, col) = source.line_col(at.start);
             let site = format!("{}:{line}:{col}", source.name);
+            if bytes.is_empty() {
+                return Err(xml.error(
+                    at,
+                    format!("`<include>` of `{shown}`: the file is empty (MuJoCo refuses an empty include)"),
+                ));
+            }
             let s = crate::io::source_of(&shown, bytes)
                 .map_err(|d| d.included_from(site.clone()))?
                 .read_from(path.clone());
             let included = super::parse(&s).map_err(|d| d.included_from(site.clone()))?;
             let found = qname(included.root_element());
-            if found != "mujoco" {
+            // NOTE: MuJoCo takes any root (`<mujoco>`, the older
+            // `<mujocoinclude>`, …) and splices its children; a URDF's or
+            // an SDFormat file's elements it then refuses as MJCF
+            // ("unrecognized element"), and so does massprop, naming the
+            // root rather than reading past elements it does not know.
+            if let Some(format) = match found {
+                "robot" => Some("a URDF file"),
+                "sdf" => Some("an SDFormat file"),
+                _ => None,
+            } {
                 return Err(xml.error(
                     at,
                     format!(
-                        "`<include>` of `{shown}`: its root element is `<{}>`, expected `<mujoco>` (MuJoCo puts the children of an included file's `<mujoco>` in the `<include>`'s place)",
-                        crate::diag::shorten(found)
+                        "`<include>` of `{shown}`: its root element is `<{found}>`, {format}: MuJoCo puts the children of the included file's root in the `<include>`'s place and refuses them as MJCF"
                     ),
                 ));
             }
             if !included.root_element().children().any(|c| c.is_element()) {
                 return Err(xml.error(
                     at,
-                    format!("`<include>` of `{shown}`: its `<mujoco>` holds no element (MuJoCo refuses an empty include)"),
+                    format!("`<include>` of `{shown}`: its root element `<{}>` holds no element (MuJoCo refuses an empty include)", crate::diag::shorten(found)),
                 ));
             }
             drop(included);

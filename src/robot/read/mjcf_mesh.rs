@@ -34,7 +34,7 @@
 
 use super::geometry::{MeshMass, scaled};
 use super::mjcf_include::Model;
-use super::{Value, Xml, children, quoted};
+use super::{Value, Xml, qname, quoted};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::mesh::{FileType, MeshBody, Mode};
 use crate::numeric::{DD, Real};
@@ -65,11 +65,23 @@ pub(super) struct Loaded {
     pub legacy: bool,
 }
 
+/// A warning of a mesh file MuJoCo weighs (`MeshBody::load_with`: what
+/// its exact answer survives, such as a triangle of zero area left out):
+/// the file its `<mesh>` asset is written in, as named, and the place of
+/// that asset there. Once per mesh file, however many assets or geoms
+/// name it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshWarning {
+    pub path: String,
+    pub span: crate::diag::Span,
+    pub message: String,
+}
+
 /// An MJCF model's mesh assets (its included files' too), each read once
 /// when a geom needs it.
 pub(super) struct Meshes<'s, 'a, 'i> {
-    /// Each mesh, with the file it is written in.
-    by_name: HashMap<String, (Node<'a, 'i>, &'s Source)>,
+    /// Each mesh, with the file it is written in (its index in the model).
+    by_name: HashMap<String, (Node<'a, 'i>, usize)>,
     /// `meshdir`, else `assetdir`, as written (empty: none).
     dir: String,
     /// The model file's directory.
@@ -77,6 +89,12 @@ pub(super) struct Meshes<'s, 'a, 'i> {
     roots: Vec<PathBuf>,
     /// By name (unique).
     loaded: HashMap<String, Loaded>,
+    /// The warnings of the mesh files read, in the order read.
+    pub warnings: Vec<MeshWarning>,
+    /// (canonical mesh file, warning) said already.
+    warned: std::collections::HashSet<(PathBuf, String)>,
+    /// The model's files, for a mesh's place.
+    sources: Vec<&'s Source>,
 }
 
 impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
@@ -107,8 +125,15 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
         // and `--package` directories.
         let roots = m.dirs.clone();
         let mut by_name = HashMap::new();
-        for (xml, _, asset) in m.sections("asset") {
-            for m in children(asset, "mesh") {
+        for (_, file, asset) in m.sections("asset") {
+            // An `<include>` in an `<asset>` brings its meshes there.
+            for (file, mesh) in m.children(file, asset) {
+                m.in_place(file, mesh)?;
+                if qname(mesh) != "mesh" {
+                    continue;
+                }
+                let xml = m.xml(file);
+                let m = mesh;
                 // MuJoCo names an unnamed mesh after its file, without
                 // the directory and the extension.
                 let name = match (xml.attr(m, "name"), xml.attr(m, "file")) {
@@ -121,7 +146,7 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
                     },
                     (None, None) => continue,
                 };
-                if by_name.insert(name.text.clone(), (m, xml.source)).is_some() {
+                if by_name.insert(name.text.clone(), (m, file)).is_some() {
                     return Err(xml.error(
                         name.range.clone(),
                         format!(
@@ -138,18 +163,22 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
             base,
             roots,
             loaded: HashMap::new(),
+            warnings: Vec::new(),
+            warned: std::collections::HashSet::new(),
+            sources: m.xmls.iter().map(|x| x.source).collect(),
         })
     }
 
     /// The mesh a geom's `mesh` attribute `v` names, read and weighed.
     pub fn load(
         &mut self,
+        m: &Model,
         xml: &Xml,
         v: &Value,
         owner: &str,
         classes: &super::mjcf_class::Classes,
     ) -> Result<Loaded, Diagnostic> {
-        let Some(&(node, source)) = self.by_name.get(&v.text) else {
+        let Some(&(node, file)) = self.by_name.get(&v.text) else {
             let near = crate::units::suggest(&v.text, self.by_name.keys().map(String::as_str))
                 .map(|s| format!("; did you mean {}?", quoted(s)))
                 .unwrap_or_default();
@@ -165,9 +194,10 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
             return Ok(l.clone());
         }
         // The mesh's own values are read, and refused, in its file.
+        let source = self.sources[file];
         let mesh_xml = Xml { source };
         let xml = &mesh_xml;
-        let class = classes.of(xml, node)?;
+        let class = classes.of(m, file, node)?;
         let attr = |n: &str| classes.attr(xml, node, class, "mesh", n);
         let what = format!("`<mesh>` {}", quoted(&v.text));
         for refused in ["vertex", "face", "refpos", "refquat"] {
@@ -229,14 +259,14 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
         } else {
             self.base.join(&uri)
         };
-        let bytes = self.bytes(xml, &file, &shown)?;
+        let (bytes, canonical) = self.bytes(xml, &file, &shown)?;
         let format = FileType::of(&shown).expect("`bytes` checked the extension");
         let mode = match inertia {
             Inertia::Shell => Mode::Shell,
             Inertia::Legacy | Inertia::Convex | Inertia::Exact => Mode::Solid,
         };
         let shown_name = crate::diag::display_path(&shown);
-        let body = MeshBody::load(format, &bytes, mode).map_err(|e| {
+        let (body, notes) = MeshBody::load_with(format, &bytes, mode, None).map_err(|e| {
             let d = xml.error(
                 file.range.clone(),
                 format!("the mesh file `{shown_name}`: {}", e.message),
@@ -246,6 +276,15 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
                 Mode::Shell => d,
             }
         })?;
+        for note in notes {
+            if self.warned.insert((canonical.clone(), note.clone())) {
+                self.warnings.push(MeshWarning {
+                    path: source.name.clone(),
+                    span: source.span(xml.tag(node)),
+                    message: format!("the mesh file `{shown_name}`: {note}"),
+                });
+            }
+        }
         let uniform = scale[0].abs() == scale[1].abs() && scale[1].abs() == scale[2].abs();
         if inertia == Inertia::Shell && !uniform {
             let at = scale_value.map_or_else(|| file.range.clone(), |s| s.range);
@@ -302,7 +341,13 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
     }
 
     /// The bytes of the mesh file `shown` (`file` names it), confined.
-    fn bytes(&self, xml: &Xml, file: &Value, shown: &Path) -> Result<Vec<u8>, Diagnostic> {
+    /// Also its canonical path.
+    fn bytes(
+        &self,
+        xml: &Xml,
+        file: &Value,
+        shown: &Path,
+    ) -> Result<(Vec<u8>, PathBuf), Diagnostic> {
         let shown_name = crate::diag::display_path(shown);
         let at = |m: String| xml.error(file.range.clone(), m);
         let canonical = std::fs::canonicalize(shown).map_err(|e| {
@@ -333,12 +378,13 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
                 crate::io::MAX_FILE_BYTES >> 20
             )));
         }
-        std::fs::read(&canonical).map_err(|e| {
+        let bytes = std::fs::read(&canonical).map_err(|e| {
             at(format!(
                 "cannot read the mesh file `{}`: {e}",
                 shorten(&shown_name)
             ))
-        })
+        })?;
+        Ok((bytes, canonical))
     }
 }
 

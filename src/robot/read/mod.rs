@@ -26,6 +26,7 @@ mod tree;
 mod urdf;
 
 pub use geometry::{Amount, Geometry, MeshMass, Solid, geometry, scaled};
+pub use mjcf_mesh::MeshWarning;
 pub use tree::{Resolve, tree};
 
 /// An MJCF file's bodies' geoms that count for inertia (`mjcf_geoms.rs`),
@@ -36,19 +37,22 @@ fn geoms_of_mjcf(
     d: &Description,
     need: Option<&[bool]>,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
-    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need)
+    // NOTE: `export` weighs the solids and says nothing of a mesh's
+    // warnings yet; `report` does (`mjcf_geometry_in`).
+    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need).map(|g| g.0)
 }
 
 /// Per body of the MJCF description `d`, its geoms that count for inertia,
 /// read only for the bodies `need` marks (a geom massprop cannot weigh is
 /// refused only where it is needed); the file's includes followed,
-/// resolved by `r` (`robot::weigh`).
+/// resolved by `r` (`robot::weigh`); with the warnings of the mesh files
+/// read.
 pub fn mjcf_geometry_in(
     source: &Source,
     d: &Description,
     need: &[bool],
     r: &Resolve,
-) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
     mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need)))
 }
 

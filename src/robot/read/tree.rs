@@ -253,33 +253,39 @@ fn mujoco(m: &Model, d: &Description) -> Result<Tree, Diagnostic> {
     // Keyed by file too: each file is a document of its own.
     let mut index: HashMap<(usize, roxmltree::NodeId), usize> = HashMap::new();
     let mut count = 0;
-    for (xml, file, world) in m.sections("worldbody") {
-        for body in world.descendants().skip(1).filter(|n| qname(*n) == "body") {
+    for (_, file, world) in m.sections("worldbody") {
+        // Includes spliced (`Model::descendants`, `parent`, `children`).
+        for (file, body) in m.descendants(file, world) {
+            if qname(body) != "body" {
+                continue;
+            }
+            let xml = m.xml(file);
             let i = count;
             count += 1;
             index.insert((file, body.id()), i);
             let owner = format!("body {}", quoted(&d.links[i].name));
             // Its pose in the enclosing body's frame, through any frames.
             let mut place = mj_pose(xml, body, &owner, &s)?;
-            let mut up = body.parent();
-            while let Some(n) = up {
+            let mut up = m.parent(file, body);
+            while let Some((f, n)) = up {
                 if qname(n) != "frame" {
                     break;
                 }
-                place = mj_pose(xml, n, &owner, &s)?.then(&place);
-                up = n.parent();
+                place = mj_pose(m.xml(f), n, &owner, &s)?.then(&place);
+                up = m.parent(f, n);
             }
-            t.links[i].parent = up.and_then(|n| index.get(&(file, n.id())).copied());
+            t.links[i].parent = up.and_then(|(f, n)| index.get(&(f, n.id())).copied());
             t.links[i].place = place;
-            for j in body
-                .children()
-                .filter(|c| matches!(qname(*c), "joint" | "freejoint"))
+            for (jf, j) in m
+                .children(file, body)
+                .filter(|(_, c)| matches!(qname(*c), "joint" | "freejoint"))
             {
+                let xml = m.xml(jf);
                 let name = j
                     .attribute("name")
                     .map_or_else(|| format!("joint {}", t.joints.len() + 1), str::to_string);
                 let jowner = format!("joint {}", quoted(&name));
-                let class = classes.of(xml, j)?;
+                let class = classes.of(m, jf, j)?;
                 let attr = |n: &str| classes.attr(xml, j, class, "joint", n);
                 let motion = if qname(j) == "freejoint" {
                     Motion::Stays
@@ -335,15 +341,16 @@ fn mujoco(m: &Model, d: &Description) -> Result<Tree, Diagnostic> {
                     zero,
                     limits: range.filter(|_| limited).map(|[a, b]| (a, b)),
                     follows: None,
-                    range: m.range(file, j.range()),
+                    range: m.range(jf, j.range()),
                 });
             }
         }
     }
-    for (xml, _, eq) in m.sections("equality") {
-        for e in children(eq, "joint") {
+    for (_, file, eq) in m.sections("equality") {
+        for (ef, e) in m.named(file, eq, "joint") {
+            let xml = m.xml(ef);
             let owner = "`<equality><joint>`".to_string();
-            let class = classes.of(xml, e)?;
+            let class = classes.of(m, ef, e)?;
             let attr = |n: &str| classes.attr(xml, e, class, "equality", n);
             if let Some(v) = attr("active")
                 && !xml.keyword(&v, &owner, &[("true", true), ("false", false)])?
