@@ -207,7 +207,7 @@ pub(super) fn solid_sums(vertices: &[[f64; 3]], faces: &[[u32; 3]], p: [f64; 3])
         let t = terms(vertices, block, p);
         for l in 0..LANES {
             for k in 0..10 {
-                sums.value[k] = sums.value[k] + t.value[k].lane(l);
+                sums.value[k] += t.value[k].lane(l);
                 sums.magnitude[k] += t.magnitude[k][l];
             }
         }
