@@ -36,13 +36,13 @@ struct X {
 }
 
 #[inline(always)]
-fn map2(a: V, b: V, f: impl Fn(f64, f64) -> f64) -> V {
+fn map2<const N: usize>(a: [f64; N], b: [f64; N], f: impl Fn(f64, f64) -> f64) -> [f64; N] {
     std::array::from_fn(|l| f(a[l], b[l]))
 }
 
 /// `numeric::two_sum`, lane by lane.
 #[inline(always)]
-fn two_sum(a: V, b: V) -> (V, V) {
+fn two_sum<const N: usize>(a: [f64; N], b: [f64; N]) -> ([f64; N], [f64; N]) {
     let s = map2(a, b, |a, b| a + b);
     let e = std::array::from_fn(|l| {
         let bb = s[l] - a[l];
@@ -53,7 +53,7 @@ fn two_sum(a: V, b: V) -> (V, V) {
 
 /// `numeric`'s fast two-sum, lane by lane.
 #[inline(always)]
-fn fast_two_sum(a: V, b: V) -> (V, V) {
+fn fast_two_sum<const N: usize>(a: [f64; N], b: [f64; N]) -> ([f64; N], [f64; N]) {
     let s = map2(a, b, |a, b| a + b);
     let e = std::array::from_fn(|l| b[l] - (s[l] - a[l]));
     (s, e)
@@ -118,10 +118,26 @@ impl X {
     fn abs(self) -> V {
         map2(self.hi, self.lo, |h, l| (h + l).abs())
     }
+}
 
-    fn lane(&self, l: usize) -> DD {
-        DD::new(self.hi[l], self.lo[l])
-    }
+/// `DD + DD` of N pairs side by side, with its branch (a non-finite sum
+/// is that sum and 0) as a choice per pair.
+#[inline(always)]
+fn add_dd<const N: usize>(
+    ahi: [f64; N],
+    alo: [f64; N],
+    bhi: [f64; N],
+    blo: [f64; N],
+) -> ([f64; N], [f64; N]) {
+    let (s0, e0) = two_sum(ahi, bhi);
+    let (t, f) = two_sum(alo, blo);
+    let (s, e) = fast_two_sum(s0, map2(e0, t, |e, t| e + t));
+    let (hi, lo) = fast_two_sum(s, map2(e, f, |e, f| e + f));
+    let pick = |l: usize, x: [f64; N], y: f64| if s0[l].is_finite() { x[l] } else { y };
+    (
+        std::array::from_fn(|l| pick(l, hi, s0[l])),
+        std::array::from_fn(|l| pick(l, lo, 0.0)),
+    )
 }
 
 fn cross(b: [X; 3], c: [X; 3]) -> [X; 3] {
@@ -197,7 +213,9 @@ fn terms(vertices: &[[f64; 3]], faces: &[[u32; 3]; LANES], p: [f64; 3]) -> Terms
 /// `Sums::<DD>` of a solid's triangles `faces` about `p`, the same bits as
 /// adding each with `Sums::add`; the mesh must `fit`.
 pub(super) fn solid_sums(vertices: &[[f64; 3]], faces: &[[u32; 3]], p: [f64; 3]) -> Sums<DD> {
-    let mut sums = Sums::<DD>::new();
+    // The ten sums side by side (hi, lo), each added to as `DD + DD`
+    // adds, a triangle after another.
+    let (mut hi, mut lo, mut magnitude) = ([0.0; 10], [0.0; 10], [0.0; 10]);
     let blocks = faces.chunks_exact(LANES);
     let rest = blocks.remainder();
     for block in blocks {
@@ -206,13 +224,20 @@ pub(super) fn solid_sums(vertices: &[[f64; 3]], faces: &[[u32; 3]], p: [f64; 3])
             .expect("invariant: chunks_exact gives blocks of LANES");
         let t = terms(vertices, block, p);
         for l in 0..LANES {
-            for k in 0..10 {
-                sums.value[k] += t.value[k].lane(l);
-                sums.magnitude[k] += t.magnitude[k][l];
-            }
+            let th: [f64; 10] = std::array::from_fn(|k| t.value[k].hi[l]);
+            let tl: [f64; 10] = std::array::from_fn(|k| t.value[k].lo[l]);
+            (hi, lo) = add_dd(hi, lo, th, tl);
+            magnitude = map2(
+                magnitude,
+                std::array::from_fn(|k| t.magnitude[k][l]),
+                |m, x| m + x,
+            );
         }
-        sums.n += LANES;
     }
+    let mut sums = Sums::<DD>::new();
+    sums.value = std::array::from_fn(|k| DD::new(hi[k], lo[k]));
+    sums.magnitude = magnitude;
+    sums.n = faces.len() - rest.len();
     let offset = |v: [f64; 3]| -> [DD; 3] { std::array::from_fn(|k| DD::of(v[k]) - DD::of(p[k])) };
     for f in rest {
         sums.add(Mode::Solid, f.map(|k| offset(vertices[k as usize])));
