@@ -239,13 +239,22 @@ impl Mesh {
     pub fn sums_on<T: Real + Send>(&self, mode: Mode, p: [f64; 3], threads: usize) -> Sums<T> {
         let offset =
             |v: [f64; 3]| -> [DD; 3] { std::array::from_fn(|k| DD::of(v[k]) - DD::of(p[k])) };
-        let chunk = |faces: &[[u32; 3]]| {
+        self.sums_with(threads, |faces| {
             let mut sums = Sums::<T>::new();
             for f in faces {
                 sums.add(mode, f.map(|k| offset(self.vertices[k as usize])));
             }
             sums
-        };
+        })
+    }
+
+    /// The sums of the triangles' chunks (of `CHUNK`), each by `chunk`,
+    /// on at most `threads` threads, added in the chunks' order.
+    pub(super) fn sums_with<T: Real + Send>(
+        &self,
+        threads: usize,
+        chunk: impl Fn(&[[u32; 3]]) -> Sums<T> + Sync,
+    ) -> Sums<T> {
         let chunks: Vec<&[[u32; 3]]> = self.faces.chunks(CHUNK).collect();
         let threads = threads.clamp(1, chunks.len().max(1));
         let mut parts: Vec<Option<Sums<T>>> = vec![None; chunks.len()];
@@ -357,7 +366,7 @@ fn surely_not_collinear(a: [f64; 3], b: [f64; 3], c: [f64; 3]) -> bool {
 }
 
 /// The triangles summed as one chunk (`Mesh::sums`).
-const CHUNK: usize = 1 << 15;
+pub(super) const CHUNK: usize = 1 << 15;
 
 /// An edge of a triangle: its key (the two vertices, smaller first), the
 /// triangle, and whether it runs from the smaller to the larger.

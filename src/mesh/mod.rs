@@ -31,6 +31,7 @@ pub mod bvh;
 pub mod check;
 mod classes;
 pub mod exact;
+mod lanes;
 pub mod near;
 pub mod read;
 pub mod shells;
@@ -222,7 +223,7 @@ impl MeshBody {
             let edges = mesh.take_edges();
             let mesh = &mesh;
             let (checked, sums) = std::thread::scope(|scope| {
-                let sums = scope.spawn(move || mesh.sums::<DD>(mode, p));
+                let sums = scope.spawn(move || mesh.sums_dd(mode, p));
                 let checked = shells::check_with(mesh, edges);
                 let sums = sums
                     .join()
@@ -233,7 +234,7 @@ impl MeshBody {
             sums
         } else {
             mesh.forget_edges();
-            mesh.sums::<DD>(mode, p)
+            mesh.sums_dd(mode, p)
         };
         let body = mesh.body_of(mode, p, sums, moved);
         if weld.is_some() && !(body.bound.measure <= body.measure.hi.abs() / 2.0) {

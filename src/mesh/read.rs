@@ -69,7 +69,7 @@ impl Triangles {
 pub fn read(format: FileType, bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     match format {
         FileType::Stl if is_binary_stl(bytes) => binary_stl(bytes, limit),
-        FileType::Stl => ascii_stl(bytes, limit),
+        FileType::Stl => ascii_stl_on(bytes, limit, super::threads_for(bytes.len(), 1 << 22)),
         FileType::Obj => obj(bytes, limit),
     }
 }
@@ -240,11 +240,166 @@ fn point<'a>(
 /// solid may follow each other. The normals are not read (the winding
 /// gives the orientation).
 fn ascii_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
+    let (t, end) = ascii_stl_from(bytes, 1, limit);
+    match end {
+        End::Done => Ok(t),
+        End::Open { last, start } => Err(open(last, start)),
+        End::Error(e) => Err(e),
+    }
+}
+
+/// How the reading of an ASCII STL's lines ended.
+enum End {
+    Done,
+    /// Inside the facet begun on line `start`, at line `last`.
+    Open {
+        last: usize,
+        start: usize,
+    },
+    Error(MeshError),
+}
+
+fn open(last: usize, start: usize) -> MeshError {
+    MeshError::new(
+        At::Line(last),
+        format!("the file ends inside the facet begun on line {start}"),
+    )
+}
+
+/// `ascii_stl`, the file cut into `threads` pieces read on a thread each.
+///
+/// NOTE: each cut is moved on to the start of a line whose keyword is
+/// `facet` (issue 33, item 4: a 258 MB ASCII STL was read on one core);
+/// a piece is read from there as from a file's start (outside a facet,
+/// its lines numbered on from the lines before it). A file read in one
+/// piece would be outside a facet at that line too, or refuse it (a
+/// `facet` inside a facet), or refuse something before: the pieces'
+/// triangles, joined in order, are its triangles, and the first piece to
+/// end inside a facet (or to refuse a line, or to pass the triangle
+/// limit) gives the error the one-piece reading gives. `tests` hold the
+/// two equal, errors and their lines included.
+pub(crate) fn ascii_stl_on(
+    bytes: &[u8],
+    limit: usize,
+    threads: usize,
+) -> Result<Triangles, MeshError> {
+    let cuts = facet_cuts(bytes, threads);
+    if cuts.len() <= 2 {
+        return ascii_stl(bytes, limit);
+    }
+    let pieces: Vec<&[u8]> = cuts.windows(2).map(|w| &bytes[w[0]..w[1]]).collect();
+    // A piece's lines: one more than its newlines, but for the piece that
+    // ends on a newline before the next piece's first line.
+    let newlines: Vec<usize> = pieces
+        .iter()
+        .map(|p| p.iter().filter(|b| **b == b'\n').count())
+        .collect();
+    let read: Vec<(Triangles, End)> = std::thread::scope(|scope| {
+        let mut first = 1;
+        let handles: Vec<_> = pieces
+            .iter()
+            .zip(&newlines)
+            .map(|(piece, nl)| {
+                let from = first;
+                first += nl;
+                scope.spawn(move || ascii_stl_from(piece, from, limit))
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("invariant: reading a piece does not panic"))
+            .collect()
+    });
     let mut t = Triangles::default();
+    let count = read.len();
+    for (k, (piece, end)) in read.into_iter().enumerate() {
+        if t.faces.len() + piece.faces.len() > limit {
+            return Err(too_many(piece.at[limit - t.faces.len()], limit));
+        }
+        match end {
+            End::Done => {}
+            // The file goes on with a `facet` line where this piece ends
+            // inside a facet: the one-piece reading refuses that line.
+            End::Open { .. } if k + 1 < count => {
+                let line = 1 + newlines[..=k].iter().sum::<usize>();
+                return Err(MeshError::new(At::Line(line), unexpected(b"facet")));
+            }
+            End::Open { last, start } => return Err(open(last, start)),
+            End::Error(e) => return Err(e),
+        }
+        let base = t.points.len() as u32;
+        t.points.extend(piece.points);
+        t.faces
+            .extend(piece.faces.into_iter().map(|f| f.map(|i| i + base)));
+        t.at.extend(piece.at);
+    }
+    Ok(t)
+}
+
+/// Where the pieces of `ascii_stl_on` begin and end: 0, each `threads`th
+/// share of the file moved on to the start of the next line whose keyword
+/// is `facet`, and the file's length (duplicates left out).
+fn facet_cuts(bytes: &[u8], threads: usize) -> Vec<usize> {
+    let mut cuts = vec![0];
+    for k in 1..threads.max(1) {
+        let mut at = (k * bytes.len() / threads).max(*cuts.last().expect("0 is in"));
+        let cut = loop {
+            // The start of the next line.
+            let Some(nl) = bytes[at..].iter().position(|b| *b == b'\n') else {
+                break None;
+            };
+            at += nl + 1;
+            let line = &bytes[at..];
+            let end = line.iter().position(|b| *b == b'\n').unwrap_or(line.len());
+            if words(&line[..end])
+                .next()
+                .is_some_and(|w| w.eq_ignore_ascii_case(b"facet"))
+            {
+                break Some(at);
+            }
+        };
+        match cut {
+            Some(c) if c > *cuts.last().expect("0 is in") => cuts.push(c),
+            Some(_) => {}
+            None => break,
+        }
+    }
+    cuts.push(bytes.len());
+    cuts
+}
+
+/// The message of an unexpected keyword in an ASCII STL.
+fn unexpected(key: &[u8]) -> String {
+    format!(
+        "unexpected `{}` in an ASCII STL (expected `facet`, `outer loop`, `vertex`, `endloop`, `endfacet`, `solid` or `endsolid`)",
+        shown(key)
+    )
+}
+
+/// An ASCII STL's lines from line `first` on, read as from outside a
+/// facet: the triangles read (before the error, if one stopped it), and
+/// how the reading ended.
+fn ascii_stl_from(bytes: &[u8], first: usize, limit: usize) -> (Triangles, End) {
+    let mut t = Triangles::default();
+    let end = match ascii_stl_into(&mut t, bytes, first, limit) {
+        Ok(None) => End::Done,
+        Ok(Some((last, start))) => End::Open { last, start },
+        Err(e) => End::Error(e),
+    };
+    (t, end)
+}
+
+fn ascii_stl_into(
+    t: &mut Triangles,
+    bytes: &[u8],
+    first: usize,
+    limit: usize,
+) -> Result<Option<(usize, usize)>, MeshError> {
     // The facet being read: its line and its vertices so far.
     let mut facet: Option<(usize, Vec<[f64; 3]>)> = None;
     let mut last = 0;
     for (n, line) in lines(bytes) {
+        let n = n + first - 1;
         last = n;
         let mut ws = words(line);
         let Some(key) = ws.next() else { continue };
@@ -290,24 +445,11 @@ fn ascii_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
                 }
                 t.push([vs[0], vs[1], vs[2]], At::Line(start));
             }
-            _ => {
-                return Err(MeshError::new(
-                    At::Line(n),
-                    format!(
-                        "unexpected `{}` in an ASCII STL (expected `facet`, `outer loop`, `vertex`, `endloop`, `endfacet`, `solid` or `endsolid`)",
-                        shown(key)
-                    ),
-                ));
-            }
+            _ => return Err(MeshError::new(At::Line(n), unexpected(key))),
         }
     }
-    if let Some((start, _)) = facet {
-        return Err(MeshError::new(
-            At::Line(last),
-            format!("the file ends inside the facet begun on line {start}"),
-        ));
-    }
-    Ok(t)
+    // Ending inside a facet: the last line and the facet's first.
+    Ok(facet.map(|(start, _)| (last, start)))
 }
 
 /// A Wavefront OBJ: `v x y z [w]` vertices and `f a b c …` faces, each
@@ -387,3 +529,6 @@ fn obj(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     }
     Ok(t)
 }
+
+#[cfg(test)]
+mod tests;

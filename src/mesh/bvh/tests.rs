@@ -201,3 +201,50 @@ fn the_node_count_is_the_count_a_build_makes() {
         assert_eq!(bvh.nodes.len(), node_count(n).max(1), "{n}");
     }
 }
+
+#[test]
+fn spreading_puts_each_bit_three_places_apart() {
+    for x in [0u64, 1, 2, 3, 0x8000, 0xffff, 0x1234, 0xa5a5] {
+        let want = (0..16).fold(0u64, |m, b| m | (((x >> b) & 1) << (3 * b)));
+        assert_eq!(spread(x), want, "{x:#x}");
+    }
+}
+
+#[test]
+fn the_radix_sort_orders_as_a_stable_sort_by_key() {
+    let mut x = 0x9e37_79b9_7f4a_7c15u64;
+    let keyed: Vec<(u64, u32)> = (0..5000u32)
+        .map(|i| {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            // Few distinct keys in every 16-bit digit: ties, and passes
+            // with one digit skipped.
+            let k = (x % 7) | ((x >> 8) % 3) << 16 | ((x >> 16) % 5) << 32;
+            (k, i)
+        })
+        .collect();
+    let mut want = keyed.clone();
+    want.sort_by_key(|p| p.0);
+    let want: Vec<u32> = want.into_iter().map(|p| p.1).collect();
+    assert_eq!(radix_sorted(keyed), want);
+}
+
+#[test]
+fn the_tree_is_the_same_built_on_one_thread_or_four() {
+    let boxes: Vec<Aabb> = (0..70_000u32)
+        .map(|i| {
+            let t = f64::from(i) * 0.001;
+            let lo = [t.sin(), t.cos(), (3.0 * t).sin()];
+            Aabb {
+                lo,
+                hi: lo.map(|x| x + 0.002),
+            }
+        })
+        .collect();
+    let items: Vec<u32> = (0..boxes.len() as u32).rev().collect();
+    let one = Bvh::build_on(&boxes, items.clone(), 1);
+    let four = Bvh::build_on(&boxes, items, 4);
+    assert_eq!(one.items, four.items);
+    well_formed(&four, &boxes);
+}
