@@ -71,7 +71,16 @@ fn link_failures(l: &crate::robot::check::LinkResult) -> Option<(String, String)
         .iter()
         .map(|e| visible(&robot::failure(l, e)))
         .collect();
-    Some((names.join(", "), text.join("\n")))
+    Some((names.join(", "), text.join("\n") + &included(l)))
+}
+
+/// A link of an included file: where its file is included from, as a
+/// diagnostic's notes say it (`diagnostic_text`); empty in the main file.
+fn included(l: &crate::robot::check::LinkResult) -> String {
+    l.included_from
+        .iter()
+        .map(|site| format!("\nnote: included from {}", visible(site)))
+        .collect()
 }
 
 /// GitHub Actions workflow commands (`::error …::message`), one per failure
@@ -156,12 +165,24 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             if let Some((engines, text)) = link_failures(l) {
                 let title = format!("link {} under {engines}", visible(&l.name));
-                out.push_str(&command("error", &r.path, Some(l.span), &title, &text));
+                out.push_str(&command(
+                    "error",
+                    l.path(&r.path),
+                    Some(l.span),
+                    &title,
+                    &text,
+                ));
             }
             for w in &l.warnings {
                 let title = format!("link {}", visible(&l.name));
-                let text = visible(&robot::warning(l, w));
-                out.push_str(&command("warning", &r.path, Some(l.span), &title, &text));
+                let text = visible(&robot::warning(l, w)) + &included(l);
+                out.push_str(&command(
+                    "warning",
+                    l.path(&r.path),
+                    Some(l.span),
+                    &title,
+                    &text,
+                ));
             }
         }
     }
@@ -214,7 +235,13 @@ pub fn junit(results: &[FileResult]) -> String {
                         false,
                         "inertial",
                         &text,
-                        &format!("{path}:{}:{}: error: {text}", l.span.line, l.span.column),
+                        &format!(
+                            "{}:{}:{}: error: {text}{}",
+                            visible(l.path(&r.path)),
+                            l.span.line,
+                            l.span.column,
+                            included(l)
+                        ),
                     )
                 };
                 let name = format!("link {}: {}", visible(&l.name), e.verdict.engine.name());
@@ -263,8 +290,11 @@ pub fn junit(results: &[FileResult]) -> String {
             for w in &l.warnings {
                 let text = visible(&robot::warning(l, w));
                 warnings.push_str(&format!(
-                    "warning: {path}:{}:{}: {text}\n",
-                    l.span.line, l.span.column
+                    "warning: {}:{}:{}: {text}{}\n",
+                    visible(l.path(&r.path)),
+                    l.span.line,
+                    l.span.column,
+                    included(l)
                 ));
             }
         }
@@ -385,15 +415,21 @@ pub fn sarif(results: &[FileResult]) -> String {
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             if let Some((_, text)) = link_failures(l) {
-                out.push(result("inertial", "error", &text, &r.path, Some(l.span)));
+                out.push(result(
+                    "inertial",
+                    "error",
+                    &text,
+                    l.path(&r.path),
+                    Some(l.span),
+                ));
             }
             for w in &l.warnings {
-                let text = visible(&robot::warning(l, w));
+                let text = visible(&robot::warning(l, w)) + &included(l);
                 out.push(result(
                     "inertial-warning",
                     "warning",
                     &text,
-                    &r.path,
+                    l.path(&r.path),
                     Some(l.span),
                 ));
             }

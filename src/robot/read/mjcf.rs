@@ -141,6 +141,12 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
                 inertial,
                 moving,
                 parent,
+                site: crate::robot::Site {
+                    file,
+                    element: body.range(),
+                    inertial: children(body, "inertial").next().map(|i| i.range()),
+                    from: Vec::new(),
+                },
             });
         }
     }
@@ -149,6 +155,7 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
         name: m.root.attribute("model").map(str::to_string),
         links,
         compiler: settings.compiler,
+        files: Default::default(),
     })
 }
 

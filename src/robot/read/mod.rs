@@ -52,18 +52,51 @@ pub fn mjcf_geometry_in(
     mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need)))
 }
 
-/// `read`, an MJCF file's `<include>`s followed, resolved by `r` (the
-/// whole robot: `Robot::read_in`); other formats as `read` reads them.
+/// `source` read as a robot description of `format`, every file it
+/// includes followed (SDFormat `<include>`s of worlds and models, MJCF
+/// `<include>`s), resolved by `r`: each link knows the file it is written
+/// in (`Link::site`), and the description keeps those files
+/// (`Description::files`). An SDFormat file's links are those of the whole
+/// robot's reader (`sdf_tree`), named as it names them, when it includes
+/// any file; else `sdf::read`'s, which reads every world and nested model.
 pub fn read_in(source: &Source, format: Dialect, r: &Resolve) -> Result<Description, Diagnostic> {
-    if format != Dialect::Mjcf {
-        return read(source, format);
+    let doc = parse(source)?;
+    let xml = Xml { source };
+    let root = doc.root_element();
+    self::root(&xml, root, format)?;
+    match format {
+        Dialect::Urdf => urdf::read(&xml, root),
+        Dialect::Sdf => {
+            let mut d = sdf::read(&xml, root)?;
+            let files = sdf_include::load(source, r)?;
+            if files.included.is_empty() {
+                return Ok(d);
+            }
+            let tree = sdf_tree::of_files(&xml, &mut d, &files)?;
+            sdf_tree::moving(&mut d, &tree);
+            Ok(d)
+        }
+        Dialect::Mjcf => {
+            if !root.descendants().any(|n| qname(n) == "include") {
+                return mjcf::read(&xml, root);
+            }
+            let files = mjcf_include::load(source, r)?;
+            let docs = mjcf_include::parse(&files)?;
+            let m = mjcf_include::Model::of(&files, &docs);
+            let mut d = mjcf::model(&m).map_err(|e| files.located(e))?;
+            for l in &mut d.links {
+                l.site.from = chain(&files.included, &files.from, l.site.file);
+            }
+            d.files = super::Included {
+                sources: files.included.clone(),
+                from: files.from.clone(),
+            };
+            Ok(d)
+        }
     }
-    {
-        let doc = parse(source)?;
-        root(&Xml { source }, doc.root_element(), format)?;
-    }
-    mjcf_include::with_model(source, r, mjcf::model)
 }
+
+pub use sdf_include::{chain, located};
 
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};
@@ -72,17 +105,10 @@ use roxmltree::{Document, Node, ParsingOptions};
 use std::ops::Range;
 
 /// Read `source` as a robot description of `format` (from `Dialect::of_path`
-/// or `Dialect::of_text`).
+/// or `Dialect::of_text`), its includes followed from the file's own
+/// directory (`read_in` without `--package` or `--include-root`).
 pub fn read(source: &Source, format: Dialect) -> Result<Description, Diagnostic> {
-    let doc = parse(source)?;
-    let xml = Xml { source };
-    let root = doc.root_element();
-    self::root(&xml, root, format)?;
-    match format {
-        Dialect::Urdf => urdf::read(&xml, root),
-        Dialect::Sdf => sdf::read(&xml, root),
-        Dialect::Mjcf => mjcf::read(&xml, root),
-    }
+    read_in(source, format, &Resolve::default())
 }
 
 /// Refuse a root element that is not `format`'s.

@@ -62,6 +62,10 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         links.push(Link {
             name,
             range: f.node.range(),
+            site: crate::robot::Site::main(
+                f.node.range(),
+                inertial.as_ref().map(|i| i.range.clone()),
+            ),
             inertial,
             moving,
             parent: None,
@@ -78,6 +82,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         name: name.map(str::to_string),
         links,
         compiler: MujocoCompiler::default(),
+        files: Default::default(),
     })
 }
 
