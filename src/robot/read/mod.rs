@@ -98,6 +98,13 @@ pub fn read_in(source: &Source, format: Dialect, r: &Resolve) -> Result<Descript
 
 pub use sdf_include::{chain, located};
 
+/// The directory of the robot file `source`, symlinks followed: the first
+/// of the directories its includes may read (`sdf_include::roots`), and
+/// the one `export --update` writes included files under.
+pub fn canonical_dir(source: &Source) -> std::path::PathBuf {
+    sdf_include::roots(source, &Resolve::default()).swap_remove(0)
+}
+
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};
 use crate::numeric::M3;
