@@ -165,6 +165,11 @@ pub struct CheckArgs {
     #[arg(long, value_enum, value_name = "ENGINE", default_value = "all")]
     pub engine: Vec<EngineArg>,
 
+    /// Robot descriptions: the directory an SDFormat `<include>`'s
+    /// `model://NAME` names (repeatable), as `report`'s.
+    #[arg(long, value_name = "NAME=DIR")]
+    pub package: Vec<String>,
+
     #[command(flatten)]
     pub axes: AxesArgs,
 
@@ -575,6 +580,7 @@ impl Cli {
                 },
                 engines: engines(&a.engine),
                 quiet: a.quiet,
+                packages: a.package.clone(),
             }),
             Command::Export(a) => Request::Export(commands::export::Options {
                 file: a.file.clone(),

@@ -190,7 +190,7 @@ OPTIONS: dict[str, tuple[str, Converter, tuple[str, ...]]] = {
     "joints": ("--joints", _text, (REPORT,)),
     "omega": ("--omega", _vector, (REPORT,)),
     "only": ("--only", _text, (REPORT,)),
-    "package": ("--package", _repeated(_text), (REPORT,)),
+    "package": ("--package", _repeated(_text), BOTH),
     "precision": ("--precision", _text, BOTH),
     "products": ("--products", _text, (REPORT,)),
     "rtol": ("--rtol", _number, BOTH),

@@ -31,6 +31,8 @@ pub struct Run<'a> {
     pub bless: bool,
     /// The engines whose rules robot descriptions are checked by.
     pub engines: &'a [crate::robot::engine::Engine],
+    /// `--package NAME=DIR`s: a robot description's `model://` includes.
+    pub packages: Vec<(String, PathBuf)>,
     /// Whether standard error is coloured.
     pub colour: bool,
 }
@@ -204,7 +206,13 @@ impl Run<'_> {
             ));
         }
         let r = source.and_then(|s| {
-            let d = crate::robot::read::read(&s, format)?;
+            // Every file the robot includes is read, its links judged
+            // (`--include-root` and `--package` reach further).
+            let r = crate::robot::read::Resolve {
+                packages: self.packages.clone(),
+                roots: self.settings.includes.roots.clone(),
+            };
+            let d = crate::robot::read::read_in(&s, format, &r)?;
             Ok(crate::robot::check::check(&s, &d, self.engines))
         });
         match r {

@@ -40,6 +40,9 @@ pub struct Options {
     pub engines: Vec<crate::robot::engine::Engine>,
     /// The table's failures and summary line only (`--quiet`).
     pub quiet: bool,
+    /// `--package NAME=DIR`, as typed: a robot description's `model://`
+    /// includes (`report`'s).
+    pub packages: Vec<String>,
 }
 
 /// `terminal.stdout` is the output's style (`-o`'s file's when it has one);
@@ -58,6 +61,7 @@ pub fn run(o: &Options, terminal: &super::Terminal) -> Result<Outcome, Diagnosti
         analysis::flag_axes(t)?;
     }
     let run = Run {
+        packages: super::geometry::packages(&o.packages)?,
         settings: settings(o),
         bless: o.bless,
         engines: &o.engines,

@@ -268,7 +268,9 @@ pub(super) fn update_robot(
     for (&k, entries) in &mut per {
         let source = d.files.source(target, k);
         let at = |start: usize, message: String| {
-            let end = source.text[start..].find('>').map_or(start + 1, |e| start + e + 1);
+            let end = source.text[start..]
+                .find('>')
+                .map_or(start + 1, |e| start + e + 1);
             d.files.located(source.error(start..end, message))
         };
         entries.sort_by_key(|&(start, _, _)| std::cmp::Reverse(start));
@@ -319,15 +321,20 @@ pub(super) fn update_robot(
             (0, _) => (file.take(), source.clone()),
             (_, true) => (None, source.clone()),
             (_, false) => {
-                let (rewrite, fresh) =
-                    crate::io::Rewrite::open(&source.path().to_string_lossy())?;
+                let (rewrite, fresh) = crate::io::Rewrite::open(&source.path().to_string_lossy())?;
                 if fresh.text != source.text {
                     return Err(Diagnostic::file(
                         &source.name,
                         "the file changed while it was read: not written",
                     ));
                 }
-                (Some(rewrite), Source { name: source.name.clone(), ..fresh })
+                (
+                    Some(rewrite),
+                    Source {
+                        name: source.name.clone(),
+                        ..fresh
+                    },
+                )
             }
         };
         read.extend(std::fs::canonicalize(source.path()).ok());

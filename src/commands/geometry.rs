@@ -246,7 +246,11 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             );
             continue;
         }
-        let base = if site.file == 0 { base.clone() } else { dir(own) };
+        let base = if site.file == 0 {
+            base.clone()
+        } else {
+            dir(own)
+        };
         let (e, files) = link_inertial(
             &geos[i], name, own, &made, &base, &packages, &includes, settings,
         )
@@ -282,8 +286,9 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
                 packages: packages.clone(),
                 roots: settings.includes.roots.clone(),
             };
-            let (out, err, files) =
-                super::export::update_robot(file, &target, tformat, &computed, &r, g.dry_run, stderr)?;
+            let (out, err, files) = super::export::update_robot(
+                file, &target, tformat, &computed, &r, g.dry_run, stderr,
+            )?;
             read.extend(files);
             Ok(Outcome {
                 stderr: err,

@@ -29,8 +29,7 @@ fn read_back(format: Dialect, element: &str) -> (f64, Vec<f64>, Vec<f64>) {
             .find(|n| n.has_tag_name(name))
             .unwrap_or_else(|| panic!("no <{name}> in {element}"))
     };
-    let list =
-        |s: &str| -> Vec<f64> { s.split_whitespace().map(|v| v.parse().unwrap()).collect() };
+    let list = |s: &str| -> Vec<f64> { s.split_whitespace().map(|v| v.parse().unwrap()).collect() };
     let one = |s: &str| -> f64 { s.trim().parse().unwrap() };
     let order = ["ixx", "iyy", "izz", "ixy", "ixz", "iyz"];
     match format {
@@ -153,7 +152,8 @@ fn a_tab_indented_file_keeps_its_tabs() {
 
 #[test]
 fn an_inertial_on_the_line_of_its_link_is_replaced_in_place() {
-    let text = "<robot>\n  <link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n</robot>\n";
+    let text =
+        "<robot>\n  <link name=\"a\"><inertial><mass value=\"1\"/></inertial></link>\n</robot>\n";
     let out = assert_replaced(
         text,
         Dialect::Urdf,
