@@ -97,33 +97,33 @@ const URDF: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 <!-- A two-link arm. <link name="arm"> in a comment is not a link. -->
 <robot name='arm' xmlns:xacro="http://www.ros.org/wiki/xacro">
    <link name='base'>
-  <inertial>
-    <origin xyz="0 0 0.1" rpy="0 0 0" />
-    <mass value='5.0'/>
-    <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
-  </inertial>
-  <visual><geometry><box size="1 1 1"/></geometry></visual>
+      <inertial>
+        <origin xyz="0 0 0.1" rpy="0 0 0" />
+        <mass value='5.0'/>
+        <inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>
+      </inertial>
+      <visual><geometry><box size="1 1 1"/></geometry></visual>
    </link>
    <joint name="shoulder" type='revolute'>
-  <parent link="base"/>  <child link="arm"/>
+      <parent link="base"/>  <child link="arm"/>
    </joint>
    <link name="arm" >   <!-- from CAD, 2019 -->
-  <!-- the inertial below is stale -->
-  <inertial>
-     <origin xyz='0 0 0.5'/>
-     <mass value="1"/>
-     <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/>
-  </inertial>
-  <collision name="c&gt;"><geometry><cylinder radius=".05" length="1"/></geometry></collision>
+      <!-- the inertial below is stale -->
+      <inertial>
+         <origin xyz='0 0 0.5'/>
+         <mass value="1"/>
+         <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/>
+      </inertial>
+      <collision name="c&gt;"><geometry><cylinder radius=".05" length="1"/></geometry></collision>
    </link>
 </robot>   
 "#;
 
 const URDF_ARM: &str = r#"<inertial>
-     <origin xyz='0 0 0.5'/>
-     <mass value="1"/>
-     <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/>
-  </inertial>"#;
+         <origin xyz='0 0 0.5'/>
+         <mass value="1"/>
+         <inertia ixx="0.1" iyy="0.1" izz="0.01" ixy="0" ixz="0" iyz="0"/>
+      </inertial>"#;
 
 #[test]
 fn a_urdf_links_inertial_is_replaced_and_nothing_else() {
@@ -176,29 +176,29 @@ fn a_doctype_is_no_obstacle() {
 const SDF: &str = "<?xml version='1.0'?>
 <sdf version=\"1.9\">
   <model name=\"robot\">
-<link name=\"base\">
-  <inertial><mass>10</mass></inertial>
-</link>
-<model name='gripper'>
-  <plugin name=\"p\" filename=\"p.so\"><link name=\"finger\"/></plugin>
-  <link name=\"finger\">
-    <pose>0 0 0.1 0 0 0</pose>
-    <inertial auto=\"false\">
-      <pose>0 0 0 0 0 0</pose>
-      <mass>0.1</mass>
-      <!-- no inertia given -->
-    </inertial>
-  </link>
-</model>
+    <link name=\"base\">
+      <inertial><mass>10</mass></inertial>
+    </link>
+    <model name='gripper'>
+      <plugin name=\"p\" filename=\"p.so\"><link name=\"finger\"/></plugin>
+      <link name=\"finger\">
+        <pose>0 0 0.1 0 0 0</pose>
+        <inertial auto=\"false\">
+          <pose>0 0 0 0 0 0</pose>
+          <mass>0.1</mass>
+          <!-- no inertia given -->
+        </inertial>
+      </link>
+    </model>
   </model>
 </sdf>
 ";
 
 const SDF_FINGER: &str = "<inertial auto=\"false\">
-      <pose>0 0 0 0 0 0</pose>
-      <mass>0.1</mass>
-      <!-- no inertia given -->
-    </inertial>";
+          <pose>0 0 0 0 0 0</pose>
+          <mass>0.1</mass>
+          <!-- no inertia given -->
+        </inertial>";
 
 #[test]
 fn links_of_several_top_level_models_are_named_with_their_model() {
@@ -248,16 +248,16 @@ const MJCF: &str = r#"<mujoco model="arm">
   <compiler angle="radian"/>
   <default><joint damping="1"/></default>
   <worldbody>
-<light pos="0 0 3"/>
-<body name="upper" pos="0 0 1">
-  <joint name="shoulder"/>
-  <inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>
-  <geom type="capsule" size=".05 .5"/>
-  <body name='lower' pos="0 0 1">
+    <light pos="0 0 3"/>
+    <body name="upper" pos="0 0 1">
+      <joint name="shoulder"/>
+      <inertial pos="0 0 0" mass="1" diaginertia="1 1 1"/>
+      <geom type="capsule" size=".05 .5"/>
+      <body name='lower' pos="0 0 1">
 	<joint name="elbow"/>
 	<inertial pos='0 0 0.2' mass='0.5' fullinertia='1 1 1 0 0 0' />
-  </body>
-</body>
+      </body>
+    </body>
   </worldbody>
 </mujoco>
 "#;
