@@ -226,7 +226,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     };
     includes
         .roots
-        .extend(d.files.sources.iter().map(|s| dir(s)));
+        .extend(d.files.sources.iter().map(&dir));
     let mut read: Vec<PathBuf> = std::iter::once(&source)
         .chain(&d.files.sources)
         .filter_map(|s| std::fs::canonicalize(s.path()).ok())
