@@ -224,9 +224,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             .parent()
             .map_or_else(PathBuf::new, Path::to_path_buf)
     };
-    includes
-        .roots
-        .extend(d.files.sources.iter().map(&dir));
+    includes.roots.extend(d.files.sources.iter().map(&dir));
     let mut read: Vec<PathBuf> = std::iter::once(&source)
         .chain(&d.files.sources)
         .filter_map(|s| std::fs::canonicalize(s.path()).ok())
