@@ -46,8 +46,25 @@ fn diagnostic_text(d: &Diagnostic) -> String {
 
 /// A path as the CI system matches it against the repository's files:
 /// without the `./` that searching `.` puts before each.
-fn repo_path(path: &str) -> &str {
-    path.strip_prefix("./").unwrap_or(path)
+/// A file a robot includes is named through the directories of the files
+/// that include it (`models/cart/../wheel/model.sdf`): each `DIR/..` is
+/// taken out, as the runner matches a path with none. NOTE: lexically (a
+/// symlinked DIR aside): the annotation names the repository's path.
+fn repo_path(path: &str) -> String {
+    let path = path.strip_prefix("./").unwrap_or(path);
+    if !path.contains("/../") {
+        return path.to_string();
+    }
+    let mut parts: Vec<&str> = Vec::new();
+    for part in path.split('/') {
+        match (part, parts.last()) {
+            ("..", Some(&last)) if last != ".." && !last.is_empty() => {
+                parts.pop();
+            }
+            _ => parts.push(part),
+        }
+    }
+    parts.join("/")
 }
 
 /// Where a diagnostic points: its file (the file checked when it has no
@@ -98,7 +115,7 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         data(s).replace(':', "%3A").replace(',', "%2C")
     }
     fn command(level: &str, path: &str, span: Option<Span>, title: &str, text: &str) -> String {
-        let mut props = format!("file={}", property(&visible(repo_path(path))));
+        let mut props = format!("file={}", property(&visible(&repo_path(path))));
         if let Some(s) = span {
             props.push_str(&format!(
                 ",line={},col={},endLine={},endColumn={}",
@@ -362,7 +379,7 @@ pub fn sarif(results: &[FileResult]) -> String {
             .expect("invariant: every result names one of RULES")
     }
     fn result(id: &str, level: &str, text: &str, path: &str, span: Option<Span>) -> Value {
-        let mut location = json!({ "artifactLocation": { "uri": uri(repo_path(path)) } });
+        let mut location = json!({ "artifactLocation": { "uri": uri(&repo_path(path)) } });
         if let Some(s) = span {
             location["region"] = json!({
                 "startLine": s.line,
@@ -477,6 +494,17 @@ fn uri(path: &str) -> String {
 mod tests {
     use super::*;
     use crate::analysis::check::{Status, Validity};
+
+    #[test]
+    fn a_path_through_an_including_files_directory_is_the_repositorys() {
+        assert_eq!(
+            repo_path("./models/cart/../wheel/m.sdf"),
+            "models/wheel/m.sdf"
+        );
+        assert_eq!(repo_path("a/b/../../c/../d.sdf"), "d.sdf");
+        assert_eq!(repo_path("../up/x.sdf"), "../up/x.sdf");
+        assert_eq!(repo_path("a/../../x.sdf"), "../x.sdf");
+    }
 
     /// A file whose body breaks the triangle inequality (the reader refuses
     /// such files, so this is built by hand): each format reports it on

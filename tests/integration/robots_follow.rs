@@ -230,9 +230,11 @@ fn ci_formats_point_at_the_included_file_where_the_bad_link_is() {
             ],
         ))
     };
+    // The runners match a repository's path: `DIR/..` taken out there.
+    let repo = "models/wheel/model.sdf";
     let github = run("github");
     assert!(
-        github.contains(&format!("::error file={file},line={line},col={column},")),
+        github.contains(&format!("::error file={repo},line={line},col={column},")),
         "{github}"
     );
     let junit = run("junit");
@@ -243,7 +245,7 @@ fn ci_formats_point_at_the_included_file_where_the_bad_link_is() {
     let sarif: Value = serde_json::from_str(&run("sarif")).unwrap();
     let result = &sarif["runs"][0]["results"][0];
     let location = &result["locations"][0]["physicalLocation"];
-    assert_eq!(location["artifactLocation"]["uri"], file, "{result}");
+    assert_eq!(location["artifactLocation"]["uri"], repo, "{result}");
     assert_eq!(location["region"]["startLine"], line, "{result}");
 }
 
@@ -652,4 +654,19 @@ fn report_still_reads_the_robot_check_now_follows() {
     for name in names(&checked(&robots("follow"), "world.sdf", &[])) {
         assert!(text.contains(&format!("\"{name}\"")), "{name}");
     }
+}
+
+#[test]
+fn check_writes_no_report_over_a_file_the_robot_includes() {
+    let dir = follow_copy("output-onto-include");
+    let cart = dir.join("models/cart/cart.sdf");
+    let before = std::fs::read_to_string(&cart).unwrap();
+    let o = run_in(&dir, &["check", "world.sdf", "-o", "models/cart/cart.sdf"]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("the report would replace it"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read_to_string(&cart).unwrap(), before);
 }
