@@ -156,7 +156,7 @@ impl Run<'_> {
         let stdin = if crate::io::is_toml(&path) {
             None
         } else {
-            match self.not_toml(&path, &f, found, stderr) {
+            match self.not_toml(&path, &f, found, stderr, read) {
                 ControlFlow::Break(r) => return r,
                 ControlFlow::Continue(stdin) => stdin,
             }
@@ -176,12 +176,13 @@ impl Run<'_> {
         f: &str,
         found: bool,
         stderr: &mut String,
+        read: &mut Vec<PathBuf>,
     ) -> ControlFlow<Result<FileResult, Passed>, Option<Result<Source, Diagnostic>>> {
         let source = crate::io::read_source_at(path);
         let format = Dialect::of_path(path)
             .or_else(|| source.as_ref().ok().and_then(|s| Dialect::of_text(&s.text)));
         if let Some(format) = format {
-            return ControlFlow::Break(Ok(self.robot(f, source, format, stderr)));
+            return ControlFlow::Break(Ok(self.robot(f, source, format, stderr, read)));
         }
         if found {
             return ControlFlow::Break(Err(NOT_A_ROBOT));
@@ -196,6 +197,7 @@ impl Run<'_> {
         source: Result<Source, Diagnostic>,
         format: Dialect,
         stderr: &mut String,
+        read: &mut Vec<PathBuf>,
     ) -> FileResult {
         if self.bless {
             stderr.push_str(&format!(
@@ -204,7 +206,20 @@ impl Run<'_> {
             ));
         }
         let r = source.and_then(|s| {
-            let d = crate::robot::read::read(&s, format)?;
+            // Every file the robot includes is read, its links judged
+            // (`--include-root` and `--package` reach further).
+            let r = crate::robot::read::Resolve {
+                packages: self.settings.includes.packages.clone(),
+                roots: self.settings.includes.roots.clone(),
+            };
+            let d = crate::robot::read::read_in(&s, format, &r)?;
+            // The files it includes are inputs too: `-o` writes none.
+            read.extend(
+                d.files
+                    .sources
+                    .iter()
+                    .filter_map(|f| std::fs::canonicalize(f.path()).ok()),
+            );
             Ok(crate::robot::check::check(&s, &d, self.engines))
         });
         match r {

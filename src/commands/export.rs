@@ -108,11 +108,15 @@ pub fn run(o: &Options, _terminal: &super::Terminal) -> Result<Outcome, Diagnost
     read.extend(std::fs::canonicalize(path).ok());
     let format = dialect(o, path, &source)?;
     let e = export_of(&loaded.summary, o.principal);
-    let new = update(&source.text, format, link, &e).map_err(|err| match err.at() {
-        Some(at) => source.error(at..at + 1, err.to_string()),
-        None => Diagnostic::file(&source.name, err.to_string()),
-    })?;
-    let (stdout, stderr) = written(file, &source, &new, link, o.dry_run, stderr)?;
+    // The link may be written in a file the robot includes.
+    let r = crate::robot::read::Resolve {
+        packages: Vec::new(),
+        roots: o.settings.includes.roots.clone(),
+    };
+    let links = [(link.clone(), e)];
+    let (stdout, stderr, files) =
+        update_robot(file, &source, format, &links, &r, o.dry_run, stderr)?;
+    read.extend(files);
     Ok(Outcome {
         stderr,
         ..Outcome::ok(stdout, read)
@@ -192,4 +196,167 @@ pub(super) fn written(
         stderr.push_str(&format!("{name}: link \"{}\" updated\n", visible(link)));
     }
     Ok((String::new(), stderr))
+}
+
+/// `--update ROBOT` of several links (`links`: name and inertial), each
+/// written in the file where it is written (issue 34, item 3): the robot
+/// file `target` (opened as `file`, None under `--dry-run`), or a file it
+/// includes, found by the reader (`robot::Site`), includes resolved by
+/// `r`. Returns standard output (`--dry-run`: one diff per file changed,
+/// each with its path), standard error, and the files read.
+///
+/// A file the robot includes is written only inside the robot file's
+/// directory or an `--include-root` (`r.roots`): a `--package` or
+/// `model://` directory elsewhere is another project's, refused with the
+/// link's place. One element that several links share (a file included
+/// twice) takes one inertial: different ones are refused.
+pub(super) fn update_robot(
+    file: Option<crate::io::Rewrite>,
+    target: &Source,
+    format: Dialect,
+    links: &[(String, Export)],
+    r: &crate::robot::read::Resolve,
+    dry_run: bool,
+    mut stderr: String,
+) -> Result<(String, String, Vec<PathBuf>), Diagnostic> {
+    let error = |err: crate::output::inertial::UpdateError, source: &Source| match err.at() {
+        Some(at) => source.error(at..at + 1, err.to_string()),
+        None => Diagnostic::file(&source.name, err.to_string()),
+    };
+    let d = match crate::robot::read::read_in(target, format, r) {
+        Ok(d) if !d.files.sources.is_empty() => d,
+        // NOTE: a file that includes none is written as before, by name
+        // (a file the reader refuses too: the updater says its own word).
+        Err(e) if target.text.contains("<include") => return Err(e),
+        _ => {
+            let mut new = target.text.clone();
+            for (link, e) in links {
+                new = update(&new, format, link, e).map_err(|err| error(err, target))?;
+            }
+            let names: Vec<&str> = links.iter().map(|(n, _)| n.as_str()).collect();
+            let (out, err) = written(file, target, &new, &names.join("\", \""), dry_run, stderr)?;
+            return Ok((out, err, Vec::new()));
+        }
+    };
+    // Per file, its links' elements: (start, name, inertial).
+    let mut per: std::collections::BTreeMap<usize, Vec<(usize, &str, &Export)>> =
+        std::collections::BTreeMap::new();
+    for (name, e) in links {
+        let Some(l) = d.links.iter().find(|l| l.name == *name) else {
+            let near = crate::units::suggest(name, d.links.iter().map(|l| l.name.as_str()))
+                .map(|s| format!("; did you mean \"{}\"?", visible(s)))
+                .unwrap_or_default();
+            return Err(Diagnostic::file(
+                &target.name,
+                format!(
+                    "no link named \"{}\" in the robot (its files included){near}",
+                    visible(name)
+                ),
+            ));
+        };
+        if l.site.elsewhere {
+            // NOTE: an MJCF `<include>` inside the body brings its
+            // `<inertial>` from another file; writing one into the body
+            // would give it two (MuJoCo's error).
+            let source = d.files.source(target, l.site.file);
+            let start = l.site.element.start;
+            let end = source.text[start..]
+                .find('>')
+                .map_or(start + 1, |e| start + e + 1);
+            return Err(d.files.located(source.error(
+                start..end,
+                format!(
+                    "`--update` does not write body \"{}\": its `<inertial>` is brought in by an `<include>` inside it, from another file",
+                    visible(name)
+                ),
+            ))
+            .help("write the inertial in the body itself, or update the included file's `<inertial>` by hand"));
+        }
+        per.entry(l.site.file)
+            .or_default()
+            .push((l.site.element.start, name, e));
+    }
+    let top = crate::robot::read::canonical_dir(target);
+    let roots: Vec<PathBuf> = std::iter::once(top)
+        .chain(r.roots.iter().filter_map(|p| std::fs::canonicalize(p).ok()))
+        .collect();
+    let mut changed = Vec::new();
+    for (&k, entries) in &mut per {
+        let source = d.files.source(target, k);
+        let at = |start: usize, message: String| {
+            let end = source.text[start..]
+                .find('>')
+                .map_or(start + 1, |e| start + e + 1);
+            d.files.located(source.error(start..end, message))
+        };
+        entries.sort_by_key(|&(start, _, _)| std::cmp::Reverse(start));
+        for w in entries.windows(2) {
+            if w[0].0 == w[1].0 && w[0].2 != w[1].2 {
+                return Err(at(
+                    w[0].0,
+                    format!(
+                        "links \"{}\" and \"{}\" are one element of `{}` (a file included twice): it cannot hold two different inertials",
+                        visible(w[1].1),
+                        visible(w[0].1),
+                        visible(&source.name)
+                    ),
+                )
+                .help("update one of them (`--link NAME`), or give each copy a file of its own"));
+            }
+        }
+        entries.dedup_by_key(|&mut (start, _, _)| start);
+        if k > 0 {
+            let canonical = std::fs::canonicalize(source.path()).unwrap_or_default();
+            if !roots.iter().any(|root| canonical.starts_with(root)) {
+                let (start, name, _) = entries[0];
+                return Err(at(
+                    start,
+                    format!(
+                        "`--update` does not write link \"{}\" into `{}`: the included file lies outside the robot file's directory and the `--include-root`s",
+                        visible(name),
+                        visible(&source.name)
+                    ),
+                )
+                .help("a `--package` or `model://` directory is written only when an `--include-root` names it (or one above it)"));
+            }
+        }
+        let mut new = source.text.clone();
+        for &(start, name, e) in entries.iter() {
+            new = crate::output::inertial::update_at(&new, format, start, name, e)
+                .map_err(|err| error(err, source))?;
+        }
+        let names: Vec<&str> = entries.iter().rev().map(|&(_, n, _)| n).collect();
+        changed.push((k, new, names.join("\", \"")));
+    }
+    let mut file = file;
+    let mut stdout = String::new();
+    let mut read = Vec::new();
+    for (k, new, names) in changed {
+        let source = d.files.source(target, k);
+        let (rewrite, source) = match (k, dry_run) {
+            (0, _) => (file.take(), source.clone()),
+            (_, true) => (None, source.clone()),
+            (_, false) => {
+                let (rewrite, fresh) = crate::io::Rewrite::open(&source.path().to_string_lossy())?;
+                if fresh.text != source.text {
+                    return Err(Diagnostic::file(
+                        &source.name,
+                        "the file changed while it was read: not written",
+                    ));
+                }
+                (
+                    Some(rewrite),
+                    Source {
+                        name: source.name.clone(),
+                        ..fresh
+                    },
+                )
+            }
+        };
+        read.extend(std::fs::canonicalize(source.path()).ok());
+        let (out, err) = written(rewrite, &source, &new, &names, dry_run, stderr)?;
+        stdout.push_str(&out);
+        stderr = err;
+    }
+    Ok((stdout, stderr, read))
 }

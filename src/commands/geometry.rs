@@ -15,7 +15,7 @@ use super::export::FromGeometry;
 use crate::analysis::{self, Settings};
 use crate::diag::{Diagnostic, Source};
 use crate::numeric::{DD, Real};
-use crate::output::inertial::{inertial_element, update};
+use crate::output::inertial::inertial_element;
 use crate::robot::Dialect;
 use crate::robot::read::{Amount, Geometry, MeshMass, Solid};
 use std::fmt::Write as _;
@@ -162,7 +162,13 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         })?;
     let made = made_of(g, format == Dialect::Mjcf)?;
     let packages = settings.includes.packages.clone();
-    let d = crate::robot::read::read(&source, format)?;
+    // Includes followed (SDFormat worlds and models, MJCF `<include>`s):
+    // each link's geometry is read in the file it is written in.
+    let resolve = crate::robot::read::Resolve {
+        packages: packages.clone(),
+        roots: settings.includes.roots.clone(),
+    };
+    let d = crate::robot::read::read_in(&source, format, &resolve)?;
     let kind = if g.visual { "visual" } else { "collision" };
     let chosen: Vec<usize> = match &g.link {
         Some(name) => match d.links.iter().position(|l| l.name == *name) {
@@ -184,7 +190,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     // missing mesh, a bad `scale`) cannot stop `--link NAME`.
     let mut need = vec![false; d.links.len()];
     chosen.iter().for_each(|&i| need[i] = true);
-    let geos = crate::robot::read::geometry(&source, &d, g.visual, Some(&need))?;
+    let geos = crate::robot::read::geometry(&source, &d, g.visual, Some(&need), &resolve)?;
     let base = source
         .path()
         .parent()
@@ -198,26 +204,42 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     includes
         .roots
         .extend(packages.iter().map(|(_, d)| d.clone()));
-    let mut read: Vec<PathBuf> = std::fs::canonicalize(source.path())
-        .ok()
-        .into_iter()
+    // A file the robot includes was confined when it was read: the meshes
+    // it names are relative to its directory, and may be read from it.
+    let dir = |s: &Source| {
+        s.path()
+            .parent()
+            .map_or_else(PathBuf::new, Path::to_path_buf)
+    };
+    includes.roots.extend(d.files.sources.iter().map(&dir));
+    let mut read: Vec<PathBuf> = std::iter::once(&source)
+        .chain(&d.files.sources)
+        .filter_map(|s| std::fs::canonicalize(s.path()).ok())
         .collect();
     let (mut stdout, mut stderr) = (String::new(), String::new());
     let mut computed = Vec::new();
     for i in chosen {
         let name = &d.links[i].name;
+        let site = &d.links[i].site;
+        let own = d.files.source(&source, site.file);
         if geos[i].is_empty() {
             let _ = writeln!(
                 stderr,
                 "note: {}: link \"{}\" has no <{kind}> geometry: it keeps its inertial",
-                source.name,
+                own.name,
                 crate::diag::shorten(name)
             );
             continue;
         }
+        let base = if site.file == 0 {
+            base.clone()
+        } else {
+            dir(own)
+        };
         let (e, files) = link_inertial(
-            &geos[i], name, &source, &made, &base, &packages, &includes, settings,
-        )?;
+            &geos[i], name, own, &made, &base, &packages, &includes, settings,
+        )
+        .map_err(|e| d.files.located(e))?;
         read.extend(files);
         computed.push((name.clone(), e));
     }
@@ -245,22 +267,14 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
             let tformat = Dialect::of_path(path)
                 .or_else(|| Dialect::of_text(&target.text))
                 .ok_or_else(|| Diagnostic::file(&target.name, "not a robot description: its root element is not <robot> (URDF), <sdf> or <mujoco> (MJCF)"))?;
-            let mut new = target.text.clone();
-            for (link, e) in &computed {
-                new = update(&new, tformat, link, e).map_err(|err| match err.at() {
-                    Some(at) => Source::error(&target, at..at + 1, err.to_string()),
-                    None => Diagnostic::file(&target.name, err.to_string()),
-                })?;
-            }
-            let links: Vec<&str> = computed.iter().map(|(n, _)| n.as_str()).collect();
-            let (out, err) = super::export::written(
-                file,
-                &target,
-                &new,
-                &links.join("\", \""),
-                g.dry_run,
-                stderr,
+            let r = crate::robot::read::Resolve {
+                packages: packages.clone(),
+                roots: settings.includes.roots.clone(),
+            };
+            let (out, err, files) = super::export::update_robot(
+                file, &target, tformat, &computed, &r, g.dry_run, stderr,
             )?;
+            read.extend(files);
             Ok(Outcome {
                 stderr: err,
                 ..Outcome::ok(out, read)

@@ -46,8 +46,25 @@ fn diagnostic_text(d: &Diagnostic) -> String {
 
 /// A path as the CI system matches it against the repository's files:
 /// without the `./` that searching `.` puts before each.
-fn repo_path(path: &str) -> &str {
-    path.strip_prefix("./").unwrap_or(path)
+/// A file a robot includes is named through the directories of the files
+/// that include it (`models/cart/../wheel/model.sdf`): each `DIR/..` is
+/// taken out, as the runner matches a path with none. NOTE: lexically (a
+/// symlinked DIR aside): the annotation names the repository's path.
+fn repo_path(path: &str) -> String {
+    let path = path.strip_prefix("./").unwrap_or(path);
+    if !path.contains("/../") {
+        return path.to_string();
+    }
+    let mut parts: Vec<&str> = Vec::new();
+    for part in path.split('/') {
+        match (part, parts.last()) {
+            ("..", Some(&last)) if last != ".." && !last.is_empty() => {
+                parts.pop();
+            }
+            _ => parts.push(part),
+        }
+    }
+    parts.join("/")
 }
 
 /// Where a diagnostic points: its file (the file checked when it has no
@@ -71,7 +88,16 @@ fn link_failures(l: &crate::robot::check::LinkResult) -> Option<(String, String)
         .iter()
         .map(|e| visible(&robot::failure(l, e)))
         .collect();
-    Some((names.join(", "), text.join("\n")))
+    Some((names.join(", "), text.join("\n") + &included(l)))
+}
+
+/// A link of an included file: where its file is included from, as a
+/// diagnostic's notes say it (`diagnostic_text`); empty in the main file.
+fn included(l: &crate::robot::check::LinkResult) -> String {
+    l.included_from
+        .iter()
+        .map(|site| format!("\nnote: included from {}", visible(site)))
+        .collect()
 }
 
 /// GitHub Actions workflow commands (`::error …::message`), one per failure
@@ -89,7 +115,7 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         data(s).replace(':', "%3A").replace(',', "%2C")
     }
     fn command(level: &str, path: &str, span: Option<Span>, title: &str, text: &str) -> String {
-        let mut props = format!("file={}", property(&visible(repo_path(path))));
+        let mut props = format!("file={}", property(&visible(&repo_path(path))));
         if let Some(s) = span {
             props.push_str(&format!(
                 ",line={},col={},endLine={},endColumn={}",
@@ -156,12 +182,24 @@ pub fn github(results: &[FileResult], skipped: usize) -> String {
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             if let Some((engines, text)) = link_failures(l) {
                 let title = format!("link {} under {engines}", visible(&l.name));
-                out.push_str(&command("error", &r.path, Some(l.span), &title, &text));
+                out.push_str(&command(
+                    "error",
+                    l.path(&r.path),
+                    Some(l.span),
+                    &title,
+                    &text,
+                ));
             }
             for w in &l.warnings {
                 let title = format!("link {}", visible(&l.name));
-                let text = visible(&robot::warning(l, w));
-                out.push_str(&command("warning", &r.path, Some(l.span), &title, &text));
+                let text = visible(&robot::warning(l, w)) + &included(l);
+                out.push_str(&command(
+                    "warning",
+                    l.path(&r.path),
+                    Some(l.span),
+                    &title,
+                    &text,
+                ));
             }
         }
     }
@@ -214,7 +252,13 @@ pub fn junit(results: &[FileResult]) -> String {
                         false,
                         "inertial",
                         &text,
-                        &format!("{path}:{}:{}: error: {text}", l.span.line, l.span.column),
+                        &format!(
+                            "{}:{}:{}: error: {text}{}",
+                            visible(l.path(&r.path)),
+                            l.span.line,
+                            l.span.column,
+                            included(l)
+                        ),
                     )
                 };
                 let name = format!("link {}: {}", visible(&l.name), e.verdict.engine.name());
@@ -263,8 +307,11 @@ pub fn junit(results: &[FileResult]) -> String {
             for w in &l.warnings {
                 let text = visible(&robot::warning(l, w));
                 warnings.push_str(&format!(
-                    "warning: {path}:{}:{}: {text}\n",
-                    l.span.line, l.span.column
+                    "warning: {}:{}:{}: {text}{}\n",
+                    visible(l.path(&r.path)),
+                    l.span.line,
+                    l.span.column,
+                    included(l)
                 ));
             }
         }
@@ -332,7 +379,7 @@ pub fn sarif(results: &[FileResult]) -> String {
             .expect("invariant: every result names one of RULES")
     }
     fn result(id: &str, level: &str, text: &str, path: &str, span: Option<Span>) -> Value {
-        let mut location = json!({ "artifactLocation": { "uri": uri(repo_path(path)) } });
+        let mut location = json!({ "artifactLocation": { "uri": uri(&repo_path(path)) } });
         if let Some(s) = span {
             location["region"] = json!({
                 "startLine": s.line,
@@ -385,15 +432,21 @@ pub fn sarif(results: &[FileResult]) -> String {
         }
         for l in r.robot.iter().flat_map(|robot| &robot.links) {
             if let Some((_, text)) = link_failures(l) {
-                out.push(result("inertial", "error", &text, &r.path, Some(l.span)));
+                out.push(result(
+                    "inertial",
+                    "error",
+                    &text,
+                    l.path(&r.path),
+                    Some(l.span),
+                ));
             }
             for w in &l.warnings {
-                let text = visible(&robot::warning(l, w));
+                let text = visible(&robot::warning(l, w)) + &included(l);
                 out.push(result(
                     "inertial-warning",
                     "warning",
                     &text,
-                    &r.path,
+                    l.path(&r.path),
                     Some(l.span),
                 ));
             }
@@ -441,6 +494,17 @@ fn uri(path: &str) -> String {
 mod tests {
     use super::*;
     use crate::analysis::check::{Status, Validity};
+
+    #[test]
+    fn a_path_through_an_including_files_directory_is_the_repositorys() {
+        assert_eq!(
+            repo_path("./models/cart/../wheel/m.sdf"),
+            "models/wheel/m.sdf"
+        );
+        assert_eq!(repo_path("a/b/../../c/../d.sdf"), "d.sdf");
+        assert_eq!(repo_path("../up/x.sdf"), "../up/x.sdf");
+        assert_eq!(repo_path("a/../../x.sdf"), "../x.sdf");
+    }
 
     /// A file whose body breaks the triangle inequality (the reader refuses
     /// such files, so this is built by hand): each format reports it on

@@ -109,7 +109,11 @@ pub fn table(out: &mut String, path: &str, r: &RobotResult, colour: bool, width:
         .map(|l| {
             let mut row = vec![
                 super::format::name(&l.name),
-                format!("{}:{}", l.span.line, l.span.column),
+                match &l.file {
+                    // A link of an included file: its file too.
+                    Some(f) => format!("{}:{}:{}", visible(f), l.span.line, l.span.column),
+                    None => format!("{}:{}", l.span.line, l.span.column),
+                },
                 if l.moving { "yes" } else { "no" }.to_string(),
             ];
             match &l.inertial {
@@ -134,16 +138,26 @@ pub fn table(out: &mut String, path: &str, r: &RobotResult, colour: bool, width:
         write_rows(out, &header, &rows, &right, Fit::new(width, 1));
     }
     for l in &r.links {
-        let at = format!("{path}:{}:{}", l.span.line, l.span.column);
+        let at = match &l.file {
+            Some(f) => format!("{}:{}:{}", visible(f), l.span.line, l.span.column),
+            None => format!("{path}:{}:{}", l.span.line, l.span.column),
+        };
+        // Where an included file is included from, as a diagnostic's
+        // notes say it.
+        let from: String = l
+            .included_from
+            .iter()
+            .map(|site| format!("   = note: included from {}\n", visible(site)))
+            .collect();
         for x in l.engines.iter().filter(|x| !x.verdict.valid) {
             out.push_str(&format!(
-                "{at}: {e}error{e:#}: {}\n",
+                "{at}: {e}error{e:#}: {}\n{from}",
                 visible(&failure(l, x))
             ));
         }
         for text in &l.warnings {
             out.push_str(&format!(
-                "{at}: {w}warning{w:#}: {}\n",
+                "{at}: {w}warning{w:#}: {}\n{from}",
                 visible(&warning(l, text))
             ));
         }

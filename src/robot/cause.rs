@@ -505,6 +505,7 @@ mod tests {
             }),
             moving: false,
             parent: None,
+            site: Default::default(),
         }
     }
 

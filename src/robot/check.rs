@@ -37,7 +37,17 @@ pub struct Values {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LinkResult {
     pub name: String,
-    /// The `<inertial>` element (the link's, when it has none).
+    /// The file the link is written in when the main file includes it
+    /// (as the include names it; None: the main file, whose path the
+    /// file's result gives).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub file: Option<String>,
+    /// The `<include>`s that bring its file in, innermost first:
+    /// `FILE:LINE:COL` each.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub included_from: Vec<String>,
+    /// The `<inertial>` element (the link's, when it has none), in the
+    /// file it is written in.
     #[serde(flatten)]
     pub span: Span,
     pub moving: bool,
@@ -53,6 +63,11 @@ impl LinkResult {
     /// Whether every engine accepts it.
     pub fn valid(&self) -> bool {
         self.engines.iter().all(|e| e.verdict.valid)
+    }
+
+    /// The path of the file it is written in: its own, else `main`'s.
+    pub fn path<'a>(&'a self, main: &'a str) -> &'a str {
+        self.file.as_deref().unwrap_or(main)
     }
 }
 
@@ -79,8 +94,19 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
     let mut names = std::collections::HashSet::with_capacity(d.links.len());
     let mut tree = Tree::of(d);
     let mirrors = cause::Mirrors::of(&d.links);
-    let mut spans = Spans::new(&source.text);
+    // One `Spans` per file a link is written in, made when first needed.
+    let mut spans: Vec<Option<Spans>> = vec![None; d.files.sources.len() + 1];
     for (i, link) in d.links.iter().enumerate() {
+        let site = &link.site;
+        let text = &d.files.source(source, site.file).text;
+        let spans = spans[site.file].get_or_insert_with(|| Spans::new(text));
+        let (file, included_from) = match site.file {
+            0 => (None, Vec::new()),
+            _ => (
+                Some(d.files.source(source, site.file).name.clone()),
+                site.from.clone(),
+            ),
+        };
         steps::step(1 + engines.len());
         let mut warnings = Vec::new();
         if !names.insert(link.name.as_str()) {
@@ -129,7 +155,9 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             }
             links.push(LinkResult {
                 name: link.name.clone(),
-                span: spans.span(super::read::start_tag(&source.text, link.range.clone())),
+                file,
+                included_from,
+                span: spans.span(super::read::start_tag(text, site.element.clone())),
                 moving: link.moving,
                 inertial: None,
                 engines: results,
@@ -181,7 +209,7 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
         if !mirror_cause {
             warnings.extend(cause::mirror_warning(d, &mirrors, i));
         }
-        if let (Some(v), Some(element)) = (&values, source.text.get(link.range.clone())) {
+        if let (Some(v), Some(element)) = (&values, text.get(site.element.clone())) {
             let judged = super::plausible::Link {
                 element,
                 mass: v.mass,
@@ -199,9 +227,14 @@ pub fn check(source: &Source, d: &Description, engines: &[Engine]) -> RobotResul
             };
             warnings.extend(super::plausible::gyration(d.format, &judged));
         }
+        // NOTE: an inertial MuJoCo computes from the geoms (`weigh`) is
+        // written nowhere: the link's element is its place.
+        let at = site.inertial.clone().unwrap_or(site.element.clone());
         links.push(LinkResult {
             name: link.name.clone(),
-            span: spans.span(super::read::start_tag(&source.text, inertial.range.clone())),
+            file,
+            included_from,
+            span: spans.span(super::read::start_tag(text, at)),
             moving: link.moving,
             inertial: values,
             engines: results,
@@ -279,6 +312,7 @@ impl Tree {
 /// to the distance from the one before (links come in document order)
 /// rather than from the start of the text: `Source::span` counts the lines
 /// before each range, which for 10⁵ links made `check` quadratic.
+#[derive(Clone)]
 struct Spans<'t> {
     text: &'t str,
     /// The byte offset each line starts at.

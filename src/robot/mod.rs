@@ -234,6 +234,90 @@ pub struct Link {
     /// the parent of the joint whose child it is; MJCF, the enclosing
     /// body. None for a root (and for SDFormat, whose tree is not read).
     pub parent: Option<usize>,
+    /// Where it is written: its file and its bytes there. `range` (and
+    /// its inertial's) stand in the main file, at the outermost
+    /// `<include>` for a link of an included file; this is the link's own
+    /// place, which `check`'s verdicts and `export --update` use.
+    pub site: Site,
+}
+
+/// Where a link is written (`Link::site`).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Site {
+    /// 0: the main file; k: `Description::files`' k-th included file.
+    pub file: usize,
+    /// The element's bytes in that file, start tag to end tag.
+    pub element: Range<usize>,
+    /// Its `<inertial>` element's bytes there (None: none written there).
+    pub inertial: Option<Range<usize>>,
+    /// Its `<inertial>` is written in another file: MJCF, brought in by an
+    /// `<include>` inside the body (`--update` does not write such a body).
+    pub elsewhere: bool,
+    /// The `<include>`s that bring it in, innermost first: `FILE:LINE:COL`
+    /// of each (empty in the main file). An SDFormat file included twice
+    /// has links brought in by each include: this is this link's chain.
+    pub from: Vec<String>,
+}
+
+impl Site {
+    /// A link of the main file: its element's and inertial's bytes.
+    pub fn main(element: Range<usize>, inertial: Option<Range<usize>>) -> Site {
+        Site {
+            file: 0,
+            element,
+            inertial,
+            elsewhere: false,
+            from: Vec::new(),
+        }
+    }
+}
+
+/// The files a description's main file includes (SDFormat and MJCF
+/// `<include>`s, read by `read::read_in`), kept for the messages that
+/// point into them and for the writers that write into them.
+#[derive(Clone, Debug, Default)]
+pub struct Included {
+    /// Index k − 1 holds file k (`Site::file`).
+    pub sources: Vec<crate::diag::Source>,
+    /// Per file, where it was first included: `FILE:LINE:COL`.
+    pub from: Vec<String>,
+}
+
+impl PartialEq for Included {
+    fn eq(&self, other: &Self) -> bool {
+        self.from == other.from
+            && self.sources.len() == other.sources.len()
+            && self
+                .sources
+                .iter()
+                .zip(&other.sources)
+                .all(|(a, b)| a.name == b.name && a.text == b.text)
+    }
+}
+
+impl Included {
+    /// The source of file `file` (`Site::file`), `main` for 0.
+    pub fn source<'a>(
+        &'a self,
+        main: &'a crate::diag::Source,
+        file: usize,
+    ) -> &'a crate::diag::Source {
+        match file {
+            0 => main,
+            k => &self.sources[k - 1],
+        }
+    }
+
+    /// `d` with where its file was included from, up to the main file
+    /// (`read::located`, the one rule for every robot reader).
+    pub fn located(&self, d: crate::diag::Diagnostic) -> crate::diag::Diagnostic {
+        read::located(&self.sources, &self.from, d)
+    }
+
+    /// The chain of includes that brings file `file` in, innermost first.
+    pub fn chain(&self, file: usize) -> Vec<String> {
+        read::chain(&self.sources, &self.from, file)
+    }
 }
 
 /// The MJCF `<compiler>` settings (or URDF `<mujoco><compiler>`) that change
@@ -271,6 +355,8 @@ pub struct Description {
     pub name: Option<String>,
     pub links: Vec<Link>,
     pub compiler: MujocoCompiler,
+    /// The files the main one includes (empty when it includes none).
+    pub files: Included,
 }
 
 #[cfg(test)]

@@ -61,6 +61,7 @@ mod report_keys;
 mod robot_body;
 mod robots;
 mod robots_export;
+mod robots_follow;
 mod robots_hostile;
 mod robots_mjcf;
 mod robots_mjcfinc;

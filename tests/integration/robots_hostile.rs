@@ -1831,3 +1831,134 @@ fn a_valid_mjcf_model_split_into_included_files_anywhere_reports_as_the_one_file
     let n = split_cases.get();
     assert!(n >= 8, "{n} of 16 cases split the model");
 }
+
+// ---------------------------------------------------------------------------
+// Include trees checked link by link (issue 34)
+
+/// One generated SDFormat file of an include tree: its links (name, mass,
+/// whether a box collision) and the files it includes (by index, each
+/// under a name of its own).
+#[derive(Clone, Debug)]
+struct TreeFile {
+    links: Vec<(String, &'static str, bool)>,
+    includes: Vec<usize>,
+}
+
+fn tree_file() -> impl Strategy<Value = TreeFile> {
+    (
+        prop::collection::vec(
+            (
+                prop::sample::select(vec!["a", "b", "c", "a"]),
+                prop::sample::select(NICE.to_vec()),
+                any::<bool>(),
+            ),
+            0..3,
+        ),
+        prop::collection::vec(0..4usize, 0..3),
+    )
+        .prop_map(|(links, includes)| TreeFile {
+            links: links
+                .into_iter()
+                .map(|(n, m, g)| (n.to_string(), m, g))
+                .collect(),
+            includes,
+        })
+}
+
+/// The text of file `k` of `files`: a model `mK` (the main file, a world).
+fn tree_text(files: &[TreeFile], k: usize) -> String {
+    let f = &files[k];
+    let mut body = String::new();
+    for (name, mass, geometry) in &f.links {
+        body.push_str(&format!(
+            "<link name=\"{name}\"><inertial><mass>{mass}</mass><inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz></inertia></inertial>{}</link>\n",
+            if *geometry { "<collision name=\"c\"><geometry><box><size>1 2 3</size></box></geometry></collision>" } else { "" }
+        ));
+    }
+    for (i, &t) in f.includes.iter().enumerate() {
+        body.push_str(&format!(
+            "<include><uri>f{t}.sdf</uri><name>i{i}</name></include>\n"
+        ));
+    }
+    let (open, close) = if k == 0 {
+        ("<world name=\"w\">".to_string(), "</world>")
+    } else {
+        (format!("<model name=\"m{k}\">"), "</model>")
+    };
+    format!("<?xml version=\"1.0\"?>\n<sdf version=\"1.9\">\n{open}\n{body}{close}\n</sdf>\n")
+}
+
+/// `check` of a generated include tree exits 0, 1 or 2 without a panic;
+/// when it judges the robot, each link is placed in a file of the tree at
+/// a line that file has, and `export --from-geometry --update --dry-run`
+/// either refuses it or shows diffs of files of the tree only.
+fn include_tree_holds(dir: &Path, files: &[TreeFile]) -> Result<bool, String> {
+    for k in 0..files.len() {
+        std::fs::write(dir.join(format!("f{k}.sdf")), tree_text(files, k)).unwrap();
+    }
+    let main = dir.join("f0.sdf");
+    let main = main.to_str().unwrap();
+    let out = crate::common::massprop(&["check", main, "--format", "json"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let code = out.status.code();
+    if !matches!(code, Some(0..=2)) {
+        return Err(format!(
+            "check exited {code:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        ));
+    }
+    let v: Value = serde_json::from_str(&stdout).map_err(|e| format!("{e}: {stdout}"))?;
+    let file = &v["files"][0];
+    let Some(links) = file["links"].as_array() else {
+        return Ok(false);
+    };
+    for l in links {
+        let path = l["file"].as_str().unwrap_or(main);
+        let text = std::fs::read_to_string(path).map_err(|e| format!("{path}: {e}: {l}"))?;
+        let line = l["line"].as_u64().unwrap() as usize;
+        if line == 0 || line > text.lines().count() {
+            return Err(format!("line {line} is not in {path}: {l}"));
+        }
+        if !text.lines().nth(line - 1).unwrap().contains("<inertial>") {
+            return Err(format!("{path}:{line} holds no `<inertial>`: {l}"));
+        }
+    }
+    let out = crate::common::massprop(&[
+        "export",
+        main,
+        "--from-geometry",
+        "collision",
+        "--density",
+        "1000",
+        "--update",
+        main,
+        "--dry-run",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    match out.status.code() {
+        Some(0) => {
+            for header in text.lines().filter(|l| l.starts_with("--- a/")) {
+                let path = &header["--- a/".len()..];
+                if !Path::new(path).starts_with(dir) {
+                    return Err(format!("a diff of a file outside the tree: {header}"));
+                }
+            }
+        }
+        Some(2) => {}
+        other => return Err(format!("export exited {other:?}")),
+    }
+    Ok(true)
+}
+
+#[test]
+fn generated_include_trees_are_checked_link_by_link_in_their_own_files() {
+    let dir = crate::common::scratch("robots_hostile", "include-trees");
+    let judged = property(
+        "SDFormat include trees checked",
+        GENERATED / 3,
+        prop::collection::vec(tree_file(), 1..5),
+        |files| include_tree_holds(&dir, files),
+    );
+    // Most trees are robots (the rest a cycle or a file not there).
+    assert!(judged >= GENERATED / 10, "only {judged} trees judged");
+}

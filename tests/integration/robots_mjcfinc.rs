@@ -211,15 +211,13 @@ fn an_error_inside_an_included_file_names_that_file_and_where_it_was_included() 
 }
 
 #[test]
-fn check_still_refuses_an_include_and_says_report_follows_it() {
+fn check_follows_an_include_as_report_does() {
+    // Issue 34: `check` judges the included file's bodies too
+    // (tests/integration/robots_follow.rs has the rest).
     let out = massprop(&["check", robots("scene.xml").to_str().unwrap()]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(
-        stderr.contains("scene.xml:3:18: error: `<include>` of \"robot.xml\" is not followed")
-            && stderr.contains("`report` and `diff` follow includes"),
-        "{stderr}"
-    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{stdout}");
+    assert!(stdout.contains("scene.xml: mjcf file, 4 links"), "{stdout}");
 }
 
 // Includes anywhere (issue 34, item 1): MuJoCo puts the children of the

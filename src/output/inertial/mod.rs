@@ -11,7 +11,7 @@ mod error;
 mod update;
 
 pub use error::UpdateError;
-pub use update::update;
+pub use update::{update, update_at};
 
 use crate::output::format::push_shortest;
 use crate::robot::{Dialect, Tensor};

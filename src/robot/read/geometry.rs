@@ -69,73 +69,96 @@ pub enum Amount {
 /// Per link of `d` (in its order), its geometries of the kind asked for
 /// (`visual`, else collision), read only for the links `need` marks (all
 /// where None): another link's geometry is not read, so what it says
-/// cannot stop the export of the link asked for (`--link`).
+/// cannot stop the export of the link asked for (`--link`). Each link's
+/// geometry is read where the link is written (`Link::site`: the file
+/// `source` includes it from, if so), and its ranges are in that file; an
+/// MJCF file's includes are followed, resolved by `r`.
 pub fn geometry(
     source: &Source,
     d: &Description,
     visual: bool,
     need: Option<&[bool]>,
+    r: &super::Resolve,
 ) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
-    let doc = super::parse(source)?;
-    let xml = Xml { source };
-    let root = doc.root_element();
-    let kind = if visual { "visual" } else { "collision" };
-    let links: Vec<Node> = match d.format {
-        Dialect::Urdf => children(root, "link").collect(),
-        Dialect::Sdf => {
-            let models: Vec<Node> = children(root, "model").collect();
-            match models.as_slice() {
-                [one]
-                    if !one
-                        .children()
-                        .any(|c| matches!(qname(c), "model" | "include")) =>
-                {
-                    children(*one, "link").collect()
-                }
-                _ => {
-                    return Err(xml.error(
-                        xml.tag(root),
-                        "inertials from geometry read one `<model>` of links, without worlds, nested models or includes",
-                    ));
-                }
-            }
+    if d.format == Dialect::Mjcf {
+        let doc = super::parse(source)?;
+        let root = doc.root_element();
+        if !root.descendants().any(|n| qname(n) == "include") {
+            return super::geoms_of_mjcf(&Xml { source }, root, d, need);
         }
-        Dialect::Mjcf => return super::geoms_of_mjcf(&xml, root, d, need),
-    };
-    let mut out = Vec::with_capacity(links.len());
-    for (i, link) in links.iter().enumerate() {
+        let all = vec![true; d.links.len()];
+        // As `geoms_of_mjcf`: `export` says no mesh warnings yet.
+        return super::mjcf_geometry_in(source, d, need.unwrap_or(&all), r).map(|g| g.0);
+    }
+    let kind = if visual { "visual" } else { "collision" };
+    // Each file a link is written in, parsed once, its links' elements by
+    // where they start.
+    let count = d.files.sources.len() + 1;
+    let docs = (0..count)
+        .map(|k| super::parse(d.files.source(source, k)))
+        .collect::<Result<Vec<_>, _>>()?;
+    let starts: Vec<std::collections::HashMap<usize, Node>> = docs
+        .iter()
+        .map(|doc| {
+            doc.descendants()
+                .filter(|n| qname(*n) == "link")
+                .map(|n| (n.range().start, n))
+                .collect()
+        })
+        .collect();
+    let mut out = Vec::with_capacity(d.links.len());
+    for (i, l) in d.links.iter().enumerate() {
         if need.is_some_and(|n| !n[i]) {
             out.push(Vec::new());
             continue;
         }
-        let owner = format!("link {}", quoted(&d.links[i].name));
-        let mut items = Vec::new();
-        for g in children(*link, kind) {
-            let pose = match d.format {
-                Dialect::Urdf => urdf_origin(&xml, g, &owner)?,
-                Dialect::Sdf | Dialect::Mjcf => sdf_pose(&xml, g, &owner)?,
-            };
-            let Some(geo) = child(g, "geometry") else {
-                return Err(xml.error(
-                    xml.tag(g),
-                    format!("`<{kind}>` of {owner} has no `<geometry>`"),
-                ));
-            };
-            let solid = match d.format {
-                Dialect::Urdf => urdf_solid(&xml, geo, &owner)?,
-                Dialect::Sdf | Dialect::Mjcf => sdf_solid(&xml, geo, &owner)?,
-            };
-            items.push(Geometry {
-                solid,
-                pose,
-                range: xml.tag(g),
-                amount: None,
-                mesh: None,
-            });
-        }
+        let xml = Xml {
+            source: d.files.source(source, l.site.file),
+        };
+        let link = starts[l.site.file]
+            .get(&l.site.element.start)
+            .copied()
+            .expect("invariant: the reader found the link's element where its site says");
+        let items = link_geometry(&xml, link, d, &l.name, kind).map_err(|e| d.files.located(e))?;
         out.push(items);
     }
     Ok(out)
+}
+
+/// The geometries of kind `kind` of the link element `link` (named `name`).
+fn link_geometry(
+    xml: &Xml,
+    link: Node,
+    d: &Description,
+    name: &str,
+    kind: &str,
+) -> Result<Vec<Geometry>, Diagnostic> {
+    let owner = format!("link {}", quoted(name));
+    let mut items = Vec::new();
+    for g in children(link, kind) {
+        let pose = match d.format {
+            Dialect::Urdf => urdf_origin(xml, g, &owner)?,
+            Dialect::Sdf | Dialect::Mjcf => sdf_pose(xml, g, &owner)?,
+        };
+        let Some(geo) = child(g, "geometry") else {
+            return Err(xml.error(
+                xml.tag(g),
+                format!("`<{kind}>` of {owner} has no `<geometry>`"),
+            ));
+        };
+        let solid = match d.format {
+            Dialect::Urdf => urdf_solid(xml, geo, &owner)?,
+            Dialect::Sdf | Dialect::Mjcf => sdf_solid(xml, geo, &owner)?,
+        };
+        items.push(Geometry {
+            solid,
+            pose,
+            range: xml.tag(g),
+            amount: None,
+            mesh: None,
+        });
+    }
+    Ok(items)
 }
 
 fn urdf_origin(xml: &Xml, g: Node, owner: &str) -> Result<Pose, Diagnostic> {

@@ -115,6 +115,7 @@ pub(super) fn model(m: &Model) -> Result<Description, Diagnostic> {
         name: m.root.attribute("model").map(str::to_string),
         links,
         compiler: settings.compiler,
+        files: Default::default(),
     })
 }
 
@@ -135,8 +136,8 @@ fn body(
     };
     // An `<inertial>` may come from an included file: read in its own.
     let mut inertials = m.named(file, node, "inertial");
-    let inertial = inertials
-        .next()
+    let first = inertials.next();
+    let inertial = first
         .map(|(f, i)| {
             inertial(m.xml(f), i, &owner, settings).map(|i| Inertial {
                 range: m.range(f, i.range.clone()),
@@ -162,6 +163,13 @@ fn body(
         inertial,
         moving,
         parent,
+        site: crate::robot::Site {
+            file,
+            element: node.range(),
+            inertial: first.filter(|&(f, _)| f == file).map(|(_, i)| i.range()),
+            elsewhere: first.is_some_and(|(f, _)| f != file),
+            from: Vec::new(),
+        },
     })
 }
 
@@ -489,8 +497,14 @@ mod tests {
 
     #[test]
     fn an_include_is_refused_naming_its_file() {
+        // `super::read` alone: `read::read` follows includes (issue 34).
         let text = mujoco("<include file='arm.xml'/>", "");
-        let d = error(&text);
+        let src = source(&text);
+        let doc = roxmltree::Document::parse(&text).unwrap();
+        let xml = super::super::Xml { source: &src };
+        let d = super::read(&xml, doc.root_element())
+            .unwrap_err()
+            .to_string();
         assert!(
             d.starts_with("r.xml:2:16: error: `<include>` of \"arm.xml\" is not followed: only one file is read\n"),
             "{d}"

@@ -10,6 +10,7 @@
 //! values make a valid inertial is the engine checks' question, so negative
 //! masses and moments are read as given.
 
+mod follow;
 mod geometry;
 mod links;
 mod mjcf;
@@ -56,18 +57,8 @@ pub fn mjcf_geometry_in(
     mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need)))
 }
 
-/// `read`, an MJCF file's `<include>`s followed, resolved by `r` (the
-/// whole robot: `Robot::read_in`); other formats as `read` reads them.
-pub fn read_in(source: &Source, format: Dialect, r: &Resolve) -> Result<Description, Diagnostic> {
-    if format != Dialect::Mjcf {
-        return read(source, format);
-    }
-    {
-        let doc = parse(source)?;
-        root(&Xml { source }, doc.root_element(), format)?;
-    }
-    mjcf_include::with_model(source, r, mjcf::model)
-}
+pub use follow::{canonical_dir, read_in};
+pub use sdf_include::{chain, located};
 
 use super::{Description, Dialect};
 use crate::diag::{Diagnostic, Source, shorten};
@@ -76,17 +67,10 @@ use roxmltree::{Document, Node, ParsingOptions};
 use std::ops::Range;
 
 /// Read `source` as a robot description of `format` (from `Dialect::of_path`
-/// or `Dialect::of_text`).
+/// or `Dialect::of_text`), its includes followed from the file's own
+/// directory (`read_in` without `--package` or `--include-root`).
 pub fn read(source: &Source, format: Dialect) -> Result<Description, Diagnostic> {
-    let doc = parse(source)?;
-    let xml = Xml { source };
-    let root = doc.root_element();
-    self::root(&xml, root, format)?;
-    match format {
-        Dialect::Urdf => urdf::read(&xml, root),
-        Dialect::Sdf => sdf::read(&xml, root),
-        Dialect::Mjcf => mjcf::read(&xml, root),
-    }
+    read_in(source, format, &Resolve::default())
 }
 
 /// Refuse a root element that is not `format`'s.

@@ -62,6 +62,10 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         links.push(Link {
             name,
             range: f.node.range(),
+            site: crate::robot::Site::main(
+                f.node.range(),
+                inertial.as_ref().map(|i| i.range.clone()),
+            ),
             inertial,
             moving,
             parent: None,
@@ -78,6 +82,7 @@ pub(super) fn read(xml: &Xml, sdf: Node) -> Result<Description, Diagnostic> {
         name: name.map(str::to_string),
         links,
         compiler: MujocoCompiler::default(),
+        files: Default::default(),
     })
 }
 
@@ -628,6 +633,13 @@ mod tests {
 
     #[test]
     fn a_worlds_include_is_a_top_level_model_that_prefixes_the_names() {
+        // `super::read` alone: `read::read` follows the include (issue 34),
+        // which names no file here.
+        let read_ok = |text: &str| {
+            let src = source(text);
+            let doc = roxmltree::Document::parse(text).unwrap();
+            super::read(&super::super::Xml { source: &src }, doc.root_element()).unwrap()
+        };
         let d = read_ok(&sdf(
             "<world name='w'><model name='m'><link name='l'/></model><include><uri>x</uri></include></world>",
         ));

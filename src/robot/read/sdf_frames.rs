@@ -65,6 +65,9 @@ pub(super) struct Scope<'a, 'i> {
     /// Within an include: the top file's outermost `<include>`, which
     /// messages about its links and joints point at.
     pub(super) anchor: Option<Range<usize>>,
+    /// The `<include>`s that bring it in, innermost first: `FILE:LINE:COL`
+    /// of each one's `<uri>` (`Site::from`).
+    pub(super) from: Vec<String>,
     pub(super) depth: usize,
     pub(super) world: bool,
     pub(super) fixed: bool,

@@ -65,21 +65,37 @@ impl<'s> Files<'s> {
 
     /// `d` with where its file was included from, up to the top file.
     pub fn located(&self, d: Diagnostic) -> Diagnostic {
-        let Some(path) = d.place().map(|p| p.path.clone()) else {
-            return d;
-        };
-        let mut at = self.included.iter().position(|s| s.name == path);
-        let mut d = d;
-        let mut hops = 0;
-        while let Some(k) = at.filter(|_| hops <= MAX_DEPTH) {
-            let site = self.from[k].clone();
-            d = d.included_from(site.clone());
-            let file = site.rsplitn(3, ':').nth(2).unwrap_or_default().to_string();
-            at = self.included.iter().position(|s| s.name == file);
-            hops += 1;
-        }
-        d
+        located(&self.included, &self.from, d)
     }
+}
+
+/// `d` with where its file was included from, up to the top file, given
+/// the included files and where each was first included (`Files`, or a
+/// description's `robot::Included`): the one rule for every robot reader.
+pub fn located(included: &[Source], from: &[String], d: Diagnostic) -> Diagnostic {
+    let Some(path) = d.place().map(|p| p.path.clone()) else {
+        return d;
+    };
+    let Some(k) = included.iter().position(|s| s.name == path) else {
+        return d;
+    };
+    chain(included, from, k + 1)
+        .into_iter()
+        .fold(d, |d, site| d.included_from(site))
+}
+
+/// The sites that bring file `file` (1-based among `included`; 0 the top
+/// file) in, innermost first, each where the file was first included.
+pub fn chain(included: &[Source], from: &[String], file: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut at = file.checked_sub(1);
+    while let Some(k) = at.filter(|&k| k < from.len() && out.len() <= MAX_DEPTH) {
+        let site = from[k].clone();
+        let file = site.rsplitn(3, ':').nth(2).unwrap_or_default().to_string();
+        out.push(site);
+        at = included.iter().position(|s| s.name == file);
+    }
+    out
 }
 
 /// The `<include>`s `doc` holds in a model or a world.

@@ -56,6 +56,32 @@ struct Mimic {
 /// `r`.
 pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tree, Diagnostic> {
     let files = sdf_include::load(xml.source, r)?;
+    of_files(xml, d, &files)
+}
+
+/// Each link whose place in the tree says whether it moves: the child of
+/// a joint that is not `fixed` moves; a link that is the child of no joint
+/// keeps what the model says (a static model's links stay). As `sdf::read`
+/// judges the links of the file's own models; here for the links of its
+/// included ones, which only the tree reads.
+pub(super) fn moving(d: &mut Description, t: &Tree) {
+    for (l, n) in d.links.iter_mut().zip(&t.links) {
+        if l.site.file == 0 {
+            continue;
+        }
+        if let Some(&j) = n.joints.first() {
+            l.moving = t.joints[j].motion != Motion::Fixed;
+        }
+    }
+}
+
+/// `sdformat` of the files read (`sdf_include::load`); `d` keeps them
+/// (`Description::files`).
+pub(super) fn of_files(xml: &Xml, d: &mut Description, files: &Files) -> Result<Tree, Diagnostic> {
+    d.files = crate::robot::Included {
+        sources: files.included.clone(),
+        from: files.from.clone(),
+    };
     let count = files.included.len() + 1;
     let sources: Vec<&Source> = (0..count).map(|k| files.source(k)).collect();
     let docs = sources
@@ -110,6 +136,7 @@ pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tr
         names: HashMap::new(),
         shared: Vec::new(),
         anchor: None,
+        from: Vec::new(),
         depth: 0,
         world,
         fixed: false,
@@ -125,7 +152,7 @@ pub(super) fn sdformat(xml: &Xml, d: &mut Description, r: &Resolve) -> Result<Tr
         placement: None,
     });
     g.placed.push(Some(Pose::IDENTITY));
-    let mut links = walk(&mut g, &files, &docs, d).map_err(|e| files.located(e))?;
+    let mut links = walk(&mut g, files, &docs, d).map_err(|e| files.located(e))?;
     std::mem::swap(&mut d.links, &mut links);
     super::links::names(xml, d)?;
     build(&mut g, d).map_err(|e| files.located(e))
@@ -177,6 +204,13 @@ fn walk<'a, 'i>(
                             Some(i) => sdf::inertial(xml, i, &name.text, &owner)?,
                             None => None,
                         };
+                        let site = crate::robot::Site {
+                            file,
+                            element: c.range(),
+                            inertial: inertial.as_ref().map(|i| i.range.clone()),
+                            elsewhere: false,
+                            from: g.scopes[s].from.clone(),
+                        };
                         if let Some(i) = &mut inertial {
                             i.range = anchor.unwrap_or(i.range.clone());
                         }
@@ -186,6 +220,7 @@ fn walk<'a, 'i>(
                             inertial,
                             moving: !g.scopes[s].fixed,
                             parent: None,
+                            site,
                         }
                     }
                 };
@@ -323,6 +358,11 @@ fn walk<'a, 'i>(
                     .or_else(|| included.then(|| c.range()));
                 let m = g.scopes.len();
                 let fixed = g.scopes[s].fixed || stat;
+                let mut from = g.scopes[s].from.clone();
+                if included && let Some(u) = child(c, "uri") {
+                    let (line, col) = xml.source.line_col(xml.text(u).range.start);
+                    from.insert(0, format!("{}:{line}:{col}", xml.source.name));
+                }
                 let f = g.add(
                     Frame {
                         name: name.text.clone(),
@@ -345,6 +385,7 @@ fn walk<'a, 'i>(
                     names: HashMap::new(),
                     shared: Vec::new(),
                     anchor,
+                    from,
                     depth,
                     world: false,
                     fixed,

@@ -28,6 +28,10 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
         links.push(Link {
             name: name.to_string(),
             range: link.range(),
+            site: crate::robot::Site::main(
+                link.range(),
+                inertial.as_ref().map(|i| i.range.clone()),
+            ),
             inertial,
             moving: moving.contains(name),
             parent: None,
@@ -68,6 +72,7 @@ pub(super) fn read(xml: &Xml, robot: Node) -> Result<Description, Diagnostic> {
         name: robot.attribute("name").map(str::to_string),
         links,
         compiler: settings.compiler,
+        files: Default::default(),
     })
 }
 
