@@ -49,9 +49,11 @@ def massprop_body(massprop, path, joints):
     out = subprocess.run(cmd, capture_output=True, text=True)
     if out.returncode != 0:
         return None, out.stderr.strip()
-    if "< 0); composed as written" in out.stderr:
-        # A tensor with a negative moment: Pinocchio's reading of a
-        # non-physical inertia is its own (massprop composes it as written).
+    if "< 0); composed as written" in out.stderr and path.endswith(".xml"):
+        # An MJCF tensor with a negative moment: Pinocchio's MJCF reader
+        # makes its own of a non-physical inertia (massprop composes it as
+        # written; MuJoCo refuses it). Its URDF reader takes it as written,
+        # and those files are compared.
         return None, "a link's inertia has a negative principal moment: " + out.stderr.strip().splitlines()[0]
     d = json.loads(out.stdout)
     return (d["mass"], np.array(d["center_of_mass"]), np.array(d["inertia_com"])), None
