@@ -11,6 +11,7 @@ use crate::units::{Dim, FileUnits};
 use std::fmt::Write;
 
 mod rounded;
+mod scaled;
 
 /// How an undefined ratio (a share of a zero moment, a change relative to
 /// zero) is shown in every table.
@@ -181,6 +182,33 @@ pub fn push_sig(out: &mut String, x: f64, digits: usize) {
     // rounded (`rounded`: the table of 2²⁰ parts formats 18 million).
     if !rounded::push_sig_fast(out, x, digits.max(1) - 1) {
         push_sig_exact(out, x, digits);
+    }
+}
+
+/// The length of `fmt_sig(x, digits)` (ASCII: its width in columns too),
+/// from the rounded digits without writing them where `push_sig` writes
+/// from those, else by writing it aside (zero, a tie of the shortest
+/// digits, a number not normal).
+pub fn sig_width(x: f64, digits: usize) -> usize {
+    debug_assert!((1..=40).contains(&digits), "the buffers hold 40 digits");
+    if x == 0.0 {
+        // `push_sig_exact`'s `0`, either sign.
+        return 1;
+    }
+    rounded::sig_len(x, digits.max(1) - 1).unwrap_or_else(|| {
+        let mut s = String::new();
+        push_sig_exact(&mut s, x, digits);
+        s.len()
+    })
+}
+
+/// The width in columns of `fmt_percent(fraction)`, without writing it
+/// where it is a number.
+pub fn percent_width(fraction: Option<f64>) -> usize {
+    use unicode_width::UnicodeWidthStr;
+    match fraction.map(|f| (f, f * 100.0)) {
+        Some((_, p)) if p.is_finite() => sig_width(p, 3) + " %".len(),
+        _ => fmt_percent(fraction).width(),
     }
 }
 
