@@ -44,39 +44,16 @@ pub(super) fn push_sig_fast(out: &mut String, x: f64, places: usize) -> bool {
     let Some(s) = Sig::of(x, places) else {
         return false;
     };
-    // Made as bytes (at most a sign, 15 digits, a point, 4 zeros and an
-    // exponent's 5), then appended at once.
-    let mut text = Text::default();
-    if s.neg {
-        text.push(b'-');
-    }
-    match s.layout {
-        Layout::Sci => {
-            text.push(b'0' + s.d[0]);
-            // The digits after the first, without trailing zeros.
-            if s.last > 0 {
-                text.push(b'.');
-                text.digits(&s.d[1..=s.last]);
-            }
-            text.push(b'e');
-            text.int(s.exp);
-        }
-        Layout::Fixed { before, zeros } => {
-            // The digits before the point, then after it.
-            if before == 0 {
-                text.push(b'0');
-            }
-            text.digits(&s.d[..before]);
-            if s.last >= before {
-                text.push(b'.');
-                for _ in 0..zeros {
-                    text.push(b'0');
-                }
-                text.digits(&s.d[before..=s.last]);
-            }
-        }
-    }
-    out.push_str(std::str::from_utf8(text.as_bytes()).expect("invariant: ASCII"));
+    out.push_str(std::str::from_utf8(s.text().as_bytes()).expect("invariant: ASCII"));
+    true
+}
+
+/// `push_sig_fast` after bytes.
+pub(super) fn extend_sig_fast(out: &mut Vec<u8>, x: f64, places: usize) -> bool {
+    let Some(s) = Sig::of(x, places) else {
+        return false;
+    };
+    out.extend_from_slice(s.text().as_bytes());
     true
 }
 
@@ -113,18 +90,19 @@ fn int_len(n: i32) -> usize {
     len
 }
 
-/// A number rounded for `push_sig`: its sign, digits (`d[0]` not zero),
-/// the decimal exponent of the first, the index of the last not zero,
-/// and how it is written.
+/// A number rounded for `push_sig`: its sign, its digits without
+/// trailing zeros (as one integer: the first not zero), the index of the
+/// last of them, the decimal exponent of the first, and how it is written.
 struct Sig {
     neg: bool,
-    d: [u8; 16],
-    exp: i32,
+    digits: u64,
     last: usize,
+    exp: i32,
     layout: Layout,
 }
 
 /// `push_sig`'s two notations.
+#[derive(Clone, Copy)]
 enum Layout {
     /// `d.ddde±x`: an exponent outside −4..6.
     Sci,
@@ -142,27 +120,24 @@ impl Sig {
         if places > 14 || !x.is_normal() {
             return None;
         }
-        let (neg, d, exp, last) = match super::scaled::scaled(x, places) {
-            Some((neg, n, exp)) => {
-                let mut d = [0u8; 16];
-                let mut m = n;
-                let mut last = None;
-                for k in (0..=places).rev() {
-                    let digit = (m % 10) as u8;
-                    d[k] = digit;
-                    if digit != 0 && last.is_none() {
-                        last = Some(k);
-                    }
-                    m /= 10;
-                }
-                (neg, d, exp, last?)
-            }
+        let (neg, n, exp) = match super::scaled::scaled(x, places) {
+            Some(r) => r,
             None => {
                 let (neg, d, exp) = rounded(x, places)?;
-                let last = (0..=places).rev().find(|&k| d[k] != 0)?;
-                (neg, d, exp, last)
+                let n = d[..=places]
+                    .iter()
+                    .fold(0u64, |n, &k| n * 10 + u64::from(k));
+                (neg, n, exp)
             }
         };
+        if n == 0 {
+            return None;
+        }
+        let (mut digits, mut last) = (n, places);
+        while digits % 10 == 0 {
+            digits /= 10;
+            last -= 1;
+        }
         let layout = if !(-4..6).contains(&exp) {
             Layout::Sci
         } else if exp > places as i32 {
@@ -180,11 +155,55 @@ impl Sig {
         };
         Some(Sig {
             neg,
-            d,
-            exp,
+            digits,
             last,
+            exp,
             layout,
         })
+    }
+
+    /// Its text, as `push_sig` writes it: with an exponent, the digits
+    /// without trailing zeros; fixed, trailing zeros and a bare point
+    /// dropped.
+    fn text(&self) -> Text {
+        // The digits, 0 past the last (up to `places`).
+        let mut d = [0u8; 16];
+        let mut t = self.digits;
+        for k in (0..=self.last).rev() {
+            d[k] = (t % 10) as u8;
+            t /= 10;
+        }
+        // At most a sign, 15 digits, a point, 4 zeros and an exponent's 5.
+        let mut text = Text::default();
+        if self.neg {
+            text.push(b'-');
+        }
+        match self.layout {
+            Layout::Sci => {
+                text.push(b'0' + d[0]);
+                if self.last > 0 {
+                    text.push(b'.');
+                    text.digits(&d[1..=self.last]);
+                }
+                text.push(b'e');
+                text.int(self.exp);
+            }
+            Layout::Fixed { before, zeros } => {
+                // The digits before the point, then after it.
+                if before == 0 {
+                    text.push(b'0');
+                }
+                text.digits(&d[..before]);
+                if self.last >= before {
+                    text.push(b'.');
+                    for _ in 0..zeros {
+                        text.push(b'0');
+                    }
+                    text.digits(&d[before..=self.last]);
+                }
+            }
+        }
+        text
     }
 }
 

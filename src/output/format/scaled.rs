@@ -60,7 +60,10 @@ pub(super) fn scaled(x: f64, places: usize) -> Option<(bool, u64, i32)> {
     let mut e10 = ((b * 78913) >> 18).clamp(*reach.start(), *reach.end());
     for _ in 0..3 {
         let k = places as i32 - e10;
-        let (q, frac) = scale(m, e2, k)?;
+        let (q, frac) = match nearly(x.abs(), k) {
+            Some(r) => r,
+            None => scale(m, e2, k)?,
+        };
         if q >= high {
             e10 += 1;
             continue;
@@ -84,6 +87,47 @@ pub(super) fn scaled(x: f64, places: usize) -> Option<(bool, u64, i32)> {
         });
     }
     None
+}
+
+/// 10ᵏ for k = 0..=22, each exactly a double.
+const TEN_F64: [f64; 23] = {
+    let mut t = [1.0f64; 23];
+    let mut k = 1;
+    while k < 23 {
+        t[k] = t[k - 1] * 10.0;
+        k += 1;
+    }
+    t
+};
+
+/// `a · 10ᵏ`'s integer part and where its fraction lies, from the product
+/// (or quotient) rounded once to a double, where that decides: `None`
+/// where its fraction is within the rounding's error of one half (then
+/// `scale`, exact), or the product is past 2⁴⁰.
+///
+/// NOTE: 10ᵏ is exact (k ≤ 22), so `y` is within half an ulp, 2⁻⁵³ y, of
+/// v = a · 10ᵏ, and `y`'s fraction (under 2⁴⁰) is exact; a fraction
+/// farther than 2⁻⁵² y from ½ is on the same side of it as v's. Near an
+/// integer the integer part may be v's ± 1 (v just under an integer that
+/// `y` reached, or the reverse), with the fraction on the other side of
+/// ½: its rounding, q + up, is the same integer, and `scaled`'s answer
+/// too — at its decade's ends as well (q = 10ᵖ or 10ᵖ⁺¹ − 1 with v on the
+/// far side: a retry in the next decade rounds to the same 10ᵖ, held by
+/// the tests). Almost every number a table shows is decided here, in a
+/// multiplication and a comparison.
+fn nearly(a: f64, k: i32) -> Option<(u64, Half)> {
+    let ten = *TEN_F64.get(k.unsigned_abs() as usize)?;
+    let y = if k >= 0 { a * ten } else { a / ten };
+    if !(y < (1u64 << 40) as f64) {
+        return None;
+    }
+    let q = y.floor();
+    let f = y - q;
+    let err = y * f64::EPSILON;
+    if (f - 0.5).abs() <= err {
+        return None;
+    }
+    Some((q as u64, if f < 0.5 { Half::Below } else { Half::Above }))
 }
 
 /// Where a fraction lies against one half.

@@ -10,7 +10,10 @@
 //! every row through a `Cells` (issue 33, item 3).
 
 use super::{Cells, Fit, RowSink, cell_width, push_rule, push_spaces, stream_table};
-use crate::output::format::{percent_width, push_name, push_percent, push_sig, sig_width};
+use crate::output::format::{
+    ascii_name, ascii_name_width, count_len, extend_ascii_name, extend_count, extend_percent,
+    extend_sig, percent_width, push_name, push_percent, push_sig, sig_width,
+};
 use std::io::Write;
 use unicode_width::UnicodeWidthStr;
 
@@ -51,32 +54,53 @@ impl Cell<'_> {
         }
     }
 
+    /// Its text after bytes: numbers and names of printable ASCII written
+    /// straight into `out`, anything else through `scratch`.
+    fn extend(&self, out: &mut Vec<u8>, scratch: &mut String) {
+        match *self {
+            Cell::Text(t) => out.extend_from_slice(t.as_bytes()),
+            Cell::Count(n) => extend_count(out, n),
+            Cell::Sig(x, digits) => extend_sig(out, x, digits),
+            Cell::Percent(f) => extend_percent(out, f),
+            Cell::Name(t) | Cell::Indented(_, t) => match ascii_name(t) {
+                Some(shown) => {
+                    out.resize(out.len() + self.indent(), b' ');
+                    extend_ascii_name(out, shown);
+                }
+                None => {
+                    scratch.clear();
+                    self.push(scratch);
+                    out.extend_from_slice(scratch.as_bytes());
+                }
+            },
+        }
+    }
+
+    /// The columns before a name: two spaces an indent.
+    fn indent(&self) -> usize {
+        match *self {
+            Cell::Indented(n, _) => 2 * n,
+            Cell::Text(_) | Cell::Name(_) | Cell::Count(_) | Cell::Sig(..) | Cell::Percent(_) => 0,
+        }
+    }
+
     /// The columns its text takes, as `cell_width` measures the text:
-    /// numbers from their digits, a name whose text is itself (short, and
-    /// nothing in it to show otherwise) from its bytes, anything else from
-    /// its text written into `scratch`.
+    /// numbers from their digits, a name of printable ASCII from its
+    /// length, anything else from its text written into `scratch`.
     fn width(&self, scratch: &mut String) -> usize {
         match *self {
             Cell::Count(n) => count_len(n),
             Cell::Sig(x, digits) => sig_width(x, digits),
             Cell::Percent(f) => percent_width(f),
             Cell::Text(t) => cell_width(t),
-            Cell::Name(t) | Cell::Indented(_, t)
-                if t.len() <= crate::output::format::SHOWN_NAME
-                    && super::printable_ascii(t)
-                    && !crate::diag::may_hide(t) =>
-            {
-                let indent = match *self {
-                    Cell::Indented(n, _) => 2 * n,
-                    _ => 0,
-                };
-                indent + t.len()
-            }
-            Cell::Name(_) | Cell::Indented(..) => {
-                scratch.clear();
-                self.push(scratch);
-                cell_width(scratch)
-            }
+            Cell::Name(t) | Cell::Indented(_, t) => match ascii_name(t) {
+                Some(shown) => self.indent() + ascii_name_width(shown),
+                None => {
+                    scratch.clear();
+                    self.push(scratch);
+                    cell_width(scratch)
+                }
+            },
         }
     }
 
@@ -96,53 +120,23 @@ impl Cell<'_> {
 
     /// Its text after `out`, padded to `width` columns on the left
     /// (`right`) or on the right.
-    fn push_padded(&self, out: &mut String, width: usize, right: bool, scratch: &mut String) {
-        match self {
-            Cell::Count(_) | Cell::Sig(..) | Cell::Percent(_) if right => {
-                push_spaces(out, width - self.width(scratch));
-                self.push(out);
-            }
-            _ => {
-                let start = out.len();
-                self.push(out);
-                let pad = width - cell_width(&out[start..]);
-                if right {
-                    // Text aligned right (no table of a row per part has
-                    // one): its padding moved before it.
-                    let text = out.split_off(start);
-                    push_spaces(out, pad);
-                    out.push_str(&text);
-                } else {
-                    push_spaces(out, pad);
-                }
-            }
+    fn extend_padded(&self, out: &mut Vec<u8>, width: usize, right: bool, scratch: &mut String) {
+        let pad = width - self.width(scratch);
+        if right {
+            out.resize(out.len() + pad, b' ');
+            self.extend(out, scratch);
+        } else {
+            self.extend(out, scratch);
+            out.resize(out.len() + pad, b' ');
         }
     }
 }
 
 /// `n` in decimal after `out`.
-fn push_count(out: &mut String, mut n: usize) {
-    let mut digits = [0u8; 20];
-    let mut k = digits.len();
-    loop {
-        k -= 1;
-        digits[k] = b'0' + (n % 10) as u8;
-        n /= 10;
-        if n == 0 {
-            break;
-        }
-    }
-    out.push_str(std::str::from_utf8(&digits[k..]).expect("invariant: ASCII digits"));
-}
-
-/// The length of `n` in decimal.
-fn count_len(mut n: usize) -> usize {
-    let mut len = 1;
-    while n >= 10 {
-        n /= 10;
-        len += 1;
-    }
-    len
+fn push_count(out: &mut String, n: usize) {
+    let mut bytes = Vec::with_capacity(20);
+    extend_count(&mut bytes, n);
+    out.push_str(std::str::from_utf8(&bytes).expect("invariant: ASCII digits"));
 }
 
 /// `stream_table` for rows of typed cells: `rows` is called once to
@@ -206,22 +200,27 @@ fn write_part(
     scratch: &mut String,
 ) -> std::io::Result<()> {
     let last = *cols.last().expect("invariant: a part has a column");
-    let line = |buf: &mut String, row: &[Cell<'_>], scratch: &mut String| {
-        buf.push('│');
+    let line = |buf: &mut Vec<u8>, row: &[Cell<'_>], scratch: &mut String| {
+        buf.extend_from_slice("│".as_bytes());
         for &i in cols {
-            buf.push(' ');
-            row[i].push_padded(buf, widths[i], right[i], scratch);
-            buf.push_str(if i == last { " │" } else { " ┆" });
+            buf.push(b' ');
+            row[i].extend_padded(buf, widths[i], right[i], scratch);
+            buf.extend_from_slice(if i == last { " │" } else { " ┆" }.as_bytes());
         }
-        buf.push('\n');
+        buf.push(b'\n');
     };
     // Written in pieces of about this many bytes.
     const PIECE: usize = 1 << 16;
-    let mut buf = String::with_capacity(PIECE + 1024);
-    push_rule(&mut buf, widths, cols, ['┌', '─', '┬', '┐']);
+    let mut buf = Vec::with_capacity(PIECE + 1024);
+    let rule = |buf: &mut Vec<u8>, chars| {
+        let mut text = String::new();
+        push_rule(&mut text, widths, cols, chars);
+        buf.extend_from_slice(text.as_bytes());
+    };
+    rule(&mut buf, ['┌', '─', '┬', '┐']);
     let titles: Vec<Cell<'_>> = header.iter().map(|h| Cell::Text(h)).collect();
     line(&mut buf, &titles, scratch);
-    push_rule(&mut buf, widths, cols, ['╞', '═', '╪', '╡']);
+    rule(&mut buf, ['╞', '═', '╪', '╡']);
     let mut failed = Ok(());
     rows(&mut |row| {
         // NOTE: after a failed write (a closed pipe) nothing more is made:
@@ -231,13 +230,13 @@ fn write_part(
         }
         line(&mut buf, row, scratch);
         if buf.len() >= PIECE {
-            failed = out.write_all(buf.as_bytes());
+            failed = out.write_all(&buf);
             buf.clear();
         }
     });
     failed?;
-    push_rule(&mut buf, widths, cols, ['└', '─', '┴', '┘']);
-    out.write_all(buf.as_bytes())
+    rule(&mut buf, ['└', '─', '┴', '┘']);
+    out.write_all(&buf)
 }
 
 #[cfg(test)]
