@@ -212,15 +212,23 @@ pub fn fmt_percent(fraction: Option<f64>) -> String {
 
 /// Append `fmt_percent(fraction)` to `out`.
 pub fn push_percent(out: &mut String, fraction: Option<f64>) {
-    match fraction.map(|f| (f, f * 100.0)) {
-        Some((_, p)) if p.is_finite() => {
+    match percent(fraction) {
+        Ok(p) => {
             push_sig(out, p, 3);
             out.push_str(" %");
         }
-        // A ratio beyond f64 as a percentage: said, never `inf %`.
-        Some((f, _)) if f > 0.0 => out.push_str("> 1e306 %"),
-        Some((f, _)) if f < 0.0 => out.push_str("< -1e306 %"),
-        _ => out.push_str(UNDEFINED),
+        Err(word) => out.push_str(word),
+    }
+}
+
+/// A fraction as a percentage, or the words that stand for it: a ratio
+/// beyond f64 as a percentage said, never `inf %`; `None` as `UNDEFINED`.
+fn percent(fraction: Option<f64>) -> Result<f64, &'static str> {
+    match fraction.map(|f| (f, f * 100.0)) {
+        Some((_, p)) if p.is_finite() => Ok(p),
+        Some((f, _)) if f > 0.0 => Err("> 1e306 %"),
+        Some((f, _)) if f < 0.0 => Err("< -1e306 %"),
+        _ => Err(UNDEFINED),
     }
 }
 
@@ -277,23 +285,28 @@ pub fn extend_sig(out: &mut Vec<u8>, x: f64, digits: usize) {
 
 /// `push_percent` after bytes.
 pub fn extend_percent(out: &mut Vec<u8>, fraction: Option<f64>) {
-    match fraction.map(|f| f * 100.0) {
-        Some(p) if p.is_finite() => {
+    match percent(fraction) {
+        Ok(p) => {
             extend_sig(out, p, 3);
             out.extend_from_slice(b" %");
         }
-        _ => out.extend_from_slice(fmt_percent(fraction).as_bytes()),
+        Err(word) => out.extend_from_slice(word.as_bytes()),
     }
 }
 
-/// The width in columns of `fmt_percent(fraction)`, without writing it
-/// where it is a number.
+/// The width in columns of `fmt_percent(fraction)`, without writing it.
 pub fn percent_width(fraction: Option<f64>) -> usize {
     use unicode_width::UnicodeWidthStr;
-    match fraction.map(|f| (f, f * 100.0)) {
-        Some((_, p)) if p.is_finite() => sig_width(p, 3) + " %".len(),
-        _ => fmt_percent(fraction).width(),
+    match percent(fraction) {
+        Ok(p) => sig_width(p, 3) + " %".len(),
+        Err(word) => word.width(),
     }
+}
+
+/// Whether `fmt_percent(fraction)` is ASCII (as wide as it is long): a
+/// number, not `UNDEFINED`.
+pub fn percent_is_ascii(fraction: Option<f64>) -> bool {
+    percent(fraction).map_or_else(|word| word.is_ascii(), |_| true)
 }
 
 /// `push_sig` from the exact rounding (`{:.N$e}`): a tie of the shortest

@@ -224,13 +224,17 @@ impl Assemblies {
         }
         let mut sums: Vec<Sums> = Vec::new();
         let mut open: Vec<Open> = Vec::new();
+        // The items' lists of the sub-assemblies left, for the next ones
+        // entered: not an allocation per sub-assembly (a tree of 2²⁰
+        // instances has as many).
+        let mut spare: Vec<Vec<(f64, [f64; 3])>> = Vec::new();
         // NOTE: the parts placed as the rows' walk places them: the same
         // bits, no bound of their rounding formed (`Model::each_row`).
         s.model.each_row(&mut |e| match e {
             RowEvent::Enter(_) => {
                 open.push(Open {
                     at: sums.len(),
-                    items: Vec::new(),
+                    items: spare.pop().unwrap_or_default(),
                     parts: 0,
                     share: [Some(0.0); 3],
                 });
@@ -253,10 +257,13 @@ impl Assemblies {
                 }
             }
             RowEvent::Exit => {
-                let done = open.pop().expect("an Exit follows its Enter");
+                let mut done = open.pop().expect("an Exit follows its Enter");
                 let mass: f64 = done.items.iter().map(|(m, _)| m).sum();
                 let center_of_mass =
                     std::array::from_fn(|i| done.items.iter().map(|(m, c)| m / mass * c[i]).sum());
+                let mut items = std::mem::take(&mut done.items);
+                items.clear();
+                spare.push(items);
                 let sum = Sums {
                     parts: done.parts,
                     mass,

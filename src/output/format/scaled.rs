@@ -121,13 +121,14 @@ fn nearly(a: f64, k: i32) -> Option<(u64, Half)> {
     if !(y < (1u64 << 40) as f64) {
         return None;
     }
-    let q = y.floor();
-    let f = y - q;
+    // (Truncated: y ≥ 0; a conversion, not libm's `floor`.)
+    let q = y as u64;
+    let f = y - q as f64;
     let err = y * f64::EPSILON;
     if (f - 0.5).abs() <= err {
         return None;
     }
-    Some((q as u64, if f < 0.5 { Half::Below } else { Half::Above }))
+    Some((q, if f < 0.5 { Half::Below } else { Half::Above }))
 }
 
 /// Where a fraction lies against one half.

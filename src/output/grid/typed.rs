@@ -12,7 +12,7 @@
 use super::{Cells, Fit, RowSink, cell_width, push_rule, push_spaces, stream_table};
 use crate::output::format::{
     ascii_name, ascii_name_width, count_len, extend_ascii_name, extend_count, extend_percent,
-    extend_sig, percent_width, push_name, push_percent, push_sig, sig_width,
+    extend_sig, percent_is_ascii, percent_width, push_name, push_percent, push_sig, sig_width,
 };
 use std::io::Write;
 use unicode_width::UnicodeWidthStr;
@@ -121,13 +121,21 @@ impl Cell<'_> {
     /// Its text after `out`, padded to `width` columns on the left
     /// (`right`) or on the right.
     fn extend_padded(&self, out: &mut Vec<u8>, width: usize, right: bool, scratch: &mut String) {
-        let pad = width - self.width(scratch);
+        let start = out.len();
+        // A number's text is ASCII: as wide as it is long, measured once
+        // written; anything else measured first.
+        let w = match *self {
+            Cell::Count(_) | Cell::Sig(..) => None,
+            Cell::Percent(f) if percent_is_ascii(f) => None,
+            Cell::Percent(_) | Cell::Text(_) | Cell::Name(_) | Cell::Indented(..) => {
+                Some(self.width(scratch))
+            }
+        };
+        self.extend(out, scratch);
+        let pad = width - w.unwrap_or(out.len() - start);
+        out.resize(out.len() + pad, b' ');
         if right {
-            out.resize(out.len() + pad, b' ');
-            self.extend(out, scratch);
-        } else {
-            self.extend(out, scratch);
-            out.resize(out.len() + pad, b' ');
+            out[start..].rotate_right(pad);
         }
     }
 }
