@@ -142,10 +142,12 @@ pub(super) fn assemblies(
         groups: &[(4, 7), (7, 10)],
         ..super::fit(width)
     };
+    // NOTE: summed once (a walk placing every part), walked twice.
+    let summed = s.assemblies.summed();
     stream_cells(w, &header, &right, fit, &mut |sink| {
         // How deep the walk is: a sub-assembly's indent is one less.
         let mut depth = 0usize;
-        s.assemblies.each_row(&mut |r| match r {
+        summed.each_row(&mut |r| match r {
             AssemblyRow::Enter(name, a) => {
                 let figures = figures(
                     u,
