@@ -7,7 +7,9 @@ use std::ops::Range;
 
 use unicode_width::UnicodeWidthStr;
 
+mod blocks;
 mod typed;
+pub use blocks::with_threads;
 pub use typed::{Cell, CellSink, stream_cells};
 
 /// A table in the style every massprop table uses.

@@ -317,3 +317,34 @@ fn the_test_formatting_rounds_as_its_examples_say() {
         format!("{}… (101 characters)", "a".repeat(99))
     );
 }
+
+#[test]
+fn the_full_report_is_the_same_bytes_on_one_thread_and_on_two() {
+    use massprop::output::grid::with_threads;
+    use massprop::output::report::write_table_to;
+    let mut roots = trees("threads");
+    // Rows enough for several blocks on each thread (a block is 1,024).
+    let dir = scratch("full_speed", "threads-big");
+    roots.push(tree(
+        &dir,
+        13,
+        0.25,
+        None,
+        "shape = \"point\"\nmass = 1.5\ncenter = [0, 0, 0]\n",
+    ));
+    for root in roots {
+        let s = massprop::summarize(&root, &massprop::Settings::default()).unwrap();
+        let write = |threads, width| {
+            with_threads(threads, || {
+                let mut out = Vec::new();
+                write_table_to(&s, "t0.toml", width, &mut out).unwrap();
+                out
+            })
+        };
+        for width in [None, Some(80)] {
+            let one = write(1, width);
+            assert!(one.len() > 1000);
+            assert!(one == write(2, width), "{root:?}, width {width:?}");
+        }
+    }
+}

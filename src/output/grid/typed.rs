@@ -9,6 +9,7 @@
 //! of 2²⁰ instances formatted its 17 million numbers twice and copied
 //! every row through a `Cells` (issue 33, item 3).
 
+use super::blocks::{self, Block};
 use super::{Cells, Fit, RowSink, cell_width, push_rule, push_spaces, stream_table};
 use crate::output::format::{
     ascii_name, ascii_name_width, count_len, extend_ascii_name, extend_count, extend_percent,
@@ -152,7 +153,8 @@ fn push_count(out: &mut String, n: usize) {
 /// unless it is split to `fit`), and each time hands every row, in order,
 /// to the function it is given. The output is `stream_table`'s of the
 /// cells' text; a table with a line break in its header or a cell goes
-/// through it.
+/// through it. On two cores the rows are measured and formatted on both
+/// (`blocks`), the same bytes.
 pub fn stream_cells(
     out: &mut dyn Write,
     header: &[String],
@@ -161,18 +163,28 @@ pub fn stream_cells(
     rows: &mut dyn FnMut(&mut CellSink<'_>),
 ) -> std::io::Result<()> {
     let n = header.len();
+    let two = blocks::threads() > 1;
     let mut scratch = String::new();
     let mut breaks = header.iter().any(|h| h.contains('\n'));
     // As `stream_table` measures: the header's width, at least one column.
     let mut widths: Vec<usize> = header.iter().map(|h| h.width().max(1)).collect();
-    if !breaks {
-        rows(&mut |row| {
-            debug_assert_eq!(row.len(), n, "invariant: whole rows of cells");
-            for (w, c) in widths.iter_mut().zip(row) {
-                *w = (*w).max(c.width(&mut scratch));
-                breaks |= c.breaks();
+    if !breaks && two {
+        let work = |block: &Block| {
+            let mut widths = vec![0; n];
+            let mut breaks = false;
+            let mut scratch = String::new();
+            block.each(&mut |row| measure(row, &mut widths, &mut breaks, &mut scratch));
+            (widths, breaks)
+        };
+        blocks::in_blocks(rows, &work, &mut |(w, b)| {
+            for (all, w) in widths.iter_mut().zip(w) {
+                *all = (*all).max(w);
             }
-        });
+            breaks |= b;
+            Ok(())
+        })?;
+    } else if !breaks {
+        rows(&mut |row| measure(row, &mut widths, &mut breaks, &mut scratch));
     }
     if breaks {
         let mut cells = Cells::with_capacity(n);
@@ -189,7 +201,12 @@ pub fn stream_cells(
     }
     let parts = fit.parts(&widths);
     for cols in &parts {
-        write_part(out, header, right, &widths, cols, rows, &mut scratch)?;
+        let part = Part {
+            right,
+            widths: &widths,
+            cols,
+        };
+        part.write(out, header, rows, two, &mut scratch)?;
     }
     if parts.len() > 1 {
         out.write_all(fit.note(parts.len()).as_bytes())?;
@@ -197,54 +214,87 @@ pub fn stream_cells(
     Ok(())
 }
 
+/// A row's cells measured into `widths`; `breaks` if one has a line break.
+fn measure(row: &[Cell<'_>], widths: &mut [usize], breaks: &mut bool, scratch: &mut String) {
+    debug_assert_eq!(row.len(), widths.len(), "invariant: whole rows of cells");
+    for (w, c) in widths.iter_mut().zip(row) {
+        *w = (*w).max(c.width(scratch));
+        *breaks |= c.breaks();
+    }
+}
+
 /// The columns `cols` of the table, `widths` wide.
-fn write_part(
-    out: &mut dyn Write,
-    header: &[String],
-    right: &[bool],
-    widths: &[usize],
-    cols: &[usize],
-    rows: &mut dyn FnMut(&mut CellSink<'_>),
-    scratch: &mut String,
-) -> std::io::Result<()> {
-    let last = *cols.last().expect("invariant: a part has a column");
-    let line = |buf: &mut Vec<u8>, row: &[Cell<'_>], scratch: &mut String| {
+struct Part<'a> {
+    right: &'a [bool],
+    widths: &'a [usize],
+    cols: &'a [usize],
+}
+
+impl Part<'_> {
+    /// A row's line after `buf`.
+    fn line(&self, buf: &mut Vec<u8>, row: &[Cell<'_>], scratch: &mut String) {
+        let last = *self.cols.last().expect("invariant: a part has a column");
         buf.extend_from_slice("│".as_bytes());
-        for &i in cols {
+        for &i in self.cols {
             buf.push(b' ');
-            row[i].extend_padded(buf, widths[i], right[i], scratch);
+            row[i].extend_padded(buf, self.widths[i], self.right[i], scratch);
             buf.extend_from_slice(if i == last { " │" } else { " ┆" }.as_bytes());
         }
         buf.push(b'\n');
-    };
-    // Written in pieces of about this many bytes.
-    const PIECE: usize = 1 << 16;
-    let mut buf = Vec::with_capacity(PIECE + 1024);
-    let rule = |buf: &mut Vec<u8>, chars| {
+    }
+
+    /// A rule after `buf`.
+    fn rule(&self, buf: &mut Vec<u8>, chars: [char; 4]) {
         let mut text = String::new();
-        push_rule(&mut text, widths, cols, chars);
+        push_rule(&mut text, self.widths, self.cols, chars);
         buf.extend_from_slice(text.as_bytes());
-    };
-    rule(&mut buf, ['┌', '─', '┬', '┐']);
-    let titles: Vec<Cell<'_>> = header.iter().map(|h| Cell::Text(h)).collect();
-    line(&mut buf, &titles, scratch);
-    rule(&mut buf, ['╞', '═', '╪', '╡']);
-    let mut failed = Ok(());
-    rows(&mut |row| {
-        // NOTE: after a failed write (a closed pipe) nothing more is made:
-        // the walk runs out without formatting the rows left.
-        if failed.is_err() {
-            return;
-        }
-        line(&mut buf, row, scratch);
-        if buf.len() >= PIECE {
-            failed = out.write_all(&buf);
+    }
+
+    /// The part, its rows formatted here or (`two`) on two threads.
+    fn write(
+        &self,
+        out: &mut dyn Write,
+        header: &[String],
+        rows: &mut dyn FnMut(&mut CellSink<'_>),
+        two: bool,
+        scratch: &mut String,
+    ) -> std::io::Result<()> {
+        // Written in pieces of about this many bytes.
+        const PIECE: usize = 1 << 16;
+        let mut buf = Vec::with_capacity(PIECE + 1024);
+        self.rule(&mut buf, ['┌', '─', '┬', '┐']);
+        let titles: Vec<Cell<'_>> = header.iter().map(|h| Cell::Text(h)).collect();
+        self.line(&mut buf, &titles, scratch);
+        self.rule(&mut buf, ['╞', '═', '╪', '╡']);
+        if two {
+            out.write_all(&buf)?;
             buf.clear();
+            let work = |block: &Block| {
+                let mut bytes = Vec::with_capacity(PIECE);
+                let mut scratch = String::new();
+                block.each(&mut |row| self.line(&mut bytes, row, &mut scratch));
+                bytes
+            };
+            blocks::in_blocks(rows, &work, &mut |bytes| out.write_all(&bytes))?;
+        } else {
+            let mut failed = Ok(());
+            rows(&mut |row| {
+                // NOTE: after a failed write (a closed pipe) nothing more is
+                // made: the walk runs out without formatting the rows left.
+                if failed.is_err() {
+                    return;
+                }
+                self.line(&mut buf, row, scratch);
+                if buf.len() >= PIECE {
+                    failed = out.write_all(&buf);
+                    buf.clear();
+                }
+            });
+            failed?;
         }
-    });
-    failed?;
-    rule(&mut buf, ['└', '─', '┴', '┘']);
-    out.write_all(&buf)
+        self.rule(&mut buf, ['└', '─', '┴', '┘']);
+        out.write_all(&buf)
+    }
 }
 
 #[cfg(test)]
