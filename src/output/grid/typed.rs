@@ -269,13 +269,28 @@ impl Part<'_> {
         if two {
             out.write_all(&buf)?;
             buf.clear();
+            // NOTE: a block's bytes (~250 kB) are kept for the next block
+            // once written: a fresh buffer that size is a fresh mapping,
+            // its pages faulted in again each time.
+            let spare = std::sync::Mutex::new(Vec::<Vec<u8>>::new());
             let work = |block: &Block| {
-                let mut bytes = Vec::with_capacity(PIECE);
+                let mut bytes = spare
+                    .lock()
+                    .ok()
+                    .and_then(|mut s| s.pop())
+                    .unwrap_or_default();
                 let mut scratch = String::new();
                 block.each(&mut |row| self.line(&mut bytes, row, &mut scratch));
                 bytes
             };
-            blocks::in_blocks(rows, &work, &mut |bytes| out.write_all(&bytes))?;
+            blocks::in_blocks(rows, &work, &mut |mut bytes| {
+                out.write_all(&bytes)?;
+                bytes.clear();
+                if let Ok(mut s) = spare.lock() {
+                    s.push(bytes);
+                }
+                Ok(())
+            })?;
         } else {
             let mut failed = Ok(());
             rows(&mut |row| {
