@@ -10,7 +10,7 @@
 //! otherwise wait on. Blocks in flight are few (`AHEAD`), so memory stays
 //! bounded whatever the rows.
 
-use super::typed::{Cell, CellSink};
+use super::{Cell, CellSink};
 use std::cell::Cell as StdCell;
 use std::collections::VecDeque;
 use std::sync::mpsc;
