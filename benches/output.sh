@@ -93,6 +93,21 @@ for (build, args), (wall, user, system, rss, size) in best.items():
           f"| {rss / 1024:.1f} MiB |")
 PY
 
+echo
+# The same version on one core (`taskset -c 0`: the tables' second thread
+# shares the core) writes the same bytes.
+if command -v taskset > /dev/null; then
+    for args in "--format json" "--full"; do
+        # shellcheck disable=SC2086
+        if cmp <(./massprop report $args t0.toml) <(taskset -c 0 ./massprop report $args t0.toml); then
+            echo "  report $args: the same bytes on one core as on two"
+        else
+            echo "  report $args: DIFFERS on one core"
+        fi
+    done
+    /usr/bin/time -f "%e %U %S %M" -o one.txt taskset -c 0 ./massprop report --full t0.toml > /dev/null
+    echo "  report --full on one core: $(awk '{print $1 " s wall, " $2 " + " $3 " s CPU, " $4 / 1024 " MiB"}' one.txt)"
+fi
 if [ -n "$BASE" ]; then
     echo
     for args in "--format json" "--full"; do

@@ -10,7 +10,13 @@ use crate::compose::{EQUAL_MOMENT_RTOL, Precision};
 use crate::units::{Dim, FileUnits};
 use std::fmt::Write;
 
+mod bytes;
 mod rounded;
+mod scaled;
+pub use bytes::{
+    ascii_name, ascii_name_width, count_len, extend_ascii_name, extend_count, extend_percent,
+    extend_sig,
+};
 
 /// How an undefined ratio (a share of a zero moment, a change relative to
 /// zero) is shown in every table.
@@ -44,8 +50,12 @@ pub fn push_name(out: &mut String, name: &str) {
         .nth(SHOWN_NAME - 1)
         .map_or(name, |(i, _)| &name[..i]);
     crate::diag::push_visible(out, head);
-    let _ = write!(out, "… ({n} characters)");
+    let _ = write!(out, "{}{n}{}", CUT[0], CUT[1]);
 }
+
+/// What follows a name cut to `SHOWN_NAME` characters, before and after
+/// its length.
+const CUT: [&str; 2] = ["… (", " characters)"];
 
 /// `push_name` into a new string.
 pub fn name(name: &str) -> String {
@@ -149,15 +159,23 @@ pub fn fmt_percent(fraction: Option<f64>) -> String {
 
 /// Append `fmt_percent(fraction)` to `out`.
 pub fn push_percent(out: &mut String, fraction: Option<f64>) {
-    match fraction.map(|f| (f, f * 100.0)) {
-        Some((_, p)) if p.is_finite() => {
+    match percent(fraction) {
+        Ok(p) => {
             push_sig(out, p, 3);
             out.push_str(" %");
         }
-        // A ratio beyond f64 as a percentage: said, never `inf %`.
-        Some((f, _)) if f > 0.0 => out.push_str("> 1e306 %"),
-        Some((f, _)) if f < 0.0 => out.push_str("< -1e306 %"),
-        _ => out.push_str(UNDEFINED),
+        Err(word) => out.push_str(word),
+    }
+}
+
+/// A fraction as a percentage, or the words that stand for it: a ratio
+/// beyond f64 as a percentage said, never `inf %`; `None` as `UNDEFINED`.
+fn percent(fraction: Option<f64>) -> Result<f64, &'static str> {
+    match fraction.map(|f| (f, f * 100.0)) {
+        Some((_, p)) if p.is_finite() => Ok(p),
+        Some((f, _)) if f > 0.0 => Err("> 1e306 %"),
+        Some((f, _)) if f < 0.0 => Err("< -1e306 %"),
+        _ => Err(UNDEFINED),
     }
 }
 
@@ -182,6 +200,38 @@ pub fn push_sig(out: &mut String, x: f64, digits: usize) {
     if !rounded::push_sig_fast(out, x, digits.max(1) - 1) {
         push_sig_exact(out, x, digits);
     }
+}
+
+/// The length of `fmt_sig(x, digits)` (ASCII: its width in columns too),
+/// from the rounded digits without writing them where `push_sig` writes
+/// from those, else by writing it aside (zero, a tie of the shortest
+/// digits, a number not normal).
+pub fn sig_width(x: f64, digits: usize) -> usize {
+    debug_assert!((1..=40).contains(&digits), "the buffers hold 40 digits");
+    if x == 0.0 {
+        // `push_sig_exact`'s `0`, either sign.
+        return 1;
+    }
+    rounded::sig_len(x, digits.max(1) - 1).unwrap_or_else(|| {
+        let mut s = String::new();
+        push_sig_exact(&mut s, x, digits);
+        s.len()
+    })
+}
+
+/// The width in columns of `fmt_percent(fraction)`, without writing it.
+pub fn percent_width(fraction: Option<f64>) -> usize {
+    use unicode_width::UnicodeWidthStr;
+    match percent(fraction) {
+        Ok(p) => sig_width(p, 3) + " %".len(),
+        Err(word) => word.width(),
+    }
+}
+
+/// Whether `fmt_percent(fraction)` is ASCII (as wide as it is long): a
+/// number, not `UNDEFINED`.
+pub fn percent_is_ascii(fraction: Option<f64>) -> bool {
+    percent(fraction).map_or_else(|word| word.is_ascii(), |_| true)
 }
 
 /// `push_sig` from the exact rounding (`{:.N$e}`): a tie of the shortest

@@ -7,6 +7,11 @@ use std::ops::Range;
 
 use unicode_width::UnicodeWidthStr;
 
+mod blocks;
+mod typed;
+pub use blocks::with_threads;
+pub use typed::{Cell, CellSink, stream_cells};
+
 /// A table in the style every massprop table uses.
 pub fn new_table() -> Table {
     let mut t = Table::new();
@@ -267,17 +272,7 @@ fn write_part(
         shown[i] = true;
     }
     let last = *cols.last().expect("invariant: a part has a column");
-    let rule = |out: &mut String, [left, fill, junction, end]: [char; 4]| {
-        out.push(left);
-        for (k, &i) in cols.iter().enumerate() {
-            if k > 0 {
-                out.push(junction);
-            }
-            out.extend(std::iter::repeat_n(fill, widths[i] + 2));
-        }
-        out.push(end);
-        out.push('\n');
-    };
+    let rule = |out: &mut String, chars: [char; 4]| push_rule(out, widths, cols, chars);
     let row = |out: &mut String, row: &mut dyn Iterator<Item = &str>| {
         out.push('│');
         for (i, c) in row.enumerate() {
@@ -318,6 +313,21 @@ fn write_part(
     failed?;
     rule(&mut buf, ['└', '─', '┴', '┘']);
     out.write_all(buf.as_bytes())
+}
+
+/// A rule of the columns `cols`, `widths` wide: its left end, its line,
+/// the junctions between columns and its right end, then a newline.
+fn push_rule(out: &mut String, widths: &[usize], cols: &[usize], chars: [char; 4]) {
+    let [left, fill, junction, end] = chars;
+    out.push(left);
+    for (k, &i) in cols.iter().enumerate() {
+        if k > 0 {
+            out.push(junction);
+        }
+        out.extend(std::iter::repeat_n(fill, widths[i] + 2));
+    }
+    out.push(end);
+    out.push('\n');
 }
 
 /// Whether `c` is printable ASCII alone: a column a character, no break.

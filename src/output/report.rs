@@ -4,11 +4,11 @@
 
 use super::format::{
     DisplayUnits, MOMENT_UNIT, UNDEFINED, equal_note, fmt_bounded, fmt_num, name, precision_label,
-    products_label, push_name, push_percent, push_sig,
+    products_label, push_percent,
 };
-use super::grid::{Cells, Fit, stream_table, write_rows, write_table};
+use super::grid::{Cells, Fit, write_rows, write_table};
 use crate::analysis::ideal::Idealisation;
-use crate::analysis::summary::{Row, Summary};
+use crate::analysis::summary::Summary;
 use crate::quantity;
 use crate::units::Dim;
 use std::fmt::Write;
@@ -16,6 +16,7 @@ use std::fmt::Write;
 mod axles;
 pub mod cases;
 pub mod envelope;
+mod full;
 mod json_rows;
 mod motion;
 mod short;
@@ -442,77 +443,9 @@ pub fn write_table_to(
     }
 
     let _ = writeln!(out, "\nparts");
-    let header = [
-        "#".to_string(),
-        "name".to_string(),
-        "shape".to_string(),
-        format!("mass ({})", u.mass_label),
-        "mass share".to_string(),
-        format!("centroid x ({})", u.length_label),
-        "y".to_string(),
-        "z".to_string(),
-        "I1 share".to_string(),
-        "I2 share".to_string(),
-        "I3 share".to_string(),
-    ];
-    // Left-aligned: name and shape.
-    let right: Vec<bool> = (0..header.len()).map(|i| !(1..3).contains(&i)).collect();
     w.write_all(out.as_bytes())?;
     out.clear();
-    let mut cells = Cells::with_capacity(header.len());
-    let mut undefined = false;
-    // Split, each part keeps the number and the name, and the centroid's
-    // coordinates and the shares together.
-    let parts_fit = Fit {
-        groups: &[(5, 8), (8, 11)],
-        ..Fit::new(width, 2)
-    };
-    // NOTE: the path of sub-assemblies (`a / b / `) is made once per
-    // sub-assembly entered (`Parts::each_row`), not per part; each row's
-    // name is that and the part's own.
-    let mut prefix = String::new();
-    let mut lengths = Vec::new();
-    let mut name = String::new();
-    stream_table(w, &header, &right, parts_fit, &mut |sink| {
-        let mut i = 0usize;
-        prefix.clear();
-        lengths.clear();
-        s.parts.each_row(&mut |r| {
-            let p = match r {
-                Row::Enter(n) => {
-                    lengths.push(prefix.len());
-                    prefix.push_str(n);
-                    prefix.push_str(" / ");
-                    return;
-                }
-                Row::Exit => {
-                    prefix.truncate(lengths.pop().expect("an Exit follows its Enter"));
-                    return;
-                }
-                Row::Part(p) => p,
-            };
-            cells.clear();
-            i += 1;
-            let _ = write!(cells.text, "{i}");
-            cells.end();
-            name.clear();
-            name.push_str(&prefix);
-            p.push_name(&mut name);
-            push_name(&mut cells.text, &name);
-            cells.end();
-            cells.text.push_str(p.shape.name());
-            cells.end();
-            push_figures(
-                &mut cells,
-                &u,
-                (p.mass, p.mass_fraction),
-                &p.center_of_mass,
-                &p.principal_moment_share,
-            );
-            undefined |= p.principal_moment_share.contains(&None);
-            sink(&cells);
-        });
-    })?;
+    let undefined = full::parts(w, s, &u, width)?;
     let _ = writeln!(
         out,
         "I1–I3 share: each part's share of each principal moment about the centre of mass"
@@ -526,7 +459,7 @@ pub fn write_table_to(
     if !s.assemblies.is_empty() {
         w.write_all(out.as_bytes())?;
         out.clear();
-        assemblies(w, s, &u, width)?;
+        full::assemblies(w, s, &u, width)?;
     }
     if let Some(i) = &s.idealisation {
         idealisation(&mut out, i, &u, width);
@@ -632,81 +565,6 @@ fn uncertainty(
         push_percent(out, Some(e.probability));
         out.push('\n');
     }
-}
-
-/// The cells a part's and a sub-assembly's rows share: mass and its share,
-/// centre of mass, shares of the principal moments.
-fn push_figures(
-    cells: &mut Cells,
-    u: &DisplayUnits,
-    (mass, fraction): (f64, f64),
-    center: &[f64; 3],
-    shares: &[Option<f64>; 3],
-) {
-    push_sig(&mut cells.text, mass / u.mass, 6);
-    cells.end();
-    push_percent(&mut cells.text, Some(fraction));
-    cells.end();
-    for x in center {
-        push_sig(&mut cells.text, x / u.length, 6);
-        cells.end();
-    }
-    for share in shares {
-        push_percent(&mut cells.text, *share);
-        cells.end();
-    }
-}
-
-/// The sub-assemblies section: each with its mass, centre of mass and
-/// shares, indented by depth.
-fn assemblies(
-    w: &mut dyn std::io::Write,
-    s: &Summary,
-    u: &DisplayUnits,
-    width: Option<usize>,
-) -> std::io::Result<()> {
-    let header = [
-        "sub-assembly".to_string(),
-        "parts".to_string(),
-        format!("mass ({})", u.mass_label),
-        "mass share".to_string(),
-        format!("centre of mass x ({})", u.length_label),
-        "y".to_string(),
-        "z".to_string(),
-        "I1 share".to_string(),
-        "I2 share".to_string(),
-        "I3 share".to_string(),
-    ];
-    let right: Vec<bool> = (0..header.len()).map(|i| i >= 1).collect();
-    w.write_all(b"\nsub-assemblies\n")?;
-    let mut cells = Cells::with_capacity(header.len());
-    let fit = Fit {
-        groups: &[(4, 7), (7, 10)],
-        ..fit(width)
-    };
-    stream_table(w, &header, &right, fit, &mut |sink| {
-        s.assemblies.each(&mut |a| {
-            cells.clear();
-            for _ in 1..a.path.len() {
-                cells.text.push_str("  ");
-            }
-            push_name(
-                &mut cells.text,
-                a.path.last().expect("a path is never empty"),
-            );
-            cells.end();
-            let _ = write!(cells.text, "{}", a.parts);
-            cells.end();
-            push_figures(
-                &mut cells,
-                u,
-                (a.mass, a.mass_fraction),
-                &a.center_of_mass,
-                &a.principal_moment_share,
-            );
-            sink(&cells);
-        });
-    })
 }
 
 /// The idealisation section: the change of each principal moment with the

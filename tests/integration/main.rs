@@ -30,6 +30,7 @@ mod expect_axes;
 mod explain;
 mod files;
 mod frames;
+mod full_speed;
 mod honesty;
 mod hostile;
 mod hostile_round_two;

@@ -213,6 +213,14 @@ impl Assemblies {
     /// changes: `AssemblyRow::Enter` with its name and its row (its
     /// `path` left empty), then its children's, then `AssemblyRow::Exit`.
     pub fn each_row(&self, f: &mut dyn FnMut(AssemblyRow<'_>)) {
+        self.summed().each_row(f);
+    }
+
+    /// Every sub-assembly summed (one walk of the parts), for its rows to
+    /// be walked as often as a writer needs (`Summed::each_row`, a walk of
+    /// the sub-assemblies alone): the `--full` table measures its columns,
+    /// then writes them.
+    pub fn summed(&self) -> Summed<'_> {
         let s = &*self.0;
         /// A sub-assembly being summed: where its sums go, its items'
         /// masses and centres, its parts and shares.
@@ -224,13 +232,17 @@ impl Assemblies {
         }
         let mut sums: Vec<Sums> = Vec::new();
         let mut open: Vec<Open> = Vec::new();
+        // The items' lists of the sub-assemblies left, for the next ones
+        // entered: not an allocation per sub-assembly (a tree of 2²⁰
+        // instances has as many).
+        let mut spare: Vec<Vec<(f64, [f64; 3])>> = Vec::new();
         // NOTE: the parts placed as the rows' walk places them: the same
         // bits, no bound of their rounding formed (`Model::each_row`).
         s.model.each_row(&mut |e| match e {
             RowEvent::Enter(_) => {
                 open.push(Open {
                     at: sums.len(),
-                    items: Vec::new(),
+                    items: spare.pop().unwrap_or_default(),
                     parts: 0,
                     share: [Some(0.0); 3],
                 });
@@ -253,10 +265,13 @@ impl Assemblies {
                 }
             }
             RowEvent::Exit => {
-                let done = open.pop().expect("an Exit follows its Enter");
+                let mut done = open.pop().expect("an Exit follows its Enter");
                 let mass: f64 = done.items.iter().map(|(m, _)| m).sum();
                 let center_of_mass =
                     std::array::from_fn(|i| done.items.iter().map(|(m, c)| m / mass * c[i]).sum());
+                let mut items = std::mem::take(&mut done.items);
+                items.clear();
+                spare.push(items);
                 let sum = Sums {
                     parts: done.parts,
                     mass,
@@ -277,6 +292,27 @@ impl Assemblies {
                 }
             }
         });
+        Summed { data: s, sums }
+    }
+
+    /// All the rows, in memory (for tests).
+    pub fn collect(&self) -> Vec<AssemblySummary> {
+        let mut all = Vec::new();
+        self.each(&mut |r| all.push(r.clone()));
+        all
+    }
+}
+
+/// Every sub-assembly's sums, in the order the walk enters them
+/// (`Assemblies::summed`): ~88 bytes a sub-assembly.
+pub struct Summed<'a> {
+    data: &'a RowData,
+    sums: Vec<Sums>,
+}
+
+impl Summed<'_> {
+    /// As `Assemblies::each_row`.
+    pub fn each_row(&self, f: &mut dyn FnMut(AssemblyRow<'_>)) {
         let mut row = AssemblySummary {
             path: Vec::new(),
             parts: 0,
@@ -286,14 +322,8 @@ impl Assemblies {
             principal_moment_share: [None; 3],
         };
         let mut next = 0;
-        write(&s.model, &sums, &mut next, &mut row, s.mass, f);
-    }
-
-    /// All the rows, in memory (for tests).
-    pub fn collect(&self) -> Vec<AssemblySummary> {
-        let mut all = Vec::new();
-        self.each(&mut |r| all.push(r.clone()));
-        all
+        let s = self.data;
+        write(&s.model, &self.sums, &mut next, &mut row, s.mass, f);
     }
 }
 

@@ -31,59 +31,180 @@ fn push_rounded_sci(buf: &mut Ascii<64>, x: f64, places: usize) {
 }
 
 /// `push_sig`'s text of `x` to `places` + 1 significant digits, after
-/// `out`, made from the rounded digits (`rounded`) with no text between:
-/// whether it was (else a tie, a number not normal, more than 15 digits
-/// or a whole number past the digits, `push_sig`'s own path).
+/// `out`, made from the rounded digits (`digits`) with no text between:
+/// whether it was (else a tie of the shortest digits, a number not
+/// normal, more than 15 digits or a whole number past the digits,
+/// `push_sig`'s own path).
 ///
 /// NOTE: the same text as `push_sig` writes from `{x:.places$e}`: with an
 /// exponent outside −4..6, the digits without trailing zeros; else fixed,
 /// trailing zeros and a bare point dropped
 /// (`push_sig_from_the_rounded_digits_is_push_sig_from_the_exact_rounding`).
 pub(super) fn push_sig_fast(out: &mut String, x: f64, places: usize) -> bool {
-    if places > 14 || !x.is_normal() {
-        return false;
-    }
-    let Some((neg, d, exp)) = rounded(x, places) else {
+    let Some(s) = Sig::of(x, places) else {
         return false;
     };
-    // Made as bytes (at most a sign, 15 digits, a point, 4 zeros and an
-    // exponent's 5), then appended at once.
-    let mut text = Text::default();
-    if neg {
-        text.push(b'-');
-    }
-    if !(-4..6).contains(&exp) {
-        text.push(b'0' + d[0]);
-        // The digits after the first, without trailing zeros.
-        if let Some(last) = (1..=places).rev().find(|&k| d[k] != 0) {
-            text.push(b'.');
-            text.digits(&d[1..=last]);
-        }
-        text.push(b'e');
-        text.int(exp);
-    } else if exp > places as i32 {
-        return false;
-    } else {
-        // Fixed: the digits before the point, then after it.
-        let (before, zeros) = if exp >= 0 {
-            (exp as usize + 1, 0)
-        } else {
-            (0, (-exp - 1) as usize)
-        };
-        if before == 0 {
-            text.push(b'0');
-        }
-        text.digits(&d[..before]);
-        if let Some(last) = (before..=places).rev().find(|&k| d[k] != 0) {
-            text.push(b'.');
-            for _ in 0..zeros {
-                text.push(b'0');
-            }
-            text.digits(&d[before..=last]);
-        }
-    }
-    out.push_str(std::str::from_utf8(text.as_bytes()).expect("invariant: ASCII"));
+    out.push_str(std::str::from_utf8(s.text().as_bytes()).expect("invariant: ASCII"));
     true
+}
+
+/// `push_sig_fast` after bytes.
+pub(super) fn extend_sig_fast(out: &mut Vec<u8>, x: f64, places: usize) -> bool {
+    let Some(s) = Sig::of(x, places) else {
+        return false;
+    };
+    out.extend_from_slice(s.text().as_bytes());
+    true
+}
+
+/// The length of the text `push_sig_fast` writes for `x`, counted from its
+/// digits and exponent without writing it; `None` where it writes none.
+pub(super) fn sig_len(x: f64, places: usize) -> Option<usize> {
+    let s = Sig::of(x, places)?;
+    let digits = match s.layout {
+        // d, then `.` and the digits up to the last not zero, `e`, the
+        // exponent.
+        Layout::Sci => 1 + if s.last > 0 { 1 + s.last } else { 0 } + 1 + int_len(s.exp),
+        // `0` or the digits before the point, then `.`, the zeros and the
+        // digits up to the last not zero.
+        Layout::Fixed { before, zeros } => {
+            before.max(1)
+                + if s.last >= before {
+                    1 + zeros + s.last + 1 - before
+                } else {
+                    0
+                }
+        }
+    };
+    Some(usize::from(s.neg) + digits)
+}
+
+/// The length of `n` in decimal, as `Text::int` writes it.
+fn int_len(n: i32) -> usize {
+    let mut m = n.unsigned_abs();
+    let mut len = 1 + usize::from(n < 0);
+    while m >= 10 {
+        m /= 10;
+        len += 1;
+    }
+    len
+}
+
+/// A number rounded for `push_sig`: its sign, its digits without
+/// trailing zeros (as one integer: the first not zero), the index of the
+/// last of them, the decimal exponent of the first, and how it is written.
+struct Sig {
+    neg: bool,
+    digits: u64,
+    last: usize,
+    exp: i32,
+    layout: Layout,
+}
+
+/// `push_sig`'s two notations.
+#[derive(Clone, Copy)]
+enum Layout {
+    /// `d.ddde±x`: an exponent outside −4..6.
+    Sci,
+    /// `ddd.ddd` or `0.000ddd`: `before` digits before the point, `zeros`
+    /// zeros after it before the first digit.
+    Fixed { before: usize, zeros: usize },
+}
+
+impl Sig {
+    /// `x` to `places` + 1 digits: from the integer scaling (`scaled`),
+    /// else from the shortest digits rounded (`rounded`); `None` where
+    /// neither answers or the fixed notation would round to a whole
+    /// number past the digits.
+    fn of(x: f64, places: usize) -> Option<Sig> {
+        if places > 14 || !x.is_normal() {
+            return None;
+        }
+        let (neg, n, exp) = match super::scaled::scaled(x, places) {
+            Some(r) => r,
+            None => {
+                let (neg, d, exp) = rounded(x, places)?;
+                let n = d[..=places]
+                    .iter()
+                    .fold(0u64, |n, &k| n * 10 + u64::from(k));
+                (neg, n, exp)
+            }
+        };
+        if n == 0 {
+            return None;
+        }
+        let (mut digits, mut last) = (n, places);
+        while digits % 10 == 0 {
+            digits /= 10;
+            last -= 1;
+        }
+        let layout = if !(-4..6).contains(&exp) {
+            Layout::Sci
+        } else if exp > places as i32 {
+            return None;
+        } else if exp >= 0 {
+            Layout::Fixed {
+                before: exp as usize + 1,
+                zeros: 0,
+            }
+        } else {
+            Layout::Fixed {
+                before: 0,
+                zeros: (-exp - 1) as usize,
+            }
+        };
+        Some(Sig {
+            neg,
+            digits,
+            last,
+            exp,
+            layout,
+        })
+    }
+
+    /// Its text, as `push_sig` writes it: with an exponent, the digits
+    /// without trailing zeros; fixed, trailing zeros and a bare point
+    /// dropped.
+    fn text(&self) -> Text {
+        // The digits, 0 past the last (up to `places`).
+        let mut d = [0u8; 16];
+        let mut t = self.digits;
+        for k in (0..=self.last).rev() {
+            d[k] = (t % 10) as u8;
+            t /= 10;
+        }
+        // At most a sign, 15 digits, a point, 4 zeros and an exponent's 5.
+        let mut text = Text::default();
+        if self.neg {
+            text.push(b'-');
+        }
+        match self.layout {
+            Layout::Sci => {
+                text.push(b'0' + d[0]);
+                if self.last > 0 {
+                    text.push(b'.');
+                    text.digits(&d[1..=self.last]);
+                }
+                text.push(b'e');
+                text.int(self.exp);
+            }
+            Layout::Fixed { before, zeros } => {
+                // The digits before the point, then after it.
+                if before == 0 {
+                    text.push(b'0');
+                }
+                text.digits(&d[..before]);
+                if self.last >= before {
+                    text.push(b'.');
+                    for _ in 0..zeros {
+                        text.push(b'0');
+                    }
+                    text.digits(&d[before..=self.last]);
+                }
+            }
+        }
+        text
+    }
 }
 
 /// A number's text as it is made, on the stack.
@@ -295,6 +416,95 @@ mod tests {
                     Ok(())
                 },
             )
+            .unwrap();
+    }
+
+    /// Numbers of every kind a width is asked of: every bit pattern
+    /// (subnormals, huge and tiny exponents, infinities, NaN); short
+    /// decimals and dyadic fractions scaled by powers of ten and the
+    /// doubles next to them (ties and near ties); shares; and the edges.
+    fn any_number() -> impl proptest::strategy::Strategy<Value = f64> {
+        use proptest::prelude::*;
+        let few = (any::<i32>(), -30i32..30, 0u32..4, -2i64..=2).prop_map(|(m, e, cut, step)| {
+            let m = f64::from(m / 10i32.pow(cut));
+            let x = m * 10f64.powi(e);
+            f64::from_bits(x.to_bits().wrapping_add_signed(step))
+        });
+        let dyadic = (any::<i32>(), -60i32..60).prop_map(|(m, e)| f64::from(m) * 2f64.powi(e));
+        let any_bits = any::<u64>().prop_map(f64::from_bits);
+        let subnormal = (1u64..(1 << 52), any::<bool>())
+            .prop_map(|(m, neg)| f64::from_bits(m | (u64::from(neg) << 63)));
+        let shares =
+            (1u32..1_000_000, 1u32..5000).prop_map(|(a, b)| 100.0 * f64::from(a) / f64::from(b));
+        let edges = prop::sample::select(vec![
+            0.0,
+            -0.0,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            5e-324,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            999_999.5,
+            99_999.95,
+            0.000_099_999_95,
+            1e-5,
+            1e6,
+        ]);
+        prop_oneof![few, dyadic, any_bits, subnormal, shares, edges]
+    }
+
+    #[test]
+    fn a_numbers_width_is_the_length_of_its_text() {
+        use proptest::prelude::*;
+        use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+        let mut runner = TestRunner::new_with_rng(
+            Config::with_cases(50_000),
+            TestRng::deterministic_rng(RngAlgorithm::ChaCha),
+        );
+        runner
+            .run(&(any_number(), 1usize..=16), |(x, digits)| {
+                let text = super::super::fmt_sig(x, digits);
+                prop_assert_eq!(
+                    super::super::sig_width(x, digits),
+                    text.chars().count(),
+                    "{:e} to {} digits: {:?}",
+                    x,
+                    digits,
+                    text
+                );
+                Ok(())
+            })
+            .unwrap();
+    }
+
+    #[test]
+    fn a_percentages_width_is_the_width_of_its_text() {
+        use proptest::prelude::*;
+        use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+        use unicode_width::UnicodeWidthStr;
+        let mut runner = TestRunner::new_with_rng(
+            Config::with_cases(20_000),
+            TestRng::deterministic_rng(RngAlgorithm::ChaCha),
+        );
+        let fraction = prop_oneof![
+            9 => any_number().prop_map(Some),
+            1 => Just(None),
+        ];
+        runner
+            .run(&fraction, |f| {
+                let text = super::super::fmt_percent(f);
+                prop_assert_eq!(
+                    super::super::percent_width(f),
+                    text.width(),
+                    "{:?}: {:?}",
+                    f,
+                    text
+                );
+                Ok(())
+            })
             .unwrap();
     }
 

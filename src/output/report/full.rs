@@ -1,0 +1,165 @@
+//! The full report's tables of a row per part and per sub-assembly,
+//! streamed from the model's walk as typed cells (`grid::stream_cells`):
+//! a body of 2²⁰ instances has as many rows of each, never all held.
+
+use super::super::format::DisplayUnits;
+use super::super::grid::{Cell, Fit, stream_cells};
+use crate::analysis::summary::{AssemblyRow, Row, Summary};
+
+/// The cells a part's and a sub-assembly's rows share: mass and its
+/// share, centre of mass, shares of the principal moments.
+fn figures(
+    u: &DisplayUnits,
+    (mass, fraction): (f64, f64),
+    center: &[f64; 3],
+    shares: &[Option<f64>; 3],
+) -> [Cell<'static>; 8] {
+    let at = |x: f64| Cell::Sig(x / u.length, 6);
+    [
+        Cell::Sig(mass / u.mass, 6),
+        Cell::Percent(Some(fraction)),
+        at(center[0]),
+        at(center[1]),
+        at(center[2]),
+        Cell::Percent(shares[0]),
+        Cell::Percent(shares[1]),
+        Cell::Percent(shares[2]),
+    ]
+}
+
+/// A row: its first cells, then its figures.
+fn row<'a, const N: usize, const M: usize>(
+    first: [Cell<'a>; N],
+    figures: [Cell<'a>; 8],
+) -> [Cell<'a>; M] {
+    debug_assert_eq!(
+        N + 8,
+        M,
+        "invariant: a row is its first cells and its figures"
+    );
+    std::array::from_fn(|i| if i < N { first[i] } else { figures[i - N] })
+}
+
+/// The parts table, a row per part in file order; whether a principal
+/// moment had no shares (the note below the table says what `—` means).
+pub(super) fn parts(
+    w: &mut dyn std::io::Write,
+    s: &Summary,
+    u: &DisplayUnits,
+    width: Option<usize>,
+) -> std::io::Result<bool> {
+    let header = [
+        "#".to_string(),
+        "name".to_string(),
+        "shape".to_string(),
+        format!("mass ({})", u.mass_label),
+        "mass share".to_string(),
+        format!("centroid x ({})", u.length_label),
+        "y".to_string(),
+        "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
+    ];
+    // Left-aligned: name and shape.
+    let right: Vec<bool> = (0..header.len()).map(|i| !(1..3).contains(&i)).collect();
+    let mut undefined = false;
+    // Split, each part keeps the number and the name, and the centroid's
+    // coordinates and the shares together.
+    let fit = Fit {
+        groups: &[(5, 8), (8, 11)],
+        ..Fit::new(width, 2)
+    };
+    // NOTE: the path of sub-assemblies (`a / b / `) is made once per
+    // sub-assembly entered (`Parts::each_row`), not per part; each row's
+    // name is that and the part's own.
+    let mut prefix = String::new();
+    let mut lengths = Vec::new();
+    let mut name = String::new();
+    stream_cells(w, &header, &right, fit, &mut |sink| {
+        let mut i = 0usize;
+        prefix.clear();
+        lengths.clear();
+        s.parts.each_row(&mut |r| {
+            let p = match r {
+                Row::Enter(n) => {
+                    lengths.push(prefix.len());
+                    prefix.push_str(n);
+                    prefix.push_str(" / ");
+                    return;
+                }
+                Row::Exit => {
+                    prefix.truncate(lengths.pop().expect("an Exit follows its Enter"));
+                    return;
+                }
+                Row::Part(p) => p,
+            };
+            i += 1;
+            name.clear();
+            name.push_str(&prefix);
+            p.push_name(&mut name);
+            undefined |= p.principal_moment_share.contains(&None);
+            let figures = figures(
+                u,
+                (p.mass, p.mass_fraction),
+                &p.center_of_mass,
+                &p.principal_moment_share,
+            );
+            let first = [
+                Cell::Count(i),
+                Cell::Name(&name),
+                Cell::Text(p.shape.name()),
+            ];
+            sink(&row::<3, 11>(first, figures));
+        });
+    })?;
+    Ok(undefined)
+}
+
+/// The sub-assemblies section: each with its mass, centre of mass and
+/// shares, indented by depth, parents before children.
+pub(super) fn assemblies(
+    w: &mut dyn std::io::Write,
+    s: &Summary,
+    u: &DisplayUnits,
+    width: Option<usize>,
+) -> std::io::Result<()> {
+    let header = [
+        "sub-assembly".to_string(),
+        "parts".to_string(),
+        format!("mass ({})", u.mass_label),
+        "mass share".to_string(),
+        format!("centre of mass x ({})", u.length_label),
+        "y".to_string(),
+        "z".to_string(),
+        "I1 share".to_string(),
+        "I2 share".to_string(),
+        "I3 share".to_string(),
+    ];
+    let right: Vec<bool> = (0..header.len()).map(|i| i >= 1).collect();
+    w.write_all(b"\nsub-assemblies\n")?;
+    let fit = Fit {
+        groups: &[(4, 7), (7, 10)],
+        ..super::fit(width)
+    };
+    // NOTE: summed once (a walk placing every part), walked twice.
+    let summed = s.assemblies.summed();
+    stream_cells(w, &header, &right, fit, &mut |sink| {
+        // How deep the walk is: a sub-assembly's indent is one less.
+        let mut depth = 0usize;
+        summed.each_row(&mut |r| match r {
+            AssemblyRow::Enter(name, a) => {
+                let figures = figures(
+                    u,
+                    (a.mass, a.mass_fraction),
+                    &a.center_of_mass,
+                    &a.principal_moment_share,
+                );
+                let first = [Cell::Indented(depth, name), Cell::Count(a.parts)];
+                sink(&row::<2, 10>(first, figures));
+                depth += 1;
+            }
+            AssemblyRow::Exit => depth -= 1,
+        });
+    })
+}
