@@ -49,6 +49,11 @@ by eps·P, which moves its share of the inertia by about m·eps·P·R (R the
 radius of gyration), eps·P/R of the whole: the tolerance is
 max(1e-12, 32·eps·P/R), P the farthest link origin from the origin.
 
+Files with `<include>`s are given to Drake as drake_view() copies them
+(include URIs made the absolute paths massprop resolves them to: Drake's
+resolver finds neither relative URIs nor `model://` siblings), with
+`--package` for massprop where a `model://NAME` is a package.
+
 Generated models with nested `<model>`s, a `<world>` or an `<include>`
 (`--nested K` of each) are checked like the rest: a refusal of any
 generated model is a failure. Joints are named by the model that declares
@@ -67,11 +72,13 @@ printed, with the file, the joint values and both bodies).
 """
 
 import argparse
+import atexit
 import glob
 import logging
 import math
 import os
 import random
+import re
 import shutil
 import sys
 import tempfile
@@ -187,11 +194,11 @@ class DrakeRobot:
         which may be nested below the declaring model (a joint of the outer
         model to `sub::link`): the longest scope of Drake's instance under
         which the file declares a joint of that name is the one."""
-        if self.top is None:
+        if self.top is None and not self.declared:
             return j.name()
         instance = self.plant.GetModelInstanceName(j.model_instance())
         parts = instance.split("::")
-        if parts[0] == self.top:
+        if self.top is not None and parts[0] == self.top:
             parts = parts[1:]
         for k in range(len(parts), -1, -1):
             name = "::".join(parts[:k] + [j.name()])
@@ -306,15 +313,90 @@ def followers(path):
         for sub in model.findall("model"):
             walk(sub, f"{prefix}{sub.get('name')}::")
         for inc in model.findall("include"):
-            uri = (inc.findtext("uri") or "").strip().removeprefix("file://")
-            included = ET.parse(uri).getroot().find("model")
+            included = ET.parse(included_file(inc.findtext("uri") or "", os.path.dirname(path))).getroot().find("model")
             walk(included, f"{prefix}{(inc.findtext('name') or included.get('name')).strip()}::")
 
     root = ET.parse(path).getroot()
     tops = root.findall("model") + [m for w in root.findall("world") for m in w.findall("model")]
+    incs = [i for w in root.findall("world") for i in w.findall("include")]
     for top in tops:
-        walk(top, "" if len(tops) == 1 else f"{top.get('name')}::")
+        walk(top, "" if len(tops) + len(incs) == 1 else f"{top.get('name')}::")
+    for inc in incs:
+        included = ET.parse(included_file(inc.findtext("uri") or "", os.path.dirname(path))).getroot().find("model")
+        name = (inc.findtext("name") or included.get("name")).strip()
+        walk(included, "" if len(tops) + len(incs) == 1 else f"{name}::")
     return out
+
+
+def included_file(uri, here):
+    """The file an `<include>`'s `file://` URI (absolute, as drake_view
+    writes them) or relative path names: a directory's model.config's
+    first `<sdf>`, else its model.sdf."""
+    p = os.path.join(here, uri.strip().removeprefix("file://"))
+    if os.path.isdir(p):
+        config = os.path.join(p, "model.config")
+        if os.path.exists(config):
+            return os.path.join(p, ET.parse(config).getroot().findtext("sdf").strip())
+        return os.path.join(p, "model.sdf")
+    return p
+
+
+def drake_view(path, tmp):
+    """(a file Drake reads as massprop reads `path`, massprop's extra
+    arguments). Drake's resolver finds neither relative include URIs nor
+    `model://NAME` beside the including model's directory, and wants a
+    model.config in an included directory, where SDFormat's rules (and
+    massprop) take model.sdf: the file's directory is copied, each include
+    URI written as the absolute `file://` path of what massprop resolves
+    it to, and a model.config given to a directory that has none. A
+    `model://NAME` found in no sibling directory is a package: the
+    directory named NAME under the file's directory, given to massprop as
+    `--package NAME=DIR`."""
+    text = open(path).read()
+    if not path.endswith(".sdf") or "<include" not in text:
+        return path, []
+    top = os.path.dirname(os.path.abspath(path))
+    copy = tempfile.mkdtemp(prefix="drake-view-", dir=tmp)
+    shutil.rmtree(copy)
+    shutil.copytree(top, copy)
+    packages = {}
+
+    def resolved(uri, here):
+        if uri.startswith("model://"):
+            name = uri[len("model://") :].strip("/")
+            sibling = os.path.join(os.path.dirname(here), name)
+            if os.path.isdir(sibling):
+                return sibling
+            for d, dirs, _ in os.walk(copy):
+                if name in dirs:
+                    packages[name] = os.path.relpath(os.path.join(d, name), copy)
+                    return os.path.join(d, name)
+            return uri
+        if "://" in uri:
+            return uri.removeprefix("file://")
+        return os.path.normpath(os.path.join(here, uri))
+
+    for d, _, files in os.walk(copy):
+        if "model.sdf" in files and "model.config" not in files:
+            with open(os.path.join(d, "model.config"), "w") as f:
+                f.write('<?xml version="1.0"?>\n<model><sdf version="1.9">model.sdf</sdf></model>\n')
+        for name in files:
+            if not name.endswith(".sdf"):
+                continue
+            p = os.path.join(d, name)
+            t = open(p).read()
+            t = re.sub(
+                r"(<include>(?:(?!</include>).)*?<uri>)\s*([^<]*?)\s*(</uri>)",
+                lambda m: m.group(1) + "file://" + resolved(m.group(2), d) + m.group(3),
+                t,
+                flags=re.S,
+            )
+            with open(p, "w") as f:
+                f.write(t)
+    extra = []
+    for name, rel in sorted(packages.items()):
+        extra += ["--package", f"{name}={os.path.join(top, rel)}"]
+    return os.path.join(copy, os.path.relpath(os.path.abspath(path), top)), extra
 
 
 def declared_joints(path):
@@ -330,17 +412,25 @@ def declared_joints(path):
         for sub in model.findall("model"):
             walk(sub, f"{prefix}{sub.get('name')}::", here)
         for inc in model.findall("include"):
-            uri = (inc.findtext("uri") or "").strip().removeprefix("file://")
             try:
-                included = ET.parse(os.path.join(here, uri)).getroot().find("model")
+                included = ET.parse(included_file(inc.findtext("uri") or "", here)).getroot().find("model")
             except (OSError, ET.ParseError):
                 continue
             walk(included, f"{prefix}{(inc.findtext('name') or included.get('name')).strip()}::", here)
 
     root = ET.parse(path).getroot()
+    here = os.path.dirname(path)
     tops = root.findall("model") + [m for w in root.findall("world") for m in w.findall("model")]
+    incs = [i for w in root.findall("world") for i in w.findall("include")]
     for top in tops:
-        walk(top, "" if len(tops) == 1 else f"{top.get('name')}::", os.path.dirname(path))
+        walk(top, "" if len(tops) + len(incs) == 1 else f"{top.get('name')}::", here)
+    for inc in incs:
+        try:
+            included = ET.parse(included_file(inc.findtext("uri") or "", here)).getroot().find("model")
+        except (OSError, ET.ParseError):
+            continue
+        name = (inc.findtext("name") or included.get("name")).strip()
+        walk(included, "" if len(tops) + len(incs) == 1 else f"{name}::", here)
     return out
 
 
@@ -380,6 +470,9 @@ def tolerance(body, far):
 
 
 KEPT = []
+# Where drake_view copies a file's directory for Drake's resolver.
+VIEWS = tempfile.mkdtemp(prefix="drake-views-")
+atexit.register(shutil.rmtree, VIEWS, True)
 # Configurations Pinocchio (pin_of_drake.py) composed too.
 PINNED = [0]
 
@@ -396,26 +489,27 @@ def kept(path):
 
 def check_file(massprop, path, rng, cases, generated, nested=False):
     """(configurations checked, disagreements, why skipped or None)."""
+    view, extra = drake_view(path, VIEWS)
     try:
-        robot = DrakeRobot(path)
+        robot = DrakeRobot(view)
     except Exception as e:  # noqa: BLE001 (any reader failure)
         why = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
         if generated:
             return 0, [f"{path}: Drake cannot read a generated model: {why}"], None
         return 0, [], f"skipped {path}: Drake cannot read it ({why})"
-    follow = followers(path)
+    follow = followers(view)
     free = {k: j for k, j in robot.joints.items() if k not in follow}
     bad = []
     for case in range(cases):
         values = {} if case == 0 else {k: sample(rng, j, rng.random() < 0.2) for k, j in free.items()}
-        ours, err, warnings = massprop_whole_body(massprop, path, values)
+        ours, err, warnings = massprop_whole_body(massprop, path, values, extra)
         if ours is None:
             if generated:
                 return 0, [f"{path}: massprop refuses a generated model: {err}"], None
             return 0, [], f"skipped {path}: massprop refuses it ({err})"
         for w in warnings.splitlines():
             if "is not physically valid" in w and case == 0:
-                robot.as_written(path, w.split('link "', 1)[1].split('"', 1)[0])
+                robot.as_written(view, w.split('link "', 1)[1].split('"', 1)[0])
         try:
             theirs, far = robot.body(with_followers(values, follow))
         except ValueError as e:  # a joint Pinocchio is not given here

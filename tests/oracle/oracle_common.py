@@ -27,15 +27,15 @@ def run(cmd: list, timeout: float = 600) -> subprocess.CompletedProcess:
     return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
 
 
-def massprop_whole_body(massprop: str, path: str, joints: dict):
-    """`massprop report PATH --format json --joints …` as (mass, centre of
-    mass [3], inertia about it [3][3]), None and its stderr (warnings); or
-    None, why massprop refused (its first line of stderr, the status) and
-    its stderr."""
+def massprop_whole_body(massprop: str, path: str, joints: dict, extra=()):
+    """`massprop report PATH --format json --joints …` (and `extra`
+    arguments) as (mass, centre of mass [3], inertia about it [3][3]), None
+    and its stderr (warnings); or None, why massprop refused (its first line
+    of stderr, the status) and its stderr."""
     import json
 
     spec = ", ".join(f"{k}={num(v)}" for k, v in joints.items())
-    cmd = [massprop, "report", path, "--format", "json"]
+    cmd = [massprop, "report", path, "--format", "json", *extra]
     if spec:
         cmd += ["--joints", spec]
     out = run(cmd)
