@@ -227,7 +227,8 @@ fn the_radix_sort_orders_as_a_stable_sort_by_key() {
     let mut want = keyed.clone();
     want.sort_by_key(|p| p.0);
     let want: Vec<u32> = want.into_iter().map(|p| p.1).collect();
-    assert_eq!(radix_sorted(keyed), want);
+    let (codes, items): (Vec<u64>, Vec<u32>) = keyed.into_iter().unzip();
+    assert_eq!(radix_sorted(codes, items), want);
 }
 
 #[test]

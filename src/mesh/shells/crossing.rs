@@ -60,7 +60,7 @@ pub(super) fn first_crossing_on(
                 if i > best.load(Ordering::Relaxed) || mine.is_some_and(|m| (i, j) >= m) {
                     return;
                 }
-                if cross(mesh.faces[i], mesh.faces[j], &tri(i), &tri(j)) {
+                if cross_from(mesh.faces[i], mesh.faces[j], || (tri(i), tri(j))) {
                     mine = Some((i, j));
                     best.fetch_min(i, Ordering::Relaxed);
                 }
@@ -85,25 +85,41 @@ pub(super) fn first_crossing_on(
 /// Whether two triangles (by their welded corners `f`, `g` and their
 /// points) cross: share a segment inside both, or overlap in an area
 /// facing the same way.
+#[cfg(test)]
 pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
+    cross_from(f, g, || (*p, *q))
+}
+
+/// `cross`, the triangles' points fetched (`points`) only when the
+/// corners alone do not answer.
+///
+/// NOTE: a third of a smooth mesh's pairs are neighbours across an edge,
+/// answered by their corners' numbers: their 18 coordinates, read from
+/// wherever the corners' numbers put them, are not read at all.
+#[inline]
+fn cross_from(f: [u32; 3], g: [u32; 3], points: impl FnOnce() -> ([P3; 3], [P3; 3])) -> bool {
     // Where each of f's corners is among g's (3: not there).
     let at = f.map(|v| g.iter().position(|w| *w == v).unwrap_or(3));
-    match at.iter().filter(|m| **m < 3).count() {
-        2 => {
-            // NOTE: two triangles that run their shared edge in opposite
-            // directions (the neighbours of a closed surface) never cross:
-            // not coplanar, they meet on the planes' line only along that
-            // edge; coplanar, they lie on the two sides of it (side by
-            // side) or face opposite ways (folded flat). The exact path
-            // below answers the same (a test holds them equal); this
-            // spares a third of a smooth mesh's pairs its predicates.
-            let k = (0..3)
-                .find(|&k| at[k] < 3 && at[(k + 1) % 3] < 3)
-                .expect("invariant: two shared corners of a triangle make one of its edges");
-            if g[(at[(k + 1) % 3] + 1) % 3] == f[k] {
-                return false;
-            }
+    let shared = at.iter().filter(|m| **m < 3).count();
+    if shared == 2 {
+        // NOTE: two triangles that run their shared edge in opposite
+        // directions (the neighbours of a closed surface) never cross:
+        // not coplanar, they meet on the planes' line only along that
+        // edge; coplanar, they lie on the two sides of it (side by
+        // side) or face opposite ways (folded flat). The exact path
+        // below answers the same (a test holds them equal); this
+        // spares a third of a smooth mesh's pairs its predicates.
+        let k = (0..3)
+            .find(|&k| at[k] < 3 && at[(k + 1) % 3] < 3)
+            .expect("invariant: two shared corners of a triangle make one of its edges");
+        if g[(at[(k + 1) % 3] + 1) % 3] == f[k] {
+            return false;
         }
+    }
+    let (p, q) = points();
+    let (p, q) = (&p, &q);
+    match shared {
+        2 => {}
         1 => {
             // NOTE: two triangles that share one corner v, the most
             // common pair of a mesh's boxes that meet (a million of them
