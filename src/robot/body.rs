@@ -46,6 +46,29 @@ impl Robot {
         let mut description = super::read::read_in(source, format, r)?;
         let mesh_warnings = super::weigh::mjcf_inertials(source, &mut description, r)?;
         let tree = super::read::tree(source, &mut description, r)?;
+        // NOTE: a body of no mass has no centre: said here, in words,
+        // rather than as the centre's division by zero overflowing.
+        if !description
+            .links
+            .iter()
+            .any(|l| l.inertial.as_ref().is_some_and(|i| i.mass != 0.0))
+        {
+            let n = description.links.len();
+            let root = super::read::parse(source)?.root_element().range();
+            return Err(source
+                .error(
+                    super::read::start_tag(&source.text, root),
+                    format!(
+                        "the robot has no mass: none of its {n} link{} has an `<inertial>` with mass{}",
+                        if n == 1 { "" } else { "s" },
+                        match format {
+                            Dialect::Mjcf => " or a geom that counts for inertia",
+                            Dialect::Urdf | Dialect::Sdf => "",
+                        }
+                    ),
+                )
+                .help("a link without an `<inertial>` is massless (URDF, SDFormat); `export ROBOT --from-geometry collision --density …` computes inertials from the geometry"));
+        }
         Ok(Robot {
             description,
             tree,

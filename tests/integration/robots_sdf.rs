@@ -317,3 +317,73 @@ fn a_link_with_a_joint_from_the_world_and_another_parent_is_refused() {
     let msg = refused(&path);
     assert!(msg.contains("already has a parent joint"), "{msg}");
 }
+
+/// A model directory and a top file including it, in a scratch directory;
+/// `extra`: another file in the model directory.
+fn model_dir_without_config(name: &str, extra: Option<(&str, &str)>) -> PathBuf {
+    let model = "<?xml version='1.0'?>\n<sdf version='1.9'>\n<model name='arm'><link name='upper'><inertial><mass>2</mass></inertial></link></model>\n</sdf>\n";
+    let top = "<?xml version='1.0'?>\n<sdf version='1.9'>\n<model name='m'>\n<link name='base'/>\n<include><uri>arm</uri></include>\n</model>\n</sdf>\n";
+    let path = scratch_files("robots_sdf", name, &[("m.sdf", top)]);
+    let arm = path.parent().unwrap().join("arm");
+    std::fs::create_dir_all(&arm).unwrap();
+    std::fs::write(arm.join("model.sdf"), model).unwrap();
+    if let Some((file, text)) = extra {
+        std::fs::write(arm.join(file), text).unwrap();
+    }
+    path
+}
+
+#[test]
+fn a_model_directory_without_model_config_is_refused_as_libsdformat_refuses_it() {
+    let e = refused(&model_dir_without_config("no-config", None));
+    assert!(
+        e.contains("m.sdf:5:15: error: the included directory `")
+            && e.contains("arm` holds no `model.config`"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_manifest_xml_is_refused_with_the_advice_to_rename_it() {
+    let manifest = "<?xml version='1.0'?>\n<model><sdf version='1.9'>model.sdf</sdf></model>\n";
+    let e = refused(&model_dir_without_config(
+        "manifest",
+        Some(("manifest.xml", manifest)),
+    ));
+    assert!(
+        e.contains("holds `manifest.xml`, not `model.config`"),
+        "{e}"
+    );
+}
+
+#[test]
+fn the_same_directory_with_its_model_config_is_read() {
+    let config = "<?xml version='1.0'?>\n<model><sdf version='1.9'>model.sdf</sdf></model>\n";
+    let path = model_dir_without_config("with-config", Some(("model.config", config)));
+    let out = crate::common::massprop(&["report", path.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn a_robot_without_mass_is_refused_in_words_not_as_an_overflow() {
+    // Every link massless: the centre of mass is 0/0. Said as what it is.
+    let path = scratch_files(
+        "robots_sdf",
+        "massless",
+        &[(
+            "r.sdf",
+            "<?xml version='1.0'?>\n<sdf version='1.9'>\n<model name='m'><link name='a'/><link name='b'/></model>\n</sdf>\n",
+        )],
+    );
+    let e = refused(&path);
+    assert!(
+        e.contains("r.sdf:2:1: error: the robot has no mass: none of its 2 links has an `<inertial>` with mass"),
+        "{e}"
+    );
+    assert!(!e.contains("overflows"), "{e}");
+}

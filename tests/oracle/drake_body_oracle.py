@@ -331,24 +331,20 @@ def followers(path):
 def included_file(uri, here):
     """The file an `<include>`'s `file://` URI (absolute, as drake_view
     writes them) or relative path names: a directory's model.config's
-    first `<sdf>`, else its model.sdf."""
+    first `<sdf>`."""
     p = os.path.join(here, uri.strip().removeprefix("file://"))
     if os.path.isdir(p):
         config = os.path.join(p, "model.config")
-        if os.path.exists(config):
-            return os.path.join(p, ET.parse(config).getroot().findtext("sdf").strip())
-        return os.path.join(p, "model.sdf")
+        return os.path.join(p, ET.parse(config).getroot().findtext("sdf").strip())
     return p
 
 
 def drake_view(path, tmp):
     """(a file Drake reads as massprop reads `path`, massprop's extra
     arguments). Drake's resolver finds neither relative include URIs nor
-    `model://NAME` beside the including model's directory, and wants a
-    model.config in an included directory, where SDFormat's rules (and
-    massprop) take model.sdf: the file's directory is copied, each include
-    URI written as the absolute `file://` path of what massprop resolves
-    it to, and a model.config given to a directory that has none. A
+    `model://NAME` beside the including model's directory: the file's
+    directory is copied, each include URI written as the absolute
+    `file://` path of what massprop resolves it to. A
     `model://NAME` found in no sibling directory is a package: the
     directory named NAME under the file's directory, given to massprop as
     `--package NAME=DIR`."""
@@ -377,9 +373,6 @@ def drake_view(path, tmp):
         return os.path.normpath(os.path.join(here, uri))
 
     for d, _, files in os.walk(copy):
-        if "model.sdf" in files and "model.config" not in files:
-            with open(os.path.join(d, "model.config"), "w") as f:
-                f.write('<?xml version="1.0"?>\n<model><sdf version="1.9">model.sdf</sdf></model>\n')
         for name in files:
             if not name.endswith(".sdf"):
                 continue

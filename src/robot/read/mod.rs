@@ -95,7 +95,7 @@ fn root(xml: &Xml, root: Node, format: Dialect) -> Result<(), Diagnostic> {
 }
 
 /// The document, or roxmltree's message at the place it names.
-fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
+pub(crate) fn parse(source: &Source) -> Result<Document<'_>, Diagnostic> {
     // NOTE: a DTD is allowed (some exporters write one, and MuJoCo's and
     // urdfdom's parsers accept it), and so are the entities it declares,
     // but not a reference to one (`entity_in_use`); roxmltree still guards

@@ -6,7 +6,8 @@
 //! the one `--package NAME=DIR` gives, else the including file's
 //! directory's sibling `NAME/` (Gazebo's layout: every model a directory
 //! of one resource path). A directory holds `model.config`, whose first
-//! `<sdf>` names the model's file, else `model.sdf`. A file must lie, after
+//! `<sdf>` names the model's file; without one the include is refused, as
+//! libsdformat refuses it (Gazebo will not start the world). A file must lie, after
 //! following symlinks, inside the top file's directory, a package
 //! directory, a model directory found by `model://`, the working
 //! directory, or an `--include-root`, as a part file's includes must.
@@ -321,8 +322,15 @@ impl Loader<'_> {
     }
 }
 
-/// The model file of directory `dir`: its `model.config`'s first `<sdf>`,
-/// else `model.sdf`.
+/// The model file of directory `dir`: its `model.config`'s first `<sdf>`.
+///
+/// NOTE: libsdformat's `getModelFilePath` reads `model.config` (else the
+/// deprecated `manifest.xml`, with a warning) and refuses a directory
+/// without either ("Unable to resolve uri[…] since it does not contain a
+/// model.config file"): Gazebo then does not start the world. A model
+/// directory of `model.sdf` alone is refused here too, not read by a
+/// guess a CI check would pass and Gazebo refuse; `manifest.xml` is
+/// refused with the advice to rename it.
 fn model_file(xml: &Xml, dir: &Path, at: &std::ops::Range<usize>) -> Result<PathBuf, Diagnostic> {
     let config = dir.join("model.config");
     if let Ok(bytes) = std::fs::read(&config) {
@@ -340,15 +348,18 @@ fn model_file(xml: &Xml, dir: &Path, at: &std::ops::Range<usize>) -> Result<Path
             }
         }
     }
-    let sdf = dir.join("model.sdf");
-    if sdf.is_file() {
-        return Ok(sdf);
-    }
-    Err(xml.error(
-        at.clone(),
+    let message = if dir.join("manifest.xml").is_file() {
         format!(
-            "the included directory `{}` holds neither `model.config` nor `model.sdf`",
+            "the included directory `{}` holds `manifest.xml`, not `model.config`: libsdformat reads `manifest.xml` only as a deprecated `model.config`",
             dir.display()
-        ),
+        )
+    } else {
+        format!(
+            "the included directory `{}` holds no `model.config`: libsdformat (Gazebo) finds a model directory's file through its `model.config`, and refuses the include without one",
+            dir.display()
+        )
+    };
+    Err(xml.error(at.clone(), message).help(
+        "write `model.config` in the directory: <model><sdf version=\"1.9\">model.sdf</sdf></model>",
     ))
 }
