@@ -190,7 +190,8 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     // missing mesh, a bad `scale`) cannot stop `--link NAME`.
     let mut need = vec![false; d.links.len()];
     chosen.iter().for_each(|&i| need[i] = true);
-    let geos = crate::robot::read::geometry(&source, &d, g.visual, Some(&need), &resolve)?;
+    let (geos, mesh_warnings) =
+        crate::robot::read::geometry(&source, &d, g.visual, Some(&need), &resolve)?;
     let base = source
         .path()
         .parent()
@@ -217,6 +218,16 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         .filter_map(|s| std::fs::canonicalize(s.path()).ok())
         .collect();
     let (mut stdout, mut stderr) = (String::new(), String::new());
+    // An MJCF mesh's warnings, each once, at its `<mesh>` asset.
+    for w in &mesh_warnings {
+        let w = crate::analysis::plausible::Warning {
+            kind: crate::analysis::plausible::Kind::Mesh,
+            path: w.path.clone(),
+            span: w.span,
+            message: w.message.clone(),
+        };
+        stderr.push_str(&w.line(false));
+    }
     let mut computed = Vec::new();
     for i in chosen {
         let name = &d.links[i].name;
@@ -236,11 +247,17 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
         } else {
             dir(own)
         };
-        let (e, files) = link_inertial(
+        let (e, files, warnings) = link_inertial(
             &geos[i], name, own, &made, &base, &packages, &includes, settings,
         )
         .map_err(|e| d.files.located(e))?;
         read.extend(files);
+        // MJCF: said once per mesh file, at its `<mesh>` asset, above.
+        if format != Dialect::Mjcf {
+            for w in &warnings {
+                stderr.push_str(&w.line(false));
+            }
+        }
         computed.push((name.clone(), e));
     }
     match &g.update {
@@ -296,7 +313,9 @@ fn body(
 }
 
 /// One link's inertial from its geometries `geos` (each alone first, so
-/// that its error is said at its element), and the files read.
+/// that its error is said at its element), the files read, and the
+/// warnings of its geometries (a mesh's: a triangle of zero area left out,
+/// …), each at its geometry's element, as `report` says them.
 #[allow(clippy::too_many_arguments)]
 fn link_inertial(
     geos: &[Geometry],
@@ -307,15 +326,54 @@ fn link_inertial(
     packages: &[(String, PathBuf)],
     includes: &crate::model::Includes,
     settings: &Settings,
-) -> Result<(crate::output::inertial::Export, Vec<PathBuf>), Diagnostic> {
+) -> Result<
+    (
+        crate::output::inertial::Export,
+        Vec<PathBuf>,
+        Vec<crate::analysis::plausible::Warning>,
+    ),
+    Diagnostic,
+> {
     let mut text = String::from("units = { length = \"m\", mass = \"kg\" }\n");
     let mut files = Vec::new();
+    let mut warnings = Vec::new();
     for (k, geo) in geos.iter().enumerate() {
         let at = |m: String| {
             source.error(
                 geo.range.clone(),
                 format!("link \"{}\": {m}", crate::diag::shorten(name)),
             )
+        };
+        // The mesh's warnings, said at its geometry's element in the robot
+        // file (the part file written for it is no file of the user's).
+        // NOTE: only the mesh's: the part file's plausibility warnings
+        // (density, units) would speak of keys the user never wrote.
+        let mut said = |loaded: &analysis::Loaded| {
+            let span = source.span(crate::robot::read::start_tag(
+                &source.text,
+                geo.range.clone(),
+            ));
+            let mesh = loaded
+                .summary
+                .warnings
+                .iter()
+                .filter(|w| w.kind == crate::analysis::plausible::Kind::Mesh);
+            for w in mesh {
+                let message = format!("link \"{}\": {}", crate::diag::shorten(name), w.message);
+                if !warnings
+                    .iter()
+                    .any(|x: &crate::analysis::plausible::Warning| {
+                        x.message == message && x.span == span
+                    })
+                {
+                    warnings.push(crate::analysis::plausible::Warning {
+                        kind: w.kind,
+                        path: source.name.clone(),
+                        span,
+                        message,
+                    });
+                }
+            }
         };
         let one = match &geo.solid {
             Solid::Mesh { uri, scale } => {
@@ -330,6 +388,7 @@ fn link_inertial(
                     );
                     let loaded = body(&unit, source, includes, settings)
                         .map_err(|e| at(e.message().to_string()))?;
+                    said(&loaded);
                     files.extend(loaded.model.included.iter().cloned());
                     let mass = scaled_mesh(&loaded.model, *scale);
                     inertia_part(geo, k + 1, made.1, &mass).ok_or_else(|| {
@@ -342,12 +401,18 @@ fn link_inertial(
             }
             _ => part(geo, k + 1, &made.0, None),
         };
-        body(&one, source, includes, settings).map_err(|e| at(e.message().to_string()))?;
+        let loaded =
+            body(&one, source, includes, settings).map_err(|e| at(e.message().to_string()))?;
+        said(&loaded);
         text.push_str(&one);
     }
     let loaded = body(&text, source, includes, settings)?;
     files.extend(loaded.model.included.iter().cloned());
-    Ok((super::export::export_of(&loaded.summary, false), files))
+    Ok((
+        super::export::export_of(&loaded.summary, false),
+        files,
+        warnings,
+    ))
 }
 
 /// The integrals of the one mesh part of `model` (read at unit scale, at

@@ -226,3 +226,59 @@ fn an_mjcf_bodys_missing_mesh_does_not_stop_another_body() {
     let m = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * 0.001;
     close(attr(&text, "mass")[0], m, m);
 }
+
+/// A tetrahedron with a fifth triangle of zero area: the mesh reader
+/// leaves it out and says so (the answer still exact).
+const TET_WITH_SLIVER: &str =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0.5 0 0\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\nf 1 5 2\n";
+
+/// Stderr of a successful `export ROBOT --from-geometry collision
+/// --density 1000`.
+fn export_stderr(robot: &Path) -> String {
+    let out = massprop(&[
+        "export",
+        robot.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+        "--density",
+        "1000",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    assert!(!out.stdout.is_empty());
+    stderr
+}
+
+#[test]
+fn a_urdf_meshs_warning_is_said_at_its_geometry_as_report_says_it() {
+    let urdf = "<robot name=\"r\">\n  <link name=\"a\"><collision><geometry><mesh filename=\"s.obj\"/></geometry></collision></link>\n</robot>\n";
+    let path = scratch_files(
+        "robots_export",
+        "sliver-urdf",
+        &[("s.obj", TET_WITH_SLIVER), ("r.urdf", urdf)],
+    );
+    let e = export_stderr(&path);
+    assert_eq!(e.matches("warning: ").count(), 1, "{e}");
+    assert!(
+        e.contains("r.urdf:2:18: link \"a\": the mesh file `")
+            && e.contains("a triangle of zero area left out"),
+        "{e}"
+    );
+}
+
+#[test]
+fn an_mjcf_meshs_warning_is_said_once_at_its_asset_however_many_geoms_use_it() {
+    let xml = "<mujoco>\n  <asset>\n    <mesh name=\"s\" file=\"s.obj\"/>\n  </asset>\n  <worldbody>\n    <body name=\"a\"><freejoint/><geom type=\"mesh\" mesh=\"s\"/></body>\n    <body name=\"b\"><freejoint/><geom type=\"mesh\" mesh=\"s\"/></body>\n  </worldbody>\n</mujoco>\n";
+    let path = scratch_files(
+        "robots_export",
+        "sliver-mjcf",
+        &[("s.obj", TET_WITH_SLIVER), ("m.xml", xml)],
+    );
+    let e = export_stderr(&path);
+    assert_eq!(e.matches("warning: ").count(), 1, "{e}");
+    assert!(
+        e.contains("m.xml:3:5: the mesh file `")
+            && e.contains("s.obj`: a triangle of zero area left out"),
+        "{e}"
+    );
+}

@@ -79,7 +79,7 @@ pub fn geometry(
     visual: bool,
     need: Option<&[bool]>,
     r: &super::Resolve,
-) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
+) -> Result<(Vec<Vec<Geometry>>, Vec<super::MeshWarning>), Diagnostic> {
     if d.format == Dialect::Mjcf {
         let doc = super::parse(source)?;
         let root = doc.root_element();
@@ -87,8 +87,7 @@ pub fn geometry(
             return super::geoms_of_mjcf(&Xml { source }, root, d, need);
         }
         let all = vec![true; d.links.len()];
-        // As `geoms_of_mjcf`: `export` says no mesh warnings yet.
-        return super::mjcf_geometry_in(source, d, need.unwrap_or(&all), r).map(|g| g.0);
+        return super::mjcf_geometry_in(source, d, need.unwrap_or(&all), r);
     }
     let kind = if visual { "visual" } else { "collision" };
     // Each file a link is written in, parsed once, its links' elements by
@@ -122,7 +121,9 @@ pub fn geometry(
         let items = link_geometry(&xml, link, d, &l.name, kind).map_err(|e| d.files.located(e))?;
         out.push(items);
     }
-    Ok(out)
+    // URDF and SDFormat meshes are read by `export` itself (their
+    // warnings said there).
+    Ok((out, Vec::new()))
 }
 
 /// The geometries of kind `kind` of the link element `link` (named `name`).

@@ -37,10 +37,8 @@ fn geoms_of_mjcf(
     mujoco: Node,
     d: &Description,
     need: Option<&[bool]>,
-) -> Result<Vec<Vec<Geometry>>, Diagnostic> {
-    // NOTE: `export` weighs the solids and says nothing of a mesh's
-    // warnings yet; `report` does (`mjcf_geometry_in`).
-    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need).map(|g| g.0)
+) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
+    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need)
 }
 
 /// Per body of the MJCF description `d`, its geoms that count for inertia,
