@@ -45,7 +45,7 @@ pub fn mjcf_inertials(
         .iter()
         .map(|l| all || l.inertial.is_none())
         .collect();
-    let (geos, warnings) = super::read::mjcf_geometry_in(source, d, &need, r)?;
+    let (geos, warnings) = super::read::mjcf_geometry_in(source, d, &need, r, false)?;
     for (l, g) in d.links.iter_mut().zip(&geos) {
         if g.is_empty() {
             continue;

@@ -282,3 +282,63 @@ fn an_mjcf_meshs_warning_is_said_once_at_its_asset_however_many_geoms_use_it() {
         "{e}"
     );
 }
+
+/// A unit cube as OBJ, its faces wound outward.
+const CUBE_OBJ: &str = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+
+/// `export --from-geometry` of one MJCF body whose geom is the cube mesh
+/// of `<mesh inertia=MODE>`, with `args`.
+fn mjcf_cube(name: &str, mode: &str, args: &[&str]) -> std::process::Output {
+    let xml = format!(
+        "<mujoco>\n  <asset><mesh name=\"c\" file=\"c.obj\" inertia=\"{mode}\"/></asset>\n  <worldbody><body name=\"a\"><freejoint/><geom type=\"mesh\" mesh=\"c\"/></body></worldbody>\n</mujoco>\n"
+    );
+    let path = scratch_files(
+        "robots_export",
+        name,
+        &[("c.obj", CUBE_OBJ), ("m.xml", &xml)],
+    );
+    let mut argv = vec![
+        "export",
+        path.to_str().unwrap(),
+        "--from-geometry",
+        "collision",
+        "--density",
+        "1000",
+    ];
+    argv.extend(args);
+    massprop(&argv)
+}
+
+#[test]
+fn a_shell_mesh_is_refused_by_export_which_weighs_solids() {
+    // MuJoCo weighs a shell by its area (report: 6000 kg here); the export
+    // weighs solids, so it refuses rather than give the solid's 1000 kg.
+    for args in [&[][..], &["--link", "a"][..]] {
+        let out = mjcf_cube("shell", "shell", args);
+        let e = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{e}");
+        assert!(out.stdout.is_empty());
+        assert!(
+            e.contains("a shell mesh (`inertia=\"shell\"`) is weighed by `report`, not by `export --from-geometry`"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn an_exact_mesh_exports_the_solid_cube() {
+    let out = mjcf_cube("exact", "exact", &[]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    // 1 m³ at 1000 kg/m³; m(a² + a²)/12 about each axis through the centre.
+    assert!(text.contains("mass=\"1000\""), "{text}");
+    assert!(
+        text.contains("166.66666666666666 166.66666666666666 166.66666666666666 0 0 0"),
+        "{text}"
+    );
+}

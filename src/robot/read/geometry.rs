@@ -87,7 +87,7 @@ pub fn geometry(
             return super::geoms_of_mjcf(&Xml { source }, root, d, need);
         }
         let all = vec![true; d.links.len()];
-        return super::mjcf_geometry_in(source, d, need.unwrap_or(&all), r);
+        return super::mjcf_geometry_in(source, d, need.unwrap_or(&all), r, true);
     }
     let kind = if visual { "visual" } else { "collision" };
     // Each file a link is written in, parsed once, its links' elements by

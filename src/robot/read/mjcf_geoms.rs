@@ -46,12 +46,14 @@ struct Ctx<'x, 's, 'a, 'i> {
 }
 
 /// Per body of `d` (in its order), its geoms that count for inertia; none
-/// read for a body `need` leaves out (None: every body, for `export`);
-/// and the warnings of the mesh files read.
+/// read for a body `need` leaves out (None: every body); and the warnings
+/// of the mesh files read. `export`: read for `export --from-geometry`,
+/// which weighs solids (a mesh MuJoCo weighs otherwise is refused).
 pub(super) fn geoms(
     m: &Model,
     d: &Description,
     need: Option<&[bool]>,
+    export: bool,
 ) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
     let mut settings = Settings::default();
     let mut range = (0.0, 5.0);
@@ -68,7 +70,7 @@ pub(super) fn geoms(
         settings,
         classes: Classes::read(m)?,
         meshes: Meshes::read(m)?,
-        export: need.is_none(),
+        export,
     };
     let mut out = Vec::with_capacity(d.links.len());
     for (_, file, world) in m.sections("worldbody") {

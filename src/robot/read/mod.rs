@@ -38,21 +38,28 @@ fn geoms_of_mjcf(
     d: &Description,
     need: Option<&[bool]>,
 ) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
-    mjcf_geoms::geoms(&mjcf_include::Model::single(xml.source, mujoco), d, need)
+    mjcf_geoms::geoms(
+        &mjcf_include::Model::single(xml.source, mujoco),
+        d,
+        need,
+        true,
+    )
 }
 
 /// Per body of the MJCF description `d`, its geoms that count for inertia,
 /// read only for the bodies `need` marks (a geom massprop cannot weigh is
 /// refused only where it is needed); the file's includes followed,
-/// resolved by `r` (`robot::weigh`); with the warnings of the mesh files
+/// resolved by `r` (`robot::weigh`; `export --from-geometry` with
+/// `export`, which weighs solids); with the warnings of the mesh files
 /// read.
 pub fn mjcf_geometry_in(
     source: &Source,
     d: &Description,
     need: &[bool],
     r: &Resolve,
+    export: bool,
 ) -> Result<(Vec<Vec<Geometry>>, Vec<MeshWarning>), Diagnostic> {
-    mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need)))
+    mjcf_include::with_model(source, r, |m| mjcf_geoms::geoms(m, d, Some(need), export))
 }
 
 pub use follow::{canonical_dir, read_in};
