@@ -259,12 +259,9 @@ pub(super) fn update_robot(
             // `<inertial>` from another file; writing one into the body
             // would give it two (MuJoCo's error).
             let source = d.files.source(target, l.site.file);
-            let start = l.site.element.start;
-            let end = source.text[start..]
-                .find('>')
-                .map_or(start + 1, |e| start + e + 1);
+            let tag = crate::robot::read::start_tag(&source.text, l.site.element.clone());
             return Err(d.files.located(source.error(
-                start..end,
+                tag,
                 format!(
                     "`--update` does not write body \"{}\": its `<inertial>` is brought in by an `<include>` inside it, from another file",
                     visible(name)
@@ -283,11 +280,11 @@ pub(super) fn update_robot(
     let mut changed = Vec::new();
     for (&k, entries) in &mut per {
         let source = d.files.source(target, k);
+        // The link's start tag (a `>` inside an attribute's quotes is not
+        // its end: `start_tag`).
         let at = |start: usize, message: String| {
-            let end = source.text[start..]
-                .find('>')
-                .map_or(start + 1, |e| start + e + 1);
-            d.files.located(source.error(start..end, message))
+            let tag = crate::robot::read::start_tag(&source.text, start..source.text.len());
+            d.files.located(source.error(tag, message))
         };
         entries.sort_by_key(|&(start, _, _)| std::cmp::Reverse(start));
         for w in entries.windows(2) {

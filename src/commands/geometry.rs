@@ -220,13 +220,7 @@ pub fn run(robot: &str, g: &FromGeometry, settings: &Settings) -> Result<Outcome
     let (mut stdout, mut stderr) = (String::new(), String::new());
     // An MJCF mesh's warnings, each once, at its `<mesh>` asset.
     for w in &mesh_warnings {
-        let w = crate::analysis::plausible::Warning {
-            kind: crate::analysis::plausible::Kind::Mesh,
-            path: w.path.clone(),
-            span: w.span,
-            message: w.message.clone(),
-        };
-        stderr.push_str(&w.line(false));
+        stderr.push_str(&super::mesh_warning(w).line(false));
     }
     let mut computed = Vec::new();
     for i in chosen {

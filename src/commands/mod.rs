@@ -109,6 +109,20 @@ pub fn files_of(loaded: &crate::analysis::Loaded) -> Vec<PathBuf> {
 /// each for standard error: `warning: FILE: …`, `warning` coloured when
 /// `colour`; then its plausibility warnings (`analysis::plausible`),
 /// `warning: FILE:LINE:COL: …`.
+/// An MJCF mesh file's warning (`robot::read::MeshWarning`, said at its
+/// `<mesh>` asset) as the report's warnings carry it: for `report` and
+/// `export --from-geometry` alike.
+pub(crate) fn mesh_warning(
+    w: &crate::robot::read::MeshWarning,
+) -> crate::analysis::plausible::Warning {
+    crate::analysis::plausible::Warning {
+        kind: crate::analysis::plausible::Kind::Mesh,
+        path: w.path.clone(),
+        span: w.span,
+        message: w.message.clone(),
+    }
+}
+
 pub fn accuracy_warnings(loaded: &crate::analysis::Loaded, colour: bool) -> String {
     warning_lines(
         &loaded.source.name,

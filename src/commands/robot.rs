@@ -126,12 +126,7 @@ impl Loading {
                     message: n.message,
                 }
             })
-            .chain(robot.mesh_warnings.iter().map(|w| plausible::Warning {
-                kind: plausible::Kind::Mesh,
-                path: w.path.clone(),
-                span: w.span,
-                message: w.message.clone(),
-            }))
+            .chain(robot.mesh_warnings.iter().map(super::mesh_warning))
             .collect();
         Ok(loaded)
     }

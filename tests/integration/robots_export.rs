@@ -32,9 +32,8 @@ fn one_mesh(name: &str, mesh: &str, xyz: &str) -> PathBuf {
     )
 }
 
-/// Stdout of `export ROBOT --from-geometry collision --density RHO ARGS`,
-/// which must succeed.
-fn export(robot: &Path, rho: &str, args: &[&str]) -> String {
+/// `export ROBOT --from-geometry collision --density RHO ARGS`.
+fn run_export(robot: &Path, rho: &str, args: &[&str]) -> std::process::Output {
     let mut argv = vec![
         "export",
         robot.to_str().unwrap(),
@@ -44,7 +43,12 @@ fn export(robot: &Path, rho: &str, args: &[&str]) -> String {
         rho,
     ];
     argv.extend(args);
-    let out = massprop(&argv);
+    massprop(&argv)
+}
+
+/// Stdout of `run_export`, which must succeed.
+fn export(robot: &Path, rho: &str, args: &[&str]) -> String {
+    let out = run_export(robot, rho, args);
     assert_eq!(
         out.status.code(),
         Some(0),
@@ -120,14 +124,7 @@ fn a_zero_scale_is_refused_at_the_attribute() {
         "<mesh filename=\"cube.obj\" scale=\"1 0 1\"/>",
         "0 0 0",
     );
-    let out = massprop(&[
-        "export",
-        r.to_str().unwrap(),
-        "--from-geometry",
-        "collision",
-        "--density",
-        "1000",
-    ]);
+    let out = run_export(&r, "1000", &[]);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
     let err = String::from_utf8_lossy(&out.stderr);
@@ -235,14 +232,7 @@ const TET_WITH_SLIVER: &str =
 /// Stderr of a successful `export ROBOT --from-geometry collision
 /// --density 1000`.
 fn export_stderr(robot: &Path) -> String {
-    let out = massprop(&[
-        "export",
-        robot.to_str().unwrap(),
-        "--from-geometry",
-        "collision",
-        "--density",
-        "1000",
-    ]);
+    let out = run_export(robot, "1000", &[]);
     let stderr = String::from_utf8_lossy(&out.stderr).to_string();
     assert_eq!(out.status.code(), Some(0), "{stderr}");
     assert!(!out.stdout.is_empty());
@@ -297,16 +287,7 @@ fn mjcf_cube(name: &str, mode: &str, args: &[&str]) -> std::process::Output {
         name,
         &[("c.obj", CUBE_OBJ), ("m.xml", &xml)],
     );
-    let mut argv = vec![
-        "export",
-        path.to_str().unwrap(),
-        "--from-geometry",
-        "collision",
-        "--density",
-        "1000",
-    ];
-    argv.extend(args);
-    massprop(&argv)
+    run_export(&path, "1000", args)
 }
 
 #[test]
