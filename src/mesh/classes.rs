@@ -23,7 +23,7 @@
 //! way (one wound the other way), "not manifold" when more than two meet
 //! there unevenly.
 
-use super::check::{Mesh, point};
+use super::check::{Edge, Mesh, point};
 use super::exact::orient2d;
 use super::{At, MeshError};
 use std::collections::HashMap;
@@ -52,12 +52,12 @@ fn key_of(a: u32, b: u32) -> u64 {
 impl Mesh {
     /// The closedness check of the module comment: the warnings of the
     /// classes the answer survives, or the error.
-    pub(super) fn closed_and_oriented(&mut self) -> Result<Vec<String>, MeshError> {
+    pub(super) fn closed_and_oriented(&self, edges: &[Edge]) -> Result<Vec<String>, MeshError> {
         let mut loose: Vec<Loose> = Vec::new();
         let mut crowded: Option<(u32, u64, usize, usize)> = None;
         let mut crowded_count = 0usize;
         let mut repeat: Option<(u32, u32)> = None;
-        for run in self.edges().chunk_by(|x, y| x.0 == y.0) {
+        for run in edges.chunk_by(|x, y| x.0 == y.0) {
             let forward = run.iter().filter(|e| e.2).count();
             let net = 2 * forward as i32 - run.len() as i32;
             let first = run.iter().map(|e| e.1).min().expect("a run is not empty");
@@ -91,7 +91,7 @@ impl Mesh {
         }
         if let Some((a, b)) = repeat {
             return Err(MeshError::new(
-                self.at[b as usize],
+                self.at.of(b as usize),
                 format!(
                     "{} repeats {}: the same three corners wound the same way count that surface twice; remove one of them",
                     self.name(b as usize),
@@ -108,7 +108,7 @@ impl Mesh {
             let pts = super::shells::scaled(self)?;
             match self.t_junctions(&loose, &pts) {
                 Ok((joins, splits, example)) => {
-                    self.joins = joins;
+                    self.set_joins(joins);
                     let l = &loose[example];
                     let (a, b) = ends(l.key);
                     let t = l.run.iter().map(|e| e.0).min().expect("a run is not empty");
@@ -241,7 +241,7 @@ impl Mesh {
         };
         let first = faces[0] as usize;
         let forward = l.run.iter().filter(|e| e.1).count();
-        let at: At = self.at[first];
+        let at: At = self.at.of(first);
         MeshError::new(
             at,
             match l.run.len() {

@@ -353,7 +353,11 @@ mod tests {
         let mut v = coords(11, 40, 1.0);
         v[0] = [1e300, 0.0, 0.0];
         let f = faces(97, v.len());
-        let mesh = Mesh::new(v.clone(), f.clone(), vec![super::super::At::Whole; f.len()]);
+        let mesh = Mesh::new(
+            v.clone(),
+            f.clone(),
+            super::super::check::Places::Listed(vec![super::super::At::Whole; f.len()]),
+        );
         let p = mesh.reference();
         assert!(same(
             &mesh.sums_dd(Mode::Solid, p),
@@ -365,7 +369,11 @@ mod tests {
     fn a_mesh_of_several_chunks_sums_to_the_generic_bits_on_one_and_two_threads() {
         let v = coords(13, 5000, 0.05);
         let f = faces(3 * super::super::check::CHUNK + 77, v.len());
-        let mesh = Mesh::new(v, f.clone(), vec![super::super::At::Whole; f.len()]);
+        let mesh = Mesh::new(
+            v,
+            f.clone(),
+            super::super::check::Places::Listed(vec![super::super::At::Whole; f.len()]),
+        );
         let p = mesh.reference();
         let want = mesh.sums_on::<DD>(Mode::Solid, p, 1);
         for threads in [1, 2] {

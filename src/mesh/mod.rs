@@ -166,8 +166,8 @@ pub struct MeshBody {
     /// Its welded corners (the file's coordinates) and triangles (indices,
     /// outward by the right-hand rule): `render` draws its silhouette.
     /// Shared: a mesh's copies and the model's clones hold them once.
-    pub points: std::sync::Arc<[[f64; 3]]>,
-    pub faces: std::sync::Arc<[[u32; 3]]>,
+    pub points: std::sync::Arc<Vec<[f64; 3]>>,
+    pub faces: std::sync::Arc<Vec<[u32; 3]>>,
 }
 
 /// Absolute error bounds of a `MeshBody`'s values.
@@ -195,8 +195,8 @@ impl MeshBody {
         mode: Mode,
         weld: Option<f64>,
     ) -> Result<(MeshBody, Vec<String>), MeshError> {
-        let t = read::read(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
-        let mut mesh = check::Mesh::weld(t)?;
+        let t = read::corners(format, bytes, MAX_TRIANGLES).map_err(MeshError::located)?;
+        let mut mesh = check::Mesh::weld_corners(t)?;
         let mut notes = Vec::new();
         let mut moved = [0.0; 10];
         if let Some(d) = weld {
@@ -209,34 +209,46 @@ impl MeshBody {
                 if w.merged == 1 { "" } else { "s" }
             ));
         }
-        notes.extend(mesh.check(mode)?);
+        notes.extend(mesh.leave_out_degenerate()?);
         let p = mesh.reference();
         let sums = if mode == Mode::Solid {
             // NOTE: the integrals are summed on a thread of their own while
-            // the shells are checked, which they do not depend on (the
-            // triangles are final once `check` has left out those of zero
-            // area): its threads fill the cores the checks' one-thread
-            // steps leave idle (the shells' union, the scaled corners, the
-            // tree's top split, a single shell's volume). The same sums,
-            // chunk by chunk, as after the checks; a refusal by the
-            // checks still comes first, its sums thrown away.
-            let edges = mesh.take_edges();
+            // the surface is checked (closed, oriented, its shells), which
+            // they do not depend on (the triangles are final once those of
+            // zero area are left out): its threads fill the cores the
+            // checks' one-thread steps leave idle (the edges' sort, the
+            // closedness pass, the shells' union, the scaled corners, the
+            // tree's top split). The same sums, chunk by chunk, as after
+            // the checks; a refusal by the checks still comes first, its
+            // sums thrown away.
             let mesh = &mesh;
             let (checked, sums) = std::thread::scope(|scope| {
-                let sums = scope.spawn(move || mesh.sums_dd(mode, p));
-                let checked = shells::check_with(mesh, edges);
-                let sums = sums
-                    .join()
-                    .expect("invariant: summing a mesh's terms does not panic");
+                let handle = scope.spawn(move || mesh.sums_dd(mode, p));
+                let mut handle = Some(handle);
+                let mut join = || {
+                    handle.take().map(|h| {
+                        h.join()
+                            .expect("invariant: summing a mesh's terms does not panic")
+                    })
+                };
+                // The sums, joined when a single shell's winding asks them.
+                let mut sums = None;
+                let checked = (|| {
+                    let edges = mesh.edges();
+                    notes.extend(mesh.closed_and_oriented(&edges)?);
+                    shells::check_with(mesh, edges, || {
+                        shells::volume_sign(sums.insert(join().expect("asked once")))
+                    })
+                })();
+                let sums = sums.or_else(join).expect("invariant: joined here or above");
                 (checked, sums)
             });
             checked?;
             sums
         } else {
-            mesh.forget_edges();
             mesh.sums_dd(mode, p)
         };
-        let body = mesh.body_of(mode, p, sums, moved);
+        let body = mesh.into_body(mode, p, sums, moved);
         if weld.is_some() && !(body.bound.measure <= body.measure.hi.abs() / 2.0) {
             return Err(MeshError::new(
                 At::Whole,
@@ -283,16 +295,17 @@ impl MeshBody {
         m.extent[1][axis] = -lo[axis];
         // The image's corners, and its triangles wound the other way so
         // that they face out still.
-        m.points = self
-            .points
-            .iter()
-            .map(|p| {
-                let mut q = *p;
-                q[axis] = -q[axis];
-                q
-            })
-            .collect();
-        m.faces = self.faces.iter().map(|f| [f[0], f[2], f[1]]).collect();
+        m.points = std::sync::Arc::new(
+            self.points
+                .iter()
+                .map(|p| {
+                    let mut q = *p;
+                    q[axis] = -q[axis];
+                    q
+                })
+                .collect(),
+        );
+        m.faces = std::sync::Arc::new(self.faces.iter().map(|f| [f[0], f[2], f[1]]).collect());
         for k in 0..3 {
             if k != axis {
                 m.second[axis][k] = -m.second[axis][k];

@@ -65,12 +65,125 @@ impl Triangles {
     }
 }
 
+/// A mesh file's bytes, as `std::fs::read` gives them.
+///
+/// NOTE: a large file is read in one piece a core (`read_exact_at` at
+/// each piece's offset, into one buffer whose pages each thread faults in
+/// as it writes them): a 50 MB STL's copy out of the page cache took 25
+/// ms on one core, a twentieth of its whole report. A file that is not
+/// the size it was when asked (written meanwhile) is read again whole.
+pub fn file(path: &std::path::Path) -> std::io::Result<Vec<u8>> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileExt;
+        let f = std::fs::File::open(path)?;
+        let len = usize::try_from(f.metadata()?.len()).unwrap_or(usize::MAX);
+        let threads = super::threads_for(len, 1 << 23);
+        if threads > 1 {
+            let mut bytes = vec![0u8; len];
+            let piece = len.div_ceil(threads);
+            let f = &f;
+            let read = std::thread::scope(|scope| {
+                let handles: Vec<_> = bytes
+                    .chunks_mut(piece)
+                    .enumerate()
+                    .map(|(k, out)| scope.spawn(move || f.read_exact_at(out, (k * piece) as u64)))
+                    .collect();
+                handles
+                    .into_iter()
+                    .all(|h| h.join().is_ok_and(|r| r.is_ok()))
+            });
+            // Nothing past the end: the file is the size it was.
+            if read && f.read_at(&mut [0u8], len as u64).is_ok_and(|n| n == 0) {
+                return Ok(bytes);
+            }
+        }
+    }
+    std::fs::read(path)
+}
+
 /// Read a mesh file's bytes; at most `limit` triangles.
 pub fn read(format: FileType, bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
-    match format {
-        FileType::Stl if is_binary_stl(bytes) => binary_stl(bytes, limit),
-        FileType::Stl => ascii_stl_on(bytes, limit, super::threads_for(bytes.len(), 1 << 22)),
-        FileType::Obj => obj(bytes, limit),
+    Ok(match corners(format, bytes, limit)? {
+        Corners::Listed(t) => t,
+        Corners::Stl(s) => s.decoded(),
+    })
+}
+
+/// A file's corners as the weld reads them: a binary STL's straight from
+/// its records, every other file's as read into a list (`Triangles`).
+///
+/// NOTE: a binary STL is not decoded into a list first: its 1,000,000
+/// triangles' 3,000,000 corners would take 72 MB of fresh memory (and
+/// 12 MB of indices), written once and read once by the weld, which reads
+/// the 50 MB of records as cheaply.
+pub enum Corners<'a> {
+    Listed(Triangles),
+    Stl(StlRecords<'a>),
+}
+
+/// Read a mesh file's bytes as the weld takes them; at most `limit`
+/// triangles. The same checks and errors as `read`.
+pub fn corners(format: FileType, bytes: &[u8], limit: usize) -> Result<Corners<'_>, MeshError> {
+    Ok(match format {
+        FileType::Stl if is_binary_stl(bytes) => Corners::Stl(binary_stl(bytes, limit)?),
+        FileType::Stl => Corners::Listed(ascii_stl_on(
+            bytes,
+            limit,
+            super::threads_for(bytes.len(), 1 << 22),
+        )?),
+        FileType::Obj => Corners::Listed(obj(bytes, limit)?),
+    })
+}
+
+/// A binary STL's triangle records (50 bytes each, after the 84 bytes of
+/// header and count), its size checked against its count.
+#[derive(Debug, Clone, Copy)]
+pub struct StlRecords<'a> {
+    records: &'a [u8],
+}
+
+impl StlRecords<'_> {
+    pub fn len(&self) -> usize {
+        self.records.len() / 50
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.records.is_empty()
+    }
+
+    /// Corner `k` (0, 1, 2) of triangle `i`: 12 bytes of normal (ignored:
+    /// the winding gives the orientation), three vertices of three f32, 2
+    /// bytes of attributes.
+    #[inline]
+    pub fn corner(&self, i: usize, k: usize) -> [f64; 3] {
+        let o = 50 * i + 12 + 12 * k;
+        let r = &self.records[o..o + 12];
+        std::array::from_fn(|c| {
+            f64::from(f32::from_le_bytes([
+                r[4 * c],
+                r[4 * c + 1],
+                r[4 * c + 2],
+                r[4 * c + 3],
+            ]))
+        })
+    }
+
+    /// Where triangle `i`'s record is: its byte offset in the file.
+    pub fn at(i: usize) -> At {
+        At::Byte(84 + 50 * i as u64)
+    }
+
+    /// Every corner decoded into a list (`read`'s form).
+    fn decoded(self) -> Triangles {
+        let n = self.len();
+        Triangles {
+            points: (0..3 * n).map(|c| self.corner(c / 3, c % 3)).collect(),
+            faces: (0..n as u32)
+                .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+                .collect(),
+            at: (0..n).map(StlRecords::at).collect(),
+        }
     }
 }
 
@@ -107,7 +220,7 @@ fn is_binary_stl(bytes: &[u8]) -> bool {
     })
 }
 
-fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
+fn binary_stl(bytes: &[u8], limit: usize) -> Result<StlRecords<'_>, MeshError> {
     if bytes.len() < 84 {
         return Err(MeshError::new(
             At::Byte(bytes.len() as u64),
@@ -138,43 +251,8 @@ fn binary_stl(bytes: &[u8], limit: usize) -> Result<Triangles, MeshError> {
     if n > limit as u64 {
         return Err(too_many(At::Byte(80), limit));
     }
-    let n = n as usize;
-    // NOTE: the records are decoded on every core, each thread a slice of
-    // the corners (allocated here, zeroed lazily: the threads' first
-    // writes fault its pages in, in parallel too).
-    let mut points = vec![[0.0f64; 3]; 3 * n];
-    let threads = super::threads_for(n, 1 << 16);
-    let piece = n.div_ceil(threads).max(1);
-    let records = &bytes[84..];
-    std::thread::scope(|scope| {
-        for (out, recs) in points.chunks_mut(3 * piece).zip(records.chunks(50 * piece)) {
-            scope.spawn(move || {
-                for (corners, rec) in out.chunks_exact_mut(3).zip(recs.chunks_exact(50)) {
-                    // 12 bytes of normal (ignored: the winding gives the
-                    // orientation), three vertices of three f32, 2 bytes of
-                    // attributes.
-                    let f = |k: usize| {
-                        let o = 12 + 4 * k;
-                        f64::from(f32::from_le_bytes([
-                            rec[o],
-                            rec[o + 1],
-                            rec[o + 2],
-                            rec[o + 3],
-                        ]))
-                    };
-                    for (v, c) in corners.iter_mut().enumerate() {
-                        *c = std::array::from_fn(|k| f(3 * v + k));
-                    }
-                }
-            });
-        }
-    });
-    Ok(Triangles {
-        points,
-        faces: (0..n as u32)
-            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
-            .collect(),
-        at: (0..n as u64).map(|i| At::Byte(84 + 50 * i)).collect(),
+    Ok(StlRecords {
+        records: &bytes[84..],
     })
 }
 

@@ -35,17 +35,29 @@ use crossing::{cross, cross_exact, first_crossing_on};
 const NONE: u32 = u32::MAX;
 
 /// Check that the (closed, consistently oriented) mesh bounds one solid.
-/// Returns the number of shells. Lets go of the mesh's edges once the
-/// shells are found.
-pub fn check(mesh: &mut Mesh) -> Result<usize, MeshError> {
-    let edges = mesh.take_edges();
-    check_with(mesh, edges)
+/// Returns the number of shells.
+pub fn check(mesh: &Mesh) -> Result<usize, MeshError> {
+    check_with(mesh, mesh.edges(), || {
+        volume_sign(&mesh.sums_dd(super::Mode::Solid, mesh.reference()))
+    })
 }
 
-/// `check`, given the mesh's edges (`Mesh::take_edges`), which it lets go
+/// `check`, given the mesh's edges (`Mesh::edges`), which it lets go
 /// of once the shells are found: the mesh itself is only read, so that
-/// its integrals can be summed meanwhile (`MeshBody::load_with`).
-pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
+/// its integrals can be summed meanwhile (`MeshBody::load_with`). `whole`:
+/// the sign of the whole mesh's volume (`volume_sign`), asked only when
+/// the mesh is one shell, whose volume it is.
+///
+/// NOTE: one shell's winding is the sign of the sums `MeshBody::load_with`
+/// adds up meanwhile anyway (in double-double, its bound far tighter than
+/// `volumes`' f64 sums'), not a second pass over every triangle: a
+/// million-triangle mesh is one shell, and that pass took 50 ms of its
+/// 0.6 s, alone on one core.
+pub fn check_with(
+    mesh: &Mesh,
+    edges: Vec<Edge>,
+    whole: impl FnOnce() -> i8,
+) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
     let live = cancel_twins(mesh, &edges);
     let shell = components(mesh, &live, &edges);
@@ -66,18 +78,18 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         .filter(|&i| shell[i as usize] != NONE)
         .collect();
     let bvh = Bvh::build(&boxes, order);
-    // NOTE: the boxes again, in the tree's item order (`Bvh::join`), made
-    // afresh from the corners over the first list (the tree's items are
-    // some of the triangles): no second list, no fresh pages.
-    let sorted = boxes_in(mesh, &pts, &bvh.items, bvh.items.len(), boxes);
+    // NOTE: the boxes again, in the tree's item order (`Bvh::join`) and
+    // in f32 (`Small`: half the bytes the join reads).
+    let sorted = bvh.sorted(&boxes);
+    drop(boxes);
     if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
-            mesh.at[i],
+            mesh.at.of(i),
             format!(
                 "{} and {} cross: {}; a solid's surface must not pass through itself (pieces may touch along an edge or at a corner, or face to face)",
-                triangle(i, mesh.at[i]),
-                triangle(j, mesh.at[j]),
+                triangle(i, mesh.at.of(i)),
+                triangle(j, mesh.at.of(j)),
                 if same {
                     "the surface intersects itself"
                 } else {
@@ -88,9 +100,12 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
     }
     // Each shell's winding: the sign of its volume.
     let first = first_triangles(&shell, count);
-    let signs = volumes(mesh, &shell, count)?;
     if count == 1 {
-        if signs[0] < 0 {
+        let sign = whole();
+        if sign == 0 {
+            return Err(no_sign(mesh, 0, first[0]));
+        }
+        if sign < 0 {
             return Err(MeshError::new(
                 super::At::Whole,
                 "the mesh is inside out: its volume is negative, its faces point inward; flip the winding (every triangle's corners counter-clockwise seen from outside)",
@@ -98,9 +113,10 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
         }
         return Ok(1);
     }
+    let signs = volumes(mesh, &shell, count)?;
     let name = |s: usize| {
         let t = first[s];
-        format!("shell {} (from {})", s + 1, triangle(t, mesh.at[t]))
+        format!("shell {} (from {})", s + 1, triangle(t, mesh.at.of(t)))
     };
     let (list, start) = members(&shell, count);
     // NOTE: a shell winds around no point outside its box: the shells
@@ -110,7 +126,7 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
     let mut shell_boxes = vec![Aabb::empty(); count];
     for (&t, b) in bvh.items.iter().zip(&sorted) {
         let s = &mut shell_boxes[shell[t as usize] as usize];
-        *s = s.join(*b);
+        *s = s.join(b.wide());
     }
     drop(sorted);
     let shell_tree = Bvh::build(&shell_boxes, (0..count as u32).collect());
@@ -127,12 +143,12 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
             Ok(c) => c,
             Err([(a, wa), (b, wb)]) => {
                 return Err(MeshError::new(
-                    mesh.at[a],
+                    mesh.at.of(a),
                     format!(
                         "{} passes through another shell where they only touch (along edges lying in its faces): the other shells wind {wa} times around a corner of {} and {wb} times around a corner of {}; a solid's surface must not pass through itself",
                         name(s),
-                        triangle(a, mesh.at[a]),
-                        triangle(b, mesh.at[b]),
+                        triangle(a, mesh.at.of(a)),
+                        triangle(b, mesh.at.of(b)),
                     ),
                 ));
             }
@@ -142,7 +158,7 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
             (1, 0) | (-1, 1) => {}
             (1, 1) => {
                 return Err(MeshError::new(
-                    mesh.at[t],
+                    mesh.at.of(t),
                     format!(
                         "{} lies inside another outward shell and is wound outward too: the volume they share would count twice; a shell inside a solid must be wound inward to be a cavity",
                         name(s)
@@ -151,7 +167,7 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
             }
             (-1, 0) => {
                 return Err(MeshError::new(
-                    mesh.at[t],
+                    mesh.at.of(t),
                     format!(
                         "{} is wound inward (its faces point inward) but lies in no solid (outside every outward shell, or in another cavity): it is a cavity of nothing; flip its winding (every triangle's corners counter-clockwise seen from outside)",
                         name(s)
@@ -160,7 +176,7 @@ pub fn check_with(mesh: &Mesh, edges: Vec<Edge>) -> Result<usize, MeshError> {
             }
             (_, c) => {
                 return Err(MeshError::new(
-                    mesh.at[t],
+                    mesh.at.of(t),
                     format!(
                         "{} is wound {} where the other shells wind {} times around it: outward and inward shells must alternate from the outside in (a solid, its cavities, islands in them)",
                         name(s),
@@ -272,7 +288,7 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
         }
     }
     // The two sides of each T-junction (`classes`) are one shell.
-    for &(a, b) in &mesh.joins {
+    for &(a, b) in mesh.joins() {
         if live[a as usize] && live[b as usize] {
             union(&mut parent, a, b);
         }
@@ -322,39 +338,24 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
 }
 
 /// Each triangle's box (of its scaled corners), on every core: 48 bytes a
-/// triangle, allocated here and written (its pages faulted in) by the
-/// threads.
+/// triangle.
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Aabb> {
     let n = mesh.faces.len();
-    boxes_in(mesh, pts, &[], n, vec![Aabb::empty(); n])
-}
-
-/// The boxes of triangles `items` (all `n` of them, in order, when
-/// `items` is empty), in that order, on every core, written over `boxes`
-/// (at least `n` long; its pages already in memory), which is cut to `n`.
-fn boxes_in(mesh: &Mesh, pts: &[P3], items: &[u32], n: usize, mut boxes: Vec<Aabb>) -> Vec<Aabb> {
-    boxes.truncate(n);
     let threads = super::threads_for(n, 1 << 16);
     let piece = n.div_ceil(threads).max(1);
-    let of = |t: u32| Aabb::of(&mesh.faces[t as usize].map(|k| pts[k as usize]));
-    let fill = |from: usize, out: &mut [Aabb]| {
-        for (k, b) in out.iter_mut().enumerate() {
-            let at = from + k;
-            *b = of(if items.is_empty() {
-                at as u32
-            } else {
-                items[at]
-            });
-        }
-    };
+    let of = |t: usize| Aabb::of(&mesh.faces[t].map(|k| pts[k as usize]));
     if threads == 1 {
-        fill(0, &mut boxes);
-        return boxes;
+        return (0..n).map(of).collect();
     }
+    let mut boxes = vec![Aabb::empty(); n];
     std::thread::scope(|scope| {
         for (c, out) in boxes.chunks_mut(piece).enumerate() {
-            let fill = &fill;
-            scope.spawn(move || fill(c * piece, out));
+            let of = &of;
+            scope.spawn(move || {
+                for (k, b) in out.iter_mut().enumerate() {
+                    *b = of(c * piece + k);
+                }
+            });
         }
     });
     boxes
@@ -417,21 +418,37 @@ fn volumes(mesh: &Mesh, shell: &[u32], count: usize) -> Result<Vec<i8>, MeshErro
     };
     let mut signs = Vec::with_capacity(count);
     for (s, sum) in sums.iter().enumerate() {
-        let w = sum.value[0];
-        if w.abs() <= sum.error()[0] {
-            let t = first[s];
-            return Err(MeshError::new(
-                mesh.at[t],
-                format!(
-                    "shell {} (from {}) encloses no volume that can be told from zero, so whether it is wound outward or inward cannot be told",
-                    s + 1,
-                    triangle(t, mesh.at[t])
-                ),
-            ));
+        match volume_sign(sum) {
+            0 => return Err(no_sign(mesh, s, first[s])),
+            sign => signs.push(sign),
         }
-        signs.push(if w > 0.0 { 1 } else { -1 });
     }
     Ok(signs)
+}
+
+/// The sign of the volume whose terms `sums` adds up (`Sums::add` or
+/// `add_volume`): 1 or −1, or 0 when its bound cannot tell it from zero.
+pub fn volume_sign<T: Real>(sums: &Sums<T>) -> i8 {
+    let w = sums.value[0].f64();
+    if w.abs() <= sums.error()[0] {
+        0
+    } else if w > 0.0 {
+        1
+    } else {
+        -1
+    }
+}
+
+/// Shell `s`, from triangle `t`, whose volume's sign cannot be told.
+fn no_sign(mesh: &Mesh, s: usize, t: usize) -> MeshError {
+    MeshError::new(
+        mesh.at.of(t),
+        format!(
+            "shell {} (from {}) encloses no volume that can be told from zero, so whether it is wound outward or inward cannot be told",
+            s + 1,
+            triangle(t, mesh.at.of(t))
+        ),
+    )
 }
 
 /// The corners scaled by one power of two so that the largest magnitude is
@@ -466,10 +483,10 @@ pub(super) fn scaled(mesh: &Mesh) -> Result<Vec<P3>, MeshError> {
             let p = pts[k as usize];
             if p.iter().any(|x| *x != 0.0 && x.abs() < exact::TINY) {
                 return Err(MeshError::new(
-                    mesh.at[i],
+                    mesh.at.of(i),
                     format!(
                         "{} has the corner {}, a coordinate of which is nonzero but less than 2⁻²⁰⁰ of the mesh's largest ({big}): too wide a range of magnitudes to check the mesh's shells exactly; round it to zero",
-                        triangle(i, mesh.at[i]),
+                        triangle(i, mesh.at.of(i)),
                         point(mesh.vertices[k as usize])
                     ),
                 ));

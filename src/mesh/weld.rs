@@ -13,8 +13,8 @@
 //! a slot) is an eighth of a `HashMap<[u64; 3], u32>`'s memory, whose cache
 //! misses cost more than its hashing.
 
-use super::check::{Mesh, point, triangle};
-use super::read::Triangles;
+use super::check::{Mesh, Places, point, triangle};
+use super::read::{Corners, StlRecords, Triangles};
 use super::{At, MeshError};
 use std::sync::atomic::{AtomicU32, Ordering};
 
@@ -43,6 +43,9 @@ fn share(h: u64, shares: usize) -> usize {
     (((h >> 32) * shares as u64) >> 32) as usize
 }
 
+/// How many points back a corner is compared with before the table.
+const RECENT: usize = 8;
+
 /// An open-addressing table of point indices, keyed by the points' keys.
 struct Table {
     slots: Vec<u32>,
@@ -61,7 +64,7 @@ impl Table {
 
     /// The first point with point `i`'s key (`i` itself if none before);
     /// `h` its key's hash.
-    fn representative(&mut self, i: u32, k: &[u64; 3], h: u64, points: &[[f64; 3]]) -> u32 {
+    fn representative(&mut self, i: u32, k: &[u64; 3], h: u64, points: &impl Source) -> u32 {
         if 2 * (self.len + 1) > self.slots.len() {
             self.grow(points);
         }
@@ -74,24 +77,76 @@ impl Table {
                 self.len += 1;
                 return i;
             }
-            if key(&points[s as usize]) == *k {
+            if key(&points.point(s as usize)) == *k {
                 return s;
             }
             at = (at + 1) & mask;
         }
     }
 
-    fn grow(&mut self, points: &[[f64; 3]]) {
+    fn grow(&mut self, points: &impl Source) {
         let bigger = vec![EMPTY; 2 * self.slots.len()];
         let old = std::mem::replace(&mut self.slots, bigger);
         let mask = self.slots.len() - 1;
         for s in old.into_iter().filter(|s| *s != EMPTY) {
-            let mut at = hash(&key(&points[s as usize])) as usize & mask;
+            let mut at = hash(&key(&points.point(s as usize))) as usize & mask;
             while self.slots[at] != EMPTY {
                 at = (at + 1) & mask;
             }
             self.slots[at] = s;
         }
+    }
+}
+
+/// The corners the weld reads: point `i` of `points()`, triangle `i`'s
+/// three points, and where triangle `i` is in the file.
+trait Source: Sync {
+    fn points(&self) -> usize;
+    fn point(&self, i: usize) -> [f64; 3];
+    fn triangles(&self) -> usize;
+    fn face(&self, i: usize) -> [u32; 3];
+    fn at(&self, i: usize) -> At;
+}
+
+impl Source for Triangles {
+    fn points(&self) -> usize {
+        self.points.len()
+    }
+    #[inline]
+    fn point(&self, i: usize) -> [f64; 3] {
+        self.points[i]
+    }
+    fn triangles(&self) -> usize {
+        self.faces.len()
+    }
+    #[inline]
+    fn face(&self, i: usize) -> [u32; 3] {
+        self.faces[i]
+    }
+    fn at(&self, i: usize) -> At {
+        self.at[i]
+    }
+}
+
+/// A binary STL's corners, point `3i + k` corner k of triangle i.
+impl Source for StlRecords<'_> {
+    fn points(&self) -> usize {
+        3 * self.len()
+    }
+    #[inline]
+    fn point(&self, i: usize) -> [f64; 3] {
+        self.corner(i / 3, i % 3)
+    }
+    fn triangles(&self) -> usize {
+        self.len()
+    }
+    #[inline]
+    fn face(&self, i: usize) -> [u32; 3] {
+        let i = 3 * i as u32;
+        [i, i + 1, i + 2]
+    }
+    fn at(&self, i: usize) -> At {
+        StlRecords::at(i)
     }
 }
 
@@ -104,73 +159,116 @@ impl Mesh {
         Mesh::weld_on(t, threads)
     }
 
+    /// `weld` of a file's corners however read (`read::corners`).
+    pub fn weld_corners(c: Corners) -> Result<Mesh, MeshError> {
+        match c {
+            Corners::Listed(t) => Mesh::weld(t),
+            Corners::Stl(s) => {
+                let threads = super::threads_for(s.points(), 1 << 16);
+                let (vertices, faces) = welded(&s, threads)?;
+                Ok(Mesh::new(vertices, faces, Places::Records))
+            }
+        }
+    }
+
     /// `weld` on at most `threads` threads.
     pub fn weld_on(t: Triangles, threads: usize) -> Result<Mesh, MeshError> {
-        if t.faces.is_empty() {
-            return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
-        }
-        let n = t.points.len();
-        let threads = threads.clamp(1, n.max(1));
-        let rep: Vec<AtomicU32> = (0..n as u32).map(AtomicU32::new).collect();
-        let (points, rep_ref) = (&t.points, &rep);
-        // NOTE: every thread hashes every point (a few nanoseconds each)
-        // and keeps those of its share: cheaper in memory than a list of
-        // hashes or keys (24 bytes a point each).
-        // NOTE: the tables allocated here, on the calling thread: memory a
-        // thread allocates stays in its own arena once freed.
-        let tables: Vec<Table> = (0..threads)
-            .map(|_| Table::with_capacity(n / 6 / threads + 16))
-            .collect();
-        let find = move |me: usize, mut table: Table| {
-            for (i, p) in points.iter().enumerate() {
-                let k = key(p);
-                let h = hash(&k);
-                if share(h, threads) == me {
-                    let r = table.representative(i as u32, &k, h, points);
-                    if r != i as u32 {
-                        rep_ref[i].store(r, Ordering::Relaxed);
-                    }
-                }
-            }
-        };
-        if threads == 1 {
-            tables.into_iter().for_each(|t| find(0, t));
-        } else {
-            std::thread::scope(|scope| {
-                for (me, table) in tables.into_iter().enumerate() {
-                    scope.spawn(move || find(me, table));
-                }
-            });
-        }
-        let rep: Vec<u32> = rep.into_iter().map(AtomicU32::into_inner).collect();
-        let mut number = vec![u32::MAX; n];
-        let mut vertices = Vec::with_capacity(n / 6 + 3);
-        let mut faces = Vec::with_capacity(t.faces.len());
-        for (i, tri) in t.faces.iter().enumerate() {
-            let mut f = [0u32; 3];
-            for (k, &pi) in tri.iter().enumerate() {
-                let r = rep[pi as usize] as usize;
-                if number[r] == u32::MAX {
-                    let p = t.points[pi as usize];
-                    if !p.iter().all(|x| x.is_finite()) {
-                        return Err(MeshError::new(
-                            t.at[i],
-                            format!(
-                                "{} has a coordinate that is not a finite number: {}",
-                                triangle(i, t.at[i]),
-                                point(p)
-                            ),
-                        ));
-                    }
-                    number[r] = vertices.len() as u32;
-                    vertices.push(p.map(|x| x + 0.0));
-                }
-                f[k] = number[r];
-            }
-            faces.push(f);
-        }
-        Ok(Mesh::new(vertices, faces, t.at))
+        let (vertices, faces) = welded(&t, threads)?;
+        Ok(Mesh::new(vertices, faces, Places::Listed(t.at)))
     }
+}
+
+/// A weld's vertices and triangles.
+type Welded = (Vec<[f64; 3]>, Vec<[u32; 3]>);
+
+/// The welded vertices and triangles of `t`'s corners, on at most
+/// `threads` threads.
+fn welded<S: Source>(t: &S, threads: usize) -> Result<Welded, MeshError> {
+    if t.triangles() == 0 {
+        return Err(MeshError::new(At::Whole, "the mesh has no triangles"));
+    }
+    let n = t.points();
+    let threads = threads.clamp(1, n.max(1));
+    let rep: Vec<AtomicU32> = (0..n as u32).map(AtomicU32::new).collect();
+    let rep_ref = &rep;
+    // NOTE: every thread hashes every point (a few nanoseconds each)
+    // and keeps those of its share: cheaper in memory than a list of
+    // hashes or keys (24 bytes a point each).
+    // NOTE: the tables allocated here, on the calling thread: memory a
+    // thread allocates stays in its own arena once freed.
+    let tables: Vec<Table> = (0..threads)
+        .map(|_| Table::with_capacity(n / 6 / threads + 16))
+        .collect();
+    let find = move |me: usize, mut table: Table| {
+        let mut recent = [[0u64; 3]; RECENT];
+        for i in 0..n {
+            let k = key(&t.point(i));
+            // NOTE: a corner equal to one of the few points just before
+            // it (most are: a file's neighbouring triangles share corners)
+            // is linked to it without a look in the table; the links are
+            // followed below, so the representatives are the same.
+            let back = (1..=i.min(RECENT)).find(|m| recent[(i - m) % RECENT] == k);
+            recent[i % RECENT] = k;
+            if let Some(m) = back {
+                // Written by one thread, in runs of points (not one of
+                // every `threads`: no cache line written by two).
+                if (i >> 12) % threads == me {
+                    rep_ref[i].store((i - m) as u32, Ordering::Relaxed);
+                }
+                continue;
+            }
+            let h = hash(&k);
+            if share(h, threads) == me {
+                let r = table.representative(i as u32, &k, h, t);
+                if r != i as u32 {
+                    rep_ref[i].store(r, Ordering::Relaxed);
+                }
+            }
+        }
+    };
+    if threads == 1 {
+        tables.into_iter().for_each(|t| find(0, t));
+    } else {
+        std::thread::scope(|scope| {
+            for (me, table) in tables.into_iter().enumerate() {
+                scope.spawn(move || find(me, table));
+            }
+        });
+    }
+    let mut rep: Vec<u32> = rep.into_iter().map(AtomicU32::into_inner).collect();
+    // A link points back to a point whose representative is settled.
+    for i in 0..n {
+        rep[i] = rep[rep[i] as usize];
+    }
+    let mut number = vec![u32::MAX; n];
+    let mut vertices = Vec::with_capacity(n / 6 + 3);
+    let mut faces = Vec::with_capacity(t.triangles());
+    for i in 0..t.triangles() {
+        let tri = t.face(i);
+        let mut f = [0u32; 3];
+        for (k, &pi) in tri.iter().enumerate() {
+            let r = rep[pi as usize] as usize;
+            if number[r] == u32::MAX {
+                let p = t.point(pi as usize);
+                if !p.iter().all(|x| x.is_finite()) {
+                    let at = t.at(i);
+                    return Err(MeshError::new(
+                        at,
+                        format!(
+                            "{} has a coordinate that is not a finite number: {}",
+                            triangle(i, at),
+                            point(p)
+                        ),
+                    ));
+                }
+                number[r] = vertices.len() as u32;
+                vertices.push(p.map(|x| x + 0.0));
+            }
+            f[k] = number[r];
+        }
+        faces.push(f);
+    }
+    Ok((vertices, faces))
 }
 
 #[cfg(test)]
@@ -232,6 +330,77 @@ mod tests {
                     |v: &[[f64; 3]]| v.iter().map(|p| p.map(f64::to_bits)).collect::<Vec<_>>();
                 assert_eq!(bits(&m.vertices), bits(&vertices), "{threads} threads");
             }
+        }
+    }
+
+    /// A binary STL of `n` triangles whose corners take few f32 values
+    /// (corners repeat often, near each other and far apart), −0 too.
+    fn stl(seed: u64, n: usize) -> Vec<u8> {
+        let mut x = seed | 1;
+        let mut bytes = vec![b' '; 80];
+        bytes.extend((n as u32).to_le_bytes());
+        for _ in 0..n {
+            bytes.extend([0u8; 12]);
+            for _ in 0..9 {
+                x ^= x << 13;
+                x ^= x >> 7;
+                x ^= x << 17;
+                let v = ((x >> 11) % 7) as f32 * 0.375 - 1.125;
+                let v = if v == 0.0 && x & 1 == 1 { -0.0 } else { v };
+                bytes.extend(v.to_le_bytes());
+            }
+            bytes.extend([0u8; 2]);
+        }
+        bytes
+    }
+
+    #[test]
+    fn a_binary_stl_welds_from_its_records_as_from_its_decoded_corners() {
+        use crate::mesh::read::{self, FileType};
+        for (seed, n) in [(3, 1), (11, 500), (29, 40_000)] {
+            let bytes = stl(seed, n);
+            let listed =
+                Mesh::weld(read::read(FileType::Stl, &bytes, n).expect("valid")).expect("finite");
+            for threads in [1, 2, 3] {
+                let m = crate::mesh::with_threads(threads, || {
+                    Mesh::weld_corners(read::corners(FileType::Stl, &bytes, n).expect("valid"))
+                })
+                .expect("finite");
+                assert_eq!(m.faces, listed.faces, "{threads} threads");
+                let bits =
+                    |v: &[[f64; 3]]| v.iter().map(|p| p.map(f64::to_bits)).collect::<Vec<_>>();
+                assert_eq!(
+                    bits(&m.vertices),
+                    bits(&listed.vertices),
+                    "{threads} threads"
+                );
+                for i in [0, n / 2, n - 1] {
+                    assert_eq!(m.at.of(i), listed.at.of(i));
+                    assert_eq!(m.at.of(i), At::Byte(84 + 50 * i as u64));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_binary_stl_names_its_first_corner_not_finite_by_its_record() {
+        use crate::mesh::read::{self, FileType};
+        let mut bytes = stl(5, 1000);
+        // Triangle 701's second corner's y, and a later one's x.
+        let at = |t: usize, c: usize, k: usize| 84 + 50 * t + 12 + 12 * c + 4 * k;
+        bytes[at(700, 1, 1)..at(700, 1, 1) + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+        bytes[at(900, 0, 0)..at(900, 0, 0) + 4].copy_from_slice(&f32::INFINITY.to_le_bytes());
+        for threads in [1, 2] {
+            let e = crate::mesh::with_threads(threads, || {
+                Mesh::weld_corners(read::corners(FileType::Stl, &bytes, 1000).expect("valid"))
+            })
+            .expect_err("not finite");
+            assert_eq!(e.at, At::Byte(84 + 50 * 700));
+            assert!(
+                e.message.starts_with("triangle 701 (byte 35084) "),
+                "{}",
+                e.message
+            );
         }
     }
 

@@ -352,7 +352,7 @@ impl Ctx<'_> {
             return Ok(m.clone());
         }
         let format = FileType::of(&t.canonical).expect("`target_of` checked the extension");
-        let bytes = std::fs::read(&t.shown).map_err(|e| {
+        let bytes = crate::mesh::read::file(&t.shown).map_err(|e| {
             self.err(
                 file.span(),
                 format!("cannot read the mesh file `{}`: {e}", t.shown_name),

@@ -36,7 +36,7 @@ pub enum Piece {
     /// faces the viewer and one that does not, and its open edges.
     Silhouette {
         points: Vec<V3>,
-        faces: std::sync::Arc<[[u32; 3]]>,
+        faces: std::sync::Arc<Vec<[u32; 3]>>,
     },
     /// The outline of the ellipsoid {c + M u : |u| ≤ 1}, `m` its columns
     /// (a zero column: a flat ellipse, the rim of a circle).

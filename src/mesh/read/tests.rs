@@ -137,3 +137,20 @@ fn the_cuts_fall_on_facet_lines() {
         assert!(text[*c..].starts_with("facet"), "{c}");
     }
 }
+
+#[test]
+fn a_file_read_in_pieces_is_the_file() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    for len in [0usize, 1, 2, 3, 1000, 1 << 20] {
+        let bytes: Vec<u8> = (0..len).map(|i| (i * 7 + i / 251) as u8).collect();
+        let path = dir.path().join(format!("m{len}.stl"));
+        std::fs::write(&path, &bytes).expect("written");
+        for threads in [1, 2, 3] {
+            let got = crate::mesh::with_threads(threads, || file(&path)).expect("read");
+            assert_eq!(got, bytes, "{len} bytes, {threads} threads");
+        }
+    }
+    let missing = dir.path().join("none.stl");
+    let e = crate::mesh::with_threads(2, || file(&missing)).expect_err("no file");
+    assert_eq!(e.kind(), std::io::ErrorKind::NotFound);
+}

@@ -3,7 +3,7 @@
 //! itself, on every core), each pair tested with exact predicates
 //! (Guigue and Devillers' test).
 
-use super::super::bvh::{Aabb, Bvh};
+use super::super::bvh::{Bvh, Small};
 use super::super::check::Mesh;
 use super::super::exact::{P3, Plane, orient2d, orient3d};
 
@@ -21,7 +21,7 @@ use super::super::exact::{P3, Plane, orient2d, orient3d};
 pub(super) fn first_crossing(
     mesh: &Mesh,
     pts: &[P3],
-    sorted: &[Aabb],
+    sorted: &[Small],
     bvh: &Bvh,
 ) -> Option<(usize, usize)> {
     let threads = super::super::threads_for(bvh.items.len(), 1);
@@ -36,7 +36,7 @@ pub(super) fn first_crossing(
 pub(super) fn first_crossing_on(
     mesh: &Mesh,
     pts: &[P3],
-    sorted: &[Aabb],
+    sorted: &[Small],
     bvh: &Bvh,
     threads: usize,
     size: usize,
@@ -45,6 +45,7 @@ pub(super) fn first_crossing_on(
     let tasks = bvh.join_tasks(size);
     let threads = threads.clamp(1, tasks.len().max(1));
     let tri = |i: usize| mesh.faces[i].map(|k| pts[k as usize]);
+    let planes = planes(mesh, pts, threads);
     let best = AtomicUsize::new(usize::MAX);
     let next = AtomicUsize::new(0);
     let search = || -> Option<(usize, usize)> {
@@ -55,16 +56,28 @@ pub(super) fn first_crossing_on(
             let Some(&task) = tasks.get(t) else {
                 return mine;
             };
-            bvh.join(sorted, task, &mut stack, |i, j| {
-                let (i, j) = (i as usize, j as usize);
-                if i > best.load(Ordering::Relaxed) || mine.is_some_and(|m| (i, j) >= m) {
-                    return;
-                }
-                if cross_from(mesh.faces[i], mesh.faces[j], || (tri(i), tri(j))) {
-                    mine = Some((i, j));
-                    best.fetch_min(i, Ordering::Relaxed);
-                }
-            });
+            // NOTE: inlined into the join's loop, a call a pair spared.
+            bvh.join(
+                sorted,
+                task,
+                &mut stack,
+                #[inline(always)]
+                |i, j| {
+                    let (i, j) = (i as usize, j as usize);
+                    if i > best.load(Ordering::Relaxed) || mine.is_some_and(|m| (i, j) >= m) {
+                        return;
+                    }
+                    if cross_from(
+                        mesh.faces[i],
+                        mesh.faces[j],
+                        [&planes[i], &planes[j]],
+                        || (tri(i), tri(j)),
+                    ) {
+                        mine = Some((i, j));
+                        best.fetch_min(i, Ordering::Relaxed);
+                    }
+                },
+            );
         }
     };
     if threads == 1 {
@@ -87,7 +100,87 @@ pub(super) fn first_crossing_on(
 /// facing the same way.
 #[cfg(test)]
 pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
-    cross_from(f, g, || (*p, *q))
+    cross_from(f, g, [&Flat::of(p), &Flat::of(q)], || (*p, *q))
+}
+
+/// A triangle's plane for the filter: x = (b − a) × (c − a) and the
+/// largest of its components' magnitude bounds (|b − a|, |c − a| crossed
+/// without cancellation), so that x · (d − a) is within 1e-15 · m · Σ|d −
+/// a| of the exact orientation of (a, b, c, d) (`Plane::side`'s filter,
+/// its per-axis bounds widened to their largest: the roundings of the
+/// differences, the cross product and the dot product come to under
+/// 7 · 2⁻⁵³ of Σ xmᵢ|dᵢ − aᵢ| ≤ m · Σ|dᵢ − aᵢ|).
+///
+/// NOTE: made once a triangle (32 bytes each), not once a pair: a
+/// million-triangle mesh has some 8 million pairs whose boxes meet, most
+/// of which the filter decides.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Flat {
+    x: P3,
+    m: f64,
+}
+
+impl Flat {
+    #[inline]
+    fn of(t: &[P3; 3]) -> Flat {
+        let [a, b, c] = *t;
+        let b: P3 = std::array::from_fn(|k| b[k] - a[k]);
+        let c: P3 = std::array::from_fn(|k| c[k] - a[k]);
+        let (bm, cm) = (b.map(f64::abs), c.map(f64::abs));
+        Flat {
+            x: [
+                b[1] * c[2] - b[2] * c[1],
+                b[2] * c[0] - b[0] * c[2],
+                b[0] * c[1] - b[1] * c[0],
+            ],
+            m: (bm[1] * cm[2] + bm[2] * cm[1])
+                .max(bm[2] * cm[0] + bm[0] * cm[2])
+                .max(bm[0] * cm[1] + bm[1] * cm[0]),
+        }
+    }
+
+    /// Whether the points `d` all lie strictly on one side of the plane
+    /// of the triangle whose first corner is `a`, by the filter alone
+    /// (false: on both sides or on it, or the filter cannot tell).
+    #[inline]
+    fn strictly_one_side(&self, a: P3, d: &[P3]) -> bool {
+        let side = |p: &P3| {
+            let e = [p[0] - a[0], p[1] - a[1], p[2] - a[2]];
+            let det = self.x[0] * e[0] + self.x[1] * e[1] + self.x[2] * e[2];
+            let bound = 1e-15 * self.m * (e[0].abs() + e[1].abs() + e[2].abs());
+            (det > bound) as i8 - (det < -bound) as i8
+        };
+        let s = side(&d[0]);
+        s != 0 && d[1..].iter().all(|p| side(p) == s)
+    }
+}
+
+/// Every triangle's `Flat`, on `threads` threads.
+fn planes(mesh: &Mesh, pts: &[P3], threads: usize) -> Vec<Flat> {
+    let n = mesh.faces.len();
+    let of = |i: usize| Flat::of(&mesh.faces[i].map(|k| pts[k as usize]));
+    let piece = n.div_ceil(threads.max(1)).max(1);
+    if threads <= 1 || n <= piece {
+        return (0..n).map(of).collect();
+    }
+    let mut out = vec![
+        Flat {
+            x: [0.0; 3],
+            m: 0.0
+        };
+        n
+    ];
+    std::thread::scope(|scope| {
+        for (c, out) in out.chunks_mut(piece).enumerate() {
+            let of = &of;
+            scope.spawn(move || {
+                for (k, f) in out.iter_mut().enumerate() {
+                    *f = of(c * piece + k);
+                }
+            });
+        }
+    });
+    out
 }
 
 /// `cross`, the triangles' points fetched (`points`) only when the
@@ -96,9 +189,13 @@ pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool 
 /// NOTE: a third of a smooth mesh's pairs are neighbours across an edge,
 /// answered by their corners' numbers: their 18 coordinates, read from
 /// wherever the corners' numbers put them, are not read at all.
-#[inline]
-fn cross_from(f: [u32; 3], g: [u32; 3], points: impl FnOnce() -> ([P3; 3], [P3; 3])) -> bool {
-    // Where each of f's corners is among g's (3: not there).
+#[inline(always)]
+fn cross_from(
+    f: [u32; 3],
+    g: [u32; 3],
+    [pf, pg]: [&Flat; 2],
+    points: impl FnOnce() -> ([P3; 3], [P3; 3]),
+) -> bool {
     let at = f.map(|v| g.iter().position(|w| *w == v).unwrap_or(3));
     let shared = at.iter().filter(|m| **m < 3).count();
     if shared == 2 {
@@ -109,9 +206,10 @@ fn cross_from(f: [u32; 3], g: [u32; 3], points: impl FnOnce() -> ([P3; 3], [P3; 
         // side) or face opposite ways (folded flat). The exact path
         // below answers the same (a test holds them equal); this
         // spares a third of a smooth mesh's pairs its predicates.
-        let k = (0..3)
-            .find(|&k| at[k] < 3 && at[(k + 1) % 3] < 3)
-            .expect("invariant: two shared corners of a triangle make one of its edges");
+        // The edge from corner k to k + 1: the one without the corner
+        // not shared.
+        let alone = usize::from(at[1] == 3) + 2 * usize::from(at[2] == 3);
+        let k = (alone + 1) % 3;
         if g[(at[(k + 1) % 3] + 1) % 3] == f[k] {
             return false;
         }
@@ -125,60 +223,23 @@ fn cross_from(f: [u32; 3], g: [u32; 3], points: impl FnOnce() -> ([P3; 3], [P3; 
             // common pair of a mesh's boxes that meet (a million of them
             // in a sphere's two polar fans), meet only at v when p's two
             // other corners lie strictly on one side of q's plane: then
-            // no predicate need be exact, and this filter (the one
-            // `exact::Plane::side` tries first, on q turned to start at
-            // v, which leaves the sign as it is) decides most of them.
+            // no predicate need be exact, and this filter (`Flat`'s, the
+            // one `exact::Plane::side` tries first) decides most of them.
             // Undecided, the exact path answers (a test holds them equal).
-            let k = (0..3).find(|&k| at[k] < 3).expect("one shared corner");
-            let m = at[k];
-            let v = p[k];
-            if strictly_one_side(
-                v,
-                [q[(m + 1) % 3], q[(m + 2) % 3]],
-                &[p[(k + 1) % 3], p[(k + 2) % 3]],
-            ) {
+            let k = usize::from(at[1] < 3) + 2 * usize::from(at[2] < 3);
+            if pg.strictly_one_side(q[0], &[p[(k + 1) % 3], p[(k + 2) % 3]]) {
                 return false;
             }
         }
         // NOTE: no shared corner: p wholly on one side of q's plane, or q
         // of p's, meet nowhere; the same filter decides most such pairs of
         // a mesh's (neighbours a corner apart).
-        0 if strictly_one_side(q[0], [q[1], q[2]], p)
-            || strictly_one_side(p[0], [p[1], p[2]], q) =>
-        {
+        0 if pg.strictly_one_side(q[0], p) || pf.strictly_one_side(p[0], q) => {
             return false;
         }
         _ => {}
     }
     cross_exact(f, g, p, q)
-}
-
-/// Whether the points `d` all lie strictly on one side of the plane of
-/// the triangle (v, e₀, e₁), by the floating-point filter of `orient3d`
-/// alone (false: on both sides or on it, or the filter cannot tell).
-#[inline]
-fn strictly_one_side(v: P3, e: [P3; 2], d: &[P3]) -> bool {
-    let sub = |a: P3| [a[0] - v[0], a[1] - v[1], a[2] - v[2]];
-    let (b, c) = (sub(e[0]), sub(e[1]));
-    let x = [
-        b[1] * c[2] - b[2] * c[1],
-        b[2] * c[0] - b[0] * c[2],
-        b[0] * c[1] - b[1] * c[0],
-    ];
-    let (bm, cm) = (b.map(f64::abs), c.map(f64::abs));
-    let xm = [
-        bm[1] * cm[2] + bm[2] * cm[1],
-        bm[2] * cm[0] + bm[0] * cm[2],
-        bm[0] * cm[1] + bm[1] * cm[0],
-    ];
-    let side = |p: P3| {
-        let d = sub(p);
-        let det = x[0] * d[0] + x[1] * d[1] + x[2] * d[2];
-        let bound = 1e-15 * (xm[0] * d[0].abs() + xm[1] * d[1].abs() + xm[2] * d[2].abs());
-        (det > bound) as i8 - (det < -bound) as i8
-    };
-    let s = side(d[0]);
-    s != 0 && d[1..].iter().all(|p| side(*p) == s)
 }
 
 /// `cross` by the predicates alone.

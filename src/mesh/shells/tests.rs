@@ -38,7 +38,7 @@ fn mesh(t: Vec<Tri>) -> Mesh {
 fn checked(t: Vec<Tri>) -> Result<usize, String> {
     let mut m = mesh(t);
     m.check(Mode::Solid).map_err(|e| e.message)?;
-    check(&mut m).map_err(|e| e.message)
+    check(&m).map_err(|e| e.message)
 }
 
 fn refused(t: Vec<Tri>) -> String {

@@ -378,7 +378,7 @@ impl<'s, 'a, 'i> Meshes<'s, 'a, 'i> {
                 crate::io::MAX_FILE_BYTES >> 20
             )));
         }
-        let bytes = std::fs::read(&canonical).map_err(|e| {
+        let bytes = crate::mesh::read::file(&canonical).map_err(|e| {
             at(format!(
                 "cannot read the mesh file `{}`: {e}",
                 shorten(&shown_name)
