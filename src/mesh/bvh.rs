@@ -91,6 +91,25 @@ impl Small {
     }
 }
 
+/// A box a tree is built over: its f64 box (exactly).
+pub trait Boxed: Copy + Sync {
+    fn wide(&self) -> Aabb;
+}
+
+impl Boxed for Aabb {
+    #[inline]
+    fn wide(&self) -> Aabb {
+        *self
+    }
+}
+
+impl Boxed for Small {
+    #[inline]
+    fn wide(&self) -> Aabb {
+        Small::wide(self)
+    }
+}
+
 /// Triangles a leaf holds at most.
 ///
 /// NOTE: 8, not 4: half the nodes and a third fewer node pairs in the
@@ -123,7 +142,7 @@ pub struct Node {
 }
 
 impl Bvh {
-    pub fn build(boxes: &[Aabb], items: Vec<u32>) -> Bvh {
+    pub fn build<B: Boxed>(boxes: &[B], items: Vec<u32>) -> Bvh {
         // Few items are not worth a thread.
         let threads = super::threads_for(items.len(), 1 << 16);
         Bvh::build_on(boxes, items, threads)
@@ -143,7 +162,7 @@ impl Bvh {
     /// self-join visits every pair of items whose boxes meet, whatever
     /// the tree (the crossing search keeps the least crossing pair, a
     /// winding is a sum); `tests` hold the join to every pair.
-    pub fn build_on(boxes: &[Aabb], items: Vec<u32>, threads: usize) -> Bvh {
+    pub fn build_on<B: Boxed>(boxes: &[B], items: Vec<u32>, threads: usize) -> Bvh {
         let items = morton_sorted(boxes, items, threads);
         let n = items.len();
         let mut nodes = Vec::with_capacity(node_count(n));
@@ -178,7 +197,7 @@ impl Bvh {
             nodes[at].bounds = if node.left == 0 {
                 items[node.start as usize..node.end as usize]
                     .iter()
-                    .fold(Aabb::empty(), |b, &i| b.join(boxes[i as usize]))
+                    .fold(Aabb::empty(), |b, &i| b.join(boxes[i as usize].wide()))
             } else {
                 let l = node.left as usize;
                 nodes[l].bounds.join(nodes[l + 1].bounds)
@@ -331,17 +350,12 @@ impl Bvh {
         }
     }
 
-    /// The items' boxes in their order as `Small`s (`join`'s `sorted`), on
-    /// every core.
-    pub fn sorted(&self, boxes: &[Aabb]) -> Vec<Small> {
+    /// The items' boxes in their order (`join`'s `sorted`), on every core.
+    pub fn sorted(&self, boxes: &[Small]) -> Vec<Small> {
         let n = self.items.len();
         let threads = super::threads_for(n, 1 << 16);
         if threads == 1 {
-            return self
-                .items
-                .iter()
-                .map(|&i| Small::of(&boxes[i as usize]))
-                .collect();
+            return self.items.iter().map(|&i| boxes[i as usize]).collect();
         }
         let mut out = vec![
             Small {
@@ -355,7 +369,7 @@ impl Bvh {
             for (out, items) in out.chunks_mut(piece).zip(self.items.chunks(piece)) {
                 scope.spawn(move || {
                     for (b, &i) in out.iter_mut().zip(items) {
-                        *b = Small::of(&boxes[i as usize]);
+                        *b = boxes[i as usize];
                     }
                 });
             }
@@ -394,14 +408,14 @@ const BITS: u32 = 16;
 
 /// `items` sorted by the Morton codes of their boxes' centres (in the box
 /// of those centres), stably: items of equal codes keep their order.
-fn morton_sorted(boxes: &[Aabb], items: Vec<u32>, threads: usize) -> Vec<u32> {
+fn morton_sorted<B: Boxed>(boxes: &[B], items: Vec<u32>, threads: usize) -> Vec<u32> {
     let n = items.len();
     if n <= LEAF {
         return items;
     }
     // Halves added: no overflow.
     let centre = |i: u32| -> P3 {
-        let b = &boxes[i as usize];
+        let b = boxes[i as usize].wide();
         std::array::from_fn(|k| b.lo[k] / 2.0 + b.hi[k] / 2.0)
     };
     let piece = n.div_ceil(threads.max(1)).max(1);

@@ -2,14 +2,16 @@
 //! with exactly equal coordinates (−0 and +0 equal) are one vertex, the
 //! vertices numbered in the order the triangles first use them.
 //!
-//! NOTE: in two steps, so that the numbering is the one-core order
-//! whatever the number of cores: (1) each core takes the points whose key
-//! (their coordinates' bits) hashes into its share of the hashes and
-//! finds, in a table of its own, each point's representative (the first
-//! point, in the file's order, with its key: a point's share is its
-//! key's, so one core sees every point of a key); (2) one pass over the
-//! triangles' corners in order numbers each representative when it is
-//! first used, a few array reads a corner. A table of u32 indices (4 bytes
+//! NOTE: in steps, so that the numbering is the one-core order whatever
+//! the number of cores: (1) each core reads a run of the points, links a
+//! point equal to one just before it to that point, and sorts the others
+//! by the share of the hashes their key (their coordinates' bits) falls
+//! in; (2) each core takes a share and finds, in a table of its own, each
+//! of its points' representative (the first point, in the file's order,
+//! with its key: a point's share is its key's, so one core sees every
+//! point of a key); (3) one pass over the triangles' corners in order
+//! numbers each representative when it is first used, a few array reads
+//! a corner. A table of u32 indices (4 bytes
 //! a slot) is an eighth of a `HashMap<[u64; 3], u32>`'s memory, whose cache
 //! misses cost more than its hashing.
 
@@ -191,47 +193,68 @@ fn welded<S: Source>(t: &S, threads: usize) -> Result<Welded, MeshError> {
     let threads = threads.clamp(1, n.max(1));
     let rep: Vec<AtomicU32> = (0..n as u32).map(AtomicU32::new).collect();
     let rep_ref = &rep;
-    // NOTE: every thread hashes every point (a few nanoseconds each)
-    // and keeps those of its share: cheaper in memory than a list of
-    // hashes or keys (24 bytes a point each).
+    // NOTE: in two passes, each point read once. (1) Each thread takes a
+    // run of the points: a corner equal to one of the few points just
+    // before it in its run (most are: a file's neighbouring triangles
+    // share corners) is linked to that point, without a look in a table
+    // (the links are followed below, so the representatives are the
+    // same); each other point goes, with its key's hash, into the list
+    // of its hash's share. (2) Each thread takes a share: the lists of
+    // every run, in the runs' order, so the points in the file's order,
+    // each found or put in its own table.
+    let piece = n.div_ceil(threads).max(1);
+    let scan = move |me: usize| -> Vec<Vec<(u32, u32)>> {
+        let mut lists = vec![Vec::new(); threads];
+        let mut recent = [[0u64; 3]; RECENT];
+        let start = me * piece;
+        for i in start..n.min(start + piece) {
+            let k = key(&t.point(i));
+            let back = (1..=(i - start).min(RECENT)).find(|m| recent[(i - m) % RECENT] == k);
+            recent[i % RECENT] = k;
+            if let Some(m) = back {
+                rep_ref[i].store((i - m) as u32, Ordering::Relaxed);
+                continue;
+            }
+            let h = hash(&k);
+            // The hash's low half: the tables' slots (fewer than 2³²).
+            lists[share(h, threads)].push((i as u32, h as u32));
+        }
+        lists
+    };
     // NOTE: the tables allocated here, on the calling thread: memory a
     // thread allocates stays in its own arena once freed.
     let tables: Vec<Table> = (0..threads)
         .map(|_| Table::with_capacity(n / 6 / threads + 16))
         .collect();
-    let find = move |me: usize, mut table: Table| {
-        let mut recent = [[0u64; 3]; RECENT];
-        for i in 0..n {
-            let k = key(&t.point(i));
-            // NOTE: a corner equal to one of the few points just before
-            // it (most are: a file's neighbouring triangles share corners)
-            // is linked to it without a look in the table; the links are
-            // followed below, so the representatives are the same.
-            let back = (1..=i.min(RECENT)).find(|m| recent[(i - m) % RECENT] == k);
-            recent[i % RECENT] = k;
-            if let Some(m) = back {
-                // Written by one thread, in runs of points (not one of
-                // every `threads`: no cache line written by two).
-                if (i >> 12) % threads == me {
-                    rep_ref[i].store((i - m) as u32, Ordering::Relaxed);
-                }
-                continue;
-            }
-            let h = hash(&k);
-            if share(h, threads) == me {
-                let r = table.representative(i as u32, &k, h, t);
-                if r != i as u32 {
-                    rep_ref[i].store(r, Ordering::Relaxed);
+    let find = |me: usize, mut table: Table, runs: &[Vec<Vec<(u32, u32)>>]| {
+        for run in runs {
+            for &(i, h) in &run[me] {
+                let k = key(&t.point(i as usize));
+                let r = table.representative(i, &k, u64::from(h), t);
+                if r != i {
+                    rep_ref[i as usize].store(r, Ordering::Relaxed);
                 }
             }
         }
     };
     if threads == 1 {
-        tables.into_iter().for_each(|t| find(0, t));
+        let runs = [scan(0)];
+        tables.into_iter().for_each(|table| find(0, table, &runs));
     } else {
+        let runs: Vec<Vec<Vec<(u32, u32)>>> = std::thread::scope(|scope| {
+            let handles: Vec<_> = (0..threads)
+                .map(|me| scope.spawn(move || scan(me)))
+                .collect();
+            handles
+                .into_iter()
+                .map(|h| h.join().expect("invariant: a weld's scan does not panic"))
+                .collect()
+        });
+        let runs = &runs;
         std::thread::scope(|scope| {
             for (me, table) in tables.into_iter().enumerate() {
-                scope.spawn(move || find(me, table));
+                let find = &find;
+                scope.spawn(move || find(me, table, runs));
             }
         });
     }

@@ -25,7 +25,8 @@ fn by_query(bvh: &Bvh, boxes: &[Aabb]) -> Vec<(u32, u32)> {
 fn by_join(bvh: &Bvh, boxes: &[Aabb], size: usize) -> Vec<(u32, u32)> {
     let mut out = Vec::new();
     let mut stack = Vec::new();
-    let sorted = bvh.sorted(boxes);
+    let small: Vec<Small> = boxes.iter().map(Small::of).collect();
+    let sorted = bvh.sorted(&small);
     for task in bvh.join_tasks(size) {
         bvh.join(&sorted, task, &mut stack, |i, j| out.push((i, j)));
     }
@@ -190,7 +191,7 @@ fn one_box_repeated_many_times_pairs_every_two() {
 
 #[test]
 fn an_empty_tree_has_no_pairs() {
-    let bvh = Bvh::build(&[], Vec::new());
+    let bvh = Bvh::build::<Aabb>(&[], Vec::new());
     assert!(by_join(&bvh, &[], 1).is_empty());
 }
 

@@ -371,8 +371,9 @@ fn first_crossings(t: Vec<Tri>) -> [Option<(usize, usize)>; 4] {
         .iter()
         .map(|f| Aabb::of(&f.map(|k| pts[k as usize])))
         .collect();
-    let bvh = Bvh::build(&boxes, (0..m.faces.len() as u32).collect());
-    let sorted = bvh.sorted(&boxes);
+    let small: Vec<Small> = boxes.iter().map(Small::of).collect();
+    let bvh = Bvh::build(&small, (0..m.faces.len() as u32).collect());
+    let sorted = bvh.sorted(&small);
     [
         brute_first_crossing(&m, &pts, &boxes),
         first_crossing_on(&m, &pts, &sorted, &bvh, 1, 1 << 20),
