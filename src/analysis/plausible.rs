@@ -248,7 +248,7 @@ impl Walk<'_> {
             if !l.part.spec.removed {
                 mass = (mass + crate::part::mass_of::<f64>(&l.part.spec)).min(f64::MAX);
             }
-            let [a, b] = l.part.spec.place.outline().extent();
+            let [a, b] = l.part.spec.place.extent();
             for k in 0..3 {
                 lo[k] = lo[k].min(a[k]);
                 hi[k] = hi[k].max(b[k]);

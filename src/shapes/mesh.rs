@@ -8,7 +8,7 @@ use super::read::Reader;
 use crate::diag::Diagnostic;
 use super::error::{self, Own};
 use super::lift::Lift;
-use super::outline::{Outline, Piece};
+use super::outline::{Outline, Piece, V3};
 use super::{MaterialRule, Mover, PER_VOLUME, Shape, ShapeInfo, ShapeKind, Slot, Units};
 use crate::mesh::MeshBody;
 use crate::numeric::{DD, M3, Real};
@@ -82,6 +82,20 @@ fn mesh_second_moment<T: Real>(
         own
     });
     (j, own)
+}
+
+impl Mesh {
+    /// Its welded corners in the file's frame: scaled, turned and moved.
+    fn placed_points(&self) -> impl Iterator<Item = V3> + '_ {
+        let [x, y, z] = axes(&self.orientation.matrix());
+        let s = self.scale.f64();
+        self.mesh.points.iter().map(move |p| {
+            add(
+                self.origin,
+                comb(&[(p[0] * s, x), (p[1] * s, y), (p[2] * s, z)]),
+            )
+        })
+    }
 }
 
 impl ShapeKind for Mesh {
@@ -268,22 +282,24 @@ impl ShapeKind for Mesh {
 
     /// Its silhouette edges in each view.
     fn outline(&self) -> Outline {
-        let [x, y, z] = axes(&self.orientation.matrix());
-        let s = self.scale.f64();
-        let points = self
-            .mesh
-            .points
-            .iter()
-            .map(|p| {
-                add(
-                    self.origin,
-                    comb(&[(p[0] * s, x), (p[1] * s, y), (p[2] * s, z)]),
-                )
-            })
-            .collect();
+        let points = self.placed_points().collect();
         Outline::Pieces(vec![Piece::Silhouette {
             points,
             faces: self.mesh.faces.clone(),
         }])
+    }
+
+    /// The outline's box, its corners placed one at a time (no list of
+    /// a million placed corners for a plausibility check).
+    fn extent(&self) -> [V3; 2] {
+        let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+        for q in self.placed_points() {
+            for k in 0..3 {
+                // As `Outline::extent` adds a corner (−0 + 0 is +0).
+                b[0][k] = b[0][k].min(q[k] - 0.0);
+                b[1][k] = b[1][k].max(q[k] + 0.0);
+            }
+        }
+        b
     }
 }
