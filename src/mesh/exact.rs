@@ -71,23 +71,13 @@ pub struct Plane {
 impl Plane {
     pub fn of(t: &[P3; 3]) -> Plane {
         let [a, b, c] = *t;
-        let ba = sub3(b, a);
-        let ca = sub3(c, a);
-        let (bm, cm) = (ba.map(f64::abs), ca.map(f64::abs));
+        let (x, xm) = normal(t);
         Plane {
             a,
             b,
             c,
-            x: [
-                ba[1] * ca[2] - ba[2] * ca[1],
-                ba[2] * ca[0] - ba[0] * ca[2],
-                ba[0] * ca[1] - ba[1] * ca[0],
-            ],
-            xm: [
-                bm[1] * cm[2] + bm[2] * cm[1],
-                bm[2] * cm[0] + bm[0] * cm[2],
-                bm[0] * cm[1] + bm[1] * cm[0],
-            ],
+            x,
+            xm,
             distinct: a != b && a != c && b != c,
         }
     }
@@ -176,6 +166,30 @@ pub fn orient2d(a: P3, b: P3, c: P3, i: usize, j: usize) -> i8 {
     let l = mul(&d(b[i], a[i]), &d(c[j], a[j]));
     let r = mul(&d(b[j], a[j]), &d(c[i], a[i]));
     sign(&add(&l, &negate(&r)))
+}
+
+/// The filter's normal of the triangle (a, b, c): x = (b − a) × (c − a)
+/// in f64, and each component's magnitude bound (the same products
+/// without cancellation), for `Plane::side` and the crossing search's
+/// planes (`shells::crossing::Flat`).
+#[inline]
+pub fn normal(t: &[P3; 3]) -> (P3, P3) {
+    let [a, b, c] = *t;
+    let ba = sub3(b, a);
+    let ca = sub3(c, a);
+    let (bm, cm) = (ba.map(f64::abs), ca.map(f64::abs));
+    (
+        [
+            ba[1] * ca[2] - ba[2] * ca[1],
+            ba[2] * ca[0] - ba[0] * ca[2],
+            ba[0] * ca[1] - ba[1] * ca[0],
+        ],
+        [
+            bm[1] * cm[2] + bm[2] * cm[1],
+            bm[2] * cm[0] + bm[0] * cm[2],
+            bm[0] * cm[1] + bm[1] * cm[0],
+        ],
+    )
 }
 
 fn sub3(a: P3, b: P3) -> P3 {

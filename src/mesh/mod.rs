@@ -71,6 +71,32 @@ pub(crate) fn threads_for(items: usize, grain: usize) -> usize {
     }
 }
 
+/// `f` of 0, 1, … `n` − 1, on every core (a run of them each, written in
+/// place over `zero`).
+pub(crate) fn filled<T: Copy + Send + Sync>(
+    n: usize,
+    zero: T,
+    f: impl Fn(usize) -> T + Sync,
+) -> Vec<T> {
+    let threads = threads_for(n, 1 << 16);
+    if threads == 1 {
+        return (0..n).map(f).collect();
+    }
+    let piece = n.div_ceil(threads).max(1);
+    let mut out = vec![zero; n];
+    std::thread::scope(|scope| {
+        for (c, out) in out.chunks_mut(piece).enumerate() {
+            let f = &f;
+            scope.spawn(move || {
+                for (k, x) in out.iter_mut().enumerate() {
+                    *x = f(c * piece + k);
+                }
+            });
+        }
+    });
+    out
+}
+
 use crate::numeric::{DD, M3, Real};
 
 /// The most triangles a mesh may have: 72 bytes of corners each while it

@@ -346,31 +346,13 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
 /// visited (and a few whose f32 boxes alone do, which the exact tests
 /// answer).
 fn boxes_of(mesh: &Mesh, pts: &[P3]) -> Vec<Small> {
-    let n = mesh.faces.len();
-    let threads = super::threads_for(n, 1 << 16);
-    let piece = n.div_ceil(threads).max(1);
-    let of = |t: usize| Small::of(&Aabb::of(&mesh.faces[t].map(|k| pts[k as usize])));
-    if threads == 1 {
-        return (0..n).map(of).collect();
-    }
-    let mut boxes = vec![
-        Small {
-            lo: [0.0; 3],
-            hi: [0.0; 3]
-        };
-        n
-    ];
-    std::thread::scope(|scope| {
-        for (c, out) in boxes.chunks_mut(piece).enumerate() {
-            let of = &of;
-            scope.spawn(move || {
-                for (k, b) in out.iter_mut().enumerate() {
-                    *b = of(c * piece + k);
-                }
-            });
-        }
-    });
-    boxes
+    let empty = Small {
+        lo: [0.0; 3],
+        hi: [0.0; 3],
+    };
+    super::filled(mesh.faces.len(), empty, |t| {
+        Small::of(&Aabb::of(&mesh.faces[t].map(|k| pts[k as usize])))
+    })
 }
 
 fn first_triangles(shell: &[u32], count: usize) -> Vec<usize> {

@@ -5,7 +5,7 @@
 
 use super::super::bvh::{Bvh, Small};
 use super::super::check::Mesh;
-use super::super::exact::{P3, Plane, orient2d, orient3d};
+use super::super::exact::{P3, Plane, normal, orient2d, orient3d};
 
 /// The first pair (by the first triangle's number, then the second's) of
 /// triangles that cross, if any; on every core. `sorted`: the
@@ -45,7 +45,7 @@ pub(super) fn first_crossing_on(
     let tasks = bvh.join_tasks(size);
     let threads = threads.clamp(1, tasks.len().max(1));
     let tri = |i: usize| mesh.faces[i].map(|k| pts[k as usize]);
-    let planes = planes(mesh, pts, threads);
+    let planes = planes(mesh, pts);
     let best = AtomicUsize::new(usize::MAX);
     let next = AtomicUsize::new(0);
     let search = || -> Option<(usize, usize)> {
@@ -123,19 +123,10 @@ pub(super) struct Flat {
 impl Flat {
     #[inline]
     fn of(t: &[P3; 3]) -> Flat {
-        let [a, b, c] = *t;
-        let b: P3 = std::array::from_fn(|k| b[k] - a[k]);
-        let c: P3 = std::array::from_fn(|k| c[k] - a[k]);
-        let (bm, cm) = (b.map(f64::abs), c.map(f64::abs));
+        let (x, xm) = normal(t);
         Flat {
-            x: [
-                b[1] * c[2] - b[2] * c[1],
-                b[2] * c[0] - b[0] * c[2],
-                b[0] * c[1] - b[1] * c[0],
-            ],
-            m: (bm[1] * cm[2] + bm[2] * cm[1])
-                .max(bm[2] * cm[0] + bm[0] * cm[2])
-                .max(bm[0] * cm[1] + bm[1] * cm[0]),
+            x,
+            m: xm[0].max(xm[1]).max(xm[2]),
         }
     }
 
@@ -155,32 +146,16 @@ impl Flat {
     }
 }
 
-/// Every triangle's `Flat`, on `threads` threads.
-fn planes(mesh: &Mesh, pts: &[P3], threads: usize) -> Vec<Flat> {
-    let n = mesh.faces.len();
-    let of = |i: usize| Flat::of(&mesh.faces[i].map(|k| pts[k as usize]));
-    let piece = n.div_ceil(threads.max(1)).max(1);
-    if threads <= 1 || n <= piece {
-        return (0..n).map(of).collect();
-    }
-    let mut out = vec![
+/// Every triangle's `Flat`, on every core.
+fn planes(mesh: &Mesh, pts: &[P3]) -> Vec<Flat> {
+    super::super::filled(
+        mesh.faces.len(),
         Flat {
             x: [0.0; 3],
-            m: 0.0
-        };
-        n
-    ];
-    std::thread::scope(|scope| {
-        for (c, out) in out.chunks_mut(piece).enumerate() {
-            let of = &of;
-            scope.spawn(move || {
-                for (k, f) in out.iter_mut().enumerate() {
-                    *f = of(c * piece + k);
-                }
-            });
-        }
-    });
-    out
+            m: 0.0,
+        },
+        |i| Flat::of(&mesh.faces[i].map(|k| pts[k as usize])),
+    )
 }
 
 /// `cross`, the triangles' points fetched (`points`) only when the
