@@ -77,9 +77,12 @@ pub fn file(path: &std::path::Path) -> std::io::Result<Vec<u8>> {
     {
         use std::os::unix::fs::FileExt;
         let f = std::fs::File::open(path)?;
-        let len = usize::try_from(f.metadata()?.len()).unwrap_or(usize::MAX);
+        let size = f.metadata()?.len();
+        let len = usize::try_from(size).unwrap_or(usize::MAX);
         let threads = super::threads_for(len, 1 << 23);
-        if threads > 1 {
+        // A file grown past the limit since its size was checked
+        // (`io::MAX_FILE_BYTES`) is not given a buffer of its size here.
+        if threads > 1 && size <= crate::io::MAX_FILE_BYTES {
             let mut bytes = vec![0u8; len];
             let piece = len.div_ceil(threads);
             let f = &f;

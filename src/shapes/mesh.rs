@@ -85,6 +85,20 @@ fn mesh_second_moment<T: Real>(
 }
 
 impl Mesh {
+    /// The outline's box, its corners placed one at a time (no list of
+    /// a million placed corners for a plausibility check).
+    pub fn extent(&self) -> [V3; 2] {
+        let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+        for q in self.placed_points() {
+            for k in 0..3 {
+                // As `Outline::extent` adds a corner (−0 + 0 is +0).
+                b[0][k] = b[0][k].min(q[k] - 0.0);
+                b[1][k] = b[1][k].max(q[k] + 0.0);
+            }
+        }
+        b
+    }
+
     /// Its welded corners in the file's frame: scaled, turned and moved.
     fn placed_points(&self) -> impl Iterator<Item = V3> + '_ {
         let [x, y, z] = axes(&self.orientation.matrix());
@@ -289,17 +303,34 @@ impl ShapeKind for Mesh {
         }])
     }
 
-    /// The outline's box, its corners placed one at a time (no list of
-    /// a million placed corners for a plausibility check).
-    fn extent(&self) -> [V3; 2] {
-        let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
-        for q in self.placed_points() {
-            for k in 0..3 {
-                // As `Outline::extent` adds a corner (−0 + 0 is +0).
-                b[0][k] = b[0][k].min(q[k] - 0.0);
-                b[1][k] = b[1][k].max(q[k] + 0.0);
-            }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{FileType, Mode};
+
+    /// A tetrahedron with a corner at −0 and odd coordinates.
+    const TET: &str = "v -0.0 0 0\nv 1.375 -0.25 0.5\nv 0.125 2.5 -0.75\nv 0.3 0.7 1.9\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+
+    #[test]
+    fn a_mesh_gives_the_box_of_its_outline_bit_for_bit_without_making_it() {
+        let body = Arc::new(MeshBody::load(FileType::Obj, TET.as_bytes(), Mode::Solid).unwrap());
+        for (orientation, scale, origin) in [
+            (Orientation::Identity, 1.0, [0.0; 3]),
+            (Orientation::AxisAngle([1.0, 2.0, 3.0], 37.0), 0.001, [1e4, -3.0, -0.0]),
+            (Orientation::AxisAngle([0.0, 0.0, 1.0], 90.0), 25.4, [-0.5, 0.25, 7.0]),
+        ] {
+            let m = Mesh {
+                origin,
+                orientation,
+                scale: DD::of(scale),
+                mesh: body.clone(),
+            };
+            let bits = |b: [V3; 2]| b.map(|c| c.map(f64::to_bits));
+            assert_eq!(bits(m.extent()), bits(m.outline().extent()));
+            let place = super::super::Place::Mesh(m.clone());
+            assert_eq!(bits(place.extent()), bits(m.outline().extent()));
         }
-        b
     }
 }

@@ -147,12 +147,6 @@ pub trait ShapeKind: Clone + std::fmt::Debug + PartialEq + Sized {
     fn real_size_direction(&self) -> Option<[DD; 3]>;
     /// Its outline in 3-D in the file's frame (`outline`).
     fn outline(&self) -> Outline;
-    /// The box that holds its outline (`Outline::extent`), least then
-    /// greatest coordinates: a shape whose outline is costly to make (a
-    /// mesh's every corner) gives it without making it.
-    fn extent(&self) -> [outline::V3; 2] {
-        self.outline().extent()
-    }
     /// Its turn R into the file's axes, as composed (`Place::turn`).
     fn turn(&self) -> Option<M3<f64>>;
 }
@@ -413,13 +407,6 @@ macro_rules! registry {
             pub fn outline(&self) -> Outline {
                 match self {
                     $(Place::$variant(s) => s.outline(),)+
-                }
-            }
-
-            /// `ShapeKind::extent`.
-            pub fn extent(&self) -> [outline::V3; 2] {
-                match self {
-                    $(Place::$variant(s) => s.extent(),)+
                 }
             }
         }

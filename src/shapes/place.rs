@@ -103,6 +103,32 @@ impl Place {
             Place::Ellipsoid(s) => s.turn(),
         }
     }
+
+    /// The box that holds its outline (`Outline::extent`), least then
+    /// greatest coordinates: a mesh gives it without making its outline
+    /// (a list of its every corner placed).
+    // NOTE: matched here, as `turn`; exhaustive, so a new shape answers.
+    pub fn extent(&self) -> [super::outline::V3; 2] {
+        use super::ShapeKind;
+        match self {
+            Place::Mesh(s) => s.extent(),
+            Place::Box(s) => s.outline().extent(),
+            Place::Plate(s) => s.outline().extent(),
+            Place::Rod(s) => s.outline().extent(),
+            Place::Cylinder(s) => s.outline().extent(),
+            Place::Disk(s) => s.outline().extent(),
+            Place::Sphere(s) => s.outline().extent(),
+            Place::Triangle(s) => s.outline().extent(),
+            Place::Point(s) => s.outline().extent(),
+            Place::Inertia(s) => s.outline().extent(),
+            Place::Cone(s) => s.outline().extent(),
+            Place::Torus(s) => s.outline().extent(),
+            Place::Hemisphere(s) => s.outline().extent(),
+            Place::Prism(s) => s.outline().extent(),
+            Place::Capsule(s) => s.outline().extent(),
+            Place::Ellipsoid(s) => s.outline().extent(),
+        }
+    }
 }
 
 #[cfg(test)]
