@@ -147,12 +147,9 @@ pub struct StlRecords<'a> {
 }
 
 impl StlRecords<'_> {
-    pub fn len(&self) -> usize {
+    /// Its triangles' count.
+    pub(super) fn len(&self) -> usize {
         self.records.len() / 50
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.records.is_empty()
     }
 
     /// Corner `k` (0, 1, 2) of triangle `i`: 12 bytes of normal (ignored:
