@@ -17,7 +17,8 @@
 //!   share a segment inside both (not coplanar), or overlap in an area
 //!   while facing the same way (coplanar). Touching along an edge or at a
 //!   point, and coplanar triangles facing opposite ways (two pieces in
-//!   contact along a face), do not cross.
+//!   contact along a face), do not cross. Two that share only a corner
+//!   whose triangles tile the turn about it (`crossing::tiled`) do not.
 //! - Nesting: the winding number, at one corner of each shell, of all
 //!   the other triangles (a ray along +x with a symbolic perturbation, so
 //!   it never grazes an edge): 0 for an outward shell, 1 for an inward one.
@@ -60,7 +61,7 @@ pub fn check_with(
 ) -> Result<usize, MeshError> {
     let n = mesh.faces.len();
     let live = cancel_twins(mesh, &edges);
-    let shell = components(mesh, &live, &edges);
+    let (shell, open) = components(mesh, &live, &edges);
     drop(edges);
     let count = shell
         .iter()
@@ -73,16 +74,29 @@ pub fn check_with(
         ));
     }
     let pts = scaled(mesh)?;
-    let boxes = boxes_of(mesh, &pts);
-    let order: Vec<u32> = (0..n as u32)
-        .filter(|&i| shell[i as usize] != NONE)
-        .collect();
-    let bvh = Bvh::build(&boxes, order);
-    // NOTE: the boxes again, in the tree's item order (`Bvh::join`): a
-    // leaf's read one after another.
-    let sorted = bvh.sorted(&boxes);
-    drop(boxes);
-    if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh) {
+    // NOTE: the tiled stars (`crossing::tiled`, one pass over the
+    // triangles on one core) are found on a thread of their own while the
+    // tree is built, whose radix sort and node pass are one core's too.
+    let (tiled, bvh, sorted) = std::thread::scope(|scope| {
+        let tiled = || crossing::tiled(mesh, &pts, &shell, &open);
+        let tiled = (super::threads_for(n, 1 << 16) > 1).then(|| scope.spawn(tiled));
+        let boxes = boxes_of(mesh, &pts);
+        let order: Vec<u32> = (0..n as u32)
+            .filter(|&i| shell[i as usize] != NONE)
+            .collect();
+        let bvh = Bvh::build(&boxes, order);
+        // NOTE: the boxes again, in the tree's item order (`Bvh::join`):
+        // a leaf's read one after another.
+        let sorted = bvh.sorted(&boxes);
+        let tiled = match tiled {
+            Some(h) => h
+                .join()
+                .expect("invariant: finding tiled stars does not panic"),
+            None => crossing::tiled(mesh, &pts, &shell, &open),
+        };
+        (tiled, bvh, sorted)
+    });
+    if let Some((i, j)) = first_crossing(mesh, &pts, &sorted, &bvh, &tiled) {
         let same = shell[i] == shell[j];
         return Err(MeshError::new(
             mesh.at.of(i),
@@ -266,8 +280,10 @@ fn union(parent: &mut [u32], a: u32, b: u32) -> bool {
 }
 
 /// Each live triangle's shell (numbered by their first triangles, in the
-/// file's order), `NONE` for those set aside.
-fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
+/// file's order), `NONE` for those set aside; and the ends of the edges
+/// whose live triangles do not pair up (as many one way as the other),
+/// for `crossing::tiled`: none in a mesh without T-junctions.
+fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> (Vec<u32>, Vec<u32>) {
     let n = mesh.faces.len();
     // The live triangles' edges, in the sorted order (the whole list when
     // every triangle is live, as in nearly every mesh).
@@ -280,11 +296,17 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
     };
     let mut parent: Vec<u32> = (0..n as u32).collect();
     let mut crowded: Vec<&[(u64, u32, bool)]> = Vec::new();
+    let mut open = Vec::new();
     for run in edges.chunk_by(|x, y| x.0 == y.0) {
-        if run.len() == 2 {
+        let paired = if run.len() == 2 {
             union(&mut parent, run[0].1, run[1].1);
+            run[0].2 != run[1].2
         } else {
             crowded.push(run);
+            2 * run.iter().filter(|e| e.2).count() == run.len()
+        };
+        if !paired {
+            open.extend([(run[0].0 >> 32) as u32, run[0].0 as u32]);
         }
     }
     // The two sides of each T-junction (`classes`) are one shell.
@@ -334,7 +356,7 @@ fn components(mesh: &Mesh, live: &[bool], all: &[Edge]) -> Vec<u32> {
         }
         shell[i] = number[r];
     }
-    shell
+    (shell, open)
 }
 
 /// Each triangle's box (of its scaled corners), on every core, in f32

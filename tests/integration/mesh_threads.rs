@@ -277,3 +277,41 @@ fn the_earlier_of_two_crossings_is_named_on_every_thread_count() {
     assert!((12 * 100 + 1..12 * 100 + 13).contains(&i), "{e}");
     assert!(j > 12 * 1001, "{e}");
 }
+
+#[test]
+fn a_pole_fan_folded_over_is_refused_on_every_thread_count() {
+    // A sphere of 80,000 triangles (its corners' stars tiled on a thread
+    // of their own) with two neighbouring corners of the north pole's fan
+    // swapped: that fan folds over itself, so two of its triangles that
+    // share only the pole cross (their far edges cross, seen from above).
+    let t = sphere(200, 1.0, [0.0; 3]);
+    assert!(t.len() > 1 << 16);
+    let ring = |j: f64| {
+        let (th, ph) = (
+            std::f64::consts::PI / 200.0,
+            std::f64::consts::PI * j / 200.0,
+        );
+        [th.sin() * ph.cos(), th.sin() * ph.sin(), th.cos()]
+    };
+    let (a, b) = (ring(0.0), ring(1.0));
+    let swapped: Vec<Tri> = t
+        .iter()
+        .map(|f| {
+            f.map(|p| {
+                if p == a {
+                    b
+                } else if p == b {
+                    a
+                } else {
+                    p
+                }
+            })
+        })
+        .collect();
+    assert_ne!(swapped, t, "the two corners are the sphere's");
+    let e = same_on_every_thread_count(&stl(&swapped)).expect_err("the fan crosses itself");
+    crossing_pair(&e);
+    assert!(e.contains("the surface intersects itself"), "{e}");
+    // Unswapped, it is a sphere.
+    assert!(same_on_every_thread_count(&stl(&t)).is_ok());
+}

@@ -23,21 +23,23 @@ pub(super) fn first_crossing(
     pts: &[P3],
     sorted: &[Small],
     bvh: &Bvh,
+    tiled: &[bool],
 ) -> Option<(usize, usize)> {
     let threads = super::super::threads_for(bvh.items.len(), 1);
     // Tasks of about 1/64 of a thread's share: enough for the threads to
     // even out, few enough that cutting them costs nothing.
     let size = (bvh.items.len() / (64 * threads)).max(256);
-    first_crossing_on(mesh, pts, sorted, bvh, threads, size)
+    first_crossing_on(mesh, pts, sorted, bvh, tiled, threads, size)
 }
 
 /// `first_crossing` on at most `threads` threads, the join cut into tasks
-/// of `size` triangles.
+/// of `size` triangles; `tiled`: each vertex's `tiled` (or none).
 pub(super) fn first_crossing_on(
     mesh: &Mesh,
     pts: &[P3],
     sorted: &[Small],
     bvh: &Bvh,
+    tiled: &[bool],
     threads: usize,
     size: usize,
 ) -> Option<(usize, usize)> {
@@ -71,6 +73,7 @@ pub(super) fn first_crossing_on(
                         mesh.faces[i],
                         mesh.faces[j],
                         [&planes[i], &planes[j]],
+                        tiled,
                         || (tri(i), tri(j)),
                     ) {
                         mine = Some((i, j));
@@ -100,7 +103,7 @@ pub(super) fn first_crossing_on(
 /// facing the same way.
 #[cfg(test)]
 pub(super) fn cross(f: [u32; 3], g: [u32; 3], p: &[P3; 3], q: &[P3; 3]) -> bool {
-    cross_from(f, g, [&Flat::of(p), &Flat::of(q)], || (*p, *q))
+    cross_from(f, g, [&Flat::of(p), &Flat::of(q)], &[], || (*p, *q))
 }
 
 /// A triangle's plane for the filter: x = (b − a) × (c − a) and the
@@ -159,7 +162,8 @@ fn planes(mesh: &Mesh, pts: &[P3]) -> Vec<Flat> {
 }
 
 /// `cross`, the triangles' points fetched (`points`) only when the
-/// corners alone do not answer.
+/// corners alone do not answer: a shared edge run both ways, or a shared
+/// corner whose star is `tiled` (a vertex past its end: not tiled).
 ///
 /// NOTE: a third of a smooth mesh's pairs are neighbours across an edge,
 /// answered by their corners' numbers: their 18 coordinates, read from
@@ -169,6 +173,7 @@ fn cross_from(
     f: [u32; 3],
     g: [u32; 3],
     [pf, pg]: [&Flat; 2],
+    tiled: &[bool],
     points: impl FnOnce() -> ([P3; 3], [P3; 3]),
 ) -> bool {
     let at = f.map(|v| g.iter().position(|w| *w == v).unwrap_or(3));
@@ -189,6 +194,14 @@ fn cross_from(
             return false;
         }
     }
+    // The corner shared alone (by the corners' positions in f: 0, 1, 2).
+    let one = usize::from(at[1] < 3) + 2 * usize::from(at[2] < 3);
+    if shared == 1 && tiled.get(f[one] as usize) == Some(&true) {
+        // NOTE: the most common pair of a smooth mesh's boxes that meet
+        // (5 million of a million-triangle sphere's 9), answered without
+        // their points.
+        return false;
+    }
     let (p, q) = points();
     let (p, q) = (&p, &q);
     match shared {
@@ -201,7 +214,7 @@ fn cross_from(
             // no predicate need be exact, and this filter (`Flat`'s, the
             // one `exact::Plane::side` tries first) decides most of them.
             // Undecided, the exact path answers (a test holds them equal).
-            let k = usize::from(at[1] < 3) + 2 * usize::from(at[2] < 3);
+            let k = one;
             if pg.strictly_one_side(q[0], &[p[(k + 1) % 3], p[(k + 2) % 3]]) {
                 return false;
             }
@@ -297,4 +310,80 @@ fn coplanar_overlap(p: &[P3; 3], q: &[P3; 3]) -> bool {
         })
     };
     !(separated(p, q) || separated(q, p))
+}
+
+/// For each vertex, whether its star is tiled: the live triangles around it
+/// (`shell` not `NONE`), seen along one coordinate axis, all turn the same
+/// way about it, their edges opposite it cross a ray from it once, and
+/// every edge at it is paired (as many triangles run it one way as the
+/// other; `open`: the ends of the edges that are not). Then any two of
+/// them meet only at it or along the edge they share, and never cross.
+///
+/// Why: each triangle (v, a, b) turns the same way about v seen along
+/// axis k (the sign of its normal's component k, which the corner it is
+/// seen from does not change), so each covers an angle in (0, π) about v
+/// in that view. Paired edges make the far edges (a → b) close into
+/// cycles around v, each of which covers the full turn a whole number
+/// (at least 1) of times; the number of far edges the ray crosses is the
+/// sum of those numbers. Once: one cycle, around once, so the triangles'
+/// angles do not overlap, and two of them meet, in the view and so in
+/// space, only at v or along a shared edge. The ray runs along axis i
+/// from v, a hair above it along axis j ((i, j, k) a cyclic turn): a far
+/// edge of a triangle that turns positively crosses it exactly when it
+/// rises past v (a_j ≤ v_j < b_j), one that turns negatively when it
+/// falls (b_j ≤ v_j < a_j); the others cross on the other side. Every
+/// test is a comparison, or the sign of a normal's component where
+/// `orient2d`'s filter decides it; where that filter cannot tell, the
+/// axis is not used.
+///
+/// NOTE: a pass over the triangles (scattered to their corners, on one
+/// core) in place of the filter's point reads and plane tests for every
+/// pair that shares one corner: the most common pair of a smooth mesh.
+pub(super) fn tiled(mesh: &Mesh, pts: &[P3], shell: &[u32], open: &[u32]) -> Vec<bool> {
+    // Per vertex: for each axis k, bit 2k: a triangle turns positively,
+    // bit 2k + 1: negatively (both: one does not turn, or cannot tell);
+    // then each axis's count of far edges that cross its ray, up to 2.
+    let mut seen = vec![[0u8; 4]; pts.len()];
+    for (f, _) in mesh
+        .faces
+        .iter()
+        .zip(shell)
+        .filter(|(_, s)| **s != super::NONE)
+    {
+        let p = f.map(|k| pts[k as usize]);
+        let (x, xm) = normal(&p);
+        let turn: [u8; 3] = std::array::from_fn(|k| {
+            let bound = 1e-15 * xm[k];
+            if x[k] > bound {
+                1
+            } else if x[k] < -bound {
+                2
+            } else {
+                3
+            }
+        });
+        let bits = turn[0] | turn[1] << 2 | turn[2] << 4;
+        for r in 0..3 {
+            let (v, a, b) = (p[r], p[(r + 1) % 3], p[(r + 2) % 3]);
+            let s = &mut seen[f[r] as usize];
+            s[0] |= bits;
+            for k in 0..3 {
+                let j = (k + 2) % 3;
+                let crosses = match turn[k] {
+                    1 => a[j] <= v[j] && v[j] < b[j],
+                    2 => b[j] <= v[j] && v[j] < a[j],
+                    _ => false,
+                };
+                s[1 + k] = (s[1 + k] + u8::from(crosses)).min(2);
+            }
+        }
+    }
+    let mut tiled: Vec<bool> = seen
+        .iter()
+        .map(|s| (0..3).any(|k| matches!((s[0] >> (2 * k)) & 3, 1 | 2) && s[1 + k] == 1))
+        .collect();
+    for &v in open {
+        tiled[v as usize] = false;
+    }
+    tiled
 }

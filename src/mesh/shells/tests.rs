@@ -374,12 +374,203 @@ fn first_crossings(t: Vec<Tri>) -> [Option<(usize, usize)>; 4] {
     let small: Vec<Small> = boxes.iter().map(Small::of).collect();
     let bvh = Bvh::build(&small, (0..m.faces.len() as u32).collect());
     let sorted = bvh.sorted(&small);
+    let tiled = tiled_of(&m, &pts);
+    let want = brute_first_crossing(&m, &pts, &boxes);
+    // Without the tiled stars, the same.
+    assert_eq!(first_crossing_on(&m, &pts, &sorted, &bvh, &[], 2, 8), want);
     [
-        brute_first_crossing(&m, &pts, &boxes),
-        first_crossing_on(&m, &pts, &sorted, &bvh, 1, 1 << 20),
-        first_crossing_on(&m, &pts, &sorted, &bvh, 2, 8),
-        first_crossing_on(&m, &pts, &sorted, &bvh, 5, 1),
+        want,
+        first_crossing_on(&m, &pts, &sorted, &bvh, &tiled, 1, 1 << 20),
+        first_crossing_on(&m, &pts, &sorted, &bvh, &tiled, 2, 8),
+        first_crossing_on(&m, &pts, &sorted, &bvh, &tiled, 5, 1),
     ]
+}
+
+/// Each vertex's `crossing::tiled`, as `check_with` finds it.
+fn tiled_of(m: &Mesh, pts: &[P3]) -> Vec<bool> {
+    let edges = m.edges();
+    let live = cancel_twins(m, &edges);
+    let (shell, open) = components(m, &live, &edges);
+    crossing::tiled(m, pts, &shell, &open)
+}
+
+/// A star: the triangles (apex, r_k, r_k+1) around the apex (the origin)
+/// over a ring of points at the angles `turns` (radians, summed from 0),
+/// radii `r` and heights `z`; closed (the last back to the first) unless
+/// `open`; each triangle wound the other way if `reversed`; then turned
+/// by `tilt` radians about the axis `about`.
+fn star(
+    turns: &[f64],
+    r: &[f64],
+    z: &[f64],
+    open: bool,
+    reversed: bool,
+    tilt: f64,
+    about: [f64; 3],
+) -> Vec<Tri> {
+    let n = turns.len();
+    let mut angle = 0.0;
+    let ring: Vec<[f64; 3]> = (0..n)
+        .map(|k| {
+            angle += turns[k];
+            [r[k] * angle.cos(), r[k] * angle.sin(), z[k]]
+        })
+        .collect();
+    // Rodrigues' rotation.
+    let len = (about[0] * about[0] + about[1] * about[1] + about[2] * about[2]).sqrt();
+    let u = about.map(|x| x / len);
+    let (c, s) = (tilt.cos(), tilt.sin());
+    let turn = |p: [f64; 3]| -> [f64; 3] {
+        let d = u[0] * p[0] + u[1] * p[1] + u[2] * p[2];
+        let x = [
+            u[1] * p[2] - u[2] * p[1],
+            u[2] * p[0] - u[0] * p[2],
+            u[0] * p[1] - u[1] * p[0],
+        ];
+        std::array::from_fn(|k| p[k] * c + x[k] * s + u[k] * d * (1.0 - c))
+    };
+    let last = if open { n - 1 } else { n };
+    (0..last)
+        .map(|k| {
+            let (a, b) = (turn(ring[k]), turn(ring[(k + 1) % n]));
+            if reversed {
+                [[0.0; 3], b, a]
+            } else {
+                [[0.0; 3], a, b]
+            }
+        })
+        .collect()
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1024))]
+
+    /// A star (one turn or two, closed or open, tilted, its far edges
+    /// rising and falling): where `tiled` says its triangles tile the turn
+    /// about the apex, no two of them that share only the apex cross
+    /// (`cross_exact`: the predicates); an open star is never tiled, and
+    /// one turn seen along z (every angle under π) always is.
+    #[test]
+    fn a_tiled_star_has_no_two_triangles_that_cross(
+        steps in proptest::collection::vec(0.05f64..3.6, 3..14),
+        twice in proptest::bool::ANY,
+        r in proptest::collection::vec(0.25f64..2.0, 14),
+        z in proptest::collection::vec(-1.5f64..1.5, 14),
+        open in proptest::bool::ANY,
+        reversed in proptest::bool::ANY,
+        tilt in proptest::prop_oneof![proptest::strategy::Just(0.0), 0.0f64..3.2],
+        about in proptest::array::uniform3(-1.0f64..1.0),
+    ) {
+        use proptest::prelude::*;
+        prop_assume!(about.iter().any(|x| x.abs() > 0.1));
+        let whole: f64 = steps.iter().sum();
+        let turns = if twice { 2.0 } else { 1.0 };
+        let steps: Vec<f64> = steps.iter().map(|s| s * turns * std::f64::consts::TAU / whole).collect();
+        let t = star(&steps, &r, &z, open, reversed, tilt, about);
+        let m = mesh(t);
+        let pts = scaled(&m).expect("small coordinates");
+        let tiled = tiled_of(&m, &pts);
+        let apex = m.vertices.iter().position(|v| *v == [0.0; 3]).expect("the apex") as u32;
+        if open {
+            prop_assert!(!tiled[apex as usize]);
+        }
+        if !open && !twice && tilt == 0.0 && steps.iter().all(|s| *s < 3.1) {
+            prop_assert!(tiled[apex as usize], "one turn seen along z, every angle under π");
+        }
+        if tiled[apex as usize] {
+            let tri = |i: usize| m.faces[i].map(|k| pts[k as usize]);
+            for i in 0..m.faces.len() {
+                for j in i + 1..m.faces.len() {
+                    let (f, g) = (m.faces[i], m.faces[j]);
+                    if f.iter().filter(|v| g.contains(v)).count() == 1 {
+                        prop_assert!(!cross_exact(f, g, &tri(i), &tri(j)), "{i} and {j} cross");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// A double pyramid over a ring of `2n` corners that goes twice around
+/// the z axis (the first turn at radius 2, the second at 1): closed and
+/// oriented, but each apex's star covers its turn twice, so its surface
+/// crosses itself.
+fn twice_around(n: usize) -> Vec<Tri> {
+    let ring: Vec<[f64; 3]> = (0..2 * n)
+        .map(|k| {
+            let a = std::f64::consts::TAU * k as f64 / n as f64;
+            let r = if k < n { 2.0 } else { 1.0 };
+            [r * a.cos(), r * a.sin(), 0.0]
+        })
+        .collect();
+    let (top, bottom) = ([0.0, 0.0, 1.0], [0.0, 0.0, -1.0]);
+    (0..2 * n)
+        .flat_map(|k| {
+            let (a, b) = (ring[k], ring[(k + 1) % (2 * n)]);
+            [[top, a, b], [bottom, b, a]]
+        })
+        .collect()
+}
+
+#[test]
+fn a_star_around_twice_is_not_tiled_and_its_crossing_is_found() {
+    let t = twice_around(7);
+    let m = mesh(t.clone());
+    let pts = scaled(&m).expect("small coordinates");
+    let tiled = tiled_of(&m, &pts);
+    for apex in [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]] {
+        let v = m.vertices.iter().position(|p| *p == apex).expect("an apex");
+        assert!(!tiled[v]);
+    }
+    let [want, one, two, five] = first_crossings(t.clone());
+    assert!(want.is_some());
+    assert_eq!((one, two, five), (want, want, want));
+    let e = refused(t);
+    assert!(e.contains("cross"), "{e}");
+}
+
+#[test]
+fn smooth_and_flat_stars_are_tiled() {
+    // The octahedron: every corner's star, seen along its axis.
+    let m = mesh(octahedron(false));
+    let pts = scaled(&m).expect("small coordinates");
+    assert!(tiled_of(&m, &pts).iter().all(|t| *t));
+    // A prism over a 12-gon, its ends fans from their centres (flat
+    // stars) and its sides split into two triangles each: the centres are
+    // tiled; the rims, where the ends meet the sides at a right angle,
+    // are not (as a cube's corners below).
+    let n = 12;
+    let ring = |k: usize, h: f64| {
+        let a = std::f64::consts::TAU * (k % n) as f64 / n as f64;
+        [a.cos(), a.sin(), h]
+    };
+    let mut t = Vec::new();
+    for k in 0..n {
+        let (a0, a1, b0, b1) = (
+            ring(k, 0.0),
+            ring(k + 1, 0.0),
+            ring(k, 1.0),
+            ring(k + 1, 1.0),
+        );
+        t.push([[0.0, 0.0, 0.0], a1, a0]);
+        t.push([[0.0, 0.0, 1.0], b0, b1]);
+        t.push([a0, a1, b1]);
+        t.push([a0, b1, b0]);
+    }
+    let m = mesh(t.clone());
+    assert_eq!(checked(t), Ok(1));
+    let pts = scaled(&m).expect("small coordinates");
+    let tiled = tiled_of(&m, &pts);
+    for c in [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0]] {
+        let v = m.vertices.iter().position(|p| *p == c).expect("a centre");
+        assert!(tiled[v], "the flat fan at {c:?}");
+    }
+    assert_eq!(tiled.iter().filter(|t| **t).count(), 2);
+    // A cube's corners: three faces at right angles, each edge-on along
+    // one axis: not tiled (their pairs are tested one by one).
+    let m = mesh(unit([0.0; 3]));
+    let pts = scaled(&m).expect("small coordinates");
+    assert!(tiled_of(&m, &pts).iter().all(|t| !*t));
 }
 
 proptest::proptest! {
