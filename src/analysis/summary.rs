@@ -12,7 +12,7 @@ mod rows;
 pub use accuracy::{Accuracy, AccuracyWarning, PrecisionChoice};
 
 pub use super::errors::{Blame, Contribution, SummaryError};
-pub use rows::{Assemblies, AssemblyRow, PartRow, Parts, Row, deferred};
+pub use rows::{Assemblies, AssemblyRow, PartRow, Parts, Row, Summing, deferred};
 
 use super::Products;
 use super::ideal;

@@ -445,7 +445,7 @@ pub fn write_table_to(
     let _ = writeln!(out, "\nparts");
     w.write_all(out.as_bytes())?;
     out.clear();
-    let undefined = full::parts(w, s, &u, width)?;
+    let (undefined, summing) = full::parts(w, s, &u, width)?;
     let _ = writeln!(
         out,
         "I1–I3 share: each part's share of each principal moment about the centre of mass"
@@ -459,7 +459,7 @@ pub fn write_table_to(
     if !s.assemblies.is_empty() {
         w.write_all(out.as_bytes())?;
         out.clear();
-        full::assemblies(w, s, &u, width)?;
+        full::assemblies(w, s, &u, width, summing)?;
     }
     if let Some(i) = &s.idealisation {
         idealisation(&mut out, i, &u, width);

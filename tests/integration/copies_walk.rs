@@ -232,3 +232,51 @@ fn a_copy_along_a_step_moved_from_the_last_is_the_copy_placed_afresh() {
         assert_eq!(spec(&many, k), spec(&one, 1), "copy {k}");
     }
 }
+
+/// Each sub-assembly's row as bits: its name, parts, mass, mass share,
+/// centre and shares (`None` apart from every float).
+fn assembly_bits(
+    rows: impl FnOnce(&mut dyn FnMut(massprop::analysis::summary::AssemblyRow<'_>)),
+) -> Vec<(String, usize, Vec<Option<u64>>)> {
+    use massprop::analysis::summary::AssemblyRow;
+    let mut out = Vec::new();
+    rows(&mut |r| {
+        if let AssemblyRow::Enter(name, a) = r {
+            let mut bits = vec![Some(a.mass.to_bits()), Some(a.mass_fraction.to_bits())];
+            bits.extend(a.center_of_mass.iter().map(|x| Some(x.to_bits())));
+            bits.extend(a.principal_moment_share.iter().map(|x| x.map(f64::to_bits)));
+            out.push((name.to_string(), a.parts, bits));
+        }
+    });
+    out
+}
+
+#[test]
+fn sub_assemblies_summed_from_the_parts_rows_are_the_walk_s_to_the_bit() {
+    // The `--full` report sums the sub-assemblies from its parts table's
+    // rows (`Summing` fed by `Parts::each_row`), not from a walk of its
+    // own (`Assemblies::summed`): the same rows, bit for bit. Copies of a
+    // sub-assembly turned, arrayed and mirrored, far from the origin,
+    // beside a part of the body's own.
+    use massprop::analysis::Products;
+    use massprop::analysis::summary::{Accuracy, Row, Summing, summarize};
+    let sub = "[[part]]\nname = \"a\"\nshape = \"box\"\nmass = 1.3\nsize = [0.1, 0.2, 0.3]\ncenter = [0.7, -0.1, 0.2]\n\
+               [[part]]\nshape = \"rod\"\nmass = 0.21\nfrom = [0, 0, 0]\nto = [0.3, 0.1, -0.4]\narray = { count = 3, step = [0.01, 0.3, 0] }\n";
+    let file = "[[part]]\ninclude = \"sub.toml\"\norigin = [1, 2, 3]\nrotation = { axis = [1, 1, 0], degrees = 33 }\n\
+                array = { count = 4, step = [0.5, 0, 0.1] }\n\
+                [[part]]\ninclude = \"sub.toml\"\norigin = [-1e3, 0.25, 7]\nmirror = { normal = [1, 0, 0], origin = [0.5, 0, 0] }\n\
+                [[part]]\nshape = \"sphere\"\nmass = 2.5\nradius = 0.4\ncenter = [0.3, 0.3, 0.3]\n";
+    let m = model_with_sub("summed", file, sub);
+    let s = summarize(&m, &m.analysis, Products::Tensor, &Accuracy::default()).expect("a body");
+    let mut summing = Summing::default();
+    s.parts.each_row(&mut |r| match r {
+        Row::Enter(_) => summing.enter(),
+        Row::Part(p) => summing.part(p.mass, p.center_of_mass, p.principal_moment_share),
+        Row::Exit => summing.exit(),
+    });
+    let from_rows = s.assemblies.summed_from(summing);
+    let walked = s.assemblies.summed();
+    let want = assembly_bits(|f| walked.each_row(f));
+    assert_eq!(want.len(), 6, "{want:?}");
+    assert_eq!(assembly_bits(|f| from_rows.each_row(f)), want);
+}

@@ -163,6 +163,90 @@ struct Sums {
     share: [Option<f64>; 3],
 }
 
+/// Sub-assemblies summed as a walk meets them and their parts
+/// (`Assemblies::summed`): each as it is left, from what its items sum to
+/// (a part, or a sub-assembly already summed): its mass, and its centre
+/// of mass as Σ (mᵢ/m) cᵢ over its items, the weights first as the
+/// composer forms the pivot (m cᵢ alone can overflow where the centre
+/// fits). Only the sums of each sub-assembly are kept, in the order it
+/// was entered (~64 bytes each).
+#[derive(Default)]
+pub struct Summing {
+    sums: Vec<Sums>,
+    open: Vec<Open>,
+    /// The items' lists of the sub-assemblies left, for the next ones
+    /// entered: not an allocation per sub-assembly (a tree of 2²⁰
+    /// instances has as many).
+    spare: Vec<Vec<(f64, [f64; 3])>>,
+}
+
+/// A sub-assembly being summed: where its sums go, its items' masses and
+/// centres, its parts and shares.
+struct Open {
+    at: usize,
+    items: Vec<(f64, [f64; 3])>,
+    parts: usize,
+    share: [Option<f64>; 3],
+}
+
+impl Summing {
+    /// A sub-assembly entered.
+    pub fn enter(&mut self) {
+        self.open.push(Open {
+            at: self.sums.len(),
+            items: self.spare.pop().unwrap_or_default(),
+            parts: 0,
+            share: [Some(0.0); 3],
+        });
+        self.sums.push(Sums {
+            parts: 0,
+            mass: 0.0,
+            center_of_mass: [0.0; 3],
+            share: [None; 3],
+        });
+    }
+
+    /// A part, in SI: its mass, centroid and shares of the principal
+    /// moments.
+    pub fn part(&mut self, mass: f64, center: [f64; 3], share: [Option<f64>; 3]) {
+        if let Some(top) = self.open.last_mut() {
+            top.items.push((mass, center));
+            top.parts += 1;
+            for (t, x) in top.share.iter_mut().zip(share) {
+                *t = t.zip(x).map(|(a, b)| a + b);
+            }
+        }
+    }
+
+    /// The sub-assembly last entered, left.
+    pub fn exit(&mut self) {
+        let mut done = self.open.pop().expect("an Exit follows its Enter");
+        let mass: f64 = done.items.iter().map(|(m, _)| m).sum();
+        let center_of_mass =
+            std::array::from_fn(|i| done.items.iter().map(|(m, c)| m / mass * c[i]).sum());
+        let mut items = std::mem::take(&mut done.items);
+        items.clear();
+        self.spare.push(items);
+        self.sums[done.at] = Sums {
+            parts: done.parts,
+            mass,
+            center_of_mass,
+            share: done.share,
+        };
+        if let Some(parent) = self.open.last_mut() {
+            // NOTE: a sub-assembly of no parts (a robot's massless link)
+            // adds nothing: its 0/0 centre is no centre.
+            if done.parts > 0 {
+                parent.items.push((mass, center_of_mass));
+            }
+            parent.parts += done.parts;
+            for (t, x) in parent.share.iter_mut().zip(done.share) {
+                *t = t.zip(x).map(|(a, b)| a + b);
+            }
+        }
+    }
+}
+
 impl Assemblies {
     /// Whether the body has none.
     pub fn is_empty(&self) -> bool {
@@ -222,77 +306,34 @@ impl Assemblies {
     /// then writes them.
     pub fn summed(&self) -> Summed<'_> {
         let s = &*self.0;
-        /// A sub-assembly being summed: where its sums go, its items'
-        /// masses and centres, its parts and shares.
-        struct Open {
-            at: usize,
-            items: Vec<(f64, [f64; 3])>,
-            parts: usize,
-            share: [Option<f64>; 3],
-        }
-        let mut sums: Vec<Sums> = Vec::new();
-        let mut open: Vec<Open> = Vec::new();
-        // The items' lists of the sub-assemblies left, for the next ones
-        // entered: not an allocation per sub-assembly (a tree of 2²⁰
-        // instances has as many).
-        let mut spare: Vec<Vec<(f64, [f64; 3])>> = Vec::new();
+        let mut summing = Summing::default();
         // NOTE: the parts placed as the rows' walk places them: the same
         // bits, no bound of their rounding formed (`Model::each_row`).
         s.model.each_row(&mut |e| match e {
-            RowEvent::Enter(_) => {
-                open.push(Open {
-                    at: sums.len(),
-                    items: spare.pop().unwrap_or_default(),
-                    parts: 0,
-                    share: [Some(0.0); 3],
-                });
-                sums.push(Sums {
-                    parts: 0,
-                    mass: 0.0,
-                    center_of_mass: [0.0; 3],
-                    share: [None; 3],
-                });
-            }
-            RowEvent::Part { part: p, .. } => {
-                if let Some(top) = open.last_mut() {
-                    top.items
-                        .push((p.mass_si(&s.factors), arr(&p.center_si(&s.factors))));
-                    top.parts += 1;
-                    let share = s.shares.of(p);
-                    for (t, x) in top.share.iter_mut().zip(share) {
-                        *t = t.zip(x).map(|(a, b)| a + b);
-                    }
-                }
-            }
-            RowEvent::Exit => {
-                let mut done = open.pop().expect("an Exit follows its Enter");
-                let mass: f64 = done.items.iter().map(|(m, _)| m).sum();
-                let center_of_mass =
-                    std::array::from_fn(|i| done.items.iter().map(|(m, c)| m / mass * c[i]).sum());
-                let mut items = std::mem::take(&mut done.items);
-                items.clear();
-                spare.push(items);
-                let sum = Sums {
-                    parts: done.parts,
-                    mass,
-                    center_of_mass,
-                    share: done.share,
-                };
-                sums[done.at] = sum;
-                if let Some(parent) = open.last_mut() {
-                    // NOTE: a sub-assembly of no parts (a robot's massless
-                    // link) adds nothing: its 0/0 centre is no centre.
-                    if done.parts > 0 {
-                        parent.items.push((mass, center_of_mass));
-                    }
-                    parent.parts += done.parts;
-                    for (t, x) in parent.share.iter_mut().zip(done.share) {
-                        *t = t.zip(x).map(|(a, b)| a + b);
-                    }
-                }
-            }
+            RowEvent::Enter(_) => summing.enter(),
+            RowEvent::Part { part: p, .. } => summing.part(
+                p.mass_si(&s.factors),
+                arr(&p.center_si(&s.factors)),
+                s.shares.of(p),
+            ),
+            RowEvent::Exit => summing.exit(),
         });
-        Summed { data: s, sums }
+        self.summed_from(summing)
+    }
+
+    /// `summed`, from the sums a whole walk of the parts' rows made
+    /// (`Parts::each_row`'s rows carry the same mass, centre and shares
+    /// that `summed` adds up, the same bits): a writer that walks the
+    /// parts anyway spares the sub-assemblies' table that walk.
+    pub fn summed_from(&self, summing: Summing) -> Summed<'_> {
+        debug_assert!(
+            summing.open.is_empty(),
+            "invariant: a whole walk, every Enter left"
+        );
+        Summed {
+            data: &self.0,
+            sums: summing.sums,
+        }
     }
 
     /// All the rows, in memory (for tests).

@@ -4,7 +4,7 @@
 
 use super::super::format::DisplayUnits;
 use super::super::grid::{Cell, Fit, stream_cells};
-use crate::analysis::summary::{AssemblyRow, Row, Summary};
+use crate::analysis::summary::{AssemblyRow, Row, Summary, Summing};
 
 /// The cells a part's and a sub-assembly's rows share: mass and its
 /// share, centre of mass, shares of the principal moments.
@@ -41,13 +41,20 @@ fn row<'a, const N: usize, const M: usize>(
 }
 
 /// The parts table, a row per part in file order; whether a principal
-/// moment had no shares (the note below the table says what `—` means).
+/// moment had no shares (the note below the table says what `—` means),
+/// and the sub-assemblies summed from its first walk of the parts
+/// (`Summing`), for `assemblies`.
+///
+/// NOTE: the sub-assemblies' table needs each summed, which takes a walk
+/// placing every part (a third of the `--full` report of 2²⁰ instances,
+/// on one core): the rows walked here carry what is summed, the same
+/// bits, so that walk is not made again.
 pub(super) fn parts(
     w: &mut dyn std::io::Write,
     s: &Summary,
     u: &DisplayUnits,
     width: Option<usize>,
-) -> std::io::Result<bool> {
+) -> std::io::Result<(bool, Option<Summing>)> {
     let header = [
         "#".to_string(),
         "name".to_string(),
@@ -76,24 +83,36 @@ pub(super) fn parts(
     let mut prefix = String::new();
     let mut lengths = Vec::new();
     let mut name = String::new();
+    let mut summed = None;
     stream_cells(w, &header, &right, fit, &mut |sink| {
         let mut i = 0usize;
         prefix.clear();
         lengths.clear();
+        // The first walk sums the sub-assemblies.
+        let mut summing = summed.is_none().then(Summing::default);
         s.parts.each_row(&mut |r| {
             let p = match r {
                 Row::Enter(n) => {
                     lengths.push(prefix.len());
                     prefix.push_str(n);
                     prefix.push_str(" / ");
+                    if let Some(x) = &mut summing {
+                        x.enter();
+                    }
                     return;
                 }
                 Row::Exit => {
                     prefix.truncate(lengths.pop().expect("an Exit follows its Enter"));
+                    if let Some(x) = &mut summing {
+                        x.exit();
+                    }
                     return;
                 }
                 Row::Part(p) => p,
             };
+            if let Some(x) = &mut summing {
+                x.part(p.mass, p.center_of_mass, p.principal_moment_share);
+            }
             i += 1;
             name.clear();
             name.push_str(&prefix);
@@ -112,17 +131,22 @@ pub(super) fn parts(
             ];
             sink(&row::<3, 11>(first, figures));
         });
+        if summing.is_some() {
+            summed = summing;
+        }
     })?;
-    Ok(undefined)
+    Ok((undefined, summed))
 }
 
 /// The sub-assemblies section: each with its mass, centre of mass and
-/// shares, indented by depth, parents before children.
+/// shares, indented by depth, parents before children; `summing`: the
+/// parts table's sums (`parts`), else they are summed here.
 pub(super) fn assemblies(
     w: &mut dyn std::io::Write,
     s: &Summary,
     u: &DisplayUnits,
     width: Option<usize>,
+    summing: Option<Summing>,
 ) -> std::io::Result<()> {
     let header = [
         "sub-assembly".to_string(),
@@ -143,7 +167,10 @@ pub(super) fn assemblies(
         ..super::fit(width)
     };
     // NOTE: summed once (a walk placing every part), walked twice.
-    let summed = s.assemblies.summed();
+    let summed = match summing {
+        Some(x) => s.assemblies.summed_from(x),
+        None => s.assemblies.summed(),
+    };
     stream_cells(w, &header, &right, fit, &mut |sink| {
         // How deep the walk is: a sub-assembly's indent is one less.
         let mut depth = 0usize;
