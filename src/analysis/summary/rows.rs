@@ -206,6 +206,11 @@ impl Summing {
         });
     }
 
+    /// Whether a sub-assembly is entered (a part met now is summed).
+    pub fn inside(&self) -> bool {
+        !self.open.is_empty()
+    }
+
     /// A part, in SI: its mass, centroid and shares of the principal
     /// moments.
     pub fn part(&mut self, mass: f64, center: [f64; 3], share: [Option<f64>; 3]) {
@@ -311,11 +316,13 @@ impl Assemblies {
         // bits, no bound of their rounding formed (`Model::each_row`).
         s.model.each_row(&mut |e| match e {
             RowEvent::Enter(_) => summing.enter(),
-            RowEvent::Part { part: p, .. } => summing.part(
+            // The body's own parts are in no sub-assembly's sums.
+            RowEvent::Part { part: p, .. } if summing.inside() => summing.part(
                 p.mass_si(&s.factors),
                 arr(&p.center_si(&s.factors)),
                 s.shares.of(p),
             ),
+            RowEvent::Part { .. } => {}
             RowEvent::Exit => summing.exit(),
         });
         self.summed_from(summing)

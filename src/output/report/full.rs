@@ -46,8 +46,8 @@ fn row<'a, const N: usize, const M: usize>(
 /// (`Summing`), for `assemblies`.
 ///
 /// NOTE: the sub-assemblies' table needs each summed, which takes a walk
-/// placing every part (a third of the `--full` report of 2²⁰ instances,
-/// on one core): the rows walked here carry what is summed, the same
+/// placing every part (a fifth of the `--full` report of 2²⁰ instances,
+/// on one core while the other idled): the rows walked here carry what is summed, the same
 /// bits, so that walk is not made again.
 pub(super) fn parts(
     w: &mut dyn std::io::Write,
@@ -88,8 +88,8 @@ pub(super) fn parts(
         let mut i = 0usize;
         prefix.clear();
         lengths.clear();
-        // The first walk sums the sub-assemblies.
-        let mut summing = summed.is_none().then(Summing::default);
+        // The first walk sums the sub-assemblies, if there are any.
+        let mut summing = (summed.is_none() && !s.assemblies.is_empty()).then(Summing::default);
         s.parts.each_row(&mut |r| {
             let p = match r {
                 Row::Enter(n) => {
